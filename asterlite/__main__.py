@@ -1,0 +1,3 @@
+from asterlite.cli import main
+
+raise SystemExit(main())

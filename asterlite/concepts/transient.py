@@ -1,0 +1,87 @@
+"""Transient results: obstacles, generalized (``tran_gene``) and physical
+(``dyna_trans``) time histories."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.base import Concept
+from asterlite.concepts.modes import ModeResult
+
+
+@dataclass(eq=False)
+class Obstacle(Concept):
+    """``DEFI_OBSTACLE``: the shape of a shock connection (no dimensions).
+
+    ``polar`` holds (angle in degrees, radius) pairs for ``DISCRET`` obstacles
+    and the circle / plane types defined by code_aster as polygons too.
+    """
+
+    aster_types = ("table_fonction", "table_sdaster")
+
+    obstacle_type: str
+    polar: np.ndarray | None = None  # (n, 2): angle (deg), radius
+
+
+@dataclass(eq=False)
+class ShockHistory:
+    """Local quantities of one localized nonlinearity at the archived instants.
+
+    ``fields`` maps code_aster's names to arrays of length n_archived, e.g.
+    ``FN``, ``FT1``, ``FT2``, ``DXLOC``, ``DYLOC``, ``DZLOC``, ``VN``, ``VT1``,
+    ``VT2``, ``VARI...``. Forces are those the obstacle exerts on node 1.
+    """
+
+    name: str  # INTITULE (or generated)
+    relation: str  # DIS_CHOC, FLAMBAGE, ...
+    node_1: str
+    node_2: str | None
+    fields: dict[str, np.ndarray] = field(default_factory=dict)
+    parameters: dict[str, Any] = field(default_factory=dict)  # gaps, stiffnesses, frame...
+
+
+@dataclass(eq=False)
+class TranGene(Concept):
+    """``DYNA_VIBRA`` TRAN/GENE result: generalized coordinates at archived instants.
+
+    ``depl``, ``vite``, ``acce`` are (n_archived, n_modes); ``times`` and
+    ``order`` (NUME_ORDRE, the step index of each archived instant) have
+    length n_archived.
+    """
+
+    aster_types = ("tran_gene",)
+
+    basis: ModeResult
+    times: np.ndarray
+    order: np.ndarray
+    depl: np.ndarray
+    vite: np.ndarray
+    acce: np.ndarray
+    shocks: list[ShockHistory] = field(default_factory=list)
+    scheme: str = ""
+    step: float = 0.0
+    info: dict[str, Any] = field(default_factory=dict)  # steps taken, rejections, timings...
+
+    @property
+    def n_modes(self) -> int:
+        return self.depl.shape[1]
+
+
+@dataclass(eq=False)
+class DynaTrans(Concept):
+    """A physical transient result (``dyna_trans``): nodal fields per instant.
+
+    ``fields`` maps ``DEPL``/``VITE``/``ACCE`` to (n_instants, n_dofs) arrays on
+    ``numbering``'s DOFs.
+    """
+
+    aster_types = ("dyna_trans", "resultat_sdaster")
+
+    numbering: DofNumbering
+    times: np.ndarray
+    order: np.ndarray
+    fields: dict[str, np.ndarray] = field(default_factory=dict)

@@ -1,0 +1,103 @@
+"""Values the deck language creates besides plain Python data.
+
+These types are shared by the evaluator (which creates them), the catalogue
+validator (which recognises them) and the runtime (which consumes them).
+Nothing here imports numpy.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from asterlite.errors import Location
+
+
+@dataclass(frozen=True)
+class CallSite:
+    """Where a call happens in the deck, and the name it is assigned to."""
+
+    location: Location | None = None
+    keyword_locations: dict[str, Location] = field(default_factory=dict)
+    assigned_name: str | None = None
+
+
+class DeckCallable:
+    """An object the deck may call; the evaluator passes the call site."""
+
+    def deck_call(self, args: list, kwargs: dict, site: CallSite):
+        raise NotImplementedError
+
+
+class FactorDict(dict):
+    """One occurrence of a factor keyword, as written with ``_F(...)``."""
+
+    def __init__(self, *args, location: Location | None = None, keyword_locations=None, **kw):
+        super().__init__(*args, **kw)
+        self.location = location
+        self.keyword_locations: dict[str, Location] = dict(keyword_locations or {})
+
+
+class FactorBuilder(DeckCallable):
+    """The ``_F`` builtin: keyword arguments only."""
+
+    def deck_call(self, args: list, kwargs: dict, site: CallSite) -> FactorDict:
+        from asterlite.errors import DeckRuntimeError
+
+        if args:
+            raise DeckRuntimeError("_F takes keyword arguments only", site.location)
+        return FactorDict(kwargs, location=site.location, keyword_locations=site.keyword_locations)
+
+
+class CO:
+    """``CO("NAME")``: a name a command will bind an output concept to."""
+
+    def __init__(self, name: str):
+        self.name = name
+
+    def __repr__(self) -> str:
+        return f"CO({self.name!r})"
+
+
+class COBuilder(DeckCallable):
+    """The ``CO`` builtin."""
+
+    def deck_call(self, args: list, kwargs: dict, site: CallSite) -> CO:
+        from asterlite.errors import DeckRuntimeError
+
+        if len(args) != 1 or kwargs or not isinstance(args[0], str) or not args[0].isidentifier():
+            raise DeckRuntimeError('CO takes one name, as in CO("MATR")', site.location)
+        return CO(args[0])
+
+
+class _UnknownType:
+    """The value of something ``asterlite check`` does not compute.
+
+    Arithmetic, indexing, calls and attribute access on it give Unknown; it is
+    falsy and iterates as empty. The catalogue accepts it for any type.
+    """
+
+    _instance = None
+
+    def __new__(cls):
+        if cls._instance is None:
+            cls._instance = super().__new__(cls)
+        return cls._instance
+
+    def __repr__(self) -> str:
+        return "<unknown>"
+
+    def __bool__(self) -> bool:
+        return False
+
+    def __iter__(self):
+        return iter(())
+
+    def __len__(self) -> int:
+        return 0
+
+
+Unknown = _UnknownType()
+
+
+def is_unknown(value) -> bool:
+    return value is Unknown

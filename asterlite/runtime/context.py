@@ -1,0 +1,84 @@
+"""What a command implementation receives besides its keywords.
+
+A command module in ``asterlite.commands`` exposes::
+
+    def run(ctx: CommandContext, kw: Keywords) -> Concept | None
+
+and returns the concept to bind to the deck name on the left of ``=`` (or
+None for procedures). It never validates keywords again, and reports
+problems by raising through ``ctx.error(...)`` so the message carries the
+deck file, line and keyword path.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from asterlite.errors import CommandError, Location, UnsupportedError
+
+if TYPE_CHECKING:
+    from asterlite.catalog.keywords import Keywords
+    from asterlite.runtime.session import Session
+
+
+@dataclass
+class TestRecord:
+    """One ``TEST_*`` check: what was compared and whether it held.
+
+    ``ok`` is the verdict asterlite uses (reference checks at the deck's
+    PRECISION, VALE_CALC checks within 1e-3 relative unless the deck sets
+    a tighter/looser criterion); ``strict`` says whether it also holds at
+    code_aster's own tolerance (TOLE_MACHINE, 1e-6 by default).
+    """
+
+    command: str  # TEST_RESU, TEST_TABLE, TEST_FONCTION
+    label: str  # what was tested, e.g. "RESU[1] DYNATRA1 DEPL NO1 DY ordre 1"
+    value: Any
+    expected: Any
+    reference: str  # "ANALYTIQUE", "SOURCE_EXTERNE", "NON_REGRESSION", "AUTRE_ASTER", ...
+    error: float
+    tolerance: float
+    criterion: str  # RELATIF / ABSOLU
+    ok: bool
+    strict: bool = True
+    location: Location | None = None
+
+    @property
+    def verdict(self) -> str:
+        return "OK" if self.ok else "NOOK"
+
+
+@dataclass
+class CommandContext:
+    """The call site and session a command runs in."""
+
+    session: Session
+    command: str
+    location: Location | None = None
+    result_name: str | None = None  # deck name on the left of '=', if any
+    reuse: Any = None  # the concept passed as reuse=, if any
+    notes: list[str] = field(default_factory=list)
+
+    def error(self, message: str, keyword: str | None = None, kw: Keywords | None = None):
+        """Raise a CommandError located at the call (and keyword, when given)."""
+        path, location = self.command, self.location
+        if kw is not None:
+            path, location = kw.where(keyword)
+            location = location or self.location
+        elif keyword:
+            path = f"{self.command}/{keyword}"
+        raise CommandError(message, location, path)
+
+    def unsupported(self, what: str, keyword: str | None = None, kw: Keywords | None = None):
+        """Raise an UnsupportedError for a keyword value not implemented yet."""
+        path, location = (kw.where(keyword) if kw is not None else (self.command, None))
+        raise UnsupportedError(what, location or self.location, path)
+
+    def log(self, message: str) -> None:
+        """Write a line to the run's message log."""
+        self.session.log(f"  {message}")
+
+    def bind(self, output: Any, concept: Any) -> None:
+        """Bind a concept to a ``CO("NAME")`` output argument."""
+        self.session.bind_output(output, concept)

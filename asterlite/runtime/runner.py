@@ -1,0 +1,193 @@
+"""Run (or check) a deck from its path and report what happened.
+
+Result files are written into a staging folder and moved into the output
+folder only when the run completes; a run stopped by an error leaves its
+files under ``incomplete/`` so nothing partial looks finished. The output
+folder always gets ``message.log`` and ``summary.json``.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from asterlite.errors import AsterliteError, UnsupportedError
+from asterlite.runtime.context import TestRecord
+from asterlite.runtime.export import describe_run
+
+EXIT_OK, EXIT_NOOK, EXIT_ERROR = 0, 1, 2
+
+
+@dataclass
+class RunReport:
+    deck: str
+    status: str  # PASS, NOOK, ERROR, UNSUPPORTED (CHECKED under check)
+    message: str = ""
+    tests: list[TestRecord] = field(default_factory=list)
+    seconds: float = 0.0
+    timings: list = field(default_factory=list)
+
+    @property
+    def checks_total(self) -> int:
+        return len(self.tests)
+
+    @property
+    def checks_ok(self) -> int:
+        return sum(1 for t in self.tests if t.ok)
+
+    @property
+    def strict_ok(self) -> int:
+        return sum(1 for t in self.tests if t.ok and t.strict)
+
+    @property
+    def exit_code(self) -> int:
+        if self.status in ("PASS", "CHECKED"):
+            return EXIT_OK
+        if self.status == "NOOK":
+            return EXIT_NOOK
+        return EXIT_ERROR
+
+    def as_dict(self) -> dict:
+        return {
+            "deck": self.deck,
+            "status": self.status,
+            "checks_ok": self.checks_ok,
+            "checks_total": self.checks_total,
+            "strict_ok": self.strict_ok,
+            "seconds": round(self.seconds, 3),
+            "message": self.message,
+            "tests": [
+                {
+                    "command": t.command,
+                    "label": t.label,
+                    "value": _plain(t.value),
+                    "expected": _plain(t.expected),
+                    "reference": t.reference,
+                    "error": _plain(t.error),
+                    "tolerance": _plain(t.tolerance),
+                    "ok": bool(t.ok),
+                    "strict": bool(t.strict),
+                }
+                for t in self.tests
+            ],
+            "commands": [
+                {"command": c.command, "line": c.location.line if c.location else None,
+                 "result": c.result, "seconds": round(c.seconds, 4)}
+                for c in self.timings
+            ],
+        }
+
+
+def _plain(value):
+    """JSON-friendly version of a test value (numpy scalars, complex...)."""
+    if isinstance(value, complex):
+        return [value.real, value.imag]
+    if hasattr(value, "item"):
+        try:
+            return value.item()
+        except (ValueError, AttributeError):
+            return str(value)
+    if isinstance(value, (int, float, str, bool)) or value is None:
+        return value
+    return str(value)
+
+
+def run_deck(
+    deck: Path,
+    output_dir: Path | None = None,
+    *,
+    check_only: bool = False,
+    echo: bool = False,
+) -> RunReport:
+    """Run or check the deck at ``deck`` (an .export or a .comm)."""
+    from asterlite.runtime.session import Session
+
+    start = time.perf_counter()
+    name = deck.stem
+    staging = None
+    if output_dir is not None and not check_only:
+        output_dir.mkdir(parents=True, exist_ok=True)
+        staging = output_dir / ".running"
+        shutil.rmtree(staging, ignore_errors=True)
+        shutil.rmtree(output_dir / "incomplete", ignore_errors=True)
+        staging.mkdir()
+    session = None
+    try:
+        description = describe_run(deck)
+        name = description.name
+        session = Session(description, output_dir=staging, check_only=check_only, echo=echo)
+        session.run_all()
+    except UnsupportedError as error:
+        report = RunReport(name, "UNSUPPORTED", str(error))
+    except AsterliteError as error:
+        report = RunReport(name, "ERROR", str(error))
+    except RecursionError:
+        report = RunReport(name, "ERROR", "internal error: recursion too deep")
+    except Exception as error:  # an asterlite bug: report it, never crash the caller
+        detail = traceback.format_exc(limit=-3)
+        report = RunReport(name, "ERROR", f"internal error: {error!r}\n{detail}")
+    else:
+        if check_only:
+            report = RunReport(name, "CHECKED")
+        elif all(t.ok for t in session.tests):
+            report = RunReport(name, "PASS")
+        else:
+            report = RunReport(name, "NOOK")
+    if session is not None:
+        report.tests = list(session.tests)
+        report.timings = list(session.timings)
+    report.seconds = time.perf_counter() - start
+    if output_dir is not None and not check_only:
+        _finish_output(output_dir, staging, report, session)
+    return report
+
+
+def _finish_output(output_dir: Path, staging: Path, report: RunReport, session) -> None:
+    complete = report.status in ("PASS", "NOOK")
+    if complete:
+        for item in staging.iterdir():
+            target = output_dir / item.name
+            if target.is_dir():
+                shutil.rmtree(target)
+            item.replace(target)
+        staging.rmdir()
+    elif any(staging.iterdir()):
+        staging.replace(output_dir / "incomplete")
+    else:
+        staging.rmdir()
+    messages = session.messages if session is not None else []
+    lines = list(messages) + ["", format_summary(report)]
+    (output_dir / "message.log").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    (output_dir / "summary.json").write_text(json.dumps(report.as_dict(), indent=1), "utf-8")
+
+
+def format_test_line(test: TestRecord) -> str:
+    flag = "OK  " if test.ok else "NOOK"
+    strict = "" if test.strict or not test.ok else " (not strict)"
+    return (
+        f"  {flag} {test.command} {test.label}: value={_plain(test.value)!r} "
+        f"expected={_plain(test.expected)!r} error={_plain(test.error)!r}{strict}"
+    )
+
+
+def format_summary(report: RunReport) -> str:
+    lines = [f"{report.deck}: {report.status} in {report.seconds:.2f} s"]
+    if report.timings:
+        lines.append("commands:")
+        for timing in report.timings:
+            line = timing.location.line if timing.location else "?"
+            result = f" -> {timing.result}" if timing.result else ""
+            lines.append(f"  {timing.command:<18} line {line:<5}{result:<16} {timing.seconds:8.3f} s")
+    if report.tests:
+        lines.append(
+            f"checks: {report.checks_ok}/{report.checks_total} OK, "
+            f"{report.strict_ok} strict"
+        )
+        lines += [format_test_line(t) for t in report.tests]
+    if report.message:
+        lines.append(report.message)
+    return "\n".join(lines)

@@ -1,0 +1,290 @@
+"""A deck session: namespace, logical units, output folder, test records,
+and the dispatcher that joins the evaluator, the catalogues and the commands.
+
+The evaluator knows nothing about particular commands: every command name
+is bound to a :class:`CommandProxy`, which validates the call against its
+catalogue and hands the keyword tree to ``asterlite.commands.<name>.run``.
+Only the commands that steer the session itself (DEBUT, POURSUITE, FIN,
+DETRUIRE, DEFI_FICHIER) are handled here.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from asterlite.catalog import load_catalogue, result_type, validate
+from asterlite.catalog.keywords import Keywords
+from asterlite.concepts.base import Concept, Placeholder
+from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
+from asterlite.lang.values import CO, CallSite, DeckCallable
+from asterlite.runtime.context import CommandContext, TestRecord
+from asterlite.runtime.export import RunDescription
+
+
+class DeckFinished(AsterliteError):
+    """Raised by FIN() to stop evaluating the current deck file."""
+
+    kind = "end of deck"
+
+
+class AnyPlaceholder(Placeholder):
+    """Stands for a concept of a type ``asterlite check`` cannot tell."""
+
+    def __init__(self, produced_by: str = ""):
+        super().__init__("*", produced_by)
+
+    def satisfies(self, type_name: str) -> bool:
+        return True
+
+
+@dataclass
+class CommandTiming:
+    command: str
+    location: Location | None
+    result: str | None
+    seconds: float
+
+
+def catalogue_command_names() -> list[str]:
+    """Names of every command that has a catalogue (no module is imported)."""
+    import asterlite.catalogues as package
+
+    return sorted(
+        info.name.upper()
+        for info in pkgutil.iter_modules(package.__path__)
+        if not info.name.startswith("common") and not info.name.startswith("_")
+    )
+
+
+@dataclass
+class Session:
+    """State shared by every deck file of one run."""
+
+    run: RunDescription
+    output_dir: Path | None = None
+    check_only: bool = False
+    echo: bool = False
+    namespace: dict[str, Any] = field(default_factory=dict)
+    tests: list[TestRecord] = field(default_factory=list)
+    timings: list[CommandTiming] = field(default_factory=list)
+    messages: list[str] = field(default_factory=list)
+    output_units: dict[int, Path] = field(default_factory=dict)
+    current_file: str = ""
+
+    def __post_init__(self) -> None:
+        from asterlite.lang import base_namespace
+
+        self.namespace.update(base_namespace())
+        for name in catalogue_command_names():
+            self.namespace[name] = CommandProxy(name, self)
+
+    # ----------------------------------------------------------- services
+    def log(self, text: str) -> None:
+        self.messages.append(text)
+        if self.echo:
+            print(text, flush=True)
+
+    def record_test(self, record: TestRecord) -> None:
+        self.tests.append(record)
+
+    def input_path(self, unit: int) -> Path:
+        """The input file the run maps to logical ``unit``."""
+        if unit in self.output_units and self.output_units[unit].exists():
+            return self.output_units[unit]
+        try:
+            return self.run.units[unit]
+        except KeyError:
+            known = ", ".join(str(u) for u in sorted(self.run.units)) or "none"
+            raise CommandError(
+                f"no file is mapped to logical unit {unit} (mapped units: {known})"
+            ) from None
+
+    def output_path(self, unit_or_name: int | str) -> Path:
+        """A path in the output folder for a logical unit or a file name."""
+        if self.output_dir is None:
+            raise CommandError("this run has no output folder")
+        self.output_dir.mkdir(parents=True, exist_ok=True)
+        if isinstance(unit_or_name, int):
+            if unit_or_name not in self.output_units:
+                self.output_units[unit_or_name] = self.output_dir / f"fort.{unit_or_name}"
+            return self.output_units[unit_or_name]
+        return self.output_dir / Path(unit_or_name).name
+
+    def bind_output(self, output: Any, concept: Any) -> None:
+        if not isinstance(output, CO):
+            raise CommandError(f"expected a CO('NAME') output, got {output!r}")
+        if isinstance(concept, Concept):
+            concept.name = output.name
+        self.namespace[output.name] = concept
+
+    # ----------------------------------------------------------- running
+    def load_module(self, name: str) -> dict | None:
+        """Modules a deck may import besides math and numpy."""
+        if name in ("code_aster.Commands", "code_aster.Cata.Commands"):
+            return {n: v for n, v in self.namespace.items() if isinstance(v, CommandProxy)}
+        if name == "code_aster":
+            from asterlite.runtime.deck_api import code_aster_module
+
+            return code_aster_module(self)
+        if name == "aster":
+            return {}
+        if name in self.run.helper_modules:
+            from asterlite.lang import Evaluator, parse_deck
+
+            path = self.run.helper_modules[name]
+            module = parse_deck(path.read_text(encoding="utf-8", errors="replace"), str(path))
+            namespace = dict(self.namespace)
+            Evaluator(namespace, module_loader=self.load_module).run(module)
+            return namespace
+        return None
+
+    def run_file(self, path: Path) -> None:
+        """Parse and evaluate one deck file in the session namespace."""
+        from asterlite.lang import Evaluator, parse_deck
+
+        self.current_file = str(path)
+        self.log(f"# deck {path.name}")
+        module = parse_deck(path.read_text(encoding="utf-8", errors="replace"), str(path))
+        try:
+            Evaluator(self.namespace, module_loader=self.load_module).run(module)
+        except DeckFinished:
+            pass
+
+    def run_all(self) -> None:
+        for path in self.run.deck_files:
+            self.run_file(path)
+
+
+# Commands that steer the session rather than compute: handled here.
+SESSION_COMMANDS = {"DEBUT", "POURSUITE", "FIN", "DETRUIRE", "DEFI_FICHIER"}
+
+
+class CommandProxy(DeckCallable):
+    """A deck command: validates against its catalogue, then dispatches."""
+
+    def __init__(self, name: str, session: Session):
+        self.name = name
+        self.session = session
+
+    def __repr__(self) -> str:
+        return f"<command {self.name}>"
+
+    def deck_call(self, args: list, kwargs: dict, site: CallSite):
+        session = self.session
+        if args:
+            raise UnsupportedError(
+                f"{self.name} takes keyword arguments only", site.location, self.name
+            )
+        catalogue = load_catalogue(self.name)
+        if catalogue is None:
+            raise UnsupportedError(f"command {self.name} is not supported", site.location)
+        kwargs = dict(kwargs)
+        reuse = kwargs.pop("reuse", None)
+        extra = {}
+        if getattr(catalogue, "extra_keywords", False):
+            known = set(catalogue.keyword_names()) if hasattr(catalogue, "keyword_names") else set()
+            extra = {k: v for k, v in kwargs.items() if k not in known}
+            kwargs = {k: v for k, v in kwargs.items() if k in known}
+        keywords = validate(catalogue, kwargs, site, reuse=reuse)
+        if extra:
+            keywords["_extra"] = extra
+        if self.name in SESSION_COMMANDS:
+            return self._session_command(keywords, site)
+        if session.check_only:
+            return self._placeholder(catalogue, keywords)
+        return self._execute(keywords, site, reuse)
+
+    # ---------------------------------------------------------------- check
+    def _placeholder(self, catalogue, keywords: Keywords):
+        for output in _co_outputs(keywords):
+            self.session.bind_output(output, AnyPlaceholder(self.name))
+        try:
+            produced = result_type(catalogue, keywords)
+        except Exception:  # sd_prod read a value check mode could not compute
+            return AnyPlaceholder(self.name)
+        if produced is None:
+            return None
+        return Placeholder(produced, self.name)
+
+    # ------------------------------------------------------------------ run
+    def _execute(self, keywords: Keywords, site: CallSite, reuse: Any):
+        session = self.session
+        module_name = f"asterlite.commands.{self.name.lower()}"
+        try:
+            module = importlib.import_module(module_name)
+        except ModuleNotFoundError as missing:
+            if missing.name != module_name:
+                raise
+            raise UnsupportedError(
+                f"command {self.name} is not implemented yet", site.location
+            ) from None
+        ctx = CommandContext(
+            session=session,
+            command=self.name,
+            location=site.location,
+            result_name=site.assigned_name,
+            reuse=reuse,
+        )
+        where = f"{Path(site.location.file).name}:{site.location.line}" if site.location else ""
+        session.log(f"{self.name} ({where})" + (f" -> {site.assigned_name}" if site.assigned_name else ""))
+        start = time.perf_counter()
+        try:
+            concept = module.run(ctx, keywords)
+        except AsterliteError as error:
+            if error.location is None:
+                error.location = site.location
+            if not error.path:
+                error.path = self.name
+            raise
+        seconds = time.perf_counter() - start
+        session.timings.append(CommandTiming(self.name, site.location, site.assigned_name, seconds))
+        session.log(f"  done in {seconds:.3f} s")
+        if isinstance(concept, Concept) and site.assigned_name and concept.name is None:
+            concept.name = site.assigned_name
+        elif isinstance(concept, Concept) and site.assigned_name and reuse is None:
+            concept.name = site.assigned_name
+        return concept
+
+    # -------------------------------------------------------------- session
+    def _session_command(self, keywords: Keywords, site: CallSite):
+        session = self.session
+        if self.name == "FIN":
+            session.log("FIN")
+            raise DeckFinished("FIN reached", site.location)
+        if self.name in ("DEBUT", "POURSUITE"):
+            session.log(self.name)
+            return None
+        if self.name == "DETRUIRE":
+            for occurrence in keywords.factor("CONCEPT"):
+                names = occurrence.get("NOM") or ()
+                for concept in names if isinstance(names, tuple) else (names,):
+                    for key, value in list(session.namespace.items()):
+                        if value is concept:
+                            del session.namespace[key]
+            return None
+        if self.name == "DEFI_FICHIER":
+            unit = keywords.get("UNITE")
+            name = keywords.get("FICHIER")
+            if unit is not None and name and session.output_dir is not None:
+                session.output_units[int(unit)] = session.output_path(str(name))
+            return None
+        return None
+
+
+def _co_outputs(value) -> list[CO]:
+    """Every CO(...) output name inside a keyword tree."""
+    if isinstance(value, CO):
+        return [value]
+    if isinstance(value, dict):
+        return [co for v in value.values() for co in _co_outputs(v)]
+    if isinstance(value, (list, tuple)):
+        return [co for v in value for co in _co_outputs(v)]
+    return []
+
+
+__all__ = ["Session", "CommandProxy", "DeckFinished", "AnyPlaceholder"]
