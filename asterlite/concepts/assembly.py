@@ -26,6 +26,67 @@ class Model(Concept):
     cell_modelisation: dict[int, str] = field(default_factory=dict)  # cell index -> "DIS_T", ...
     node_modelisation: dict[int, str] = field(default_factory=dict)  # node-supported elements
 
+    def node_components(self) -> dict[int, tuple[str, ...]]:
+        """Components carried by each node of the model (union over its elements),
+        in code_aster's order; nodes without elements are absent."""
+        from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
+
+        found: dict[int, set[str]] = {}
+        for cell, modelisation in self.cell_modelisation.items():
+            comps = MODELISATION_COMPONENTS.get(modelisation, ())
+            for node in self.mesh.cell_nodes[cell]:
+                found.setdefault(node, set()).update(comps)
+        for node, modelisation in self.node_modelisation.items():
+            found.setdefault(node, set()).update(MODELISATION_COMPONENTS.get(modelisation, ()))
+        return {n: sort_components(found[n]) for n in sorted(found)}
+
+    @property
+    def dim(self) -> int:
+        """2 when every modelisation is plane (``2D_...``), else 3."""
+        names = set(self.cell_modelisation.values()) | set(self.node_modelisation.values())
+        return 2 if names and all(n.startswith("2D_") for n in names) else 3
+
+
+@dataclass(eq=False)
+class DiscreteAssignment:
+    """One ``AFFE_CARA_ELEM/DISCRET`` characteristic assigned to a cell."""
+
+    matrix: str  # K, M or A
+    cara: str  # e.g. K_T_D_N
+    values: np.ndarray
+    repere: str = "GLOBAL"  # GLOBAL or LOCAL
+    symmetric: bool = True
+    hysteretic: float = 0.0  # AMOR_HYST
+
+
+@dataclass(eq=False)
+class ElementCharacteristics(Concept):
+    """``AFFE_CARA_ELEM`` result.
+
+    ``discrete[cell][matrix]`` is the last :class:`DiscreteAssignment` of that
+    kind (K, M, A) given to the cell; ``orientation[cell]`` its nautical
+    angles in radians (ORIENTATION); ``extra`` keeps other keywords (POUTRE,
+    BARRE...) as validated, keyed by keyword, for the rooms that use them.
+    """
+
+    aster_types = ("cara_elem",)
+
+    model: Model
+    discrete: dict[int, dict[str, DiscreteAssignment]] = field(default_factory=dict)
+    orientation: dict[int, np.ndarray] = field(default_factory=dict)
+    extra: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(eq=False)
+class ElementBlock:
+    """Matrices of a set of cells sharing nodes-per-cell and components, in the
+    global frame: ``matrices[e]`` acts on the DOFs of ``nodes[e]`` ordered
+    node by node, ``components`` within each node."""
+
+    nodes: np.ndarray  # (n_elements, nodes_per_element) node indices
+    components: tuple[str, ...]
+    matrices: np.ndarray  # (n_elements, d, d), d = nodes_per_element * len(components)
+
 
 @dataclass(eq=False)
 class LinearRelation:
@@ -45,6 +106,32 @@ class MechanicalLoad(Concept):
     relations: list[LinearRelation] = field(default_factory=list)
     nodal_forces: list[tuple[int, str, float]] = field(default_factory=list)
     extra: dict[str, Any] = field(default_factory=dict)  # other load kinds, keyed by keyword
+
+
+@dataclass(eq=False)
+class ElementaryMatrices(Concept):
+    """``CALC_MATR_ELEM`` result: element matrices of one option plus the loads
+    whose kinematic relations come with them (code_aster's Lagrange terms)."""
+
+    aster_types = ("matr_elem_depl_r",)
+
+    model: Model
+    option: str  # RIGI_MECA, MASS_MECA, AMOR_MECA...
+    blocks: list[ElementBlock] = field(default_factory=list)
+    loads: list[MechanicalLoad] = field(default_factory=list)
+    characteristics: ElementCharacteristics | None = None
+
+
+@dataclass(eq=False)
+class ElementaryVectors(Concept):
+    """``CALC_VECT_ELEM`` result: nodal load terms (node, component, value)."""
+
+    aster_types = ("vect_elem_depl_r",)
+
+    model: Model | None
+    option: str
+    loads: list[MechanicalLoad] = field(default_factory=list)
+    terms: list[tuple[int, str, float]] = field(default_factory=list)
 
 
 @dataclass(eq=False)
@@ -76,6 +163,38 @@ class DofNumbering(Concept):
         if isinstance(node, str):
             node = self.mesh.node_index[node]
         return self.index[(node, component)]
+
+    def dof_indices(self, nodes, components) -> np.ndarray:
+        """Vectorised lookup: indices of (nodes[i], components[i]) pairs, -1 when absent.
+
+        ``components`` may be one name for every node."""
+        nodes = np.atleast_1d(np.asarray(nodes))
+        if isinstance(components, str):
+            components = [components] * len(nodes)
+        out = np.empty(len(nodes), dtype=int)
+        for k, (n, c) in enumerate(zip(nodes, components, strict=True)):
+            if isinstance(n, str):
+                n = self.mesh.node_index.get(n, -1)
+            out[k] = self.index.get((int(n), c), -1)
+        return out
+
+    @property
+    def dof_nodes(self) -> np.ndarray:
+        return np.array([n for n, _ in self.dofs], dtype=int)
+
+    @property
+    def dof_components(self) -> list[str]:
+        return [c for _, c in self.dofs]
+
+    def constraint_matrix(self):
+        """(B, b): the relations as a sparse (n_relations, n_dofs) matrix and rhs."""
+        from asterlite.fem.constraints import relation_matrix
+
+        return relation_matrix(self.relations, self.index, self.n_dofs)
+
+    def label(self, i: int) -> str:
+        node, comp = self.dofs[i]
+        return f"{self.mesh.node_names[node]} {comp}"
 
 
 @dataclass(eq=False)

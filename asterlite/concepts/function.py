@@ -103,9 +103,7 @@ def _exact_lookup(x, xs, ys, label):
     scale = max(np.abs(xs).max(), 1.0)
     bad = np.abs(xs[closest] - x) > 1e-10 * scale
     if bad.any():
-        raise FunctionDomainError(
-            f"{label} has INTERPOL='NON' and no value at {x[bad][0]:g}"
-        )
+        raise FunctionDomainError(f"{label} has INTERPOL='NON' and no value at {x[bad][0]:g}")
     return ys[closest]
 
 

@@ -15,10 +15,23 @@ from asterlite.concepts.base import Concept
 class ModeResult(Concept):
     """A modal basis: ``CALC_MODES``, ``MODE_STATIQUE``, ``DEFI_BASE_MODALE``...
 
-    ``shapes`` is (n_dofs, n_modes) on ``numbering``'s physical DOFs.
-    ``frequencies`` in Hz (0 for static modes), ``generalized_mass`` and
-    ``generalized_stiffness`` per mode. ``parameters`` holds per-mode
-    extra quantities by code_aster name (e.g. ``"FACT_PARTICI_DX"``).
+    ``shapes`` is (n_dofs, n_modes) on ``numbering``'s physical DOFs (the
+    Lagrange multipliers of code_aster do not exist here; constrained DOFs
+    hold their zero value). ``frequencies`` in Hz (0 for static modes),
+    ``generalized_mass`` and ``generalized_stiffness`` per mode (φᵀMφ, φᵀKφ).
+    ``parameters`` holds per-mode extra quantities by code_aster name
+    (``NUME_MODE``, ``FREQ``, ``OMEGA2``, ``MASS_GENE``, ``RIGI_GENE``,
+    ``FACT_PARTICI_DX``, ``MASS_EFFE_DX``, ``MASS_EFFE_UN_DX``...).
+
+    Normalisation (``norm``): CALC_MODES without NORM_MODE divides each shape
+    by its signed component of largest magnitude over all physical DOFs
+    (first in DOF order on ties), so that component is +1 -- code_aster's
+    ``SANS_CMP: LAGR``. NORM_MODE / CALC_MODES(NORM_MODE=...) rescale
+    afterwards (``MASS_GENE``: φᵀMφ = 1, ``TRAN``: largest translation = +1,
+    ...). Static modes (MODE_STATIQUE) are not normalised: a unit imposed
+    displacement (MODE_STAT) or the response to a unit force (FORCE_NODALE).
+    ``mode_labels`` names each static mode (``"NO1 DX"``) and is empty for
+    dynamic modes.
     """
 
     aster_types = ("mode_meca", "resultat_sdaster")
@@ -32,10 +45,71 @@ class ModeResult(Concept):
     stiffness: AssembledMatrix | None = None
     kind: str = "dynamic"  # dynamic, static
     parameters: dict[str, np.ndarray] = field(default_factory=dict)
+    norm: str = "SANS_CMP: LAGR"
+    mode_labels: list[str] = field(default_factory=list)
+    damping: AssembledMatrix | None = None
 
     @property
     def n_modes(self) -> int:
         return self.shapes.shape[1]
+
+    @property
+    def mode_numbers(self) -> np.ndarray:
+        """NUME_MODE of each mode (1-based)."""
+        numbers = self.parameters.get("NUME_MODE")
+        return np.arange(1, self.n_modes + 1) if numbers is None else np.asarray(numbers)
+
+    @property
+    def omega2(self) -> np.ndarray:
+        return np.sign(self.frequencies) * (2.0 * np.pi * self.frequencies) ** 2
+
+    def shapes_at(self, nodes, components) -> np.ndarray:
+        """Vectorised :meth:`shape_at`: (len(nodes), n_modes); ``components`` is
+        one name or one per node; absent DOFs give zero rows."""
+        rows = self.numbering.dof_indices(nodes, components)
+        out = np.zeros((len(rows), self.n_modes))
+        present = rows >= 0
+        out[present] = self.shapes[rows[present], :]
+        return out
+
+    def rescale(self, factors, norm: str | None = None) -> None:
+        """Multiply each mode by its factor and update the generalized quantities."""
+        factors = np.asarray(factors, dtype=float)
+        self.shapes = self.shapes * factors[None, :]
+        self.generalized_mass = self.generalized_mass * factors**2
+        self.generalized_stiffness = self.generalized_stiffness * factors**2
+        for key in ("MASS_GENE", "RIGI_GENE"):
+            if key in self.parameters:
+                self.parameters[key] = np.asarray(self.parameters[key]) * factors**2
+        # participation factors scale as 1/factor, effective masses are invariant
+        for c in ("DX", "DY", "DZ"):
+            key = f"FACT_PARTICI_{c}"
+            if key in self.parameters:
+                self.parameters[key] = np.asarray(self.parameters[key]) / factors
+        if norm is not None:
+            self.norm = norm
+
+    def select(self, indices) -> ModeResult:
+        """A new basis made of the modes at 0-based ``indices`` (keeps NUME_MODE)."""
+        indices = np.asarray(indices, dtype=int)
+        params = {}
+        for key, value in self.parameters.items():
+            value = np.asarray(value)
+            params[key] = value[indices] if value.shape[:1] == (self.n_modes,) else value
+        return ModeResult(
+            numbering=self.numbering,
+            shapes=self.shapes[:, indices].copy(),
+            frequencies=np.asarray(self.frequencies)[indices].copy(),
+            generalized_mass=np.asarray(self.generalized_mass)[indices].copy(),
+            generalized_stiffness=np.asarray(self.generalized_stiffness)[indices].copy(),
+            mass=self.mass,
+            stiffness=self.stiffness,
+            kind=self.kind,
+            parameters=params,
+            norm=self.norm,
+            mode_labels=[self.mode_labels[i] for i in indices] if self.mode_labels else [],
+            damping=self.damping,
+        )
 
     def shape_at(self, node: int | str, component: str) -> np.ndarray:
         """Row of the modal matrix for one DOF: one value per mode (0 if the
@@ -63,7 +137,9 @@ class GeneralizedNumbering(Concept):
 
 @dataclass(eq=False)
 class GeneralizedMatrix(Concept):
-    """A projected matrix Φᵀ A Φ (dense, n_modes × n_modes)."""
+    """A projected matrix Φᵀ A Φ (dense, n_modes × n_modes). With
+    ``STOCKAGE='DIAG'`` only the diagonal is kept (off-diagonal terms zero),
+    as code_aster stores it."""
 
     aster_types = ("matr_asse_gene_r", "matr_asse_gene")
 
@@ -78,9 +154,11 @@ class GeneralizedMatrix(Concept):
 
 @dataclass(eq=False)
 class GeneralizedVector(Concept):
-    """A projected vector Φᵀ v (forces) or the generalized coordinates of a
-    displacement/velocity field (``TYPE_VECT='DEPL'``: least-squares in the
-    mass metric, as code_aster does)."""
+    """A projected vector Φᵀ f (``TYPE_VECT='FORC'``) or the generalized
+    coordinates q of a displacement/velocity/acceleration field
+    (``'DEPL'``/``'VITE'``/``'ACCE'``): the Euclidean least-squares fit
+    q = (ΦᵀΦ)⁻¹ Φᵀ u, as code_aster's PROJ_VECT_BASE computes it (exact when
+    u lies in the span of the basis)."""
 
     aster_types = ("vect_asse_gene",)
 

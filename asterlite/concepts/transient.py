@@ -31,9 +31,17 @@ class Obstacle(Concept):
 class ShockHistory:
     """Local quantities of one localized nonlinearity at the archived instants.
 
-    ``fields`` maps code_aster's names to arrays of length n_archived, e.g.
-    ``FN``, ``FT1``, ``FT2``, ``DXLOC``, ``DYLOC``, ``DZLOC``, ``VN``, ``VT1``,
-    ``VT2``, ``VARI...``. Forces are those the obstacle exerts on node 1.
+    ``fields`` maps code_aster's names to arrays of length n_archived:
+    ``FN`` (normal force magnitude, >= 0), ``FT1``/``FT2`` (tangential force
+    along t1 = (0, -sin, cos) in the contact plane and along NORM_OBST),
+    ``DXLOC``/``DYLOC``/``DZLOC`` (node 1's local coordinates: rest position
+    plus displacement, relative to ORIG_OBST, in the frame NORM_OBST +
+    ANGL_VRIL, as code_aster stores them), ``DXLOC_2``... (node 2, zero for
+    single-node obstacles), ``DXREL``... (node 1 minus node 2, or node 1),
+    ``VN``, ``VT1``, ``VT2`` (relative normal/tangential velocities),
+    ``ADHERENCE`` (1 sticking, 0 sliding) and ``VINT1``..``VINT20`` (the
+    raw internal variables in code_aster's order). Forces are those the
+    obstacle (or node 2) exerts on node 1.
     """
 
     name: str  # INTITULE (or generated)

@@ -1,0 +1,1 @@
+"""Transient dynamics on a modal basis: shock/friction forces, schemes, compiled loop."""

@@ -1,0 +1,1 @@
+"""Structural front end: DOF sets, discrete elements, frames, assembly and constraints."""

@@ -95,6 +95,21 @@ class _UnknownType:
     def __len__(self) -> int:
         return 0
 
+    def __hash__(self) -> int:
+        return 0x5EED
+
+    def _unknown(self, *args, **kwargs):
+        return self
+
+    # Python-level operations (inside sorted(), numpy object arrays, ...) stay
+    # Unknown too, so a check never fails on an uncomputed value.
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _unknown
+    __truediv__ = __rtruediv__ = __floordiv__ = __rfloordiv__ = _unknown
+    __mod__ = __rmod__ = __pow__ = __rpow__ = __neg__ = __pos__ = __abs__ = _unknown
+    __and__ = __rand__ = __or__ = __ror__ = __xor__ = __rxor__ = __invert__ = _unknown
+    __lt__ = __le__ = __gt__ = __ge__ = __eq__ = __ne__ = _unknown
+    __getitem__ = __call__ = __round__ = _unknown
+
 
 Unknown = _UnknownType()
 

@@ -1,0 +1,1 @@
+"""Modal analysis: constrained eigen solver, normalisation, static modes, projection."""

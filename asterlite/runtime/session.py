@@ -21,7 +21,7 @@ from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords
 from asterlite.concepts.base import Concept, Placeholder
 from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
-from asterlite.lang.values import CO, CallSite, DeckCallable
+from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown
 from asterlite.runtime.context import CommandContext, TestRecord
 from asterlite.runtime.export import RunDescription
 
@@ -79,11 +79,16 @@ class Session:
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
 
-        self.namespace.update(base_namespace())
+        self.namespace.update(base_namespace(print_hook=self._print))
         for name in catalogue_command_names():
             self.namespace[name] = CommandProxy(name, self)
 
     # ----------------------------------------------------------- services
+    def _print(self, text: str) -> None:
+        """Where the deck's print() goes: the message log."""
+        for line in text.rstrip("\n").split("\n"):
+            self.log(line)
+
     def log(self, text: str) -> None:
         self.messages.append(text)
         if self.echo:
@@ -161,7 +166,7 @@ class Session:
 
 
 # Commands that steer the session rather than compute: handled here.
-SESSION_COMMANDS = {"DEBUT", "POURSUITE", "FIN", "DETRUIRE", "DEFI_FICHIER"}
+SESSION_COMMANDS = {"DEBUT", "POURSUITE", "FIN", "DEBUG", "DETRUIRE", "DEFI_FICHIER"}
 
 
 class CommandProxy(DeckCallable):
@@ -186,10 +191,12 @@ class CommandProxy(DeckCallable):
         kwargs = dict(kwargs)
         reuse = kwargs.pop("reuse", None)
         extra = {}
-        if getattr(catalogue, "extra_keywords", False):
-            known = set(catalogue.keyword_names()) if hasattr(catalogue, "keyword_names") else set()
+        if catalogue.extra_keywords:
+            known = set(catalogue.keyword_names())
             extra = {k: v for k, v in kwargs.items() if k not in known}
             kwargs = {k: v for k, v in kwargs.items() if k in known}
+        if session.check_only:
+            kwargs = _blur_empty_sequences(kwargs)
         keywords = validate(catalogue, kwargs, site, reuse=reuse)
         if extra:
             keywords["_extra"] = extra
@@ -256,7 +263,7 @@ class CommandProxy(DeckCallable):
         if self.name == "FIN":
             session.log("FIN")
             raise DeckFinished("FIN reached", site.location)
-        if self.name in ("DEBUT", "POURSUITE"):
+        if self.name in ("DEBUT", "POURSUITE", "DEBUG"):
             session.log(self.name)
             return None
         if self.name == "DETRUIRE":
@@ -274,6 +281,25 @@ class CommandProxy(DeckCallable):
                 session.output_units[int(unit)] = session.output_path(str(name))
             return None
         return None
+
+
+def _blur_empty_sequences(value):
+    """Under check, an empty list may stand for data built from uncomputed
+    results (a loop over Unknown appends nothing): treat it as Unknown."""
+    if isinstance(value, (list, tuple)) and not value:
+        return Unknown
+    if isinstance(value, FactorDict):
+        blurred = FactorDict(
+            {k: _blur_empty_sequences(v) for k, v in value.items()},
+            location=value.location,
+            keyword_locations=value.keyword_locations,
+        )
+        return blurred
+    if isinstance(value, dict):
+        return {k: _blur_empty_sequences(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return type(value)(_blur_empty_sequences(v) for v in value)
+    return value
 
 
 def _co_outputs(value) -> list[CO]:

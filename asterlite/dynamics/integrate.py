@@ -1,0 +1,169 @@
+"""Driver of a transient run: initial state, scheme set-up, compiled loop,
+buffer growth, and translation of kernel status codes into errors."""
+
+from __future__ import annotations
+
+import math
+import time as wallclock
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from asterlite.dynamics import kernel as K
+from asterlite.dynamics import scheme_devoge, scheme_diff_centre
+from asterlite.dynamics.contact import N_VINT
+from asterlite.dynamics.forces import acceleration, total_force
+from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet
+from asterlite.errors import NumericalError
+
+SCHEMES = {"DIFF_CENTRE": scheme_diff_centre, "DEVOGE": scheme_devoge}
+
+
+@dataclass
+class SchemeOptions:
+    tolerance: float = 1.0e-5
+    alpha: float = 0.0
+    dt_min: float | None = None
+    dt_max: float | None = None
+
+
+@dataclass
+class RunResult:
+    times: np.ndarray
+    order: np.ndarray
+    depl: np.ndarray
+    vite: np.ndarray
+    acce: np.ndarray
+    vint: np.ndarray  # (n_archived, n_shocks, N_VINT)
+    info: dict = field(default_factory=dict)
+
+
+def integrate(
+    system: LinearSystem,
+    shocks: ShockSet,
+    excitation: Excitation,
+    scheme: str,
+    q0: np.ndarray,
+    v0: np.ndarray,
+    t0: float,
+    t_end: float,
+    dt: float,
+    instants: np.ndarray,
+    pas_arch: int,
+    options: SchemeOptions | None = None,
+) -> RunResult:
+    options = options or SchemeOptions()
+    n = system.n_modes
+    lin, shk, exc = system.bundle(), shocks.bundle(), excitation.bundle()
+    q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
+    f, a = np.zeros(n), np.zeros(n)
+    vint = np.zeros((shocks.count, N_VINT))
+    vint_save = np.zeros_like(vint)
+    work = np.zeros((5, 3))
+    shock = total_force(t0, q, v, shk, vint, exc, work, f)
+    acceleration(f, q, v, lin, np.zeros(n), a)
+    if shock >= 0 or not np.all(np.isfinite(a)):
+        raise NumericalError(f"non-finite initial acceleration at t={t0:g}")
+
+    module = SCHEMES[scheme]
+    step_fn, mem, smem, adaptive = setup_scheme(module, scheme, system, dt, options)
+    eps = 10.0 * np.finfo(float).eps
+    instants = np.asarray(instants, dtype=float)
+    n_steps = max(1, int(round((t_end - t0) / dt)))
+    capacity = 2 + len(instants) + n_steps // max(pas_arch, 1)
+    if adaptive:
+        capacity = min(capacity, 4096)
+    buffers = new_buffers(capacity, n, shocks.count)
+    K.archive(0, t0, 0, q, v, a, vint, *buffers)
+    clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
+    counters[K.K_ARCHIVED] = 1
+    started = wallclock.perf_counter()
+    while True:
+        status = K.run_loop(
+            step_fn, clock, counters, q, v, a, f, mem, smem, vint, vint_save,
+            lin, shk, exc, work, instants, pas_arch, eps, *buffers,
+        )  # fmt: skip
+        if status != K.STATUS_FULL:
+            break
+        buffers = grow(buffers)
+    elapsed = wallclock.perf_counter() - started
+    if status != K.STATUS_DONE:
+        raise divergence_error(status, clock, counters, shocks, system, scheme)
+    count = counters[K.K_ARCHIVED]
+    out_t, out_order, out_q, out_v, out_a, out_vint = (b[:count].copy() for b in buffers)
+    info = {
+        "steps": int(counters[K.K_STEP]),
+        "rejected_steps": int(counters[K.K_REJECTED]),
+        "archived": int(count),
+        "integration_seconds": elapsed,
+        "initial_step": dt,
+        "adaptive": adaptive,
+    }
+    return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, info)
+
+
+def setup_scheme(module, scheme: str, system: LinearSystem, dt: float, options: SchemeOptions):
+    n = system.n_modes
+    if scheme == "DEVOGE":
+        dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt
+        dt_max = options.dt_max if options.dt_max is not None else 1.0e10 * dt
+        adaptive = abs(dt_max / dt_min - 1.0) >= np.finfo(float).eps
+        mem = np.zeros((module.memory_rows(n), n))
+        smem = np.zeros(module.MEMORY_SCALARS)
+        module.prepare(
+            mem, smem, system.minv, system.stiffness, system.damping, dt, adaptive,
+            options.tolerance, options.alpha, dt_min, dt_max,
+        )  # fmt: skip
+        return module.step, mem, smem, adaptive
+    mem = np.zeros((module.MEMORY_ROWS, n))
+    smem = np.zeros(module.MEMORY_SCALARS)
+    return module.step, mem, smem, False
+
+
+def new_buffers(capacity: int, n_modes: int, n_shocks: int):
+    return (
+        np.zeros(capacity),
+        np.zeros(capacity, dtype=np.int64),
+        np.zeros((capacity, n_modes)),
+        np.zeros((capacity, n_modes)),
+        np.zeros((capacity, n_modes)),
+        np.zeros((capacity, n_shocks, N_VINT)),
+    )
+
+
+def grow(buffers):
+    return tuple(np.concatenate([b, np.zeros_like(b)]) for b in buffers)
+
+
+def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSystem, scheme: str):
+    t = clock[K.C_TIME]
+    dt = clock[K.C_STEP]
+    shock = counters[K.K_SHOCK]
+    if status == K.STATUS_SHOCK_DIVERGED and 0 <= shock < shocks.count:
+        where = f" at shock {shocks.specs[shock].name} (node {shocks.specs[shock].node_1})"
+    elif shocks.count:
+        where = " (shocks: " + ", ".join(s.name for s in shocks.specs) + ")"
+    else:
+        where = ""
+    from asterlite.dynamics.model import stability_period
+
+    suggested = stability_period(system, shocks) / 20.0
+    what = {
+        K.STATUS_NOT_FINITE: "the solution became non-finite",
+        K.STATUS_SHOCK_DIVERGED: "relative velocity at a shock diverged",
+        K.STATUS_STEP_UNDERFLOW: "the adaptive step could not be reduced further",
+    }.get(status, f"integration failed (status {status})")
+    return NumericalError(
+        f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; "
+        f"try PAS <= {suggested:.3g} (1/20 of the shortest period including shock stiffness)"
+    )
+
+
+def suggested_step(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
+    from asterlite.dynamics.model import stability_period
+
+    fraction = 10.0 if scheme in ("DEVOGE", "NEWMARK", "TRBDF2") else 20.0
+    return stability_period(system, shocks) / fraction
+
+
+__all__ = ["integrate", "RunResult", "SchemeOptions", "SCHEMES", "suggested_step", "math"]

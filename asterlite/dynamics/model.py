@@ -1,0 +1,284 @@
+"""Numerical model of a DYNA_VIBRA TRAN/GENE run, in flat arrays for the kernels.
+
+Everything here runs once, in numpy: generalized matrices, modal damping,
+shock rows (frame, gaps, stiffnesses, friction, mode shapes at the nodes),
+tabulated excitations, the critical step and code_aster's optimal
+tangential damping.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from asterlite.dynamics import contact as C
+from asterlite.dynamics.geometry import default_origin, local_frame, rest_side_signs
+
+COMPONENTS = ("DX", "DY", "DZ")
+OBSTACLE_CODES = {
+    "PLAN_Y": C.PLAN_Y,
+    "PLAN_Z": C.PLAN_Z,
+    "CERCLE": C.CERCLE,
+    "DISCRET": C.DISCRET,
+    "BI_PLAN_Y": C.BI_PLAN_Y,
+    "BI_PLAN_Z": C.BI_PLAN_Z,
+    "BI_CERCLE": C.BI_CERCLE,
+    "BI_CERC_INT": C.BI_CERC_INT,
+}
+
+
+@dataclass
+class LinearSystem:
+    """Generalized M, K, C (dense (n, n)) and whether all three are diagonal."""
+
+    mass: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+
+    def __post_init__(self) -> None:
+        self.diagonal = all(is_diagonal(m) for m in (self.mass, self.stiffness, self.damping))
+        if self.diagonal:
+            self.minv = np.diag(1.0 / np.diag(self.mass))
+        else:
+            self.minv = np.linalg.inv(self.mass)
+
+    @property
+    def n_modes(self) -> int:
+        return self.mass.shape[0]
+
+    @property
+    def omega2(self) -> np.ndarray:
+        """ω_i² from the diagonal terms (code_aster's per-mode pulsations)."""
+        m, k = np.diag(self.mass), np.diag(self.stiffness)
+        out = np.full(len(m), 1.0e-12)
+        ok = np.abs(m) > np.finfo(float).eps
+        out[ok] = np.abs(k[ok] / m[ok])
+        return out
+
+    def bundle(self):
+        flag = np.array([1 if self.diagonal else 0], dtype=np.int64)
+        return (self.minv, self.stiffness, self.damping, flag)
+
+
+def is_diagonal(a: np.ndarray) -> bool:
+    return not np.any(a - np.diag(np.diag(a)))
+
+
+def modal_damping(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray:
+    """c_i = 2 ξ_i sqrt(k_i m_i); missing ratios repeat the last one given."""
+    n = mass.shape[0]
+    xi = np.asarray(list(ratios), dtype=float)
+    if xi.size == 0:
+        xi = np.zeros(1)
+    if xi.size < n:
+        xi = np.concatenate([xi, np.full(n - xi.size, xi[-1])])
+    m, k = np.diag(mass), np.diag(stiffness)
+    return np.diag(2.0 * xi[:n] * np.sqrt(np.abs(k * m)))
+
+
+@dataclass
+class ShockSpec:
+    """One DIS_CHOC connection as read from the deck (physical description)."""
+
+    name: str
+    obstacle_type: str
+    node_1: str
+    node_2: str | None
+    coord_1: np.ndarray
+    coord_2: np.ndarray | None
+    phi_1: np.ndarray  # (3, n_modes): DX, DY, DZ rows
+    phi_2: np.ndarray | None
+    norm_obst: np.ndarray
+    angl_vril: float | None = None
+    orig_obst: np.ndarray | None = None
+    gap: float = 1.0
+    dist_1: float = 0.0
+    dist_2: float = 0.0
+    k_n: float = 0.0
+    c_n: float = 0.0
+    k_t: float = 0.0
+    c_t: float | None = None  # None: optimal value computed when k_t > 0
+    mu_dyn: float = 0.0
+    mu_stat: float = 0.0
+    unidirectional: bool = False
+    polar: np.ndarray | None = None  # DISCRET: (angle deg, radius) rows
+    extra: dict = field(default_factory=dict)
+
+
+@dataclass
+class ShockSet:
+    """Flat per-shock arrays for the kernels, plus what the result keeps."""
+
+    specs: list[ShockSpec]
+    flags: np.ndarray
+    params: np.ndarray
+    rots: np.ndarray
+    phis: np.ndarray
+    polars: np.ndarray
+
+    @property
+    def count(self) -> int:
+        return len(self.specs)
+
+    def bundle(self):
+        return (self.flags, self.params, self.rots, self.phis, self.polars)
+
+    def parameters(self, s: int) -> dict:
+        p = self.params[s]
+        return {
+            "OBSTACLE": self.specs[s].obstacle_type,
+            "JEU": p[C.P_GAP],
+            "DIST_1": p[C.P_DIST1],
+            "DIST_2": p[C.P_DIST2],
+            "RIGI_NOR": p[C.P_KN],
+            "AMOR_NOR": p[C.P_CN],
+            "RIGI_TAN": p[C.P_KT],
+            "AMOR_TAN": p[C.P_CT],
+            "COULOMB_DYNA": p[C.P_MU_DYN],
+            "COULOMB_STAT": p[C.P_MU_STAT],
+            "ORIG_OBST": p[C.P_ORIGIN : C.P_ORIGIN + 3].copy(),
+            "NORM_OBST": self.specs[s].norm_obst.copy(),
+            "LOCAL_FRAME": self.rots[s].copy(),
+            "UNIDIRECTIONNEL": bool(self.flags[s, C.F_UNIDIR]),
+        }
+
+
+def build_shocks(specs: list[ShockSpec], system: LinearSystem) -> ShockSet:
+    n_modes = system.n_modes
+    ns = len(specs)
+    npol = max([2] + [len(s.polar) for s in specs if s.polar is not None])
+    flags = np.zeros((ns, C.N_FLAGS), dtype=np.int64)
+    params = np.zeros((ns, C.N_PARAMS))
+    rots = np.zeros((ns, 3, 3))
+    phis = np.zeros((ns, 2, 3, n_modes))
+    polars = np.zeros((ns, npol, 2))
+    for s, spec in enumerate(specs):
+        two = spec.obstacle_type.startswith("BI_")
+        coord2 = spec.coord_2 if two else None
+        rot = local_frame(spec.obstacle_type, spec.norm_obst, spec.angl_vril, spec.coord_1, coord2)
+        origin = (
+            spec.orig_obst if spec.orig_obst is not None else default_origin(spec.coord_1, coord2)
+        )
+        origin = np.asarray(origin, dtype=float)
+        sign_y, sign_z = rest_side_signs(rot, origin, spec.coord_1, coord2)
+        flags[s, C.F_GEOMETRY] = OBSTACLE_CODES[spec.obstacle_type]
+        flags[s, C.F_TWO_NODES] = 1 if two else 0
+        flags[s, C.F_UNIDIR] = 1 if spec.unidirectional else 0
+        rots[s] = rot
+        phis[s, 0] = spec.phi_1
+        if two:
+            phis[s, 1] = spec.phi_2
+        if spec.polar is not None:
+            pol = np.asarray(spec.polar, dtype=float)
+            flags[s, C.F_NPOLAR] = len(pol)
+            polars[s, : len(pol), 0] = np.radians(pol[:, 0])
+            polars[s, : len(pol), 1] = pol[:, 1]
+        c_t = spec.c_t
+        if c_t is None:
+            c_t = (
+                optimal_tangential_damping(spec, rot, system)
+                if spec.k_t > np.finfo(float).eps
+                else 0.0
+            )
+        p = params[s]
+        p[C.P_GAP], p[C.P_DIST1], p[C.P_DIST2] = spec.gap, spec.dist_1, spec.dist_2
+        p[C.P_KN], p[C.P_CN], p[C.P_KT], p[C.P_CT] = spec.k_n, spec.c_n, spec.k_t, c_t
+        p[C.P_MU_DYN], p[C.P_MU_STAT] = spec.mu_dyn, spec.mu_stat
+        p[C.P_SIGN_Y], p[C.P_SIGN_Z] = sign_y, sign_z
+        p[C.P_ORIGIN : C.P_ORIGIN + 3] = origin
+        p[C.P_COORD1 : C.P_COORD1 + 3] = spec.coord_1
+        if two:
+            p[C.P_COORD2 : C.P_COORD2 + 3] = spec.coord_2
+    return ShockSet(specs, flags, params, rots, phis, polars)
+
+
+def optimal_tangential_damping(spec: ShockSpec, rot: np.ndarray, system: LinearSystem) -> float:
+    """C_T = 2 sqrt(m (k + K_T)) - 2 ξ sqrt(k m) for the mode that carries the
+    most mass in the tangential motion at the contact (seed §6.5 footnote,
+    mode choice and normalisation as code_aster)."""
+    omega2 = system.omega2
+    masses = np.diag(system.mass)
+    weights = np.zeros(system.n_modes)
+    for j in range(system.n_modes):
+        if omega2[j] * omega2[j] < 1.0e-10:
+            continue  # static mode: fictitious mass
+        shape = spec.phi_1[:, j].copy()
+        if spec.obstacle_type.startswith("BI_"):
+            shape = spec.phi_2[:, j] - shape
+        loc = rot @ shape
+        kind = spec.obstacle_type
+        if kind in ("BI_PLAN_Y", "PLAN_Y"):
+            tangential2 = loc[0] ** 2 + loc[2] ** 2
+        elif kind in ("BI_PLAN_Z", "PLAN_Z"):
+            tangential2 = loc[0] ** 2 + loc[1] ** 2
+        elif kind == "BI_CERCLE":
+            axis = spec.coord_1 - spec.coord_2
+            axis = axis / np.linalg.norm(axis)
+            tangential2 = loc @ loc - (loc @ axis) ** 2
+        else:
+            tangential2 = loc[0] ** 2
+        weights[j] = masses[j] * math.sqrt(tangential2)
+    j = int(np.argmax(weights)) if system.n_modes > 1 else 0
+    m = masses[j]
+    k = omega2[j] * m
+    xi = system.damping[j, j] / (2.0 * math.sqrt(omega2[j]) * m)
+    return max(0.0, 2.0 * math.sqrt(m * (k + spec.k_t)) - 2.0 * xi * math.sqrt(k * m))
+
+
+def stability_period(system: LinearSystem, shocks: ShockSet) -> float:
+    """Smallest period among the modes, each stiffened by every shock's normal
+    and tangential stiffness on each of its shape components (code_aster's
+    VERI_PAS estimate)."""
+    omega = np.sqrt(system.omega2)
+    masses = np.diag(system.mass)
+    eps = np.finfo(float).eps * 1.0e5
+    periods = [2.0 * math.pi / w for w in omega if abs(w) > eps]
+    for s in range(shocks.count):
+        k_n, k_t = shocks.params[s, C.P_KN], shocks.params[s, C.P_KT]
+        nodes = 2 if shocks.flags[s, C.F_TWO_NODES] else 1
+        for node in range(nodes):
+            phi = shocks.phis[s, node]
+            for j in range(system.n_modes):
+                if abs(omega[j]) <= eps or abs(masses[j]) <= eps:
+                    continue
+                for k in (k_n, k_t):
+                    if abs(k) > eps:
+                        for c in range(3):
+                            periods.append(
+                                2.0
+                                * math.pi
+                                / math.sqrt(omega[j] ** 2 + k * phi[c, j] ** 2 / masses[j])
+                            )
+    return min(periods) if periods else 1.0e10
+
+
+@dataclass
+class Excitation:
+    """Generalized load vectors and their multipliers tabulated on a grid."""
+
+    vectors: np.ndarray  # (n_exc, n_modes)
+    table: np.ndarray  # (n_exc, n_samples)
+    grid: np.ndarray  # (t0, h)
+
+    def bundle(self):
+        return (self.vectors, self.table, self.grid)
+
+
+def tabulate_excitation(n_modes: int, loads, t0: float, t_end: float, h: float) -> Excitation:
+    """``loads``: list of (vector, multiplier) with multiplier a float or an
+    object with ``evaluate(t_array)``; sampled every ``h`` over [t0, t_end]."""
+    if not loads:
+        return Excitation(np.zeros((0, n_modes)), np.zeros((0, 2)), np.array([t0, 1.0]))
+    n = max(2, int(math.ceil((t_end - t0) / h)) + 2)
+    times = t0 + h * np.arange(n)
+    vectors = np.zeros((len(loads), n_modes))
+    table = np.zeros((len(loads), n))
+    for e, (vector, mult) in enumerate(loads):
+        vectors[e] = vector
+        if isinstance(mult, (int, float)):
+            table[e] = float(mult)
+        else:
+            table[e] = np.asarray(mult.evaluate(times), dtype=float)
+    return Excitation(vectors, table, np.array([t0, h]))

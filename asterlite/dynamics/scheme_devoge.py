@@ -1,0 +1,313 @@
+"""DEVOGE: Devogelaere-Fu scheme (order 4), with code_aster's step control.
+
+The state is carried at whole steps (index 1, t) and half steps (index 2,
+t - dt/2). With r = M⁻¹F - M⁻¹K q (the "reduced" force) and C' = M⁻¹C:
+
+    q3 = q1 + dt/2 v1 + dt²/24 (4 r1 - r2 - C'(4 v1 - v2))        t + dt/2
+    v3 = v1 + dt/4 (r1 + r3 - C'(v1 + v3))                       implicit in C'
+    q4 = q1 + dt v1 + dt²/6 (r1 + 2 r3 - C'(v1 + 2 v3))           t + dt
+    v4 = v1 + dt/6 (r1 + 4 r3 + r4 - C'(v1 + 4 v3 + v4))         Simpson
+
+Shock forces at 3 and 4 use the finite-difference velocities
+(q3 - q1)/(dt/2) and (q4 - q3)/(dt/2), as code_aster does. Unless PAS_MINI
+equals PAS_MAXI the step adapts: a local error estimate on q3, compared
+with TOLERANCE * (|q| + ALPHA), rescales dt by 0.5..1.5 (up to 24 retries).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics.forces import all_finite, matvec, total_force
+from asterlite.dynamics.kernel import (
+    STATUS_DONE,
+    STATUS_NOT_FINITE,
+    STATUS_SHOCK_DIVERGED,
+    STATUS_STEP_UNDERFLOW,
+)
+
+Q2, V2, R2, R1, Q3, V3, R3, Q4, V4, R4, X1, Q2E, Q1P, V1P, R1P, Q3E, X2 = range(17)
+MATRIX_ROWS = 17  # then invm_c, invm_k, H1 (or its inverse), H2 (or its inverse): n rows each
+S_READY, S_DTOLD, S_OLDPAS1, S_OLDPAS2, S_ADAPTIVE, S_TOL, S_ALPHA, S_DTMIN, S_DTMAX, S_HDT = range(
+    10
+)
+MEMORY_SCALARS = 10
+EPS = np.finfo(np.float64).eps
+
+
+def memory_rows(n: int) -> int:
+    return MATRIX_ROWS + 4 * n
+
+
+def prepare(mem, smem, minv, stiffness, damping, dt, adaptive, tolerance, alpha, dt_min, dt_max):
+    """Fill the constant operators and control parameters (Python side)."""
+    n = minv.shape[0]
+    ops = mem[MATRIX_ROWS:]
+    ops[0:n] = minv @ damping
+    ops[n : 2 * n] = minv @ stiffness
+    smem[:] = 0.0
+    smem[S_ADAPTIVE] = 1.0 if adaptive else 0.0
+    smem[S_TOL], smem[S_ALPHA] = tolerance, alpha
+    smem[S_DTMIN], smem[S_DTMAX] = dt_min, dt_max
+    smem[S_HDT] = -1.0
+
+
+@njit(cache=True)
+def operators(mem, n):
+    base = MATRIX_ROWS
+    return (
+        mem[base : base + n],
+        mem[base + n : base + 2 * n],
+        mem[base + 2 * n : base + 3 * n],
+        mem[base + 3 * n : base + 4 * n],
+    )
+
+
+@njit(cache=True)
+def update_implicit_operators(invm_c, h1, h2, dt, diagonal):
+    """H1 = 4I + dt C', H2 = 6I + dt C' (stored inverted when full)."""
+    n = invm_c.shape[0]
+    for i in range(n):
+        for j in range(n):
+            h1[i, j] = dt * invm_c[i, j]
+            h2[i, j] = dt * invm_c[i, j]
+        h1[i, i] += 4.0
+        h2[i, i] += 6.0
+    if not diagonal:
+        h1[:, :] = np.linalg.inv(h1)  # only when the step changes
+        h2[:, :] = np.linalg.inv(h2)
+
+
+@njit(cache=True)
+def solve_with(h, rhs, out, diagonal):
+    if diagonal:
+        for i in range(out.shape[0]):
+            out[i] = rhs[i] / h[i, i]
+    else:
+        matvec(h, rhs, out, False)
+
+
+@njit(cache=True)
+def reduced_force(f, q, minv, invm_k, out, scratch, diagonal):
+    """out = M⁻¹ f - M⁻¹K q."""
+    matvec(minv, f, out, diagonal)
+    matvec(invm_k, q, scratch, diagonal)
+    for i in range(out.shape[0]):
+        out[i] -= scratch[i]
+
+
+@njit(cache=True)
+def start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
+    """Build the half-step state at t - dt/2 from (q, v, F) at t."""
+    n = q.shape[0]
+    q2, v2, r2, r1, x1, x2 = mem[Q2], mem[V2], mem[R2], mem[R1], mem[X1], mem[X2]
+    update_implicit_operators(invm_c, h1, h2, dt, diagonal)
+    smem[S_HDT] = dt
+    mem[Q1P, :] = q
+    mem[V1P, :] = v
+    mem[R1P, :] = f  # code_aster keeps the raw force here on the first step
+    smem[S_OLDPAS1] = dt
+    smem[S_OLDPAS2] = dt
+    smem[S_DTOLD] = dt
+    half = dt / 2.0
+    reduced_force(f, q, minv, invm_k, r1, x1, diagonal)
+    matvec(invm_c, v, x1, diagonal)
+    for i in range(n):
+        q2[i] = q[i] - half * v[i] + (half / 4.0) * (r1[i] - x1[i])
+    reduced_force(f, q2, minv, invm_k, r2, x1, diagonal)
+    # v2 from H0 v2 = H1 v1 - dt (r1 + r2), H0 = 4I - dt C'
+    h0 = np.empty((n, n))  # once per run
+    for i in range(n):
+        for j in range(n):
+            h0[i, j] = -dt * invm_c[i, j]
+        h0[i, i] += 4.0
+    matvec(invm_c, v, x1, diagonal)
+    for i in range(n):
+        x2[i] = 4.0 * v[i] + dt * x1[i] - dt * (r1[i] + r2[i])
+    if diagonal:
+        for i in range(n):
+            v2[i] = x2[i] / h0[i, i]
+    else:
+        v2[:] = np.linalg.solve(h0, x2)
+    if smem[S_ADAPTIVE] == 1.0:
+        for i in range(n):
+            mem[Q2E, i] = (
+                (2.0 * q2[i] - q[i]) + half * (2.0 * v2[i] - v[i]) + (half**2 / 24.0) * 13.0 * r1[i]
+            )
+    smem[S_READY] = 1.0
+
+
+@njit(cache=True)
+def step(t, dt, q, v, a, f, mem, smem, vint, vint_save, lin, shk, exc, work):
+    minv, stiffness, damping, is_diagonal = lin
+    diagonal = is_diagonal[0] == 1
+    n = q.shape[0]
+    invm_c, invm_k, h1, h2 = operators(mem, n)
+    if smem[S_READY] == 0.0:
+        start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal)
+    q2, v2, r2, r1 = mem[Q2], mem[V2], mem[R2], mem[R1]
+    q3, v3, r3, q4, v4, r4 = mem[Q3], mem[V3], mem[R3], mem[Q4], mem[V4], mem[R4]
+    x1, x2 = mem[X1], mem[X2]
+    adaptive = smem[S_ADAPTIVE] == 1.0
+    vint_save[:, :] = vint
+    dtold = smem[S_DTOLD]
+    attempts = 0
+    dtnew = dt
+    while True:
+        vint[:, :] = vint_save
+        half = dt / 2.0
+        coeff = dt / dtold
+        if abs(coeff - 1.0) >= EPS:
+            if dt != smem[S_HDT]:
+                update_implicit_operators(invm_c, h1, h2, dt, diagonal)
+                smem[S_HDT] = dt
+            if attempts > 0:  # retry with a smaller step: rescale the half-step state
+                for i in range(n):
+                    r2[i] = r1[i] + coeff * (r2[i] - r1[i])
+                    q2[i] = q[i] + coeff * (q2[i] - q[i])
+                    v2[i] = v[i] + coeff * (v2[i] - v[i])
+        # --- t + dt/2
+        for i in range(n):
+            x1[i] = 4.0 * v[i] - v2[i]
+        matvec(invm_c, x1, x2, diagonal)
+        for i in range(n):
+            q3[i] = q[i] + half * v[i] + (dt * dt / 24.0) * (4.0 * r1[i] - r2[i] - x2[i])
+            v3[i] = (q3[i] - q[i]) / half
+        shock = total_force(t + half, q3, v3, shk, vint, exc, work, f)
+        if shock >= 0:
+            return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
+        reduced_force(f, q3, minv, invm_k, r3, x1, diagonal)
+        matvec(invm_c, v, x2, diagonal)
+        for i in range(n):
+            x1[i] = 4.0 * (v[i] + (dt / 4.0) * (r1[i] + r3[i] - x2[i]))
+        solve_with(h1, x1, v3, diagonal)
+        # --- t + dt
+        for i in range(n):
+            x1[i] = v[i] + 2.0 * v3[i]
+        matvec(invm_c, x1, x2, diagonal)
+        for i in range(n):
+            q4[i] = q[i] + dt * v[i] + (dt * dt / 6.0) * (r1[i] + 2.0 * r3[i] - x2[i])
+            v4[i] = (q4[i] - q3[i]) / half
+        shock = total_force(t + dt, q4, v4, shk, vint, exc, work, f)
+        if shock >= 0:
+            return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
+        reduced_force(f, q4, minv, invm_k, r4, x1, diagonal)
+        for i in range(n):
+            x1[i] = 4.0 * v3[i] + v[i]
+        matvec(invm_c, x1, x2, diagonal)
+        for i in range(n):
+            x1[i] = 6.0 * (v[i] + (dt / 6.0) * (r4[i] + 4.0 * r3[i] + r1[i] - x2[i]))
+        solve_with(h2, x1, v4, diagonal)
+        if not (all_finite(q4) and all_finite(v4)):
+            return STATUS_NOT_FINITE, -1, dt, dt, attempts
+        if not adaptive:
+            break
+        err = relative_error(dt, q, v, mem, smem, attempts, n)
+        attempts += 1
+        dtnew = min(max(step_factor(err) * dt, smem[S_DTMIN]), smem[S_DTMAX])
+        if err < 1.0 and abs(dtnew / dt - 1.0) < 0.15:
+            dtnew = dt
+        if err > 1.0 and attempts < 25:
+            if abs(dtnew / dt - 1.0) < EPS:
+                return STATUS_STEP_UNDERFLOW, -1, dt, dt, attempts
+            dtold = dt
+            dt = dtnew
+            continue
+        mem[Q1P, :] = q
+        mem[V1P, :] = v
+        mem[R1P, :] = r1
+        mem[Q2E, :] = mem[Q3E]
+        smem[S_OLDPAS1] = smem[S_OLDPAS2]
+        smem[S_OLDPAS2] = dt
+        break
+    # --- shift: half step 3 -> 2, whole step 4 -> 1
+    matvec(invm_c, v4, x1, diagonal)
+    for i in range(n):
+        a[i] = r4[i] - x1[i]
+        q2[i], v2[i], r2[i] = q3[i], v3[i], r3[i]
+        q[i], v[i], r1[i] = q4[i], v4[i], r4[i]
+    smem[S_DTOLD] = dt
+    rejected = attempts - 1 if attempts > 0 else 0
+    return STATUS_DONE, -1, dt, dtnew, rejected
+
+
+@njit(cache=True)
+def step_factor(err):
+    if err < (0.9 / 1.5) ** 4:
+        return 1.5
+    if err > (0.9 / 0.5) ** 4:
+        return 0.5
+    return 0.9 * err ** (-0.25)
+
+
+@njit(cache=True)
+def relative_error(dt, q, v, mem, smem, attempts, n):
+    """code_aster's error estimate on the half-step displacement, divided by
+    the tolerance; > 1 rejects the step."""
+    half = dt / 2.0
+    q2, r2, r1 = mem[Q2], mem[R2], mem[R1]
+    q3, v3, r3, q4, v4, r4 = mem[Q3], mem[V3], mem[R3], mem[Q4], mem[V4], mem[R4]
+    q2e, q3e = mem[Q2E], mem[Q3E]
+    oldpas1, oldpas2 = smem[S_OLDPAS1], smem[S_OLDPAS2]
+    same_as_last = abs(dt - oldpas2) <= EPS
+    last_two_same = abs(oldpas2 - oldpas1) <= EPS
+    if same_as_last and last_two_same:
+        case = 0
+    elif (not same_as_last) and last_two_same:
+        case = 1
+    elif not same_as_last:
+        case = 3
+    else:
+        case = 0  # code_aster's second-step case is unreachable (it compares oldpas1 with itself)
+    c24 = half * half / 24.0
+    for i in range(n):
+        if case == 0:
+            q3e[i] = q4[i] - half * v4[i] + c24 * (7.0 * r4[i] + 6.0 * r3[i] - r1[i])
+        else:
+            q3e[i] = q[i] + half * v[i] + c24 * (7.0 * r1[i] + 6.0 * r3[i] - r4[i])
+    pas0, pas1 = oldpas1 / 2.0, oldpas2 / 2.0
+    if attempts == 1:
+        for i in range(n):
+            q2e[i] = (
+                mem[Q1P, i]
+                + pas1 * mem[V1P, i]
+                + (pas1 * pas1 / 24.0) * (7.0 * mem[R1P, i] + 6.0 * r2[i] - r1[i])
+            )
+    w_new, w_old = 1.0, 1.0
+    if case == 0:
+        beta = 45.0 * half / 4.0
+    elif case == 1:
+        c1 = half / pas1
+        w_old = c1**3 * (2.0 + c1) / 3.0
+        beta = 5.0 * pas1 * (12.0 + 7.0 * c1 - c1 * c1) / (8.0 * c1)
+    else:
+        c0 = pas1 / pas0
+        c1 = half / pas1
+        w_old = c1**3 * (2.0 + c1) / 3.0
+        w_new = (1.0 + 2.0 / c0) / 3.0
+        beta = (
+            5.0
+            * half
+            * (
+                c0 * c0 * (12.0 + 7.0 * c1 - c1 * c1)
+                + c0 * (20.0 + 12.0 * c1 - 2.0 * c1 * c1)
+                + 2.0 * c1
+                + 4.0
+            )
+            / (24.0 * c0 * c0 * c1 * c1)
+        )
+    total = 0.0
+    magnitude = 0.0
+    for i in range(n):
+        e = (w_new * (q3e[i] - q3[i]) - w_old * (q2e[i] - q2[i])) / beta
+        total += e * e
+        m = max(abs(q3[i]), abs(v3[i] * dt))
+        magnitude += m * m
+    err_displacement = math.sqrt(total) * half / n
+    scale = smem[S_TOL] * (math.sqrt(magnitude) / n + smem[S_ALPHA])
+    if scale <= EPS:
+        return 0.9**4
+    return err_displacement / scale

@@ -1,0 +1,43 @@
+"""Degrees of freedom carried by each modelisation, in code_aster's component order."""
+
+from __future__ import annotations
+
+#: Component order inside a node (code_aster's DEPL_R order).
+COMPONENT_ORDER = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
+COMPONENT_RANK = {c: i for i, c in enumerate(COMPONENT_ORDER)}
+
+TRANSLATIONS = ("DX", "DY", "DZ")
+ROTATIONS = ("DRX", "DRY", "DRZ")
+
+#: Components per node for each modelisation asterlite knows.
+MODELISATION_COMPONENTS: dict[str, tuple[str, ...]] = {
+    "DIS_T": ("DX", "DY", "DZ"),
+    "DIS_TR": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+    "2D_DIS_T": ("DX", "DY"),
+    "2D_DIS_TR": ("DX", "DY", "DRZ"),
+    "POU_D_E": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+    "POU_D_T": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+    "POU_D_TG": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX"),
+    "BARRE": ("DX", "DY", "DZ"),
+    "2D_BARRE": ("DX", "DY"),
+}
+
+DISCRETE_MODELISATIONS = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
+
+#: Cell types each modelisation accepts.
+MODELISATION_CELLS: dict[str, tuple[str, ...]] = {
+    "DIS_T": ("POI1", "SEG2"),
+    "DIS_TR": ("POI1", "SEG2"),
+    "2D_DIS_T": ("POI1", "SEG2"),
+    "2D_DIS_TR": ("POI1", "SEG2"),
+    "POU_D_E": ("SEG2",),
+    "POU_D_T": ("SEG2",),
+    "POU_D_TG": ("SEG2",),
+    "BARRE": ("SEG2",),
+    "2D_BARRE": ("SEG2",),
+}
+
+
+def sort_components(components) -> tuple[str, ...]:
+    """Components in code_aster's order (unknown names last, alphabetically)."""
+    return tuple(sorted(set(components), key=lambda c: (COMPONENT_RANK.get(c, 99), c)))

@@ -1,0 +1,123 @@
+"""Element matrices of a model for one option, grouped into vectorised blocks.
+
+``element_blocks(model, characteristics, matrix)`` returns the global-frame
+:class:`ElementBlock` list of the discrete elements for ``matrix`` in
+``K`` (RIGI_MECA), ``M`` (MASS_MECA) or ``A`` (AMOR_MECA). Cells sharing one
+characteristic are computed together: one local matrix, then one batched
+rotation when the values are given in the LOCAL frame.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+
+import numpy as np
+
+from asterlite.concepts.assembly import ElementBlock, ElementCharacteristics, Model
+from asterlite.fem.discrete import local_matrix, parse_cara
+from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
+from asterlite.fem.frames import angles_from_axis, block_rotation, rotation_from_angles
+
+
+class ElementError(ValueError):
+    """A model/characteristics combination that cannot give element matrices."""
+
+
+def cell_frames(model: Model, cells: np.ndarray, characteristics) -> np.ndarray:
+    """(n, 3, 3) global-to-local rotations of cells: ORIENTATION when given,
+    else x along the segment (SEG2) or the global frame (POI1)."""
+    mesh = model.mesh
+    angles = np.zeros((len(cells), 3))
+    for k, cell in enumerate(cells):
+        given = characteristics.orientation.get(int(cell)) if characteristics else None
+        if given is not None:
+            angles[k] = given
+        elif mesh.cell_types[cell] == "SEG2":
+            a, b = mesh.cell_nodes[cell]
+            angles[k] = angles_from_axis(mesh.coords[b] - mesh.coords[a])
+    return rotation_from_angles(angles)
+
+
+def _discrete_blocks(model, characteristics, matrix, cells) -> list[ElementBlock]:
+    mesh = model.mesh
+    # group cells sharing modelisation, cell type and characteristic values
+    groups: dict[tuple, list[int]] = defaultdict(list)
+    for cell in cells:
+        assignment = (characteristics.discrete.get(int(cell), {}) if characteristics else {}).get(
+            matrix
+        )
+        if assignment is None:
+            continue
+        key = (
+            model.cell_modelisation[cell],
+            mesh.cell_types[cell],
+            assignment.cara,
+            tuple(np.atleast_1d(assignment.values).tolist()),
+            assignment.repere,
+            assignment.symmetric,
+        )
+        groups[key].append(int(cell))
+    blocks = []
+    for (modelisation, cell_type, cara, values, repere, symmetric), members in groups.items():
+        members = np.array(members, dtype=int)
+        dim = 2 if modelisation.startswith("2D_") else 3
+        components = MODELISATION_COMPONENTS[modelisation]
+        _, kind, _, support = parse_cara(cara)
+        wanted_kind = "TR" if modelisation.endswith("_TR") else "T"
+        if kind != wanted_kind:
+            raise ElementError(f"{cara} does not match modelisation {modelisation}")
+        if (support == "N") != (cell_type == "POI1"):
+            raise ElementError(f"{cara} cannot be assigned to {cell_type} cells")
+        local = local_matrix(cara, values, dim, symmetric)
+        n_nodes = 1 if cell_type == "POI1" else 2
+        nodes = np.array([mesh.cell_nodes[c] for c in members], dtype=int).reshape(-1, n_nodes)
+        if repere == "LOCAL" and not _rotation_invariant(local, components, n_nodes):
+            rot = block_rotation(cell_frames(model, members, characteristics), components, n_nodes)
+            mats = np.einsum("eji,jk,ekl->eil", rot, local, rot)  # Pᵀ A P
+        else:
+            mats = np.broadcast_to(local, (len(members),) + local.shape).copy()
+        blocks.append(ElementBlock(nodes=nodes, components=components, matrices=mats))
+    return blocks
+
+
+def _rotation_invariant(local: np.ndarray, components, n_nodes: int) -> bool:
+    """True when every per-node 3x3 (or 2x2) vector block is isotropic, so any
+    rotation leaves the matrix unchanged (saves the batched rotation)."""
+    per = len(components)
+    idx = {c: k for k, c in enumerate(components)}
+    groups = [[idx[c] for c in t if c in idx] for t in (("DX", "DY", "DZ"), ("DRX", "DRY", "DRZ"))]
+    groups = [g for g in groups if len(g) >= 2]
+    for a in range(n_nodes):
+        for b in range(n_nodes):
+            blk = local[a * per : (a + 1) * per, b * per : (b + 1) * per]
+            for g in groups:
+                for h in groups:
+                    sub = blk[np.ix_(g, h)]
+                    if g == h:
+                        if not np.allclose(sub, sub[0, 0] * np.eye(len(g))):
+                            return False
+                    elif np.any(sub):
+                        return False
+    return True
+
+
+#: Element computations by modelisation: fn(model, characteristics, matrix, cells)
+#: -> list[ElementBlock]. Other rooms register beams, bars... here.
+ELEMENT_COMPUTERS = {name: _discrete_blocks for name in DISCRETE_MODELISATIONS}
+
+
+def element_blocks(
+    model: Model, characteristics: ElementCharacteristics | None, matrix: str
+) -> list[ElementBlock]:
+    """Global-frame element matrices of the model for ``matrix`` (K, M or A)."""
+    by_modelisation: dict[str, list[int]] = defaultdict(list)
+    for cell, modelisation in model.cell_modelisation.items():
+        by_modelisation[modelisation].append(cell)
+    missing = sorted(m for m in by_modelisation if m not in ELEMENT_COMPUTERS)
+    if missing:
+        raise NotImplementedError(f"element matrices of modelisation {', '.join(missing)}")
+    blocks = []
+    for modelisation, cells in by_modelisation.items():
+        compute = ELEMENT_COMPUTERS[modelisation]
+        blocks.extend(compute(model, characteristics, matrix, np.array(sorted(cells), dtype=int)))
+    return blocks

@@ -1,0 +1,190 @@
+"""Reader for code_aster's native text mesh format (``FORMAT='ASTER'``).
+
+The file is a sequence of sections, each opened by a keyword line and closed
+by ``FINSF``; ``FIN`` ends the file and ``%`` starts a comment. Sections:
+
+- ``TITRE``: free text;
+- ``COOR_1D`` / ``COOR_2D`` / ``COOR_3D``: ``name x [y [z]]`` per node;
+- a cell type (``POI1``, ``SEG2``, ``QUAD4``...): ``name node1 node2 ...``;
+- ``GROUP_NO`` / ``GROUP_MA``: the group name (first token, or ``NOM=name``
+  on the keyword line) followed by member names.
+
+Entries may wrap over several lines: only the token count matters.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from asterlite.concepts.mesh import CELL_NODE_COUNTS, Mesh
+
+
+class AsterMeshError(ValueError):
+    """A malformed mesh file; ``line`` is 1-based (0 when unknown)."""
+
+    def __init__(self, message: str, line: int = 0, filename: str = ""):
+        where = f"{filename}:{line}: " if line else (f"{filename}: " if filename else "")
+        super().__init__(where + message)
+        self.line = line
+
+
+_COORD_SECTIONS = {"COOR_1D": 1, "COOR_2D": 2, "COOR_3D": 3}
+_GROUP_SECTIONS = ("GROUP_NO", "GROUP_MA")
+
+
+def _lines(text: str):
+    """(line number, tokens) for each non-empty line, comments removed."""
+    for number, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split("%", 1)[0].replace(",", " ")
+        tokens = line.split()
+        if tokens:
+            yield number, tokens
+
+
+def _header_options(tokens: list[str]) -> tuple[dict[str, str], list[str]]:
+    """Split ``KEY=VALUE`` / ``KEY = VALUE`` options off a section's keyword line."""
+    joined = " ".join(tokens).replace(" =", "=").replace("= ", "=")
+    options, rest = {}, []
+    for tok in joined.split():
+        if "=" in tok:
+            key, _, value = tok.partition("=")
+            options[key.upper()] = value
+        else:
+            rest.append(tok)
+    return options, rest
+
+
+def _to_float(token: str, line: int, filename: str) -> float:
+    try:
+        return float(token.replace("D", "E").replace("d", "e"))
+    except ValueError:
+        raise AsterMeshError(f"expected a number, found {token!r}", line, filename) from None
+
+
+def parse_aster_mesh(text: str, filename: str = "") -> Mesh:
+    """Build a :class:`Mesh` from the text of an ASTER-format mesh file."""
+    node_names: list[str] = []
+    node_xyz: list[tuple[float, float, float]] = []
+    node_lines: dict[str, int] = {}
+    cells: list[tuple[str, str, list[str], int]] = []  # name, type, node names, line
+    groups: list[tuple[str, str, list[str], int]] = []  # kind, name, members, line
+    title: list[str] = []
+    dim = 0
+
+    lines = list(_lines(text))
+    raw_lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        number, tokens = lines[i]
+        keyword = tokens[0].upper()
+        i += 1
+        if keyword == "FIN":
+            break
+        if keyword == "FINSF":
+            continue
+        # collect the section body (every token up to FINSF), keeping line numbers
+        body: list[tuple[str, int]] = []
+        while i < len(lines) and lines[i][1][0].upper() != "FINSF":
+            body.extend((tok, lines[i][0]) for tok in lines[i][1])
+            i += 1
+        if i >= len(lines):
+            raise AsterMeshError(f"section {keyword} is not closed by FINSF", number, filename)
+        i += 1  # skip FINSF
+
+        if keyword == "TITRE":
+            # keep the raw text (tokens lose spacing)
+            first = body[0][1] if body else number + 1
+            last = body[-1][1] if body else number
+            title.extend(raw_lines[k - 1].rstrip() for k in range(first, last + 1))
+            continue
+        options, extra = _header_options(tokens[1:])
+        if keyword in _COORD_SECTIONS:
+            ndim = _COORD_SECTIONS[keyword]
+            dim = max(dim, ndim)
+            if len(body) % (ndim + 1):
+                raise AsterMeshError(
+                    f"{keyword}: expected entries of a name and {ndim} coordinates",
+                    number,
+                    filename,
+                )
+            for k in range(0, len(body), ndim + 1):
+                name, line = body[k]
+                if name in node_lines:
+                    raise AsterMeshError(f"node {name} defined twice", line, filename)
+                xyz = [_to_float(tok, ln, filename) for tok, ln in body[k + 1 : k + 1 + ndim]]
+                node_lines[name] = line
+                node_names.append(name)
+                node_xyz.append(tuple(xyz + [0.0] * (3 - ndim)))
+        elif keyword in CELL_NODE_COUNTS:
+            count = CELL_NODE_COUNTS[keyword]
+            if len(body) % (count + 1):
+                raise AsterMeshError(
+                    f"{keyword}: expected entries of a name and {count} node names",
+                    number,
+                    filename,
+                )
+            for k in range(0, len(body), count + 1):
+                name, line = body[k]
+                cells.append((name, keyword, [tok for tok, _ in body[k + 1 : k + 1 + count]], line))
+        elif keyword in _GROUP_SECTIONS:
+            members = extra + [tok for tok, _ in body]
+            name = options.get("NOM")
+            if name is None:
+                if not members:
+                    raise AsterMeshError(f"{keyword} without a name", number, filename)
+                name, members = members[0], members[1:]
+            groups.append((keyword, name, members, number))
+        else:
+            raise AsterMeshError(f"unknown section keyword {tokens[0]!r}", number, filename)
+
+    node_index = {n: k for k, n in enumerate(node_names)}
+    cell_names, cell_types, cell_nodes = [], [], []
+    cell_index: dict[str, int] = {}
+    for name, cell_type, conn, line in cells:
+        if name in cell_index:
+            raise AsterMeshError(f"cell {name} defined twice", line, filename)
+        try:
+            cell_nodes.append(tuple(node_index[n] for n in conn))
+        except KeyError as exc:
+            message = f"cell {name} uses unknown node {exc.args[0]}"
+            raise AsterMeshError(message, line, filename) from None
+        cell_index[name] = len(cell_names)
+        cell_names.append(name)
+        cell_types.append(cell_type)
+
+    node_groups: dict[str, np.ndarray] = {}
+    cell_groups: dict[str, np.ndarray] = {}
+    for kind, name, members, line in groups:
+        table, lookup = (
+            (node_groups, node_index) if kind == "GROUP_NO" else (cell_groups, cell_index)
+        )
+        if name in table:
+            raise AsterMeshError(f"{kind} {name} defined twice", line, filename)
+        try:
+            table[name] = np.array([lookup[m] for m in members], dtype=int)
+        except KeyError as exc:
+            what = "node" if kind == "GROUP_NO" else "cell"
+            raise AsterMeshError(
+                f"{kind} {name} names unknown {what} {exc.args[0]}", line, filename
+            ) from None
+
+    coords = np.array(node_xyz, dtype=float).reshape(-1, 3)
+    return Mesh(
+        coords=coords,
+        node_names=node_names,
+        cell_names=cell_names,
+        cell_types=cell_types,
+        cell_nodes=cell_nodes,
+        node_groups=node_groups,
+        cell_groups=cell_groups,
+        dim=dim or 3,
+        title="\n".join(title),
+    )
+
+
+def read_aster_mesh(path: str | Path) -> Mesh:
+    """Read an ASTER-format mesh file."""
+    path = Path(path)
+    return parse_aster_mesh(path.read_text(encoding="utf-8", errors="replace"), str(path))

@@ -1,0 +1,99 @@
+"""Text writers for tables and functions: code_aster's TABLEAU layout, CSV,
+and XMGRACE (.agr) curves."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+import numpy as np
+
+
+def format_value(value, type_code: str, real_format: str = "E12.5") -> str:
+    """One cell as code_aster prints it (Fortran-like E format for reals)."""
+    if value is None:
+        return "-"
+    if type_code == "R":
+        return fortran_real(float(value), real_format)
+    if type_code == "C":
+        return f"{fortran_real(value.real, real_format)} {fortran_real(value.imag, real_format)}"
+    return str(value)
+
+
+def fortran_real(value: float, spec: str = "E12.5") -> str:
+    """``E12.5`` → ``1.55000E-02`` (width, digits after the point)."""
+    kind = spec[0].upper()
+    width, _, digits = spec[1:].partition(".")
+    digits = int(digits or 5)
+    if not math.isfinite(value):
+        return str(value).rjust(int(width or 12))
+    text = f"{value:.{digits}E}" if kind in "ED" else f"{value:.{digits}f}"
+    return text.rjust(int(width or 12))
+
+
+def table_lines(table, columns: Iterable[str] | None = None, title: str = "", real_format="E12.5"):
+    """Lines of a table in code_aster's TABLEAU layout: a commented title,
+    a header of parameter names, one line per row, '-' where a row has no
+    value."""
+    columns = list(columns or table.columns)
+    cells = [
+        [format_value(row.get(c), table.types[c], real_format) for c in columns]
+        for row in table.rows
+    ]
+    widths = [max([len(c)] + [len(r[j]) for r in cells]) for j, c in enumerate(columns)]
+    lines = ["#-" * 40]
+    if title:
+        lines.extend(f"#{t}" for t in title.splitlines())
+    lines.append(" ".join(c.ljust(w) for c, w in zip(columns, widths, strict=True)).rstrip())
+    for r in cells:
+        lines.append(" ".join(v.ljust(w) for v, w in zip(r, widths, strict=True)).rstrip())
+    return lines
+
+
+def table_csv_lines(table, columns: Iterable[str] | None = None, separator: str = ","):
+    columns = list(columns or table.columns)
+    lines = [separator.join(columns)]
+    for row in table.rows:
+        lines.append(
+            separator.join(
+                "" if row.get(c) is None else format_value(row[c], table.types[c], "E.12").strip()
+                for c in columns
+            )
+        )
+    return lines
+
+
+def function_lines(abscissas, ordinates, nom_para: str, nom_resu: str, title: str = ""):
+    """A function as a two-column (three for complex) TABLEAU block."""
+    ordinates = np.asarray(ordinates)
+    lines = ["#-" * 40]
+    if title:
+        lines.append(f"#{title}")
+    if ordinates.dtype.kind == "c":
+        lines.append(f"{nom_para:<12} {nom_resu + '_R':<12} {nom_resu + '_I':<12}")
+        for x, y in zip(abscissas, ordinates, strict=True):
+            lines.append(f"{fortran_real(x)} {fortran_real(y.real)} {fortran_real(y.imag)}")
+    else:
+        lines.append(f"{nom_para:<12} {nom_resu:<12}")
+        for x, y in zip(abscissas, ordinates, strict=True):
+            lines.append(f"{fortran_real(x)} {fortran_real(float(y))}")
+    return lines
+
+
+def xmgrace_lines(curves, title: str = "", x_label: str = "", y_label: str = ""):
+    """A minimal Grace project: one xy set per curve (abscissas, ordinates,
+    legend)."""
+    lines = ["# Grace project file", "@version 50122"]
+    if title:
+        lines.append(f'@title "{title}"')
+    lines += [f'@xaxis label "{x_label}"', f'@yaxis label "{y_label}"']
+    for k, (x, y, legend) in enumerate(curves):
+        lines += [f'@s{k} legend "{legend}"', f"@target G0.S{k}", "@type xy"]
+        lines += [f"{xi:.10E} {float(np.real(yi)):.10E}" for xi, yi in zip(x, y, strict=True)]
+        lines.append("&")
+    return lines
+
+
+def write_lines(path, lines, append: bool = True) -> None:
+    with open(path, "a" if append else "w", encoding="utf-8") as stream:
+        stream.write("\n".join(lines) + "\n")

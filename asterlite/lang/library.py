@@ -1,0 +1,523 @@
+"""What a deck can reach besides its own names: whitelisted builtins, the
+``math`` module, a curated numpy subset, and the attributes allowed on values.
+
+Everything here is an explicit whitelist. numpy is imported only when a deck
+imports it. Functions that could allocate without bound are wrapped with a
+guard from :mod:`asterlite.lang.limits`.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import sys
+
+from asterlite.errors import DeckRuntimeError
+from asterlite.lang import limits as guards
+from asterlite.lang.limits import Limits
+from asterlite.lang.values import COBuilder, FactorBuilder
+
+# How a plain Python callable treats Unknown arguments (see Evaluator._call_python):
+STORE = "store"  # receives Unknown as any value (print, list.append, concept methods)
+DIRECT = "direct"  # Unknown result when an argument itself is Unknown (len, list, zip...)
+DEEP = "deep"  # Unknown result when Unknown appears anywhere in the arguments (math, numpy)
+
+
+class DeckModule:
+    """A module as a deck sees it: a fixed mapping of member names."""
+
+    __slots__ = ("name", "_members", "_loader")
+
+    def __init__(self, name: str, members: dict | None = None, loader=None):
+        self.name = name
+        self._members = members
+        self._loader = loader  # builds the members on first use (numpy)
+
+    @property
+    def members(self) -> dict:
+        if self._members is None:
+            self._members = self._loader()
+        return self._members
+
+    def attribute(self, name: str):
+        try:
+            return self.members[name]
+        except KeyError:
+            raise DeckRuntimeError(
+                f"module '{self.name}' has no attribute '{name}' available in decks"
+            ) from None
+
+    def public_names(self) -> dict:
+        return {k: v for k, v in self.members.items() if not k.startswith("_") or k == "_F"}
+
+    def __repr__(self) -> str:
+        return f"<module '{self.name}'>"
+
+
+def _policy(policy: str):
+    def mark(function):
+        function.deck_unknown_policy = policy
+        return function
+
+    return mark
+
+
+# ------------------------------------------------------------------- builtins
+
+
+def _make_print(print_hook, limits: Limits):
+    hook = print_hook or sys.stdout.write
+
+    @_policy(STORE)
+    def deck_print(*values, sep=" ", end="\n"):
+        guards.check_nested_size(values, limits)
+        hook(str(sep).join(str(value) for value in values) + str(end))
+
+    deck_print.__name__ = "print"
+    return deck_print
+
+
+def _make_builtins(limits: Limits) -> dict:
+    def deck_range(*args):
+        span = range(*args)
+        try:
+            size = len(span)
+        except OverflowError:
+            size = limits.max_sequence_length + 1
+        guards.check_length(size, limits, "range length")
+        return span
+
+    def deck_sum(iterable, start=0):
+        if not isinstance(start, (int, float, complex)):
+            raise DeckRuntimeError("sum() start value must be a number in decks")
+        return sum(iterable, start)
+
+    def deck_pow(base, exponent, modulo=None):
+        if modulo is None:
+            guards.check_binary("**", base, exponent, limits)
+            return pow(base, exponent)
+        return pow(base, exponent, modulo)
+
+    def as_text(convert):
+        def deck_text(*args, **kwargs):
+            guards.check_nested_size(args, limits)
+            return convert(*args, **kwargs)
+
+        deck_text.__name__ = convert.__name__
+        return deck_text
+
+    deck_range.__name__, deck_sum.__name__, deck_pow.__name__ = "range", "sum", "pow"
+    return {
+        "abs": abs,
+        "min": min,
+        "max": max,
+        "sum": deck_sum,
+        "len": len,
+        "range": deck_range,
+        "enumerate": enumerate,
+        "zip": zip,
+        "map": map,
+        "sorted": sorted,
+        "reversed": reversed,
+        "list": list,
+        "tuple": tuple,
+        "dict": dict,
+        "set": set,
+        "int": int,
+        "float": float,
+        "complex": complex,
+        "str": as_text(str),
+        "bool": bool,
+        "round": round,
+        "pow": deck_pow,
+        "divmod": divmod,
+        "any": any,
+        "all": all,
+        "repr": as_text(repr),
+        "chr": chr,
+        "ord": ord,
+    }
+
+
+# builtins whose result is Unknown only when an argument itself is Unknown
+STRUCTURAL_BUILTINS = frozenset(
+    {"len", "enumerate", "zip", "map", "reversed", "list", "tuple", "dict", "set", "str", "repr"}
+)
+
+
+def base_namespace(print_hook=None, limits: Limits | None = None) -> dict:
+    """A fresh namespace holding the builtins a deck may use, ``_F``, ``CO`` and
+    the ``math`` names (code_aster runs decks after ``from math import *``, and
+    decks rely on it: ``pow`` is therefore math.pow).
+
+    ``print_hook(text)`` receives what ``print`` would write, end included
+    (like ``file.write``); the default writes to sys.stdout.
+    """
+    limits = limits or Limits()
+    namespace = _make_builtins(limits)
+    namespace.update(math_members())
+    namespace["print"] = _make_print(print_hook, limits)
+    namespace["_F"] = FactorBuilder()
+    namespace["CO"] = COBuilder()
+    return namespace
+
+
+def structural_ids(namespace: dict) -> frozenset[int]:
+    """ids of the structural builtins in a namespace (see STRUCTURAL_BUILTINS)."""
+    ids = {id(namespace[name]) for name in STRUCTURAL_BUILTINS if name in namespace}
+    ids.update(id(builtin) for builtin in (len, enumerate, zip, map, reversed, list, tuple))
+    ids.update(id(builtin) for builtin in (dict, set, str, repr))
+    return frozenset(ids)
+
+
+# --------------------------------------------------------------------- math
+
+# integer functions whose cost grows without bound with their argument
+_MATH_EXCLUDED = frozenset({"factorial", "comb", "perm", "prod"})
+
+
+@functools.cache
+def math_members() -> dict:
+    return {
+        name: getattr(math, name)
+        for name in dir(math)
+        if not name.startswith("_") and name not in _MATH_EXCLUDED
+    }
+
+
+# -------------------------------------------------------------------- numpy
+
+NUMPY_FUNCTIONS = """
+array asarray zeros ones empty full zeros_like ones_like empty_like full_like
+linspace arange logspace eye identity diag diagonal trace
+sqrt sin cos tan arcsin arccos arctan arctan2 sinh cosh tanh exp expm1 log log10 log2 log1p
+abs absolute fabs sign floor ceil round around rint trunc fix square power hypot mod fmod
+sum prod cumsum cumprod diff gradient dot vdot outer cross inner matmul
+allclose isclose array_equal nonzero flatnonzero argwhere count_nonzero where
+sort argsort unique searchsorted concatenate hstack vstack stack column_stack
+insert append delete tile repeat max min amax amin maximum minimum argmax argmin
+mean average std var median percentile interp reshape transpose ravel flip fliplr flipud roll
+squeeze expand_dims atleast_1d atleast_2d clip any all isnan isinf isfinite nan_to_num
+radians degrees deg2rad rad2deg polyfit polyval trapezoid trapz copy take shape size ndim
+real imag conj angle logical_and logical_or logical_not logical_xor meshgrid convolve
+floor_divide true_divide multiply add subtract divide negative reciprocal
+""".split()
+NUMPY_CONSTANTS = "pi e inf nan newaxis".split()
+NUMPY_TYPES = (
+    "float64 float32 int64 int32 int16 int8 uint8 complex128 complex64 bool_ float_ int_".split()
+)
+NUMPY_LINALG = "norm solve inv det eig eigh eigvals eigvalsh lstsq pinv matrix_rank cond".split()
+
+# attributes of numpy arrays and scalars a deck may use
+NUMPY_ARRAY_ATTRIBUTES = frozenset(
+    """
+shape T size ndim dtype real imag reshape astype tolist dot sum max min copy flatten ravel
+mean std var prod cumsum cumprod argmax argmin argsort sort nonzero transpose squeeze
+any all clip round conj conjugate item fill trace diagonal swapaxes
+""".split()
+)
+
+
+def _size(value) -> int:
+    np = guards.numpy_or_none()
+    if isinstance(value, np.ndarray):
+        return value.size
+    if isinstance(value, (list, tuple)):
+        return len(value)
+    return 1
+
+
+def _shape_size(shape) -> int:
+    if isinstance(shape, (list, tuple)):
+        return math.prod(int(n) for n in shape) if shape else 1
+    return int(shape)
+
+
+def _argument(args, kwargs, position: int, name: str, default=None):
+    if len(args) > position:
+        return args[position]
+    return kwargs.get(name, default)
+
+
+def _estimate_shape_arg(args, kwargs) -> int:
+    return _shape_size(_argument(args, kwargs, 0, "shape", 1))
+
+
+def _estimate_eye(args, kwargs) -> int:
+    rows = int(_argument(args, kwargs, 0, "N", 1))
+    columns = _argument(args, kwargs, 1, "M", None)
+    return rows * (rows if columns is None else int(columns))
+
+
+def _estimate_arange(args, kwargs) -> int:
+    values = list(args) + [kwargs[k] for k in ("start", "stop", "step") if k in kwargs]
+    if len(values) == 1:
+        start, stop, step = 0, values[0], 1
+    else:
+        start, stop, step = (list(values) + [1])[:3]
+    if step == 0:
+        return 0
+    return max(math.ceil((float(stop) - float(start)) / float(step)), 0)
+
+
+def _estimate_linspace(args, kwargs) -> int:
+    return int(_argument(args, kwargs, 2, "num", 50))
+
+
+def _estimate_tile(args, kwargs) -> int:
+    return _size(_argument(args, kwargs, 0, "A")) * _shape_size(_argument(args, kwargs, 1, "reps"))
+
+
+def _estimate_repeat(args, kwargs) -> int:
+    repeats = _argument(args, kwargs, 1, "repeats", 1)
+    total = sum(int(r) for r in repeats) if isinstance(repeats, (list, tuple)) else None
+    np = guards.numpy_or_none()
+    if isinstance(repeats, np.ndarray):
+        total = int(repeats.sum())
+    return total if total is not None else _size(args[0] if args else 1) * int(repeats)
+
+
+def _estimate_outer(args, kwargs) -> int:
+    return math.prod(_size(a) for a in args[:2])
+
+
+def _estimate_product(args, kwargs) -> int:
+    """dot / matmul / inner: rows of the first times columns of the second."""
+    np = guards.numpy_or_none()
+    if len(args) < 2:
+        return 0
+    left, right = (np.asarray(a) if isinstance(a, (list, tuple)) else a for a in args[:2])
+    if not isinstance(left, np.ndarray) or not isinstance(right, np.ndarray):
+        return max(_size(left), _size(right))
+    if left.ndim == 0 or right.ndim == 0:
+        return max(left.size, right.size)
+    rows = left.size // max(left.shape[-1], 1)
+    columns = right.size // max(right.shape[-2], 1) if right.ndim >= 2 else 1
+    return rows * columns
+
+
+def _estimate_meshgrid(args, kwargs) -> int:
+    return math.prod(_size(a) for a in args) * len(args)
+
+
+def _estimate_diag(args, kwargs) -> int:
+    vector = args[0] if args else kwargs.get("v")
+    np = guards.numpy_or_none()
+    size = _size(vector)
+    flat = isinstance(vector, (list, tuple))
+    flat = flat or (isinstance(vector, np.ndarray) and vector.ndim == 1)
+    return size * size if flat else size
+
+
+_ESTIMATORS = {
+    "zeros": _estimate_shape_arg,
+    "ones": _estimate_shape_arg,
+    "empty": _estimate_shape_arg,
+    "full": _estimate_shape_arg,
+    "eye": _estimate_eye,
+    "identity": _estimate_eye,
+    "arange": _estimate_arange,
+    "linspace": _estimate_linspace,
+    "logspace": _estimate_linspace,
+    "tile": _estimate_tile,
+    "repeat": _estimate_repeat,
+    "outer": _estimate_outer,
+    "dot": _estimate_product,
+    "matmul": _estimate_product,
+    "inner": _estimate_product,
+    "meshgrid": _estimate_meshgrid,
+    "diag": _estimate_diag,
+    "kron": _estimate_outer,
+}
+
+_MAX_ITEMSIZE = 1024  # bytes per element: refuses dtypes like "U100000000"
+
+
+def _check_dtypes(args, kwargs) -> None:
+    np = guards.numpy_or_none()
+    candidates = [a for a in args if isinstance(a, (str, type))]
+    if "dtype" in kwargs:
+        candidates.append(kwargs["dtype"])
+    for candidate in candidates:
+        try:
+            itemsize = np.dtype(candidate).itemsize
+        except (TypeError, ValueError):
+            continue
+        if itemsize > _MAX_ITEMSIZE:
+            raise DeckRuntimeError(f"numpy dtype {candidate!r} is too large for decks")
+
+
+def _input_size(args) -> int:
+    """Total size of the numpy arrays among the arguments (and in lists of them)."""
+    np = guards.numpy_or_none()
+    total = 0
+    for arg in args:
+        if isinstance(arg, np.ndarray):
+            total += arg.size
+        elif isinstance(arg, (list, tuple)):
+            total += sum(a.size for a in arg[:1000] if isinstance(a, np.ndarray))
+    return total
+
+
+def guard_numpy(function, name: str, limits: Limits, bound_to=None):
+    """Wrap a numpy callable so it refuses results beyond the limits; for an
+    array method, ``bound_to`` is the array (the estimators' first argument)."""
+    estimator = _ESTIMATORS.get(name)
+
+    @_policy(DEEP)
+    @functools.wraps(function)
+    def guarded(*args, **kwargs):
+        _check_dtypes(args, kwargs)
+        if estimator is not None:
+            full_args = args if bound_to is None else (bound_to, *args)
+            guards.check_length(estimator(full_args, kwargs), limits, f"numpy.{name} size")
+        guards.check_length(_input_size(args), limits, f"numpy.{name} size")
+        guards.check_broadcast(args, limits)
+        result = function(*args, **kwargs)
+        np = guards.numpy_or_none()
+        if isinstance(result, np.ndarray):
+            guards.check_length(result.size, limits, f"numpy.{name} size")
+        return result
+
+    return guarded
+
+
+def numpy_module(limits: Limits) -> DeckModule:
+    return DeckModule("numpy", loader=functools.partial(_numpy_members, limits))
+
+
+def _numpy_members(limits: Limits) -> dict:
+    import numpy as np
+
+    members = {}
+    for name in NUMPY_FUNCTIONS:
+        if hasattr(np, name):
+            members[name] = guard_numpy(getattr(np, name), name, limits)
+    for name in NUMPY_CONSTANTS + NUMPY_TYPES:
+        if hasattr(np, name):
+            members[name] = getattr(np, name)
+    members["linalg"] = DeckModule(
+        "numpy.linalg",
+        {
+            name: guard_numpy(getattr(np.linalg, name), name, limits)
+            for name in NUMPY_LINALG
+            if hasattr(np.linalg, name)
+        },
+    )
+    return members
+
+
+def builtin_modules(limits: Limits) -> dict:
+    """Modules every deck may import, by name: a factory for each."""
+    return {
+        "math": lambda: DeckModule("math", math_members()),
+        "numpy": lambda: numpy_module(limits),
+        "numpy.linalg": lambda: numpy_module(limits).attribute("linalg"),
+    }
+
+
+# ----------------------------------------------------------------- attributes
+
+STR_METHODS = frozenset(
+    """capitalize count endswith find format index isalnum isalpha isdigit islower isspace
+    isupper join ljust lower lstrip replace rfind rjust rsplit rstrip split splitlines
+    startswith strip title upper zfill center""".split()
+)
+LIST_METHODS = frozenset(
+    "append clear copy count extend index insert pop remove reverse sort".split()
+)
+TUPLE_METHODS = frozenset({"count", "index"})
+DICT_METHODS = frozenset("clear copy get items keys pop setdefault update values".split())
+SET_METHODS = frozenset(
+    """add discard remove union intersection difference symmetric_difference issubset
+    issuperset isdisjoint copy""".split()
+)
+NUMBER_ATTRIBUTES = frozenset({"real", "imag", "conjugate", "is_integer"})
+
+
+def get_attribute(value, name: str, limits: Limits):
+    """``value.name`` as a deck may see it, or DeckRuntimeError."""
+    if isinstance(value, DeckModule):
+        return value.attribute(name)
+    cls = type(value)
+    methods = getattr(cls, "deck_methods", None)
+    attributes = getattr(cls, "deck_attributes", None)
+    if (methods and name in methods) or (attributes and name in attributes):
+        return getattr(value, name)
+    if hasattr(cls, "deck_getattr"):
+        return value.deck_getattr(name)
+    found = _builtin_attribute(value, name, limits)
+    if found is not _MISSING:
+        return found
+    raise DeckRuntimeError(f"'{cls.__name__}' object has no attribute '{name}' usable in decks")
+
+
+_MISSING = object()
+
+
+def _builtin_attribute(value, name: str, limits: Limits):
+    if isinstance(value, str):
+        return _str_method(value, name, limits) if name in STR_METHODS else _MISSING
+    if isinstance(value, list):
+        if name == "extend":
+            return _guarded_extend(value, limits)
+        return getattr(value, name) if name in LIST_METHODS else _MISSING
+    if isinstance(value, tuple):
+        return getattr(value, name) if name in TUPLE_METHODS else _MISSING
+    if isinstance(value, dict):
+        return getattr(value, name) if name in DICT_METHODS else _MISSING
+    if isinstance(value, (set, frozenset)):
+        return getattr(value, name) if name in SET_METHODS else _MISSING
+    if isinstance(value, (int, float, complex)) and not isinstance(value, bool):
+        allowed = name in NUMBER_ATTRIBUTES and hasattr(value, name)
+        return getattr(value, name) if allowed else _MISSING
+    np = guards.numpy_or_none()
+    if np is not None and isinstance(value, (np.ndarray, np.generic)):
+        if name in NUMPY_ARRAY_ATTRIBUTES and hasattr(value, name):
+            found = getattr(value, name)
+            return guard_numpy(found, name, limits, value) if callable(found) else found
+    return _MISSING
+
+
+def _guarded_extend(target: list, limits: Limits):
+    @_policy(STORE)
+    def extend(items):
+        items = list(items)
+        guards.check_length(len(target) + len(items), limits)
+        target.extend(items)
+
+    return extend
+
+
+def _str_method(text: str, name: str, limits: Limits):
+    method = getattr(text, name)
+    if name not in ("format", "join", "replace", "ljust", "rjust", "center", "zfill"):
+        return method
+
+    @_policy(DEEP)
+    def checked(*args, **kwargs):
+        if name == "join" and args:
+            args = (list(args[0]),) + args[1:]  # a generator must be read only once
+        guards.check_nested_size((*args, *kwargs.values()), limits)
+        if name == "format":
+            guards.check_format_template(text, limits)
+        guards.check_string_length(_str_result_length(text, name, args, kwargs), limits)
+        return method(*args, **kwargs)
+
+    return checked
+
+
+def _str_result_length(text: str, name: str, args, kwargs) -> int:
+    if name == "join":
+        parts = args[0] if args else []
+        return sum(len(p) for p in parts if isinstance(p, str)) + len(text) * len(parts)
+    if name == "format":
+        longest = max((len(a) for a in (*args, *kwargs.values()) if isinstance(a, str)), default=0)
+        return len(text) + text.count("{") * max(longest, 32)
+    if name == "replace" and len(args) >= 2 and isinstance(args[0], str):
+        old, new = args[0], args[1]
+        occurrences = text.count(old) if old else len(text) + 1
+        return len(text) + occurrences * max(len(new) - len(old), 0)
+    if name in ("ljust", "rjust", "center", "zfill") and args and isinstance(args[0], int):
+        return max(len(text), args[0])
+    return len(text)

@@ -1,0 +1,493 @@
+"""Parse deck text into a checked lark tree.
+
+Positions are not propagated to tree nodes (that doubles parse time); a
+node's location is its first token's, see :func:`node_position`.
+
+The LALR parser is built once per process, on first use (importing this
+module stays cheap), from ``deck.lark``; lark's ``cache=True`` keeps the
+built tables in a temporary file so later processes start fast.
+
+After parsing, one iterative pass over the tree (deep nesting cannot
+overflow the stack) refuses what the grammar accepts but decks may not do
+(``_`` names, assignments to calls or attributes, ``return`` outside a
+function...) and turns number and string literals into Python values, stored
+as ``const`` nodes so the evaluator never decodes text.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from asterlite.errors import DeckSyntaxError, Location
+
+GRAMMAR_PATH = Path(__file__).with_name("deck.lark")
+
+# Python keywords and constructs outside the deck subset, refused by the lexer
+# with a message naming them (they would otherwise be read as plain names).
+UNSUPPORTED_KEYWORDS = {
+    "class": "class definitions are",
+    "with": "'with' blocks are",
+    "try": "'try' blocks are",
+    "except": "'try' blocks are",
+    "finally": "'try' blocks are",
+    "raise": "'raise' is",
+    "global": "'global' declarations are",
+    "nonlocal": "'nonlocal' declarations are",
+    "yield": "generators ('yield') are",
+    "async": "'async' is",
+    "await": "'await' is",
+}
+ALLOWED_UNDERSCORE_NAMES = frozenset({"_F"})
+
+
+@dataclass
+class Module:
+    """A parsed deck file: its checked tree, its source lines and its name."""
+
+    tree: object  # lark.Tree
+    lines: list[str]
+    filename: str
+
+    def location(self, line: int, column: int = 0) -> Location:
+        source = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
+        return Location(self.filename, line, column, source)
+
+
+def parse_deck(text: str, filename: str) -> Module:
+    """Parse a deck (or a helper ``.py`` file) into a :class:`Module`.
+
+    Raises DeckSyntaxError, located, for text that does not parse or uses a
+    construct outside the deck subset.
+    """
+    return _parse(text, filename, "file_input")
+
+
+def parse_expression(text: str, filename: str) -> Module:
+    """Parse one expression (a FORMULE's ``VALE``, say); its tree is an ``eval_input``
+    node whose only child is the expression. Run it with ``Evaluator.evaluate``."""
+    return _parse(text.strip(), filename, "eval_input")
+
+
+def _parse(text: str, filename: str, start: str) -> Module:
+    from lark.exceptions import UnexpectedInput
+
+    lines = text.splitlines()
+    module = Module(None, lines, filename)
+    source = text if text.endswith("\n") else text + "\n"
+    try:
+        module.tree = _parser().parse(source, start=start)
+        _check_tree(module)
+    except _LocatedSyntaxError as error:
+        raise DeckSyntaxError(error.message, module.location(error.line, error.column)) from None
+    except UnexpectedInput as error:
+        raise _describe_syntax_error(error, module) from None
+    except RecursionError:
+        raise DeckSyntaxError("expression nested too deeply", module.location(1, 1)) from None
+    return module
+
+
+class _LocatedSyntaxError(Exception):
+    """Raised from inside lark's lexer pipeline, converted by parse_deck."""
+
+    def __init__(self, message: str, line: int, column: int):
+        super().__init__(message)
+        self.message, self.line, self.column = message, line, column
+
+
+@functools.cache
+def _parser():
+    from lark import Lark
+
+    return Lark(
+        GRAMMAR_PATH.read_text(encoding="utf-8"),
+        parser="lalr",
+        start=["file_input", "eval_input"],
+        postlex=_indenter_class()(),
+        maybe_placeholders=True,
+        cache=True,
+    )
+
+
+@functools.cache
+def _indenter_class():
+    from lark.indenter import PythonIndenter
+
+    class DeckIndenter(PythonIndenter):
+        """PythonIndenter whose indentation errors carry the line."""
+
+        def handle_NL(self, token):  # noqa: N802 - lark's hook name
+            if self.paren_level > 0:
+                return
+            yield token
+            indent_str = token.rsplit("\n", 1)[1]
+            indent = indent_str.count(" ") + indent_str.count("\t") * self.tab_len
+            if indent > self.indent_level[-1]:
+                self.indent_level.append(indent)
+                yield token.new_borrow_pos(self.INDENT_type, indent_str, token)
+                return
+            while indent < self.indent_level[-1]:
+                self.indent_level.pop()
+                yield token.new_borrow_pos(self.DEDENT_type, indent_str, token)
+            if indent != self.indent_level[-1]:
+                line = (token.end_line or token.line or 1) if "\n" in token else token.line
+                raise _LocatedSyntaxError(
+                    "unindent does not match any outer indentation level", line, indent + 1
+                )
+
+        def _process(self, stream):
+            yield from super()._process(self._balanced(stream))
+
+        def _balanced(self, stream):
+            # lark's indenter asserts on an unmatched closing bracket; report it instead.
+            # Keywords and string prefixes are refused here too: lark drops
+            # lexer_callbacks when it loads a cached parser.
+            depth = 0
+            for token in stream:
+                if token.type == "NAME":
+                    _refuse_keyword(token)
+                elif token.type in ("STRING", "LONG_STRING"):
+                    _refuse_prefix(token)
+                if token.type in self.OPEN_PAREN_types:
+                    depth += 1
+                elif token.type in self.CLOSE_PAREN_types:
+                    depth -= 1
+                    if depth < 0:
+                        raise _LocatedSyntaxError(
+                            f"unmatched {token.value!r}", token.line, token.column
+                        )
+                yield token
+
+    return DeckIndenter
+
+
+def _refuse_keyword(token):
+    what = UNSUPPORTED_KEYWORDS.get(token.value)
+    if what:
+        raise _LocatedSyntaxError(f"{what} not supported in decks", token.line, token.column)
+    return token
+
+
+def _refuse_prefix(token):
+    prefix = re.match(r"[a-zA-Z]*", token.value).group().lower()
+    if "f" in prefix:
+        raise _LocatedSyntaxError("f-strings are not supported in decks", token.line, token.column)
+    if "b" in prefix:
+        message = "bytes literals are not supported in decks"
+        raise _LocatedSyntaxError(message, token.line, token.column)
+    return token
+
+
+def _describe_syntax_error(error, module: Module) -> DeckSyntaxError:
+    from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedToken
+
+    line = getattr(error, "line", None)
+    column = getattr(error, "column", None)
+    if isinstance(error, UnexpectedCharacters):
+        char = module.lines[line - 1][column - 1 : column] if 0 < line <= len(module.lines) else ""
+        if char == "@":
+            message = "decorators and '@' are not supported in decks"
+        elif char in ("'", '"'):
+            message = "unterminated string"
+        else:
+            message = f"unexpected character {char!r}" if char else "unexpected character"
+    elif isinstance(error, UnexpectedEOF) or (
+        isinstance(error, UnexpectedToken) and error.token.type == "$END"
+    ):
+        message = "unexpected end of file (unclosed bracket or missing block?)"
+        line, column = _last_position(module)
+    elif isinstance(error, UnexpectedToken):
+        message = _unexpected_token_message(error.token)
+        if error.token.type in ("_INDENT", "_DEDENT"):
+            # these borrow the newline token's span: the new line starts at its end
+            line, column = error.token.end_line, error.token.end_column
+    else:  # pragma: no cover - lark has no other UnexpectedInput kinds
+        message = "invalid syntax"
+    if not isinstance(line, int) or line < 1:
+        line, column = _last_position(module)
+    return DeckSyntaxError(message, module.location(line, column if column and column > 0 else 1))
+
+
+def _unexpected_token_message(token) -> str:
+    if token.type == "_INDENT":
+        return "unexpected indentation"
+    if token.type == "_DEDENT":
+        return "unexpected end of block"
+    if token.type == "_NEWLINE":
+        return "unexpected end of line"
+    return f"invalid syntax: unexpected {token.value!r}"
+
+
+def _last_position(module: Module) -> tuple[int, int]:
+    line = max(len(module.lines), 1)
+    text = module.lines[line - 1] if module.lines else ""
+    return line, len(text) + 1
+
+
+# --------------------------------------------------------------------- checks
+
+
+def _check_tree(module: Module) -> None:
+    """Refuse what the grammar accepts but decks may not do; fold literals."""
+    from lark import Token, Tree
+
+    # (node, inside_loop, inside_function); explicit stack, no recursion
+    stack = [(module.tree, False, False)]
+    while stack:
+        node, in_loop, in_function = stack.pop()
+        if isinstance(node, Token):
+            if node.type == "NAME":
+                _check_name(node, module)
+            continue
+        if not isinstance(node, Tree):
+            continue
+        kind = node.data
+        if kind == "number":
+            _fold_number(node, module)
+            continue
+        if kind == "strings":
+            _fold_strings(node, module)
+            continue
+        _CHECKS.get(kind, _no_check)(node, module, in_loop, in_function)
+        child_loop = (in_loop or kind in ("for_stmt", "while_stmt")) and kind not in (
+            "funcdef",
+            "lambdef",
+        )
+        child_function = in_function or kind in ("funcdef", "lambdef")
+        for child in reversed(node.children):
+            stack.append((child, child_loop, child_function))
+
+
+def _no_check(node, module, in_loop, in_function) -> None:
+    return None
+
+
+def _error(message: str, node, module: Module) -> DeckSyntaxError:
+    line, column = node_position(node)
+    return DeckSyntaxError(message, module.location(line, column))
+
+
+def node_position(node) -> tuple[int, int]:
+    """(line, column) of a node: those of its first token in text order (lark
+    tracks no tree spans here, which halves parse time)."""
+    from lark import Token, Tree
+
+    pending = [node]
+    while pending:
+        item = pending.pop()
+        if isinstance(item, Token):
+            return item.line or 1, item.column or 1
+        if isinstance(item, Tree):
+            pending.extend(reversed(item.children))
+    return 1, 1
+
+
+def _check_name(token, module: Module) -> None:
+    if token.value.startswith("_") and token.value not in ALLOWED_UNDERSCORE_NAMES:
+        message = f"names starting with '_' are not allowed in decks: {token.value}"
+        raise _error(message, token, module)
+
+
+def _check_targets(node, module: Module, what: str = "assign to") -> None:
+    if node.data in ("var", "getitem"):
+        return
+    if node.data in ("tuple", "list") and node.children:
+        for child in node.children:
+            _check_targets(child, module, what)
+        return
+    if node.data == "getattr":
+        raise _error(f"cannot {what} an attribute in a deck", node, module)
+    raise _error(f"cannot {what} {_describe(node)}", node, module)
+
+
+def _describe(node) -> str:
+    return {
+        "funccall": "a function call",
+        "const": "a literal",
+        "number": "a literal",
+        "strings": "a literal",
+        "tuple": "an empty tuple",
+        "list": "an empty list",
+    }.get(node.data, "an expression")
+
+
+def _check_assign(node, module, in_loop, in_function) -> None:
+    for target in node.children[:-1]:
+        _check_targets(target, module)
+
+
+def _check_augassign(node, module, in_loop, in_function) -> None:
+    target = node.children[0]
+    if target.data not in ("var", "getitem"):
+        raise _error(f"cannot use {node.children[1]} on {_describe(target)}", target, module)
+
+
+def _check_del(node, module, in_loop, in_function) -> None:
+    _check_targets(node.children[0], module, "delete")
+
+
+def _check_for(node, module, in_loop, in_function) -> None:
+    _check_targets(node.children[0], module)
+
+
+def _check_comp_for(node, module, in_loop, in_function) -> None:
+    _check_targets(node.children[0], module)
+
+
+def _check_loop_flow(node, module, in_loop, in_function) -> None:
+    if not in_loop:
+        word = "break" if node.data == "break_stmt" else "continue"
+        raise _error(f"'{word}' outside a loop", node, module)
+
+
+def _check_return(node, module, in_loop, in_function) -> None:
+    if not in_function:
+        raise _error("'return' outside a function", node, module)
+
+
+def _check_parameters(node, module, in_loop, in_function) -> None:
+    seen, has_default = set(), False
+    for param in node.children:
+        name, default = param.children
+        if name.value in seen:
+            raise _error(f"duplicate parameter {name.value!r}", name, module)
+        seen.add(name.value)
+        if default is None and has_default:
+            raise _error("a parameter without a default follows one with a default", name, module)
+        has_default = has_default or default is not None
+
+
+def _check_arguments(node, module, in_loop, in_function) -> None:
+    seen_keyword, seen_double_star, names = False, False, set()
+    for argument in node.children:
+        kind = argument.data
+        if kind == "kwarg":
+            key = argument.children[0]
+            if key.data != "var":
+                raise _error("a keyword argument must be a plain name", key, module)
+            name = key.children[0].value
+            if name in names:
+                raise _error(f"keyword argument repeated: {name}", key, module)
+            names.add(name)
+            seen_keyword = True
+        elif kind == "double_star_arg":
+            seen_double_star = True
+        elif kind == "star_arg":
+            if seen_double_star:
+                raise _error("*arguments after **keywords", argument, module)
+        elif seen_keyword or seen_double_star:
+            raise _error("positional argument follows keyword argument", argument, module)
+
+
+def _check_import_from(node, module, in_loop, in_function) -> None:
+    return None
+
+
+_CHECKS = {
+    "assign": _check_assign,
+    "augassign": _check_augassign,
+    "del_stmt": _check_del,
+    "for_stmt": _check_for,
+    "comp_for": _check_comp_for,
+    "break_stmt": _check_loop_flow,
+    "continue_stmt": _check_loop_flow,
+    "return_stmt": _check_return,
+    "parameters": _check_parameters,
+    "arguments": _check_arguments,
+}
+
+
+# ------------------------------------------------------------------- literals
+
+
+def _fold_number(node, module: Module) -> None:
+    token = node.children[0]
+    text = token.value.replace("_", "")
+    try:
+        if token.type == "IMAG_NUMBER":
+            value = complex(0, float(text[:-1]))
+        elif token.type == "FLOAT_NUMBER" or "." in text:
+            value = float(text)
+        elif token.type == "HEX_NUMBER":
+            value = int(text, 16)
+        elif token.type == "OCT_NUMBER":
+            value = int(text[2:], 8)
+        elif token.type == "BIN_NUMBER":
+            value = int(text[2:], 2)
+        else:
+            value = int(text)
+    except ValueError:
+        raise _error(f"number literal too large: {token.value[:20]}...", token, module) from None
+    _make_const(node, value, token)
+
+
+def _fold_strings(node, module: Module) -> None:
+    parts = []
+    for string in node.children:
+        token = string.children[0]
+        try:
+            parts.append(decode_string_literal(token.value))
+        except ValueError as error:
+            raise _error(str(error), token, module) from None
+    _make_const(node, "".join(parts), node.children[0].children[0])
+
+
+def _make_const(node, value, token) -> None:
+    # keep the token: it locates the literal in error messages
+    node.data = "const"
+    node.children = [value, token]
+
+
+_QUOTE_RE = re.compile(r"^([a-zA-Z]*)('''|\"\"\"|'|\")(.*)\2$", re.DOTALL)
+_ESCAPE_RE = re.compile(
+    r"\\(\n|[\\'\"abfnrtv]|x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|U[0-9a-fA-F]{8}|[0-7]{1,3}|N\{[^}]*\}|.)",
+    re.DOTALL,
+)
+_SIMPLE_ESCAPES = {
+    "\n": "",
+    "\\": "\\",
+    "'": "'",
+    '"': '"',
+    "a": "\a",
+    "b": "\b",
+    "f": "\f",
+    "n": "\n",
+    "r": "\r",
+    "t": "\t",
+    "v": "\v",
+}
+
+
+def decode_string_literal(text: str) -> str:
+    """The value of a Python string literal token (prefixes r and u only)."""
+    match = _QUOTE_RE.match(text)
+    if match is None:
+        raise ValueError("malformed string literal")
+    prefix, _, body = match.groups()
+    if "r" in prefix.lower():
+        return body
+    return _ESCAPE_RE.sub(_unescape, body)
+
+
+def _unescape(match: re.Match) -> str:
+    import unicodedata
+
+    code = match.group(1)
+    if code in _SIMPLE_ESCAPES:
+        return _SIMPLE_ESCAPES[code]
+    if code[0] in "xuU":
+        return chr(int(code[1:], 16)) if int(code[1:], 16) <= 0x10FFFF else _bad_escape(code)
+    if code[0] in "01234567":
+        return chr(int(code, 8))
+    if code[0] == "N":
+        try:
+            return unicodedata.lookup(code[2:-1])
+        except KeyError:
+            raise ValueError(f"unknown unicode character name {code[2:-1]!r}") from None
+    return "\\" + code  # Python keeps unknown escapes as written
+
+
+def _bad_escape(code: str) -> str:
+    raise ValueError(f"invalid escape \\{code}")

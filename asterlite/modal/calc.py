@@ -1,0 +1,143 @@
+"""CALC_MODES numerics: constrained pencil, mode selection, ModeResult assembly."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.assembly import AssembledMatrix
+from asterlite.concepts.modes import ModeResult
+from asterlite.fem.constraints import eliminate
+from asterlite.modal import normalize
+from asterlite.modal.eigen import (
+    EigenError,
+    ReducedPencil,
+    freq_from_omega2,
+    omega2_from_freq,
+    sort_modes,
+)
+from asterlite.modal.modal_parameters import modal_parameters
+
+
+def constrained_pencil(stiffness: AssembledMatrix, mass: AssembledMatrix) -> ReducedPencil:
+    """Eliminate the numbering's relations (homogeneous: imposed values do
+    not enter an eigenproblem) and reduce K and M."""
+    numbering = stiffness.numbering
+    b_matrix, _ = numbering.constraint_matrix()
+    elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
+    return ReducedPencil(stiffness.matrix, mass.matrix, elimination)
+
+
+def select_modes(pencil: ReducedPencil, option: str, freq=(), nmax: int = 10):
+    """(ω², reduced shapes) for a CALC_MODES OPTION, sorted by frequency."""
+    freq = np.atleast_1d(np.asarray(freq if freq is not None else (), dtype=float))
+    if pencil.n == 0:
+        raise EigenError("every DOF is constrained: there is no mode")
+    if option == "PLUS_PETITE":
+        vals, vecs = pencil.smallest(nmax)
+    elif option == "PLUS_GRANDE":
+        vals, vecs = pencil.largest(nmax)
+    elif option == "CENTRE":
+        vals, vecs = pencil.nearest(float(omega2_from_freq(freq[0])), nmax)
+    elif option == "BANDE":
+        if freq.size < 2:
+            raise EigenError("BANDE needs two frequencies")
+        lo, hi = omega2_from_freq([freq.min(), freq.max()])
+        vals, vecs = pencil.band(lo, hi)
+    elif option in ("PROCHE", "AJUSTE", "SEPARE"):
+        # one mode nearest each requested frequency (inverse iteration's result)
+        picked_vals, picked_vecs, taken = [], [], []
+        for f in freq:
+            target = float(omega2_from_freq(f))
+            cand_vals, cand_vecs = pencil.nearest(target, min(len(freq) + 1, pencil.n))
+            for k in range(len(cand_vals)):
+                if not any(np.isclose(cand_vals[k], t, rtol=1e-10, atol=0) for t in taken):
+                    picked_vals.append(cand_vals[k])
+                    picked_vecs.append(cand_vecs[:, k])
+                    taken.append(cand_vals[k])
+                    break
+        vals = np.array(picked_vals)
+        vecs = np.column_stack(picked_vecs) if picked_vecs else np.zeros((pencil.n, 0))
+    elif option == "TOUT":
+        vals, vecs = pencil.all_modes()
+    else:
+        raise EigenError(f"unknown OPTION {option}")
+    return sort_modes(np.asarray(vals, dtype=float), np.asarray(vecs, dtype=float))
+
+
+def residuals(pencil: ReducedPencil, omega2, vecs) -> np.ndarray:
+    """Relative residual ||K φ - ω² M φ|| / ||K φ|| of each reduced eigenpair."""
+    kv = pencil.k @ vecs
+    r = kv - (pencil.m @ vecs) * omega2[None, :]
+    scale = np.maximum(np.linalg.norm(kv, axis=0), 1e-300)
+    return np.linalg.norm(r, axis=0) / scale
+
+
+def apply_norm(modes: ModeResult, norme: str, stiffness=None, mass=None) -> None:
+    """NORM_MODE's NORME choices, in place."""
+    comps = modes.numbering.dof_components
+    if norme == "MASS_GENE":
+        m = mass if mass is not None else modes.mass.matrix
+        factors = normalize.generalized(modes.shapes, m)
+    elif norme == "RIGI_GENE":
+        k = stiffness if stiffness is not None else modes.stiffness.matrix
+        factors = normalize.generalized(modes.shapes, k)
+    elif norme == "EUCL":
+        factors = normalize.euclidean(modes.shapes)
+    elif norme == "EUCL_TRAN":
+        factors = normalize.euclidean(modes.shapes, normalize.component_mask(comps, normalize.TRAN))
+    elif norme == "TRAN":
+        factors = normalize.largest_component(
+            modes.shapes, normalize.component_mask(comps, normalize.TRAN)
+        )
+    elif norme == "TRAN_ROTA":
+        factors = normalize.largest_component(
+            modes.shapes, normalize.component_mask(comps, normalize.TRAN_ROTA)
+        )
+    else:
+        raise ValueError(f"unknown norm {norme}")
+    modes.rescale(factors, norme)
+
+
+def build_mode_result(
+    stiffness: AssembledMatrix,
+    mass: AssembledMatrix,
+    omega2: np.ndarray,
+    shapes: np.ndarray,
+    damping: AssembledMatrix | None = None,
+) -> ModeResult:
+    """A ModeResult with code_aster's default normalisation (largest component +1)."""
+    numbering = stiffness.numbering
+    shapes = np.asarray(shapes, dtype=float).reshape(numbering.n_dofs, -1)
+    shapes = shapes * normalize.largest_component(shapes)[None, :]
+    params = modal_parameters(
+        shapes, stiffness.matrix, mass.matrix, numbering.dof_components, omega2
+    )
+    return ModeResult(
+        numbering=numbering,
+        shapes=shapes,
+        frequencies=freq_from_omega2(omega2),
+        generalized_mass=params["MASS_GENE"].copy(),
+        generalized_stiffness=params["RIGI_GENE"].copy(),
+        mass=mass,
+        stiffness=stiffness,
+        kind="dynamic",
+        parameters=params,
+        norm="SANS_CMP: LAGR",
+        damping=damping,
+    )
+
+
+def filter_modes(modes: ModeResult, criterion: str, threshold: float) -> np.ndarray:
+    """Indices of modes passing FILTRE_MODE's CRIT_EXTR (MASS_EFFE_UN / MASS_GENE)."""
+    if criterion == "MASS_EFFE_UN":
+        fractions = np.vstack(
+            [
+                np.asarray(modes.parameters.get(f"MASS_EFFE_UN_{c}", np.zeros(modes.n_modes)))
+                for c in ("DX", "DY", "DZ")
+            ]
+        )
+        return np.flatnonzero(np.max(np.abs(fractions), axis=0) > threshold)
+    if criterion == "MASS_GENE":
+        mass = np.asarray(modes.generalized_mass)
+        return np.flatnonzero(mass > threshold)
+    raise ValueError(f"unknown CRIT_EXTR {criterion}")

@@ -1,0 +1,75 @@
+"""Static modes (MODE_STATIQUE).
+
+- constrained modes (MODE_STAT): unit displacement of one blocked DOF, the
+  other blocked DOFs held at zero, the rest in static equilibrium;
+- attachment modes (FORCE_NODALE): static response to a unit force on one
+  free DOF;
+- pseudo-modes (PSEUDO_MODE): static response to a unit acceleration of
+  the whole structure along an axis, K u = M Δ.
+
+All solve the reduced system Tᵀ K T q = Tᵀ (f - K u0) once factorised.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from asterlite.concepts.assembly import DofNumbering
+from asterlite.fem.constraints import Elimination, eliminate
+
+
+class StaticModeError(ValueError):
+    pass
+
+
+def _factor(matrix: sp.spmatrix):
+    try:
+        return spla.splu(sp.csc_matrix(matrix))
+    except RuntimeError:
+        raise StaticModeError(
+            "the constrained stiffness is singular (rigid-body motion left free)"
+        ) from None
+
+
+def numbering_elimination(numbering: DofNumbering) -> Elimination:
+    b_matrix, rhs = numbering.constraint_matrix()
+    return eliminate(b_matrix, np.zeros_like(rhs), numbering.n_dofs)
+
+
+def blocked_dofs(numbering: DofNumbering) -> dict[int, int]:
+    """DOF index -> index of the single-term relation that blocks it."""
+    out = {}
+    for r, relation in enumerate(numbering.relations):
+        if len(relation.terms) == 1:
+            node, comp, _ = relation.terms[0]
+            out.setdefault(numbering.index[(node, comp)], r)
+    return out
+
+
+def constrained_modes(stiffness, numbering: DofNumbering, dofs) -> np.ndarray:
+    """(n_dofs, len(dofs)) unit-displacement modes of blocked DOFs."""
+    elimination = numbering_elimination(numbering)
+    blocked = blocked_dofs(numbering)
+    rhs = np.zeros((len(numbering.relations), len(dofs)))
+    for k, dof in enumerate(dofs):
+        row = blocked[dof]
+        coef = numbering.relations[row].terms[0][2]
+        rhs[row, k] = coef  # coef * u = coef  ->  u = 1
+    u0 = elimination.particular(rhs)
+    k_red = elimination.reduce(stiffness)
+    if k_red.shape[0] == 0:
+        return u0
+    lu = _factor(k_red)
+    q = lu.solve(np.asarray(-(elimination.T.T @ (stiffness @ u0))))
+    return u0 + elimination.T @ q.reshape(k_red.shape[0], -1)
+
+
+def response_modes(stiffness, numbering: DofNumbering, loads: np.ndarray) -> np.ndarray:
+    """(n_dofs, k) static responses K u = f under homogeneous relations."""
+    elimination = numbering_elimination(numbering)
+    k_red = elimination.reduce(stiffness)
+    lu = _factor(k_red)
+    q = lu.solve(np.asarray(elimination.T.T @ loads).reshape(k_red.shape[0], -1))
+    return elimination.T @ q

@@ -1,0 +1,241 @@
+"""Physical fields and histories from generalized and physical transient results.
+
+Used by REST_GENE_PHYS, RECU_FONCTION, RECU_GENE and TEST_RESU: choosing the
+instants (NUME_ORDRE / INST / LIST_INST, with or without interpolation),
+choosing DOFs (GROUP_NO / NOEUD / GROUP_MA + NOM_CMP), and recombining modal
+coordinates into physical values.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from asterlite.errors import CommandError
+
+FIELDS = ("DEPL", "VITE", "ACCE")
+
+
+def as_tuple(value) -> tuple:
+    """A keyword value as a tuple (scalar, tuple, list or None)."""
+    if value is None:
+        return ()
+    if isinstance(value, tuple | list):
+        return tuple(value)
+    if isinstance(value, np.ndarray):
+        return tuple(value.tolist())
+    return (value,)
+
+
+def values_of(value) -> np.ndarray:
+    """Reals from a keyword value that may be a list concept (``.values``)."""
+    if hasattr(value, "values") and isinstance(value.values, np.ndarray):
+        return np.asarray(value.values, dtype=float)
+    return np.asarray(as_tuple(value), dtype=float)
+
+
+@dataclass
+class InstantSelection:
+    """Which states to produce: interpolation weights between archived states.
+
+    Output state ``i`` is ``(1 - weight[i]) * state[lower[i]] + weight[i] *
+    state[lower[i] + 1]`` (weight 0 picks an archived state exactly);
+    ``times`` and ``order`` are those of the output.
+    """
+
+    lower: np.ndarray
+    weight: np.ndarray
+    times: np.ndarray
+    order: np.ndarray
+
+    def apply(self, states: np.ndarray) -> np.ndarray:
+        """Rows of ``states`` (n_archived, ...) at the selected instants."""
+        states = np.asarray(states)
+        upper = np.minimum(self.lower + 1, states.shape[0] - 1)
+        w = self.weight.reshape((-1,) + (1,) * (states.ndim - 1))
+        picked = states[self.lower]
+        if not np.any(self.weight):
+            return picked.copy()
+        return (1.0 - w) * picked + w * states[upper]
+
+
+def nearest_archived(times, wanted, precision: float, criterion: str) -> np.ndarray:
+    """Indices of the archived instants matching ``wanted`` within PRECISION
+    (CRITERE RELATIF scales by |t|, absolute when t is zero); raises
+    CommandError naming the first instant with no match."""
+    times = np.asarray(times, dtype=float)
+    wanted = np.atleast_1d(np.asarray(wanted, dtype=float))
+    idx = np.clip(np.searchsorted(times, wanted), 0, times.size - 1)
+    prev = np.maximum(idx - 1, 0)
+    idx = np.where(np.abs(times[prev] - wanted) < np.abs(times[idx] - wanted), prev, idx)
+    gap = np.abs(times[idx] - wanted)
+    tolerance = np.where(
+        (criterion == "RELATIF") & (wanted != 0), precision * np.abs(wanted), precision
+    )
+    missing = gap > tolerance
+    if missing.any():
+        t = wanted[missing][0]
+        raise CommandError(
+            f"no archived instant at {t:g} (PRECISION={precision:g}, CRITERE={criterion}); "
+            f"archived instants run from {times[0]:g} to {times[-1]:g}"
+        )
+    return idx
+
+
+def select_instants(
+    times,
+    order,
+    *,
+    nume_ordre=None,
+    inst=None,
+    interpolate: bool = False,
+    precision: float = 1e-6,
+    criterion: str = "RELATIF",
+) -> InstantSelection:
+    """States at the given NUME_ORDRE, or at the given instants (interpolated
+    linearly when ``interpolate``), or every archived state."""
+    times = np.asarray(times, dtype=float)
+    order = np.asarray(order)
+    if nume_ordre is not None and len(nume_ordre):
+        wanted = np.asarray(nume_ordre, dtype=int)
+        lookup = {int(o): i for i, o in enumerate(order)}
+        absent = [int(n) for n in wanted if int(n) not in lookup]
+        if absent:
+            raise CommandError(
+                f"NUME_ORDRE {absent[0]} is not archived (orders {order[0]}..{order[-1]})"
+            )
+        idx = np.array([lookup[int(n)] for n in wanted], dtype=int)
+        return InstantSelection(idx, np.zeros(idx.size), times[idx], order[idx])
+    if inst is not None:
+        wanted = np.atleast_1d(np.asarray(inst, dtype=float))
+        numbers = np.arange(1, wanted.size + 1)
+        if not interpolate:
+            idx = nearest_archived(times, wanted, precision, criterion)
+            return InstantSelection(idx, np.zeros(idx.size), times[idx], numbers)
+        return interpolation_weights(times, wanted, precision, numbers)
+    idx = np.arange(times.size)
+    return InstantSelection(idx, np.zeros(idx.size), times.copy(), order.copy())
+
+
+def interpolation_weights(times, wanted, precision, numbers) -> InstantSelection:
+    """Linear interpolation between archived instants; instants outside the
+    archive (beyond a relative PRECISION of the span) are an error."""
+    span = max(times[-1] - times[0], abs(times[-1]), 1e-300)
+    slack = max(precision, 1e-9) * span
+    outside = (wanted < times[0] - slack) | (wanted > times[-1] + slack)
+    if outside.any():
+        raise CommandError(
+            f"instant {wanted[outside][0]:g} is outside the archived range "
+            f"[{times[0]:g}, {times[-1]:g}]"
+        )
+    clipped = np.clip(wanted, times[0], times[-1])
+    if times.size == 1:
+        return InstantSelection(np.zeros(wanted.size, int), np.zeros(wanted.size), wanted, numbers)
+    lower = np.clip(np.searchsorted(times, clipped, side="right") - 1, 0, times.size - 2)
+    weight = (clipped - times[lower]) / (times[lower + 1] - times[lower])
+    # an instant on an archived one is taken exactly (no round-off mixing)
+    weight = np.where(np.isclose(weight, 0.0, atol=1e-12), 0.0, weight)
+    on_upper = np.isclose(weight, 1.0, rtol=0, atol=1e-12)
+    lower = np.where(on_upper, lower + 1, lower)
+    weight = np.where(on_upper, 0.0, weight)
+    return InstantSelection(lower, weight, wanted.copy(), numbers)
+
+
+def selection_from_keywords(ctx, kw, times, order, default_interpol: str = "NON"):
+    """InstantSelection from the usual keywords (NUME_ORDRE, LIST_ORDRE,
+    INST, LIST_INST, TOUT_ORDRE, TOUT_INST, INTERPOL, PRECISION, CRITERE)."""
+    interpol = kw.get("INTERPOL", default_interpol)
+    precision = float(kw.get("PRECISION", 1e-6))
+    criterion = kw.get("CRITERE", "RELATIF")
+    nume = kw.get("NUME_ORDRE")
+    if kw.get("LIST_ORDRE") is not None:
+        nume = np.asarray(kw["LIST_ORDRE"].values, dtype=int)
+    inst = None
+    if kw.get("INST") is not None:
+        inst = values_of(kw["INST"])
+    elif kw.get("LIST_INST") is not None:
+        inst = values_of(kw["LIST_INST"])
+    try:
+        return select_instants(
+            times,
+            order,
+            nume_ordre=as_tuple(nume) if nume is not None else None,
+            inst=inst,
+            interpolate=interpol == "LIN",
+            precision=precision,
+            criterion=criterion,
+        )
+    except CommandError as exc:
+        key = "NUME_ORDRE" if nume is not None else ("INST" if "INST" in kw else "LIST_INST")
+        ctx.error(exc.message, key, kw)
+
+
+# -- DOF selection --------------------------------------------------------
+
+
+def node_indices(ctx, kw, mesh, *, allow_all: bool = True) -> np.ndarray | None:
+    """Mesh node indices named by GROUP_NO / NOEUD / GROUP_MA / MAILLE, in
+    order and without repeats; None when none is given (all nodes)."""
+    chosen: list[int] = []
+    for name in as_tuple(kw.get("GROUP_NO")):
+        if name not in mesh.node_groups:
+            ctx.error(f"mesh has no node group {name!r}", "GROUP_NO", kw)
+        chosen.extend(int(i) for i in mesh.node_groups[name])
+    for name in as_tuple(kw.get("NOEUD")):
+        name = str(name)
+        if name in mesh.node_index:
+            chosen.append(mesh.node_index[name])
+        elif name.isdigit() and 1 <= int(name) <= mesh.n_nodes:
+            chosen.append(int(name) - 1)  # code_aster 17 names nodes by number
+        else:
+            ctx.error(f"mesh has no node {name!r}", "NOEUD", kw)
+    cells: list[int] = []
+    for name in as_tuple(kw.get("GROUP_MA")):
+        if name not in mesh.cell_groups:
+            ctx.error(f"mesh has no cell group {name!r}", "GROUP_MA", kw)
+        cells.extend(int(i) for i in mesh.cell_groups[name])
+    for name in as_tuple(kw.get("MAILLE")):
+        if name not in mesh.cell_index:
+            ctx.error(f"mesh has no cell {name!r}", "MAILLE", kw)
+        cells.append(mesh.cell_index[name])
+    for cell in cells:
+        chosen.extend(mesh.cell_nodes[cell])
+    if not chosen:
+        return None if allow_all else np.zeros(0, dtype=int)
+    return np.array(list(dict.fromkeys(chosen)), dtype=int)
+
+
+def dof_rows(numbering, nodes: np.ndarray | None, components=()) -> np.ndarray:
+    """Rows of ``numbering.dofs`` on the given nodes (all if None) and
+    components (all if empty), in numbering order."""
+    node_set = None if nodes is None else set(int(n) for n in nodes)
+    comp_set = set(components)
+    return np.array(
+        [
+            i
+            for i, (node, comp) in enumerate(numbering.dofs)
+            if (node_set is None or node in node_set) and (not comp_set or comp in comp_set)
+        ],
+        dtype=int,
+    )
+
+
+def node_label(mesh, node: int) -> str:
+    return mesh.node_names[node] if node < len(mesh.node_names) else str(node + 1)
+
+
+def single_node(ctx, kw, mesh) -> int:
+    """The one node a RECU_FONCTION / TEST_RESU occurrence names."""
+    nodes = node_indices(ctx, kw, mesh, allow_all=False)
+    if nodes is None or nodes.size == 0:
+        ctx.error("a node is required (GROUP_NO or NOEUD)", None, kw)
+    if nodes.size > 1 and kw.get("GROUP_NO") is not None:
+        group = as_tuple(kw["GROUP_NO"])[0]
+        ctx.error(f"node group {group!r} holds {nodes.size} nodes: one expected", "GROUP_NO", kw)
+    return int(nodes[0])
+
+
+def recombine(shapes_rows: np.ndarray, generalized: np.ndarray) -> np.ndarray:
+    """Physical values (n_instants, n_rows) = q (n_instants, n_modes) @ Φᵀ."""
+    return np.asarray(generalized) @ np.asarray(shapes_rows).T

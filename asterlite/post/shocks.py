@@ -1,0 +1,261 @@
+"""Shock statistics of POST_DYNA_MODA_T (``CHOC``), from archived local
+histories of the nonlinearities.
+
+Definitions follow code_aster (R7.10.02 / its Fortran):
+
+- *impacts* (OPTION='IMPACT'): a global impact starts when |FN| rises above
+  SEUIL_FORCE and ends at the first sample where |FN| is back below it and
+  stays below for DUREE_REPOS (looked ahead in samples). Per impact: the
+  maximum force F_MAX and its instant INSTANT, the impulse (trapezoid rule),
+  the duration T_CHOC (end sample minus start sample), the normal velocity at
+  the start V_IMPACT, and the number of sub-impacts NB_IMPACT (returns below
+  the threshold inside the global impact, the final one included). GLOBAL:
+  largest F_MAX, mean and standard deviation of the F_MAX of completed
+  impacts. PROBA: histogram of F_MAX over NB_CLASSE classes.
+- *wear* (OPTION='USURE'): mean/std/RMS/max/min of the local displacements,
+  of the radial displacement and polar angle (in the plane of the 2nd and
+  3rd local axes), of the tangential forces; mean/RMS of FN over the whole
+  time and over contact time; shock counts and durations; Archard wear power
+  (time average of |FN|·|V_T| while sliding).
+
+Every function here is plain numpy on 1-D arrays, testable by hand.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+@dataclass
+class Impact:
+    number: int
+    instant: float  # instant of the maximum force
+    f_max: float
+    impulse: float
+    duration: float
+    v_impact: float
+    n_sub_impacts: int
+
+
+@dataclass
+class ImpactSummary:
+    impacts: list[Impact] = field(default_factory=list)
+    f_max_abs: float = 0.0
+    f_max_mean: float = 0.0
+    f_max_std: float = 0.0
+    # F_MAX of each completed impact (the histogram's sample)
+    peaks: np.ndarray = field(default_factory=lambda: np.zeros(0))
+
+
+def _trapezoid_weights(t: np.ndarray) -> np.ndarray:
+    """Quadrature weights of the trapezoid rule on (possibly uneven) samples."""
+    w = np.zeros_like(t)
+    if t.size > 1:
+        dt = np.diff(t)
+        w[:-1] += dt / 2
+        w[1:] += dt / 2
+    return w
+
+
+def _rest_samples(t: np.ndarray, rest_time: float, minimum: int = 0) -> int:
+    """DUREE_REPOS as a number of samples (code_aster uses the 3rd step)."""
+    if t.size < 4:
+        dt = t[1] - t[0] if t.size > 1 else 1.0
+    else:
+        dt = t[3] - t[2]
+    return max(minimum, int(np.floor(rest_time / dt + 0.5))) if dt > 0 else minimum  # Fortran NINT
+
+
+def _stays_quiet(in_contact: np.ndarray, start: int, stop: int) -> bool:
+    return not in_contact[start:stop].any()
+
+
+def detect_impacts(
+    t: np.ndarray, fn: np.ndarray, vn: np.ndarray, threshold: float = 0.0, rest_time: float = 0.0
+) -> ImpactSummary:
+    """Global impacts of one shock history (OPTION='IMPACT')."""
+    t, fn, vn = (np.asarray(a, dtype=float) for a in (t, fn, vn))
+    weights = _trapezoid_weights(t)
+    in_contact = np.abs(fn) > threshold
+    look_ahead = _rest_samples(t, rest_time)
+    summary = ImpactSummary()
+    peaks: list[float] = []
+    active = False
+    in_sub = False
+    start = 0
+    f_max = impulse = t_max = v_start = 0.0
+    n_sub = 0
+    for i in range(t.size):
+        if not in_contact[i]:
+            if in_sub:
+                n_sub += 1
+            if active and _stays_quiet(in_contact, i, min(i + look_ahead, t.size - 1) + 1):
+                summary.impacts.append(
+                    Impact(len(peaks) + 1, t_max, f_max, impulse, t[i] - t[start], v_start, n_sub)
+                )
+                peaks.append(f_max)
+                active = False
+            in_sub = False
+            continue
+        if not active:
+            active, start, v_start = True, i, vn[i]
+            f_max = impulse = 0.0
+            n_sub = 0
+        impulse += fn[i] * weights[i]
+        if fn[i] >= f_max:
+            f_max, t_max = fn[i], t[i]
+        summary.f_max_abs = max(summary.f_max_abs, f_max)
+        in_sub = True
+    if peaks:
+        summary.peaks = np.array(peaks)
+        summary.f_max_mean = float(np.mean(summary.peaks))
+        # population standard deviation, as code_aster (sqrt(E[x²] - E[x]²))
+        summary.f_max_std = float(np.sqrt(abs(np.mean(summary.peaks**2) - summary.f_max_mean**2)))
+    else:
+        # no completed impact: code_aster still writes one row (impact 0) and
+        # an empty histogram
+        summary.impacts.append(Impact(0, t_max, f_max, impulse, 0.0, v_start, 0))
+    return summary
+
+
+def histogram(values: np.ndarray, n_classes: int):
+    """Class bounds and probabilities of ``values`` over ``n_classes`` equal
+    classes between their min and max (the max falls in the last class)."""
+    values = np.asarray(values, dtype=float)
+    n_classes = n_classes or 10
+    if values.size == 0:
+        return np.zeros(n_classes), np.zeros(n_classes), np.zeros(n_classes)
+    vmin, vmax = float(values.min()), float(values.max())
+    width = (vmax - vmin) / n_classes
+    if width > 0:
+        cls = np.minimum((values - vmin) // width, n_classes - 1).astype(int)
+    else:
+        cls = np.zeros(values.size, dtype=int)
+    counts = np.bincount(cls, minlength=n_classes)[:n_classes]
+    upper = vmin + width * np.arange(1, n_classes + 1)
+    lower = np.concatenate([[vmin], upper[:-1]])
+    return lower, upper, counts / values.size
+
+
+@dataclass
+class SignalStats:
+    mean: float
+    std: float
+    rms: float
+    max: float
+    min: float
+
+
+def signal_stats(x: np.ndarray) -> SignalStats:
+    """Mean, standard deviation, RMS and extrema of a sampled signal
+    (sample averages, not time integrals, as code_aster)."""
+    x = np.asarray(x, dtype=float)
+    if x.size == 0:
+        return SignalStats(0.0, 0.0, 0.0, 0.0, 0.0)
+    mean = float(x.mean())
+    return SignalStats(
+        mean,
+        float(np.sqrt(np.mean((x - mean) ** 2))),
+        float(np.sqrt(np.mean(x**2))),
+        float(x.max()),
+        float(x.min()),
+    )
+
+
+@dataclass
+class NormalForceStats:
+    mean_total: float  # MOYEN_T_TOTAL: sum over contact samples / all samples
+    mean_contact: float  # MOYEN_T_CHOC: over contact samples
+    rms_total: float
+    rms_contact: float
+    max: float
+
+
+def normal_force_stats(fn: np.ndarray, threshold: float = 0.0) -> NormalForceStats:
+    """Statistics of the normal force, counting only samples above SEUIL_FORCE."""
+    fn = np.asarray(fn, dtype=float)
+    contact = fn[np.abs(fn) > threshold]
+    n = max(fn.size, 1)
+    total, squares = float(contact.sum()), float((contact**2).sum())
+    if contact.size:
+        return NormalForceStats(
+            total / n,
+            total / contact.size,
+            np.sqrt(squares / n),
+            np.sqrt(squares / contact.size),
+            max(0.0, float(contact.max())),
+        )
+    return NormalForceStats(total / n, 0.0, np.sqrt(squares / n), 0.0, 0.0)
+
+
+@dataclass
+class ShockCounts:
+    n_shocks: int
+    n_rebounds: int
+    mean_duration: float
+    max_duration: float
+    min_duration: float
+    mean_rebound: float
+    total_contact_time: float
+
+
+def count_shocks(
+    t: np.ndarray, fn: np.ndarray, threshold: float = 0.0, rest_time: float = 0.0
+) -> ShockCounts:
+    """Global shocks (closed after DUREE_REPOS without contact, at least one
+    sample) and rebounds (every return below the threshold) with durations."""
+    t, fn = np.asarray(t, dtype=float), np.asarray(fn, dtype=float)
+    in_contact = np.abs(fn) > threshold
+    look_ahead = _rest_samples(t, rest_time, minimum=1)
+    durations, rebounds = [], []
+    active = in_rebound = False
+    start = rebound_start = 0
+    for i in range(t.size):
+        if in_contact[i]:
+            if not active:
+                start = i
+            if not in_rebound:
+                rebound_start = i
+            active = in_rebound = True
+            continue
+        if in_rebound:
+            rebounds.append(t[i] - t[rebound_start])
+        stop = min(i + look_ahead, t.size - 1)
+        quiet = stop <= i + 1 or not in_contact[i + 1 : stop + 1].any()
+        if quiet and active:
+            durations.append(t[i] - t[start])
+            active = False
+        in_rebound = False
+    d = np.array(durations)
+    return ShockCounts(
+        n_shocks=len(durations),
+        n_rebounds=len(rebounds),
+        mean_duration=float(d.mean()) if d.size else 0.0,
+        max_duration=float(d.max()) if d.size else 0.0,
+        min_duration=float(d.min()) if d.size else 1.0e20,
+        mean_rebound=float(np.mean(rebounds)) if rebounds else 0.0,
+        total_contact_time=float(d.sum()),
+    )
+
+
+def wear_power(
+    t: np.ndarray, fn: np.ndarray, vt1: np.ndarray, vt2: np.ndarray, sticking=None
+) -> float:
+    """Archard wear power: time average of |FN|·|V_T| over sliding intervals
+    (trapezoid rule; an interval counts when its first sample slides)."""
+    t = np.asarray(t, dtype=float)
+    if t.size < 2 or t[-1] == t[0]:
+        return 0.0
+    power = np.abs(np.asarray(fn) * np.hypot(vt1, vt2))
+    sliding = np.ones(t.size - 1, bool) if sticking is None else ~np.asarray(sticking, bool)[:-1]
+    intervals = (power[1:] + power[:-1]) * np.diff(t) / 2
+    return float(intervals[sliding].sum() / (t[-1] - t[0]))
+
+
+def polar(dy: np.ndarray, dz: np.ndarray):
+    """Radial displacement and polar angle (degrees, 0 where both are 0)."""
+    radius = np.hypot(dy, dz)
+    angle = np.where((dy != 0) | (dz != 0), np.degrees(np.arctan2(dz, dy)), 0.0)
+    return radius, angle

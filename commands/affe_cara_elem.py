@@ -1,0 +1,124 @@
+"""AFFE_CARA_ELEM: discrete element matrices (DISCRET, DISCRET_2D) and
+orientations; other keywords are kept for the rooms that compute them."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.assembly import DiscreteAssignment, ElementCharacteristics
+from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
+from asterlite.fem.dofs import DISCRETE_MODELISATIONS
+from asterlite.fem.frames import angles_from_axis, angles_from_x_and_y
+from asterlite.fem.selection import as_tuple, select_cells
+
+_OTHER_KEYWORDS = (
+    "POUTRE",
+    "BARRE",
+    "COQUE",
+    "CABLE",
+    "MASSIF",
+    "GRILLE",
+    "MEMBRANE",
+    "MASS_REP",
+    "RIGI_PARASOL",
+    "MASS_AJOU",
+    "GENE_TUYAU",
+    "MULTIFIBRE",
+    "POUTRE_FLUI",
+)
+
+
+def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
+    mesh = model.mesh
+    cells = select_cells(ctx, occ, mesh)
+    caras = as_tuple(occ.get("CARA"))
+    values = np.atleast_1d(np.asarray(as_tuple(occ.get("VALE")), dtype=float))
+    symmetric = occ.get("SYME", "OUI") == "OUI"
+    repere = occ.get("REPERE") or "GLOBAL"
+    hysteretic = float(occ.get("AMOR_HYST") or 0.0)
+    start = 0
+    for cara in caras:
+        try:
+            matrix, kind, _, support = parse_cara(cara)
+            count = expected_count(cara, dim, symmetric)
+        except DiscreteError as exc:
+            ctx.error(str(exc), "CARA", occ)
+        chunk = values[start : start + count]
+        if chunk.size != count:
+            ctx.error(
+                f"{cara} expects {count} values in {keyword}, VALE gives {values.size - start}",
+                "VALE",
+                occ,
+            )
+        start += count
+        wanted = ("2D_" if dim == 2 else "") + ("DIS_TR" if kind == "TR" else "DIS_T")
+        for cell in cells:
+            modelisation = model.cell_modelisation.get(int(cell))
+            name = mesh.cell_names[cell]
+            if modelisation is None:
+                ctx.error(f"cell {name} carries no element of the model", "GROUP_MA", occ)
+            if modelisation not in DISCRETE_MODELISATIONS:
+                ctx.error(f"cell {name} is a {modelisation} element, not a discrete", "CARA", occ)
+            if modelisation != wanted:
+                ctx.error(
+                    f"{cara} needs {wanted} elements but cell {name} is {modelisation}",
+                    "CARA",
+                    occ,
+                )
+            cell_type = mesh.cell_types[cell]
+            if (support == "N") != (cell_type == "POI1"):
+                ctx.error(f"{cara} cannot be given to the {cell_type} cell {name}", "CARA", occ)
+            result.discrete.setdefault(int(cell), {})[matrix] = DiscreteAssignment(
+                matrix=matrix,
+                cara=cara,
+                values=chunk.copy(),
+                repere=repere,
+                symmetric=symmetric,
+                hysteretic=hysteretic,
+            )
+    if start != values.size:
+        ctx.error(f"VALE has {values.size} values, CARA uses {start}", "VALE", occ)
+
+
+def _orientation(ctx, model, result, occ) -> None:
+    mesh = model.mesh
+    cells = select_cells(ctx, occ, mesh)
+    cara = occ.get("CARA")
+    vale = np.atleast_1d(np.asarray(as_tuple(occ.get("VALE")), dtype=float))
+    for cell in cells:
+        cell = int(cell)
+        conn = mesh.cell_nodes[cell]
+        axis = mesh.coords[conn[-1]] - mesh.coords[conn[0]] if len(conn) > 1 else None
+        if cara == "ANGL_NAUT":
+            angles = np.zeros(3)
+            angles[: vale.size] = np.radians(vale[:3])
+        elif cara == "ANGL_VRIL":
+            if axis is None:
+                ctx.error("ANGL_VRIL needs segment cells", "CARA", occ)
+            angles = angles_from_axis(axis, np.radians(vale[0]))
+        elif cara == "VECT_Y":
+            if axis is None:
+                ctx.error("VECT_Y needs segment cells", "CARA", occ)
+            angles = angles_from_x_and_y(axis, vale[:3])
+        elif cara == "VECT_X_Y":
+            angles = angles_from_x_and_y(vale[:3], vale[3:6])
+        else:
+            ctx.unsupported(f"ORIENTATION CARA={cara!r}", "CARA", occ)
+        result.orientation[cell] = np.asarray(angles, dtype=float)
+
+
+def run(ctx, kw):
+    model = kw["MODELE"]
+    result = ElementCharacteristics(model=model)
+    # orientations first: DISCRET ... REPERE='LOCAL' uses them whatever the order
+    for occ in kw.factor("ORIENTATION"):
+        _orientation(ctx, model, result, occ)
+    for occ in kw.factor("DISCRET"):
+        _discrete(ctx, model, result, occ, 3, "DISCRET")
+    for occ in kw.factor("DISCRET_2D"):
+        _discrete(ctx, model, result, occ, 2, "DISCRET_2D")
+    for keyword in _OTHER_KEYWORDS:
+        if kw.get(keyword):
+            result.extra[keyword] = kw.factor(keyword)
+    ctx.log(f"discrete characteristics on {len(result.discrete)} cells")
+    return result

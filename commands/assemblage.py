@@ -1,0 +1,62 @@
+"""ASSEMBLAGE: element matrices + numbering + assembly in one command; every
+result is bound to its CO(...) name."""
+
+from __future__ import annotations
+
+from asterlite.commands.calc_vect_elem import gravity_terms
+from asterlite.commands.nume_ddl import numbering_for
+
+from asterlite.concepts.assembly import AssembledMatrix, DofNumbering, NodalField
+from asterlite.fem.assemble import assemble_blocks, assemble_terms
+from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.selection import as_tuple
+
+_OPTIONS = {
+    "RIGI_MECA": ("K", "RIGI"),
+    "MASS_MECA": ("M", "MASS"),
+    "MASS_MECA_DIAG": ("M", "MASS"),
+    "AMOR_MECA": ("A", "AMOR"),
+}
+
+
+def run(ctx, kw):
+    model = kw["MODELE"]
+    characteristics = kw.get("CARA_ELEM")
+    loads = list(as_tuple(kw.get("CHARGE")))
+    given = kw.get("NUME_DDL")
+    if isinstance(given, DofNumbering):
+        numbering = given
+    else:
+        numbering = numbering_for(model, loads)
+        if given is not None:
+            ctx.bind(given, numbering)
+    for occ in kw.factor("MATR_ASSE"):
+        option = occ["OPTION"]
+        if option not in _OPTIONS:
+            ctx.unsupported(f"ASSEMBLAGE OPTION={option!r}", "OPTION", occ)
+        matrix_kind, kind = _OPTIONS[option]
+        try:
+            blocks = element_blocks(model, characteristics, matrix_kind)
+        except NotImplementedError as exc:
+            ctx.unsupported(str(exc), "MODELE", kw)
+        except (ElementError, ValueError) as exc:
+            ctx.error(str(exc), "CARA_ELEM", kw)
+        matrix = assemble_blocks(blocks, numbering)
+        ctx.bind(occ["MATRICE"], AssembledMatrix(numbering=numbering, matrix=matrix, kind=kind))
+    for occ in kw.factor("VECT_ASSE"):
+        if occ.get("OPTION", "CHAR_MECA") != "CHAR_MECA":
+            ctx.unsupported(f"ASSEMBLAGE VECT_ASSE OPTION={occ['OPTION']!r}", "OPTION", occ)
+        terms = []
+        for load in as_tuple(occ.get("CHARGE")):
+            terms.extend(load.nodal_forces)
+            gravity = load.extra.get("PESANTEUR")
+            if gravity is not None:
+                terms.extend(
+                    gravity_terms(model, characteristics, gravity["GRAVITE"], gravity["DIRECTION"])
+                )
+        try:
+            values = assemble_terms(terms, numbering)
+        except KeyError as exc:
+            ctx.error(f"load on DOFs the numbering does not have: {exc.args[0]}", "CHARGE", occ)
+        ctx.bind(occ["VECTEUR"], NodalField(numbering=numbering, values=values))
+    return None

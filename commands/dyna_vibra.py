@@ -1,0 +1,423 @@
+"""DYNA_VIBRA, TYPE_CALCUL='TRAN', BASE_CALCUL='GENE': transient analysis by
+modal recombination with DIS_CHOC shock and friction connections.
+
+Reads the keywords into the numerical model of ``asterlite.dynamics`` and
+returns a ``TranGene``. The numerics live in ``asterlite.dynamics``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from asterlite.concepts.transient import ShockHistory, TranGene
+from asterlite.dynamics import contact as C
+from asterlite.dynamics.integrate import SCHEMES, SchemeOptions, integrate
+from asterlite.dynamics.model import (
+    COMPONENTS,
+    LinearSystem,
+    ShockSpec,
+    build_shocks,
+    modal_damping,
+    stability_period,
+    tabulate_excitation,
+)
+from asterlite.errors import NumericalError
+
+STEP_FRACTION = {"DEVOGE": 10.0, "NEWMARK": 10.0, "TRBDF2": 10.0}  # others: 1/20 of the period
+
+
+def run(ctx, kw):
+    if kw.get("BASE_CALCUL") != "GENE" or kw.get("TYPE_CALCUL") != "TRAN":
+        ctx.unsupported(
+            f"DYNA_VIBRA BASE_CALCUL={kw.get('BASE_CALCUL')!r} "
+            f"TYPE_CALCUL={kw.get('TYPE_CALCUL')!r}"
+            " (only TRAN/GENE)",
+            "TYPE_CALCUL",
+            kw,
+        )
+    for unsupported in ("EXCIT_RESU", "MODE_STAT", "MODE_CORR", "BASE_ELAS_FLUI"):
+        if kw.get(unsupported):
+            ctx.unsupported(f"{unsupported} is not implemented", unsupported, kw)
+    if kw.get("VITESSE_VARIABLE", "NON") == "OUI":
+        ctx.unsupported("VITESSE_VARIABLE='OUI' (gyroscopic coupling)", "VITESSE_VARIABLE", kw)
+    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
+    scheme = schema_kw.get("SCHEMA", "RUNGE_KUTTA_32")
+    if scheme not in SCHEMES:
+        ctx.unsupported(
+            f"SCHEMA={scheme!r} (implemented: {', '.join(SCHEMES)})", "SCHEMA", schema_kw
+        )
+    if kw.get("TRAITEMENT_NONL", "EXPLICITE") != "EXPLICITE":
+        ctx.unsupported("TRAITEMENT_NONL='IMPLICITE'", "TRAITEMENT_NONL", kw)
+
+    mass_matrix = kw["MATR_MASS"]
+    basis = mass_matrix.basis
+    system = linear_system(ctx, kw)
+    specs = [
+        spec
+        for occ in kw.factor("COMPORTEMENT")
+        for spec in shock_specs(ctx, occ, basis, system.n_modes)
+    ]
+    shocks = build_shocks(specs, system)
+
+    q0, v0, t_init_state = initial_state(ctx, kw, system.n_modes)
+    t0, t_end, dt_user, veri_pas = time_span(ctx, kw, t_init_state)
+    dt = checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw)
+    instants, pas_arch = archiving(ctx, kw, t0, t_end)
+    loads = excitations(ctx, kw, system.n_modes)
+    excitation = tabulate_excitation(system.n_modes, loads, t0, t_end, dt / 2.0)
+    options = SchemeOptions(
+        tolerance=schema_kw.get("TOLERANCE", 1.0e-5),
+        alpha=schema_kw.get("ALPHA", 0.0),
+        dt_min=schema_kw.get("PAS_MINI"),
+        dt_max=schema_kw.get("PAS_MAXI"),
+    )
+    try:
+        result = integrate(
+            system, shocks, excitation, scheme, q0, v0, t0, t_end, dt, instants, pas_arch, options
+        )
+    except NumericalError as error:
+        raise NumericalError(error.message, ctx.location, ctx.command) from None
+    ctx.log(
+        f"DYNA_VIBRA {scheme}: {result.info['steps']} steps "
+        f"({result.info['rejected_steps']} rejected), "
+        f"{result.info['archived']} archived, {result.info['integration_seconds']:.3f} s"
+    )
+    return TranGene(
+        basis=basis,
+        times=result.times,
+        order=result.order,
+        depl=result.depl,
+        vite=result.vite,
+        acce=result.acce,
+        shocks=shock_histories(shocks, result.vint),
+        scheme=scheme,
+        step=dt,
+        info=result.info,
+    )
+
+
+# ----------------------------------------------------------------------------- matrices
+
+
+def linear_system(ctx, kw) -> LinearSystem:
+    mass = np.array(kw["MATR_MASS"].matrix, dtype=float)
+    stiffness = np.array(kw["MATR_RIGI"].matrix, dtype=float)
+    if kw.get("MATR_AMOR") is not None:
+        damping = np.array(kw["MATR_AMOR"].matrix, dtype=float)
+    else:
+        damping = np.zeros_like(mass)
+        for occ in kw.factor("AMOR_MODAL"):
+            ratios = occ.get("AMOR_REDUIT")
+            if ratios is None and occ.get("LIST_AMOR") is not None:
+                ratios = list_values(occ["LIST_AMOR"])
+            if ratios is not None:
+                ratios = np.atleast_1d(np.asarray(ratios, dtype=float))
+                if ratios.size > mass.shape[0]:
+                    ctx.error(
+                        f"{ratios.size} damping ratios for {mass.shape[0]} modes",
+                        "AMOR_REDUIT",
+                        occ,
+                    )
+                damping = modal_damping(mass, stiffness, ratios)
+    if mass.shape != stiffness.shape or mass.shape != damping.shape:
+        ctx.error("MATR_MASS, MATR_RIGI and the damping do not have the same size")
+    return LinearSystem(mass, stiffness, damping)
+
+
+def list_values(obj) -> np.ndarray:
+    """Values of a listr8 concept (or of a plain sequence)."""
+    for attr in ("values", "vale", "VALE"):
+        if hasattr(obj, attr):
+            return np.asarray(getattr(obj, attr), dtype=float)
+    return np.asarray(obj, dtype=float)
+
+
+# ----------------------------------------------------------------------------- shocks
+
+
+def shock_specs(ctx, occ, basis, n_modes) -> list[ShockSpec]:
+    relation = occ.get("RELATION")
+    if relation != "DIS_CHOC":
+        ctx.unsupported(f"COMPORTEMENT RELATION={relation!r} (only DIS_CHOC)", "RELATION", occ)
+    if occ.get("SOUS_STRUC_1") or occ.get("SOUS_STRUC_2"):
+        ctx.unsupported("sub-structured shocks (SOUS_STRUC_1/2)", "SOUS_STRUC_1", occ)
+    mesh = basis.numbering.mesh
+    obstacle = occ["OBSTACLE"]
+    kind = obstacle.obstacle_type
+    pairs = node_pairs(ctx, occ, mesh)
+    two_nodes = kind.startswith("BI_")
+    specs = []
+    for index, (n1, n2) in enumerate(pairs):
+        if two_nodes and n2 is None:
+            ctx.error(
+                f"obstacle {kind} needs a second node (NOEUD_2/GROUP_NO_2 or GROUP_MA)",
+                "OBSTACLE",
+                occ,
+            )
+        friction = occ.get("FROTTEMENT", "NON")
+        mu_dyn = mu_stat = 0.0
+        if friction == "COULOMB":
+            mu_dyn = mu_stat = float(occ["COULOMB"])
+        elif friction == "COULOMB_STAT_DYNA":
+            mu_dyn, mu_stat = float(occ["COULOMB_DYNA"]), float(occ["COULOMB_STAT"])
+        name = occ.get("INTITULE") or f"DIS_CHOC{index + 1:d}"
+        if occ.get("INTITULE") and len(pairs) > 1:
+            name = f"{occ['INTITULE']}_{index + 1}"
+        orig = occ.get("ORIG_OBST")
+        spec = ShockSpec(
+            name=name,
+            obstacle_type=kind,
+            node_1=mesh.node_names[n1],
+            node_2=mesh.node_names[n2] if n2 is not None else None,
+            coord_1=np.array(mesh.coords[n1], dtype=float),
+            coord_2=np.array(mesh.coords[n2], dtype=float) if n2 is not None else None,
+            phi_1=node_shape(basis, n1, n_modes),
+            phi_2=node_shape(basis, n2, n_modes) if n2 is not None else None,
+            norm_obst=np.asarray(occ["NORM_OBST"], dtype=float),
+            angl_vril=occ.get("ANGL_VRIL"),
+            orig_obst=np.asarray(orig, dtype=float) if orig is not None else None,
+            gap=float(occ.get("JEU", 1.0)),
+            dist_1=float(occ.get("DIST_1") or 0.0),
+            dist_2=float(occ.get("DIST_2") or 0.0),
+            k_n=float(occ["RIGI_NOR"]),
+            c_n=float(occ.get("AMOR_NOR", 0.0)),
+            k_t=float(occ.get("RIGI_TAN", 0.0)),
+            c_t=float(occ["AMOR_TAN"]) if occ.get("AMOR_TAN") is not None else None,
+            mu_dyn=mu_dyn,
+            mu_stat=mu_stat,
+            unidirectional=occ.get("UNIDIRECTIONNEL", "NON") == "OUI",
+            polar=obstacle.polar if kind == "DISCRET" else None,
+        )
+        if kind == "BI_CERC_INT" and spec.dist_2 < spec.dist_1:
+            ctx.error("BI_CERC_INT needs DIST_2 (outer radius) >= DIST_1", "DIST_2", occ)
+        specs.append(spec)
+    return specs
+
+
+def node_pairs(ctx, occ, mesh) -> list[tuple[int, int | None]]:
+    """(node 1, node 2) indices: one pair per SEG2 cell of GROUP_MA/MAILLE,
+    or the single NOEUD_1/GROUP_NO_1 (+ NOEUD_2/GROUP_NO_2)."""
+    cells = []
+    for group in as_tuple(occ.get("GROUP_MA")):
+        if group not in mesh.cell_groups:
+            ctx.error(f"no cell group {group!r} in the mesh", "GROUP_MA", occ)
+        cells.extend(int(c) for c in mesh.cell_groups[group])
+    for name in as_tuple(occ.get("MAILLE")):
+        cells.append(mesh.cell_index[name])
+    if cells:
+        pairs = []
+        for c in cells:
+            nodes = mesh.cell_nodes[c]
+            if len(nodes) != 2:
+                ctx.error(f"cell {mesh.cell_names[c]} is not a SEG2", "GROUP_MA", occ)
+            pairs.append((int(nodes[0]), int(nodes[1])))
+        return pairs
+    n1 = single_node(ctx, occ, mesh, "NOEUD_1", "GROUP_NO_1")
+    n2 = single_node(ctx, occ, mesh, "NOEUD_2", "GROUP_NO_2")
+    return [(n1, n2)]
+
+
+def single_node(ctx, occ, mesh, node_kw, group_kw) -> int | None:
+    if occ.get(node_kw) is not None:
+        name = occ[node_kw]
+        if name not in mesh.node_index:
+            ctx.error(f"no node {name!r} in the mesh", node_kw, occ)
+        return mesh.node_index[name]
+    if occ.get(group_kw) is not None:
+        group = occ[group_kw]
+        if group not in mesh.node_groups:
+            ctx.error(f"no node group {group!r} in the mesh", group_kw, occ)
+        nodes = mesh.node_groups[group]
+        if len(nodes) != 1:
+            ctx.error(
+                f"group {group!r} must hold exactly one node (it has {len(nodes)})", group_kw, occ
+            )
+        return int(nodes[0])
+    return None
+
+
+def node_shape(basis, node: int, n_modes: int) -> np.ndarray:
+    return np.array([basis.shape_at(node, c)[:n_modes] for c in COMPONENTS], dtype=float)
+
+
+def as_tuple(value) -> tuple:
+    if value is None:
+        return ()
+    if isinstance(value, (list, tuple)):
+        return tuple(value)
+    return (value,)
+
+
+# ----------------------------------------------------------------------------- time
+
+
+def initial_state(ctx, kw, n_modes):
+    """(q0, v0, t0 or None) from ETAT_INIT (vectors or a previous tran_gene)."""
+    q0, v0 = np.zeros(n_modes), np.zeros(n_modes)
+    occs = kw.factor("ETAT_INIT")
+    if not occs:
+        return q0, v0, None
+    occ = occs[0]
+    previous = occ.get("RESULTAT")
+    if previous is not None:
+        if occ.get("NUME_ORDRE") is not None:
+            hits = np.nonzero(previous.order == occ["NUME_ORDRE"])[0]
+            if not hits.size:
+                ctx.error(
+                    f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived in the result",
+                    "NUME_ORDRE",
+                    occ,
+                )
+            k = int(hits[0])
+        elif occ.get("INST_INIT") is not None:
+            t = occ["INST_INIT"]
+            k = int(np.argmin(np.abs(previous.times - t)))
+            tol = occ.get("PRECISION", 1.0e-6) * (
+                abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
+            )
+            if abs(previous.times[k] - t) > max(tol, 1e-300):
+                ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
+        else:
+            k = len(previous.times) - 1
+        return previous.depl[k].copy(), previous.vite[k].copy(), float(previous.times[k])
+    if occ.get("DEPL") is not None:
+        q0 = np.asarray(occ["DEPL"].values, dtype=float)[:n_modes].copy()
+    if occ.get("VITE") is not None:
+        v0 = np.asarray(occ["VITE"].values, dtype=float)[:n_modes].copy()
+    return q0, v0, None
+
+
+def time_span(ctx, kw, t_state):
+    occ = kw.factor("INCREMENT")[0]
+    veri_pas = occ.get("VERI_PAS", "OUI") == "OUI"
+    if occ.get("LIST_INST") is not None:
+        values = list_values(occ["LIST_INST"])
+        steps = np.diff(values)
+        dt = float(steps.min())
+        if np.any(np.abs(steps - dt) >= 1.0e-6 * dt):
+            ctx.error("LIST_INST must have a constant step for a GENE transient", "LIST_INST", occ)
+        t0 = float(values[0]) if t_state is None else t_state
+        t_end = float(values[-1])
+        if occ.get("NUME_FIN") is not None and occ["NUME_FIN"] < len(values):
+            t_end = float(values[occ["NUME_FIN"]])
+        if occ.get("INST_FIN") is not None:
+            t_end = float(occ["INST_FIN"])
+    else:
+        dt = float(occ["PAS"])
+        t0 = t_state if t_state is not None else float(occ.get("INST_INIT") or 0.0)
+        if occ.get("INST_INIT") is not None and t_state is None:
+            t0 = float(occ["INST_INIT"])
+        t_end = float(occ["INST_FIN"])
+    if t_end <= t0:
+        ctx.error(f"INST_FIN ({t_end}) must exceed the initial instant ({t0})", "INST_FIN", occ)
+    return t0, t_end, dt, veri_pas
+
+
+def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
+    """code_aster's VERI_PAS: the step may not exceed 1/20 (1/10 for DEVOGE)
+    of the shortest period, shock stiffness included."""
+    limit = stability_period(system, shocks) / STEP_FRACTION.get(scheme, 20.0)
+    if dt_user <= limit:
+        return dt_user
+    if veri_pas:
+        raise NumericalError(
+            f"PAS={dt_user:.6g} exceeds the stability limit {limit:.6g} of {scheme} "
+            f"(1/{STEP_FRACTION.get(scheme, 20.0):g} of the shortest period "
+            "including shock stiffness): "
+            f"use PAS <= {limit:.6g} or VERI_PAS='NON'",
+            ctx.location,
+            f"{ctx.command}/INCREMENT/PAS",
+        )
+    ctx.log(
+        f"warning: PAS={dt_user:.6g} exceeds the stability estimate {limit:.6g} (VERI_PAS='NON')"
+    )
+    return dt_user
+
+
+def archiving(ctx, kw, t0, t_end):
+    """(instants to land on, period in steps); default: every step."""
+    eps = np.finfo(float).eps
+    occs = kw.factor("ARCHIVAGE")
+    instants, pas_arch = [], 1
+    if occs:
+        occ = occs[0]
+        if occ.get("LIST_INST") is not None:
+            instants = list(list_values(occ["LIST_INST"]))
+        elif occ.get("INST") is not None:
+            instants = list(np.atleast_1d(np.asarray(occ["INST"], dtype=float)))
+        pas_arch = int(occ["PAS_ARCH"]) if occ.get("PAS_ARCH") is not None else 2**62
+        if pas_arch <= 0:
+            pas_arch = 2**62
+    kept = []
+    for t in instants:
+        if t < t0 - eps or t > t_end + eps:
+            ctx.error(f"archiving instant {t} outside [{t0}, {t_end}]", "ARCHIVAGE")
+        if abs(t - t0) > eps:
+            kept.append(float(t))
+    if not kept or abs(kept[-1] - t_end) > eps:
+        kept.append(t_end)
+    if np.any(np.diff(kept) <= 0.0):
+        ctx.error("archiving instants must increase", "ARCHIVAGE")
+    return np.array(kept), pas_arch
+
+
+def excitations(ctx, kw, n_modes):
+    loads = []
+    for occ in kw.factor("EXCIT"):
+        if occ.get("VECT_ASSE_GENE") is None:
+            ctx.unsupported("EXCIT without VECT_ASSE_GENE (NUME_ORDRE, ACCE...)", "NUME_ORDRE", occ)
+        if occ.get("MULT_APPUI") or occ.get("CORR_STAT"):
+            ctx.unsupported("EXCIT MULT_APPUI/CORR_STAT", "MULT_APPUI", occ)
+        vector = np.asarray(occ["VECT_ASSE_GENE"].values, dtype=float)[:n_modes]
+        mult = occ.get("FONC_MULT")
+        if mult is None:
+            mult = float(occ.get("COEF_MULT", 1.0))
+        loads.append((vector, mult))
+    return loads
+
+
+# ----------------------------------------------------------------------------- result
+
+
+def shock_histories(shocks, vint) -> list[ShockHistory]:
+    """Archived local quantities, named as code_aster's NOEUD_CHOC parameters."""
+    histories = []
+    for s, spec in enumerate(shocks.specs):
+        v = vint[:, s, :]
+        fields = {
+            "FN": v[:, C.V_FN],
+            "FT1": v[:, C.V_FT1],
+            "FT2": v[:, C.V_FT2],
+            "DXLOC": v[:, C.V_LOC1],
+            "DYLOC": v[:, C.V_LOC1 + 1],
+            "DZLOC": v[:, C.V_LOC1 + 2],
+            "DXLOC_2": v[:, C.V_LOC2],
+            "DYLOC_2": v[:, C.V_LOC2 + 1],
+            "DZLOC_2": v[:, C.V_LOC2 + 2],
+            "VN": v[:, C.V_VN],
+            "VT1": v[:, C.V_VT1],
+            "VT2": v[:, C.V_VT2],
+            "ADHERENCE": v[:, C.V_STICK],
+        }
+        two = spec.node_2 is not None and spec.obstacle_type.startswith("BI_")
+        for axis, i in (("X", 0), ("Y", 1), ("Z", 2)):
+            rel = v[:, C.V_LOC1 + i] - (v[:, C.V_LOC2 + i] if two else 0.0)
+            fields[f"D{axis}REL"] = rel
+        for i in range(C.N_VINT):
+            fields[f"VINT{i + 1}"] = v[:, i]
+        histories.append(
+            ShockHistory(
+                name=spec.name,
+                relation="DIS_CHOC",
+                node_1=spec.node_1,
+                node_2=spec.node_2,
+                fields={k: np.ascontiguousarray(a) for k, a in fields.items()},
+                parameters=shocks.parameters(s),
+            )
+        )
+    return histories
+
+
+__all__ = ["run", "math"]

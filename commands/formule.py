@@ -1,0 +1,27 @@
+"""FORMULE: an expression of NOM_PARA names and of the extra keyword values
+(constants, functions) the deck passes along; see asterlite.concepts.function.
+
+The runtime hands the extra keyword arguments as ``kw["_extra"]``.
+"""
+
+from __future__ import annotations
+
+from asterlite.concepts.function import Formula
+from asterlite.errors import CommandError
+from asterlite.post.restitution import as_tuple
+
+
+def run(ctx, kw):
+    complex_result = kw.get("VALE_C") is not None
+    text = kw["VALE_C"] if complex_result else kw.get("VALE")
+    if text is None:
+        ctx.error("VALE (or VALE_C) is required", "VALE", kw)
+    try:
+        return Formula(
+            VALE=text,
+            NOM_PARA=as_tuple(kw["NOM_PARA"]),
+            extra=dict(kw.get("_extra") or {}),
+            complex_result=complex_result,
+        )
+    except CommandError as exc:
+        ctx.error(exc.message, "VALE_C" if complex_result else "VALE", kw)

@@ -1,0 +1,35 @@
+"""LIRE_MAILLAGE: read a mesh (ASTER text format; MED through medcoupling)."""
+
+from __future__ import annotations
+
+from asterlite.io.aster_mesh import AsterMeshError, read_aster_mesh
+
+
+def run(ctx, kw):
+    unit = kw.get("UNITE", 20)
+    fmt = kw.get("FORMAT", "MED")
+    try:
+        path = ctx.session.input_path(unit)
+    except (KeyError, FileNotFoundError, LookupError) as exc:
+        ctx.error(f"no file is mapped to logical unit {unit} ({exc})", "UNITE", kw)
+    if fmt == "ASTER":
+        try:
+            mesh = read_aster_mesh(path)
+        except AsterMeshError as exc:
+            ctx.error(str(exc), "UNITE", kw)
+    elif fmt == "MED":
+        try:
+            from asterlite.io.med_mesh import read_med_mesh
+        except ImportError:
+            ctx.unsupported("LIRE_MAILLAGE FORMAT='MED' (MED reader not available)", "FORMAT", kw)
+        try:
+            mesh = read_med_mesh(path, kw.get("NOM_MED"))
+        except (ValueError, KeyError) as exc:
+            ctx.error(str(exc), "UNITE", kw)
+    else:
+        ctx.unsupported(f"LIRE_MAILLAGE FORMAT={fmt!r}", "FORMAT", kw)
+    ctx.log(
+        f"mesh {path.name}: {mesh.n_nodes} nodes, {mesh.n_cells} cells, "
+        f"{len(mesh.node_groups)} node groups, {len(mesh.cell_groups)} cell groups"
+    )
+    return mesh

@@ -1,0 +1,268 @@
+"""POST_DYNA_MODA_T: shock statistics of a tran_gene (CHOC).
+
+OPTION='IMPACT' writes, per localized nonlinearity, CALCUL='IMPACT' rows
+(one per global impact), one CALCUL='GLOBAL' row and NB_CLASSE
+CALCUL='PROBA' rows (and a CALCUL='FLAMBAGE' row for a buckled FLAMBAGE
+connection); OPTION='USURE' writes the displacement, force, shock-count and
+wear-power rows. Definitions: ``asterlite.post.shocks``. The NOEUD column
+holds the node number (code_aster 17 names nodes by number), INTITULE the
+connection's name.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.table import Table
+from asterlite.concepts.transient import TranGene
+from asterlite.post import shocks as stats
+
+from .recu_fonction import shock_quantity
+
+IMPACT_COLUMNS = {
+    "INTITULE": "K24", "NOEUD": "K8", "CALCUL": "K16", "CHOC": "I", "INSTANT": "R",
+    "F_MAX": "R", "IMPULSION": "R", "T_CHOC": "R", "V_IMPACT": "R", "NB_IMPACT": "I",
+    "F_MAX_ABS": "R", "F_MAX_MOY": "R", "F_MAX_ETYPE": "R", "CLASSE": "I", "DEBUT": "R",
+    "FIN": "R", "PROBA": "R", "FLAMBAGE": "K8", "ECRAS_RESI": "R", "INST_FLAMB": "R",
+}  # fmt: skip
+USURE_COLUMNS = {
+    "INTITULE": "K24", "NOEUD": "K8", "CALCUL": "K16", "MOYEN": "R", "ECART_TYPE": "R",
+    "RMS": "R", "MAXI": "R", "MINI": "R", "MOYEN_T_TOTAL": "R", "MOYEN_T_CHOC": "R",
+    "RMS_T_TOTAL": "R", "RMS_T_CHOC": "R", "NB_CHOC_S": "I", "NB_REBON_CHOC": "I",
+    "T_CHOC_MOYEN": "R", "T_CHOC_MAXI": "R", "T_CHOC_MINI": "R", "T_REBON_MOYEN": "R",
+    "%_T_CHOC": "I", "PUIS_USURE": "R",
+}  # fmt: skip
+
+
+def run(ctx, kw):
+    result = kw["RESU_GENE"]
+    if not isinstance(result, TranGene):
+        ctx.unsupported(f"POST_DYNA_MODA_T of a {result.aster_type}", "RESU_GENE", kw)
+    for other in ("RELA_EFFO_DEPL", "RELA_EFFO_VITE"):
+        if kw.get(other):
+            ctx.unsupported(f"POST_DYNA_MODA_T/{other}", other, kw)
+    occurrences = kw.factor("CHOC")
+    if not occurrences:
+        ctx.error("CHOC is required", "CHOC", kw)
+    occ = occurrences[0]
+    if not result.shocks:
+        ctx.error("the result has no localized nonlinearity to analyse", "RESU_GENE", kw)
+    window = time_window(ctx, occ, result.times)
+    option = occ.get("OPTION", "USURE")
+    table = Table()
+    columns = IMPACT_COLUMNS if option == "IMPACT" else USURE_COLUMNS
+    for name, type_code in columns.items():
+        table.add_column(name, type_code)
+    mesh = result.basis.numbering.mesh
+    for number, shock in enumerate(result.shocks, start=1):
+        labels = {"INTITULE": shock.name, "NOEUD": node_number(mesh, shock.node_1)}
+        t = result.times[window]
+        fields = {k: np.asarray(v)[window] for k, v in shock.fields.items()}
+        if "FN" not in fields:
+            ctx.error(f"shock {shock.name} has no archived normal force FN", "RESU_GENE", kw)
+        if option == "IMPACT":
+            impact_rows(table, labels, t, fields, occ)
+            buckling_rows(table, labels, shock, number, result.times, mesh)
+        else:
+            wear_rows(table, labels, t, fields, occ)
+    return table
+
+
+def node_number(mesh, name: str | None) -> str:
+    """code_aster 17 writes nodes by number (1-based index) in tables."""
+    if name is None:
+        return ""
+    index = mesh.node_index.get(name)
+    return str(index + 1) if index is not None else str(name)
+
+
+def time_window(ctx, occ, times) -> np.ndarray:
+    times = np.asarray(times)
+    start = occ.get("INST_INIT")
+    stop = occ.get("INST_FIN")
+    eps = 1e-9 * max(abs(times[-1] - times[0]), 1e-300)
+    keep = np.ones(times.size, bool)
+    if start is not None:
+        keep &= times >= start - eps
+    if stop is not None:
+        keep &= times <= stop + eps
+    if keep.sum() < 2:
+        ctx.error(
+            "fewer than two archived instants between INST_INIT and INST_FIN", "INST_FIN", occ
+        )
+    return np.flatnonzero(keep)
+
+
+def impact_rows(table, labels, t, fields, occ) -> None:
+    vn = fields.get("VN", np.zeros_like(t))
+    summary = stats.detect_impacts(
+        t, fields["FN"], vn, float(occ.get("SEUIL_FORCE", 0.0)), float(occ.get("DUREE_REPOS", 0.0))
+    )
+    for impact in summary.impacts:
+        table.add_row(
+            {
+                **labels,
+                "CALCUL": "IMPACT",
+                "CHOC": impact.number,
+                "INSTANT": impact.instant,
+                "F_MAX": impact.f_max,
+                "IMPULSION": impact.impulse,
+                "T_CHOC": impact.duration,
+                "V_IMPACT": impact.v_impact,
+                "NB_IMPACT": impact.n_sub_impacts,
+            }
+        )
+    table.add_row(
+        {
+            **labels,
+            "CALCUL": "GLOBAL",
+            "F_MAX_ABS": summary.f_max_abs,
+            "F_MAX_MOY": summary.f_max_mean,
+            "F_MAX_ETYPE": summary.f_max_std,
+        }
+    )
+    n_classes = int(occ.get("NB_CLASSE", 10)) or 10
+    lower, upper, proba = stats.histogram(summary.peaks, n_classes)
+    for k in range(n_classes):
+        table.add_row(
+            {
+                **labels,
+                "CALCUL": "PROBA",
+                "CLASSE": k + 1,
+                "DEBUT": lower[k],
+                "FIN": upper[k],
+                "PROBA": proba[k],
+            }
+        )
+
+
+def buckling_rows(table, labels, shock, number, times, mesh) -> None:
+    """A FLAMBAGE connection that buckled: residual crush force and instant."""
+    if shock.relation != "FLAMBAGE":
+        return
+    crush = shock_quantity(shock, "VINT1")
+    if crush is None or crush[-1] <= 0:
+        return
+    first = int(np.argmax(crush > 0))
+    force = float(crush[-1])
+    nodes = [labels["NOEUD"]]
+    if shock.node_2:
+        force /= 2  # shared between the two nodes
+        nodes.append(node_number(mesh, shock.node_2))
+    for node in nodes:
+        table.add_row(
+            {
+                **labels,
+                "NOEUD": node,
+                "CALCUL": "FLAMBAGE",
+                "CHOC": number,
+                "FLAMBAGE": "OUI",
+                "ECRAS_RESI": force,
+                "INST_FLAMB": float(times[first]),
+            }
+        )
+
+
+def _blocks(n: int, n_blocks: int) -> list[slice]:
+    size = max(n // max(n_blocks, 1), 1)
+    return [slice(b * size, (b + 1) * size) for b in range(max(n_blocks, 1))]
+
+
+def block_signal_stats(x, blocks) -> stats.SignalStats:
+    """Statistics averaged over NB_BLOC blocks (means of means, quadratic
+    means of deviations and RMS), extrema over all blocks."""
+    parts = [stats.signal_stats(x[b]) for b in blocks]
+    return stats.SignalStats(
+        float(np.mean([p.mean for p in parts])),
+        float(np.sqrt(np.mean([p.std**2 for p in parts]))),
+        float(np.sqrt(np.mean([p.rms**2 for p in parts]))),
+        max(p.max for p in parts),
+        min(p.min for p in parts),
+    )
+
+
+def wear_rows(table, labels, t, fields, occ) -> None:
+    threshold = float(occ.get("SEUIL_FORCE", 0.0))
+    rest = float(occ.get("DUREE_REPOS", 0.0))
+    blocks = _blocks(t.size, int(occ.get("NB_BLOC", 1)))
+    zeros = np.zeros_like(t)
+    local = [fields.get(k, zeros) for k in ("DXLOC", "DYLOC", "DZLOC")]
+    radius, angle = stats.polar(local[1], local[2])
+    signals = [
+        ("DEPL_X", local[0]),
+        ("DEPL_Y", local[1]),
+        ("DEPL_Z", local[2]),
+        ("DEPL_RADIAL", radius),
+        ("DEPL_ANGULAIRE", angle),
+    ]
+    for calcul, signal in signals:
+        s = block_signal_stats(signal, blocks)
+        table.add_row(
+            {**labels, "CALCUL": calcul, "MOYEN": s.mean, "ECART_TYPE": s.std, "RMS": s.rms,
+             "MAXI": s.max, "MINI": s.min}
+        )  # fmt: skip
+
+    fn = fields["FN"]
+    parts = [stats.normal_force_stats(fn[b], threshold) for b in blocks]
+    table.add_row(
+        {
+            **labels,
+            "CALCUL": "FORCE_NORMALE",
+            "MOYEN_T_TOTAL": float(np.mean([p.mean_total for p in parts])),
+            "MOYEN_T_CHOC": float(np.mean([p.mean_contact for p in parts])),
+            "RMS_T_TOTAL": float(np.sqrt(np.mean([p.rms_total**2 for p in parts]))),
+            "RMS_T_CHOC": float(np.sqrt(np.mean([p.rms_contact**2 for p in parts]))),
+            "MAXI": max(0.0, max(p.max for p in parts)),
+        }
+    )
+    for calcul, key in (("FORCE_TANG_1", "FT1"), ("FORCE_TANG_2", "FT2")):
+        s = block_signal_stats(fields.get(key, zeros), blocks)
+        table.add_row(
+            {**labels, "CALCUL": calcul, "MOYEN": s.mean, "ECART_TYPE": s.std, "RMS": s.rms,
+             "MAXI": max(0.0, s.max), "MINI": min(0.0, s.min)}
+        )  # fmt: skip
+
+    counts = [stats.count_shocks(t[b], fn[b], threshold, rest) for b in blocks]
+    n_shocks = sum(c.n_shocks for c in counts)
+    n_rebounds = sum(c.n_rebounds for c in counts)
+    contact_time = sum(c.total_contact_time for c in counts)
+    rebound_time = sum(c.n_rebounds * c.mean_rebound for c in counts)
+    acquisition = acquisition_time(t, blocks)
+    durations = [c for c in counts if c.n_shocks]
+    table.add_row(
+        {
+            **labels,
+            "CALCUL": "STAT_CHOC",
+            "NB_CHOC_S": int(n_shocks / acquisition) if acquisition > 0 else 0,
+            "NB_REBON_CHOC": n_rebounds // n_shocks if n_shocks else 0,
+            "T_CHOC_MOYEN": contact_time / n_shocks if n_shocks else 0.0,
+            "T_CHOC_MAXI": max((c.max_duration for c in counts), default=0.0),
+            "T_CHOC_MINI": min((c.min_duration for c in durations), default=0.0),
+            "T_REBON_MOYEN": rebound_time / n_rebounds if n_rebounds else 0.0,
+            "%_T_CHOC": int(100.0 * contact_time / acquisition) if acquisition > 0 else 0,
+        }
+    )
+
+    sticking = fields.get("IADH")
+    if sticking is not None:
+        sticking = np.asarray(sticking) != 0
+    power = [
+        stats.wear_power(
+            t[b],
+            fn[b],
+            fields.get("VT1", zeros)[b],
+            fields.get("VT2", zeros)[b],
+            None if sticking is None else sticking[b],
+        )
+        for b in blocks
+    ]
+    table.add_row({**labels, "CALCUL": "PUIS_USURE", "PUIS_USURE": float(np.mean(power))})
+
+
+def acquisition_time(t, blocks) -> float:
+    """Analysed duration: mean step (from the first n-2 samples, as code_aster)
+    times the number of samples analysed."""
+    n = t.size
+    dt = (t[n - 3] - t[0]) / (n - 3) if n >= 4 else (t[1] - t[0])
+    used = sum(len(range(*b.indices(n))) for b in blocks)
+    return dt * used

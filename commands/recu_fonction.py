@@ -1,0 +1,214 @@
+"""RECU_FONCTION: a time history extracted from a result or a table.
+
+Sources: a physical transient (RESULTAT + NOM_CHAM + node + NOM_CMP), a
+generalized transient (RESU_GENE + NOM_CHAM + NUME_CMP_GENE, or + node +
+NOM_CMP recombined on the basis), the local quantities of a shock
+(RESU_GENE + GROUP_NO_CHOC / NOEUD_CHOC / INTITULE + PARA_Y), or two columns
+of a table (TABLE + PARA_X + PARA_Y). INTERP_NUME='LIN' interpolates the
+result between archived instants.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.function import Function
+from asterlite.concepts.table import Table
+from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.post.restitution import (
+    as_tuple,
+    recombine,
+    select_instants,
+    single_node,
+    values_of,
+)
+
+
+def run(ctx, kw):
+    if kw.get("TABLE") is not None:
+        x, y = from_table(ctx, kw)
+        para, resu = kw["PARA_X"], kw["PARA_Y"]
+    elif kw.get("RESU_GENE") is not None:
+        para, resu, (x, y) = "INST", None, from_generalized(ctx, kw)
+    elif kw.get("RESULTAT") is not None:
+        para, resu, (x, y) = "INST", None, from_physical(ctx, kw)
+    else:
+        which = next((k for k in ("CHAM_GD", "BASE_ELAS_FLUI", "NAPPE") if k in kw), "source")
+        ctx.unsupported(f"RECU_FONCTION from {which}", which, kw)
+    if resu is None:
+        resu = kw.get("PARA_Y") or kw.get("NOM_CMP") or kw.get("NOM_CHAM") or "TOUTRESU"
+    return Function(
+        x,
+        y,
+        NOM_PARA=kw.get("NOM_PARA") or para,
+        NOM_RESU=kw.get("NOM_RESU") or resu,
+        INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
+        PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
+        PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
+    )
+
+
+def instants(ctx, kw, times, order):
+    """The instant selection of RECU_FONCTION (INTERP_NUME, not INTERPOL)."""
+    inst = None
+    if kw.get("LIST_INST") is not None:
+        inst = values_of(kw["LIST_INST"])
+    elif kw.get("INST") is not None:
+        inst = values_of(kw["INST"])
+    elif kw.get("LIST_PARA") is not None:
+        inst = values_of(kw["LIST_PARA"])
+    nume = kw.get("NUME_ORDRE")
+    if kw.get("LIST_ORDRE") is not None:
+        nume = kw["LIST_ORDRE"].values
+    try:
+        return select_instants(
+            times,
+            order,
+            nume_ordre=as_tuple(nume) if nume is not None else None,
+            inst=inst,
+            interpolate=kw.get("INTERP_NUME", "NON") == "LIN",
+            precision=float(kw.get("PRECISION", 1e-6)),
+            criterion=kw.get("CRITERE", "RELATIF"),
+        )
+    except Exception as exc:  # CommandError: locate it on the call
+        ctx.error(getattr(exc, "message", str(exc)), "LIST_INST", kw)
+
+
+def from_physical(ctx, kw):
+    result = kw["RESULTAT"]
+    if not isinstance(result, DynaTrans):
+        ctx.unsupported(f"RECU_FONCTION from a {result.aster_type}", "RESULTAT", kw)
+    field = kw.get("NOM_CHAM")
+    if field not in result.fields:
+        ctx.error(
+            f"result has no field {field!r} (it has {', '.join(result.fields)})", "NOM_CHAM", kw
+        )
+    selection = instants(ctx, kw, result.times, result.order)
+    node = single_node(ctx, kw, result.numbering.mesh)
+    component = kw.get("NOM_CMP")
+    try:
+        row = result.numbering.dof_index(node, component)
+    except KeyError:
+        ctx.error(f"no DOF {component} on node {node_name(result, node)}", "NOM_CMP", kw)
+    return selection.times, selection.apply(result.fields[field][:, row])
+
+
+def node_name(result, node: int) -> str:
+    return result.numbering.mesh.node_names[node]
+
+
+def from_generalized(ctx, kw):
+    result = kw["RESU_GENE"]
+    if not isinstance(result, TranGene):
+        ctx.unsupported(f"RECU_FONCTION from a {result.aster_type}", "RESU_GENE", kw)
+    if any(kw.get(k) is not None for k in ("GROUP_NO_CHOC", "NOEUD_CHOC", "INTITULE")):
+        return from_shock(ctx, kw, result)
+    field = kw.get("NOM_CHAM", "DEPL")
+    if field not in ("DEPL", "VITE", "ACCE"):
+        ctx.unsupported(f"NOM_CHAM={field!r} from a tran_gene", "NOM_CHAM", kw)
+    if kw.get("MULT_APPUI") == "OUI" or kw.get("CORR_STAT") == "OUI":
+        ctx.unsupported("MULT_APPUI / CORR_STAT in RECU_FONCTION", "MULT_APPUI", kw)
+    selection = instants(ctx, kw, result.times, result.order)
+    states = selection.apply(getattr(result, field.lower()))
+    if kw.get("NUME_CMP_GENE") is not None:
+        mode = int(kw["NUME_CMP_GENE"])
+        if not 1 <= mode <= result.n_modes:
+            ctx.error(f"NUME_CMP_GENE={mode}: the basis has {result.n_modes} modes", None, kw)
+        return selection.times, states[:, mode - 1]
+    node = single_node(ctx, kw, result.basis.numbering.mesh)
+    shape = result.basis.shape_at(node, kw.get("NOM_CMP"))
+    return selection.times, recombine(shape[None, :], states)[:, 0]
+
+
+def find_shock(ctx, kw, result):
+    """The ShockHistory named by INTITULE, NOEUD_CHOC or GROUP_NO_CHOC."""
+    mesh = result.basis.numbering.mesh
+    if kw.get("INTITULE") is not None:
+        wanted = str(kw["INTITULE"]).strip()
+        matches = [s for s in result.shocks if s.name.strip() == wanted]
+        key = "INTITULE"
+    else:
+        if kw.get("GROUP_NO_CHOC") is not None:
+            key = "GROUP_NO_CHOC"
+            group = kw[key]
+            if group not in mesh.node_groups:
+                ctx.error(f"mesh has no node group {group!r}", key, kw)
+            names = {mesh.node_names[int(i)] for i in mesh.node_groups[group]}
+        else:
+            key = "NOEUD_CHOC"
+            names = {str(kw[key])}
+        matches = [s for s in result.shocks if s.node_1 in names] or [
+            s for s in result.shocks if s.node_2 in names
+        ]
+    if not matches:
+        known = ", ".join(f"{s.name} ({s.node_1})" for s in result.shocks) or "none"
+        ctx.error(f"no localized nonlinearity matches (known: {known})", key, kw)
+    return matches[0]
+
+
+def shock_quantity(shock, name: str) -> np.ndarray | None:
+    """A local quantity by code_aster name; internal variables may be archived
+    as VINTk, VARIk or one VARI/VINT array (n_archived, n_vari)."""
+    if name in shock.fields:
+        return np.asarray(shock.fields[name])
+    if name.startswith("VINT") and name[4:].isdigit():
+        k = int(name[4:])
+        if f"VARI{k}" in shock.fields:
+            return np.asarray(shock.fields[f"VARI{k}"])
+        for key in ("VINT", "VARI"):
+            array = shock.fields.get(key)
+            if array is not None and np.ndim(array) == 2 and k <= np.shape(array)[1]:
+                return np.asarray(array)[:, k - 1]
+    return None
+
+
+def from_shock(ctx, kw, result):
+    shock = find_shock(ctx, kw, result)
+    para_x, para_y = kw.get("PARA_X", "INST"), kw.get("PARA_Y")
+    selection = instants(ctx, kw, result.times, result.order)
+
+    def quantity(name, key):
+        if name == "INST":
+            return selection.times
+        values = shock_quantity(shock, name)
+        if values is None:
+            known = ", ".join(sorted(shock.fields)) or "none"
+            ctx.error(f"shock {shock.name} has no quantity {name!r} (it has {known})", key, kw)
+        return selection.apply(values)
+
+    return quantity(para_x, "PARA_X"), quantity(para_y, "PARA_Y")
+
+
+def from_table(ctx, kw):
+    table: Table = kw["TABLE"]
+    for occ in kw.factor("FILTRE"):
+        table = filter_table(ctx, table, occ)
+    for key in ("PARA_X", "PARA_Y"):
+        if kw[key] not in table.types:
+            ctx.error(f"table has no parameter {kw[key]!r}", key, kw)
+    rows = [r for r in table.rows if r.get(kw["PARA_X"]) is not None]
+    return (
+        np.array([r[kw["PARA_X"]] for r in rows], dtype=float),
+        np.array([r.get(kw["PARA_Y"], np.nan) for r in rows]),
+    )
+
+
+def filter_table(ctx, table: Table, occ) -> Table:
+    """One FILTRE occurrence applied to a table (shared by the TABLE commands)."""
+    name = occ["NOM_PARA"]
+    if name not in table.types:
+        ctx.error(
+            f"table has no parameter {name!r} (it has {', '.join(table.columns)})", "NOM_PARA", occ
+        )
+    value = None
+    for key in ("VALE", "VALE_I", "VALE_K", "VALE_C"):
+        if occ.get(key) is not None:
+            value = occ[key]
+            break
+    return table.filtered(
+        name,
+        occ.get("CRIT_COMP", "EQ"),
+        value,
+        float(occ.get("PRECISION", 1e-3)),
+        occ.get("CRITERE", "RELATIF"),
+    )

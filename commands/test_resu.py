@@ -1,0 +1,149 @@
+"""TEST_RESU: check values of results, generalized results and nodal fields.
+
+RESU (RESULTAT + NOM_CHAM + node + NOM_CMP at NUME_ORDRE / INST, or PARA of a
+state, or TYPE_TEST over a field), GENE (RESU_GENE + NUME_CMP_GENE, or
+VECT_GENE), CHAM_NO (CHAM_GD + node + NOM_CMP, or TYPE_TEST). Verdicts:
+``asterlite.post.checks``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.modes import GeneralizedVector, ModeResult
+from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.post.checks import record_check, reduce_values
+from asterlite.post.restitution import as_tuple, dof_rows, nearest_archived, node_indices
+
+
+def run(ctx, kw):
+    for key, check in (("RESU", check_result), ("GENE", check_gene), ("CHAM_NO", check_field)):
+        for i, occ in enumerate(kw.factor(key), start=1):
+            check(ctx, occ, f"{key}[{i}]")
+    for key in ("CHAM_ELEM", "CARTE", "OBJET", "MAILLAGE"):
+        if kw.get(key):
+            ctx.unsupported(f"TEST_RESU/{key}", key, kw)
+    return None
+
+
+def _state_index(ctx, occ, times, order) -> tuple[int, str]:
+    """Index of the tested state (NUME_ORDRE or INST) and its description."""
+    if occ.get("NUME_ORDRE") is not None:
+        number = int(occ["NUME_ORDRE"])
+        matches = np.flatnonzero(np.asarray(order) == number)
+        if matches.size == 0:
+            ctx.error(f"NUME_ORDRE {number} is not in the result", "NUME_ORDRE", occ)
+        return int(matches[0]), f"ordre {number}"
+    if occ.get("INST") is not None:
+        t = float(occ["INST"])
+        try:
+            # the occurrence's PRECISION is the test tolerance: match instants tightly
+            return int(nearest_archived(times, [t], 1e-6, "RELATIF")[0]), f"inst {t:g}"
+        except Exception as exc:
+            ctx.error(getattr(exc, "message", str(exc)), "INST", occ)
+    ctx.error("NUME_ORDRE or INST is required", "NUME_ORDRE", occ)
+
+
+def _field_value(ctx, occ, numbering, values, label):
+    """Value at a node component, or TYPE_TEST over the (component) field."""
+    components = as_tuple(occ.get("NOM_CMP"))
+    nodes = node_indices(ctx, occ, numbering.mesh)
+    type_test = occ.get("TYPE_TEST")
+    if type_test is None:
+        if nodes is None or not components:
+            ctx.error("give a node (GROUP_NO / NOEUD) and NOM_CMP, or TYPE_TEST", None, occ)
+        node = int(nodes[0])
+        try:
+            row = numbering.dof_index(node, components[0])
+        except KeyError:
+            name = numbering.mesh.node_names[node]
+            ctx.error(f"no DOF {components[0]} on node {name}", "NOM_CMP", occ)
+        return values[row], f"{label} {numbering.mesh.node_names[node]} {components[0]}"
+    rows = dof_rows(numbering, nodes, components)
+    if rows.size == 0:
+        ctx.error("no DOF matches for TYPE_TEST", "NOM_CMP", occ)
+    return reduce_values(values[rows], type_test), f"{label} {type_test}"
+
+
+def check_result(ctx, occ, where):
+    result = occ["RESULTAT"]
+    name = result.name or "?"
+    if isinstance(result, ModeResult):
+        times = np.arange(1, result.n_modes + 1, dtype=float)
+        order = np.arange(1, result.n_modes + 1)
+    elif isinstance(result, DynaTrans):
+        times, order = result.times, result.order
+    else:
+        ctx.unsupported(f"TEST_RESU of a {result.aster_type}", "RESULTAT", occ)
+    index, state = _state_index(ctx, occ, times, order)
+    if occ.get("PARA") is not None:
+        value = result_parameter(ctx, occ, result, index)
+        label = f"{where} {name} {occ['PARA']} {state}"
+    else:
+        field = occ.get("NOM_CHAM")
+        if isinstance(result, ModeResult):
+            if field != "DEPL":
+                ctx.unsupported(f"NOM_CHAM={field!r} of a mode_meca", "NOM_CHAM", occ)
+            values = result.shapes[:, index]
+        else:
+            if field not in result.fields:
+                known = ", ".join(result.fields)
+                ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", occ)
+            values = result.fields[field][index]
+        value, what = _field_value(ctx, occ, result.numbering, values, f"{name} {field}")
+        label = f"{where} {what} {state}"
+    record_check(ctx, label, value, occ)
+
+
+def result_parameter(ctx, occ, result, index):
+    para = occ["PARA"]
+    if isinstance(result, DynaTrans):
+        if para == "INST":
+            return float(result.times[index])
+    else:
+        known = {
+            "FREQ": result.frequencies,
+            "MASS_GENE": result.generalized_mass,
+            "RIGI_GENE": result.generalized_stiffness,
+            "OMEGA2": (2 * np.pi * np.asarray(result.frequencies)) ** 2,
+            **result.parameters,
+        }
+        if para in known:
+            return float(np.asarray(known[para])[index])
+    ctx.unsupported(f"PARA={para!r} of a {result.aster_type}", "PARA", occ)
+
+
+def check_gene(ctx, occ, where):
+    mode = occ.get("NUME_CMP_GENE")
+    if mode is None:
+        ctx.error("NUME_CMP_GENE is required", "NUME_CMP_GENE", occ)
+    mode = int(mode)
+    vector = occ.get("VECT_GENE")
+    if vector is None and isinstance(occ.get("RESU_GENE"), GeneralizedVector):
+        vector = occ["RESU_GENE"]  # RECU_GENE output tested through RESU_GENE
+    if vector is not None:
+        values, label = np.asarray(vector.values), f"{where} {vector.name or '?'}"
+    else:
+        result = occ.get("RESU_GENE")
+        if not isinstance(result, TranGene):
+            ctx.unsupported(f"TEST_RESU/GENE of a {getattr(result, 'aster_type', '?')}", None, occ)
+        field = occ.get("NOM_CHAM", "DEPL")
+        if field not in ("DEPL", "VITE", "ACCE"):
+            ctx.unsupported(f"NOM_CHAM={field!r}", "NOM_CHAM", occ)
+        index, state = _state_index(ctx, occ, result.times, result.order)
+        values = getattr(result, field.lower())[index]
+        label = f"{where} {result.name or '?'} {field} {state}"
+    if not 1 <= mode <= values.size:
+        ctx.error(f"NUME_CMP_GENE={mode}: {values.size} generalized DOFs", "NUME_CMP_GENE", occ)
+    record_check(ctx, f"{label} cmp {mode}", values[mode - 1], occ)
+
+
+def check_field(ctx, occ, where):
+    field = occ.get("CHAM_GD")
+    if not isinstance(field, NodalField):
+        ctx.unsupported(f"TEST_RESU/CHAM_NO of a {getattr(field, 'aster_type', '?')}", None, occ)
+    value, what = _field_value(
+        ctx, occ, field.numbering, np.asarray(field.values), field.name or "?"
+    )
+    record_check(ctx, f"{where} {what}", value, occ)
