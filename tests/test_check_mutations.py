@@ -40,8 +40,8 @@ MUTATIONS = [
     (
         "violated rule",
         'DDL_IMPO=_F(TOUT="OUI", DZ=0.0)',
-        'DDL_IMPO=_F(TOUT="OUI", GROUP_NO="NO1", DZ=0.0)',
-        ["AFFE_CHAR_MECA/DDL_IMPO[1]", "TOUT", "GROUP_NO"],
+        'DDL_IMPO=_F(TOUT="OUI")',
+        ["AFFE_CHAR_MECA/DDL_IMPO[1]", "at least one of", "AU_MOINS_UN"],
     ),
     (
         "wrong concept type",

@@ -89,3 +89,14 @@ def all_finite(x):
         if not (abs(x[i]) < 1.0e300):
             return False
     return True
+
+
+@njit(cache=True)
+def state_acceleration(t, q, v, out, f, residual, vint, work, model):
+    """out = M⁻¹ (F_ext(t) + F_shock(q, v) - K q - C v), the shock states
+    ``vint`` updated (code_aster's dtmacce). Returns a diverging shock's
+    index or -1; ``f`` receives the total force."""
+    lin, shk, exc = model
+    shock = total_force(t, q, v, shk, vint, exc, work, f)
+    acceleration(f, q, v, lin, residual, out)
+    return shock

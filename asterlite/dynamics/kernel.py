@@ -1,20 +1,34 @@
-"""The compiled time loop shared by every scheme: stepping, archiving, status.
+"""Pieces of the compiled time loop shared by every scheme: step planning,
+archiving, status codes.
 
-A scheme is an njit function with the signature
+Each scheme module owns a small ``run_loop`` (an njit function calling its
+own ``step`` directly, so that everything is cached across processes) built
+from the helpers here::
 
-    step(t, dt, q, v, a, f, mem, smem, vint, vint_save, lin, shk, exc, work)
+    while unfinished(clock, counters, eps):
+        if archive_full(counters, archive): return STATUS_FULL
+        t, dt = plan_step(clock, counters, instants, eps)
+        status, shock, dt_used, dt_next, rejected = step(t, dt, index, state, memory, model)
+        if status != STATUS_DONE: return record_failure(...)
+        complete_step(...)
+
+A step function has the signature
+
+    step(t, dt, index, state, memory, model)
         -> (status, shock, dt_used, dt_next, n_rejected)
 
-advancing (q, v, a, f, vint) in place from t to t + dt_used. ``mem`` (rows
-of length n) and ``smem`` (scalars) are the scheme's persistent memory,
-``vint_save`` a scratch copy of the shock states for rejected steps.
+with ``index`` the number of steps already taken, ``state = (q, v, a, f,
+vint, vint_save, work)`` advanced in place from t to t + dt_used,
+``memory = (rows, scalars, table)`` the scheme's own persistent arrays
+(rows of length n, scalars, and a coefficient table such as a Butcher
+tableau) and ``model = (lin, shk, exc)`` the bundles of ``model.py``.
 
 The loop follows code_aster's archiving rules (dtmcalc): the step is
 shortened to land exactly on each requested instant (and on INST_FIN), the
 remainder of the shortened step is taken next, and otherwise every
-``pas_arch``-th step is archived. It stops with STATUS_FULL when the
-archive buffers are full so that the driver can grow them and resume:
-memory follows the archived instants, never the number of steps.
+``pas_arch``-th step is archived. It stops with STATUS_FULL when the archive
+buffers are full so that the driver can grow them and resume: memory
+follows the archived instants, never the number of steps.
 """
 
 from __future__ import annotations
@@ -29,9 +43,10 @@ STATUS_STEP_UNDERFLOW = 3
 STATUS_REJECTED = 4
 STATUS_FULL = 10
 
-# clock[]: time, stored step, nominal step, end time, shortened step
-C_TIME, C_STEP, C_STEP0, C_END, C_NEWDT = range(5)
-N_CLOCK = 5
+# clock[]: time, stored step, nominal step, end time, shortened step,
+#          smallest and largest step taken
+C_TIME, C_STEP, C_STEP0, C_END, C_NEWDT, C_MIN_STEP, C_MAX_STEP = range(7)
+N_CLOCK = 7
 # counters[]: step index, archived, next instant, forced-archiving state,
 #             forced irregular archivings, rejected steps, adaptive flag, failing shock
 K_STEP, K_ARCHIVED, K_INSTANT, K_FORCE, K_IRREGULAR, K_REJECTED, K_ADAPTIVE, K_SHOCK = range(8)
@@ -48,124 +63,95 @@ def archive(n, t, step, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, ou
     out_vint[n] = vint
 
 
-# Not cached: numba cannot cache a function taking another compiled function
-# as argument (it is recompiled once per process and scheme; everything it
-# calls is cached).
-@njit
-def run_loop(
-    step_fn,
-    clock,
-    counters,
-    q,
-    v,
-    a,
-    f,
-    mem,
-    smem,
-    vint,
-    vint_save,
-    lin,
-    shk,
-    exc,
-    work,
-    instants,
-    pas_arch,
-    eps,
-    out_t,
-    out_order,
-    out_q,
-    out_v,
-    out_a,
-    out_vint,
-):
+@njit(cache=True)
+def unfinished(clock, counters, eps):
+    """code_aster's loop test: the remaining time exceeds i * eps (the
+    tolerance grows with the running step index i)."""
+    i = counters[K_STEP] + 1
+    return (clock[C_END] - clock[C_TIME]) > i * eps
+
+
+@njit(cache=True)
+def archive_full(counters, archive_buffers):
+    return counters[K_ARCHIVED] >= archive_buffers[0].shape[0]
+
+
+@njit(cache=True)
+def plan_step(clock, counters, instants, eps):
+    """(t, dt) of the next step: the stored step, shortened to land on the
+    next requested instant."""
+    i = counters[K_STEP] + 1
     t = clock[C_TIME]
-    t_end = clock[C_END]
-    i = counters[K_STEP] + 1  # code_aster's running index (tolerance grows with it)
+    dt = clock[C_STEP]
+    k = counters[K_INSTANT]
+    if k < instants.shape[0]:
+        target = instants[k]
+        if t + dt - target > i * eps:
+            clock[C_NEWDT] = target - t
+            dt = clock[C_NEWDT]
+            counters[K_FORCE] = 1
+        elif abs(t + dt - target) < i * eps:
+            clock[C_NEWDT] = dt
+            counters[K_FORCE] = 1
+    return t, dt
+
+
+@njit(cache=True)
+def record_failure(clock, counters, status, shock, dt):
+    clock[C_STEP] = dt
+    counters[K_SHOCK] = shock
+    return status
+
+
+@njit(cache=True)
+def complete_step(clock, counters, state, instants, pas_arch, eps, archive_buffers, step_result):
+    """Advance the clock after an accepted step, choose the next step and
+    archive when due (dtmcalc's rules)."""
+    dt_used, dt_next, rejected = step_result
+    out_t, out_order, out_q, out_v, out_a, out_vint = archive_buffers
+    q, v, a = state[0], state[1], state[2]
+    vint = state[4]
+    i = counters[K_STEP] + 1
     adaptive = counters[K_ADAPTIVE] == 1
-    while (t_end - t) > i * eps:
-        if counters[K_ARCHIVED] >= out_t.shape[0]:
-            clock[C_TIME] = t
-            return STATUS_FULL
-        k = counters[K_INSTANT]
-        dt_stored = clock[C_STEP]
-        dt = dt_stored
-        if k < instants.shape[0]:
-            target = instants[k]
-            if t + dt - target > i * eps:
-                clock[C_NEWDT] = target - t
-                dt = clock[C_NEWDT]
-                counters[K_FORCE] = 1
-            elif abs(t + dt - target) < i * eps:
-                clock[C_NEWDT] = dt
-                counters[K_FORCE] = 1
-        status, shock, dt_used, dt_next, rejected = step_fn(
-            t, dt, q, v, a, f, mem, smem, vint, vint_save, lin, shk, exc, work
-        )
-        counters[K_REJECTED] += rejected
-        if status != STATUS_DONE:
-            clock[C_TIME] = t
-            clock[C_STEP] = dt
-            counters[K_SHOCK] = shock
-            return status
-        t = t + dt_used
-        clock[C_STEP] = dt_next if adaptive else dt_stored
-        counters[K_STEP] = i
-        if counters[K_FORCE] == 2:
-            counters[K_FORCE] = 0
-            if not adaptive:
-                clock[C_STEP] = clock[C_STEP0]
-        if counters[K_FORCE] == 1:
-            if abs(t - instants[k]) <= i * eps:
-                t = instants[k]
-                archive(
-                    counters[K_ARCHIVED],
-                    t,
-                    i,
-                    q,
-                    v,
-                    a,
-                    vint,
-                    out_t,
-                    out_order,
-                    out_q,
-                    out_v,
-                    out_a,
-                    out_vint,
-                )
-                counters[K_ARCHIVED] += 1
-                counters[K_INSTANT] = k + 1
-                counters[K_FORCE] = 0
-                if abs(dt_stored - clock[C_NEWDT]) > i * eps:
-                    counters[K_IRREGULAR] += 1
-                    clock[C_STEP] = dt_stored - clock[C_NEWDT]
-                    counters[K_FORCE] = 2
-                elif not adaptive:
-                    clock[C_STEP] = clock[C_STEP0]
-        elif (i - counters[K_IRREGULAR]) % pas_arch == 0:
-            archive(
-                counters[K_ARCHIVED],
-                t,
-                i,
-                q,
-                v,
-                a,
-                vint,
-                out_t,
-                out_order,
-                out_q,
-                out_v,
-                out_a,
-                out_vint,
-            )
+    dt_stored = clock[C_STEP]
+    counters[K_REJECTED] += rejected
+    if dt_used < clock[C_MIN_STEP]:
+        clock[C_MIN_STEP] = dt_used
+    if dt_used > clock[C_MAX_STEP]:
+        clock[C_MAX_STEP] = dt_used
+    t = clock[C_TIME] + dt_used
+    clock[C_STEP] = dt_next if adaptive else dt_stored
+    counters[K_STEP] = i
+    k = counters[K_INSTANT]
+    if counters[K_FORCE] == 2:
+        counters[K_FORCE] = 0
+        if not adaptive:
+            clock[C_STEP] = clock[C_STEP0]
+    if counters[K_FORCE] == 1:
+        if abs(t - instants[k]) <= i * eps:
+            t = instants[k]
+            n = counters[K_ARCHIVED]
+            archive(n, t, i, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, out_vint)
             counters[K_ARCHIVED] += 1
-        i += 1
+            counters[K_INSTANT] = k + 1
+            counters[K_FORCE] = 0
+            if abs(dt_stored - clock[C_NEWDT]) > i * eps:
+                counters[K_IRREGULAR] += 1
+                clock[C_STEP] = dt_stored - clock[C_NEWDT]
+                counters[K_FORCE] = 2
+            elif not adaptive:
+                clock[C_STEP] = clock[C_STEP0]
+    elif (i - counters[K_IRREGULAR]) % pas_arch == 0:
+        n = counters[K_ARCHIVED]
+        archive(n, t, i, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, out_vint)
+        counters[K_ARCHIVED] += 1
     clock[C_TIME] = t
-    return STATUS_DONE
 
 
 def new_clock(t0: float, dt: float, t_end: float) -> np.ndarray:
     clock = np.zeros(N_CLOCK)
     clock[C_TIME], clock[C_STEP], clock[C_STEP0], clock[C_END] = t0, dt, dt, t_end
+    clock[C_MIN_STEP], clock[C_MAX_STEP] = np.inf, 0.0
     return clock
 
 

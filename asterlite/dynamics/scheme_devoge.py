@@ -22,6 +22,7 @@ import numpy as np
 from numba import njit
 
 from asterlite.dynamics.forces import all_finite, matvec, total_force
+from asterlite.dynamics import kernel as K
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
     STATUS_NOT_FINITE,
@@ -42,8 +43,23 @@ def memory_rows(n: int) -> int:
     return MATRIX_ROWS + 4 * n
 
 
-def prepare(mem, smem, minv, stiffness, damping, dt, adaptive, tolerance, alpha, dt_min, dt_max):
-    """Fill the constant operators and control parameters (Python side)."""
+def prepare(system, dt, options):
+    """(memory, adaptive): operators and control parameters. The step adapts
+    unless PAS_MINI equals PAS_MAXI (defaults 1e-10 and 1e10 times PAS)."""
+    n = system.n_modes
+    dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt
+    dt_max = options.dt_max if options.dt_max is not None else 1.0e10 * dt
+    adaptive = abs(dt_max / dt_min - 1.0) >= EPS
+    mem = np.zeros((memory_rows(n), n))
+    smem = np.zeros(MEMORY_SCALARS)
+    fill_operators(
+        mem, smem, system.minv, system.stiffness, system.damping, adaptive,
+        options.tolerance, options.alpha, dt_min, dt_max,
+    )  # fmt: skip
+    return (mem, smem, np.zeros((1, 1))), adaptive
+
+
+def fill_operators(mem, smem, minv, stiffness, damping, adaptive, tolerance, alpha, dt_min, dt_max):
     n = minv.shape[0]
     ops = mem[MATRIX_ROWS:]
     ops[0:n] = minv @ damping
@@ -141,7 +157,10 @@ def start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
 
 
 @njit(cache=True)
-def step(t, dt, q, v, a, f, mem, smem, vint, vint_save, lin, shk, exc, work):
+def step(t, dt, index, state, memory, model):
+    q, v, a, f, vint, vint_save, work = state
+    mem, smem = memory[0], memory[1]
+    lin, shk, exc = model
     minv, stiffness, damping, is_diagonal = lin
     diagonal = is_diagonal[0] == 1
     n = q.shape[0]
@@ -311,3 +330,19 @@ def relative_error(dt, q, v, mem, smem, attempts, n):
     if scale <= EPS:
         return 0.9**4
     return err_displacement / scale
+
+
+@njit(cache=True)
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+    while K.unfinished(clock, counters, eps):
+        if K.archive_full(counters, archive):
+            return K.STATUS_FULL
+        t, dt = K.plan_step(clock, counters, instants, eps)
+        status, shock, dt_used, dt_next, rejected = step(
+            t, dt, counters[K.K_STEP], state, memory, model
+        )
+        if status != K.STATUS_DONE:
+            return K.record_failure(clock, counters, status, shock, dt)
+        result = (dt_used, dt_next, rejected)
+        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
+    return K.STATUS_DONE

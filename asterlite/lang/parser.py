@@ -381,10 +381,6 @@ def _check_arguments(node, module, in_loop, in_function) -> None:
             raise _error("positional argument follows keyword argument", argument, module)
 
 
-def _check_import_from(node, module, in_loop, in_function) -> None:
-    return None
-
-
 _CHECKS = {
     "assign": _check_assign,
     "augassign": _check_augassign,
