@@ -9,7 +9,7 @@ from asterlite.concepts.assembly import DiscreteAssignment, ElementCharacteristi
 from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS
 from asterlite.fem.frames import angles_from_axis, angles_from_x_and_y
-from asterlite.fem.selection import as_tuple, select_cells
+from asterlite.fem.selection import as_scalar, as_tuple, select_cells
 
 _OTHER_KEYWORDS = (
     "POUTRE",
@@ -33,8 +33,8 @@ def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
     cells = select_cells(ctx, occ, mesh)
     caras = as_tuple(occ.get("CARA"))
     values = np.atleast_1d(np.asarray(as_tuple(occ.get("VALE")), dtype=float))
-    symmetric = occ.get("SYME", "OUI") == "OUI"
-    repere = occ.get("REPERE") or "GLOBAL"
+    symmetric = as_scalar(occ.get("SYME", "OUI")) == "OUI"
+    repere = as_scalar(occ.get("REPERE")) or "GLOBAL"
     hysteretic = float(occ.get("AMOR_HYST") or 0.0)
     start = 0
     for cara in caras:
@@ -83,7 +83,7 @@ def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
 def _orientation(ctx, model, result, occ) -> None:
     mesh = model.mesh
     cells = select_cells(ctx, occ, mesh)
-    cara = occ.get("CARA")
+    cara = as_scalar(occ.get("CARA"))
     vale = np.atleast_1d(np.asarray(as_tuple(occ.get("VALE")), dtype=float))
     for cell in cells:
         cell = int(cell)

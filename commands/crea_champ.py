@@ -19,7 +19,17 @@ def _template_numbering(ctx, kw):
         from asterlite.fem.assemble import build_numbering_dofs
 
         return DofNumbering(mesh=model.mesh, dofs=build_numbering_dofs(model.node_components()))
-    ctx.unsupported("CREA_CHAMP AFFE without CHAM_NO, NUME_DDL or MODELE", "CHAM_NO", kw)
+    # MAILLAGE only: a field on exactly the (node, component) pairs affected
+    from asterlite.concepts.assembly import DofNumbering
+    from asterlite.fem.dofs import sort_components
+
+    mesh = kw["MAILLAGE"]
+    pairs: dict[int, set[str]] = {}
+    for occ in kw.factor("AFFE"):
+        for node in select_nodes(ctx, occ, mesh):
+            pairs.setdefault(int(node), set()).update(as_tuple(occ.get("NOM_CMP")))
+    dofs = [(n, c) for n in sorted(pairs) for c in sort_components(pairs[n])]
+    return DofNumbering(mesh=mesh, dofs=dofs)
 
 
 def _affe(ctx, kw):

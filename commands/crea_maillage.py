@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.selection import select_nodes
+from asterlite.fem.selection import as_scalar, select_nodes
 
 _HANDLED = ("MAILLAGE", "CREA_POI1", "INFO", "TITRE")
 
@@ -16,16 +16,24 @@ def run(ctx, kw):
     mesh = kw["MAILLAGE"].copy()
     for occ in kw.factor("CREA_POI1"):
         nodes = select_nodes(ctx, occ, mesh)
-        names = []
+        cells, new_names, new_nodes = [], [], []
         for node in nodes:
-            # the new cell takes the node's name (made unique if a cell already has it)
+            # cells are named after their node; a node given twice (several
+            # occurrences) keeps its one POI1 cell, as in code_aster
             base = mesh.node_names[node]
+            existing = mesh.cell_index.get(base)
+            if existing is not None and mesh.cell_nodes[existing] == (int(node),):
+                cells.append(existing)
+                continue
             name, k = base, 1
-            while name in mesh.cell_index or name in names:
+            while name in mesh.cell_index or name in new_names:
                 name, k = f"{base}_{k}", k + 1
-            names.append(name)
-        cells = mesh.add_cells(names, "POI1", [(int(n),) for n in nodes])
-        group = occ.get("NOM_GROUP_MA")
+            new_names.append(name)
+            new_nodes.append((int(node),))
+            cells.append(-len(new_names))  # placeholder, filled below
+        created = mesh.add_cells(new_names, "POI1", new_nodes)
+        cells = [c if c >= 0 else int(created[-c - 1]) for c in cells]
+        group = as_scalar(occ.get("NOM_GROUP_MA"))
         if group is not None:
             if group in mesh.cell_groups:
                 ctx.error(f"the cell group {group!r} already exists", "NOM_GROUP_MA", occ)

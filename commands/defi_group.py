@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.fem.selection import (
+    as_scalar,
     as_tuple,
     cell_group_members,
     named_cells,
@@ -46,9 +47,9 @@ def _unique(values) -> list[int]:
 
 
 def _crea_group_ma(ctx, mesh, occ) -> None:
-    if occ.get("OPTION") is not None:
+    if as_scalar(occ.get("OPTION")) is not None:
         ctx.unsupported(f"DEFI_GROUP CREA_GROUP_MA OPTION={occ['OPTION']!r}", "OPTION", occ)
-    name = occ.get("NOM")
+    name = as_scalar(occ.get("NOM"))
     combined = _combine(ctx, occ, mesh.cell_groups, "cell")
     if combined is not None:
         members = combined
@@ -65,7 +66,7 @@ def _crea_group_ma(ctx, mesh, occ) -> None:
 
 
 def _crea_group_no(ctx, mesh, occ) -> None:
-    if occ.get("OPTION") is not None:
+    if as_scalar(occ.get("OPTION")) is not None:
         ctx.unsupported(f"DEFI_GROUP CREA_GROUP_NO OPTION={occ['OPTION']!r}", "OPTION", occ)
     if occ.get("TOUT_GROUP_MA") == "OUI":
         for gname, cells in mesh.cell_groups.items():
@@ -74,7 +75,7 @@ def _crea_group_no(ctx, mesh, occ) -> None:
         return
     if occ.get("TOUT_GROUP_NO") == "OUI":
         return
-    name = occ.get("NOM")
+    name = as_scalar(occ.get("NOM"))
     combined = _combine(ctx, occ, mesh.node_groups, "node")
     if combined is not None:
         _store(ctx, occ, mesh.node_groups, name, combined, "node")

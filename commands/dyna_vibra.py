@@ -72,6 +72,14 @@ def run(ctx, kw):
         alpha=schema_kw.get("ALPHA", 0.0),
         dt_min=schema_kw.get("PAS_MINI"),
         dt_max=schema_kw.get("PAS_MAXI"),
+        beta=schema_kw.get("BETA", 0.25),
+        gamma=schema_kw.get("GAMMA", 0.5),
+        nmax_iter_pas=int(schema_kw.get("NMAX_ITER_PAS", 16)),
+        vite_min=first_value(schema_kw.get("VITE_MIN", "NORM")),
+        coef_mult_pas=schema_kw.get("COEF_MULT_PAS", 1.1),
+        coef_divi_pas=schema_kw.get("COEF_DIVI_PAS", 1.3333334),
+        pas_limi_rela=schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
+        nb_poin_periode=int(schema_kw.get("NB_POIN_PERIODE", 50)),
     )
     try:
         result = integrate(
@@ -82,7 +90,8 @@ def run(ctx, kw):
     ctx.log(
         f"DYNA_VIBRA {scheme}: {result.info['steps']} steps "
         f"({result.info['rejected_steps']} rejected), "
-        f"{result.info['archived']} archived, {result.info['integration_seconds']:.3f} s"
+        f"{result.info['archived']} archived, step {result.info['min_step']:.3g}"
+        f"..{result.info['max_step']:.3g}, {result.info['integration_seconds']:.3f} s"
     )
     return TranGene(
         basis=basis,
@@ -240,6 +249,13 @@ def single_node(ctx, occ, mesh, node_kw, group_kw) -> int | None:
 
 def node_shape(basis, node: int, n_modes: int) -> np.ndarray:
     return np.array([basis.shape_at(node, c)[:n_modes] for c in COMPONENTS], dtype=float)
+
+
+def first_value(value):
+    """A simple keyword given as a one-element tuple (``VITE_MIN=("MAXI",)``)."""
+    if isinstance(value, (list, tuple)):
+        return value[0] if value else None
+    return value
 
 
 def as_tuple(value) -> tuple:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.selection import as_tuple, named_nodes, node_group_members
+from asterlite.fem.selection import as_scalar, as_tuple, named_nodes, node_group_members
 from asterlite.modal import normalize
 from asterlite.modal.calc import apply_norm
 
@@ -32,7 +32,7 @@ def run(ctx, kw):
         apply_norm(modes, norme, stiffness=stiffness, mass=mass)
     elif kw.get("GROUP_NO") is not None or kw.get("NOEUD") is not None:
         node = _single_node(ctx, kw, numbering.mesh, "GROUP_NO")
-        comp = kw["NOM_CMP"]
+        comp = as_scalar(kw["NOM_CMP"])
         row = numbering.index.get((node, comp))
         if row is None:
             ctx.error(f"node {numbering.mesh.node_names[node]} has no {comp}", "NOM_CMP", kw)
@@ -49,7 +49,7 @@ def run(ctx, kw):
         modes.rescale(normalize.largest_component(modes.shapes, mask), label)
     for occ in kw.factor("MODE_SIGNE"):
         node = _single_node(ctx, occ, numbering.mesh, "GROUP_NO")
-        comp = occ["NOM_CMP"]
+        comp = as_scalar(occ["NOM_CMP"])
         row = numbering.index.get((node, comp))
         if row is None:
             ctx.error(f"node {numbering.mesh.node_names[node]} has no {comp}", "NOM_CMP", occ)

@@ -6,18 +6,36 @@ metric, as code_aster's operator does)."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from asterlite.concepts.modes import GeneralizedVector
 from asterlite.modal.projection import ProjectionError, fit_coordinates, project_force
 
 
+def on_numbering(ctx, kw, field, numbering) -> np.ndarray:
+    """The field's values on another numbering of the same mesh (by node and
+    component); a non-zero value on a DOF the numbering lacks is an error."""
+    if field.numbering is numbering or field.numbering.dofs == numbering.dofs:
+        return field.values
+    if field.numbering.mesh is not numbering.mesh:
+        ctx.error("the vector and the basis are on different meshes", "VECT_ASSE", kw)
+    rows = numbering.dof_indices(field.numbering.dof_nodes, field.numbering.dof_components)
+    lost = (rows < 0) & (field.values != 0.0)
+    if np.any(lost):
+        label = field.numbering.label(int(np.flatnonzero(lost)[0]))
+        ctx.error(f"the basis has no DOF {label} where the vector is non-zero", "VECT_ASSE", kw)
+    values = np.zeros(numbering.n_dofs)
+    values[rows[rows >= 0]] = field.values[rows >= 0]
+    return values
+
+
 def project(ctx, kw, basis, numbering_gene, field, type_vect):
-    if field.numbering is not basis.numbering and field.numbering.dofs != basis.numbering.dofs:
-        ctx.error("the vector and the basis use different DOF numberings", "VECT_ASSE", kw)
+    values = on_numbering(ctx, kw, field, basis.numbering)
     if type_vect == "FORC":
-        values = project_force(basis.shapes, field.values)
+        values = project_force(basis.shapes, values)
     else:
         try:
-            values = fit_coordinates(basis.shapes, field.values)
+            values = fit_coordinates(basis.shapes, values)
         except ProjectionError as exc:
             ctx.error(str(exc), "BASE", kw)
     return GeneralizedVector(numbering=numbering_gene, values=values, kind=type_vect)

@@ -161,7 +161,10 @@ class DofNumbering(Concept):
     def dof_index(self, node: int | str, component: str) -> int:
         """Index of (node, component); raises KeyError when absent."""
         if isinstance(node, str):
-            node = self.mesh.node_index[node]
+            found = self.mesh.find_node(node)
+            if found is None:
+                raise KeyError(node)
+            node = found
         return self.index[(node, component)]
 
     def dof_indices(self, nodes, components) -> np.ndarray:
@@ -174,7 +177,8 @@ class DofNumbering(Concept):
         out = np.empty(len(nodes), dtype=int)
         for k, (n, c) in enumerate(zip(nodes, components, strict=True)):
             if isinstance(n, str):
-                n = self.mesh.node_index.get(n, -1)
+                found = self.mesh.find_node(n)
+                n = -1 if found is None else found
             out[k] = self.index.get((int(n), c), -1)
         return out
 

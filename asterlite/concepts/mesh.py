@@ -33,6 +33,14 @@ CELL_NODE_COUNTS = {
 }
 
 
+def _positional(name: str, prefix: str, count: int) -> int | None:
+    if len(name) > 1 and name[0] == prefix and name[1:].isdigit() and name[1] != "0":
+        index = int(name[1:]) - 1
+        if index < count:
+            return index
+    return None
+
+
 @dataclass(eq=False)
 class Mesh(Concept):
     """An unstructured mesh as code_aster sees it.
@@ -72,6 +80,21 @@ class Mesh(Concept):
         self.__post_init__()
 
     # -- lookups used by commands (KeyError names the missing entity) --------
+
+    def find_node(self, name: str) -> int | None:
+        """Index of a node by name; code_aster 17 also names nodes ``N<i>`` by
+        their 1-based position (mesh names are not kept), so that is the fallback."""
+        index = self.node_index.get(name)
+        if index is None:
+            index = _positional(name, "N", self.n_nodes)
+        return index
+
+    def find_cell(self, name: str) -> int | None:
+        """Index of a cell by name, falling back on code_aster 17's ``M<i>``."""
+        index = self.cell_index.get(name)
+        if index is None:
+            index = _positional(name, "M", self.n_cells)
+        return index
 
     def node_group(self, name: str) -> np.ndarray:
         return self.node_groups[name]

@@ -9,22 +9,54 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from asterlite.dynamics import (
+    adapt_control,
+    scheme_adapt_ordre1,
+    scheme_adapt_ordre2,
+    scheme_devoge,
+    scheme_diff_centre,
+    scheme_newmark,
+    scheme_rk32,
+    scheme_rk54,
+    scheme_trbdf2,
+)
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import scheme_devoge, scheme_diff_centre
 from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.forces import acceleration, total_force
 from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet
 from asterlite.errors import NumericalError
 
-SCHEMES = {"DIFF_CENTRE": scheme_diff_centre, "DEVOGE": scheme_devoge}
+# Each scheme module offers prepare(system, dt, options) -> (memory, adaptive)
+# and a compiled run_loop calling its own step function.
+SCHEMES = {
+    "DIFF_CENTRE": scheme_diff_centre,
+    "DEVOGE": scheme_devoge,
+    "NEWMARK": scheme_newmark,
+    "RUNGE_KUTTA_32": scheme_rk32,
+    "RUNGE_KUTTA_54": scheme_rk54,
+    "ADAPT_ORDRE1": scheme_adapt_ordre1,
+    "ADAPT_ORDRE2": scheme_adapt_ordre2,
+    "TRBDF2": scheme_trbdf2,
+}
+ADAPTIVE_FAMILY = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54", "ADAPT_ORDRE1", "ADAPT_ORDRE2", "DEVOGE")
 
 
 @dataclass
 class SchemeOptions:
+    """SCHEMA_TEMPS parameters (code_aster 17 defaults)."""
+
     tolerance: float = 1.0e-5
     alpha: float = 0.0
     dt_min: float | None = None
     dt_max: float | None = None
+    beta: float = 0.25
+    gamma: float = 0.5
+    nmax_iter_pas: int = 16
+    vite_min: str = "NORM"
+    coef_mult_pas: float = 1.1
+    coef_divi_pas: float = 1.3333334
+    pas_limi_rela: float = 1.0e-6
+    nb_poin_periode: int = 50
 
 
 @dataclass
@@ -54,19 +86,20 @@ def integrate(
 ) -> RunResult:
     options = options or SchemeOptions()
     n = system.n_modes
-    lin, shk, exc = system.bundle(), shocks.bundle(), excitation.bundle()
+    model = (system.bundle(), shocks.bundle(), excitation.bundle())
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
     f, a = np.zeros(n), np.zeros(n)
     vint = np.zeros((shocks.count, N_VINT))
-    vint_save = np.zeros_like(vint)
     work = np.zeros((5, 3))
-    shock = total_force(t0, q, v, shk, vint, exc, work, f)
-    acceleration(f, q, v, lin, np.zeros(n), a)
+    shock = total_force(t0, q, v, model[1], vint, model[2], work, f)
+    acceleration(f, q, v, model[0], np.zeros(n), a)
     if shock >= 0 or not np.all(np.isfinite(a)):
         raise NumericalError(f"non-finite initial acceleration at t={t0:g}")
+    state = (q, v, a, f, vint, np.zeros_like(vint), work)
 
     module = SCHEMES[scheme]
-    step_fn, mem, smem, adaptive = setup_scheme(module, scheme, system, dt, options)
+    memory, _ = module.prepare(system, dt, options)
+    adaptive = loop_adapts(scheme, dt, options)
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
     n_steps = max(1, int(round((t_end - t0) / dt)))
@@ -79,10 +112,9 @@ def integrate(
     counters[K.K_ARCHIVED] = 1
     started = wallclock.perf_counter()
     while True:
-        status = K.run_loop(
-            step_fn, clock, counters, q, v, a, f, mem, smem, vint, vint_save,
-            lin, shk, exc, work, instants, pas_arch, eps, *buffers,
-        )  # fmt: skip
+        status = module.run_loop(
+            clock, counters, state, memory, model, instants, pas_arch, eps, buffers
+        )
         if status != K.STATUS_FULL:
             break
         buffers = grow(buffers)
@@ -91,33 +123,34 @@ def integrate(
         raise divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
     out_t, out_order, out_q, out_v, out_a, out_vint = (b[:count].copy() for b in buffers)
+    steps = int(counters[K.K_STEP])
     info = {
-        "steps": int(counters[K.K_STEP]),
+        "steps": steps,
         "rejected_steps": int(counters[K.K_REJECTED]),
         "archived": int(count),
         "integration_seconds": elapsed,
         "initial_step": dt,
         "adaptive": adaptive,
+        "min_step": float(clock[K.C_MIN_STEP]) if steps else dt,
+        "max_step": float(clock[K.C_MAX_STEP]) if steps else dt,
+        "mean_step": (float(clock[K.C_TIME]) - t0) / steps if steps else dt,
+        "last_step": float(clock[K.C_STEP]),
     }
+    if scheme in ("ADAPT_ORDRE1", "ADAPT_ORDRE2"):
+        kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
+        info["steps_kept_at_nmax_iter_pas"] = kept
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, info)
 
 
-def setup_scheme(module, scheme: str, system: LinearSystem, dt: float, options: SchemeOptions):
-    n = system.n_modes
-    if scheme == "DEVOGE":
-        dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt
-        dt_max = options.dt_max if options.dt_max is not None else 1.0e10 * dt
-        adaptive = abs(dt_max / dt_min - 1.0) >= np.finfo(float).eps
-        mem = np.zeros((module.memory_rows(n), n))
-        smem = np.zeros(module.MEMORY_SCALARS)
-        module.prepare(
-            mem, smem, system.minv, system.stiffness, system.damping, dt, adaptive,
-            options.tolerance, options.alpha, dt_min, dt_max,
-        )  # fmt: skip
-        return module.step, mem, smem, adaptive
-    mem = np.zeros((module.MEMORY_ROWS, n))
-    smem = np.zeros(module.MEMORY_SCALARS)
-    return module.step, mem, smem, False
+def loop_adapts(scheme: str, dt: float, options: SchemeOptions) -> bool:
+    """Whether the time loop follows the step proposed by the scheme
+    (code_aster's dtmprep: adaptive families with PAS_MINI != PAS_MAXI,
+    defaults 1e-6 and 1e6 times PAS)."""
+    if scheme not in ADAPTIVE_FAMILY:
+        return False
+    dt_min = options.dt_min if options.dt_min is not None else 1.0e-6 * dt
+    dt_max = options.dt_max if options.dt_max is not None else 1.0e6 * dt
+    return abs(dt_max / dt_min - 1.0) > 100.0 * np.finfo(float).eps
 
 
 def new_buffers(capacity: int, n_modes: int, n_shocks: int):
@@ -151,7 +184,7 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
     what = {
         K.STATUS_NOT_FINITE: "the solution became non-finite",
         K.STATUS_SHOCK_DIVERGED: "relative velocity at a shock diverged",
-        K.STATUS_STEP_UNDERFLOW: "the adaptive step could not be reduced further",
+        K.STATUS_STEP_UNDERFLOW: "the adaptive step fell below PAS_MINI",
     }.get(status, f"integration failed (status {status})")
     return NumericalError(
         f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; "

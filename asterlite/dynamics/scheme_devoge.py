@@ -21,8 +21,8 @@ import math
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics.forces import all_finite, matvec, total_force
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics.forces import all_finite, matvec, total_force
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
     STATUS_NOT_FINITE,

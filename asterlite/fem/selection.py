@@ -10,6 +10,13 @@ import numpy as np
 from asterlite.concepts.mesh import Mesh
 
 
+def as_scalar(value):
+    """The single value of a keyword a catalogue may hand over as a 1-tuple."""
+    if isinstance(value, (list, tuple)):
+        return value[0] if len(value) == 1 else value
+    return value
+
+
 def as_tuple(value) -> tuple:
     if value is None:
         return ()
@@ -47,18 +54,20 @@ def node_group_members(ctx, kw, mesh: Mesh, keyword: str = "GROUP_NO") -> list[i
 def named_cells(ctx, kw, mesh: Mesh, keyword: str = "MAILLE") -> list[int]:
     out = []
     for name in as_tuple(kw.get(keyword)):
-        if name not in mesh.cell_index:
+        index = mesh.find_cell(name)
+        if index is None:
             ctx.error(f"the mesh has no cell {name!r}", keyword, kw)
-        out.append(mesh.cell_index[name])
+        out.append(index)
     return out
 
 
 def named_nodes(ctx, kw, mesh: Mesh, keyword: str = "NOEUD") -> list[int]:
     out = []
     for name in as_tuple(kw.get(keyword)):
-        if name not in mesh.node_index:
+        index = mesh.find_node(name)
+        if index is None:
             ctx.error(f"the mesh has no node {name!r}", keyword, kw)
-        out.append(mesh.node_index[name])
+        out.append(index)
     return out
 
 

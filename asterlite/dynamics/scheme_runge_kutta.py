@@ -1,0 +1,226 @@
+"""RUNGE_KUTTA_32 and RUNGE_KUTTA_54: explicit embedded Runge-Kutta pairs
+on the first-order form (q' = v, v' = acceleration), one tableau-driven
+kernel with code_aster's step controller (intruku32 / intruku54).
+
+A tableau is data: ``a`` (stages x stages, row k gives the stage k + 1
+from the stages 1..k + 1, its last row being the solution weights), ``c``
+(stages + 1 nodes, the last one 1) and ``e`` (stages + 1 error weights,
+the last one applied to the derivative at the solution, first-same-as-last).
+The acceleration at the end of a step is the first stage of the next.
+
+Error control, as code_aster: with the error estimates
+E_q = dt Σ e_k v_k, E_v = dt Σ e_k a_k and for each mode the scales
+s_q = max(tol |q_n + α|, tol (|Δq| + α), ε), s_v likewise,
+
+    err = max(sqrt((Σ (E_q/s_q)² + Σ (E_v/s_v)²) / (2 n)), ε)
+
+(ε = 100 machine epsilon). A retry whose error did not decrease by 1 %
+accepts the step (err = 0.99). The factor 0.9 err^(-1/p) is bounded to
+[0.2, 5] (p = 4 for the 3(2) pair, 6 for the 5(4) pair, code_aster's
+exponents); the step is retried while err >= 1 and the new step stays
+above PAS_MINI (falling below PAS_MINI stops the run), and the next step
+is min(PAS_MAXI, factor dt). PAS_MINI == PAS_MAXI gives a fixed step.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics import kernel as K
+from asterlite.dynamics.forces import all_finite, state_acceleration
+
+
+@dataclass(frozen=True)
+class Tableau:
+    name: str
+    a: np.ndarray
+    c: np.ndarray
+    e: np.ndarray
+    exponent: float  # of the step factor 0.9 err^(-1/exponent)
+
+    @property
+    def stages(self) -> int:
+        return self.a.shape[0]
+
+    def table(self) -> np.ndarray:
+        """Packed for the kernel: rows 0..s-1 = a (padded), row s = c, row s+1 = e."""
+        s = self.stages
+        out = np.zeros((s + 2, s + 1))
+        out[:s, :s] = self.a
+        out[s] = self.c
+        out[s + 1] = self.e
+        return out
+
+
+BOGACKI_SHAMPINE_32 = Tableau(
+    "RUNGE_KUTTA_32",
+    a=np.array(
+        [
+            [1 / 2, 0.0, 0.0],
+            [0.0, 3 / 4, 0.0],
+            [2 / 9, 1 / 3, 4 / 9],
+        ]
+    ),
+    c=np.array([0.0, 1 / 2, 3 / 4, 1.0]),
+    e=np.array([5 / 72, -1 / 12, -1 / 9, 1 / 8]),
+    exponent=4.0,
+)
+
+DORMAND_PRINCE_54 = Tableau(
+    "RUNGE_KUTTA_54",
+    a=np.array(
+        [
+            [1 / 5, 0, 0, 0, 0, 0],
+            [3 / 40, 9 / 40, 0, 0, 0, 0],
+            [44 / 45, -56 / 15, 32 / 9, 0, 0, 0],
+            [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0, 0],
+            [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0],
+            [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84],
+        ],
+        dtype=float,
+    ),
+    c=np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0]),
+    e=np.array([71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40]),
+    exponent=6.0,
+)
+
+TABLEAUX = {t.name: t for t in (BOGACKI_SHAMPINE_32, DORMAND_PRINCE_54)}
+
+# vector rows: stage state (q, v, a), residual scratch, then v and a of each stage
+Q_STAGE, V_STAGE, A_STAGE, RESIDUAL = range(4)
+VECTOR_ROWS = 4
+S_TOL, S_ALPHA, S_DTMIN, S_DTMAX, S_ADAPTIVE, S_EXPONENT = range(6)
+N_SCALARS = 6
+EPS = 100.0 * np.finfo(np.float64).eps
+HUGE = np.finfo(np.float64).max
+
+
+def prepare_with(tableau: Tableau, system, dt, options):
+    """(memory, adaptive); PAS_MINI/PAS_MAXI default to 1e-10/1e10 times PAS."""
+    n = system.n_modes
+    s = tableau.stages
+    dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt
+    dt_max = options.dt_max if options.dt_max is not None else 1.0e10 * dt
+    adaptive = abs(dt_max / dt_min - 1.0) >= EPS
+    scalars = np.zeros(N_SCALARS)
+    scalars[S_TOL], scalars[S_ALPHA] = options.tolerance, options.alpha
+    scalars[S_DTMIN], scalars[S_DTMAX] = dt_min, dt_max
+    scalars[S_ADAPTIVE] = 1.0 if adaptive else 0.0
+    scalars[S_EXPONENT] = tableau.exponent
+    rows = np.zeros((VECTOR_ROWS + 2 * s, n))
+    return (rows, scalars, tableau.table()), adaptive
+
+
+@njit(cache=True)
+def attempt(t, dt, state, memory, model, s):
+    """One trial step of length dt from (q, v, a): stage values in rows,
+    the solution in the stage rows. Returns a diverging shock or -1."""
+    q, v, a, f, vint, vint_save, work = state
+    rows, table = memory[0], memory[2]
+    n = q.shape[0]
+    qs, vs, acc = rows[Q_STAGE], rows[V_STAGE], rows[A_STAGE]
+    vs[:] = v
+    acc[:] = a
+    for stage in range(s):
+        rows[VECTOR_ROWS + stage, :] = vs
+        rows[VECTOR_ROWS + s + stage, :] = acc
+        for i in range(n):
+            dq = 0.0
+            dv = 0.0
+            for k in range(stage + 1):
+                dq += table[stage, k] * rows[VECTOR_ROWS + k, i]
+                dv += table[stage, k] * rows[VECTOR_ROWS + s + k, i]
+            qs[i] = q[i] + dt * dq
+            vs[i] = v[i] + dt * dv
+        t_stage = t + dt * table[s, stage + 1]
+        shock = state_acceleration(t_stage, qs, vs, acc, f, rows[RESIDUAL], vint, work, model)
+        if shock >= 0:
+            return shock
+    return -1
+
+
+@njit(cache=True)
+def scaled_error(dt, q, v, memory, s):
+    rows, scalars, table = memory
+    tol, alpha = scalars[S_TOL], scalars[S_ALPHA]
+    qs, vs, acc = rows[Q_STAGE], rows[V_STAGE], rows[A_STAGE]
+    n = q.shape[0]
+    err_q = 0.0
+    err_v = 0.0
+    for i in range(n):
+        eq = table[s + 1, s] * vs[i]
+        ev = table[s + 1, s] * acc[i]
+        for k in range(s):
+            eq += table[s + 1, k] * rows[VECTOR_ROWS + k, i]
+            ev += table[s + 1, k] * rows[VECTOR_ROWS + s + k, i]
+        dq = abs(qs[i] - q[i])
+        dv = abs(vs[i] - v[i])
+        scale_q = max(tol * abs(q[i] + alpha), tol * (dq + alpha), EPS)
+        scale_v = max(tol * abs(v[i] + alpha), tol * (dv + alpha), EPS)
+        err_q += (eq / scale_q) ** 2
+        err_v += (ev / scale_v) ** 2
+    return max(dt * np.sqrt((err_q + err_v) / (2 * n)), EPS)
+
+
+@njit(cache=True)
+def step(t, dt, index, state, memory, model):
+    q, v, a, f, vint, vint_save, work = state
+    rows, scalars, table = memory
+    s = table.shape[0] - 2
+    adaptive = scalars[S_ADAPTIVE] == 1.0
+    p = scalars[S_EXPONENT]
+    low, high = (0.9 / 5.0) ** p, (0.9 / 0.2) ** p
+    vint_save[:, :] = vint
+    previous_error = HUGE
+    rejected = 0
+    dt_next = dt
+    while True:
+        vint[:, :] = vint_save
+        shock = attempt(t, dt, state, memory, model, s)
+        if shock >= 0:
+            return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, rejected
+        if not (all_finite(rows[Q_STAGE]) and all_finite(rows[V_STAGE])):
+            return K.STATUS_NOT_FINITE, -1, dt, dt, rejected
+        if not adaptive:
+            break
+        err = scaled_error(dt, q, v, memory, s)
+        if err * 1.01 > previous_error:
+            err = 0.99  # refining does not help: proceed as is
+        if err < low:
+            factor = 5.0
+        elif err > high:
+            factor = 0.2
+        else:
+            factor = 0.9 * err ** (-1.0 / p)
+        dt_next = min(scalars[S_DTMAX], dt * factor)
+        if err >= 1.0 and dt_next >= scalars[S_DTMIN]:
+            dt = dt_next
+            previous_error = err
+            rejected += 1
+            continue
+        if dt_next < scalars[S_DTMIN]:
+            return K.STATUS_STEP_UNDERFLOW, -1, dt, dt, rejected
+        break
+    q[:] = rows[Q_STAGE]
+    v[:] = rows[V_STAGE]
+    a[:] = rows[A_STAGE]
+    return K.STATUS_DONE, -1, dt, dt_next, rejected
+
+
+@njit(cache=True)
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+    while K.unfinished(clock, counters, eps):
+        if K.archive_full(counters, archive):
+            return K.STATUS_FULL
+        t, dt = K.plan_step(clock, counters, instants, eps)
+        status, shock, dt_used, dt_next, rejected = step(
+            t, dt, counters[K.K_STEP], state, memory, model
+        )
+        if status != K.STATUS_DONE:
+            return K.record_failure(clock, counters, status, shock, dt)
+        result = (dt_used, dt_next, rejected)
+        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
+    return K.STATUS_DONE
