@@ -322,3 +322,77 @@ def as_callable_values(func: Function | Formula, x) -> np.ndarray:
             f"formula {func.name or ''} has parameters {func.NOM_PARA}: one parameter expected"
         )
     return func.evaluate(np.asarray(x, dtype=float))
+
+
+@dataclass(eq=False)
+class Nappe(Concept, DeckCallable):
+    """A function of two parameters (``nappe_sdaster``): one :class:`Function`
+    of NOM_PARA_FONC per value of NOM_PARA, interpolated between them."""
+
+    aster_types = ("nappe_sdaster",)
+    deck_methods = frozenset({"getName", "Valeurs", "Parametres", "getProperties"})
+
+    parameters: np.ndarray
+    functions: list[Function]
+    NOM_PARA: str = "TOUTPARA"
+    NOM_RESU: str = "TOUTRESU"
+    NOM_PARA_FONC: str = "TOUTPARA"
+    INTERPOL: tuple[str, str] = ("LIN", "LIN")
+    PROL_GAUCHE: str = "EXCLU"
+    PROL_DROITE: str = "EXCLU"
+    title: str = ""
+
+    def __post_init__(self) -> None:
+        self.parameters = np.asarray(self.parameters, dtype=float)
+        self.INTERPOL = _axis_kinds(self.INTERPOL)
+        if len(self.functions) != self.parameters.size:
+            raise CommandError("a nappe needs one function per parameter value")
+
+    @property
+    def nom_para(self) -> tuple[str, ...]:
+        return (self.NOM_PARA, self.NOM_PARA_FONC)
+
+    def evaluate_many(self, p, x) -> np.ndarray:
+        """Values at (p, x): each function at x, then interpolated in p."""
+        p, x = np.broadcast_arrays(np.asarray(p, dtype=float), np.asarray(x, dtype=float))
+        out = np.empty(p.shape)
+        for index in np.ndindex(p.shape):
+            column = np.array([f.evaluate(x[index]) for f in self.functions], dtype=float)
+            out[index] = interpolate(
+                p[index], self.parameters, column, self.INTERPOL, self.PROL_GAUCHE,
+                self.PROL_DROITE, self.name or "",
+            )  # fmt: skip
+        return out
+
+    def __call__(self, *args, **kwargs):
+        if kwargs:
+            args = (kwargs[self.NOM_PARA], kwargs[self.NOM_PARA_FONC])
+        if len(args) != 2:
+            raise CommandError(f"nappe {self.name or ''} takes two parameters")
+        value = self.evaluate_many(*args)
+        return float(value) if np.ndim(value) == 0 else value
+
+    def deck_call(self, args, kwargs, site):
+        return self(*args, **kwargs)
+
+    def Valeurs(self):  # noqa: N802
+        return [self.parameters.tolist(), [f.Valeurs() for f in self.functions]]
+
+    def Parametres(self):  # noqa: N802
+        first = self.functions[0] if self.functions else None
+        return {
+            "NOM_PARA": self.NOM_PARA,
+            "NOM_RESU": self.NOM_RESU,
+            "NOM_PARA_FONC": self.NOM_PARA_FONC,
+            "INTERPOL": list(self.INTERPOL),
+            "PROL_GAUCHE": self.PROL_GAUCHE,
+            "PROL_DROITE": self.PROL_DROITE,
+            "INTERPOL_FONC": list(first.INTERPOL) if first else ["LIN", "LIN"],
+            "PROL_GAUCHE_FONC": first.PROL_GAUCHE if first else "EXCLU",
+            "PROL_DROITE_FONC": first.PROL_DROITE if first else "EXCLU",
+        }
+
+    def getProperties(self):  # noqa: N802
+        prol = self.PROL_GAUCHE[0] + self.PROL_DROITE[0]
+        return ["NAPPE", " ".join(self.INTERPOL), self.NOM_PARA, self.NOM_RESU, prol,
+                self.name or "", self.NOM_PARA_FONC]  # fmt: skip

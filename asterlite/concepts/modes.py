@@ -170,3 +170,41 @@ class GeneralizedVector(Concept):
     @property
     def basis(self) -> ModeResult:
         return self.numbering.basis
+
+
+@dataclass(eq=False)
+class BucklingModes(ModeResult):
+    """``CALC_MODES`` with ``TYPE_RESU='MODE_FLAMB'`` or ``'GENERAL'``: the
+    pencil (A, B) solved as (A + λ B) φ = 0, code_aster's sign convention.
+    ``parameters['CHAR_CRIT']`` holds λ (for A = K, B = M it is -ω²);
+    ``frequencies`` are zero."""
+
+    aster_types = ("mode_flamb", "resultat_sdaster")
+
+
+@dataclass(eq=False)
+class MultElasResult(Concept):
+    """``MACRO_ELAS_MULT`` / ``CREA_RESU(TYPE_RESU='MULT_ELAS')``: one static
+    displacement field per load case.
+
+    ``fields`` is (n_dofs, n_cases) on ``numbering``'s DOFs (column k is the
+    DEPL of case ``case_names[k]``, NUME_ORDRE k + 1). ``loads`` keeps each
+    case's assembled load vector (n_dofs, n_cases) when it is known (the
+    static correction of DYNA_VIBRA / MODE_CORR reads it)."""
+
+    aster_types = ("mult_elas", "resultat_sdaster")
+
+    numbering: DofNumbering
+    fields: np.ndarray
+    case_names: list[str] = field(default_factory=list)
+    loads: np.ndarray | None = None
+    stiffness: AssembledMatrix | None = None
+
+    @property
+    def n_cases(self) -> int:
+        return self.fields.shape[1]
+
+    @property
+    def shapes(self) -> np.ndarray:
+        """The fields as a modal-basis-like matrix (MODE_INTF of DEFI_BASE_MODALE)."""
+        return self.fields

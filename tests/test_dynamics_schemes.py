@@ -1,0 +1,166 @@
+"""Every SCHEMA_TEMPS of a GENE transient: convergence orders on a smooth
+oscillator, adaptive control, shocks, defaults, and compiled-code caching."""
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from asterlite.dynamics.integrate import SCHEMES
+from tests.test_dynamics_vibra import kws, obstacle, one_mode, run_vibra, vector
+
+OMEGA = 2.0 * math.pi
+
+
+def oscillator_error(scheme, pas, schema=None):
+    """Undamped oscillator (1 Hz) launched from its rest position, error after one period."""
+    gnum, m, kk = one_mode(OMEGA**2, coords=(0.0, 0.0, 0.0), shape=(1.0, 0.0, 0.0))
+    result = run_vibra(
+        m, kk, scheme, pas, 1.0, etat={"VITE": vector(gnum, OMEGA, "VITE")}, schema=schema or {}
+    )
+    assert result.times[-1] == pytest.approx(1.0)
+    return abs(result.depl[-1, 0]) + abs(result.vite[-1, 0] - OMEGA) / OMEGA, result
+
+
+@pytest.mark.parametrize(
+    "scheme, order, steps",
+    [
+        ("NEWMARK", 2.0, (0.004, 0.002)),
+        ("TRBDF2", 2.0, (0.004, 0.002)),
+        ("RUNGE_KUTTA_32", 3.0, (0.004, 0.002)),
+        ("RUNGE_KUTTA_54", 5.0, (0.02, 0.01)),
+        ("ADAPT_ORDRE1", 2.0, (0.004, 0.002)),
+        ("ADAPT_ORDRE2", 2.0, (0.004, 0.002)),
+    ],
+)
+def test_convergence_order_at_fixed_step(scheme, order, steps):
+    errors = [oscillator_error(scheme, pas, {"PAS_MINI": pas, "PAS_MAXI": pas})[0] for pas in steps]
+    assert math.log2(errors[0] / errors[1]) == pytest.approx(order, abs=0.3)
+
+
+def test_newmark_beta_gamma_are_used():
+    base, _ = oscillator_error("NEWMARK", 0.002)
+    damped, _ = oscillator_error("NEWMARK", 0.002, {"BETA": 0.3025, "GAMMA": 0.6})
+    assert damped > 10 * base  # gamma > 1/2 brings numerical damping (first order)
+
+
+@pytest.mark.parametrize("scheme, tolerances", [
+    ("RUNGE_KUTTA_32", (1e-4, 1e-6)),
+    ("RUNGE_KUTTA_54", (1e-5, 1e-7)),
+])  # fmt: skip
+def test_runge_kutta_adapts_the_step_to_the_tolerance(scheme, tolerances):
+    errors, steps = [], []
+    for tol in tolerances:
+        err, result = oscillator_error(scheme, 1.0e-3, {"TOLERANCE": tol})
+        errors.append(err)
+        steps.append(result.info["steps"])
+        assert result.info["adaptive"]
+        assert result.info["max_step"] > 1.0e-3  # grew from PAS
+        assert result.info["min_step"] <= result.info["max_step"]
+        assert err < 200 * tol
+    assert errors[1] < errors[0] / 10 and steps[1] > steps[0]
+
+
+def test_runge_kutta_rejects_steps_when_pas_is_too_large():
+    err, result = oscillator_error("RUNGE_KUTTA_32", 0.2, {"TOLERANCE": 1e-6})
+    assert result.info["rejected_steps"] > 0
+    assert result.info["min_step"] < 0.2
+    assert err < 1e-3
+
+
+@pytest.mark.parametrize("scheme", ["ADAPT_ORDRE1", "ADAPT_ORDRE2"])
+def test_adapt_schemes_follow_the_apparent_frequency(scheme):
+    """About NB_POIN_PERIODE steps per period: the step settles below T/50."""
+    err, result = oscillator_error(scheme, 1.0e-3)
+    assert result.info["adaptive"]
+    assert 0.01 < result.info["max_step"] < 1.0 / 50.0
+    assert err < 0.05
+    err2, result2 = oscillator_error(scheme, 1.0e-3, {"NB_POIN_PERIODE": 200})
+    assert result2.info["max_step"] < 1.0 / 200.0 and err2 < err
+
+
+def test_adapt_rejects_a_step_too_long_for_the_period():
+    _, result = oscillator_error("ADAPT_ORDRE2", 0.05, {"COEF_DIVI_PAS": 2.0})
+    assert result.info["rejected_steps"] > 0
+    assert result.info["min_step"] < 1.0 / 50.0
+
+
+def contact_duration(result, gap):
+    """First contact's duration from the interpolated crossings of the gap."""
+    y = result.shocks[0].fields["DYLOC"] - gap
+    t = result.times
+    cross = np.nonzero(np.sign(y[1:]) != np.sign(y[:-1]))[0]
+    enter, leave = cross[0], cross[1]
+    t_in = t[enter] - y[enter] * (t[enter + 1] - t[enter]) / (y[enter + 1] - y[enter])
+    t_out = t[leave] - y[leave] * (t[leave + 1] - t[leave]) / (y[leave + 1] - y[leave])
+    return t_out - t_in
+
+
+@pytest.mark.parametrize("scheme", sorted(SCHEMES))
+def test_bouncing_contact_lasts_half_a_shock_period(scheme):
+    k, kn, gap = 1.0, 1.0e6, 0.01
+    gnum, m, kk = one_mode(k, coords=(0.0, 0.0, 0.0), shape=(0.0, 1.0, 0.0))
+    origin, axis = (0.0, 0.0, 0.0), (1.0, 0.0, 0.0)
+    stop = dict(RELATION="DIS_CHOC", NOEUD_1="NO1", OBSTACLE=obstacle("PLAN_Y"),
+                ORIG_OBST=origin, NORM_OBST=axis, JEU=gap, RIGI_NOR=kn)  # fmt: skip
+    schema = {"PAS_MAXI": 2.0e-5} if scheme in ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54") else {}
+    if scheme == "DEVOGE":
+        schema = {"PAS_MINI": 2.0e-5, "PAS_MAXI": 2.0e-5}
+    result = run_vibra(m, kk, scheme, 2.0e-5, 0.016, etat={"VITE": vector(gnum, 1.0, "VITE")},
+                       comportement=[stop], schema=schema)  # fmt: skip
+    expected = math.pi * math.sqrt(1.0 / (kn + k))
+    assert contact_duration(result, gap) == pytest.approx(expected, rel=0.01)
+    assert result.shocks[0].fields["FN"].max() == pytest.approx(kn * 1.0 / 1.0e3, rel=0.05)
+    after = np.nonzero(result.times > 0.0145)[0][0]
+    # elastic bounce; the implicit schemes see the shock force one step late
+    # (code_aster's explicit treatment), which feeds a little energy in
+    lagged = scheme in ("NEWMARK", "TRBDF2")
+    assert result.vite[after, 0] == pytest.approx(-1.0, rel=0.05 if lagged else 0.01)
+
+
+def test_default_scheme_is_runge_kutta_32():
+    from asterlite.catalogues.dyna_vibra import DYNA_VIBRA  # noqa: F401 (catalogue default)
+
+    from commands import dyna_vibra
+
+    gnum, m, kk = one_mode(OMEGA**2, coords=(0.0, 0.0, 0.0), shape=(1.0, 0.0, 0.0))
+    kw = kws(
+        TYPE_CALCUL="TRAN", BASE_CALCUL="GENE", MATR_MASS=m, MATR_RIGI=kk,
+        INCREMENT=[kws("DYNA_VIBRA/INCREMENT", PAS=1.0e-3, INST_FIN=1.0)],
+        ETAT_INIT=[kws("DYNA_VIBRA/ETAT_INIT", VITE=vector(gnum, OMEGA, "VITE"))],
+    )  # fmt: skip
+    from tests.test_dynamics_vibra import ctx
+
+    result = dyna_vibra.run(ctx(), kw)
+    assert result.scheme == "RUNGE_KUTTA_32"
+    assert result.depl[-1, 0] == pytest.approx(0.0, abs=1e-3)
+
+
+@pytest.mark.parametrize("scheme", ["RUNGE_KUTTA_32", "ADAPT_ORDRE2", "NEWMARK", "TRBDF2"])
+def test_requested_instants_are_reached_exactly(scheme):
+    gnum, m, kk = one_mode(OMEGA**2)
+    arch = [kws("DYNA_VIBRA/ARCHIVAGE", INST=(0.0123, 0.5), PAS_ARCH=10**6)]
+    result = run_vibra(m, kk, scheme, 1.0e-3, 1.0, etat={"DEPL": vector(gnum, 1.0)},
+                       ARCHIVAGE=arch)  # fmt: skip
+    assert list(result.times) == [0.0, 0.0123, 0.5, pytest.approx(1.0)]
+    assert result.info["steps"] >= 3 and np.all(np.diff(result.order) > 0)
+
+
+def test_compiled_loops_are_cached_across_processes():
+    """A fresh process loads every loop from numba's cache: no recompilation."""
+    oscillator_error("DIFF_CENTRE", 0.01)  # make sure the cache is written
+    code = (
+        "import numpy as np\n"
+        "from asterlite.dynamics.integrate import SCHEMES, integrate\n"
+        "from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation\n"
+        "s = LinearSystem(np.eye(1), np.eye(1), np.zeros((1, 1)))\n"
+        "integrate(s, build_shocks([], s), tabulate_excitation(1, [], 0, 1, 0.1),\n"
+        "          'DIFF_CENTRE', np.ones(1), np.zeros(1), 0.0, 1.0, 0.01, np.array([1.0]), 1)\n"
+        "loop = SCHEMES['DIFF_CENTRE'].run_loop\n"
+        "print(sum(loop.stats.cache_hits.values()), sum(loop.stats.cache_misses.values()))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    hits, misses = (int(x) for x in out.stdout.split())
+    assert hits == 1 and misses == 0
