@@ -33,8 +33,13 @@ def _check(args) -> int:
     results = []
     for deck in args.decks:
         report = run_deck(Path(deck), check_only=True)
-        results.append({"deck": deck, "status": "OK" if report.exit_code == 0 else "ERROR",
-                        "message": report.message})
+        results.append(
+            {
+                "deck": deck,
+                "status": "OK" if report.exit_code == 0 else "ERROR",
+                "message": report.message,
+            }
+        )
         worst = max(worst, report.exit_code)
         if args.format == "text":
             print(f"{deck}: OK" if report.exit_code == 0 else f"{deck}: {report.message}")
@@ -51,8 +56,9 @@ def _corpus(args) -> int:
             print(f"  {row['deck']:<10} {row['status']:<12} {row['seconds']:7.2f} s", flush=True)
 
     only = args.only.split(",") if args.only else None
-    rows = run_corpus(Path(args.directory), only=only, jobs=args.jobs, timeout=args.timeout,
-                      progress=progress)
+    rows = run_corpus(
+        Path(args.directory), only=only, jobs=args.jobs, timeout=args.timeout, progress=progress
+    )
     print(format_table(rows))
     if args.json:
         Path(args.json).write_text(json.dumps({"decks": rows}, indent=1) + "\n")

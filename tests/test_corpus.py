@@ -52,6 +52,8 @@ def test_corpus_ratchet(corpus_dir, tmp_path):
         if status.get(deck, {}).get("status") != "PASS"
     ]
     assert not regressions, "decks in the baseline stopped passing:\n" + "\n".join(regressions)
-    newly = sorted(d for d, r in status.items() if r["status"] == "PASS" and d not in baseline_passing())
+    newly = sorted(
+        d for d, r in status.items() if r["status"] == "PASS" and d not in baseline_passing()
+    )
     if newly:
         print("decks now passing, add them to tests/corpus_baseline.json:", ", ".join(newly))

@@ -73,3 +73,28 @@ def response_modes(stiffness, numbering: DofNumbering, loads: np.ndarray) -> np.
     lu = _factor(k_red)
     q = lu.solve(np.asarray(elimination.T.T @ loads).reshape(k_red.shape[0], -1))
     return elimination.T @ q
+
+
+def acceleration_modes(stiffness, mass, numbering: DofNumbering, rigid_fields) -> np.ndarray:
+    """Pseudo-modes for unit accelerations along directions (PSEUDO_MODE AXE /
+    DIRECTION): K u = M Δ under homogeneous relations, Δ (n_dofs, k)."""
+    return response_modes(stiffness, numbering, np.asarray(mass @ np.asarray(rigid_fields)))
+
+
+def dof_acceleration_modes(stiffness, mass, numbering: DofNumbering, dofs) -> np.ndarray:
+    """Pseudo-modes for a unit acceleration of blocked DOFs (PSEUDO_MODE by
+    node and component): K u = M ψ with ψ the constrained mode of each DOF."""
+    psi = constrained_modes(stiffness, numbering, dofs)
+    return response_modes(stiffness, numbering, np.asarray(mass @ psi))
+
+
+def selection_mask(components, nodes, selected_nodes, with_cmp=(), without=()) -> np.ndarray:
+    """DOFs on ``selected_nodes`` whose component is in ``with_cmp`` (all when
+    empty) and not in ``without``."""
+    comps = np.asarray(components, dtype=object)
+    mask = np.isin(np.asarray(nodes), np.asarray(selected_nodes, dtype=int))
+    if with_cmp:
+        mask &= np.isin(comps, list(with_cmp))
+    if without:
+        mask &= ~np.isin(comps, list(without))
+    return mask

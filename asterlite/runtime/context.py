@@ -72,7 +72,7 @@ class CommandContext:
 
     def unsupported(self, what: str, keyword: str | None = None, kw: Keywords | None = None):
         """Raise an UnsupportedError for a keyword value not implemented yet."""
-        path, location = (kw.where(keyword) if kw is not None else (self.command, None))
+        path, location = kw.where(keyword) if kw is not None else (self.command, None)
         raise UnsupportedError(what, location or self.location, path)
 
     def log(self, message: str) -> None:

@@ -15,8 +15,9 @@ if TYPE_CHECKING:
 class TestCaseRecorder:
     """``CA.TestCase()``: unittest-style assertions recorded as checks."""
 
-    deck_methods = frozenset({"assertTrue", "assertFalse", "assertEqual", "assertAlmostEqual",
-                              "printSummary"})
+    deck_methods = frozenset(
+        {"assertTrue", "assertFalse", "assertEqual", "assertAlmostEqual", "printSummary"}
+    )
 
     def __init__(self, session: Session):
         self.session = session

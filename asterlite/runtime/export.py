@@ -39,7 +39,8 @@ def read_export(path: Path) -> RunDescription:
     """Parse an ``.export`` file; paths are relative to its folder."""
     folder = path.parent
     run = RunDescription(name=path.stem, deck_files=[], source=path)
-    for number, raw in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+    text = path.read_text(encoding="utf-8", errors="replace")
+    for number, raw in enumerate(text.splitlines(), 1):
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
@@ -52,7 +53,7 @@ def read_export(path: Path) -> RunDescription:
             raise ExportError(f"unrecognised line kind {fields[0]!r} (expected F, R or P)", where)
         if len(fields) < 5:
             raise ExportError("expected 'F <type> <path> D|R <unit>'", where)
-        kind, file_type, name, direction, unit_text = fields[0], fields[1], fields[2], fields[3], fields[4]
+        kind, file_type, name, direction, unit_text = fields[:5]
         if kind == "R" or "D" not in direction:
             continue  # results: asterlite writes into its own output folder
         file_path = (folder / name).resolve()
@@ -69,7 +70,9 @@ def read_export(path: Path) -> RunDescription:
         else:
             run.units[unit] = file_path
     if not run.deck_files:
-        raise ExportError("the export names no deck file ('F comm ... D 1')", Location(str(path), 1))
+        raise ExportError(
+            "the export names no deck file ('F comm ... D 1')", Location(str(path), 1)
+        )
     return run
 
 
@@ -80,7 +83,8 @@ def describe_bare_deck(path: Path) -> RunDescription:
     continuation = sorted(folder.glob(f"{path.stem}.com[0-9]"))
     run.deck_files += [p.resolve() for p in continuation]
     for suffix in MESH_SUFFIXES:
-        candidates = sorted(folder.glob(f"{path.stem}{suffix}")) or sorted(folder.glob(f"*{suffix}"))
+        own = sorted(folder.glob(f"{path.stem}{suffix}"))
+        candidates = own or sorted(folder.glob(f"*{suffix}"))
         if candidates:
             run.units[MESH_UNIT] = candidates[0].resolve()
             break

@@ -75,8 +75,12 @@ class RunReport:
                 for t in self.tests
             ],
             "commands": [
-                {"command": c.command, "line": c.location.line if c.location else None,
-                 "result": c.result, "seconds": round(c.seconds, 4)}
+                {
+                    "command": c.command,
+                    "line": c.location.line if c.location else None,
+                    "result": c.result,
+                    "seconds": round(c.seconds, 4),
+                }
                 for c in self.timings
             ],
         }
@@ -181,11 +185,12 @@ def format_summary(report: RunReport) -> str:
         for timing in report.timings:
             line = timing.location.line if timing.location else "?"
             result = f" -> {timing.result}" if timing.result else ""
-            lines.append(f"  {timing.command:<18} line {line:<5}{result:<16} {timing.seconds:8.3f} s")
+            lines.append(
+                f"  {timing.command:<18} line {line:<5}{result:<16} {timing.seconds:8.3f} s"
+            )
     if report.tests:
         lines.append(
-            f"checks: {report.checks_ok}/{report.checks_total} OK, "
-            f"{report.strict_ok} strict"
+            f"checks: {report.checks_ok}/{report.checks_total} OK, {report.strict_ok} strict"
         )
         lines += [format_test_line(t) for t in report.tests]
     if report.message:

@@ -238,7 +238,8 @@ class CommandProxy(DeckCallable):
             reuse=reuse,
         )
         where = f"{Path(site.location.file).name}:{site.location.line}" if site.location else ""
-        session.log(f"{self.name} ({where})" + (f" -> {site.assigned_name}" if site.assigned_name else ""))
+        target = f" -> {site.assigned_name}" if site.assigned_name else ""
+        session.log(f"{self.name} ({where}){target}")
         start = time.perf_counter()
         try:
             concept = module.run(ctx, keywords)
@@ -251,10 +252,10 @@ class CommandProxy(DeckCallable):
         seconds = time.perf_counter() - start
         session.timings.append(CommandTiming(self.name, site.location, site.assigned_name, seconds))
         session.log(f"  done in {seconds:.3f} s")
-        if isinstance(concept, Concept) and site.assigned_name and concept.name is None:
-            concept.name = site.assigned_name
-        elif isinstance(concept, Concept) and site.assigned_name and reuse is None:
-            concept.name = site.assigned_name
+        # a reused concept keeps its name; a new one takes the deck's name
+        if isinstance(concept, Concept) and site.assigned_name:
+            if reuse is None or concept.name is None:
+                concept.name = site.assigned_name
         return concept
 
     # -------------------------------------------------------------- session
