@@ -88,7 +88,7 @@ def test_mutation_is_reported(deck_text, tmp_path, name, old, new, fragments):
     assert report.exit_code == 2
     # the line of the mutation (or of the call holding it) appears in the message
     changed_line = mutated[: mutated.index(new)].count("\n") + 1
-    assert f"mutated.comm:" in report.message
+    assert "mutated.comm:" in report.message
     line_numbers = [
         int(part.split(":")[1])
         for part in report.message.split()

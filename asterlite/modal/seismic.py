@@ -59,3 +59,22 @@ def multi_support_load(mass, static_shapes: np.ndarray, weights, blocked_rows) -
     load = np.asarray(load, dtype=float).ravel()
     load[np.asarray(list(blocked_rows), dtype=int)] = 0.0
     return load
+
+
+def static_mode_columns(labels, node_names, components, direction):
+    """(columns, weights, missing) of the static modes ``"NODE CMP"`` needed by
+    a multi-support load: one per node and non-zero direction component."""
+    d = unit_direction(direction)
+    where = {label: j for j, label in enumerate(labels)}
+    columns, weights, missing = [], [], []
+    for i, value in enumerate(d):
+        if abs(value) <= np.finfo(float).eps:
+            continue
+        for name in node_names:
+            label = f"{name} {components[i]}"
+            if label in where:
+                columns.append(where[label])
+                weights.append(value)
+            else:
+                missing.append(label)
+    return columns, weights, missing
