@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from asterlite.concepts.assembly import NodalField
 from asterlite.fem.selection import node_group_members
-from asterlite.modal.renumber import lost_rows, same_dofs
+from asterlite.modal.renumber import same_dofs
 from asterlite.modal.seismic import (
     COMPONENTS,
     SeismicError,
@@ -55,7 +55,6 @@ def _multi(ctx, kw, mass):
     defo = modes.parameters.get("TYPE_DEFO")
     if defo is not None and any(defo[c] != "DEPL_IMPO" for c in columns):
         ctx.error("MODE_STAT must hold imposed-displacement modes (MODE_STAT)", "MODE_STAT", kw)
-    del lost_rows  # same numbering checked above
     return multi_support_load(
         mass.matrix, modes.shapes[:, columns], weights, blocked_dofs(numbering).keys()
     )

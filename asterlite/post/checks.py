@@ -170,8 +170,8 @@ def make_record(command: str, label: str, value, exp: Expectation, location=None
         ok=bool(ok),
         strict=bool(strict),
         location=location,
+        calc_comparison=calc[0] if calc is not None else None,
     )
-    record.calc_comparison = calc[0] if calc is not None else None  # for the log line
     return record
 
 

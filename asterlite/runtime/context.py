@@ -43,6 +43,8 @@ class TestRecord:
     ok: bool
     strict: bool = True
     location: Location | None = None
+    # the VALE_CALC comparison when a reference check is shown in ``expected``
+    calc_comparison: Any = None
 
     @property
     def verdict(self) -> str:

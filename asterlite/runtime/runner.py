@@ -172,10 +172,14 @@ def _finish_output(output_dir: Path, staging: Path, report: RunReport, session) 
 def format_test_line(test: TestRecord) -> str:
     flag = "OK  " if test.ok else "NOOK"
     strict = "" if test.strict or not test.ok else " (not strict)"
-    return (
+    text = (
         f"  {flag} {test.command} {test.label}: value={_plain(test.value)!r} "
-        f"expected={_plain(test.expected)!r} error={_plain(test.error)!r}{strict}"
+        f"expected={_plain(test.expected)!r} error={_plain(test.error)!r}"
     )
+    calc = test.calc_comparison
+    if calc is not None and test.reference != "NON_REGRESSION":
+        text += f" | VALE_CALC={_plain(calc.expected)!r} error={_plain(calc.error)!r}"
+    return text + strict
 
 
 def format_summary(report: RunReport) -> str:

@@ -1,0 +1,106 @@
+"""ANTI_SISM: seismic stop device between two nodes (code_aster's mdfdas).
+
+The device acts along the axis node 1 -> node 2 (a BI_PLAN_Y connection
+whose normal is that axis). With ``d`` the signed normal distance (the
+elongation of the device, > 0 when the nodes move apart) and ``v`` its
+rate, the force on node 1 along the normal n is::
+
+    F = -K2 d - (K1 - K2) d / sqrt(1 + (K1 d / SEUIL_FX)^2)
+        - C sign(v) |v d / DX_MAX|^PUIS_ALPHA
+
+(node 2 receives -F n). The first two terms are an elastic law with
+initial stiffness K1 that saturates towards the threshold SEUIL_FX and then
+stiffens again with K2; the last is a viscous term that code_aster writes
+with the product |v d| (not |v|), kept as is. Below machine precision in
+|v| the viscous term is dropped, as code_aster does.
+
+Stateless: no internal memory, only archived quantities.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics.laws.tabulated import LawError
+
+# Parameters
+P_K1, P_K2, P_SEUIL_FX, P_C, P_ALPHA, P_DX_MAX = range(6)
+N_PARAMS = 6
+
+# Archived internal variables (code_aster's order, VINT1..VINT8)
+V_FORCE = 0  # force of the device (signed, along the normal)
+V_LOC1 = 1  # local coordinates of node 1 (3)
+V_LOC2 = 4  # local coordinates of node 2 (3)
+V_VN = 7  # normal relative velocity
+N_VINT = 8
+VINT_NAMES = ("FORCE", "DXLOC_1", "DYLOC_1", "DZLOC_1", "DXLOC_2", "DYLOC_2", "DZLOC_2", "VNORM")
+
+VELOCITY_FLOOR = np.finfo(np.float64).eps  # code_aster's r8prem
+
+
+@njit(cache=True)
+def antiseismic_force(params, d, v):
+    """Force on node 1 along the connection normal; ``d`` the normal
+    distance relative to rest, ``v`` its rate (relative normal velocity)."""
+    k1, k2 = params[P_K1], params[P_K2]
+    seuil = params[P_SEUIL_FX]
+    # saturating elastic part; a zero threshold is its limit (no K1 - K2 part)
+    if seuil != 0.0:
+        f = -k2 * d - (k1 - k2) * d / math.sqrt(1.0 + (k1 * d / seuil) ** 2)
+    else:
+        f = -k2 * d
+    if abs(v) >= VELOCITY_FLOOR:
+        f -= params[P_C] * (1.0 if v >= 0.0 else -1.0) * abs(v * d / params[P_DX_MAX]) ** params[
+            P_ALPHA
+        ]
+    return f
+
+
+@njit(cache=True)
+def elastic_energy(params, d):
+    """Energy stored in the elastic part at distance d (for checks): -∫ F_el dd."""
+    k1, k2, seuil = params[P_K1], params[P_K2], params[P_SEUIL_FX]
+    energy = 0.5 * k2 * d * d
+    if seuil != 0.0:
+        a = k1 / seuil
+        energy += (k1 - k2) * (math.sqrt(1.0 + (a * d) ** 2) - 1.0) / (a * a)
+    return energy
+
+
+def prepare_anti_sism(kw) -> np.ndarray:
+    """Parameter array from a validated ANTI_SISM occurrence (defaults filled)."""
+    p = np.zeros(N_PARAMS)
+    for index, key in (
+        (P_K1, "RIGI_K1"),
+        (P_K2, "RIGI_K2"),
+        (P_SEUIL_FX, "SEUIL_FX"),
+        (P_C, "C"),
+        (P_ALPHA, "PUIS_ALPHA"),
+        (P_DX_MAX, "DX_MAX"),
+    ):
+        p[index] = float(kw.get(key, 0.0 if key != "DX_MAX" else 1.0))
+    if p[P_K1] < 0.0 or p[P_K2] < 0.0:
+        raise LawError("ANTI_SISM: RIGI_K1 and RIGI_K2 must be >= 0")
+    if p[P_SEUIL_FX] < 0.0:
+        raise LawError("ANTI_SISM: SEUIL_FX must be >= 0")
+    if p[P_C] < 0.0 or p[P_ALPHA] < 0.0:
+        raise LawError("ANTI_SISM: C and PUIS_ALPHA must be >= 0")
+    if p[P_DX_MAX] <= 0.0:
+        raise LawError("ANTI_SISM: DX_MAX must be > 0 (it divides the viscous term)")
+    return p
+
+
+def reference_distance(coord1, coord2, info: int = 1) -> float:
+    """The 'gap' code_aster subtracts from the node distance along the axis.
+
+    code_aster stores the squared node distance and takes its square root
+    only when INFO=2 (a quirk of its preparation routine); the distance is
+    then split as DIST_1 = DIST_2 = gap/2 of a BI_PLAN_Y connection with JEU=0.
+    Reproduced so that decks give code_aster's numbers; with INFO=2 (or unit
+    distance) ``d`` is the true elongation.
+    """
+    squared = float(np.sum((np.asarray(coord2, float) - np.asarray(coord1, float)) ** 2))
+    return math.sqrt(squared) if info == 2 else squared

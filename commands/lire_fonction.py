@@ -1,0 +1,94 @@
+"""LIRE_FONCTION: a function read from columns of a text file (FORMAT='LIBRE').
+
+The file on logical unit UNITE is cut into blocks of consecutive numeric
+lines (any other line, or a blank one, ends a block); INDIC_PARA and
+INDIC_RESU give (block, column), both 1-based. Fortran exponents
+(``1.0D+03``) are accepted. TYPE='FONCTION_C' reads REEL_IMAG or
+MODULE_PHASE (degrees) columns.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+from asterlite.concepts.function import ComplexFunction, Function
+from asterlite.commands.defi_fonction import check_abscissas
+
+
+def numeric_blocks(text: str, separator: str | None = None) -> list[list[list[float]]]:
+    """Blocks of rows of floats; a line that is not all numbers closes a block."""
+    text = re.sub(r"(\d\.?)[dD]([+-]?\d)", r"\1E\2", text)
+    blocks, current = [], []
+    for line in text.splitlines():
+        items = line.split(separator) if separator else line.split()
+        try:
+            row = [float(item) for item in items if item.strip()]
+        except ValueError:
+            row = []
+        if row:
+            current.append(row)
+        elif current:
+            blocks.append(current)
+            current = []
+    if current:
+        blocks.append(current)
+    return blocks
+
+
+def column(blocks, indices, what: str) -> np.ndarray:
+    block_no, column_no = (int(i) for i in indices)
+    if not 1 <= block_no <= len(blocks):
+        raise ValueError(f"{what}: block {block_no} does not exist (the file has {len(blocks)})")
+    rows = blocks[block_no - 1]
+    if any(len(r) < column_no for r in rows):
+        width = min(len(r) for r in rows)
+        raise ValueError(f"{what}: column {column_no} does not exist (block {block_no} has {width})")
+    return np.array([r[column_no - 1] for r in rows])
+
+
+def run(ctx, kw):
+    if kw.get("FORMAT", "LIBRE") != "LIBRE":
+        ctx.unsupported(f"LIRE_FONCTION FORMAT={kw['FORMAT']}", "FORMAT", kw)
+    if kw.get("TYPE", "FONCTION") == "NAPPE":
+        ctx.unsupported("LIRE_FONCTION TYPE='NAPPE'", "TYPE", kw)
+    path = Path(ctx.session.input_path(int(kw["UNITE"])))
+    if not path.exists():
+        ctx.error(f"file {path} (unit {kw['UNITE']}) does not exist", "UNITE", kw)
+    separator = kw.get("SEPARATEUR")
+    separator = None if separator in (None, "None", " ", "") else separator
+    blocks = numeric_blocks(path.read_text(encoding="utf-8", errors="replace"), separator)
+    try:
+        x = column(blocks, kw.get("INDIC_PARA", (1, 1)), "INDIC_PARA")
+        if kw.get("TYPE", "FONCTION") == "FONCTION_C":
+            y = complex_column(blocks, kw)
+        else:
+            y = column(blocks, kw.get("INDIC_RESU", (1, 2)), "INDIC_RESU")
+    except ValueError as exc:
+        ctx.error(f"{path.name}: {exc}", "INDIC_PARA", kw)
+    if x.size != y.size:
+        ctx.error(f"{x.size} abscissas but {y.size} ordinates in {path.name}", "INDIC_RESU", kw)
+    check_abscissas(ctx, kw, x)
+    cls = ComplexFunction if np.iscomplexobj(y) else Function
+    return cls(
+        x,
+        y,
+        NOM_PARA=kw["NOM_PARA"],
+        NOM_RESU=kw.get("NOM_RESU", "TOUTRESU"),
+        INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
+        PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
+        PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
+        title=kw.get("TITRE") or "",
+    )
+
+
+def complex_column(blocks, kw) -> np.ndarray:
+    if kw.get("FORMAT_C", "REEL_IMAG") == "MODULE_PHASE":
+        modulus = column(blocks, kw.get("INDIC_MODU", (1, 2)), "INDIC_MODU")
+        phase = np.radians(column(blocks, kw.get("INDIC_PHAS", (1, 3)), "INDIC_PHAS"))
+        return modulus * np.exp(1j * phase)
+    real = column(blocks, kw.get("INDIC_REEL", (1, 2)), "INDIC_REEL")
+    imag = column(blocks, kw.get("INDIC_IMAG", (1, 3)), "INDIC_IMAG")
+    return real + 1j * imag
