@@ -1,15 +1,21 @@
-"""AFFE_CARA_ELEM: discrete element matrices (DISCRET, DISCRET_2D) and
-orientations; other keywords are kept for the rooms that compute them."""
+"""AFFE_CARA_ELEM: discrete element matrices (DISCRET, DISCRET_2D), beam and
+bar sections (POUTRE, BARRE) and orientations; other keywords are kept for
+the rooms that compute them."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from asterlite.concepts.assembly import DiscreteAssignment, ElementCharacteristics
+from asterlite.fem.beam import BeamError, seg2_angles
 from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS
-from asterlite.fem.frames import angles_from_axis, angles_from_x_and_y
+from asterlite.fem.frames import angles_from_x_and_y
+from asterlite.fem.sections import SectionError, cara_dict, section_properties
 from asterlite.fem.selection import as_scalar, as_tuple, select_cells
+
+_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+_BARS = ("BARRE", "2D_BARRE")
 
 _OTHER_KEYWORDS = (
     "POUTRE",
@@ -92,19 +98,74 @@ def _orientation(ctx, model, result, occ) -> None:
         if cara == "ANGL_NAUT":
             angles = np.zeros(3)
             angles[: vale.size] = np.radians(vale[:3])
-        elif cara == "ANGL_VRIL":
-            if axis is None:
-                ctx.error("ANGL_VRIL needs segment cells", "CARA", occ)
-            angles = angles_from_axis(axis, np.radians(vale[0]))
-        elif cara == "VECT_Y":
-            if axis is None:
-                ctx.error("VECT_Y needs segment cells", "CARA", occ)
-            angles = angles_from_x_and_y(axis, vale[:3])
+        elif cara in ("ANGL_VRIL", "VECT_Y", "VECT_Z"):
+            if axis is None or not np.any(axis):
+                ctx.error(f"{cara} needs segment cells of non-zero length", "CARA", occ)
+            try:
+                angles = seg2_angles(mesh.coords[conn[0]], mesh.coords[conn[-1]], cara, vale)[0]
+            except BeamError as exc:
+                ctx.error(str(exc), "VALE", occ)
         elif cara == "VECT_X_Y":
             angles = angles_from_x_and_y(vale[:3], vale[3:6])
         else:
             ctx.unsupported(f"ORIENTATION CARA={cara!r}", "CARA", occ)
         result.orientation[cell] = np.asarray(angles, dtype=float)
+
+
+def _check_cells(ctx, model, cells, accepted, keyword, occ) -> None:
+    mesh = model.mesh
+    for cell in cells:
+        modelisation = model.cell_modelisation.get(int(cell))
+        if modelisation not in accepted:
+            what = "no element" if modelisation is None else f"a {modelisation} element"
+            ctx.error(
+                f"{keyword} is given to cell {mesh.cell_names[cell]}, which carries {what}",
+                "GROUP_MA",
+                occ,
+            )
+
+
+def _poutre(ctx, model, result, occ) -> None:
+    section = occ["SECTION"]
+    if section == "COUDE":
+        ctx.unsupported("POUTRE SECTION='COUDE' (elbow elements)", "SECTION", occ)
+    vari = occ.get("VARI_SECT", "CONSTANT")
+    if vari != "CONSTANT":
+        ctx.unsupported(f"POUTRE VARI_SECT={vari!r} (tapered beams)", "VARI_SECT", occ)
+    if occ.get("TABLE_CARA") is not None:
+        ctx.unsupported("POUTRE TABLE_CARA (sections from a table)", "TABLE_CARA", occ)
+    if occ.get("FCX") is not None:
+        ctx.unsupported("POUTRE FCX (wind load function)", "FCX", occ)
+    try:
+        props = section_properties(section, cara_dict(occ["CARA"], occ["VALE"]), vari)
+    except SectionError as exc:
+        ctx.error(str(exc), "CARA", occ)
+    cells = select_cells(ctx, occ, model.mesh)
+    _check_cells(ctx, model, cells, _BEAMS, "POUTRE", occ)
+    for cell in cells:
+        # a later occurrence completes or overrides the section of a cell
+        result.sections[int(cell)] = dict(props)
+
+
+def _barre(ctx, model, result, occ) -> None:
+    section = occ["SECTION"]
+    if occ.get("TABLE_CARA") is not None:
+        ctx.unsupported("BARRE TABLE_CARA (sections from a table)", "TABLE_CARA", occ)
+    try:
+        cara = cara_dict(occ["CARA"], occ["VALE"])
+        if section == "GENERALE":
+            props = {"A": float(cara["A"]), "SECTION": "GENERALE"}
+            if not props["A"] > 0.0:
+                raise SectionError(f"BARRE: A must be > 0, got {props['A']}")
+        else:
+            full = section_properties(section, cara)
+            props = {k: full[k] for k in full if k in ("A", "SECTION", "R", "EP", "HY", "HZ")}
+    except (SectionError, KeyError) as exc:
+        ctx.error(str(exc), "CARA", occ)
+    cells = select_cells(ctx, occ, model.mesh)
+    _check_cells(ctx, model, cells, _BARS, "BARRE", occ)
+    for cell in cells:
+        result.sections[int(cell)] = dict(props)
 
 
 def run(ctx, kw):
@@ -117,8 +178,22 @@ def run(ctx, kw):
         _discrete(ctx, model, result, occ, 3, "DISCRET")
     for occ in kw.factor("DISCRET_2D"):
         _discrete(ctx, model, result, occ, 2, "DISCRET_2D")
+    for occ in kw.factor("POUTRE"):
+        _poutre(ctx, model, result, occ)
+    for occ in kw.factor("BARRE"):
+        _barre(ctx, model, result, occ)
     for keyword in _OTHER_KEYWORDS:
         if kw.get(keyword):
             result.extra[keyword] = kw.factor(keyword)
-    ctx.log(f"discrete characteristics on {len(result.discrete)} cells")
+    struct = _BEAMS + _BARS
+    missing = [
+        c for c, m in model.cell_modelisation.items() if m in struct and c not in result.sections
+    ]
+    if missing:
+        names = ", ".join(model.mesh.cell_names[c] for c in missing[:5])
+        ctx.log(f"warning: {len(missing)} beam/bar cells have no section ({names}...)")
+    ctx.log(
+        f"characteristics: discrete on {len(result.discrete)} cells, "
+        f"sections on {len(result.sections)} cells"
+    )
     return result

@@ -1,15 +1,40 @@
-"""AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL) and nodal loads
-(FORCE_NODALE, PESANTEUR) on a model."""
+"""AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
+LIAISON_SOLIDE) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE) on a model."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
-from asterlite.fem.selection import as_tuple, named_nodes, node_group_members, select_nodes
+from asterlite.fem.selection import (
+    as_tuple,
+    cell_group_members,
+    named_nodes,
+    node_group_members,
+    select_cells,
+    select_nodes,
+)
 
 _DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
 _FORCE_COMPONENTS = {"FX": "DX", "FY": "DY", "FZ": "DZ", "MX": "DRX", "MY": "DRY", "MZ": "DRZ"}
-_HANDLED = ("MODELE", "DDL_IMPO", "LIAISON_DDL", "FORCE_NODALE", "PESANTEUR", "INFO", "VERI_NORM")
+_HANDLED = (
+    "MODELE",
+    "DDL_IMPO",
+    "LIAISON_DDL",
+    "LIAISON_UNIF",
+    "LIAISON_SOLIDE",
+    "FORCE_NODALE",
+    "FORCE_POUTRE",
+    "PESANTEUR",
+    "INFO",
+    "VERI_NORM",
+    "VERI_AFFE",
+    "DOUBLE_LAGRANGE",
+    "CARA_ELEM",
+    "CHAM_MATER",
+)
 _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+_BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
 
 
 def _ddl_impo(ctx, model, components, load, occ) -> None:
@@ -17,11 +42,22 @@ def _ddl_impo(ctx, model, components, load, occ) -> None:
     everywhere = occ.get("TOUT") == "OUI"
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
     imposed = {c: float(occ[c]) for c in _DDL_COMPONENTS if occ.get(c) is not None}
+    given = {c for c in _DDL_COMPONENTS if occ.get(c) is not None}
+    optional: set[str] = set()
     if occ.get("LIAISON") == "ENCASTRE":
-        imposed.update({c: 0.0 for c in _ENCASTRE})
-        optional = set(_ENCASTRE) - {c for c in _DDL_COMPONENTS if occ.get(c) is not None}
-    else:
-        optional = set()
+        imposed.update({c: 0.0 for c in _ENCASTRE if c not in given})
+        optional |= set(_ENCASTRE) - given
+    for kind in as_tuple(occ.get("BLOCAGE")):
+        if kind not in _BLOCAGE:
+            ctx.unsupported(f"DDL_IMPO BLOCAGE={kind!r}", "BLOCAGE", occ)
+        # BLOCAGE fixes the components the nodes carry (none is required)
+        imposed.update({c: 0.0 for c in _BLOCAGE[kind] if c not in given})
+        optional |= set(_BLOCAGE[kind]) - given
+    excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
+    if occ.get("SANS_GROUP_MA"):
+        excluded |= set(mesh.nodes_of_cells(cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")))
+    if excluded:
+        nodes = np.array([n for n in nodes if int(n) not in excluded], dtype=int)
     if not imposed:
         ctx.error("no component is imposed", None, occ)
     for comp, value in imposed.items():
@@ -62,6 +98,110 @@ def _liaison_ddl(ctx, model, components, load, occ) -> None:
     load.relations.append(LinearRelation(terms, float(occ.get("COEF_IMPO", 0.0) or 0.0)))
 
 
+def _group_nodes(ctx, occ, mesh) -> np.ndarray:
+    """Nodes of GROUP_NO / GROUP_MA minus SANS_GROUP_NO / SANS_GROUP_MA."""
+    nodes = select_nodes(ctx, occ, mesh)
+    excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
+    if occ.get("SANS_GROUP_MA"):
+        excluded |= set(mesh.nodes_of_cells(cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")))
+    return np.array([n for n in nodes if int(n) not in excluded], dtype=int)
+
+
+def _liaison_unif(ctx, model, components, load, occ) -> None:
+    """Same (unknown) value of each DDL on every node: u_i - u_first = 0."""
+    mesh = model.mesh
+    nodes = _group_nodes(ctx, occ, mesh)
+    if len(nodes) < 2:
+        ctx.error("LIAISON_UNIF needs at least two nodes", "GROUP_NO", occ)
+    for comp in as_tuple(occ.get("DDL")):
+        for node in nodes:
+            if comp not in components.get(int(node), ()):
+                ctx.error(
+                    f"node {mesh.node_names[node]} has no {comp} DOF in this model", "DDL", occ
+                )
+        first = int(nodes[0])
+        for node in nodes[1:]:
+            load.relations.append(LinearRelation([(int(node), comp, 1.0), (first, comp, -1.0)]))
+
+
+def _liaison_solide(ctx, model, components, load, occ) -> None:
+    """Rigid body motion of a set of nodes (small displacements).
+
+    With rotations on a master node m: u_i = u_m + theta_m x (x_i - x_m) and
+    theta_i = theta_m. Without rotation DOFs, every pair distance is kept:
+    (u_i - u_j) . (x_i - x_j) = 0 for pairs spanning the set (3D: a chain
+    through non-aligned nodes), as code_aster does for translation-only nodes.
+    """
+    mesh = model.mesh
+    nodes = _group_nodes(ctx, occ, mesh)
+    if len(nodes) < 2:
+        return
+    dim = 2 if model.dim == 2 else 3
+    trans = ("DX", "DY", "DZ")[:dim]
+    rots = ("DRZ",) if dim == 2 else ("DRX", "DRY", "DRZ")
+    with_rotation = [n for n in nodes if all(r in components.get(int(n), ()) for r in rots)]
+    if with_rotation:
+        master = int(with_rotation[0])
+        xm = mesh.coords[master]
+        for node in nodes:
+            node = int(node)
+            if node == master:
+                continue
+            d = mesh.coords[node] - xm
+            carried = components.get(node, ())
+            if dim == 3:
+                rows = {
+                    "DX": [("DRY", d[2]), ("DRZ", -d[1])],
+                    "DY": [("DRZ", d[0]), ("DRX", -d[2])],
+                    "DZ": [("DRX", d[1]), ("DRY", -d[0])],
+                }
+            else:
+                rows = {"DX": [("DRZ", -d[1])], "DY": [("DRZ", d[0])]}
+            for comp in trans:
+                if comp not in carried:
+                    ctx.error(f"node {mesh.node_names[node]} has no {comp} DOF", "GROUP_NO", occ)
+                terms = [(node, comp, 1.0), (master, comp, -1.0)]
+                terms += [(master, r, -c) for r, c in rows[comp] if c != 0.0]
+                load.relations.append(LinearRelation(terms))
+            for r in rots:
+                if r in carried:
+                    load.relations.append(LinearRelation([(node, r, 1.0), (master, r, -1.0)]))
+        return
+    ctx.unsupported("LIAISON_SOLIDE on nodes without rotation DOFs", "GROUP_NO", occ)
+
+
+def _force_poutre(ctx, model, load, occ) -> None:
+    if occ.get("TYPE_CHARGE", "FORCE") != "FORCE":
+        ctx.unsupported("FORCE_POUTRE TYPE_CHARGE='VENT'", "TYPE_CHARGE", occ)
+    global_keys = ("FX", "FY", "FZ", "MX", "MY", "MZ")
+    local_keys = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
+    given_global = {k: float(occ[k]) for k in global_keys if occ.get(k) is not None}
+    given_local = {k: float(occ[k]) for k in local_keys if occ.get(k) is not None}
+    if given_global and given_local:
+        ctx.error("FORCE_POUTRE mixes global (FX...) and local (N, VY...) components", None, occ)
+    cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    for cell in cells:
+        if model.cell_modelisation.get(int(cell)) not in ("POU_D_E", "POU_D_T", "BARRE"):
+            if occ.get("TOUT") == "OUI":
+                continue
+            ctx.error(
+                f"FORCE_POUTRE on cell {model.mesh.cell_names[cell]}, which is not a beam",
+                "GROUP_MA",
+                occ,
+            )
+    cells = np.array(
+        [
+            c
+            for c in cells
+            if model.cell_modelisation.get(int(c)) in ("POU_D_E", "POU_D_T", "BARRE")
+        ],
+        dtype=int,
+    )
+    load.extra.setdefault("FORCE_POUTRE", []).append(
+        {"CELLS": cells, "VALUES": given_local or given_global, "LOCAL": bool(given_local)}
+    )
+
+
 def _force_nodale(ctx, model, components, load, occ) -> None:
     mesh = model.mesh
     if occ.get("ANGL_NAUT") is not None:
@@ -88,11 +228,18 @@ def run(ctx, kw):
         _liaison_ddl(ctx, model, components, load, occ)
     for occ in kw.factor("FORCE_NODALE"):
         _force_nodale(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_UNIF"):
+        _liaison_unif(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_SOLIDE"):
+        _liaison_solide(ctx, model, components, load, occ)
+    for occ in kw.factor("FORCE_POUTRE"):
+        _force_poutre(ctx, model, load, occ)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]
         load.extra["PESANTEUR"] = {
             "GRAVITE": float(occ["GRAVITE"]),
             "DIRECTION": tuple(float(x) for x in as_tuple(occ["DIRECTION"])),
+            "CELLS": select_cells(ctx, occ, model.mesh) if occ.get("GROUP_MA") else None,
         }
     for key, value in kw.items():
         if key not in _HANDLED and isinstance(value, list) and value:

@@ -3,12 +3,12 @@ result is bound to its CO(...) name."""
 
 from __future__ import annotations
 
-from asterlite.commands.calc_vect_elem import gravity_terms
 from asterlite.commands.nume_ddl import numbering_for
 
 from asterlite.concepts.assembly import AssembledMatrix, DofNumbering, NodalField
 from asterlite.fem.assemble import assemble_blocks, assemble_terms
 from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.loads import load_terms
 from asterlite.fem.selection import as_tuple
 
 _OPTIONS = {
@@ -22,6 +22,7 @@ _OPTIONS = {
 def run(ctx, kw):
     model = kw["MODELE"]
     characteristics = kw.get("CARA_ELEM")
+    materials = kw.get("CHAM_MATER")
     loads = list(as_tuple(kw.get("CHARGE")))
     given = kw.get("NUME_DDL")
     if isinstance(given, DofNumbering):
@@ -36,7 +37,13 @@ def run(ctx, kw):
             ctx.unsupported(f"ASSEMBLAGE OPTION={option!r}", "OPTION", occ)
         matrix_kind, kind = _OPTIONS[option]
         try:
-            blocks = element_blocks(model, characteristics, matrix_kind)
+            blocks = element_blocks(
+                model,
+                characteristics,
+                matrix_kind,
+                materials=materials,
+                lumped=option == "MASS_MECA_DIAG",
+            )
         except NotImplementedError as exc:
             ctx.unsupported(str(exc), "MODELE", kw)
         except (ElementError, ValueError) as exc:
@@ -48,12 +55,10 @@ def run(ctx, kw):
             ctx.unsupported(f"ASSEMBLAGE VECT_ASSE OPTION={occ['OPTION']!r}", "OPTION", occ)
         terms = []
         for load in as_tuple(occ.get("CHARGE")):
-            terms.extend(load.nodal_forces)
-            gravity = load.extra.get("PESANTEUR")
-            if gravity is not None:
-                terms.extend(
-                    gravity_terms(model, characteristics, gravity["GRAVITE"], gravity["DIRECTION"])
-                )
+            try:
+                terms.extend(load_terms(load, characteristics, materials))
+            except (ElementError, ValueError) as exc:
+                ctx.error(str(exc), "CHARGE", occ)
         try:
             values = assemble_terms(terms, numbering)
         except KeyError as exc:

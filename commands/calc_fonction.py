@@ -60,7 +60,9 @@ def comb(ctx, occurrences, kw):
 
 def comb_c(ctx, occurrences, kw):
     funcs = _real_functions(ctx, occurrences, kw)
-    coefs = [occ["COEF_C"] if occ.get("COEF_C") is not None else occ["COEF_R"] for occ in occurrences]
+    coefs = [
+        occ["COEF_C"] if occ.get("COEF_C") is not None else occ["COEF_R"] for occ in occurrences
+    ]
     coefs = [complex(c) for c in coefs]
     return _on_list_para(fops.combine(funcs, coefs), kw)
 
@@ -81,7 +83,9 @@ OPERATIONS = {
     "ASSE": lambda ctx, occ, kw: fops.concatenate(
         *as_tuple(single(occ)["FONCTION"]), single(occ).get("SURCHARGE", "DROITE")
     ),
-    "COMPOSE": lambda ctx, occ, kw: fops.compose(single(occ)["FONC_RESU"], single(occ)["FONC_PARA"]),
+    "COMPOSE": lambda ctx, occ, kw: fops.compose(
+        single(occ)["FONC_RESU"], single(occ)["FONC_PARA"]
+    ),
     "DERIVE": lambda ctx, occ, kw: fops.derivative(single(occ)["FONCTION"]),
     "INTEGRE": lambda ctx, occ, kw: fops.integrate(
         single(occ)["FONCTION"], single(occ).get("METHODE", "TRAPEZE"), single(occ).get("COEF", 0.0)
@@ -110,13 +114,17 @@ def spec_osci(ctx, occurrences, kw):
     if occ.get("METHODE", "NIGAM") != "NIGAM":
         ctx.unsupported(f"SPEC_OSCI METHODE={occ['METHODE']}", "SPEC_OSCI", kw)
     if occ.get("AMOR_REDUIT") is None:
-        ctx.unsupported("SPEC_OSCI without AMOR_REDUIT (code_aster's default list)", "SPEC_OSCI", kw)
+        ctx.unsupported(
+            "SPEC_OSCI without AMOR_REDUIT (code_aster's default list)", "SPEC_OSCI", kw
+        )
     if occ.get("LIST_FREQ") is not None:
         freqs = values_of(occ["LIST_FREQ"])
     elif occ.get("FREQ") is not None:
         freqs = values_of(occ["FREQ"])
     else:
-        ctx.unsupported("SPEC_OSCI without LIST_FREQ / FREQ (code_aster's default list)", "SPEC_OSCI", kw)
+        ctx.unsupported(
+            "SPEC_OSCI without LIST_FREQ / FREQ (code_aster's default list)", "SPEC_OSCI", kw
+        )
     func = occ["FONCTION"]
     nature = occ.get("NATURE", "ACCE")
     dampings = values_of(occ["AMOR_REDUIT"])
@@ -124,8 +132,11 @@ def spec_osci(ctx, occurrences, kw):
         Function(
             freqs,
             fops.response_spectrum(func, freqs, float(xi), nature, float(occ["NORME"])),
-            NOM_PARA="FREQ", NOM_RESU=nature, INTERPOL=("LOG", "LOG"),
-            PROL_GAUCHE="CONSTANT", PROL_DROITE="CONSTANT",
+            NOM_PARA="FREQ",
+            NOM_RESU=nature,
+            INTERPOL=("LOG", "LOG"),
+            PROL_GAUCHE="CONSTANT",
+            PROL_DROITE="CONSTANT",
         )  # fmt: skip
         for xi in dampings
     ]

@@ -5,13 +5,18 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import AssembledMatrix
+from asterlite.concepts.modes import GeneralizedMatrix
 from asterlite.fem.constraints import ConstraintError
 from asterlite.fem.selection import as_tuple
+from asterlite.modal.buckling import critical_loads, select_critical
 from asterlite.modal.calc import (
     apply_norm,
+    build_buckling_result,
+    build_generalized_result,
     build_mode_result,
     constrained_pencil,
     filter_modes,
+    generalized_modes,
     residuals,
     select_modes,
 )
@@ -22,10 +27,12 @@ _DEFAULT_NMAX = {"PLUS_PETITE": 10, "CENTRE": 10, "PLUS_GRANDE": 1, "TOUT": 10}
 
 def run(ctx, kw):
     if kw.get("TYPE_RESU", "DYNAMIQUE") != "DYNAMIQUE":
-        ctx.unsupported(f"CALC_MODES TYPE_RESU={kw['TYPE_RESU']!r}", "TYPE_RESU", kw)
+        return _critical(ctx, kw)
     stiffness, mass = kw["MATR_RIGI"], kw["MATR_MASS"]
+    if isinstance(stiffness, GeneralizedMatrix) and isinstance(mass, GeneralizedMatrix):
+        return _generalized(ctx, kw, stiffness, mass)
     if not isinstance(stiffness, AssembledMatrix) or not isinstance(mass, AssembledMatrix):
-        ctx.unsupported("CALC_MODES on generalized matrices", "MATR_RIGI", kw)
+        ctx.unsupported("CALC_MODES on these matrix types", "MATR_RIGI", kw)
     if kw.get("MATR_AMOR") is not None:
         ctx.unsupported("CALC_MODES with MATR_AMOR (complex modes)", "MATR_AMOR", kw)
     if mass.numbering is not stiffness.numbering:
@@ -75,6 +82,61 @@ def run(ctx, kw):
         )
         modes = modes.select(keep)
         modes.parameters["NUME_MODE"] = np.arange(1, modes.n_modes + 1)
+    for k, f in enumerate(modes.frequencies, start=1):
+        ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
+    return modes
+
+
+def _critical(ctx, kw):
+    """TYPE_RESU MODE_FLAMB ((K + λ K_geo) φ = 0) and GENERAL ((A + λ B) φ = 0)."""
+    if kw["TYPE_RESU"] == "MODE_FLAMB":
+        a, b = kw["MATR_RIGI"], kw["MATR_RIGI_GEOM"]
+        b_keyword = "MATR_RIGI_GEOM"
+    else:
+        a, b = kw["MATR_A"], kw["MATR_B"]
+        b_keyword = "MATR_B"
+    if not isinstance(a, AssembledMatrix) or not isinstance(b, AssembledMatrix):
+        ctx.unsupported("critical loads of generalized matrices", b_keyword, kw)
+    if a.numbering.dofs != b.numbering.dofs:
+        ctx.error("the two matrices use different numberings", b_keyword, kw)
+    option = kw.get("OPTION", "PLUS_PETITE")
+    crit = (kw.factor("CALC_CHAR_CRIT") or [{}])[0]
+    window = as_tuple(crit.get("CHAR_CRIT"))
+    nmax = int(crit.get("NMAX_CHAR_CRIT") or 10)
+    try:
+        pencil = constrained_pencil(a, b)
+        loads, vecs = critical_loads(pencil.k, pencil.m)
+        loads, vecs = select_critical(loads, vecs, option, window, nmax)
+    except (EigenError, ConstraintError) as exc:
+        ctx.error(str(exc), "OPTION", kw)
+    if loads.size == 0:
+        ctx.error("no critical load found for this selection", "CALC_CHAR_CRIT", kw)
+    modes = build_buckling_result(a, b, loads, pencil.expand(vecs))
+    norm = kw.factor("NORM_MODE")
+    if norm:
+        apply_norm(modes, norm[0].get("NORME", "TRAN_ROTA"), stiffness=a.matrix, mass=b.matrix)
+    for k, value in enumerate(loads, start=1):
+        ctx.log(f"mode {k:4d}  CHAR_CRIT {value:14.6e}")
+    return modes
+
+
+def _generalized(ctx, kw, stiffness, mass):
+    """Modes of projected matrices (a mode_gene): a dense pencil, no relations."""
+    if kw.get("MATR_AMOR") is not None:
+        ctx.unsupported("CALC_MODES with MATR_AMOR (complex modes)", "MATR_AMOR", kw)
+    if stiffness.matrix.shape != mass.matrix.shape:
+        ctx.error("MATR_RIGI and MATR_MASS differ in size", "MATR_MASS", kw)
+    option = kw.get("OPTION", "PLUS_PETITE")
+    calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
+    freq = as_tuple(calc_freq.get("FREQ"))
+    nmax = calc_freq.get("NMAX_FREQ") or _DEFAULT_NMAX.get(option, 10)
+    try:
+        omega2, vecs = generalized_modes(stiffness.matrix, mass.matrix, option, freq, nmax)
+    except EigenError as exc:
+        ctx.error(str(exc), "OPTION", kw)
+    if omega2.size == 0:
+        ctx.error("no eigenmode found for this selection", "CALC_FREQ", kw)
+    modes = build_generalized_result(stiffness, mass, omega2, vecs)
     for k, f in enumerate(modes.frequencies, start=1):
         ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
     return modes

@@ -1,4 +1,7 @@
-"""CREA_CHAMP: nodal displacement fields (OPERATION='AFFE', TYPE_CHAM='NOEU_DEPL_R')."""
+"""CREA_CHAMP on nodal fields (TYPE_CHAM 'NOEU_*_R'): AFFE (values by node and
+component), EXTR (one field of a result, or its extreme over the stored
+fields with TYPE_MAXI), ASSE (pieces of fields, later ones overriding earlier
+ones unless CUMUL='OUI') and COMB (linear combination)."""
 
 from __future__ import annotations
 
@@ -65,8 +68,152 @@ def _affe(ctx, kw):
     return NodalField(numbering=numbering, values=values)
 
 
+def _nodal_only(ctx, kw):
+    type_cham = str(kw.get("TYPE_CHAM") or "")
+    if not (type_cham.startswith("NOEU_") and type_cham.endswith("_R")):
+        ctx.unsupported(
+            f"CREA_CHAMP {kw.get('OPERATION')} on TYPE_CHAM={type_cham!r} (nodal real fields only)",
+            "TYPE_CHAM",
+            kw,
+        )
+
+
+def _extr(ctx, kw):
+    from asterlite.modal.fields import (
+        FieldError,
+        extreme_over,
+        field_stack,
+        interpolate,
+        match_real,
+    )
+
+    if kw.get("RESULTAT") is None:
+        ctx.unsupported("CREA_CHAMP EXTR from something else than RESULTAT", "OPERATION", kw)
+    try:
+        numbering, values, access = field_stack(kw["RESULTAT"], kw["NOM_CHAM"])
+        if kw.get("TYPE_MAXI") is not None:
+            rows = _extr_rows(ctx, kw, access, values.shape[0])
+            params = access.get("INST", access["NUME_ORDRE"])
+            field = extreme_over(
+                values[rows], kw["TYPE_MAXI"], kw.get("TYPE_RESU", "VALE"), np.asarray(params)[rows]
+            )
+            return NodalField(numbering=numbering, values=field)
+        precision = float(kw.get("PRECISION", 1.0e-6))
+        criterion = kw.get("CRITERE", "RELATIF")
+        if kw.get("INST") is not None and "INST" in access:
+            if kw.get("INTERPOL", "NON") == "LIN":
+                field = interpolate(access["INST"], values, float(kw["INST"]))
+                return NodalField(numbering=numbering, values=field)
+            k = match_real(access["INST"], float(kw["INST"]), precision, criterion)
+        elif kw.get("FREQ") is not None and "FREQ" in access:
+            k = match_real(access["FREQ"], float(kw["FREQ"]), precision, criterion)
+        else:
+            k = _extr_index(ctx, kw, access)
+    except FieldError as exc:
+        ctx.error(str(exc), "RESULTAT", kw)
+    return NodalField(numbering=numbering, values=np.array(values[k], dtype=float))
+
+
+def _extr_index(ctx, kw, access) -> int:
+    for key in ("NUME_ORDRE", "NUME_MODE", "NOM_CAS", "NOEUD_CMP", "INST", "FREQ"):
+        wanted = kw.get(key)
+        if wanted is None:
+            continue
+        if key not in access:
+            ctx.error(f"this result has no {key} access", key, kw)
+        if key == "NOEUD_CMP":
+            wanted = " ".join(str(w).strip() for w in as_tuple(wanted))
+        hits = np.flatnonzero(np.asarray(access[key]) == wanted)
+        if hits.size == 0:
+            ctx.error(f"no field with {key}={wanted!r} in the result", key, kw)
+        return int(hits[0])
+    ctx.error("give NUME_ORDRE, INST, NUME_MODE, FREQ, NOM_CAS or NOEUD_CMP", None, kw)
+
+
+def _extr_rows(ctx, kw, access, count) -> np.ndarray:
+    if kw.get("NUME_ORDRE") is not None:
+        wanted = np.asarray(as_tuple(kw["NUME_ORDRE"]))
+        return np.flatnonzero(np.isin(access["NUME_ORDRE"], wanted))
+    instants = None
+    if kw.get("LIST_INST") is not None:
+        instants = np.asarray(kw["LIST_INST"].values, dtype=float)
+    elif kw.get("INST") is not None:
+        instants = np.asarray(as_tuple(kw["INST"]), dtype=float)
+    if instants is not None and "INST" in access:
+        from asterlite.modal.fields import match_real
+
+        precision = float(kw.get("PRECISION", 1.0e-6))
+        criterion = kw.get("CRITERE", "RELATIF")
+        return np.array(
+            [match_real(access["INST"], t, precision, criterion) for t in instants], dtype=int
+        )
+    return np.arange(count)
+
+
+def _union_numbering(mesh, fields):
+    from asterlite.concepts.assembly import DofNumbering
+    from asterlite.fem.assemble import build_numbering_dofs
+    from asterlite.fem.dofs import sort_components
+
+    pairs: dict[int, set[str]] = {}
+    for f in fields:
+        for node, comp in f.numbering.dofs:
+            pairs.setdefault(node, set()).add(comp)
+    return DofNumbering(
+        mesh=mesh, dofs=build_numbering_dofs({n: sort_components(c) for n, c in pairs.items()})
+    )
+
+
+def _asse(ctx, kw):
+    mesh = kw.get("MAILLAGE") or kw["MODELE"].mesh
+    occs = kw.factor("ASSE")
+    for occ in occs:
+        if occ["CHAM_GD"].numbering.mesh is not mesh:
+            ctx.error("CHAM_GD is on another mesh", "CHAM_GD", occ)
+    numbering = _union_numbering(mesh, [occ["CHAM_GD"] for occ in occs])
+    values = np.zeros(numbering.n_dofs)
+    for occ in occs:
+        source = occ["CHAM_GD"]
+        nodes = set(select_nodes(ctx, occ, mesh).tolist())
+        comps = as_tuple(occ.get("NOM_CMP"))
+        renamed = as_tuple(occ.get("NOM_CMP_RESU")) or comps
+        if len(renamed) != len(comps):
+            ctx.error("NOM_CMP and NOM_CMP_RESU differ in length", "NOM_CMP_RESU", occ)
+        rename = dict(zip(comps, renamed, strict=True))
+        coef = float(occ.get("COEF_R", 1.0))
+        for (node, comp), value in zip(source.numbering.dofs, source.values, strict=True):
+            if node not in nodes or (comps and comp not in rename):
+                continue
+            row = numbering.index.get((node, rename.get(comp, comp)))
+            if row is None:
+                continue
+            if occ.get("CUMUL", "NON") == "OUI":
+                values[row] += coef * value
+            else:
+                values[row] = coef * value
+    return NodalField(numbering=numbering, values=values)
+
+
+def _comb(ctx, kw):
+    from asterlite.modal.renumber import transfer
+
+    occs = kw.factor("COMB")
+    numbering = occs[0]["CHAM_GD"].numbering
+    values = np.zeros(numbering.n_dofs)
+    for occ in occs:
+        field = occ["CHAM_GD"]
+        if field.numbering.mesh is not numbering.mesh:
+            ctx.error("the fields are on different meshes", "CHAM_GD", occ)
+        values += float(occ["COEF_R"]) * transfer(field.values, field.numbering, numbering)
+    return NodalField(numbering=numbering, values=values)
+
+
 def run(ctx, kw):
     operation = kw.get("OPERATION")
     if operation == "AFFE":
         return _affe(ctx, kw)
+    handlers = {"EXTR": _extr, "ASSE": _asse, "COMB": _comb}
+    if operation in handlers:
+        _nodal_only(ctx, kw)
+        return handlers[operation](ctx, kw)
     ctx.unsupported(f"CREA_CHAMP OPERATION={operation!r}", "OPERATION", kw)

@@ -98,6 +98,12 @@ def run(ctx, kw):
         f"{result.info['archived']} archived, step {result.info['min_step']:.3g}"
         f"..{result.info['max_step']:.3g}, {result.info['integration_seconds']:.3f} s"
     )
+    kept = result.info.get("steps_kept_at_nmax_iter_pas", 0)
+    if kept:
+        ctx.log(
+            f"warning: {kept} steps kept after NMAX_ITER_PAS trials without reaching "
+            "the apparent-frequency criterion (code_aster's DYNAMIQUE_18)"
+        )
     return TranGene(
         basis=basis,
         times=result.times,

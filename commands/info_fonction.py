@@ -43,7 +43,9 @@ def maxima(ctx, occ, table):
         table.add_column(func.NOM_RESU, "R")
     for func in functions:
         for kind, x, y in fops.extrema(func, intervals or None):
-            table.add_row({"FONCTION": func.name or "", "TYPE": kind, func.NOM_PARA: x, func.NOM_RESU: y})
+            table.add_row(
+                {"FONCTION": func.name or "", "TYPE": kind, func.NOM_PARA: x, func.NOM_RESU: y}
+            )
 
 
 def windowed(occ, table, name, statistic):

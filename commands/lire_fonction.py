@@ -13,9 +13,9 @@ import re
 from pathlib import Path
 
 import numpy as np
+from asterlite.commands.defi_fonction import check_abscissas
 
 from asterlite.concepts.function import ComplexFunction, Function
-from asterlite.commands.defi_fonction import check_abscissas
 
 
 def numeric_blocks(text: str, separator: str | None = None) -> list[list[list[float]]]:
@@ -45,7 +45,9 @@ def column(blocks, indices, what: str) -> np.ndarray:
     rows = blocks[block_no - 1]
     if any(len(r) < column_no for r in rows):
         width = min(len(r) for r in rows)
-        raise ValueError(f"{what}: column {column_no} does not exist (block {block_no} has {width})")
+        raise ValueError(
+            f"{what}: column {column_no} does not exist (block {block_no} has {width})"
+        )
     return np.array([r[column_no - 1] for r in rows])
 
 

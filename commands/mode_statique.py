@@ -36,7 +36,11 @@ def _selected(ctx, occurrences, numbering, eligible: np.ndarray) -> np.ndarray:
     for occ in occurrences:
         selected_nodes = select_nodes(ctx, occ, mesh, all_nodes=np.unique(nodes))
         chosen |= selection_mask(
-            comps, nodes, selected_nodes, as_tuple(occ.get("AVEC_CMP")), as_tuple(occ.get("SANS_CMP"))
+            comps,
+            nodes,
+            selected_nodes,
+            as_tuple(occ.get("AVEC_CMP")),
+            as_tuple(occ.get("SANS_CMP")),
         )
     return np.flatnonzero(chosen & eligible)
 

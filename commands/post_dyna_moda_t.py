@@ -243,7 +243,7 @@ def wear_rows(table, labels, t, fields, occ) -> None:
         }
     )
 
-    sticking = fields.get("IADH")
+    sticking = fields.get("ADHERENCE", fields.get("IADH"))
     if sticking is not None:
         sticking = np.asarray(sticking) != 0
     power = [

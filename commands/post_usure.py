@@ -145,7 +145,13 @@ def law_volumes(ctx, kw, power, seconds, history) -> tuple[np.ndarray, np.ndarra
             coefs = dict(occ or {})
             if from_bank:
                 bank = wear.bank_entry(wear.KWU_BANK, contact, material, law)
-                coefs.update(zip(("COEF_USURE", "COEF_FNOR", "COEF_VTAN", "COEF_K", "COEF_C"), bank))
+                coefs.update(
+                    zip(
+                        ("COEF_USURE", "COEF_FNOR", "COEF_VTAN", "COEF_K", "COEF_C"),
+                        bank,
+                        strict=True,
+                    )
+                )
             if coefs.get("COEF_USURE") is None:
                 return None
             w = wear.kwu_weight(
@@ -173,7 +179,7 @@ def law_volumes(ctx, kw, power, seconds, history) -> tuple[np.ndarray, np.ndarra
         coefs = dict(occ or {})
         if from_bank:
             bank = wear.bank_entry(wear.EDF_MZ_BANK, contact, material, law)
-            coefs.update(zip(("COEF_USURE", "COEF_S", "COEF_B", "COEF_N"), bank))
+            coefs.update(zip(("COEF_USURE", "COEF_S", "COEF_B", "COEF_N"), bank, strict=True))
         return wear.edf_mz_volume(
             power,
             seconds,

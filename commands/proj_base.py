@@ -3,13 +3,51 @@ result is bound to its CO(...) name."""
 
 from __future__ import annotations
 
+import numpy as np
 from asterlite.commands import proj_matr_base, proj_vect_base
 
 from asterlite.concepts.modes import GeneralizedNumbering
 
 
+def _resu_gene(ctx, occ, basis):
+    """A tran_gene holding the generalized coordinates of a physical result's
+    fields (least-squares fit of DEPL, VITE and ACCE at each instant)."""
+    from asterlite.concepts.transient import TranGene
+    from asterlite.modal.fields import FieldError, field_stack
+    from asterlite.modal.projection import ProjectionError, fit_coordinates
+    from asterlite.modal.renumber import transfer
+
+    result = occ["RESU"]
+    stacks = {}
+    for name in ("DEPL", "VITE", "ACCE"):
+        try:
+            numbering, values, access = field_stack(result, name)
+        except FieldError:
+            continue
+        physical = transfer(values.T, numbering, basis.numbering)
+        try:
+            stacks[name] = fit_coordinates(basis.shapes, physical).T
+        except ProjectionError as exc:
+            ctx.error(str(exc), "BASE", occ)
+        times, order = access.get("INST"), access["NUME_ORDRE"]
+    if not stacks:
+        ctx.error("the result has no DEPL, VITE or ACCE field", "RESU", occ)
+    shape = next(iter(stacks.values())).shape
+    zeros = np.zeros(shape)
+    return TranGene(
+        basis=basis,
+        times=np.asarray(times if times is not None else np.zeros(shape[0]), dtype=float),
+        order=np.asarray(order),
+        depl=stacks.get("DEPL", zeros),
+        vite=stacks.get("VITE", zeros),
+        acce=stacks.get("ACCE", zeros),
+    )
+
+
 def run(ctx, kw):
     basis = kw["BASE"]
+    if kw.get("NB_VECT") is not None and int(kw["NB_VECT"]) < basis.n_modes:
+        basis = basis.select(np.arange(int(kw["NB_VECT"])))
     numbering_gene = GeneralizedNumbering(basis=basis, storage=kw.get("STOCKAGE", "PLEIN"))
     if kw.get("NUME_DDL_GENE") is not None:
         ctx.bind(kw["NUME_DDL_GENE"], numbering_gene)
@@ -25,4 +63,6 @@ def run(ctx, kw):
             ctx, occ, basis, numbering_gene, occ["VECT_ASSE"], occ.get("TYPE_VECT", "FORC")
         )
         ctx.bind(occ["VECTEUR"], result)
+    for occ in kw.factor("RESU_GENE"):
+        ctx.bind(occ["RESULTAT"], _resu_gene(ctx, occ, basis))
     return None

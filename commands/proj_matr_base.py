@@ -4,14 +4,20 @@ from __future__ import annotations
 
 from asterlite.concepts.modes import GeneralizedMatrix
 from asterlite.modal.projection import project_matrix
+from asterlite.modal.renumber import same_dofs, transfer
 
 _KIND = {"RIGI": "RIGI", "MASS": "MASS", "AMOR": "AMOR"}
 
 
 def project(ctx, kw, basis, numbering_gene, matrix):
-    if matrix.numbering is not basis.numbering and matrix.numbering.dofs != basis.numbering.dofs:
-        ctx.error("the matrix and the basis use different DOF numberings", "MATR_ASSE", kw)
-    values = project_matrix(basis.shapes, matrix.matrix, numbering_gene.storage)
+    shapes = basis.shapes
+    if not same_dofs(matrix.numbering, basis.numbering):
+        # a matrix on another numbering of the mesh (e.g. one substructure's):
+        # the basis vectors are restricted to its DOFs, by node and component
+        if matrix.numbering.mesh is not basis.numbering.mesh:
+            ctx.error("the matrix and the basis are on different meshes", "MATR_ASSE", kw)
+        shapes = transfer(shapes, basis.numbering, matrix.numbering)
+    values = project_matrix(shapes, matrix.matrix, numbering_gene.storage)
     return GeneralizedMatrix(
         numbering=numbering_gene, matrix=values, kind=_KIND.get(matrix.kind, "RIGI")
     )

@@ -75,6 +75,8 @@ class ElementCharacteristics(Concept):
     discrete: dict[int, dict[str, DiscreteAssignment]] = field(default_factory=dict)
     orientation: dict[int, np.ndarray] = field(default_factory=dict)
     extra: dict[str, Any] = field(default_factory=dict)
+    # beam / bar section properties per cell (asterlite.fem.sections output)
+    sections: dict[int, dict[str, Any]] = field(default_factory=dict)
 
 
 @dataclass(eq=False)
@@ -120,6 +122,7 @@ class ElementaryMatrices(Concept):
     blocks: list[ElementBlock] = field(default_factory=list)
     loads: list[MechanicalLoad] = field(default_factory=list)
     characteristics: ElementCharacteristics | None = None
+    materials: Any = None  # MaterialField (CHAM_MATER) the matrices were computed with
 
 
 @dataclass(eq=False)
@@ -220,3 +223,94 @@ class NodalField(Concept):
 
     numbering: DofNumbering
     values: np.ndarray
+
+
+@dataclass(eq=False)
+class Material(Concept):
+    """``DEFI_MATERIAU`` result: one material's parameters by behaviour.
+
+    ``behaviours["ELAS"]`` maps code_aster names (E, NU, RHO, AMOR_ALPHA,
+    AMOR_BETA, AMOR_HYST, ALPHA...) to floats; ELAS_FO values are stored
+    there too once evaluated (constant functions). ``get(name, default)``
+    reads an elastic parameter.
+    """
+
+    aster_types = ("mater_sdaster",)
+
+    behaviours: dict[str, dict[str, Any]] = field(default_factory=dict)
+
+    def get(self, name: str, default: float | None = None) -> float | None:
+        return self.behaviours.get("ELAS", {}).get(name, default)
+
+    @property
+    def young(self) -> float:
+        return float(self.get("E", 0.0))
+
+    @property
+    def poisson(self) -> float:
+        return float(self.get("NU", 0.0))
+
+    @property
+    def density(self) -> float:
+        return float(self.get("RHO", 0.0))
+
+
+@dataclass(eq=False)
+class MaterialField(Concept):
+    """``AFFE_MATERIAU`` result: the material of each cell (last assignment wins)."""
+
+    aster_types = ("cham_mater",)
+
+    mesh: Mesh
+    cell_material: dict[int, Material] = field(default_factory=dict)
+
+    def material_of(self, cell: int) -> Material | None:
+        return self.cell_material.get(int(cell))
+
+    def values(self, cells, name: str, default: float = 0.0) -> np.ndarray:
+        """(len(cells),) elastic parameter ``name`` of each cell's material."""
+        out = np.full(len(cells), float(default))
+        for k, cell in enumerate(np.asarray(cells, dtype=int)):
+            material = self.cell_material.get(int(cell))
+            if material is not None:
+                value = material.get(name)
+                if value is not None:
+                    out[k] = float(value)
+        return out
+
+
+@dataclass(eq=False)
+class ElementField:
+    """A field by element node (``*_ELNO``) or on elements (``*_ELGA``),
+    at every stored instant/mode of a result.
+
+    ``values`` is (n_orders, n_cells, n_points, n_components) for the cells
+    ``cells`` (mesh cell indices), ``components`` their names (``N``,
+    ``VY``... for EFGE_ELNO); points are the cell's nodes for ELNO (in
+    connectivity order) or its Gauss points for ELGA.
+    """
+
+    name: str
+    cells: np.ndarray
+    components: tuple[str, ...]
+    values: np.ndarray
+
+    def at(self, cell: int, point: int, component: str) -> np.ndarray:
+        """Values along the orders of one cell, point (0-based) and component."""
+        row = int(np.flatnonzero(self.cells == cell)[0])
+        return self.values[:, row, point, self.components.index(component)]
+
+
+@dataclass(eq=False)
+class NodalComponentField:
+    """A nodal field with named components (``*_NOEU`` such as SIPO_NOEU):
+    ``values`` is (n_orders, n_nodes_listed, n_components) on ``nodes``."""
+
+    name: str
+    nodes: np.ndarray
+    components: tuple[str, ...]
+    values: np.ndarray
+
+    def at(self, node: int, component: str) -> np.ndarray:
+        row = int(np.flatnonzero(self.nodes == node)[0])
+        return self.values[:, row, self.components.index(component)]

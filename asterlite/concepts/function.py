@@ -57,6 +57,16 @@ def interpolate(
     label = f"function {name}" if name else "function"
     if xs.size == 0:
         raise FunctionDomainError(f"{label} has no values")
+    # as code_aster, a point outside an EXCLU end by less than 1e-6 of the end
+    # interval is taken at the end (round-off in computed abscissas)
+    if xs.size > 1:
+        slack_left, slack_right = 1e-6 * (xs[1] - xs[0]), 1e-6 * (xs[-1] - xs[-2])
+    else:
+        slack_left = slack_right = 1e-6 * max(abs(xs[0]), 1.0)
+    if left == "EXCLU":
+        x = np.where((x < xs[0]) & (x >= xs[0] - slack_left), xs[0], x)
+    if right == "EXCLU":
+        x = np.where((x > xs[-1]) & (x <= xs[-1] + slack_right), xs[-1], x)
     below, above = x < xs[0], x > xs[-1]
     if left == "EXCLU" and below.any():
         raise FunctionDomainError(

@@ -208,3 +208,51 @@ class MultElasResult(Concept):
     def shapes(self) -> np.ndarray:
         """The fields as a modal-basis-like matrix (MODE_INTF of DEFI_BASE_MODALE)."""
         return self.fields
+
+
+@dataclass(eq=False)
+class GeneralizedModes(Concept):
+    """``CALC_MODES`` on generalized matrices (a ``mode_gene``): eigenvectors
+    ``vectors`` (n_gene, n_modes) in the generalized coordinates of
+    ``numbering`` (the NUME_DDL_GENE of the projected matrices), with
+    ``frequencies`` and ``parameters`` as a ModeResult. :meth:`physical` gives
+    the restored modes Φ q on the physical DOFs of the projection basis
+    (what REST_GENE_PHYS returns)."""
+
+    aster_types = ("mode_gene", "resultat_sdaster")
+
+    numbering: GeneralizedNumbering
+    vectors: np.ndarray
+    frequencies: np.ndarray
+    generalized_mass: np.ndarray
+    generalized_stiffness: np.ndarray
+    parameters: dict[str, np.ndarray] = field(default_factory=dict)
+    norm: str = "SANS_CMP: LAGR"
+
+    @property
+    def n_modes(self) -> int:
+        return self.vectors.shape[1]
+
+    @property
+    def mode_numbers(self) -> np.ndarray:
+        numbers = self.parameters.get("NUME_MODE")
+        return np.arange(1, self.n_modes + 1) if numbers is None else np.asarray(numbers)
+
+    def physical(self, indices=None) -> ModeResult:
+        """The modes restored on the physical basis (REST_GENE_PHYS)."""
+        basis = self.numbering.basis
+        idx = np.arange(self.n_modes) if indices is None else np.asarray(indices, dtype=int)
+        shapes = basis.shapes[:, : self.vectors.shape[0]] @ self.vectors[:, idx]
+        params = {k: np.asarray(v)[idx] for k, v in self.parameters.items() if np.ndim(v) == 1}
+        return ModeResult(
+            numbering=basis.numbering,
+            shapes=shapes,
+            frequencies=np.asarray(self.frequencies)[idx].copy(),
+            generalized_mass=np.asarray(self.generalized_mass)[idx].copy(),
+            generalized_stiffness=np.asarray(self.generalized_stiffness)[idx].copy(),
+            mass=basis.mass,
+            stiffness=basis.stiffness,
+            kind="dynamic",
+            parameters=params,
+            norm=self.norm,
+        )

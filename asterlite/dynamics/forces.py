@@ -7,9 +7,9 @@ Bundles passed to the kernels (tuples of arrays, built by ``model.py``):
 - ``lin = (minv, stiffness, damping, is_diagonal)``: (n, n) arrays and a
   (1,) int array telling whether the three matrices are diagonal;
 - ``shk = (flags, params, rots, phis, polars)``: see ``contact.py``;
-- ``exc = (vectors, table, grid)``: excitation e's generalized vector
-  ``vectors[e]`` times its multiplier tabulated at ``grid[0] + k grid[1]``
-  (linear interpolation in between, held constant outside).
+- ``exc = (vectors, abscissas, ordinates, layout)``: excitation e's
+  generalized vector ``vectors[e]`` times its piecewise-linear multiplier
+  (``layout[e] = (count, left, right)``, see ``model.Excitation``).
 """
 
 from __future__ import annotations
@@ -20,24 +20,38 @@ from asterlite.dynamics.contact import shock_forces
 
 
 @njit(cache=True)
-def multiplier(table_row, t0, h, t):
-    """Linear interpolation of a tabulated multiplier at time t."""
-    x = (t - t0) / h
-    last = table_row.shape[0] - 1
-    if x <= 0.0:
-        return table_row[0]
-    if x >= last:
-        return table_row[last]
-    k = int(x)
-    w = x - k
-    return (1.0 - w) * table_row[k] + w * table_row[k + 1]
+def multiplier(xs, ys, count, left, right, t):
+    """Piecewise-linear multiplier at t (extension: 0 constant, 1 linear)."""
+    if count == 1:
+        return ys[0]
+    last = count - 1
+    if t <= xs[0]:
+        if left == 1 and t < xs[0]:
+            return ys[0] + (t - xs[0]) * (ys[1] - ys[0]) / (xs[1] - xs[0])
+        return ys[0]
+    if t >= xs[last]:
+        if right == 1 and t > xs[last]:
+            slope = (ys[last] - ys[last - 1]) / (xs[last] - xs[last - 1])
+            return ys[last] + (t - xs[last]) * slope
+        return ys[last]
+    lo, hi = 0, last  # xs[lo] <= t < xs[hi]
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if xs[mid] <= t:
+            lo = mid
+        else:
+            hi = mid
+    width = xs[hi] - xs[lo]
+    if width == 0.0:
+        return ys[hi]
+    return ys[lo] + (t - xs[lo]) * (ys[hi] - ys[lo]) / width
 
 
 @njit(cache=True)
 def external_force(t, exc, out):
-    vectors, table, grid = exc
+    vectors, abscissas, ordinates, layout = exc
     for e in range(vectors.shape[0]):
-        c = multiplier(table[e], grid[0], grid[1], t)
+        c = multiplier(abscissas[e], ordinates[e], layout[e, 0], layout[e, 1], layout[e, 2], t)
         for m in range(out.shape[0]):
             out[m] += c * vectors[e, m]
 

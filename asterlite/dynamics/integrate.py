@@ -195,7 +195,7 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
 def suggested_step(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
     from asterlite.dynamics.model import stability_period
 
-    fraction = 10.0 if scheme in ("DEVOGE", "NEWMARK", "TRBDF2") else 20.0
+    fraction = 10.0 if scheme in ("DEVOGE", "NEWMARK") else 20.0
     return stability_period(system, shocks) / fraction
 
 

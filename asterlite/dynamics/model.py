@@ -256,29 +256,59 @@ def stability_period(system: LinearSystem, shocks: ShockSet) -> float:
 
 @dataclass
 class Excitation:
-    """Generalized load vectors and their multipliers tabulated on a grid."""
+    """Generalized load vectors, each times a piecewise-linear multiplier.
+
+    Row e of ``abscissas``/``ordinates`` holds the multiplier's points
+    (``layout[e] = (count, left, right)``, extension codes PROL_CONSTANT or
+    PROL_LINEAIRE beyond the ends): a DEFI_FONCTION with linear
+    interpolation keeps its own points, so the kernels evaluate it exactly
+    as code_aster does at any instant; other multipliers (formulas, log
+    interpolation) are sampled on a regular grid.
+    """
 
     vectors: np.ndarray  # (n_exc, n_modes)
-    table: np.ndarray  # (n_exc, n_samples)
-    grid: np.ndarray  # (t0, h)
+    abscissas: np.ndarray  # (n_exc, n_points)
+    ordinates: np.ndarray  # (n_exc, n_points)
+    layout: np.ndarray  # (n_exc, 3) int: count, left, right
 
     def bundle(self):
-        return (self.vectors, self.table, self.grid)
+        return (self.vectors, self.abscissas, self.ordinates, self.layout)
+
+
+PROL_CONSTANT, PROL_LINEAIRE = 0, 1
+
+
+def multiplier_points(mult, t0: float, t_end: float, h: float):
+    """(abscissas, ordinates, left, right) of one multiplier."""
+    if isinstance(mult, (int, float)):
+        return np.array([t0]), np.array([float(mult)]), PROL_CONSTANT, PROL_CONSTANT
+    xs = getattr(mult, "abscissas", None)
+    ys = getattr(mult, "ordinates", None)
+    linear = tuple(getattr(mult, "INTERPOL", ("LIN", "LIN"))) == ("LIN", "LIN")
+    if xs is not None and ys is not None and linear and np.isrealobj(ys) and len(xs) > 0:
+        mult.evaluate(np.array([t0, t_end]))  # raises for PROL_*='EXCLU' outside the points
+        left = PROL_LINEAIRE if getattr(mult, "PROL_GAUCHE", "") == "LINEAIRE" else PROL_CONSTANT
+        right = PROL_LINEAIRE if getattr(mult, "PROL_DROITE", "") == "LINEAIRE" else PROL_CONSTANT
+        return np.asarray(xs, dtype=float), np.asarray(ys, dtype=float), left, right
+    n = max(2, int(math.ceil((t_end - t0) / h)) + 2)
+    times = t0 + h * np.arange(n)
+    return times, np.asarray(mult.evaluate(times), dtype=float), PROL_CONSTANT, PROL_CONSTANT
 
 
 def tabulate_excitation(n_modes: int, loads, t0: float, t_end: float, h: float) -> Excitation:
-    """``loads``: list of (vector, multiplier) with multiplier a float or an
-    object with ``evaluate(t_array)``; sampled every ``h`` over [t0, t_end]."""
-    if not loads:
-        return Excitation(np.zeros((0, n_modes)), np.zeros((0, 2)), np.array([t0, 1.0]))
-    n = max(2, int(math.ceil((t_end - t0) / h)) + 2)
-    times = t0 + h * np.arange(n)
+    """``loads``: list of (vector, multiplier) with multiplier a float, a
+    tabulated function (``abscissas``, ``ordinates``, ``INTERPOL``,
+    ``PROL_GAUCHE``/``PROL_DROITE``) or any object with ``evaluate(t_array)``
+    (then sampled every ``h`` over [t0, t_end])."""
+    points = [multiplier_points(mult, t0, t_end, h) for _, mult in loads]
+    width = max([1] + [len(p[0]) for p in points])
     vectors = np.zeros((len(loads), n_modes))
-    table = np.zeros((len(loads), n))
-    for e, (vector, mult) in enumerate(loads):
+    abscissas = np.zeros((len(loads), width))
+    ordinates = np.zeros((len(loads), width))
+    layout = np.zeros((len(loads), 3), dtype=np.int64)
+    for e, ((vector, _), (xs, ys, left, right)) in enumerate(zip(loads, points, strict=True)):
         vectors[e] = vector
-        if isinstance(mult, (int, float)):
-            table[e] = float(mult)
-        else:
-            table[e] = np.asarray(mult.evaluate(times), dtype=float)
-    return Excitation(vectors, table, np.array([t0, h]))
+        abscissas[e, : len(xs)] = xs
+        ordinates[e, : len(xs)] = ys
+        layout[e] = (len(xs), left, right)
+    return Excitation(vectors, abscissas, ordinates, layout)

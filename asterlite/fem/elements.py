@@ -1,10 +1,13 @@
 """Element matrices of a model for one option, grouped into vectorised blocks.
 
-``element_blocks(model, characteristics, matrix)`` returns the global-frame
-:class:`ElementBlock` list of the discrete elements for ``matrix`` in
-``K`` (RIGI_MECA), ``M`` (MASS_MECA) or ``A`` (AMOR_MECA). Cells sharing one
-characteristic are computed together: one local matrix, then one batched
-rotation when the values are given in the LOCAL frame.
+``element_blocks(model, characteristics, matrix, materials=None, lumped=False)``
+returns the global-frame :class:`ElementBlock` list for ``matrix`` in ``K``
+(RIGI_MECA), ``M`` (MASS_MECA, or MASS_MECA_DIAG with ``lumped``) or ``A``
+(AMOR_MECA). Each modelisation has a computer in :data:`ELEMENT_COMPUTERS`
+called as ``fn(model, characteristics, matrix, cells, materials=..., lumped=...)``.
+Discrete elements (here): cells sharing one characteristic are computed
+together, one local matrix then one batched rotation when the values are
+given in the LOCAL frame. Beams and bars: :mod:`asterlite.fem.beam_elements`.
 """
 
 from __future__ import annotations
@@ -38,7 +41,10 @@ def cell_frames(model: Model, cells: np.ndarray, characteristics) -> np.ndarray:
     return rotation_from_angles(angles)
 
 
-def _discrete_blocks(model, characteristics, matrix, cells) -> list[ElementBlock]:
+def _discrete_blocks(model, characteristics, matrix, cells, **_options) -> list[ElementBlock]:
+    """Discrete elements: the characteristics as given (masses are used as
+    given by MASS_MECA_DIAG too; AMOR_MECA is the A_* characteristic only, as
+    code_aster: the material's Rayleigh coefficients do not apply to them)."""
     mesh = model.mesh
     # group cells sharing modelisation, cell type and characteristic values
     groups: dict[tuple, list[int]] = defaultdict(list)
@@ -101,23 +107,47 @@ def _rotation_invariant(local: np.ndarray, components, n_nodes: int) -> bool:
     return True
 
 
-#: Element computations by modelisation: fn(model, characteristics, matrix, cells)
-#: -> list[ElementBlock]. Other rooms register beams, bars... here.
+#: Element computations by modelisation:
+#: fn(model, characteristics, matrix, cells, materials=None, lumped=False)
+#: -> list[ElementBlock]. Beams and bars register in asterlite.fem.beam_elements.
 ELEMENT_COMPUTERS = {name: _discrete_blocks for name in DISCRETE_MODELISATIONS}
 
 
 def element_blocks(
-    model: Model, characteristics: ElementCharacteristics | None, matrix: str
+    model: Model,
+    characteristics: ElementCharacteristics | None,
+    matrix: str,
+    materials=None,
+    lumped: bool = False,
+    cells=None,
 ) -> list[ElementBlock]:
-    """Global-frame element matrices of the model for ``matrix`` (K, M or A)."""
+    """Global-frame element matrices of the model for ``matrix`` (K, M or A).
+
+    ``materials`` is the CHAM_MATER (needed by beams and bars), ``lumped``
+    asks for MASS_MECA_DIAG, ``cells`` restricts the computation to a subset
+    of the model's cells (default: all of them).
+    """
+    import asterlite.fem.beam_elements  # noqa: F401 - registers beam computers
+
+    wanted = None if cells is None else {int(c) for c in np.asarray(cells).ravel()}
     by_modelisation: dict[str, list[int]] = defaultdict(list)
     for cell, modelisation in model.cell_modelisation.items():
-        by_modelisation[modelisation].append(cell)
+        if wanted is None or cell in wanted:
+            by_modelisation[modelisation].append(cell)
     missing = sorted(m for m in by_modelisation if m not in ELEMENT_COMPUTERS)
     if missing:
         raise NotImplementedError(f"element matrices of modelisation {', '.join(missing)}")
     blocks = []
-    for modelisation, cells in by_modelisation.items():
+    for modelisation, members in sorted(by_modelisation.items()):
         compute = ELEMENT_COMPUTERS[modelisation]
-        blocks.extend(compute(model, characteristics, matrix, np.array(sorted(cells), dtype=int)))
+        blocks.extend(
+            compute(
+                model,
+                characteristics,
+                matrix,
+                np.array(sorted(members), dtype=int),
+                materials=materials,
+                lumped=lumped,
+            )
+        )
     return blocks

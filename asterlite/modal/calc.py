@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import AssembledMatrix
-from asterlite.concepts.modes import ModeResult
+from asterlite.concepts.modes import BucklingModes, GeneralizedModes, ModeResult
 from asterlite.fem.constraints import eliminate
 from asterlite.modal import normalize
 from asterlite.modal.eigen import (
@@ -41,6 +41,10 @@ def select_modes(pencil: ReducedPencil, option: str, freq=(), nmax: int = 10):
     elif option == "BANDE":
         if freq.size < 2:
             raise EigenError("BANDE needs two frequencies")
+        lo, hi = omega2_from_freq([freq.min(), freq.max()])
+        vals, vecs = pencil.band(lo, hi)
+    elif option in ("AJUSTE", "SEPARE") and freq.size >= 2:
+        # the frequencies bound search intervals: every mode between the extreme ones
         lo, hi = omega2_from_freq([freq.min(), freq.max()])
         vals, vecs = pencil.band(lo, hi)
     elif option in ("PROCHE", "AJUSTE", "SEPARE"):
@@ -141,3 +145,71 @@ def filter_modes(modes: ModeResult, criterion: str, threshold: float) -> np.ndar
         mass = np.asarray(modes.generalized_mass)
         return np.flatnonzero(mass > threshold)
     raise ValueError(f"unknown CRIT_EXTR {criterion}")
+
+
+def build_buckling_result(a: AssembledMatrix, b: AssembledMatrix, loads, shapes) -> BucklingModes:
+    """Critical-load modes: largest component +1, CHAR_CRIT per mode."""
+    numbering = a.numbering
+    shapes = np.asarray(shapes, dtype=float).reshape(numbering.n_dofs, -1)
+    shapes = shapes * normalize.largest_component(shapes)[None, :]
+    n = shapes.shape[1]
+    gb = np.einsum("ij,ij->j", shapes, b.matrix @ shapes)
+    ga = np.einsum("ij,ij->j", shapes, a.matrix @ shapes)
+    params = {
+        "NUME_MODE": np.arange(1, n + 1),
+        "CHAR_CRIT": np.asarray(loads, dtype=float),
+        "FREQ": np.zeros(n),
+        "MASS_GENE": gb,
+        "RIGI_GENE": ga,
+    }
+    return BucklingModes(
+        numbering=numbering,
+        shapes=shapes,
+        frequencies=np.zeros(n),
+        generalized_mass=gb.copy(),
+        generalized_stiffness=ga.copy(),
+        mass=b,
+        stiffness=a,
+        kind="buckling",
+        parameters=params,
+        norm="SANS_CMP: LAGR",
+    )
+
+
+def generalized_modes(k_gene, m_gene, option: str, freq=(), nmax: int = 10):
+    """(ω², vectors) of a projected pencil (dense, unconstrained)."""
+    import scipy.sparse as sp
+
+    from asterlite.fem.constraints import Elimination
+
+    n = k_gene.shape[0]
+    identity = Elimination(
+        sp.identity(n, format="csr"), np.zeros(n), np.arange(n), np.array([], dtype=int)
+    )
+    pencil = ReducedPencil(
+        np.asarray(k_gene, dtype=float), np.asarray(m_gene, dtype=float), identity
+    )
+    return select_modes(pencil, option, freq, nmax)
+
+
+def build_generalized_result(stiffness, mass, omega2, vecs) -> GeneralizedModes:
+    """A mode_gene: largest generalized component +1, per-mode MASS_GENE/RIGI_GENE."""
+    vecs = np.asarray(vecs, dtype=float)
+    vecs = vecs * normalize.largest_component(vecs)[None, :]
+    gm = np.einsum("ij,ij->j", vecs, np.asarray(mass.matrix) @ vecs)
+    gk = np.einsum("ij,ij->j", vecs, np.asarray(stiffness.matrix) @ vecs)
+    n = vecs.shape[1]
+    return GeneralizedModes(
+        numbering=stiffness.numbering,
+        vectors=vecs,
+        frequencies=freq_from_omega2(omega2),
+        generalized_mass=gm,
+        generalized_stiffness=gk,
+        parameters={
+            "NUME_MODE": np.arange(1, n + 1),
+            "FREQ": freq_from_omega2(omega2),
+            "OMEGA2": np.asarray(omega2, dtype=float),
+            "MASS_GENE": gm,
+            "RIGI_GENE": gk,
+        },
+    )

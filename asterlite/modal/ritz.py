@@ -22,7 +22,9 @@ def _inner(matrix, a: np.ndarray, b: np.ndarray) -> float:
     return float(a @ (matrix @ b)) if matrix is not None else float(a @ b)
 
 
-def gram_schmidt(vectors: np.ndarray, matrix=None, alpha: float = KAHAN_PARLETT_ALPHA) -> np.ndarray:
+def gram_schmidt(
+    vectors: np.ndarray, matrix=None, alpha: float = KAHAN_PARLETT_ALPHA
+) -> np.ndarray:
     """Columns orthonormal for ⟨a, b⟩ = aᵀ A b (Euclidean when ``matrix`` is
     None); a column found dependent on the previous ones becomes zero."""
     q = np.array(vectors, dtype=float, copy=True)

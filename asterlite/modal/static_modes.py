@@ -98,3 +98,22 @@ def selection_mask(components, nodes, selected_nodes, with_cmp=(), without=()) -
     if without:
         mask &= ~np.isin(comps, list(without))
     return mask
+
+
+def static_solve(stiffness, numbering: DofNumbering, loads: np.ndarray, relation_rhs=None):
+    """u (n_dofs, k) with K u = f + reactions and B u = b (the numbering's
+    relations; ``relation_rhs`` (n_relations, k) overrides their right-hand
+    sides, default: the relations' own values)."""
+    b_matrix, rhs = numbering.constraint_matrix()
+    loads = np.asarray(loads, dtype=float).reshape(numbering.n_dofs, -1)
+    if relation_rhs is None:
+        relation_rhs = np.repeat(np.asarray(rhs, dtype=float)[:, None], loads.shape[1], axis=1)
+    elimination = eliminate(b_matrix, np.zeros_like(rhs), numbering.n_dofs)
+    u0 = elimination.particular(np.asarray(relation_rhs, dtype=float).reshape(len(rhs), -1))
+    k_red = elimination.reduce(stiffness)
+    if k_red.shape[0] == 0:
+        return u0
+    lu = _factor(k_red)
+    reduced_rhs = np.asarray(elimination.T.T @ (loads - stiffness @ u0))
+    q = lu.solve(reduced_rhs.reshape(k_red.shape[0], -1))
+    return u0 + elimination.T @ q

@@ -36,7 +36,9 @@ def _pair_support(xs, left, right, other: Function):
     else:
         x_min, left = (ox[0], other.PROL_GAUCHE) if left != "EXCLU" else (xs[0], left)
     if xs[-1] > ox[-1]:
-        x_max, right = (xs[-1], right) if other.PROL_DROITE != "EXCLU" else (ox[-1], other.PROL_DROITE)
+        x_max, right = (
+            (xs[-1], right) if other.PROL_DROITE != "EXCLU" else (ox[-1], other.PROL_DROITE)
+        )
     else:
         x_max, right = (ox[-1], other.PROL_DROITE) if right != "EXCLU" else (xs[-1], right)
     union = np.unique(np.clip(np.concatenate([xs, ox]), x_min, x_max))
@@ -83,7 +85,9 @@ def absolute(func: Function) -> Function:
 
 def compose(outer: Function, inner: Function) -> Function:
     """outer(inner(x)) at the abscissas of inner (COMPOSE)."""
-    return outer.with_values(inner.abscissas, outer.evaluate(inner.ordinates), NOM_PARA=inner.NOM_PARA)
+    return outer.with_values(
+        inner.abscissas, outer.evaluate(inner.ordinates), NOM_PARA=inner.NOM_PARA
+    )
 
 
 def inverse(func: Function) -> Function:
@@ -172,7 +176,9 @@ def primitive_simpson(x, y, constant: float = 0.0) -> np.ndarray:
             e = delta / (h1 * h2)
             weights = (1.0 - e * h2, 2.0 + e * delta, 1.0 + e * h1)
         k = i % 2  # the running sum that ended at i - 2
-        sums[k] += (h1 + h2) / 6 * (weights[0] * y[i - 2] + weights[1] * y[i - 1] + weights[2] * y[i])
+        sums[k] += (
+            (h1 + h2) / 6 * (weights[0] * y[i - 2] + weights[1] * y[i - 1] + weights[2] * y[i])
+        )
         out[i] = sums[k]
     return out
 
@@ -230,22 +236,27 @@ def fft(func: Function, method: str = "PROL_ZERO") -> Function:
 # ---------------------------------------------------------- response spectra
 
 
-def sdof_peak_response(t, accel, freq: float, damping: float) -> tuple[float, float, float]:
-    """Peak |relative displacement|, |relative velocity|, |absolute
-    acceleration| of a damped oscillator under a base acceleration that is
-    linear between samples (exact piecewise solution, Nigam & Jennings)."""
+def sdof_history(t, accel, freq: float, damping: float) -> tuple[np.ndarray, np.ndarray]:
+    """Relative displacement and velocity of a damped oscillator at rest at
+    t[0] under a base acceleration linear between samples (exact piecewise
+    solution, Nigam & Jennings)."""
     w = 2 * np.pi * freq
-    xi = damping
-    wd = w * np.sqrt(1 - xi * xi)
-    u = v = 0.0
-    peak_u = peak_v = peak_a = 0.0
+    wd = w * np.sqrt(1 - damping * damping)
+    u, v = np.zeros(len(t)), np.zeros(len(t))
     for k in range(len(t) - 1):
-        dt = t[k + 1] - t[k]
-        a0, a1 = accel[k], accel[k + 1]
-        u, v = _sdof_step(u, v, -a0, -a1, dt, w, xi, wd)
-        acc = -2 * xi * w * v - w * w * u  # absolute acceleration
-        peak_u, peak_v, peak_a = max(peak_u, abs(u)), max(peak_v, abs(v)), max(peak_a, abs(acc))
-    return peak_u, peak_v, peak_a
+        u[k + 1], v[k + 1] = _sdof_step(
+            u[k], v[k], -accel[k], -accel[k + 1], t[k + 1] - t[k], w, damping, wd
+        )
+    return u, v
+
+
+def sdof_peak_response(t, accel, freq: float, damping: float) -> tuple[float, float, float]:
+    """Peak |relative displacement|, |relative velocity| and |absolute
+    acceleration| of the oscillator of :func:`sdof_history`."""
+    u, v = sdof_history(t, accel, freq, damping)
+    w = 2 * np.pi * freq
+    absolute_acc = -2 * damping * w * v - w * w * u
+    return float(np.abs(u).max()), float(np.abs(v).max()), float(np.abs(absolute_acc).max())
 
 
 def _sdof_step(u0, v0, p0, p1, dt, w, xi, wd):
@@ -282,7 +293,11 @@ def response_spectrum(func: Function, freqs, damping: float, nature: str, norme:
 def extrema(func: Function, intervals=None) -> list[tuple[str, float, float]]:
     """(MINI/MAXI, abscissa, value) for each extreme value (ties kept), per interval."""
     x, y = func.abscissas, np.real(func.ordinates)
-    windows = [(x[0], x[-1])] if not intervals else list(zip(intervals[::2], intervals[1::2], strict=True))
+    windows = (
+        [(x[0], x[-1])]
+        if not intervals
+        else list(zip(intervals[::2], intervals[1::2], strict=True))
+    )
     rows = []
     for low, high in windows:
         inside = (x >= low) & (x <= high)

@@ -53,9 +53,11 @@ def antiseismic_force(params, d, v):
     else:
         f = -k2 * d
     if abs(v) >= VELOCITY_FLOOR:
-        f -= params[P_C] * (1.0 if v >= 0.0 else -1.0) * abs(v * d / params[P_DX_MAX]) ** params[
-            P_ALPHA
-        ]
+        f -= (
+            params[P_C]
+            * (1.0 if v >= 0.0 else -1.0)
+            * abs(v * d / params[P_DX_MAX]) ** params[P_ALPHA]
+        )
     return f
 
 

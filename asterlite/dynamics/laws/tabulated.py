@@ -14,6 +14,7 @@ compiled evaluators return NaN, which the time loop must treat as an error
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
@@ -47,6 +48,18 @@ def pack(x, y, left: str = "EXCLU", right: str = "EXCLU", label: str = "function
     except KeyError as exc:
         raise LawError(f"{label}: unknown prolongation {exc.args[0]!r}") from None
     return np.concatenate([[float(xs.size), float(codes[0]), float(codes[1])], xs, ys])
+
+
+@dataclass(frozen=True)
+class Curve:
+    """A tabulated function built by the laws themselves (same attributes as a
+    DEFI_FONCTION concept, so ``function_table`` takes either)."""
+
+    abscissas: np.ndarray
+    ordinates: np.ndarray
+    PROL_GAUCHE: str = "EXCLU"
+    PROL_DROITE: str = "EXCLU"
+    INTERPOL: tuple[str, str] = ("LIN", "LIN")
 
 
 def packed_size(n_points: int) -> int:
@@ -98,7 +111,9 @@ def function_table(func, label: str, sample=None, para: str | None = None) -> np
 def unpack(block: np.ndarray) -> tuple[np.ndarray, np.ndarray, int, int]:
     """(x, y, prol_left, prol_right) of a packed block (for messages and tests)."""
     n = int(block[0])
-    return block[HEADER : HEADER + n], block[HEADER + n : HEADER + 2 * n], int(block[1]), int(block[2])
+    xs = block[HEADER : HEADER + n]
+    ys = block[HEADER + n : HEADER + 2 * n]
+    return xs, ys, int(block[1]), int(block[2])
 
 
 # ----------------------------------------------------------------------------

@@ -1,0 +1,53 @@
+"""CHOC_ELAS_TRAC: nonlinear elastic shock along the axis of two nodes.
+
+The 'length' of the discrete element is ld = L0 - DIST_1 - DIST_2 + (u2 - u1)·x
+with L0 the rest distance of the nodes along the axis x (node 1 -> node 2).
+In contact (ld <= 0) the element pushes the nodes apart with the force
+F = FX(-ld) read on the user curve (with its own prolongations); otherwise
+there is no force. Node 1 receives -F along x, node 2 +F. Elastic: no memory.
+
+Internal variables (VINT1, VINT2 as code_aster archives them; the rest is
+asterlite's): the compressive force F (>= 0), the length ld, then the local
+coordinates of both nodes.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics.laws.tabulated import LawError, function_table, unpack, value
+
+P_REST = 0  # L0 - DIST_1 - DIST_2
+P_FX = 1  # packed FX(DX)
+
+V_FORCE, V_LENGTH = 0, 1
+V_LOC1, V_LOC2 = 2, 5
+N_VINT = 8
+VINT_NAMES = ("FORCE", "LONGUEUR", "DXLOC_1", "DYLOC_1", "DZLOC_1", "DXLOC_2", "DYLOC_2", "DZLOC_2")
+
+
+@njit(cache=True)
+def elastic_shock_force(params, axial_elongation, state_out):
+    """Axial force on node 1 (-F when in contact); ``axial_elongation``
+    = (u2 - u1)·x. NaN when FX is evaluated outside an EXCLU side."""
+    length = params[P_REST] + axial_elongation
+    force = 0.0
+    if length <= 0.0:
+        force = value(params, P_FX, -length)
+    state_out[V_FORCE] = force
+    state_out[V_LENGTH] = length
+    return -force
+
+
+def prepare_choc_elas_trac(kw, rest_distance: float = 0.0) -> np.ndarray:
+    """Parameter array from a validated CHOC_ELAS_TRAC occurrence;
+    ``rest_distance``: the distance of the two nodes in the mesh."""
+    dist = float(kw.get("DIST_1") or 0.0) + float(kw.get("DIST_2") or 0.0)
+    if kw.get("FX") is None:
+        raise LawError("CHOC_ELAS_TRAC: FX (force vs crushing DX) is missing")
+    block = function_table(kw["FX"], "CHOC_ELAS_TRAC/FX")
+    x, y, _, _ = unpack(block)
+    if np.any(y < 0.0):
+        raise LawError("CHOC_ELAS_TRAC/FX: the force must be >= 0 (a shock only pushes)")
+    return np.concatenate([[float(rest_distance) - dist], block])

@@ -1,0 +1,181 @@
+"""FLAMBAGE: shock on a support that buckles (plastic crushing with memory).
+
+code_aster 17 describes the support by three functions of the crushing
+(DX, the penetration into the obstacle): FX the force threshold, RIGI_NOR
+the stiffness and AMOR_NOR the damping. With d_N < 0 the normal distance
+(penetration -d_N), v_N the normal velocity and u_max the largest
+penetration reached so far, the force is elastic from the plastic
+crushing ``defpla`` on:
+
+    F = K (-d_N - defpla) - C v_N,   K, C, Fc = RIGI_NOR, AMOR_NOR, FX at u_max
+
+capped by Fc; when the cap is reached the crushing grows so that the force
+stays on the threshold (defpla = -d_N - Fc/K). With CRIT_AMOR='EXCLUS' the
+damping is added after the cap (it is not bounded by Fc). No force while
+the penetration is below the crushing (a gap has opened) or out of contact.
+
+The functions are evaluated at the maximum penetration, so unloading is
+linear with the stiffness reached (a crushed support does not recover):
+code_aster's buckling curves (e.g. those built from the historical
+FNOR_CRIT/FNOR_POST_FL/LARG_PLAT/ENFO_FL/DEPL_POST_FL/RIGI_POST_FL
+parameters, see ``legacy_buckling_curves``) are designed for that reading.
+
+Internal variables (code_aster's 12-value layout, VINT1..VINT12): the
+normal force, local coordinates of both nodes, the normal velocity, the
+crushing (VINT9, POST_DYNA_MODA_T's ECRAS_RESI), then the stiffness, the
+maximum penetration and the damping in use.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics.laws.tabulated import Curve, LawError, function_table, unpack, value
+
+# Parameters: flags, then where each packed function starts in the same array
+P_DAMPING_IN_CRITERION = 0  # 1: CRIT_AMOR='INCLUS', 0: 'EXCLUS'
+P_AT_FX, P_AT_RIGI, P_AT_AMOR = 1, 2, 3
+HEADER = 4
+
+# Internal variables
+V_FN = 0
+V_LOC1 = 1  # local coordinates of node 1 (3)
+V_LOC2 = 4  # local coordinates of node 2 (3)
+V_VN = 7
+V_DEFPLA = 8  # plastic crushing (VINT9)
+V_RIGI = 9  # stiffness in use
+V_DEFMAX = 10  # maximum penetration reached
+V_AMOR = 11  # damping in use
+N_VINT = 12
+VINT_NAMES = (
+    "FN", "DXLOC_1", "DYLOC_1", "DZLOC_1", "DXLOC_2", "DYLOC_2", "DZLOC_2",
+    "VN", "ECRAS", "RIGI", "ENFO_MAX", "AMOR",
+)  # fmt: skip
+
+
+@njit(cache=True)
+def buckling_force(params, gap, vn, state_in, state_out):
+    """Normal force magnitude F >= 0 (applied along the normal on node 1,
+    opposite on node 2); updates the memory from ``state_in`` into
+    ``state_out`` (the same array is allowed). NaN when a curve is
+    evaluated outside its EXCLU domain."""
+    defpla = state_in[V_DEFPLA]
+    umax = state_in[V_DEFMAX]
+    rigi = state_in[V_RIGI]
+    amor = state_in[V_AMOR]
+    fn = 0.0
+    if gap <= 0.0:
+        if -gap > umax:
+            umax = -gap
+        crit = value(params, int(params[P_AT_FX]), umax)
+        rigi = value(params, int(params[P_AT_RIGI]), umax)
+        amor = value(params, int(params[P_AT_AMOR]), umax)
+        included = params[P_DAMPING_IN_CRITERION] != 0.0
+        fn = -rigi * (gap + defpla) - (amor * vn if included else 0.0)
+        if fn >= crit:
+            fn = crit
+            defpla = -gap - crit / rigi  # crushing follows, the force stays on the threshold
+        if defpla < 0.0:
+            defpla = 0.0
+        if not included:
+            fn -= amor * vn
+        if fn < 0.0 or -gap < defpla:
+            fn = 0.0  # the support only pushes, and not across the gap its crushing opened
+    else:
+        vn = 0.0
+    state_out[V_FN] = fn
+    state_out[V_VN] = vn
+    state_out[V_DEFPLA] = defpla
+    state_out[V_DEFMAX] = umax
+    state_out[V_RIGI] = rigi
+    state_out[V_AMOR] = amor
+    return fn
+
+
+def prepare_flambage(kw, sample=None) -> np.ndarray:
+    """Parameter array from a validated FLAMBAGE occurrence: FX, RIGI_NOR
+    and AMOR_NOR functions of the crushing, CRIT_AMOR ('INCLUS' default)."""
+    blocks = []
+    for key in ("FX", "RIGI_NOR", "AMOR_NOR"):
+        if kw.get(key) is None:
+            raise LawError(f"FLAMBAGE: {key} (a function of the crushing DX) is missing")
+        blocks.append(function_table(kw[key], f"FLAMBAGE/{key}", sample=sample))
+    x, y, _, _ = unpack(blocks[1])
+    if np.any(y <= 0.0):
+        raise LawError("FLAMBAGE/RIGI_NOR: the stiffness must be > 0 everywhere")
+    x, y, _, _ = unpack(blocks[0])
+    if np.any(y < 0.0):
+        raise LawError("FLAMBAGE/FX: the force threshold must be >= 0")
+    criterion = kw.get("CRIT_AMOR", "INCLUS")
+    if criterion not in ("INCLUS", "EXCLUS"):
+        raise LawError(f"FLAMBAGE/CRIT_AMOR: INCLUS or EXCLUS expected, not {criterion!r}")
+    header = np.zeros(HEADER)
+    header[P_DAMPING_IN_CRITERION] = 1.0 if criterion == "INCLUS" else 0.0
+    at = HEADER
+    for slot, block in zip((P_AT_FX, P_AT_RIGI, P_AT_AMOR), blocks, strict=True):
+        header[slot] = at
+        at += block.size
+    return np.concatenate([header, *blocks])
+
+
+def initial_state(params) -> np.ndarray:
+    """Internal variables before the first contact (stiffness/damping at zero crushing)."""
+    state = np.zeros(N_VINT)
+    state[V_RIGI] = value(params, int(params[P_AT_RIGI]), 0.0)
+    state[V_AMOR] = value(params, int(params[P_AT_AMOR]), 0.0)
+    return state
+
+
+def legacy_buckling_curves(
+    rigi_nor,
+    fnor_crit,
+    fnor_post_fl,
+    larg_plat,
+    enfo_fl,
+    depl_post_fl,
+    rigi_post_fl,
+    amor_nor=0.0,
+    amor_fl=None,
+    amor_post_fl=None,
+    points_per_segment=200,
+):
+    """The FX, RIGI_NOR, AMOR_NOR curves (``Curve``, CONSTANT both sides)
+    equivalent to the historical scalar description of a buckling support:
+    elastic up to FNOR_CRIT, a plateau of width LARG_PLAT, a drop to
+    FNOR_POST_FL over ENFO_FL, then post-buckling branches of stiffness
+    RIGI_POST_FL reached at crushings DEPL_POST_FL (increasing)."""
+    if rigi_nor <= 0.0 or fnor_crit <= 0.0 or fnor_post_fl <= 0.0 or enfo_fl <= 0.0:
+        raise LawError("FLAMBAGE: RIGI_NOR, FNOR_CRIT, FNOR_POST_FL, ENFO_FL must be > 0")
+    depl = np.asarray(depl_post_fl, float)
+    rigi = np.asarray(rigi_post_fl, float)
+    if depl.size == 0 or depl.size != rigi.size or np.any(rigi <= 0.0):
+        raise LawError("FLAMBAGE: DEPL_POST_FL and RIGI_POST_FL: same length, stiffness > 0")
+    amor_fl = amor_nor if amor_fl is None else amor_fl
+    amor_post = np.full(depl.size, amor_fl) if amor_post_fl is None else np.asarray(amor_post_fl)
+    total = depl + fnor_post_fl / rigi  # total penetration reached on each branch
+    u_plateau = fnor_crit / rigi_nor
+    u_drop = u_plateau + larg_plat
+    u_buckled = u_drop + enfo_fl
+    if np.any(np.diff(depl) < 0.0) or np.any(np.diff(total) <= 0.0) or total[0] <= u_buckled:
+        raise LawError("FLAMBAGE: post-buckling crushings and total penetrations must increase")
+    rows = [(0.0, fnor_crit, rigi_nor, amor_nor), (u_plateau, fnor_crit, rigi_nor, amor_nor)]
+    if larg_plat > 0.0:
+        rows.append((u_drop, fnor_crit, rigi_nor, amor_nor))
+    # the drop: threshold linear in the penetration, crushing frozen at LARG_PLAT
+    for u in np.linspace(u_drop, u_buckled, points_per_segment + 1)[1:]:
+        w = (u - u_drop) / enfo_fl
+        f = fnor_crit + w * (fnor_post_fl - fnor_crit)
+        rows.append((u, f, f / (u - larg_plat), amor_nor + w * (amor_fl - amor_nor)))
+    # post-buckling: crushing interpolated between the branches, force FNOR_POST_FL
+    starts = np.concatenate([[u_buckled], total])
+    crush = np.concatenate([[larg_plat], depl])
+    damps = np.concatenate([[amor_fl], amor_post])
+    for k in range(depl.size):
+        for u in np.linspace(starts[k], starts[k + 1], points_per_segment + 1)[1:]:
+            w = (u - starts[k]) / (starts[k + 1] - starts[k])
+            crushing = crush[k] + w * (crush[k + 1] - crush[k])
+            damping = damps[k] + w * (damps[k + 1] - damps[k])
+            rows.append((u, fnor_post_fl, fnor_post_fl / (u - crushing), damping))
+    table = np.asarray(rows)
+    return tuple(Curve(table[:, 0], table[:, j], "CONSTANT", "CONSTANT") for j in (1, 2, 3))

@@ -1,0 +1,102 @@
+"""ROTOR_FISS: cracked rotor, a rotation-dependent stiffness between two nodes.
+
+The crack lies between node D (node 1) and node G (node 2) of a rotor
+whose axis is x (frame from the rotor axis, ``rot_axis`` = R_y(β) R_z(α)).
+The frame turns with the rotor: γ(t) = ANGL_ROTA(t) when the speed is
+variable, else ANGL_INIT + Ω t. With δθ = θ_G - θ_D (rotations, global)
+brought to the turning frame (δy, δz), the crack's opening angle is
+φ = atan2(δy, δz) in [0, 2π) and the moment on node D is, in that frame,
+
+    M = (0,  K(φ) δy + ½ K'(φ) δz,  K(φ) δz - ½ K'(φ) δy)
+
+(node G receives -M), with K = K_PHI and K' = DK_DPHI read at φ (radians).
+
+Internal variables (code_aster's order, VINT1..VINT3): the angle as
+code_aster archives it, φ·180/(2π) (half the angle in degrees: kept as
+code_aster writes it), then M_y and M_z in the turning frame.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics.laws.tabulated import LawError, function_table, value
+
+P_VARIABLE_SPEED = 0  # 1.0: γ = ANGL_ROTA(t)
+P_ANGLE0, P_SPEED = 1, 2  # ANGL_INIT (rad), rotation speed Ω (rad/s)
+P_AT_K, P_AT_DK, P_AT_ANGLE = 3, 4, 5  # where the packed functions start (angle: -1 if none)
+HEADER = 6
+
+V_ANGLE, V_MY, V_MZ = 0, 1, 2
+N_VINT = 3
+VINT_NAMES = ("ANGLE", "MY", "MZ")
+TWO_PI = 2.0 * math.pi
+
+
+@njit(cache=True)
+def rotor_angle(params, t):
+    if params[P_VARIABLE_SPEED] == 1.0:
+        return value(params, int(params[P_AT_ANGLE]), t)
+    return params[P_ANGLE0] + params[P_SPEED] * t
+
+
+@njit(cache=True)
+def cracked_rotor_moment(params, t, rot_axis, dtheta_x, dtheta_y, dtheta_z, state_out):
+    """Global moment (3) on node D; ``dtheta`` = θ_G - θ_D in the global frame."""
+    gamma = rotor_angle(params, t)
+    cg, sg = math.cos(gamma), math.sin(gamma)
+    a = rot_axis[1, 0] * dtheta_x + rot_axis[1, 1] * dtheta_y + rot_axis[1, 2] * dtheta_z
+    b = rot_axis[2, 0] * dtheta_x + rot_axis[2, 1] * dtheta_y + rot_axis[2, 2] * dtheta_z
+    dy = cg * a + sg * b  # turning frame: rotation by γ about x
+    dz = -sg * a + cg * b
+    phi = math.atan2(dy, dz)
+    if phi < 0.0:
+        phi += TWO_PI
+    k = value(params, int(params[P_AT_K]), phi)
+    dk = value(params, int(params[P_AT_DK]), phi)
+    my = k * dy + 0.5 * dk * dz
+    mz = k * dz - 0.5 * dk * dy
+    state_out[V_ANGLE] = phi * 180.0 / TWO_PI
+    state_out[V_MY] = my
+    state_out[V_MZ] = mz
+    # back to the axis frame, then to the global frame
+    ma = cg * my - sg * mz
+    mb = sg * my + cg * mz
+    return (
+        rot_axis[1, 0] * ma + rot_axis[2, 0] * mb,
+        rot_axis[1, 1] * ma + rot_axis[2, 1] * mb,
+        rot_axis[1, 2] * ma + rot_axis[2, 2] * mb,
+    )
+
+
+ANGLE_SAMPLES = np.linspace(0.0, TWO_PI, 3601)
+
+
+def prepare_rotor_fiss(
+    kw, rotation_speed: float = 0.0, variable_speed: bool = False, time_samples=None
+) -> np.ndarray:
+    """Parameter array from a validated ROTOR_FISS occurrence. ``rotation_speed``
+    (rad/s) and ``variable_speed`` come from DYNA_VIBRA (VITESSE_ROTATION,
+    VITESSE_VARIABLE); ``time_samples`` tabulates an ANGL_ROTA formula."""
+    header = np.zeros(HEADER)
+    header[P_ANGLE0] = math.radians(float(kw.get("ANGL_INIT", 0.0)))
+    header[P_SPEED] = float(rotation_speed)
+    blocks = []
+    for key in ("K_PHI", "DK_DPHI"):
+        if kw.get(key) is None:
+            raise LawError(f"ROTOR_FISS: {key} is missing")
+        blocks.append(function_table(kw[key], f"ROTOR_FISS/{key}", sample=ANGLE_SAMPLES))
+    header[P_AT_ANGLE] = -1.0
+    if variable_speed:
+        if kw.get("ANGL_ROTA") is None:
+            raise LawError("ROTOR_FISS: ANGL_ROTA (angle vs INST) is needed at variable speed")
+        header[P_VARIABLE_SPEED] = 1.0
+        blocks.append(function_table(kw["ANGL_ROTA"], "ROTOR_FISS/ANGL_ROTA", time_samples))
+    at = HEADER
+    for slot, block in zip((P_AT_K, P_AT_DK, P_AT_ANGLE), blocks, strict=False):
+        header[slot] = at
+        at += block.size
+    return np.concatenate([header, *blocks])

@@ -1,0 +1,210 @@
+"""Element computers of straight beams and bars (``POU_D_E``, ``POU_D_T``,
+``BARRE``, ``2D_BARRE``) for :func:`asterlite.fem.elements.element_blocks`.
+
+Each cell needs a section (``AFFE_CARA_ELEM/POUTRE`` or ``BARRE``, kept in
+``characteristics.sections``) and a material (``CHAM_MATER``: E, NU, RHO,
+AMOR_ALPHA, AMOR_BETA). Cells sharing modelisation, section and material are
+computed in one vectorised call of :func:`asterlite.fem.beam.global_matrices`.
+
+Damping (AMOR_MECA) is code_aster's Rayleigh damping per element:
+``C_e = AMOR_ALPHA K_e + AMOR_BETA M_e`` with the consistent mass.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+
+import numpy as np
+
+from asterlite.concepts.assembly import ElementBlock
+from asterlite.fem import beam
+from asterlite.fem.beam import BeamError, global_matrices, seg2_angles
+from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.sections import SectionError
+
+BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "BARRE", "2D_BARRE")
+
+
+def _section_key(section: dict) -> tuple:
+    return tuple(sorted((k, v) for k, v in section.items() if not isinstance(v, str)))
+
+
+def cell_angles(model, characteristics, cells) -> np.ndarray:
+    """(n, 3) nautical angles of SEG2 cells: ORIENTATION when given, else the
+    segment direction with no twist (code_aster's default)."""
+    mesh = model.mesh
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    angles = seg2_angles(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    if characteristics is not None:
+        for k, cell in enumerate(cells):
+            given = characteristics.orientation.get(int(cell))
+            if given is not None:
+                angles[k] = given
+    return angles
+
+
+def _material_values(materials, cells, modelisation: str, need_density: bool):
+    """E, NU, RHO, AMOR_ALPHA, AMOR_BETA arrays for the cells (checked)."""
+    mesh_names = None
+    if materials is None:
+        raise ElementError(f"{modelisation} elements need a material field (CHAM_MATER)")
+    missing = [c for c in cells if materials.material_of(c) is None]
+    if missing:
+        mesh_names = materials.mesh.cell_names
+        names = ", ".join(mesh_names[c] for c in missing[:5])
+        raise ElementError(f"no material is assigned to the {modelisation} cells {names}")
+    values = {
+        name: materials.values(cells, name, default)
+        for name, default in (
+            ("E", np.nan),
+            ("NU", 0.0),
+            ("RHO", np.nan),
+            ("AMOR_ALPHA", 0.0),
+            ("AMOR_BETA", 0.0),
+        )
+    }
+    if np.any(np.isnan(values["E"])):
+        raise ElementError(f"the material of {modelisation} elements has no E (ELAS)")
+    if need_density and np.any(np.isnan(values["RHO"])):
+        raise ElementError(f"the mass of {modelisation} elements needs RHO in the material (ELAS)")
+    values["RHO"] = np.nan_to_num(values["RHO"])
+    return values
+
+
+def beam_blocks(
+    model, characteristics, matrix, cells, materials=None, lumped=False, **_options
+) -> list[ElementBlock]:
+    """Global-frame matrices (K, M or A) of beam and bar cells."""
+    if matrix not in ("K", "M", "A"):
+        raise ElementError(f"unknown element matrix {matrix!r}")
+    mesh = model.mesh
+    cells = np.asarray(cells, dtype=int)
+    if not len(cells):
+        return []
+    modelisation = model.cell_modelisation[int(cells[0])]
+    sections = characteristics.sections if characteristics is not None else {}
+    without = [int(c) for c in cells if int(c) not in sections]
+    if without:
+        names = ", ".join(mesh.cell_names[c] for c in without[:5])
+        keyword = "BARRE" if "BARRE" in modelisation else "POUTRE"
+        raise ElementError(
+            f"{modelisation} cells {names} have no section (AFFE_CARA_ELEM/{keyword})"
+        )
+    values = _material_values(materials, cells, modelisation, need_density=matrix != "K")
+    # group cells sharing section and material values
+    groups: dict[tuple, list[int]] = defaultdict(list)
+    for k, cell in enumerate(cells):
+        key = (
+            _section_key(sections[int(cell)]),
+            tuple(float(values[n][k]) for n in ("E", "NU", "RHO", "AMOR_ALPHA", "AMOR_BETA")),
+        )
+        groups[key].append(k)
+    components = beam.COMPONENTS[modelisation]
+    angles = cell_angles(model, characteristics, cells)
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    out = np.zeros((len(cells), 2 * len(components), 2 * len(components)))
+    for (_, (young, poisson, density, alpha, beta)), rows in groups.items():
+        rows = np.asarray(rows, dtype=int)
+        section = sections[int(cells[rows[0]])]
+        x1, x2 = mesh.coords[conn[rows, 0]], mesh.coords[conn[rows, 1]]
+
+        material = (young, poisson, density)
+
+        def matrices(kind, lump=False, rows=rows, x1=x1, x2=x2, section=section, mat=material):
+            return global_matrices(
+                modelisation, kind, x1, x2, section, *mat, angles=angles[rows], lumped=lump
+            )
+
+        try:
+            if matrix == "K":
+                out[rows] = matrices("K")
+            elif matrix == "M":
+                out[rows] = matrices("M", lumped)
+            else:
+                block = np.zeros((len(rows),) + out.shape[1:])
+                if alpha:
+                    block += alpha * matrices("K")
+                if beta:
+                    block += beta * matrices("M")
+                out[rows] = block
+        except (BeamError, SectionError) as exc:
+            names = ", ".join(mesh.cell_names[c] for c in cells[rows][:3])
+            raise ElementError(f"{modelisation} cells {names}: {exc}") from None
+    return [ElementBlock(nodes=conn, components=components, matrices=out)]
+
+
+def _register() -> None:
+    for name in BEAM_MODELISATIONS:
+        ELEMENT_COMPUTERS.setdefault(name, beam_blocks)
+
+
+_register()
+
+
+# -- internal forces ------------------------------------------------------------------
+
+#: Components of EFGE_ELNO / SIEF_ELNO for beams and bars.
+EFGE_COMPONENTS = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
+#: Components of SIPO_ELNO.
+SIPO_COMPONENTS = ("SN", "SVY", "SVZ", "SMT", "SMFY", "SMFZ")
+
+
+def beam_local_forces(model, characteristics, materials, cells, displacements) -> np.ndarray:
+    """Generalised internal forces at the two nodes of beam cells.
+
+    ``displacements`` is (n_orders, n_cells, 12) global-frame element DOFs
+    (``DX..DRZ`` of node 1 then node 2). Returns (n_orders, n_cells, 2, 6)
+    with components N VY VZ MT MFY MFZ: the local element force
+    ``f = K_local u_local`` with the sign of node 1 reversed, as code_aster's
+    EFGE_ELNO / SIEF_ELNO (internal forces on the section, not nodal forces).
+    """
+    mesh = model.mesh
+    cells = np.asarray(cells, dtype=int)
+    sections = characteristics.sections if characteristics is not None else {}
+    values = _material_values(materials, cells, "beam", need_density=False)
+    angles = cell_angles(model, characteristics, cells)
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    rot = beam.element_rotation(beam.rotation_from_angles(angles), 6)
+    u_local = np.einsum("eij,oej->oei", rot, displacements)
+    out = np.zeros(displacements.shape[:2] + (2, 6))
+    for k, cell in enumerate(cells):
+        modelisation = model.cell_modelisation[int(cell)]
+        if modelisation not in ("POU_D_E", "POU_D_T"):
+            raise ElementError(f"internal forces of {modelisation} cells are not available")
+        k_local = beam.local_matrices(
+            modelisation, "K", lengths[k], sections[int(cell)], values["E"][k], values["NU"][k]
+        )[0]
+        f = u_local[:, k, :] @ k_local.T
+        out[:, k, 0, :] = -f[:, :6]
+        out[:, k, 1, :] = f[:, 6:]
+    return out
+
+
+def beam_stresses(efge: np.ndarray, sections: list[dict], modelisations: list[str]) -> np.ndarray:
+    """SIPO_ELNO (n_orders, n_cells, 2, 6) from EFGE_ELNO: SN = N/A,
+    SVY = VY/(A/AY), SVZ = VZ/(A/AZ) (A for POU_D_E), SMT = MT RT/JX,
+    SMFY = MFY z/IY, SMFZ = -MFZ y/IZ at the fibre (y, z) = (HY/2, HZ/2) of a
+    rectangle, (R, R) of a circle, (RY, RZ) of a general section."""
+    out = np.zeros_like(efge)
+    for k, (section, modelisation) in enumerate(zip(sections, modelisations, strict=True)):
+        area = section["A"]
+        ay = 0.0 if modelisation == "POU_D_E" else section.get("AY", 0.0)
+        az = 0.0 if modelisation == "POU_D_E" else section.get("AZ", 0.0)
+        shear_y = area / ay if ay else area
+        shear_z = area / az if az else area
+        kind = section.get("SECTION", "GENERALE")
+        if kind == "RECTANGLE":
+            fibre_y, fibre_z = section["HY"] / 2.0, section["HZ"] / 2.0
+        elif kind == "CERCLE":
+            fibre_y = fibre_z = section["R"]
+        else:
+            fibre_y, fibre_z = section.get("RY", 1.0), section.get("RZ", 1.0)
+        f = efge[:, k]
+        out[:, k, :, 0] = f[..., 0] / area
+        out[:, k, :, 1] = f[..., 1] / shear_y
+        out[:, k, :, 2] = f[..., 2] / shear_z
+        out[:, k, :, 3] = f[..., 3] / section["JX"] * section.get("RT", 1.0)
+        out[:, k, :, 4] = f[..., 4] / section["IY"] * fibre_z
+        out[:, k, :, 5] = -f[..., 5] / section["IZ"] * fibre_y
+    return out

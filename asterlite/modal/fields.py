@@ -1,0 +1,92 @@
+"""Nodal fields taken from results and combined (CREA_CHAMP EXTR / ASSE / COMB).
+
+A result is read as a stack of nodal fields: ``field_stack(result, name)``
+gives (numbering, values (n_fields, n_dofs), access) where ``access`` holds
+what selects a field (NUME_ORDRE, INST, NUME_MODE, FREQ, NOM_CAS, NOEUD_CMP).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.modes import ModeResult, MultElasResult
+
+
+class FieldError(ValueError):
+    pass
+
+
+def field_stack(result, name: str):
+    if isinstance(result, ModeResult):
+        if name != "DEPL":
+            raise FieldError(f"a modal basis holds DEPL only, not {name}")
+        n = result.n_modes
+        access = {
+            "NUME_ORDRE": np.arange(1, n + 1),
+            "NUME_MODE": result.mode_numbers,
+            "FREQ": np.asarray(result.frequencies, dtype=float),
+            "NOEUD_CMP": np.asarray(result.mode_labels or [""] * n, dtype=object),
+        }
+        return result.numbering, np.asarray(result.shapes).T, access
+    if isinstance(result, MultElasResult):
+        if name != "DEPL":
+            raise FieldError(f"a mult_elas result holds DEPL only, not {name}")
+        access = {
+            "NUME_ORDRE": np.arange(1, result.n_cases + 1),
+            "NOM_CAS": np.asarray(result.case_names, dtype=object),
+        }
+        return result.numbering, np.asarray(result.fields).T, access
+    fields = getattr(result, "fields", None)
+    numbering = getattr(result, "numbering", None)
+    if isinstance(fields, dict) and numbering is not None:
+        if name not in fields:
+            raise FieldError(f"the result has no field {name} (it has {', '.join(fields)})")
+        values = np.asarray(fields[name], dtype=float)
+        access = {
+            "NUME_ORDRE": np.asarray(getattr(result, "order", np.arange(1, len(values) + 1))),
+            "INST": np.asarray(getattr(result, "times", np.zeros(len(values))), dtype=float),
+        }
+        return numbering, values, access
+    raise FieldError(f"cannot extract nodal fields from a {type(result).__name__}")
+
+
+def match_real(available: np.ndarray, value: float, precision: float, criterion: str) -> int:
+    """Index of the stored parameter equal to ``value`` within the tolerance."""
+    available = np.asarray(available, dtype=float)
+    if available.size == 0:
+        raise FieldError("the result is empty")
+    k = int(np.argmin(np.abs(available - value)))
+    tol = precision * (abs(value) if criterion == "RELATIF" else 1.0)
+    if abs(available[k] - value) > max(tol, 0.0) and available[k] != value:
+        raise FieldError(f"no field at {value:g} (nearest {available[k]:g})")
+    return k
+
+
+def interpolate(times: np.ndarray, values: np.ndarray, t: float) -> np.ndarray:
+    """Linear interpolation in time of a stack of fields (INTERPOL='LIN')."""
+    times = np.asarray(times, dtype=float)
+    if t < times[0] or t > times[-1]:
+        raise FieldError(f"instant {t:g} outside [{times[0]:g}, {times[-1]:g}]")
+    k = int(np.clip(np.searchsorted(times, t) - 1, 0, len(times) - 2))
+    w = (t - times[k]) / (times[k + 1] - times[k])
+    return (1.0 - w) * values[k] + w * values[k + 1]
+
+
+def extreme_over(values: np.ndarray, kind: str, what: str, params: np.ndarray) -> np.ndarray:
+    """Per-DOF extreme over the stack (TYPE_MAXI / TYPE_RESU of CREA_CHAMP EXTR)."""
+    if kind == "MAXI":
+        idx = np.argmax(values, axis=0)
+    elif kind == "MINI":
+        idx = np.argmin(values, axis=0)
+    elif kind == "MAXI_ABS":
+        idx = np.argmax(np.abs(values), axis=0)
+    elif kind == "MINI_ABS":
+        idx = np.argmin(np.abs(values), axis=0)
+    else:
+        raise FieldError(f"TYPE_MAXI={kind!r} on a nodal field")
+    picked = values[idx, np.arange(values.shape[1])]
+    if what == "VALE":
+        return picked
+    if what == "VALE_ABS":
+        return np.abs(picked)
+    return np.asarray(params, dtype=float)[idx]

@@ -1,0 +1,164 @@
+"""Operations of CALC_TABLE on :class:`~asterlite.concepts.table.Table`.
+
+Each function takes a table and returns a new one (the input is never
+modified): rename, drop or keep columns, drop duplicated rows, merge two
+tables on key columns, add a row or a column, add a column computed by a
+formula, and column statistics (CALCUL).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.table import Table, infer_type
+from asterlite.errors import CommandError
+
+
+def copy_table(table: Table) -> Table:
+    return Table(list(table.columns), dict(table.types), [dict(r) for r in table.rows], table.title)
+
+
+def rename(table: Table, old: str, new: str) -> Table:
+    table.require(old)
+    if new in table.types and new != old:
+        raise CommandError(f"RENOMME: the table already has a parameter {new!r}")
+    out = copy_table(table)
+    out.columns = [new if c == old else c for c in out.columns]
+    out.types = {(new if c == old else c): t for c, t in out.types.items()}
+    out.rows = [{(new if k == old else k): v for k, v in r.items()} for r in out.rows]
+    return out
+
+
+def drop_columns(table: Table, names) -> Table:
+    for name in names:
+        table.require(name)
+    kept = [c for c in table.columns if c not in names]
+    rows = [{k: v for k, v in r.items() if k in kept} for r in table.rows]
+    return Table(kept, {c: table.types[c] for c in kept}, rows, table.title)
+
+
+def unique_rows(table: Table, names) -> Table:
+    """Keep the first row of each combination of values of ``names``."""
+    for name in names:
+        table.require(name)
+    seen, rows = set(), []
+    for row in table.rows:
+        key = tuple(row.get(n) for n in names)
+        if key not in seen:
+            seen.add(key)
+            rows.append(dict(row))
+    return Table(list(table.columns), dict(table.types), rows, table.title)
+
+
+def merge(table: Table, other: Table, keys=(), restrict: bool = False) -> Table:
+    """COMB: add the columns of ``other``. Without keys its rows are appended;
+    with keys, a row of ``other`` updates the rows of ``table`` with the same
+    key values, or is appended (unless RESTREINT='OUI')."""
+    out = copy_table(table)
+    for name in other.columns:
+        out.add_column(name, other.types[name])
+    if not keys:
+        out.rows.extend(dict(r) for r in other.rows)
+        return out
+    for name in keys:
+        table.require(name)
+        other.require(name)
+    index: dict[tuple, list[dict]] = {}
+    for row in out.rows:
+        index.setdefault(tuple(row.get(k) for k in keys), []).append(row)
+    for row in other.rows:
+        key = tuple(row.get(k) for k in keys)
+        if key in index:
+            for target in index[key]:
+                target.update(row)
+        elif not restrict:
+            out.rows.append(dict(row))
+    if restrict:
+        keys_of_other = {tuple(r.get(k) for k in keys) for r in other.rows}
+        out.rows = [r for r in out.rows if tuple(r.get(k) for k in keys) in keys_of_other]
+    return out
+
+
+def add_row(table: Table, names, values) -> Table:
+    if len(names) != len(values):
+        raise CommandError("AJOUT_LIGNE: NOM_PARA and VALE differ in length")
+    out = copy_table(table)
+    out.add_row(dict(zip(names, values, strict=True)))
+    return out
+
+
+def add_column(table: Table, names, values=None, column_values=None) -> Table:
+    """AJOUT_COLONNE: one constant per new column (VALE), or one column of
+    values (VALE_COLONNE, one per row)."""
+    out = copy_table(table)
+    if column_values is not None:
+        if len(names) != 1:
+            raise CommandError("AJOUT_COLONNE with VALE_COLONNE takes one NOM_PARA")
+        if len(column_values) != len(out.rows):
+            raise CommandError(
+                f"AJOUT_COLONNE: {len(column_values)} values for {len(out.rows)} rows"
+            )
+        out.add_column(names[0], infer_type(column_values[0]))
+        for row, value in zip(out.rows, column_values, strict=True):
+            row[names[0]] = value
+        return out
+    if len(names) != len(values):
+        raise CommandError("AJOUT_COLONNE: NOM_PARA and VALE differ in length")
+    for name, value in zip(names, values, strict=True):
+        out.add_column(name, infer_type(value))
+        for row in out.rows:
+            row[name] = value
+    return out
+
+
+def formula_column(table: Table, formula, new_name: str, columns=None) -> Table:
+    """OPER: a column ``new_name`` = formula(columns), computed on the rows
+    where every argument is present (the others stay empty)."""
+    names = list(columns) if columns else list(formula.NOM_PARA)
+    if len(names) != len(formula.NOM_PARA):
+        raise CommandError(
+            f"OPER: the formula takes {len(formula.NOM_PARA)} parameters, "
+            f"NOM_COLONNE gives {len(names)}"
+        )
+    for name in names:
+        table.require(name)
+    out = copy_table(table)
+    out.add_column(new_name, "C" if getattr(formula, "complex_result", False) else "R")
+    complete = [r for r in out.rows if all(r.get(n) is not None for n in names)]
+    if complete:
+        args = [np.array([r[n] for r in complete], dtype=float) for n in names]
+        values = np.atleast_1d(formula.evaluate(*args))
+        for row, value in zip(complete, values, strict=True):
+            row[new_name] = complex(value) if np.iscomplexobj(value) else float(value)
+    return out
+
+
+STATISTICS = {
+    "MAXI": np.max,
+    "MINI": np.min,
+    "SOMM": np.sum,
+    "MOY": np.mean,
+    "MAXI_ABS": lambda v: v[np.argmax(np.abs(v))],
+    "MINI_ABS": lambda v: v[np.argmin(np.abs(v))],
+    "SOMM_ABS": lambda v: np.sum(np.abs(v)),
+}
+
+
+def statistics(table: Table, names, kinds) -> Table:
+    """CALCUL: one row per TYPE_CALCUL, one column per parameter.
+
+    MAXI_ABS / MINI_ABS keep the sign of the value of largest / smallest
+    magnitude, as code_aster."""
+    out = Table(title=table.title)
+    out.add_column("TYPE_CALCUL", "K8")
+    for name in names:
+        table.require(name)
+        out.add_column(name, table.types[name])
+    for kind in kinds:
+        row = {"TYPE_CALCUL": kind}
+        for name in names:
+            values = np.array([v for v in table.column(name) if v is not None])
+            if values.size:
+                row[name] = STATISTICS[kind](values).item()
+        out.add_row(row)
+    return out

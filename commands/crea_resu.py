@@ -1,0 +1,94 @@
+"""CREA_RESU OPERATION='AFFE' for the result types of modal recombination
+studies: MULT_ELAS (one field per NOM_CAS, enriching RESULTAT / reuse) and
+DYNA_TRANS (DEPL/VITE/ACCE fields at instants)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.modes import MultElasResult
+from asterlite.concepts.transient import DynaTrans
+from asterlite.fem.selection import as_tuple
+from asterlite.modal.renumber import transfer
+
+
+def _nodal(ctx, occ) -> NodalField:
+    field = occ["CHAM_GD"]
+    if not isinstance(field, NodalField):
+        ctx.unsupported("CREA_RESU from a non-nodal field", "CHAM_GD", occ)
+    return field
+
+
+def _mult_elas(ctx, kw):
+    base = kw.get("RESULTAT") or (ctx.reuse if isinstance(ctx.reuse, MultElasResult) else None)
+    numbering = base.numbering if base is not None else None
+    columns = [] if base is None else list(np.asarray(base.fields).T)
+    names = [] if base is None else list(base.case_names)
+    for occ in kw.factor("AFFE"):
+        if occ["NOM_CHAM"] != "DEPL":
+            ctx.unsupported(f"MULT_ELAS field {occ['NOM_CHAM']}", "NOM_CHAM", occ)
+        field = _nodal(ctx, occ)
+        if numbering is None:
+            numbering = field.numbering
+        elif field.numbering.mesh is not numbering.mesh:
+            ctx.error("the fields are on different meshes", "CHAM_GD", occ)
+        values = transfer(field.values, field.numbering, numbering)
+        name = str(occ.get("NOM_CAS") or f"CAS_{len(names) + 1}")
+        if name in names:
+            columns[names.index(name)] = values
+        else:
+            columns.append(values)
+            names.append(name)
+    return MultElasResult(numbering=numbering, fields=np.column_stack(columns), case_names=names)
+
+
+def _instants(ctx, occ) -> np.ndarray:
+    if occ.get("LIST_INST") is not None:
+        values = np.asarray(occ["LIST_INST"].values, dtype=float)
+        start = int(occ.get("NUME_INIT") or 1) - 1
+        stop = int(occ.get("NUME_FIN") or len(values))
+        return values[start:stop]
+    return np.asarray(as_tuple(occ["INST"]), dtype=float)
+
+
+def _dyna_trans(ctx, kw):
+    base = kw.get("RESULTAT") or (ctx.reuse if isinstance(ctx.reuse, DynaTrans) else None)
+    numbering = base.numbering if base is not None else None
+    times = [] if base is None else list(np.asarray(base.times, dtype=float))
+    store: dict[str, dict[float, np.ndarray]] = {}
+    if base is not None:
+        for name, stack in base.fields.items():
+            store[name] = {t: np.asarray(row) for t, row in zip(times, stack, strict=True)}
+    for occ in kw.factor("AFFE"):
+        field = _nodal(ctx, occ)
+        if numbering is None:
+            numbering = field.numbering
+        values = transfer(field.values, field.numbering, numbering)
+        for t in _instants(ctx, occ):
+            t = float(t)
+            if t not in times:
+                times.append(t)
+            store.setdefault(occ["NOM_CHAM"], {})[t] = values
+    times = sorted(times)
+    fields = {
+        name: np.array([by_time.get(t, np.zeros(numbering.n_dofs)) for t in times])
+        for name, by_time in store.items()
+    }
+    return DynaTrans(
+        numbering=numbering,
+        times=np.array(times),
+        order=np.arange(1, len(times) + 1),
+        fields=fields,
+    )
+
+
+def run(ctx, kw):
+    if kw["OPERATION"] != "AFFE":
+        ctx.unsupported(f"CREA_RESU OPERATION={kw['OPERATION']!r}", "OPERATION", kw)
+    type_resu = kw["TYPE_RESU"]
+    if type_resu == "MULT_ELAS":
+        return _mult_elas(ctx, kw)
+    if type_resu == "DYNA_TRANS":
+        return _dyna_trans(ctx, kw)
+    ctx.unsupported(f"CREA_RESU TYPE_RESU={type_resu!r}", "TYPE_RESU", kw)

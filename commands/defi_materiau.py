@@ -1,0 +1,65 @@
+"""DEFI_MATERIAU: material parameters (ELAS, ELAS_FO with constant functions,
+other behaviours kept as given)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.assembly import Material
+
+_FUNCTION_PARAMETERS = ("E", "NU", "RHO", "ALPHA", "AMOR_ALPHA", "AMOR_BETA", "AMOR_HYST")
+
+
+def _constant_value(ctx, occ, name: str, func) -> float:
+    """The value of a function that does not vary (ELAS_FO used with no
+    temperature field): its ordinates must all be equal."""
+    ordinates = getattr(func, "ordinates", None)
+    if ordinates is None:
+        if getattr(func, "NOM_PARA", None) is not None and callable(func):
+            ctx.unsupported(f"ELAS_FO/{name} given by a formula", name, occ)
+        ctx.error(f"{name} must be a function", name, occ)
+    values = np.asarray(ordinates, dtype=float)
+    if values.size == 0 or not np.allclose(values, values[0], rtol=1e-12, atol=0.0):
+        ctx.unsupported(
+            f"ELAS_FO/{name} varying with {getattr(func, 'NOM_PARA', '?')} "
+            "(no command variable field is applied)",
+            name,
+            occ,
+        )
+    return float(values[0])
+
+
+def run(ctx, kw):
+    base = kw.get("MATER")
+    behaviours = {k: dict(v) for k, v in base.behaviours.items()} if base is not None else {}
+    if ctx.reuse is not None and base is None:
+        behaviours = {k: dict(v) for k, v in ctx.reuse.behaviours.items()}
+    for occ in kw.factor("ELAS"):
+        values = {k: v for k, v in occ.items() if v is not None}
+        if "E" not in values:
+            ctx.unsupported("ELAS without E (K/MU or CELE_P/CELE_S)", "E", occ)
+        behaviours["ELAS"] = {k: float(v) for k, v in values.items()}
+    for occ in kw.factor("ELAS_FO"):
+        elas = {}
+        for name, value in occ.items():
+            if value is None:
+                continue
+            if name in _FUNCTION_PARAMETERS:
+                elas[name] = _constant_value(ctx, occ, name, value)
+            elif isinstance(value, (int, float)):
+                elas[name] = float(value)
+        behaviours["ELAS"] = elas
+    for keyword in ("ECRO_LINE", "ECRO_LINE_FO", "TRACTION"):
+        for occ in kw.factor(keyword):
+            behaviours[keyword] = dict(occ)
+    elas = behaviours.get("ELAS", {})
+    if elas:
+        ctx.log(
+            "material ELAS: "
+            + ", ".join(
+                f"{k}={elas[k]:g}"
+                for k in ("E", "NU", "RHO", "AMOR_ALPHA", "AMOR_BETA")
+                if k in elas
+            )
+        )
+    return Material(behaviours=behaviours)
