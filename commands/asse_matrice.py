@@ -19,6 +19,12 @@ def run(ctx, kw):
         matrix = assemble_blocks(blocks, numbering)
     except KeyError:
         ctx.error("the element matrices use DOFs the numbering does not have", "NUME_DDL", kw)
+    first = elementary[0]
     return AssembledMatrix(
-        numbering=numbering, matrix=matrix, kind=_KIND.get(elementary[0].option, "RIGI")
+        numbering=numbering,
+        matrix=matrix,
+        kind=_KIND.get(first.option, "RIGI"),
+        model=first.model,
+        characteristics=first.characteristics,
+        materials=first.materials,
     )

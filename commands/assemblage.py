@@ -49,7 +49,15 @@ def run(ctx, kw):
         except (ElementError, ValueError) as exc:
             ctx.error(str(exc), "CARA_ELEM", kw)
         matrix = assemble_blocks(blocks, numbering)
-        ctx.bind(occ["MATRICE"], AssembledMatrix(numbering=numbering, matrix=matrix, kind=kind))
+        assembled = AssembledMatrix(
+            numbering=numbering,
+            matrix=matrix,
+            kind=kind,
+            model=model,
+            characteristics=characteristics,
+            materials=materials,
+        )
+        ctx.bind(occ["MATRICE"], assembled)
     for occ in kw.factor("VECT_ASSE"):
         if occ.get("OPTION", "CHAR_MECA") != "CHAR_MECA":
             ctx.unsupported(f"ASSEMBLAGE VECT_ASSE OPTION={occ['OPTION']!r}", "OPTION", occ)

@@ -130,8 +130,8 @@ def test_random_histories_finite_and_dissipative(points):
     crushing never decreases."""
     p = support()
     path = np.concatenate([[0.0], np.repeat(points, 1), [0.0]])
-    fine = np.concatenate([np.linspace(a, b, 50, endpoint=False) for a, b in zip(path[:-1],
-                                                                              path[1:], strict=True)])  # fmt: skip
+    pairs = zip(path[:-1], path[1:], strict=True)
+    fine = np.concatenate([np.linspace(a, b, 50, endpoint=False) for a, b in pairs])
     fine = np.append(fine, 0.0)
     state = np.zeros(N_VINT)
     state[:] = initial_state(p)

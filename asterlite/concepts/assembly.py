@@ -213,6 +213,11 @@ class AssembledMatrix(Concept):
     numbering: DofNumbering
     matrix: Any  # scipy.sparse.csr_matrix (n_dofs, n_dofs)
     kind: str = "RIGI"  # RIGI, MASS, AMOR
+    # what the matrix was built from (code_aster keeps them in the matrix):
+    # Model, ElementCharacteristics, MaterialField, or None
+    model: Any = None
+    characteristics: Any = None
+    materials: Any = None
 
 
 @dataclass(eq=False)

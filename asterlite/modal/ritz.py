@@ -8,6 +8,9 @@ in the Kahan-Parlett variant (a vector is re-orthogonalised once when its
 norm drops below α = 0.717 of its previous norm, and zeroed if it drops
 again), then vectors whose normalised inner products with an earlier one
 exceed 1e-8 are zeroed, and -- for RITZ only -- the zero vectors dropped.
+asterlite also zeroes a vector whose norm falls below 1e-10 of its initial
+norm (only round-off is left), where the plain algorithm could keep
+normalised noise.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 KAHAN_PARLETT_ALPHA = 0.717
+DEPENDENT_RATIO = 1e-10  # asterlite's guard: relative norm left by a dependent vector
 _TINY = np.finfo(float).tiny ** (2.0 / 3.0)
 
 
@@ -31,6 +35,7 @@ def gram_schmidt(
     n = q.shape[1]
     for i in range(n):
         v = q[:, i]
+        start = np.sqrt(abs(_inner(matrix, v, v)))
         for j in range(i):
             before = _inner(matrix, v, v)
             for attempt in range(2):
@@ -42,6 +47,8 @@ def gram_schmidt(
                     v = np.zeros_like(v)
                 before = after
         norm = np.sqrt(abs(_inner(matrix, v, v)))
+        if norm <= DEPENDENT_RATIO * start:
+            norm = 0.0  # only round-off is left: the vector depends on the previous ones
         q[:, i] = v / max(norm, _TINY) if norm > 0 else 0.0
     return q
 

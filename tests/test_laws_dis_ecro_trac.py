@@ -1,0 +1,135 @@
+"""DIS_ECRO_TRAC: curve following, elastic unloading, energy balance."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from asterlite.dynamics.laws.dis_ecro_trac import (
+    N_VINT,
+    N_WORK,
+    V_BACK_FORCE,
+    V_DEPL_PLAS,
+    V_DISSIP,
+    V_FORCE,
+    V_PCUM,
+    hardening_force,
+    prepare_dis_ecro_trac,
+)
+from asterlite.dynamics.laws.discrete_hardening import N_Y
+from asterlite.dynamics.laws.tabulated import Curve, LawError
+
+X = np.array([0.0, 0.01, 0.03, 0.08])
+F = np.array([0.0, 100.0, 140.0, 170.0])  # k = 1e4, hardening slopes decreasing
+K = 1.0e4
+
+
+def axial(**kw):
+    return prepare_dis_ecro_trac(dict(FX=Curve(X, F), **kw))
+
+
+def drive(params, path, component=0, dt=1.0e-3):
+    """Prescribed elongation path (one component); returns forces and state."""
+    rate, work = np.zeros(3), np.zeros((N_WORK, N_Y))
+    state = np.zeros(N_VINT)
+    forces, u = [0.0], 0.0
+    for target in path[1:]:
+        vrel = np.zeros(3)
+        vrel[component] = -(target - u) / dt  # v1 - v2 = - elongation rate
+        f = hardening_force(params, vrel, dt, state, state, rate, work)
+        assert f[3]
+        forces.append(f[component])
+        u = target
+    return np.array(forces), state
+
+
+def test_monotonic_loading_follows_the_curve():
+    p = axial(RESI_INTE=1e-8)
+    path = np.linspace(0.0, 0.075, 1501)
+    forces, state = drive(p, path)
+    assert np.allclose(forces, np.interp(path, X, F), atol=0.05)
+    plastic = path[-1] - forces[-1] / K
+    assert state[V_DEPL_PLAS] == pytest.approx(plastic, rel=1e-3)
+    assert state[V_PCUM] == pytest.approx(plastic, rel=1e-3)
+
+
+def test_unloading_is_elastic_and_isotropic_reloading_in_compression():
+    p = axial(RESI_INTE=1e-8)
+    path = np.concatenate([np.linspace(0.0, 0.05, 501), np.linspace(0.05, -0.05, 1001)[1:]])
+    forces, _ = drive(p, path)
+    f_top = np.interp(0.05, X, F)
+    back = (path < 0.05) & (forces > -f_top + 1.0)  # elastic part of the unloading
+    expected = f_top - K * (0.05 - path[back])
+    assert np.allclose(forces[back], expected, atol=0.05)
+    # isotropic: compressive yield at the hardened threshold
+    assert forces.min() == pytest.approx(-f_top, abs=0.5)
+
+
+@pytest.mark.parametrize("hardening", ["ISOTROPE", "CINEMATIQUE"])
+def test_loop_energy_balance_transverse(hardening):
+    """Work = ½|F|²/k (+ ½|X|²/H kinematic) + dissipated energy, along a
+    closed in-plane loop; the loop area is the dissipation."""
+    xs, fs = (X[:3], F[:3]) if hardening == "CINEMATIQUE" else (X, F)
+    p = prepare_dis_ecro_trac(dict(FTAN=Curve(xs, fs), ECROUISSAGE=hardening, RESI_INTE=1e-8))
+    h = (fs[2] - fs[1]) / ((xs[2] - fs[2] / K) - (xs[1] - fs[1] / K))
+    theta = np.linspace(0.0, 4.0 * math.pi, 4001)
+    radius = 0.02
+    uy, uz = radius * np.sin(theta), radius * (1.0 - np.cos(theta)) * 0.5
+    rate, work = np.zeros(3), np.zeros((N_WORK, N_Y))
+    state = np.zeros(N_VINT)
+    done, dt = 0.0, 1.0e-3
+    for i in range(1, theta.size):
+        vrel = np.array([0.0, -(uy[i] - uy[i - 1]) / dt, -(uz[i] - uz[i - 1]) / dt])
+        f_old = state[V_FORCE : V_FORCE + 3].copy()
+        _, fy, fz, ok = hardening_force(p, vrel, dt, state, state, rate, work)
+        assert ok
+        done += 0.5 * (f_old[1] + fy) * (uy[i] - uy[i - 1]) + 0.5 * (f_old[2] + fz) * (
+            uz[i] - uz[i - 1]
+        )
+    f = state[V_FORCE : V_FORCE + 3]
+    stored = 0.5 * f @ f / K
+    if hardening == "CINEMATIQUE":
+        x = state[V_BACK_FORCE : V_BACK_FORCE + 3]
+        stored += 0.5 * x @ x / h
+    assert state[V_DISSIP] > 0.0
+    assert done == pytest.approx(stored + state[V_DISSIP], rel=2e-3)
+
+
+def test_curve_checks():
+    with pytest.raises(LawError, match="slopes must decrease"):
+        prepare_dis_ecro_trac(dict(FX=Curve(X, [0.0, 100.0, 110.0, 200.0])))
+    with pytest.raises(LawError, match=r"first point must be \(0, 0\)"):
+        prepare_dis_ecro_trac(dict(FX=Curve(X + 0.01, F)))
+    with pytest.raises(LawError, match="exactly 3 points"):
+        prepare_dis_ecro_trac(dict(FTAN=Curve(X, F), ECROUISSAGE="CINEMATIQUE"))
+    with pytest.raises(LawError, match="EXCLU"):
+        prepare_dis_ecro_trac(dict(FX=Curve(X, F, "CONSTANT", "EXCLU")))
+
+
+def test_beyond_the_last_point_gives_nan():
+    p = axial()
+    forces = []
+    rate, work = np.zeros(3), np.zeros((N_WORK, N_Y))
+    state = np.zeros(N_VINT)
+    for _ in range(200):
+        fx, _, _, _ = hardening_force(p, np.array([-1.0, 0.0, 0.0]), 1.0e-3, state, state, rate,
+                                      work)  # fmt: skip
+        forces.append(fx)
+    assert math.isnan(forces[-1])
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.floats(-0.04, 0.04), min_size=2, max_size=12))
+def test_random_histories_finite_and_dissipative(points):
+    p = axial()
+    path = np.concatenate([[0.0], np.repeat(points, 1)])
+    fine = np.concatenate(
+        [np.linspace(a, b, 20, endpoint=False) for a, b in zip(path[:-1], path[1:], strict=True)]
+        + [path[-1:]]
+    )
+    forces, state = drive(p, fine)
+    assert np.all(np.isfinite(forces))
+    assert state[V_DISSIP] >= 0.0
+    assert np.all(np.abs(forces) <= F[-1] + 1e-6)
