@@ -28,7 +28,7 @@ def run(ctx, kw):
     if isinstance(given, DofNumbering):
         numbering = given
     else:
-        numbering = numbering_for(model, loads)
+        numbering = numbering_for(model, loads, characteristics, materials)
         if given is not None:
             ctx.bind(given, numbering)
     for occ in kw.factor("MATR_ASSE"):

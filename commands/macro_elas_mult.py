@@ -17,7 +17,6 @@ from asterlite.fem.assemble import assemble_blocks, assemble_terms
 from asterlite.fem.constraints import ConstraintError
 from asterlite.fem.elements import ElementError, element_blocks
 from asterlite.fem.selection import as_tuple
-from asterlite.lang.values import CO
 from asterlite.modal.renumber import transfer
 from asterlite.modal.static_modes import StaticModeError, static_solve
 
@@ -64,7 +63,7 @@ def run(ctx, kw):
         numbering = given
     else:
         numbering = numbering_for(model, global_loads + [ld for c in case_loads for ld in c])
-        if isinstance(given, CO):
+        if given is not None:  # NUME_DDL=CO("NAME"): bind the numbering built here
             ctx.bind(given, numbering)
     try:
         blocks = element_blocks(model, kw.get("CARA_ELEM"), "K", materials=kw.get("CHAM_MATER"))

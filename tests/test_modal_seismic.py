@@ -194,7 +194,6 @@ def test_macro_elas_mult_matches_a_direct_solve():
         M,
         ddl_impo=[{"GROUP_NO": "FIRST", "DX": 0.0}, {"TOUT": "OUI", "DY": 0.0, "DZ": 0.0}],
     )
-    base = k.matrix  # noqa: F841 - the same stiffness the macro assembles
     blocked = run(
         session,
         "AFFE_CHAR_MECA",
@@ -202,7 +201,6 @@ def test_macro_elas_mult_matches_a_direct_solve():
         DDL_IMPO=[{"GROUP_NO": "FIRST", "DX": 0.0}, {"TOUT": "OUI", "DY": 0.0, "DZ": 0.0}],
     )
     tip = run(session, "AFFE_CHAR_MECA", MODELE=model, FORCE_NODALE={"NOEUD": "N6", "FX": 3.0})
-    cara = k  # characteristics come from the chain helper's session
     result = run(
         session,
         "MACRO_ELAS_MULT",
@@ -212,7 +210,6 @@ def test_macro_elas_mult_matches_a_direct_solve():
         NUME_DDL=CO("NUM2"),
         CAS_CHARGE=[{"NOM_CAS": "TIP", "CHAR_MECA": tip}],
     )
-    del cara
     assert result.case_names == ["TIP"]
     numbering = session.bound["NUM2"]
     dx = numbering.dof_indices(range(N), "DX")

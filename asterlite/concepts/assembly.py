@@ -153,6 +153,11 @@ class DofNumbering(Concept):
     mesh: Mesh
     dofs: list[tuple[int, str]]
     relations: list[LinearRelation] = field(default_factory=list)
+    # the model (and, when known, characteristics / material field) the
+    # numbering was built for: CALC_CHAMP finds them from a result's numbering
+    model: Any = None
+    characteristics: Any = None
+    materials: Any = None
 
     def __post_init__(self) -> None:
         self.index = {dof: i for i, dof in enumerate(self.dofs)}

@@ -1,0 +1,78 @@
+"""Element fields computed from nodal displacements (CALC_CHAMP).
+
+- ``EFGE_ELNO`` / ``SIEF_ELNO`` of beams: generalised internal forces N VY VZ
+  MT MFY MFZ at both nodes (:func:`asterlite.fem.beam_elements.beam_local_forces`);
+- ``SIPO_ELNO``: the stresses derived from them
+  (:func:`asterlite.fem.beam_elements.beam_stresses`);
+- ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
+  cells sharing it (code_aster's nodal smoothing).
+
+Values keep every order of the result: (n_orders, n_cells, 2, n_components).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.assembly import ElementField, NodalComponentField
+from asterlite.fem.beam_elements import (
+    EFGE_COMPONENTS,
+    SIPO_COMPONENTS,
+    beam_local_forces,
+    beam_stresses,
+)
+
+BEAM_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+ELNO_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO", "SIPO_ELNO")
+NOEU_OPTIONS = ("EFGE_NOEU", "SIEF_NOEU", "SIPO_NOEU")
+
+
+def element_displacements(mesh, numbering, cells, values: np.ndarray) -> np.ndarray:
+    """(n_orders, n_cells, 12) beam DOFs (DX..DRZ of both nodes) gathered from
+    nodal values (n_orders, n_dofs); DOFs absent from the numbering are 0."""
+    cells = np.asarray(cells, dtype=int)
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    nodes = np.repeat(conn, 6, axis=1).ravel()
+    comps = list(BEAM_COMPONENTS) * (2 * len(cells))
+    rows = numbering.dof_indices(nodes, comps)
+    gathered = np.zeros((values.shape[0], rows.size))
+    present = rows >= 0
+    gathered[:, present] = values[:, rows[present]]
+    return gathered.reshape(values.shape[0], len(cells), 12)
+
+
+def beam_element_fields(
+    model, characteristics, materials, numbering, cells, values: np.ndarray, options
+) -> dict[str, ElementField]:
+    """The requested ELNO fields of beam cells for nodal values (n_orders, n_dofs)."""
+    cells = np.asarray(cells, dtype=int)
+    u = element_displacements(model.mesh, numbering, cells, values)
+    efge = beam_local_forces(model, characteristics, materials, cells, u)
+    out = {}
+    for name in options:
+        if name in ("EFGE_ELNO", "SIEF_ELNO"):
+            out[name] = ElementField(name, cells, EFGE_COMPONENTS, efge)
+        elif name == "SIPO_ELNO":
+            sections = [characteristics.sections[int(c)] for c in cells]
+            kinds = [model.cell_modelisation[int(c)] for c in cells]
+            out[name] = ElementField(
+                name, cells, SIPO_COMPONENTS, beam_stresses(efge, sections, kinds)
+            )
+        else:
+            raise ValueError(f"unknown element field {name}")
+    return out
+
+
+def nodal_average(field: ElementField, mesh, name: str) -> NodalComponentField:
+    """``*_NOEU`` from an ELNO field: at each node, the mean over the cells
+    holding it of their value at that node."""
+    conn = np.array([mesh.cell_nodes[c] for c in field.cells], dtype=int)
+    nodes = np.unique(conn)
+    position = np.searchsorted(nodes, conn)  # (n_cells, n_points)
+    n_orders, _, _, n_cmp = field.values.shape
+    sums = np.zeros((n_orders, len(nodes), n_cmp))
+    counts = np.zeros(len(nodes))
+    for point in range(conn.shape[1]):
+        np.add.at(sums, (slice(None), position[:, point]), field.values[:, :, point, :])
+        np.add.at(counts, position[:, point], 1.0)
+    return NodalComponentField(name, nodes, field.components, sums / counts[None, :, None])
