@@ -1,4 +1,4 @@
-"""Command-line interface: ``asterlite run | check | corpus``.
+"""Command-line interface: ``asterlite run | check | corpus | sweep | plot``.
 
 Exit status: 0 when every TEST_* check is OK (or a check finds no error),
 1 when a check is NOOK, 2 on any error or unsupported command.
@@ -65,6 +65,80 @@ def _corpus(args) -> int:
     return 0 if all(r["status"] == "PASS" for r in rows) else 1
 
 
+def _sweep(args) -> int:
+    from asterlite.runtime import sweep
+
+    deck = Path(args.deck)
+    try:
+        settings = [sweep.parse_setting(text) for text in args.set]
+        sweep.variants(settings)  # rejects a name set twice before anything runs
+        unknown = sweep.unknown_names(deck, settings)
+    except sweep.SweepError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    if unknown:
+        print(f"error: --set {', '.join(unknown)}: the deck never assigns it", file=sys.stderr)
+        return 2
+    output = Path(args.output) if args.output else Path("asterlite-out") / f"{deck.stem}-sweep"
+    variables = [s.name for s in settings]
+
+    def progress(row):
+        if not args.quiet:
+            where = " ".join(f"{name}={row[name]!r}" for name in variables)
+            print(f"  {where}: {row['status']}", flush=True)
+
+    with sweep.dask_client(args.scheduler, args.workers) as client:
+        rows = sweep.run_sweep(deck, settings, output, client, progress=progress)
+    paths = sweep.write_tables(rows, variables, output)
+    print(sweep.format_sweep_table(rows, variables))
+    print("table: " + ", ".join(str(p) for p in paths))
+    return sweep.sweep_exit_code(rows)
+
+
+def _plot(args) -> int:
+    from asterlite.errors import AsterliteError
+    from asterlite.post import plots
+
+    try:
+        path = plots.plot_from_store(
+            Path(args.result),
+            result=args.name,
+            node=args.node,
+            component=args.cmp,
+            shock=args.shock,
+            quantity=args.quantity,
+            field=args.field,
+            output=Path(args.output) if args.output else None,
+        )
+    except (AsterliteError, ValueError, KeyError, OSError) as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    print(f"plot: {path}")
+    return 0
+
+
+def _port(args) -> int:
+    from asterlite.errors import AsterliteError
+    from asterlite.legacy.port import describe_changes, port_file
+
+    deck = Path(args.deck)
+    try:
+        result = port_file(deck)
+    except (AsterliteError, OSError) as error:
+        print(f"{deck}: {error}", file=sys.stderr)
+        return 2
+    changes = describe_changes(result)
+    if args.output:
+        Path(args.output).write_text(result.text, encoding="utf-8")
+        print("\n".join(changes) if changes else f"{deck}: nothing to port")
+        print(f"ported deck: {args.output}")
+    else:
+        sys.stdout.write(result.text)
+        for line in changes:
+            print(line, file=sys.stderr)
+    return 2 if result.skipped else 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="asterlite",
@@ -83,6 +157,11 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--format", choices=("text", "json"), default="text")
     check.set_defaults(handler=_check)
 
+    port = commands.add_parser("port", help="rewrite a legacy deck in current syntax")
+    port.add_argument("deck")
+    port.add_argument("-o", "--output", help="write the ported deck here (default: stdout)")
+    port.set_defaults(handler=_port)
+
     corpus = commands.add_parser("corpus", help="run every deck folder under a directory")
     corpus.add_argument("directory")
     corpus.add_argument("--json", help="write the table as JSON to this file")
@@ -91,6 +170,39 @@ def build_parser() -> argparse.ArgumentParser:
     corpus.add_argument("--timeout", type=float, default=900.0, help="seconds per deck")
     corpus.add_argument("-q", "--quiet", action="store_true")
     corpus.set_defaults(handler=_corpus)
+
+    sweep = commands.add_parser(
+        "sweep", help="run a deck for every combination of deck-level variables (Dask)"
+    )
+    sweep.add_argument("deck")
+    sweep.add_argument(
+        "--set",
+        action="append",
+        required=True,
+        metavar="NAME=V1,V2,...",
+        help="values of a deck-level variable (repeat for several variables)",
+    )
+    sweep.add_argument("--scheduler", help="address of an existing Dask scheduler")
+    sweep.add_argument("--workers", type=int, default=2, help="local worker processes")
+    sweep.add_argument("-o", "--output", help="output folder (default asterlite-out/<deck>-sweep)")
+    sweep.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
+    sweep.set_defaults(handler=_sweep)
+
+    plot = commands.add_parser("plot", help="plot a saved transient result (HDF5)")
+    plot.add_argument("result", help="HDF5 result file")
+    plot.add_argument("--name", help="result name in the file (default: the only/first one)")
+    plot.add_argument("--node", help="node of a time history (with --cmp)")
+    plot.add_argument("--cmp", help="component of the node time history, e.g. DX")
+    plot.add_argument(
+        "--field", default="DEPL", choices=("DEPL", "VITE", "ACCE"), help="node field"
+    )
+    plot.add_argument("--shock", help="shock name (INTITULE)")
+    plot.add_argument(
+        "--quantity",
+        help="shock quantity: a stored field (FN, FT1, DYLOC, ...), orbit or wear",
+    )
+    plot.add_argument("-o", "--output", help="image file (.png or .svg)")
+    plot.set_defaults(handler=_plot)
     return parser
 
 

@@ -3,6 +3,7 @@
 from asterlite.catalogues.common import OUI_NON
 
 from asterlite.catalog import EXCLUS, FACT, MACRO, SIMP
+from asterlite.legacy import forms
 
 
 def starting_keywords(poursuite: bool = False) -> dict:
@@ -94,6 +95,7 @@ def starting_keywords(poursuite: bool = False) -> dict:
 
 DEBUT = MACRO(
     nom="DEBUT",
+    compat_syntax=forms.START,  # CODE=_F(NOM=...) of older versions
     fr="Start a study: resources and error behaviour",
     MODE=SIMP(statut="f", typ="TXM", defaut="AUTO", into=("AUTO", "DEBUT", "POURSUITE")),
     **starting_keywords(),

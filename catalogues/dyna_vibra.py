@@ -30,6 +30,7 @@ from asterlite.catalog import (
     equal_to,
     exists,
 )
+from asterlite.legacy import forms
 
 
 def dyna_vibra_type(kw) -> str:
@@ -161,6 +162,7 @@ DYNA_VIBRA = OPER(
     nom="DYNA_VIBRA",
     sd_prod=dyna_vibra_type,
     reentrant="f",
+    compat_syntax=forms.DYNA_VIBRA,  # CHOC=_F(...) and other pre-COMPORTEMENT keywords
     fr="Transient or harmonic dynamic response on a physical or modal (generalized) basis",
     BASE_CALCUL=SIMP(statut="o", typ="TXM", into=("PHYS", "GENE")),
     TYPE_CALCUL=SIMP(statut="o", typ="TXM", into=("HARM", "TRAN")),

@@ -23,5 +23,12 @@ def run(ctx, kw):
         term = float(occ["COEF_R"]) * matrix.matrix
         total = term if total is None else total + term
     if isinstance(first, AssembledMatrix):
-        return AssembledMatrix(numbering=first.numbering, matrix=total.tocsr(), kind=first.kind)
+        return AssembledMatrix(
+            numbering=first.numbering,
+            matrix=total.tocsr(),
+            kind=first.kind,
+            model=first.model,
+            characteristics=first.characteristics,
+            materials=first.materials,
+        )
     return GeneralizedMatrix(numbering=first.numbering, matrix=total, kind=first.kind)

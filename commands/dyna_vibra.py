@@ -24,6 +24,7 @@ from asterlite.dynamics.model import (
     tabulate_excitation,
 )
 from asterlite.errors import NumericalError
+from asterlite.modal.seismic import SeismicError, combined_static_shape
 
 # VERI_PAS (code_aster's step check): fraction of the shortest period, shock
 # stiffness included; RUNGE_KUTTA_* are not checked, NEWMARK and ADAPT_*
@@ -34,6 +35,8 @@ STEP_ONLY_WARNED = ("NEWMARK", "ADAPT_ORDRE1", "ADAPT_ORDRE2")
 
 
 def run(ctx, kw):
+    if kw.get("BASE_CALCUL") == "PHYS" and kw.get("TYPE_CALCUL") == "TRAN":
+        return run_physical(ctx, kw)
     if kw.get("BASE_CALCUL") != "GENE" or kw.get("TYPE_CALCUL") != "TRAN":
         ctx.unsupported(
             f"DYNA_VIBRA BASE_CALCUL={kw.get('BASE_CALCUL')!r} "
@@ -42,7 +45,7 @@ def run(ctx, kw):
             "TYPE_CALCUL",
             kw,
         )
-    for unsupported in ("EXCIT_RESU", "MODE_STAT", "MODE_CORR", "BASE_ELAS_FLUI"):
+    for unsupported in ("EXCIT_RESU", "MODE_CORR", "BASE_ELAS_FLUI"):
         if kw.get(unsupported):
             ctx.unsupported(f"{unsupported} is not implemented", unsupported, kw)
     if kw.get("VITESSE_VARIABLE", "NON") == "OUI":
@@ -72,6 +75,15 @@ def run(ctx, kw):
     instants, pas_arch = archiving(ctx, kw, t0, t_end)
     loads = excitations(ctx, kw, system.n_modes)
     excitation = tabulate_excitation(system.n_modes, loads, t0, t_end, dt / 2.0)
+    supports = support_motions(ctx, kw, basis)
+    if supports:
+        excitation.add_support_motion(
+            shock_support_shapes(shocks, basis, supports),
+            [(s["DEPL"], s["VITE"]) for s in supports],
+            t0,
+            t_end,
+            dt / 2.0,
+        )
     options = SchemeOptions(
         tolerance=schema_kw.get("TOLERANCE", 1.0e-5),
         alpha=schema_kw.get("ALPHA", 0.0),
@@ -98,13 +110,15 @@ def run(ctx, kw):
         f"{result.info['archived']} archived, step {result.info['min_step']:.3g}"
         f"..{result.info['max_step']:.3g}, {result.info['integration_seconds']:.3f} s"
     )
+    if supports:
+        result.info["mult_appui"] = supports
     kept = result.info.get("steps_kept_at_nmax_iter_pas", 0)
     if kept:
         ctx.log(
             f"warning: {kept} steps kept after NMAX_ITER_PAS trials without reaching "
             "the apparent-frequency criterion (code_aster's DYNAMIQUE_18)"
         )
-    return TranGene(
+    produced = TranGene(
         basis=basis,
         times=result.times,
         order=result.order,
@@ -115,6 +129,45 @@ def run(ctx, kw):
         scheme=scheme,
         step=dt,
         info=result.info,
+    )
+    reused = getattr(ctx, "reuse", None)
+    if isinstance(reused, TranGene) and t_init_state is not None:
+        return appended(reused, produced)
+    return produced
+
+
+def appended(previous: TranGene, new: TranGene) -> TranGene:
+    """reuse= continuation: the reused states before the new start, then the
+    new run, its NUME_ORDRE continuing the reused ones."""
+    t0 = new.times[0]
+    keep = previous.times < t0 - 1.0e-12 * max(1.0, abs(t0))
+    start = int(previous.order[np.flatnonzero(~keep)[0]]) if np.any(~keep) else 0
+    shocks = []
+    for old, fresh in zip(previous.shocks, new.shocks, strict=False):
+        fields = {
+            k: np.concatenate([old.fields[k][keep], v])
+            for k, v in fresh.fields.items()
+            if k in old.fields
+        }
+        shocks.append(
+            ShockHistory(
+                fresh.name, fresh.relation, fresh.node_1, fresh.node_2, fields, fresh.parameters
+            )
+        )
+    info = dict(new.info)
+    if "mult_appui" in previous.info and "mult_appui" not in info:
+        info["mult_appui"] = previous.info["mult_appui"]
+    return TranGene(
+        basis=new.basis,
+        times=np.concatenate([previous.times[keep], new.times]),
+        order=np.concatenate([previous.order[keep], start + new.order]),
+        depl=np.concatenate([previous.depl[keep], new.depl]),
+        vite=np.concatenate([previous.vite[keep], new.vite]),
+        acce=np.concatenate([previous.acce[keep], new.acce]),
+        shocks=shocks if previous.shocks else new.shocks,
+        scheme=new.scheme,
+        step=new.step,
+        info=info,
     )
 
 
@@ -405,14 +458,64 @@ def excitations(ctx, kw, n_modes):
     for occ in kw.factor("EXCIT"):
         if occ.get("VECT_ASSE_GENE") is None:
             ctx.unsupported("EXCIT without VECT_ASSE_GENE (NUME_ORDRE, ACCE...)", "NUME_ORDRE", occ)
-        if occ.get("MULT_APPUI") or occ.get("CORR_STAT"):
-            ctx.unsupported("EXCIT MULT_APPUI/CORR_STAT", "MULT_APPUI", occ)
+        if occ.get("CORR_STAT"):
+            ctx.unsupported("EXCIT CORR_STAT (static correction)", "CORR_STAT", occ)
         vector = np.asarray(occ["VECT_ASSE_GENE"].values, dtype=float)[:n_modes]
         mult = occ.get("FONC_MULT")
-        if mult is None:
+        if occ.get("ACCE") is not None:
+            mult = occ["ACCE"]  # relative motion: the load is Φᵀ(-M ψ d) γ(t)
+        elif mult is None:
             mult = float(occ.get("COEF_MULT", 1.0))
         loads.append((vector, mult))
     return loads
+
+
+def support_motions(ctx, kw, basis) -> list[dict]:
+    """MULT_APPUI supports: ψ = Σ_nodes Σ_c DIRECTION_c · (static mode of the
+    node's component c) on the basis DOFs, with the support's DEPL / VITE /
+    ACCE functions (REST_GENE_PHYS adds Σ ψ_k d_k(t) for absolute motion)."""
+    supports = []
+    for occ in kw.factor("EXCIT"):
+        if occ.get("MULT_APPUI") != "OUI":
+            continue
+        static = kw.get("MODE_STAT")
+        if static is None:
+            ctx.error("EXCIT MULT_APPUI='OUI' needs MODE_STAT", "MODE_STAT", kw)
+        mesh = static.numbering.mesh
+        nodes = []
+        for group in as_tuple(occ.get("GROUP_NO")):
+            if group not in mesh.node_groups:
+                ctx.error(f"no node group {group!r} in the mesh", "GROUP_NO", occ)
+            nodes.extend(int(n) for n in mesh.node_groups[group])
+        for name in as_tuple(occ.get("NOEUD")):
+            nodes.append(mesh.node_index[name])
+        direction = np.asarray(as_tuple(occ.get("DIRECTION")) or (1.0, 0.0, 0.0), dtype=float)
+        try:
+            shape = combined_static_shape(static, [mesh.node_names[n] for n in nodes], direction)
+        except SeismicError as error:
+            ctx.error(f"MODE_STAT: {error}", "MODE_STAT", kw)
+        supports.append(
+            {"shape": shape, "DEPL": occ["DEPL"], "VITE": occ["VITE"], "ACCE": occ["ACCE"]}
+        )
+    return supports
+
+
+def shock_support_shapes(shocks, basis, supports) -> np.ndarray:
+    """ψ_k at each shock node: (n_shocks, 2, 3, n_supports)."""
+    out = np.zeros((shocks.count, 2, 3, len(supports)))
+    numbering = basis.numbering
+    for s, spec in enumerate(shocks.specs):
+        for j, node in enumerate((spec.node_1, spec.node_2)):
+            if node is None:
+                continue
+            for c, comp in enumerate(COMPONENTS):
+                try:
+                    row = numbering.dof_index(node, comp)
+                except KeyError:
+                    continue
+                for k, support in enumerate(supports):
+                    out[s, j, c, k] = support["shape"][row]
+    return out
 
 
 # ----------------------------------------------------------------------------- result
@@ -455,6 +558,261 @@ def shock_histories(shocks, vint) -> list[ShockHistory]:
             )
         )
     return histories
+
+
+# ----------------------------------------------------------------------------- PHYS
+
+
+PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
+
+
+def run_physical(ctx, kw):
+    """TYPE_CALCUL='TRAN', BASE_CALCUL='PHYS' (code_aster's DYNA_LINE_TRAN):
+    linear, on the assembled matrices; a ``DynaTrans`` on the numbering's DOFs."""
+    from asterlite.concepts.transient import DynaTrans
+    from asterlite.dynamics.physical import adapt_ordre2, diff_centre, newmark, wilson
+    from asterlite.dynamics.physical.archive import Archive
+    from asterlite.dynamics.physical.system import build_system
+
+    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
+    scheme = schema_kw.get("SCHEMA", "NEWMARK")
+    if scheme not in PHYSICAL_SCHEMES:
+        ctx.unsupported(
+            f"SCHEMA={scheme!r} on a physical basis (code_aster's PHYS transient offers "
+            f"{', '.join(PHYSICAL_SCHEMES)})",
+            "SCHEMA",
+            schema_kw,
+        )
+    for unsupported in ("EXCIT_RESU", "MODE_STAT", "AMOR_MODAL"):
+        if kw.get(unsupported):
+            ctx.unsupported(f"{unsupported} on a physical basis", unsupported, kw)
+    mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
+    numbering = stiffness_matrix.numbering
+    damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
+    loads = physical_loads(ctx, kw, numbering, stiffness_matrix)
+    system = build_system(numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads)
+
+    reused = ctx.reuse if isinstance(getattr(ctx, "reuse", None), DynaTrans) else None
+    q, v, a, t_state, order_offset = physical_initial_state(ctx, kw, system)
+    times, dt = physical_instants(ctx, kw, t_state)
+    if a is None:
+        a = system.initial_acceleration(times[0], q, v)
+    archive = Archive(system.n_free)
+    archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    started = __import__("time").perf_counter()
+    try:
+        if scheme == "ADAPT_ORDRE2":
+            inverse = checked_diagonal_mass(ctx, system, scheme)
+            if system.elimination.multi_rows is not None and system.elimination.multi_rows.size:
+                ctx.error("ADAPT_ORDRE2 on a physical basis does not accept LIAISON_DDL relations")
+            options = {
+                "vite_min": first_value(schema_kw.get("VITE_MIN", "NORM")),
+                "coef_mult_pas": schema_kw.get("COEF_MULT_PAS", 1.1),
+                "coef_divi_pas": schema_kw.get("COEF_DIVI_PAS", 1.3333334),
+                "dt_min": schema_kw.get("PAS_MINI")
+                if schema_kw.get("PAS_MINI") is not None
+                else dt * schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
+                "nb_poin_periode": int(schema_kw.get("NB_POIN_PERIODE", 50)),
+                "nmax_iter_pas": int(schema_kw.get("NMAX_ITER_PAS", 16)),
+                "pas_arch": int(archiving.get("PAS_ARCH") or 1),
+            }
+            neighbours = adapt_ordre2.same_component_neighbours(numbering, system.elimination.free)
+            stats = adapt_ordre2.integrate(
+                system,
+                times[0],
+                times[-1],
+                dt,
+                q,
+                v,
+                a,
+                archive,
+                inverse,
+                options,
+                neighbours,
+                ctx.log,
+            )
+        else:
+            mask = physical_archive_mask(kw, times)
+            if scheme == "NEWMARK":
+                newmark.integrate(
+                    system,
+                    times,
+                    q,
+                    v,
+                    a,
+                    mask,
+                    archive,
+                    beta=schema_kw.get("BETA", 0.25),
+                    gamma=schema_kw.get("GAMMA", 0.5),
+                )
+            elif scheme == "WILSON":
+                wilson.integrate(
+                    system, times, q, v, a, mask, archive, theta=schema_kw.get("THETA", 1.4)
+                )
+            else:
+                inverse = checked_diagonal_mass(ctx, system, scheme)
+                limit = diff_centre.stability_limit(system, inverse)
+                if np.max(np.diff(times)) > limit * (1.0 + 1.0e-12):
+                    raise NumericalError(
+                        f"DIFF_CENTRE: the step {np.max(np.diff(times)):.6g} exceeds "
+                        f"{limit:.6g} (1/20 of the shortest period sqrt(m_ii/k_ii) 2π)",
+                        ctx.location,
+                        f"{ctx.command}/INCREMENT",
+                    )
+                diff_centre.integrate(system, times, q, v, a, mask, archive, inverse)
+            stats = {"steps": times.size - 1}
+    except FloatingPointError as error:
+        raise NumericalError(f"{scheme}: {error}", ctx.location, ctx.command) from None
+    elapsed = __import__("time").perf_counter() - started
+    out_t, out_q, out_v, out_a = archive.arrays()
+    ctx.log(
+        f"DYNA_VIBRA PHYS {scheme}: {stats['steps']} steps, {out_t.size} archived, "
+        f"{system.n_free} free DOFs of {system.n_dofs}, {elapsed:.3f} s"
+    )
+    fields = {
+        "DEPL": system.expand(out_q),
+        "VITE": system.expand_rate(out_v),
+        "ACCE": system.expand_rate(out_a),
+    }
+    order = order_offset + np.arange(out_t.size, dtype=np.int64)
+    if reused is not None and t_state is not None:
+        keep = reused.times < out_t[0] - 1.0e-12 * max(1.0, abs(out_t[0]))
+        start = int(reused.order[keep][-1]) + 1 if np.any(keep) else 0
+        order = start + np.arange(out_t.size, dtype=np.int64)
+        out_t = np.concatenate([reused.times[keep], out_t])
+        order = np.concatenate([reused.order[keep], order])
+        fields = {
+            name: np.concatenate([reused.fields[name][keep], values])
+            for name, values in fields.items()
+            if name in reused.fields
+        }
+    return DynaTrans(numbering=numbering, times=out_t, order=order, fields=fields)
+
+
+def physical_loads(ctx, kw, numbering, stiffness_matrix):
+    from asterlite.dynamics.physical.system import Load
+    from asterlite.fem.assemble import assemble_terms
+    from asterlite.fem.loads import load_terms
+
+    loads = []
+    for occ in kw.factor("EXCIT"):
+        if occ.get("ACCE") is not None or occ.get("MULT_APPUI") == "OUI":
+            ctx.unsupported("EXCIT ACCE/MULT_APPUI on a physical basis", "ACCE", occ)
+        if occ.get("VECT_ASSE") is not None:
+            vector = np.asarray(occ["VECT_ASSE"].values, dtype=float)
+            if vector.size != numbering.n_dofs:
+                ctx.error("VECT_ASSE is not on the numbering of the matrices", "VECT_ASSE", occ)
+        else:
+            load = occ["CHARGE"]
+            try:
+                terms = load_terms(
+                    load, stiffness_matrix.characteristics, stiffness_matrix.materials
+                )
+                vector = assemble_terms(terms, numbering)
+            except KeyError as exc:
+                ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
+        mult = occ.get("FONC_MULT")
+        if mult is None:
+            mult = float(occ.get("COEF_MULT", 1.0))
+        loads.append(Load(vector, mult))
+    return loads
+
+
+def physical_initial_state(ctx, kw, system):
+    """(q, v, a or None, t of the state or None, first NUME_ORDRE)."""
+    n = system.n_free
+    q, v, a = np.zeros(n), np.zeros(n), None
+    occs = kw.factor("ETAT_INIT")
+    if not occs:
+        return q, v, a, None, 0
+    occ = occs[0]
+    previous = occ.get("RESULTAT")
+    if previous is not None:
+        if occ.get("NUME_ORDRE") is not None:
+            hits = np.nonzero(np.asarray(previous.order) == occ["NUME_ORDRE"])[0]
+            if not hits.size:
+                ctx.error(f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived", "NUME_ORDRE", occ)
+            k = int(hits[0])
+        elif occ.get("INST_INIT") is not None:
+            t = occ["INST_INIT"]
+            k = int(np.argmin(np.abs(previous.times - t)))
+            tol = occ.get("PRECISION", 1.0e-6) * (
+                abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
+            )
+            if abs(previous.times[k] - t) > max(tol, 1e-300):
+                ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
+        else:
+            k = len(previous.times) - 1
+        fields = previous.fields
+        q = system.restrict(fields["DEPL"][k])
+        v = system.restrict(fields["VITE"][k]) if "VITE" in fields else v
+        a = system.restrict(fields["ACCE"][k]) if "ACCE" in fields else None
+        return q, v, a, float(previous.times[k]), int(previous.order[k])
+    if occ.get("DEPL") is not None:
+        q = system.restrict(occ["DEPL"].values)
+    if occ.get("VITE") is not None:
+        v = system.restrict(occ["VITE"].values)
+    if occ.get("ACCE") is not None:
+        a = system.restrict(occ["ACCE"].values)
+    return q, v, a, None, 0
+
+
+def physical_instants(ctx, kw, t_state):
+    """The step instants (first = the initial state) and the nominal step."""
+    occ = kw.factor("INCREMENT")[0]
+    if occ.get("LIST_INST") is not None:
+        values = list_values(occ["LIST_INST"])
+        t_end = float(values[-1])
+        if occ.get("NUME_FIN") is not None and occ["NUME_FIN"] < len(values):
+            t_end = float(values[occ["NUME_FIN"]])
+        if occ.get("INST_FIN") is not None:
+            t_end = float(occ["INST_FIN"])
+        t0 = float(values[0]) if t_state is None else t_state
+        tol = 1.0e-9 * max(1.0, abs(t_end))
+        inside = values[(values > t0 + tol) & (values <= t_end + tol)]
+        times = np.concatenate([[t0], inside])
+        dt = (float(values[-1]) - float(values[0])) / (len(values) - 1)
+    else:
+        dt = float(occ["PAS"])
+        t0 = t_state if t_state is not None else float(occ.get("INST_INIT") or 0.0)
+        t_end = float(occ["INST_FIN"])
+        n_steps = int(round((t_end - t0) / dt))
+        times = t0 + dt * np.arange(n_steps + 1)
+        if n_steps >= 1:
+            times[-1] = t_end if abs(times[-1] - t_end) < 1.0e-9 * dt else times[-1]
+    if times.size < 2 or times[-1] <= times[0]:
+        ctx.error(f"INST_FIN ({t_end}) must exceed the initial instant ({t0})", "INST_FIN", occ)
+    return times, dt
+
+
+def physical_archive_mask(kw, times):
+    from asterlite.dynamics.physical.archive import archived_steps
+
+    occs = kw.factor("ARCHIVAGE")
+    if not occs:
+        return archived_steps(times, 1, (), 0.0, True)
+    occ = occs[0]
+    instants = ()
+    if occ.get("LIST_INST") is not None:
+        instants = list_values(occ["LIST_INST"])
+    elif occ.get("INST") is not None:
+        instants = np.atleast_1d(np.asarray(occ["INST"], dtype=float))
+    pas_arch = occ.get("PAS_ARCH")
+    if pas_arch is None:
+        pas_arch = 0 if len(instants) else 1
+    relative = occ.get("CRITERE", "RELATIF") == "RELATIF"
+    return archived_steps(times, int(pas_arch), instants, occ.get("PRECISION", 1.0e-6), relative)
+
+
+def checked_diagonal_mass(ctx, system, scheme):
+    inverse = system.diagonal_mass_inverse()
+    if inverse is None:
+        ctx.error(
+            f"{scheme} on a physical basis needs a diagonal mass matrix "
+            "(OPTION='MASS_MECA_DIAG'), as in code_aster",
+            "MATR_MASS",
+        )
+    return inverse
 
 
 __all__ = ["run", "math"]

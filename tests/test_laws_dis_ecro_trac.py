@@ -30,7 +30,7 @@ def axial(**kw):
     return prepare_dis_ecro_trac(dict(FX=Curve(X, F), **kw))
 
 
-def drive(params, path, component=0, dt=1.0e-3):
+def drive(params, path, component=0, dt=1.0e-3, strict=True):
     """Prescribed elongation path (one component); returns forces and state."""
     rate, work = np.zeros(3), np.zeros((N_WORK, N_Y))
     state = np.zeros(N_VINT)
@@ -39,7 +39,7 @@ def drive(params, path, component=0, dt=1.0e-3):
         vrel = np.zeros(3)
         vrel[component] = -(target - u) / dt  # v1 - v2 = - elongation rate
         f = hardening_force(params, vrel, dt, state, state, rate, work)
-        assert f[3]
+        assert f[3] or not strict
         forces.append(f[component])
         u = target
     return np.array(forces), state
@@ -57,14 +57,17 @@ def test_monotonic_loading_follows_the_curve():
 
 def test_unloading_is_elastic_and_isotropic_reloading_in_compression():
     p = axial(RESI_INTE=1e-8)
-    path = np.concatenate([np.linspace(0.0, 0.05, 501), np.linspace(0.05, -0.05, 1001)[1:]])
+    path = np.concatenate([np.linspace(0.0, 0.05, 501), np.linspace(0.05, 0.0, 501)[1:]])
     forces, _ = drive(p, path)
     f_top = np.interp(0.05, X, F)
-    back = (path < 0.05) & (forces > -f_top + 1.0)  # elastic part of the unloading
-    expected = f_top - K * (0.05 - path[back])
-    assert np.allclose(forces[back], expected, atol=0.05)
-    # isotropic: compressive yield at the hardened threshold
-    assert forces.min() == pytest.approx(-f_top, abs=0.5)
+    reverse_yield = 0.05 - 2.0 * f_top / K
+    back = (np.arange(path.size) > 500) & (path > reverse_yield + 1e-4)  # elastic unloading
+    assert np.allclose(forces[back], f_top - K * (0.05 - path[back]), atol=0.05)
+    # isotropic: compressive yield starts at the hardened threshold, then hardens further
+    assert forces[np.argmin(np.abs(path[500:] - reverse_yield)) + 500] == pytest.approx(
+        -f_top, abs=1.0
+    )
+    assert -F[-1] < forces.min() < -f_top
 
 
 @pytest.mark.parametrize("hardening", ["ISOTROPE", "CINEMATIQUE"])
@@ -108,16 +111,20 @@ def test_curve_checks():
         prepare_dis_ecro_trac(dict(FX=Curve(X, F, "CONSTANT", "EXCLU")))
 
 
-def test_beyond_the_last_point_gives_nan():
+def test_beyond_the_last_point_is_reported():
+    """Elongation 0.2 > the curve's last abscissa: the step reports failure
+    (the kernel must stop, as code_aster does), forces stay bounded."""
     p = axial()
-    forces = []
     rate, work = np.zeros(3), np.zeros((N_WORK, N_Y))
     state = np.zeros(N_VINT)
+    status = []
     for _ in range(200):
-        fx, _, _, _ = hardening_force(p, np.array([-1.0, 0.0, 0.0]), 1.0e-3, state, state, rate,
-                                      work)  # fmt: skip
-        forces.append(fx)
-    assert math.isnan(forces[-1])
+        fx, _, _, ok = hardening_force(
+            p, np.array([-1.0, 0.0, 0.0]), 1.0e-3, state, state, rate, work
+        )
+        status.append(ok)
+        assert math.isfinite(fx) and fx <= F[-1] + 1e-4
+    assert status[0] and not status[-1]
 
 
 @settings(max_examples=25, deadline=None)
@@ -129,7 +136,7 @@ def test_random_histories_finite_and_dissipative(points):
         [np.linspace(a, b, 20, endpoint=False) for a, b in zip(path[:-1], path[1:], strict=True)]
         + [path[-1:]]
     )
-    forces, state = drive(p, fine)
+    forces, state = drive(p, fine, strict=False)  # long paths may exhaust the curve
     assert np.all(np.isfinite(forces))
     assert state[V_DISSIP] >= 0.0
-    assert np.all(np.abs(forces) <= F[-1] + 1e-6)
+    assert np.all(np.abs(forces) <= F[-1] * (1.0 + 1e-5))  # within the RK tolerance

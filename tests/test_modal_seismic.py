@@ -364,3 +364,12 @@ def test_modes_of_projected_matrices_restore_the_physical_modes(two_supports):
     )
     free = _dx(k.numbering)[1:-1]  # blocked rows carry the reactions
     assert np.abs(residual[free]).max() < 1e-6 * np.abs(k.matrix @ physical.shapes[:, :2]).max()
+
+
+def test_combined_static_shape_is_the_support_motion(two_supports):
+    from asterlite.modal.seismic import combined_static_shape
+
+    session, model, k, m = two_supports
+    modes = run(session, "MODE_STATIQUE", MATR_RIGI=k, MODE_STAT={"TOUT": "OUI", "AVEC_CMP": "DX"})
+    shape = combined_static_shape(modes, ["N1", "N6"], (3.0, 0.0, 0.0))
+    np.testing.assert_allclose(shape[_dx(k.numbering)], 1.0)

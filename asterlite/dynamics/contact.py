@@ -32,7 +32,11 @@ P_SIGN_Y, P_SIGN_Z = 9, 10
 P_ORIGIN = 11  # 3 values
 P_COORD1 = 14  # 3 values
 P_COORD2 = 17  # 3 values
-N_PARAMS = 20
+# support motion (MULT_APPUI) of node 1 / node 2 at the current instant:
+# global displacement then velocity (6 values each), refreshed by the kernel
+P_DRIVE1 = 20
+P_DRIVE2 = 26
+N_PARAMS = 32
 
 # Columns of the per-shock integer rows (``flags``).
 F_GEOMETRY, F_TWO_NODES, F_UNIDIR, F_NPOLAR = range(4)
@@ -185,11 +189,12 @@ def start_stick_reference(vint, ft1, ft2, rel_loc):
 
 
 @njit(cache=True)
-def local_state(rot, phi, coord, origin, q, v, loc, vel):
-    """Local position (with rest coordinates, from ORIG_OBST) and velocity of a node."""
+def local_state(rot, phi, coord, drive, origin, q, v, loc, vel):
+    """Local position (with rest coordinates, from ORIG_OBST) and velocity of
+    a node; ``drive`` adds the support motion (displacement, velocity)."""
     for i in range(3):
-        xg = coord[i] - origin[i]
-        vg = 0.0
+        xg = coord[i] - origin[i] + drive[i]
+        vg = drive[3 + i]
         for m in range(q.shape[0]):
             xg += phi[i, m] * q[m]
             vg += phi[i, m] * v[m]
@@ -232,9 +237,29 @@ def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
         geometry = flags[s, F_GEOMETRY]
         two_nodes = flags[s, F_TWO_NODES] == 1
         origin = p[P_ORIGIN : P_ORIGIN + 3]
-        local_state(rots[s], phis[s, 0], p[P_COORD1 : P_COORD1 + 3], origin, q, v, loc1, vel1)
+        local_state(
+            rots[s],
+            phis[s, 0],
+            p[P_COORD1 : P_COORD1 + 3],
+            p[P_DRIVE1 : P_DRIVE1 + 6],
+            origin,
+            q,
+            v,
+            loc1,
+            vel1,
+        )
         if two_nodes:
-            local_state(rots[s], phis[s, 1], p[P_COORD2 : P_COORD2 + 3], origin, q, v, loc2, vel2)
+            local_state(
+                rots[s],
+                phis[s, 1],
+                p[P_COORD2 : P_COORD2 + 3],
+                p[P_DRIVE2 : P_DRIVE2 + 6],
+                origin,
+                q,
+                v,
+                loc2,
+                vel2,
+            )
         else:
             for i in range(3):
                 loc2[i] = 0.0

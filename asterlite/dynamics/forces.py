@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from numba import njit
 
-from asterlite.dynamics.contact import shock_forces
+from asterlite.dynamics.contact import P_DRIVE1, P_DRIVE2, shock_forces
 
 
 @njit(cache=True)
@@ -49,11 +49,38 @@ def multiplier(xs, ys, count, left, right, t):
 
 @njit(cache=True)
 def external_force(t, exc, out):
-    vectors, abscissas, ordinates, layout = exc
+    vectors, abscissas, ordinates, layout = exc[0], exc[1], exc[2], exc[3]
     for e in range(vectors.shape[0]):
         c = multiplier(abscissas[e], ordinates[e], layout[e, 0], layout[e, 1], layout[e, 2], t)
         for m in range(out.shape[0]):
             out[m] += c * vectors[e, m]
+
+
+@njit(cache=True)
+def support_motion(t, exc, params):
+    """MULT_APPUI: write each shock node's support displacement and velocity
+    Σ_k ψ_k(node) (d_k(t), v_k(t)) into its drive slots (global frame)."""
+    shapes, abscissas, ordinates, layout = exc[4], exc[5], exc[6], exc[7]
+    n_supports = shapes.shape[3]
+    if n_supports == 0:
+        return
+    for s in range(shapes.shape[0]):
+        for node in range(2):
+            base = P_DRIVE1 if node == 0 else P_DRIVE2
+            for i in range(6):
+                params[s, base + i] = 0.0
+            for k in range(n_supports):
+                r = 2 * k
+                d = multiplier(
+                    abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t
+                )
+                r += 1
+                w = multiplier(
+                    abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t
+                )
+                for i in range(3):
+                    params[s, base + i] += shapes[s, node, i, k] * d
+                    params[s, base + 3 + i] += shapes[s, node, i, k] * w
 
 
 @njit(cache=True)
@@ -62,6 +89,7 @@ def total_force(t, q, v, shk, vint, exc, work, out):
     out[:] = 0.0
     external_force(t, exc, out)
     flags, params, rots, phis, polars = shk
+    support_motion(t, exc, params)
     return shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out)
 
 

@@ -270,9 +270,44 @@ class Excitation:
     abscissas: np.ndarray  # (n_exc, n_points)
     ordinates: np.ndarray  # (n_exc, n_points)
     layout: np.ndarray  # (n_exc, 3) int: count, left, right
+    # MULT_APPUI support motion seen by the shocks: static modes at each
+    # shock node (n_shocks, 2, 3, n_supports) and, rows 2k / 2k+1, the
+    # displacement / velocity of support k tabulated as the multipliers
+    drive_shapes: np.ndarray | None = None
+    drive_abscissas: np.ndarray | None = None
+    drive_ordinates: np.ndarray | None = None
+    drive_layout: np.ndarray | None = None
 
     def bundle(self):
-        return (self.vectors, self.abscissas, self.ordinates, self.layout)
+        if self.drive_shapes is None:
+            self.drive_shapes = np.zeros((0, 2, 3, 0))
+            self.drive_abscissas = np.zeros((0, 1))
+            self.drive_ordinates = np.zeros((0, 1))
+            self.drive_layout = np.zeros((0, 3), dtype=np.int64)
+        return (
+            self.vectors,
+            self.abscissas,
+            self.ordinates,
+            self.layout,
+            self.drive_shapes,
+            self.drive_abscissas,
+            self.drive_ordinates,
+            self.drive_layout,
+        )
+
+    def add_support_motion(self, shapes: np.ndarray, motions, t0, t_end, h) -> None:
+        """``shapes``: (n_shocks, 2, 3, n_supports); ``motions``: one
+        (displacement, velocity) pair of functions per support."""
+        points = [multiplier_points(f, t0, t_end, h) for pair in motions for f in pair]
+        width = max([1] + [len(p[0]) for p in points])
+        self.drive_shapes = np.ascontiguousarray(shapes, dtype=float)
+        self.drive_abscissas = np.zeros((len(points), width))
+        self.drive_ordinates = np.zeros((len(points), width))
+        self.drive_layout = np.zeros((len(points), 3), dtype=np.int64)
+        for r, (xs, ys, left, right) in enumerate(points):
+            self.drive_abscissas[r, : len(xs)] = xs
+            self.drive_ordinates[r, : len(xs)] = ys
+            self.drive_layout[r] = (len(xs), left, right)
 
 
 PROL_CONSTANT, PROL_LINEAIRE = 0, 1

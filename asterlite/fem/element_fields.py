@@ -4,6 +4,9 @@
   MT MFY MFZ at both nodes (:func:`asterlite.fem.beam_elements.beam_local_forces`);
 - ``SIPO_ELNO``: the stresses derived from them
   (:func:`asterlite.fem.beam_elements.beam_stresses`);
+- ``EFGE_ELGA`` / ``SIEF_ELGA``: the same forces at the 3 Gauss points, linear
+  between the two nodes (exact for unloaded straight beams: constant forces,
+  linear moments);
 - ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
   cells sharing it (code_aster's nodal smoothing).
 
@@ -24,6 +27,9 @@ from asterlite.fem.beam_elements import (
 
 BEAM_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 ELNO_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO", "SIPO_ELNO")
+ELGA_OPTIONS = ("EFGE_ELGA", "SIEF_ELGA")
+#: Positions (0..1 along the beam) of the 3 Gauss points of beam elements.
+BEAM_GAUSS = (1.0 + np.array([-np.sqrt(0.6), 0.0, np.sqrt(0.6)])) / 2.0
 NOEU_OPTIONS = ("EFGE_NOEU", "SIEF_NOEU", "SIPO_NOEU")
 
 
@@ -52,6 +58,10 @@ def beam_element_fields(
     for name in options:
         if name in ("EFGE_ELNO", "SIEF_ELNO"):
             out[name] = ElementField(name, cells, EFGE_COMPONENTS, efge)
+        elif name in ELGA_OPTIONS:
+            xi = BEAM_GAUSS[None, None, :, None]
+            gauss = (1.0 - xi) * efge[:, :, :1, :] + xi * efge[:, :, 1:, :]
+            out[name] = ElementField(name, cells, EFGE_COMPONENTS, gauss)
         elif name == "SIPO_ELNO":
             sections = [characteristics.sections[int(c)] for c in cells]
             kinds = [model.cell_modelisation[int(c)] for c in cells]

@@ -10,13 +10,21 @@ loop, call and allocation is bounded by :class:`Limits`.
 ``Unknown`` (the value of what ``asterlite check`` does not compute) flows
 through: operations on it give Unknown, it is falsy, iterating it yields
 nothing, storing it into a numpy array makes the array Unknown.
+
+``overrides`` (``asterlite sweep --set NAME=value``) replace deck-level
+variables: when a plain ``NAME = expression`` statement outside any ``def``
+assigns a name in ``overrides``, the expression is still evaluated (it may
+call a command whose side effects later statements rely on), then the
+override value is bound instead. Tuple unpacking, augmented assignment,
+``for`` targets and names local to deck functions are left alone.
+``overrides_used`` records the names that were replaced.
 """
 
 from __future__ import annotations
 
 import itertools
 import operator
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from time import monotonic
 
 from asterlite.errors import AsterliteError, DeckRuntimeError, Location
@@ -149,8 +157,11 @@ class Evaluator:
         filename_sources: dict | None = None,
         module_loader: Callable[[str], dict | None] | None = None,
         limits: Limits = Limits(),  # noqa: B008 - frozen dataclass, shared safely
+        overrides: Mapping[str, object] | None = None,
     ):
         self.namespace = namespace
+        self.overrides = dict(overrides or {})
+        self.overrides_used: set[str] = set()  # override names some assignment replaced
         self.sources = dict(filename_sources or {})  # filename -> text or lines, for excerpts
         self.module_loader = module_loader
         self.limits = limits
@@ -266,7 +277,17 @@ class Evaluator:
         else:
             value = self.ev(value_node, frame)
         for target in targets:
-            self._assign_target(target, value, frame)
+            self._assign_target(target, self._overridden(target, value, frame), frame)
+
+    def _overridden(self, target, value, frame: Frame):
+        """The override for a module-level ``NAME = ...`` target, else ``value``."""
+        if frame.locals is not None or target.data != "var":
+            return value
+        name = target.children[0].value
+        if name not in self.overrides:
+            return value
+        self.overrides_used.add(name)
+        return self.overrides[name]
 
     def _augassign(self, node, frame):
         target, op_token, value_node = node.children

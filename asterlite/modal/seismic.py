@@ -78,3 +78,17 @@ def static_mode_columns(labels, node_names, components, direction):
             else:
                 missing.append(label)
     return columns, weights, missing
+
+
+def combined_static_shape(modes, node_names, direction) -> np.ndarray:
+    """Σ_s Σ_i d_i ψ_(s, i) on ``modes.numbering``: the displacement field
+    produced by a unit motion of the supports ``node_names`` along the
+    (normalised) ``direction`` -- what DYNA_VIBRA MULT_APPUI adds to Φ q
+    (times the support displacement, velocity or acceleration) to restore
+    absolute fields. Raises SeismicError naming a missing static mode."""
+    columns, weights, missing = static_mode_columns(
+        modes.mode_labels, list(node_names), COMPONENTS, direction
+    )
+    if missing:
+        raise SeismicError(f"no static mode for {', '.join(missing[:4])}")
+    return np.asarray(modes.shapes, dtype=float)[:, columns] @ np.asarray(weights, dtype=float)

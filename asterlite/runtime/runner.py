@@ -30,6 +30,10 @@ class RunReport:
     tests: list[TestRecord] = field(default_factory=list)
     seconds: float = 0.0
     timings: list = field(default_factory=list)
+    overrides: dict = field(default_factory=dict)  # deck-level variables set by value
+    overrides_used: list[str] = field(default_factory=list)  # those the deck assigned
+    unknown_overrides: list[str] = field(default_factory=list)  # those it never assigned
+    table_values: dict = field(default_factory=dict)  # "TABLE.PARA" of one-row tables
 
     @property
     def checks_total(self) -> int:
@@ -60,6 +64,8 @@ class RunReport:
             "strict_ok": self.strict_ok,
             "seconds": round(self.seconds, 3),
             "message": self.message,
+            "overrides": {k: _plain(v) for k, v in self.overrides.items()},
+            "overrides_used": self.overrides_used,
             "tests": [
                 {
                     "command": t.command,
@@ -106,9 +112,15 @@ def run_deck(
     *,
     check_only: bool = False,
     echo: bool = False,
+    overrides: dict | None = None,
 ) -> RunReport:
-    """Run or check the deck at ``deck`` (an .export or a .comm)."""
-    from asterlite.runtime.session import Session
+    """Run or check the deck at ``deck`` (an .export or a .comm).
+
+    ``overrides`` maps deck-level variable names to the values bound instead
+    of the deck's own (see :class:`asterlite.lang.Evaluator`); a name the deck
+    never assigns makes the run an ERROR naming it.
+    """
+    from asterlite.runtime.session import Session, UnknownOverrideError
 
     start = time.perf_counter()
     name = deck.stem
@@ -123,8 +135,16 @@ def run_deck(
     try:
         description = describe_run(deck)
         name = description.name
-        session = Session(description, output_dir=staging, check_only=check_only, echo=echo)
+        session = Session(
+            description,
+            output_dir=staging,
+            check_only=check_only,
+            echo=echo,
+            overrides=dict(overrides or {}),
+        )
         session.run_all()
+    except UnknownOverrideError as error:
+        report = RunReport(name, "ERROR", str(error), unknown_overrides=session.unused_overrides())
     except UnsupportedError as error:
         report = RunReport(name, "UNSUPPORTED", str(error))
     except AsterliteError as error:
@@ -141,13 +161,29 @@ def run_deck(
             report = RunReport(name, "PASS")
         else:
             report = RunReport(name, "NOOK")
+    report.overrides = dict(overrides or {})
     if session is not None:
         report.tests = list(session.tests)
         report.timings = list(session.timings)
+        report.overrides_used = sorted(session.overrides_used)
+        report.table_values = one_row_table_values(session.namespace)
     report.seconds = time.perf_counter() - start
     if output_dir is not None and not check_only:
         _finish_output(output_dir, staging, report, session)
     return report
+
+
+def one_row_table_values(namespace: dict) -> dict:
+    """``{"TABLE.PARA": value}`` for the deck's tables of a single row: the
+    scalar results (wear power, peak force...) a parameter study compares."""
+    from asterlite.concepts.table import Table
+
+    values = {}
+    for name, value in namespace.items():
+        if isinstance(value, Table) and len(value.rows) == 1:
+            for para, cell in value.rows[0].items():
+                values[f"{name}.{para}"] = _plain(cell)
+    return values
 
 
 def _finish_output(output_dir: Path, staging: Path, report: RunReport, session) -> None:

@@ -10,6 +10,7 @@ DETRUIRE, DEFI_FICHIER) are handled here.
 
 from __future__ import annotations
 
+import difflib
 import importlib
 import pkgutil
 import time
@@ -30,6 +31,12 @@ class DeckFinished(AsterliteError):
     """Raised by FIN() to stop evaluating the current deck file."""
 
     kind = "end of deck"
+
+
+class UnknownOverrideError(AsterliteError):
+    """A ``--set NAME=...`` override names a variable the deck never assigns."""
+
+    kind = "unknown variable"
 
 
 class AnyPlaceholder(Placeholder):
@@ -75,6 +82,9 @@ class Session:
     messages: list[str] = field(default_factory=list)
     output_units: dict[int, Path] = field(default_factory=dict)
     current_file: str = ""
+    # deck-level variables to replace by value (asterlite sweep --set), and those replaced
+    overrides: dict[str, Any] = field(default_factory=dict)
+    overrides_used: set[str] = field(default_factory=set)
 
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
@@ -155,14 +165,55 @@ class Session:
         self.current_file = str(path)
         self.log(f"# deck {path.name}")
         module = parse_deck(path.read_text(encoding="utf-8", errors="replace"), str(path))
+        evaluator = Evaluator(
+            self.namespace, module_loader=self.load_module, overrides=self.overrides
+        )
         try:
-            Evaluator(self.namespace, module_loader=self.load_module).run(module)
+            evaluator.run(module)
         except DeckFinished:
             pass
+        finally:
+            self.overrides_used |= evaluator.overrides_used
 
     def run_all(self) -> None:
         for path in self.run.deck_files:
             self.run_file(path)
+        self.check_overrides_used()
+
+    def unused_overrides(self) -> list[str]:
+        return sorted(set(self.overrides) - self.overrides_used)
+
+    def check_overrides_used(self) -> None:
+        """An override the deck never assigned is a typo: the run did not vary
+        what the user asked for, so its results must not pass for a variant."""
+        unused = self.unused_overrides()
+        if not unused:
+            return
+        variables = deck_variables(self.namespace)
+        hints = []
+        for name in unused:
+            close = difflib.get_close_matches(name, variables, n=1)
+            hints.append(f"{name} (did you mean {close[0]}?)" if close else name)
+        listed = ", ".join(variables) or "none"
+        raise UnknownOverrideError(
+            f"not assigned at module level by the deck: {', '.join(hints)} "
+            f"(its deck-level variables: {listed})"
+        )
+
+
+def deck_variables(namespace: dict) -> list[str]:
+    """Names the deck bound to plain numbers or strings: what --set can vary."""
+    from asterlite.lang import base_namespace
+
+    builtins = base_namespace()
+    return sorted(
+        name
+        for name, value in namespace.items()
+        if isinstance(value, (int, float, str))
+        and not isinstance(value, bool)
+        and not name.startswith("_")
+        and name not in builtins
+    )
 
 
 # Commands that steer the session rather than compute: handled here.
@@ -190,6 +241,19 @@ class CommandProxy(DeckCallable):
             raise UnsupportedError(f"command {self.name} is not supported", site.location)
         kwargs = dict(kwargs)
         reuse = kwargs.pop("reuse", None)
+        if catalogue.compat_syntax is not None:  # legacy syntax: check as written, translate
+            from asterlite.legacy.runtime import translate_call
+
+            modern = translate_call(catalogue, kwargs, site, session, reuse=reuse)
+            if modern is not None:
+                name, catalogue, kwargs = modern
+                if name != self.name:  # a renamed legacy command: the modern one runs it
+                    return CommandProxy(name, session)._call(catalogue, kwargs, reuse, site)
+        return self._call(catalogue, kwargs, reuse, site)
+
+    def _call(self, catalogue, kwargs: dict, reuse, site: CallSite):
+        """Validate a (modern) call against ``catalogue`` and dispatch it."""
+        session = self.session
         extra = {}
         if catalogue.extra_keywords:
             known = set(catalogue.keyword_names())
@@ -314,4 +378,4 @@ def _co_outputs(value) -> list[CO]:
     return []
 
 
-__all__ = ["Session", "CommandProxy", "DeckFinished", "AnyPlaceholder"]
+__all__ = ["Session", "CommandProxy", "DeckFinished", "AnyPlaceholder", "UnknownOverrideError"]

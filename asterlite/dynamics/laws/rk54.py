@@ -48,6 +48,7 @@ SAFETY, FORCED_CUT, MAX_GROWTH = 0.90, 0.30, 5.0
 GROWTH_THRESHOLD = (MAX_GROWTH / SAFETY) ** (1.0 / GROW_POWER)
 TINY_SCALE = 1.0e-8
 HUGE_ERROR = 1.0e8
+SMALLEST_STEP = 1.0e-10  # relative to dt: below, sub-steps would creep towards a wall
 N_WORK = 9  # rows of the scratch array
 
 
@@ -98,7 +99,8 @@ def adaptive_integrate(system, model, y_in, rate, dt, max_attempts, tolerance, s
     """Integrate the system from y_in over dt (rates held fixed) into y_out
     (may be y_in). ``scales``: per-unknown error scales, or empty to scale
     by |y|. Returns False when a sub-step failed ``max_attempts`` times in a
-    row; y_out then holds the state reached so far (time not completed)."""
+    row, or sub-steps shrink below 1e-10 dt (e.g. a hardening curve is
+    exhausted); y_out then holds the state reached so far (time not completed)."""
     n = y_out.shape[0]
     for i in range(n):
         y_out[i] = y_in[i]
@@ -107,7 +109,7 @@ def adaptive_integrate(system, model, y_in, rate, dt, max_attempts, tolerance, s
     t, h = 0.0, dt
     attempts = 0
     while True:
-        if attempts > max_attempts:
+        if attempts > max_attempts or h < SMALLEST_STEP * dt:
             return False
         attempts += 1
         if not cash_karp_step(system, model, y_out, rate, h, n, work):

@@ -1,0 +1,311 @@
+"""Writer for MED files (SALOME's HDF5 format, ``IMPR_RESU(FORMAT='MED')``).
+
+Built on ``medcoupling``. What is written, as code_aster lays it out:
+
+- the mesh: coordinates in the mesh's space dimension, cells split by
+  dimension into MED levels and sorted by MED geometric type (code_aster's
+  numbering order, so :func:`asterlite.io.med_mesh.read_med_mesh` gives the
+  cells back in the same order when they were already sorted), node and cell
+  names (MED keeps 16 characters), node groups and cell groups (stored as MED
+  families; medcoupling builds the families);
+- time series of nodal fields (:class:`NodalSeries`): one MED time step per
+  stored instant or mode, numbered by NUME_ORDRE (``numdt``; ``numit`` is
+  -1) with the instant (or the frequency, for modes) as time value, one value
+  per node and component; a field restricted to some nodes gets a MED profile.
+
+The file version follows code_aster's ``VERSION_MED``: ``"3.3.1"``,
+``"4.0.0"`` (the default here) or ``"4.1.0"``; libmed 4.1's ``mdump`` reads
+all three. medcoupling's plain ``write`` would give MED 5, which libmed 4.1
+tools reject, so it is never used.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from asterlite.concepts.mesh import Mesh
+from asterlite.io.med_mesh import _TYPES as _MED_TYPES
+
+#: MED short names (entity names) and field/mesh names have fixed sizes.
+MED_SNAME_SIZE = 16
+MED_NAME_SIZE = 64
+
+#: ``VERSION_MED`` -> medcoupling writer method.
+WRITERS = {"3.3.1": "write33", "4.0.0": "write40", "4.1.0": "write41"}
+
+# code_aster cell type -> (MED type number, medcoupling type name, MED order of
+# code_aster nodes or None)
+_ASTER_TO_MED = {aster: (number, med, order) for med, (number, aster, order) in _MED_TYPES.items()}
+
+_CELL_DIMENSION = {"POI": 0, "SEG": 1, "TRI": 2, "QUA": 2}
+
+
+class MedWriteError(ValueError):
+    """Something asterlite cannot write to a MED file."""
+
+
+def _medcoupling():
+    try:
+        import medcoupling
+    except ImportError as exc:  # pragma: no cover - declared dependency
+        raise MedWriteError("writing MED files needs the 'medcoupling' package") from exc
+    return medcoupling
+
+
+@dataclass
+class NodalSeries:
+    """A nodal field at a sequence of steps, ready for MED.
+
+    ``values`` is (n_steps, n_nodes, n_components) on the mesh nodes
+    ``nodes`` (0-based indices; None means every node, in mesh order);
+    ``times`` (instants or frequencies) and ``orders`` (NUME_ORDRE) have
+    length n_steps.
+    """
+
+    name: str
+    components: tuple[str, ...]
+    values: np.ndarray
+    times: np.ndarray
+    orders: np.ndarray
+    nodes: np.ndarray | None = None
+
+
+def med_field_name(result_name: str, field_name: str) -> str:
+    """code_aster's MED field name: the result name left-justified on 8
+    characters, padded with ``_``, followed by the field name (``MODES___DEPL``)."""
+    prefix = (result_name or "").strip()[:8].ljust(8, "_")
+    return (prefix + field_name.strip())[:MED_NAME_SIZE]
+
+
+def dofs_to_nodal(numbering, values, nodes=None, components=()) -> tuple:
+    """Spread DOF vectors onto nodes and components.
+
+    ``values`` is (n_steps, n_dofs) on ``numbering``'s DOFs. Returns
+    ``(nodes, components, array)`` where ``array`` is (n_steps, n_nodes,
+    n_components): the nodes carrying DOFs (restricted to ``nodes`` when
+    given, in that order), the components present (restricted to
+    ``components`` when given, in the given order; else code_aster's
+    order), and zero where a node lacks a component.
+    """
+    from asterlite.fem.dofs import sort_components
+
+    values = np.atleast_2d(np.asarray(values, dtype=float))
+    dof_nodes = np.array([n for n, _ in numbering.dofs], dtype=int)
+    dof_comps = [c for _, c in numbering.dofs]
+    if components:
+        comps = tuple(components)
+    else:
+        comps = sort_components(set(dof_comps))
+    if nodes is None:
+        chosen = np.unique(dof_nodes)
+    else:
+        carried = set(dof_nodes.tolist())
+        chosen = np.array([int(n) for n in nodes if int(n) in carried], dtype=int)
+    node_pos = {int(n): k for k, n in enumerate(chosen)}
+    comp_pos = {c: k for k, c in enumerate(comps)}
+    out = np.zeros((values.shape[0], len(chosen), len(comps)))
+    for dof, (node, comp) in enumerate(numbering.dofs):
+        k, j = node_pos.get(node), comp_pos.get(comp)
+        if k is not None and j is not None:
+            out[:, k, j] = values[:, dof]
+    return chosen, comps, out
+
+
+# -- mesh ---------------------------------------------------------------------
+
+
+def _cell_dimension(cell_type: str) -> int:
+    return _CELL_DIMENSION.get(cell_type[:3], 3)
+
+
+def _padded(names, size: int = MED_SNAME_SIZE) -> list[str]:
+    return [str(n)[:size].ljust(size) for n in names]
+
+
+def _level_layout(mesh: Mesh) -> tuple[int, dict[int, np.ndarray]]:
+    """(mesh dimension, {level: global cell indices in MED order}); level 0
+    holds the cells of highest dimension, -1 the next, ..."""
+    for t in set(mesh.cell_types):
+        if t not in _ASTER_TO_MED:
+            raise MedWriteError(f"cells of type {t} cannot be written to MED")
+    dims = np.array([_cell_dimension(t) for t in mesh.cell_types], dtype=int)
+    mesh_dim = int(dims.max()) if dims.size else 0
+    numbers = np.array([_ASTER_TO_MED[t][0] for t in mesh.cell_types], dtype=int)
+    levels = {}
+    for dim in sorted(set(dims.tolist()), reverse=True):
+        cells = np.flatnonzero(dims == dim)
+        cells = cells[np.argsort(numbers[cells], kind="stable")]
+        levels[dim - mesh_dim] = cells
+    return mesh_dim, levels
+
+
+def _coords_array(mc, mesh: Mesh):
+    dim = max(1, min(int(mesh.dim), 3))
+    coords = mc.DataArrayDouble(np.ascontiguousarray(mesh.coords[:, :dim], dtype=float))
+    coords.setInfoOnComponents(["X", "Y", "Z"][:dim])
+    return coords
+
+
+def _level_mesh(mc, name: str, coords, mesh: Mesh, cells: np.ndarray, dim: int):
+    umesh = mc.MEDCouplingUMesh(name, dim)
+    umesh.setCoords(coords)
+    umesh.allocateCells(len(cells))
+    for cell in cells:
+        _, med_type, order = _ASTER_TO_MED[mesh.cell_types[cell]]
+        conn = list(mesh.cell_nodes[cell])
+        if order is not None:
+            med_conn = [0] * len(conn)
+            for aster_pos, med_pos in enumerate(order):
+                med_conn[med_pos] = conn[aster_pos]
+            conn = med_conn
+        umesh.insertNextCell(getattr(mc, med_type), [int(n) for n in conn])
+    umesh.finishInsertingCells()
+    return umesh
+
+
+def _group_array(mc, name: str, members) -> object:
+    array = mc.DataArrayInt(sorted(int(m) for m in members))
+    array.setName(name)
+    return array
+
+
+def med_mesh(mesh: Mesh, name: str):
+    """The mesh as a ``medcoupling.MEDFileUMesh`` named ``name``."""
+    mc = _medcoupling()
+    name = (name or "MAILLAGE")[:MED_NAME_SIZE]
+    coords = _coords_array(mc, mesh)
+    med = mc.MEDFileUMesh()
+    med.setName(name)
+    med.setDescription((mesh.title or "")[:200])
+    mesh_dim, levels = _level_layout(mesh)
+    if not levels:
+        med.setCoords(coords)
+    position = {}  # global cell -> (level, index in level)
+    for level, cells in levels.items():
+        umesh = _level_mesh(mc, name, coords, mesh, cells, mesh_dim + level)
+        med.setMeshAtLevel(level, umesh)
+        names = [mesh.cell_names[c] for c in cells]
+        med.setNameFieldAtLevel(level, mc.DataArrayAsciiChar(_padded(names)))
+        for k, cell in enumerate(cells):
+            position[int(cell)] = (level, k)
+    med.setNameFieldAtLevel(1, mc.DataArrayAsciiChar(_padded(mesh.node_names)))
+    _set_cell_groups(mc, med, mesh, levels, position)
+    node_groups = [_group_array(mc, g, m) for g, m in mesh.node_groups.items() if len(m)]
+    if node_groups:
+        med.setGroupsAtLevel(1, node_groups)
+    return med
+
+
+def _set_cell_groups(mc, med, mesh: Mesh, levels, position) -> None:
+    for level in levels:
+        groups = []
+        for group, members in mesh.cell_groups.items():
+            here = [position[int(c)][1] for c in members if position[int(c)][0] == level]
+            if here:
+                groups.append(_group_array(mc, group, here))
+        if groups:
+            med.setGroupsAtLevel(level, groups)
+
+
+# -- fields -------------------------------------------------------------------
+
+
+def _support_mesh(mc, med):
+    """A mesh the nodal fields can be defined on (every node)."""
+    levels = med.getNonEmptyLevels()
+    if levels:
+        return med.getMeshAtLevel(levels[0])
+    umesh = mc.MEDCouplingUMesh(med.getName(), 0)
+    umesh.setCoords(med.getCoords())
+    umesh.allocateCells(0)
+    umesh.finishInsertingCells()
+    return umesh
+
+
+def med_field(series: NodalSeries, med):
+    """The series as a ``medcoupling.MEDFileFieldMultiTS`` on mesh ``med``."""
+    mc = _medcoupling()
+    support = _support_mesh(mc, med)
+    values = np.asarray(series.values, dtype=float)
+    n_steps, n_nodes, n_comp = values.shape
+    whole = series.nodes is None or (
+        n_nodes == med.getNumberOfNodes() and np.array_equal(series.nodes, np.arange(n_nodes))
+    )
+    nodes = None
+    if not whole:
+        if n_nodes == 0:
+            raise MedWriteError(f"field {series.name}: no node to write")
+        order = np.argsort(np.asarray(series.nodes, dtype=int), kind="stable")
+        nodes = np.asarray(series.nodes, dtype=int)[order]
+        values = values[:, order, :]  # MED profiles list entities in increasing order
+    multi = mc.MEDFileFieldMultiTS()
+    for step in range(n_steps):
+        field = mc.MEDCouplingFieldDouble(mc.ON_NODES, mc.ONE_TIME)
+        field.setName(series.name[:MED_NAME_SIZE])
+        field.setMesh(support)
+        array = mc.DataArrayDouble(np.ascontiguousarray(values[step].reshape(n_nodes, n_comp)))
+        array.setInfoOnComponents(list(series.components))
+        field.setArray(array)
+        field.setTime(float(series.times[step]), int(series.orders[step]), -1)
+        if whole:
+            multi.appendFieldNoProfileSBT(field)
+            continue
+        profile = mc.DataArrayInt([int(n) for n in nodes])
+        profile.setName(f"PFL_{series.name}"[:MED_NAME_SIZE])
+        one = mc.MEDFileField1TS()
+        one.setFieldProfile(field, med, 1, profile)
+        multi.pushBackTimeStep(one)
+    return multi
+
+
+def write_med(
+    path: str | Path,
+    mesh: Mesh,
+    mesh_name: str,
+    fields: list[NodalSeries] = (),
+    *,
+    version: str = "4.0.0",
+    append: bool = False,
+) -> Path:
+    """Write ``mesh`` (unless ``append`` and the file already holds a mesh of
+    that name) and the nodal ``fields`` to the MED file ``path``.
+
+    ``append=False`` starts a new file; ``append=True`` adds to an existing
+    one (fields of the same name are replaced).
+    """
+    mc = _medcoupling()
+    path = Path(path)
+    writer = WRITERS.get(version)
+    if writer is None:
+        raise MedWriteError(f"MED version {version!r} is not supported ({', '.join(WRITERS)})")
+    mesh_name = (mesh_name or "MAILLAGE")[:MED_NAME_SIZE]
+    med = med_mesh(mesh, mesh_name)
+    present = append and path.is_file()
+    if present and mesh_name in list(mc.GetMeshNames(str(path))):
+        med = mc.MEDFileMesh.New(str(path), mesh_name)
+    else:
+        getattr(med, writer)(str(path), 0 if present else 2)
+    for series in fields:
+        getattr(med_field(series, med), writer)(str(path), 0)
+    return path
+
+
+def med_field_names(path: str | Path) -> list[str]:
+    """Names of the fields stored in a MED file."""
+    mc = _medcoupling()
+    return list(mc.GetAllFieldNames(str(path)))
+
+
+__all__ = [
+    "MedWriteError",
+    "NodalSeries",
+    "dofs_to_nodal",
+    "med_field",
+    "med_field_name",
+    "med_field_names",
+    "med_mesh",
+    "write_med",
+]

@@ -1,0 +1,573 @@
+"""Results as data: uniform access to the nodal fields of result concepts,
+and an HDF5 store for generalized transient results (``tran_gene``).
+
+Nodal fields of results
+-----------------------
+:func:`result_steps` and :func:`nodal_series` read ``dyna_trans``
+(:class:`DynaTrans`), ``mode_meca`` (:class:`ModeResult`) and ``mult_elas``
+(:class:`MultElasResult`) results the same way: the stored steps (NUME_ORDRE
+with INST, or NUME_MODE and FREQ, or NOM_CAS) and any nodal field as an array
+(n_steps, n_nodes, n_components). IMPR_RESU, POST_RELEVE_T and the store use
+them.
+
+HDF5 store
+----------
+:func:`save_tran_gene` writes one ``tran_gene`` under a group named after
+it; :func:`load_tran_gene` reads it back as a :class:`TranGene` (or plain
+arrays); :func:`save_session_results` saves every ``tran_gene`` of a deck
+namespace. The layout is described in ``docs/results.md``::
+
+    /<NAME>                         attrs: aster_type, layout_version, scheme, step,
+                                           n_modes, n_archived
+      times, order                  (n_archived,)
+      depl, vite, acce              (n_archived, n_modes)
+      scheme/                       attrs: every scalar of the integration summary
+      shocks/<INTITULE>/            attrs: name, relation, node_1, node_2, index, parameters
+        FN, FT1, ..., VINT20        (n_archived,)
+      basis/                        attrs: name, kind, norm
+        shapes                      (n_dofs, n_modes)
+        dof_nodes, dof_components   (n_dofs,)  node index (0-based) and component name
+        dof_labels                  (n_dofs,)  "NODE COMPONENT"
+        frequencies, generalized_mass, generalized_stiffness, mode_numbers  (n_modes,)
+        mesh/                       attrs: name, dim, title
+          coords (n_nodes, 3), node_names (n_nodes,)
+          cell_names, cell_types, cell_offsets, cell_connectivity
+          node_groups/<G>, cell_groups/<G>   0-based indices
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.mesh import Mesh
+from asterlite.concepts.modes import ModeResult, MultElasResult
+from asterlite.concepts.transient import DynaTrans, ShockHistory, TranGene
+from asterlite.errors import CommandError
+
+LAYOUT_VERSION = 1
+NODAL_DOF_FIELDS = ("DEPL", "VITE", "ACCE")
+
+
+# =============================================================================
+# nodal fields of result concepts
+# =============================================================================
+
+
+@dataclass
+class ResultSteps:
+    """The stored steps of a result: NUME_ORDRE and the access parameters."""
+
+    orders: np.ndarray
+    times: np.ndarray | None = None  # INST (dyna_trans)
+    frequencies: np.ndarray | None = None  # FREQ (mode_meca)
+    mode_numbers: np.ndarray | None = None  # NUME_MODE (mode_meca)
+    case_names: list[str] | None = None  # NOM_CAS (mult_elas)
+
+    @property
+    def count(self) -> int:
+        return len(self.orders)
+
+    def time_values(self) -> np.ndarray:
+        """What a MED time step carries: the instant, else the frequency, else 0."""
+        if self.times is not None:
+            return np.asarray(self.times, dtype=float)
+        if self.frequencies is not None:
+            return np.asarray(self.frequencies, dtype=float)
+        return np.zeros(self.count)
+
+    def parameters(self, k: int) -> dict[str, Any]:
+        """Access parameters of step ``k`` (0-based) by code_aster name."""
+        out: dict[str, Any] = {}
+        if self.times is not None:
+            out["INST"] = float(self.times[k])
+        if self.mode_numbers is not None:
+            out["NUME_MODE"] = int(self.mode_numbers[k])
+        if self.frequencies is not None:
+            out["FREQ"] = float(self.frequencies[k])
+        if self.case_names:
+            out["NOM_CAS"] = self.case_names[k]
+        return out
+
+
+def is_physical_result(result) -> bool:
+    return isinstance(result, DynaTrans | ModeResult | MultElasResult)
+
+
+def result_steps(result) -> ResultSteps:
+    """Stored steps of a DynaTrans, ModeResult or MultElasResult."""
+    if isinstance(result, DynaTrans):
+        return ResultSteps(np.asarray(result.order, dtype=int), times=np.asarray(result.times))
+    if isinstance(result, ModeResult):
+        n = result.n_modes
+        return ResultSteps(
+            np.arange(1, n + 1),
+            frequencies=np.asarray(result.frequencies, dtype=float),
+            mode_numbers=np.asarray(result.mode_numbers, dtype=int),
+        )
+    if isinstance(result, MultElasResult):
+        names = list(result.case_names) or [str(k + 1) for k in range(result.n_cases)]
+        return ResultSteps(np.arange(1, result.n_cases + 1), case_names=names)
+    raise TypeError(f"no stored steps in a {type(result).__name__}")
+
+
+def _matching(stored, wanted, precision: float, criterion: str, what: str) -> np.ndarray:
+    """Index of the stored value closest to each wanted one, within PRECISION
+    (CRITERE RELATIF scales by |wanted|, absolute for zero)."""
+    stored = np.asarray(stored, dtype=float)
+    out = []
+    for w in np.atleast_1d(np.asarray(wanted, dtype=float)):
+        k = int(np.argmin(np.abs(stored - w))) if stored.size else -1
+        tolerance = precision * abs(w) if criterion == "RELATIF" and w != 0 else precision
+        if k < 0 or abs(stored[k] - w) > tolerance:
+            span = f"{stored.min():g}..{stored.max():g}" if stored.size else "none"
+            raise CommandError(
+                f"no stored {what} matches {w:g} (PRECISION={precision:g}, "
+                f"CRITERE={criterion}; stored {what}: {span})"
+            )
+        out.append(k)
+    return np.asarray(out, dtype=int)
+
+
+def _matching_exact(stored, wanted, what: str) -> np.ndarray:
+    lookup = {v: k for k, v in enumerate(stored)}
+    missing = [w for w in wanted if w not in lookup]
+    if missing:
+        raise CommandError(f"{what} {missing[0]} is not stored (stored: {list(stored)})")
+    return np.asarray([lookup[w] for w in wanted], dtype=int)
+
+
+def select_steps(
+    steps: ResultSteps,
+    *,
+    nume_ordre=None,
+    nume_mode=None,
+    inst=None,
+    freq=None,
+    nom_cas=None,
+    precision: float = 1e-6,
+    criterion: str = "RELATIF",
+) -> np.ndarray:
+    """0-based indices of the stored steps chosen by one access keyword
+    (NUME_ORDRE, NUME_MODE, INST, FREQ or NOM_CAS, in the order given), or of
+    every step when none is given. Raises CommandError for a step not stored."""
+    if nume_ordre is not None:
+        return _matching_exact(
+            [int(o) for o in steps.orders], [int(n) for n in nume_ordre], "NUME_ORDRE"
+        )
+    if nume_mode is not None:
+        if steps.mode_numbers is None:
+            raise CommandError("NUME_MODE needs a modal result")
+        stored = [int(m) for m in steps.mode_numbers]
+        return _matching_exact(stored, [int(n) for n in nume_mode], "NUME_MODE")
+    if inst is not None:
+        if steps.times is None:
+            raise CommandError("INST needs a result stored by instant")
+        return _matching(steps.times, inst, precision, criterion, "instant")
+    if freq is not None:
+        if steps.frequencies is None:
+            raise CommandError("FREQ needs a result stored by frequency")
+        return _matching(steps.frequencies, freq, precision, criterion, "frequency")
+    if nom_cas is not None:
+        if not steps.case_names:
+            raise CommandError("NOM_CAS needs a mult_elas result")
+        return _matching_exact(
+            [c.strip() for c in steps.case_names], [str(c).strip() for c in nom_cas], "NOM_CAS"
+        )
+    return np.arange(steps.count)
+
+
+def _dof_fields(result) -> dict[str, np.ndarray]:
+    """DOF-vector fields of a result: name -> (n_steps, n_dofs)."""
+    if isinstance(result, DynaTrans):
+        return dict(result.fields)
+    if isinstance(result, ModeResult):
+        return {"DEPL": np.asarray(result.shapes).T}
+    if isinstance(result, MultElasResult):
+        return {"DEPL": np.asarray(result.fields).T}
+    return {}
+
+
+def nodal_field_names(result) -> list[str]:
+    """Nodal fields a result holds (DOF fields first, then *_NOEU fields)."""
+    names = list(_dof_fields(result))
+    names += [n for n in (getattr(result, "node_fields", None) or {}) if n not in names]
+    return names
+
+
+def element_field_names(result) -> list[str]:
+    return list(getattr(result, "element_fields", None) or {})
+
+
+def nodal_series(result, name: str, nodes=None, components=()) -> tuple:
+    """``(nodes, components, values)`` of nodal field ``name`` at every stored
+    step: values (n_steps, n_nodes, n_components), zero where a node lacks a
+    component. ``nodes`` / ``components`` restrict (and order) the output;
+    a node that carries no value is left out. KeyError if absent."""
+    from asterlite.io.med_writer import dofs_to_nodal
+
+    dof_fields = _dof_fields(result)
+    if name in dof_fields:
+        return dofs_to_nodal(result.numbering, dof_fields[name], nodes, components)
+    node_fields = getattr(result, "node_fields", None) or {}
+    if name not in node_fields:
+        raise KeyError(name)
+    field = node_fields[name]
+    field_nodes = np.asarray(field.nodes, dtype=int)
+    rows = {int(n): k for k, n in enumerate(field_nodes)}
+    picked = field_nodes if nodes is None else [int(n) for n in nodes if int(n) in rows]
+    comps = tuple(components) if components else tuple(field.components)
+    values = np.zeros((field.values.shape[0], len(picked), len(comps)))
+    for j, comp in enumerate(comps):
+        if comp in field.components:
+            values[:, :, j] = field.values[
+                :, [rows[n] for n in picked], field.components.index(comp)
+            ]
+    return np.asarray(picked, dtype=int), comps, values
+
+
+# =============================================================================
+# HDF5 store of tran_gene results
+# =============================================================================
+
+
+def _h5py():
+    try:
+        import h5py
+    except ImportError as exc:  # pragma: no cover - declared dependency
+        raise RuntimeError("the HDF5 result store needs the 'h5py' package") from exc
+    return h5py
+
+
+def _strings(values) -> np.ndarray:
+    h5py = _h5py()
+    return np.array([str(v) for v in values], dtype=h5py.string_dtype())
+
+
+def _read_strings(dataset) -> list[str]:
+    return [str(s) for s in dataset.asstr()[()]]
+
+
+def _attribute_value(value):
+    """A value HDF5 can hold as an attribute, or None when it cannot."""
+    if value is None:
+        return None
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    if isinstance(value, int | float | str | np.integer | np.floating):
+        return value
+    if isinstance(value, list | tuple | np.ndarray):
+        array = np.asarray(value)
+        if array.dtype.kind in "biuf" and array.size <= 4096:
+            return array
+    return None
+
+
+def _write_attributes(node, mapping: dict) -> list[str]:
+    """Scalar/array entries of ``mapping`` as attributes; returns the keys skipped."""
+    skipped = []
+    for key, value in mapping.items():
+        converted = _attribute_value(value)
+        if converted is None:
+            skipped.append(str(key))
+        else:
+            node.attrs[str(key)] = converted
+    return skipped
+
+
+def _plain(value):
+    if isinstance(value, bytes):
+        return value.decode()
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+_GROUP_NAME_BAD = re.compile(r"[/.]")
+
+
+def _shock_group_names(shocks: list[ShockHistory]) -> list[str]:
+    """One HDF5 group name per shock: its INTITULE, made unique."""
+    names, seen = [], set()
+    for k, shock in enumerate(shocks):
+        base = _GROUP_NAME_BAD.sub("_", (shock.name or "").strip()) or f"CHOC_{k + 1}"
+        name, n = base, 2
+        while name in seen:
+            name, n = f"{base}_{n}", n + 1
+        seen.add(name)
+        names.append(name)
+    return names
+
+
+def _write_mesh(group, mesh: Mesh) -> None:
+    group.attrs["name"] = mesh.name or ""
+    group.attrs["dim"] = int(mesh.dim)
+    group.attrs["title"] = mesh.title or ""
+    group["coords"] = np.asarray(mesh.coords, dtype=float)
+    group["node_names"] = _strings(mesh.node_names)
+    group["cell_names"] = _strings(mesh.cell_names)
+    group["cell_types"] = _strings(mesh.cell_types)
+    sizes = np.array([len(c) for c in mesh.cell_nodes], dtype=np.int64)
+    group["cell_offsets"] = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
+    flat = [n for c in mesh.cell_nodes for n in c]
+    group["cell_connectivity"] = np.asarray(flat, dtype=np.int64)
+    for kind, groups in (("node_groups", mesh.node_groups), ("cell_groups", mesh.cell_groups)):
+        sub = group.create_group(kind, track_order=True)
+        for name, members in groups.items():
+            sub[name.replace("/", "_")] = np.asarray(members, dtype=np.int64)
+
+
+def _write_basis(group, basis: ModeResult) -> None:
+    numbering = basis.numbering
+    mesh = numbering.mesh
+    group.attrs["name"] = basis.name or ""
+    group.attrs["kind"] = basis.kind
+    group.attrs["norm"] = basis.norm
+    group["shapes"] = np.asarray(basis.shapes, dtype=float)
+    group["dof_nodes"] = np.array([n for n, _ in numbering.dofs], dtype=np.int64)
+    group["dof_components"] = _strings(c for _, c in numbering.dofs)
+    group["dof_labels"] = _strings(f"{mesh.node_names[n]} {c}" for n, c in numbering.dofs)
+    group["frequencies"] = np.asarray(basis.frequencies, dtype=float)
+    group["generalized_mass"] = np.asarray(basis.generalized_mass, dtype=float)
+    group["generalized_stiffness"] = np.asarray(basis.generalized_stiffness, dtype=float)
+    group["mode_numbers"] = np.asarray(basis.mode_numbers, dtype=np.int64)
+    if basis.mode_labels:
+        group["mode_labels"] = _strings(basis.mode_labels)
+    _write_mesh(group.create_group("mesh"), mesh)
+
+
+def _write_shocks(group, shocks: list[ShockHistory]) -> None:
+    for k, (name, shock) in enumerate(zip(_shock_group_names(shocks), shocks, strict=True)):
+        sub = group.create_group(name, track_order=True)
+        sub.attrs["index"] = k + 1
+        sub.attrs["name"] = shock.name or ""
+        sub.attrs["relation"] = shock.relation or ""
+        sub.attrs["node_1"] = shock.node_1 or ""
+        sub.attrs["node_2"] = shock.node_2 or ""
+        skipped = _write_attributes(sub, shock.parameters)
+        if skipped:
+            sub.attrs["parameters_not_stored"] = ", ".join(skipped)
+        for field, values in shock.fields.items():
+            sub[field] = np.asarray(values)
+
+
+def save_tran_gene(path: str | Path, tran_gene: TranGene, name: str | None = None) -> Path:
+    """Write ``tran_gene`` to the HDF5 file ``path`` under group ``name``
+    (default: the concept's name); an existing group of that name is replaced,
+    other groups of the file are kept."""
+    h5py = _h5py()
+    path = Path(path)
+    name = (name or tran_gene.name or "TRAN_GENE").replace("/", "_")
+    with h5py.File(path, "a", track_order=True) as f:
+        if name in f:
+            del f[name]
+        group = f.create_group(name, track_order=True)
+        group.attrs["aster_type"] = "tran_gene"
+        group.attrs["layout_version"] = LAYOUT_VERSION
+        group.attrs["scheme"] = tran_gene.scheme or ""
+        group.attrs["step"] = float(tran_gene.step)
+        group.attrs["n_modes"] = int(tran_gene.n_modes)
+        group.attrs["n_archived"] = len(tran_gene.times)
+        group["times"] = np.asarray(tran_gene.times, dtype=float)
+        group["order"] = np.asarray(tran_gene.order, dtype=np.int64)
+        for field in ("depl", "vite", "acce"):
+            group[field] = np.asarray(getattr(tran_gene, field), dtype=float)
+        scheme = group.create_group("scheme")
+        scheme.attrs["name"] = tran_gene.scheme or ""
+        scheme.attrs["step"] = float(tran_gene.step)
+        skipped = _write_attributes(scheme, tran_gene.info)
+        if skipped:
+            scheme.attrs["info_not_stored"] = ", ".join(skipped)
+        _write_shocks(group.create_group("shocks", track_order=True), tran_gene.shocks)
+        _write_basis(group.create_group("basis"), tran_gene.basis)
+    return path
+
+
+def stored_names(path: str | Path) -> list[str]:
+    """Names of the tran_gene results stored in a file."""
+    h5py = _h5py()
+    with h5py.File(path, "r") as f:
+        return [k for k in f if f[k].attrs.get("aster_type") == "tran_gene"]
+
+
+def _read_attrs(node) -> dict[str, Any]:
+    return {k: _plain(v) for k, v in node.attrs.items()}
+
+
+def _read_group_arrays(node) -> dict[str, np.ndarray]:
+    return {k: node[k][()] for k in node}
+
+
+def _read_mesh(group) -> dict[str, Any]:
+    out = _read_attrs(group)
+    out["coords"] = group["coords"][()]
+    for key in ("node_names", "cell_names", "cell_types"):
+        out[key] = _read_strings(group[key])
+    out["cell_offsets"] = group["cell_offsets"][()]
+    out["cell_connectivity"] = group["cell_connectivity"][()]
+    out["node_groups"] = _read_group_arrays(group["node_groups"])
+    out["cell_groups"] = _read_group_arrays(group["cell_groups"])
+    return out
+
+
+def _read_basis(group) -> dict[str, Any]:
+    out = _read_attrs(group)
+    for key in ("shapes", "dof_nodes", "frequencies", "generalized_mass"):
+        out[key] = group[key][()]
+    out["generalized_stiffness"] = group["generalized_stiffness"][()]
+    out["mode_numbers"] = group["mode_numbers"][()]
+    out["dof_components"] = _read_strings(group["dof_components"])
+    out["dof_labels"] = _read_strings(group["dof_labels"])
+    out["mode_labels"] = _read_strings(group["mode_labels"]) if "mode_labels" in group else []
+    out["mesh"] = _read_mesh(group["mesh"])
+    return out
+
+
+def read_tran_gene_dict(path: str | Path, name: str | None = None) -> dict[str, Any]:
+    """A stored tran_gene as plain Python data (arrays, lists, dicts)."""
+    h5py = _h5py()
+    with h5py.File(path, "r") as f:
+        name = _pick_name(f, name, path)
+        group = f[name]
+        out = {"name": name, **_read_attrs(group)}
+        for key in ("times", "order", "depl", "vite", "acce"):
+            out[key] = group[key][()]
+        out["scheme_info"] = _read_attrs(group["scheme"])
+        out["shocks"] = [
+            {
+                "group": key,
+                "attributes": _read_attrs(group["shocks"][key]),
+                "fields": _read_group_arrays(group["shocks"][key]),
+            }
+            for key in group["shocks"]
+        ]
+        out["basis"] = _read_basis(group["basis"])
+    return out
+
+
+def _pick_name(f, name: str | None, path) -> str:
+    candidates = [k for k in f if f[k].attrs.get("aster_type") == "tran_gene"]
+    if name is None:
+        if not candidates:
+            raise KeyError(f"{path}: no tran_gene stored")
+        return candidates[0]
+    if name not in candidates:
+        raise KeyError(f"{path}: no tran_gene named {name!r} (stored: {', '.join(candidates)})")
+    return name
+
+
+def _mesh_from(data: dict[str, Any]) -> Mesh:
+    offsets = data["cell_offsets"]
+    conn = data["cell_connectivity"]
+    cell_nodes = [
+        tuple(int(n) for n in conn[offsets[i] : offsets[i + 1]]) for i in range(len(offsets) - 1)
+    ]
+    mesh = Mesh(
+        coords=np.asarray(data["coords"], dtype=float),
+        node_names=list(data["node_names"]),
+        cell_names=list(data["cell_names"]),
+        cell_types=list(data["cell_types"]),
+        cell_nodes=cell_nodes,
+        node_groups={k: np.asarray(v, dtype=int) for k, v in data["node_groups"].items()},
+        cell_groups={k: np.asarray(v, dtype=int) for k, v in data["cell_groups"].items()},
+        dim=int(data.get("dim", 3)),
+        title=str(data.get("title", "")),
+    )
+    mesh.name = data.get("name") or None
+    return mesh
+
+
+def _basis_from(data: dict[str, Any]) -> ModeResult:
+    mesh = _mesh_from(data["mesh"])
+    dofs = [(int(n), c) for n, c in zip(data["dof_nodes"], data["dof_components"], strict=True)]
+    basis = ModeResult(
+        numbering=DofNumbering(mesh=mesh, dofs=dofs),
+        shapes=np.asarray(data["shapes"], dtype=float),
+        frequencies=np.asarray(data["frequencies"], dtype=float),
+        generalized_mass=np.asarray(data["generalized_mass"], dtype=float),
+        generalized_stiffness=np.asarray(data["generalized_stiffness"], dtype=float),
+        kind=str(data.get("kind", "dynamic")),
+        parameters={"NUME_MODE": np.asarray(data["mode_numbers"], dtype=int)},
+        norm=str(data.get("norm", "")),
+        mode_labels=list(data.get("mode_labels", [])),
+    )
+    basis.name = data.get("name") or None
+    return basis
+
+
+_SHOCK_KEYS = ("index", "name", "relation", "node_1", "node_2", "parameters_not_stored")
+
+
+def _shock_from(data: dict[str, Any]) -> ShockHistory:
+    attrs = data["attributes"]
+    parameters = {k: v for k, v in attrs.items() if k not in _SHOCK_KEYS}
+    return ShockHistory(
+        name=str(attrs.get("name", data["group"])),
+        relation=str(attrs.get("relation", "")),
+        node_1=str(attrs.get("node_1", "")),
+        node_2=(str(attrs["node_2"]) or None) if attrs.get("node_2") else None,
+        fields=dict(data["fields"]),
+        parameters=parameters,
+    )
+
+
+def load_tran_gene(path: str | Path, name: str | None = None, *, concept: bool = True):
+    """Read a stored tran_gene: a :class:`TranGene` (``concept=True``, with
+    its modal basis, DOF numbering and mesh rebuilt) or the plain dict of
+    :func:`read_tran_gene_dict` (``concept=False``). ``name`` defaults to the
+    first tran_gene of the file."""
+    data = read_tran_gene_dict(path, name)
+    if not concept:
+        return data
+    info = {k: v for k, v in data["scheme_info"].items() if k not in ("name", "step")}
+    result = TranGene(
+        basis=_basis_from(data["basis"]),
+        times=data["times"],
+        order=data["order"],
+        depl=data["depl"],
+        vite=data["vite"],
+        acce=data["acce"],
+        shocks=[_shock_from(s) for s in data["shocks"]],
+        scheme=str(data.get("scheme", "")),
+        step=float(data.get("step", 0.0)),
+        info=info,
+    )
+    result.name = data["name"]
+    return result
+
+
+def save_session_results(path: str | Path, namespace: dict[str, Any]) -> list[str]:
+    """Save every TranGene of a deck namespace (keyed by concept name) to
+    ``path``; returns the names saved, in namespace order. A concept bound to
+    several names is saved once, under its own name when it has one."""
+    saved: list[str] = []
+    seen: set[int] = set()
+    for key, value in namespace.items():
+        if not isinstance(value, TranGene) or id(value) in seen:
+            continue
+        seen.add(id(value))
+        name = value.name or key
+        save_tran_gene(path, value, name)
+        saved.append(name)
+    return saved
+
+
+__all__ = [
+    "ResultSteps",
+    "element_field_names",
+    "is_physical_result",
+    "load_tran_gene",
+    "nodal_field_names",
+    "nodal_series",
+    "read_tran_gene_dict",
+    "result_steps",
+    "save_session_results",
+    "save_tran_gene",
+    "select_steps",
+    "stored_names",
+]

@@ -1,0 +1,337 @@
+"""DYNA_TRAN_MODAL, and DYNA_VIBRA before COMPORTEMENT, as code_aster 17's DYNA_VIBRA.
+
+code_aster 10 wrote ``DYNA_TRAN_MODAL(METHODE=..., MASS_GENE=..., RIGI_GENE=...,
+AMOR_REDUIT=..., CHOC=_F(...))``; versions 11 to 13 moved the scheme into
+``SCHEMA_TEMPS`` and the matrices to ``MATR_*``; version 13 renamed the
+command ``DYNA_VIBRA(TYPE_CALCUL='TRAN', BASE_CALCUL='GENE')`` but kept one
+factor keyword per nonlinearity (``CHOC``, ``FLAMBAGE``, ``ANTI_SISM``...),
+which later became ``COMPORTEMENT=_F(RELATION=...)``.
+
+Defaults that changed are written out, so a ported deck computes what the
+legacy one did: the legacy default scheme (``EULER`` in code_aster 10,
+``NEWMARK`` afterwards, ``RUNGE_KUTTA_32`` today) and the Runge-Kutta
+``TOLERANCE`` (1e-3 then, 1e-5 today).
+"""
+
+from __future__ import annotations
+
+from asterlite.legacy.base import (
+    NOT_LITERAL,
+    Env,
+    NewCall,
+    NotPortable,
+    Translation,
+    arith,
+    factor,
+    lit,
+    occurrences,
+    pop_keys,
+    single,
+)
+
+TARGET = "DYNA_VIBRA"
+HEADER = {"TYPE_CALCUL": "TRAN", "BASE_CALCUL": "GENE"}
+
+# legacy top-level keyword -> modern keyword
+TOP_RENAMES = {"MASS_GENE": "MATR_MASS", "RIGI_GENE": "MATR_RIGI", "AMOR_GENE": "MATR_AMOR"}
+# legacy top-level keywords gathered into one modern factor keyword
+DAMPING_KEYS = ("AMOR_REDUIT", "LIST_AMOR")
+# legacy METHODE / SCHEMA value -> modern SCHEMA value
+SCHEME_VALUES = {"ADAPT": "ADAPT_ORDRE2"}
+# one factor keyword per nonlinearity -> COMPORTEMENT (RELATION, renamed keywords)
+NONLINEAR_FAMILIES = {
+    "CHOC": ("DIS_CHOC", {}),
+    "FLAMBAGE": ("FLAMBAGE", {}),
+    "ANTI_SISM": ("ANTI_SISM", {}),
+    "DIS_VISC": ("DIS_VISC", {"RESI_INTE_RELA": "RESI_INTE"}),
+    "ROTOR_FISS": ("ROTOR_FISS", {}),
+    "RELA_EFFO_DEPL": ("RELA_EFFO_DEPL", {"RELATION": "FONCTION"}),
+    "RELA_EFFO_VITE": ("RELA_EFFO_VITE", {"RELATION": "FONCTION"}),
+}
+# INCREMENT keywords that moved into SCHEMA_TEMPS, with the schemes that take them
+ADAPT_ORDER = ("ADAPT_ORDRE1", "ADAPT_ORDRE2")
+RUNGE_KUTTA = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54")
+ADAPTIVE = RUNGE_KUTTA + ("DEVOGE",) + ADAPT_ORDER
+MOVED_TO_SCHEME = {
+    **{k: ADAPT_ORDER for k in ("VITE_MIN", "COEF_MULT_PAS", "COEF_DIVI_PAS")},
+    **{k: ADAPT_ORDER for k in ("PAS_LIMI_RELA", "NB_POIN_PERIODE")},
+    **{k: ADAPTIVE for k in ("PAS_MAXI", "PAS_MINI", "NMAX_ITER_PAS")},
+}
+# ITMI parameters of SCHEMA_TEMPS: those code_aster 17 keeps at the top level
+ITMI_TO_TOP = ("BASE_ELAS_FLUI", "NUME_VITE_FLUI")
+ITMI_DROPPED = ("ETAT_STAT", "PREC_DUREE", "CHOC_FLUI", "NB_MODE", "NB_MODE_FLUI", "TS_REG_ETAB")
+# legacy shock keywords of the fluid film model, which code_aster 17 dropped
+FLUID_FILM = ("LAME_FLUIDE", "ALPHA", "BETA", "CHI", "DELTA")
+# precision keywords with no modern place (ARCHIVAGE of a tran_gene)
+ARCHIVE_DROPPED = ("CRITERE", "PRECISION")
+LEGACY_RK_TOLERANCE = 1.0e-3
+UNSUPPORTED = {
+    "COUPLAGE_EDYOS": "coupling with EDYOS",
+    "PALIER_EDYOS": "EDYOS bearings",
+}
+LEGACY_VIBRA_FAMILIES = tuple(NONLINEAR_FAMILIES)
+
+
+# ------------------------------------------------------------------ entry points
+
+
+def translate_dyna_tran_modal(kwargs: dict, env: Env) -> Translation:
+    """DYNA_TRAN_MODAL(...) -> DYNA_VIBRA(TYPE_CALCUL='TRAN', BASE_CALCUL='GENE', ...)."""
+    env.note("DYNA_TRAN_MODAL", "DYNA_VIBRA(TYPE_CALCUL='TRAN', BASE_CALCUL='GENE')")
+    old_style = any(k in kwargs for k in ("MASS_GENE", "RIGI_GENE", "METHODE"))
+    default = "EULER" if old_style else "NEWMARK"
+    out = _gene_transient(dict(kwargs), env, "DYNA_TRAN_MODAL", default)
+    return Translation(TARGET, {**HEADER, **out}, env.notes)
+
+
+def is_legacy_dyna_vibra(kwargs: dict, env: Env) -> bool:
+    """A DYNA_VIBRA call written before COMPORTEMENT (code_aster 13 to 14)."""
+    if any(k in kwargs for k in LEGACY_VIBRA_FAMILIES):
+        return True
+    increment = _only(kwargs.get("INCREMENT"))
+    if increment and any(k in increment for k in MOVED_TO_SCHEME):
+        return True
+    return _legacy_only_scheme(kwargs)
+
+
+def _legacy_only_scheme(kwargs: dict) -> bool:
+    """SCHEMA='EULER' while the modern catalogue does not list it: the legacy
+    path reports it as an unsupported scheme rather than as a misspelling."""
+    occurrence = _only(kwargs.get("SCHEMA_TEMPS"))
+    if not occurrence or lit(occurrence.get("SCHEMA")) != "EULER":
+        return False
+    from asterlite.catalog import load_catalogue
+    from asterlite.legacy.runtime import gene_schemes
+
+    return "EULER" not in gene_schemes(load_catalogue("DYNA_VIBRA"))
+
+
+def translate_dyna_vibra(kwargs: dict, env: Env) -> Translation:
+    """DYNA_VIBRA(CHOC=_F(...), ...) -> DYNA_VIBRA(COMPORTEMENT=_F(RELATION='DIS_CHOC', ...))."""
+    out = _gene_transient(dict(kwargs), env, "DYNA_VIBRA", "NEWMARK")
+    return Translation(TARGET, out, env.notes)
+
+
+# ---------------------------------------------------------------------- common
+
+
+def _only(value):
+    try:
+        return single(value)
+    except NotPortable:  # a Src under port: not inline, so nothing to detect in it
+        return None
+
+
+def _gene_transient(kw: dict, env: Env, command: str, default_scheme: str) -> dict:
+    """The modern keywords of a legacy generalized transient call, in deck order."""
+    for name, what in UNSUPPORTED.items():
+        if name in kw:
+            env.unsupported(f"{name} ({what}) has no equivalent in asterlite", None, name)
+    scheme = _scheme(kw, env, command, default_scheme)
+    out: dict = {}
+    for key, value in kw.items():
+        if key in TOP_RENAMES:
+            out[TOP_RENAMES[key]] = value
+            env.note(f"{command}/{key}", f"DYNA_VIBRA/{TOP_RENAMES[key]}", None, key)
+        elif key in DAMPING_KEYS:
+            out.setdefault("AMOR_MODAL", factor({}))[key] = value
+            env.note(f"{command}/{key}", f"AMOR_MODAL=_F({key}=...)", None, key)
+        elif key in ("METHODE", "SCHEMA_TEMPS"):
+            out["SCHEMA_TEMPS"] = scheme
+        elif key in NONLINEAR_FAMILIES:
+            if "COMPORTEMENT" not in out:
+                out["COMPORTEMENT"] = _behaviours(kw, env, command)
+        elif key == "INCREMENT":
+            out[key] = _increment(value, scheme, env, command)
+        elif key == "ARCHIVAGE":
+            out[key] = _drop_in(value, ARCHIVE_DROPPED, env, f"{command}/ARCHIVAGE", _archive_check)
+        elif key == "ETAT_INIT":
+            out[key] = _initial_state(value, env, command)
+        elif key == "TITRE" and isinstance(lit(value), (list, tuple)):
+            out[key] = " ".join(str(v) for v in lit(value))
+        else:
+            out[key] = value
+    for name in ITMI_TO_TOP:
+        if name in scheme:
+            out[name] = scheme.pop(name)
+    if "SCHEMA_TEMPS" not in out:
+        out = {**{k: out.pop(k) for k in list(out) if k in HEADER}, "SCHEMA_TEMPS": scheme, **out}
+    return out
+
+
+def _scheme(kw: dict, env: Env, command: str, default: str) -> dict:
+    """SCHEMA_TEMPS from METHODE, a legacy SCHEMA_TEMPS, or the legacy default."""
+    if "METHODE" in kw:
+        given = kw["METHODE"]
+        value = lit(given)
+        new = SCHEME_VALUES.get(value, value) if value is not NOT_LITERAL else given
+        level = factor({"SCHEMA": new})
+        shown = value if value is not NOT_LITERAL else getattr(given, "text", given)
+        env.note(
+            f"{command}/METHODE={shown!r}", f"SCHEMA_TEMPS=_F(SCHEMA={new!r})", None, "METHODE"
+        )
+    elif "SCHEMA_TEMPS" in kw:
+        occurrence = single(kw["SCHEMA_TEMPS"]) or {}
+        level = factor(dict(occurrence), occurrence)
+        value = lit(level.get("SCHEMA", NOT_LITERAL))
+        if "SCHEMA" not in level:
+            level["SCHEMA"] = default
+            env.note(
+                f"{command}/SCHEMA_TEMPS without SCHEMA (legacy default {default})",
+                f"SCHEMA_TEMPS=_F(SCHEMA={default!r})",
+                occurrence,
+            )
+        elif value in SCHEME_VALUES:
+            level["SCHEMA"] = SCHEME_VALUES[value]
+            env.note(f"SCHEMA={value!r}", f"SCHEMA={SCHEME_VALUES[value]!r}", occurrence, "SCHEMA")
+    else:
+        level = factor({"SCHEMA": default})
+        env.note(
+            f"{command} without a scheme (legacy default {default})",
+            f"SCHEMA_TEMPS=_F(SCHEMA={default!r}) (the default is now RUNGE_KUTTA_32)",
+        )
+    if lit(level.get("SCHEMA")) in RUNGE_KUTTA and "TOLERANCE" not in level:
+        level["TOLERANCE"] = LEGACY_RK_TOLERANCE
+        env.note(
+            f"{command} Runge-Kutta without TOLERANCE (legacy default 1e-3)",
+            "SCHEMA_TEMPS=_F(TOLERANCE=1e-3) (the default is now 1e-5)",
+        )
+    for name in ITMI_DROPPED:
+        if name in level:
+            level.pop(name)
+            env.note(f"SCHEMA_TEMPS/{name}", "(removed: not an ITMI parameter any more)")
+    return level
+
+
+def _increment(value, scheme: dict, env: Env, command: str):
+    found = occurrences(value)
+    if len(found) != 1:
+        env.unsupported(
+            "several INCREMENT occurrences (code_aster 17 takes one)", None, "INCREMENT"
+        )
+    occurrence = found[0]
+    level = factor(dict(occurrence), occurrence)
+    name = lit(scheme.get("SCHEMA"))
+    for key, value in pop_keys(level, MOVED_TO_SCHEME).items():
+        if name is NOT_LITERAL or name in MOVED_TO_SCHEME[key]:
+            scheme[key] = value
+            env.note(f"{command}/INCREMENT/{key}", f"SCHEMA_TEMPS/{key}", occurrence, key)
+        else:
+            env.note(
+                f"{command}/INCREMENT/{key}", f"(removed: SCHEMA={name!r} does not use it)",
+                occurrence, key,
+            )  # fmt: skip
+    return level
+
+
+def _archive_check(level: dict, env: Env) -> None:
+    if "LIST_ARCH" in level:
+        env.unsupported(
+            "ARCHIVAGE/LIST_ARCH (a list of step numbers): give the instants with "
+            "ARCHIVAGE=_F(LIST_INST=...) or a step with PAS_ARCH",
+            level,
+            "LIST_ARCH",
+        )
+
+
+def _drop_in(value, names, env: Env, path: str, check=None):
+    """One occurrence without the keywords ``names`` (each removal noted)."""
+    found = occurrences(value)
+    if not found:
+        return value
+    occurrence = found[0]
+    if check is not None:
+        check(occurrence, env)
+    level = factor(dict(occurrence), occurrence)
+    for key in pop_keys(level, names):
+        env.note(f"{path}/{key}", "(removed: no longer a keyword of a tran_gene)", occurrence, key)
+    return level
+
+
+def _initial_state(value, env: Env, command: str):
+    found = occurrences(value)
+    if not found or "INST_INIT" in found[0]:
+        return value
+    return _drop_in(value, ARCHIVE_DROPPED, env, f"{command}/ETAT_INIT")
+
+
+def _behaviours(kw: dict, env: Env, command: str) -> tuple:
+    """Every legacy nonlinearity occurrence as a COMPORTEMENT occurrence."""
+    behaviours = []
+    for family, (relation, renames) in NONLINEAR_FAMILIES.items():
+        found = occurrences(kw.get(family))
+        if not found:
+            continue
+        env.note(
+            f"{command}/{family}=_F(...)",
+            f"COMPORTEMENT=_F(RELATION={relation!r}, ...)",
+            None,
+            family,
+        )
+        for occurrence in found:
+            behaviours.append(_behaviour(occurrence, relation, renames, env, family))
+    return tuple(behaviours)
+
+
+def _behaviour(occurrence: dict, relation: str, renames: dict, env: Env, family: str) -> dict:
+    level = factor({"RELATION": relation}, occurrence)
+    for key, value in occurrence.items():
+        level[renames.get(key, key)] = value
+    for old, new in renames.items():
+        if old in occurrence:
+            env.note(f"{family}/{old}", f"COMPORTEMENT/{new}", occurrence, old)
+    if family == "CHOC":
+        _drop_fluid_film(level, env, occurrence)
+    if family == "FLAMBAGE" and "FNOR_CRIT" in level:
+        _buckling_curves(level, env, occurrence)
+    return level
+
+
+BUCKLING_SCALARS = ("RIGI_NOR", "FNOR_CRIT", "FNOR_POST_FL", "RIGI_NOR_POST_FL")
+STEP = 1.0e-9  # relative width of the jump at the buckling penetration
+
+
+def _buckling_curves(level: dict, env: Env, occurrence: dict) -> None:
+    """Scalar buckling law (code_aster 10-14) as the functions of the crushing
+    code_aster 17 takes: elastic RIGI_NOR up to FNOR_CRIT, reached at the
+    penetration FNOR_CRIT/RIGI_NOR; beyond, threshold FNOR_POST_FL with the
+    stiffness RIGI_NOR_POST_FL (the legacy law's residual crushing follows)."""
+    missing = [k for k in BUCKLING_SCALARS if k not in level]
+    if missing:
+        env.unsupported(f"FLAMBAGE: {', '.join(missing)} missing", occurrence)
+    kn, fcrit, fpost, kpost = (level.pop(k) for k in BUCKLING_SCALARS)
+    buckling = arith("/", fcrit, kn)
+    after = arith("*", buckling, 1.0 + STEP)
+
+    def step(before, beyond, hint):
+        values = (0.0, before, buckling, before, after, beyond)
+        kwargs = {
+            "NOM_PARA": "DX",
+            "VALE": values,
+            "PROL_GAUCHE": "CONSTANT",
+            "PROL_DROITE": "CONSTANT",
+        }
+        return NewCall("DEFI_FONCTION", kwargs, hint)
+
+    level["FX"] = step(fcrit, fpost, "FL_FX")
+    level["RIGI_NOR"] = step(kn, kpost, "FL_RIGI")
+    level["AMOR_NOR"] = NewCall(
+        "DEFI_FONCTION",
+        {"NOM_PARA": "DX", "VALE": (0.0, 0.0, 1.0, 0.0), "PROL_GAUCHE": "CONSTANT",
+         "PROL_DROITE": "CONSTANT"},
+        "FL_AMOR",
+    )  # fmt: skip
+    env.note(
+        "FLAMBAGE/FNOR_CRIT, FNOR_POST_FL, RIGI_NOR, RIGI_NOR_POST_FL (scalars)",
+        "COMPORTEMENT=_F(RELATION='FLAMBAGE', FX=..., RIGI_NOR=..., AMOR_NOR=...) "
+        "with DEFI_FONCTION of the crushing DX",
+        occurrence,
+        "FNOR_CRIT",
+    )
+
+
+def _drop_fluid_film(level: dict, env: Env, occurrence: dict) -> None:
+    if lit(level.get("LAME_FLUIDE")) == "OUI":
+        env.unsupported("CHOC/LAME_FLUIDE='OUI' (fluid film) has no modern equivalent", occurrence)
+    for key in pop_keys(level, FLUID_FILM):
+        env.note(f"CHOC/{key}", "(removed: the fluid film model is gone)", occurrence, key)

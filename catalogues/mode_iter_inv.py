@@ -1,0 +1,68 @@
+"""MODE_ITER_INV (code_aster up to 12): eigenmodes by inverse iterations.
+
+Legacy command, replaced by CALC_MODES (OPTION 'SEPARE', 'AJUSTE' or
+'PROCHE'; the legacy default was 'AJUSTE'). ``compat_syntax`` translates
+the call (see ``asterlite.legacy.modes``).
+"""
+
+from asterlite.catalogues.common import C_SOLVEUR, OUI_NON
+
+from asterlite.catalog import BLOC, FACT, OPER, SIMP, UN_PARMI, equal_to
+from asterlite.legacy import forms
+
+MATRIX_TYPES = ("matr_asse_depl_r", "matr_asse_gene_r", "matr_asse_pres_r")
+INVERSE = ("SEPARE", "AJUSTE", "PROCHE")
+
+
+def _window(value_name: str) -> FACT:
+    return FACT(
+        statut="o",
+        OPTION=SIMP(statut="f", typ="TXM", into=INVERSE),
+        **{value_name: SIMP(statut="o", typ="R", max="**")},
+        AMOR_REDUIT=SIMP(statut="f", typ="R", max="**"),
+        NMAX_FREQ=SIMP(statut="f", typ="I", val_min=0),
+        NMAX_ITER_SEPARE=SIMP(statut="f", typ="I", val_min=0),
+        PREC_SEPARE=SIMP(statut="f", typ="R", val_min=0.0),
+        NMAX_ITER_AJUSTE=SIMP(statut="f", typ="I", val_min=0),
+        PREC_AJUSTE=SIMP(statut="f", typ="R", val_min=0.0),
+        NPREC_SOLVEUR=SIMP(statut="f", typ="I"),
+        NMAX_ITER_SHIFT=SIMP(statut="f", typ="I", val_min=0),
+        PREC_SHIFT=SIMP(statut="f", typ="R", val_min=0.0),
+        SEUIL_FREQ=SIMP(statut="f", typ="R", val_min=0.0),
+    )
+
+
+MODE_ITER_INV = OPER(
+    nom="MODE_ITER_INV",
+    sd_prod=lambda kw: None,
+    reentrant="n",
+    compat_syntax=forms.MODE_ITER_INV,
+    fr="Eigenmodes by inverse iterations (legacy: CALC_MODES)",
+    regles=(UN_PARMI("MATR_RIGI", "MATR_A"), UN_PARMI("MATR_MASS", "MATR_B")),
+    MATR_RIGI=SIMP(statut="f", typ=MATRIX_TYPES),
+    MATR_MASS=SIMP(statut="f", typ=MATRIX_TYPES),
+    MATR_AMOR=SIMP(statut="f", typ=MATRIX_TYPES),
+    MATR_A=SIMP(statut="f", typ=MATRIX_TYPES),
+    MATR_B=SIMP(statut="f", typ=MATRIX_TYPES),
+    MATR_C=SIMP(statut="f", typ=MATRIX_TYPES),
+    TYPE_RESU=SIMP(statut="f", typ="TXM", into=("DYNAMIQUE", "MODE_FLAMB")),
+    b_dynam=BLOC(condition=~equal_to("TYPE_RESU", "MODE_FLAMB"), CALC_FREQ=_window("FREQ")),
+    b_flamb=BLOC(condition=equal_to("TYPE_RESU", "MODE_FLAMB"), CALC_FREQ=_window("CHAR_CRIT")),
+    CALC_MODE=FACT(
+        statut="f",
+        OPTION=SIMP(statut="f", typ="TXM", into=("DIRECT", "RAYLEIGH")),
+        PREC=SIMP(statut="f", typ="R", val_min=0.0),
+        NMAX_ITER=SIMP(statut="f", typ="I", val_min=0),
+    ),
+    VERI_MODE=FACT(
+        statut="f",
+        STOP_ERREUR=SIMP(statut="f", typ="TXM", into=OUI_NON),
+        SEUIL=SIMP(statut="f", typ="R"),
+        PREC_SHIFT=SIMP(statut="f", typ="R"),
+        STURM=SIMP(statut="f", typ="TXM", into=OUI_NON),
+    ),
+    SOLVEUR=C_SOLVEUR("MODE_ITER_INV", statut="f"),
+    SENSIBILITE=SIMP(statut="f", typ="TXM", max="**"),
+    INFO=SIMP(statut="f", typ="I", into=(1, 2)),
+    TITRE=SIMP(statut="f", typ="TXM", max="**"),
+)

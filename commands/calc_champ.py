@@ -1,0 +1,137 @@
+"""CALC_CHAMP: beam internal forces and stresses of a result (EFGE_ELNO,
+SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing) and user
+fields (CHAM_UTIL).
+
+The fields are computed at every order of the result from its DEPL field
+(mode shapes for a mode_meca) and stored on the result as
+``result.element_fields[NAME]`` (:class:`~asterlite.concepts.assembly.ElementField`)
+and ``result.node_fields[NAME]`` (:class:`~asterlite.concepts.assembly.NodalComponentField`).
+MODELE / CARA_ELEM / CHAM_MATER default to those the result's DOF numbering
+was built with (as code_aster takes them from the result).
+"""
+
+from __future__ import annotations
+
+import copy
+
+import numpy as np
+
+from asterlite.concepts.assembly import ElementField
+from asterlite.fem.element_fields import (
+    ELGA_OPTIONS,
+    ELNO_OPTIONS,
+    NOEU_OPTIONS,
+    beam_element_fields,
+    nodal_average,
+)
+from asterlite.fem.elements import ElementError
+from asterlite.fem.selection import as_tuple, select_cells
+
+_BEAMS = ("POU_D_E", "POU_D_T")
+
+
+def _nodal_values(ctx, result, kw) -> np.ndarray:
+    """(n_orders, n_dofs) displacements of the result."""
+    fields = getattr(result, "fields", None)
+    if isinstance(fields, dict) and "DEPL" in fields:
+        return np.asarray(fields["DEPL"], dtype=float)
+    shapes = getattr(result, "shapes", None)
+    if shapes is not None:
+        return np.asarray(shapes, dtype=float).T
+    ctx.error(f"the result {result.name or ''} has no DEPL field", "RESULTAT", kw)
+
+
+def _context(ctx, kw, result):
+    numbering = result.numbering
+    model = kw.get("MODELE") or getattr(result, "model", None) or numbering.model
+    characteristics = kw.get("CARA_ELEM") or getattr(numbering, "characteristics", None)
+    materials = kw.get("CHAM_MATER") or getattr(numbering, "materials", None)
+    if model is None:
+        ctx.error("give MODELE: the result does not know its model", "MODELE", kw)
+    if model.mesh is not numbering.mesh:
+        ctx.error("MODELE is built on another mesh than the result", "MODELE", kw)
+    return model, characteristics, materials
+
+
+def _cham_util(ctx, result, occ) -> None:
+    source = occ["NOM_CHAM"]
+    field = result.element_fields.get(source)
+    if field is None:
+        ctx.error(f"{source} must be computed first (CONTRAINTE)", "NOM_CHAM", occ)
+    if occ.get("FORMULE") is None:
+        ctx.unsupported("CHAM_UTIL CRITERE / NORME", "CRITERE", occ)
+    formulas = as_tuple(occ["FORMULE"])
+    values = np.zeros(field.values.shape[:3] + (len(formulas),))
+    for k, formula in enumerate(formulas):
+        params = formula.nom_para
+        missing = [p for p in params if p not in field.components]
+        if missing:
+            ctx.error(f"{source} has no component {', '.join(missing)}", "FORMULE", occ)
+        columns = [field.values[..., field.components.index(p)] for p in params]
+        try:
+            values[..., k] = formula.evaluate(*columns)
+        except Exception:  # noqa: BLE001 - deck functions may not take arrays
+            flat = [c.ravel() for c in columns]
+            values[..., k] = np.array(
+                [formula(*(float(c[i]) for c in flat)) for i in range(flat[0].size)]
+            ).reshape(columns[0].shape)
+    name = f"UT{int(occ['NUME_CHAM_RESU']):02d}_" + source.split("_")[-1]
+    components = tuple(f"X{k + 1}" for k in range(len(formulas)))
+    result.element_fields[name] = ElementField(name, field.cells, components, values)
+    ctx.log(f"CALC_CHAMP {name}: {len(formulas)} components on {len(field.cells)} cells")
+
+
+def run(ctx, kw):
+    source = kw["RESULTAT"]
+    if ctx.reuse is not None:
+        result = source
+    else:
+        # a new result holding the source's fields and the new ones
+        result = copy.copy(source)
+        result.name = None
+    result.element_fields = dict(getattr(source, "element_fields", {}) or {})
+    result.node_fields = dict(getattr(source, "node_fields", {}) or {})
+    requested = []
+    for keyword in ("CONTRAINTE", "DEFORMATION", "ENERGIE", "CRITERES", "VARI_INTERNE"):
+        requested.extend((keyword, name) for name in as_tuple(kw.get(keyword)))
+    for keyword in ("PROPRIETES", "FORCE"):
+        if kw.get(keyword):
+            ctx.unsupported(f"CALC_CHAMP {keyword}={as_tuple(kw[keyword])}", keyword, kw)
+    if kw.factor("EXCIT"):
+        ctx.unsupported("CALC_CHAMP EXCIT (distributed loads in the forces)", "EXCIT", kw)
+    names = [name for _, name in requested]
+    other = [n for n in names if n not in ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS]
+    if other:
+        keyword = next(k for k, n in requested if n == other[0])
+        ctx.unsupported(f"CALC_CHAMP {keyword}={other[0]!r}", keyword, kw)
+    if names:
+        model, characteristics, materials = _context(ctx, kw, result)
+        cells = select_cells(ctx, kw, model.mesh) if kw.get("GROUP_MA") else None
+        candidates = sorted(model.cell_modelisation) if cells is None else cells
+        beams = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) in _BEAMS], dtype=int
+        )
+        if not beams.size:
+            ctx.unsupported("CALC_CHAMP on a model without POU_D_E / POU_D_T cells", None, kw)
+        if characteristics is None:
+            ctx.error("beam fields need CARA_ELEM", "CARA_ELEM", kw)
+        elno = sorted({n.replace("_NOEU", "_ELNO") for n in names})
+        values = _nodal_values(ctx, result, kw)
+        try:
+            fields = beam_element_fields(
+                model, characteristics, materials, result.numbering, beams, values, elno
+            )
+        except (ElementError, ValueError, KeyError) as exc:
+            ctx.error(str(exc), "CONTRAINTE", kw)
+        for name, field in fields.items():
+            result.element_fields[name] = field
+        for name in names:
+            if name.endswith("_NOEU"):
+                elno_field = result.element_fields[name.replace("_NOEU", "_ELNO")]
+                result.node_fields[name] = nodal_average(elno_field, model.mesh, name)
+        ctx.log(
+            f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
+        )
+    for occ in kw.factor("CHAM_UTIL"):
+        _cham_util(ctx, result, occ)
+    return result

@@ -1,0 +1,484 @@
+"""IMPR_RESU: write meshes, nodal fields and results.
+
+- ``FORMAT='MED'`` (logical unit 80 by default): a MED file for Salome /
+  ParaVis (:mod:`asterlite.io.med_writer`). ``RESU=_F(MAILLAGE=...)`` writes
+  the mesh; ``RESULTAT`` (dyna_trans, mode_meca, mult_elas) writes its
+  nodal fields (NOM_CHAM, all by default) at the chosen steps (TOUT_ORDRE,
+  NUME_ORDRE, NUME_MODE, INST, FREQ, LIST_*, NOM_CAS), on the nodes of
+  GROUP_NO / GROUP_MA (a MED profile) and for the components NOM_CMP; the
+  mesh comes with it. ``CHAM_GD`` writes a nodal field. Field names follow
+  code_aster (result name on 8 characters padded with ``_`` + field name),
+  or NOM_CHAM_MED / NOM_RESU_MED. Every IMPR_RESU of a run on the same unit
+  adds to the same file (a MED file left by an earlier run is replaced).
+- ``FORMAT='RESULTAT'`` (unit 8): a text listing of the same selections,
+  one block per field and step, one line per node (FORMAT_R, IMPR_COOR,
+  NOM_PARA / TOUT_PARA, VALE_MAX / VALE_MIN); a mesh alone is listed in
+  ASTER format.
+- ``FORMAT='ASTER'`` (unit 26): a mesh in code_aster's text mesh format.
+"""
+
+from __future__ import annotations
+
+import weakref
+from pathlib import Path
+
+import numpy as np
+
+from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.mesh import Mesh
+from asterlite.concepts.modes import ModeResult
+from asterlite.concepts.table import Table
+from asterlite.errors import CommandError
+from asterlite.io.med_writer import (
+    MedWriteError,
+    NodalSeries,
+    dofs_to_nodal,
+    med_field_name,
+    write_med,
+)
+from asterlite.io.result_store import (
+    element_field_names,
+    is_physical_result,
+    nodal_field_names,
+    nodal_series,
+    result_steps,
+    select_steps,
+)
+from asterlite.io.tables import fortran_real, table_lines, write_lines
+from asterlite.post.restitution import as_tuple, node_indices, values_of
+
+# MED files each session has written (a later IMPR_RESU on the unit appends)
+_WRITTEN: dict[int, tuple[weakref.ref, set[Path]]] = {}
+
+
+def run(ctx, kw):
+    fmt = kw.get("FORMAT", "MED")
+    if fmt == "MED":
+        return write_med_format(ctx, kw)
+    if fmt == "RESULTAT":
+        return write_text_format(ctx, kw)
+    if fmt == "ASTER":
+        return write_aster_format(ctx, kw)
+    ctx.unsupported(f"FORMAT={fmt!r}", "FORMAT", kw)
+
+
+# =============================================================================
+# selections shared by the formats (and by POST_RELEVE_T)
+# =============================================================================
+
+
+def first_time(session, path: Path) -> bool:
+    """True the first time this session writes ``path`` (then it is recorded)."""
+    entry = _WRITTEN.get(id(session))
+    if entry is None or entry[0]() is not session:
+        entry = (weakref.ref(session), set())
+        _WRITTEN[id(session)] = entry
+    path = Path(path).resolve()
+    if path in entry[1]:
+        return False
+    entry[1].add(path)
+    return True
+
+
+def chosen_steps(ctx, kw, steps) -> np.ndarray:
+    """Indices of the stored steps selected by the access keywords of ``kw``."""
+    for key in ("NOEUD_CMP", "ANGLE"):
+        if kw.get(key) is not None:
+            ctx.unsupported(f"access by {key}", key, kw)
+    access = {}
+    if kw.get("NUME_ORDRE") is not None:
+        access["nume_ordre"], key = as_tuple(kw["NUME_ORDRE"]), "NUME_ORDRE"
+    elif kw.get("LIST_ORDRE") is not None:
+        access["nume_ordre"], key = values_of(kw["LIST_ORDRE"]).astype(int), "LIST_ORDRE"
+    elif kw.get("NUME_MODE") is not None:
+        access["nume_mode"], key = as_tuple(kw["NUME_MODE"]), "NUME_MODE"
+    elif kw.get("LIST_MODE") is not None:
+        access["nume_mode"], key = values_of(kw["LIST_MODE"]).astype(int), "LIST_MODE"
+    elif kw.get("INST") is not None:
+        access["inst"], key = values_of(kw["INST"]), "INST"
+    elif kw.get("LIST_INST") is not None:
+        access["inst"], key = values_of(kw["LIST_INST"]), "LIST_INST"
+    elif kw.get("FREQ") is not None:
+        access["freq"], key = values_of(kw["FREQ"]), "FREQ"
+    elif kw.get("LIST_FREQ") is not None:
+        access["freq"], key = values_of(kw["LIST_FREQ"]), "LIST_FREQ"
+    elif kw.get("NOM_CAS") is not None:
+        access["nom_cas"], key = as_tuple(kw["NOM_CAS"]), "NOM_CAS"
+    else:
+        key = None
+    try:
+        return select_steps(
+            steps,
+            precision=float(kw.get("PRECISION", 1e-6)),
+            criterion=kw.get("CRITERE", "RELATIF"),
+            **access,
+        )
+    except CommandError as exc:
+        ctx.error(exc.message, key, kw)
+
+
+def chosen_nodes(ctx, kw, mesh) -> np.ndarray | None:
+    """Mesh nodes of GROUP_NO / NOEUD / GROUP_MA / MAILLE (None: all)."""
+    if kw.get("TOUT") == "OUI":
+        return None
+    return node_indices(ctx, kw, mesh)
+
+
+def result_mesh(result) -> Mesh:
+    return result.numbering.mesh
+
+
+def field_names(ctx, kw, result) -> list[str]:
+    """Nodal fields to write: NOM_CHAM, or all nodal fields the result holds
+    (element fields are left out, with a note in the log)."""
+    available = nodal_field_names(result)
+    if kw.get("NOM_CHAM") is not None and kw.get("TOUT_CHAM") != "OUI":
+        names = list(dict.fromkeys(as_tuple(kw["NOM_CHAM"])))
+        for name in names:
+            if name in element_field_names(result) and name not in available:
+                ctx.unsupported(f"writing the element field {name}", "NOM_CHAM", kw)
+            if name not in available:
+                ctx.error(
+                    f"the result {result.name or ''} has no field {name} "
+                    f"(it has {', '.join(available) or 'none'})",
+                    "NOM_CHAM",
+                    kw,
+                )
+        return names
+    skipped = [n for n in element_field_names(result) if n not in available]
+    if skipped:
+        ctx.log(f"element fields not written: {', '.join(skipped)}")
+    return available
+
+
+def components_of(kw) -> tuple[str, ...]:
+    return tuple(as_tuple(kw.get("NOM_CMP")))
+
+
+def result_block(ctx, kw, result, name: str):
+    """(nodes, components, values (n_selected_steps, n_nodes, n_comp), step
+    indices) of one field of a result, for the keywords of one occurrence."""
+    mesh = result_mesh(result)
+    steps = result_steps(result)
+    indices = chosen_steps(ctx, kw, steps)
+    nodes = chosen_nodes(ctx, kw, mesh)
+    comps = components_of(kw)
+    nodes, comps, values = nodal_series(result, name, nodes, comps)
+    check_components(ctx, kw, result, name, comps)
+    if nodes.size == 0:
+        ctx.error(f"field {name}: no value on the requested nodes", "GROUP_NO", kw)
+    return nodes, comps, values[indices], indices
+
+
+def check_components(ctx, kw, result, name, comps) -> None:
+    asked = components_of(kw)
+    if not asked:
+        return
+    _, present, _ = nodal_series(result, name)
+    absent = [c for c in asked if c not in present]
+    if absent:
+        ctx.error(
+            f"field {name} has no component {absent[0]} (it has {', '.join(present)})",
+            "NOM_CMP",
+            kw,
+        )
+
+
+def nodal_field_block(ctx, kw, field: NodalField):
+    """(nodes, components, values (1, n_nodes, n_comp)) of a CHAM_GD."""
+    numbering = field.numbering
+    nodes = chosen_nodes(ctx, kw, numbering.mesh)
+    return dofs_to_nodal(numbering, field.values[None, :], nodes, components_of(kw))
+
+
+# =============================================================================
+# MED
+# =============================================================================
+
+
+def write_med_format(ctx, kw) -> None:
+    path = ctx.session.output_path(int(kw.get("UNITE", 80)))
+    version = kw.get("VERSION_MED", "4.0.0")
+    for occ in kw.factor("RESU"):
+        mesh, mesh_name, series = med_occurrence(ctx, occ)
+        append = not first_time(ctx.session, path)
+        try:
+            write_med(path, mesh, mesh_name, series, version=version, append=append)
+        except MedWriteError as exc:
+            ctx.error(str(exc), None, occ)
+        written = ", ".join(s.name for s in series) or "mesh only"
+        ctx.log(f"MED {path.name}: mesh {mesh_name}; {written}")
+        if occ.get("INFO_MAILLAGE") == "OUI":
+            ctx.log(mesh_summary(mesh, mesh_name))
+
+
+def med_occurrence(ctx, occ):
+    """(mesh, mesh name, [NodalSeries]) of one RESU occurrence."""
+    if occ.get("NOM_PARA") is not None:
+        ctx.unsupported("NOM_PARA (MED scalar variables)", "NOM_PARA", occ)
+    result, field = occ.get("RESULTAT"), occ.get("CHAM_GD")
+    mesh = occ.get("MAILLAGE")
+    if result is not None:
+        if not is_physical_result(result):
+            ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
+        mesh = mesh or result_mesh(result)
+        return mesh, mesh_label(mesh), result_series(ctx, occ, result)
+    if field is not None:
+        if not isinstance(field, NodalField):
+            ctx.unsupported(f"CHAM_GD of type {field.aster_type}", "CHAM_GD", occ)
+        mesh = mesh or field.numbering.mesh
+        return mesh, mesh_label(mesh), [cham_gd_series(ctx, occ, field)]
+    return mesh, mesh_label(mesh), []
+
+
+def mesh_label(mesh: Mesh) -> str:
+    return (mesh.name or "MAILLAGE").strip()
+
+
+def med_names(ctx, occ, default_prefix: str, fields: list[str]) -> list[str]:
+    """MED field names: NOM_CHAM_MED (one per field), else NOM_RESU_MED or
+    the concept name, padded to 8 with ``_``, followed by the field name."""
+    given = as_tuple(occ.get("NOM_CHAM_MED"))
+    if given:
+        if len(given) != len(fields):
+            ctx.error(
+                f"NOM_CHAM_MED gives {len(given)} names for {len(fields)} fields",
+                "NOM_CHAM_MED",
+                occ,
+            )
+        return [str(g) for g in given]
+    prefix = occ.get("NOM_RESU_MED") or default_prefix
+    return [med_field_name(prefix, f) for f in fields]
+
+
+def result_series(ctx, occ, result) -> list[NodalSeries]:
+    fields = field_names(ctx, occ, result)
+    names = med_names(ctx, occ, result.name or "RESU", fields)
+    steps = result_steps(result)
+    times = steps.time_values()
+    out = []
+    for field, med_name in zip(fields, names, strict=True):
+        nodes, comps, values, indices = result_block(ctx, occ, result, field)
+        out.append(
+            NodalSeries(med_name, comps, values, times[indices], steps.orders[indices], nodes)
+        )
+    return out
+
+
+def cham_gd_series(ctx, occ, field: NodalField) -> NodalSeries:
+    nodes, comps, values = nodal_field_block(ctx, occ, field)
+    given = as_tuple(occ.get("NOM_CHAM_MED"))
+    name = str(given[0]) if given else (occ.get("NOM_RESU_MED") or field.name or "CHAMP")
+    return NodalSeries(name, comps, values, np.zeros(1), np.array([-1]), nodes)
+
+
+def mesh_summary(mesh: Mesh, name: str) -> str:
+    counts = {t: mesh.cell_types.count(t) for t in dict.fromkeys(mesh.cell_types)}
+    cells = ", ".join(f"{n} {t}" for t, n in counts.items()) or "no cell"
+    return (
+        f"mesh {name}: {mesh.n_nodes} nodes, {cells}; "
+        f"{len(mesh.node_groups)} node groups, {len(mesh.cell_groups)} cell groups"
+    )
+
+
+# =============================================================================
+# RESULTAT (text)
+# =============================================================================
+
+RULE = " " + "=" * 78
+
+
+def write_text_format(ctx, kw) -> None:
+    path = ctx.session.output_path(int(kw.get("UNITE", 8)))
+    lines: list[str] = []
+    for occ in kw.factor("RESU"):
+        lines.extend(text_occurrence(ctx, occ))
+    write_lines(path, lines)  # text units accumulate, as for IMPR_TABLE
+    ctx.log(f"RESULTAT listing written to {path.name} ({len(lines)} lines)")
+
+
+def text_occurrence(ctx, occ) -> list[str]:
+    if occ.get("BORNE_SUP") is not None or occ.get("BORNE_INF") is not None:
+        key = "BORNE_SUP" if occ.get("BORNE_SUP") is not None else "BORNE_INF"
+        ctx.unsupported("BORNE_SUP / BORNE_INF", key, occ)
+    if occ.get("FORM_TABL", "NON") != "NON" and occ.get("RESULTAT") is None:
+        ctx.unsupported("FORM_TABL without RESULTAT", "FORM_TABL", occ)
+    real_format = fortran_format(occ.get("FORMAT_R", "1PE21.14"))
+    lines = [RULE]
+    if occ.get("SOUS_TITRE"):
+        lines.append(f" {occ['SOUS_TITRE']}")
+    result, field = occ.get("RESULTAT"), occ.get("CHAM_GD")
+    if result is not None:
+        if not is_physical_result(result):
+            ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
+        return lines + result_text(ctx, occ, result, real_format)
+    if field is not None:
+        if not isinstance(field, NodalField):
+            ctx.unsupported(f"CHAM_GD of type {field.aster_type}", "CHAM_GD", occ)
+        nodes, comps, values = nodal_field_block(ctx, occ, field)
+        lines.append(f" CHAMP AUX NOEUDS {field.name or ''}")
+        mesh = field.numbering.mesh
+        return lines + node_lines(occ, mesh, nodes, comps, values[0], real_format)
+    mesh = occ["MAILLAGE"]
+    return lines + aster_mesh_lines(mesh)
+
+
+def fortran_format(spec: str) -> str:
+    """``1PE21.14`` -> ``E21.14`` (the scale factor is implied by E formats here)."""
+    spec = spec.strip().upper()
+    if "P" in spec:
+        spec = spec.split("P", 1)[1]
+    return spec if spec[:1] in ("E", "D", "F") else "E21.14"
+
+
+def result_text(ctx, occ, result, real_format: str) -> list[str]:
+    steps = result_steps(result)
+    fields = field_names(ctx, occ, result)
+    lines = [f" RESULTAT {result.name or ''} ({result.aster_type})"]
+    blocks = {f: result_block(ctx, occ, result, f) for f in fields}
+    indices = chosen_steps(ctx, occ, steps)
+    params = parameter_names(ctx, occ, result, steps)
+    if params and occ.get("FORM_TABL", "NON") != "NON":
+        lines.extend(parameter_table(result, steps, indices, params))
+        params = []
+    mesh = result_mesh(result)
+    for k, step in enumerate(indices):
+        for field, (nodes, comps, values, _) in blocks.items():
+            lines.append(" " + "-" * 78)
+            lines.append(f" CHAMP AUX NOEUDS DE NOM SYMBOLIQUE  {field}")
+            lines.append(step_header(steps, step))
+            shown = steps.parameters(step)
+            lines.extend(
+                f" {p}: {format_parameter(v)}"
+                for p, v in step_parameters(result, steps, step, params).items()
+                if p not in shown
+            )
+            lines.append("")
+            lines.extend(node_lines(occ, mesh, nodes, comps, values[k], real_format))
+    return lines
+
+
+def step_header(steps, step: int) -> str:
+    text = f" NUMERO D'ORDRE: {int(steps.orders[step]):8d}"
+    for name, value in steps.parameters(step).items():
+        text += f" {name}: {format_parameter(value)}"
+    return text
+
+
+def format_parameter(value) -> str:
+    if isinstance(value, float | np.floating):
+        return fortran_real(float(value), "E12.5").strip()
+    return str(value)
+
+
+def all_parameters(result, steps, step: int) -> dict:
+    out = steps.parameters(step)
+    if isinstance(result, ModeResult):
+        for name, values in result.parameters.items():
+            values = np.asarray(values)
+            if values.shape[:1] == (result.n_modes,) and values.ndim == 1:
+                value = values[step]
+                out[name] = value.item() if isinstance(value, np.generic) else value
+    return out
+
+
+def parameter_names(ctx, occ, result, steps) -> list[str]:
+    if occ.get("TOUT_PARA") == "OUI":
+        return list(all_parameters(result, steps, 0)) if steps.count else []
+    names = list(as_tuple(occ.get("NOM_PARA")))
+    known = all_parameters(result, steps, 0) if steps.count else {}
+    for name in names:
+        if name not in known:
+            ctx.error(
+                f"the result has no parameter {name} (it has {', '.join(known)})", "NOM_PARA", occ
+            )
+    return names
+
+
+def step_parameters(result, steps, step: int, names) -> dict:
+    values = all_parameters(result, steps, step)
+    return {n: values[n] for n in names}
+
+
+def parameter_table(result, steps, indices, params) -> list[str]:
+    table = Table()
+    for step in indices:
+        row = {"NUME_ORDRE": int(steps.orders[step])}
+        row.update(step_parameters(result, steps, step, params))
+        table.add_row(row)
+    return table_lines(table)
+
+
+def node_lines(occ, mesh: Mesh, nodes, comps, values, real_format: str) -> list[str]:
+    """One line per node: name, coordinates (IMPR_COOR), component values;
+    then the extrema of each component (VALE_MAX / VALE_MIN)."""
+    width = len(fortran_real(0.0, real_format))
+    coords = occ.get("IMPR_COOR") == "OUI"
+    axes = ("COOR_X", "COOR_Y", "COOR_Z")[: max(1, min(mesh.dim, 3))]
+    header = " NOEUD   " + "".join(f" {c:>{width}}" for c in (*(axes if coords else ()), *comps))
+    lines = [header]
+    for k, node in enumerate(nodes):
+        cells = [fortran_real(float(x), real_format) for x in mesh.coords[node, : len(axes)]]
+        cells = (cells if coords else []) + [
+            fortran_real(float(v) + 0.0, real_format) for v in values[k]
+        ]
+        lines.append(f" {mesh.node_names[node]:<8}" + "".join(f" {c}" for c in cells))
+    for key, pick in (("VALE_MAX", np.argmax), ("VALE_MIN", np.argmin)):
+        if occ.get(key) == "OUI" and len(nodes):
+            lines.append("")
+            for j, comp in enumerate(comps):
+                k = int(pick(values[:, j]))
+                lines.append(
+                    f" {key} {comp:<8} {fortran_real(float(values[k, j]), real_format)} "
+                    f"NOEUD {mesh.node_names[nodes[k]]}"
+                )
+    return lines
+
+
+# =============================================================================
+# ASTER mesh format
+# =============================================================================
+
+
+def write_aster_format(ctx, kw) -> None:
+    path = ctx.session.output_path(int(kw.get("UNITE", 26)))
+    lines: list[str] = []
+    for occ in kw.factor("RESU"):
+        if occ.get("RESULTAT") is not None or occ.get("CHAM_GD") is not None:
+            ctx.unsupported("fields in FORMAT='ASTER' (meshes only)", "RESULTAT", occ)
+        lines.extend(aster_mesh_lines(occ["MAILLAGE"]))
+    write_lines(path, lines)
+    ctx.log(f"ASTER mesh written to {path.name}")
+
+
+def aster_mesh_lines(mesh: Mesh) -> list[str]:
+    """The mesh in code_aster's text format (TITRE, COOR_nD, one section per
+    cell type in mesh order, GROUP_NO, GROUP_MA, FIN)."""
+    dim = max(1, min(int(mesh.dim), 3))
+    lines = ["TITRE", f" {mesh.name or 'MAILLAGE'} {mesh.title}".rstrip(), "FINSF", "%"]
+    lines.append(f"COOR_{dim}D")
+    for name, xyz in zip(mesh.node_names, mesh.coords, strict=True):
+        lines.append(f" {name:<8}" + "".join(f" {x:23.15E}" for x in xyz[:dim]))
+    lines += ["FINSF", "%"]
+    start = 0
+    while start < mesh.n_cells:
+        kind = mesh.cell_types[start]
+        stop = start
+        while stop < mesh.n_cells and mesh.cell_types[stop] == kind:
+            stop += 1
+        lines.append(kind)
+        for c in range(start, stop):
+            nodes = " ".join(mesh.node_names[n] for n in mesh.cell_nodes[c])
+            lines.append(f" {mesh.cell_names[c]:<8} {nodes}")
+        lines += ["FINSF", "%"]
+        start = stop
+    for section, groups, names in (
+        ("GROUP_NO", mesh.node_groups, mesh.node_names),
+        ("GROUP_MA", mesh.cell_groups, mesh.cell_names),
+    ):
+        for group, members in groups.items():
+            lines += [section, f" {group}"]
+            lines += [f" {names[int(i)]}" for i in members]
+            lines += ["FINSF", "%"]
+    lines.append("FIN")
+    return lines

@@ -1,0 +1,189 @@
+"""PHYS transient (asterlite.dynamics.physical) and MULT_APPUI support
+motion seen by the shocks of a GENE transient."""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+
+from asterlite.dynamics import contact as C
+from asterlite.dynamics.integrate import integrate
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.physical import diff_centre, newmark
+from asterlite.dynamics.physical.archive import Archive, archived_steps
+from asterlite.dynamics.physical.system import Load, PhysicalSystem
+from asterlite.fem.constraints import eliminate
+
+
+def chain(n=3, k=1.0e4, m=2.0):
+    stiffness = np.zeros((n, n))
+    for i in range(n):
+        stiffness[i, i] += k
+        if i + 1 < n:
+            stiffness[i, i] += k
+            stiffness[i, i + 1] = stiffness[i + 1, i] = -k
+    mass = m * np.eye(n)
+    damping = 1.0e-4 * stiffness
+    return mass, stiffness, damping
+
+
+def physical_system(mass, stiffness, damping, force, mult=1.0):
+    elimination = eliminate(sp.csr_matrix((0, mass.shape[0])), np.zeros(0), mass.shape[0])
+    return PhysicalSystem(
+        elimination=elimination,
+        mass=sp.csr_matrix(mass),
+        stiffness=sp.csr_matrix(stiffness),
+        damping=sp.csr_matrix(damping),
+        full_stiffness=sp.csr_matrix(stiffness),
+        loads=[Load(force, mult)],
+    )
+
+
+def run_newmark(system, times, q, v):
+    a = system.initial_acceleration(times[0], q, v)
+    archive = Archive(system.n_free)
+    newmark.integrate(system, times, q, v, a, np.ones(times.size, bool), archive)
+    return archive.arrays()
+
+
+def test_phys_newmark_equals_gene_newmark_with_all_modes():
+    mass, stiffness, damping = chain()
+    force = np.array([0.0, 0.0, 10.0])
+    dt, n_steps = 1.0e-3, 400
+    times = dt * np.arange(n_steps + 1)
+    _, q_phys, _, _ = run_newmark(
+        physical_system(mass, stiffness, damping, force), times, np.zeros(3), np.zeros(3)
+    )
+    _, phi = sla.eigh(stiffness, mass)
+    system = LinearSystem(phi.T @ mass @ phi, phi.T @ stiffness @ phi, phi.T @ damping @ phi)
+    shocks = build_shocks([], system)
+    excitation = tabulate_excitation(3, [(phi.T @ force, 1.0)], 0.0, times[-1], dt / 2)
+    gene = integrate(
+        system,
+        shocks,
+        excitation,
+        "NEWMARK",
+        np.zeros(3),
+        np.zeros(3),
+        0.0,
+        times[-1],
+        dt,
+        np.array([times[-1]]),
+        1,
+    )
+    # code_aster's GENE NEWMARK takes the first step's shock forces at zero,
+    # without shocks the two schemes are the same linear recurrence
+    np.testing.assert_allclose(gene.depl @ phi.T, q_phys, rtol=1e-9, atol=1e-12)
+
+
+def test_phys_continuation_equals_single_run():
+    mass, stiffness, damping = chain()
+    force = np.array([5.0, 0.0, 0.0])
+    times = 1.0e-3 * np.arange(301)
+    system = physical_system(mass, stiffness, damping, force)
+    _, q_all, v_all, a_all = run_newmark(system, times, np.zeros(3), np.zeros(3))
+    archive = Archive(3)
+    mask = np.ones(151, bool)
+    newmark.integrate(
+        system,
+        times[:151],
+        np.zeros(3),
+        np.zeros(3),
+        system.initial_acceleration(0.0, np.zeros(3), np.zeros(3)),
+        mask,
+        archive,
+    )
+    _, q1, v1, a1 = archive.arrays()
+    archive2 = Archive(3)
+    newmark.integrate(system, times[150:], q1[-1], v1[-1], a1[-1], mask, archive2)
+    _, q2, _, _ = archive2.arrays()
+    np.testing.assert_allclose(np.vstack([q1, q2[1:]]), q_all, rtol=1e-12, atol=1e-15)
+
+
+def test_phys_diff_centre_sdof_step_load_matches_analytic():
+    k, m, f = 1.0e4, 1.0, 2.0
+    system = physical_system(np.array([[m]]), np.array([[k]]), np.zeros((1, 1)), np.array([f]))
+    system.damping = None
+    dt = 1.0e-4
+    times = dt * np.arange(2001)
+    inverse = system.diagonal_mass_inverse()
+    assert dt < diff_centre.stability_limit(system, inverse)
+    a0 = system.initial_acceleration(0.0, np.zeros(1), np.zeros(1))
+    archive = Archive(1)
+    diff_centre.integrate(
+        system, times, np.zeros(1), np.zeros(1), a0, np.ones(times.size, bool), archive, inverse
+    )
+    t, q, _, _ = archive.arrays()
+    exact = f / k * (1.0 - np.cos(np.sqrt(k / m) * t))
+    assert np.max(np.abs(q[:, 0] - exact)) < 2e-3 * f / k
+
+
+def test_formula_multiplier_is_evaluated_exactly_at_each_step():
+    class Formula:
+        @staticmethod
+        def evaluate(t):
+            return np.sin(50.0 * np.asarray(t))
+
+    load = Load(np.ones(1), Formula())
+    times = np.array([0.0, 0.00123, 0.5, 0.777])
+    np.testing.assert_allclose(load.coefficients(times), np.sin(50.0 * times), rtol=0, atol=0)
+
+
+def test_archived_steps_union_of_period_and_instants():
+    times = 0.1 * np.arange(11)
+    mask = archived_steps(times, 4, [0.3, 0.7000001], 1e-6, True)
+    assert list(np.flatnonzero(mask)) == [0, 3, 4, 7, 8, 10]
+
+
+def test_mult_appui_support_motion_reaches_the_shock_node():
+    """A mode that never moves, a far obstacle: the shock node's local
+    position is its rest coordinate plus ψ d(t) (here d(t) = t)."""
+
+    class Line:
+        abscissas = np.array([0.0, 1.0])
+        ordinates = np.array([0.0, 1.0])
+        INTERPOL = ("LIN", "LIN")
+        PROL_GAUCHE = PROL_DROITE = "LINEAIRE"
+
+        def evaluate(self, t):
+            return np.asarray(t, dtype=float)
+
+    system = LinearSystem(np.eye(1), np.eye(1) * 100.0, np.zeros((1, 1)))
+    spec = ShockSpec(
+        name="S",
+        obstacle_type="PLAN_Y",
+        node_1="N1",
+        node_2=None,
+        coord_1=np.zeros(3),
+        coord_2=None,
+        phi_1=np.zeros((3, 1)),
+        phi_2=None,
+        norm_obst=np.array([1.0, 0.0, 0.0]),
+        angl_vril=0.0,
+        orig_obst=np.zeros(3),
+        gap=1.0e3,
+        k_n=1.0e6,
+    )
+    shocks = build_shocks([spec], system)
+    excitation = tabulate_excitation(1, [(np.zeros(1), 0.0)], 0.0, 0.5, 1e-3)
+    shapes = np.zeros((1, 2, 3, 1))
+    shapes[0, 0, :, 0] = (0.0, 1.0, 0.0)  # unit static mode along global Y
+    excitation.add_support_motion(shapes, [(Line(), Line())], 0.0, 0.5, 1e-3)
+    run = integrate(
+        system,
+        shocks,
+        excitation,
+        "DIFF_CENTRE",
+        np.zeros(1),
+        np.zeros(1),
+        0.0,
+        0.5,
+        1e-3,
+        np.array([0.25, 0.5]),
+        10**6,
+    )
+    local_y = run.vint[:, 0, C.V_LOC1 + 1]
+    rot = shocks.rots[0]
+    expected = [(rot @ np.array([0.0, t, 0.0]))[1] for t in run.times]
+    np.testing.assert_allclose(local_y, expected, atol=1e-12)
