@@ -69,6 +69,9 @@ def _sweep(args) -> int:
     from asterlite.runtime import sweep
 
     deck = Path(args.deck)
+    if not deck.is_file():
+        print(f"error: {deck}: no such deck", file=sys.stderr)
+        return 2
     try:
         settings = [sweep.parse_setting(text) for text in args.set]
         sweep.variants(settings)  # rejects a name set twice before anything runs

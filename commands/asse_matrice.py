@@ -1,12 +1,12 @@
-"""ASSE_MATRICE: assemble element matrices on a DOF numbering (sparse CSR)."""
+"""ASSE_MATRICE: assemble element matrices on a DOF numbering (sparse CSR;
+complex for RIGI_MECA_HYST element matrices)."""
 
 from __future__ import annotations
 
-from asterlite.concepts.assembly import AssembledMatrix
+from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
 from asterlite.fem.assemble import assemble_blocks
+from asterlite.fem.options import COMPLEX_OPTIONS, MATRIX_KIND
 from asterlite.fem.selection import as_tuple
-
-_KIND = {"RIGI_MECA": "RIGI", "MASS_MECA": "MASS", "MASS_MECA_DIAG": "MASS", "AMOR_MECA": "AMOR"}
 
 
 def run(ctx, kw):
@@ -20,10 +20,12 @@ def run(ctx, kw):
     except KeyError:
         ctx.error("the element matrices use DOFs the numbering does not have", "NUME_DDL", kw)
     first = elementary[0]
-    return AssembledMatrix(
+    is_complex = any(m.option in COMPLEX_OPTIONS for m in elementary)
+    cls = ComplexAssembledMatrix if is_complex else AssembledMatrix
+    return cls(
         numbering=numbering,
-        matrix=matrix,
-        kind=_KIND.get(first.option, "RIGI"),
+        matrix=matrix.astype(complex) if is_complex else matrix,
+        kind=MATRIX_KIND.get(first.option, "RIGI"),
         model=first.model,
         characteristics=first.characteristics,
         materials=first.materials,

@@ -5,18 +5,17 @@ from __future__ import annotations
 
 from asterlite.commands.nume_ddl import numbering_for
 
-from asterlite.concepts.assembly import AssembledMatrix, DofNumbering, NodalField
+from asterlite.concepts.assembly import (
+    AssembledMatrix,
+    ComplexAssembledMatrix,
+    DofNumbering,
+    NodalField,
+)
 from asterlite.fem.assemble import assemble_blocks, assemble_terms
-from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.elements import ElementError
 from asterlite.fem.loads import load_terms
+from asterlite.fem.options import COMPLEX_OPTIONS, MATRIX_KIND, OPTIONS, option_blocks
 from asterlite.fem.selection import as_tuple
-
-_OPTIONS = {
-    "RIGI_MECA": ("K", "RIGI"),
-    "MASS_MECA": ("M", "MASS"),
-    "MASS_MECA_DIAG": ("M", "MASS"),
-    "AMOR_MECA": ("A", "AMOR"),
-}
 
 
 def run(ctx, kw):
@@ -33,26 +32,21 @@ def run(ctx, kw):
             ctx.bind(given, numbering)
     for occ in kw.factor("MATR_ASSE"):
         option = occ["OPTION"]
-        if option not in _OPTIONS:
+        if option not in OPTIONS:
             ctx.unsupported(f"ASSEMBLAGE OPTION={option!r}", "OPTION", occ)
-        matrix_kind, kind = _OPTIONS[option]
         try:
-            blocks = element_blocks(
-                model,
-                characteristics,
-                matrix_kind,
-                materials=materials,
-                lumped=option == "MASS_MECA_DIAG",
-            )
+            blocks = option_blocks(model, characteristics, option, materials=materials)
         except NotImplementedError as exc:
             ctx.unsupported(str(exc), "MODELE", kw)
         except (ElementError, ValueError) as exc:
             ctx.error(str(exc), "CARA_ELEM", kw)
         matrix = assemble_blocks(blocks, numbering)
-        assembled = AssembledMatrix(
+        is_complex = option in COMPLEX_OPTIONS
+        cls = ComplexAssembledMatrix if is_complex else AssembledMatrix
+        assembled = cls(
             numbering=numbering,
-            matrix=matrix,
-            kind=kind,
+            matrix=matrix.astype(complex) if is_complex else matrix,
+            kind=MATRIX_KIND[option],
             model=model,
             characteristics=characteristics,
             materials=materials,

@@ -1,4 +1,4 @@
-"""DEFI_LIST_REEL: VALE, or DEBUT + INTERVALLE(JUSQU_A with PAS or NOMBRE)."""
+"""DEFI_LIST_REEL: VALE (taken as given), or DEBUT + INTERVALLE(JUSQU_A with PAS or NOMBRE)."""
 
 from __future__ import annotations
 
@@ -10,10 +10,9 @@ from asterlite.post.restitution import values_of
 
 def run(ctx, kw):
     if kw.get("VALE") is not None:
-        values = values_of(kw["VALE"])
-        if np.any(np.diff(values) <= 0):
-            ctx.error("VALE must increase strictly", "VALE", kw)
-        return ListReal(values)
+        # any order: a VALE list also holds modal dampings (AMOR_REDUIT lists
+        # repeat a value); the commands that need increasing instants check them
+        return ListReal(values_of(kw["VALE"]))
     return ListReal(build_intervals(ctx, kw, float(kw["DEBUT"]), kw.factor("INTERVALLE"), float))
 
 

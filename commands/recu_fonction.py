@@ -17,9 +17,11 @@ from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.restitution import (
     as_tuple,
+    element_value_history,
     recombine,
     select_instants,
     single_node,
+    support_motion,
     values_of,
 )
 
@@ -79,11 +81,17 @@ def from_physical(ctx, kw):
     if not isinstance(result, DynaTrans):
         ctx.unsupported(f"RECU_FONCTION from a {result.aster_type}", "RESULTAT", kw)
     field = kw.get("NOM_CHAM")
-    if field not in result.fields:
-        ctx.error(
-            f"result has no field {field!r} (it has {', '.join(result.fields)})", "NOM_CHAM", kw
-        )
     selection = instants(ctx, kw, result.times, result.order)
+    computed = {
+        **(getattr(result, "element_fields", None) or {}),
+        **(getattr(result, "node_fields", None) or {}),
+    }
+    if field not in result.fields and field in computed:
+        history = element_value_history(ctx, kw, result, field)
+        return selection.times, selection.apply(history)
+    if field not in result.fields:
+        known = ", ".join([*result.fields, *computed])
+        ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", kw)
     node = single_node(ctx, kw, result.numbering.mesh)
     component = kw.get("NOM_CMP")
     try:
@@ -106,8 +114,8 @@ def from_generalized(ctx, kw):
     field = kw.get("NOM_CHAM", "DEPL")
     if field not in ("DEPL", "VITE", "ACCE"):
         ctx.unsupported(f"NOM_CHAM={field!r} from a tran_gene", "NOM_CHAM", kw)
-    if kw.get("MULT_APPUI") == "OUI" or kw.get("CORR_STAT") == "OUI":
-        ctx.unsupported("MULT_APPUI / CORR_STAT in RECU_FONCTION", "MULT_APPUI", kw)
+    if kw.get("CORR_STAT") == "OUI":
+        ctx.unsupported("CORR_STAT='OUI' in RECU_FONCTION", "CORR_STAT", kw)
     selection = instants(ctx, kw, result.times, result.order)
     states = selection.apply(getattr(result, field.lower()))
     if kw.get("NUME_CMP_GENE") is not None:
@@ -117,7 +125,26 @@ def from_generalized(ctx, kw):
         return selection.times, states[:, mode - 1]
     node = single_node(ctx, kw, result.basis.numbering.mesh)
     shape = result.basis.shape_at(node, kw.get("NOM_CMP"))
-    return selection.times, recombine(shape[None, :], states)[:, 0]
+    values = recombine(shape[None, :], states)[:, 0]
+    if kw.get("MULT_APPUI") == "OUI":
+        values = values + absolute_part(ctx, kw, result, node, field, selection.times)
+    return selection.times, values
+
+
+def absolute_part(ctx, kw, result, node, field, times) -> np.ndarray:
+    """MULT_APPUI='OUI': the support motion added to the relative value."""
+    supports = result.info.get("mult_appui")
+    if not supports:
+        ctx.error(
+            "MULT_APPUI='OUI' on a result computed without multi-support excitation",
+            "MULT_APPUI",
+            kw,
+        )
+    try:
+        row = result.basis.numbering.dof_index(node, kw.get("NOM_CMP"))
+    except KeyError:
+        return np.zeros(len(times))
+    return support_motion(supports, [row], times, field)[:, 0]
 
 
 def find_shock(ctx, kw, result):

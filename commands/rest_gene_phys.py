@@ -23,7 +23,9 @@ from asterlite.post.restitution import (
     dof_rows,
     node_indices,
     recombine,
+    recombine_element_field,
     selection_from_keywords,
+    support_motion,
 )
 
 TRANSLATIONS = ("DX", "DY", "DZ")
@@ -42,7 +44,7 @@ def run(ctx, kw):
         ctx.error(
             f"MODE_MECA has {basis.n_modes} modes, the result {result.n_modes}", "MODE_MECA", kw
         )
-    fields = requested_fields(ctx, kw)
+    fields, element_names = requested_fields(ctx, kw, basis)
     if kw.get("CORR_STAT") == "OUI":
         ctx.unsupported("CORR_STAT='OUI'", "CORR_STAT", kw)
     selection = selection_from_keywords(ctx, kw, result.times, result.order)
@@ -64,17 +66,38 @@ def run(ctx, kw):
         sub = numbering
     else:
         sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
-    return DynaTrans(sub, selection.times, selection.order, out)
+    restored = DynaTrans(sub, selection.times, selection.order, out)
+    if element_names:
+        if kw.get("MULT_APPUI") == "OUI":
+            ctx.unsupported("MULT_APPUI='OUI' with element fields", "MULT_APPUI", kw)
+        generalized = selection.apply(result.depl)
+        # stored as CALC_CHAMP stores element fields on a result
+        restored.element_fields = {
+            name: recombine_element_field(basis.element_fields[name], generalized)
+            for name in element_names
+        }
+    return restored
 
 
-def requested_fields(ctx, kw) -> tuple[str, ...]:
+def requested_fields(ctx, kw, basis) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(nodal fields, element fields) to restore. Element fields (SIPO_ELNO,
+    EFGE_ELNO...) recombine those CALC_CHAMP computed on the modal basis."""
     if kw.get("TOUT_CHAM") == "OUI" or kw.get("NOM_CHAM") is None:
-        return FIELDS
-    names = as_tuple(kw["NOM_CHAM"])
-    other = [n for n in names if n not in FIELDS]
+        return FIELDS, ()
+    names = tuple(dict.fromkeys(as_tuple(kw["NOM_CHAM"])))
+    computed = getattr(basis, "element_fields", None) or {}
+    elements = tuple(n for n in names if n not in FIELDS and n in computed)
+    other = [n for n in names if n not in FIELDS and n not in computed]
     if other:
-        ctx.unsupported(f"NOM_CHAM={other[0]!r} (only DEPL, VITE, ACCE)", "NOM_CHAM", kw)
-    return tuple(dict.fromkeys(names))
+        if other[0].endswith(("_ELNO", "_ELGA")):
+            ctx.error(
+                f"NOM_CHAM={other[0]!r}: the modal basis {basis.name or ''} has no such field "
+                "(compute it first with CALC_CHAMP on the modes)",
+                "NOM_CHAM",
+                kw,
+            )
+        ctx.unsupported(f"NOM_CHAM={other[0]!r} (DEPL, VITE, ACCE, element fields)", "NOM_CHAM", kw)
+    return tuple(n for n in names if n in FIELDS), elements
 
 
 def add_support_motion(ctx, kw, result, rows, times, out) -> None:
@@ -85,12 +108,8 @@ def add_support_motion(ctx, kw, result, rows, times, out) -> None:
             "MULT_APPUI",
             kw,
         )
-    for support in supports:
-        shape = np.asarray(support["shape"])[rows]
-        for name in out:
-            motion = support.get(name)
-            if motion is not None:
-                out[name] = out[name] + np.outer(motion.evaluate(times), shape)
+    for name in out:
+        out[name] = out[name] + support_motion(supports, rows, times, name)
 
 
 def add_uniform_acceleration(ctx, kw, numbering, rows, times, out) -> None:

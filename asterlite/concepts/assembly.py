@@ -126,6 +126,14 @@ class ElementaryMatrices(Concept):
 
 
 @dataclass(eq=False)
+class ComplexElementaryMatrices(ElementaryMatrices):
+    """``CALC_MATR_ELEM`` result of a complex option (RIGI_MECA_HYST): the
+    blocks hold complex matrices."""
+
+    aster_types = ("matr_elem_depl_c",)
+
+
+@dataclass(eq=False)
 class ElementaryVectors(Concept):
     """``CALC_VECT_ELEM`` result: nodal load terms (node, component, value)."""
 
@@ -149,6 +157,7 @@ class DofNumbering(Concept):
     """
 
     aster_types = ("nume_ddl_sdaster",)
+    deck_methods = frozenset({"getName", "getPhysicalDOFs", "getNumberOfDOFs"})
 
     mesh: Mesh
     dofs: list[tuple[int, str]]
@@ -165,6 +174,14 @@ class DofNumbering(Concept):
     @property
     def n_dofs(self) -> int:
         return len(self.dofs)
+
+    # deck API: code_aster's numbering mixes physical DOFs and Lagrange
+    # multipliers; here every DOF is physical, so all indices are returned
+    def getPhysicalDOFs(self, local=False) -> list[int]:  # noqa: N802
+        return list(range(self.n_dofs))
+
+    def getNumberOfDOFs(self, local=False) -> int:  # noqa: N802
+        return self.n_dofs
 
     def dof_index(self, node: int | str, component: str) -> int:
         """Index of (node, component); raises KeyError when absent."""
@@ -223,6 +240,14 @@ class AssembledMatrix(Concept):
     model: Any = None
     characteristics: Any = None
     materials: Any = None
+
+
+@dataclass(eq=False)
+class ComplexAssembledMatrix(AssembledMatrix):
+    """A complex assembled matrix (``matr_asse_depl_c``, e.g. RIGI_MECA_HYST:
+    ``K (1 + i eta)``); ``matrix`` is a complex scipy.sparse CSR matrix."""
+
+    aster_types = ("matr_asse_depl_c", "matr_asse")
 
 
 @dataclass(eq=False)

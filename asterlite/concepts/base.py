@@ -70,14 +70,18 @@ class Placeholder(Concept, DeckCallable):
     """Stands for a concept that ``asterlite check`` does not compute.
 
     It carries the type the catalogue declares for the command's result so
-    later calls can still be type-checked. Its methods, and calling it (a
-    formula), give Unknown.
+    later calls can still be type-checked. Its methods, calling it (a
+    formula) and indexing it (a table) give Unknown.
     """
 
     def deck_getattr(self, name: str):
         return _UnknownMethod()
 
     def deck_call(self, args, kwargs, site):
+        return Unknown
+
+    def __getitem__(self, key):
+        # TAB["VALE_R", 1] on a table check mode did not compute
         return Unknown
 
     def __init__(self, aster_type: str, produced_by: str = ""):

@@ -35,6 +35,7 @@ class ModeResult(Concept):
     """
 
     aster_types = ("mode_meca", "resultat_sdaster")
+    deck_methods = frozenset({"getName", "getField", "getIndexes", "getNumberOfModes"})
 
     numbering: DofNumbering
     shapes: np.ndarray
@@ -52,6 +53,18 @@ class ModeResult(Concept):
     @property
     def n_modes(self) -> int:
         return self.shapes.shape[1]
+
+    # deck API (code_aster's ModeResult), see asterlite.post.deck_api
+    def getField(self, name, value=1, para="NUME_ORDRE"):  # noqa: N802
+        from asterlite.post.deck_api import mode_field
+
+        return mode_field(self, name, value, para)
+
+    def getIndexes(self) -> list[int]:  # noqa: N802
+        return list(range(1, self.n_modes + 1))
+
+    def getNumberOfModes(self) -> int:  # noqa: N802
+        return int(self.n_modes)
 
     @property
     def mode_numbers(self) -> np.ndarray:

@@ -62,6 +62,13 @@ class TranGene(Concept):
     """
 
     aster_types = ("tran_gene",)
+    deck_methods = frozenset(
+        {
+            "getName", "getNumberOfModes", "getIndexes", "getTimes", "INFO_NONL",
+            "getDisplacementValues", "getVelocityValues", "getAccelerationValues",
+            "setDisplacementValues", "setVelocityValues", "setAccelerationValues",
+        }
+    )
 
     basis: ModeResult
     times: np.ndarray
@@ -78,6 +85,51 @@ class TranGene(Concept):
     def n_modes(self) -> int:
         return self.depl.shape[1]
 
+    # deck API (code_aster's TransientGeneralizedResult), see asterlite.post.deck_api
+    def getNumberOfModes(self) -> int:  # noqa: N802
+        return int(self.n_modes)
+
+    def getIndexes(self) -> list[int]:  # noqa: N802
+        return [int(o) for o in self.order]
+
+    def getTimes(self) -> list[float]:  # noqa: N802
+        return [float(t) for t in self.times]
+
+    def getDisplacementValues(self, idx=None):  # noqa: N802
+        from asterlite.post.deck_api import generalized_values
+
+        return generalized_values(self.depl, idx)
+
+    def getVelocityValues(self, idx=None):  # noqa: N802
+        from asterlite.post.deck_api import generalized_values
+
+        return generalized_values(self.vite, idx)
+
+    def getAccelerationValues(self, idx=None):  # noqa: N802
+        from asterlite.post.deck_api import generalized_values
+
+        return generalized_values(self.acce, idx)
+
+    def setDisplacementValues(self, idx, val) -> None:  # noqa: N802
+        from asterlite.post.deck_api import set_generalized_values
+
+        set_generalized_values(self.depl, idx, val)
+
+    def setVelocityValues(self, idx, val) -> None:  # noqa: N802
+        from asterlite.post.deck_api import set_generalized_values
+
+        set_generalized_values(self.vite, idx, val)
+
+    def setAccelerationValues(self, idx, val) -> None:  # noqa: N802
+        from asterlite.post.deck_api import set_generalized_values
+
+        set_generalized_values(self.acce, idx, val)
+
+    def INFO_NONL(self):  # noqa: N802
+        from asterlite.post.deck_api import info_nonl
+
+        return info_nonl(self.shocks)
+
 
 @dataclass(eq=False)
 class DynaTrans(Concept):
@@ -88,8 +140,21 @@ class DynaTrans(Concept):
     """
 
     aster_types = ("dyna_trans", "resultat_sdaster")
+    deck_methods = frozenset({"getName", "getField", "getIndexes", "getTimes"})
 
     numbering: DofNumbering
     times: np.ndarray
     order: np.ndarray
     fields: dict[str, np.ndarray] = field(default_factory=dict)
+
+    # deck API (code_aster's TransientResult), see asterlite.post.deck_api
+    def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802
+        from asterlite.post.deck_api import transient_field
+
+        return transient_field(self, name, value, para)
+
+    def getIndexes(self) -> list[int]:  # noqa: N802
+        return [int(o) for o in self.order]
+
+    def getTimes(self) -> list[float]:  # noqa: N802
+        return [float(t) for t in self.times]

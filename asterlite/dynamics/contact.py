@@ -58,7 +58,7 @@ EPS = np.finfo(np.float64).eps
 VELOCITY_DIVERGENCE = 0.5 * math.sqrt(np.finfo(np.float64).max)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def sign_of(x):
     """Fortran SIGN(1, x): +1 for x >= 0 (including +0), -1 otherwise."""
     return 1.0 if x >= 0.0 else -1.0
@@ -73,28 +73,35 @@ def gap_and_normal(geometry, loc1, loc2, gap0, dist1, dist2, sign_y, sign_z, pol
     sign of node 2 - node 1 at rest (the side each body stays on).
     ``polar``: (angle rad, radius) rows of a DISCRET obstacle, increasing angles.
     """
-    y1, z1 = loc1[1], loc1[2]
-    if geometry == PLAN_Y:  # eq. 17-18
-        return gap0 - abs(y1), -sign_of(y1), 0.0
-    if geometry == PLAN_Z:
-        return gap0 - abs(z1), 0.0, -sign_of(z1)
+    return obstacle_gap(
+        geometry, loc1[1], loc1[2], loc2[1], loc2[2], gap0, dist1, dist2, sign_y, sign_z, polar, npolar
+    )
+
+
+@njit(cache=True, inline="always")
+def obstacle_gap(geometry, y1, z1, y2, z2, gap0, dist1, dist2, sign_y, sign_z, polar, npolar):
+    """:func:`gap_and_normal` on the local (y, z) coordinates of both nodes."""
     if geometry == CERCLE:  # eq. 19-20: concave circle of radius JEU
         r = math.sqrt(y1 * y1 + z1 * z1)
         if r != 0.0:
             return gap0 - r, -y1 / r, -z1 / r
         return gap0 - r, -1.0, 0.0
+    if geometry == PLAN_Y:  # eq. 17-18
+        return gap0 - abs(y1), -sign_of(y1), 0.0
+    if geometry == PLAN_Z:
+        return gap0 - abs(z1), 0.0, -sign_of(z1)
     if geometry == BI_PLAN_Y:  # eq. 22-23
-        return (loc2[1] - y1) * sign_y - dist1 - dist2, -sign_y, 0.0
+        return (y2 - y1) * sign_y - dist1 - dist2, -sign_y, 0.0
     if geometry == BI_PLAN_Z:
-        return (loc2[2] - z1) * sign_z - dist1 - dist2, 0.0, -sign_z
+        return (z2 - z1) * sign_z - dist1 - dist2, 0.0, -sign_z
     if geometry == BI_CERCLE:  # eq. 24-25: two rings, outer contact
-        dy, dz = y1 - loc2[1], z1 - loc2[2]
+        dy, dz = y1 - y2, z1 - z2
         r = math.sqrt(dy * dy + dz * dz)
         if r != 0.0:
             return r - dist1 - dist2, dy / r, dz / r
         return -dist1 - dist2, -1.0, 0.0
     if geometry == BI_CERC_INT:  # node 1's ring inside node 2's circle
-        dy, dz = y1 - loc2[1], z1 - loc2[2]
+        dy, dz = y1 - y2, z1 - z2
         r = math.sqrt(dy * dy + dz * dz)
         if r > 0.0:
             return dist2 - dist1 - r, -dy / r, -dz / r
@@ -124,7 +131,7 @@ def discrete_gap(y, z, polar, npolar):
     return 1.0e300, -1.0, 0.0  # angle outside the described sectors: no contact
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def normal_force(gap, normal_velocity, k_n, c_n):
     """Penalised normal force, positive part only (eq. 11)."""
     if gap > 0.0:
@@ -143,36 +150,59 @@ def tangential_force(fn, rel_loc, rel_vel, cos_n, sin_n, mu_dyn, mu_stat, k_t, c
     is tried and capped by mu_stat * F_N (slip at mu_dyn * F_N against v).
     With ``unidir`` the axis NORM_OBST (FT2) carries no friction.
     """
-    vt1 = -sin_n * rel_vel[1] + cos_n * rel_vel[2]
-    vt2 = rel_vel[0]
+    return friction_force(
+        fn,
+        rel_loc[0],
+        rel_loc[1],
+        rel_loc[2],
+        rel_vel[0],
+        rel_vel[1],
+        rel_vel[2],
+        cos_n,
+        sin_n,
+        mu_dyn,
+        mu_stat,
+        k_t,
+        c_t,
+        unidir,
+        vint,
+    )
+
+
+@njit(cache=True, inline="always")
+def friction_force(fn, rx, ry, rz, vx, vy, vz, cos_n, sin_n, mu_dyn, mu_stat, k_t, c_t, unidir, vs):
+    """:func:`tangential_force` on the relative local position (rx, ry, rz)
+    and velocity (vx, vy, vz); ``vs`` is the shock's internal-variable row."""
+    vt1 = -sin_n * vy + cos_n * vz
+    vt2 = vx
     if unidir:
         vnorm = abs(vt1)
     else:
         vnorm = math.sqrt(vt1 * vt1 + vt2 * vt2)
-    same_direction = vt1 * vint[V_VT_OLD] + vt2 * vint[V_VT_OLD + 1] >= 0.0
-    sliding = same_direction and vint[V_STICK] == 0.0 and vnorm > SLIP_VELOCITY_FLOOR
+    same_direction = vt1 * vs[V_VT_OLD] + vt2 * vs[V_VT_OLD + 1] >= 0.0
+    sliding = same_direction and vs[V_STICK] == 0.0 and vnorm > SLIP_VELOCITY_FLOOR
     if sliding:
         ft1, ft2 = slip_force(fn, mu_dyn, vt1, vt2, vnorm, unidir)
-        start_stick_reference(vint, ft1, ft2, rel_loc)
+        start_stick_reference(vs, ft1, ft2, rx, ry, rz)
     else:
-        dx1 = -(rel_loc[1] - vint[V_X_REF + 1]) * sin_n + (rel_loc[2] - vint[V_X_REF + 2]) * cos_n
-        dx2 = rel_loc[0] - vint[V_X_REF]
-        vint[V_STICK] = 1.0
-        ft1 = vint[V_FT_REF] - k_t * dx1 - c_t * vt1
-        ft2 = 0.0 if unidir else vint[V_FT_REF + 1] - k_t * dx2 - c_t * vt2
+        dx1 = -(ry - vs[V_X_REF + 1]) * sin_n + (rz - vs[V_X_REF + 2]) * cos_n
+        dx2 = rx - vs[V_X_REF]
+        vs[V_STICK] = 1.0
+        ft1 = vs[V_FT_REF] - k_t * dx1 - c_t * vt1
+        ft2 = 0.0 if unidir else vs[V_FT_REF + 1] - k_t * dx2 - c_t * vt2
         if math.sqrt(ft1 * ft1 + ft2 * ft2) > mu_stat * fn:
-            vint[V_STICK] = 0.0
+            vs[V_STICK] = 0.0
             if vnorm <= EPS:
                 ft1, ft2 = 0.0, 0.0
             else:
                 ft1, ft2 = slip_force(fn, mu_dyn, vt1, vt2, vnorm, unidir)
-            start_stick_reference(vint, ft1, ft2, rel_loc)
-    vint[V_VT_OLD] = vt1
-    vint[V_VT_OLD + 1] = vt2
+            start_stick_reference(vs, ft1, ft2, rx, ry, rz)
+    vs[V_VT_OLD] = vt1
+    vs[V_VT_OLD + 1] = vt2
     return ft1, ft2, vt1, vt2
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def slip_force(fn, mu_dyn, vt1, vt2, vnorm, unidir):
     """Coulomb sliding force, opposed to the tangential velocity (eq. 16)."""
     ft1 = -mu_dyn * fn * vt1 / vnorm
@@ -180,12 +210,71 @@ def slip_force(fn, mu_dyn, vt1, vt2, vnorm, unidir):
     return ft1, ft2
 
 
-@njit(cache=True)
-def start_stick_reference(vint, ft1, ft2, rel_loc):
-    vint[V_FT_REF] = ft1
-    vint[V_FT_REF + 1] = ft2
-    for i in range(3):
-        vint[V_X_REF + i] = rel_loc[i]
+@njit(cache=True, inline="always")
+def start_stick_reference(vs, ft1, ft2, rx, ry, rz):
+    vs[V_FT_REF] = ft1
+    vs[V_FT_REF + 1] = ft2
+    vs[V_X_REF] = rx
+    vs[V_X_REF + 1] = ry
+    vs[V_X_REF + 2] = rz
+
+
+@njit(cache=True, inline="always")
+def contact_law(p, unidir, vs, gap, cos_n, sin_n, rx, ry, rz, vx, vy, vz):
+    """The DIS_CHOC law of one shock from its relative local kinematics.
+
+    ``p``: the shock's parameter row; ``vs``: its internal-variable row,
+    whose force, velocity and friction entries are updated (the local
+    coordinates are the caller's). Returns (diverged, in_contact, fx, fy, fz)
+    with (fx, fy, fz) the local force on node 1 (node 2 takes the opposite).
+    """
+    fn, ft1, ft2, vn, vt1, vt2 = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    fx, fy, fz = 0.0, 0.0, 0.0
+    in_contact = gap <= 0.0
+    if in_contact:
+        vn = vy * cos_n + vz * sin_n
+        fn = normal_force(gap, vn, p[P_KN], p[P_CN])
+        fy = fn * cos_n
+        fz = fn * sin_n
+        if abs(p[P_MU_STAT]) > EPS or abs(p[P_MU_DYN]) > EPS:
+            if max(vx, vy, vz) > VELOCITY_DIVERGENCE:
+                return True, in_contact, fx, fy, fz
+            ft1, ft2, vt1, vt2 = friction_force(
+                fn,
+                rx,
+                ry,
+                rz,
+                vx,
+                vy,
+                vz,
+                cos_n,
+                sin_n,
+                p[P_MU_DYN],
+                p[P_MU_STAT],
+                p[P_KT],
+                p[P_CT],
+                unidir,
+                vs,
+            )
+            fx += ft2
+            fy += -ft1 * sin_n
+            fz += ft1 * cos_n
+    else:
+        # out of contact: friction memory is reset, a new stick phase starts here
+        vs[V_STICK] = 0.0
+        for i in range(2):
+            vs[V_FT_REF + i] = 0.0
+            vs[V_VT_OLD + i] = 0.0
+        vs[V_X_REF] = rx
+        vs[V_X_REF + 1] = ry
+        vs[V_X_REF + 2] = rz
+    vs[V_FN] = fn
+    vs[V_FT1] = ft1
+    vs[V_FT2] = ft2
+    vs[V_VN] = vn
+    vs[V_VT1] = vt1
+    vs[V_VT2] = vt2
+    return False, in_contact, fx, fy, fz
 
 
 @njit(cache=True)
@@ -205,7 +294,7 @@ def local_state(rot, phi, coord, drive, origin, q, v, loc, vel):
     rotate_in_place(rot, vel)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def rotate_in_place(rot, x):
     a = rot[0, 0] * x[0] + rot[0, 1] * x[1] + rot[0, 2] * x[2]
     b = rot[1, 0] * x[0] + rot[1, 1] * x[1] + rot[1, 2] * x[2]
@@ -227,6 +316,8 @@ def add_generalized_force(rot, phi, f_local, coef, out):
 def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
     """Add every shock's generalized force to ``out``; update ``vint``.
 
+    The general path (mode shapes in the global frame, rotated at every
+    call); the DIFF_CENTRE kernel uses :func:`local_shock_forces`.
     ``work`` is a (5, 3) scratch array (local positions/velocities, force).
     Returns the index of the first shock whose relative velocity became
     absurd (divergence), or -1.
@@ -268,17 +359,12 @@ def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
         for i in range(3):
             vs[V_LOC1 + i] = loc1[i]
             vs[V_LOC2 + i] = loc2[i]
-        if two_nodes:  # relative quantities node 1 - node 2
-            for i in range(3):
-                loc2[i] = loc1[i] - loc2[i]
-                vel2[i] = vel1[i] - vel2[i]
-            rel_loc, rel_vel = loc2, vel2
-        else:
-            rel_loc, rel_vel = loc1, vel1
-        gap, cos_n, sin_n = gap_and_normal(
+        gap, cos_n, sin_n = obstacle_gap(
             geometry,
-            vs[V_LOC1 : V_LOC1 + 3],
-            vs[V_LOC2 : V_LOC2 + 3],
+            loc1[1],
+            loc1[2],
+            loc2[1],
+            loc2[2],
             p[P_GAP],
             p[P_DIST1],
             p[P_DIST2],
@@ -287,47 +373,106 @@ def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
             polars[s],
             flags[s, F_NPOLAR],
         )
-        fn, ft1, ft2, vn, vt1, vt2 = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-        if gap <= 0.0:
-            vn = rel_vel[1] * cos_n + rel_vel[2] * sin_n
-            fn = normal_force(gap, vn, p[P_KN], p[P_CN])
-            f_local[0] = 0.0
-            f_local[1] = fn * cos_n
-            f_local[2] = fn * sin_n
-            if abs(p[P_MU_STAT]) > EPS or abs(p[P_MU_DYN]) > EPS:
-                if max(rel_vel[0], rel_vel[1], rel_vel[2]) > VELOCITY_DIVERGENCE:
-                    return s
-                ft1, ft2, vt1, vt2 = tangential_force(
-                    fn,
-                    rel_loc,
-                    rel_vel,
-                    cos_n,
-                    sin_n,
-                    p[P_MU_DYN],
-                    p[P_MU_STAT],
-                    p[P_KT],
-                    p[P_CT],
-                    flags[s, F_UNIDIR] == 1,
-                    vs,
-                )
-                f_local[0] += ft2
-                f_local[1] += -ft1 * sin_n
-                f_local[2] += ft1 * cos_n
+        if two_nodes:  # relative quantities node 1 - node 2
+            for i in range(3):
+                loc2[i] = loc1[i] - loc2[i]
+                vel2[i] = vel1[i] - vel2[i]
+            rel_loc, rel_vel = loc2, vel2
+        else:
+            rel_loc, rel_vel = loc1, vel1
+        diverged, in_contact, fx, fy, fz = contact_law(
+            p,
+            flags[s, F_UNIDIR] == 1,
+            vs,
+            gap,
+            cos_n,
+            sin_n,
+            rel_loc[0],
+            rel_loc[1],
+            rel_loc[2],
+            rel_vel[0],
+            rel_vel[1],
+            rel_vel[2],
+        )
+        if diverged:
+            return s
+        if in_contact:
+            f_local[0] = fx
+            f_local[1] = fy
+            f_local[2] = fz
             add_generalized_force(rots[s], phis[s, 0], f_local, 1.0, out)
             if two_nodes:
                 add_generalized_force(rots[s], phis[s, 1], f_local, -1.0, out)
-        else:
-            # out of contact: friction memory is reset, a new stick phase starts here
-            vs[V_STICK] = 0.0
-            for i in range(2):
-                vs[V_FT_REF + i] = 0.0
-                vs[V_VT_OLD + i] = 0.0
-            for i in range(3):
-                vs[V_X_REF + i] = rel_loc[i]
-        vs[V_FN] = fn
-        vs[V_FT1] = ft1
-        vs[V_FT2] = ft2
-        vs[V_VN] = vn
-        vs[V_VT1] = vt1
-        vs[V_VT2] = vt2
+    return -1
+
+
+@njit(cache=True, inline="always")
+def local_shock_forces(q, v, flags, params, shapes, rest, polars, drive, vint, out):
+    """:func:`shock_forces` with the mode shapes already in each shock's
+    local frame: ``shapes[s, node]`` = rot Φ (3, n_modes), ``rest[s, node]``
+    = rot (coord - origin), ``drive[s, node]`` = the support motion
+    (displacement, velocity) in the local frame. Six independent sums over
+    the modes per node, the force projected with the same shapes."""
+    n = q.shape[0]
+    for s in range(flags.shape[0]):
+        two_nodes = flags[s, F_TWO_NODES] == 1
+        x1 = rest[s, 0, 0] + drive[s, 0, 0]
+        y1 = rest[s, 0, 1] + drive[s, 0, 1]
+        z1 = rest[s, 0, 2] + drive[s, 0, 2]
+        u1, v1, w1 = drive[s, 0, 3], drive[s, 0, 4], drive[s, 0, 5]
+        for m in range(n):
+            qm, vm = q[m], v[m]
+            x1 += shapes[s, 0, 0, m] * qm
+            y1 += shapes[s, 0, 1, m] * qm
+            z1 += shapes[s, 0, 2, m] * qm
+            u1 += shapes[s, 0, 0, m] * vm
+            v1 += shapes[s, 0, 1, m] * vm
+            w1 += shapes[s, 0, 2, m] * vm
+        x2, y2, z2, u2, v2, w2 = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+        if two_nodes:
+            x2 = rest[s, 1, 0] + drive[s, 1, 0]
+            y2 = rest[s, 1, 1] + drive[s, 1, 1]
+            z2 = rest[s, 1, 2] + drive[s, 1, 2]
+            u2, v2, w2 = drive[s, 1, 3], drive[s, 1, 4], drive[s, 1, 5]
+            for m in range(n):
+                qm, vm = q[m], v[m]
+                x2 += shapes[s, 1, 0, m] * qm
+                y2 += shapes[s, 1, 1, m] * qm
+                z2 += shapes[s, 1, 2, m] * qm
+                u2 += shapes[s, 1, 0, m] * vm
+                v2 += shapes[s, 1, 1, m] * vm
+                w2 += shapes[s, 1, 2, m] * vm
+        vs = vint[s]
+        vs[V_LOC1], vs[V_LOC1 + 1], vs[V_LOC1 + 2] = x1, y1, z1
+        vs[V_LOC2], vs[V_LOC2 + 1], vs[V_LOC2 + 2] = x2, y2, z2
+        p = params[s]
+        gap, cos_n, sin_n = obstacle_gap(
+            flags[s, F_GEOMETRY],
+            y1,
+            z1,
+            y2,
+            z2,
+            p[P_GAP],
+            p[P_DIST1],
+            p[P_DIST2],
+            p[P_SIGN_Y],
+            p[P_SIGN_Z],
+            polars[s],
+            flags[s, F_NPOLAR],
+        )
+        if two_nodes:  # relative quantities node 1 - node 2
+            x1, y1, z1, u1, v1, w1 = x1 - x2, y1 - y2, z1 - z2, u1 - u2, v1 - v2, w1 - w2
+        diverged, in_contact, fx, fy, fz = contact_law(
+            p, flags[s, F_UNIDIR] == 1, vs, gap, cos_n, sin_n, x1, y1, z1, u1, v1, w1
+        )
+        if diverged:
+            return s
+        if in_contact:
+            for m in range(n):
+                out[m] += shapes[s, 0, 0, m] * fx + shapes[s, 0, 1, m] * fy + shapes[s, 0, 2, m] * fz
+            if two_nodes:
+                for m in range(n):
+                    out[m] += -(
+                        shapes[s, 1, 0, m] * fx + shapes[s, 1, 1, m] * fy + shapes[s, 1, 2, m] * fz
+                    )
     return -1

@@ -17,11 +17,25 @@ from __future__ import annotations
 from numba import njit
 
 from asterlite.dynamics.contact import P_DRIVE1, P_DRIVE2, shock_forces
+from asterlite.dynamics.kernel import C_STEP, C_TIME
 
 
 @njit(cache=True)
 def multiplier(xs, ys, count, left, right, t):
     """Piecewise-linear multiplier at t (extension: 0 constant, 1 linear)."""
+    cursor = np.zeros(1, dtype=np.int64)
+    return multiplier_at(xs, ys, count, left, right, t, cursor, 0)
+
+
+@njit(cache=True, inline="always")
+def multiplier_at(xs, ys, count, left, right, t, cursors, row):
+    """Piecewise-linear multiplier at t (extension: 0 constant, 1 linear).
+
+    ``cursors[row]`` keeps the interval found last time and the search
+    starts from it: O(1) per call for increasing (or slowly moving) times.
+    The interval is the unique ``lo`` with xs[lo] <= t < xs[lo + 1], so the
+    value does not depend on where the search starts.
+    """
     if count == 1:
         return ys[0]
     last = count - 1
@@ -34,24 +48,74 @@ def multiplier(xs, ys, count, left, right, t):
             slope = (ys[last] - ys[last - 1]) / (xs[last] - xs[last - 1])
             return ys[last] + (t - xs[last]) * slope
         return ys[last]
-    lo, hi = 0, last  # xs[lo] <= t < xs[hi]
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if xs[mid] <= t:
-            lo = mid
-        else:
-            hi = mid
+    lo = cursors[row]
+    if lo < 0 or lo >= last:
+        lo = 0
+    if xs[lo] <= t:
+        if xs[lo + 1] <= t:  # move forward: a few steps, then bisection
+            lo += 1
+            steps = 0
+            while xs[lo + 1] <= t and steps < 8:
+                lo += 1
+                steps += 1
+            if xs[lo + 1] <= t:
+                lo = bisect_interval(xs, lo, last, t)
+    else:
+        lo = bisect_interval(xs, 0, lo, t)
+    cursors[row] = lo
+    hi = lo + 1
     width = xs[hi] - xs[lo]
     if width == 0.0:
         return ys[hi]
     return ys[lo] + (t - xs[lo]) * (ys[hi] - ys[lo]) / width
 
 
+@njit(cache=True, inline="always")
+def bisect_interval(xs, lo, hi, t):
+    """The ``lo`` with xs[lo] <= t < xs[lo + 1], knowing xs[lo] <= t < xs[hi]."""
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if xs[mid] <= t:
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+@njit(cache=True, inline="always")
+def loads_cover(t_next, abscissas, layout, pending):
+    """Whether every windowed multiplier row (``pending[e] == 1``: more
+    samples follow its window) is tabulated beyond ``t_next``."""
+    for e in range(pending.shape[0]):
+        if pending[e] == 1 and not (t_next < abscissas[e, layout[e, 0] - 1]):
+            return False
+    return True
+
+
+@njit(cache=True)
+def loads_ready(clock, exc):
+    """Whether the windowed multipliers cover the next step (two stored
+    steps ahead of the current time); otherwise the loop pauses with
+    STATUS_LOADS and the driver tabulates the next window."""
+    t_next = clock[C_TIME] + 2.0 * clock[C_STEP]
+    return loads_cover(t_next, exc[1], exc[3], exc[8]) and loads_cover(
+        t_next, exc[5], exc[7], exc[10]
+    )
+
+
 @njit(cache=True)
 def external_force(t, exc, out):
-    vectors, abscissas, ordinates, layout = exc[0], exc[1], exc[2], exc[3]
+    vectors, abscissas, ordinates, layout, cursors = exc[0], exc[1], exc[2], exc[3], exc[9]
+    add_external_force(t, vectors, abscissas, ordinates, layout, cursors, out)
+
+
+@njit(cache=True, inline="always")
+def add_external_force(t, vectors, abscissas, ordinates, layout, cursors, out):
+    """out += Σ_e f_e(t) vector_e."""
     for e in range(vectors.shape[0]):
-        c = multiplier(abscissas[e], ordinates[e], layout[e, 0], layout[e, 1], layout[e, 2], t)
+        c = multiplier_at(
+            abscissas[e], ordinates[e], layout[e, 0], layout[e, 1], layout[e, 2], t, cursors, e
+        )
         for m in range(out.shape[0]):
             out[m] += c * vectors[e, m]
 
@@ -60,7 +124,7 @@ def external_force(t, exc, out):
 def support_motion(t, exc, params):
     """MULT_APPUI: write each shock node's support displacement and velocity
     Σ_k ψ_k(node) (d_k(t), v_k(t)) into its drive slots (global frame)."""
-    shapes, abscissas, ordinates, layout = exc[4], exc[5], exc[6], exc[7]
+    shapes, abscissas, ordinates, layout, cursors = exc[4], exc[5], exc[6], exc[7], exc[11]
     n_supports = shapes.shape[3]
     if n_supports == 0:
         return
@@ -70,17 +134,48 @@ def support_motion(t, exc, params):
             for i in range(6):
                 params[s, base + i] = 0.0
             for k in range(n_supports):
-                r = 2 * k
-                d = multiplier(
-                    abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t
-                )
-                r += 1
-                w = multiplier(
-                    abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t
-                )
+                d, w = support_values(t, k, abscissas, ordinates, layout, cursors)
                 for i in range(3):
                     params[s, base + i] += shapes[s, node, i, k] * d
                     params[s, base + 3 + i] += shapes[s, node, i, k] * w
+
+
+@njit(cache=True, inline="always")
+def support_values(t, k, abscissas, ordinates, layout, cursors):
+    """(displacement, velocity) of support k at t (rows 2k, 2k + 1)."""
+    r = 2 * k
+    d = multiplier_at(abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t, cursors, r)
+    r += 1
+    w = multiplier_at(abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t, cursors, r)
+    return d, w
+
+
+@njit(cache=True, inline="always")
+def local_support_motion(t, rots, shapes, abscissas, ordinates, layout, cursors, drive):
+    """MULT_APPUI for :func:`contact.local_shock_forces`: ``drive[s, node]``
+    = rot Σ_k ψ_k(node) (d_k(t), v_k(t)), summed in the global frame as
+    :func:`support_motion` does, then rotated. Nothing to do without supports."""
+    n_supports = shapes.shape[3]
+    if n_supports == 0:
+        return
+    for s in range(shapes.shape[0]):
+        for node in range(2):
+            dx, dy, dz, wx, wy, wz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+            for k in range(n_supports):
+                d, w = support_values(t, k, abscissas, ordinates, layout, cursors)
+                dx += shapes[s, node, 0, k] * d
+                dy += shapes[s, node, 1, k] * d
+                dz += shapes[s, node, 2, k] * d
+                wx += shapes[s, node, 0, k] * w
+                wy += shapes[s, node, 1, k] * w
+                wz += shapes[s, node, 2, k] * w
+            r = rots[s]
+            drive[s, node, 0] = r[0, 0] * dx + r[0, 1] * dy + r[0, 2] * dz
+            drive[s, node, 1] = r[1, 0] * dx + r[1, 1] * dy + r[1, 2] * dz
+            drive[s, node, 2] = r[2, 0] * dx + r[2, 1] * dy + r[2, 2] * dz
+            drive[s, node, 3] = r[0, 0] * wx + r[0, 1] * wy + r[0, 2] * wz
+            drive[s, node, 4] = r[1, 0] * wx + r[1, 1] * wy + r[1, 2] * wz
+            drive[s, node, 5] = r[2, 0] * wx + r[2, 1] * wy + r[2, 2] * wz
 
 
 @njit(cache=True)
@@ -142,3 +237,41 @@ def state_acceleration(t, q, v, out, f, residual, vint, work, model):
     shock = total_force(t, q, v, shk, vint, exc, work, f)
     acceleration(f, q, v, lin, residual, out)
     return shock
+
+
+@njit(cache=True, inline="always")
+def diagonal_acceleration(a, f, q, v, mass_inverse, stiffness, damping):
+    """a = (f - k q - c v) / m for diagonal generalized matrices stored as
+    1-D arrays, in one pass; returns whether every a[i] is finite. The same
+    arithmetic as :func:`acceleration` (f - k q - c v, then times 1/m)."""
+    finite = True
+    for i in range(a.shape[0]):
+        x = (f[i] - stiffness[i] * q[i] - damping[i] * v[i]) * mass_inverse[i]
+        a[i] = x
+        if not (abs(x) < 1.0e300):
+            finite = False
+    return finite
+
+
+@njit(cache=True, inline="always")
+def full_acceleration(a, f, q, v, mass_inverse, stiffness, damping, residual):
+    """a = M⁻¹ (f - K q - C v) for full (n, n) matrices; returns whether
+    every a[i] is finite (the arithmetic of :func:`acceleration`)."""
+    n = a.shape[0]
+    for i in range(n):
+        sk = 0.0
+        sc = 0.0
+        for j in range(n):
+            sk += stiffness[i, j] * q[j]
+        for j in range(n):
+            sc += damping[i, j] * v[j]
+        residual[i] = f[i] - sk - sc
+    finite = True
+    for i in range(n):
+        s = 0.0
+        for j in range(n):
+            s += mass_inverse[i, j] * residual[j]
+        a[i] = s
+        if not (abs(s) < 1.0e300):
+            finite = False
+    return finite

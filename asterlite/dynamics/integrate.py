@@ -83,7 +83,11 @@ def integrate(
     instants: np.ndarray,
     pas_arch: int,
     options: SchemeOptions | None = None,
+    specialised: bool = True,
 ) -> RunResult:
+    """Integrate from t0 to t_end. ``specialised``: run the scheme's
+    specialised loop when it has one (DIFF_CENTRE), else its general
+    ``run_loop`` (the same results; kept for comparison)."""
     options = options or SchemeOptions()
     n = system.n_modes
     model = (system.bundle(), shocks.bundle(), excitation.bundle())
@@ -110,14 +114,25 @@ def integrate(
     K.archive(0, t0, 0, q, v, a, vint, *buffers)
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
     counters[K.K_ARCHIVED] = 1
+    run_specialised = getattr(module, "run_specialised", None) if specialised else None
     started = wallclock.perf_counter()
     while True:
-        status = module.run_loop(
-            clock, counters, state, memory, model, instants, pas_arch, eps, buffers
-        )
-        if status != K.STATUS_FULL:
+        if run_specialised is not None:
+            parts = (system, shocks, excitation)
+            status = run_specialised(
+                clock, counters, state, memory, instants, pas_arch, eps, buffers, parts
+            )
+        else:
+            status = module.run_loop(
+                clock, counters, state, memory, model, instants, pas_arch, eps, buffers
+            )
+        if status == K.STATUS_FULL:
+            buffers = grow(buffers)
+        elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
+            excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
+            model = (model[0], model[1], excitation.bundle())
+        else:
             break
-        buffers = grow(buffers)
     elapsed = wallclock.perf_counter() - started
     if status != K.STATUS_DONE:
         raise divergence_error(status, clock, counters, shocks, system, scheme)

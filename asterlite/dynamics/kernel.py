@@ -7,6 +7,7 @@ from the helpers here::
 
     while unfinished(clock, counters, eps):
         if archive_full(counters, archive): return STATUS_FULL
+        if not loads_ready(clock, exc): return STATUS_LOADS
         t, dt = plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(t, dt, index, state, memory, model)
         if status != STATUS_DONE: return record_failure(...)
@@ -28,7 +29,9 @@ shortened to land exactly on each requested instant (and on INST_FIN), the
 remainder of the shortened step is taken next, and otherwise every
 ``pas_arch``-th step is archived. It stops with STATUS_FULL when the archive
 buffers are full so that the driver can grow them and resume: memory
-follows the archived instants, never the number of steps.
+follows the archived instants, never the number of steps. Likewise it
+stops with STATUS_LOADS when a multiplier sampled by windows (a FORMULE)
+needs its next window.
 """
 
 from __future__ import annotations
@@ -42,6 +45,7 @@ STATUS_SHOCK_DIVERGED = 2
 STATUS_STEP_UNDERFLOW = 3
 STATUS_REJECTED = 4
 STATUS_FULL = 10
+STATUS_LOADS = 11  # a windowed multiplier needs its next window (model.Excitation.refill)
 
 # clock[]: time, stored step, nominal step, end time, shortened step,
 #          smallest and largest step taken
@@ -53,7 +57,7 @@ K_STEP, K_ARCHIVED, K_INSTANT, K_FORCE, K_IRREGULAR, K_REJECTED, K_ADAPTIVE, K_S
 N_COUNTERS = 8
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def archive(n, t, step, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, out_vint):
     out_t[n] = t
     out_order[n] = step
@@ -63,7 +67,7 @@ def archive(n, t, step, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, ou
     out_vint[n] = vint
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def unfinished(clock, counters, eps):
     """code_aster's loop test: the remaining time exceeds i * eps (the
     tolerance grows with the running step index i)."""
@@ -71,12 +75,12 @@ def unfinished(clock, counters, eps):
     return (clock[C_END] - clock[C_TIME]) > i * eps
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def archive_full(counters, archive_buffers):
     return counters[K_ARCHIVED] >= archive_buffers[0].shape[0]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def plan_step(clock, counters, instants, eps):
     """(t, dt) of the next step: the stored step, shortened to land on the
     next requested instant."""
@@ -96,14 +100,14 @@ def plan_step(clock, counters, instants, eps):
     return t, dt
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def record_failure(clock, counters, status, shock, dt):
     clock[C_STEP] = dt
     counters[K_SHOCK] = shock
     return status
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def complete_step(clock, counters, state, instants, pas_arch, eps, archive_buffers, step_result):
     """Advance the clock after an accepted step, choose the next step and
     archive when due (dtmcalc's rules)."""

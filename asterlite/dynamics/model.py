@@ -61,6 +61,30 @@ class LinearSystem:
         flag = np.array([1 if self.diagonal else 0], dtype=np.int64)
         return (self.minv, self.stiffness, self.damping, flag)
 
+    def kernel_matrices(self):
+        """(M⁻¹, K, C) for the specialised kernels: 1-D diagonals when all
+        three matrices are diagonal (one pass per acceleration), else the
+        dense (n, n) matrices. The kernels dispatch on ``ndim`` at compile
+        time."""
+        if self.diagonal:
+            return (
+                np.ascontiguousarray(np.diag(self.minv)),
+                np.ascontiguousarray(np.diag(self.stiffness)),
+                np.ascontiguousarray(np.diag(self.damping)),
+            )
+        return (
+            np.ascontiguousarray(self.minv),
+            np.ascontiguousarray(self.stiffness),
+            np.ascontiguousarray(self.damping),
+        )
+
+
+def rotate_rows(rot: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """rot @ x for a (3, n) x, summed as the kernels rotate a vector
+    (r0 x0 + r1 x1 + r2 x2, left to right) so that a frame made of 0 and 1
+    gives back exactly the same numbers."""
+    return rot[:, 0, None] * x[0] + rot[:, 1, None] * x[1] + rot[:, 2, None] * x[2]
+
 
 def is_diagonal(a: np.ndarray) -> bool:
     return not np.any(a - np.diag(np.diag(a)))
@@ -124,6 +148,24 @@ class ShockSet:
 
     def bundle(self):
         return (self.flags, self.params, self.rots, self.phis, self.polars)
+
+    def local_arrays(self):
+        """(shapes, rest) in each shock's local frame, for
+        :func:`contact.local_shock_forces`: ``shapes[s, node]`` = rot Φ
+        (3, n_modes) and ``rest[s, node]`` = rot (coord - ORIG_OBST)."""
+        ns = self.count
+        shapes = np.zeros_like(self.phis)
+        rest = np.zeros((ns, 2, 3))
+        for s in range(ns):
+            rot = self.rots[s]
+            origin = self.params[s, C.P_ORIGIN : C.P_ORIGIN + 3]
+            nodes = 2 if self.flags[s, C.F_TWO_NODES] else 1
+            for node in range(nodes):
+                base = C.P_COORD1 if node == 0 else C.P_COORD2
+                coord = self.params[s, base : base + 3]
+                shapes[s, node] = rotate_rows(rot, self.phis[s, node])
+                rest[s, node] = rotate_rows(rot, (coord - origin)[:, None])[:, 0]
+        return shapes, rest
 
     def parameters(self, s: int) -> dict:
         p = self.params[s]
@@ -254,6 +296,33 @@ def stability_period(system: LinearSystem, shocks: ShockSet) -> float:
     return min(periods) if periods else 1.0e10
 
 
+SAMPLES_PER_WINDOW = 1 << 16  # samples of a windowed multiplier held at a time
+
+
+@dataclass
+class SampledMultiplier:
+    """A multiplier without linear points of its own (a FORMULE, a function
+    with logarithmic interpolation...), sampled on the regular grid
+    t0 + h k, k < count, one window of samples at a time."""
+
+    function: object
+    t0: float
+    h: float
+    count: int
+
+    def window(self, t: float, dt: float):
+        """(first index, end index) of the window for a loop standing at
+        t with step dt: from two samples before t to at least 4 dt ahead."""
+        first = max(0, int(math.floor((t - self.t0) / self.h)) - 2)
+        ahead = int(math.ceil((t + 4.0 * abs(dt) - self.t0) / self.h)) + 3
+        end = min(self.count, max(first + SAMPLES_PER_WINDOW, ahead))
+        return first, end
+
+    def samples(self, first: int, end: int):
+        times = self.t0 + self.h * np.arange(first, end)
+        return times, np.asarray(self.function.evaluate(times), dtype=float)
+
+
 @dataclass
 class Excitation:
     """Generalized load vectors, each times a piecewise-linear multiplier.
@@ -263,7 +332,10 @@ class Excitation:
     PROL_LINEAIRE beyond the ends): a DEFI_FONCTION with linear
     interpolation keeps its own points, so the kernels evaluate it exactly
     as code_aster does at any instant; other multipliers (formulas, log
-    interpolation) are sampled on a regular grid.
+    interpolation) are sampled on a regular grid, one window at a time
+    (``pending[e] == 1`` while samples follow the window: the time loops
+    pause with STATUS_LOADS before stepping past it and :meth:`refill`
+    tabulates the next window). ``cursors`` keep each row's last interval.
     """
 
     vectors: np.ndarray  # (n_exc, n_modes)
@@ -277,13 +349,25 @@ class Excitation:
     drive_abscissas: np.ndarray | None = None
     drive_ordinates: np.ndarray | None = None
     drive_layout: np.ndarray | None = None
+    sampled: list = field(default_factory=list)  # per row: SampledMultiplier or None
+    drive_sampled: list = field(default_factory=list)
 
-    def bundle(self):
+    def __post_init__(self) -> None:
+        n_exc = self.vectors.shape[0]
+        self.pending = np.zeros(n_exc, dtype=np.int64)
+        self.cursors = np.zeros(n_exc, dtype=np.int64)
+        self.sampled = list(self.sampled) or [None] * n_exc
         if self.drive_shapes is None:
             self.drive_shapes = np.zeros((0, 2, 3, 0))
             self.drive_abscissas = np.zeros((0, 1))
             self.drive_ordinates = np.zeros((0, 1))
             self.drive_layout = np.zeros((0, 3), dtype=np.int64)
+        n_drive = self.drive_layout.shape[0]
+        self.drive_pending = np.zeros(n_drive, dtype=np.int64)
+        self.drive_cursors = np.zeros(n_drive, dtype=np.int64)
+        self.drive_sampled = list(self.drive_sampled) or [None] * n_drive
+
+    def bundle(self):
         return (
             self.vectors,
             self.abscissas,
@@ -293,28 +377,87 @@ class Excitation:
             self.drive_abscissas,
             self.drive_ordinates,
             self.drive_layout,
+            self.pending,
+            self.cursors,
+            self.drive_pending,
+            self.drive_cursors,
         )
 
     def add_support_motion(self, shapes: np.ndarray, motions, t0, t_end, h) -> None:
         """``shapes``: (n_shocks, 2, 3, n_supports); ``motions``: one
         (displacement, velocity) pair of functions per support."""
         points = [multiplier_points(f, t0, t_end, h) for pair in motions for f in pair]
-        width = max([1] + [len(p[0]) for p in points])
+        width = table_width(points)
         self.drive_shapes = np.ascontiguousarray(shapes, dtype=float)
         self.drive_abscissas = np.zeros((len(points), width))
         self.drive_ordinates = np.zeros((len(points), width))
         self.drive_layout = np.zeros((len(points), 3), dtype=np.int64)
-        for r, (xs, ys, left, right) in enumerate(points):
-            self.drive_abscissas[r, : len(xs)] = xs
-            self.drive_ordinates[r, : len(xs)] = ys
-            self.drive_layout[r] = (len(xs), left, right)
+        self.drive_pending = np.zeros(len(points), dtype=np.int64)
+        self.drive_cursors = np.zeros(len(points), dtype=np.int64)
+        self.drive_sampled = [None] * len(points)
+        for r, row in enumerate(points):
+            if isinstance(row, SampledMultiplier):
+                self.drive_sampled[r] = row
+            else:
+                xs, ys, left, right = row
+                self.drive_abscissas[r, : len(xs)] = xs
+                self.drive_ordinates[r, : len(xs)] = ys
+                self.drive_layout[r] = (len(xs), left, right)
+        self.refill(t0, 0.0)
+
+    def refill(self, t: float, dt: float) -> bool:
+        """Tabulate the window of every sampled row that does not cover
+        [t, t + 2 dt] (all of them at the first call). Returns whether the
+        tables were reallocated (then bundles must be rebuilt)."""
+        grown = False
+        for kind in ("", "drive_"):
+            sampled = getattr(self, kind + "sampled")
+            for row, source in enumerate(sampled):
+                if source is None:
+                    continue
+                xs = getattr(self, kind + "abscissas")
+                layout = getattr(self, kind + "layout")
+                pending = getattr(self, kind + "pending")
+                count = layout[row, 0]
+                starts_before = count > 0 and xs[row, 0] <= max(t, source.t0)
+                reaches = count > 0 and (pending[row] == 0 or t + 2.0 * dt < xs[row, count - 1])
+                if starts_before and reaches:
+                    continue
+                first, end = source.window(t, dt)
+                times, values = source.samples(first, end)
+                if len(times) > xs.shape[1]:
+                    grown = True
+                    for name in ("abscissas", "ordinates"):
+                        old = getattr(self, kind + name)
+                        new = np.zeros((old.shape[0], len(times)))
+                        new[:, : old.shape[1]] = old
+                        setattr(self, kind + name, new)
+                    xs = getattr(self, kind + "abscissas")
+                ys = getattr(self, kind + "ordinates")
+                xs[row, : len(times)] = times
+                ys[row, : len(times)] = values
+                layout[row] = (len(times), PROL_CONSTANT, PROL_CONSTANT)
+                pending[row] = 1 if end < source.count else 0
+                getattr(self, kind + "cursors")[row] = 0
+        return grown
+
+
+def table_width(points) -> int:
+    widths = [1]
+    for row in points:
+        if isinstance(row, SampledMultiplier):
+            widths.append(min(row.count, SAMPLES_PER_WINDOW))
+        else:
+            widths.append(len(row[0]))
+    return max(widths)
 
 
 PROL_CONSTANT, PROL_LINEAIRE = 0, 1
 
 
 def multiplier_points(mult, t0: float, t_end: float, h: float):
-    """(abscissas, ordinates, left, right) of one multiplier."""
+    """(abscissas, ordinates, left, right) of one multiplier, or a
+    :class:`SampledMultiplier` for one sampled every ``h`` by windows."""
     if isinstance(mult, (int, float)):
         return np.array([t0]), np.array([float(mult)]), PROL_CONSTANT, PROL_CONSTANT
     xs = getattr(mult, "abscissas", None)
@@ -326,24 +469,30 @@ def multiplier_points(mult, t0: float, t_end: float, h: float):
         right = PROL_LINEAIRE if getattr(mult, "PROL_DROITE", "") == "LINEAIRE" else PROL_CONSTANT
         return np.asarray(xs, dtype=float), np.asarray(ys, dtype=float), left, right
     n = max(2, int(math.ceil((t_end - t0) / h)) + 2)
-    times = t0 + h * np.arange(n)
-    return times, np.asarray(mult.evaluate(times), dtype=float), PROL_CONSTANT, PROL_CONSTANT
+    return SampledMultiplier(mult, t0, h, n)
 
 
 def tabulate_excitation(n_modes: int, loads, t0: float, t_end: float, h: float) -> Excitation:
     """``loads``: list of (vector, multiplier) with multiplier a float, a
     tabulated function (``abscissas``, ``ordinates``, ``INTERPOL``,
     ``PROL_GAUCHE``/``PROL_DROITE``) or any object with ``evaluate(t_array)``
-    (then sampled every ``h`` over [t0, t_end])."""
+    (then sampled every ``h`` over [t0, t_end], one window at a time)."""
     points = [multiplier_points(mult, t0, t_end, h) for _, mult in loads]
-    width = max([1] + [len(p[0]) for p in points])
+    width = table_width(points)
     vectors = np.zeros((len(loads), n_modes))
     abscissas = np.zeros((len(loads), width))
     ordinates = np.zeros((len(loads), width))
     layout = np.zeros((len(loads), 3), dtype=np.int64)
-    for e, ((vector, _), (xs, ys, left, right)) in enumerate(zip(loads, points, strict=True)):
+    sampled = [None] * len(loads)
+    for e, ((vector, _), row) in enumerate(zip(loads, points, strict=True)):
         vectors[e] = vector
+        if isinstance(row, SampledMultiplier):
+            sampled[e] = row
+            continue
+        xs, ys, left, right = row
         abscissas[e, : len(xs)] = xs
         ordinates[e, : len(xs)] = ys
         layout[e] = (len(xs), left, right)
-    return Excitation(vectors, abscissas, ordinates, layout)
+    excitation = Excitation(vectors, abscissas, ordinates, layout, sampled=sampled)
+    excitation.refill(t0, 0.0)
+    return excitation

@@ -1,6 +1,19 @@
 """DIFF_CENTRE: explicit central differences in code_aster's form
 (v_{n+1} = v_n + dt a_n, q_{n+1} = q_n + dt v_{n+1}, then a_{n+1} from the
-equations of motion at the new state). Order 2, conditionally stable."""
+equations of motion at the new state). Order 2, conditionally stable.
+
+Two loops share the arithmetic:
+
+- :func:`run_loop`, the general path every scheme has (``step`` on the
+  ``(lin, shk, exc)`` bundles);
+- :func:`specialised_loop`, what :func:`integrate.integrate` runs: one
+  compiled loop on plain arrays with every helper inlined, the shock
+  kinematics in each shock's local frame (:func:`contact.local_shock_forces`),
+  the acceleration in one pass (diagonal matrices as 1-D arrays, the
+  finiteness test folded in), multipliers searched from their last
+  interval. The diagonal and full cases are two compiled specialisations
+  of the same source (``mass_inverse.ndim`` is a compile-time constant).
+"""
 
 from __future__ import annotations
 
@@ -8,7 +21,17 @@ import numpy as np
 from numba import njit
 
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, state_acceleration
+from asterlite.dynamics.contact import local_shock_forces
+from asterlite.dynamics.forces import (
+    add_external_force,
+    all_finite,
+    diagonal_acceleration,
+    full_acceleration,
+    loads_cover,
+    loads_ready,
+    local_support_motion,
+    state_acceleration,
+)
 
 RESIDUAL = 0  # memory row: residual scratch
 
@@ -39,6 +62,8 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     while K.unfinished(clock, counters, eps):
         if K.archive_full(counters, archive):
             return K.STATUS_FULL
+        if not loads_ready(clock, model[2]):
+            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model
@@ -48,3 +73,147 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         result = (dt_used, dt_next, rejected)
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
     return K.STATUS_DONE
+
+
+@njit(cache=True)
+def specialised_loop(
+    clock,
+    counters,
+    instants,
+    pas_arch,
+    eps,
+    q,
+    v,
+    a,
+    f,
+    vint,
+    residual,
+    mass_inverse,
+    stiffness,
+    damping,
+    shock_flags,
+    shock_params,
+    shock_rots,
+    shock_shapes,
+    shock_rest,
+    shock_polars,
+    shock_drive,
+    load_vectors,
+    load_abscissas,
+    load_ordinates,
+    load_layout,
+    load_pending,
+    load_cursors,
+    support_shapes,
+    support_abscissas,
+    support_ordinates,
+    support_layout,
+    support_pending,
+    support_cursors,
+    out_t,
+    out_order,
+    out_q,
+    out_v,
+    out_a,
+    out_vint,
+):
+    """The DIFF_CENTRE loop on plain arrays (see the module docstring);
+    same status codes and archiving rules as :func:`run_loop`.
+
+    ``mass_inverse``, ``stiffness``, ``damping``: 1-D diagonals or (n, n)
+    matrices (:meth:`model.LinearSystem.kernel_matrices`); ``shock_shapes``,
+    ``shock_rest``: :meth:`model.ShockSet.local_arrays`; ``shock_drive``:
+    (n_shocks, 2, 6) scratch for the support motion in the local frames.
+    """
+    n = q.shape[0]
+    state = (q, v, a, f, vint)
+    archive = (out_t, out_order, out_q, out_v, out_a, out_vint)
+    while K.unfinished(clock, counters, eps):
+        if K.archive_full(counters, archive):
+            return K.STATUS_FULL
+        t_ahead = clock[K.C_TIME] + 2.0 * clock[K.C_STEP]
+        if not (
+            loads_cover(t_ahead, load_abscissas, load_layout, load_pending)
+            and loads_cover(t_ahead, support_abscissas, support_layout, support_pending)
+        ):
+            return K.STATUS_LOADS
+        t, dt = K.plan_step(clock, counters, instants, eps)
+        for i in range(n):
+            v[i] += dt * a[i]
+            q[i] += dt * v[i]
+        t_new = t + dt
+        for i in range(n):
+            f[i] = 0.0
+        add_external_force(
+            t_new, load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors, f
+        )
+        local_support_motion(
+            t_new,
+            shock_rots,
+            support_shapes,
+            support_abscissas,
+            support_ordinates,
+            support_layout,
+            support_cursors,
+            shock_drive,
+        )
+        shock = local_shock_forces(
+            q, v, shock_flags, shock_params, shock_shapes, shock_rest, shock_polars,
+            shock_drive, vint, f,
+        )  # fmt: skip
+        if shock >= 0:
+            return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, shock, dt)
+        if mass_inverse.ndim == 1:
+            finite = diagonal_acceleration(a, f, q, v, mass_inverse, stiffness, damping)
+        else:
+            finite = full_acceleration(a, f, q, v, mass_inverse, stiffness, damping, residual)
+        if not finite:
+            return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, dt)
+        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, (dt, dt, 0))
+    return K.STATUS_DONE
+
+
+def run_specialised(clock, counters, state, memory, instants, pas_arch, eps, archive, parts):
+    """Unpack the engine objects into :func:`specialised_loop`'s arrays
+    (once per call, not per step). ``parts``: (system, shocks, excitation)."""
+    system, shocks, excitation = parts
+    q, v, a, f, vint = state[0], state[1], state[2], state[3], state[4]
+    mass_inverse, stiffness, damping = system.kernel_matrices()
+    shapes, rest = shocks.local_arrays()
+    drive = np.zeros((shocks.count, 2, 6))
+    return specialised_loop(
+        clock,
+        counters,
+        instants,
+        pas_arch,
+        eps,
+        q,
+        v,
+        a,
+        f,
+        vint,
+        memory[0][RESIDUAL],
+        mass_inverse,
+        stiffness,
+        damping,
+        shocks.flags,
+        shocks.params,
+        shocks.rots,
+        shapes,
+        rest,
+        shocks.polars,
+        drive,
+        excitation.vectors,
+        excitation.abscissas,
+        excitation.ordinates,
+        excitation.layout,
+        excitation.pending,
+        excitation.cursors,
+        excitation.drive_shapes,
+        excitation.drive_abscissas,
+        excitation.drive_ordinates,
+        excitation.drive_layout,
+        excitation.drive_pending,
+        excitation.drive_cursors,
+        *archive,
+    )

@@ -24,7 +24,7 @@ from numba import njit
 
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, total_force
+from asterlite.dynamics.forces import all_finite, loads_ready, total_force
 
 # vector rows: index-2 displacement and velocity, right-hand side, pivots
 Q_INDEX2, V_INDEX2, RHS, PIVOTS = range(4)
@@ -106,6 +106,8 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     while K.unfinished(clock, counters, eps):
         if K.archive_full(counters, archive):
             return K.STATUS_FULL
+        if not loads_ready(clock, model[2]):
+            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model

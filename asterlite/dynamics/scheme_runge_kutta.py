@@ -30,7 +30,7 @@ import numpy as np
 from numba import njit
 
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, state_acceleration
+from asterlite.dynamics.forces import all_finite, loads_ready, state_acceleration
 
 
 @dataclass(frozen=True)
@@ -215,6 +215,8 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     while K.unfinished(clock, counters, eps):
         if K.archive_full(counters, archive):
             return K.STATUS_FULL
+        if not loads_ready(clock, model[2]):
+            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model

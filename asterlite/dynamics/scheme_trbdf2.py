@@ -32,7 +32,7 @@ from numba import njit
 
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, state_acceleration
+from asterlite.dynamics.forces import all_finite, loads_ready, state_acceleration
 
 Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
 VECTOR_ROWS = 8
@@ -128,6 +128,8 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     while K.unfinished(clock, counters, eps):
         if K.archive_full(counters, archive):
             return K.STATUS_FULL
+        if not loads_ready(clock, model[2]):
+            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model

@@ -174,9 +174,12 @@ def selection_from_keywords(ctx, kw, times, order, default_interpol: str = "NON"
 # -- DOF selection --------------------------------------------------------
 
 
-def node_indices(ctx, kw, mesh, *, allow_all: bool = True) -> np.ndarray | None:
-    """Mesh node indices named by GROUP_NO / NOEUD / GROUP_MA / MAILLE, in
-    order and without repeats; None when none is given (all nodes)."""
+def node_indices(
+    ctx, kw, mesh, *, allow_all: bool = True, with_cells: bool = True
+) -> np.ndarray | None:
+    """Mesh node indices named by GROUP_NO / NOEUD / GROUP_MA / MAILLE (the
+    cells' nodes, unless ``with_cells`` is False), in order and without
+    repeats; None when none is given (all nodes)."""
     chosen: list[int] = []
     for name in as_tuple(kw.get("GROUP_NO")):
         if name not in mesh.node_groups:
@@ -184,21 +187,23 @@ def node_indices(ctx, kw, mesh, *, allow_all: bool = True) -> np.ndarray | None:
         chosen.extend(int(i) for i in mesh.node_groups[name])
     for name in as_tuple(kw.get("NOEUD")):
         name = str(name)
-        if name in mesh.node_index:
-            chosen.append(mesh.node_index[name])
+        found = mesh.find_node(name)  # also code_aster 17's N<i>
+        if found is not None:
+            chosen.append(found)
         elif name.isdigit() and 1 <= int(name) <= mesh.n_nodes:
             chosen.append(int(name) - 1)  # code_aster 17 names nodes by number
         else:
             ctx.error(f"mesh has no node {name!r}", "NOEUD", kw)
     cells: list[int] = []
-    for name in as_tuple(kw.get("GROUP_MA")):
+    for name in as_tuple(kw.get("GROUP_MA")) if with_cells else ():
         if name not in mesh.cell_groups:
             ctx.error(f"mesh has no cell group {name!r}", "GROUP_MA", kw)
         cells.extend(int(i) for i in mesh.cell_groups[name])
-    for name in as_tuple(kw.get("MAILLE")):
-        if name not in mesh.cell_index:
+    for name in as_tuple(kw.get("MAILLE")) if with_cells else ():
+        found = mesh.find_cell(str(name))
+        if found is None:
             ctx.error(f"mesh has no cell {name!r}", "MAILLE", kw)
-        cells.append(mesh.cell_index[name])
+        cells.append(found)
     for cell in cells:
         chosen.extend(mesh.cell_nodes[cell])
     if not chosen:
@@ -225,9 +230,9 @@ def node_label(mesh, node: int) -> str:
     return mesh.node_names[node] if node < len(mesh.node_names) else str(node + 1)
 
 
-def single_node(ctx, kw, mesh) -> int:
+def single_node(ctx, kw, mesh, *, with_cells: bool = True) -> int:
     """The one node a RECU_FONCTION / TEST_RESU occurrence names."""
-    nodes = node_indices(ctx, kw, mesh, allow_all=False)
+    nodes = node_indices(ctx, kw, mesh, allow_all=False, with_cells=with_cells)
     if nodes is None or nodes.size == 0:
         ctx.error("a node is required (GROUP_NO or NOEUD)", None, kw)
     if nodes.size > 1 and kw.get("GROUP_NO") is not None:
@@ -239,3 +244,100 @@ def single_node(ctx, kw, mesh) -> int:
 def recombine(shapes_rows: np.ndarray, generalized: np.ndarray) -> np.ndarray:
     """Physical values (n_instants, n_rows) = q (n_instants, n_modes) @ Φᵀ."""
     return np.asarray(generalized) @ np.asarray(shapes_rows).T
+
+
+def support_motion(supports, rows, times, field: str) -> np.ndarray:
+    """What the support motions add to a relative field for absolute motion:
+    Σ_k ψ_k[rows] s_k(t), (n_times, n_rows). ``supports`` is the
+    ``info["mult_appui"]`` list of a tran_gene (``"shape"``: the static mode
+    ψ_k on the basis DOFs; ``"DEPL"``/``"VITE"``/``"ACCE"``: the support's
+    motion functions of time); a missing motion adds nothing."""
+    times = np.atleast_1d(np.asarray(times, dtype=float))
+    rows = np.asarray(rows, dtype=int)
+    extra = np.zeros((times.size, rows.size))
+    for support in supports or ():
+        motion = support.get(field[:4])
+        if motion is None:
+            continue
+        shape = np.asarray(support["shape"], dtype=float)[rows]
+        extra += np.outer(np.asarray(motion.evaluate(times), dtype=float), shape)
+    return extra
+
+
+def recombine_element_field(field, generalized):
+    """An element field of the modes (values (n_modes, n_cells, n_points,
+    n_components), as CALC_CHAMP stores it on a modal basis) recombined with
+    generalized coordinates (n_instants, n_modes): Σ_j q_j(t) σ_j."""
+    from asterlite.concepts.assembly import ElementField
+
+    generalized = np.asarray(generalized, dtype=float)
+    modal = np.asarray(field.values, dtype=float)
+    if modal.shape[0] != generalized.shape[1]:
+        raise CommandError(
+            f"{field.name} holds {modal.shape[0]} modes, the coordinates {generalized.shape[1]}"
+        )
+    values = np.tensordot(generalized, modal, axes=(1, 0))
+    return ElementField(field.name, np.asarray(field.cells).copy(), field.components, values)
+
+
+def element_value_history(ctx, kw, result, name: str) -> np.ndarray:
+    """Values along the orders of one component of an element field (``*_ELNO``
+    at the node GROUP_NO / NOEUD of the cell, ``*_ELGA`` at POINT) or of a
+    smoothed nodal field (``*_NOEU``) of a result, as RECU_FONCTION and
+    TEST_RESU read it."""
+    mesh = result.numbering.mesh
+    component = kw.get("NOM_CMP")
+    node_fields = getattr(result, "node_fields", None) or {}
+    if name in node_fields:
+        field = node_fields[name]
+        node = single_node(ctx, kw, mesh)
+        if node not in set(int(n) for n in field.nodes):
+            ctx.error(f"{name} has no value at node {node_label(mesh, node)}", "GROUP_NO", kw)
+        if component not in field.components:
+            ctx.error(f"{name} has no component {component!r}", "NOM_CMP", kw)
+        return field.at(node, component)
+    field = result.element_fields[name]
+    cell = single_cell(ctx, kw, mesh)
+    if cell not in set(int(c) for c in field.cells):
+        ctx.error(f"{name} is not computed on cell {mesh.cell_names[cell]}", "GROUP_MA", kw)
+    if component not in field.components:
+        ctx.error(
+            f"{name} has no component {component!r} (it has {', '.join(field.components)})",
+            "NOM_CMP",
+            kw,
+        )
+    if kw.get("POINT") is not None:
+        point = int(kw["POINT"]) - 1
+    else:
+        node = single_node(ctx, kw, mesh, with_cells=False)
+        connectivity = [int(n) for n in mesh.cell_nodes[cell]]
+        if node not in connectivity:
+            ctx.error(
+                f"node {node_label(mesh, node)} is not a node of cell {mesh.cell_names[cell]}",
+                "GROUP_NO",
+                kw,
+            )
+        point = connectivity.index(node)
+    n_points = field.values.shape[2]
+    if not 0 <= point < n_points:
+        ctx.error(f"{name} has {n_points} points per cell, not {point + 1}", "POINT", kw)
+    return field.at(cell, point, component)
+
+
+def single_cell(ctx, kw, mesh) -> int:
+    """The one cell a GROUP_MA / MAILLE keyword names."""
+    cells: list[int] = []
+    for name in as_tuple(kw.get("GROUP_MA")):
+        if name not in mesh.cell_groups:
+            ctx.error(f"mesh has no cell group {name!r}", "GROUP_MA", kw)
+        cells.extend(int(i) for i in mesh.cell_groups[name])
+    for name in as_tuple(kw.get("MAILLE")):
+        found = mesh.find_cell(str(name))
+        if found is None:
+            ctx.error(f"mesh has no cell {name!r}", "MAILLE", kw)
+        cells.append(int(found))
+    if not cells:
+        ctx.error("a cell is required (GROUP_MA or MAILLE)", "GROUP_MA", kw)
+    if len(set(cells)) > 1:
+        ctx.error(f"{len(set(cells))} cells given: one expected", "GROUP_MA", kw)
+    return cells[0]

@@ -1,0 +1,195 @@
+"""The Python methods decks call on results (code_aster's object API).
+
+Concepts keep thin methods listed in their ``deck_methods`` and delegate
+here: reading and writing the generalized coordinates of a ``tran_gene``
+(``getDisplacementValues(idx)``...), the nonlinearity summary
+(``INFO_NONL()``), and nodal fields of a physical result or a modal basis
+(``getField("DEPL", nume_ordre).getValues()``).
+
+Indices follow code_aster: a ``tran_gene``'s *time index* is the 0-based
+position in its archive (``getIndexes()`` lists the NUME_ORDRE of each
+position); ``getField`` takes a NUME_ORDRE.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from asterlite.concepts.assembly import NodalField
+from asterlite.errors import CommandError
+
+# Where INFO_NONL and other printing methods write: the session's message log
+# once the session registers it (``set_sink``), standard output until then.
+_sink: list[Callable[[str], None]] = []
+
+
+def set_sink(sink: Callable[[str], None] | None) -> None:
+    """Send what deck methods print to ``sink(line)`` (None: standard output)."""
+    _sink.clear()
+    if sink is not None:
+        _sink.append(sink)
+
+
+def emit(line: str) -> None:
+    if _sink:
+        _sink[0](line)
+    else:
+        sys.stdout.write(line + "\n")
+
+
+# ----------------------------------------------------------------- tran_gene
+
+
+def archive_position(n_archived: int, idx) -> int:
+    """A 0-based time index checked against the archive length."""
+    position = int(idx)
+    if not 0 <= position < n_archived:
+        raise CommandError(
+            f"time index {position} is outside the archive (0..{n_archived - 1})"
+        )
+    return position
+
+
+def generalized_values(states: np.ndarray, idx=None) -> list[float]:
+    """All states flattened instant after instant, or the state at one index."""
+    states = np.asarray(states, dtype=float)
+    if idx is None:
+        return states.ravel().tolist()
+    return states[archive_position(states.shape[0], idx)].tolist()
+
+
+def set_generalized_values(states: np.ndarray, idx, values) -> None:
+    """Overwrite the state at one time index (one value per mode)."""
+    position = archive_position(states.shape[0], idx)
+    values = np.asarray(values, dtype=float).ravel()
+    if values.size != states.shape[1]:
+        raise CommandError(f"{values.size} values given for {states.shape[1]} modes")
+    states[position] = values
+
+
+# code_aster's summary table of INFO_NONL
+_RULE = "-" * 104
+_HEADER = (
+    " |  IND  |       TYPE        |    NO1    |    NO2    |   SST1    |"
+    "    SST2   |           TITLE          |"
+)
+
+
+def nonlinearity_rows(shocks) -> list[list[str]]:
+    """[type, title, node 1, node 2, substructure 1, substructure 2] per nonlinearity."""
+    return [
+        [s.relation, s.name, s.node_1, s.node_2 or "", "", ""]
+        for s in shocks
+    ]
+
+
+def info_nonl_lines(shocks) -> list[str]:
+    """The lines INFO_NONL prints."""
+    if not shocks:
+        return ["Linear calculation, no nonlinearities used or can be printed."]
+    lines = [_RULE, " " * 15 + "Information regarding the considered non linearities", _RULE]
+    lines += [_HEADER, _RULE]
+    for i, (kind, title, no1, no2, sst1, sst2) in enumerate(nonlinearity_rows(shocks), 1):
+        cells = [c.strip() or "-" for c in (no1, no2, sst1, sst2)]
+        lines.append(
+            f" | {i:^5} | {kind:^17} | {cells[0]:^9} | {cells[1]:^9}"
+            f" | {cells[2]:^9} | {cells[3]:^9} | {title:^25}"
+        )
+    lines.append(_RULE)
+    return lines
+
+
+def info_nonl(shocks):
+    """Print the nonlinearity summary; return its rows (None when linear)."""
+    for line in info_nonl_lines(shocks):
+        emit(line)
+    return nonlinearity_rows(shocks) or None
+
+
+# -------------------------------------------------------------- nodal fields
+
+
+@dataclass(eq=False)
+class FieldValues(NodalField):
+    """A nodal field taken from a result (``result.getField(...)``).
+
+    ``getValues()`` gives one value per DOF of the numbering: every asterlite
+    DOF is physical (no Lagrange multipliers), so ``getPhysicalDOFs()`` of the
+    numbering indexes all of them.
+    """
+
+    deck_methods: ClassVar[frozenset[str]] = frozenset(
+        {"getName", "getValues", "size", "norm", "getComponents"}
+    )
+
+    def getValues(self):  # noqa: N802 - code_aster's names
+        return np.asarray(self.values, dtype=float).tolist()
+
+    def size(self) -> int:
+        return int(np.asarray(self.values).size)
+
+    def norm(self, normType: str = "NORM_2") -> float:  # noqa: N803
+        values = np.asarray(self.values, dtype=float)
+        kind = normType.upper()
+        if kind == "NORM_1":
+            return float(np.abs(values).sum())
+        if kind == "NORM_INFINITY":
+            return float(np.abs(values).max(initial=0.0))
+        return float(np.sqrt(values @ values))
+
+    def getComponents(self):  # noqa: N802
+        return sorted(set(self.numbering.dof_components))
+
+
+def order_position(order, nume_ordre, what: str) -> int:
+    """Position of a NUME_ORDRE among a result's orders."""
+    matches = np.flatnonzero(np.asarray(order) == int(nume_ordre))
+    if matches.size == 0:
+        orders = np.asarray(order)
+        span = f"{orders[0]}..{orders[-1]}" if orders.size else "none"
+        raise CommandError(f"{what}: NUME_ORDRE {nume_ordre} is not stored (orders {span})")
+    return int(matches[0])
+
+
+def instant_position(times, instant, what: str) -> int:
+    """Position of the stored instant closest to ``instant`` (relative 1e-6)."""
+    times = np.asarray(times, dtype=float)
+    position = int(np.argmin(np.abs(times - float(instant)))) if times.size else -1
+    if position < 0 or abs(times[position] - instant) > 1e-6 * max(abs(instant), 1e-300):
+        raise CommandError(f"{what}: no stored instant at {float(instant):g}")
+    return position
+
+
+def transient_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> FieldValues:
+    """``dyna_trans.getField(name, value, para)``: ``value`` is a NUME_ORDRE
+    (``para='NUME_ORDRE'``, the last stored one when omitted) or an instant
+    (``para='INST'``)."""
+    name = str(name).strip().upper()
+    if name not in result.fields:
+        raise CommandError(
+            f"result {result.name or ''} has no field {name} (it has {', '.join(result.fields)})"
+        )
+    if value is None:
+        position = len(result.order) - 1
+    elif str(para).upper() == "INST":
+        position = instant_position(result.times, value, f"field {name}")
+    else:
+        position = order_position(result.order, value, f"field {name}")
+    return FieldValues(result.numbering, np.array(result.fields[name][position], dtype=float))
+
+
+def mode_field(basis, name: str, nume_ordre=1, para: str = "NUME_ORDRE") -> FieldValues:
+    """``mode_meca.getField("DEPL", nume_ordre)``: the mode shape (NUME_ORDRE
+    counts the modes from 1, as code_aster stores them)."""
+    name = str(name).strip().upper()
+    if name != "DEPL":
+        raise CommandError(f"a modal basis holds DEPL fields here, not {name}")
+    orders = basis.mode_numbers if str(para).upper() == "NUME_MODE" else None
+    orders = np.arange(1, basis.n_modes + 1) if orders is None else orders
+    position = order_position(orders, nume_ordre, "mode")
+    return FieldValues(basis.numbering, np.array(basis.shapes[:, position], dtype=float))
