@@ -17,7 +17,7 @@ def _run(args) -> int:
 
     deck = Path(args.deck)
     output = Path(args.output) if args.output else Path("asterlite-out") / deck.stem
-    report = run_deck(deck, output, echo=not args.quiet)
+    report = run_deck(deck, output, echo=not args.quiet, save_results=args.save_results)
     if not args.quiet:
         print(format_summary(report))
         print(f"output folder: {output}")
@@ -153,6 +153,11 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("deck")
     run.add_argument("-o", "--output", help="output folder (default asterlite-out/<deck>)")
     run.add_argument("-q", "--quiet", action="store_true", help="print only problems")
+    run.add_argument(
+        "--save-results",
+        action="store_true",
+        help="save every tran_gene result to OUTDIR/results.h5 (layout: docs/results.md)",
+    )
     run.set_defaults(handler=_run)
 
     check = commands.add_parser("check", help="validate decks without computing")

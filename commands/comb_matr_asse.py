@@ -1,29 +1,50 @@
-"""COMB_MATR_ASSE: linear combination of assembled (or generalized) matrices."""
+"""COMB_MATR_ASSE: linear combination of assembled (or generalized) matrices.
+
+``COMB_R`` gives a real matrix: ``sum COEF_R * part(A)`` where ``part`` is
+the matrix itself for a real one, its real or imaginary part (``PARTIE``,
+real by default) for a complex one. ``COMB_C`` gives a complex matrix:
+``sum coef * A`` with ``COEF_C`` (complex) or ``COEF_R``.
+"""
 
 from __future__ import annotations
 
-from asterlite.concepts.assembly import AssembledMatrix
+import numpy as np
+
+from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
 from asterlite.concepts.modes import GeneralizedMatrix
 
 
+def _term(ctx, occ, keyword: str):
+    matrix = occ["MATR_ASSE"]
+    values = matrix.matrix
+    if keyword == "COMB_R":
+        if np.iscomplexobj(values.data if hasattr(values, "data") else values):
+            values = values.imag if occ.get("PARTIE") == "IMAG" else values.real
+        elif occ.get("PARTIE") == "IMAG":
+            values = 0.0 * values
+        return matrix, float(occ["COEF_R"]) * values
+    coef = occ.get("COEF_C")
+    coef = complex(occ["COEF_R"]) if coef is None else complex(coef)
+    return matrix, coef * values
+
+
 def run(ctx, kw):
-    terms = kw.factor("COMB_R")
+    keyword = "COMB_C" if kw.factor("COMB_C") else "COMB_R"
+    terms = kw.factor(keyword)
     if not terms:
-        ctx.unsupported("COMB_MATR_ASSE without COMB_R", None, kw)
+        ctx.unsupported("COMB_MATR_ASSE without COMB_R or COMB_C", None, kw)
     first = terms[0]["MATR_ASSE"]
     total = None
     for occ in terms:
-        matrix = occ["MATR_ASSE"]
-        if occ.get("PARTIE") not in (None, "REEL"):
-            ctx.unsupported("COMB_R PARTIE='IMAG'", "PARTIE", occ)
-        if type(matrix) is not type(first):
+        matrix, term = _term(ctx, occ, keyword)
+        if isinstance(matrix, GeneralizedMatrix) != isinstance(first, GeneralizedMatrix):
             ctx.error("cannot combine physical and generalized matrices", "MATR_ASSE", occ)
         if matrix.numbering is not first.numbering:
             ctx.error("the matrices use different numberings", "MATR_ASSE", occ)
-        term = float(occ["COEF_R"]) * matrix.matrix
         total = term if total is None else total + term
     if isinstance(first, AssembledMatrix):
-        return AssembledMatrix(
+        cls = ComplexAssembledMatrix if keyword == "COMB_C" else AssembledMatrix
+        return cls(
             numbering=first.numbering,
             matrix=total.tocsr(),
             kind=first.kind,
@@ -31,4 +52,6 @@ def run(ctx, kw):
             characteristics=first.characteristics,
             materials=first.materials,
         )
+    if keyword == "COMB_C":
+        ctx.unsupported("COMB_MATR_ASSE/COMB_C of generalized matrices", keyword, kw)
     return GeneralizedMatrix(numbering=first.numbering, matrix=total, kind=first.kind)

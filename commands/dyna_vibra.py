@@ -295,9 +295,10 @@ def node_pairs(ctx, occ, mesh) -> list[tuple[int, int | None]]:
 def single_node(ctx, occ, mesh, node_kw, group_kw) -> int | None:
     if occ.get(node_kw) is not None:
         name = occ[node_kw]
-        if name not in mesh.node_index:
+        index = mesh.find_node(name)  # also code_aster 17's positional N<i> names
+        if index is None:
             ctx.error(f"no node {name!r} in the mesh", node_kw, occ)
-        return mesh.node_index[name]
+        return index
     if occ.get(group_kw) is not None:
         group = occ[group_kw]
         if group not in mesh.node_groups:
@@ -488,7 +489,10 @@ def support_motions(ctx, kw, basis) -> list[dict]:
                 ctx.error(f"no node group {group!r} in the mesh", "GROUP_NO", occ)
             nodes.extend(int(n) for n in mesh.node_groups[group])
         for name in as_tuple(occ.get("NOEUD")):
-            nodes.append(mesh.node_index[name])
+            index = mesh.find_node(name)
+            if index is None:
+                ctx.error(f"no node {name!r} in the mesh", "NOEUD", occ)
+            nodes.append(index)
         direction = np.asarray(as_tuple(occ.get("DIRECTION")) or (1.0, 0.0, 0.0), dtype=float)
         try:
             shape = combined_static_shape(static, [mesh.node_names[n] for n in nodes], direction)

@@ -73,14 +73,16 @@ def gap_and_normal(geometry, loc1, loc2, gap0, dist1, dist2, sign_y, sign_z, pol
     sign of node 2 - node 1 at rest (the side each body stays on).
     ``polar``: (angle rad, radius) rows of a DISCRET obstacle, increasing angles.
     """
+    polars = polar.reshape((1, polar.shape[0], polar.shape[1]))
     return obstacle_gap(
-        geometry, loc1[1], loc1[2], loc2[1], loc2[2], gap0, dist1, dist2, sign_y, sign_z, polar, npolar
+        geometry, loc1[1], loc1[2], loc2[1], loc2[2], gap0, dist1, dist2, sign_y, sign_z, polars, 0, npolar
     )
 
 
 @njit(cache=True, inline="always")
-def obstacle_gap(geometry, y1, z1, y2, z2, gap0, dist1, dist2, sign_y, sign_z, polar, npolar):
-    """:func:`gap_and_normal` on the local (y, z) coordinates of both nodes."""
+def obstacle_gap(geometry, y1, z1, y2, z2, gap0, dist1, dist2, sign_y, sign_z, polars, s, npolar):
+    """:func:`gap_and_normal` on the local (y, z) coordinates of both nodes
+    (``polars[s]``: the facets of a DISCRET obstacle)."""
     if geometry == CERCLE:  # eq. 19-20: concave circle of radius JEU
         r = math.sqrt(y1 * y1 + z1 * z1)
         if r != 0.0:
@@ -107,7 +109,7 @@ def obstacle_gap(geometry, y1, z1, y2, z2, gap0, dist1, dist2, sign_y, sign_z, p
             return dist2 - dist1 - r, -dy / r, -dz / r
         return dist2 - dist1 - r, -1.0, 0.0
     # DISCRET (eq. 21): facet of the polar polygon whose angular sector holds the node
-    return discrete_gap(y1, z1, polar, npolar)
+    return discrete_gap(y1, z1, polars[s], npolar)
 
 
 @njit(cache=True)
@@ -165,40 +167,45 @@ def tangential_force(fn, rel_loc, rel_vel, cos_n, sin_n, mu_dyn, mu_stat, k_t, c
         k_t,
         c_t,
         unidir,
-        vint,
+        vint.reshape((1, vint.shape[0])),
+        0,
     )
 
 
 @njit(cache=True, inline="always")
-def friction_force(fn, rx, ry, rz, vx, vy, vz, cos_n, sin_n, mu_dyn, mu_stat, k_t, c_t, unidir, vs):
+def friction_force(
+    fn, rx, ry, rz, vx, vy, vz, cos_n, sin_n, mu_dyn, mu_stat, k_t, c_t, unidir, vint, s
+):
     """:func:`tangential_force` on the relative local position (rx, ry, rz)
-    and velocity (vx, vy, vz); ``vs`` is the shock's internal-variable row."""
+    and velocity (vx, vy, vz); ``vint[s]`` holds the shock's internal
+    variables (rows and indices rather than views: no reference counting
+    in the time loops)."""
     vt1 = -sin_n * vy + cos_n * vz
     vt2 = vx
     if unidir:
         vnorm = abs(vt1)
     else:
         vnorm = math.sqrt(vt1 * vt1 + vt2 * vt2)
-    same_direction = vt1 * vs[V_VT_OLD] + vt2 * vs[V_VT_OLD + 1] >= 0.0
-    sliding = same_direction and vs[V_STICK] == 0.0 and vnorm > SLIP_VELOCITY_FLOOR
+    same_direction = vt1 * vint[s, V_VT_OLD] + vt2 * vint[s, V_VT_OLD + 1] >= 0.0
+    sliding = same_direction and vint[s, V_STICK] == 0.0 and vnorm > SLIP_VELOCITY_FLOOR
     if sliding:
         ft1, ft2 = slip_force(fn, mu_dyn, vt1, vt2, vnorm, unidir)
-        start_stick_reference(vs, ft1, ft2, rx, ry, rz)
+        start_stick_reference(vint, s, ft1, ft2, rx, ry, rz)
     else:
-        dx1 = -(ry - vs[V_X_REF + 1]) * sin_n + (rz - vs[V_X_REF + 2]) * cos_n
-        dx2 = rx - vs[V_X_REF]
-        vs[V_STICK] = 1.0
-        ft1 = vs[V_FT_REF] - k_t * dx1 - c_t * vt1
-        ft2 = 0.0 if unidir else vs[V_FT_REF + 1] - k_t * dx2 - c_t * vt2
+        dx1 = -(ry - vint[s, V_X_REF + 1]) * sin_n + (rz - vint[s, V_X_REF + 2]) * cos_n
+        dx2 = rx - vint[s, V_X_REF]
+        vint[s, V_STICK] = 1.0
+        ft1 = vint[s, V_FT_REF] - k_t * dx1 - c_t * vt1
+        ft2 = 0.0 if unidir else vint[s, V_FT_REF + 1] - k_t * dx2 - c_t * vt2
         if math.sqrt(ft1 * ft1 + ft2 * ft2) > mu_stat * fn:
-            vs[V_STICK] = 0.0
+            vint[s, V_STICK] = 0.0
             if vnorm <= EPS:
                 ft1, ft2 = 0.0, 0.0
             else:
                 ft1, ft2 = slip_force(fn, mu_dyn, vt1, vt2, vnorm, unidir)
-            start_stick_reference(vs, ft1, ft2, rx, ry, rz)
-    vs[V_VT_OLD] = vt1
-    vs[V_VT_OLD + 1] = vt2
+            start_stick_reference(vint, s, ft1, ft2, rx, ry, rz)
+    vint[s, V_VT_OLD] = vt1
+    vint[s, V_VT_OLD + 1] = vt2
     return ft1, ft2, vt1, vt2
 
 
@@ -211,19 +218,19 @@ def slip_force(fn, mu_dyn, vt1, vt2, vnorm, unidir):
 
 
 @njit(cache=True, inline="always")
-def start_stick_reference(vs, ft1, ft2, rx, ry, rz):
-    vs[V_FT_REF] = ft1
-    vs[V_FT_REF + 1] = ft2
-    vs[V_X_REF] = rx
-    vs[V_X_REF + 1] = ry
-    vs[V_X_REF + 2] = rz
+def start_stick_reference(vint, s, ft1, ft2, rx, ry, rz):
+    vint[s, V_FT_REF] = ft1
+    vint[s, V_FT_REF + 1] = ft2
+    vint[s, V_X_REF] = rx
+    vint[s, V_X_REF + 1] = ry
+    vint[s, V_X_REF + 2] = rz
 
 
 @njit(cache=True, inline="always")
-def contact_law(p, unidir, vs, gap, cos_n, sin_n, rx, ry, rz, vx, vy, vz):
+def contact_law(params, unidir, vint, s, gap, cos_n, sin_n, rx, ry, rz, vx, vy, vz):
     """The DIS_CHOC law of one shock from its relative local kinematics.
 
-    ``p``: the shock's parameter row; ``vs``: its internal-variable row,
+    ``params[s]``: the shock's parameters; ``vint[s]``: its internal variables,
     whose force, velocity and friction entries are updated (the local
     coordinates are the caller's). Returns (diverged, in_contact, fx, fy, fz)
     with (fx, fy, fz) the local force on node 1 (node 2 takes the opposite).
@@ -233,10 +240,10 @@ def contact_law(p, unidir, vs, gap, cos_n, sin_n, rx, ry, rz, vx, vy, vz):
     in_contact = gap <= 0.0
     if in_contact:
         vn = vy * cos_n + vz * sin_n
-        fn = normal_force(gap, vn, p[P_KN], p[P_CN])
+        fn = normal_force(gap, vn, params[s, P_KN], params[s, P_CN])
         fy = fn * cos_n
         fz = fn * sin_n
-        if abs(p[P_MU_STAT]) > EPS or abs(p[P_MU_DYN]) > EPS:
+        if abs(params[s, P_MU_STAT]) > EPS or abs(params[s, P_MU_DYN]) > EPS:
             if max(vx, vy, vz) > VELOCITY_DIVERGENCE:
                 return True, in_contact, fx, fy, fz
             ft1, ft2, vt1, vt2 = friction_force(
@@ -249,31 +256,32 @@ def contact_law(p, unidir, vs, gap, cos_n, sin_n, rx, ry, rz, vx, vy, vz):
                 vz,
                 cos_n,
                 sin_n,
-                p[P_MU_DYN],
-                p[P_MU_STAT],
-                p[P_KT],
-                p[P_CT],
+                params[s, P_MU_DYN],
+                params[s, P_MU_STAT],
+                params[s, P_KT],
+                params[s, P_CT],
                 unidir,
-                vs,
+                vint,
+                s,
             )
             fx += ft2
             fy += -ft1 * sin_n
             fz += ft1 * cos_n
     else:
         # out of contact: friction memory is reset, a new stick phase starts here
-        vs[V_STICK] = 0.0
+        vint[s, V_STICK] = 0.0
         for i in range(2):
-            vs[V_FT_REF + i] = 0.0
-            vs[V_VT_OLD + i] = 0.0
-        vs[V_X_REF] = rx
-        vs[V_X_REF + 1] = ry
-        vs[V_X_REF + 2] = rz
-    vs[V_FN] = fn
-    vs[V_FT1] = ft1
-    vs[V_FT2] = ft2
-    vs[V_VN] = vn
-    vs[V_VT1] = vt1
-    vs[V_VT2] = vt2
+            vint[s, V_FT_REF + i] = 0.0
+            vint[s, V_VT_OLD + i] = 0.0
+        vint[s, V_X_REF] = rx
+        vint[s, V_X_REF + 1] = ry
+        vint[s, V_X_REF + 2] = rz
+    vint[s, V_FN] = fn
+    vint[s, V_FT1] = ft1
+    vint[s, V_FT2] = ft2
+    vint[s, V_VN] = vn
+    vint[s, V_VT1] = vt1
+    vint[s, V_VT2] = vt2
     return False, in_contact, fx, fy, fz
 
 
@@ -370,7 +378,8 @@ def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
             p[P_DIST2],
             p[P_SIGN_Y],
             p[P_SIGN_Z],
-            polars[s],
+            polars,
+            s,
             flags[s, F_NPOLAR],
         )
         if two_nodes:  # relative quantities node 1 - node 2
@@ -381,9 +390,10 @@ def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
         else:
             rel_loc, rel_vel = loc1, vel1
         diverged, in_contact, fx, fy, fz = contact_law(
-            p,
+            params,
             flags[s, F_UNIDIR] == 1,
-            vs,
+            vint,
+            s,
             gap,
             cos_n,
             sin_n,
@@ -442,28 +452,27 @@ def local_shock_forces(q, v, flags, params, shapes, rest, polars, drive, vint, o
                 u2 += shapes[s, 1, 0, m] * vm
                 v2 += shapes[s, 1, 1, m] * vm
                 w2 += shapes[s, 1, 2, m] * vm
-        vs = vint[s]
-        vs[V_LOC1], vs[V_LOC1 + 1], vs[V_LOC1 + 2] = x1, y1, z1
-        vs[V_LOC2], vs[V_LOC2 + 1], vs[V_LOC2 + 2] = x2, y2, z2
-        p = params[s]
+        vint[s, V_LOC1], vint[s, V_LOC1 + 1], vint[s, V_LOC1 + 2] = x1, y1, z1
+        vint[s, V_LOC2], vint[s, V_LOC2 + 1], vint[s, V_LOC2 + 2] = x2, y2, z2
         gap, cos_n, sin_n = obstacle_gap(
             flags[s, F_GEOMETRY],
             y1,
             z1,
             y2,
             z2,
-            p[P_GAP],
-            p[P_DIST1],
-            p[P_DIST2],
-            p[P_SIGN_Y],
-            p[P_SIGN_Z],
-            polars[s],
+            params[s, P_GAP],
+            params[s, P_DIST1],
+            params[s, P_DIST2],
+            params[s, P_SIGN_Y],
+            params[s, P_SIGN_Z],
+            polars,
+            s,
             flags[s, F_NPOLAR],
         )
         if two_nodes:  # relative quantities node 1 - node 2
             x1, y1, z1, u1, v1, w1 = x1 - x2, y1 - y2, z1 - z2, u1 - u2, v1 - v2, w1 - w2
         diverged, in_contact, fx, fy, fz = contact_law(
-            p, flags[s, F_UNIDIR] == 1, vs, gap, cos_n, sin_n, x1, y1, z1, u1, v1, w1
+            params, flags[s, F_UNIDIR] == 1, vint, s, gap, cos_n, sin_n, x1, y1, z1, u1, v1, w1
         )
         if diverged:
             return s

@@ -24,12 +24,15 @@ from asterlite.dynamics.kernel import C_STEP, C_TIME
 def multiplier(xs, ys, count, left, right, t):
     """Piecewise-linear multiplier at t (extension: 0 constant, 1 linear)."""
     cursor = np.zeros(1, dtype=np.int64)
-    return multiplier_at(xs, ys, count, left, right, t, cursor, 0)
+    table_x = xs.reshape((1, xs.shape[0]))
+    table_y = ys.reshape((1, ys.shape[0]))
+    return multiplier_at(table_x, table_y, 0, count, left, right, t, cursor)
 
 
 @njit(cache=True, inline="always")
-def multiplier_at(xs, ys, count, left, right, t, cursors, row):
-    """Piecewise-linear multiplier at t (extension: 0 constant, 1 linear).
+def multiplier_at(abscissas, ordinates, row, count, left, right, t, cursors):
+    """Piecewise-linear multiplier of table row ``row`` at t (extension: 0
+    constant, 1 linear).
 
     ``cursors[row]`` keeps the interval found last time and the search
     starts from it: O(1) per call for increasing (or slowly moving) times.
@@ -37,45 +40,46 @@ def multiplier_at(xs, ys, count, left, right, t, cursors, row):
     value does not depend on where the search starts.
     """
     if count == 1:
-        return ys[0]
+        return ordinates[row, 0]
     last = count - 1
-    if t <= xs[0]:
-        if left == 1 and t < xs[0]:
-            return ys[0] + (t - xs[0]) * (ys[1] - ys[0]) / (xs[1] - xs[0])
-        return ys[0]
-    if t >= xs[last]:
-        if right == 1 and t > xs[last]:
-            slope = (ys[last] - ys[last - 1]) / (xs[last] - xs[last - 1])
-            return ys[last] + (t - xs[last]) * slope
-        return ys[last]
+    if t <= abscissas[row, 0]:
+        if left == 1 and t < abscissas[row, 0]:
+            return ordinates[row, 0] + (t - abscissas[row, 0]) * (ordinates[row, 1] - ordinates[row, 0]) / (abscissas[row, 1] - abscissas[row, 0])
+        return ordinates[row, 0]
+    if t >= abscissas[row, last]:
+        if right == 1 and t > abscissas[row, last]:
+            slope = (ordinates[row, last] - ordinates[row, last - 1]) / (abscissas[row, last] - abscissas[row, last - 1])
+            return ordinates[row, last] + (t - abscissas[row, last]) * slope
+        return ordinates[row, last]
     lo = cursors[row]
     if lo < 0 or lo >= last:
         lo = 0
-    if xs[lo] <= t:
-        if xs[lo + 1] <= t:  # move forward: a few steps, then bisection
+    if abscissas[row, lo] <= t:
+        if abscissas[row, lo + 1] <= t:  # move forward: a few steps, then bisection
             lo += 1
             steps = 0
-            while xs[lo + 1] <= t and steps < 8:
+            while abscissas[row, lo + 1] <= t and steps < 8:
                 lo += 1
                 steps += 1
-            if xs[lo + 1] <= t:
-                lo = bisect_interval(xs, lo, last, t)
+            if abscissas[row, lo + 1] <= t:
+                lo = bisect_interval(abscissas, row, lo, last, t)
     else:
-        lo = bisect_interval(xs, 0, lo, t)
+        lo = bisect_interval(abscissas, row, 0, lo, t)
     cursors[row] = lo
     hi = lo + 1
-    width = xs[hi] - xs[lo]
+    width = abscissas[row, hi] - abscissas[row, lo]
     if width == 0.0:
-        return ys[hi]
-    return ys[lo] + (t - xs[lo]) * (ys[hi] - ys[lo]) / width
+        return ordinates[row, hi]
+    return ordinates[row, lo] + (t - abscissas[row, lo]) * (ordinates[row, hi] - ordinates[row, lo]) / width
 
 
 @njit(cache=True, inline="always")
-def bisect_interval(xs, lo, hi, t):
-    """The ``lo`` with xs[lo] <= t < xs[lo + 1], knowing xs[lo] <= t < xs[hi]."""
+def bisect_interval(abscissas, row, lo, hi, t):
+    """The ``lo`` with x[lo] <= t < x[lo + 1] (x = ``abscissas[row]``),
+    knowing x[lo] <= t < x[hi]."""
     while hi - lo > 1:
         mid = (lo + hi) // 2
-        if xs[mid] <= t:
+        if abscissas[row, mid] <= t:
             lo = mid
         else:
             hi = mid
@@ -114,7 +118,7 @@ def add_external_force(t, vectors, abscissas, ordinates, layout, cursors, out):
     """out += Σ_e f_e(t) vector_e."""
     for e in range(vectors.shape[0]):
         c = multiplier_at(
-            abscissas[e], ordinates[e], layout[e, 0], layout[e, 1], layout[e, 2], t, cursors, e
+            abscissas, ordinates, e, layout[e, 0], layout[e, 1], layout[e, 2], t, cursors
         )
         for m in range(out.shape[0]):
             out[m] += c * vectors[e, m]
@@ -144,9 +148,9 @@ def support_motion(t, exc, params):
 def support_values(t, k, abscissas, ordinates, layout, cursors):
     """(displacement, velocity) of support k at t (rows 2k, 2k + 1)."""
     r = 2 * k
-    d = multiplier_at(abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t, cursors, r)
+    d = multiplier_at(abscissas, ordinates, r, layout[r, 0], layout[r, 1], layout[r, 2], t, cursors)
     r += 1
-    w = multiplier_at(abscissas[r], ordinates[r], layout[r, 0], layout[r, 1], layout[r, 2], t, cursors, r)
+    w = multiplier_at(abscissas, ordinates, r, layout[r, 0], layout[r, 1], layout[r, 2], t, cursors)
     return d, w
 
 
@@ -169,13 +173,13 @@ def local_support_motion(t, rots, shapes, abscissas, ordinates, layout, cursors,
                 wx += shapes[s, node, 0, k] * w
                 wy += shapes[s, node, 1, k] * w
                 wz += shapes[s, node, 2, k] * w
-            r = rots[s]
-            drive[s, node, 0] = r[0, 0] * dx + r[0, 1] * dy + r[0, 2] * dz
-            drive[s, node, 1] = r[1, 0] * dx + r[1, 1] * dy + r[1, 2] * dz
-            drive[s, node, 2] = r[2, 0] * dx + r[2, 1] * dy + r[2, 2] * dz
-            drive[s, node, 3] = r[0, 0] * wx + r[0, 1] * wy + r[0, 2] * wz
-            drive[s, node, 4] = r[1, 0] * wx + r[1, 1] * wy + r[1, 2] * wz
-            drive[s, node, 5] = r[2, 0] * wx + r[2, 1] * wy + r[2, 2] * wz
+            for i in range(3):
+                drive[s, node, i] = (
+                    rots[s, i, 0] * dx + rots[s, i, 1] * dy + rots[s, i, 2] * dz
+                )
+                drive[s, node, 3 + i] = (
+                    rots[s, i, 0] * wx + rots[s, i, 1] * wy + rots[s, i, 2] * wz
+                )
 
 
 @njit(cache=True)

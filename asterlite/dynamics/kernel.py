@@ -61,10 +61,13 @@ N_COUNTERS = 8
 def archive(n, t, step, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, out_vint):
     out_t[n] = t
     out_order[n] = step
-    out_q[n] = q
-    out_v[n] = v
-    out_a[n] = a
-    out_vint[n] = vint
+    for i in range(q.shape[0]):
+        out_q[n, i] = q[i]
+        out_v[n, i] = v[i]
+        out_a[n, i] = a[i]
+    for s in range(vint.shape[0]):
+        for j in range(vint.shape[1]):
+            out_vint[n, s, j] = vint[s, j]
 
 
 @njit(cache=True, inline="always")
@@ -113,8 +116,50 @@ def complete_step(clock, counters, state, instants, pas_arch, eps, archive_buffe
     archive when due (dtmcalc's rules)."""
     dt_used, dt_next, rejected = step_result
     out_t, out_order, out_q, out_v, out_a, out_vint = archive_buffers
-    q, v, a = state[0], state[1], state[2]
-    vint = state[4]
+    advance_clock(
+        clock,
+        counters,
+        state[0],
+        state[1],
+        state[2],
+        state[4],
+        instants,
+        pas_arch,
+        eps,
+        out_t,
+        out_order,
+        out_q,
+        out_v,
+        out_a,
+        out_vint,
+        dt_used,
+        dt_next,
+        rejected,
+    )
+
+
+@njit(cache=True, inline="always")
+def advance_clock(
+    clock,
+    counters,
+    q,
+    v,
+    a,
+    vint,
+    instants,
+    pas_arch,
+    eps,
+    out_t,
+    out_order,
+    out_q,
+    out_v,
+    out_a,
+    out_vint,
+    dt_used,
+    dt_next,
+    rejected,
+):
+    """:func:`complete_step` on plain arrays (the specialised loops)."""
     i = counters[K_STEP] + 1
     adaptive = counters[K_ADAPTIVE] == 1
     dt_stored = clock[C_STEP]

@@ -126,10 +126,8 @@ def specialised_loop(
     (n_shocks, 2, 6) scratch for the support motion in the local frames.
     """
     n = q.shape[0]
-    state = (q, v, a, f, vint)
-    archive = (out_t, out_order, out_q, out_v, out_a, out_vint)
     while K.unfinished(clock, counters, eps):
-        if K.archive_full(counters, archive):
+        if counters[K.K_ARCHIVED] >= out_t.shape[0]:
             return K.STATUS_FULL
         t_ahead = clock[K.C_TIME] + 2.0 * clock[K.C_STEP]
         if not (
@@ -169,7 +167,10 @@ def specialised_loop(
             finite = full_acceleration(a, f, q, v, mass_inverse, stiffness, damping, residual)
         if not finite:
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, dt)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, (dt, dt, 0))
+        K.advance_clock(
+            clock, counters, q, v, a, vint, instants, pas_arch, eps,
+            out_t, out_order, out_q, out_v, out_a, out_vint, dt, dt, 0,
+        )  # fmt: skip
     return K.STATUS_DONE
 
 

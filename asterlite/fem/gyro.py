@@ -14,8 +14,19 @@ spin acceleration (option ``RIGI_GYRO``, one off-diagonal block).
 Both come from the spin part of the kinetic energy of the cross sections
 (polar inertia ``rho Ip``, ``Ip = IY + IZ``) or of the disk (``Ixx``):
 ``T_gyro = Ω q'^T S q`` with ``S = rho Ip ∫ N_ry^T N_rz dx`` built on the
-section-rotation shape functions, so that ``G = S - S^T`` and ``Kg = S``.
-For a rigid disk ``S`` has the single term ``S[DRY, DRZ] = Ixx``.
+section-rotation shape functions, and ``G = S - S^T``. For a rigid disk
+``S`` has the single term ``S[DRY, DRZ] = Ixx``, so ``G[DRY, DRZ] = Ixx``:
+``Ixx θy'' + Ω Ixx θz' = My`` (checked against the unbalance responses of
+code_aster's sdll126b and sdll144a).
+
+``Kg`` is ``S^T`` as code_aster assembles RIGI_GYRO (its element routines
+write ``S`` into a row-major non-symmetric storage); a Lagrangian of the
+form above would give ``S`` instead. The difference is a term
+``Ω' (S - S^T)`` of opposite sign; ``S^T`` reproduces code_aster's
+transient results (sdll144a, to 2e-5). code_aster's beam routine also
+misplaces some RIGI_GYRO terms (an indexing slip that moves the rows of
+DRZ1, DY2, DRZ2 to DRX1, DRY1, DX2); that slip is not reproduced here (its
+effect is negligible beside the disks' in the corpus decks).
 
 code_aster conventions followed here:
 
@@ -77,7 +88,7 @@ def rotation_shapes(xi, length, phi) -> np.ndarray:
 
 def beam_gyro_coupling_local(length, density, area, iy, iz, poisson, ay=0.0, az=0.0) -> np.ndarray:
     """(n, 12, 12) ``S = rho Ip ∫ N_ry^T N_rz dx`` of straight beams in their
-    local frame (see the module docstring); ``G = S - S^T``, ``Kg = S``."""
+    local frame (see the module docstring); ``G = S - S^T``, ``Kg = S^T``."""
     L, rho, A, Iy, Iz, nu, ay, az = np.broadcast_arrays(
         *(np.atleast_1d(np.asarray(v, dtype=float)) for v in (length, density, area, iy, iz, poisson, ay, az))
     )
@@ -101,8 +112,9 @@ def beam_gyro_damping_local(*args, **kwargs) -> np.ndarray:
 
 
 def beam_gyro_stiffness_local(*args, **kwargs) -> np.ndarray:
-    """(n, 12, 12) gyroscopic stiffness per unit spin acceleration (RIGI_GYRO)."""
-    return beam_gyro_coupling_local(*args, **kwargs)
+    """(n, 12, 12) gyroscopic stiffness per unit spin acceleration (RIGI_GYRO),
+    ``S^T`` as code_aster assembles it."""
+    return np.swapaxes(beam_gyro_coupling_local(*args, **kwargs), 1, 2)
 
 
 def disk_gyro_coupling_local(polar_inertia) -> np.ndarray:
@@ -114,9 +126,11 @@ def disk_gyro_coupling_local(polar_inertia) -> np.ndarray:
 
 
 def disk_gyro_damping_local(polar_inertia) -> np.ndarray:
+    """``S - S^T``: ``G[DRY, DRZ] = Ixx = -G[DRZ, DRY]``."""
     s = disk_gyro_coupling_local(polar_inertia)
     return s - np.swapaxes(s, 1, 2)
 
 
 def disk_gyro_stiffness_local(polar_inertia) -> np.ndarray:
-    return disk_gyro_coupling_local(polar_inertia)
+    """``S^T``: the single term ``Kg[DRZ, DRY] = Ixx`` (code_aster's RIGI_GYRO)."""
+    return np.swapaxes(disk_gyro_coupling_local(polar_inertia), 1, 2)

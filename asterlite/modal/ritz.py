@@ -82,3 +82,16 @@ def orthonormalise(vectors: np.ndarray, matrix=None, drop_zero: bool = True):
     q[:, zeroed] = 0.0
     kept = np.flatnonzero(~zeroed) if drop_zero else np.arange(q.shape[1])
     return q[:, kept], kept
+
+
+def stacked_fields(families, numbering):
+    """One ``MultElasResult`` holding the vectors of several static families
+    (mode_meca or mult_elas) on ``numbering``, named CHAMP_1, CHAMP_2... (as
+    DYNA_LINE gathers its interface modes before DEFI_BASE_MODALE)."""
+    from asterlite.concepts.modes import MultElasResult
+    from asterlite.modal.renumber import transfer
+
+    blocks = [transfer(np.asarray(f.shapes, dtype=float), f.numbering, numbering) for f in families]
+    fields = np.hstack(blocks) if blocks else np.zeros((numbering.n_dofs, 0))
+    names = [f"CHAMP_{k + 1}" for k in range(fields.shape[1])]
+    return MultElasResult(numbering=numbering, fields=fields, case_names=names)

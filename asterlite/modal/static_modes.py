@@ -117,3 +117,23 @@ def static_solve(stiffness, numbering: DofNumbering, loads: np.ndarray, relation
     reduced_rhs = np.asarray(elimination.T.T @ (loads - stiffness @ u0))
     q = lu.solve(reduced_rhs.reshape(k_red.shape[0], -1))
     return u0 + elimination.T @ q
+
+
+def active_components(stiffness, numbering: DofNumbering, nodes, candidates) -> list[str]:
+    """Components among ``candidates`` that move under a unit force applied to
+    every node of ``nodes`` at once (code_aster's test for the attachment modes
+    of DYNA_LINE's nonlinearities): absent components and components blocked on
+    all those nodes are inactive."""
+    nodes = np.asarray(nodes, dtype=int)
+    active = []
+    for component in candidates:
+        rows = numbering.dof_indices(nodes, component)
+        rows = rows[rows >= 0]
+        if rows.size == 0:
+            continue
+        load = np.zeros((numbering.n_dofs, 1))
+        load[rows, 0] = 1.0
+        response = response_modes(stiffness, numbering, load)
+        if np.max(np.abs(response)) > np.finfo(float).eps:
+            active.append(component)
+    return active

@@ -47,11 +47,12 @@ class Expectation:
     calc: tuple = ()
     refe: tuple = ()
     precision: float = DEFAULT_PRECISION
-    criterion: str = "RELATIF"
+    criterion: str = "RELATIF"  # of the VALE_CALC check
     reference: str = "NON_REGRESSION"
     ordre_grandeur: float | None = None
     tole_machine: float | None = None
     absolute_value: bool = False
+    refe_criterion: str = "RELATIF"  # of the VALE_REFE check
 
 
 def _tuple(value) -> tuple:
@@ -70,15 +71,19 @@ def expectation_from(kw) -> Expectation:
             kind = candidate
             break
     precision = kw.get("PRECISION")
+    # CRITERE / TOLE_MACHINE may hold two values: the VALE_CALC one, then the VALE_REFE one
+    criteria = tuple(str(c) for c in _tuple(kw.get("CRITERE")) if c) or ("RELATIF",)
+    tolerances = tuple(t for t in _tuple(kw.get("TOLE_MACHINE")) if t is not None)
     return Expectation(
         kind=kind,
         calc=calc,
         refe=refe,
         precision=DEFAULT_PRECISION if precision is None else float(precision),
-        criterion=kw.get("CRITERE") or "RELATIF",
+        criterion=criteria[0],
+        refe_criterion=criteria[-1],
         reference=kw.get("REFERENCE") or ("NON_REGRESSION" if not refe else "NON_DEFINI"),
         ordre_grandeur=kw.get("ORDRE_GRANDEUR"),
-        tole_machine=kw.get("TOLE_MACHINE"),
+        tole_machine=tolerances[0] if tolerances else None,
         absolute_value=kw.get("VALE_ABS") == "OUI",
     )
 
@@ -106,7 +111,7 @@ def compare_reference(value, exp: Expectation) -> Comparison | None:
     if exp.kind == "K":
         best = next((r for r in exp.refe if str(r).strip() == str(value).strip()), exp.refe[0])
         return Comparison(best, 0.0 if best == value else 1.0, 0.0, str(best).strip() == value)
-    errors = [_numeric_error(value, r, exp.criterion, None) for r in exp.refe]
+    errors = [_numeric_error(value, r, exp.refe_criterion, None) for r in exp.refe]
     i = int(np.argmin(errors))
     return Comparison(exp.refe[i], errors[i], exp.precision, errors[i] <= exp.precision)
 
@@ -166,7 +171,7 @@ def make_record(command: str, label: str, value, exp: Expectation, location=None
         reference=exp.reference if ref is not None else "NON_REGRESSION",
         error=float(shown.error),
         tolerance=float(shown.tolerance),
-        criterion=exp.criterion,
+        criterion=exp.refe_criterion if ref is not None else exp.criterion,
         ok=bool(ok),
         strict=bool(strict),
         location=location,

@@ -34,6 +34,11 @@ class RunReport:
     overrides_used: list[str] = field(default_factory=list)  # those the deck assigned
     unknown_overrides: list[str] = field(default_factory=list)  # those it never assigned
     table_values: dict = field(default_factory=dict)  # "TABLE.PARA" of one-row tables
+    # one dict per tran_gene result made by the run (scheme, step, steps, seconds...)
+    transients: list[dict] = field(default_factory=list)
+    # one dict per shock of those results: max FN, wear power (mean FN·|VT|)...
+    shocks: list[dict] = field(default_factory=list)
+    keyword_edits: list[dict] = field(default_factory=list)  # keyword overrides applied
 
     @property
     def checks_total(self) -> int:
@@ -66,6 +71,8 @@ class RunReport:
             "message": self.message,
             "overrides": {k: _plain(v) for k, v in self.overrides.items()},
             "overrides_used": self.overrides_used,
+            "transients": self.transients,
+            "shocks": self.shocks,
             "tests": [
                 {
                     "command": t.command,
@@ -113,12 +120,16 @@ def run_deck(
     check_only: bool = False,
     echo: bool = False,
     overrides: dict | None = None,
+    keyword_overrides: list | None = None,
+    save_results: bool = False,
 ) -> RunReport:
     """Run or check the deck at ``deck`` (an .export or a .comm).
 
     ``overrides`` maps deck-level variable names to the values bound instead
     of the deck's own (see :class:`asterlite.lang.Evaluator`); a name the deck
-    never assigns makes the run an ERROR naming it.
+    never assigns makes the run an ERROR naming it. ``keyword_overrides``
+    (:class:`asterlite.runtime.session.KeywordOverride`) replace keyword
+    values in command calls before validation (e.g. DYNA_VIBRA's scheme).
     """
     from asterlite.runtime.session import Session, UnknownOverrideError
 
@@ -141,6 +152,7 @@ def run_deck(
             check_only=check_only,
             echo=echo,
             overrides=dict(overrides or {}),
+            keyword_overrides=list(keyword_overrides or []),
         )
         session.run_all()
     except UnknownOverrideError as error:
@@ -167,9 +179,11 @@ def run_deck(
         report.timings = list(session.timings)
         report.overrides_used = sorted(session.overrides_used)
         report.table_values = one_row_table_values(session.namespace)
+        report.transients, report.shocks = transient_summaries(session.produced)
+        report.keyword_edits = list(session.keyword_edits)
     report.seconds = time.perf_counter() - start
     if output_dir is not None and not check_only:
-        _finish_output(output_dir, staging, report, session)
+        _finish_output(output_dir, staging, report, session, save_results)
     return report
 
 
@@ -186,8 +200,66 @@ def one_row_table_values(namespace: dict) -> dict:
     return values
 
 
-def _finish_output(output_dir: Path, staging: Path, report: RunReport, session) -> None:
+def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
+    """Per tran_gene result made by the run: its integration figures; and per
+    shock of those results: peak normal force and wear power."""
+    from asterlite.concepts.transient import TranGene
+
+    transients, shocks = [], []
+    for call, (_, name, concept) in enumerate(produced, start=1):
+        if not isinstance(concept, TranGene):
+            continue
+        info = concept.info
+        transients.append(
+            {
+                "result": name,
+                "call": call,
+                "scheme": concept.scheme,
+                "step": float(concept.step),
+                "t_start": float(concept.times[0]) if len(concept.times) else None,
+                "t_end": float(concept.times[-1]) if len(concept.times) else None,
+                "steps": int(info.get("steps", 0)),
+                "rejected_steps": int(info.get("rejected_steps", 0)),
+                "min_step": _plain(info.get("min_step")),
+                "max_step": _plain(info.get("max_step")),
+                "integration_seconds": float(info.get("integration_seconds", 0.0)),
+            }
+        )
+        shocks += [shock_summary(name, concept.times, shock) for shock in concept.shocks]
+    return transients, shocks
+
+
+def shock_summary(result: str | None, times, shock) -> dict:
+    """Peak and mean normal force, contact fraction and wear power
+    (code_aster's PUIS_USURE: time mean of FN·|VT|) of one shock history."""
+    import numpy as np
+
+    from asterlite.post.wear import archard_power
+
+    fields = shock.fields
+    fn = np.asarray(fields.get("FN", np.zeros(len(times))), dtype=float)
+    zeros = np.zeros_like(fn)
+    vt1, vt2 = fields.get("VT1", zeros), fields.get("VT2", zeros)
+    return {
+        "result": result,
+        "shock": shock.name,
+        "max_FN": float(np.abs(fn).max()) if fn.size else 0.0,
+        "mean_FN": float(np.abs(fn).mean()) if fn.size else 0.0,
+        "contact_fraction": float(np.mean(fn != 0.0)) if fn.size else 0.0,
+        "wear_power": archard_power(times, fn, vt1, vt2),
+    }
+
+
+def _finish_output(
+    output_dir: Path, staging: Path, report: RunReport, session, save_results: bool = False
+) -> None:
     complete = report.status in ("PASS", "NOOK")
+    if complete and save_results:
+        # every tran_gene of the deck, in the store documented in docs/results.md
+        from asterlite.io.result_store import save_session_results
+
+        saved = save_session_results(staging / "results.h5", session.namespace)
+        session.log(f"results.h5: {', '.join(saved) if saved else 'no tran_gene result to save'}")
     if complete:
         for item in staging.iterdir():
             target = output_dir / item.name

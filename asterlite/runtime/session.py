@@ -85,6 +85,12 @@ class Session:
     # deck-level variables to replace by value (asterlite sweep --set), and those replaced
     overrides: dict[str, Any] = field(default_factory=dict)
     overrides_used: set[str] = field(default_factory=set)
+    # keyword values replaced in command calls before validation (asterlite converge)
+    keyword_overrides: list[KeywordOverride] = field(default_factory=list)
+    call_counts: dict[str, int] = field(default_factory=dict)  # calls per command so far
+    keyword_edits: list[dict] = field(default_factory=list)  # what the overrides replaced
+    # (command, result name, concept) of every command that made a concept
+    produced: list[tuple[str, str | None, Any]] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
@@ -254,6 +260,9 @@ class CommandProxy(DeckCallable):
     def _call(self, catalogue, kwargs: dict, reuse, site: CallSite):
         """Validate a (modern) call against ``catalogue`` and dispatch it."""
         session = self.session
+        count = session.call_counts[self.name] = session.call_counts.get(self.name, 0) + 1
+        if session.keyword_overrides:
+            kwargs = override_keywords(self.name, count, catalogue, kwargs, session)
         extra = {}
         if catalogue.extra_keywords:
             known = set(catalogue.keyword_names())
@@ -316,6 +325,8 @@ class CommandProxy(DeckCallable):
         seconds = time.perf_counter() - start
         session.timings.append(CommandTiming(self.name, site.location, site.assigned_name, seconds))
         session.log(f"  done in {seconds:.3f} s")
+        if isinstance(concept, Concept):
+            session.produced.append((self.name, site.assigned_name, concept))
         # a reused concept keeps its name; a new one takes the deck's name
         if isinstance(concept, Concept) and site.assigned_name:
             if reuse is None or concept.name is None:
@@ -367,6 +378,150 @@ def _blur_empty_sequences(value):
     return value
 
 
+@dataclass(frozen=True)
+class KeywordOverride:
+    """Keyword values put into calls of ``command`` before validation.
+
+    ``keywords`` maps a path to its new value: ``"NAME"`` at the top level,
+    ``"FACT/NAME"`` in every occurrence of a factor keyword (created when the
+    call has none), ``"FACT[2]/NAME"`` in one occurrence; ``None`` removes
+    the keyword. ``call``: only the n-th call (1-based), None for every one.
+    Keywords a replaced value closes (e.g. BETA/GAMMA of NEWMARK once
+    SCHEMA is DEVOGE) are dropped so that the call still validates.
+    """
+
+    command: str
+    keywords: dict[str, Any]
+    call: int | None = None
+
+    def applies(self, command: str, count: int) -> bool:
+        return command == self.command and self.call in (None, count)
+
+
+def override_keywords(name: str, count: int, catalogue, kwargs: dict, session: Session) -> dict:
+    """``kwargs`` with the session's keyword overrides for this call applied."""
+    for override in session.keyword_overrides:
+        if override.applies(name, count):
+            kwargs = apply_keyword_values(catalogue, kwargs, override.keywords, session.log)
+            session.keyword_edits.append({"command": name, "call": count, **override.keywords})
+    return kwargs
+
+
+def apply_keyword_values(catalogue, kwargs: dict, values: dict, log=None) -> dict:
+    """A copy of a call's raw keywords with ``values`` (path -> value) put in;
+    the levels edited lose the catalogue keywords their new values close."""
+    from asterlite.catalog.model import FACT
+
+    kwargs = dict(kwargs)
+    edited: dict[str, set] = {}  # factor -> occurrence numbers edited ("" = top level)
+    for path, value in values.items():
+        factor, _, simple = path.rpartition("/")
+        if not factor:
+            _set_or_drop(kwargs, simple, value)
+            edited.setdefault("", set())
+            continue
+        factor, index = _factor_index(factor)
+        occurrences = _copied_occurrences(kwargs.get(factor)) or [FactorDict()]
+        for number, occurrence in enumerate(occurrences, start=1):
+            if index in (None, number):
+                _set_or_drop(occurrence, simple, value)
+                edited.setdefault(factor, set()).add(number)
+        kwargs[factor] = tuple(occurrences) if len(occurrences) > 1 else occurrences[0]
+    dropped = _drop_closed(catalogue, kwargs, {}) if "" in edited else []
+    entries = _all_entries(catalogue)
+    for factor, numbers in edited.items():
+        if not isinstance(entries.get(factor), FACT):
+            continue
+        occurrences = _copied_occurrences(kwargs[factor])
+        for number in numbers:
+            closed = _drop_closed(entries[factor], occurrences[number - 1], kwargs)
+            dropped += [f"{factor}/{name}" for name in closed]
+        kwargs[factor] = tuple(occurrences) if len(occurrences) > 1 else occurrences[0]
+    if dropped and log is not None:
+        log(f"keyword override: dropped {', '.join(dropped)} (not allowed with the new values)")
+    return kwargs
+
+
+def _set_or_drop(level: dict, name: str, value) -> None:
+    if value is None:
+        level.pop(name, None)
+    else:
+        level[name] = value
+
+
+def _factor_index(text: str) -> tuple[str, int | None]:
+    """``"FACT[2]"`` -> ("FACT", 2); ``"FACT"`` -> ("FACT", None)."""
+    if text.endswith("]") and "[" in text:
+        name, _, number = text[:-1].partition("[")
+        return name, int(number)
+    return text, None
+
+
+def _copied_occurrences(value) -> list[FactorDict]:
+    if value is None:
+        return []
+    items = value if isinstance(value, (list, tuple)) else [value]
+    return [
+        FactorDict(
+            dict(item),
+            location=getattr(item, "location", None),
+            keyword_locations=getattr(item, "keyword_locations", None),
+        )
+        if isinstance(item, dict)
+        else item
+        for item in items
+    ]
+
+
+def _all_entries(level) -> dict:
+    """Every SIMP and FACT of a level, blocks included."""
+    from asterlite.catalog.model import BLOC
+
+    found = {}
+    for name, entry in level.entries.items():
+        if isinstance(entry, BLOC):
+            found.update({n: e for n, e in _all_entries(entry).items() if n not in found})
+        else:
+            found.setdefault(name, entry)
+    return found
+
+
+def _active_names(level, given: dict, context: dict) -> set[str]:
+    """Keywords allowed at ``level`` with the given values (blocks opened as
+    the validator opens them: on given values and defaults)."""
+    from collections import ChainMap
+
+    from asterlite.catalog.model import BLOC, SIMP
+
+    active, values, pending = set(), dict(given), [level]
+    opened = True
+    while opened:
+        opened = False
+        for block in list(pending):
+            if block is not level and not block.condition(ChainMap(values, context)):
+                continue
+            pending.remove(block)
+            opened = True
+            for name, entry in block.entries.items():
+                if isinstance(entry, BLOC):
+                    pending.append(entry)
+                    continue
+                active.add(name)
+                if isinstance(entry, SIMP) and name not in values and entry.defaut is not None:
+                    values[name] = entry.defaut
+    return active
+
+
+def _drop_closed(level, given: dict, context: dict) -> list[str]:
+    """Remove from ``given`` (in place) the catalogue keywords its values close."""
+    known = _all_entries(level)
+    active = _active_names(level, given, context)
+    closed = [n for n in given if n in known and n not in active]
+    for name in closed:
+        del given[name]
+    return closed
+
+
 def _co_outputs(value) -> list[CO]:
     """Every CO(...) output name inside a keyword tree."""
     if isinstance(value, CO):
@@ -378,4 +533,11 @@ def _co_outputs(value) -> list[CO]:
     return []
 
 
-__all__ = ["Session", "CommandProxy", "DeckFinished", "AnyPlaceholder", "UnknownOverrideError"]
+__all__ = [
+    "Session",
+    "CommandProxy",
+    "DeckFinished",
+    "AnyPlaceholder",
+    "UnknownOverrideError",
+    "KeywordOverride",
+]
