@@ -1,4 +1,4 @@
-"""Command-line interface: ``asterlite run | check | corpus | sweep | plot``.
+"""Command-line interface: ``asterlite run | check | corpus | sweep | plot | converge``.
 
 Exit status: 0 when every TEST_* check is OK (or a check finds no error),
 1 when a check is NOOK, 2 on any error or unsupported command.
@@ -120,6 +120,50 @@ def _plot(args) -> int:
     return 0
 
 
+def _converge(args) -> int:
+    from asterlite.runtime import converge
+
+    deck = Path(args.deck)
+    if not deck.is_file():
+        print(f"error: {deck}: no such deck", file=sys.stderr)
+        return 2
+    try:
+        schemes = converge.parse_schemes(args.schemes)
+        extra = dict(converge.parse_keyword(text) for text in args.keyword or ())
+
+        def progress(outcome):
+            if not args.quiet:
+                setting = outcome.setting
+                print(
+                    f"  {setting.scheme:<15} {setting.knob}={outcome.text}: {outcome.status}"
+                    f" {outcome.message[:100]}".rstrip(),
+                    flush=True,
+                )
+
+        study = converge.run_study(
+            deck,
+            schemes=schemes,
+            steps=converge.parse_values(args.steps),
+            tolerances=converge.parse_values(args.tolerances),
+            points=converge.parse_values(args.points),
+            against=args.against,
+            reference=args.reference,
+            target=args.target,
+            pattern=args.quantities,
+            extra=extra,
+            repeat=args.repeat,
+            progress=progress,
+        )
+    except converge.ConvergeError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    output = Path(args.output) if args.output else Path("asterlite-out") / f"{deck.stem}-converge"
+    paths = converge.write_outputs(study, output)
+    print(converge.format_table(study))
+    print("written: " + ", ".join(str(p) for p in paths))
+    return 0 if args.target is None or converge.cheapest(study) is not None else 1
+
+
 def _port(args) -> int:
     from asterlite.errors import AsterliteError
     from asterlite.legacy.port import describe_changes, port_file
@@ -195,6 +239,45 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("-o", "--output", help="output folder (default asterlite-out/<deck>-sweep)")
     sweep.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
     sweep.set_defaults(handler=_sweep)
+
+    conv = commands.add_parser(
+        "converge", help="error against cost of the deck's transients over schemes and steps"
+    )
+    conv.add_argument("deck")
+    conv.add_argument(
+        "--schemes",
+        help="comma-separated: DIFF_CENTRE, NEWMARK, DEVOGE, TRBDF2 (fixed step), "
+        "RUNGE_KUTTA_32, RUNGE_KUTTA_54, DEVOGE_ADAPT (tolerance), ADAPT_ORDRE1, ADAPT_ORDRE2 "
+        "(points per period); default DIFF_CENTRE,DEVOGE,RUNGE_KUTTA_54",
+    )
+    conv.add_argument(
+        "--steps", help="steps of the fixed-step schemes (default: deck PAS x2, x1, /2, /4, /8)"
+    )
+    conv.add_argument("--tolerances", help="TOLERANCE ladder (default 1e-3,...,1e-7)")
+    conv.add_argument("--points", help="NB_POIN_PERIODE ladder of ADAPT_ORDRE* (default 25..400)")
+    conv.add_argument("--target", type=float, help="max relative error to meet")
+    conv.add_argument(
+        "--against",
+        choices=("finest", "reference"),
+        default="finest",
+        help="compare with a finer run (default) or with the checks' VALE_REFE",
+    )
+    conv.add_argument(
+        "--reference",
+        metavar="SCHEME:VALUE",
+        help="the reference run (default: first scheme, half its finest step)",
+    )
+    conv.add_argument("--quantities", metavar="REGEX", help="keep the quantities matching this")
+    conv.add_argument(
+        "--keyword",
+        action="append",
+        metavar="FACT/NAME=VALUE",
+        help="extra DYNA_VIBRA keyword for every run, e.g. SCHEMA_TEMPS/PAS_MAXI=1e-4",
+    )
+    conv.add_argument("--repeat", type=int, default=1, help="runs per setting (least time kept)")
+    conv.add_argument("-o", "--output", help="folder (default asterlite-out/<deck>-converge)")
+    conv.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
+    conv.set_defaults(handler=_converge)
 
     plot = commands.add_parser("plot", help="plot a saved transient result (HDF5)")
     plot.add_argument("result", help="HDF5 result file")

@@ -1,6 +1,7 @@
 """CREA_CHAMP on nodal fields (TYPE_CHAM 'NOEU_*_R'): AFFE (values by node and
 component), EXTR (one field of a result, or its extreme over the stored
-fields with TYPE_MAXI), ASSE (pieces of fields, later ones overriding earlier
+fields with TYPE_MAXI; also on the ELNO/ELGA fields CALC_CHAMP stored on a
+result, giving a ``cham_elem``), ASSE (pieces of fields, later ones overriding earlier
 ones unless CUMUL='OUI') and COMB (linear combination)."""
 
 from __future__ import annotations
@@ -70,6 +71,8 @@ def _affe(ctx, kw):
 
 def _nodal_only(ctx, kw):
     type_cham = str(kw.get("TYPE_CHAM") or "")
+    if kw.get("OPERATION") == "EXTR" and _is_element_type(type_cham) and type_cham.endswith("_R"):
+        return  # element fields a result stores (CALC_CHAMP)
     if not (type_cham.startswith("NOEU_") and type_cham.endswith("_R")):
         ctx.unsupported(
             f"CREA_CHAMP {kw.get('OPERATION')} on TYPE_CHAM={type_cham!r} (nodal real fields only)",
@@ -79,39 +82,72 @@ def _nodal_only(ctx, kw):
 
 
 def _extr(ctx, kw):
-    from asterlite.modal.fields import (
-        FieldError,
-        extreme_over,
-        field_stack,
-        interpolate,
-        match_real,
-    )
+    """One stored field, chosen by order / instant / mode, or its extreme over
+    the stored fields (TYPE_MAXI), nodal or by element (ELNO/ELGA fields
+    CALC_CHAMP stored on the result)."""
+    from asterlite.modal.fields import FieldError, element_field_stack, field_stack
 
     if kw.get("RESULTAT") is None:
         ctx.unsupported("CREA_CHAMP EXTR from something else than RESULTAT", "OPERATION", kw)
+    result = kw["RESULTAT"]
+    element = _is_element_type(kw.get("TYPE_CHAM"))
     try:
-        numbering, values, access = field_stack(kw["RESULTAT"], kw["NOM_CHAM"])
-        if kw.get("TYPE_MAXI") is not None:
-            rows = _extr_rows(ctx, kw, access, values.shape[0])
-            params = access.get("INST", access["NUME_ORDRE"])
-            field = extreme_over(
-                values[rows], kw["TYPE_MAXI"], kw.get("TYPE_RESU", "VALE"), np.asarray(params)[rows]
-            )
-            return NodalField(numbering=numbering, values=field)
-        precision = float(kw.get("PRECISION", 1.0e-6))
-        criterion = kw.get("CRITERE", "RELATIF")
-        if kw.get("INST") is not None and "INST" in access:
-            if kw.get("INTERPOL", "NON") == "LIN":
-                field = interpolate(access["INST"], values, float(kw["INST"]))
-                return NodalField(numbering=numbering, values=field)
-            k = match_real(access["INST"], float(kw["INST"]), precision, criterion)
-        elif kw.get("FREQ") is not None and "FREQ" in access:
-            k = match_real(access["FREQ"], float(kw["FREQ"]), precision, criterion)
+        if element:
+            field, access = element_field_stack(result, kw["NOM_CHAM"])
+            values = field.values
         else:
-            k = _extr_index(ctx, kw, access)
+            numbering, values, access = field_stack(result, kw["NOM_CHAM"])
+        selected = _selected_state(ctx, kw, access, values)
     except FieldError as exc:
         ctx.error(str(exc), "RESULTAT", kw)
-    return NodalField(numbering=numbering, values=np.array(values[k], dtype=float))
+    if not element:
+        return NodalField(numbering=numbering, values=selected)
+    from asterlite.concepts.modes import FieldOnElements
+
+    return FieldOnElements(
+        mesh=_result_mesh(ctx, kw, result),
+        field_type=kw["TYPE_CHAM"],
+        field_name=kw["NOM_CHAM"],
+        cells=np.asarray(field.cells, dtype=int),
+        components=tuple(field.components),
+        values=selected,
+    )
+
+
+def _is_element_type(type_cham) -> bool:
+    return str(type_cham or "").startswith(("ELNO_", "ELGA_"))
+
+
+def _result_mesh(ctx, kw, result):
+    numbering = getattr(result, "numbering", None)
+    if numbering is not None:
+        return numbering.mesh
+    if kw.get("MODELE") is not None:
+        return kw["MODELE"].mesh
+    ctx.error("cannot tell the mesh of the result", "RESULTAT", kw)
+
+
+def _selected_state(ctx, kw, access, values) -> np.ndarray:
+    """The field (values[k]) the keywords select in a stack (first axis: the
+    stored states), or the entry-wise extreme for TYPE_MAXI."""
+    from asterlite.modal.fields import element_extreme, extreme_over, interpolate, match_real
+
+    if kw.get("TYPE_MAXI") is not None:
+        rows = _extr_rows(ctx, kw, access, values.shape[0])
+        params = np.asarray(access.get("INST", access["NUME_ORDRE"]))[rows]
+        reduce = element_extreme if values.ndim > 2 else extreme_over
+        return reduce(values[rows], kw["TYPE_MAXI"], kw.get("TYPE_RESU", "VALE"), params)
+    precision = float(kw.get("PRECISION", 1.0e-6))
+    criterion = kw.get("CRITERE", "RELATIF")
+    if kw.get("INST") is not None and "INST" in access:
+        if kw.get("INTERPOL", "NON") == "LIN":
+            return interpolate(access["INST"], values, float(kw["INST"]))
+        k = match_real(access["INST"], float(kw["INST"]), precision, criterion)
+    elif kw.get("FREQ") is not None and "FREQ" in access:
+        k = match_real(access["FREQ"], float(kw["FREQ"]), precision, criterion)
+    else:
+        k = _extr_index(ctx, kw, access)
+    return np.array(values[k], dtype=float)
 
 
 def _extr_index(ctx, kw, access) -> int:

@@ -176,7 +176,9 @@ def seismic_vector(ctx, kw, st: Structure, occ) -> NodalField:
     """CALC_CHAR_SEISME of one support motion."""
     direction = as_tuple(occ["DIRECTION"])
     if occ["TYPE_APPUI"] == "MONO" and occ.get("GROUP_NO") is None:
-        return call(ctx, "CALC_CHAR_SEISME", MATR_MASS=st.mass, MONO_APPUI="OUI", DIRECTION=direction)
+        return call(
+            ctx, "CALC_CHAR_SEISME", MATR_MASS=st.mass, MONO_APPUI="OUI", DIRECTION=direction
+        )
     return call(
         ctx,
         "CALC_CHAR_SEISME",

@@ -44,13 +44,24 @@ def _resu_gene(ctx, occ, basis):
     )
 
 
+def generalized_numbering(ctx, kw, basis) -> GeneralizedNumbering:
+    """NUME_DDL_GENE: an existing numbering is used as it is (its own storage,
+    as code_aster does); CO("NAME") or nothing builds one on the basis with
+    STOCKAGE (bound to the name when given)."""
+    given = kw.get("NUME_DDL_GENE")
+    if isinstance(given, GeneralizedNumbering):
+        return given
+    numbering = GeneralizedNumbering(basis=basis, storage=kw.get("STOCKAGE", "PLEIN"))
+    if given is not None:
+        ctx.bind(given, numbering)
+    return numbering
+
+
 def run(ctx, kw):
     basis = kw["BASE"]
     if kw.get("NB_VECT") is not None and int(kw["NB_VECT"]) < basis.n_modes:
         basis = basis.select(np.arange(int(kw["NB_VECT"])))
-    numbering_gene = GeneralizedNumbering(basis=basis, storage=kw.get("STOCKAGE", "PLEIN"))
-    if kw.get("NUME_DDL_GENE") is not None:
-        ctx.bind(kw["NUME_DDL_GENE"], numbering_gene)
+    numbering_gene = generalized_numbering(ctx, kw, basis)
     for occ in kw.factor("MATR_ASSE_GENE"):
         if occ.get("MATR_ASSE") is None:
             ctx.unsupported("PROJ_BASE of a generalized matrix", "MATR_ASSE_GENE", occ)

@@ -16,7 +16,9 @@ from asterlite.concepts.function import Function
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.restitution import (
+    added_motions,
     as_tuple,
+    computed_fields,
     element_value_history,
     recombine,
     select_instants,
@@ -82,10 +84,7 @@ def from_physical(ctx, kw):
         ctx.unsupported(f"RECU_FONCTION from a {result.aster_type}", "RESULTAT", kw)
     field = kw.get("NOM_CHAM")
     selection = instants(ctx, kw, result.times, result.order)
-    computed = {
-        **(getattr(result, "element_fields", None) or {}),
-        **(getattr(result, "node_fields", None) or {}),
-    }
+    computed = computed_fields(result)
     if field not in result.fields and field in computed:
         history = element_value_history(ctx, kw, result, field)
         return selection.times, selection.apply(history)
@@ -114,8 +113,8 @@ def from_generalized(ctx, kw):
     field = kw.get("NOM_CHAM", "DEPL")
     if field not in ("DEPL", "VITE", "ACCE"):
         ctx.unsupported(f"NOM_CHAM={field!r} from a tran_gene", "NOM_CHAM", kw)
-    if kw.get("CORR_STAT") == "OUI":
-        ctx.unsupported("CORR_STAT='OUI' in RECU_FONCTION", "CORR_STAT", kw)
+    if kw.get("ACCE_MONO_APPUI") is not None and field != "ACCE":
+        ctx.error("ACCE_MONO_APPUI goes with NOM_CHAM='ACCE'", "ACCE_MONO_APPUI", kw)
     selection = instants(ctx, kw, result.times, result.order)
     states = selection.apply(getattr(result, field.lower()))
     if kw.get("NUME_CMP_GENE") is not None:
@@ -126,20 +125,19 @@ def from_generalized(ctx, kw):
     node = single_node(ctx, kw, result.basis.numbering.mesh)
     shape = result.basis.shape_at(node, kw.get("NOM_CMP"))
     values = recombine(shape[None, :], states)[:, 0]
-    if kw.get("MULT_APPUI") == "OUI":
-        values = values + absolute_part(ctx, kw, result, node, field, selection.times)
+    for keyword in ("MULT_APPUI", "CORR_STAT"):
+        if kw.get(keyword) == "OUI":
+            values = values + added_part(ctx, kw, result, node, field, selection.times, keyword)
+    if kw.get("ACCE_MONO_APPUI") is not None:
+        # the drive acceleration, whatever the component (as code_aster adds it)
+        values = values + kw["ACCE_MONO_APPUI"].evaluate(selection.times)
     return selection.times, values
 
 
-def absolute_part(ctx, kw, result, node, field, times) -> np.ndarray:
-    """MULT_APPUI='OUI': the support motion added to the relative value."""
-    supports = result.info.get("mult_appui")
-    if not supports:
-        ctx.error(
-            "MULT_APPUI='OUI' on a result computed without multi-support excitation",
-            "MULT_APPUI",
-            kw,
-        )
+def added_part(ctx, kw, result, node, field, times, keyword) -> np.ndarray:
+    """MULT_APPUI / CORR_STAT='OUI': the support motion or static correction
+    added to the relative value."""
+    supports = added_motions(ctx, kw, result, keyword)
     try:
         row = result.basis.numbering.dof_index(node, kw.get("NOM_CMP"))
     except KeyError:

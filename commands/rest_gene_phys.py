@@ -19,6 +19,7 @@ from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.restitution import (
     FIELDS,
+    added_motions,
     as_tuple,
     dof_rows,
     node_indices,
@@ -45,8 +46,6 @@ def run(ctx, kw):
             f"MODE_MECA has {basis.n_modes} modes, the result {result.n_modes}", "MODE_MECA", kw
         )
     fields, element_names = requested_fields(ctx, kw, basis)
-    if kw.get("CORR_STAT") == "OUI":
-        ctx.unsupported("CORR_STAT='OUI'", "CORR_STAT", kw)
     selection = selection_from_keywords(ctx, kw, result.times, result.order)
     numbering = basis.numbering
     nodes = node_indices(ctx, kw, numbering.mesh)
@@ -56,11 +55,12 @@ def run(ctx, kw):
     shapes = basis.shapes[rows, :]
     out = {}
     for name in fields:
-        generalized = selection.apply(getattr(result, name.lower()))
+        generalized = selection.apply(getattr(result, name[:4].lower()))
         out[name] = recombine(shapes, generalized)
-    if kw.get("MULT_APPUI") == "OUI":
-        add_support_motion(ctx, kw, result, rows, selection.times, out)
-    if kw.get("ACCE_MONO_APPUI") is not None and "ACCE" in out:
+    for keyword in ("MULT_APPUI", "CORR_STAT"):
+        if kw.get(keyword) == "OUI":
+            add_support_motion(ctx, kw, result, rows, selection.times, out, keyword)
+    if kw.get("ACCE_MONO_APPUI") is not None and "ACCE_ABSOLU" in out:
         add_uniform_acceleration(ctx, kw, numbering, rows, selection.times, out)
     if nodes is None and rows.size == numbering.n_dofs:
         sub = numbering
@@ -68,8 +68,9 @@ def run(ctx, kw):
         sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
     restored = DynaTrans(sub, selection.times, selection.order, out)
     if element_names:
-        if kw.get("MULT_APPUI") == "OUI":
-            ctx.unsupported("MULT_APPUI='OUI' with element fields", "MULT_APPUI", kw)
+        for keyword in ("MULT_APPUI", "CORR_STAT"):
+            if kw.get(keyword) == "OUI":
+                ctx.unsupported(f"{keyword}='OUI' with element fields", keyword, kw)
         generalized = selection.apply(result.depl)
         # stored as CALC_CHAMP stores element fields on a result
         restored.element_fields = {
@@ -85,9 +86,10 @@ def requested_fields(ctx, kw, basis) -> tuple[tuple[str, ...], tuple[str, ...]]:
     if kw.get("TOUT_CHAM") == "OUI" or kw.get("NOM_CHAM") is None:
         return FIELDS, ()
     names = tuple(dict.fromkeys(as_tuple(kw["NOM_CHAM"])))
+    nodal = (*FIELDS, "ACCE_ABSOLU")
     computed = getattr(basis, "element_fields", None) or {}
-    elements = tuple(n for n in names if n not in FIELDS and n in computed)
-    other = [n for n in names if n not in FIELDS and n not in computed]
+    elements = tuple(n for n in names if n not in nodal and n in computed)
+    other = [n for n in names if n not in nodal and n not in computed]
     if other:
         if other[0].endswith(("_ELNO", "_ELGA")):
             ctx.error(
@@ -97,30 +99,30 @@ def requested_fields(ctx, kw, basis) -> tuple[tuple[str, ...], tuple[str, ...]]:
                 kw,
             )
         ctx.unsupported(f"NOM_CHAM={other[0]!r} (DEPL, VITE, ACCE, element fields)", "NOM_CHAM", kw)
-    return tuple(n for n in names if n in FIELDS), elements
+    return tuple(n for n in names if n in nodal), elements
 
 
-def add_support_motion(ctx, kw, result, rows, times, out) -> None:
-    supports = result.info.get("mult_appui")
-    if not supports:
-        ctx.unsupported(
-            "MULT_APPUI='OUI' on a result computed without multi-support excitation",
-            "MULT_APPUI",
-            kw,
-        )
+def add_support_motion(ctx, kw, result, rows, times, out, keyword="MULT_APPUI") -> None:
+    supports = added_motions(ctx, kw, result, keyword)
     for name in out:
         out[name] = out[name] + support_motion(supports, rows, times, name)
 
 
 def add_uniform_acceleration(ctx, kw, numbering, rows, times, out) -> None:
-    direction = np.asarray(as_tuple(kw.get("DIRECTION")) or (0.0, 0.0, 0.0), dtype=float)
-    gamma = kw["ACCE_MONO_APPUI"].evaluate(times)
-    weights = np.array(
-        [
-            direction[TRANSLATIONS.index(numbering.dofs[i][1])]
-            if numbering.dofs[i][1] in TRANSLATIONS
-            else 0.0
-            for i in rows
-        ]
-    )
-    out["ACCE"] = out["ACCE"] + np.outer(gamma, weights)
+    """ACCE_ABSOLU: the relative acceleration plus Σ γ_k(t) DIRECTION_k on
+    the translations (one direction triple per ACCE_MONO_APPUI function)."""
+    functions = as_tuple(kw["ACCE_MONO_APPUI"])
+    directions = np.asarray(as_tuple(kw.get("DIRECTION")) or (0.0,) * 3, dtype=float)
+    directions = directions.reshape(-1, 3)
+    if len(directions) != len(functions):
+        ctx.error(
+            f"{len(functions)} ACCE_MONO_APPUI functions for {len(directions)} DIRECTION",
+            "DIRECTION",
+            kw,
+        )
+    components = [numbering.dofs[i][1] for i in rows]
+    for function, direction in zip(functions, directions, strict=True):
+        weights = np.array(
+            [direction[TRANSLATIONS.index(c)] if c in TRANSLATIONS else 0.0 for c in components]
+        )
+        out["ACCE_ABSOLU"] = out["ACCE_ABSOLU"] + np.outer(function.evaluate(times), weights)

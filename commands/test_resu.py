@@ -14,14 +14,27 @@ from asterlite.concepts.assembly import NodalField
 from asterlite.concepts.modes import GeneralizedVector, ModeResult
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.checks import record_check, reduce_values
-from asterlite.post.restitution import as_tuple, dof_rows, nearest_archived, node_indices
+from asterlite.post.restitution import (
+    as_tuple,
+    computed_fields,
+    dof_rows,
+    element_value_history,
+    nearest_archived,
+    node_indices,
+)
 
 
 def run(ctx, kw):
-    for key, check in (("RESU", check_result), ("GENE", check_gene), ("CHAM_NO", check_field)):
+    checks = (
+        ("RESU", check_result),
+        ("GENE", check_gene),
+        ("CHAM_NO", check_field),
+        ("CHAM_ELEM", check_element_field),
+    )
+    for key, check in checks:
         for i, occ in enumerate(kw.factor(key), start=1):
             check(ctx, occ, f"{key}[{i}]")
-    for key in ("CHAM_ELEM", "CARTE", "OBJET", "MAILLAGE"):
+    for key in ("CARTE", "OBJET", "MAILLAGE"):
         if kw.get(key):
             ctx.unsupported(f"TEST_RESU/{key}", key, kw)
     return None
@@ -82,6 +95,13 @@ def check_result(ctx, occ, where):
         label = f"{where} {name} {occ['PARA']} {state}"
     else:
         field = occ.get("NOM_CHAM")
+        if field not in getattr(result, "fields", {}) and field in computed_fields(result):
+            if occ.get("TYPE_TEST") is not None:
+                ctx.unsupported(f"TYPE_TEST on {field}", "TYPE_TEST", occ)
+            value = element_value_history(ctx, occ, result, field)[index]
+            label = f"{where} {name} {field} {cell_point_label(occ)} {state}"
+            record_check(ctx, label, value, occ)
+            return
         if isinstance(result, ModeResult):
             if field != "DEPL":
                 ctx.unsupported(f"NOM_CHAM={field!r} of a mode_meca", "NOM_CHAM", occ)
@@ -147,3 +167,33 @@ def check_field(ctx, occ, where):
         ctx, occ, field.numbering, np.asarray(field.values), field.name or "?"
     )
     record_check(ctx, f"{where} {what}", value, occ)
+
+
+def cell_point_label(occ) -> str:
+    where = [str(occ[k]) for k in ("GROUP_MA", "MAILLE", "GROUP_NO", "NOEUD") if occ.get(k)]
+    if occ.get("POINT") is not None:
+        where.append(f"PT {occ['POINT']}")
+    return " ".join([*where, str(occ.get("NOM_CMP") or "")]).strip()
+
+
+class _FieldHolder:
+    def __init__(self, field):
+        self.element_fields = {field.name: field}
+
+
+def check_element_field(ctx, occ, where):
+    """CHAM_ELEM: one component of an element field (CREA_CHAMP EXTR...) at a
+    cell node (GROUP_MA + GROUP_NO / NOEUD) or point (POINT). The field
+    concept holds ``element_field`` (an ElementField with one order) and
+    ``mesh``."""
+    concept = occ.get("CHAM_GD")
+    field = getattr(concept, "element_field", None)
+    mesh = getattr(concept, "mesh", None)
+    if field is None or mesh is None:
+        kind = getattr(concept, "aster_type", type(concept).__name__)
+        ctx.unsupported(f"TEST_RESU/CHAM_ELEM of a {kind}", "CHAM_GD", occ)
+    if occ.get("TYPE_TEST") is not None:
+        ctx.unsupported("TEST_RESU/CHAM_ELEM with TYPE_TEST", "TYPE_TEST", occ)
+    value = element_value_history(ctx, occ, _FieldHolder(field), field.name, mesh)[0]
+    label = f"{where} {concept.name or '?'} {cell_point_label(occ)}"
+    record_check(ctx, label, value, occ)

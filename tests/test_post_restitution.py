@@ -39,9 +39,11 @@ def test_rest_gene_phys_tout_ordre_keeps_orders_and_all_fields():
     assert out.fields["ACCE"].shape == (11, 2)
 
 
-def test_rest_gene_phys_element_fields_are_unsupported():
-    with pytest.raises(UnsupportedError, match="SIPO_ELNO"):
+def test_rest_gene_phys_element_fields_need_calc_champ_on_the_modes():
+    with pytest.raises(CommandError, match="SIPO_ELNO.*CALC_CHAMP"):
         rest_gene_phys.run(context(), kw(RESU_GENE=small_transient(), NOM_CHAM=("SIPO_ELNO",)))
+    with pytest.raises(UnsupportedError, match="FORC_NODA"):
+        rest_gene_phys.run(context(), kw(RESU_GENE=small_transient(), NOM_CHAM=("FORC_NODA",)))
 
 
 def test_recu_fonction_from_physical_generalized_and_shock():

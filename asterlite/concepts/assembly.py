@@ -234,7 +234,7 @@ class AssembledMatrix(Concept):
 
     numbering: DofNumbering
     matrix: Any  # scipy.sparse.csr_matrix (n_dofs, n_dofs)
-    kind: str = "RIGI"  # RIGI, MASS, AMOR
+    kind: str = "RIGI"  # RIGI, MASS, AMOR; GYRO (MECA_GYRO), RIGY (RIGI_GYRO): non-symmetric
     # what the matrix was built from (code_aster keeps them in the matrix):
     # Model, ElementCharacteristics, MaterialField, or None
     model: Any = None

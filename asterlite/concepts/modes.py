@@ -251,9 +251,11 @@ class GeneralizedModes(Concept):
         numbers = self.parameters.get("NUME_MODE")
         return np.arange(1, self.n_modes + 1) if numbers is None else np.asarray(numbers)
 
-    def physical(self, indices=None) -> ModeResult:
-        """The modes restored on the physical basis (REST_GENE_PHYS)."""
-        basis = self.numbering.basis
+    def physical(self, indices=None, basis=None) -> ModeResult:
+        """The modes restored on the physical basis (REST_GENE_PHYS): Φ q with
+        Φ the projection basis, or ``basis`` (MODE_MECA) when given; 0-based
+        ``indices`` select modes (default: all)."""
+        basis = self.numbering.basis if basis is None else basis
         idx = np.arange(self.n_modes) if indices is None else np.asarray(indices, dtype=int)
         shapes = basis.shapes[:, : self.vectors.shape[0]] @ self.vectors[:, idx]
         params = {k: np.asarray(v)[idx] for k, v in self.parameters.items() if np.ndim(v) == 1}
@@ -269,3 +271,42 @@ class GeneralizedModes(Concept):
             parameters=params,
             norm=self.norm,
         )
+
+
+@dataclass(eq=False)
+class FieldOnElements(Concept):
+    """A field by element (``cham_elem``), as CREA_CHAMP EXTR takes it from a
+    result's ELNO/ELGA field (:class:`~asterlite.concepts.assembly.ElementField`).
+
+    ``values`` is (n_cells, n_points, n_components) on the mesh cells
+    ``cells``; points are the cell's nodes in connectivity order (ELNO) or its
+    Gauss points (ELGA). ``field_type`` is CREA_CHAMP's TYPE_CHAM
+    (``ELNO_SIEF_R``) and ``field_name`` the result's field (``SIPO_ELNO``)."""
+
+    aster_types = ("cham_elem", "cham_gd_sdaster")
+
+    mesh: Any
+    field_type: str
+    field_name: str
+    cells: np.ndarray
+    components: tuple[str, ...]
+    values: np.ndarray
+
+    def value(self, cell: int, point: int, component: str) -> float:
+        """Value at one cell (mesh index), point (0-based) and component."""
+        rows = np.flatnonzero(np.asarray(self.cells) == int(cell))
+        if rows.size == 0:
+            raise KeyError(f"cell {self.mesh.cell_names[int(cell)]} is not in the field")
+        if component not in self.components:
+            raise KeyError(f"component {component} is not in the field")
+        return float(self.values[rows[0], point, self.components.index(component)])
+
+    def node_value(self, cell: int, node: int, component: str) -> float:
+        """ELNO value of ``component`` at mesh node ``node`` of mesh cell ``cell``."""
+        nodes = list(np.asarray(self.mesh.cell_nodes[int(cell)], dtype=int))
+        if int(node) not in nodes:
+            raise KeyError(
+                f"node {self.mesh.node_names[int(node)]} is not a node of cell "
+                f"{self.mesh.cell_names[int(cell)]}"
+            )
+        return self.value(cell, nodes.index(int(node)), component)

@@ -17,6 +17,7 @@ from __future__ import annotations
 from numba import njit
 
 from asterlite.dynamics.contact import P_DRIVE1, P_DRIVE2, shock_forces
+from asterlite.dynamics.formula import run_program
 from asterlite.dynamics.kernel import C_STEP, C_TIME
 
 
@@ -110,16 +111,25 @@ def loads_ready(clock, exc):
 @njit(cache=True)
 def external_force(t, exc, out):
     vectors, abscissas, ordinates, layout, cursors = exc[0], exc[1], exc[2], exc[3], exc[9]
-    add_external_force(t, vectors, abscissas, ordinates, layout, cursors, out)
+    codes, constants, stack = exc[12], exc[13], exc[14]
+    add_external_force(
+        t, vectors, abscissas, ordinates, layout, cursors, codes, constants, stack, out
+    )
 
 
 @njit(cache=True, inline="always")
-def add_external_force(t, vectors, abscissas, ordinates, layout, cursors, out):
-    """out += Σ_e f_e(t) vector_e."""
+def add_external_force(
+    t, vectors, abscissas, ordinates, layout, cursors, codes, constants, stack, out
+):
+    """out += Σ_e f_e(t) vector_e; f_e is row e's formula program when it
+    has one (``codes[e, 0] > 0``), else its piecewise-linear table."""
     for e in range(vectors.shape[0]):
-        c = multiplier_at(
-            abscissas, ordinates, e, layout[e, 0], layout[e, 1], layout[e, 2], t, cursors
-        )
+        if codes[e, 0] > 0:
+            c = run_program(codes, constants, e, t, stack)
+        else:
+            c = multiplier_at(
+                abscissas, ordinates, e, layout[e, 0], layout[e, 1], layout[e, 2], t, cursors
+            )
         for m in range(out.shape[0]):
             out[m] += c * vectors[e, m]
 
@@ -237,7 +247,7 @@ def state_acceleration(t, q, v, out, f, residual, vint, work, model):
     """out = M⁻¹ (F_ext(t) + F_shock(q, v) - K q - C v), the shock states
     ``vint`` updated (code_aster's dtmacce). Returns a diverging shock's
     index or -1; ``f`` receives the total force."""
-    lin, shk, exc = model
+    lin, shk, exc = model[0], model[1], model[2]
     shock = total_force(t, q, v, shk, vint, exc, work, f)
     acceleration(f, q, v, lin, residual, out)
     return shock

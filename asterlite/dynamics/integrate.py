@@ -23,7 +23,7 @@ from asterlite.dynamics import (
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.forces import acceleration, total_force
-from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet
+from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet, local_bundle
 from asterlite.errors import NumericalError
 
 # Each scheme module offers prepare(system, dt, options) -> (memory, adaptive)
@@ -85,12 +85,12 @@ def integrate(
     options: SchemeOptions | None = None,
     specialised: bool = True,
 ) -> RunResult:
-    """Integrate from t0 to t_end. ``specialised``: run the scheme's
-    specialised loop when it has one (DIFF_CENTRE), else its general
-    ``run_loop`` (the same results; kept for comparison)."""
+    """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
+    ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
+    results as its specialised ``run_loop``; kept for comparison)."""
     options = options or SchemeOptions()
     n = system.n_modes
-    model = (system.bundle(), shocks.bundle(), excitation.bundle())
+    model = (system.bundle(), shocks.bundle(), excitation.bundle(), local_bundle(system, shocks))
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
     f, a = np.zeros(n), np.zeros(n)
     vint = np.zeros((shocks.count, N_VINT))
@@ -114,23 +114,17 @@ def integrate(
     K.archive(0, t0, 0, q, v, a, vint, *buffers)
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
     counters[K.K_ARCHIVED] = 1
-    run_specialised = getattr(module, "run_specialised", None) if specialised else None
+    run_loop = module.run_loop
+    if not specialised:
+        run_loop = getattr(module, "general_loop", module.run_loop)
     started = wallclock.perf_counter()
     while True:
-        if run_specialised is not None:
-            parts = (system, shocks, excitation)
-            status = run_specialised(
-                clock, counters, state, memory, instants, pas_arch, eps, buffers, parts
-            )
-        else:
-            status = module.run_loop(
-                clock, counters, state, memory, model, instants, pas_arch, eps, buffers
-            )
+        status = run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, buffers)
         if status == K.STATUS_FULL:
             buffers = grow(buffers)
         elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
             excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
-            model = (model[0], model[1], excitation.bundle())
+            model = (model[0], model[1], excitation.bundle(), model[3])
         else:
             break
     elapsed = wallclock.perf_counter() - started

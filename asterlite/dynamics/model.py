@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.formula import STACK_DEPTH, formula_program, program_tables
 from asterlite.dynamics.geometry import default_origin, local_frame, rest_side_signs
 
 COMPONENTS = ("DX", "DY", "DZ")
@@ -236,6 +237,16 @@ def build_shocks(specs: list[ShockSpec], system: LinearSystem) -> ShockSet:
     return ShockSet(specs, flags, params, rots, phis, polars)
 
 
+def local_bundle(system: LinearSystem, shocks: ShockSet):
+    """The specialised kernels' arrays (4th entry of the model tuple):
+    (M⁻¹, K, C) as :meth:`LinearSystem.kernel_matrices`, the shock shapes
+    and rest positions in their local frames (:meth:`ShockSet.local_arrays`)
+    and a (n_shocks, 2, 6) scratch for the support motion."""
+    mass_inverse, stiffness, damping = system.kernel_matrices()
+    shapes, rest = shocks.local_arrays()
+    return mass_inverse, stiffness, damping, shapes, rest, np.zeros((shocks.count, 2, 6))
+
+
 def optimal_tangential_damping(spec: ShockSpec, rot: np.ndarray, system: LinearSystem) -> float:
     """C_T = 2 sqrt(m (k + K_T)) - 2 ξ sqrt(k m) for the mode that carries the
     most mass in the tangential motion at the contact (seed §6.5 footnote,
@@ -331,8 +342,10 @@ class Excitation:
     (``layout[e] = (count, left, right)``, extension codes PROL_CONSTANT or
     PROL_LINEAIRE beyond the ends): a DEFI_FONCTION with linear
     interpolation keeps its own points, so the kernels evaluate it exactly
-    as code_aster does at any instant; other multipliers (formulas, log
-    interpolation) are sampled on a regular grid, one window at a time
+    as code_aster does at any instant; a FORMULE of INST becomes a program
+    the kernels run at each instant (``programs``, :mod:`formula`); other
+    multipliers (formulas calling functions, log interpolation) are
+    sampled on a regular grid, one window at a time
     (``pending[e] == 1`` while samples follow the window: the time loops
     pause with STATUS_LOADS before stepping past it and :meth:`refill`
     tabulates the next window). ``cursors`` keep each row's last interval.
@@ -351,9 +364,13 @@ class Excitation:
     drive_layout: np.ndarray | None = None
     sampled: list = field(default_factory=list)  # per row: SampledMultiplier or None
     drive_sampled: list = field(default_factory=list)
+    programs: list = field(default_factory=list)  # per row: formula program or None
 
     def __post_init__(self) -> None:
         n_exc = self.vectors.shape[0]
+        self.programs = list(self.programs) or [None] * n_exc
+        self.program_codes, self.program_constants = program_tables(self.programs)
+        self.program_stack = np.zeros(STACK_DEPTH)
         self.pending = np.zeros(n_exc, dtype=np.int64)
         self.cursors = np.zeros(n_exc, dtype=np.int64)
         self.sampled = list(self.sampled) or [None] * n_exc
@@ -381,6 +398,9 @@ class Excitation:
             self.cursors,
             self.drive_pending,
             self.drive_cursors,
+            self.program_codes,
+            self.program_constants,
+            self.program_stack,
         )
 
     def add_support_motion(self, shapes: np.ndarray, motions, t0, t_end, h) -> None:
@@ -472,12 +492,26 @@ def multiplier_points(mult, t0: float, t_end: float, h: float):
     return SampledMultiplier(mult, t0, h, n)
 
 
+def kernel_program(mult):
+    """The formula program of a multiplier without points of its own, or None."""
+    if isinstance(mult, (int, float)) or getattr(mult, "abscissas", None) is not None:
+        return None
+    return formula_program(mult)
+
+
 def tabulate_excitation(n_modes: int, loads, t0: float, t_end: float, h: float) -> Excitation:
     """``loads``: list of (vector, multiplier) with multiplier a float, a
     tabulated function (``abscissas``, ``ordinates``, ``INTERPOL``,
     ``PROL_GAUCHE``/``PROL_DROITE``) or any object with ``evaluate(t_array)``
-    (then sampled every ``h`` over [t0, t_end], one window at a time)."""
-    points = [multiplier_points(mult, t0, t_end, h) for _, mult in loads]
+    (a FORMULE of INST runs as a program in the kernels; anything else is
+    sampled every ``h`` over [t0, t_end], one window at a time)."""
+    programs = [kernel_program(mult) for _, mult in loads]
+    points = [
+        (np.array([t0]), np.zeros(1), PROL_CONSTANT, PROL_CONSTANT)
+        if program is not None
+        else multiplier_points(mult, t0, t_end, h)
+        for (_, mult), program in zip(loads, programs, strict=True)
+    ]
     width = table_width(points)
     vectors = np.zeros((len(loads), n_modes))
     abscissas = np.zeros((len(loads), width))
@@ -493,6 +527,8 @@ def tabulate_excitation(n_modes: int, loads, t0: float, t_end: float, h: float) 
         abscissas[e, : len(xs)] = xs
         ordinates[e, : len(xs)] = ys
         layout[e] = (len(xs), left, right)
-    excitation = Excitation(vectors, abscissas, ordinates, layout, sampled=sampled)
+    excitation = Excitation(
+        vectors, abscissas, ordinates, layout, sampled=sampled, programs=programs
+    )
     excitation.refill(t0, 0.0)
     return excitation

@@ -160,7 +160,7 @@ def start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
 def step(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
     mem, smem = memory[0], memory[1]
-    lin, shk, exc = model
+    lin, shk, exc = model[0], model[1], model[2]
     minv, stiffness, damping, is_diagonal = lin
     diagonal = is_diagonal[0] == 1
     n = q.shape[0]

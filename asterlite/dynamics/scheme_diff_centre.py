@@ -4,10 +4,11 @@ equations of motion at the new state). Order 2, conditionally stable.
 
 Two loops share the arithmetic:
 
-- :func:`run_loop`, the general path every scheme has (``step`` on the
-  ``(lin, shk, exc)`` bundles);
-- :func:`specialised_loop`, what :func:`integrate.integrate` runs: one
-  compiled loop on plain arrays with every helper inlined, the shock
+- :func:`general_loop`, the general path every scheme has (``step`` on the
+  ``(lin, shk, exc)`` bundles), kept for comparison;
+- :func:`run_loop` (:func:`specialised_loop`), what
+  :func:`integrate.integrate` runs: one compiled loop on plain arrays with
+  every helper inlined and no reference counting, the shock
   kinematics in each shock's local frame (:func:`contact.local_shock_forces`),
   the acceleration in one pass (diagonal matrices as 1-D arrays, the
   finiteness test folded in), multipliers searched from their last
@@ -58,7 +59,7 @@ def step(t, dt, index, state, memory, model):
 
 
 @njit(cache=True)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
     while K.unfinished(clock, counters, eps):
         if K.archive_full(counters, archive):
             return K.STATUS_FULL
@@ -75,7 +76,62 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     return K.STATUS_DONE
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+    """The specialised DIFF_CENTRE loop on the engine's bundles. Compiled
+    without reference counting (``_nrt=False``: nothing here allocates),
+    so that the arrays handed to the inlined helpers cost nothing."""
+    exc = model[2]
+    flags, params, rots, phis, polars = model[1]
+    mass_inverse, stiffness, damping, shapes, rest, drive = model[3]
+    out_t, out_order, out_q, out_v, out_a, out_vint = archive
+    return specialised_loop(
+        clock,
+        counters,
+        instants,
+        pas_arch,
+        eps,
+        state[0],
+        state[1],
+        state[2],
+        state[3],
+        state[4],
+        memory[0][RESIDUAL],
+        mass_inverse,
+        stiffness,
+        damping,
+        flags,
+        params,
+        rots,
+        shapes,
+        rest,
+        polars,
+        drive,
+        exc[0],
+        exc[1],
+        exc[2],
+        exc[3],
+        exc[8],
+        exc[9],
+        exc[12],
+        exc[13],
+        exc[14],
+        exc[4],
+        exc[5],
+        exc[6],
+        exc[7],
+        exc[10],
+        exc[11],
+        out_t,
+        out_order,
+        out_q,
+        out_v,
+        out_a,
+        out_vint,
+    )
+
+
+@njit(cache=True, _nrt=False)
 def specialised_loop(
     clock,
     counters,
@@ -104,6 +160,9 @@ def specialised_loop(
     load_layout,
     load_pending,
     load_cursors,
+    load_codes,
+    load_constants,
+    load_stack,
     support_shapes,
     support_abscissas,
     support_ordinates,
@@ -143,8 +202,9 @@ def specialised_loop(
         for i in range(n):
             f[i] = 0.0
         add_external_force(
-            t_new, load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors, f
-        )
+            t_new, load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors,
+            load_codes, load_constants, load_stack, f,
+        )  # fmt: skip
         local_support_motion(
             t_new,
             shock_rots,
@@ -172,49 +232,3 @@ def specialised_loop(
             out_t, out_order, out_q, out_v, out_a, out_vint, dt, dt, 0,
         )  # fmt: skip
     return K.STATUS_DONE
-
-
-def run_specialised(clock, counters, state, memory, instants, pas_arch, eps, archive, parts):
-    """Unpack the engine objects into :func:`specialised_loop`'s arrays
-    (once per call, not per step). ``parts``: (system, shocks, excitation)."""
-    system, shocks, excitation = parts
-    q, v, a, f, vint = state[0], state[1], state[2], state[3], state[4]
-    mass_inverse, stiffness, damping = system.kernel_matrices()
-    shapes, rest = shocks.local_arrays()
-    drive = np.zeros((shocks.count, 2, 6))
-    return specialised_loop(
-        clock,
-        counters,
-        instants,
-        pas_arch,
-        eps,
-        q,
-        v,
-        a,
-        f,
-        vint,
-        memory[0][RESIDUAL],
-        mass_inverse,
-        stiffness,
-        damping,
-        shocks.flags,
-        shocks.params,
-        shocks.rots,
-        shapes,
-        rest,
-        shocks.polars,
-        drive,
-        excitation.vectors,
-        excitation.abscissas,
-        excitation.ordinates,
-        excitation.layout,
-        excitation.pending,
-        excitation.cursors,
-        excitation.drive_shapes,
-        excitation.drive_abscissas,
-        excitation.drive_ordinates,
-        excitation.drive_layout,
-        excitation.drive_pending,
-        excitation.drive_cursors,
-        *archive,
-    )

@@ -90,7 +90,10 @@ def beam_gyro_coupling_local(length, density, area, iy, iz, poisson, ay=0.0, az=
     """(n, 12, 12) ``S = rho Ip ∫ N_ry^T N_rz dx`` of straight beams in their
     local frame (see the module docstring); ``G = S - S^T``, ``Kg = S^T``."""
     L, rho, A, Iy, Iz, nu, ay, az = np.broadcast_arrays(
-        *(np.atleast_1d(np.asarray(v, dtype=float)) for v in (length, density, area, iy, iz, poisson, ay, az))
+        *(
+            np.atleast_1d(np.asarray(v, dtype=float))
+            for v in (length, density, area, iy, iz, poisson, ay, az)
+        )
     )
     phi = gyro_shear_parameter(L, A, Iy, Iz, nu, ay, az)
     xi, wts = (_GAUSS + 1.0) / 2.0, _WEIGHTS / 2.0

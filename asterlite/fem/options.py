@@ -126,7 +126,9 @@ def _disk_gyro_blocks(model, characteristics, cells, option) -> list[ElementBloc
     matrices = beam.element_rotation(rotations, 6, n_nodes=1)
     matrices = np.einsum("eji,ejk,ekl->eil", matrices, local, matrices)
     nodes = np.array([mesh.cell_nodes[c] for c in disks], dtype=int).reshape(-1, 1)
-    return [ElementBlock(nodes=nodes, components=MODELISATION_COMPONENTS["DIS_TR"], matrices=matrices)]
+    return [
+        ElementBlock(nodes=nodes, components=MODELISATION_COMPONENTS["DIS_TR"], matrices=matrices)
+    ]
 
 
 def gyro_blocks(model, characteristics, option, materials=None, cells=None) -> list[ElementBlock]:
@@ -148,9 +150,9 @@ def hysteretic_coefficients(model, characteristics, materials, cells) -> np.ndar
     out = np.zeros(len(cells))
     for k, cell in enumerate(np.asarray(cells, dtype=int)):
         if model.cell_modelisation[int(cell)] in DISCRETE_MODELISATIONS:
-            assignment = (characteristics.discrete.get(int(cell), {}) if characteristics else {}).get(
-                "K"
-            )
+            assignment = (
+                characteristics.discrete.get(int(cell), {}) if characteristics else {}
+            ).get("K")
             out[k] = assignment.hysteretic if assignment is not None else 0.0
         elif materials is not None:
             material = materials.material_of(int(cell))

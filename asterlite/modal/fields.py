@@ -90,3 +90,34 @@ def extreme_over(values: np.ndarray, kind: str, what: str, params: np.ndarray) -
     if what == "VALE_ABS":
         return np.abs(picked)
     return np.asarray(params, dtype=float)[idx]
+
+
+def element_field_stack(result, name: str):
+    """(ElementField, access) of an ELNO/ELGA field CALC_CHAMP stored on a
+    result (``result.element_fields[name]``, values (n_orders, n_cells,
+    n_points, n_components)); ``access`` as :func:`field_stack`'s."""
+    fields = getattr(result, "element_fields", None) or {}
+    if name not in fields:
+        known = ", ".join(fields) or "none"
+        raise FieldError(
+            f"the result has no element field {name} (computed: {known}; use CALC_CHAMP first)"
+        )
+    field = fields[name]
+    count = field.values.shape[0]
+    order = getattr(result, "order", None)
+    times = getattr(result, "times", None)
+    access = {"NUME_ORDRE": np.asarray(order if order is not None else np.arange(1, count + 1))}
+    if times is not None:
+        access["INST"] = np.asarray(times, dtype=float)
+    if isinstance(result, ModeResult):
+        access["NUME_MODE"] = result.mode_numbers
+        access["FREQ"] = np.asarray(result.frequencies, dtype=float)
+    return field, access
+
+
+def element_extreme(values: np.ndarray, kind: str, what: str, params) -> np.ndarray:
+    """:func:`extreme_over` applied entry by entry to a stack of element
+    fields (n_orders, n_cells, n_points, n_components)."""
+    values = np.asarray(values, dtype=float)
+    flat = values.reshape(values.shape[0], -1)
+    return extreme_over(flat, kind, what, params).reshape(values.shape[1:])

@@ -280,13 +280,22 @@ def recombine_element_field(field, generalized):
     return ElementField(field.name, np.asarray(field.cells).copy(), field.components, values)
 
 
-def element_value_history(ctx, kw, result, name: str) -> np.ndarray:
+def computed_fields(result) -> dict:
+    """The element (``*_ELNO``, ``*_ELGA``) and smoothed nodal (``*_NOEU``)
+    fields CALC_CHAMP or REST_GENE_PHYS stored on a result, by name."""
+    return {
+        **(getattr(result, "element_fields", None) or {}),
+        **(getattr(result, "node_fields", None) or {}),
+    }
+
+
+def element_value_history(ctx, kw, result, name: str, mesh=None) -> np.ndarray:
     """Values along the orders of one component of an element field (``*_ELNO``
     at the node GROUP_NO / NOEUD of the cell, ``*_ELGA`` at POINT) or of a
     smoothed nodal field (``*_NOEU``) of a result, as RECU_FONCTION and
-    TEST_RESU read it."""
-    mesh = result.numbering.mesh
-    component = kw.get("NOM_CMP")
+    TEST_RESU read it. ``mesh`` defaults to the result's numbering's."""
+    mesh = mesh if mesh is not None else result.numbering.mesh
+    component = as_tuple(kw.get("NOM_CMP"))[0] if kw.get("NOM_CMP") else None
     node_fields = getattr(result, "node_fields", None) or {}
     if name in node_fields:
         field = node_fields[name]
@@ -341,3 +350,20 @@ def single_cell(ctx, kw, mesh) -> int:
     if len(set(cells)) > 1:
         ctx.error(f"{len(set(cells))} cells given: one expected", "GROUP_MA", kw)
     return cells[0]
+
+
+# where DYNA_VIBRA keeps what each keyword adds to the relative fields
+ADDED_MOTIONS = {
+    "MULT_APPUI": ("mult_appui", "multi-support excitation (EXCIT MULT_APPUI)"),
+    "CORR_STAT": ("corr_stat", "static correction (MODE_CORR, EXCIT CORR_STAT)"),
+}
+
+
+def added_motions(ctx, kw, result, keyword: str) -> list:
+    """The ``info`` entries MULT_APPUI / CORR_STAT recombine (same layout:
+    a shape on the basis DOFs and DEPL / VITE / ACCE functions of time)."""
+    key, what = ADDED_MOTIONS[keyword]
+    supports = result.info.get(key)
+    if not supports:
+        ctx.error(f"{keyword}='OUI' on a result computed without {what}", keyword, kw)
+    return supports

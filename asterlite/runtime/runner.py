@@ -205,14 +205,16 @@ def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
     shock of those results: peak normal force and wear power."""
     from asterlite.concepts.transient import TranGene
 
-    transients, shocks = [], []
-    for call, (_, name, concept) in enumerate(produced, start=1):
+    transients, shocks, calls = [], [], {}
+    for command, name, concept in produced:
+        call = calls[command] = calls.get(command, 0) + 1  # the command's n-th call
         if not isinstance(concept, TranGene):
             continue
         info = concept.info
         transients.append(
             {
                 "result": name,
+                "command": command,
                 "call": call,
                 "scheme": concept.scheme,
                 "step": float(concept.step),
