@@ -187,14 +187,48 @@ def shock_quantity(shock, name: str) -> np.ndarray | None:
     return None
 
 
+def shock_instants(ctx, kw, result):
+    """LIST_PARA: the shock quantities interpolated linearly at those instants
+    (code_aster interpolates both parameters in time); otherwise the archived
+    instants (or the usual instant keywords)."""
+    if kw.get("LIST_PARA") is None:
+        return instants(ctx, kw, result.times, result.order)
+    try:
+        return select_instants(
+            result.times, result.order, inst=values_of(kw["LIST_PARA"]), interpolate=True
+        )
+    except Exception as exc:  # CommandError: locate it on the call
+        ctx.error(getattr(exc, "message", str(exc)), "LIST_PARA", kw)
+
+
+def on_second_node(ctx, kw, shock) -> bool:
+    """Whether NOEUD_CHOC / GROUP_NO_CHOC names the shock's second node (its
+    local coordinates DXLOC... are then those of node 2)."""
+    if kw.get("NOEUD_CHOC") is not None:
+        names = {str(kw["NOEUD_CHOC"])}
+    elif kw.get("GROUP_NO_CHOC") is not None:
+        mesh = result_mesh(kw)
+        names = {mesh.node_names[int(i)] for i in mesh.node_groups.get(kw["GROUP_NO_CHOC"], ())}
+    else:
+        return False
+    return shock.node_1 not in names and shock.node_2 in names
+
+
+def result_mesh(kw):
+    return kw["RESU_GENE"].basis.numbering.mesh
+
+
 def from_shock(ctx, kw, result):
     shock = find_shock(ctx, kw, result)
     para_x, para_y = kw.get("PARA_X", "INST"), kw.get("PARA_Y")
-    selection = instants(ctx, kw, result.times, result.order)
+    selection = shock_instants(ctx, kw, result)
+    second = on_second_node(ctx, kw, shock)
 
     def quantity(name, key):
         if name == "INST":
             return selection.times
+        if second and name in ("DXLOC", "DYLOC", "DZLOC"):
+            name = f"{name}_2"
         values = shock_quantity(shock, name)
         if values is None:
             known = ", ".join(sorted(shock.fields)) or "none"

@@ -881,3 +881,14 @@ def test_catalog_package_does_not_load_numpy():
         [sys.executable, "-c", code], capture_output=True, text=True, check=True
     )
     assert output.stdout.strip() == "False"
+
+
+def test_mesh_entity_names_lose_trailing_blanks():
+    from asterlite.catalog import PROC, SIMP, validate
+
+    command = PROC(
+        nom="NAMES", GROUP_NO=SIMP(statut="f", typ="grno", max="**"), T=SIMP(statut="f", typ="TXM")
+    )
+    keywords = validate(command, {"GROUP_NO": ("N5 ", "A"), "T": "x "})
+    assert keywords["GROUP_NO"] == ("N5", "A")
+    assert keywords["T"] == "x "  # free text keeps its blanks

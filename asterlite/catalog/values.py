@@ -17,6 +17,7 @@ from asterlite.lang.values import CO, Unknown
 
 # code_aster type names that hold plain text (mesh entity names, file names)
 TEXT_TYPES = frozenset({"TXM", "TX", "K8", "K16", "K24", "grma", "grno", "ma", "no", "Fichier"})
+NAME_TYPES = frozenset({"grma", "grno", "ma", "no"})
 BUILTIN_DESCRIPTIONS = {
     "R": "a real number (R)",
     "I": "an integer (I)",
@@ -103,6 +104,11 @@ def _convert(type_name, value):
     """The converted value, or None when ``value`` is not of ``type_name``."""
     if not isinstance(type_name, str):
         raise TypeError(f"catalogue type must be a name, got {type_name!r}")
+    if type_name in NAME_TYPES:
+        # mesh entity names are fixed-width identifiers in code_aster: trailing
+        # blanks ("N5 ") do not count
+        text = _as_text(value)
+        return text.rstrip() if text is not None else None
     if type_name in TEXT_TYPES:
         return _as_text(value)
     if type_name in CONVERTERS:
