@@ -138,8 +138,9 @@ def tube_problem() -> TubeProblem:
 
 
 class Harmonic:
-    """A multiplier with ``evaluate(times)``, as a FORMULE is to DYNA_VIBRA:
-    the engine samples it every half step (model.tabulate_excitation)."""
+    """A multiplier known only through ``evaluate(times)`` (what a FORMULE
+    calling a deck function is to DYNA_VIBRA): the engine samples it every
+    half step, one window at a time (model.tabulate_excitation)."""
 
     def __init__(self, amplitude: float, omega: float, phase: float) -> None:
         self.amplitude, self.omega, self.phase = amplitude, omega, phase
@@ -165,11 +166,22 @@ class TabulatedHarmonic(Harmonic):
         return np.interp(times, self.abscissas, self.ordinates)
 
 
+def harmonic_formula(amplitude: float, omega: float, phase: float):
+    """FORMULE(VALE='A*sin(W*INST+P)', NOM_PARA='INST', A=..., W=..., P=...):
+    the engine runs it as a compiled program at each instant."""
+    from asterlite.concepts.function import Formula
+
+    return Formula(
+        VALE="A*sin(W*INST+P)", NOM_PARA="INST", extra={"A": amplitude, "W": omega, "P": phase}
+    )
+
+
 def engine_inputs(problem: TubeProblem, t_end: float, dt: float, multiplier: str = "formula"):
     """(system, shocks, excitation) built by asterlite's model functions,
     as commands/dyna_vibra.py builds them. ``multiplier``: 'formula' (a
-    FORMULE, sampled by the engine every half step) or 'table' (a
-    DEFI_FONCTION with 64 points per period)."""
+    FORMULE, evaluated exactly at each instant by the kernel), 'sampled'
+    (a function known only by ``evaluate``, sampled every half step by
+    windows) or 'table' (a DEFI_FONCTION with 64 points per period)."""
     from asterlite.dynamics.model import (
         LinearSystem,
         ShockSpec,
@@ -208,9 +220,12 @@ def engine_inputs(problem: TubeProblem, t_end: float, dt: float, multiplier: str
     if multiplier == "table":
         sine = TabulatedHarmonic(FORCE_AMPLITUDE, w, 0.0, t_end)
         cosine = TabulatedHarmonic(FORCE_AMPLITUDE, w, math.pi / 2.0, t_end)
-    else:
+    elif multiplier == "sampled":
         sine = Harmonic(FORCE_AMPLITUDE, w, 0.0)
         cosine = Harmonic(FORCE_AMPLITUDE, w, math.pi / 2.0)
+    else:
+        sine = harmonic_formula(FORCE_AMPLITUDE, w, 0.0)
+        cosine = harmonic_formula(FORCE_AMPLITUDE, w, math.pi / 2.0)
     loads = [(problem.force_y, sine), (problem.force_z, cosine)]
     excitation = tabulate_excitation(N_MODES, loads, 0.0, t_end, dt / 2.0)
     return system, shocks, excitation

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.modes import GeneralizedModes
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.restitution import (
     FIELDS,
@@ -34,6 +35,8 @@ TRANSLATIONS = ("DX", "DY", "DZ")
 
 def run(ctx, kw):
     result = kw.get("RESU_GENE")
+    if isinstance(result, GeneralizedModes):
+        return restored_modes(ctx, kw, result)
     if not isinstance(result, TranGene):
         ctx.unsupported(
             f"REST_GENE_PHYS of a {getattr(result, 'aster_type', type(result).__name__)}",
@@ -126,3 +129,37 @@ def add_uniform_acceleration(ctx, kw, numbering, rows, times, out) -> None:
             [direction[TRANSLATIONS.index(c)] if c in TRANSLATIONS else 0.0 for c in components]
         )
         out["ACCE_ABSOLU"] = out["ACCE_ABSOLU"] + np.outer(function.evaluate(times), weights)
+
+
+def restored_modes(ctx, kw, modes: GeneralizedModes):
+    """A mode_gene restored on its projection basis: the modes Φ q_k (DEPL),
+    all of them or those chosen by NUME_ORDRE / NUME_MODE (1-based)."""
+    names = [n for n in as_tuple(kw.get("NOM_CHAM")) if n != "DEPL"]
+    if names and kw.get("TOUT_CHAM") != "OUI":
+        ctx.unsupported(f"NOM_CHAM={names[0]!r} of a mode_gene (DEPL only)", "NOM_CHAM", kw)
+    for keyword in ("MULT_APPUI", "CORR_STAT", "ACCE_MONO_APPUI"):
+        if kw.get(keyword) is not None:
+            ctx.unsupported(f"{keyword} on a mode_gene", keyword, kw)
+    restored = modes.physical(chosen_modes(ctx, kw, modes))
+    nodes = node_indices(ctx, kw, restored.numbering.mesh)
+    rows = dof_rows(restored.numbering, nodes, as_tuple(kw.get("NOM_CMP")))
+    if rows.size != restored.numbering.n_dofs:
+        numbering = restored.numbering
+        restored.numbering = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
+        restored.shapes = restored.shapes[rows, :]
+    return restored
+
+
+def chosen_modes(ctx, kw, modes: GeneralizedModes) -> list[int] | None:
+    """0-based indices of the modes NUME_MODE / NUME_ORDRE name (None: all)."""
+    if kw.get("NUME_MODE") is not None:
+        key, known = "NUME_MODE", [int(n) for n in modes.mode_numbers]
+    elif kw.get("NUME_ORDRE") is not None:
+        key, known = "NUME_ORDRE", list(range(1, modes.n_modes + 1))
+    else:
+        return None
+    wanted = [int(w) for w in as_tuple(kw[key])]
+    absent = [w for w in wanted if w not in known]
+    if absent:
+        ctx.error(f"{key} {absent[0]} is not among the {modes.n_modes} modes", key, kw)
+    return [known.index(w) for w in wanted]

@@ -238,3 +238,35 @@ def test_test_resu_reads_element_fields_of_results_and_fields():
     occurrence = dict(CHAM_GD=ElementFieldConcept(), GROUP_MA="BAR", NOM_CMP="SN")
     test_resu.run(ctx, kw(CHAM_ELEM=[{**occurrence, "GROUP_NO": "NO2", "VALE_CALC": 8.0}]))
     assert [t.ok for t in ctx.session.tests] == [True, True]
+
+
+def test_shock_quantities_interpolated_on_list_para_and_second_node():
+    from asterlite.concepts.lists import ListReal
+
+    result = small_transient()
+    shock = result.shocks[0]
+    shock.node_1, shock.node_2 = "NO1", "NO2"
+    shock.fields["DXLOC"] = np.zeros(11)
+    shock.fields["DXLOC_2"] = np.arange(11.0)
+    fn = recu_fonction.run(
+        context(),
+        kw(RESU_GENE=result, NOEUD_CHOC="NO2", PARA_Y="FN", LIST_PARA=ListReal([0.05])),
+    )
+    assert fn.ordinates[0] == pytest.approx(0.5 * np.sin(0.1 * np.pi))
+    dx = recu_fonction.run(context(), kw(RESU_GENE=result, NOEUD_CHOC="NO2", PARA_Y="DXLOC"))
+    assert dx.ordinates.tolist() == list(range(11))
+
+
+def test_rest_gene_phys_of_generalized_modes():
+    from asterlite.concepts.modes import GeneralizedModes, GeneralizedNumbering
+
+    basis = small_transient().basis
+    vectors = np.array([[1.0, 0.0], [1.0, 2.0]])
+    modes = GeneralizedModes(
+        GeneralizedNumbering(basis), vectors, np.array([3.0, 5.0]), np.ones(2), np.ones(2)
+    )
+    restored = rest_gene_phys.run(context(), kw(RESU_GENE=modes, NOM_CHAM="DEPL"))
+    assert np.allclose(restored.shapes, basis.shapes @ vectors)
+    second = rest_gene_phys.run(context(), kw(RESU_GENE=modes, NUME_ORDRE=(2,), GROUP_NO="NO2"))
+    assert np.allclose(second.shapes[:, 0], (basis.shapes @ vectors)[2:, 1])
+    assert second.frequencies.tolist() == [5.0]

@@ -196,6 +196,82 @@ class BucklingModes(ModeResult):
 
 
 @dataclass(eq=False)
+class ComplexModeResult(ModeResult):
+    """``CALC_MODES`` with MATR_AMOR or a complex stiffness (a ``mode_meca_c``):
+    modes of (λ² M + λ C + K) φ = 0, see :mod:`asterlite.modal.quadratic`.
+
+    ``shapes`` are complex; ``eigenvalues`` holds λ per mode (Im(λ) > 0);
+    ``frequencies`` = Im(λ)/2π (code_aster's FREQ); ``parameters`` has
+    AMOR_REDUIT = -Re(λ)/|λ|, OMEGA2 = Im(λ)², MASS_GENE, AMOR_GENE and
+    RIGI_GENE (code_aster's generalized parameters of complex vectors)."""
+
+    aster_types = ("mode_meca_c", "mode_meca", "resultat_sdaster")
+
+    eigenvalues: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=complex))
+
+    @property
+    def omega2(self) -> np.ndarray:
+        return np.asarray(self.eigenvalues, dtype=complex).imag ** 2
+
+    @property
+    def damping_ratios(self) -> np.ndarray:
+        lam = np.asarray(self.eigenvalues, dtype=complex)
+        modulus = np.where(np.abs(lam) > 0, np.abs(lam), 1.0)
+        return -lam.real / modulus
+
+    def rescale(self, factors, norm: str | None = None) -> None:
+        """Multiply each mode by its (complex) factor; generalized
+        parameters are recomputed from the matrices when they are known."""
+        factors = np.asarray(factors, dtype=complex)
+        self.shapes = self.shapes * factors[None, :]
+        if self.mass is not None and self.stiffness is not None:
+            from asterlite.modal.quadratic import generalized_parameters
+
+            damping = self.damping.matrix if self.damping is not None else None
+            gen = generalized_parameters(
+                self.shapes, self.stiffness.matrix, damping, self.mass.matrix
+            )
+            self.parameters.update(gen)
+            self.generalized_mass = gen["MASS_GENE"].copy()
+            self.generalized_stiffness = gen["RIGI_GENE"].copy()
+        else:
+            scale = np.abs(factors) ** 2
+            self.generalized_mass = self.generalized_mass * scale
+            self.generalized_stiffness = self.generalized_stiffness * scale
+            for key in ("MASS_GENE", "RIGI_GENE", "AMOR_GENE"):
+                if key in self.parameters:
+                    self.parameters[key] = np.asarray(self.parameters[key]) * scale
+        if norm is not None:
+            self.norm = norm
+
+    def select(self, indices) -> ComplexModeResult:
+        import dataclasses
+
+        indices = np.asarray(indices, dtype=int)
+        params = {}
+        for key, value in self.parameters.items():
+            value = np.asarray(value)
+            params[key] = value[indices] if value.shape[:1] == (self.n_modes,) else value
+        return dataclasses.replace(
+            self,
+            shapes=self.shapes[:, indices].copy(),
+            frequencies=np.asarray(self.frequencies)[indices].copy(),
+            generalized_mass=np.asarray(self.generalized_mass)[indices].copy(),
+            generalized_stiffness=np.asarray(self.generalized_stiffness)[indices].copy(),
+            parameters=params,
+            mode_labels=[self.mode_labels[i] for i in indices] if self.mode_labels else [],
+            eigenvalues=np.asarray(self.eigenvalues)[indices].copy(),
+        )
+
+    def shapes_at(self, nodes, components) -> np.ndarray:
+        rows = self.numbering.dof_indices(nodes, components)
+        out = np.zeros((len(rows), self.n_modes), dtype=complex)
+        present = rows >= 0
+        out[present] = self.shapes[rows[present], :]
+        return out
+
+
+@dataclass(eq=False)
 class MultElasResult(Concept):
     """``MACRO_ELAS_MULT`` / ``CREA_RESU(TYPE_RESU='MULT_ELAS')``: one static
     displacement field per load case.

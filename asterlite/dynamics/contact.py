@@ -75,7 +75,19 @@ def gap_and_normal(geometry, loc1, loc2, gap0, dist1, dist2, sign_y, sign_z, pol
     """
     polars = polar.reshape((1, polar.shape[0], polar.shape[1]))
     return obstacle_gap(
-        geometry, loc1[1], loc1[2], loc2[1], loc2[2], gap0, dist1, dist2, sign_y, sign_z, polars, 0, npolar
+        geometry,
+        loc1[1],
+        loc1[2],
+        loc2[1],
+        loc2[2],
+        gap0,
+        dist1,
+        dist2,
+        sign_y,
+        sign_z,
+        polars,
+        0,
+        npolar,
     )
 
 
@@ -478,7 +490,9 @@ def local_shock_forces(q, v, flags, params, shapes, rest, polars, drive, vint, o
             return s
         if in_contact:
             for m in range(n):
-                out[m] += shapes[s, 0, 0, m] * fx + shapes[s, 0, 1, m] * fy + shapes[s, 0, 2, m] * fz
+                out[m] += (
+                    shapes[s, 0, 0, m] * fx + shapes[s, 0, 1, m] * fy + shapes[s, 0, 2, m] * fz
+                )
             if two_nodes:
                 for m in range(n):
                     out[m] += -(

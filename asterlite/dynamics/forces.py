@@ -14,6 +14,7 @@ Bundles passed to the kernels (tuples of arrays, built by ``model.py``):
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from asterlite.dynamics.contact import P_DRIVE1, P_DRIVE2, shock_forces
@@ -45,11 +46,15 @@ def multiplier_at(abscissas, ordinates, row, count, left, right, t, cursors):
     last = count - 1
     if t <= abscissas[row, 0]:
         if left == 1 and t < abscissas[row, 0]:
-            return ordinates[row, 0] + (t - abscissas[row, 0]) * (ordinates[row, 1] - ordinates[row, 0]) / (abscissas[row, 1] - abscissas[row, 0])
+            return ordinates[row, 0] + (t - abscissas[row, 0]) * (
+                ordinates[row, 1] - ordinates[row, 0]
+            ) / (abscissas[row, 1] - abscissas[row, 0])
         return ordinates[row, 0]
     if t >= abscissas[row, last]:
         if right == 1 and t > abscissas[row, last]:
-            slope = (ordinates[row, last] - ordinates[row, last - 1]) / (abscissas[row, last] - abscissas[row, last - 1])
+            slope = (ordinates[row, last] - ordinates[row, last - 1]) / (
+                abscissas[row, last] - abscissas[row, last - 1]
+            )
             return ordinates[row, last] + (t - abscissas[row, last]) * slope
         return ordinates[row, last]
     lo = cursors[row]
@@ -71,7 +76,10 @@ def multiplier_at(abscissas, ordinates, row, count, left, right, t, cursors):
     width = abscissas[row, hi] - abscissas[row, lo]
     if width == 0.0:
         return ordinates[row, hi]
-    return ordinates[row, lo] + (t - abscissas[row, lo]) * (ordinates[row, hi] - ordinates[row, lo]) / width
+    return (
+        ordinates[row, lo]
+        + (t - abscissas[row, lo]) * (ordinates[row, hi] - ordinates[row, lo]) / width
+    )
 
 
 @njit(cache=True, inline="always")
@@ -184,12 +192,8 @@ def local_support_motion(t, rots, shapes, abscissas, ordinates, layout, cursors,
                 wy += shapes[s, node, 1, k] * w
                 wz += shapes[s, node, 2, k] * w
             for i in range(3):
-                drive[s, node, i] = (
-                    rots[s, i, 0] * dx + rots[s, i, 1] * dy + rots[s, i, 2] * dz
-                )
-                drive[s, node, 3 + i] = (
-                    rots[s, i, 0] * wx + rots[s, i, 1] * wy + rots[s, i, 2] * wz
-                )
+                drive[s, node, i] = rots[s, i, 0] * dx + rots[s, i, 1] * dy + rots[s, i, 2] * dz
+                drive[s, node, 3 + i] = rots[s, i, 0] * wx + rots[s, i, 1] * wy + rots[s, i, 2] * wz
 
 
 @njit(cache=True)

@@ -288,7 +288,11 @@ def unary_function(code, x):
     if code == ACOSH:
         return math.acosh(x) if x >= 1.0 else math.nan
     if code == ATANH:
-        return math.atanh(x) if abs(x) < 1.0 else (math.copysign(math.inf, x) if abs(x) == 1.0 else math.nan)
+        return (
+            math.atanh(x)
+            if abs(x) < 1.0
+            else (math.copysign(math.inf, x) if abs(x) == 1.0 else math.nan)
+        )
     if code == LOG:
         return math.log(x) if x > 0.0 else (-math.inf if x == 0.0 else math.nan)
     if code == LOG10:

@@ -72,7 +72,7 @@ def build_operators(rows, scalars, dt, n):
 def step(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
     rows, scalars = memory[0], memory[1]
-    lin, shk, exc = model[0], model[1], model[2]
+    shk, exc = model[1], model[2]
     n = q.shape[0]
     diagonal = scalars[S_DIAGONAL] == 1.0
     built = scalars[S_DT_BUILT]

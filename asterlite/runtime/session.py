@@ -182,8 +182,15 @@ class Session:
             self.overrides_used |= evaluator.overrides_used
 
     def run_all(self) -> None:
-        for path in self.run.deck_files:
-            self.run_file(path)
+        from asterlite.post import deck_api
+
+        # what concept methods print (INFO_NONL...) goes to this run's log
+        deck_api.set_sink(self.log)
+        try:
+            for path in self.run.deck_files:
+                self.run_file(path)
+        finally:
+            deck_api.set_sink(None)
         self.check_overrides_used()
 
     def unused_overrides(self) -> list[str]:
