@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.assembly import AssembledMatrix
+from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
 from asterlite.concepts.modes import GeneralizedMatrix
 from asterlite.fem.constraints import ConstraintError
 from asterlite.fem.selection import as_tuple
@@ -12,8 +12,10 @@ from asterlite.modal.buckling import critical_loads, select_critical
 from asterlite.modal.calc import (
     apply_norm,
     build_buckling_result,
+    build_complex_mode_result,
     build_generalized_result,
     build_mode_result,
+    complex_pencil,
     constrained_pencil,
     filter_modes,
     generalized_modes,
@@ -21,6 +23,8 @@ from asterlite.modal.calc import (
     select_modes,
 )
 from asterlite.modal.eigen import EigenError
+from asterlite.modal.quadratic import QuadraticError
+from asterlite.modal.quadratic import select as select_complex
 
 _DEFAULT_NMAX = {"PLUS_PETITE": 10, "CENTRE": 10, "PLUS_GRANDE": 1, "TOUT": 10}
 
@@ -33,10 +37,10 @@ def run(ctx, kw):
         return _generalized(ctx, kw, stiffness, mass)
     if not isinstance(stiffness, AssembledMatrix) or not isinstance(mass, AssembledMatrix):
         ctx.unsupported("CALC_MODES on these matrix types", "MATR_RIGI", kw)
-    if kw.get("MATR_AMOR") is not None:
-        ctx.unsupported("CALC_MODES with MATR_AMOR (complex modes)", "MATR_AMOR", kw)
     if mass.numbering is not stiffness.numbering:
         ctx.error("MATR_RIGI and MATR_MASS use different numberings", "MATR_MASS", kw)
+    if kw.get("MATR_AMOR") is not None or isinstance(stiffness, ComplexAssembledMatrix):
+        return _complex(ctx, kw, stiffness, mass, kw.get("MATR_AMOR"))
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))
@@ -139,4 +143,51 @@ def _generalized(ctx, kw, stiffness, mass):
     modes = build_generalized_result(stiffness, mass, omega2, vecs)
     for k, f in enumerate(modes.frequencies, start=1):
         ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
+    return modes
+
+
+def _complex(ctx, kw, stiffness, mass, damping):
+    """Damped modes (λ² M + λ C + K) φ = 0: a mode_meca_c."""
+    if damping is not None:
+        if not isinstance(damping, AssembledMatrix):
+            ctx.unsupported("MATR_AMOR of this type with physical matrices", "MATR_AMOR", kw)
+        if damping.numbering is not stiffness.numbering:
+            ctx.error("MATR_AMOR and MATR_RIGI use different numberings", "MATR_AMOR", kw)
+    option = kw.get("OPTION", "PLUS_PETITE")
+    calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
+    freq = as_tuple(calc_freq.get("FREQ"))
+    amor = calc_freq.get("AMOR_REDUIT")
+    amor = as_tuple(amor) if amor is not None else (0.0,)
+    nmax = calc_freq.get("NMAX_FREQ") or _DEFAULT_NMAX.get(option, 10)
+    if option in ("CENTRE", "BANDE", "PROCHE", "AJUSTE", "SEPARE") and not freq:
+        ctx.error(f"OPTION={option!r} needs CALC_FREQ/FREQ", "CALC_FREQ", kw)
+    try:
+        pencil = complex_pencil(stiffness, mass, damping)
+        lam, vecs = select_complex(
+            pencil, option, freq, int(nmax), amor if len(amor) > 1 else amor[0]
+        )
+    except (QuadraticError, ConstraintError) as exc:
+        ctx.error(str(exc), "OPTION", kw)
+    if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
+        lam, vecs = lam[: calc_freq["NMAX_FREQ"]], vecs[:, : calc_freq["NMAX_FREQ"]]
+    if lam.size == 0:
+        ctx.error("no eigenmode found for this selection", "CALC_FREQ", kw)
+    res = pencil.residuals(lam, vecs)
+    modes = build_complex_mode_result(stiffness, mass, damping, lam, pencil.expand(vecs))
+    modes.parameters["ERREUR"] = res
+    veri = (kw.factor("VERI_MODE") or [{}])[0]
+    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
+    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(res > max(tolerance, 1e-6)):
+        worst = int(np.argmax(res))
+        ctx.error(
+            f"mode {worst + 1} ({modes.frequencies[worst]:.6g} Hz) has a residual "
+            f"{res[worst]:.3g} above {tolerance:g}",
+            "VERI_MODE",
+            kw,
+        )
+    norm = kw.factor("NORM_MODE")
+    if norm:
+        apply_norm(modes, norm[0].get("NORME", "TRAN_ROTA"))
+    for k, (f, a) in enumerate(zip(modes.frequencies, modes.parameters["AMOR_REDUIT"]), start=1):
+        ctx.log(f"mode {k:4d}  {f:14.6e} Hz  reduced damping {a:12.5e}")
     return modes

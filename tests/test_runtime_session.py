@@ -97,3 +97,17 @@ def test_check_cli_json(tmp_path, capsys):
     result = json.loads(capsys.readouterr().out)
     assert result["decks"][0]["status"] == "ERROR"
     assert "did you mean NOM_PARA" in result["decks"][0]["message"]
+
+
+def test_check_imports_no_numerical_stack(tmp_path):
+    """`asterlite check` stays light: numpy, scipy and numba load on first use only."""
+    import subprocess
+    import sys
+
+    path = deck(tmp_path, FUNCTION_DECK)
+    code = (
+        "import sys; from asterlite.cli import main; main(['check', %r]); "
+        "print(sorted(m for m in ('numpy', 'scipy', 'numba') if m in sys.modules))" % str(path)
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip().splitlines()[-1] == "[]"

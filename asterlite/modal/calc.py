@@ -5,9 +5,14 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import AssembledMatrix
-from asterlite.concepts.modes import BucklingModes, GeneralizedModes, ModeResult
+from asterlite.concepts.modes import (
+    BucklingModes,
+    ComplexModeResult,
+    GeneralizedModes,
+    ModeResult,
+)
 from asterlite.fem.constraints import eliminate
-from asterlite.modal import normalize
+from asterlite.modal import normalize, quadratic
 from asterlite.modal.eigen import (
     EigenError,
     ReducedPencil,
@@ -78,6 +83,9 @@ def residuals(pencil: ReducedPencil, omega2, vecs) -> np.ndarray:
 
 def apply_norm(modes: ModeResult, norme: str, stiffness=None, mass=None) -> None:
     """NORM_MODE's NORME choices, in place."""
+    if isinstance(modes, ComplexModeResult):
+        apply_complex_norm(modes, norme, stiffness=stiffness, mass=mass)
+        return
     comps = modes.numbering.dof_components
     if norme == "MASS_GENE":
         m = mass if mass is not None else modes.mass.matrix
@@ -212,4 +220,65 @@ def build_generalized_result(stiffness, mass, omega2, vecs) -> GeneralizedModes:
             "MASS_GENE": gm,
             "RIGI_GENE": gk,
         },
+    )
+
+
+def apply_complex_norm(modes: ComplexModeResult, norme: str, stiffness=None, mass=None) -> None:
+    """NORM_MODE on complex modes (norms of :mod:`asterlite.modal.quadratic`)."""
+    comps = modes.numbering.dof_components
+    lam = np.asarray(modes.eigenvalues)
+    damping = modes.damping.matrix if modes.damping is not None else None
+    if norme == "MASS_GENE":
+        m = mass if mass is not None else modes.mass.matrix
+        factors = quadratic.mass_gene(modes.shapes, lam, m, damping)
+    elif norme == "RIGI_GENE":
+        k = stiffness if stiffness is not None else modes.stiffness.matrix
+        m = mass if mass is not None else modes.mass.matrix
+        factors = quadratic.rigi_gene(modes.shapes, lam, k, m)
+    elif norme == "EUCL":
+        factors = quadratic.hermitian(modes.shapes)
+    elif norme == "EUCL_TRAN":
+        mask = normalize.component_mask(comps, normalize.TRAN)
+        factors = quadratic.hermitian(modes.shapes, mask)
+    elif norme in ("TRAN", "TRAN_ROTA"):
+        selected = normalize.TRAN if norme == "TRAN" else normalize.TRAN_ROTA
+        mask = normalize.component_mask(comps, selected)
+        factors = quadratic.largest_modulus(modes.shapes, mask)
+    else:
+        raise ValueError(f"unknown norm {norme}")
+    modes.rescale(factors, norme)
+
+
+def complex_pencil(stiffness, mass, damping=None) -> quadratic.QuadraticPencil:
+    """The quadratic problem reduced on the numbering's relations."""
+    numbering = stiffness.numbering
+    b_matrix, _ = numbering.constraint_matrix()
+    elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
+    c = damping.matrix if damping is not None else None
+    return quadratic.QuadraticPencil(stiffness.matrix, c, mass.matrix, elimination)
+
+
+def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> ComplexModeResult:
+    """A mode_meca_c: largest component 1 + 0i, code_aster's per-mode parameters."""
+    numbering = stiffness.numbering
+    shapes = np.asarray(shapes, dtype=complex).reshape(numbering.n_dofs, -1)
+    shapes = shapes * quadratic.largest_modulus(shapes)[None, :]
+    lam = np.asarray(eigenvalues, dtype=complex)
+    c = damping.matrix if damping is not None else None
+    params = {"NUME_MODE": np.arange(1, lam.size + 1)}
+    params.update(quadratic.modal_quantities(lam))
+    params.update(quadratic.generalized_parameters(shapes, stiffness.matrix, c, mass.matrix))
+    return ComplexModeResult(
+        numbering=numbering,
+        shapes=shapes,
+        frequencies=params["FREQ"].copy(),
+        generalized_mass=params["MASS_GENE"].copy(),
+        generalized_stiffness=params["RIGI_GENE"].copy(),
+        mass=mass,
+        stiffness=stiffness,
+        kind="dynamic",
+        parameters=params,
+        norm="SANS_CMP: LAGR",
+        damping=damping,
+        eigenvalues=lam,
     )

@@ -286,17 +286,26 @@ def run_setting(
 ) -> Outcome:
     """Run the deck with one rung's keywords (``repeat`` times: the least
     integration time is kept; the values are those of the last run)."""
-    from asterlite.runtime.runner import run_deck
-
     overrides = overrides_for(setting, transients, extra)
     best = None
     for _ in range(max(1, repeat)):
-        report = run_deck(deck, keyword_overrides=overrides)
+        report = run_in_scratch(deck, overrides)
         if report.status not in RAN:
             break
         seconds = sum(t["integration_seconds"] for t in report.transients)
         best = seconds if best is None else min(best, seconds)
     return outcome_of(setting, report, best, pattern)
+
+
+def run_in_scratch(deck: Path, overrides: list | None = None):
+    """run_deck with an output folder (decks that print tables or results
+    need one) that is thrown away afterwards."""
+    import tempfile
+
+    from asterlite.runtime.runner import run_deck
+
+    with tempfile.TemporaryDirectory(prefix="asterlite-converge-") as scratch:
+        return run_deck(deck, Path(scratch), keyword_overrides=overrides)
 
 
 def outcome_of(setting: Setting, report, seconds: float | None, pattern: str | None) -> Outcome:
@@ -324,9 +333,9 @@ def outcome_of(setting: Setting, report, seconds: float | None, pattern: str | N
 
 
 def _one_line(message: str) -> str:
-    """The engine's message without the deck excerpt under it."""
+    """The engine's message without its deck location and the excerpt under it."""
     lines = [line.strip() for line in message.splitlines() if line.strip()]
-    return lines[0] if lines else ""
+    return re.sub(r"^.*?:\d+:\d+: ", "", lines[0]) if lines else ""
 
 
 # ------------------------------------------------------------------ errors
@@ -417,11 +426,9 @@ def run_study(
     progress: Callable[[Outcome], None] | None = None,
 ) -> Study:
     """Run the whole ladder and compare every run with the reference."""
-    from asterlite.runtime.runner import run_deck
-
     if against not in ("finest", "reference"):
         raise ConvergeError(f"--against {against!r}: expected finest or reference")
-    base = run_deck(deck)
+    base = run_in_scratch(deck)
     if base.status not in RAN:
         raise ConvergeError(f"the deck does not run as written: {_one_line(base.message)}")
     transients = [t for t in base.transients if t["steps"] > 0]
@@ -433,7 +440,7 @@ def run_study(
     outcomes = []
     for setting in [*settings, ref_setting]:
         if warmup and setting.scheme not in warmed:  # numba loads/compiles its kernels
-            run_deck(deck, keyword_overrides=overrides_for(setting, transients, extra, span=20))
+            run_in_scratch(deck, overrides_for(setting, transients, extra, span=20))
             warmed.add(setting.scheme)
         outcome = run_setting(
             deck, setting, transients, extra=extra, pattern=pattern, repeat=repeat
@@ -517,7 +524,7 @@ def table_rows(study: Study) -> list[tuple[str, ...]]:
                 str(o.steps) if o.status == OK else "-",
                 _num(o.max_error) if not o.is_reference else "0",
                 _num(o.order, ".2f"),
-                "-" if o.is_reference else (o.worst if o.status == OK else o.message[:90]),
+                "-" if o.is_reference else (o.worst if o.status == OK else o.message[:140]),
             )
         )
     return rows

@@ -178,8 +178,9 @@ def run_deck(
         report.tests = list(session.tests)
         report.timings = list(session.timings)
         report.overrides_used = sorted(session.overrides_used)
-        report.table_values = one_row_table_values(session.namespace)
-        report.transients, report.shocks = transient_summaries(session.produced)
+        if not check_only:  # results exist only when computed (and check stays light)
+            report.table_values = one_row_table_values(session.namespace)
+            report.transients, report.shocks = transient_summaries(session.produced)
         report.keyword_edits = list(session.keyword_edits)
     report.seconds = time.perf_counter() - start
     if output_dir is not None and not check_only:

@@ -182,16 +182,22 @@ class Session:
             self.overrides_used |= evaluator.overrides_used
 
     def run_all(self) -> None:
-        from asterlite.post import deck_api
+        if self.check_only:  # placeholders print nothing; keep start-up light
+            self._run_files()
+        else:
+            from asterlite.post import deck_api
 
-        # what concept methods print (INFO_NONL...) goes to this run's log
-        deck_api.set_sink(self.log)
-        try:
-            for path in self.run.deck_files:
-                self.run_file(path)
-        finally:
-            deck_api.set_sink(None)
+            # what concept methods print (INFO_NONL...) goes to this run's log
+            deck_api.set_sink(self.log)
+            try:
+                self._run_files()
+            finally:
+                deck_api.set_sink(None)
         self.check_overrides_used()
+
+    def _run_files(self) -> None:
+        for path in self.run.deck_files:
+            self.run_file(path)
 
     def unused_overrides(self) -> list[str]:
         return sorted(set(self.overrides) - self.overrides_used)
