@@ -3,9 +3,11 @@
 Ablations through the engine entry point (dynamics.integrate.integrate),
 each timed as the best of a few warm runs of the same number of steps:
 
-- the full benchmark, archiving every step and every 1000 steps;
-- the force multipliers tabulated with 2 points instead of one per half
-  step (what a FORMULE becomes: a binary search in ~10^5..10^7 points);
+- the full benchmark, archiving every step and every 1000 steps, through
+  the specialised DIFF_CENTRE loop and through the general path;
+- the force multipliers sampled by windows (a function known only by
+  ``evaluate``) instead of FORMULE programs;
+- the force multipliers tabulated with 2 points;
 - no shocks at all (linear modal system + excitation);
 - the shocks only (no excitation), from an initial state in contact.
 
@@ -14,11 +16,16 @@ Run: python benchmarks/profile_engine.py [n_steps]
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 
-import numpy as np
-import tube_floor
+# scipy's BLAS threads (used once by the eigen solver) would otherwise spin
+# beside the timed loops on small machines.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
+import tube_floor  # noqa: E402
 import tube_model as T
 
 from asterlite.dynamics.integrate import integrate
@@ -34,7 +41,7 @@ def best_of(function, repeats=5) -> float:
     return min(times)
 
 
-def integrate_with(system, shocks, excitation, n_steps, dt, pas_arch, q0=None):
+def integrate_with(system, shocks, excitation, n_steps, dt, pas_arch, q0=None, specialised=True):
     n = system.n_modes
     t_end = n_steps * dt
     q0 = np.zeros(n) if q0 is None else q0
@@ -50,6 +57,7 @@ def integrate_with(system, shocks, excitation, n_steps, dt, pas_arch, q0=None):
         dt,
         np.array([t_end]),
         pas_arch,
+        specialised=specialised,
     )
 
 
@@ -95,6 +103,12 @@ def main() -> None:
         ),
         "full benchmark, PAS_ARCH=1000": lambda: integrate_with(
             system, shocks, excitation, n_steps, dt, 1000
+        ),
+        "general path, PAS_ARCH=1000": lambda: integrate_with(
+            system, shocks, excitation, n_steps, dt, 1000, specialised=False
+        ),
+        "multipliers sampled by windows": lambda: integrate_with(
+            system, shocks, T.engine_inputs(problem, t_end, dt, "sampled")[2], n_steps, dt, 1000
         ),
         "2-point multipliers, PAS_ARCH=1000": lambda: integrate_with(
             system, shocks, two_point_excitation(problem, t_end), n_steps, dt, 1000

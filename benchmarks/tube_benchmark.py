@@ -121,7 +121,8 @@ def main() -> None:
     args = parser.parse_args()
 
     # memory first, in a fresh process, while this one is still small
-    memory_lines = [] if args.skip_memory else [memory_run(m) for m in ("formula", "table")]
+    multipliers = ("formula", "sampled", "table")
+    memory_lines = [] if args.skip_memory else [memory_run(m) for m in multipliers]
     problem = T.tube_problem()
     dt = T.stable_step(problem)
     n_steps = args.steps
@@ -222,7 +223,8 @@ def memory_run(multiplier: str) -> str:
     values = dict(item.split("=") for item in out.stdout.split())
     peak = float(values["peak_rss_mb"])
     what = {
-        "formula": "force multipliers as FORMULE (sampled every dt/2)",
+        "formula": "force multipliers as FORMULE (compiled, evaluated at each step)",
+        "sampled": "force multipliers known by evaluate() only (sampled every dt/2 by windows)",
         "table": "force multipliers as DEFI_FONCTION (64 points/period)",
     }[multiplier]
     return (

@@ -4,9 +4,10 @@ Run in a fresh process (tube_benchmark.py starts it that way) so that the
 peak resident set size (resource.getrusage, ru_maxrss) is this run's own.
 Prints one line of key=value pairs.
 
-Run: python benchmarks/tube_memory.py [n_steps] [pas_arch] [formula|table]
-(the force multiplier as a FORMULE, sampled every half step by the engine,
-or as a DEFI_FONCTION of 64 points per period).
+Run: python benchmarks/tube_memory.py [n_steps] [pas_arch] [formula|sampled|table]
+(the force multiplier as a FORMULE, run by the kernel at each step; as a
+function known only by ``evaluate``, sampled every half step one window at
+a time; or as a DEFI_FONCTION of 64 points per period).
 """
 
 from __future__ import annotations

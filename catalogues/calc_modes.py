@@ -35,7 +35,9 @@ def _sdprod(kw) -> str:
     if kw.get("TYPE_RESU") in ("MODE_FLAMB", "GENERAL"):
         return "mode_flamb"
     rigi = kw.get("MATR_RIGI")
-    if kw.get("MATR_AMOR") is not None or _satisfies(rigi, "matr_asse_depl_c"):
+    # damped modes of physical matrices are complex; of generalized ones, mode_gene
+    physical_damping = _satisfies(kw.get("MATR_AMOR"), "matr_asse_depl_r")
+    if physical_damping or _satisfies(rigi, "matr_asse_depl_c"):
         return "mode_meca_c"
     if _satisfies(rigi, "matr_asse_pres_r"):
         return "mode_acou"

@@ -12,9 +12,11 @@ from asterlite.modal.buckling import critical_loads, select_critical
 from asterlite.modal.calc import (
     apply_norm,
     build_buckling_result,
+    build_complex_generalized_result,
     build_complex_mode_result,
     build_generalized_result,
     build_mode_result,
+    complex_generalized_modes,
     complex_pencil,
     constrained_pencil,
     filter_modes,
@@ -126,10 +128,10 @@ def _critical(ctx, kw):
 
 def _generalized(ctx, kw, stiffness, mass):
     """Modes of projected matrices (a mode_gene): a dense pencil, no relations."""
-    if kw.get("MATR_AMOR") is not None:
-        ctx.unsupported("CALC_MODES with MATR_AMOR (complex modes)", "MATR_AMOR", kw)
     if stiffness.matrix.shape != mass.matrix.shape:
         ctx.error("MATR_RIGI and MATR_MASS differ in size", "MATR_MASS", kw)
+    if kw.get("MATR_AMOR") is not None:
+        return _generalized_complex(ctx, kw, stiffness, mass, kw["MATR_AMOR"])
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))
@@ -188,6 +190,41 @@ def _complex(ctx, kw, stiffness, mass, damping):
     norm = kw.factor("NORM_MODE")
     if norm:
         apply_norm(modes, norm[0].get("NORME", "TRAN_ROTA"))
-    for k, (f, a) in enumerate(zip(modes.frequencies, modes.parameters["AMOR_REDUIT"]), start=1):
+    ratios = modes.parameters["AMOR_REDUIT"]
+    for k, (f, a) in enumerate(zip(modes.frequencies, ratios, strict=True), start=1):
+        ctx.log(f"mode {k:4d}  {f:14.6e} Hz  reduced damping {a:12.5e}")
+    return modes
+
+
+def _generalized_complex(ctx, kw, stiffness, mass, damping):
+    """Damped modes of projected matrices: a mode_gene with complex vectors."""
+    if not isinstance(damping, GeneralizedMatrix):
+        ctx.error("MATR_AMOR must be generalized like MATR_RIGI", "MATR_AMOR", kw)
+    if damping.matrix.shape != stiffness.matrix.shape:
+        ctx.error("MATR_AMOR and MATR_RIGI differ in size", "MATR_AMOR", kw)
+    option = kw.get("OPTION", "PLUS_PETITE")
+    calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
+    freq = as_tuple(calc_freq.get("FREQ"))
+    amor = as_tuple(calc_freq.get("AMOR_REDUIT")) or (0.0,)
+    nmax = calc_freq.get("NMAX_FREQ") or _DEFAULT_NMAX.get(option, 10)
+    if option in ("CENTRE", "BANDE", "PROCHE", "AJUSTE", "SEPARE") and not freq:
+        ctx.error(f"OPTION={option!r} needs CALC_FREQ/FREQ", "CALC_FREQ", kw)
+    try:
+        lam, vecs, _res = complex_generalized_modes(
+            stiffness.matrix,
+            mass.matrix,
+            damping.matrix,
+            option,
+            freq,
+            int(nmax),
+            amor if len(amor) > 1 else amor[0],
+        )
+    except QuadraticError as exc:
+        ctx.error(str(exc), "OPTION", kw)
+    if lam.size == 0:
+        ctx.error("no eigenmode found for this selection", "CALC_FREQ", kw)
+    modes = build_complex_generalized_result(stiffness, mass, damping, lam, vecs)
+    ratios = modes.parameters["AMOR_REDUIT"]
+    for k, (f, a) in enumerate(zip(modes.frequencies, ratios, strict=True), start=1):
         ctx.log(f"mode {k:4d}  {f:14.6e} Hz  reduced damping {a:12.5e}")
     return modes

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.modes import ModeResult
+from asterlite.concepts.modes import ComplexModeResult, ModeResult
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.calc import filter_modes
 
@@ -57,7 +57,15 @@ def run(ctx, kw):
         result = parts[0]
     else:
         keys = set.intersection(*(set(p.parameters) for p in parts))
-        result = ModeResult(
+        extra = {}
+        cls = ModeResult
+        if all(isinstance(p, ComplexModeResult) for p in parts):
+            cls = ComplexModeResult
+            extra = {
+                "eigenvalues": np.concatenate([p.eigenvalues for p in parts]),
+                "damping": parts[0].damping,
+            }
+        result = cls(
             numbering=numbering,
             shapes=np.hstack([p.shapes for p in parts]),
             frequencies=np.concatenate([p.frequencies for p in parts]),
@@ -71,6 +79,7 @@ def run(ctx, kw):
             },
             norm=parts[0].norm,
             mode_labels=[lab for p in parts for lab in p.mode_labels],
+            **extra,
         )
     if result.n_modes == 0:
         ctx.error("no mode is left after filtering", "FILTRE_MODE", kw)

@@ -282,3 +282,47 @@ def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> 
         damping=damping,
         eigenvalues=lam,
     )
+
+
+def complex_generalized_modes(k_gene, m_gene, c_gene, option: str, freq=(), nmax=10, amor=0.0):
+    """(λ, vectors, residuals) of a projected quadratic problem (dense, unconstrained)."""
+    import scipy.sparse as sp
+
+    from asterlite.fem.constraints import Elimination
+
+    n = np.asarray(k_gene).shape[0]
+    identity = Elimination(
+        sp.identity(n, format="csr"), np.zeros(n), np.arange(n), np.array([], dtype=int)
+    )
+    pencil = quadratic.QuadraticPencil(
+        np.asarray(k_gene),
+        None if c_gene is None else np.asarray(c_gene),
+        np.asarray(m_gene),
+        identity,
+    )
+    lam, vecs = quadratic.select(pencil, option, freq, nmax, amor)
+    return lam, vecs, pencil.residuals(lam, vecs)
+
+
+def build_complex_generalized_result(stiffness, mass, damping, lam, vecs) -> GeneralizedModes:
+    """A mode_gene of complex modes: largest component 1 + 0i, FREQ = Im(λ)/2π,
+    AMOR_REDUIT and the generalized parameters as for a mode_meca_c."""
+    vecs = np.asarray(vecs, dtype=complex)
+    vecs = vecs * quadratic.largest_modulus(vecs)[None, :]
+    c = None if damping is None else np.asarray(damping.matrix)
+    params = {"NUME_MODE": np.arange(1, vecs.shape[1] + 1)}
+    params.update(quadratic.modal_quantities(lam))
+    params.update(
+        quadratic.generalized_parameters(
+            vecs, np.asarray(stiffness.matrix), c, np.asarray(mass.matrix)
+        )
+    )
+    params["EIGENVALUE"] = np.asarray(lam, dtype=complex)
+    return GeneralizedModes(
+        numbering=stiffness.numbering,
+        vectors=vecs,
+        frequencies=params["FREQ"].copy(),
+        generalized_mass=params["MASS_GENE"].copy(),
+        generalized_stiffness=params["RIGI_GENE"].copy(),
+        parameters=params,
+    )

@@ -70,13 +70,16 @@ def linearize(k, c, m) -> tuple[np.ndarray, np.ndarray]:
 
 
 def dense_eigenpairs(k, c, m) -> tuple[np.ndarray, np.ndarray]:
-    """Every finite eigenpair (λ, φ) of the quadratic problem."""
+    """Every finite eigenpair (λ, φ) of the quadratic problem.
+
+    A singular mass gives infinite eigenvalues whose vectors are z = [0; v]
+    (M v = 0): they are dropped, whether LAPACK returns them as inf or as
+    huge finite numbers (then the φ part of z is at round-off level)."""
     n = k.shape[0]
     a, b = linearize(k, c, m)
     lam, z = sla.eig(a, b)
-    finite = np.isfinite(lam)
-    scale = np.max(np.abs(lam[finite]), initial=0.0)
-    finite &= np.abs(lam) < 1e12 * max(scale, 1.0)
+    phi_part = np.linalg.norm(z[:n], axis=0) / np.maximum(np.linalg.norm(z, axis=0), 1e-300)
+    finite = np.isfinite(lam) & (phi_part > 1e-12)
     return lam[finite], z[:n, finite]
 
 
