@@ -8,12 +8,16 @@
   GROUP_NO / GROUP_MA (a MED profile) and for the components NOM_CMP; the
   mesh comes with it. ``CHAM_GD`` writes a nodal field. Field names follow
   code_aster (result name on 8 characters padded with ``_`` + field name),
-  or NOM_CHAM_MED / NOM_RESU_MED. Every IMPR_RESU of a run on the same unit
+  or NOM_CHAM_MED / NOM_RESU_MED. Element fields (``*_ELNO`` by element
+  node, ``*_ELGA`` at Gauss points, on the cells of GROUP_MA / MAILLE) of a
+  result or a ``cham_elem`` (CREA_CHAMP) are written as code_aster does
+  (MED ``MED_NOEUD_MAILLE`` / Gauss-point fields). Every IMPR_RESU of a run on the same unit
   adds to the same file (a MED file left by an earlier run is replaced).
 - ``FORMAT='RESULTAT'`` (unit 8): a text listing of the same selections,
   one block per field and step, one line per node (FORMAT_R, IMPR_COOR,
-  NOM_PARA / TOUT_PARA, VALE_MAX / VALE_MIN); a mesh alone is listed in
-  ASTER format.
+  NOM_PARA / TOUT_PARA, VALE_MAX / VALE_MIN), or for element fields one
+  block per cell with a line per node (ELNO) or Gauss point (ELGA); a mesh
+  alone is listed in ASTER format.
 - ``FORMAT='ASTER'`` (unit 26): a mesh in code_aster's text mesh format.
 """
 
@@ -26,10 +30,11 @@ import numpy as np
 
 from asterlite.concepts.assembly import NodalField
 from asterlite.concepts.mesh import Mesh
-from asterlite.concepts.modes import ModeResult
+from asterlite.concepts.modes import FieldOnElements, ModeResult
 from asterlite.concepts.table import Table
 from asterlite.errors import CommandError
 from asterlite.io.med_writer import (
+    ElementSeries,
     MedWriteError,
     NodalSeries,
     dofs_to_nodal,
@@ -129,14 +134,13 @@ def result_mesh(result) -> Mesh:
 
 
 def field_names(ctx, kw, result) -> list[str]:
-    """Nodal fields to write: NOM_CHAM, or all nodal fields the result holds
-    (element fields are left out, with a note in the log)."""
-    available = nodal_field_names(result)
+    """Fields to write: NOM_CHAM, or every field the result holds (nodal
+    fields first, then element fields)."""
+    nodal = nodal_field_names(result)
+    available = nodal + [n for n in element_field_names(result) if n not in nodal]
     if kw.get("NOM_CHAM") is not None and kw.get("TOUT_CHAM") != "OUI":
         names = list(dict.fromkeys(as_tuple(kw["NOM_CHAM"])))
         for name in names:
-            if name in element_field_names(result) and name not in available:
-                ctx.unsupported(f"writing the element field {name}", "NOM_CHAM", kw)
             if name not in available:
                 ctx.error(
                     f"the result {result.name or ''} has no field {name} "
@@ -145,10 +149,80 @@ def field_names(ctx, kw, result) -> list[str]:
                     kw,
                 )
         return names
-    skipped = [n for n in element_field_names(result) if n not in available]
-    if skipped:
-        ctx.log(f"element fields not written: {', '.join(skipped)}")
     return available
+
+
+def is_element_field(result, name: str) -> bool:
+    return name not in nodal_field_names(result) and name in element_field_names(result)
+
+
+def element_location(name: str) -> str:
+    return "ELGA" if name.endswith("_ELGA") else "ELNO"
+
+
+def chosen_cells(ctx, kw, mesh, carried) -> np.ndarray:
+    """Rows of ``carried`` (the cells a field is on) named by GROUP_MA /
+    MAILLE (all rows when neither is given)."""
+    carried = np.asarray(carried, dtype=int)
+    names = as_tuple(kw.get("GROUP_MA")) + as_tuple(kw.get("MAILLE"))
+    if not names or kw.get("TOUT") == "OUI":
+        return np.arange(carried.size)
+    wanted: list[int] = []
+    for group in as_tuple(kw.get("GROUP_MA")):
+        if group not in mesh.cell_groups:
+            ctx.error(f"mesh has no cell group {group!r}", "GROUP_MA", kw)
+        wanted.extend(int(c) for c in mesh.cell_groups[group])
+    for cell_name in as_tuple(kw.get("MAILLE")):
+        found = mesh.find_cell(str(cell_name))
+        if found is None:
+            ctx.error(f"mesh has no cell {cell_name!r}", "MAILLE", kw)
+        wanted.append(int(found))
+    wanted_set = set(wanted)
+    rows = np.array([k for k, c in enumerate(carried) if int(c) in wanted_set], dtype=int)
+    if rows.size == 0:
+        ctx.error("the field has no value on the requested cells", "GROUP_MA", kw)
+    return rows
+
+
+def element_components(ctx, kw, name: str, components) -> list[int]:
+    """Indices of NOM_CMP in ``components`` (all when NOM_CMP is absent)."""
+    asked = components_of(kw)
+    if not asked:
+        return list(range(len(components)))
+    absent = [c for c in asked if c not in components]
+    if absent:
+        ctx.error(
+            f"field {name} has no component {absent[0]} (it has {', '.join(components)})",
+            "NOM_CMP",
+            kw,
+        )
+    return [list(components).index(c) for c in asked]
+
+
+def element_block(ctx, kw, result, name: str):
+    """(cells, components, values (n_selected_steps, n_cells, n_points,
+    n_comp), step indices) of an element field of a result."""
+    field = result.element_fields[name]
+    indices = chosen_steps(ctx, kw, result_steps(result))
+    rows = chosen_cells(ctx, kw, result_mesh(result), field.cells)
+    cmp_idx = element_components(ctx, kw, name, field.components)
+    values = np.asarray(field.values)[indices][:, rows][..., cmp_idx]
+    comps = tuple(field.components[k] for k in cmp_idx)
+    return np.asarray(field.cells, dtype=int)[rows], comps, values, indices
+
+
+def cham_elem_block(ctx, kw, field: FieldOnElements):
+    """(cells, components, values (1, n_cells, n_points, n_comp)) of a cham_elem."""
+    rows = chosen_cells(ctx, kw, field.mesh, field.cells)
+    cmp_idx = element_components(ctx, kw, field.field_name, field.components)
+    values = np.asarray(field.values)[rows][..., cmp_idx][None]
+    comps = tuple(field.components[k] for k in cmp_idx)
+    return np.asarray(field.cells, dtype=int)[rows], comps, values
+
+
+def cham_elem_location(field: FieldOnElements) -> str:
+    kind = str(field.field_type or field.field_name or "")
+    return "ELGA" if "ELGA" in kind else "ELNO"
 
 
 def components_of(kw) -> tuple[str, ...]:
@@ -223,6 +297,9 @@ def med_occurrence(ctx, occ):
             ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
         mesh = mesh or result_mesh(result)
         return mesh, mesh_label(mesh), result_series(ctx, occ, result)
+    if isinstance(field, FieldOnElements):
+        mesh = mesh or field.mesh
+        return mesh, mesh_label(mesh), [cham_elem_series(ctx, occ, field)]
     if field is not None:
         if not isinstance(field, NodalField):
             ctx.unsupported(f"CHAM_GD of type {field.aster_type}", "CHAM_GD", occ)
@@ -258,11 +335,33 @@ def result_series(ctx, occ, result) -> list[NodalSeries]:
     times = steps.time_values()
     out = []
     for field, med_name in zip(fields, names, strict=True):
+        if is_element_field(result, field):
+            cells, comps, values, indices = element_block(ctx, occ, result, field)
+            out.append(
+                ElementSeries(
+                    med_name,
+                    element_location(field),
+                    cells,
+                    comps,
+                    values,
+                    times[indices],
+                    steps.orders[indices],
+                )
+            )
+            continue
         nodes, comps, values, indices = result_block(ctx, occ, result, field)
         out.append(
             NodalSeries(med_name, comps, values, times[indices], steps.orders[indices], nodes)
         )
     return out
+
+
+def cham_elem_series(ctx, occ, field: FieldOnElements) -> ElementSeries:
+    cells, comps, values = cham_elem_block(ctx, occ, field)
+    given = as_tuple(occ.get("NOM_CHAM_MED"))
+    name = str(given[0]) if given else (occ.get("NOM_RESU_MED") or field.name or "CHAMP")
+    location = cham_elem_location(field)
+    return ElementSeries(name, location, cells, comps, values, np.zeros(1), np.array([-1]))
 
 
 def cham_gd_series(ctx, occ, field: NodalField) -> NodalSeries:
@@ -312,6 +411,11 @@ def text_occurrence(ctx, occ) -> list[str]:
         if not is_physical_result(result):
             ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
         return lines + result_text(ctx, occ, result, real_format)
+    if isinstance(field, FieldOnElements):
+        cells, comps, values = cham_elem_block(ctx, occ, field)
+        location = cham_elem_location(field)
+        lines.append(f" {ELEMENT_TITLES[location]} {field.name or ''}".rstrip())
+        return lines + element_lines(field.mesh, cells, location, comps, values[0], real_format)
     if field is not None:
         if not isinstance(field, NodalField):
             ctx.unsupported(f"CHAM_GD of type {field.aster_type}", "CHAM_GD", occ)
@@ -335,7 +439,12 @@ def result_text(ctx, occ, result, real_format: str) -> list[str]:
     steps = result_steps(result)
     fields = field_names(ctx, occ, result)
     lines = [f" RESULTAT {result.name or ''} ({result.aster_type})"]
-    blocks = {f: result_block(ctx, occ, result, f) for f in fields}
+    blocks = {
+        f: element_block(ctx, occ, result, f)
+        if is_element_field(result, f)
+        else result_block(ctx, occ, result, f)
+        for f in fields
+    }
     indices = chosen_steps(ctx, occ, steps)
     params = parameter_names(ctx, occ, result, steps)
     if params and occ.get("FORM_TABL", "NON") != "NON":
@@ -344,8 +453,11 @@ def result_text(ctx, occ, result, real_format: str) -> list[str]:
     mesh = result_mesh(result)
     for k, step in enumerate(indices):
         for field, (nodes, comps, values, _) in blocks.items():
+            element = is_element_field(result, field)
+            location = element_location(field)
             lines.append(" " + "-" * 78)
-            lines.append(f" CHAMP AUX NOEUDS DE NOM SYMBOLIQUE  {field}")
+            title = ELEMENT_TITLES[location] if element else "CHAMP AUX NOEUDS"
+            lines.append(f" {title} DE NOM SYMBOLIQUE  {field}")
             lines.append(step_header(steps, step))
             shown = steps.parameters(step)
             lines.extend(
@@ -354,7 +466,37 @@ def result_text(ctx, occ, result, real_format: str) -> list[str]:
                 if p not in shown
             )
             lines.append("")
-            lines.extend(node_lines(occ, mesh, nodes, comps, values[k], real_format))
+            if element:
+                lines.extend(element_lines(mesh, nodes, location, comps, values[k], real_format))
+            else:
+                lines.extend(node_lines(occ, mesh, nodes, comps, values[k], real_format))
+    return lines
+
+
+ELEMENT_TITLES = {
+    "ELNO": "CHAMP PAR ELEMENT AUX NOEUDS",
+    "ELGA": "CHAMP PAR ELEMENT AUX POINTS DE GAUSS",
+}
+
+
+def element_lines(mesh: Mesh, cells, location: str, comps, values, real_format: str) -> list:
+    """One block per cell (``MAILLE name``), then one line per element node
+    (ELNO: the node's name) or Gauss point (ELGA: its number) with the
+    component values; ``values`` is (n_cells, n_points, n_comp)."""
+    width = len(fortran_real(0.0, real_format))
+    first = "NOEUD" if location == "ELNO" else "POINT"
+    header = f"  {first:<8}" + "".join(f" {c:>{width}}" for c in comps)
+    lines: list[str] = []
+    for k, cell in enumerate(cells):
+        lines.append(f" MAILLE {mesh.cell_names[int(cell)]}")
+        lines.append(header)
+        connectivity = mesh.cell_nodes[int(cell)]
+        for point in range(values.shape[1]):
+            label = mesh.node_names[int(connectivity[point])] if location == "ELNO" else point + 1
+            numbers = "".join(
+                f" {fortran_real(float(v) + 0.0, real_format)}" for v in values[k, point]
+            )
+            lines.append(f"  {label!s:<8}" + numbers)
     return lines
 
 

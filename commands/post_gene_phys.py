@@ -12,10 +12,15 @@ ACCE_ABSOLU with ACCE_MONO_APPUI adds γ(t)·DIRECTION to translations;
 without either the absolute field equals the relative one (code_aster warns
 too).
 
+Element fields (``*_ELNO``, ``*_ELGA``) recombine, with q(t), the fields
+CALC_CHAMP stored on the modes, on the cells of GROUP_MA / MAILLE.
+
 The table follows code_aster: one row per instant, component and node (in
 that nesting: components outer, nodes inner, as code_aster fills it), with
 the parameters NUME_OBSE, INST, NOM_CHAM, NOM_CMP, NOEUD (node number, as
 code_aster 17 names nodes), MAILLE, POINT (empty for nodal fields), VALE_R.
+Element fields give one row per instant, component, cell and point (ELNO:
+MAILLE and NOEUD, the cell's node; ELGA: MAILLE and POINT ``PT i``).
 """
 
 from __future__ import annotations
@@ -68,10 +73,10 @@ def run(ctx, kw):
 
 def observation_rows(ctx, occ, result, basis, number: int) -> list[dict]:
     field = occ.get("NOM_CHAM", "DEPL")
-    if field not in NODAL_FIELDS:
-        ctx.unsupported(f"NOM_CHAM={field!r} (nodal DEPL/VITE/ACCE fields only)", "NOM_CHAM", occ)
     if occ.get("FREQ") is not None or occ.get("LIST_FREQ") is not None:
         ctx.error("FREQ / LIST_FREQ apply to harmonic results", "FREQ", occ)
+    if field not in NODAL_FIELDS:
+        return element_rows(ctx, occ, result, basis, number, field)
     numbering = basis.numbering
     mesh = numbering.mesh
     nodes = node_indices(ctx, occ, mesh, allow_all=False)
@@ -97,6 +102,93 @@ def observation_rows(ctx, occ, result, basis, number: int) -> list[dict]:
                 }
             )
     return rows
+
+
+def element_rows(ctx, occ, result, basis, number: int, name: str) -> list[dict]:
+    """Rows of an element field of the modes (``*_ELNO``, ``*_ELGA`` stored by
+    CALC_CHAMP on the basis) recombined with q(t): components outer, then
+    cells, then points, as code_aster fills the table; ELNO rows name the
+    cell (MAILLE) and its node (NOEUD), ELGA rows the cell and ``PT i``."""
+    modal = (getattr(basis, "element_fields", None) or {}).get(name)
+    if modal is None:
+        ctx.error(
+            f"{name} is not computed on the modal basis (CALC_CHAMP on the modes first)",
+            "NOM_CHAM",
+            occ,
+        )
+    mesh = basis.numbering.mesh
+    cells = observed_cells(ctx, occ, mesh, modal)
+    comps = tuple(as_tuple(occ.get("NOM_CMP"))) or modal.components
+    absent = [c for c in comps if c not in modal.components]
+    if absent:
+        ctx.error(
+            f"{name} has no component {absent[0]!r} (it has {', '.join(modal.components)})",
+            "NOM_CMP",
+            occ,
+        )
+    selection = selection_from_keywords(ctx, occ, result.times, result.order)
+    generalized = selection.apply(result.depl)
+    position = {int(c): i for i, c in enumerate(modal.cells)}
+    rows_of_cells = [position[int(c)] for c in cells]
+    picked = modal.values[:, rows_of_cells][..., [modal.components.index(c) for c in comps]]
+    values = np.tensordot(generalized, picked, axes=(1, 0))  # (instants, cells, points, cmps)
+    by_node = name.endswith("_ELNO")
+    labels = support_labels(mesh, cells, picked.shape[2], by_node)
+    second_key = "NOEUD" if by_node else "POINT"
+    rows = []
+    for i, instant in enumerate(selection.times):
+        for comp_index, comp in enumerate(comps):
+            for cell_pos, point, cell_label, second in labels:
+                rows.append(
+                    {
+                        "NUME_OBSE": number,
+                        "INST": float(instant),
+                        "NOM_CHAM": name,
+                        "NOM_CMP": comp,
+                        "MAILLE": cell_label,
+                        second_key: second,
+                        "VALE_R": float(values[i, cell_pos, point, comp_index]),
+                    }
+                )
+    return rows
+
+
+def observed_cells(ctx, occ, mesh, modal) -> np.ndarray:
+    """Cells named by GROUP_MA / MAILLE (in order, without repeats), all
+    carrying the modal element field."""
+    chosen: list[int] = []
+    for group in as_tuple(occ.get("GROUP_MA")):
+        if group not in mesh.cell_groups:
+            ctx.error(f"mesh has no cell group {group!r}", "GROUP_MA", occ)
+        chosen.extend(int(i) for i in mesh.cell_groups[group])
+    for cell_name in as_tuple(occ.get("MAILLE")):
+        found = mesh.find_cell(str(cell_name))
+        if found is None:
+            ctx.error(f"mesh has no cell {cell_name!r}", "MAILLE", occ)
+        chosen.append(int(found))
+    if not chosen:
+        ctx.error("an element field observation needs GROUP_MA or MAILLE", "GROUP_MA", occ)
+    cells = np.array(list(dict.fromkeys(chosen)), dtype=int)
+    carried = set(int(c) for c in modal.cells)
+    missing = [c for c in cells if int(c) not in carried]
+    if missing:
+        ctx.error(
+            f"{modal.name} is not computed on cell {mesh.cell_names[missing[0]]}", "GROUP_MA", occ
+        )
+    return cells
+
+
+def support_labels(mesh, cells, n_points: int, by_node: bool) -> list[tuple]:
+    """(cell position, point, MAILLE, NOEUD or POINT) for each point of each
+    cell: cells by number and nodes by number (code_aster 17), Gauss points
+    as ``PT i``."""
+    labels = []
+    for pos, cell in enumerate(cells):
+        nodes = mesh.cell_nodes[int(cell)]
+        for point in range(n_points):
+            second = str(int(nodes[point]) + 1) if by_node else f"PT {point + 1}"
+            labels.append((pos, point, str(int(cell) + 1), second))
+    return labels
 
 
 def observed_components(ctx, occ, numbering, nodes) -> tuple[str, ...]:

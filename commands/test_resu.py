@@ -2,7 +2,8 @@
 
 RESU (RESULTAT + NOM_CHAM + node + NOM_CMP at NUME_ORDRE / INST, or PARA of a
 state, or TYPE_TEST over a field), GENE (RESU_GENE + NUME_CMP_GENE, or
-VECT_GENE), CHAM_NO (CHAM_GD + node + NOM_CMP, or TYPE_TEST). Verdicts:
+VECT_GENE), CHAM_NO (CHAM_GD + node + NOM_CMP, or TYPE_TEST), CHAM_ELEM
+(a cham_elem at a cell node or Gauss point, or TYPE_TEST). Verdicts:
 ``asterlite.post.checks``.
 """
 
@@ -10,8 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.assembly import NodalField
-from asterlite.concepts.modes import GeneralizedVector, ModeResult
+from asterlite.concepts.assembly import ElementField, NodalField
+from asterlite.concepts.modes import FieldOnElements, GeneralizedVector, ModeResult
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.checks import record_check, reduce_values
 from asterlite.post.restitution import (
@@ -182,18 +183,37 @@ class _FieldHolder:
 
 
 def check_element_field(ctx, occ, where):
-    """CHAM_ELEM: one component of an element field (CREA_CHAMP EXTR...) at a
-    cell node (GROUP_MA + GROUP_NO / NOEUD) or point (POINT). The field
-    concept holds ``element_field`` (an ElementField with one order) and
-    ``mesh``."""
+    """CHAM_ELEM: one component of an element field at a cell node (GROUP_MA
+    + GROUP_NO / NOEUD) or point (POINT), or TYPE_TEST over its values (of
+    NOM_CMP when given). The field is a ``cham_elem`` from CREA_CHAMP
+    (:class:`FieldOnElements`) or a concept holding ``element_field`` (an
+    ElementField with one order) and ``mesh``."""
     concept = occ.get("CHAM_GD")
-    field = getattr(concept, "element_field", None)
-    mesh = getattr(concept, "mesh", None)
+    field, mesh = element_field_of(concept)
     if field is None or mesh is None:
         kind = getattr(concept, "aster_type", type(concept).__name__)
         ctx.unsupported(f"TEST_RESU/CHAM_ELEM of a {kind}", "CHAM_GD", occ)
     if occ.get("TYPE_TEST") is not None:
-        ctx.unsupported("TEST_RESU/CHAM_ELEM with TYPE_TEST", "TYPE_TEST", occ)
+        values = np.asarray(field.values)[0]
+        if occ.get("NOM_CMP"):
+            component = as_tuple(occ["NOM_CMP"])[0]
+            if component not in field.components:
+                ctx.error(f"{field.name} has no component {component!r}", "NOM_CMP", occ)
+            values = values[..., field.components.index(component)]
+        value = reduce_values(values, occ["TYPE_TEST"])
+        label = f"{where} {concept.name or '?'} {occ['TYPE_TEST']} {occ.get('NOM_CMP') or ''}"
+        record_check(ctx, label.strip(), value, occ)
+        return
     value = element_value_history(ctx, occ, _FieldHolder(field), field.name, mesh)[0]
     label = f"{where} {concept.name or '?'} {cell_point_label(occ)}"
     record_check(ctx, label, value, occ)
+
+
+def element_field_of(concept):
+    """(ElementField with one order, mesh) of a cham_elem concept."""
+    if isinstance(concept, FieldOnElements):
+        name = concept.field_name or concept.name or "CHAM_ELEM"
+        values = np.asarray(concept.values)[None]
+        field = ElementField(name, np.asarray(concept.cells), tuple(concept.components), values)
+        return field, concept.mesh
+    return getattr(concept, "element_field", None), getattr(concept, "mesh", None)

@@ -153,7 +153,8 @@ def test_cheapest_and_outputs(smooth_study, tmp_path):
     assert best is not None and best.setting.scheme == "DEVOGE"
     assert best.max_error <= 1e-8
     paths = converge.write_outputs(smooth_study, tmp_path)
-    csv_path, png_path, text_path = paths
+    csv_path, png_path, text_path, markdown_path = paths
+    assert markdown_path.read_text().startswith("| scheme |")
     assert png_path.stat().st_size > 1000 and png_path.read_bytes()[:4] == b"\x89PNG"
     with csv_path.open() as handle:
         rows = list(csv.DictReader(handle))

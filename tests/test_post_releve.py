@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from asterlite.commands import post_gene_phys, post_releve_t, rest_gene_phys
 
-from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.assembly import ElementField, NodalField
 from asterlite.concepts.lists import ListReal
 from asterlite.errors import CommandError, UnsupportedError
 
@@ -190,6 +190,45 @@ def test_post_gene_phys_list_inst_and_absolute_acceleration():
     assert [r["VALE_R"] for r in table.rows] == pytest.approx([0.0, 5.0, 0.0, 5.0])
 
 
+def with_modal_element_fields(result):
+    """EFGE_ELNO and EFGE_ELGA of the two modes on cell EL1: mode j, point p,
+    component k holds 100 j + 10 p + k."""
+    j, p, k = np.meshgrid(np.arange(1, 3), np.arange(1, 4), np.arange(2), indexing="ij")
+    values = (100 * j + 10 * p + k).astype(float)[:, None]  # (modes, 1 cell, 3 points, 2)
+    result.basis.element_fields = {
+        "EFGE_ELNO": ElementField("EFGE_ELNO", np.array([0]), ("N", "VY"), values[:, :, :2]),
+        "EFGE_ELGA": ElementField("EFGE_ELGA", np.array([0]), ("N", "VY"), values),
+    }
+    return result
+
+
+def test_post_gene_phys_element_fields_rows_as_code_aster():
+    result = with_modal_element_fields(small_transient())
+    table = post_gene_phys.run(
+        context(),
+        kw(
+            RESU_GENE=result,
+            OBSERVATION=[
+                observation(NOM_CHAM="EFGE_ELNO", GROUP_MA=("BAR",), INST=(0.5,)),
+                observation(NOM_CHAM="EFGE_ELGA", MAILLE=("EL1",), NOM_CMP=("VY",), INST=(1.0,)),
+            ],
+        ),
+    )
+    elno = [r for r in table.rows if r["NUME_OBSE"] == 1]
+    # components outer, then cells, then the cell's nodes
+    assert [(r["NOM_CMP"], r["MAILLE"], r["NOEUD"]) for r in elno] == [
+        ("N", "1", "1"), ("N", "1", "2"), ("VY", "1", "1"), ("VY", "1", "2"),
+    ]  # fmt: skip
+    assert all("POINT" not in r for r in elno)
+    q1, q2 = 0.5, 0.25
+    expected = [q1 * (100 + 10 * p + k) + q2 * (200 + 10 * p + k) for k in (0, 1) for p in (1, 2)]
+    assert [r["VALE_R"] for r in elno] == pytest.approx(expected)
+    elga = [r for r in table.rows if r["NUME_OBSE"] == 2]
+    assert [r["POINT"] for r in elga] == ["PT 1", "PT 2", "PT 3"]
+    assert all(r["MAILLE"] == "1" and "NOEUD" not in r for r in elga)
+    assert elga[2]["VALE_R"] == pytest.approx((131 + 231) * 1.0)
+
+
 def test_post_gene_phys_errors():
     result = small_transient()
     with pytest.raises(CommandError, match="component DRZ"):
@@ -197,7 +236,7 @@ def test_post_gene_phys_errors():
             context(),
             kw(RESU_GENE=result, OBSERVATION=[observation(GROUP_NO=("ALL",), NOM_CMP=("DRZ",))]),
         )
-    with pytest.raises(UnsupportedError, match="SIPO_ELNO"):
+    with pytest.raises(CommandError, match="SIPO_ELNO is not computed"):
         post_gene_phys.run(
             context(),
             kw(

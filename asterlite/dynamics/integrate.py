@@ -90,7 +90,10 @@ def integrate(
     results as its specialised ``run_loop``; kept for comparison)."""
     options = options or SchemeOptions()
     n = system.n_modes
-    model = (system.bundle(), shocks.bundle(), excitation.bundle(), local_bundle(system, shocks))
+    module = SCHEMES[scheme]
+    model = (system.bundle(), shocks.bundle(), excitation.bundle())
+    if hasattr(module, "general_loop"):  # a specialised run_loop: its local arrays
+        model = model + (local_bundle(system, shocks),)
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
     f, a = np.zeros(n), np.zeros(n)
     vint = np.zeros((shocks.count, N_VINT))
@@ -101,7 +104,6 @@ def integrate(
         raise NumericalError(f"non-finite initial acceleration at t={t0:g}")
     state = (q, v, a, f, vint, np.zeros_like(vint), work)
 
-    module = SCHEMES[scheme]
     memory, _ = module.prepare(system, dt, options)
     adaptive = loop_adapts(scheme, dt, options)
     eps = 10.0 * np.finfo(float).eps
@@ -124,7 +126,7 @@ def integrate(
             buffers = grow(buffers)
         elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
             excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
-            model = (model[0], model[1], excitation.bundle(), model[3])
+            model = (model[0], model[1], excitation.bundle()) + model[3:]
         else:
             break
     elapsed = wallclock.perf_counter() - started

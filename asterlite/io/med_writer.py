@@ -11,7 +11,13 @@ Built on ``medcoupling``. What is written, as code_aster lays it out:
 - time series of nodal fields (:class:`NodalSeries`): one MED time step per
   stored instant or mode, numbered by NUME_ORDRE (``numdt``; ``numit`` is
   -1) with the instant (or the frequency, for modes) as time value, one value
-  per node and component; a field restricted to some nodes gets a MED profile.
+  per node and component; a field restricted to some nodes gets a MED profile;
+- time series of element fields (:class:`ElementSeries`): ``*_ELNO`` values
+  by element node (MED ``MED_NOEUD_MAILLE``, medcoupling's ``ON_GAUSS_NE``,
+  as code_aster writes ELNO fields), ``*_ELGA`` values at Gauss points
+  (``ON_GAUSS_PT`` with a Gauss localization per cell type: Gauss–Legendre
+  points on the reference segment for beams); a field on some cells only
+  gets a cell profile per mesh level.
 
 The file version follows code_aster's ``VERSION_MED``: ``"3.3.1"``,
 ``"4.0.0"`` (the default here) or ``"4.1.0"``; libmed 4.1's ``mdump`` reads
@@ -71,6 +77,24 @@ class NodalSeries:
     times: np.ndarray
     orders: np.ndarray
     nodes: np.ndarray | None = None
+
+
+@dataclass
+class ElementSeries:
+    """An element field at a sequence of steps, ready for MED.
+
+    ``values`` is (n_steps, n_cells, n_points, n_components) on the mesh
+    cells ``cells`` (0-based); ``location`` is ``"ELNO"`` (points are the
+    cell's nodes in connectivity order) or ``"ELGA"`` (Gauss points).
+    """
+
+    name: str
+    location: str
+    cells: np.ndarray
+    components: tuple[str, ...]
+    values: np.ndarray
+    times: np.ndarray
+    orders: np.ndarray
 
 
 def med_field_name(result_name: str, field_name: str) -> str:
@@ -261,17 +285,115 @@ def med_field(series: NodalSeries, med):
     return multi
 
 
+def gauss_localization(cell_type: str, n_points: int) -> tuple[list, list, list]:
+    """(reference node coordinates, Gauss point coordinates, weights) of a
+    cell type with ``n_points`` Gauss points: Gauss–Legendre on [-1, 1] for
+    segments (beam elements); other types are not written."""
+    if not cell_type.startswith("SEG"):
+        raise MedWriteError(f"Gauss points of {cell_type} cells cannot be written to MED")
+    n_nodes = int(cell_type[3:])
+    reference = [-1.0, 1.0] + [0.0] * (n_nodes == 3) + ([-1 / 3, 1 / 3] if n_nodes == 4 else [])
+    points, weights = np.polynomial.legendre.leggauss(n_points)
+    return reference, points.tolist(), weights.tolist()
+
+
+def _element_layout(series: ElementSeries, med, mesh: Mesh) -> dict:
+    """{level: (positions of the cells in the level, rows of the series)},
+    rows sorted by position (MED profiles are increasing)."""
+    _, levels = _level_layout(mesh)
+    position = {}
+    for level, cells in levels.items():
+        for k, cell in enumerate(cells):
+            position[int(cell)] = (level, k)
+    layout: dict[int, list] = {}
+    for row, cell in enumerate(np.asarray(series.cells, dtype=int)):
+        level, k = position[int(cell)]
+        layout.setdefault(level, []).append((k, row))
+    return {
+        level: (np.array([k for k, _ in sorted(pairs)]), np.array([r for _, r in sorted(pairs)]))
+        for level, pairs in layout.items()
+    }
+
+
+def _point_order(mesh: Mesh, cells, location: str) -> list[np.ndarray]:
+    """For each cell, where each asterlite point goes among the MED points
+    (ELNO: MED node order of the cell type; ELGA: unchanged)."""
+    out = []
+    for cell in cells:
+        order = _ASTER_TO_MED[mesh.cell_types[int(cell)]][2]
+        n = len(mesh.cell_nodes[int(cell)])
+        out.append(
+            np.asarray(order) if (location == "ELNO" and order is not None) else np.arange(n)
+        )
+    return out
+
+
+def med_element_field(series: ElementSeries, med, mesh: Mesh):
+    """The element series as a ``medcoupling.MEDFileFieldMultiTS``."""
+    mc = _medcoupling()
+    if series.location not in ("ELNO", "ELGA"):
+        raise MedWriteError(f"field {series.name}: unknown location {series.location!r}")
+    values = np.asarray(series.values, dtype=float)
+    n_steps, n_cells, n_points, n_comp = values.shape
+    if n_cells == 0:
+        raise MedWriteError(f"field {series.name}: no cell to write")
+    if series.location == "ELNO":
+        for cell in series.cells:
+            if len(mesh.cell_nodes[int(cell)]) != n_points:
+                raise MedWriteError(
+                    f"field {series.name}: {n_points} values per cell, cell "
+                    f"{mesh.cell_names[int(cell)]} has {len(mesh.cell_nodes[int(cell)])} nodes"
+                )
+        orders = _point_order(mesh, series.cells, "ELNO")
+        reordered = np.empty_like(values)
+        for row, order in enumerate(orders):
+            reordered[:, row, order, :] = values[:, row, :, :]
+        values = reordered
+    layout = _element_layout(series, med, mesh)
+    kind = mc.ON_GAUSS_NE if series.location == "ELNO" else mc.ON_GAUSS_PT
+    multi = mc.MEDFileFieldMultiTS()
+    for step in range(n_steps):
+        one = mc.MEDFileField1TS()
+        for level, (positions, rows) in layout.items():
+            level_mesh = med.getMeshAtLevel(level)
+            whole = positions.size == level_mesh.getNumberOfCells()
+            sub = level_mesh if whole else level_mesh.buildPartOfMySelf(positions.tolist(), True)
+            field = mc.MEDCouplingFieldDouble(kind, mc.ONE_TIME)
+            field.setName(series.name[:MED_NAME_SIZE])
+            field.setMesh(sub)
+            if kind == mc.ON_GAUSS_PT:
+                for cell_type in sorted({mesh.cell_types[int(series.cells[r])] for r in rows}):
+                    geometry = getattr(mc, _ASTER_TO_MED[cell_type][1])
+                    field.setGaussLocalizationOnType(
+                        geometry, *gauss_localization(cell_type, n_points)
+                    )
+            block = values[step][rows].reshape(rows.size * n_points, n_comp)
+            array = mc.DataArrayDouble(np.ascontiguousarray(block))
+            array.setInfoOnComponents(list(series.components))
+            field.setArray(array)
+            field.setTime(float(series.times[step]), int(series.orders[step]), -1)
+            field.checkConsistencyLight()
+            if whole:
+                one.setFieldNoProfileSBT(field)
+            else:
+                profile = mc.DataArrayInt(positions.tolist())
+                profile.setName(f"PFL_{series.name}_{-level}"[:MED_NAME_SIZE])
+                one.setFieldProfile(field, med, level, profile)
+        multi.pushBackTimeStep(one)
+    return multi
+
+
 def write_med(
     path: str | Path,
     mesh: Mesh,
     mesh_name: str,
-    fields: list[NodalSeries] = (),
+    fields: list[NodalSeries | ElementSeries] = (),
     *,
     version: str = "4.0.0",
     append: bool = False,
 ) -> Path:
     """Write ``mesh`` (unless ``append`` and the file already holds a mesh of
-    that name) and the nodal ``fields`` to the MED file ``path``.
+    that name) and the nodal and element ``fields`` to the MED file ``path``.
 
     ``append=False`` starts a new file; ``append=True`` adds to an existing
     one (fields of the same name are replaced).
@@ -289,7 +411,10 @@ def write_med(
     else:
         getattr(med, writer)(str(path), 0 if present else 2)
     for series in fields:
-        getattr(med_field(series, med), writer)(str(path), 0)
+        if isinstance(series, ElementSeries):
+            getattr(med_element_field(series, med, mesh), writer)(str(path), 0)
+        else:
+            getattr(med_field(series, med), writer)(str(path), 0)
     return path
 
 
@@ -300,9 +425,12 @@ def med_field_names(path: str | Path) -> list[str]:
 
 
 __all__ = [
+    "ElementSeries",
     "MedWriteError",
     "NodalSeries",
     "dofs_to_nodal",
+    "gauss_localization",
+    "med_element_field",
     "med_field",
     "med_field_name",
     "med_field_names",

@@ -679,15 +679,15 @@ def plot(study: Study, path: Path) -> Path:
 
 
 def write_outputs(study: Study, directory: Path) -> list[Path]:
-    """``converge.csv``, ``converge.png`` and ``converge.txt`` in ``directory``."""
+    """``converge.csv``, ``converge.png``, ``converge.txt`` (the printed table)
+    and ``converge.md`` (the same in Markdown) in ``directory``."""
     directory.mkdir(parents=True, exist_ok=True)
     text = directory / "converge.txt"
     text.write_text(format_table(study) + "\n", encoding="utf-8")
-    return [
-        write_csv(study, directory / "converge.csv"),
-        plot(study, directory / "converge.png"),
-        text,
-    ]
+    markdown = directory / "converge.md"
+    markdown.write_text(markdown_table(study) + "\n\n" + verdict(study) + "\n", encoding="utf-8")
+    csv_path = write_csv(study, directory / "converge.csv")
+    return [csv_path, plot(study, directory / "converge.png"), text, markdown]
 
 
 __all__ = [
