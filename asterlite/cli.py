@@ -140,20 +140,8 @@ def _converge(args) -> int:
                     flush=True,
                 )
 
-        study = converge.run_study(
-            deck,
-            schemes=schemes,
-            steps=converge.parse_values(args.steps),
-            tolerances=converge.parse_values(args.tolerances),
-            points=converge.parse_values(args.points),
-            against=args.against,
-            reference=args.reference,
-            target=args.target,
-            pattern=args.quantities,
-            extra=extra,
-            repeat=args.repeat,
-            progress=progress,
-        )
+        with converge.memory_cap(args.memory_fraction):
+            study = _run_converge(converge, args, deck, schemes, extra, progress)
     except converge.ConvergeError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
@@ -162,6 +150,24 @@ def _converge(args) -> int:
     print(converge.format_table(study))
     print("written: " + ", ".join(str(p) for p in paths))
     return 0 if args.target is None or converge.cheapest(study) is not None else 1
+
+
+def _run_converge(converge, args, deck, schemes, extra, progress):
+    return converge.run_study(
+        deck,
+        schemes=schemes,
+        steps=converge.parse_values(args.steps),
+        tolerances=converge.parse_values(args.tolerances),
+        points=converge.parse_values(args.points),
+        against=args.against,
+        reference=args.reference,
+        target=args.target,
+        pattern=args.quantities,
+        extra=extra,
+        repeat=args.repeat,
+        min_step_ratio=args.min_step_ratio,
+        progress=progress,
+    )
 
 
 def _port(args) -> int:
@@ -275,6 +281,18 @@ def build_parser() -> argparse.ArgumentParser:
         help="extra DYNA_VIBRA keyword for every run, e.g. SCHEMA_TEMPS/PAS_MAXI=1e-4",
     )
     conv.add_argument("--repeat", type=int, default=1, help="runs per setting (least time kept)")
+    conv.add_argument(
+        "--min-step-ratio",
+        type=float,
+        default=0.0,
+        help="stop adaptive runs (unstable) whose step falls below this fraction of PAS",
+    )
+    conv.add_argument(
+        "--memory-fraction",
+        type=float,
+        default=0.7,
+        help="cap the memory at this fraction of RAM: a runaway run is an error row (0: no cap)",
+    )
     conv.add_argument("-o", "--output", help="folder (default asterlite-out/<deck>-converge)")
     conv.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
     conv.set_defaults(handler=_converge)

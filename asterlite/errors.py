@@ -19,7 +19,9 @@ class Location:
     source_line: str = ""
 
     def __str__(self) -> str:
-        return f"{self.file}:{self.line}:{self.column}" if self.column else f"{self.file}:{self.line}"
+        if self.column:
+            return f"{self.file}:{self.line}:{self.column}"
+        return f"{self.file}:{self.line}"
 
     def excerpt(self) -> str:
         """The offending line with a caret under the column, or '' if unknown."""

@@ -32,6 +32,7 @@ from asterlite.modal.seismic import SeismicError, combined_static_shape
 STEP_FRACTION = {"DEVOGE": 10.0, "NEWMARK": 10.0}  # others: 1/20 of the period
 STEP_NOT_CHECKED = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54")
 STEP_ONLY_WARNED = ("NEWMARK", "ADAPT_ORDRE1", "ADAPT_ORDRE2")
+ROTATING_SCHEMES = ("NEWMARK",)  # VITESSE_VARIABLE='OUI'
 
 
 def run(ctx, kw):
@@ -45,16 +46,21 @@ def run(ctx, kw):
             "TYPE_CALCUL",
             kw,
         )
-    for unsupported in ("EXCIT_RESU", "MODE_CORR", "BASE_ELAS_FLUI"):
+    for unsupported in ("EXCIT_RESU", "BASE_ELAS_FLUI"):
         if kw.get(unsupported):
             ctx.unsupported(f"{unsupported} is not implemented", unsupported, kw)
-    if kw.get("VITESSE_VARIABLE", "NON") == "OUI":
-        ctx.unsupported("VITESSE_VARIABLE='OUI' (gyroscopic coupling)", "VITESSE_VARIABLE", kw)
     schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
     scheme = schema_kw.get("SCHEMA", "RUNGE_KUTTA_32")
     if scheme not in SCHEMES:
         ctx.unsupported(
             f"SCHEMA={scheme!r} (implemented: {', '.join(SCHEMES)})", "SCHEMA", schema_kw
+        )
+    if kw.get("VITESSE_VARIABLE", "NON") == "OUI" and scheme not in ROTATING_SCHEMES:
+        ctx.unsupported(
+            f"VITESSE_VARIABLE='OUI' with SCHEMA={scheme!r} "
+            f"(implemented: {', '.join(ROTATING_SCHEMES)})",
+            "VITESSE_VARIABLE",
+            kw,
         )
     if kw.get("TRAITEMENT_NONL", "EXPLICITE") != "EXPLICITE":
         ctx.unsupported("TRAITEMENT_NONL='IMPLICITE'", "TRAITEMENT_NONL", kw)
@@ -62,11 +68,13 @@ def run(ctx, kw):
     mass_matrix = kw["MATR_MASS"]
     basis = mass_matrix.basis
     system = linear_system(ctx, kw)
-    specs = [
-        spec
-        for occ in kw.factor("COMPORTEMENT")
-        for spec in shock_specs(ctx, occ, basis, system.n_modes)
-    ]
+    specs = []
+    for occ in kw.factor("COMPORTEMENT"):
+        if occ.get("RELATION") != "DIS_CHOC":  # a relation of asterlite.dynamics.laws
+            specs.append(nonlinearity_spec(ctx, kw, occ, basis, system.n_modes, len(specs) + 1))
+            continue
+        specs.extend(shock_specs(ctx, occ, basis, system.n_modes))
+    continue_law_states(kw, specs)
     shocks = build_shocks(specs, system)
 
     q0, v0, t_init_state = initial_state(ctx, kw, system.n_modes)
@@ -76,14 +84,23 @@ def run(ctx, kw):
     loads = excitations(ctx, kw, system.n_modes)
     excitation = tabulate_excitation(system.n_modes, loads, t0, t_end, dt / 2.0)
     supports = support_motions(ctx, kw, basis)
-    if supports:
+    corrections = static_corrections(ctx, kw, basis, system)
+    # the shocks see the support motions and the static corrections (code_aster
+    # keeps both as "multi-support" shapes times DEPL / FONC_MULT functions)
+    driven = supports + corrections
+    if driven:
         excitation.add_support_motion(
-            shock_support_shapes(shocks, basis, supports),
-            [(s["DEPL"], s["VITE"]) for s in supports],
+            shock_support_shapes(shocks, basis, driven),
+            [(s["DEPL"], s["VITE"]) for s in driven],
             t0,
             t_end,
             dt / 2.0,
         )
+    rotation = rotating_matrices(ctx, kw, system, t0, t_end, dt)
+    if rotation is not None:
+        damping, stiffness = rotation.matrices_at(t0)
+        system = LinearSystem(system.mass, stiffness, damping)
+        rotation.initial_acceleration = restart_acceleration(kw, t_init_state)
     options = SchemeOptions(
         tolerance=schema_kw.get("TOLERANCE", 1.0e-5),
         alpha=schema_kw.get("ALPHA", 0.0),
@@ -100,7 +117,19 @@ def run(ctx, kw):
     )
     try:
         result = integrate(
-            system, shocks, excitation, scheme, q0, v0, t0, t_end, dt, instants, pas_arch, options
+            system,
+            shocks,
+            excitation,
+            scheme,
+            q0,
+            v0,
+            t0,
+            t_end,
+            dt,
+            instants,
+            pas_arch,
+            options,
+            rotation=rotation,
         )
     except NumericalError as error:
         raise NumericalError(error.message, ctx.location, ctx.command) from None
@@ -112,6 +141,8 @@ def run(ctx, kw):
     )
     if supports:
         result.info["mult_appui"] = supports
+    if corrections:
+        result.info["corr_stat"] = corrections
     kept = result.info.get("steps_kept_at_nmax_iter_pas", 0)
     if kept:
         ctx.log(
@@ -155,8 +186,9 @@ def appended(previous: TranGene, new: TranGene) -> TranGene:
             )
         )
     info = dict(new.info)
-    if "mult_appui" in previous.info and "mult_appui" not in info:
-        info["mult_appui"] = previous.info["mult_appui"]
+    for key in ("mult_appui", "corr_stat"):
+        if key in previous.info and key not in info:
+            info[key] = previous.info[key]
     return TranGene(
         basis=new.basis,
         times=np.concatenate([previous.times[keep], new.times]),
@@ -208,6 +240,51 @@ def list_values(obj) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- shocks
+
+
+def nonlinearity_spec(ctx, kw, occ, basis, n_modes, number) -> ShockSpec:
+    """A COMPORTEMENT occurrence of a relation other than DIS_CHOC
+    (``asterlite.dynamics.laws``)."""
+    from asterlite.dynamics.laws.connections import ConnectionError_, law_spec
+    from asterlite.dynamics.laws.tabulated import LawError
+
+    if occ.get("SOUS_STRUC") or occ.get("SOUS_STRUC_1") or occ.get("SOUS_STRUC_2"):
+        ctx.unsupported("sub-structured nonlinearities (SOUS_STRUC)", "RELATION", occ)
+    options = {k: kw.get(k) for k in ("INFO", "VITE_ROTA", "VITESSE_VARIABLE")}
+    try:
+        return law_spec(occ, basis, n_modes, number, options)
+    except ConnectionError_ as error:
+        ctx.error(str(error), error.keyword, occ)
+    except LawError as error:
+        ctx.error(str(error), "RELATION", occ)
+
+
+def continue_law_states(kw, specs) -> None:
+    """ETAT_INIT=_F(RESULTAT=...): the laws' internal variables (crushing,
+    viscous state...) continue from the previous run's state at that instant."""
+    occs = kw.factor("ETAT_INIT")
+    previous = occs[0].get("RESULTAT") if occs else None
+    if previous is None or not getattr(previous, "shocks", None):
+        return
+    occ = occs[0]
+    if occ.get("NUME_ORDRE") is not None:
+        hits = np.nonzero(previous.order == occ["NUME_ORDRE"])[0]
+        k = int(hits[0]) if hits.size else len(previous.times) - 1
+    elif occ.get("INST_INIT") is not None:
+        k = int(np.argmin(np.abs(previous.times - occ["INST_INIT"])))
+    else:
+        k = len(previous.times) - 1
+    for index, spec in enumerate(specs):
+        if spec.relation == "DIS_CHOC" or index >= len(previous.shocks):
+            continue
+        old = previous.shocks[index]
+        if old.relation != spec.relation or spec.law_state is None and "VINT1" not in old.fields:
+            continue
+        values = []
+        while f"VINT{len(values) + 1}" in old.fields:
+            values.append(float(np.asarray(old.fields[f"VINT{len(values) + 1}"])[k]))
+        if values:
+            spec.law_state = np.array(values)
 
 
 def shock_specs(ctx, occ, basis, n_modes) -> list[ShockSpec]:
@@ -458,10 +535,18 @@ def excitations(ctx, kw, n_modes):
     loads = []
     for occ in kw.factor("EXCIT"):
         if occ.get("VECT_ASSE_GENE") is None:
-            ctx.unsupported("EXCIT without VECT_ASSE_GENE (NUME_ORDRE, ACCE...)", "NUME_ORDRE", occ)
-        if occ.get("CORR_STAT"):
-            ctx.unsupported("EXCIT CORR_STAT (static correction)", "CORR_STAT", occ)
-        vector = np.asarray(occ["VECT_ASSE_GENE"].values, dtype=float)[:n_modes]
+            # a load on one generalized coordinate (code_aster's mdfext: f(NUME_ORDRE) += ...)
+            number = int(occ["NUME_ORDRE"])
+            if not 1 <= number <= n_modes:
+                ctx.error(
+                    f"NUME_ORDRE={number}: the basis has {n_modes} generalized coordinates",
+                    "NUME_ORDRE",
+                    occ,
+                )
+            vector = np.zeros(n_modes)
+            vector[number - 1] = 1.0
+        else:
+            vector = np.asarray(occ["VECT_ASSE_GENE"].values, dtype=float)[:n_modes]
         mult = occ.get("FONC_MULT")
         if occ.get("ACCE") is not None:
             mult = occ["ACCE"]  # relative motion: the load is Φᵀ(-M ψ d) γ(t)
@@ -469,6 +554,88 @@ def excitations(ctx, kw, n_modes):
             mult = float(occ.get("COEF_MULT", 1.0))
         loads.append((vector, mult))
     return loads
+
+
+def static_corrections(ctx, kw, basis, system) -> list[dict]:
+    """EXCIT CORR_STAT='OUI' (code_aster's mdrecf): for occurrence i, the
+    static response to the load (field i of MODE_CORR) minus what the modes
+    already carry, ψ_i = u_i - Σ_m (F_m / k_m) φ_m, times FONC_MULT,
+    D_FONC_DT and D_FONC_DT2 for the DEPL / VITE / ACCE fields that
+    REST_GENE_PHYS and RECU_FONCTION add. The generalized load itself is
+    not modified (the shocks see ψ_i FONC_MULT as a support motion)."""
+    from asterlite.modal.renumber import transfer
+
+    corrections = []
+    occs = kw.factor("EXCIT")
+    for index, occ in enumerate(occs):
+        if occ.get("CORR_STAT") != "OUI":
+            continue
+        static = kw.get("MODE_CORR")
+        if static is None:
+            ctx.error("EXCIT CORR_STAT='OUI' needs MODE_CORR", "MODE_CORR", kw)
+        if occ.get("VECT_ASSE_GENE") is None or occ.get("FONC_MULT") is None:
+            ctx.error("CORR_STAT='OUI' needs VECT_ASSE_GENE and FONC_MULT", "CORR_STAT", occ)
+        fields = getattr(static, "fields", None)
+        if fields is None:
+            fields = static.shapes
+        fields = np.asarray(fields, dtype=float)
+        if index >= fields.shape[1]:
+            ctx.error(
+                f"MODE_CORR holds {fields.shape[1]} fields, EXCIT occurrence {index + 1} "
+                "needs its own (code_aster pairs them by position)",
+                "MODE_CORR",
+                kw,
+            )
+        shape = transfer(fields[:, index], static.numbering, basis.numbering).copy()
+        vector = np.asarray(occ["VECT_ASSE_GENE"].values, dtype=float)[: system.n_modes]
+        stiffness = np.diag(system.stiffness)
+        shapes = np.asarray(basis.shapes, dtype=float)
+        for m in range(system.n_modes):
+            shape -= vector[m] / stiffness[m] * shapes[:, m]
+        corrections.append(
+            {
+                "shape": shape,
+                "DEPL": occ["FONC_MULT"],
+                "VITE": occ["D_FONC_DT"],
+                "ACCE": occ["D_FONC_DT2"],
+            }
+        )
+    return corrections
+
+
+def restart_acceleration(kw, t_state):
+    """The archived acceleration at the ETAT_INIT instant of a RESULTAT, or None."""
+    occs = kw.factor("ETAT_INIT")
+    previous = occs[0].get("RESULTAT") if occs else None
+    if previous is None or t_state is None:
+        return None
+    k = int(np.argmin(np.abs(previous.times - t_state)))
+    return np.array(previous.acce[k], dtype=float)
+
+
+def rotating_matrices(ctx, kw, system, t0, t_end, dt):
+    """VITESSE_VARIABLE='OUI': C + Ω(t) G and K + Ω'(t) K_gy (or None)."""
+    if kw.get("VITESSE_VARIABLE", "NON") != "OUI":
+        return None
+    from asterlite.dynamics.rotation import Rotation
+
+    n = system.n_modes
+    gyro = np.array(kw["MATR_GYRO"].matrix, dtype=float)
+    rigy = kw.get("MATR_RIGY")
+    rigy = np.array(rigy.matrix, dtype=float) if rigy is not None else np.zeros((n, n))
+    for name, matrix in (("MATR_GYRO", gyro), ("MATR_RIGY", rigy)):
+        if matrix.shape != (n, n):
+            ctx.error(f"{name} is {matrix.shape}, the system has {n} modes", name, kw)
+    damping = system.damping
+    if not np.any(damping - np.diag(np.diag(damping))):
+        # code_aster (dtmupmat): a diagonal damping becomes M diag(c_i / m_i)
+        ratios = np.diag(damping) / np.diag(system.mass)
+        damping = system.mass * ratios[None, :]
+    # without ACCE_ROTA code_aster takes Ω' = 0 (and then ignores MATR_RIGY)
+    acceleration = kw.get("ACCE_ROTA") if kw.get("MATR_RIGY") is not None else None
+    rotation = Rotation(damping, system.stiffness, gyro, rigy, kw["VITE_ROTA"], acceleration)
+    rotation.tabulate(t0, t_end, dt / 2.0)
+    return rotation
 
 
 def support_motions(ctx, kw, basis) -> list[dict]:
@@ -530,6 +697,21 @@ def shock_histories(shocks, vint) -> list[ShockHistory]:
     histories = []
     for s, spec in enumerate(shocks.specs):
         v = vint[:, s, :]
+        if spec.relation != "DIS_CHOC":  # a relation of asterlite.dynamics.laws
+            from asterlite.dynamics.laws.connections import law_fields
+
+            fields = law_fields(spec.relation, v)
+            histories.append(
+                ShockHistory(
+                    name=spec.name,
+                    relation=spec.relation,
+                    node_1=spec.node_1,
+                    node_2=spec.node_2,
+                    fields={k: np.ascontiguousarray(a) for k, a in fields.items()},
+                    parameters=shocks.parameters(s),
+                )
+            )
+            continue
         fields = {
             "FN": v[:, C.V_FN],
             "FT1": v[:, C.V_FT1],
@@ -587,7 +769,7 @@ def run_physical(ctx, kw):
             "SCHEMA",
             schema_kw,
         )
-    for unsupported in ("EXCIT_RESU", "MODE_STAT", "AMOR_MODAL"):
+    for unsupported in ("EXCIT_RESU", "AMOR_MODAL"):
         if kw.get(unsupported):
             ctx.unsupported(f"{unsupported} on a physical basis", unsupported, kw)
     mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
@@ -603,6 +785,18 @@ def run_physical(ctx, kw):
         a = system.initial_acceleration(times[0], q, v)
     archive = Archive(system.n_free)
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    energy = None
+    if kw.factor("ENERGIE"):
+        from asterlite.dynamics.physical.energy import EnergyBalance
+
+        if scheme not in ("NEWMARK", "DIFF_CENTRE"):
+            ctx.unsupported(
+                f"ENERGIE with SCHEMA={scheme!r} (NEWMARK, DIFF_CENTRE)", "ENERGIE", kw
+            )
+        energy = EnergyBalance(system, times[0])
+        previous = getattr(reused, "tables", {}).get("PARA_CALC") if reused is not None else None
+        if previous is not None and t_state is not None:
+            energy.resume(previous, t_state)
     started = __import__("time").perf_counter()
     try:
         if scheme == "ADAPT_ORDRE2":
@@ -648,6 +842,7 @@ def run_physical(ctx, kw):
                     archive,
                     beta=schema_kw.get("BETA", 0.25),
                     gamma=schema_kw.get("GAMMA", 0.5),
+                    monitor=energy,
                 )
             elif scheme == "WILSON":
                 wilson.integrate(
@@ -663,7 +858,9 @@ def run_physical(ctx, kw):
                         ctx.location,
                         f"{ctx.command}/INCREMENT",
                     )
-                diff_centre.integrate(system, times, q, v, a, mask, archive, inverse)
+                diff_centre.integrate(
+                    system, times, q, v, a, mask, archive, inverse, monitor=energy
+                )
             stats = {"steps": times.size - 1}
     except FloatingPointError as error:
         raise NumericalError(f"{scheme}: {error}", ctx.location, ctx.command) from None
@@ -678,6 +875,16 @@ def run_physical(ctx, kw):
         "VITE": system.expand_rate(out_v),
         "ACCE": system.expand_rate(out_a),
     }
+    supports = physical_supports(ctx, kw, numbering)
+    if supports:
+        # code_aster (dlnew0): the fields are the relative motion; the absolute
+        # ones add Σ ψ_k (d_k, v_k, a_k)(t) (support static modes times motions)
+        for name in ("DEPL", "VITE", "ACCE"):
+            absolute = fields[name].copy()
+            for support in supports:
+                values = np.asarray(support[name].evaluate(out_t), dtype=float)
+                absolute += np.outer(values, support["shape"])
+            fields[f"{name}_ABSOLU"] = absolute
     order = order_offset + np.arange(out_t.size, dtype=np.int64)
     if reused is not None and t_state is not None:
         keep = reused.times < out_t[0] - 1.0e-12 * max(1.0, abs(out_t[0]))
@@ -690,7 +897,10 @@ def run_physical(ctx, kw):
             for name, values in fields.items()
             if name in reused.fields
         }
-    return DynaTrans(numbering=numbering, times=out_t, order=order, fields=fields)
+    produced = DynaTrans(numbering=numbering, times=out_t, order=order, fields=fields)
+    if energy is not None:
+        produced.tables["PARA_CALC"] = energy.table()
+    return produced
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix):
@@ -700,8 +910,8 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix):
 
     loads = []
     for occ in kw.factor("EXCIT"):
-        if occ.get("ACCE") is not None or occ.get("MULT_APPUI") == "OUI":
-            ctx.unsupported("EXCIT ACCE/MULT_APPUI on a physical basis", "ACCE", occ)
+        if occ.get("ACCE") is not None and occ.get("VECT_ASSE") is None:
+            ctx.unsupported("EXCIT ACCE with a CHARGE on a physical basis", "ACCE", occ)
         if occ.get("VECT_ASSE") is not None:
             vector = np.asarray(occ["VECT_ASSE"].values, dtype=float)
             if vector.size != numbering.n_dofs:
@@ -716,10 +926,49 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix):
             except KeyError as exc:
                 ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
         mult = occ.get("FONC_MULT")
-        if mult is None:
+        if occ.get("ACCE") is not None:
+            mult = occ["ACCE"]  # relative motion: the vector is -M ψ (CALC_CHAR_SEISME)
+        elif mult is None:
             mult = float(occ.get("COEF_MULT", 1.0))
         loads.append(Load(vector, mult))
     return loads
+
+
+def physical_supports(ctx, kw, numbering) -> list[dict]:
+    """MULT_APPUI='OUI' supports of a physical transient: ψ_k (the static
+    modes of MODE_STAT at the support nodes along DIRECTION) on the
+    numbering, with the support's DEPL / VITE / ACCE functions."""
+    from asterlite.modal.renumber import transfer
+
+    supports = []
+    for occ in kw.factor("EXCIT"):
+        if occ.get("MULT_APPUI") != "OUI":
+            continue
+        static = kw.get("MODE_STAT")
+        if static is None:
+            ctx.error("EXCIT MULT_APPUI='OUI' needs MODE_STAT", "MODE_STAT", kw)
+        for name in ("DEPL", "VITE", "ACCE"):
+            if occ.get(name) is None:
+                ctx.error(f"EXCIT MULT_APPUI='OUI' needs {name}", name, occ)
+        mesh = static.numbering.mesh
+        nodes = []
+        for group in as_tuple(occ.get("GROUP_NO")):
+            if group not in mesh.node_groups:
+                ctx.error(f"no node group {group!r} in the mesh", "GROUP_NO", occ)
+            nodes.extend(int(n) for n in mesh.node_groups[group])
+        for name in as_tuple(occ.get("NOEUD")):
+            index = mesh.find_node(name)
+            if index is None:
+                ctx.error(f"no node {name!r} in the mesh", "NOEUD", occ)
+            nodes.append(index)
+        direction = np.asarray(as_tuple(occ.get("DIRECTION")) or (1.0, 0.0, 0.0), dtype=float)
+        try:
+            shape = combined_static_shape(static, [mesh.node_names[n] for n in nodes], direction)
+        except SeismicError as error:
+            ctx.error(f"MODE_STAT: {error}", "MODE_STAT", kw)
+        shape = transfer(shape, static.numbering, numbering)
+        supports.append({"shape": shape, "DEPL": occ["DEPL"], "VITE": occ["VITE"], "ACCE": occ["ACCE"]})
+    return supports
 
 
 def physical_initial_state(ctx, kw, system):

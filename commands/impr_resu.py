@@ -334,8 +334,12 @@ def result_series(ctx, occ, result) -> list[NodalSeries]:
     steps = result_steps(result)
     times = steps.time_values()
     out = []
+    chosen = occ.get("NOM_CHAM") is not None and occ.get("TOUT_CHAM") != "OUI"
     for field, med_name in zip(fields, names, strict=True):
         if is_element_field(result, field):
+            if not chosen and not med_writable(result, field):
+                ctx.log(f"element field {field} not written (Gauss points of its cells)")
+                continue
             cells, comps, values, indices = element_block(ctx, occ, result, field)
             out.append(
                 ElementSeries(
@@ -354,6 +358,16 @@ def result_series(ctx, occ, result) -> list[NodalSeries]:
             NodalSeries(med_name, comps, values, times[indices], steps.orders[indices], nodes)
         )
     return out
+
+
+def med_writable(result, name: str) -> bool:
+    """False for Gauss-point fields on cells whose Gauss points MED cannot
+    locate here (only segments are known)."""
+    if element_location(name) != "ELGA":
+        return True
+    mesh = result_mesh(result)
+    cells = result.element_fields[name].cells
+    return all(mesh.cell_types[int(c)].startswith("SEG") for c in cells)
 
 
 def cham_elem_series(ctx, occ, field: FieldOnElements) -> ElementSeries:

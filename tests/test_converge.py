@@ -224,3 +224,19 @@ def test_cli_converge_on_sdnd100a(tmp_path, capsys):
     assert "cheapest setting meeting 0.01" in out
     assert "relative to the deck's VALE_REFE" in out
     assert (tmp_path / "converge.csv").exists() and (tmp_path / "converge.png").exists()
+
+
+def test_memory_cap_is_restored():
+    resource = pytest.importorskip("resource")
+    before = resource.getrlimit(resource.RLIMIT_AS)
+    with converge.memory_cap(0.7):
+        inside = resource.getrlimit(resource.RLIMIT_AS)
+        assert inside[0] != resource.RLIM_INFINITY
+    assert resource.getrlimit(resource.RLIMIT_AS) == before
+
+
+def test_min_step_ratio_sets_pas_mini_of_adaptive_rungs():
+    setting = converge.Setting("RUNGE_KUTTA_54", 1e-6)
+    keywords = converge.scheme_keywords(setting, {"step": 2e-5}, min_step_ratio=1e-3)
+    assert keywords["SCHEMA_TEMPS/PAS_MINI"] == pytest.approx(2e-8)
+    assert converge.scheme_keywords(setting, {"step": 2e-5})["SCHEMA_TEMPS/PAS_MINI"] is None

@@ -304,3 +304,111 @@ def test_text_units_accumulate_and_med_replaces_a_stale_file(tmp_path):
     assert text.startswith("table written earlier") and text.count("RESULTAT ") == 2
     impr_resu.run(ctx, kw(FORMAT="MED", UNITE=80, RESU=[{"MAILLAGE": mixed_mesh()}]))
     assert read_med_mesh(tmp_path / "fort.80").n_cells == 4
+
+
+def beam_element_mesh() -> Mesh:
+    """Three SEG2 beams and a POI1 cell (a lower MED level)."""
+    mesh = Mesh(
+        coords=np.array([[0.0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]),
+        node_names=["N1", "N2", "N3", "N4"],
+        cell_names=["M1", "M2", "M3", "P1"],
+        cell_types=["SEG2", "SEG2", "SEG2", "POI1"],
+        cell_nodes=[(0, 1), (1, 2), (2, 3), (3,)],
+        node_groups={},
+        cell_groups={"TWO": np.array([0, 2])},
+    )
+    mesh.name = "MAIL"
+    return mesh
+
+
+def test_element_series_elno_and_elga_are_read_by_mdump(tmp_path):
+    from asterlite.io.med_writer import ElementSeries, MedWriteError, gauss_localization
+
+    mesh = beam_element_mesh()
+    elno = ElementSeries(
+        "DYN_____SIPO_ELNO",
+        "ELNO",
+        np.array([2, 0]),
+        ("SN", "SVY"),
+        np.arange(2 * 2 * 2 * 2, dtype=float).reshape(2, 2, 2, 2),
+        np.array([0.0, 0.5]),
+        np.array([1, 2]),
+    )
+    elga = ElementSeries(
+        "DYN_____EFGE_ELGA",
+        "ELGA",
+        np.array([0, 1, 2]),
+        ("N",),
+        np.ones((1, 3, 3, 1)),
+        np.array([0.0]),
+        np.array([1]),
+    )
+    path = write_med(tmp_path / "el.med", mesh, "MAIL", [elno, elga])
+    assert set(med_field_names(path)) == {"DYN_____SIPO_ELNO", "DYN_____EFGE_ELGA"}
+    import medcoupling as mc
+
+    read = mc.MEDFileField1TS(str(path), "DYN_____SIPO_ELNO", 2, -1)
+    field = read.getFieldOnMeshAtLevel(mc.ON_GAUSS_NE, 0, mc.MEDFileMesh.New(str(path)))
+    # profile cells M1, M3 in increasing order: the rows of M1 (second in the series) first
+    assert field.getArray().toNumPyArray().tolist()[:2] == [[12.0, 13.0], [14.0, 15.0]]
+    assert gauss_localization("SEG2", 3)[2] == pytest.approx([5 / 9, 8 / 9, 5 / 9])
+    text = mdump_text(path)
+    if text is not None:
+        assert "MED_NOEUD_MAILLE" in text and "DYN_____EFGE_ELGA" in text
+    with pytest.raises(MedWriteError, match="Gauss points of TRIA3"):
+        gauss_localization("TRIA3", 3)
+
+
+def test_impr_resu_element_fields_med_text_and_cham_elem(tmp_path):
+    from asterlite.commands import test_resu
+
+    from asterlite.concepts.assembly import ElementField
+    from asterlite.concepts.modes import FieldOnElements
+
+    ctx = context("IMPR_RESU", tmp_path)
+    phys = physical_transient()
+    n = len(phys.times)
+    values = np.arange(n * 2 * 1, dtype=float).reshape(n, 1, 2, 1)
+    phys.element_fields = {"SIPO_ELNO": ElementField("SIPO_ELNO", np.array([0]), ("SN",), values)}
+    impr_resu.run(
+        ctx, kw(FORMAT="MED", RESU=[{"RESULTAT": phys, "NOM_CHAM": ("DEPL", "SIPO_ELNO")}])
+    )
+    path = tmp_path / "fort.80"
+    assert "DYNA____SIPO_ELNO" in med_field_names(path)
+    assert_mdump_reads(path, "DYNA____SIPO_ELNO")
+    cham = FieldOnElements(
+        mesh=phys.numbering.mesh,
+        field_type="ELNO_SIEF_R",
+        field_name="SIPO_ELNO",
+        cells=np.array([0]),
+        components=("SN", "SMFZ"),
+        values=np.array([[[1.5, -2.0], [3.0, 4.0]]]),
+    )
+    cham.name = "MAXABS"
+    impr_resu.run(ctx, kw(FORMAT="MED", UNITE=81, RESU=[{"CHAM_GD": cham}]))
+    assert_mdump_reads(tmp_path / "fort.81", "MAXABS")
+    impr_resu.run(
+        ctx,
+        kw(
+            FORMAT="RESULTAT",
+            RESU=[{"CHAM_GD": cham, "FORMAT_R": "1PE12.5"}, {"RESULTAT": phys, "NUME_ORDRE": (2,)}],
+        ),
+    )
+    text = (tmp_path / "fort.8").read_text()
+    assert "CHAMP PAR ELEMENT AUX NOEUDS MAXABS" in text
+    assert "CHAMP PAR ELEMENT AUX NOEUDS DE NOM SYMBOLIQUE  SIPO_ELNO" in text
+    lines = text.splitlines()
+    at = lines.index(" MAILLE EL1")
+    assert lines[at + 2].split() == ["NO1", "1.50000E+00", "-2.00000E+00"]
+    test_ctx = context("TEST_RESU", tmp_path)
+    test_resu.run(
+        test_ctx,
+        kw(
+            CHAM_ELEM=[
+                {"CHAM_GD": cham, "GROUP_MA": "BAR", "NOEUD": "NO2", "NOM_CMP": "SMFZ",
+                 "VALE_CALC": 4.0},
+                {"CHAM_GD": cham, "TYPE_TEST": "SOMM_ABS", "VALE_CALC": 10.5},
+            ]
+        ),
+    )  # fmt: skip
+    assert [t.ok for t in test_ctx.session.tests] == [True, True]

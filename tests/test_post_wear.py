@@ -161,3 +161,15 @@ def test_post_usure_from_shock_history_and_new_tube():
     ctx.reuse = table
     post_usure.run(ctx, kw(TUBE_NEUF="OUI", TABL_USURE=table, INST=1.0))
     assert all(r["V_USUR_TUBE_CUMU"] == 0.0 for r in table.rows if "V_USUR_TUBE_CUMU" in r)
+
+
+def test_rod_notch_small_volumes_stop_where_code_aster_stops():
+    """At depths near the fit's zero, code_aster's guarded Newton stops on its
+    absolute step test: zzzz405a's depth 8.38630e-6 m, not the exact root."""
+    g = wear.ContactGeometry("GRAPPE_2_ENCO")
+    a, b, c = wear.ROD_NOTCH_FIT
+    exact = (-b + np.sqrt(b * b - 4 * a * c)) / (2 * a)
+    depth = wear.tube_depth(g, np.array([1e-16]), np.zeros(1))[0]
+    assert depth == pytest.approx(8.38630e-6, rel=1e-5)
+    assert abs(depth / exact - 1) > 5e-3
+    assert wear.guarded_newton(lambda x: (x * x - 4.0, 2 * x), 0.0, 10.0) == pytest.approx(2.0)

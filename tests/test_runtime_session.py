@@ -106,8 +106,8 @@ def test_check_imports_no_numerical_stack(tmp_path):
 
     path = deck(tmp_path, FUNCTION_DECK)
     code = (
-        "import sys; from asterlite.cli import main; main(['check', %r]); "
-        "print(sorted(m for m in ('numpy', 'scipy', 'numba') if m in sys.modules))" % str(path)
+        f"import sys; from asterlite.cli import main; main(['check', {str(path)!r}]); "
+        "print(sorted(m for m in ('numpy', 'scipy', 'numba') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip().splitlines()[-1] == "[]"

@@ -146,6 +146,8 @@ class DynaTrans(Concept):
     times: np.ndarray
     order: np.ndarray
     fields: dict[str, np.ndarray] = field(default_factory=dict)
+    # tables kept with the result (RECU_TABLE NOM_TABLE): ENERGIE's PARA_CALC
+    tables: dict = field(default_factory=dict)
 
     # deck API (code_aster's TransientResult), see asterlite.post.deck_api
     def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802

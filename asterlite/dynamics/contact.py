@@ -40,7 +40,8 @@ N_PARAMS = 32
 
 # Columns of the per-shock integer rows (``flags``).
 F_GEOMETRY, F_TWO_NODES, F_UNIDIR, F_NPOLAR = range(4)
-N_FLAGS = 4
+F_LAW = 4  # relation (laws.kernel.LAW_CODES): 0 DIS_CHOC, else a law of laws/
+N_FLAGS = 5
 
 # Internal variables of one shock (code_aster's 20-value layout, same order).
 V_FN, V_FT1, V_FT2 = 0, 1, 2
@@ -344,6 +345,8 @@ def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
     """
     loc1, vel1, loc2, vel2, f_local = work[0], work[1], work[2], work[3], work[4]
     for s in range(flags.shape[0]):
+        if flags.shape[1] > F_LAW and flags[s, F_LAW] != 0:
+            continue  # another relation: laws.kernel.law_forces
         p = params[s]
         geometry = flags[s, F_GEOMETRY]
         two_nodes = flags[s, F_TWO_NODES] == 1

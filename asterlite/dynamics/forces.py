@@ -6,7 +6,10 @@ Bundles passed to the kernels (tuples of arrays, built by ``model.py``):
 
 - ``lin = (minv, stiffness, damping, is_diagonal)``: (n, n) arrays and a
   (1,) int array telling whether the three matrices are diagonal;
-- ``shk = (flags, params, rots, phis, polars)``: see ``contact.py``;
+- ``shk = (flags, params, rots, phis, polars, laws, rphis, scratch)``: see
+  ``contact.py``; the last three serve the relations other than DIS_CHOC
+  (``laws.kernel``: law parameter rows, (0, 0)-shaped without such
+  relations, rotation mode shapes, scratch);
 - ``exc = (vectors, abscissas, ordinates, layout)``: excitation e's
   generalized vector ``vectors[e]`` times its piecewise-linear multiplier
   (``layout[e] = (count, left, right)``, see ``model.Excitation``).
@@ -20,6 +23,7 @@ from numba import njit
 from asterlite.dynamics.contact import P_DRIVE1, P_DRIVE2, shock_forces
 from asterlite.dynamics.formula import run_program
 from asterlite.dynamics.kernel import C_STEP, C_TIME
+from asterlite.dynamics.laws.kernel import law_forces
 
 
 @njit(cache=True)
@@ -201,9 +205,12 @@ def total_force(t, q, v, shk, vint, exc, work, out):
     """out = F_ext(t) + Φᵀ F_shock; returns a diverging shock's index or -1."""
     out[:] = 0.0
     external_force(t, exc, out)
-    flags, params, rots, phis, polars = shk
+    flags, params, rots, phis, polars = shk[0], shk[1], shk[2], shk[3], shk[4]
     support_motion(t, exc, params)
-    return shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out)
+    shock = shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out)
+    if shock < 0 and shk[5].shape[1] > 0:  # other relations (laws/): rows with a law
+        law_forces(t, q, v, flags, params, rots, phis, polars, shk[5], shk[6], vint, shk[7], out)
+    return shock
 
 
 @njit(cache=True)

@@ -84,6 +84,7 @@ def integrate(
     pas_arch: int,
     options: SchemeOptions | None = None,
     specialised: bool = True,
+    rotation=None,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
     ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
@@ -96,15 +97,24 @@ def integrate(
         model = model + (local_bundle(system, shocks),)
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
     f, a = np.zeros(n), np.zeros(n)
-    vint = np.zeros((shocks.count, N_VINT))
+    vint = shocks.initial_vint(t0)
     work = np.zeros((5, 3))
     shock = total_force(t0, q, v, model[1], vint, model[2], work, f)
     acceleration(f, q, v, model[0], np.zeros(n), a)
     if shock >= 0 or not np.all(np.isfinite(a)):
-        raise NumericalError(f"non-finite initial acceleration at t={t0:g}")
+        raise law_error(shocks, vint, t0) or NumericalError(
+            f"non-finite initial acceleration at t={t0:g}"
+        )
     state = (q, v, a, f, vint, np.zeros_like(vint), work)
 
     memory, _ = module.prepare(system, dt, options)
+    rotating_loop = None
+    if rotation is not None:  # VITESSE_VARIABLE='OUI': matrices updated every step
+        from asterlite.dynamics import rotation as R
+
+        memory, rotating_loop = R.prepare(scheme, memory, rotation)
+        if rotation.initial_acceleration is not None:  # a restart keeps its acceleration
+            a[:] = rotation.initial_acceleration
     adaptive = loop_adapts(scheme, dt, options)
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
@@ -112,13 +122,15 @@ def integrate(
     capacity = 2 + len(instants) + n_steps // max(pas_arch, 1)
     if adaptive:
         capacity = min(capacity, 4096)
-    buffers = new_buffers(capacity, n, shocks.count)
+    buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, *buffers)
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
     counters[K.K_ARCHIVED] = 1
     run_loop = module.run_loop
-    if not specialised:
+    if not specialised or shocks.has_laws:  # other relations: the general path
         run_loop = getattr(module, "general_loop", module.run_loop)
+    if rotating_loop is not None:
+        run_loop = rotating_loop
     started = wallclock.perf_counter()
     while True:
         status = run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, buffers)
@@ -131,7 +143,8 @@ def integrate(
             break
     elapsed = wallclock.perf_counter() - started
     if status != K.STATUS_DONE:
-        raise divergence_error(status, clock, counters, shocks, system, scheme)
+        failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
+        raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
     out_t, out_order, out_q, out_v, out_a, out_vint = (b[:count].copy() for b in buffers)
     steps = int(counters[K.K_STEP])
@@ -164,14 +177,31 @@ def loop_adapts(scheme: str, dt: float, options: SchemeOptions) -> bool:
     return abs(dt_max / dt_min - 1.0) > 100.0 * np.finfo(float).eps
 
 
-def new_buffers(capacity: int, n_modes: int, n_shocks: int):
+def new_buffers(capacity: int, n_modes: int, n_shocks: int, width: int = N_VINT):
     return (
         np.zeros(capacity),
         np.zeros(capacity, dtype=np.int64),
         np.zeros((capacity, n_modes)),
         np.zeros((capacity, n_modes)),
         np.zeros((capacity, n_modes)),
-        np.zeros((capacity, n_shocks, N_VINT)),
+        np.zeros((capacity, n_shocks, width)),
+    )
+
+
+def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | None:
+    """The error naming a nonlinearity of laws/ whose evaluation failed
+    (NaN in its internal variables), or None."""
+    from asterlite.dynamics.laws.kernel import failed_law
+
+    s = failed_law(shocks.flags, vint)
+    if s < 0:
+        return None
+    spec = shocks.specs[s]
+    return NumericalError(
+        f"COMPORTEMENT {spec.relation} {spec.name.strip()!r} (node {spec.node_1}) could not be "
+        f"evaluated at t={t:.6g}: a function was evaluated outside its domain "
+        "(PROL_GAUCHE/PROL_DROITE='EXCLU') or the local integration did not converge "
+        "(ITER_INTE_MAXI, RESI_INTE)"
     )
 
 

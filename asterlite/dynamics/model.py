@@ -16,6 +16,7 @@ import numpy as np
 from asterlite.dynamics import contact as C
 from asterlite.dynamics.formula import STACK_DEPTH, formula_program, program_tables
 from asterlite.dynamics.geometry import default_origin, local_frame, rest_side_signs
+from asterlite.dynamics.laws import kernel as law_kernel
 
 COMPONENTS = ("DX", "DY", "DZ")
 OBSTACLE_CODES = {
@@ -130,6 +131,16 @@ class ShockSpec:
     unidirectional: bool = False
     polar: np.ndarray | None = None  # DISCRET: (angle deg, radius) rows
     extra: dict = field(default_factory=dict)
+    # relations other than DIS_CHOC (asterlite.dynamics.laws): the packed law
+    # parameters, the internal variables before the first step, the local
+    # frame when it is not the obstacle's (rows: local axes) and the
+    # rotation mode shapes (DRX, DRY, DRZ rows) of the nodes
+    relation: str = "DIS_CHOC"
+    law: np.ndarray | None = None
+    law_state: np.ndarray | None = None
+    frame: np.ndarray | None = None
+    rphi_1: np.ndarray | None = None
+    rphi_2: np.ndarray | None = None
 
 
 @dataclass
@@ -142,13 +153,52 @@ class ShockSet:
     rots: np.ndarray
     phis: np.ndarray
     polars: np.ndarray
+    laws: np.ndarray | None = None  # (n, width) packed law parameters, width 0 without laws
+    rphis: np.ndarray | None = None  # (n, 2, 3, n_modes) rotation shapes (laws only)
+
+    def __post_init__(self) -> None:
+        if self.laws is None:
+            self.laws = np.zeros((self.count, 0))
+        if self.rphis is None:
+            self.rphis = np.zeros((self.count, 2, 3, 0))
+        self.law_scratch = law_kernel.scratch()
 
     @property
     def count(self) -> int:
         return len(self.specs)
 
+    @property
+    def has_laws(self) -> bool:
+        """Whether a relation other than DIS_CHOC is present (general path only)."""
+        return any(spec.relation != "DIS_CHOC" for spec in self.specs)
+
+    @property
+    def vint_width(self) -> int:
+        return law_kernel.VINT_WIDTH if self.has_laws else C.N_VINT
+
+    def initial_vint(self, t0: float) -> np.ndarray:
+        """Internal variables before the first step (laws: their initial
+        state and the instant of that state)."""
+        vint = np.zeros((self.count, self.vint_width))
+        for s, spec in enumerate(self.specs):
+            if spec.relation == "DIS_CHOC":
+                continue
+            if spec.law_state is not None:
+                vint[s, : len(spec.law_state)] = spec.law_state
+            vint[s, law_kernel.V_TIME] = t0
+        return vint
+
     def bundle(self):
-        return (self.flags, self.params, self.rots, self.phis, self.polars)
+        return (
+            self.flags,
+            self.params,
+            self.rots,
+            self.phis,
+            self.polars,
+            self.laws,
+            self.rphis,
+            self.law_scratch,
+        )
 
     def local_arrays(self):
         """(shapes, rest) in each shock's local frame, for
@@ -197,10 +247,28 @@ def build_shocks(specs: list[ShockSpec], system: LinearSystem) -> ShockSet:
     rots = np.zeros((ns, 3, 3))
     phis = np.zeros((ns, 2, 3, n_modes))
     polars = np.zeros((ns, npol, 2))
+    law_rows = [spec.law for spec in specs if spec.relation != "DIS_CHOC"]
+    width = max([0] + [len(law) for law in law_rows if law is not None])
+    if law_rows:
+        width = max(width, 1)
+    laws = np.zeros((ns, width))
+    rphis = np.zeros((ns, 2, 3, n_modes if law_rows else 0))
     for s, spec in enumerate(specs):
         two = spec.obstacle_type.startswith("BI_")
         coord2 = spec.coord_2 if two else None
-        rot = local_frame(spec.obstacle_type, spec.norm_obst, spec.angl_vril, spec.coord_1, coord2)
+        if spec.frame is not None:
+            rot = np.asarray(spec.frame, dtype=float)
+        else:
+            rot = local_frame(
+                spec.obstacle_type, spec.norm_obst, spec.angl_vril, spec.coord_1, coord2
+            )
+        if spec.relation != "DIS_CHOC":
+            flags[s, C.F_LAW] = law_kernel.LAW_CODES[spec.relation]
+            if spec.law is not None:
+                laws[s, : len(spec.law)] = spec.law
+            for node, shape in enumerate((spec.rphi_1, spec.rphi_2)):
+                if shape is not None:
+                    rphis[s, node] = shape
         origin = (
             spec.orig_obst if spec.orig_obst is not None else default_origin(spec.coord_1, coord2)
         )
@@ -234,7 +302,7 @@ def build_shocks(specs: list[ShockSpec], system: LinearSystem) -> ShockSet:
         p[C.P_COORD1 : C.P_COORD1 + 3] = spec.coord_1
         if two:
             p[C.P_COORD2 : C.P_COORD2 + 3] = spec.coord_2
-    return ShockSet(specs, flags, params, rots, phis, polars)
+    return ShockSet(specs, flags, params, rots, phis, polars, laws, rphis)
 
 
 def local_bundle(system: LinearSystem, shocks: ShockSet):

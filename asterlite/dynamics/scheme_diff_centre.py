@@ -82,7 +82,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     without reference counting (``_nrt=False``: nothing here allocates),
     so that the arrays handed to the inlined helpers cost nothing."""
     exc = model[2]
-    flags, params, rots, phis, polars = model[1]
+    flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
     mass_inverse, stiffness, damping, shapes, rest, drive = model[3]
     out_t, out_order, out_q, out_v, out_a, out_vint = archive
     return specialised_loop(

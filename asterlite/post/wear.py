@@ -520,11 +520,18 @@ def _depth_rod_hole(g: ContactGeometry, v_tube, v_obst):
 
 
 def _depth_rod_notch(g: ContactGeometry, v_tube, v_obst):
+    """Rod in a guide card with one or two notches: the root of a cubic fit
+    of the worn volume, found as code_aster finds it (:func:`guarded_newton`,
+    whose absolute step test stops after a few iterations at these depths:
+    code_aster's depths are this method's, not the exact roots)."""
     scale = 1.0 if g.kind == "GRAPPE_2_ENCO" else 0.5
     a, b, c = (scale * k for k in ROD_NOTCH_FIT)
 
     def volume(d):
         return ((a * d + b) * d + c) * d
+
+    def slope(d):
+        return (3.0 * a * d + 2.0 * b) * d + c
 
     limit = volume(ROD_NOTCH_DEPTH_MAX)
     depths = np.full(v_tube.size, WORN_THROUGH)
@@ -532,11 +539,49 @@ def _depth_rod_notch(g: ContactGeometry, v_tube, v_obst):
     for i, target in enumerate(v_tube):
         if target > limit:
             continue
-        root = root_in(lambda d, target=target: volume(d) - target, start, ROD_NOTCH_DEPTH_MAX)
+        root = guarded_newton(
+            lambda d, target=target: (volume(d) - target, slope(d)), start, ROD_NOTCH_DEPTH_MAX
+        )
         if root is None or root >= ROD_NOTCH_DEPTH_MAX:
             continue
         depths[i] = start = root
     return depths
+
+
+def guarded_newton(func, lo: float, hi: float, epsi: float = 1.0e-6, max_iter: int = 100):
+    """code_aster's safeguarded Newton iteration for wear depths (USUNEW).
+
+    ``func(x)`` gives (f, f'). Starts at the middle of [lo, hi]; a Newton
+    step leaving the bracket or converging too slowly is replaced by
+    code_aster's fallback, which sets x to half the bracket width times its
+    lower end. Stops when the change is below ``epsi`` relative to x, or the
+    step below ``epsi`` in absolute value; None after ``max_iter`` steps."""
+    low, high = lo, hi
+    x = 0.5 * (lo + hi)
+    step = abs(hi - lo)
+    f, df = func(x)
+    for _ in range(max_iter):
+        previous_step = step
+        outside = ((x - high) * df - f) * ((x - low) * df - f) >= 0.0
+        if outside or abs(2.0 * f) > abs(previous_step * df):
+            step = 0.5 * (high - low)
+            x = step * low
+            if abs(low - x) <= epsi * abs(x):
+                return x
+        else:
+            step = f / df
+            before = x
+            x = x - step
+            if abs(before - x) <= epsi * abs(x):
+                return x
+        if abs(step) < epsi:
+            return x
+        f, df = func(x)
+        if f < 0.0:
+            low = x
+        else:
+            high = x
+    return None
 
 
 def sector_depth(radius: float, volume, width: float, angle_span: float):

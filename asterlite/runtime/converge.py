@@ -27,6 +27,7 @@ import csv
 import math
 import re
 from collections.abc import Callable
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -45,6 +46,11 @@ DEFAULT_FACTORS = (2.0, 1.0, 0.5, 0.25, 0.125)  # times the deck's own PAS
 DEFAULT_TOLERANCES = (1e-3, 1e-4, 1e-5, 1e-6, 1e-7)
 DEFAULT_POINTS = (25, 50, 100, 200, 400)
 SHOCK_QUANTITIES = ("max_FN", "wear_power")
+# adaptive rungs may be stopped (an "unstable" row) when their step falls
+# below this fraction of the deck's PAS (0: code_aster's default PAS_MINI).
+# Off by default: sound runs also take isolated tiny steps at contact events.
+MIN_STEP_RATIO = 0.0
+MEMORY_FRACTION = 0.7  # of the physical memory: the address-space cap of `asterlite converge`
 RAN = ("PASS", "NOOK")  # run statuses whose values count
 UNSTABLE, ERROR, OK = "unstable", "error", "ok"
 
@@ -155,8 +161,11 @@ def parse_keyword(text: str) -> tuple[str, object]:
     return path.strip(), None if value.upper() == "NONE" else value.strip("'\"")
 
 
-def scheme_keywords(setting: Setting, transient: dict) -> dict:
-    """DYNA_VIBRA keyword values of one rung for one transient of the deck."""
+def scheme_keywords(
+    setting: Setting, transient: dict, min_step_ratio: float = MIN_STEP_RATIO
+) -> dict:
+    """DYNA_VIBRA keyword values of one rung for one transient of the deck;
+    adaptive rungs get ``PAS_MINI = min_step_ratio * PAS`` (0: the default)."""
     keywords = {"SCHEMA_TEMPS/SCHEMA": engine_scheme(setting.scheme)}
     base_step = transient["step"]
     if setting.knob == "PAS":
@@ -170,7 +179,7 @@ def scheme_keywords(setting: Setting, transient: dict) -> dict:
             keywords["SCHEMA_TEMPS/PAS_MAXI"] = None
         return keywords
     keywords["INCREMENT/PAS"] = base_step  # the initial step
-    keywords["SCHEMA_TEMPS/PAS_MINI"] = None
+    keywords["SCHEMA_TEMPS/PAS_MINI"] = min_step_ratio * base_step if min_step_ratio else None
     keywords["SCHEMA_TEMPS/PAS_MAXI"] = None
     if setting.knob == "TOLERANCE":
         keywords["SCHEMA_TEMPS/TOLERANCE"] = setting.value
@@ -180,13 +189,17 @@ def scheme_keywords(setting: Setting, transient: dict) -> dict:
 
 
 def overrides_for(
-    setting: Setting, transients: list[dict], extra: dict | None = None, span: int | None = None
+    setting: Setting,
+    transients: list[dict],
+    extra: dict | None = None,
+    span: int | None = None,
+    min_step_ratio: float = MIN_STEP_RATIO,
 ) -> list[KeywordOverride]:
     """One override per transient call of the deck; ``span``: stop each
     transient after that many (initial) steps (a warm-up run)."""
     overrides = []
     for transient in transients:
-        keywords = scheme_keywords(setting, transient)
+        keywords = scheme_keywords(setting, transient, min_step_ratio)
         keywords.update(extra or {})
         if span is not None and transient["t_start"] is not None:
             keywords["INCREMENT/INST_FIN"] = transient["t_start"] + span * keywords["INCREMENT/PAS"]
@@ -283,10 +296,11 @@ def run_setting(
     extra: dict | None = None,
     pattern: str | None = None,
     repeat: int = 1,
+    min_step_ratio: float = MIN_STEP_RATIO,
 ) -> Outcome:
     """Run the deck with one rung's keywords (``repeat`` times: the least
     integration time is kept; the values are those of the last run)."""
-    overrides = overrides_for(setting, transients, extra)
+    overrides = overrides_for(setting, transients, extra, min_step_ratio=min_step_ratio)
     best = None
     for _ in range(max(1, repeat)):
         report = run_in_scratch(deck, overrides)
@@ -295,6 +309,34 @@ def run_setting(
         seconds = sum(t["integration_seconds"] for t in report.transients)
         best = seconds if best is None else min(best, seconds)
     return outcome_of(setting, report, best, pattern)
+
+
+@contextmanager
+def memory_cap(fraction: float = MEMORY_FRACTION):
+    """Cap the process's address space at ``fraction`` of the physical memory
+    while the study runs, so that a rung whose adaptive step collapses (and
+    archives millions of steps) fails with a MemoryError — an ``error`` row —
+    instead of being killed by the system. No-op where unsupported."""
+    try:
+        import os
+        import resource
+
+        total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    except (ImportError, ValueError, OSError, AttributeError):
+        yield
+        return
+    cap = int(fraction * total)
+    if fraction <= 0 or (soft != resource.RLIM_INFINITY and soft <= cap):
+        yield
+        return
+    if hard != resource.RLIM_INFINITY:
+        cap = min(cap, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+    try:
+        yield
+    finally:
+        resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
 
 
 def run_in_scratch(deck: Path, overrides: list | None = None):
@@ -423,6 +465,7 @@ def run_study(
     extra: dict | None = None,
     repeat: int = 1,
     warmup: bool = True,
+    min_step_ratio: float = MIN_STEP_RATIO,
     progress: Callable[[Outcome], None] | None = None,
 ) -> Study:
     """Run the whole ladder and compare every run with the reference."""
@@ -443,7 +486,13 @@ def run_study(
             run_in_scratch(deck, overrides_for(setting, transients, extra, span=20))
             warmed.add(setting.scheme)
         outcome = run_setting(
-            deck, setting, transients, extra=extra, pattern=pattern, repeat=repeat
+            deck,
+            setting,
+            transients,
+            extra=extra,
+            pattern=pattern,
+            repeat=repeat,
+            min_step_ratio=min_step_ratio,
         )
         outcome.text = setting.label(transients[0]["step"])
         outcomes.append(outcome)
@@ -522,7 +571,7 @@ def table_rows(study: Study) -> list[tuple[str, ...]]:
                 o.status,
                 _num(o.seconds, ".4f") if o.status == OK else "-",
                 str(o.steps) if o.status == OK else "-",
-                _num(o.max_error) if not o.is_reference else "0",
+                _num(o.max_error),
                 _num(o.order, ".2f"),
                 "-" if o.is_reference else (o.worst if o.status == OK else o.message[:140]),
             )

@@ -27,7 +27,7 @@ def stability_limit(system, inverse_mass) -> float:
     return 0.05 * 2.0 * np.pi / np.sqrt(omega2.max())
 
 
-def integrate(system, times, q, v, a, mask, archive, inverse_mass):
+def integrate(system, times, q, v, a, mask, archive, inverse_mass, monitor=None):
     half = {"v": None}
 
     def step(dt, force, q, v, a):
@@ -42,4 +42,4 @@ def integrate(system, times, q, v, a, mask, archive, inverse_mass):
         half["v"] = v_half
         return q_new, v_half + 0.5 * dt * a_new, a_new
 
-    fixed_step_loop(system, times, q, v, a, mask, archive, step)
+    fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor)

@@ -15,7 +15,7 @@ from scipy.sparse.linalg import splu
 from asterlite.dynamics.physical.stepping import fixed_step_loop
 
 
-def integrate(system, times, q, v, a, mask, archive, beta=0.25, gamma=0.5):
+def integrate(system, times, q, v, a, mask, archive, beta=0.25, gamma=0.5, monitor=None):
     factors = {}
 
     def operator(dt):
@@ -38,7 +38,7 @@ def integrate(system, times, q, v, a, mask, archive, beta=0.25, gamma=0.5):
         v_new = v + c[6] * a + c[7] * a_new
         return q_new, v_new, a_new
 
-    fixed_step_loop(system, times, q, v, a, mask, archive, step)
+    fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor)
 
 
 def coefficients(dt, beta, gamma):

@@ -9,8 +9,10 @@ import numpy as np
 BLOCK = 512
 
 
-def fixed_step_loop(system, times, q, v, a, mask, archive, step) -> None:
-    """``step(dt, F_{n+1}, q, v, a) -> (q, v, a)`` advanced over ``times``."""
+def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None) -> None:
+    """``step(dt, F_{n+1}, q, v, a) -> (q, v, a)`` advanced over ``times``;
+    ``monitor(t, F_{n+1}, q_n, v_n, q_{n+1}, v_{n+1})`` after each step
+    (the energy balance) when given."""
     if mask[0]:
         archive.add(times[0], q, v, a)
     n_steps = times.size - 1
@@ -18,7 +20,10 @@ def fixed_step_loop(system, times, q, v, a, mask, archive, step) -> None:
         stop = min(start + BLOCK, n_steps + 1)
         forces = system.forces(times[start:stop])
         for k in range(start, stop):
+            q_old, v_old = q, v
             q, v, a = step(times[k] - times[k - 1], forces[k - start], q, v, a)
+            if monitor is not None:
+                monitor(times[k], forces[k - start], q_old, v_old, q, v)
             if not np.all(np.isfinite(q)):
                 raise FloatingPointError(f"the solution became non-finite at t={times[k]:.6g}")
             if mask[k]:

@@ -1,0 +1,164 @@
+"""Rotating machinery at variable speed (DYNA_VIBRA VITESSE_VARIABLE='OUI').
+
+The generalized damping and stiffness depend on the rotation speed Ω(t)
+and acceleration Ω'(t) (code_aster's dtmupmat)::
+
+    C(t) = C + Ω(t) G          (MATR_AMOR or modal damping, MATR_GYRO)
+    K(t) = K + Ω'(t) K_gy      (MATR_RIGI, MATR_RIGY; no MATR_RIGY: K)
+
+code_aster updates the matrices at the start of every step (the instant
+t_i of the state the step leaves) and, for NEWMARK, rebuilds the effective
+operators from them; the initial acceleration uses the matrices at the
+initial instant. Ω and Ω' are multipliers of the excitation machinery
+(tables, FORMULE programs), evaluated in the loop at t_i.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics import implicit as I
+from asterlite.dynamics import kernel as K
+from asterlite.dynamics import scheme_newmark as N
+from asterlite.dynamics.forces import loads_ready, multiplier_at
+from asterlite.dynamics.formula import run_program
+from asterlite.dynamics.model import (
+    PROL_CONSTANT,
+    SampledMultiplier,
+    kernel_program,
+    multiplier_points,
+    tabulate_excitation,
+)
+
+SCHEMES = ("NEWMARK",)
+
+
+@dataclass
+class Rotation:
+    """C, K at rest, the gyroscopic matrix G, K_gy, and Ω(t), Ω'(t)."""
+
+    damping: np.ndarray
+    stiffness: np.ndarray
+    gyro: np.ndarray
+    rigy: np.ndarray
+    speed: object  # function of INST
+    acceleration: object | None = None  # function of INST, or None (0)
+
+    def __post_init__(self) -> None:
+        self.excitation = None
+        # ETAT_INIT RESULTAT: code_aster (dtminit) restarts from the archived
+        # acceleration instead of solving the equilibrium at the new start
+        self.initial_acceleration = None
+
+    def tabulate(self, t0: float, t_end: float, h: float) -> None:
+        """Ω (row 0) and Ω' (row 1) as kernel multipliers; functions the
+        kernels cannot evaluate (no points, no program) are sampled every h
+        over the whole run (one table, no windows)."""
+        mults = [self.speed, self.acceleration if self.acceleration is not None else 0.0]
+        loads = []
+        full = []
+        for mult in mults:
+            if kernel_program(mult) is None and isinstance(
+                multiplier_points(mult, t0, t_end, h), SampledMultiplier
+            ):
+                count = max(2, int(np.ceil((t_end - t0) / h)) + 3)
+                xs = t0 + h * np.arange(count)
+                full.append((xs, np.asarray(mult.evaluate(xs), dtype=float)))
+                loads.append((np.zeros(1), 0.0))
+            else:
+                full.append(None)
+                loads.append((np.zeros(1), mult))
+        excitation = tabulate_excitation(1, loads, t0, t_end, h)
+        width = max([excitation.abscissas.shape[1]] + [len(f[0]) for f in full if f is not None])
+        if width > excitation.abscissas.shape[1]:
+            for name in ("abscissas", "ordinates"):
+                old = getattr(excitation, name)
+                new = np.zeros((old.shape[0], width))
+                new[:, : old.shape[1]] = old
+                setattr(excitation, name, new)
+        for row, table in enumerate(full):
+            if table is None:
+                continue
+            xs, ys = table
+            excitation.abscissas[row, : len(xs)] = xs
+            excitation.ordinates[row, : len(xs)] = ys
+            excitation.layout[row] = (len(xs), PROL_CONSTANT, PROL_CONSTANT)
+        self.excitation = excitation
+
+    def matrices_at(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """(C(t), K(t)) evaluated in Python (initial state)."""
+        exc = self.excitation.bundle()
+        speed, accel = speed_and_acceleration(exc, t)
+        return self.damping + speed * self.gyro, self.stiffness + accel * self.rigy
+
+    def bundle(self):
+        return (
+            np.ascontiguousarray(self.damping, dtype=float),
+            np.ascontiguousarray(self.stiffness, dtype=float),
+            np.ascontiguousarray(self.gyro, dtype=float),
+            np.ascontiguousarray(self.rigy, dtype=float),
+            self.excitation.bundle(),
+        )
+
+
+@njit(cache=True)
+def multiplier_value(exc, e, t):
+    codes, constants, stack = exc[12], exc[13], exc[14]
+    if codes[e, 0] > 0:
+        return run_program(codes, constants, e, t, stack)
+    layout = exc[3]
+    return multiplier_at(exc[1], exc[2], e, layout[e, 0], layout[e, 1], layout[e, 2], t, exc[9])
+
+
+@njit(cache=True)
+def speed_and_acceleration(exc, t):
+    return multiplier_value(exc, 0, t), multiplier_value(exc, 1, t)
+
+
+@njit(cache=True)
+def update_newmark(rows, scalars, rot, t, n):
+    """C(t), K(t) into NEWMARK's matrix blocks; operators rebuilt next step."""
+    damping0, stiffness0, gyro, rigy, exc = rot
+    speed, accel = speed_and_acceleration(exc, t)
+    damping = I.block(rows, N.VECTOR_ROWS, I.B_DAMP, n)
+    stiffness = I.block(rows, N.VECTOR_ROWS, I.B_STIFF, n)
+    for i in range(n):
+        for j in range(n):
+            damping[i, j] = damping0[i, j] + speed * gyro[i, j]
+            stiffness[i, j] = stiffness0[i, j] + accel * rigy[i, j]
+    scalars[N.S_DT_BUILT] = -1.0
+
+
+@njit(cache=True)
+def newmark_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+    """scheme_newmark.run_loop with the matrices updated before each step;
+    ``memory[3]`` is :meth:`Rotation.bundle`."""
+    rows, scalars, rot = memory[0], memory[1], memory[3]
+    n = state[0].shape[0]
+    while K.unfinished(clock, counters, eps):
+        if K.archive_full(counters, archive):
+            return K.STATUS_FULL
+        if not loads_ready(clock, model[2]):
+            return K.STATUS_LOADS
+        t, dt = K.plan_step(clock, counters, instants, eps)
+        update_newmark(rows, scalars, rot, t, n)
+        status, shock, dt_used, dt_next, rejected = N.step(
+            t, dt, counters[K.K_STEP], state, memory, model
+        )
+        if status != K.STATUS_DONE:
+            return K.record_failure(clock, counters, status, shock, dt)
+        result = (dt_used, dt_next, rejected)
+        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
+    return K.STATUS_DONE
+
+
+def prepare(scheme: str, memory, rotation: Rotation):
+    """(memory, run_loop) of a scheme run with variable rotation speed."""
+    if scheme != "NEWMARK":
+        raise ValueError(scheme)
+    rows, scalars, table = memory[:3]
+    scalars[N.S_DIAGONAL] = 0.0  # G couples the modes
+    return (rows, scalars, table, rotation.bundle()), newmark_loop
