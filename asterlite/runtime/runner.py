@@ -243,9 +243,13 @@ def shock_summary(result: str | None, times, shock) -> dict:
     fn = np.asarray(fields.get("FN", np.zeros(len(times))), dtype=float)
     zeros = np.zeros_like(fn)
     vt1, vt2 = fields.get("VT1", zeros), fields.get("VT2", zeros)
+    in_contact = fn != 0.0
+    # an impact starts where the archived normal force leaves zero
+    impacts = int(in_contact[0]) + int(np.count_nonzero(in_contact[1:] & ~in_contact[:-1]))
     return {
         "result": result,
         "shock": shock.name,
+        "impacts": impacts if fn.size else 0,
         "max_FN": float(np.abs(fn).max()) if fn.size else 0.0,
         "mean_FN": float(np.abs(fn).mean()) if fn.size else 0.0,
         "contact_fraction": float(np.mean(fn != 0.0)) if fn.size else 0.0,
@@ -302,6 +306,20 @@ def format_summary(report: RunReport) -> str:
             result = f" -> {timing.result}" if timing.result else ""
             lines.append(
                 f"  {timing.command:<18} line {line:<5}{result:<16} {timing.seconds:8.3f} s"
+            )
+    for run in report.transients:
+        lines.append(
+            f"transient {run['result']}: {run['scheme']} {run['steps']} steps"
+            f" ({run['rejected_steps']} rejected), step {run['min_step']}..{run['max_step']},"
+            f" integration {run['integration_seconds']:.3f} s"
+        )
+    if report.shocks:
+        lines.append("shocks (from archived instants):")
+        for shock in report.shocks:
+            lines.append(
+                f"  {shock['result']}/{shock['shock']}: {shock['impacts']} impacts,"
+                f" max FN {shock['max_FN']:.4g} N, contact {100 * shock['contact_fraction']:.1f} %,"
+                f" wear power {shock['wear_power']:.4g} W"
             )
     if report.tests:
         lines.append(
