@@ -790,9 +790,7 @@ def run_physical(ctx, kw):
         from asterlite.dynamics.physical.energy import EnergyBalance
 
         if scheme not in ("NEWMARK", "DIFF_CENTRE"):
-            ctx.unsupported(
-                f"ENERGIE with SCHEMA={scheme!r} (NEWMARK, DIFF_CENTRE)", "ENERGIE", kw
-            )
+            ctx.unsupported(f"ENERGIE with SCHEMA={scheme!r} (NEWMARK, DIFF_CENTRE)", "ENERGIE", kw)
         energy = EnergyBalance(system, times[0])
         previous = getattr(reused, "tables", {}).get("PARA_CALC") if reused is not None else None
         if previous is not None and t_state is not None:
@@ -967,7 +965,8 @@ def physical_supports(ctx, kw, numbering) -> list[dict]:
         except SeismicError as error:
             ctx.error(f"MODE_STAT: {error}", "MODE_STAT", kw)
         shape = transfer(shape, static.numbering, numbering)
-        supports.append({"shape": shape, "DEPL": occ["DEPL"], "VITE": occ["VITE"], "ACCE": occ["ACCE"]})
+        motions = {name: occ[name] for name in ("DEPL", "VITE", "ACCE")}
+        supports.append({"shape": shape, **motions})
     return supports
 
 
