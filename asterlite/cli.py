@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import time
 from pathlib import Path
 
 
@@ -51,9 +52,17 @@ def _check(args) -> int:
 def _corpus(args) -> int:
     from asterlite.runtime.corpus import format_table, run_corpus
 
-    def progress(row):
-        if not args.quiet:
-            print(f"  {row['deck']:<10} {row['status']:<12} {row['seconds']:7.2f} s", flush=True)
+    started = time.perf_counter()
+    on_terminal = sys.stdout.isatty()
+
+    def progress(row, done, total):
+        if args.quiet:
+            return
+        line = f"  {row['deck']:<10} {row['status']:<12} {row['seconds']:7.2f} s"
+        if on_terminal:  # a running count and an estimate of the time left
+            elapsed = time.perf_counter() - started
+            line += f"   [{done}/{total}, ~{elapsed / done * (total - done):.0f} s left]"
+        print(line, flush=True)
 
     only = args.only.split(",") if args.only else None
     rows = run_corpus(

@@ -3,7 +3,9 @@ SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing) and user
 fields (CHAM_UTIL).
 
 The fields are computed at every order of the result from its DEPL field
-(mode shapes for a mode_meca) and stored on the result as
+(mode shapes for a mode_meca), plus the element inertia forces M_e a_e from
+the ACCE field of a dyna_trans (code_aster's beam elements take the result's
+acceleration for transient results), and stored on the result as
 ``result.element_fields[NAME]`` (:class:`~asterlite.concepts.assembly.ElementField`)
 and ``result.node_fields[NAME]`` (:class:`~asterlite.concepts.assembly.NodalComponentField`).
 MODELE / CARA_ELEM / CHAM_MATER default to those the result's DOF numbering
@@ -39,6 +41,22 @@ def _nodal_values(ctx, result, kw) -> np.ndarray:
     if shapes is not None:
         return np.asarray(shapes, dtype=float).T
     ctx.error(f"the result {result.name or ''} has no DEPL field", "RESULTAT", kw)
+
+
+def _accelerations(ctx, result, values: np.ndarray) -> np.ndarray | None:
+    """(n_orders, n_dofs) ACCE of a dyna_trans (its beam forces include the
+    inertia M_e a_e, as code_aster's); None for static and modal results.
+    A dyna_trans without ACCE gets zero accelerations, as in code_aster."""
+    if "dyna_trans" not in getattr(result, "aster_types", ()):
+        return None
+    acce = result.fields.get("ACCE")
+    if acce is None:
+        ctx.log("CALC_CHAMP: the dyna_trans has no ACCE field, inertia forces taken as 0")
+        return None
+    acce = np.asarray(acce, dtype=float)
+    if acce.shape != values.shape:
+        ctx.error(f"ACCE has shape {acce.shape}, DEPL {values.shape}", "RESULTAT", None)
+    return acce
 
 
 def _context(ctx, kw, result):
@@ -117,9 +135,17 @@ def run(ctx, kw):
             ctx.error("beam fields need CARA_ELEM", "CARA_ELEM", kw)
         elno = sorted({n.replace("_NOEU", "_ELNO") for n in names})
         values = _nodal_values(ctx, result, kw)
+        accelerations = _accelerations(ctx, result, values)
         try:
             fields = beam_element_fields(
-                model, characteristics, materials, result.numbering, beams, values, elno
+                model,
+                characteristics,
+                materials,
+                result.numbering,
+                beams,
+                values,
+                elno,
+                accelerations=accelerations,
             )
         except (ElementError, ValueError, KeyError) as exc:
             ctx.error(str(exc), "CONTRAINTE", kw)

@@ -149,7 +149,59 @@ EFGE_COMPONENTS = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
 SIPO_COMPONENTS = ("SN", "SVY", "SVZ", "SMT", "SMFY", "SMFZ")
 
 
-def beam_local_forces(model, characteristics, materials, cells, displacements) -> np.ndarray:
+def _local_products(
+    model, characteristics, materials, cells, values, matrix: str, lumped: bool = False
+) -> np.ndarray:
+    """(n_orders, n_cells, 12) local-frame element products ``A_local v_local``
+    of POU_D_E / POU_D_T cells, ``A`` the stiffness ('K') or the mass ('M',
+    lumped as MASS_MECA_DIAG with ``lumped``), ``values`` (n_orders, n_cells, 12)
+    global-frame element DOFs."""
+    mesh = model.mesh
+    cells = np.asarray(cells, dtype=int)
+    sections = characteristics.sections if characteristics is not None else {}
+    # no RHO: no inertia (code_aster takes 0)
+    props = _material_values(materials, cells, "beam", need_density=False)
+    angles = cell_angles(model, characteristics, cells)
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    rot = beam.element_rotation(beam.rotation_from_angles(angles), 6)
+    v_local = np.einsum("eij,oej->oei", rot, values)
+    out = np.zeros_like(v_local)
+    for k, cell in enumerate(cells):
+        modelisation = model.cell_modelisation[int(cell)]
+        if modelisation not in ("POU_D_E", "POU_D_T"):
+            raise ElementError(f"internal forces of {modelisation} cells are not available")
+        a_local = beam.local_matrices(
+            modelisation,
+            matrix,
+            lengths[k],
+            sections[int(cell)],
+            props["E"][k],
+            props["NU"][k],
+            props["RHO"][k],
+            lumped,
+        )[0]
+        out[:, k, :] = v_local[:, k, :] @ a_local.T
+    return out
+
+
+def section_forces(nodal_forces: np.ndarray) -> np.ndarray:
+    """(..., 12) local element end forces -> (..., 2, 6) internal forces on
+    the sections: node 1's sign reversed (code_aster's EFGE convention)."""
+    out = nodal_forces.reshape(nodal_forces.shape[:-1] + (2, 6)).copy()
+    out[..., 0, :] *= -1.0
+    return out
+
+
+def beam_local_forces(
+    model,
+    characteristics,
+    materials,
+    cells,
+    displacements,
+    accelerations=None,
+    lumped: bool = False,
+) -> np.ndarray:
     """Generalised internal forces at the two nodes of beam cells.
 
     ``displacements`` is (n_orders, n_cells, 12) global-frame element DOFs
@@ -157,28 +209,18 @@ def beam_local_forces(model, characteristics, materials, cells, displacements) -
     with components N VY VZ MT MFY MFZ: the local element force
     ``f = K_local u_local`` with the sign of node 1 reversed, as code_aster's
     EFGE_ELNO / SIEF_ELNO (internal forces on the section, not nodal forces).
+
+    With ``accelerations`` (same shape: the ACCE field of a dynamic result)
+    the element inertia forces are added, ``f = K u + M a`` with the
+    consistent mass (MASS_MECA) or the lumped one (``lumped``), as code_aster
+    does for the beam elements of transient and harmonic results.
     """
-    mesh = model.mesh
-    cells = np.asarray(cells, dtype=int)
-    sections = characteristics.sections if characteristics is not None else {}
-    values = _material_values(materials, cells, "beam", need_density=False)
-    angles = cell_angles(model, characteristics, cells)
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
-    rot = beam.element_rotation(beam.rotation_from_angles(angles), 6)
-    u_local = np.einsum("eij,oej->oei", rot, displacements)
-    out = np.zeros(displacements.shape[:2] + (2, 6))
-    for k, cell in enumerate(cells):
-        modelisation = model.cell_modelisation[int(cell)]
-        if modelisation not in ("POU_D_E", "POU_D_T"):
-            raise ElementError(f"internal forces of {modelisation} cells are not available")
-        k_local = beam.local_matrices(
-            modelisation, "K", lengths[k], sections[int(cell)], values["E"][k], values["NU"][k]
-        )[0]
-        f = u_local[:, k, :] @ k_local.T
-        out[:, k, 0, :] = -f[:, :6]
-        out[:, k, 1, :] = f[:, 6:]
-    return out
+    f = _local_products(model, characteristics, materials, cells, displacements, "K")
+    if accelerations is not None:
+        f = f + _local_products(
+            model, characteristics, materials, cells, accelerations, "M", lumped
+        )
+    return section_forces(f)
 
 
 def beam_stresses(efge: np.ndarray, sections: list[dict], modelisations: list[str]) -> np.ndarray:

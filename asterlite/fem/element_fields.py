@@ -7,6 +7,10 @@
 - ``EFGE_ELGA`` / ``SIEF_ELGA``: the same forces at the 3 Gauss points, linear
   between the two nodes (exact for unloaded straight beams: constant forces,
   linear moments);
+- dynamic results (``accelerations`` given: the ACCE field of a dyna_trans)
+  add the element inertia forces, ``K_e u_e + M_e a_e``, as code_aster's beam
+  elements do for transient results: the forces then balance the inertia
+  distribution along each beam, so SN differs between its two nodes;
 - ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
   cells sharing it (code_aster's nodal smoothing).
 
@@ -48,12 +52,26 @@ def element_displacements(mesh, numbering, cells, values: np.ndarray) -> np.ndar
 
 
 def beam_element_fields(
-    model, characteristics, materials, numbering, cells, values: np.ndarray, options
+    model,
+    characteristics,
+    materials,
+    numbering,
+    cells,
+    values: np.ndarray,
+    options,
+    accelerations: np.ndarray | None = None,
+    lumped_mass: bool = False,
 ) -> dict[str, ElementField]:
-    """The requested ELNO fields of beam cells for nodal values (n_orders, n_dofs)."""
+    """The requested ELNO fields of beam cells for nodal values (n_orders, n_dofs).
+
+    ``accelerations`` (n_orders, n_dofs), when given, adds the inertia forces
+    ``M_e a_e`` (consistent mass, or lumped with ``lumped_mass``)."""
     cells = np.asarray(cells, dtype=int)
     u = element_displacements(model.mesh, numbering, cells, values)
-    efge = beam_local_forces(model, characteristics, materials, cells, u)
+    a = None
+    if accelerations is not None:
+        a = element_displacements(model.mesh, numbering, cells, accelerations)
+    efge = beam_local_forces(model, characteristics, materials, cells, u, a, lumped_mass)
     out = {}
     for name in options:
         if name in ("EFGE_ELNO", "SIEF_ELNO"):

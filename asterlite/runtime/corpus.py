@@ -81,7 +81,7 @@ def run_corpus(root: Path, *, only=None, jobs: int = 2, timeout: float = 900.0, 
             row = future.result()
             rows.append(row)
             if progress is not None:
-                progress(row)
+                progress(row, len(rows), len(decks))
     return rows
 
 
