@@ -1,10 +1,17 @@
 """CREA_TABLE: a table from lists (LISTE: PARA + LISTE_R / LISTE_I / LISTE_K
-/ LISTE_CO) or from a function (FONCTION: its abscissas and ordinates)."""
+/ LISTE_CO), from a function (FONCTION: its abscissas and ordinates) or from
+a result's computed field (RESU: element fields and ``*_NOEU`` fields, with
+code_aster's columns RESULTAT NOM_CHAM [INST] NUME_ORDRE MAILLE NOEUD|POINT
+SOUS_POINT COOR_X COOR_Y COOR_Z <components>)."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from asterlite.concepts.table import Table
-from asterlite.post.restitution import as_tuple
+from asterlite.fem.selection import select_cells, select_nodes
+from asterlite.post import table_ops
+from asterlite.post.restitution import as_tuple, computed_fields, selection_from_keywords
 
 
 def run(ctx, kw):
@@ -45,5 +52,64 @@ def run(ctx, kw):
         for x, y in zip(func.abscissas, func.ordinates, strict=True):
             table.add_row({para[0]: float(x), para[1]: y})
         return table
-    which = next((k for k in ("RESU", "TITRE") if kw.get(k)), "source")
+    if kw.factor("RESU"):
+        table = from_result(ctx, kw.factor("RESU")[0])
+        table.title = kw.get("TITRE") or ""
+        return table
+    which = next((k for k in ("TITRE",) if kw.get(k)), "source")
     ctx.unsupported(f"CREA_TABLE from {which}", which, kw)
+
+
+def from_result(ctx, occ):
+    """RESU: the values of an element field (``*_ELNO``, ``*_ELGA``) or a
+    smoothed nodal field (``*_NOEU``) that CALC_CHAMP stored on RESULTAT."""
+    if occ.get("RESULTAT") is None:
+        ctx.unsupported("CREA_TABLE RESU/CHAM_GD (RESULTAT only)", "CHAM_GD", occ)
+    for key in ("NOM_VARI", "MODE", "LIST_MODE", "FREQ", "LIST_FREQ"):
+        if occ.get(key) is not None:
+            ctx.unsupported(f"CREA_TABLE RESU/{key}", key, occ)
+    result, name = occ["RESULTAT"], occ["NOM_CHAM"]
+    field = computed_fields(result).get(name)
+    if field is None:
+        ctx.unsupported(
+            f"CREA_TABLE RESU on {name} (element or *_NOEU fields only)", "NOM_CHAM", occ
+        )
+    components = tuple(as_tuple(occ.get("NOM_CMP"))) or tuple(field.components)
+    absent = [c for c in components if c not in field.components]
+    if absent:
+        ctx.error(
+            f"{name} has no component {absent[0]!r} (it has {', '.join(field.components)})",
+            "NOM_CMP",
+            occ,
+        )
+    mesh = result.numbering.mesh
+    n_orders = field.values.shape[0]
+    times = getattr(result, "times", None)
+    order = np.asarray(getattr(result, "order", np.arange(1, n_orders + 1)))
+    grid = np.arange(n_orders, dtype=float) if times is None else np.asarray(times, dtype=float)
+    picked = np.asarray(selection_from_keywords(ctx, occ, grid, order).lower, dtype=int)
+    with_time = times is not None or occ.get("INST") is not None or occ.get("LIST_INST") is not None
+    steps = [(order[i], float(grid[i]) if with_time else None) for i in picked]
+    cmp_index = [field.components.index(c) for c in components]
+    head = {"RESULTAT": result.name or "", "NOM_CHAM": name}
+    if hasattr(field, "cells"):
+        if occ.get("TOUT") != "OUI" and not (occ.get("GROUP_MA") or occ.get("MAILLE")):
+            ctx.unsupported(
+                "CREA_TABLE RESU on an element field by GROUP_NO / NOEUD", "GROUP_NO", occ
+            )
+        chosen = select_cells(ctx, occ, mesh, all_cells=field.cells)
+        cells = np.intersect1d(np.asarray(chosen, dtype=int), np.asarray(field.cells, dtype=int))
+        position = {int(c): i for i, c in enumerate(field.cells)}
+        values = field.values[picked][:, [position[int(c)] for c in cells]][..., cmp_index]
+        n_points = values.shape[2]
+        by_node = name.endswith("_ELNO")
+        supports = table_ops.field_support_labels(mesh, cells, n_points, by_node)
+        flat = values.reshape(len(steps), len(cells) * n_points, len(components))
+        kind = "ELNO" if by_node else "ELGA"
+        return table_ops.field_value_table(head, steps, supports, flat, components, kind)
+    chosen = select_nodes(ctx, occ, mesh, all_nodes=field.nodes)
+    nodes = np.intersect1d(np.asarray(chosen, dtype=int), np.asarray(field.nodes, dtype=int))
+    position = {int(n): i for i, n in enumerate(field.nodes)}
+    values = field.values[picked][:, [position[int(n)] for n in nodes]][..., cmp_index]
+    supports = table_ops.node_support_labels(mesh, nodes)
+    return table_ops.field_value_table(head, steps, supports, values, components, "NOEU")

@@ -162,3 +162,68 @@ def statistics(table: Table, names, kinds) -> Table:
                 row[name] = STATISTICS[kind](values).item()
         out.add_row(row)
     return out
+
+
+# -- CREA_TABLE RESU: field values as a table ------------------------------
+
+
+def field_support_labels(mesh, cells, n_points: int, by_node: bool) -> list[dict]:
+    """One dict per (cell, point): MAILLE and NOEUD (by 1-based number, as
+    code_aster 17 names them, with the node's COOR_X/Y/Z) for ``*_ELNO``,
+    MAILLE and POINT for ``*_ELGA``; cells outer, points inner."""
+    labels = []
+    for cell in cells:
+        nodes = mesh.cell_nodes[int(cell)]
+        for point in range(n_points):
+            label = {"MAILLE": str(int(cell) + 1)}
+            if by_node:
+                node = int(nodes[point])
+                label["NOEUD"] = str(node + 1)
+                label.update(coordinates(mesh, node))
+            else:
+                label["POINT"] = point + 1
+            labels.append(label)
+    return labels
+
+
+def node_support_labels(mesh, nodes) -> list[dict]:
+    """One dict per node: NOEUD (1-based number) and COOR_X/Y/Z."""
+    return [{"NOEUD": str(int(n) + 1), **coordinates(mesh, int(n))} for n in nodes]
+
+
+def coordinates(mesh, node: int) -> dict:
+    """COOR_X, COOR_Y, COOR_Z of a mesh node."""
+    x, y, z = (float(v) for v in mesh.coords[node][:3])
+    return {"COOR_X": x, "COOR_Y": y, "COOR_Z": z}
+
+
+def field_value_table(
+    head: dict, steps, supports: list[dict], values: np.ndarray, components, kind: str
+) -> Table:
+    """CREA_TABLE RESU's table: for each step (NUME_ORDRE, INST or None) and
+    each support (MAILLE / NOEUD / POINT / COOR_*), the row ``head``
+    (RESULTAT, NOM_CHAM) + access + support + the components' values
+    ``values[step, support, component]``. ``kind`` (ELNO, ELGA, NOEU)
+    fixes code_aster's columns."""
+    table = Table()
+    for name in head:
+        table.add_column(name, "K16")
+    if any(time is not None for _, time in steps):
+        table.add_column("INST", "R")
+    table.add_column("NUME_ORDRE", "I")
+    support_columns = {
+        "ELNO": (("MAILLE", "K8"), ("NOEUD", "K8"), ("SOUS_POINT", "I")),
+        "ELGA": (("MAILLE", "K8"), ("POINT", "I"), ("SOUS_POINT", "I")),
+        "NOEU": (("NOEUD", "K8"),),
+    }[kind]
+    for name, code in support_columns + (("COOR_X", "R"), ("COOR_Y", "R"), ("COOR_Z", "R")):
+        table.add_column(name, code)
+    for name in components:
+        table.add_column(name, "R")
+    for k, (order, time) in enumerate(steps):
+        access = {"INST": time, "NUME_ORDRE": int(order)}
+        for j, support in enumerate(supports):
+            row = {**head, **access, **support}
+            row.update(zip(components, map(float, values[k, j]), strict=True))
+            table.add_row(row)
+    return table

@@ -1,0 +1,64 @@
+"""POST_RCCM: RCC-M checks; asterlite computes the B3600 equivalent moment.
+
+``TYPE_RESU_MECA='B3600'``, ``OPTION='MOMENT_EQUIVALENT'``: from the
+``EFGE_ELNO`` field CALC_CHAMP stored on RESU_MECA's RESULTAT, on the cells
+of ZONE_ANALYSE (TOUT or GROUP_MA), at the orders TOUT_ORDRE / NUME_ORDRE /
+INST, the table of MT, MFY, MFZ and MEQ = sqrt(MT² + MFY² + MFZ²), each the
+largest magnitude over the orders (:mod:`asterlite.post.rccm`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.fem.selection import select_cells
+from asterlite.post.rccm import moment_equivalent_table, moment_equivalent_values
+from asterlite.post.restitution import selection_from_keywords
+
+
+def run(ctx, kw):
+    if kw.get("OPTION") != "MOMENT_EQUIVALENT":
+        ctx.unsupported(f"POST_RCCM OPTION={kw.get('OPTION')!r}", "OPTION", kw)
+    occ = kw.factor("RESU_MECA")[0]
+    if occ.get("RESULTAT") is None:
+        ctx.unsupported("POST_RCCM RESU_MECA/CHAM_GD (RESULTAT only)", "CHAM_GD", occ)
+    result = occ["RESULTAT"]
+    name = occ.get("NOM_CHAM", "EFGE_ELNO")
+    field = (getattr(result, "element_fields", None) or {}).get(name)
+    if field is None:
+        ctx.error(f"{name} is not computed on the result (CALC_CHAMP first)", "NOM_CHAM", occ)
+    mesh = result.numbering.mesh
+    cells = analysed_cells(ctx, kw.factor("ZONE_ANALYSE")[0], mesh, field.cells)
+    orders = selected_orders(ctx, occ, result, field.values.shape[0])
+    rows = {int(c): i for i, c in enumerate(field.cells)}
+    values = field.values[:, [rows[int(c)] for c in cells]]
+    try:
+        maxima = moment_equivalent_values(values, field.components, orders)
+    except ValueError as exc:
+        ctx.error(str(exc), "NOM_CHAM", occ)
+    table = moment_equivalent_table(
+        maxima, cells, [mesh.cell_nodes[int(c)] for c in cells], result.name or "", name
+    )
+    table.title = kw.get("TITRE") or ""
+    ctx.log(
+        f"POST_RCCM B3600 MOMENT_EQUIVALENT: {len(cells)} cells, {len(orders)} orders, "
+        f"MEQ max {max(table.column('MEQ'), default=0.0):.6g}"
+    )
+    return table
+
+
+def analysed_cells(ctx, zone, mesh, carried) -> np.ndarray:
+    """ZONE_ANALYSE's cells that carry the field, in mesh order."""
+    chosen = select_cells(ctx, zone, mesh, all_cells=carried)
+    cells = np.intersect1d(np.asarray(chosen, dtype=int), np.asarray(carried, dtype=int))
+    if not cells.size:
+        ctx.error("no cell of ZONE_ANALYSE carries the field", "GROUP_MA", zone)
+    return cells
+
+
+def selected_orders(ctx, occ, result, n_orders: int) -> np.ndarray:
+    """Indices (into the field's orders) of TOUT_ORDRE / NUME_ORDRE / INST."""
+    times = np.asarray(getattr(result, "times", np.arange(n_orders)), dtype=float)
+    order = np.asarray(getattr(result, "order", np.arange(1, n_orders + 1)))
+    selection = selection_from_keywords(ctx, occ, times, order)
+    return np.asarray(selection.lower, dtype=int)
