@@ -137,10 +137,10 @@ def impact_rows(table, labels, t, fields, occ) -> None:
 
 
 def buckling_rows(table, labels, shock, number, times, mesh) -> None:
-    """A FLAMBAGE connection that buckled: residual crush force and instant."""
+    """A FLAMBAGE connection that buckled: residual crushing and instant."""
     if shock.relation != "FLAMBAGE":
         return
-    crush = shock_quantity(shock, "VINT1")
+    crush = shock_quantity(shock, "VINT9")  # VINT9: crushing (VINT1 is the normal force)
     if crush is None or crush[-1] <= 0:
         return
     first = int(np.argmax(crush > 0))

@@ -51,9 +51,13 @@ def _state_index(ctx, occ, times, order) -> tuple[int, str]:
         return int(matches[0]), f"ordre {number}"
     if occ.get("INST") is not None:
         t = float(occ["INST"])
+        # code_aster searches the instant with the occurrence's own PRECISION and
+        # CRITERE (the first ones when pairs are given), keeping the nearest
+        precision = as_tuple(occ.get("PRECISION") or 1e-6)[0]
+        criterion = as_tuple(occ.get("CRITERE") or "RELATIF")[0]
         try:
-            # the occurrence's PRECISION is the test tolerance: match instants tightly
-            return int(nearest_archived(times, [t], 1e-6, "RELATIF")[0]), f"inst {t:g}"
+            index = nearest_archived(times, [t], float(precision), str(criterion))[0]
+            return int(index), f"inst {t:g}"
         except Exception as exc:
             ctx.error(getattr(exc, "message", str(exc)), "INST", occ)
     ctx.error("NUME_ORDRE or INST is required", "NUME_ORDRE", occ)
