@@ -28,6 +28,7 @@ from asterlite.fem.element_fields import (
 )
 from asterlite.fem.elements import ElementError
 from asterlite.fem.selection import as_tuple, select_cells
+from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
 
@@ -71,7 +72,32 @@ def _context(ctx, kw, result):
     return model, characteristics, materials
 
 
-def _cham_util(ctx, result, occ) -> None:
+_ORDER_KEYWORDS = ("NUME_ORDRE", "LIST_ORDRE", "INST", "LIST_INST")
+
+
+def _selected_orders(ctx, kw, result) -> np.ndarray | None:
+    """Row indices of the orders named by NUME_ORDRE / INST... of a transient
+    result, None for all of them."""
+    times, order = getattr(result, "times", None), getattr(result, "order", None)
+    if times is None or order is None or all(kw.get(k) is None for k in _ORDER_KEYWORDS):
+        return None
+    return selection_from_keywords(ctx, kw, times, order).lower
+
+
+def _evaluate(formula, columns: list[np.ndarray]) -> np.ndarray:
+    """A deck formula on arrays, point by point when it does not take arrays."""
+    try:
+        return np.broadcast_to(formula.evaluate(*columns), columns[0].shape)
+    except Exception:  # noqa: BLE001 - deck functions may not take arrays
+        flat = [c.ravel() for c in columns]
+        return np.array(
+            [formula(*(float(c[i]) for c in flat)) for i in range(flat[0].size)]
+        ).reshape(columns[0].shape)
+
+
+def _cham_util(ctx, result, occ, rows=None) -> None:
+    """UTnn_ELNO from a formula of an ELNO field's components; with ``rows``
+    (selected orders) the other orders are NaN (code_aster has no field there)."""
     source = occ["NOM_CHAM"]
     field = result.element_fields.get(source)
     if field is None:
@@ -79,20 +105,16 @@ def _cham_util(ctx, result, occ) -> None:
     if occ.get("FORMULE") is None:
         ctx.unsupported("CHAM_UTIL CRITERE / NORME", "CRITERE", occ)
     formulas = as_tuple(occ["FORMULE"])
-    values = np.zeros(field.values.shape[:3] + (len(formulas),))
+    source_values = field.values if rows is None else field.values[rows]
+    values = np.full(field.values.shape[:3] + (len(formulas),), np.nan)
     for k, formula in enumerate(formulas):
         params = formula.nom_para
         missing = [p for p in params if p not in field.components]
         if missing:
             ctx.error(f"{source} has no component {', '.join(missing)}", "FORMULE", occ)
-        columns = [field.values[..., field.components.index(p)] for p in params]
-        try:
-            values[..., k] = formula.evaluate(*columns)
-        except Exception:  # noqa: BLE001 - deck functions may not take arrays
-            flat = [c.ravel() for c in columns]
-            values[..., k] = np.array(
-                [formula(*(float(c[i]) for c in flat)) for i in range(flat[0].size)]
-            ).reshape(columns[0].shape)
+        columns = [source_values[..., field.components.index(p)] for p in params]
+        target = slice(None) if rows is None else rows
+        values[target, ..., k] = _evaluate(formula, columns)
     name = f"UT{int(occ['NUME_CHAM_RESU']):02d}_" + source.split("_")[-1]
     components = tuple(f"X{k + 1}" for k in range(len(formulas)))
     result.element_fields[name] = ElementField(name, field.cells, components, values)
@@ -158,6 +180,7 @@ def run(ctx, kw):
         ctx.log(
             f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
         )
+    rows = _selected_orders(ctx, kw, result) if kw.factor("CHAM_UTIL") else None
     for occ in kw.factor("CHAM_UTIL"):
-        _cham_util(ctx, result, occ)
+        _cham_util(ctx, result, occ, rows)
     return result

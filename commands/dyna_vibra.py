@@ -782,7 +782,11 @@ def run_physical(ctx, kw):
     q, v, a, t_state, order_offset = physical_initial_state(ctx, kw, system)
     times, dt = physical_instants(ctx, kw, t_state)
     if a is None:
-        a = system.initial_acceleration(times[0], q, v)
+        a = (
+            system.initial_acceleration(times[0], q, v)
+            if initial_acceleration_computed(kw)
+            else np.zeros(system.n_free)
+        )
     archive = Archive(system.n_free)
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
     energy = None
@@ -968,6 +972,19 @@ def physical_supports(ctx, kw, numbering) -> list[dict]:
         motions = {name: occ[name] for name in ("DEPL", "VITE", "ACCE")}
         supports.append({"shape": shape, **motions})
     return supports
+
+
+def initial_acceleration_computed(kw) -> bool:
+    """code_aster (dltali / dltini) solves for the initial acceleration only
+    when ETAT_INIT gives DEPL or VITE; from rest (no ETAT_INIT) the first
+    step starts with a zero acceleration, whatever the load at t0."""
+    occs = kw.factor("ETAT_INIT")
+    if not occs:
+        return False
+    occ = occs[0]
+    return occ.get("RESULTAT") is not None or any(
+        occ.get(name) is not None for name in ("DEPL", "VITE")
+    )
 
 
 def physical_initial_state(ctx, kw, system):

@@ -97,3 +97,26 @@ def test_results_without_acceleration_keep_stiffness_forces():
     assert np.abs(inertia - stiffness).max() > 1.0
     # K u alone: the element ends balance (no load inside the elements)
     np.testing.assert_allclose(stiffness[0, :, 0, :3], stiffness[0, :, 1, :3], atol=1e-8)
+
+
+def test_cham_util_on_chosen_instants_only():
+    session, _, result = _accelerated_cantilever()
+    two = DynaTrans(
+        result.numbering,
+        np.array([0.0, 1.0]),
+        np.array([1, 2]),
+        {name: np.vstack([0 * v, v]) for name, v in result.fields.items()},
+    )
+    sipo = run(session, "CALC_CHAMP", RESULTAT=two, CONTRAINTE="SIPO_ELNO")
+    double = run(session, "FORMULE", VALE="2*SN", NOM_PARA="SN")
+    out = run(
+        session,
+        "CALC_CHAMP",
+        RESULTAT=sipo,
+        INST=1.0,
+        CHAM_UTIL={"NOM_CHAM": "SIPO_ELNO", "FORMULE": double, "NUME_CHAM_RESU": 1},
+    )
+    ut = out.element_fields["UT01_ELNO"].values
+    sn = out.element_fields["SIPO_ELNO"].values[..., 0]
+    np.testing.assert_allclose(ut[1, ..., 0], 2 * sn[1], rtol=1e-12)
+    assert np.isnan(ut[0]).all()  # not computed at the other instant

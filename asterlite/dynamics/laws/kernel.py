@@ -93,9 +93,9 @@ def node_motion(phi, q, v, i):
 
 @njit(cache=True)
 def kinematics(s, q, v, params, rots, phis, two_nodes, out):
-    """``out`` rows (9 or more, 6 columns or more): 0/1 local position (rest + displacement + support
-    motion, from the origin) of node 1/2, 2/3 local velocity of node 1/2,
-    6-8 scratch,
+    """``out`` rows (9 or more, 6 columns or more): 0/1 local position
+    (rest + displacement + support motion, from the origin) of node 1/2,
+    2/3 local velocity of node 1/2, 6-8 scratch,
     4/5 local displacement (modal + support motion) minus the origin, as
     code_aster stores it for the axial laws, of node 1/2."""
     for node in range(2):
@@ -116,12 +116,8 @@ def kinematics(s, q, v, params, rots, phis, two_nodes, out):
             gv[i] = w + params[s, drive + 3 + i]
         for i in range(3):
             out[node, i] = rots[s, i, 0] * gx[0] + rots[s, i, 1] * gx[1] + rots[s, i, 2] * gx[2]
-            out[2 + node, i] = (
-                rots[s, i, 0] * gv[0] + rots[s, i, 1] * gv[1] + rots[s, i, 2] * gv[2]
-            )
-            out[4 + node, i] = (
-                rots[s, i, 0] * gu[0] + rots[s, i, 1] * gu[1] + rots[s, i, 2] * gu[2]
-            )
+            out[2 + node, i] = rots[s, i, 0] * gv[0] + rots[s, i, 1] * gv[1] + rots[s, i, 2] * gv[2]
+            out[4 + node, i] = rots[s, i, 0] * gu[0] + rots[s, i, 1] * gu[1] + rots[s, i, 2] * gu[2]
 
 
 @njit(cache=True)
@@ -169,9 +165,11 @@ def law_forces(t, q, v, flags, params, rots, phis, polars, laws, rphis, vint, wo
             dtz = node_motion(rphis[s, 1], q, v, 2)[0] - node_motion(rphis[s, 0], q, v, 2)[0]
             mx, my, mz = rotor_fiss.cracked_rotor_moment(law, t, rots[s], dtx, dty, dtz, vint[s])
             for m in range(out.shape[0]):
-                out[m] += (rphis[s, 0, 0, m] - rphis[s, 1, 0, m]) * mx + (
-                    rphis[s, 0, 1, m] - rphis[s, 1, 1, m]
-                ) * my + (rphis[s, 0, 2, m] - rphis[s, 1, 2, m]) * mz
+                out[m] += (
+                    (rphis[s, 0, 0, m] - rphis[s, 1, 0, m]) * mx
+                    + (rphis[s, 0, 1, m] - rphis[s, 1, 1, m]) * my
+                    + (rphis[s, 0, 2, m] - rphis[s, 1, 2, m]) * mz
+                )
             continue
         two_nodes = flags[s, F_TWO_NODES] == 1
         kinematics(s, q, v, params, rots, phis, two_nodes, kin)
