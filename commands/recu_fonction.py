@@ -40,7 +40,8 @@ def run(ctx, kw):
         which = next((k for k in ("CHAM_GD", "BASE_ELAS_FLUI", "NAPPE") if k in kw), "source")
         ctx.unsupported(f"RECU_FONCTION from {which}", which, kw)
     if resu is None:
-        resu = kw.get("PARA_Y") or kw.get("NOM_CMP") or kw.get("NOM_CHAM") or "TOUTRESU"
+        # code_aster names the ordinate after the field (DEPL), not the component
+        resu = kw.get("PARA_Y") or kw.get("NOM_CHAM") or kw.get("NOM_CMP") or "TOUTRESU"
     return Function(
         x,
         y,
