@@ -2,8 +2,9 @@
 
 u(t) = Φ q(t) on the chosen DOFs, at the archived states (TOUT_ORDRE,
 NUME_ORDRE) or at chosen instants (INST, LIST_INST), interpolated linearly
-when INTERPOL='LIN'. The result's orders are the archived ones for
-TOUT_ORDRE / NUME_ORDRE and 1..n for instant lists.
+when INTERPOL='LIN'. The restituted states are numbered in sequence, as
+code_aster does: 0 for the initial state when it is restituted, then 1, 2...
+(so with PAS_ARCH=10 the 10th archived state is order 10, not step 100).
 
 MULT_APPUI='OUI' adds the support motion Σ ψ_k s_k(t) when the tran_gene
 carries it in ``info["mult_appui"]`` (a list of dicts with ``"shape"``: a
@@ -69,7 +70,7 @@ def run(ctx, kw):
         sub = numbering
     else:
         sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
-    restored = DynaTrans(sub, selection.times, selection.order, out)
+    restored = DynaTrans(sub, selection.times, sequence_numbers(selection.times, result.times), out)
     if element_names:
         for keyword in ("MULT_APPUI", "CORR_STAT"):
             if kw.get(keyword) == "OUI":
@@ -163,3 +164,12 @@ def chosen_modes(ctx, kw, modes: GeneralizedModes) -> list[int] | None:
     if absent:
         ctx.error(f"{key} {absent[0]} is not among the {modes.n_modes} modes", key, kw)
     return [known.index(w) for w in wanted]
+
+
+def sequence_numbers(selected_times, archived_times) -> np.ndarray:
+    """NUME_ORDRE of restituted states: in sequence, from 0 when the first
+    one is the initial state of the transient, else from 1."""
+    count = len(selected_times)
+    initial = count > 0 and len(archived_times) > 0 and selected_times[0] == archived_times[0]
+    start = 0 if initial else 1
+    return np.arange(start, start + count)
