@@ -114,7 +114,8 @@ def _cham_util(ctx, result, occ, rows=None) -> None:
             ctx.error(f"{source} has no component {', '.join(missing)}", "FORMULE", occ)
         columns = [source_values[..., field.components.index(p)] for p in params]
         target = slice(None) if rows is None else rows
-        values[target, ..., k] = _evaluate(formula, columns)
+        # real fields: the real part of a VALE_C formula
+        values[target, ..., k] = np.real(_evaluate(formula, columns))
     name = f"UT{int(occ['NUME_CHAM_RESU']):02d}_" + source.split("_")[-1]
     components = tuple(f"X{k + 1}" for k in range(len(formulas)))
     result.element_fields[name] = ElementField(name, field.cells, components, values)

@@ -89,12 +89,19 @@ def test_rigid_acceleration_alone_gives_the_element_inertia():
 
 def test_results_without_acceleration_keep_stiffness_forces():
     session, model, result = _accelerated_cantilever()
-    with_acce = run(session, "CALC_CHAMP", RESULTAT=result, CONTRAINTE="EFGE_ELNO")
+    options = ("EFGE_ELNO", "SIEF_ELNO", "EFGE_ELGA", "SIEF_ELGA")
+    with_acce = run(session, "CALC_CHAMP", RESULTAT=result, CONTRAINTE=options)
     del result.fields["ACCE"]
-    without = run(session, "CALC_CHAMP", RESULTAT=result, CONTRAINTE="EFGE_ELNO")
+    without = run(session, "CALC_CHAMP", RESULTAT=result, CONTRAINTE=options)
     inertia = with_acce.element_fields["EFGE_ELNO"].values
     stiffness = without.element_fields["EFGE_ELNO"].values
     assert np.abs(inertia - stiffness).max() > 1.0
+    # code_aster's SIEF_ELGA (and EFGE_ELGA, SIEF_ELNO from it) take DEPL only
+    for name in options[1:]:
+        np.testing.assert_array_equal(
+            with_acce.element_fields[name].values, without.element_fields[name].values
+        )
+    np.testing.assert_array_equal(with_acce.element_fields["SIEF_ELNO"].values, stiffness)
     # K u alone: the element ends balance (no load inside the elements)
     np.testing.assert_allclose(stiffness[0, :, 0, :3], stiffness[0, :, 1, :3], atol=1e-8)
 

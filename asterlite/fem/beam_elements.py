@@ -223,6 +223,16 @@ def beam_local_forces(
     return section_forces(f)
 
 
+def beam_inertia_forces(
+    model, characteristics, materials, cells, accelerations, lumped: bool = False
+) -> np.ndarray:
+    """(n_orders, n_cells, 2, 6) the part ``M_local a_local`` of the internal
+    forces (same convention as :func:`beam_local_forces`)."""
+    return section_forces(
+        _local_products(model, characteristics, materials, cells, accelerations, "M", lumped)
+    )
+
+
 def beam_stresses(efge: np.ndarray, sections: list[dict], modelisations: list[str]) -> np.ndarray:
     """SIPO_ELNO (n_orders, n_cells, 2, 6) from EFGE_ELNO: SN = N/A,
     SVY = VY/(A/AY), SVZ = VZ/(A/AZ) (A for POU_D_E), SMT = MT RT/JX,

@@ -8,9 +8,11 @@
   between the two nodes (exact for unloaded straight beams: constant forces,
   linear moments);
 - dynamic results (``accelerations`` given: the ACCE field of a dyna_trans)
-  add the element inertia forces, ``K_e u_e + M_e a_e``, as code_aster's beam
-  elements do for transient results: the forces then balance the inertia
-  distribution along each beam, so SN differs between its two nodes;
+  add the element inertia forces to EFGE_ELNO and SIPO_ELNO,
+  ``K_e u_e + M_e a_e``, as code_aster's beam elements do for transient
+  results (the forces then balance the inertia distribution along each beam,
+  so SN differs between its two nodes); SIEF_ELGA / EFGE_ELGA / SIEF_ELNO
+  stay ``K_e u_e`` (code_aster computes them from the displacement alone);
 - ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
   cells sharing it (code_aster's nodal smoothing).
 
@@ -25,6 +27,7 @@ from asterlite.concepts.assembly import ElementField, NodalComponentField
 from asterlite.fem.beam_elements import (
     EFGE_COMPONENTS,
     SIPO_COMPONENTS,
+    beam_inertia_forces,
     beam_local_forces,
     beam_stresses,
 )
@@ -65,26 +68,32 @@ def beam_element_fields(
     """The requested ELNO fields of beam cells for nodal values (n_orders, n_dofs).
 
     ``accelerations`` (n_orders, n_dofs), when given, adds the inertia forces
-    ``M_e a_e`` (consistent mass, or lumped with ``lumped_mass``)."""
+    ``M_e a_e`` (consistent mass, or lumped with ``lumped_mass``) to
+    EFGE_ELNO and SIPO_ELNO."""
     cells = np.asarray(cells, dtype=int)
     u = element_displacements(model.mesh, numbering, cells, values)
-    a = None
+    stiffness = beam_local_forces(model, characteristics, materials, cells, u)
+    dynamic = stiffness
     if accelerations is not None:
         a = element_displacements(model.mesh, numbering, cells, accelerations)
-    efge = beam_local_forces(model, characteristics, materials, cells, u, a, lumped_mass)
+        dynamic = stiffness + beam_inertia_forces(
+            model, characteristics, materials, cells, a, lumped_mass
+        )
     out = {}
     for name in options:
-        if name in ("EFGE_ELNO", "SIEF_ELNO"):
-            out[name] = ElementField(name, cells, EFGE_COMPONENTS, efge)
+        if name == "EFGE_ELNO":
+            out[name] = ElementField(name, cells, EFGE_COMPONENTS, dynamic)
+        elif name == "SIEF_ELNO":
+            out[name] = ElementField(name, cells, EFGE_COMPONENTS, stiffness)
         elif name in ELGA_OPTIONS:
             xi = BEAM_GAUSS[None, None, :, None]
-            gauss = (1.0 - xi) * efge[:, :, :1, :] + xi * efge[:, :, 1:, :]
+            gauss = (1.0 - xi) * stiffness[:, :, :1, :] + xi * stiffness[:, :, 1:, :]
             out[name] = ElementField(name, cells, EFGE_COMPONENTS, gauss)
         elif name == "SIPO_ELNO":
             sections = [characteristics.sections[int(c)] for c in cells]
             kinds = [model.cell_modelisation[int(c)] for c in cells]
             out[name] = ElementField(
-                name, cells, SIPO_COMPONENTS, beam_stresses(efge, sections, kinds)
+                name, cells, SIPO_COMPONENTS, beam_stresses(dynamic, sections, kinds)
             )
         else:
             raise ValueError(f"unknown element field {name}")
