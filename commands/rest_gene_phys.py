@@ -3,8 +3,9 @@
 u(t) = Φ q(t) on the chosen DOFs, at the archived states (TOUT_ORDRE,
 NUME_ORDRE) or at chosen instants (INST, LIST_INST), interpolated linearly
 when INTERPOL='LIN'. The restituted states are numbered in sequence, as
-code_aster does: 0 for the initial state when it is restituted, then 1, 2...
-(so with PAS_ARCH=10 the 10th archived state is order 10, not step 100).
+code_aster does: chosen instants (INST, LIST_INST) 1..n; archived states
+0 for the initial state when it is restituted, then 1, 2... (so with
+PAS_ARCH=10 the 10th archived state is order 10, not step 100).
 
 MULT_APPUI='OUI' adds the support motion Σ ψ_k s_k(t) when the tran_gene
 carries it in ``info["mult_appui"]`` (a list of dicts with ``"shape"``: a
@@ -70,7 +71,11 @@ def run(ctx, kw):
         sub = numbering
     else:
         sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
-    restored = DynaTrans(sub, selection.times, sequence_numbers(selection.times, result.times), out)
+    if kw.get("INST") is not None or kw.get("LIST_INST") is not None:
+        order = np.arange(1, len(selection.times) + 1)  # chosen instants: 1..n
+    else:
+        order = sequence_numbers(selection.times, result.times)
+    restored = DynaTrans(sub, selection.times, order, out)
     if element_names:
         for keyword in ("MULT_APPUI", "CORR_STAT"):
             if kw.get(keyword) == "OUI":
