@@ -7,6 +7,13 @@ connection); OPTION='USURE' writes the displacement, force, shock-count and
 wear-power rows. Definitions: ``asterlite.post.shocks``. The NOEUD column
 holds the node number (code_aster 17 names nodes by number), INTITULE the
 connection's name.
+
+RELA_EFFO_DEPL (NOEUD/GROUP_NO, NOM_CMP) writes one row per phase the
+RELA_EFFO_DEPL relation of that node and component spends in its nonlinear
+zone (archived non-zero-force flag): RELATION (the function's name), NOEUD,
+CMP, PHASE, INST_INIT, INST_FIN, MAXI and INST_MAXI (the displacement of
+largest magnitude in the phase and its instant); see
+``asterlite.post.shocks.nonlinear_phases``.
 """
 
 from __future__ import annotations
@@ -32,15 +39,21 @@ USURE_COLUMNS = {
     "T_CHOC_MOYEN": "R", "T_CHOC_MAXI": "R", "T_CHOC_MINI": "R", "T_REBON_MOYEN": "R",
     "%_T_CHOC": "I", "PUIS_USURE": "R",
 }  # fmt: skip
+RELATION_COLUMNS = {
+    "RELATION": "K8", "NOEUD": "K8", "CMP": "K8", "PHASE": "I", "INST_INIT": "R",
+    "INST_FIN": "R", "MAXI": "R", "INST_MAXI": "R",
+}  # fmt: skip
+COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")  # RELA_EFFO_DEPL's LAW[0] indexes these
 
 
 def run(ctx, kw):
     result = kw["RESU_GENE"]
     if not isinstance(result, TranGene):
         ctx.unsupported(f"POST_DYNA_MODA_T of a {result.aster_type}", "RESU_GENE", kw)
-    for other in ("RELA_EFFO_DEPL", "RELA_EFFO_VITE"):
-        if kw.get(other):
-            ctx.unsupported(f"POST_DYNA_MODA_T/{other}", other, kw)
+    if kw.get("RELA_EFFO_VITE"):
+        ctx.unsupported("POST_DYNA_MODA_T/RELA_EFFO_VITE", "RELA_EFFO_VITE", kw)
+    if kw.get("RELA_EFFO_DEPL") and not kw.get("CHOC"):
+        return relation_table(ctx, kw, result)
     occurrences = kw.factor("CHOC")
     if not occurrences:
         ctx.error("CHOC is required", "CHOC", kw)
@@ -66,6 +79,83 @@ def run(ctx, kw):
         else:
             wear_rows(table, labels, t, fields, occ)
     return table
+
+
+def relation_table(ctx, kw, result: TranGene) -> Table:
+    """RELA_EFFO_DEPL: the nonlinear phases of the relation at one node
+    component (code_aster fails when no RELA_EFFO_DEPL matches)."""
+    from asterlite.post.restitution import single_node
+
+    table = Table()
+    for name, type_code in RELATION_COLUMNS.items():
+        table.add_column(name, type_code)
+    mesh = result.basis.numbering.mesh
+    for occ in kw.factor("RELA_EFFO_DEPL"):
+        node = mesh.node_names[single_node(ctx, occ, mesh, with_cells=False)]
+        component = str(occ["NOM_CMP"]).strip()
+        shock = next(
+            (
+                s
+                for s in result.shocks
+                if s.relation == "RELA_EFFO_DEPL"
+                and s.node_1 == node
+                and relation_component(s) == component
+            ),
+            None,
+        )
+        if shock is None:
+            known = [
+                f"{s.node_1}/{relation_component(s)}"
+                for s in result.shocks
+                if s.relation == "RELA_EFFO_DEPL"
+            ]
+            ctx.error(
+                f"no RELA_EFFO_DEPL relation at node {node} component {component}"
+                f" (known: {', '.join(known) or 'none'})",
+                "RELA_EFFO_DEPL",
+                occ,
+            )
+        value = shock_quantity(shock, "VINT1")
+        if value is None:  # not archived: Φ q of the node component
+            value = np.asarray(result.depl) @ result.basis.shape_at(node, component)
+        active = shock_quantity(shock, "VINT3")
+        if active is None:
+            ctx.error(f"RELA_EFFO_DEPL {shock.name}: no archived flag VINT3", "RESU_GENE", kw)
+        labels = {
+            "RELATION": relation_function(shock, node_number(mesh, node), component),
+            "NOEUD": node_number(mesh, node),
+            "CMP": component,
+        }
+        for phase in stats.nonlinear_phases(result.times, value, active):
+            table.add_row(
+                {
+                    **labels,
+                    "PHASE": phase.number,
+                    "INST_INIT": phase.start,
+                    "INST_FIN": phase.end,
+                    "MAXI": phase.extreme,
+                    "INST_MAXI": phase.instant,
+                }
+            )
+    return table
+
+
+def relation_component(shock) -> str:
+    """NOM_CMP of a RELA_EFFO_DEPL history: from its parameters (LAW[0]),
+    else from its generated name (node, component, function; 8 chars each)."""
+    law = (shock.parameters or {}).get("LAW")
+    if law is not None and len(law) and 0 <= int(law[0]) < len(COMPONENTS):
+        return COMPONENTS[int(law[0])]
+    return shock.name[8:16].strip()
+
+
+def relation_function(shock, number: str, component: str) -> str:
+    """The function's name, 3rd field of the generated name (empty when the
+    name is not the generated one)."""
+    name = shock.name
+    if name[:8].strip() == number and name[8:16].strip() == component:
+        return name[16:24].strip()
+    return ""
 
 
 def node_number(mesh, name: str | None) -> str:

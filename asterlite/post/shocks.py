@@ -259,3 +259,47 @@ def polar(dy: np.ndarray, dz: np.ndarray):
     radius = np.hypot(dy, dz)
     angle = np.where((dy != 0) | (dz != 0), np.degrees(np.arctan2(dz, dy)), 0.0)
     return radius, angle
+
+
+# ----------------------------------------------------------------------------- RELA_EFFO_DEPL
+
+
+@dataclass
+class NonlinearPhase:
+    """One stretch of time a RELA_EFFO_DEPL relation spends in its nonlinear
+    zone (its force non-zero), as a row of POST_DYNA_MODA_T/RELA_EFFO_DEPL."""
+
+    number: int  # PHASE (1-based)
+    start: float  # INST_INIT: first archived instant in the zone
+    end: float  # INST_FIN: first archived instant back out (last instant if never)
+    extreme: float  # MAXI: the signed value of largest magnitude in the phase
+    instant: float  # INST_MAXI: its instant (the first one on ties)
+
+
+def nonlinear_phases(t: np.ndarray, value: np.ndarray, active: np.ndarray) -> list[NonlinearPhase]:
+    """Phases where ``active`` (the relation's archived non-zero-force flag)
+    holds, with the extreme of ``value`` (the displacement component) in each.
+
+    A phase opens at an active sample following an inactive one (or the
+    first sample) and closes at the next inactive sample, whose instant is
+    INST_FIN; a phase still open at the end closes at the last instant.
+    No active sample: no phase.
+    """
+    t = np.asarray(t, dtype=float)
+    value = np.asarray(value, dtype=float)
+    active = np.asarray(active) != 0
+    phases: list[NonlinearPhase] = []
+    if not active.any():
+        return phases
+    # edges of the runs of active samples: starts (inclusive), stops (exclusive)
+    padded = np.concatenate([[False], active, [False]]).astype(np.int8)
+    edges = np.diff(padded)
+    starts = np.flatnonzero(edges == 1)
+    stops = np.flatnonzero(edges == -1)
+    for number, (i0, i1) in enumerate(zip(starts, stops, strict=True), start=1):
+        k = i0 + int(np.argmax(np.abs(value[i0:i1])))  # argmax: first of ties
+        end = t[i1] if i1 < t.size else t[-1]
+        phases.append(
+            NonlinearPhase(number, float(t[i0]), float(end), float(value[k]), float(t[k]))
+        )
+    return phases
