@@ -789,6 +789,7 @@ def run_physical(ctx, kw):
         )
     archive = Archive(system.n_free)
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    last_velocity = None
     energy = None
     if kw.factor("ENERGIE"):
         from asterlite.dynamics.physical.energy import EnergyBalance
@@ -860,14 +861,20 @@ def run_physical(ctx, kw):
                         ctx.location,
                         f"{ctx.command}/INCREMENT",
                     )
-                diff_centre.integrate(
+                half_velocity = diff_centre.integrate(
                     system, times, q, v, a, mask, archive, inverse, monitor=energy
                 )
+                if "VITE" in as_tuple(archiving.get("CHAM_EXCLU")) and half_velocity is not None:
+                    # code_aster's dldiff archives the fields excluded along the run at
+                    # the last instant, VITE being then the half-step velocity v_{N-1/2}
+                    last_velocity = half_velocity
             stats = {"steps": times.size - 1}
     except FloatingPointError as error:
         raise NumericalError(f"{scheme}: {error}", ctx.location, ctx.command) from None
     elapsed = __import__("time").perf_counter() - started
     out_t, out_q, out_v, out_a = archive.arrays()
+    if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
+        out_v[-1] = last_velocity
     ctx.log(
         f"DYNA_VIBRA PHYS {scheme}: {stats['steps']} steps, {out_t.size} archived, "
         f"{system.n_free} free DOFs of {system.n_dofs}, {elapsed:.3f} s"

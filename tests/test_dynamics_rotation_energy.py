@@ -134,3 +134,18 @@ def test_energy_balance_of_undamped_newmark_closes():
     # the trapezoidal rule conserves energy: the scheme dissipates nothing
     assert abs(last["DISS_SCH"]) < 1e-9 * last["TRAV_EXT"]
     assert len(energy.table().rows) == times.size - 1
+
+
+class Keywords(dict):
+    def factor(self, name):
+        return self.get(name, [])
+
+
+def test_physical_initial_acceleration_only_with_an_initial_state():
+    """code_aster (dltali): from rest the first step starts with a = 0."""
+    from asterlite.commands.dyna_vibra import initial_acceleration_computed
+
+    assert not initial_acceleration_computed(Keywords())
+    assert initial_acceleration_computed(Keywords(ETAT_INIT=[{"DEPL": object()}]))
+    assert initial_acceleration_computed(Keywords(ETAT_INIT=[{"VITE": object()}]))
+    assert not initial_acceleration_computed(Keywords(ETAT_INIT=[{}]))
