@@ -231,3 +231,49 @@ def test_discret_obstacle_polygon():
         kws("DEFI_OBSTACLE", TYPE="DISCRET", VALE=(0.0, 1.0, 180.0, 1.0, 360.0, 1.0)),
     )
     assert isinstance(ob, Obstacle) and ob.polar.shape == (3, 2)
+
+
+def test_normal_damping_energy_loss_matches_the_clipped_dashpot_impact():
+    """AMOR_NOR dissipates energy in an impact: with the force's positive
+    part (seed eq. 11) the contact ends when K_N x + C_N v reaches zero; the
+    rebound speed of that damped half-oscillation is computed in closed form
+    and compared with the integrated one."""
+    from scipy.optimize import brentq
+
+    k, kn, gap, zeta = 1.0, 1.0e6, 0.01, 0.1
+    cn = 2.0 * zeta * math.sqrt(kn * 1.0)
+    gnum, m, kk = one_mode(k, coords=(0.0, 0.0, 0.0), shape=(0.0, 1.0, 0.0))
+    stop = dict(RELATION="DIS_CHOC", NOEUD_1="NO1", OBSTACLE=obstacle("PLAN_Y"),
+                ORIG_OBST=(0.0, 0.0, 0.0), NORM_OBST=(1.0, 0.0, 0.0), JEU=gap,
+                RIGI_NOR=kn, AMOR_NOR=cn)  # fmt: skip
+    result = run_vibra(
+        m,
+        kk,
+        "DIFF_CENTRE",
+        2.0e-7,
+        0.013,
+        etat={"VITE": vector(gnum, 1.0, "VITE")},
+        comportement=[stop],
+    )
+    # penetration x(t) = v0/wd e^(-zeta w t) sin(wd t) from contact onset, v0 = 1
+    omega = math.sqrt(kn)
+    damped = omega * math.sqrt(1.0 - zeta**2)
+
+    def penetration(t):
+        return math.exp(-zeta * omega * t) * math.sin(damped * t) / damped
+
+    def speed(t):
+        return math.exp(-zeta * omega * t) * (
+            math.cos(damped * t) - zeta * omega * math.sin(damped * t) / damped
+        )
+
+    separation = brentq(
+        lambda t: kn * penetration(t) + cn * speed(t), 1e-3 / omega, math.pi / damped
+    )
+    rebound = speed(separation)  # negative: moving back out of the stop
+    fn = result.shocks[0].fields["FN"]
+    assert fn.min() >= 0.0  # the positive part: the stop never pulls
+    assert np.all(result.shocks[0].fields["FN"][result.shocks[0].fields["DYLOC"] < gap] == 0.0)
+    assert result.vite[-1, 0] == pytest.approx(rebound, rel=5e-3)
+    lost = 0.5 * (1.0 - rebound**2)
+    assert 0.5 * (1.0 - result.vite[-1, 0] ** 2) == pytest.approx(lost, rel=1e-2)
