@@ -97,7 +97,10 @@ def _extr(ctx, kw):
             values = field.values
         else:
             numbering, values, access = field_stack(result, kw["NOM_CHAM"])
-        selected = _selected_state(ctx, kw, access, values)
+        if kw.get("TYPE_MAXI") == "NORM_TRAN":
+            selected = _norm_tran(ctx, kw, access, values, None if element else numbering)
+        else:
+            selected = _selected_state(ctx, kw, access, values)
     except FieldError as exc:
         ctx.error(str(exc), "RESULTAT", kw)
     if not element:
@@ -127,6 +130,27 @@ def _result_mesh(ctx, kw, result):
     ctx.error("cannot tell the mesh of the result", "RESULTAT", kw)
 
 
+def _extreme_params(kw, access, rows) -> np.ndarray:
+    """What TYPE_RESU puts in an extreme field: the order numbers for
+    'NUME_ORDRE', the instants otherwise (orders when there are none)."""
+    if kw.get("TYPE_RESU") == "NUME_ORDRE" or "INST" not in access:
+        return np.asarray(access["NUME_ORDRE"], dtype=float)[rows]
+    return np.asarray(access["INST"], dtype=float)[rows]
+
+
+def _norm_tran(ctx, kw, access, values, numbering) -> np.ndarray:
+    """TYPE_MAXI='NORM_TRAN': by node, the field of largest translation norm."""
+    from asterlite.modal.fields import norm_tran_extreme
+
+    if numbering is None:
+        ctx.error("TYPE_MAXI='NORM_TRAN' applies to nodal fields", "TYPE_MAXI", kw)
+    rows = _extr_rows(ctx, kw, access, values.shape[0])
+    if rows.size == 0:
+        ctx.error("no stored field is selected", "RESULTAT", kw)
+    what = kw.get("TYPE_RESU", "VALE")
+    return norm_tran_extreme(numbering, values[rows], what, _extreme_params(kw, access, rows))
+
+
 def _selected_state(ctx, kw, access, values) -> np.ndarray:
     """The field (values[k]) the keywords select in a stack (first axis: the
     stored states), or the entry-wise extreme for TYPE_MAXI."""
@@ -134,7 +158,7 @@ def _selected_state(ctx, kw, access, values) -> np.ndarray:
 
     if kw.get("TYPE_MAXI") is not None:
         rows = _extr_rows(ctx, kw, access, values.shape[0])
-        params = np.asarray(access.get("INST", access["NUME_ORDRE"]))[rows]
+        params = _extreme_params(kw, access, rows)
         reduce = element_extreme if values.ndim > 2 else extreme_over
         return reduce(values[rows], kw["TYPE_MAXI"], kw.get("TYPE_RESU", "VALE"), params)
     precision = float(kw.get("PRECISION", 1.0e-6))

@@ -12,6 +12,12 @@ ACCE_ABSOLU with ACCE_MONO_APPUI adds γ(t)·DIRECTION to translations;
 without either the absolute field equals the relative one (code_aster warns
 too).
 
+A result computed with a static correction (DYNA_VIBRA MODE_CORR, EXCIT
+CORR_STAT='OUI') has the correction added to every nodal value, as
+RECU_FONCTION / REST_GENE_PHYS with CORR_STAT='OUI' do (code_aster's
+POST_GENE_PHYS restitutes it without a keyword); element fields are not
+available on such a result (the correction modes carry none).
+
 Element fields (``*_ELNO``, ``*_ELGA``) recombine, with q(t), the fields
 CALC_CHAMP stored on the modes, on the cells of GROUP_MA / MAILLE.
 
@@ -35,6 +41,7 @@ from asterlite.post.restitution import (
     node_indices,
     recombine,
     selection_from_keywords,
+    support_motion,
 )
 
 COLUMNS = {
@@ -60,8 +67,6 @@ def run(ctx, kw):
         ctx.error(
             f"MODE_MECA has {basis.n_modes} modes, the result {result.n_modes}", "MODE_MECA", kw
         )
-    if result.info.get("corr_stat"):
-        ctx.unsupported("results computed with a static correction (CORR_STAT)", "RESU_GENE", kw)
     table = Table(title=kw.get("TITRE") or "")
     for name, type_code in COLUMNS.items():
         table.add_column(name, type_code)
@@ -86,6 +91,9 @@ def observation_rows(ctx, occ, result, basis, number: int) -> list[dict]:
     selection = selection_from_keywords(ctx, occ, result.times, result.order)
     generalized = selection.apply(getattr(result, field[:4].lower()))
     values = recombine(basis.shapes[rows_of_dofs, :], generalized)
+    corrections = result.info.get("corr_stat")
+    if corrections:
+        values = values + support_motion(corrections, rows_of_dofs, selection.times, field[:4])
     if field.endswith("_ABSOLU"):
         values = values + absolute_part(ctx, occ, result, field, rows_of_dofs, numbering, selection)
     rows = []
@@ -109,6 +117,10 @@ def element_rows(ctx, occ, result, basis, number: int, name: str) -> list[dict]:
     CALC_CHAMP on the basis) recombined with q(t): components outer, then
     cells, then points, as code_aster fills the table; ELNO rows name the
     cell (MAILLE) and its node (NOEUD), ELGA rows the cell and ``PT i``."""
+    if result.info.get("corr_stat"):
+        ctx.unsupported(
+            f"{name} of a result computed with a static correction (CORR_STAT)", "NOM_CHAM", occ
+        )
     modal = (getattr(basis, "element_fields", None) or {}).get(name)
     if modal is None:
         ctx.error(

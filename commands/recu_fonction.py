@@ -6,6 +6,10 @@ NOM_CMP recombined on the basis), the local quantities of a shock
 (RESU_GENE + GROUP_NO_CHOC / NOEUD_CHOC / INTITULE + PARA_Y), or two columns
 of a table (TABLE + PARA_X + PARA_Y). INTERP_NUME='LIN' interpolates the
 result between archived instants.
+
+From a field (CHAM_GD + node or cell + NOM_CMP) the function is a constant,
+as code_aster builds it: the field's value, NOM_PARA 'TOUTPARA', NOM_RESU
+the component, extended as a constant on both sides.
 """
 
 from __future__ import annotations
@@ -36,6 +40,8 @@ def run(ctx, kw):
         para, resu, (x, y) = "INST", None, from_generalized(ctx, kw)
     elif kw.get("RESULTAT") is not None:
         para, resu, (x, y) = "INST", None, from_physical(ctx, kw)
+    elif kw.get("CHAM_GD") is not None:
+        return constant_from_field(ctx, kw)
     else:
         which = next((k for k in ("CHAM_GD", "BASE_ELAS_FLUI", "NAPPE") if k in kw), "source")
         ctx.unsupported(f"RECU_FONCTION from {which}", which, kw)
@@ -50,6 +56,23 @@ def run(ctx, kw):
         INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
         PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
         PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
+    )
+
+
+def constant_from_field(ctx, kw) -> Function:
+    """CHAM_GD: the constant function of one field value (code_aster's focste)."""
+    from asterlite.post.restitution import field_component_value
+
+    value = field_component_value(ctx, kw, kw["CHAM_GD"])
+    component = str(kw["NOM_CMP"])
+    return Function(
+        [1.0],
+        [value],
+        NOM_PARA=kw.get("NOM_PARA") or "TOUTPARA",
+        NOM_RESU=kw.get("NOM_RESU") or component,
+        INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
+        PROL_GAUCHE=kw.get("PROL_GAUCHE", "CONSTANT"),
+        PROL_DROITE=kw.get("PROL_DROITE", "CONSTANT"),
     )
 
 

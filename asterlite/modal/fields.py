@@ -121,3 +121,38 @@ def element_extreme(values: np.ndarray, kind: str, what: str, params) -> np.ndar
     values = np.asarray(values, dtype=float)
     flat = values.reshape(values.shape[0], -1)
     return extreme_over(flat, kind, what, params).reshape(values.shape[1:])
+
+
+TRANSLATIONS = ("DX", "DY", "DZ")
+NORM_TRAN_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+
+
+def norm_tran_extreme(numbering, values: np.ndarray, what: str, params) -> np.ndarray:
+    """CREA_CHAMP EXTR TYPE_MAXI='NORM_TRAN' over a stack of nodal fields
+    (n_fields, n_dofs): at each node, the field where the translation norm
+    sqrt(DX² + DY² + DZ²) is largest (the first such field on ties; missing
+    translations count as 0). TYPE_RESU 'VALE' gives that field's DX..DRZ,
+    'INST' / 'NUME_ORDRE' puts ``params`` of that field in DX..DRZ; other
+    components keep the first field's values, as in code_aster. Nodes
+    without translations keep the first field's values."""
+    values = np.asarray(values, dtype=float)
+    if values.ndim != 2 or values.shape[0] == 0:
+        raise FieldError("NORM_TRAN needs at least one stored nodal field")
+    out = values[0].copy()
+    by_node: dict[int, dict[str, int]] = {}
+    for row, (node, comp) in enumerate(numbering.dofs):
+        if comp in NORM_TRAN_COMPONENTS:
+            by_node.setdefault(int(node), {})[comp] = row
+    params = np.asarray(params, dtype=float)
+    for rows in by_node.values():
+        translation = [rows[c] for c in TRANSLATIONS if c in rows]
+        if not translation:
+            continue
+        norms = np.sqrt(np.sum(values[:, translation] ** 2, axis=1))
+        best = int(np.argmax(norms))  # first index of the maximum
+        picked = list(rows.values())
+        if what == "VALE":
+            out[picked] = values[best, picked]
+        else:
+            out[picked] = params[best]
+    return out

@@ -367,3 +367,75 @@ def added_motions(ctx, kw, result, keyword: str) -> list:
     if not supports:
         ctx.error(f"{keyword}='OUI' on a result computed without {what}", keyword, kw)
     return supports
+
+
+def field_component_value(ctx, kw, field) -> float:
+    """The value of NOM_CMP a RECU_FONCTION CHAM_GD occurrence names: at the
+    node GROUP_NO / NOEUD of a nodal field, or at the cell GROUP_MA / MAILLE
+    and its node (ELNO) or POINT (ELGA, ELNO) of a field by element. As in
+    code_aster, a group naming several nodes or cells gives its first one
+    (with a warning)."""
+    component = str(kw.get("NOM_CMP"))
+    numbering = getattr(field, "numbering", None)
+    if numbering is not None:
+        mesh = numbering.mesh
+        node = first_of(ctx, kw, node_indices(ctx, kw, mesh, allow_all=False, with_cells=False))
+        if node is None:
+            ctx.error("a node is required (GROUP_NO or NOEUD)", "GROUP_NO", kw)
+        row = numbering.index.get((node, component))
+        if row is None:
+            ctx.error(
+                f"the field has no component {component} at node {node_label(mesh, node)}",
+                "NOM_CMP",
+                kw,
+            )
+        return float(np.asarray(field.values)[row])
+    mesh = field.mesh
+    cells: list[int] = []
+    for name in as_tuple(kw.get("GROUP_MA")):
+        if name not in mesh.cell_groups:
+            ctx.error(f"mesh has no cell group {name!r}", "GROUP_MA", kw)
+        cells.extend(int(i) for i in mesh.cell_groups[name])
+    for name in as_tuple(kw.get("MAILLE")):
+        found = mesh.find_cell(str(name))
+        if found is None:
+            ctx.error(f"mesh has no cell {name!r}", "MAILLE", kw)
+        cells.append(int(found))
+    cell = first_of(ctx, kw, np.array(cells, dtype=int))
+    if cell is None:
+        ctx.error("a field by element needs GROUP_MA or MAILLE", "GROUP_MA", kw)
+    n_points = np.asarray(field.values).shape[1]
+    if kw.get("POINT") is not None:
+        point = int(kw["POINT"]) - 1
+        if not 0 <= point < n_points:
+            ctx.error(f"the field has {n_points} points per cell, not {point + 1}", "POINT", kw)
+    elif str(getattr(field, "field_type", "")).startswith("ELNO_"):
+        nodes = node_indices(ctx, kw, mesh, allow_all=False, with_cells=False)
+        node = first_of(ctx, kw, nodes)
+        if node is None:
+            ctx.error("an ELNO field needs GROUP_NO, NOEUD or POINT", "GROUP_NO", kw)
+        connectivity = [int(n) for n in mesh.cell_nodes[cell]]
+        if node not in connectivity:
+            ctx.error(
+                f"node {node_label(mesh, node)} is not a node of cell {mesh.cell_names[cell]}",
+                "GROUP_NO",
+                kw,
+            )
+        point = connectivity.index(node)
+    elif n_points == 1:
+        point = 0
+    else:
+        ctx.error("give POINT for a field at Gauss points", "POINT", kw)
+    try:
+        return float(field.value(cell, point, component))
+    except KeyError as exc:
+        ctx.error(str(exc.args[0]), "NOM_CMP", kw)
+
+
+def first_of(ctx, kw, indices) -> int | None:
+    """The first of several mesh indices (a warning when more were named)."""
+    if indices is None or len(indices) == 0:
+        return None
+    if len(indices) > 1:
+        ctx.log(f"warning: {len(indices)} entities named, the first one is used")
+    return int(indices[0])
