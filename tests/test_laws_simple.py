@@ -7,6 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from asterlite.concepts.mesh import Mesh
 from asterlite.dynamics.laws import RELATIONS, internal_variable_names
 from asterlite.dynamics.laws.choc_elas_trac import (
     V_FORCE,
@@ -14,6 +15,7 @@ from asterlite.dynamics.laws.choc_elas_trac import (
     elastic_shock_force,
     prepare_choc_elas_trac,
 )
+from asterlite.dynamics.laws.connections import ConnectionError_, neighbour_of, rotor_frame
 from asterlite.dynamics.laws.rela_effo_depl import (
     P_COMPONENT,
     prepare_rela_effo_depl,
@@ -96,9 +98,58 @@ def test_crack_angle_follows_the_rotation():
     assert state[V_ANGLE] == pytest.approx(0.0)
     t = 0.2
     cracked_rotor_moment(p, t, np.eye(3), 0.0, 0.0, 1.0, state)
-    assert state[V_ANGLE] == pytest.approx(math.degrees(3.0 * t) / 2.0)  # code_aster's φ·180/2π
+    assert state[V_ANGLE] == pytest.approx(math.degrees(3.0 * t))  # code_aster 17: degrees
     m = np.array(cracked_rotor_moment(p, t, np.eye(3), 0.0, 0.0, 1.0, state))
     assert m[0] == 0.0 and np.linalg.norm(m) == pytest.approx(math.hypot(1.0, 0.25))
+
+
+def test_rotor_angle_rounds_small_sines_to_zero_like_rot3d():
+    # γ = 3 t = π/2 + 3e-7: cos γ = -3e-7 counts as 0, so δθ_z lies exactly on y of the
+    # turning frame (φ = 90° exactly) and the moment has no global y component
+    p = rotor(k=1.0)
+    state = np.zeros(3)
+    t = (0.5 * math.pi + 3.0e-7) / 3.0
+    m = cracked_rotor_moment(p, t, np.eye(3), 0.0, 0.0, 1.0, state)
+    assert m[0] == 0.0 and m[1] == 0.0 and m[2] == pytest.approx(1.0)
+    assert state[V_ANGLE] == 90.0
+
+
+def rotor_mesh(direction, crack_length=0.0):
+    """Nodes 0-1-2 | 3-4-5 along ``direction``; the crack between D = 3 and G = 2
+    (D on the far side), its own SEG2 2-3 (ignored for the axis), a POI1 on D."""
+    u = np.asarray(direction, dtype=float)
+    positions = [0.0, 1.0, 2.0, 2.0 + crack_length, 3.0 + crack_length, 4.0 + crack_length]
+    return Mesh(
+        coords=np.array([x * u for x in positions]),
+        node_names=[f"N{i + 1}" for i in range(6)],
+        cell_names=["M1", "M2", "M3", "M4", "M5", "M6"],
+        cell_types=["SEG2", "SEG2", "SEG2", "SEG2", "SEG2", "POI1"],
+        cell_nodes=[(0, 1), (1, 2), (3, 4), (4, 5), (2, 3), (3,)],
+    )
+
+
+@pytest.mark.parametrize("crack_length", [0.0, 0.1])
+@pytest.mark.parametrize("direction", [(1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.6, 0.8)])
+def test_rotor_axis_runs_from_the_neighbour_of_g_to_the_neighbour_of_d(direction, crack_length):
+    frame = rotor_frame(rotor_mesh(direction, crack_length), 3, 2)
+    assert frame[0] == pytest.approx(np.array(direction), abs=1e-12)
+    assert frame @ frame.T == pytest.approx(np.eye(3), abs=1e-12)
+    # D and G swapped: the axis turns round
+    assert rotor_frame(rotor_mesh(direction, crack_length), 2, 3)[0] == pytest.approx(
+        -np.array(direction), abs=1e-12
+    )
+
+
+def test_rotor_axis_neighbour_rule_and_missing_neighbour():
+    mesh = rotor_mesh((0.0, 1.0, 0.0))
+    assert neighbour_of(mesh, 3, 2, "GROUP_NO_D") == 4  # first node of M3: its second node
+    assert neighbour_of(mesh, 2, 3, "GROUP_NO_G") == 1  # second node of M2: its first node
+    lone = Mesh(
+        coords=np.zeros((2, 3)), node_names=["N1", "N2"], cell_names=["M1"],
+        cell_types=["SEG2"], cell_nodes=[(0, 1)],
+    )  # fmt: skip
+    with pytest.raises(ConnectionError_, match="rotor axis"):
+        rotor_frame(lone, 1, 0)
 
 
 def test_registry():

@@ -93,15 +93,22 @@ def is_diagonal(a: np.ndarray) -> bool:
 
 
 def modal_damping(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray:
-    """c_i = 2 ξ_i sqrt(k_i m_i); missing ratios repeat the last one given."""
+    """Reduced damping as code_aster builds it: C = diag(2 ξ_i ω_i) · M with
+    ω_i = sqrt(|k_ii / m_ii|), i.e. c_i = 2 ξ_i sqrt(k_i m_i) for a diagonal
+    mass, each row of a full (Ritz basis) mass scaled otherwise. Missing
+    ratios repeat the last one given."""
     n = mass.shape[0]
     xi = np.asarray(list(ratios), dtype=float)
     if xi.size == 0:
         xi = np.zeros(1)
     if xi.size < n:
         xi = np.concatenate([xi, np.full(n - xi.size, xi[-1])])
+    xi = xi[:n].copy()
     m, k = np.diag(mass), np.diag(stiffness)
-    return np.diag(2.0 * xi[:n] * np.sqrt(np.abs(k * m)))
+    tiny = np.abs(m) <= np.finfo(float).eps
+    omega = np.where(tiny, 1.0e-6, np.sqrt(np.abs(k / np.where(tiny, 1.0, m))))
+    xi[np.abs(m) < np.finfo(float).eps] = 1.0  # a massless coordinate is critically damped
+    return (2.0 * xi * omega)[:, None] * mass
 
 
 @dataclass

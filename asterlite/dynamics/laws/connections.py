@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from asterlite.dynamics.geometry import local_frame
+from asterlite.dynamics.geometry import local_frame, nautical_angles, rotation_matrix
 from asterlite.dynamics.laws import RELATIONS
 from asterlite.dynamics.laws import anti_sism as AS
 from asterlite.dynamics.laws import choc_elas_trac as CET
@@ -77,6 +77,40 @@ def axis_frame(c1, c2) -> np.ndarray:
     if np.linalg.norm(axis) == 0.0:
         axis = np.array([1.0, 0.0, 0.0])
     return local_frame("PLAN_Y", axis, None, c1, None)
+
+
+def neighbour_of(mesh, node: int, other: int, keyword: str) -> int:
+    """code_aster's neighbour of ``node`` along the rotor (dtmprep_noli_rotf):
+    over the cells of 2 or 3 nodes, in mesh order, that hold ``node`` but
+    not ``other``, the neighbour is the cell's second node when ``node`` is
+    its first, its first node when ``node`` is its second; the last such
+    cell wins."""
+    found = None
+    for conn in mesh.cell_nodes:
+        if not 1 < len(conn) < 4 or other in conn:
+            continue
+        if conn[0] == node:
+            found = conn[1]
+        elif conn[1] == node:
+            found = conn[0]
+    if found is None:
+        raise ConnectionError_(
+            f"ROTOR_FISS: node {mesh.node_names[node]} is not the end of a rotor segment "
+            "(a cell of 2 or 3 nodes without the other crack node), the rotor axis is undefined",
+            keyword,
+        )
+    return int(found)
+
+
+def rotor_frame(mesh, node_d: int, node_g: int) -> np.ndarray:
+    """Global -> rotor frame (gamma = 0) of a ROTOR_FISS crack, as code_aster
+    sets it up: x is neighbour(D) - neighbour(G), the nodes adjacent to the
+    crack nodes on the rotor, whatever the crack nodes' own positions."""
+    near_d = neighbour_of(mesh, node_d, node_g, "GROUP_NO_D")
+    near_g = neighbour_of(mesh, node_g, node_d, "GROUP_NO_G")
+    axis = np.asarray(mesh.coords[near_d], float) - np.asarray(mesh.coords[near_g], float)
+    alpha, beta = nautical_angles(axis)
+    return rotation_matrix(alpha, beta, 0.0)
 
 
 def default_name(relation: str, number: int) -> str:
@@ -161,7 +195,7 @@ def law_spec(occ, basis, n_modes: int, number: int, options: dict) -> ShockSpec:
         if not occ.get("INTITULE"):
             spec.name = f"{mesh_number(mesh, n1):<8}{component:<8}{function_name}"
     elif relation == "ROTOR_FISS":
-        spec.frame = axis_frame(c1, c2)
+        spec.frame = rotor_frame(mesh, n1, n2)
         variable = options.get("VITESSE_VARIABLE", "NON") == "OUI"
         speed = options.get("VITE_ROTA") or 0.0
         spec.law = RF.prepare_rotor_fiss(occ, float(speed), variable)

@@ -1,19 +1,22 @@
 """ROTOR_FISS: cracked rotor, a rotation-dependent stiffness between two nodes.
 
 The crack lies between node D (node 1) and node G (node 2) of a rotor
-whose axis is x (frame from the rotor axis, ``rot_axis`` = R_y(β) R_z(α)).
-The frame turns with the rotor: γ(t) = ANGL_ROTA(t) when the speed is
-variable, else ANGL_INIT + Ω t. With δθ = θ_G - θ_D (rotations, global)
-brought to the turning frame (δy, δz), the crack's opening angle is
+whose axis is x (``rot_axis`` = R_y(β) R_z(α), code_aster's nautical angles
+of neighbour(D) - neighbour(G), the rotor nodes next to the crack nodes:
+``connections.rotor_frame``). The frame turns with the rotor:
+γ(t) = ANGL_ROTA(t) when the speed is variable, else ANGL_INIT + Ω t; as in
+code_aster's rot3d, sin γ and cos γ below 1e-6 in magnitude count as 0.
+With δθ = θ_G - θ_D (rotations, global) brought to the turning frame
+(δy, δz), the crack's opening angle is
 φ = atan2(δy, δz) in [0, 2π) and the moment on node D is, in that frame,
 
     M = (0,  K(φ) δy + ½ K'(φ) δz,  K(φ) δz - ½ K'(φ) δy)
 
 (node G receives -M), with K = K_PHI and K' = DK_DPHI read at φ (radians).
 
-Internal variables (code_aster's order, VINT1..VINT3): the angle as
-code_aster archives it, φ·180/(2π) (half the angle in degrees: kept as
-code_aster writes it), then M_y and M_z in the turning frame.
+Internal variables (code_aster's order, VINT1..VINT3): the angle φ in
+degrees (code_aster 17: φ·180/π; versions up to 16 wrote φ·180/(2π)), then
+M_y and M_z in the turning frame.
 """
 
 from __future__ import annotations
@@ -48,6 +51,10 @@ def cracked_rotor_moment(params, t, rot_axis, dtheta_x, dtheta_y, dtheta_z, stat
     """Global moment (3) on node D; ``dtheta`` = θ_G - θ_D in the global frame."""
     gamma = rotor_angle(params, t)
     cg, sg = math.cos(gamma), math.sin(gamma)
+    if abs(cg) < 1.0e-6:  # code_aster's rot3d zeroes such entries
+        cg = 0.0
+    if abs(sg) < 1.0e-6:
+        sg = 0.0
     a = rot_axis[1, 0] * dtheta_x + rot_axis[1, 1] * dtheta_y + rot_axis[1, 2] * dtheta_z
     b = rot_axis[2, 0] * dtheta_x + rot_axis[2, 1] * dtheta_y + rot_axis[2, 2] * dtheta_z
     dy = cg * a + sg * b  # turning frame: rotation by γ about x
@@ -59,7 +66,7 @@ def cracked_rotor_moment(params, t, rot_axis, dtheta_x, dtheta_y, dtheta_z, stat
     dk = value(params, int(params[P_AT_DK]), phi)
     my = k * dy + 0.5 * dk * dz
     mz = k * dz - 0.5 * dk * dy
-    state_out[V_ANGLE] = phi * 180.0 / TWO_PI
+    state_out[V_ANGLE] = math.degrees(phi)
     state_out[V_MY] = my
     state_out[V_MZ] = mz
     # back to the axis frame, then to the global frame
