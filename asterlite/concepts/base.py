@@ -37,9 +37,22 @@ class Concept:
 # code_aster types that stand for a family: a concept of a member type also
 # satisfies the family name (catalogues type some keywords by family).
 RESULT_TYPES = (
-    "mode_meca", "mode_meca_c", "mode_flamb", "mode_gene", "dyna_trans", "dyna_harmo",
-    "evol_elas", "evol_noli", "mult_elas", "harm_gene", "acou_harmo", "mode_acou",
-    "comb_fourier", "fourier_elas", "evol_ther", "mode_empi",
+    "mode_meca",
+    "mode_meca_c",
+    "mode_flamb",
+    "mode_gene",
+    "dyna_trans",
+    "dyna_harmo",
+    "evol_elas",
+    "evol_noli",
+    "mult_elas",
+    "harm_gene",
+    "acou_harmo",
+    "mode_acou",
+    "comb_fourier",
+    "fourier_elas",
+    "evol_ther",
+    "mode_empi",
 )
 FAMILIES = {
     **{name: ("resultat_sdaster",) for name in RESULT_TYPES},

@@ -64,9 +64,17 @@ class TranGene(Concept):
     aster_types = ("tran_gene",)
     deck_methods = frozenset(
         {
-            "getName", "getNumberOfModes", "getIndexes", "getTimes", "INFO_NONL",
-            "getDisplacementValues", "getVelocityValues", "getAccelerationValues",
-            "setDisplacementValues", "setVelocityValues", "setAccelerationValues",
+            "getName",
+            "getNumberOfModes",
+            "getIndexes",
+            "getTimes",
+            "INFO_NONL",
+            "getDisplacementValues",
+            "getVelocityValues",
+            "getAccelerationValues",
+            "setDisplacementValues",
+            "setVelocityValues",
+            "setAccelerationValues",
         }
     )
 

@@ -49,9 +49,7 @@ def archive_position(n_archived: int, idx) -> int:
     """A 0-based time index checked against the archive length."""
     position = int(idx)
     if not 0 <= position < n_archived:
-        raise CommandError(
-            f"time index {position} is outside the archive (0..{n_archived - 1})"
-        )
+        raise CommandError(f"time index {position} is outside the archive (0..{n_archived - 1})")
     return position
 
 
@@ -82,10 +80,7 @@ _HEADER = (
 
 def nonlinearity_rows(shocks) -> list[list[str]]:
     """[type, title, node 1, node 2, substructure 1, substructure 2] per nonlinearity."""
-    return [
-        [s.relation, s.name, s.node_1, s.node_2 or "", "", ""]
-        for s in shocks
-    ]
+    return [[s.relation, s.name, s.node_1, s.node_2 or "", "", ""] for s in shocks]
 
 
 def info_nonl_lines(shocks) -> list[str]:
