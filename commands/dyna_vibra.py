@@ -769,14 +769,14 @@ def run_physical(ctx, kw):
             "SCHEMA",
             schema_kw,
         )
-    for unsupported in ("EXCIT_RESU", "AMOR_MODAL"):
-        if kw.get(unsupported):
-            ctx.unsupported(f"{unsupported} on a physical basis", unsupported, kw)
+    if kw.get("EXCIT_RESU"):
+        ctx.unsupported("EXCIT_RESU on a physical basis", "EXCIT_RESU", kw)
     mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
     numbering = stiffness_matrix.numbering
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
     loads = physical_loads(ctx, kw, numbering, stiffness_matrix)
     system = build_system(numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads)
+    modal = physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
 
     reused = ctx.reuse if isinstance(getattr(ctx, "reuse", None), DynaTrans) else None
     q, v, a, t_state, order_offset = physical_initial_state(ctx, kw, system)
@@ -796,6 +796,8 @@ def run_physical(ctx, kw):
 
         if scheme not in ("NEWMARK", "DIFF_CENTRE"):
             ctx.unsupported(f"ENERGIE with SCHEMA={scheme!r} (NEWMARK, DIFF_CENTRE)", "ENERGIE", kw)
+        if modal is not None:
+            ctx.unsupported("ENERGIE with AMOR_MODAL on a physical basis", "ENERGIE", kw)
         energy = EnergyBalance(system, times[0])
         previous = getattr(reused, "tables", {}).get("PARA_CALC") if reused is not None else None
         if previous is not None and t_state is not None:
@@ -846,10 +848,19 @@ def run_physical(ctx, kw):
                     beta=schema_kw.get("BETA", 0.25),
                     gamma=schema_kw.get("GAMMA", 0.5),
                     monitor=energy,
+                    modal=modal,
                 )
             elif scheme == "WILSON":
                 wilson.integrate(
-                    system, times, q, v, a, mask, archive, theta=schema_kw.get("THETA", 1.4)
+                    system,
+                    times,
+                    q,
+                    v,
+                    a,
+                    mask,
+                    archive,
+                    theta=schema_kw.get("THETA", 1.4),
+                    modal=modal,
                 )
             else:
                 inverse = checked_diagonal_mass(ctx, system, scheme)
@@ -910,6 +921,61 @@ def run_physical(ctx, kw):
     if energy is not None:
         produced.tables["PARA_CALC"] = energy.table()
     return produced
+
+
+def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme):
+    """AMOR_MODAL of a physical transient (code_aster's nmmoam): a
+    ``ModalDamping`` applied explicitly by NEWMARK and WILSON (dlnew0);
+    DIFF_CENTRE and ADAPT_ORDRE2 do not read the keyword in code_aster."""
+    from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
+    from asterlite.modal.renumber import transfer
+
+    occs = kw.factor("AMOR_MODAL")
+    if not occs:
+        return None
+    occ = occs[0]
+    if scheme not in ("NEWMARK", "WILSON"):
+        ctx.log(
+            f"warning: AMOR_MODAL is ignored with SCHEMA={scheme!r} on a physical basis "
+            "(as code_aster, whose modal damping force is applied by NEWMARK and WILSON only)"
+        )
+        return None
+    modes = occ.get("MODE_MECA")
+    if modes is None:
+        ctx.error("AMOR_MODAL on a physical basis needs MODE_MECA", "MODE_MECA", occ)
+    n_modes = modes.n_modes
+    if occ.get("NB_MODE") is not None:
+        n_modes = min(n_modes, int(occ["NB_MODE"]))
+    values = occ.get("AMOR_REDUIT")
+    if values is None and occ.get("LIST_AMOR") is not None:
+        values = list_values(occ["LIST_AMOR"])
+    if values is None or np.size(values) == 0:
+        ctx.error("AMOR_MODAL needs AMOR_REDUIT or LIST_AMOR", "AMOR_REDUIT", occ)
+    ratios, too_many = damping_ratios(values, n_modes)
+    if too_many:
+        ctx.log(
+            f"warning: AMOR_MODAL gives more damping ratios than the {n_modes} modes used; "
+            "the extra values are ignored"
+        )
+    # b_i = K φ_i with the stiffness of the modes (REF_RIGI_PREM), on their numbering
+    mode_stiffness = modes.stiffness if modes.stiffness is not None else stiffness_matrix
+    shapes = np.asarray(modes.shapes[:, :n_modes], dtype=float)
+    shapes = transfer(shapes, modes.numbering, mode_stiffness.numbering)
+    stiffness_shapes = transfer(mode_stiffness.matrix @ shapes, mode_stiffness.numbering, numbering)
+    masses = modes.parameters.get("MASS_GENE", modes.generalized_mass)
+    masses = np.asarray(masses, dtype=float)[:n_modes]
+    frequencies = np.asarray(modes.frequencies, dtype=float)[:n_modes]
+    supports = [
+        (support["shape"], support["VITE"]) for support in physical_supports(ctx, kw, numbering)
+    ]
+    try:
+        modal = build_modal_damping(
+            system.elimination, stiffness_shapes, frequencies, masses, ratios, supports
+        )
+    except ValueError as error:
+        ctx.error(f"AMOR_MODAL: {error}", "MODE_MECA", occ)
+    ctx.log(f"AMOR_MODAL: modal damping force on {n_modes} modes, applied explicitly")
+    return modal
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix):

@@ -15,7 +15,9 @@ from scipy.sparse.linalg import splu
 from asterlite.dynamics.physical.stepping import fixed_step_loop
 
 
-def integrate(system, times, q, v, a, mask, archive, beta=0.25, gamma=0.5, monitor=None):
+def integrate(
+    system, times, q, v, a, mask, archive, beta=0.25, gamma=0.5, monitor=None, modal=None
+):
     factors = {}
 
     def operator(dt):
@@ -38,7 +40,7 @@ def integrate(system, times, q, v, a, mask, archive, beta=0.25, gamma=0.5, monit
         v_new = v + c[6] * a + c[7] * a_new
         return q_new, v_new, a_new
 
-    fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor)
+    fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor, modal)
 
 
 def coefficients(dt, beta, gamma):

@@ -11,7 +11,7 @@ from scipy.sparse.linalg import splu
 from asterlite.dynamics.physical.stepping import fixed_step_loop
 
 
-def integrate(system, times, q, v, a, mask, archive, theta=1.4):
+def integrate(system, times, q, v, a, mask, archive, theta=1.4, modal=None):
     factors = {}
     previous_force = {"F": None}
 
@@ -46,4 +46,4 @@ def integrate(system, times, q, v, a, mask, archive, theta=1.4):
         previous_force["F"] = force
         return q_new, v_new, a_new
 
-    fixed_step_loop(system, times, q, v, a, mask, archive, step)
+    fixed_step_loop(system, times, q, v, a, mask, archive, step, modal=modal)
