@@ -75,6 +75,8 @@ def run(ctx, kw):
             continue
         specs.extend(shock_specs(ctx, occ, basis, system.n_modes))
     continue_law_states(kw, specs)
+    if kw.factor("VERI_CHOC"):
+        check_basis_for_shocks(ctx, kw, specs, basis, system)
     shocks = build_shocks(specs, system)
 
     q0, v0, t_init_state = initial_state(ctx, kw, system.n_modes)
@@ -1158,3 +1160,29 @@ def checked_diagonal_mass(ctx, system, scheme):
 
 
 __all__ = ["run", "math"]
+
+
+def check_basis_for_shocks(ctx, kw, specs, basis, system) -> None:
+    """VERI_CHOC: warn, or stop with STOP_CRITERE='OUI', when the basis misses
+    too much of a shock node's static compliance (asterlite.dynamics.basis_check)."""
+    from asterlite.dynamics.basis_check import node_checks
+
+    occ = kw.factor("VERI_CHOC")[0]
+    if basis.stiffness is None:
+        ctx.unsupported("VERI_CHOC on a basis without its assembled stiffness", "VERI_CHOC", kw)
+    checks = node_checks(specs, basis, np.diag(system.stiffness))
+    for check in checks:
+        ctx.log(
+            f"VERI_CHOC {check.shock} node {check.node}: static flexibility "
+            f"{check.static_flexibility:.4g}, restitution by the modes {check.restitution:.4f}, "
+            f"criterion {check.criterion:.4g}"
+        )
+    worst = max((c.criterion for c in checks), default=0.0)
+    if worst > occ["SEUIL"]:
+        message = (
+            f"the modal basis misses the static deflection of a shock node: criterion "
+            f"{worst:.4g} > SEUIL {occ['SEUIL']:g} (add modes or static modes at the shock nodes)"
+        )
+        if occ["STOP_CRITERE"] == "OUI":
+            ctx.error(message, "VERI_CHOC", kw)
+        ctx.log(f"warning: {message}")
