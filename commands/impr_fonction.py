@@ -1,7 +1,8 @@
 """IMPR_FONCTION: print curves (FONCTION, LIST_PARA + LIST_RESU, or ABSCISSE
-+ ORDONNEE) as TABLEAU text or as a Grace project (XMGRACE; the PILOTE
-image drivers need the xmgrace program, so the .agr text is written
-instead)."""
++ ORDONNEE) as TABLEAU text or as a Grace project (XMGRACE). With an image
+PILOTE (PNG, SVG, PDF, EPS, POSTSCRIPT, JPEG) the unit receives the picture,
+drawn with matplotlib instead of the xmgrace program; 'INTERACTIF' (a window)
+keeps the project file."""
 
 from __future__ import annotations
 
@@ -10,6 +11,16 @@ import numpy as np
 from asterlite.concepts.function import Formula
 from asterlite.io.tables import function_lines, write_lines, xmgrace_lines
 from asterlite.post.restitution import values_of
+
+# code_aster's PILOTE image drivers and the matplotlib format drawing each
+IMAGE_FORMATS = {
+    "PNG": "png",
+    "SVG": "svg",
+    "PDF": "pdf",
+    "EPS": "eps",
+    "POSTSCRIPT": "ps",
+    "JPEG": "jpeg",
+}
 
 
 def run(ctx, kw):
@@ -26,15 +37,19 @@ def run(ctx, kw):
         write_lines(path, lines)
     elif fmt == "XMGRACE":
         title = kw.get("TITRE") or ""
-        lines = xmgrace_lines(
-            [(x, y, legend) for x, y, legend, _, _ in curves],
-            title if isinstance(title, str) else " ".join(title),
-            kw.get("LEGENDE_X") or curves[0][3],
-            kw.get("LEGENDE_Y") or curves[0][4],
-        )
-        write_lines(path, lines, append=False)
-        if kw.get("PILOTE"):
-            ctx.log(f"PILOTE={kw['PILOTE']!r}: Grace project written instead of an image")
+        title = title if isinstance(title, str) else " ".join(title)
+        xlabel = kw.get("LEGENDE_X") or curves[0][3]
+        ylabel = kw.get("LEGENDE_Y") or curves[0][4]
+        drawn = [(x, y, legend) for x, y, legend, _, _ in curves]
+        image_format = IMAGE_FORMATS.get(kw.get("PILOTE") or "")
+        if image_format is not None:
+            from asterlite.post.plots import curves_figure
+
+            curves_figure(drawn, title, xlabel, ylabel).savefig(path, format=image_format)
+        else:
+            write_lines(path, xmgrace_lines(drawn, title, xlabel, ylabel), append=False)
+            if kw.get("PILOTE"):
+                ctx.log(f"PILOTE={kw['PILOTE']!r}: no window here, Grace project written")
     else:
         ctx.unsupported(f"FORMAT={fmt!r}", "FORMAT", kw)
     ctx.log(f"{len(curves)} curve(s) written to {path.name}")

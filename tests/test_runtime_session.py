@@ -111,3 +111,14 @@ def test_check_imports_no_numerical_stack(tmp_path):
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_impr_fonction_draws_an_image_with_an_image_pilote(tmp_path):
+    text = FUNCTION_DECK.replace(
+        'IMPR_FONCTION(FORMAT="TABLEAU", UNITE=8,',
+        'IMPR_FONCTION(FORMAT="XMGRACE", PILOTE="PNG", UNITE=29,',
+    )
+    assert "PILOTE" in text
+    out = tmp_path / "out"
+    assert run_deck(deck(tmp_path, text), out).status == "PASS"
+    assert (out / "fort.29").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -372,3 +372,18 @@ __all__ = [
     "wear_figure",
     "wear_work_rates",
 ]
+
+
+def curves_figure(curves, title: str = "", xlabel: str = "", ylabel: str = ""):
+    """Figure of (x, y, legend) curves: the image IMPR_FONCTION draws."""
+    figure = _new_figure()
+    axes = figure.add_subplot()
+    for x, y, legend in curves:
+        axes.plot(x, y, label=legend or None)
+    axes.set_title(title)
+    axes.set_xlabel(xlabel)
+    axes.set_ylabel(ylabel)
+    axes.grid(alpha=0.3)
+    if any(legend for _, _, legend in curves):
+        axes.legend()
+    return figure
