@@ -648,25 +648,7 @@ def support_motions(ctx, kw, basis) -> list[dict]:
     for occ in kw.factor("EXCIT"):
         if occ.get("MULT_APPUI") != "OUI":
             continue
-        static = kw.get("MODE_STAT")
-        if static is None:
-            ctx.error("EXCIT MULT_APPUI='OUI' needs MODE_STAT", "MODE_STAT", kw)
-        mesh = static.numbering.mesh
-        nodes = []
-        for group in as_tuple(occ.get("GROUP_NO")):
-            if group not in mesh.node_groups:
-                ctx.error(f"no node group {group!r} in the mesh", "GROUP_NO", occ)
-            nodes.extend(int(n) for n in mesh.node_groups[group])
-        for name in as_tuple(occ.get("NOEUD")):
-            index = mesh.find_node(name)
-            if index is None:
-                ctx.error(f"no node {name!r} in the mesh", "NOEUD", occ)
-            nodes.append(index)
-        direction = np.asarray(as_tuple(occ.get("DIRECTION")) or (1.0, 0.0, 0.0), dtype=float)
-        try:
-            shape = combined_static_shape(static, [mesh.node_names[n] for n in nodes], direction)
-        except SeismicError as error:
-            ctx.error(f"MODE_STAT: {error}", "MODE_STAT", kw)
+        shape = support_shape(ctx, kw, occ)
         supports.append(
             {"shape": shape, "DEPL": occ["DEPL"], "VITE": occ["VITE"], "ACCE": occ["ACCE"]}
         )
@@ -1021,29 +1003,10 @@ def physical_supports(ctx, kw, numbering) -> list[dict]:
     for occ in kw.factor("EXCIT"):
         if occ.get("MULT_APPUI") != "OUI":
             continue
-        static = kw.get("MODE_STAT")
-        if static is None:
-            ctx.error("EXCIT MULT_APPUI='OUI' needs MODE_STAT", "MODE_STAT", kw)
         for name in ("DEPL", "VITE", "ACCE"):
             if occ.get(name) is None:
                 ctx.error(f"EXCIT MULT_APPUI='OUI' needs {name}", name, occ)
-        mesh = static.numbering.mesh
-        nodes = []
-        for group in as_tuple(occ.get("GROUP_NO")):
-            if group not in mesh.node_groups:
-                ctx.error(f"no node group {group!r} in the mesh", "GROUP_NO", occ)
-            nodes.extend(int(n) for n in mesh.node_groups[group])
-        for name in as_tuple(occ.get("NOEUD")):
-            index = mesh.find_node(name)
-            if index is None:
-                ctx.error(f"no node {name!r} in the mesh", "NOEUD", occ)
-            nodes.append(index)
-        direction = np.asarray(as_tuple(occ.get("DIRECTION")) or (1.0, 0.0, 0.0), dtype=float)
-        try:
-            shape = combined_static_shape(static, [mesh.node_names[n] for n in nodes], direction)
-        except SeismicError as error:
-            ctx.error(f"MODE_STAT: {error}", "MODE_STAT", kw)
-        shape = transfer(shape, static.numbering, numbering)
+        shape = transfer(support_shape(ctx, kw, occ), kw["MODE_STAT"].numbering, numbering)
         motions = {name: occ[name] for name in ("DEPL", "VITE", "ACCE")}
         supports.append({"shape": shape, **motions})
     return supports
@@ -1186,3 +1149,27 @@ def check_basis_for_shocks(ctx, kw, specs, basis, system) -> None:
         if occ["STOP_CRITERE"] == "OUI":
             ctx.error(message, "VERI_CHOC", kw)
         ctx.log(f"warning: {message}")
+
+
+def support_shape(ctx, kw, occ) -> np.ndarray:
+    """Static shape of one EXCIT support (MULT_APPUI): Σ of MODE_STAT's modes
+    at its nodes along DIRECTION, on MODE_STAT's numbering."""
+    static = kw.get("MODE_STAT")
+    if static is None:
+        ctx.error("EXCIT MULT_APPUI='OUI' needs MODE_STAT", "MODE_STAT", kw)
+    mesh = static.numbering.mesh
+    nodes = []
+    for group in as_tuple(occ.get("GROUP_NO")):
+        if group not in mesh.node_groups:
+            ctx.error(f"no node group {group!r} in the mesh", "GROUP_NO", occ)
+        nodes.extend(int(n) for n in mesh.node_groups[group])
+    for name in as_tuple(occ.get("NOEUD")):
+        index = mesh.find_node(name)
+        if index is None:
+            ctx.error(f"no node {name!r} in the mesh", "NOEUD", occ)
+        nodes.append(index)
+    direction = np.asarray(as_tuple(occ.get("DIRECTION")) or (1.0, 0.0, 0.0), dtype=float)
+    try:
+        return combined_static_shape(static, [mesh.node_names[n] for n in nodes], direction)
+    except SeismicError as error:
+        ctx.error(f"MODE_STAT: {error}", "MODE_STAT", kw)
