@@ -25,9 +25,10 @@ def test_veri_choc_stops_a_run_on_a_too_poor_basis(tmp_path):
     missed share (about 0.03 here), STOP_CRITERE='OUI' stops before integrating."""
     folder = SAMPLES / "tube_supports"
     text = (folder / "tube_supports.comm").read_text()
+    check = '    VERI_CHOC=_F(STOP_CRITERE="OUI", SEUIL=0.01),\n'
     text = text.replace("NB_VECT=20", "NB_VECT=2").replace(
         "    COMPORTEMENT=SUPPORTS,\n)\n\nIMPACTS",
-        '    COMPORTEMENT=SUPPORTS,\n    VERI_CHOC=_F(STOP_CRITERE="OUI", SEUIL=0.01),\n)\n\nIMPACTS',
+        "    COMPORTEMENT=SUPPORTS,\n" + check + ")\n\nIMPACTS",
     )
     assert "VERI_CHOC" in text
     (tmp_path / "tube.comm").write_text(text)
