@@ -258,6 +258,9 @@ DYNA_VIBRA = OPER(
                 "RUNGE_KUTTA_54",
                 "ITMI",
                 "TRBDF2",
+                # asterlite extension, not in code_aster 17: kept for legacy decks
+                # (code_aster 10's METHODE='EULER', its default scheme)
+                "EULER",
             ),
         ),
     ),

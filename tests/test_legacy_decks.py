@@ -14,7 +14,7 @@ from asterlite.runtime.runner import run_deck
 DECKS = Path(__file__).parent / "legacy_decks"
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "aster-corpus"
 PASSING = ["sdnd100a_v10", "sdnd101a_v13"]  # must pass today
-ALL = sorted(p.stem for p in DECKS.glob("*.export") if not p.stem.startswith(("_", "euler")))
+ALL = sorted(p.stem for p in DECKS.glob("*.export") if not p.stem.startswith("_"))
 
 pytestmark = pytest.mark.skipif(not CORPUS.is_dir(), reason="aster-corpus is absent")
 
@@ -66,11 +66,3 @@ def test_legacy_deck_runs_and_ports(name, tmp_path):
         pytest.skip(f"engine: {legacy.message.splitlines()[0]}")
     assert ported.status == legacy.status, ported.message
     assert _values(ported) == _values(legacy)
-
-
-def test_euler_scheme_is_reported_unsupported(tmp_path):
-    for export in (DECKS / "euler_v10.export", _ported_copy("euler_v10", tmp_path)):
-        assert "SCHEMA='EULER'" in run_deck(export, check_only=True).message
-        report = run_deck(export, tmp_path / export.stem)
-        assert report.status == "UNSUPPORTED"
-        assert "SCHEMA='EULER'" in report.message

@@ -15,6 +15,7 @@ from asterlite.dynamics import (
     scheme_adapt_ordre2,
     scheme_devoge,
     scheme_diff_centre,
+    scheme_euler,
     scheme_newmark,
     scheme_rk32,
     scheme_rk54,
@@ -37,6 +38,7 @@ SCHEMES = {
     "ADAPT_ORDRE1": scheme_adapt_ordre1,
     "ADAPT_ORDRE2": scheme_adapt_ordre2,
     "TRBDF2": scheme_trbdf2,
+    "EULER": scheme_euler,  # asterlite extension: code_aster 10's EULER (legacy decks)
 }
 ADAPTIVE_FAMILY = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54", "ADAPT_ORDRE1", "ADAPT_ORDRE2", "DEVOGE")
 
