@@ -15,7 +15,6 @@ from asterlite.dynamics import (
     scheme_adapt_ordre2,
     scheme_devoge,
     scheme_diff_centre,
-    scheme_euler,
     scheme_newmark,
     scheme_rk32,
     scheme_rk54,
@@ -38,7 +37,10 @@ SCHEMES = {
     "ADAPT_ORDRE1": scheme_adapt_ordre1,
     "ADAPT_ORDRE2": scheme_adapt_ordre2,
     "TRBDF2": scheme_trbdf2,
-    "EULER": scheme_euler,  # asterlite extension: code_aster 10's EULER (legacy decks)
+    # asterlite extension for legacy decks: code_aster 10's EULER (mdeul1,
+    # v += dt a_n then q += dt v) is the arithmetic code_aster 14+ runs as the
+    # GENE DIFF_CENTRE (dtmprep maps it to its Euler routine), so one module serves
+    "EULER": scheme_diff_centre,
 }
 ADAPTIVE_FAMILY = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54", "ADAPT_ORDRE1", "ADAPT_ORDRE2", "DEVOGE")
 
