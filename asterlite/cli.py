@@ -9,13 +9,16 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-import time
 from pathlib import Path
+
+from asterlite import progress
 
 
 def _run(args) -> int:
     from asterlite.runtime.runner import format_summary, run_deck
 
+    if args.no_progress:
+        progress.enable(False)
     deck = Path(args.deck)
     output = Path(args.output) if args.output else Path("asterlite-out") / deck.stem
     report = run_deck(deck, output, echo=not args.quiet, save_results=args.save_results)
@@ -52,22 +55,30 @@ def _check(args) -> int:
 def _corpus(args) -> int:
     from asterlite.runtime.corpus import format_table, run_corpus
 
-    started = time.perf_counter()
-    on_terminal = sys.stdout.isatty()
+    if args.no_progress or args.quiet:
+        progress.enable(False)
+    bar = None
 
-    def progress(row, done, total):
-        if args.quiet:
-            return
-        line = f"  {row['deck']:<10} {row['status']:<12} {row['seconds']:7.2f} s"
-        if on_terminal:  # a running count and an estimate of the time left
-            elapsed = time.perf_counter() - started
-            line += f"   [{done}/{total}, ~{elapsed / done * (total - done):.0f} s left]"
-        print(line, flush=True)
+    def report(row, done, total):
+        nonlocal bar
+        if bar is None:  # a bar over the decks (terminal only), lines above it
+            bar = progress.count_bar("corpus", total)
+        if not args.quiet:
+            line = f"  {row['deck']:<10} {row['status']:<12} {row['seconds']:7.2f} s"
+            if isinstance(bar, progress.NoBar):
+                print(line, flush=True)
+            else:
+                bar.write(line)
+        bar.update(done, f"{row['deck']} {row['status']}")
 
     only = args.only.split(",") if args.only else None
-    rows = run_corpus(
-        Path(args.directory), only=only, jobs=args.jobs, timeout=args.timeout, progress=progress
-    )
+    try:
+        rows = run_corpus(
+            Path(args.directory), only=only, jobs=args.jobs, timeout=args.timeout, progress=report
+        )
+    finally:
+        if bar is not None:
+            bar.close()
     print(format_table(rows))
     if args.json:
         Path(args.json).write_text(json.dumps({"decks": rows}, indent=1) + "\n")
@@ -217,6 +228,9 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="save every tran_gene result to OUTDIR/results.h5 (layout: docs/results.md)",
     )
+    run.add_argument(
+        "--no-progress", action="store_true", help="no progress bars (off anyway off a terminal)"
+    )
     run.set_defaults(handler=_run)
 
     check = commands.add_parser("check", help="validate decks without computing")
@@ -236,6 +250,7 @@ def build_parser() -> argparse.ArgumentParser:
     corpus.add_argument("--jobs", type=int, default=2)
     corpus.add_argument("--timeout", type=float, default=900.0, help="seconds per deck")
     corpus.add_argument("-q", "--quiet", action="store_true")
+    corpus.add_argument("--no-progress", action="store_true", help="no progress bar")
     corpus.set_defaults(handler=_corpus)
 
     sweep = commands.add_parser(

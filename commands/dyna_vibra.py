@@ -14,6 +14,7 @@ import numpy as np
 from asterlite.concepts.transient import ShockHistory, TranGene
 from asterlite.dynamics import contact as C
 from asterlite.dynamics.integrate import SCHEMES, SchemeOptions, integrate
+from asterlite.dynamics.kernel import INFO_REJECTED, INFO_STEP
 from asterlite.dynamics.model import (
     COMPONENTS,
     LinearSystem,
@@ -132,6 +133,7 @@ def run(ctx, kw):
             pas_arch,
             options,
             rotation=rotation,
+            label=f"DYNA_VIBRA {ctx.result_name or ''} {scheme}".replace("  ", " "),
         )
     except NumericalError as error:
         raise NumericalError(error.message, ctx.location, ctx.command) from None
@@ -162,6 +164,8 @@ def run(ctx, kw):
         scheme=scheme,
         step=dt,
         info=result.info,
+        step_sizes=result.step_info[:, INFO_STEP],
+        rejections=result.step_info[:, INFO_REJECTED],
     )
     reused = getattr(ctx, "reuse", None)
     if isinstance(reused, TranGene) and t_init_state is not None:
@@ -202,7 +206,16 @@ def appended(previous: TranGene, new: TranGene) -> TranGene:
         scheme=new.scheme,
         step=new.step,
         info=info,
+        step_sizes=_joined(previous.step_sizes, new.step_sizes, keep),
+        rejections=_joined(previous.rejections, new.rejections, keep),
     )
+
+
+def _joined(previous, new, keep):
+    """An archived-instant history of a continuation (None if either part lacks it)."""
+    if previous is None or new is None:
+        return None
+    return np.concatenate([previous[keep], new])
 
 
 # ----------------------------------------------------------------------------- matrices

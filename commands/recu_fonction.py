@@ -135,6 +135,11 @@ def from_generalized(ctx, kw):
     if any(kw.get(k) is not None for k in ("GROUP_NO_CHOC", "NOEUD_CHOC", "INTITULE")):
         return from_shock(ctx, kw, result)
     field = kw.get("NOM_CHAM", "DEPL")
+    if field == "PTEM":  # the time step that led to each archived instant
+        if result.step_sizes is None:
+            ctx.error("this tran_gene holds no step history (PTEM)", "NOM_CHAM", kw)
+        selection = instants(ctx, kw, result.times, result.order)
+        return selection.times, selection.apply(result.step_sizes)
     if field not in ("DEPL", "VITE", "ACCE"):
         ctx.unsupported(f"NOM_CHAM={field!r} from a tran_gene", "NOM_CHAM", kw)
     if kw.get("ACCE_MONO_APPUI") is not None and field != "ACCE":

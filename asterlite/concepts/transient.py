@@ -88,6 +88,12 @@ class TranGene(Concept):
     scheme: str = ""
     step: float = 0.0
     info: dict[str, Any] = field(default_factory=dict)  # steps taken, rejections, timings...
+    # per archived instant: the step that led to it (code_aster's PTEM) and
+    # the steps rejected since the start (adaptive schemes); None if unknown
+    step_sizes: np.ndarray | None = None
+    rejections: np.ndarray | None = None
+    # tables kept with the result (RECU_TABLE NOM_TABLE): ENERGIE's PARA_CALC
+    tables: dict = field(default_factory=dict)
 
     @property
     def n_modes(self) -> int:

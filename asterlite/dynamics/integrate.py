@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from asterlite import progress
 from asterlite.dynamics import (
     adapt_control,
     scheme_adapt_ordre1,
@@ -61,6 +62,10 @@ class SchemeOptions:
     coef_divi_pas: float = 1.3333334
     pas_limi_rela: float = 1.0e-6
     nb_poin_periode: int = 50
+    # asterlite's guards (no keyword): steps an adaptive run may take, bytes
+    # the archive may hold; None: StepBudget's defaults
+    max_steps: int | None = None
+    max_archive_bytes: int | None = None
 
 
 @dataclass
@@ -71,6 +76,9 @@ class RunResult:
     vite: np.ndarray
     acce: np.ndarray
     vint: np.ndarray  # (n_archived, n_shocks, N_VINT)
+    # (n_archived, kernel.N_INFO): the step that led to each archived
+    # instant and the steps rejected so far (code_aster's PTEM and more)
+    step_info: np.ndarray = field(default_factory=lambda: np.zeros((0, K.N_INFO)))
     info: dict = field(default_factory=dict)
 
 
@@ -89,10 +97,12 @@ def integrate(
     options: SchemeOptions | None = None,
     specialised: bool = True,
     rotation=None,
+    label: str | None = None,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
     ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
-    results as its specialised ``run_loop``; kept for comparison)."""
+    results as its specialised ``run_loop``; kept for comparison).
+    ``label`` names the run on the progress bar."""
     options = options or SchemeOptions()
     n = system.n_modes
     module = SCHEMES[scheme]
@@ -126,31 +136,47 @@ def integrate(
     capacity = 2 + len(instants) + n_steps // max(pas_arch, 1)
     if adaptive:
         capacity = min(capacity, 4096)
-    buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
-    K.archive(0, t0, 0, q, v, a, vint, *buffers)
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
+    budget = StepBudget(t0, t_end, dt, adaptive, options)
+    row_bytes = 8 * (2 + 3 * n + shocks.count * shocks.vint_width + K.N_INFO)
+    budget.check_archive(capacity, row_bytes, pas_arch, clock, counters)
+    buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
+    K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
     counters[K.K_ARCHIVED] = 1
     run_loop = module.run_loop
     if not specialised or shocks.has_laws:  # other relations: the general path
         run_loop = getattr(module, "general_loop", module.run_loop)
     if rotating_loop is not None:
         run_loop = rotating_loop
+    bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
     started = wallclock.perf_counter()
-    while True:
-        status = run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, buffers)
-        if status == K.STATUS_FULL:
-            buffers = grow(buffers)
-        elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
-            excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
-            model = (model[0], model[1], excitation.bundle()) + model[3:]
-        else:
-            break
+    try:
+        while True:
+            counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
+            chunk_started = wallclock.perf_counter()
+            status = run_loop(
+                clock, counters, state, memory, model, instants, pas_arch, eps, buffers
+            )
+            if status == K.STATUS_FULL:
+                budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
+                buffers = grow(buffers)
+            elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
+                excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
+                model = (model[0], model[1], excitation.bundle()) + model[3:]
+            elif status == K.STATUS_PAUSE:
+                budget.check_steps(clock, counters, scheme)
+                budget.resize_chunk(wallclock.perf_counter() - chunk_started)
+                bar.update(clock[K.C_TIME], int(counters[K.K_STEP]))
+            else:
+                break
+    finally:
+        bar.close()
     elapsed = wallclock.perf_counter() - started
     if status != K.STATUS_DONE:
         failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
         raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
-    out_t, out_order, out_q, out_v, out_a, out_vint = (b[:count].copy() for b in buffers)
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = (b[:count].copy() for b in buffers)
     steps = int(counters[K.K_STEP])
     info = {
         "steps": steps,
@@ -167,7 +193,7 @@ def integrate(
     if scheme in ("ADAPT_ORDRE1", "ADAPT_ORDRE2"):
         kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
-    return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, info)
+    return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info)
 
 
 def loop_adapts(scheme: str, dt: float, options: SchemeOptions) -> bool:
@@ -189,7 +215,70 @@ def new_buffers(capacity: int, n_modes: int, n_shocks: int, width: int = N_VINT)
         np.zeros((capacity, n_modes)),
         np.zeros((capacity, n_modes)),
         np.zeros((capacity, n_shocks, width)),
+        np.zeros((capacity, K.N_INFO)),
     )
+
+
+class StepBudget:
+    """What the driver checks when the compiled loop pauses: the number of
+    steps (an adaptive scheme whose step collapses, e.g. on a stick-slip
+    transition, would otherwise run for ever), the memory of the archive,
+    and the size of the next chunk of steps (about CHUNK_SECONDS of work,
+    so that progress is reported often and pauses cost nothing)."""
+
+    CHUNK_SECONDS = 0.25
+    FIRST_CHUNK = 20_000
+    # an adaptive run may take this many times the steps of its initial step
+    STEP_FACTOR = 1000
+    MIN_STEPS = 10_000_000
+    ARCHIVE_BYTES = 4 * 1024**3
+
+    def __init__(self, t0, t_end, dt, adaptive, options):
+        nominal = max(1, int(math.ceil((t_end - t0) / dt)))
+        self.max_steps = options.max_steps or (
+            max(self.STEP_FACTOR * nominal, self.MIN_STEPS) if adaptive else None
+        )
+        self.archive_bytes = options.max_archive_bytes or self.ARCHIVE_BYTES
+        self.chunk = self.FIRST_CHUNK
+
+    def next_pause(self, steps: int) -> int:
+        """The step index at which the loop pauses next (on the budget at the latest)."""
+        pause = steps + self.chunk
+        return pause if self.max_steps is None else min(pause, self.max_steps)
+
+    def resize_chunk(self, seconds: float) -> None:
+        scale = self.CHUNK_SECONDS / max(seconds, 1.0e-6)
+        self.chunk = int(min(max(self.chunk * min(max(scale, 0.2), 5.0), 1_000), 10**9))
+
+    def check_steps(self, clock, counters, scheme: str) -> None:
+        steps = int(counters[K.K_STEP])
+        if self.max_steps is None or steps < self.max_steps:
+            return
+        raise NumericalError(
+            f"{scheme}: step budget exhausted: {steps} steps taken and t={clock[K.C_TIME]:.6g} "
+            f"of {clock[K.C_END]:.6g} reached ({int(counters[K.K_REJECTED])} rejected, "
+            f"smallest step {clock[K.C_MIN_STEP]:.3g}); the adaptive step collapsed, as "
+            "it does on stick-slip or stiff contact switches: raise PAS_MINI, loosen "
+            "TOLERANCE, or use a fixed-step scheme (DIFF_CENTRE, NEWMARK)"
+        )
+
+    def check_archive(self, capacity: int, row_bytes: int, pas_arch: int, clock, counters):
+        """Refuse an archive of ``capacity`` instants beyond the memory limit:
+        before the run for the instants a fixed step will archive, during it
+        when the buffers of an adaptive run have to grow."""
+        needed = capacity * row_bytes
+        if needed <= self.archive_bytes:
+            return
+        t, archived, steps = clock[K.C_TIME], int(counters[K.K_ARCHIVED]), int(counters[K.K_STEP])
+        where = (
+            f"at t={t:.6g} of {clock[K.C_END]:.6g}, {archived} instants archived in {steps} steps"
+        )
+        raise NumericalError(
+            f"archive memory limit: {capacity} archived instants would take "
+            f"{needed / 1024**3:.2f} GB (limit {self.archive_bytes / 1024**3:.2f} GB; "
+            f"{where}, PAS_ARCH={pas_arch}): archive less often (ARCHIVAGE PAS_ARCH or "
+            "LIST_INST)"
+        )
 
 
 def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | None:

@@ -6,7 +6,8 @@ own ``step`` directly, so that everything is cached across processes) built
 from the helpers here::
 
     while unfinished(clock, counters, eps):
-        if archive_full(counters, archive): return STATUS_FULL
+        paused = pause_status(counters, archive[0])
+        if paused: return paused            # STATUS_FULL or STATUS_PAUSE
         if not loads_ready(clock, exc): return STATUS_LOADS
         t, dt = plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(t, dt, index, state, memory, model)
@@ -31,7 +32,14 @@ remainder of the shortened step is taken next, and otherwise every
 buffers are full so that the driver can grow them and resume: memory
 follows the archived instants, never the number of steps. Likewise it
 stops with STATUS_LOADS when a multiplier sampled by windows (a FORMULE)
-needs its next window.
+needs its next window, and with STATUS_PAUSE when it has taken the steps
+the driver granted (``counters[K_PAUSE_AT]``): the driver reports progress,
+checks the step budget and resumes, so that a long run stays responsive
+without any Python inside the loop.
+
+Besides the state, each archived instant records the step that led to it
+and the number of steps rejected so far (``out_info``; code_aster keeps the
+step of each archived instant too), the step-size history of adaptive runs.
 """
 
 from __future__ import annotations
@@ -46,21 +54,56 @@ STATUS_STEP_UNDERFLOW = 3
 STATUS_REJECTED = 4
 STATUS_FULL = 10
 STATUS_LOADS = 11  # a windowed multiplier needs its next window (model.Excitation.refill)
+STATUS_PAUSE = 12  # the granted steps are taken: the driver reports progress and resumes
 
 # clock[]: time, stored step, nominal step, end time, shortened step,
 #          smallest and largest step taken
 C_TIME, C_STEP, C_STEP0, C_END, C_NEWDT, C_MIN_STEP, C_MAX_STEP = range(7)
 N_CLOCK = 7
 # counters[]: step index, archived, next instant, forced-archiving state,
-#             forced irregular archivings, rejected steps, adaptive flag, failing shock
-K_STEP, K_ARCHIVED, K_INSTANT, K_FORCE, K_IRREGULAR, K_REJECTED, K_ADAPTIVE, K_SHOCK = range(8)
-N_COUNTERS = 8
+#             forced irregular archivings, rejected steps, adaptive flag, failing shock,
+#             step index at which to pause
+(
+    K_STEP,
+    K_ARCHIVED,
+    K_INSTANT,
+    K_FORCE,
+    K_IRREGULAR,
+    K_REJECTED,
+    K_ADAPTIVE,
+    K_SHOCK,
+    K_PAUSE_AT,
+) = range(9)
+N_COUNTERS = 9
+# out_info[] columns of an archived instant: the step that led to it, the
+# steps rejected since the start
+INFO_STEP, INFO_REJECTED = range(2)
+N_INFO = 2
 
 
 @njit(cache=True, inline="always")
-def archive(n, t, step, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, out_vint):
+def archive(
+    n,
+    t,
+    step,
+    q,
+    v,
+    a,
+    vint,
+    dt,
+    rejected,
+    out_t,
+    out_order,
+    out_q,
+    out_v,
+    out_a,
+    out_vint,
+    out_info,
+):
     out_t[n] = t
     out_order[n] = step
+    out_info[n, INFO_STEP] = dt
+    out_info[n, INFO_REJECTED] = rejected
     for i in range(q.shape[0]):
         out_q[n, i] = q[i]
         out_v[n, i] = v[i]
@@ -79,8 +122,14 @@ def unfinished(clock, counters, eps):
 
 
 @njit(cache=True, inline="always")
-def archive_full(counters, archive_buffers):
-    return counters[K_ARCHIVED] >= archive_buffers[0].shape[0]
+def pause_status(counters, out_t):
+    """STATUS_FULL when the archive buffers are full, STATUS_PAUSE when the
+    granted steps are taken, else 0 (go on)."""
+    if counters[K_ARCHIVED] >= out_t.shape[0]:
+        return STATUS_FULL
+    if counters[K_STEP] >= counters[K_PAUSE_AT]:
+        return STATUS_PAUSE
+    return 0
 
 
 @njit(cache=True, inline="always")
@@ -115,7 +164,7 @@ def complete_step(clock, counters, state, instants, pas_arch, eps, archive_buffe
     """Advance the clock after an accepted step, choose the next step and
     archive when due (dtmcalc's rules)."""
     dt_used, dt_next, rejected = step_result
-    out_t, out_order, out_q, out_v, out_a, out_vint = archive_buffers
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive_buffers
     advance_clock(
         clock,
         counters,
@@ -132,6 +181,7 @@ def complete_step(clock, counters, state, instants, pas_arch, eps, archive_buffe
         out_v,
         out_a,
         out_vint,
+        out_info,
         dt_used,
         dt_next,
         rejected,
@@ -155,6 +205,7 @@ def advance_clock(
     out_v,
     out_a,
     out_vint,
+    out_info,
     dt_used,
     dt_next,
     rejected,
@@ -180,7 +231,10 @@ def advance_clock(
         if abs(t - instants[k]) <= i * eps:
             t = instants[k]
             n = counters[K_ARCHIVED]
-            archive(n, t, i, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, out_vint)
+            archive(
+                n, t, i, q, v, a, vint, dt_used, counters[K_REJECTED],
+                out_t, out_order, out_q, out_v, out_a, out_vint, out_info,
+            )  # fmt: skip
             counters[K_ARCHIVED] += 1
             counters[K_INSTANT] = k + 1
             counters[K_FORCE] = 0
@@ -192,7 +246,10 @@ def advance_clock(
                 clock[C_STEP] = clock[C_STEP0]
     elif (i - counters[K_IRREGULAR]) % pas_arch == 0:
         n = counters[K_ARCHIVED]
-        archive(n, t, i, q, v, a, vint, out_t, out_order, out_q, out_v, out_a, out_vint)
+        archive(
+            n, t, i, q, v, a, vint, dt_used, counters[K_REJECTED],
+            out_t, out_order, out_q, out_v, out_a, out_vint, out_info,
+        )  # fmt: skip
         counters[K_ARCHIVED] += 1
     clock[C_TIME] = t
 
@@ -208,4 +265,5 @@ def new_counters(adaptive: bool) -> np.ndarray:
     counters = np.zeros(N_COUNTERS, dtype=np.int64)
     counters[K_ADAPTIVE] = 1 if adaptive else 0
     counters[K_SHOCK] = -1
+    counters[K_PAUSE_AT] = np.iinfo(np.int64).max
     return counters

@@ -139,8 +139,9 @@ def newmark_loop(clock, counters, state, memory, model, instants, pas_arch, eps,
     rows, scalars, rot = memory[0], memory[1], memory[3]
     n = state[0].shape[0]
     while K.unfinished(clock, counters, eps):
-        if K.archive_full(counters, archive):
-            return K.STATUS_FULL
+        paused = K.pause_status(counters, archive[0])
+        if paused:
+            return paused
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)

@@ -75,8 +75,9 @@ def step(t, dt, index, state, memory, model):
 @njit(cache=True)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
     while K.unfinished(clock, counters, eps):
-        if K.archive_full(counters, archive):
-            return K.STATUS_FULL
+        paused = K.pause_status(counters, archive[0])
+        if paused:
+            return paused
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)

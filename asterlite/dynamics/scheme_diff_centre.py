@@ -61,8 +61,9 @@ def step(t, dt, index, state, memory, model):
 @njit(cache=True)
 def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
     while K.unfinished(clock, counters, eps):
-        if K.archive_full(counters, archive):
-            return K.STATUS_FULL
+        paused = K.pause_status(counters, archive[0])
+        if paused:
+            return paused
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
@@ -84,7 +85,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     exc = model[2]
     flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
     mass_inverse, stiffness, damping, shapes, rest, drive = model[3]
-    out_t, out_order, out_q, out_v, out_a, out_vint = archive
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
     return specialised_loop(
         clock,
         counters,
@@ -128,6 +129,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         out_v,
         out_a,
         out_vint,
+        out_info,
     )
 
 
@@ -175,6 +177,7 @@ def specialised_loop(
     out_v,
     out_a,
     out_vint,
+    out_info,
 ):
     """The DIFF_CENTRE loop on plain arrays (see the module docstring);
     same status codes and archiving rules as :func:`run_loop`.
@@ -186,8 +189,9 @@ def specialised_loop(
     """
     n = q.shape[0]
     while K.unfinished(clock, counters, eps):
-        if counters[K.K_ARCHIVED] >= out_t.shape[0]:
-            return K.STATUS_FULL
+        paused = K.pause_status(counters, out_t)
+        if paused:
+            return paused
         t_ahead = clock[K.C_TIME] + 2.0 * clock[K.C_STEP]
         if not (
             loads_cover(t_ahead, load_abscissas, load_layout, load_pending)
@@ -229,6 +233,6 @@ def specialised_loop(
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, dt)
         K.advance_clock(
             clock, counters, q, v, a, vint, instants, pas_arch, eps,
-            out_t, out_order, out_q, out_v, out_a, out_vint, dt, dt, 0,
+            out_t, out_order, out_q, out_v, out_a, out_vint, out_info, dt, dt, 0,
         )  # fmt: skip
     return K.STATUS_DONE

@@ -377,6 +377,9 @@ def save_tran_gene(path: str | Path, tran_gene: TranGene, name: str | None = Non
         group["order"] = np.asarray(tran_gene.order, dtype=np.int64)
         for field in ("depl", "vite", "acce"):
             group[field] = np.asarray(getattr(tran_gene, field), dtype=float)
+        for field in ("step_sizes", "rejections"):
+            if getattr(tran_gene, field) is not None:
+                group[field] = np.asarray(getattr(tran_gene, field), dtype=float)
         scheme = group.create_group("scheme")
         scheme.attrs["name"] = tran_gene.scheme or ""
         scheme.attrs["step"] = float(tran_gene.step)
@@ -437,6 +440,8 @@ def read_tran_gene_dict(path: str | Path, name: str | None = None) -> dict[str, 
         out = {"name": name, **_read_attrs(group)}
         for key in ("times", "order", "depl", "vite", "acce"):
             out[key] = group[key][()]
+        for key in ("step_sizes", "rejections"):  # absent from older files
+            out[key] = group[key][()] if key in group else None
         out["scheme_info"] = _read_attrs(group["scheme"])
         out["shocks"] = [
             {
@@ -536,6 +541,8 @@ def load_tran_gene(path: str | Path, name: str | None = None, *, concept: bool =
         scheme=str(data.get("scheme", "")),
         step=float(data.get("step", 0.0)),
         info=info,
+        step_sizes=data["step_sizes"],
+        rejections=data["rejections"],
     )
     result.name = data["name"]
     return result

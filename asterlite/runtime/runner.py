@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import shutil
+import statistics
 import time
 import traceback
 from dataclasses import dataclass, field
@@ -225,6 +226,10 @@ def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
                 "rejected_steps": int(info.get("rejected_steps", 0)),
                 "min_step": _plain(info.get("min_step")),
                 "max_step": _plain(info.get("max_step")),
+                # the steps that led to the archived instants (PTEM): their median
+                "median_step": statistics.median(concept.step_sizes[1:].tolist())
+                if concept.step_sizes is not None and len(concept.step_sizes) > 1
+                else None,
                 "integration_seconds": float(info.get("integration_seconds", 0.0)),
             }
         )
@@ -297,6 +302,17 @@ def format_test_line(test: TestRecord) -> str:
     return text + strict
 
 
+def _steps(run: dict) -> str:
+    """The step range of a transient (and the median archived step when it varies)."""
+    low, high, median = run["min_step"], run["max_step"], run.get("median_step")
+    if low is None or high is None:
+        return "?"
+    if high <= low * (1.0 + 1.0e-12):
+        return f"{low:.4g} s"
+    text = f"{low:.4g}..{high:.4g} s"
+    return text + (f" (median {median:.4g})" if median is not None else "")
+
+
 def format_summary(report: RunReport) -> str:
     lines = [f"{report.deck}: {report.status} in {report.seconds:.2f} s"]
     if report.timings:
@@ -310,7 +326,7 @@ def format_summary(report: RunReport) -> str:
     for run in report.transients:
         lines.append(
             f"transient {run['result']}: {run['scheme']} {run['steps']} steps"
-            f" ({run['rejected_steps']} rejected), step {run['min_step']}..{run['max_step']},"
+            f" ({run['rejected_steps']} rejected), step {_steps(run)},"
             f" integration {run['integration_seconds']:.3f} s"
         )
     if report.shocks:
