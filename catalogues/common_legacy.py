@@ -6,7 +6,8 @@ checked as written against these, then translated (``asterlite.legacy``)
 and checked again against the modern catalogue.
 """
 
-from asterlite.catalogues.common_post import FONCTION_OU_FORMULE, solveur
+from asterlite.catalogues.common_post import comportement_dyna
+from asterlite.catalogues.dyna_vibra import DYNA_VIBRA
 
 from asterlite.catalog import (
     BLOC,
@@ -15,9 +16,7 @@ from asterlite.catalog import (
     FACT,
     OPER,
     PRESENT_ABSENT,
-    PRESENT_PRESENT,
     SIMP,
-    UN_PARMI,
     equal_to,
     exists,
 )
@@ -26,17 +25,12 @@ LEGACY_SCHEMES = (
     "NEWMARK", "EULER", "DEVOGE", "ADAPT", "ADAPT_ORDRE1", "ADAPT_ORDRE2", "ITMI",
     "RUNGE_KUTTA_54", "RUNGE_KUTTA_32", "DIFF_CENTRE", "WILSON",
 )  # fmt: skip
-FUNCTION = FONCTION_OU_FORMULE
+MATRICES = ("MATR_MASS", "MATR_RIGI")  # named MASS_GENE/RIGI_GENE in code_aster 10
 
 
-def _ends() -> dict:
-    """NOEUD_1/GROUP_NO_1 and NOEUD_2/GROUP_NO_2 as the legacy catalogues wrote them."""
-    return dict(
-        NOEUD_1=SIMP(statut="f", typ="no"),
-        NOEUD_2=SIMP(statut="f", typ="no"),
-        GROUP_NO_1=SIMP(statut="f", typ="grno"),
-        GROUP_NO_2=SIMP(statut="f", typ="grno"),
-    )
+def _modern(bloc: str) -> dict:
+    """The entries of a generalized-transient block of today's DYNA_VIBRA."""
+    return DYNA_VIBRA.entries[bloc].entries
 
 
 def schema_temps_legacy() -> FACT:
@@ -70,25 +64,14 @@ def schema_temps_legacy() -> FACT:
 
 
 def increment_legacy() -> FACT:
-    """INCREMENT with the adaptive-step controls that later moved to SCHEMA_TEMPS."""
+    """Today's INCREMENT, repeatable, with the adaptive-step controls that later
+    moved to SCHEMA_TEMPS."""
+    modern = _modern("b_param_tran")["INCREMENT"]
     return FACT(
         statut="o",
         max="**",
-        regles=(UN_PARMI("LIST_INST", "PAS"),),
-        LIST_INST=SIMP(statut="f", typ="listr8_sdaster"),
-        b_list_inst=BLOC(
-            condition=exists("LIST_INST"),
-            regles=(EXCLUS("NUME_FIN", "INST_FIN"),),
-            NUME_FIN=SIMP(statut="f", typ="I"),
-            INST_FIN=SIMP(statut="f", typ="R"),
-        ),
-        PAS=SIMP(statut="f", typ="R"),
-        b_pas=BLOC(
-            condition=exists("PAS"),
-            INST_INIT=SIMP(statut="f", typ="R"),
-            INST_FIN=SIMP(statut="o", typ="R"),
-        ),
-        VERI_PAS=SIMP(statut="f", typ="TXM", into=("OUI", "NON")),
+        regles=modern.rules,
+        **modern.entries,
         VITE_MIN=SIMP(statut="f", typ="TXM", into=("MAXI", "NORM")),
         COEF_MULT_PAS=SIMP(statut="f", typ="R"),
         COEF_DIVI_PAS=SIMP(statut="f", typ="R"),
@@ -133,78 +116,50 @@ def archivage_legacy() -> FACT:
 
 
 def excit_legacy() -> FACT:
-    return FACT(
-        statut="f",
-        max="**",
-        regles=(
-            UN_PARMI("FONC_MULT", "COEF_MULT", "ACCE"),
-            UN_PARMI("VECT_ASSE_GENE", "NUME_ORDRE"),
-            PRESENT_PRESENT("ACCE", "VITE", "DEPL"),
-            EXCLUS("MULT_APPUI", "CORR_STAT"),
-            PRESENT_PRESENT("MULT_APPUI", "ACCE"),
-        ),
-        VECT_ASSE_GENE=SIMP(statut="f", typ="vect_asse_gene"),
-        NUME_ORDRE=SIMP(statut="f", typ="I"),
-        FONC_MULT=SIMP(statut="f", typ=FUNCTION),
-        COEF_MULT=SIMP(statut="f", typ="R"),
-        ACCE=SIMP(statut="f", typ=FUNCTION),
-        VITE=SIMP(statut="f", typ=FUNCTION),
-        DEPL=SIMP(statut="f", typ=FUNCTION),
-        MULT_APPUI=SIMP(statut="f", typ="TXM", into=("OUI",)),
-        b_mult_appui=BLOC(
-            condition=equal_to("MULT_APPUI", "OUI"),
-            regles=(EXCLUS("NOEUD", "GROUP_NO"),),
-            DIRECTION=SIMP(statut="f", typ="R", max="**"),
-            NOEUD=SIMP(statut="f", typ="no", max="**"),
-            GROUP_NO=SIMP(statut="f", typ="grno", max="**"),
-        ),
-        CORR_STAT=SIMP(statut="f", typ="TXM", into=("OUI",)),
-        b_corr_stat=BLOC(
-            condition=equal_to("CORR_STAT", "OUI"),
-            D_FONC_DT=SIMP(statut="o", typ=FUNCTION),
-            D_FONC_DT2=SIMP(statut="o", typ=FUNCTION),
-        ),
+    """Today's EXCIT, whose supports (MULT_APPUI) could also be mesh nodes (NOEUD)."""
+    modern = _modern("b_excit_tran_mod")["EXCIT"]
+    support = modern.entries["b_mult_appui"]
+    entries = dict(modern.entries)
+    entries["b_mult_appui"] = BLOC(
+        condition=support.condition,
+        regles=support.rules + (EXCLUS("NOEUD", "GROUP_NO"),),
+        **support.entries,
+        NOEUD=SIMP(statut="f", typ="no", max="**"),
     )
+    return FACT(statut=modern.statut, max=modern.max, regles=modern.rules, **entries)
+
+
+# COMPORTEMENT block of each legacy nonlinearity family (catalogues.common_post)
+FAMILY_BLOCS = {
+    "DIS_CHOC": "b_choc",
+    "FLAMBAGE": "b_buckling",
+    "ANTI_SISM": "b_antisism",
+    "DIS_VISC": "b_disvisc",
+    "ROTOR_FISS": "b_rotor",
+    "RELA_EFFO_DEPL": "b_refx",
+    "RELA_EFFO_VITE": "b_refv",
+}
+
+
+def _family(relation: str, *, drop=(), renames=None, **extra) -> FACT:
+    """A legacy nonlinearity factor keyword made from today's COMPORTEMENT block
+    of ``relation``: the same keywords and rules, less ``drop``, with keywords
+    renamed back to their legacy names (``renames``: modern -> legacy) and
+    ``extra`` legacy-only entries. Defaults do not matter here: a legacy call
+    is validated as written, then translated and validated by DYNA_VIBRA."""
+    bloc = comportement_dyna().entries[FAMILY_BLOCS[relation]]
+    renames = renames or {}
+    entries = {
+        renames.get(name, name): entry for name, entry in bloc.entries.items() if name not in drop
+    }
+    return FACT(statut="f", max="**", regles=bloc.rules, **entries, **extra)
 
 
 def choc_legacy() -> FACT:
-    """CHOC: one shock (node against obstacle, or node against node)."""
-    return FACT(
-        statut="f",
-        max="**",
-        regles=(
-            UN_PARMI("MAILLE", "GROUP_MA", "NOEUD_1", "GROUP_NO_1"),
-            EXCLUS("NOEUD_2", "GROUP_NO_2"),
-            PRESENT_ABSENT("GROUP_MA", "NOEUD_2", "GROUP_NO_2"),
-            PRESENT_ABSENT("MAILLE", "NOEUD_2", "GROUP_NO_2"),
-        ),
-        INTITULE=SIMP(statut="f", typ="TXM"),
-        GROUP_MA=SIMP(statut="f", typ="grma", max="**"),
-        MAILLE=SIMP(statut="f", typ="ma", max="**"),
-        **_ends(),
-        OBSTACLE=SIMP(statut="o", typ="table_fonction"),
-        ORIG_OBST=SIMP(statut="f", typ="R", min=3, max=3),
-        NORM_OBST=SIMP(statut="o", typ="R", min=3, max=3),
-        ANGL_VRIL=SIMP(statut="f", typ="R"),
-        JEU=SIMP(statut="f", typ="R"),
-        DIST_1=SIMP(statut="f", typ="R", val_min=0.0),
-        DIST_2=SIMP(statut="f", typ="R", val_min=0.0),
-        SOUS_STRUC_1=SIMP(statut="f", typ="TXM"),
-        SOUS_STRUC_2=SIMP(statut="f", typ="TXM"),
-        REPERE=SIMP(statut="f", typ="TXM"),
-        RIGI_NOR=SIMP(statut="f", typ="R"),
-        AMOR_NOR=SIMP(statut="f", typ="R"),
-        RIGI_TAN=SIMP(statut="f", typ="R"),
-        AMOR_TAN=SIMP(statut="f", typ="R"),
-        FROTTEMENT=SIMP(statut="f", typ="TXM", into=("NON", "COULOMB", "COULOMB_STAT_DYNA")),
-        b_coulomb=BLOC(
-            condition=equal_to("FROTTEMENT", "COULOMB"), COULOMB=SIMP(statut="o", typ="R")
-        ),
-        b_coulomb_stat_dyna=BLOC(
-            condition=equal_to("FROTTEMENT", "COULOMB_STAT_DYNA"),
-            COULOMB_STAT=SIMP(statut="o", typ="R"),
-            COULOMB_DYNA=SIMP(statut="o", typ="R"),
-        ),
+    """CHOC: one shock (node against obstacle, or node against node), with the
+    fluid film keywords code_aster 17 dropped."""
+    return _family(
+        "DIS_CHOC",
         LAME_FLUIDE=SIMP(statut="f", typ="TXM", into=("OUI", "NON")),
         b_lame=BLOC(
             condition=equal_to("LAME_FLUIDE", "OUI"),
@@ -217,103 +172,17 @@ def choc_legacy() -> FACT:
 
 
 def flambage_legacy() -> FACT:
-    """FLAMBAGE: a shock support that buckles (scalar or function description)."""
-    return FACT(
-        statut="f",
-        max="**",
-        regles=(UN_PARMI("NOEUD_1", "GROUP_NO_1"), EXCLUS("NOEUD_2", "GROUP_NO_2")),
-        INTITULE=SIMP(statut="f", typ="TXM"),
-        **_ends(),
-        OBSTACLE=SIMP(statut="o", typ="table_fonction"),
-        ORIG_OBST=SIMP(statut="f", typ="R", max="**"),
-        NORM_OBST=SIMP(statut="o", typ="R", max="**"),
-        ANGL_VRIL=SIMP(statut="f", typ="R"),
-        JEU=SIMP(statut="f", typ="R"),
-        DIST_1=SIMP(statut="f", typ="R"),
-        DIST_2=SIMP(statut="f", typ="R"),
-        REPERE=SIMP(statut="f", typ="TXM"),
+    """FLAMBAGE: a shock support that buckles, with the scalar law of code_aster
+    10-14 (FNOR_CRIT...) or today's functions of the crushing."""
+    return _family(
+        "FLAMBAGE",
+        drop=("FX", "RIGI_NOR", "AMOR_NOR"),
         RIGI_NOR=SIMP(statut="f", typ=("R", "fonction_sdaster")),
         FNOR_CRIT=SIMP(statut="f", typ="R"),
         FNOR_POST_FL=SIMP(statut="f", typ="R"),
         RIGI_NOR_POST_FL=SIMP(statut="f", typ="R"),
         FX=SIMP(statut="f", typ="fonction_sdaster"),
         AMOR_NOR=SIMP(statut="f", typ="fonction_sdaster"),
-        CRIT_AMOR=SIMP(statut="f", typ="TXM", into=("INCLUS", "EXCLUS")),
-    )
-
-
-def anti_sism_legacy() -> FACT:
-    return FACT(
-        statut="f",
-        max="**",
-        regles=(UN_PARMI("NOEUD_1", "GROUP_NO_1"), UN_PARMI("NOEUD_2", "GROUP_NO_2")),
-        **_ends(),
-        RIGI_K1=SIMP(statut="f", typ="R"),
-        RIGI_K2=SIMP(statut="f", typ="R"),
-        SEUIL_FX=SIMP(statut="f", typ="R"),
-        C=SIMP(statut="f", typ="R"),
-        PUIS_ALPHA=SIMP(statut="f", typ="R"),
-        DX_MAX=SIMP(statut="f", typ="R"),
-    )
-
-
-def dis_visc_legacy() -> FACT:
-    return FACT(
-        statut="f",
-        max="**",
-        regles=(
-            UN_PARMI("NOEUD_1", "GROUP_NO_1"),
-            UN_PARMI("NOEUD_2", "GROUP_NO_2"),
-            UN_PARMI("K1", "UNSUR_K1"),
-            UN_PARMI("K2", "UNSUR_K2"),
-            UN_PARMI("K3", "UNSUR_K3"),
-        ),
-        **_ends(),
-        K1=SIMP(statut="f", typ="R"),
-        K2=SIMP(statut="f", typ="R"),
-        K3=SIMP(statut="f", typ="R"),
-        UNSUR_K1=SIMP(statut="f", typ="R"),
-        UNSUR_K2=SIMP(statut="f", typ="R"),
-        UNSUR_K3=SIMP(statut="f", typ="R"),
-        C=SIMP(statut="o", typ="R"),
-        PUIS_ALPHA=SIMP(statut="f", typ="R"),
-        ITER_INTE_MAXI=SIMP(statut="f", typ="I"),
-        RESI_INTE_RELA=SIMP(statut="f", typ="R"),
-    )
-
-
-def rotor_fiss_legacy() -> FACT:
-    return FACT(
-        statut="f",
-        max="**",
-        regles=(
-            UN_PARMI("NOEUD_D", "GROUP_NO_D"),
-            EXCLUS("NOEUD_G", "GROUP_NO_G"),
-            PRESENT_PRESENT("NOEUD_D", "NOEUD_G"),
-            PRESENT_PRESENT("GROUP_NO_D", "GROUP_NO_G"),
-        ),
-        ANGL_INIT=SIMP(statut="f", typ="R"),
-        ANGL_ROTA=SIMP(statut="f", typ=("fonction_sdaster", "formule")),
-        NOEUD_G=SIMP(statut="f", typ="no"),
-        NOEUD_D=SIMP(statut="f", typ="no"),
-        GROUP_NO_G=SIMP(statut="f", typ="grno"),
-        GROUP_NO_D=SIMP(statut="f", typ="grno"),
-        K_PHI=SIMP(statut="o", typ=("fonction_sdaster", "formule")),
-        DK_DPHI=SIMP(statut="o", typ=("fonction_sdaster", "formule")),
-    )
-
-
-def rela_effo_legacy() -> FACT:
-    """RELA_EFFO_DEPL / RELA_EFFO_VITE: a force function of one node's component."""
-    return FACT(
-        statut="f",
-        max="**",
-        regles=(UN_PARMI("NOEUD", "GROUP_NO"),),
-        NOEUD=SIMP(statut="f", typ="no"),
-        GROUP_NO=SIMP(statut="f", typ="grno"),
-        SOUS_STRUC=SIMP(statut="f", typ="TXM"),
-        NOM_CMP=SIMP(statut="f", typ="TXM"),
-        RELATION=SIMP(statut="o", typ=FUNCTION),
     )
 
 
@@ -321,69 +190,30 @@ def nonlinearities_legacy() -> dict:
     """The factor keywords of localized nonlinearities before COMPORTEMENT."""
     return dict(
         CHOC=choc_legacy(),
-        VERI_CHOC=FACT(
-            statut="f",
-            STOP_CRITERE=SIMP(statut="f", typ="TXM", into=("OUI", "NON")),
-            SEUIL=SIMP(statut="f", typ="R"),
-        ),
+        VERI_CHOC=_modern("b_excit_tran_mod")["VERI_CHOC"],
         FLAMBAGE=flambage_legacy(),
-        ANTI_SISM=anti_sism_legacy(),
-        DIS_VISC=dis_visc_legacy(),
-        ROTOR_FISS=rotor_fiss_legacy(),
-        RELA_EFFO_DEPL=rela_effo_legacy(),
-        RELA_EFFO_VITE=rela_effo_legacy(),
+        ANTI_SISM=_family("ANTI_SISM"),
+        DIS_VISC=_family("DIS_VISC", renames={"RESI_INTE": "RESI_INTE_RELA"}),
+        ROTOR_FISS=_family("ROTOR_FISS"),
+        RELA_EFFO_DEPL=_family("RELA_EFFO_DEPL", renames={"FONCTION": "RELATION"}),
+        RELA_EFFO_VITE=_family("RELA_EFFO_VITE", renames={"FONCTION": "RELATION"}),
     )
 
 
 def gene_transient_legacy() -> dict:
     """Keywords common to DYNA_TRAN_MODAL and the legacy DYNA_VIBRA (GENE, TRAN)."""
     return dict(
-        MATR_AMOR=SIMP(statut="f", typ="matr_asse_gene_r"),
-        VITESSE_VARIABLE=SIMP(statut="f", typ="TXM", into=("OUI", "NON")),
-        b_variable=BLOC(
-            condition=equal_to("VITESSE_VARIABLE", "OUI"),
-            MATR_GYRO=SIMP(statut="o", typ="matr_asse_gene_r"),
-            VITE_ROTA=SIMP(statut="o", typ=("fonction_sdaster", "formule")),
-            MATR_RIGY=SIMP(statut="f", typ="matr_asse_gene_r"),
-            ACCE_ROTA=SIMP(statut="f", typ=("fonction_sdaster", "formule")),
-        ),
-        b_constante=BLOC(
-            condition=~equal_to("VITESSE_VARIABLE", "OUI"),
-            VITE_ROTA=SIMP(statut="f", typ="R"),
-        ),
-        AMOR_MODAL=FACT(
-            statut="f",
-            max=1,
-            regles=(EXCLUS("AMOR_REDUIT", "LIST_AMOR"),),
-            AMOR_REDUIT=SIMP(statut="f", typ="R", max="**"),
-            LIST_AMOR=SIMP(statut="f", typ="listr8_sdaster"),
-        ),
+        # matrices, modal damping, rotation speed: as today
+        **{k: v for k, v in _modern("b_matr_tran_gene").items() if k not in MATRICES},
         SCHEMA_TEMPS=schema_temps_legacy(),
         ETAT_INIT=etat_init_legacy(),
         INCREMENT=increment_legacy(),
         ARCHIVAGE=archivage_legacy(),
         EXCIT=excit_legacy(),
-        MODE_STAT=SIMP(statut="f", typ="mode_meca"),
-        MODE_CORR=SIMP(statut="f", typ=("mult_elas", "mode_meca")),
-        EXCIT_RESU=FACT(
-            statut="f",
-            max="**",
-            RESULTAT=SIMP(statut="o", typ="tran_gene"),
-            COEF_MULT=SIMP(statut="f", typ="R"),
-        ),
+        **{k: _modern("b_excit_tran_mod")[k] for k in ("MODE_STAT", "MODE_CORR", "EXCIT_RESU")},
         **nonlinearities_legacy(),
-        IMPRESSION=FACT(
-            statut="f",
-            regles=(EXCLUS("TOUT", "NIVEAU"),),
-            TOUT=SIMP(statut="f", typ="TXM", into=("OUI",)),
-            NIVEAU=SIMP(
-                statut="f", typ="TXM", into=("DEPL_LOC", "VITE_LOC", "FORC_LOC", "TAUX_CHOC")
-            ),
-            INST_INIT=SIMP(statut="f", typ="R"),
-            INST_FIN=SIMP(statut="f", typ="R"),
-            UNITE_DIS_VISC=SIMP(statut="f", typ="I"),
-        ),
-        SOLVEUR=solveur("LDLT", ("MULT_FRONT", "LDLT", "MUMPS")),
+        IMPRESSION=_modern("b_impression")["IMPRESSION"],
+        SOLVEUR=_modern("b_sol_tran_gene")["SOLVEUR"],
         INFO=SIMP(statut="f", typ="I", into=(1, 2)),
         TITRE=SIMP(statut="f", typ="TXM", max="**"),
     )

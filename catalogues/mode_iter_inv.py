@@ -5,9 +5,10 @@ Legacy command, replaced by CALC_MODES (OPTION 'SEPARE', 'AJUSTE' or
 the call (see ``asterlite.legacy.modes``).
 """
 
-from asterlite.catalogues.common import C_SOLVEUR, OUI_NON
+from asterlite.catalogues.common import C_SOLVEUR
+from asterlite.catalogues.mode_iter_simult import MATRIX_RULES, matrices, veri_mode
 
-from asterlite.catalog import BLOC, FACT, OPER, SIMP, UN_PARMI, equal_to
+from asterlite.catalog import BLOC, FACT, OPER, SIMP, equal_to
 from asterlite.legacy import forms
 
 MATRIX_TYPES = ("matr_asse_depl_r", "matr_asse_gene_r", "matr_asse_pres_r")
@@ -38,13 +39,8 @@ MODE_ITER_INV = OPER(
     reentrant="n",
     compat_syntax=forms.MODE_ITER_INV,
     fr="Eigenmodes by inverse iterations (legacy: CALC_MODES)",
-    regles=(UN_PARMI("MATR_RIGI", "MATR_A"), UN_PARMI("MATR_MASS", "MATR_B")),
-    MATR_RIGI=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_MASS=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_AMOR=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_A=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_B=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_C=SIMP(statut="f", typ=MATRIX_TYPES),
+    regles=MATRIX_RULES,
+    **matrices(MATRIX_TYPES),
     TYPE_RESU=SIMP(statut="f", typ="TXM", into=("DYNAMIQUE", "MODE_FLAMB")),
     b_dynam=BLOC(condition=~equal_to("TYPE_RESU", "MODE_FLAMB"), CALC_FREQ=_window("FREQ")),
     b_flamb=BLOC(condition=equal_to("TYPE_RESU", "MODE_FLAMB"), CALC_FREQ=_window("CHAR_CRIT")),
@@ -54,13 +50,7 @@ MODE_ITER_INV = OPER(
         PREC=SIMP(statut="f", typ="R", val_min=0.0),
         NMAX_ITER=SIMP(statut="f", typ="I", val_min=0),
     ),
-    VERI_MODE=FACT(
-        statut="f",
-        STOP_ERREUR=SIMP(statut="f", typ="TXM", into=OUI_NON),
-        SEUIL=SIMP(statut="f", typ="R"),
-        PREC_SHIFT=SIMP(statut="f", typ="R"),
-        STURM=SIMP(statut="f", typ="TXM", into=OUI_NON),
-    ),
+    VERI_MODE=veri_mode(),
     SOLVEUR=C_SOLVEUR("MODE_ITER_INV", statut="f"),
     SENSIBILITE=SIMP(statut="f", typ="TXM", max="**"),
     INFO=SIMP(statut="f", typ="I", into=(1, 2)),

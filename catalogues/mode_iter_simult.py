@@ -41,19 +41,34 @@ def _window(value_name: str, nmax_name: str, seuil_name: str) -> FACT:
     )
 
 
+def matrices(types: tuple) -> dict:
+    """The matrices of MODE_ITER_SIMULT and MODE_ITER_INV, under both their names
+    (MATR_A/MATR_B/MATR_C before code_aster 11)."""
+    names = ("MATR_RIGI", "MATR_MASS", "MATR_AMOR", "MATR_A", "MATR_B", "MATR_C")
+    return {name: SIMP(statut="f", typ=types) for name in names}
+
+
+MATRIX_RULES = (UN_PARMI("MATR_RIGI", "MATR_A"), UN_PARMI("MATR_MASS", "MATR_B"))
+
+
+def veri_mode() -> FACT:
+    return FACT(
+        statut="f",
+        STOP_ERREUR=SIMP(statut="f", typ="TXM", into=OUI_NON),
+        PREC_SHIFT=SIMP(statut="f", typ="R"),
+        SEUIL=SIMP(statut="f", typ="R"),
+        STURM=SIMP(statut="f", typ="TXM", into=OUI_NON),
+    )
+
+
 MODE_ITER_SIMULT = OPER(
     nom="MODE_ITER_SIMULT",
     sd_prod=lambda kw: None,
     reentrant="n",
     compat_syntax=forms.MODE_ITER_SIMULT,
     fr="Eigenmodes by simultaneous iterations (legacy: CALC_MODES)",
-    regles=(UN_PARMI("MATR_RIGI", "MATR_A"), UN_PARMI("MATR_MASS", "MATR_B")),
-    MATR_RIGI=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_MASS=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_AMOR=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_A=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_B=SIMP(statut="f", typ=MATRIX_TYPES),
-    MATR_C=SIMP(statut="f", typ=MATRIX_TYPES),
+    regles=MATRIX_RULES,
+    **matrices(MATRIX_TYPES),
     METHODE=SIMP(statut="f", typ="TXM", into=("TRI_DIAG", "JACOBI", "SORENSEN", "QZ")),
     PREC_ORTHO=SIMP(statut="f", typ="R"),
     NMAX_ITER_ORTHO=SIMP(statut="f", typ="I"),
@@ -79,13 +94,7 @@ MODE_ITER_SIMULT = OPER(
         condition=~equal_to("TYPE_RESU", ("MODE_FLAMB", "GENERAL")),
         CALC_FREQ=_window("FREQ", "NMAX_FREQ", "SEUIL_FREQ"),
     ),
-    VERI_MODE=FACT(
-        statut="f",
-        STOP_ERREUR=SIMP(statut="f", typ="TXM", into=OUI_NON),
-        PREC_SHIFT=SIMP(statut="f", typ="R"),
-        SEUIL=SIMP(statut="f", typ="R"),
-        STURM=SIMP(statut="f", typ="TXM", into=OUI_NON),
-    ),
+    VERI_MODE=veri_mode(),
     SOLVEUR=C_SOLVEUR("MODE_ITER_SIMULT", statut="f"),
     SENSIBILITE=SIMP(statut="f", typ="TXM", max="**"),
     STOP_FREQ_VIDE=SIMP(statut="f", typ="TXM", into=OUI_NON),

@@ -94,10 +94,10 @@ def test_euler_bounce_on_a_stop():
 
 def test_catalogue_lists_euler_for_gene_only():
     from asterlite.catalog import load_catalogue
-    from asterlite.legacy.runtime import gene_schemes
 
     modern = load_catalogue("DYNA_VIBRA")
-    assert "EULER" in gene_schemes(modern)
+    gene = modern.entries["b_schema_gene"].entries["SCHEMA_TEMPS"].entries["SCHEMA"].into
+    assert "EULER" in gene
     phys = modern.entries["b_schema_phys"].entries["SCHEMA_TEMPS"].entries["SCHEMA"].into
     assert "EULER" not in phys
 
@@ -198,14 +198,16 @@ def test_euler_legacy_deck_runs_and_matches_its_ported_twin(tmp_path):
 
     legacy_export = DECKS / "euler_v10.export"
     ported_export = ported_copy(legacy_export, tmp_path)
-    assert 'SCHEMA_TEMPS=_F(SCHEMA="EULER")' in ported_export.with_suffix(".comm").read_text()
+    # code_aster 17 has no EULER: the legacy layer writes the generalized DIFF_CENTRE,
+    # the same explicit update
+    assert 'SCHEMA_TEMPS=_F(SCHEMA="DIFF_CENTRE")' in ported_export.with_suffix(".comm").read_text()
     reports = {}
     for name, export in (("legacy", legacy_export), ("ported", ported_export)):
         assert run_deck(export, check_only=True).status == "CHECKED"
         reports[name] = run_deck(export, tmp_path / name)
         assert reports[name].status == "PASS", reports[name].message
         (transient,) = reports[name].transients
-        assert transient["scheme"] == "EULER" and transient["steps"] == 100
+        assert transient["scheme"] == "DIFF_CENTRE" and transient["steps"] == 100
     assert any("legacy default EULER" in line for line in deprecations(tmp_path / "legacy"))
     assert not deprecations(tmp_path / "ported")
 

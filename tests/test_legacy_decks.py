@@ -13,7 +13,9 @@ from asterlite.runtime.runner import run_deck
 
 DECKS = Path(__file__).parent / "legacy_decks"
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "aster-corpus"
-PASSING = ["sdnd100a_v10", "sdnd101a_v13"]  # must pass today
+PASSING = [  # must pass, every check at code_aster's own tolerance
+    "sdld34b_v13", "sdnd100a_v10", "sdnd101a_v13", "sdnd102a_v10", "sdnd105a_v10", "sdnd125c_v11",
+]  # fmt: skip
 ALL = sorted(p.stem for p in DECKS.glob("*.export") if not p.stem.startswith("_"))
 
 pytestmark = pytest.mark.skipif(not CORPUS.is_dir(), reason="aster-corpus is absent")

@@ -62,6 +62,28 @@ def text_of(value) -> str:
     return repr(value)
 
 
+def literal_text(value) -> str:
+    """Deck text of a plain value (strings in double quotes, as code_aster 17 decks)."""
+    if isinstance(value, str):
+        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, (list, tuple)):
+        items = [literal_text(v) for v in value]
+        if isinstance(value, list):
+            return "[" + ", ".join(items) + "]"
+        return "(" + ", ".join(items) + ("," if len(items) == 1 else "") + ")"
+    return repr(value)
+
+
+def with_comments_of(value, original):
+    """``value`` carrying the deck comments of ``original`` when it is a Src
+    (``asterlite port`` keeps a keyword's comments when its value changes)."""
+    if isinstance(original, Src) and (original.comment or original.lead):
+        return Src(literal_text(value), value, original.location, original.comment, original.lead)
+    return value
+
+
 def arith(op: str, left, right):
     """``left op right`` on leaves: a number when both are known numbers,
     else a Src expression (porting a deck whose values are variables)."""
@@ -107,6 +129,8 @@ class Env:
     keyword_locations: dict = field(default_factory=dict)
     # logical unit -> input file path (None when unknown: porting a lone deck)
     unit_path: Callable[[int], Path | None] | None = None
+    # mesh node name -> a node group holding exactly that node (None: none known)
+    node_group: Callable[[str], str | None] | None = None
     notes: list[Note] = field(default_factory=list)
 
     def where(self, level=None, keyword: str | None = None) -> Location | None:
@@ -121,6 +145,12 @@ class Env:
 
     def note(self, old: str, new: str, level=None, keyword: str | None = None) -> None:
         self.notes.append(Note(old, new, self.where(level, keyword)))
+
+    def group_of(self, node) -> str | None:
+        """The node group standing for the mesh node ``node`` (a literal name)."""
+        if self.node_group is None or not isinstance(node, str):
+            return None
+        return self.node_group(node)
 
     def unsupported(self, message: str, level=None, keyword: str | None = None):
         raise UnsupportedError(

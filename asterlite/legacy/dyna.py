@@ -10,7 +10,14 @@ which later became ``COMPORTEMENT=_F(RELATION=...)``.
 Defaults that changed are written out, so a ported deck computes what the
 legacy one did: the legacy default scheme (``EULER`` in code_aster 10,
 ``NEWMARK`` afterwards, ``RUNGE_KUTTA_32`` today) and the Runge-Kutta
-``TOLERANCE`` (1e-3 then, 1e-5 today).
+``TOLERANCE`` (1e-3 then, 1e-5 today). ``EULER`` itself became the
+generalized ``DIFF_CENTRE`` (code_aster 14 runs that scheme with the
+explicit update code_aster 10 called EULER).
+
+Nodes named by the mesh (``NOEUD_1``, ``NOEUD``...) become the node group
+holding just that node when the run's meshes have one
+(:mod:`asterlite.legacy.nodes`); an ``EXCIT`` support must, since code_aster
+17 takes only groups there.
 """
 
 from __future__ import annotations
@@ -27,6 +34,7 @@ from asterlite.legacy.base import (
     occurrences,
     pop_keys,
     single,
+    with_comments_of,
 )
 
 TARGET = "DYNA_VIBRA"
@@ -36,8 +44,12 @@ HEADER = {"TYPE_CALCUL": "TRAN", "BASE_CALCUL": "GENE"}
 TOP_RENAMES = {"MASS_GENE": "MATR_MASS", "RIGI_GENE": "MATR_RIGI", "AMOR_GENE": "MATR_AMOR"}
 # legacy top-level keywords gathered into one modern factor keyword
 DAMPING_KEYS = ("AMOR_REDUIT", "LIST_AMOR")
-# legacy METHODE / SCHEMA value -> modern SCHEMA value
-SCHEME_VALUES = {"ADAPT": "ADAPT_ORDRE2"}
+# legacy METHODE / SCHEMA value -> modern SCHEMA value, and why they are the same
+SCHEME_VALUES = {"ADAPT": "ADAPT_ORDRE2", "EULER": "DIFF_CENTRE"}
+SCHEME_WHY = {
+    "ADAPT": "the adaptive second-order scheme",
+    "EULER": "the same explicit update",
+}
 # one factor keyword per nonlinearity -> COMPORTEMENT (RELATION, renamed keywords)
 NONLINEAR_FAMILIES = {
     "CHOC": ("DIS_CHOC", {}),
@@ -70,6 +82,13 @@ UNSUPPORTED = {
     "PALIER_EDYOS": "EDYOS bearings",
 }
 LEGACY_VIBRA_FAMILIES = tuple(NONLINEAR_FAMILIES)
+# mesh node keywords of each family -> the group keywords that replaced them
+NODE_KEYWORDS = {
+    "ROTOR_FISS": {"NOEUD_G": "GROUP_NO_G", "NOEUD_D": "GROUP_NO_D"},
+    "RELA_EFFO_DEPL": {"NOEUD": "GROUP_NO"},
+    "RELA_EFFO_VITE": {"NOEUD": "GROUP_NO"},
+}
+ENDS = {"NOEUD_1": "GROUP_NO_1", "NOEUD_2": "GROUP_NO_2"}
 
 
 # ------------------------------------------------------------------ entry points
@@ -91,19 +110,12 @@ def is_legacy_dyna_vibra(kwargs: dict, env: Env) -> bool:
     increment = _only(kwargs.get("INCREMENT"))
     if increment and any(k in increment for k in MOVED_TO_SCHEME):
         return True
-    return _legacy_only_scheme(kwargs)
-
-
-def _legacy_only_scheme(kwargs: dict) -> bool:
-    """SCHEMA='EULER' while the modern catalogue does not list it: the legacy
-    path reports it as an unsupported scheme rather than as a misspelling."""
-    occurrence = _only(kwargs.get("SCHEMA_TEMPS"))
-    if not occurrence or lit(occurrence.get("SCHEMA")) != "EULER":
-        return False
-    from asterlite.catalog import load_catalogue
-    from asterlite.legacy.runtime import gene_schemes
-
-    return "EULER" not in gene_schemes(load_catalogue("DYNA_VIBRA"))
+    scheme = _only(kwargs.get("SCHEMA_TEMPS"))
+    if scheme and lit(scheme.get("SCHEMA")) in SCHEME_VALUES:  # EULER (code_aster 13-14)
+        return True
+    return any(
+        "NOEUD" in occurrence for occurrence in _all(kwargs.get("EXCIT"))
+    )  # a support named by a mesh node
 
 
 def translate_dyna_vibra(kwargs: dict, env: Env) -> Translation:
@@ -120,6 +132,13 @@ def _only(value):
         return single(value)
     except NotPortable:  # a Src under port: not inline, so nothing to detect in it
         return None
+
+
+def _all(value) -> list:
+    try:
+        return occurrences(value)
+    except NotPortable:
+        return []
 
 
 def _gene_transient(kw: dict, env: Env, command: str, default_scheme: str) -> dict:
@@ -147,6 +166,8 @@ def _gene_transient(kw: dict, env: Env, command: str, default_scheme: str) -> di
             out[key] = _drop_in(value, ARCHIVE_DROPPED, env, f"{command}/ARCHIVAGE", _archive_check)
         elif key == "ETAT_INIT":
             out[key] = _initial_state(value, env, command)
+        elif key == "EXCIT":
+            out[key] = _excitations(value, env, command)
         elif key == "TITRE" and isinstance(lit(value), (list, tuple)):
             out[key] = " ".join(str(v) for v in lit(value))
         else:
@@ -168,7 +189,10 @@ def _scheme(kw: dict, env: Env, command: str, default: str) -> dict:
         level = factor({"SCHEMA": new})
         shown = value if value is not NOT_LITERAL else getattr(given, "text", given)
         env.note(
-            f"{command}/METHODE={shown!r}", f"SCHEMA_TEMPS=_F(SCHEMA={new!r})", None, "METHODE"
+            f"{command}/METHODE={shown!r}",
+            f"SCHEMA_TEMPS=_F(SCHEMA={lit(new)!r}){_why(value)}",
+            None,
+            "METHODE",
         )
     elif "SCHEMA_TEMPS" in kw:
         occurrence = single(kw["SCHEMA_TEMPS"]) or {}
@@ -183,12 +207,18 @@ def _scheme(kw: dict, env: Env, command: str, default: str) -> dict:
             )
         elif value in SCHEME_VALUES:
             level["SCHEMA"] = SCHEME_VALUES[value]
-            env.note(f"SCHEMA={value!r}", f"SCHEMA={SCHEME_VALUES[value]!r}", occurrence, "SCHEMA")
+            env.note(
+                f"{command}/SCHEMA_TEMPS/SCHEMA={value!r}",
+                f"SCHEMA={SCHEME_VALUES[value]!r}{_why(value)}",
+                occurrence,
+                "SCHEMA",
+            )
     else:
-        level = factor({"SCHEMA": default})
+        new = SCHEME_VALUES.get(default, default)
+        level = factor({"SCHEMA": new})
         env.note(
             f"{command} without a scheme (legacy default {default})",
-            f"SCHEMA_TEMPS=_F(SCHEMA={default!r}) (the default is now RUNGE_KUTTA_32)",
+            f"SCHEMA_TEMPS=_F(SCHEMA={new!r}){_why(default)} (the default is now RUNGE_KUTTA_32)",
         )
     if lit(level.get("SCHEMA")) in RUNGE_KUTTA and "TOLERANCE" not in level:
         level["TOLERANCE"] = LEGACY_RK_TOLERANCE
@@ -201,6 +231,10 @@ def _scheme(kw: dict, env: Env, command: str, default: str) -> dict:
             level.pop(name)
             env.note(f"SCHEMA_TEMPS/{name}", "(removed: not an ITMI parameter any more)")
     return level
+
+
+def _why(value) -> str:
+    return f" ({SCHEME_WHY[value]})" if value in SCHEME_WHY else ""
 
 
 def _increment(value, scheme: dict, env: Env, command: str):
@@ -280,6 +314,7 @@ def _behaviour(occurrence: dict, relation: str, renames: dict, env: Env, family:
     for old, new in renames.items():
         if old in occurrence:
             env.note(f"{family}/{old}", f"COMPORTEMENT/{new}", occurrence, old)
+    level = node_groups(level, NODE_KEYWORDS.get(family, ENDS), env, family)
     if family == "CHOC":
         _drop_fluid_film(level, env, occurrence)
     if family == "FLAMBAGE" and "FNOR_CRIT" in level:
@@ -335,3 +370,64 @@ def _drop_fluid_film(level: dict, env: Env, occurrence: dict) -> None:
         env.unsupported("CHOC/LAME_FLUIDE='OUI' (fluid film) has no modern equivalent", occurrence)
     for key in pop_keys(level, FLUID_FILM):
         env.note(f"CHOC/{key}", "(removed: the fluid film model is gone)", occurrence, key)
+
+
+# ----------------------------------------------------------------- mesh nodes
+
+
+def node_groups(level: dict, renames: dict, env: Env, path: str, required: bool = False):
+    """``level`` with its mesh node keywords (``renames``: NOEUD_1 -> GROUP_NO_1...)
+    replaced by node groups holding just those nodes, in place, all or none.
+
+    Without such groups the node keywords stay (code_aster 17 still accepts
+    them, hidden, on the nonlinearities) unless ``required``: then the call
+    is reported as unsupported, naming the node."""
+    present = [old for old in renames if old in level]
+    if not present:
+        return level
+    groups: dict = {}
+    for old in present:
+        value = lit(level[old])
+        names = value if isinstance(value, (list, tuple)) else (value,)
+        found = [env.group_of(name) for name in names]
+        if None in found:
+            if not required:
+                return level
+            name = names[found.index(None)]
+            shown = name if name is not NOT_LITERAL else getattr(level[old], "text", "?")
+            env.unsupported(
+                f"{path}/{old}={shown!r}: code_aster 17 takes node groups here and the "
+                "run's meshes have no group holding just that node (add one with "
+                f"DEFI_GROUP(CREA_GROUP_NO=_F(NOM=..., NOEUD={shown!r})) and use GROUP_NO)",
+                level,
+                old,
+            )
+        groups[old] = tuple(found) if isinstance(value, (list, tuple)) else found[0]
+    new = factor({}, level)
+    new.keyword_locations = {}
+    locations = getattr(level, "keyword_locations", {}) or {}
+    for key, value in level.items():
+        name = renames[key] if key in groups else key
+        new[name] = with_comments_of(groups[key], value) if key in groups else value
+        if key in locations:
+            new.keyword_locations[name] = locations[key]
+    for old in present:
+        env.note(
+            f"{path}/{old}={lit(level[old])!r} (mesh node)",
+            f"{renames[old]}={groups[old]!r} (the mesh's group of that node)",
+            level,
+            old,
+        )
+    return new
+
+
+def _excitations(value, env: Env, command: str):
+    """EXCIT occurrences, supports named by mesh nodes given as node groups."""
+    found = occurrences(value)
+    if not any("NOEUD" in occurrence for occurrence in found):
+        return value
+    new = tuple(
+        node_groups(occurrence, {"NOEUD": "GROUP_NO"}, env, f"{command}/EXCIT", required=True)
+        for occurrence in found
+    )
+    return new if isinstance(value, (list, tuple)) else new[0]

@@ -17,7 +17,8 @@ from asterlite.catalog import load_catalogue
 from asterlite.errors import AsterliteError, Location
 from asterlite.lang import parse_deck
 from asterlite.lang.values import FactorDict
-from asterlite.legacy.base import Env, NewCall, Note, NotPortable, Src
+from asterlite.legacy.base import Env, NewCall, Note, NotPortable, Src, literal_text
+from asterlite.legacy.nodes import group_resolver
 
 LINE_LIMIT = 99
 INDENT = "    "
@@ -198,19 +199,6 @@ def _with_comments(value, text: str, gap_start: int, key_start: int, value_end: 
 # ------------------------------------------------------------------ writing
 
 
-def _format_literal(value) -> str:
-    if isinstance(value, str):
-        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    if isinstance(value, float):
-        return repr(value)
-    if isinstance(value, (list, tuple)):
-        items = [_format_literal(v) for v in value]
-        if isinstance(value, list):
-            return "[" + ", ".join(items) + "]"
-        return "(" + ", ".join(items) + ("," if len(items) == 1 else "") + ")"
-    return repr(value)
-
-
 def _format_value(value, indent: str) -> str:
     if isinstance(value, Src):
         return value.text
@@ -225,7 +213,7 @@ def _format_value(value, indent: str) -> str:
         inner = indent + INDENT
         items = [inner + _format_call("_F", v, inner) + ",\n" for v in value]
         return "(\n" + "".join(items) + indent + ")"
-    return _format_literal(value)
+    return literal_text(value)
 
 
 def _comments(value) -> tuple[tuple, str]:
@@ -304,7 +292,9 @@ def _legacy_calls(tree):
     return sorted(found, key=lambda item: item[2].children[0].children[0].start_pos)
 
 
-def port_text(text: str, filename: str = "deck.comm", unit_path=None) -> PortResult:
+def port_text(
+    text: str, filename: str = "deck.comm", unit_path=None, node_group=None
+) -> PortResult:
     """The deck ``text`` with its legacy calls rewritten in current syntax."""
     module = parse_deck(text, filename)
     reader = _Reader(text, filename, module.lines)
@@ -320,6 +310,7 @@ def port_text(text: str, filename: str = "deck.comm", unit_path=None) -> PortRes
                 keywords.location,
                 dict(keywords.keyword_locations),
                 unit_path=unit_path,
+                node_group=node_group,
             )
             translation = catalogue.compat_syntax(keywords, env)
         except (NotPortable, AsterliteError) as reason:
@@ -342,7 +333,7 @@ def port_text(text: str, filename: str = "deck.comm", unit_path=None) -> PortRes
     return result
 
 
-def unit_resolver(deck: Path):
+def input_units(deck: Path) -> dict:
     """Logical unit -> input file, from the deck's .export (beside it) or its folder."""
     from asterlite.runtime.export import describe_bare_deck, read_export
 
@@ -350,13 +341,24 @@ def unit_resolver(deck: Path):
     try:
         run = read_export(export) if export.exists() else describe_bare_deck(deck)
     except AsterliteError:
-        return None
-    return lambda unit: run.units.get(unit)
+        return {}
+    return dict(run.units)
+
+
+def unit_resolver(deck: Path):
+    units = input_units(deck)
+    return units.get if units else None
 
 
 def port_file(deck: Path) -> PortResult:
     text = deck.read_text(encoding="utf-8", errors="replace")
-    return port_text(text, str(deck), unit_path=unit_resolver(deck))
+    units = input_units(deck)
+    return port_text(
+        text,
+        str(deck),
+        unit_path=units.get if units else None,
+        node_group=group_resolver(units.values()),
+    )
 
 
 def describe_changes(result: PortResult) -> list[str]:

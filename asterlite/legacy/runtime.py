@@ -13,7 +13,8 @@ from __future__ import annotations
 from asterlite.catalog import load_catalogue, validate
 from asterlite.errors import UnsupportedError
 from asterlite.lang.values import CallSite, FactorDict
-from asterlite.legacy.base import Env, NewCall, Translation, lit, occurrences
+from asterlite.legacy.base import Env, NewCall, Translation
+from asterlite.legacy.nodes import group_resolver
 
 
 def _unit_path(session):
@@ -34,6 +35,7 @@ def translate_call(catalogue, kwargs: dict, site: CallSite, session, reuse=None)
         site.location,
         dict(site.keyword_locations),
         unit_path=_unit_path(session),
+        node_group=group_resolver(session.run.units.values()),
     )
     detect = getattr(compat, "detect", None)
     if detect is not None and not detect(kwargs, env):
@@ -49,7 +51,6 @@ def translate_call(catalogue, kwargs: dict, site: CallSite, session, reuse=None)
     modern = load_catalogue(translation.command)
     if modern is None:
         raise UnsupportedError(f"command {translation.command} is not supported", site.location)
-    _check_scheme(modern, translation, env)
     kwargs = run_new_calls(translation.kwargs, session, CallSite(location=site.location))
     return translation.command, modern, kwargs
 
@@ -72,28 +73,3 @@ def run_new_calls(value, session, site: CallSite):
     if isinstance(value, (list, tuple)):
         return type(value)(run_new_calls(v, session, site) for v in value)
     return value
-
-
-def _check_scheme(modern, translation: Translation, env: Env) -> None:
-    """A legacy scheme the modern catalogue does not list (EULER) is reported
-    as unsupported, naming the scheme, rather than as a misspelling."""
-    if translation.command != "DYNA_VIBRA":
-        return
-    for occurrence in occurrences(translation.kwargs.get("SCHEMA_TEMPS")):
-        scheme = lit(occurrence.get("SCHEMA"))
-        if isinstance(scheme, str) and scheme not in gene_schemes(modern):
-            raise UnsupportedError(
-                f"DYNA_VIBRA: integration scheme SCHEMA={scheme!r} (from the legacy "
-                f"{env.command} call) is not available in asterlite yet",
-                env.where(occurrence, "SCHEMA"),
-                "DYNA_VIBRA/SCHEMA_TEMPS/SCHEMA",
-            )
-
-
-def gene_schemes(modern) -> tuple:
-    """The SCHEMA choices of the modern DYNA_VIBRA for a generalized transient."""
-    bloc = modern.entries.get("b_schema_gene")
-    try:
-        return tuple(bloc.entries["SCHEMA_TEMPS"].entries["SCHEMA"].into)
-    except (AttributeError, KeyError, TypeError):
-        return ()
