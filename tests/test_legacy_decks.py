@@ -16,6 +16,8 @@ CORPUS = Path(__file__).resolve().parents[2] / "shared" / "aster-corpus"
 PASSING = [  # must pass, every check at code_aster's own tolerance
     "sdld34b_v13", "sdnd100a_v10", "sdnd101a_v13", "sdnd102a_v10", "sdnd105a_v10", "sdnd125c_v11",
 ]  # fmt: skip
+# must pass, all but this many checks at code_aster's own tolerance (as their corpus decks)
+LOOSE = {"sdnd103a_v10": 9}  # as sdnd103a: 5 restituted accelerations, 4 DEVOGE values
 ALL = sorted(p.stem for p in DECKS.glob("*.export") if not p.stem.startswith("_"))
 
 pytestmark = pytest.mark.skipif(not CORPUS.is_dir(), reason="aster-corpus is absent")
@@ -63,6 +65,9 @@ def test_legacy_deck_runs_and_ports(name, tmp_path):
     if name in PASSING:
         assert legacy.status == "PASS", legacy.message
         assert legacy.checks_total and legacy.strict_ok == legacy.checks_total
+    if name in LOOSE:
+        assert legacy.status == "PASS", legacy.message
+        assert legacy.strict_ok == legacy.checks_total - LOOSE[name]
     if legacy.status == "UNSUPPORTED":  # a nonlinearity the engine does not run yet
         assert ported.status == "UNSUPPORTED"
         pytest.skip(f"engine: {legacy.message.splitlines()[0]}")

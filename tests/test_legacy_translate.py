@@ -201,6 +201,26 @@ def test_port_leaves_non_inline_factors():
     assert result.skipped and "left as written" in result.skipped[0]
 
 
+def test_port_reads_names_bound_once_to_a_literal():
+    """sdnd103a: METHODE=METHOD1 with METHOD1 = 'EULER' ported as the run translates it;
+    a name bound twice (or in a function only) stays a variable."""
+    deck = (
+        "METHOD1 = 'EULER'\nMETHOD2 = 'DEVOGE'\nNODE = 'N01'\nTWICE = 'EULER'\nTWICE = 'ADAPT'\n"
+        "def f(X):\n    LOCAL = 'EULER'\n    return X\n"
+        "A = DYNA_TRAN_MODAL(METHODE=METHOD1, MASS_GENE=M, RIGI_GENE=K,\n"
+        "    RELA_EFFO_DEPL=_F(NOEUD=NODE, NOM_CMP='DX', RELATION=F))\n"
+        "B = DYNA_TRAN_MODAL(METHODE=METHOD2, MASS_GENE=M, RIGI_GENE=K)\n"
+        "C = DYNA_TRAN_MODAL(METHODE=TWICE, MASS_GENE=M, RIGI_GENE=K)\n"
+        "D = DYNA_TRAN_MODAL(METHODE=LOCAL, MASS_GENE=M, RIGI_GENE=K)\n"
+    )
+    text = port_text(deck, "deck.comm", node_group={"N01": "G01"}.get).text
+    calls = text.split("DYNA_VIBRA(")[1:]
+    assert 'SCHEMA_TEMPS=_F(SCHEMA="DIFF_CENTRE")' in calls[0] and 'GROUP_NO="G01"' in calls[0]
+    assert 'SCHEMA="DEVOGE"' in calls[1]
+    assert "SCHEMA=TWICE" in calls[2] and "SCHEMA=LOCAL" in calls[3]
+    compile(text, "ported", "exec")
+
+
 def test_flambage_scalar_form_becomes_functions():
     kwargs = {
         "MASS_GENE": 1,
