@@ -30,6 +30,7 @@ TWINS = {  # legacy twin -> corpus deck it translates
     "sdld34b_v13": "sdld34b",
     "sdnd125c_v11": "sdnd125c",
     "sdnd103a_v10": "sdnd103a",
+    "sdld29a_v10": "sdld29a",
 }
 SLOW = {"sdnd100a_v10", "sdnd125c_v11"}  # over ~10 s for the two runs
 RELATIVE = 1.0e-9  # rounding only: the same arithmetic after translation
