@@ -338,8 +338,10 @@ DYNA_VIBRA = OPER(
         ),
     ),
     # ---------------------------------------------------------------- energy
+    # asterlite extension, not in code_aster 17 (PHYS only there): ENERGIE on a
+    # TRAN/GENE transient gives its energy balance (asterlite.dynamics.energy)
     bloc_ener=BLOC(
-        condition=equal_to("BASE_CALCUL", "PHYS"),
+        condition=equal_to("BASE_CALCUL", "PHYS") | TRAN_GENE,
         ENERGIE=FACT(
             statut="f", max=1, CALCUL=SIMP(statut="f", typ="TXM", defaut="OUI", into=("OUI",))
         ),

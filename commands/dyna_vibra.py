@@ -20,8 +20,10 @@ from asterlite.dynamics.model import (
     LinearSystem,
     ShockSpec,
     build_shocks,
+    damped_step_limit,
     modal_damping,
-    stability_period,
+    stability_limit,
+    suggested_step,
     tabulate_excitation,
 )
 from asterlite.errors import NumericalError
@@ -33,7 +35,9 @@ from asterlite.modal.seismic import SeismicError, combined_static_shape
 STEP_FRACTION = {"DEVOGE": 10.0, "NEWMARK": 10.0}  # others: 1/20 of the period
 STEP_NOT_CHECKED = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54")
 STEP_ONLY_WARNED = ("NEWMARK", "ADAPT_ORDRE1", "ADAPT_ORDRE2")
-ROTATING_SCHEMES = ("NEWMARK",)  # VITESSE_VARIABLE='OUI'
+# VITESSE_VARIABLE='OUI': code_aster (dtmcalc/dtmupmat) updates C and K before
+# every step of any GENE scheme; asterlite.dynamics.rotation has a loop for each
+ROTATING_SCHEMES = tuple(SCHEMES)
 
 
 def run(ctx, kw):
@@ -47,9 +51,8 @@ def run(ctx, kw):
             "TYPE_CALCUL",
             kw,
         )
-    for unsupported in ("EXCIT_RESU", "BASE_ELAS_FLUI"):
-        if kw.get(unsupported):
-            ctx.unsupported(f"{unsupported} is not implemented", unsupported, kw)
+    if kw.get("BASE_ELAS_FLUI"):
+        ctx.unsupported("BASE_ELAS_FLUI is not implemented", "BASE_ELAS_FLUI", kw)
     schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
     scheme = schema_kw.get("SCHEMA", "RUNGE_KUTTA_32")
     if scheme not in SCHEMES:
@@ -63,8 +66,7 @@ def run(ctx, kw):
             "VITESSE_VARIABLE",
             kw,
         )
-    if kw.get("TRAITEMENT_NONL", "EXPLICITE") != "EXPLICITE":
-        ctx.unsupported("TRAITEMENT_NONL='IMPLICITE'", "TRAITEMENT_NONL", kw)
+    implicit_shocks(ctx, kw)
 
     mass_matrix = kw["MATR_MASS"]
     basis = mass_matrix.basis
@@ -104,6 +106,13 @@ def run(ctx, kw):
         damping, stiffness = rotation.matrices_at(t0)
         system = LinearSystem(system.mass, stiffness, damping)
         rotation.initial_acceleration = restart_acceleration(kw, t_init_state)
+    energy = bool(kw.factor("ENERGIE"))  # asterlite extension on GENE: the energy balance
+    if energy and rotation is not None:
+        ctx.unsupported(
+            "ENERGIE with VITESSE_VARIABLE='OUI' (the balance of a varying rotation speed)",
+            "ENERGIE",
+            kw,
+        )
     options = SchemeOptions(
         tolerance=schema_kw.get("TOLERANCE", 1.0e-5),
         alpha=schema_kw.get("ALPHA", 0.0),
@@ -134,6 +143,7 @@ def run(ctx, kw):
             options,
             rotation=rotation,
             label=f"DYNA_VIBRA {ctx.result_name or ''} {scheme}".replace("  ", " "),
+            energy=energy,
         )
     except NumericalError as error:
         raise NumericalError(error.message, ctx.location, ctx.command) from None
@@ -168,9 +178,49 @@ def run(ctx, kw):
         rejections=result.step_info[:, INFO_REJECTED],
     )
     reused = getattr(ctx, "reuse", None)
-    if isinstance(reused, TranGene) and t_init_state is not None:
-        return appended(reused, produced)
+    continued = isinstance(reused, TranGene) and t_init_state is not None
+    if result.energy is not None:
+        from asterlite.dynamics import energy as E
+
+        previous = reused.tables.get("PARA_CALC") if continued else None
+        produced.tables["PARA_CALC"] = E.table(result.energy, previous, t0)
+        produced.info.update(E.summary(result.energy))
+    if continued:
+        joined = appended(reused, produced)
+        joined.tables.update(produced.tables)
+        return joined
     return produced
+
+
+def implicit_shocks(ctx, kw) -> None:
+    """TRAITEMENT_NONL='IMPLICITE'. code_aster (dtmprep_noli) switches the
+    implicit treatment on only when DIS_CHOC connections are present;
+    without any the run is the explicit one. With shocks, its engine
+    (dtmcalc, dtmdetect, dtmupmat, dtmeigen, dtmproj, dtmforc_calcnoli)
+    watches every shock's contact state after each step: at a change it
+    linearises the shock forces by finite differences into added K, C and
+    a constant force, re-integrates the step up to the instant the contact
+    state changed, computes the modes of the modified system and goes on
+    in that basis with only the tangential shock forces explicit. That
+    engine is not reproduced here: such decks are refused."""
+    if kw.get("TRAITEMENT_NONL", "EXPLICITE") != "IMPLICITE":
+        return
+    if not any(occ.get("RELATION") == "DIS_CHOC" for occ in kw.factor("COMPORTEMENT")):
+        ctx.log(
+            "TRAITEMENT_NONL='IMPLICITE' without DIS_CHOC: explicit treatment, as code_aster "
+            "(its implicit treatment only concerns DIS_CHOC connections)"
+        )
+        return
+    ctx.unsupported(
+        "TRAITEMENT_NONL='IMPLICITE' with DIS_CHOC connections: code_aster then re-integrates "
+        "each step at which a shock changes contact state up to that instant, adds the "
+        "shock's linearised stiffness and damping to K and C, recomputes the modes of the "
+        "modified system and integrates in that basis with only the friction forces "
+        "explicit (dtmdetect, dtmupmat, dtmeigen, dtmproj); asterlite does not reproduce "
+        "this change of basis; use TRAITEMENT_NONL='EXPLICITE' (the default)",
+        "TRAITEMENT_NONL",
+        kw,
+    )
 
 
 def appended(previous: TranGene, new: TranGene) -> TranGene:
@@ -492,7 +542,12 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     """code_aster's VERI_PAS: the step may not exceed 1/20 (1/10 for DEVOGE
     and NEWMARK) of the shortest period, shock stiffness included; NEWMARK
     and ADAPT_* only warn, RUNGE_KUTTA_* are not checked. PAS_MAXI may not
-    be smaller than PAS."""
+    be smaller than PAS. The refusal names what sets the shortest period
+    (the shock and node, or the mode), its frequency, the critical step and
+    a round step to use. DIFF_CENTRE (and EULER) are also refused above the
+    stability limit of their explicit velocity update once modal damping
+    and AMOR_NOR/AMOR_TAN are counted (heavy damping: about 1/(ξ ω)),
+    which VERI_PAS's undamped period ignores."""
     schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
     dt_max = schema_kw.get("PAS_MAXI")
     if dt_max is not None and dt_max < dt_user:
@@ -503,19 +558,43 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
         )
     if scheme in STEP_NOT_CHECKED:
         return dt_user
-    limit = stability_period(system, shocks) / STEP_FRACTION.get(scheme, 20.0)
+    fraction = STEP_FRACTION.get(scheme, 20.0)
+    shortest = stability_limit(system, shocks)
+    limit = shortest.period / fraction
     if dt_user <= limit:
+        if scheme in ("DIFF_CENTRE", "EULER"):  # explicit velocity update
+            damped = damped_step_limit(system, shocks)
+            if dt_user > damped.step:
+                why = (
+                    f"its explicit velocity update is unstable above {damped.step:.6g} s, "
+                    f"set by {damped.cause()}"
+                )
+                if veri_pas:
+                    raise NumericalError(
+                        f"PAS={dt_user:.6g} exceeds the stability limit {damped.step:.6g} of "
+                        f"{scheme}: {why}; use PAS <= {damped.step:.6g} (e.g. "
+                        f"PAS={suggested_step(damped.step / 2.0):.6g})"
+                        + (" or NEWMARK (implicit damping)" if damped.shock is None else ""),
+                        ctx.location,
+                        f"{ctx.command}/INCREMENT/PAS",
+                    )
+                ctx.log(f"warning: PAS={dt_user:.6g} with VERI_PAS='NON': {why}")
         return dt_user
+    why = (
+        f"the critical step is {limit:.6g} s, 1/{fraction:g} of the shortest period "
+        f"{shortest.period:.6g} s ({shortest.frequency:.6g} Hz, shock stiffness included), "
+        f"set by {shortest.cause()}"
+    )
     if veri_pas and scheme not in STEP_ONLY_WARNED:
         raise NumericalError(
-            f"PAS={dt_user:.6g} exceeds the stability limit {limit:.6g} of {scheme} "
-            f"(1/{STEP_FRACTION.get(scheme, 20.0):g} of the shortest period "
-            "including shock stiffness): "
-            f"use PAS <= {limit:.6g} or VERI_PAS='NON'",
+            f"PAS={dt_user:.6g} exceeds the stability limit {limit:.6g} of {scheme}: {why}; "
+            f"use PAS <= {limit:.6g} (e.g. PAS={suggested_step(limit):.6g}) or VERI_PAS='NON'",
             ctx.location,
             f"{ctx.command}/INCREMENT/PAS",
         )
-    ctx.log(f"warning: PAS={dt_user:.6g} exceeds the stability estimate {limit:.6g} of {scheme}")
+    ctx.log(
+        f"warning: PAS={dt_user:.6g} exceeds the stability estimate {limit:.6g} of {scheme}: {why}"
+    )
     return dt_user
 
 
@@ -568,6 +647,64 @@ def excitations(ctx, kw, n_modes):
         elif mult is None:
             mult = float(occ.get("COEF_MULT", 1.0))
         loads.append((vector, mult))
+    loads.extend(result_excitations(ctx, kw, n_modes))
+    return loads
+
+
+def result_excitations(ctx, kw, n_modes):
+    """EXCIT_RESU (code_aster's mdrecf): the DEPL field of a tran_gene on
+    the same modal basis, read as a generalized force history times
+    COEF_MULT. Each generalized coordinate j gets a load on itself (as an
+    EXCIT NUME_ORDRE=j) whose multiplier is the function of INST through
+    the result's archived instants and values COEF_MULT DEPL_j, linear
+    interpolation, PROL_GAUCHE/PROL_DROITE='EXCLU'."""
+    from asterlite.concepts.function import Function
+
+    basis = kw["MATR_MASS"].basis
+    loads = []
+    for number, occ in enumerate(kw.factor("EXCIT_RESU"), start=1):
+        result = occ["RESULTAT"]
+        alpha = float(occ.get("COEF_MULT", 1.0))
+        same_basis = result.basis is basis or (
+            result.basis.name is not None and result.basis.name == basis.name
+        )
+        if not same_basis:
+            ctx.error(
+                f"EXCIT_RESU occurrence {number}: the result {result.name or ''} is on the "
+                f"modal basis {result.basis.name or '?'}, the generalized matrices on "
+                f"{basis.name or '?'} (code_aster requires the same basis, ALGORITH17_18)",
+                "RESULTAT",
+                occ,
+            )
+        times = np.asarray(result.times, dtype=float)
+        depl = np.asarray(result.depl, dtype=float)
+        if depl.ndim != 2 or depl.shape[1] != n_modes:
+            ctx.error(
+                f"EXCIT_RESU occurrence {number}: the result holds {depl.shape[-1]} "
+                f"generalized coordinates, the system {n_modes}",
+                "RESULTAT",
+                occ,
+            )
+        if times.size == 0 or np.any(np.diff(times) <= 0.0):
+            ctx.error(
+                f"EXCIT_RESU occurrence {number}: the result's instants must increase "
+                "strictly (they become the abscissas of the force functions)",
+                "RESULTAT",
+                occ,
+            )
+        for j in range(n_modes):
+            vector = np.zeros(n_modes)
+            vector[j] = 1.0
+            history = Function(
+                abscissas=times.copy(),
+                ordinates=alpha * depl[:, j],
+                NOM_PARA="INST",
+                INTERPOL=("LIN", "LIN"),
+                PROL_GAUCHE="EXCLU",
+                PROL_DROITE="EXCLU",
+            )
+            history.name = f"EXCIT_RESU{number}_{j + 1}"
+            loads.append((vector, history))
     return loads
 
 

@@ -66,6 +66,7 @@ def test_fixed_step_history_is_the_step_and_the_shortened_ones():
 
 def test_recu_fonction_ptem_gives_the_step_history():
     from asterlite.commands import recu_fonction
+
     from tests.test_dynamics_vibra import ctx
 
     result = adaptive_oscillator()

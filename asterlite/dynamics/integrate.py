@@ -21,6 +21,7 @@ from asterlite.dynamics import (
     scheme_rk54,
     scheme_trbdf2,
 )
+from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.forces import acceleration, total_force
@@ -80,6 +81,8 @@ class RunResult:
     # instant and the steps rejected so far (code_aster's PTEM and more)
     step_info: np.ndarray = field(default_factory=lambda: np.zeros((0, K.N_INFO)))
     info: dict = field(default_factory=dict)
+    # (n_archived, energy.N_COLUMNS): the energy balance (ENERGIE), or None
+    energy: np.ndarray | None = None
 
 
 def integrate(
@@ -98,11 +101,14 @@ def integrate(
     specialised: bool = True,
     rotation=None,
     label: str | None = None,
+    energy: bool = False,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
     ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
     results as its specialised ``run_loop``; kept for comparison).
-    ``label`` names the run on the progress bar."""
+    ``label`` names the run on the progress bar. ``energy``: accumulate the
+    energy balance in the loop (:mod:`asterlite.dynamics.energy`), returned
+    as ``RunResult.energy``."""
     options = options or SchemeOptions()
     n = system.n_modes
     module = SCHEMES[scheme]
@@ -139,6 +145,7 @@ def integrate(
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
     budget = StepBudget(t0, t_end, dt, adaptive, options)
     row_bytes = 8 * (2 + 3 * n + shocks.count * shocks.vint_width + K.N_INFO)
+    row_bytes += 8 * E.N_COLUMNS if energy else 0
     budget.check_archive(capacity, row_bytes, pas_arch, clock, counters)
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
@@ -148,18 +155,25 @@ def integrate(
         run_loop = getattr(module, "general_loop", module.run_loop)
     if rotating_loop is not None:
         run_loop = rotating_loop
+    if energy and rotating_loop is not None:
+        raise NumericalError("the energy balance (ENERGIE) with VITESSE_VARIABLE='OUI'")
+    balance = E.new_energy(system, shocks, capacity, scheme, energy)
+    if energy:
+        E.start(balance, t0, q, v, a, vint, model[1], model[2])
     bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
     started = wallclock.perf_counter()
     try:
         while True:
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
             chunk_started = wallclock.perf_counter()
+            extra = (balance,) if rotating_loop is None else ()  # rotation.py: no ENERGIE
             status = run_loop(
-                clock, counters, state, memory, model, instants, pas_arch, eps, buffers
+                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, *extra
             )
             if status == K.STATUS_FULL:
                 budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
                 buffers = grow(buffers)
+                balance = E.grown(balance, len(buffers[0]))
             elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
                 excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
                 model = (model[0], model[1], excitation.bundle()) + model[3:]
@@ -193,7 +207,8 @@ def integrate(
     if scheme in ("ADAPT_ORDRE1", "ADAPT_ORDRE2"):
         kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
-    return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info)
+    rows = balance[5][:count].copy() if energy else None
+    return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
 
 
 def loop_adapts(scheme: str, dt: float, options: SchemeOptions) -> bool:

@@ -355,31 +355,199 @@ def optimal_tangential_damping(spec: ShockSpec, rot: np.ndarray, system: LinearS
     return max(0.0, 2.0 * math.sqrt(m * (k + spec.k_t)) - 2.0 * xi * math.sqrt(k * m))
 
 
-def stability_period(system: LinearSystem, shocks: ShockSet) -> float:
+@dataclass(frozen=True)
+class StabilityLimit:
+    """What sets the shortest period of code_aster's VERI_PAS estimate.
+
+    ``period`` is the shortest period (s); ``mode`` the 1-based index of
+    the mode it belongs to (0 when no mode has a nonzero frequency); when a
+    shock stiffens that mode, ``shock`` / ``node`` name the connection and
+    the node, ``stiffness`` is the keyword (``RIGI_NOR`` or ``RIGI_TAN``),
+    ``stiffness_value`` its value and ``component`` the global component
+    (DX, DY, DZ) of the mode shape it acts on.
+    """
+
+    period: float
+    mode: int = 0
+    mode_frequency: float = 0.0
+    shock: str | None = None
+    node: str | None = None
+    stiffness: str | None = None
+    stiffness_value: float = 0.0
+    component: str | None = None
+
+    @property
+    def frequency(self) -> float:
+        """Frequency (Hz) of the shortest period (stiffened by the shock, if any)."""
+        return 1.0 / self.period
+
+    def cause(self) -> str:
+        """A sentence naming what sets the period, for messages."""
+        if self.mode == 0:
+            return "no mode with a nonzero frequency"
+        if self.shock is None:
+            return f"mode {self.mode} ({self.mode_frequency:.6g} Hz), no shock stiffens it more"
+        node = f" (node {self.node})" if self.node else ""
+        return (
+            f"shock {self.shock!r}{node}: {self.stiffness}={self.stiffness_value:.6g} N/m "
+            f"on the {self.component} component of mode {self.mode} "
+            f"({self.mode_frequency:.6g} Hz) raises it to {self.frequency:.6g} Hz"
+        )
+
+
+def stability_limit(system: LinearSystem, shocks: ShockSet) -> StabilityLimit:
     """Smallest period among the modes, each stiffened by every shock's normal
     and tangential stiffness on each of its shape components (code_aster's
-    VERI_PAS estimate)."""
+    VERI_PAS estimate), with what sets it (see :class:`StabilityLimit`)."""
     omega = np.sqrt(system.omega2)
     masses = np.diag(system.mass)
     eps = np.finfo(float).eps * 1.0e5
-    periods = [2.0 * math.pi / w for w in omega if abs(w) > eps]
+    best = StabilityLimit(period=1.0e10)
+    for j, w in enumerate(omega):
+        if abs(w) > eps:
+            period = 2.0 * math.pi / w
+            if best.mode == 0 or period < best.period:
+                best = StabilityLimit(period, j + 1, w / (2.0 * math.pi))
     for s in range(shocks.count):
         k_n, k_t = shocks.params[s, C.P_KN], shocks.params[s, C.P_KT]
         nodes = 2 if shocks.flags[s, C.F_TWO_NODES] else 1
+        spec = shocks.specs[s]
         for node in range(nodes):
             phi = shocks.phis[s, node]
             for j in range(system.n_modes):
                 if abs(omega[j]) <= eps or abs(masses[j]) <= eps:
                     continue
-                for k in (k_n, k_t):
+                for keyword, k in (("RIGI_NOR", k_n), ("RIGI_TAN", k_t)):
                     if abs(k) > eps:
                         for c in range(3):
-                            periods.append(
+                            period = (
                                 2.0
                                 * math.pi
                                 / math.sqrt(omega[j] ** 2 + k * phi[c, j] ** 2 / masses[j])
                             )
-    return min(periods) if periods else 1.0e10
+                            if period < best.period:
+                                best = StabilityLimit(
+                                    period,
+                                    j + 1,
+                                    omega[j] / (2.0 * math.pi),
+                                    spec.name,
+                                    spec.node_1 if node == 0 else spec.node_2,
+                                    keyword,
+                                    float(k),
+                                    COMPONENTS[c],
+                                )
+    return best
+
+
+def stability_period(system: LinearSystem, shocks: ShockSet) -> float:
+    """Smallest period among the modes, each stiffened by every shock's normal
+    and tangential stiffness on each of its shape components (code_aster's
+    VERI_PAS estimate); :func:`stability_limit` also says what sets it."""
+    return stability_limit(system, shocks).period
+
+
+@dataclass(frozen=True)
+class DampedLimit:
+    """The largest stable step of code_aster's explicit DIFF_CENTRE
+    (v += dt a, then q += dt v) once damping is counted, and what sets it.
+
+    For one mode of pulsation ω (stiffened as in :func:`stability_limit`)
+    and damping c per unit mass (modal 2 ξ ω, plus AMOR_NOR or AMOR_TAN
+    times the squared shape component over the modal mass), the update is
+    stable while (ω dt)² + 2 c dt <= 4, i.e. dt <= 4 / (c + sqrt(c² + 4 ω²))
+    (2/ω without damping, about 1/(ξ ω) for heavy damping). ``shock`` is
+    None when the mode's own damping sets it; ``damping`` is then
+    ``AMOR_REDUIT``."""
+
+    step: float
+    mode: int = 0
+    ratio: float = 0.0  # equivalent reduced damping c / (2 ω)
+    shock: str | None = None
+    node: str | None = None
+    damping: str | None = None
+    damping_value: float = 0.0
+    component: str | None = None
+
+    def cause(self) -> str:
+        if self.mode == 0:
+            return "no mode with a nonzero frequency"
+        if self.shock is None:
+            return f"the modal damping of mode {self.mode} (reduced damping {self.ratio:.6g})"
+        node = f" (node {self.node})" if self.node else ""
+        return (
+            f"shock {self.shock!r}{node}: {self.damping}={self.damping_value:.6g} N.s/m on "
+            f"the {self.component} component of mode {self.mode} (equivalent reduced "
+            f"damping {self.ratio:.6g})"
+        )
+
+
+def explicit_step(omega2: float, damping: float) -> float:
+    """Largest stable step of v += dt (-ω² q - c v), q += dt v."""
+    return 4.0 / (damping + math.sqrt(damping * damping + 4.0 * omega2))
+
+
+def damped_step_limit(system: LinearSystem, shocks: ShockSet) -> DampedLimit:
+    """The damping-aware stability limit of the explicit DIFF_CENTRE update
+    (see :class:`DampedLimit`): modal damping (diagonal terms) and each
+    shock's AMOR_NOR / AMOR_TAN with its RIGI_NOR / RIGI_TAN on each shape
+    component of each mode. Without damping it is 2/ω = T/π, far above
+    VERI_PAS's T/20: it only binds for heavy damping (an equivalent reduced
+    damping above about 3)."""
+    omega2 = system.omega2
+    masses = np.diag(system.mass)
+    damping = np.diag(system.damping)
+    eps = np.finfo(float).eps * 1.0e5
+    best = DampedLimit(step=math.inf)
+    usable = [
+        j for j in range(system.n_modes) if math.sqrt(omega2[j]) > eps and abs(masses[j]) > eps
+    ]
+    for j in usable:
+        c = damping[j] / masses[j]
+        step = explicit_step(omega2[j], c)
+        if step < best.step:
+            ratio = c / (2.0 * math.sqrt(omega2[j]))
+            best = DampedLimit(step, j + 1, ratio, damping="AMOR_REDUIT")
+    for s in range(shocks.count):
+        p = shocks.params[s]
+        pairs = (("AMOR_NOR", p[C.P_KN], p[C.P_CN]), ("AMOR_TAN", p[C.P_KT], p[C.P_CT]))
+        nodes = 2 if shocks.flags[s, C.F_TWO_NODES] else 1
+        spec = shocks.specs[s]
+        for node in range(nodes):
+            phi = shocks.phis[s, node]
+            for j in usable:
+                for keyword, k, c_shock in pairs:
+                    if abs(c_shock) <= eps:
+                        continue
+                    for c in range(3):
+                        share = phi[c, j] ** 2 / masses[j]
+                        w2 = omega2[j] + abs(k) * share
+                        c_total = damping[j] / masses[j] + c_shock * share
+                        step = explicit_step(w2, c_total)
+                        if step < best.step:
+                            best = DampedLimit(
+                                step,
+                                j + 1,
+                                c_total / (2.0 * math.sqrt(w2)),
+                                spec.name,
+                                spec.node_1 if node == 0 else spec.node_2,
+                                keyword,
+                                float(c_shock),
+                                COMPONENTS[c],
+                            )
+    return best
+
+
+def suggested_step(limit: float) -> float:
+    """A round step at or below ``limit``: the largest 1, 2, 2.5 or 5 × 10^k
+    not above it (``limit`` itself when it is not a positive finite number)."""
+    if not (limit > 0.0 and math.isfinite(limit)):
+        return limit
+    decade = 10.0 ** math.floor(math.log10(limit))
+    for mantissa in (10.0, 5.0, 2.5, 2.0, 1.0):
+        step = mantissa * decade
+        if step <= limit * (1.0 + 1.0e-12):
+            return min(step, limit)
+    return limit
 
 
 SAMPLES_PER_WINDOW = 1 << 16  # samples of a windowed multiplier held at a time

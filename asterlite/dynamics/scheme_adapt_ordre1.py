@@ -9,6 +9,7 @@ import numpy as np
 from numba import njit
 
 from asterlite.dynamics import adapt_control as A
+from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, loads_ready, state_acceleration
 
@@ -73,7 +74,8 @@ def step(t, dt, index, state, memory, model):
 
 
 @njit(cache=True)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
@@ -87,5 +89,8 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt)
         result = (dt_used, dt_next, rejected)
+        archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
+        if balance:
+            E.hook(energy, archived, counters, clock, dt_used, state, model)
     return K.STATUS_DONE

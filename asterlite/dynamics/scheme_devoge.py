@@ -21,6 +21,7 @@ import math
 import numpy as np
 from numba import njit
 
+from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, loads_ready, matvec, total_force
 from asterlite.dynamics.kernel import (
@@ -333,7 +334,8 @@ def relative_error(dt, q, v, mem, smem, attempts, n):
 
 
 @njit(cache=True)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
@@ -347,5 +349,8 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt)
         result = (dt_used, dt_next, rejected)
+        archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
+        if balance:
+            E.hook(energy, archived, counters, clock, dt_used, state, model)
     return K.STATUS_DONE

@@ -21,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import local_shock_forces
 from asterlite.dynamics.forces import (
@@ -59,7 +60,8 @@ def step(t, dt, index, state, memory, model):
 
 
 @njit(cache=True)
-def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
@@ -73,15 +75,19 @@ def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps,
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt)
         result = (dt_used, dt_next, rejected)
+        archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
+        if balance:
+            E.hook(energy, archived, counters, clock, dt_used, state, model)
     return K.STATUS_DONE
 
 
 @njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
     """The specialised DIFF_CENTRE loop on the engine's bundles. Compiled
     without reference counting (``_nrt=False``: nothing here allocates),
-    so that the arrays handed to the inlined helpers cost nothing."""
+    so that the arrays handed to the inlined helpers cost nothing.
+    ``energy``: the ENERGIE bundle (:mod:`energy`), inactive without it."""
     exc = model[2]
     flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
     mass_inverse, stiffness, damping, shapes, rest, drive = model[3]
@@ -130,6 +136,9 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         out_a,
         out_vint,
         out_info,
+        energy,
+        model[1],
+        exc,
     )
 
 
@@ -178,6 +187,9 @@ def specialised_loop(
     out_a,
     out_vint,
     out_info,
+    energy,
+    shk,
+    exc,
 ):
     """The DIFF_CENTRE loop on plain arrays (see the module docstring);
     same status codes and archiving rules as :func:`run_loop`.
@@ -188,6 +200,7 @@ def specialised_loop(
     (n_shocks, 2, 6) scratch for the support motion in the local frames.
     """
     n = q.shape[0]
+    balance = E.is_active(energy)  # ENERGIE: energy.after_step on the bundles
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, out_t)
         if paused:
@@ -231,8 +244,14 @@ def specialised_loop(
             finite = full_acceleration(a, f, q, v, mass_inverse, stiffness, damping, residual)
         if not finite:
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, dt)
+        archived = counters[K.K_ARCHIVED] if balance else 0
         K.advance_clock(
             clock, counters, q, v, a, vint, instants, pas_arch, eps,
             out_t, out_order, out_q, out_v, out_a, out_vint, out_info, dt, dt, 0,
         )  # fmt: skip
+        if balance:
+            E.after_step(
+                energy, archived, counters[K.K_ARCHIVED], clock[K.C_TIME], dt,
+                q, v, a, vint, shk, exc,
+            )  # fmt: skip
     return K.STATUS_DONE

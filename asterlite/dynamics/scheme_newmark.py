@@ -22,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, loads_ready, total_force
@@ -102,7 +103,8 @@ def step(t, dt, index, state, memory, model):
 
 
 @njit(cache=True)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
@@ -116,5 +118,8 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt)
         result = (dt_used, dt_next, rejected)
+        archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
+        if balance:
+            E.hook(energy, archived, counters, clock, dt_used, state, model)
     return K.STATUS_DONE

@@ -233,6 +233,12 @@ def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
                 "integration_seconds": float(info.get("integration_seconds", 0.0)),
             }
         )
+        if "energy_residual" in info:  # ENERGIE=_F(): the final balance residual
+            transients[-1]["energy_residual"] = _plain(info["energy_residual"])
+            transients[-1]["energy_residual_ratio"] = _plain(info["energy_residual_ratio"])
+            transients[-1]["energy_residual_flow_ratio"] = _plain(
+                info.get("energy_residual_flow_ratio")
+            )
         shocks += [shock_summary(name, concept.times, shock) for shock in concept.shocks]
     return transients, shocks
 
@@ -329,6 +335,13 @@ def format_summary(report: RunReport) -> str:
             f" ({run['rejected_steps']} rejected), step {_steps(run)},"
             f" integration {run['integration_seconds']:.3f} s"
         )
+        if "energy_residual" in run:
+            ratio, flow = run["energy_residual_ratio"], run.get("energy_residual_flow_ratio")
+            lines.append(
+                f"  energy residual {run['energy_residual']:.4g} J"
+                + (f", {ratio:.3g} of the largest total energy" if ratio is not None else "")
+                + (f", {flow:.3g} of the energy supplied" if flow is not None else "")
+            )
     if report.shocks:
         lines.append("shocks (from archived instants):")
         for shock in report.shocks:
