@@ -234,10 +234,10 @@ def engine_inputs(problem: TubeProblem, t_end: float, dt: float, multiplier: str
 def stable_step(problem: TubeProblem) -> float:
     """A round step below DIFF_CENTRE's limit (1/20 of the shortest period,
     shock stiffness included, as DYNA_VIBRA's VERI_PAS)."""
-    from asterlite.dynamics.integrate import suggested_step
+    from asterlite.dynamics.integrate import step_limit
 
     system, shocks, _ = engine_inputs(problem, 1.0e-3, 1.0e-4)
-    limit = suggested_step(system, shocks, "DIFF_CENTRE")
+    limit = step_limit(system, shocks, "DIFF_CENTRE")
     exponent = math.floor(math.log10(limit))
     for mantissa in (5.0, 2.0, 1.0):
         if mantissa * 10.0**exponent <= limit:

@@ -66,7 +66,7 @@ def test_euler_is_code_aster_14_diff_centre():
 def test_euler_step_is_checked_at_a_twentieth_of_the_period():
     """code_aster 10's mdptem: EULER's step limit is 1/20 of the shortest
     period; VERI_PAS='OUI' makes a longer step an error."""
-    from asterlite.dynamics.integrate import suggested_step
+    from asterlite.dynamics.integrate import step_limit
 
     gnum, m, kk = one_mode(OMEGA**2, coords=(0.0, 0.0, 0.0), shape=(1.0, 0.0, 0.0))
     with pytest.raises(NumericalError, match="1/20"):
@@ -76,7 +76,7 @@ def test_euler_step_is_checked_at_a_twentieth_of_the_period():
     from asterlite.dynamics.model import LinearSystem, build_shocks
 
     system = LinearSystem(np.eye(1), np.eye(1) * OMEGA**2, np.zeros((1, 1)))
-    assert suggested_step(system, build_shocks([], system), "EULER") == pytest.approx(1.0 / 20.0)
+    assert step_limit(system, build_shocks([], system), "EULER") == pytest.approx(1.0 / 20.0)
 
 
 def test_euler_bounce_on_a_stop():

@@ -277,3 +277,24 @@ def test_normal_damping_energy_loss_matches_the_clipped_dashpot_impact():
     assert result.vite[-1, 0] == pytest.approx(rebound, rel=5e-3)
     lost = 0.5 * (1.0 - rebound**2)
     assert 0.5 * (1.0 - result.vite[-1, 0] ** 2) == pytest.approx(lost, rel=1e-2)
+
+
+def test_divergence_from_heavy_damping_suggests_a_step_below_the_failing_one():
+    """ξ = 150 at ω = 100 rad/s: the explicit update diverges at dt = 2e-4,
+    far below 1/20 of the period; the advice names the damping and a smaller step."""
+    gnum, m, kk = one_mode(1.0e4)
+    with pytest.raises(NumericalError) as raised:
+        run_vibra(
+            m,
+            kk,
+            "DIFF_CENTRE",
+            2.0e-4,
+            1.0,
+            etat={"DEPL": vector(gnum, 1.0)},
+            veri="NON",
+            AMOR_MODAL=[kws("DYNA_VIBRA/AMOR_MODAL", AMOR_REDUIT=(150.0,))],
+        )
+    message = str(raised.value)
+    assert "modal damping of mode 1" in message
+    suggested = float(message.split("e.g. PAS=")[1].split(";")[0])
+    assert suggested < 2.0e-4

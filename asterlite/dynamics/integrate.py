@@ -318,6 +318,10 @@ def grow(buffers):
 
 
 def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSystem, scheme: str):
+    """The error of a run that failed: when, where (the shock), with which
+    step, and a smaller step to try with what sets it."""
+    from asterlite.dynamics.model import damped_step_limit, stability_limit, suggested_step
+
     t = clock[K.C_TIME]
     dt = clock[K.C_STEP]
     shock = counters[K.K_SHOCK]
@@ -327,25 +331,33 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
         where = " (shocks: " + ", ".join(s.name for s in shocks.specs) + ")"
     else:
         where = ""
-    from asterlite.dynamics.model import stability_period
-
-    suggested = stability_period(system, shocks) / 20.0
     what = {
         K.STATUS_NOT_FINITE: "the solution became non-finite",
         K.STATUS_SHOCK_DIVERGED: "relative velocity at a shock diverged",
         K.STATUS_STEP_UNDERFLOW: "the adaptive step fell below PAS_MINI",
     }.get(status, f"integration failed (status {status})")
-    return NumericalError(
-        f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; "
-        f"try PAS <= {suggested:.3g} (1/20 of the shortest period including shock stiffness)"
-    )
+    period = stability_limit(system, shocks)
+    limit, cause = step_limit(system, shocks, scheme), period.cause()
+    damped = damped_step_limit(system, shocks)
+    if damped.step < limit:  # heavy damping binds before the period does
+        limit, cause = damped.step, damped.cause()
+    if limit >= dt:  # the step already resolves the model: halving is all one can say
+        advice = (
+            f"the step is already below the stability estimate {limit:.3g} s ({cause}); "
+            f"try PAS={suggested_step(dt / 2.0):.3g} and check the stiffness, damping and loads"
+        )
+    else:
+        advice = f"try PAS <= {limit:.3g} (e.g. PAS={suggested_step(limit):.3g}; {cause})"
+    return NumericalError(f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; {advice}")
 
 
-def suggested_step(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
+def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
+    """The largest step code_aster's VERI_PAS accepts for ``scheme``: 1/20 of
+    the shortest period with the shock stiffness (1/10 for DEVOGE, NEWMARK)."""
     from asterlite.dynamics.model import stability_period
 
     fraction = 10.0 if scheme in ("DEVOGE", "NEWMARK") else 20.0
     return stability_period(system, shocks) / fraction
 
 
-__all__ = ["integrate", "RunResult", "SchemeOptions", "SCHEMES", "suggested_step", "math"]
+__all__ = ["integrate", "RunResult", "SchemeOptions", "SCHEMES", "step_limit", "math"]
