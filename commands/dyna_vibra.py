@@ -547,7 +547,11 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     a round step to use. DIFF_CENTRE (and EULER) are also refused above the
     stability limit of their explicit velocity update once modal damping
     and AMOR_NOR/AMOR_TAN are counted (heavy damping: about 1/(ξ ω)),
-    which VERI_PAS's undamped period ignores."""
+    which VERI_PAS's undamped period ignores. RUNGE_KUTTA_* and DEVOGE
+    (shock forces explicit in their stages) are refused when PAS exceeds the
+    stability limit of a shock's AMOR_NOR/AMOR_TAN (c·dt inside the stages'
+    real stability interval), and their adaptive step never grows above it
+    (:func:`asterlite.dynamics.model.shock_damping_limit`)."""
     schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
     dt_max = schema_kw.get("PAS_MAXI")
     if dt_max is not None and dt_max < dt_user:
@@ -556,6 +560,35 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
             ctx.location,
             f"{ctx.command}/SCHEMA_TEMPS/PAS_MAXI",
         )
+    if scheme in ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54", "DEVOGE"):
+        from asterlite.dynamics.model import shock_damping_limit
+        from asterlite.dynamics.scheme_devoge import STAGE_RADIUS
+        from asterlite.dynamics.scheme_runge_kutta import TABLEAUX
+
+        tableau = TABLEAUX.get(scheme)
+        radius = tableau.radius if tableau is not None else STAGE_RADIUS
+        damped = shock_damping_limit(system, shocks, radius, modal=tableau is not None)
+        if dt_user > damped.step:
+            why = (
+                f"{damped.cause()} gives a damping per unit mass of {damped.per_mass:.6g} 1/s, "
+                f"{damped.damping}*dt/M = {damped.per_mass * dt_user:.6g} beyond the {radius:.4g} "
+                f"the explicit stages of {scheme} bear (the critical step is "
+                f"{damped.step:.6g} s)"
+            )
+            if veri_pas:
+                raise NumericalError(
+                    f"PAS={dt_user:.6g} exceeds the stability limit {damped.step:.6g} of "
+                    f"{scheme}: {why}; use PAS <= {damped.step:.6g} (e.g. "
+                    f"PAS={suggested_step(damped.step / 2.0):.6g}) or NEWMARK",
+                    ctx.location,
+                    f"{ctx.command}/INCREMENT/PAS",
+                )
+            ctx.log(f"warning: PAS={dt_user:.6g} with VERI_PAS='NON': {why}")
+        elif math.isfinite(damped.step) and (dt_max is None or dt_max > damped.step):
+            ctx.log(
+                f"{scheme}: the adaptive step stays below {damped.step:.6g} s, the stability "
+                f"limit of its explicit stages set by {damped.cause()}"
+            )
     if scheme in STEP_NOT_CHECKED:
         return dt_user
     fraction = STEP_FRACTION.get(scheme, 20.0)

@@ -164,3 +164,65 @@ def test_compiled_loops_are_cached_across_processes():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     hits, misses = (int(x) for x in out.stdout.split())
     assert hits == 1 and misses == 0
+
+
+# ----------------------------------------------------------------- shock damping cap
+
+
+def test_stage_stability_radius_of_the_tableaux():
+    """The real stability interval [-radius, 0] of the explicit stages, from
+    the stability function of the weights (1 + x + x²/2 + x³/6 for the 3(2)
+    pair: radius 2.5127)."""
+    from asterlite.dynamics.scheme_runge_kutta import TABLEAUX, stability_function
+
+    expected = {"RUNGE_KUTTA_32": 2.5127453, "RUNGE_KUTTA_54": 3.3065679}
+    for name, tableau in TABLEAUX.items():
+        radius = tableau.radius
+        assert radius == pytest.approx(expected[name], abs=1.0e-6)
+        assert abs(stability_function(tableau.a, -radius)) == pytest.approx(1.0, abs=1.0e-9)
+        assert abs(stability_function(tableau.a, -1.01 * radius)) > 1.0
+    x = 1.3
+    bs3 = stability_function(TABLEAUX["RUNGE_KUTTA_32"].a, -x)
+    assert bs3.real == pytest.approx(1.0 - x + x**2 / 2.0 - x**3 / 6.0, abs=1.0e-14)
+
+
+def test_kernel_damping_cap_matches_the_named_limit():
+    """The step cap the RUNGE_KUTTA_* and DEVOGE kernels compute from their
+    model equals model.shock_damping_limit (the number checked_step names):
+    modal damping counted for the Runge-Kutta stages, not for DEVOGE
+    (implicit there); no cap without shock damping."""
+    from asterlite.dynamics.adapt_control import shock_damping_step
+    from asterlite.dynamics.model import (
+        LinearSystem,
+        ShockSpec,
+        build_shocks,
+        shock_damping_limit,
+    )
+
+    mass = np.diag([2.0, 0.5])
+    stiffness = np.diag([4.0e4, 9.0e6])
+    damping = np.diag([8.0, 600.0])
+    system = LinearSystem(mass, stiffness, damping)
+
+    shape = np.array([[0.1, 0.0], [1.0, -0.7], [0.0, 0.3]])
+
+    def spec(c_n, c_t=None):
+        return ShockSpec(
+            name="S", obstacle_type="PLAN_Y", node_1="N1", node_2=None,
+            coord_1=np.zeros(3), coord_2=None, phi_1=shape, phi_2=None,
+            norm_obst=np.array([0.0, 0.0, 1.0]), orig_obst=np.zeros(3), gap=1.0e-3,
+            k_n=1.0e7, c_n=c_n, k_t=1.0e5 if c_t else 0.0, c_t=c_t,
+        )  # fmt: skip
+
+    for c_n, c_t in ((3.0e4, None), (10.0, 5.0e5)):
+        shocks = build_shocks([spec(c_n, c_t)], system)
+        for radius, modal in ((3.3065679, True), (2.5127453, True), (2.0, False)):
+            named = shock_damping_limit(system, shocks, radius, modal=modal)
+            cap = shock_damping_step(system.bundle(), shocks.bundle(), modal, radius)
+            assert math.isfinite(named.step) and cap == pytest.approx(named.step, rel=1.0e-12)
+            assert named.shock == "S" and named.node == "N1"
+            # heavy damping: radius over the damping per unit mass
+            assert named.step <= radius / named.per_mass * (1.0 + 1.0e-12)
+    free = build_shocks([spec(0.0)], system)
+    assert shock_damping_step(system.bundle(), free.bundle(), True, 3.3) == math.inf
+    assert shock_damping_limit(system, free, 3.3).step == math.inf

@@ -342,25 +342,18 @@ def test_heavy_modal_damping_is_fine_with_an_implicit_scheme(tmp_path):
     assert energy[-1] <= 1.0e-3 * energy[0]
 
 
-STIFF_CONTACT_DAMPING_BUG = pytest.mark.xfail(
-    strict=True,
-    reason="adaptive step control accepts steps through the contact entry where "
-    "AMOR_NOR*dt/M ~ 1: archived states with up to 4x (DEVOGE) / 20x (RUNGE_KUTTA_54) "
-    "the initial energy, FN 1.9e4 / 4.3e4 N instead of 8.7e3 N",
-)
-
-
 @pytest.mark.parametrize(
     "scheme",
     ["DIFF_CENTRE", "NEWMARK", "RUNGE_KUTTA_32", "DEVOGE", "RUNGE_KUTTA_54"],
 )
 @pytest.mark.parametrize("c_n", [1.0e2, 1.0e4, 1.0e5])
-def test_contact_damping_only_dissipates(tmp_path, c_n, scheme, request):
+def test_contact_damping_only_dissipates(tmp_path, c_n, scheme):
     """AMOR_NOR from light to c_n·dt/M = 1 (half DIFF_CENTRE's explicit
     limit): every impact loses energy, none gains; the energy stored in the
-    contact spring is counted."""
-    if c_n == 1.0e5 and scheme in ("DEVOGE", "RUNGE_KUTTA_54"):
-        request.applymarker(STIFF_CONTACT_DAMPING_BUG)
+    contact spring is counted. The adaptive schemes grow their step in the
+    free flight but never beyond the damped contact's stability limit (at
+    c_n = 1e5, before the cap: 4x (DEVOGE) / 20x (RUNGE_KUTTA_54) the
+    initial energy at the contact entry)."""
     dt = 1.0e-5
     chain = Chain(
         vite={1: (0.0, 0.1, 0.0)},
@@ -392,6 +385,36 @@ def test_contact_damping_beyond_the_explicit_limit_is_refused(tmp_path):
     message = outcome.report.message
     assert "shock 'C1' (node N1)" in message and "AMOR_NOR=300000" in message
     assert re.search(r"use PAS <= [0-9.e+-]+ \(e\.g\. PAS=[0-9.e+-]+\)", message)
+
+
+@pytest.mark.parametrize(
+    ("scheme", "radius"),
+    [("RUNGE_KUTTA_32", 2.5127), ("RUNGE_KUTTA_54", 3.3066), ("DEVOGE", 2.0)],
+)
+@pytest.mark.parametrize("c_n", [1.0e6, 1.0e8])
+def test_contact_damping_beyond_the_stage_limit_is_refused(tmp_path, scheme, radius, c_n):
+    """AMOR_NOR·PAS/M = 10 and 1000: beyond the real stability interval of
+    the explicit stages (the damped contact would multiply the energy by
+    3e8..6e30 before the cap). Refused up front naming the shock, the
+    figure and a step."""
+    outcome = simulate(
+        tmp_path,
+        Chain(
+            vite={1: (0.0, 0.1, 0.0)},
+            shocks=[Shock(1, 5.0e-4, 1.0e6, c_n=c_n)],
+            pas=1.0e-5,
+            inst_fin=0.05,
+            scheme=scheme,
+        ),
+    )
+    assert nothing_complete(outcome), outcome.report.message
+    message = outcome.report.message
+    assert "DYNA_VIBRA/INCREMENT/PAS" in message and scheme in message
+    assert "shock 'C1' (node N1)" in message and f"AMOR_NOR={c_n:.6g}" in message
+    assert f"AMOR_NOR*dt/M = {c_n * 1.0e-5:.6g} beyond the {radius:.4g}" in message
+    limit = float(re.search(r"use PAS <= ([0-9.e+-]+)", message).group(1))
+    assert limit == pytest.approx(radius / c_n, rel=1.0e-3)
+    assert re.search(r"\(e\.g\. PAS=[0-9.e+-]+\)", message)
 
 
 # ----------------------------------------------------------------------------- energy

@@ -21,6 +21,8 @@ import math
 import numpy as np
 from numba import njit
 
+from asterlite.dynamics import contact as C
+
 S_NORM_VMIN, S_POINTS, S_MAX_TRIALS, S_MULT, S_DIVI, S_DTMIN, S_DTMAX = range(7)
 S_ADAPTIVE, S_CALM_STEPS, S_FIRST_CALL, S_KEPT_AT_MAX_TRIALS = range(7, 11)
 N_SCALARS = 11
@@ -96,3 +98,51 @@ def update_reference_velocities(velocity, vmin, scalars):
     else:
         for i in range(n):
             vmin[i] = max(abs(velocity[i] * 0.01), vmin[i])
+
+
+# --------------------------------------------------------------------------- damping cap
+# RUNGE_KUTTA_* and DEVOGE evaluate the shock forces explicitly: with a stiff
+# AMOR_NOR / AMOR_TAN the stages are stable only while c·dt stays inside the
+# scheme's real stability interval. Their controllers never take a step above
+# shock_damping_step (asterlite.dynamics.model.shock_damping_limit names it).
+
+
+@njit(cache=True)
+def explicit_step(omega2, damping):
+    """Largest stable step of v += dt (-ω² q - c v), q += dt v."""
+    return 4.0 / (damping + math.sqrt(damping * damping + 4.0 * omega2))
+
+
+@njit(cache=True)
+def shock_damping_step(lin, shk, modal, radius):
+    """radius/2 times the explicit step of every mode stiffened and damped by
+    each damped shock on each shape component (inf without shock damping);
+    ``modal``: count the modal damping (explicit in the stages)."""
+    minv, stiffness, damping = lin[0], lin[1], lin[2]
+    flags, params, phis = shk[0], shk[1], shk[3]
+    tiny = MACHINE_EPS * 1.0e5
+    best = np.inf
+    for s in range(flags.shape[0]):
+        nodes = 2 if flags[s, C.F_TWO_NODES] else 1
+        for pair in range(2):
+            k = params[s, C.P_KN] if pair == 0 else params[s, C.P_KT]
+            c_shock = params[s, C.P_CN] if pair == 0 else params[s, C.P_CT]
+            if abs(c_shock) <= tiny:
+                continue
+            for node in range(nodes):
+                for j in range(minv.shape[0]):
+                    inverse = minv[j, j]
+                    if not (inverse > 0.0 and inverse < 1.0 / tiny):
+                        continue
+                    w2 = max(abs(stiffness[j, j] * inverse), 1.0e-12)
+                    own = damping[j, j] * inverse if modal else 0.0
+                    for c in range(3):
+                        share = phis[s, node, c, j] ** 2 * inverse
+                        if share <= 0.0:
+                            continue
+                        step = (
+                            0.5 * radius * explicit_step(w2 + abs(k) * share, own + c_shock * share)
+                        )
+                        if step < best:
+                            best = step
+    return best

@@ -467,6 +467,7 @@ class DampedLimit:
     damping: str | None = None
     damping_value: float = 0.0
     component: str | None = None
+    per_mass: float = 0.0  # the damping per unit mass c (1/s): c·dt is the stage's figure
 
     def cause(self) -> str:
         if self.mode == 0:
@@ -533,6 +534,66 @@ def damped_step_limit(system: LinearSystem, shocks: ShockSet) -> DampedLimit:
                                 keyword,
                                 float(c_shock),
                                 COMPONENTS[c],
+                            )
+    return best
+
+
+def shock_damping_limit(
+    system: LinearSystem, shocks: ShockSet, radius: float, modal: bool = True
+) -> DampedLimit:
+    """Largest step at which the explicit stages of an adaptive scheme stay
+    stable once a shock's AMOR_NOR / AMOR_TAN acts (what sets it, see
+    :class:`DampedLimit`), ``math.inf`` without shock damping.
+
+    For each mode and each shape component of each damped shock, with
+    ω² stiffened by RIGI_NOR / RIGI_TAN and c the shock damping per unit
+    mass (plus the modal damping when ``modal``: RUNGE_KUTTA_* treat it
+    explicitly, DEVOGE implicitly), the step is ``radius / 2`` times
+    :func:`explicit_step`: ``radius / c`` for a heavy damping, where the
+    stiff real eigenvalue -c must stay inside the scheme's real stability
+    interval [-radius, 0] (2.51 for RUNGE_KUTTA_32, 3.31 for
+    RUNGE_KUTTA_54, 2 for DEVOGE's finite-difference shock velocities).
+    Error control alone does not keep the step there: entering a stiffly
+    damped contact after a long free flight, an over-large step can
+    amplify the stages so much that code_aster's estimate misjudges it.
+    The same numbers as the kernels' cap (:func:`asterlite.dynamics.
+    adapt_control.shock_damping_step`), for diagonal mass matrices."""
+    omega2 = system.omega2
+    masses = np.diag(system.mass)
+    damping = np.diag(system.damping)
+    eps = np.finfo(float).eps * 1.0e5
+    best = DampedLimit(step=math.inf)
+    usable = [j for j in range(system.n_modes) if abs(masses[j]) > eps]
+    for s in range(shocks.count):
+        p = shocks.params[s]
+        pairs = (("AMOR_NOR", p[C.P_KN], p[C.P_CN]), ("AMOR_TAN", p[C.P_KT], p[C.P_CT]))
+        nodes = 2 if shocks.flags[s, C.F_TWO_NODES] else 1
+        spec = shocks.specs[s]
+        for node in range(nodes):
+            phi = shocks.phis[s, node]
+            for j in usable:
+                own = damping[j] / masses[j] if modal else 0.0
+                for keyword, k, c_shock in pairs:
+                    if abs(c_shock) <= eps:
+                        continue
+                    for c in range(3):
+                        share = phi[c, j] ** 2 / masses[j]
+                        if share <= 0.0:
+                            continue
+                        w2 = omega2[j] + abs(k) * share
+                        c_total = own + c_shock * share
+                        step = 0.5 * radius * explicit_step(w2, c_total)
+                        if step < best.step:
+                            best = DampedLimit(
+                                step,
+                                j + 1,
+                                c_total / (2.0 * math.sqrt(w2)),
+                                spec.name,
+                                spec.node_1 if node == 0 else spec.node_2,
+                                keyword,
+                                float(c_shock),
+                                COMPONENTS[c],
+                                c_total,
                             )
     return best
 

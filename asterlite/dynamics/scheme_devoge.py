@@ -12,6 +12,15 @@ Shock forces at 3 and 4 use the finite-difference velocities
 (q3 - q1)/(dt/2) and (q4 - q3)/(dt/2), as code_aster does. Unless PAS_MINI
 equals PAS_MAXI the step adapts: a local error estimate on q3, compared
 with TOLERANCE * (|q| + ALPHA), rescales dt by 0.5..1.5 (up to 24 retries).
+
+asterlite's guard (not in code_aster): the shock forces, with their
+finite-difference velocities, are explicit, so the adaptive step never
+exceeds the stability limit of the stiffest damped shock (AMOR_NOR·dt/M
+<= 2 for a heavy damping: :func:`asterlite.dynamics.adapt_control.
+shock_damping_step` with radius 2, the modal damping being implicit; inf
+without AMOR_NOR / AMOR_TAN). The error estimate on q3 does not see that
+instability: entering a stiffly damped contact after a long free flight it
+accepts steps with AMOR_NOR·dt/M ~ 15 that double the energy.
 """
 
 from __future__ import annotations
@@ -23,6 +32,7 @@ from numba import njit
 
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics.adapt_control import shock_damping_step
 from asterlite.dynamics.forces import all_finite, loads_ready, matvec, total_force
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
@@ -36,7 +46,9 @@ MATRIX_ROWS = 17  # then invm_c, invm_k, H1 (or its inverse), H2 (or its inverse
 S_READY, S_DTOLD, S_OLDPAS1, S_OLDPAS2, S_ADAPTIVE, S_TOL, S_ALPHA, S_DTMIN, S_DTMAX, S_HDT = range(
     10
 )
-MEMORY_SCALARS = 10
+S_CAP = 10  # the shock damping cap (-1 until the first step computes it)
+MEMORY_SCALARS = 11
+STAGE_RADIUS = 2.0  # real stability interval of the explicit shock damping
 EPS = np.finfo(np.float64).eps
 
 
@@ -70,6 +82,7 @@ def fill_operators(mem, smem, minv, stiffness, damping, adaptive, tolerance, alp
     smem[S_TOL], smem[S_ALPHA] = tolerance, alpha
     smem[S_DTMIN], smem[S_DTMAX] = dt_min, dt_max
     smem[S_HDT] = -1.0
+    smem[S_CAP] = -1.0
 
 
 @njit(cache=True)
@@ -166,12 +179,17 @@ def step(t, dt, index, state, memory, model):
     diagonal = is_diagonal[0] == 1
     n = q.shape[0]
     invm_c, invm_k, h1, h2 = operators(mem, n)
+    adaptive = smem[S_ADAPTIVE] == 1.0
+    if smem[S_CAP] < 0.0:
+        smem[S_CAP] = shock_damping_step(lin, shk, False, STAGE_RADIUS)
+    dt_max = min(smem[S_DTMAX], smem[S_CAP])
+    if adaptive and dt > dt_max:
+        dt = dt_max
     if smem[S_READY] == 0.0:
         start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal)
     q2, v2, r2, r1 = mem[Q2], mem[V2], mem[R2], mem[R1]
     q3, v3, r3, q4, v4, r4 = mem[Q3], mem[V3], mem[R3], mem[Q4], mem[V4], mem[R4]
     x1, x2 = mem[X1], mem[X2]
-    adaptive = smem[S_ADAPTIVE] == 1.0
     vint_save[:, :] = vint
     dtold = smem[S_DTOLD]
     attempts = 0
@@ -227,7 +245,7 @@ def step(t, dt, index, state, memory, model):
             break
         err = relative_error(dt, q, v, mem, smem, attempts, n)
         attempts += 1
-        dtnew = min(max(step_factor(err) * dt, smem[S_DTMIN]), smem[S_DTMAX])
+        dtnew = min(max(step_factor(err) * dt, smem[S_DTMIN]), dt_max)
         if err < 1.0 and abs(dtnew / dt - 1.0) < 0.15:
             dtnew = dt
         if err > 1.0 and attempts < 25:
