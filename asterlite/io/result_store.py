@@ -15,7 +15,9 @@ HDF5 store
 :func:`save_tran_gene` writes one ``tran_gene`` under a group named after
 it; :func:`load_tran_gene` reads it back as a :class:`TranGene` (or plain
 arrays); :func:`save_session_results` saves every ``tran_gene`` of a deck
-namespace. The layout is described in ``docs/results.md``::
+namespace. A save never leaves a partly written file: it writes a temporary
+copy next to the target and renames it over the target once complete. The
+layout is described in ``docs/results.md``::
 
     /<NAME>                         attrs: aster_type, layout_version, scheme, step,
                                            n_modes, n_archived
@@ -33,11 +35,18 @@ namespace. The layout is described in ``docs/results.md``::
           coords (n_nodes, 3), node_names (n_nodes,)
           cell_names, cell_types, cell_offsets, cell_connectivity
           node_groups/<G>, cell_groups/<G>   0-based indices
+      tables/<NOM_TABLE>/           attrs: name, title, concept, n_rows
+        columns/<PARA>              (n_rows,)  attrs: parameter, type (R, I, C, K8...)
+        present/<PARA>              (n_rows,)  bool, only for parameters some rows lack
 """
 
 from __future__ import annotations
 
+import os
 import re
+import shutil
+import uuid
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -47,10 +56,11 @@ import numpy as np
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.modes import ModeResult, MultElasResult
+from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, ShockHistory, TranGene
 from asterlite.errors import CommandError
 
-LAYOUT_VERSION = 1
+LAYOUT_VERSION = 2  # 2: tables/ (files of version 1 read back with no tables)
 NODAL_DOF_FIELDS = ("DEPL", "VITE", "ACCE")
 
 
@@ -291,17 +301,23 @@ def _plain(value):
 _GROUP_NAME_BAD = re.compile(r"[/.]")
 
 
-def _shock_group_names(shocks: list[ShockHistory]) -> list[str]:
-    """One HDF5 group name per shock: its INTITULE, made unique."""
+def _unique_group_names(labels, fallback: str) -> list[str]:
+    """One HDF5 member name per label ('/' and '.' replaced, empty labels
+    named ``fallback.format(k)`` with k 1-based), made unique by suffixes."""
     names, seen = [], set()
-    for k, shock in enumerate(shocks):
-        base = _GROUP_NAME_BAD.sub("_", (shock.name or "").strip()) or f"CHOC_{k + 1}"
+    for k, label in enumerate(labels):
+        base = _GROUP_NAME_BAD.sub("_", (label or "").strip()) or fallback.format(k + 1)
         name, n = base, 2
         while name in seen:
             name, n = f"{base}_{n}", n + 1
         seen.add(name)
         names.append(name)
     return names
+
+
+def _shock_group_names(shocks: list[ShockHistory]) -> list[str]:
+    """One HDF5 group name per shock: its INTITULE, made unique."""
+    return _unique_group_names([shock.name for shock in shocks], "CHOC_{}")
 
 
 def _write_mesh(group, mesh: Mesh) -> None:
@@ -356,38 +372,112 @@ def _write_shocks(group, shocks: list[ShockHistory]) -> None:
             sub[field] = np.asarray(values)
 
 
-def save_tran_gene(path: str | Path, tran_gene: TranGene, name: str | None = None) -> Path:
-    """Write ``tran_gene`` to the HDF5 file ``path`` under group ``name``
-    (default: the concept's name); an existing group of that name is replaced,
-    other groups of the file are kept."""
-    h5py = _h5py()
-    path = Path(path)
-    name = (name or tran_gene.name or "TRAN_GENE").replace("/", "_")
-    with h5py.File(path, "a", track_order=True) as f:
-        if name in f:
-            del f[name]
-        group = f.create_group(name, track_order=True)
-        group.attrs["aster_type"] = "tran_gene"
-        group.attrs["layout_version"] = LAYOUT_VERSION
-        group.attrs["scheme"] = tran_gene.scheme or ""
-        group.attrs["step"] = float(tran_gene.step)
-        group.attrs["n_modes"] = int(tran_gene.n_modes)
-        group.attrs["n_archived"] = len(tran_gene.times)
-        group["times"] = np.asarray(tran_gene.times, dtype=float)
-        group["order"] = np.asarray(tran_gene.order, dtype=np.int64)
-        for field in ("depl", "vite", "acce"):
+def _table_column(table: Table, parameter: str) -> tuple[np.ndarray, np.ndarray]:
+    """(values, present) of one parameter: values typed after its code
+    (R float, I int64, C complex, else strings), a neutral filler (0, "")
+    where a row lacks it -- never NaN, so a stored table stays finite."""
+    type_code = table.types[parameter]
+    cells = [row.get(parameter) for row in table.rows]
+    present = np.array([v is not None for v in cells], dtype=bool)
+    if type_code == "R":
+        return np.array([0.0 if v is None else float(v) for v in cells], dtype=float), present
+    if type_code == "I":
+        return np.array([0 if v is None else int(v) for v in cells], dtype=np.int64), present
+    if type_code == "C":
+        return np.array([0j if v is None else complex(v) for v in cells], dtype=complex), present
+    return _strings("" if v is None else v for v in cells), present
+
+
+def _write_table(group, key: str, table: Table) -> None:
+    group.attrs["name"] = key
+    group.attrs["title"] = table.title or ""
+    group.attrs["concept"] = table.name or ""
+    group.attrs["n_rows"] = len(table.rows)
+    columns = group.create_group("columns", track_order=True)
+    present_group = None
+    names = _unique_group_names(table.columns, "PARA_{}")
+    for name, parameter in zip(names, table.columns, strict=True):
+        values, present = _table_column(table, parameter)
+        dataset = columns.create_dataset(name, data=values)
+        dataset.attrs["parameter"] = parameter
+        dataset.attrs["type"] = table.types[parameter]
+        if not present.all():
+            if present_group is None:
+                present_group = group.create_group("present", track_order=True)
+            present_group[name] = present
+
+
+def _write_tables(group, tables: dict) -> None:
+    """The tables kept with a result (RECU_TABLE NOM_TABLE), by their key."""
+    kept = {str(k): v for k, v in tables.items() if isinstance(v, Table)}
+    skipped = [str(k) for k, v in tables.items() if not isinstance(v, Table)]
+    if skipped:
+        group.attrs["tables_not_stored"] = ", ".join(skipped)
+    for name, (key, table) in zip(_unique_group_names(kept, "TABLE_{}"), kept.items(), strict=True):
+        _write_table(group.create_group(name, track_order=True), key, table)
+
+
+def _write_tran_gene(f, tran_gene: TranGene, name: str) -> None:
+    if name in f:
+        del f[name]
+    group = f.create_group(name, track_order=True)
+    group.attrs["aster_type"] = "tran_gene"
+    group.attrs["layout_version"] = LAYOUT_VERSION
+    group.attrs["scheme"] = tran_gene.scheme or ""
+    group.attrs["step"] = float(tran_gene.step)
+    group.attrs["n_modes"] = int(tran_gene.n_modes)
+    group.attrs["n_archived"] = len(tran_gene.times)
+    group["times"] = np.asarray(tran_gene.times, dtype=float)
+    group["order"] = np.asarray(tran_gene.order, dtype=np.int64)
+    for field in ("depl", "vite", "acce"):
+        group[field] = np.asarray(getattr(tran_gene, field), dtype=float)
+    for field in ("step_sizes", "rejections"):
+        if getattr(tran_gene, field) is not None:
             group[field] = np.asarray(getattr(tran_gene, field), dtype=float)
-        for field in ("step_sizes", "rejections"):
-            if getattr(tran_gene, field) is not None:
-                group[field] = np.asarray(getattr(tran_gene, field), dtype=float)
-        scheme = group.create_group("scheme")
-        scheme.attrs["name"] = tran_gene.scheme or ""
-        scheme.attrs["step"] = float(tran_gene.step)
-        skipped = _write_attributes(scheme, tran_gene.info)
-        if skipped:
-            scheme.attrs["info_not_stored"] = ", ".join(skipped)
-        _write_shocks(group.create_group("shocks", track_order=True), tran_gene.shocks)
-        _write_basis(group.create_group("basis"), tran_gene.basis)
+    scheme = group.create_group("scheme")
+    scheme.attrs["name"] = tran_gene.scheme or ""
+    scheme.attrs["step"] = float(tran_gene.step)
+    skipped = _write_attributes(scheme, tran_gene.info)
+    if skipped:
+        scheme.attrs["info_not_stored"] = ", ".join(skipped)
+    _write_shocks(group.create_group("shocks", track_order=True), tran_gene.shocks)
+    _write_basis(group.create_group("basis"), tran_gene.basis)
+    _write_tables(group.create_group("tables", track_order=True), tran_gene.tables or {})
+
+
+@contextmanager
+def _updating(path: Path):
+    """An HDF5 file open for writing that replaces ``path`` only when the
+    block completes: the writes go to a copy next to it (or a new file),
+    renamed over ``path`` at the end; on an error the copy is removed and
+    ``path`` is left as it was."""
+    h5py = _h5py()
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.{uuid.uuid4().hex[:8]}.tmp")
+    try:
+        if path.exists():
+            shutil.copy2(path, temporary)
+            f = h5py.File(temporary, "a")
+        else:
+            f = h5py.File(temporary, "w", track_order=True)
+        with f:
+            yield f
+        os.replace(temporary, path)
+    finally:
+        temporary.unlink(missing_ok=True)
+
+
+def _group_name(tran_gene: TranGene, name: str | None) -> str:
+    return (name or tran_gene.name or "TRAN_GENE").replace("/", "_")
+
+
+def save_tran_gene(path: str | Path, tran_gene: TranGene, name: str | None = None) -> Path:
+    """Write ``tran_gene`` (with the tables it keeps) to the HDF5 file
+    ``path`` under group ``name`` (default: the concept's name); an existing
+    group of that name is replaced, other groups of the file are kept. The
+    file is replaced whole once written, never left half written."""
+    path = Path(path)
+    with _updating(path) as f:
+        _write_tran_gene(f, tran_gene, _group_name(tran_gene, name))
     return path
 
 
@@ -431,6 +521,32 @@ def _read_basis(group) -> dict[str, Any]:
     return out
 
 
+def _read_table(group) -> dict[str, Any]:
+    """A stored table as plain data: ``types`` and ``columns`` by parameter
+    (arrays; lists of str for text columns), ``present`` (bool arrays) for
+    the parameters some rows lack, where ``columns`` holds a filler."""
+    h5py = _h5py()
+    attrs = _read_attrs(group)
+    out = {
+        "name": str(attrs.get("name", group.name.rsplit("/", 1)[-1])),
+        "title": str(attrs.get("title", "")),
+        "concept": str(attrs.get("concept", "")) or None,
+        "n_rows": int(attrs.get("n_rows", 0)),
+        "types": {},
+        "columns": {},
+        "present": {},
+    }
+    masks = group["present"] if "present" in group else {}
+    for key, dataset in group["columns"].items():
+        parameter = str(_plain(dataset.attrs.get("parameter", key)))
+        text = h5py.check_string_dtype(dataset.dtype) is not None
+        out["types"][parameter] = str(_plain(dataset.attrs.get("type", "K24" if text else "R")))
+        out["columns"][parameter] = _read_strings(dataset) if text else dataset[()]
+        if key in masks:
+            out["present"][parameter] = np.asarray(masks[key][()], dtype=bool)
+    return out
+
+
 def read_tran_gene_dict(path: str | Path, name: str | None = None) -> dict[str, Any]:
     """A stored tran_gene as plain Python data (arrays, lists, dicts)."""
     h5py = _h5py()
@@ -452,6 +568,8 @@ def read_tran_gene_dict(path: str | Path, name: str | None = None) -> dict[str, 
             for key in group["shocks"]
         ]
         out["basis"] = _read_basis(group["basis"])
+        tables = group["tables"] if "tables" in group else {}  # absent from version 1
+        out["tables"] = {t["name"]: t for t in map(_read_table, tables.values())}
     return out
 
 
@@ -521,6 +639,24 @@ def _shock_from(data: dict[str, Any]) -> ShockHistory:
     )
 
 
+def _table_from(data: dict[str, Any]) -> Table:
+    """A :class:`Table` back from :func:`_read_table`'s data: same
+    parameters in order, same type codes, the values as Python float, int,
+    complex or str, absent where the row lacked them."""
+    table = Table(title=data["title"])
+    table.name = data.get("concept") or None
+    rows: list[dict[str, Any]] = [{} for _ in range(data["n_rows"])]
+    for parameter, values in data["columns"].items():
+        table.add_column(parameter, data["types"][parameter])
+        values = values if isinstance(values, list) else np.asarray(values).tolist()
+        present = data["present"].get(parameter)
+        for i, value in enumerate(values):
+            if present is None or present[i]:
+                rows[i][parameter] = value
+    table.rows = rows
+    return table
+
+
 def load_tran_gene(path: str | Path, name: str | None = None, *, concept: bool = True):
     """Read a stored tran_gene: a :class:`TranGene` (``concept=True``, with
     its modal basis, DOF numbering and mesh rebuilt) or the plain dict of
@@ -543,24 +679,32 @@ def load_tran_gene(path: str | Path, name: str | None = None, *, concept: bool =
         info=info,
         step_sizes=data["step_sizes"],
         rejections=data["rejections"],
+        tables={key: _table_from(t) for key, t in data["tables"].items()},
     )
     result.name = data["name"]
     return result
 
 
 def save_session_results(path: str | Path, namespace: dict[str, Any]) -> list[str]:
-    """Save every TranGene of a deck namespace (keyed by concept name) to
-    ``path``; returns the names saved, in namespace order. A concept bound to
-    several names is saved once, under its own name when it has one."""
+    """Save every TranGene of a deck namespace (keyed by concept name), with
+    its tables, to ``path`` in one replacement of the file; returns the names
+    saved, in namespace order. A concept bound to several names is saved
+    once, under its own name when it has one."""
     saved: list[str] = []
     seen: set[int] = set()
+    results = []
     for key, value in namespace.items():
         if not isinstance(value, TranGene) or id(value) in seen:
             continue
         seen.add(id(value))
-        name = value.name or key
-        save_tran_gene(path, value, name)
-        saved.append(name)
+        results.append((value.name or key, value))
+    if not results:
+        return saved
+    with _updating(Path(path)) as f:
+        for name, value in results:
+            name = _group_name(value, name)
+            _write_tran_gene(f, value, name)
+            saved.append(name)
     return saved
 
 
