@@ -19,8 +19,32 @@ g2 = -(1-γ)²/(γ(2-γ)), g3 = (1-γ)/(2-γ):
 
 The accelerations of the state held at index 2 carry the shock forces
 explicitly: that state is the previous step's result (q_n, v_n), and zero
-on the very first step as in code_aster. Order 2, L-stable on the linear
-part.
+on the very first step as in code_aster. L-stable on the linear part.
+
+Order. From the second step on, each step is exactly the TR-BDF2 step of
+the linear system, modal damping included (substituting ã = M⁻¹(F - K q_n
+- C v_n) makes the TR stage the trapezoidal rule on (q, v) and the BDF2
+stage the BDF2 rule, C v taken at the stage's own velocity): order 2 with
+or without damping. The first step is not: code_aster allocates
+DEPL/VITE/ACCE at index 2 on the first call of inttrbdf2 (intinivec fills
+them with zeros), and both dtmacce(index 2) calls of that step evaluate
+the accelerations at q = 0, v = 0 instead of (q_0, v_0). Asterlite keeps
+that parity (rows Q_INDEX2/V_INDEX2 start at zero). With e = M⁻¹(K q_0 +
+C v_0 - F_shock(q_0, v_0) + F_shock(0, 0)), the first step ends with
+
+    q_1 += (1 - √2/2) dt² e,    v_1 += (1 - √2/4) dt e
+
+(to leading order), an O(dt) velocity jump carried by the rest of the run:
+the trajectory converges at order 1 whenever e ≠ 0, at order 2 when the
+run starts from rest or from a state with K q_0 + C v_0 = 0. Damping is
+not the cause in itself: an undamped start from q_0 ≠ 0 loses the order
+the same way (the 1.2e-4 -> 3.0e-5 for dt/4 measured on a damped
+oscillator launched with v_0 ≠ 0 is this first step, C v_0 ≠ 0); a
+damped, forced oscillator starting from rest converges at order 2.
+Seeding index 2 with (q_0, v_0) would restore order 2 from any state;
+it would also change the first step's shock forces and internal
+variables, so asterlite stays with code_aster
+(tests/test_dynamics_schemes.py measures both behaviours).
 """
 
 from __future__ import annotations
