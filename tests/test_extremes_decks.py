@@ -71,6 +71,7 @@ class Chain:
     xi: float = 0.0  # AMOR_REDUIT of every mode
     scheme: str = "DIFF_CENTRE"
     scheme_keywords: str = ""  # e.g. ', TOLERANCE=1.0e-8'
+    dyna_keywords: str = ""  # more DYNA_VIBRA keywords, e.g. ', TRAITEMENT_NONL="IMPLICITE"'
     pas: float = 1.0e-4
     inst_fin: float = 0.1
     pas_arch: int | None = None  # ARCHIVAGE/PAS_ARCH (every step when None)
@@ -194,7 +195,7 @@ def comm_text(chain: Chain) -> str:
         text.append('OBS = DEFI_OBSTACLE(TYPE="PLAN_Y")')
         occurrences = ", ".join(s.occurrence(float(s.node - 1)) for s in chain.shocks)
         keywords.append(f"COMPORTEMENT=({occurrences},)")
-    text.append("TRAN = DYNA_VIBRA(" + ", ".join(keywords) + ")")
+    text.append("TRAN = DYNA_VIBRA(" + ", ".join(keywords) + chain.dyna_keywords + ")")
     if chain.post and chain.shocks:
         for k, s in enumerate(chain.shocks):
             text.append(
@@ -254,9 +255,13 @@ class Outcome:
         return self.vite
 
     def penetration(self, name: str) -> np.ndarray:
-        """Penetration of a PLAN_Y shock: |local y| beyond JEU (0 when apart)."""
+        """Penetration of a PLAN_Y shock at the archived displacements: |DY|
+        of its node (at the obstacle's origin) beyond JEU, 0 when apart. Not
+        the archived DYLOC: NEWMARK and TRBDF2 evaluate the shocks, and so
+        archive their local quantities, at the previous state."""
         shock = self.shocks[name]
-        return np.maximum(0.0, np.abs(shock["DYLOC"]) - float(shock["JEU"]))
+        node_dy = self.physical(f"{shock['node_1']} DY")
+        return np.maximum(0.0, np.abs(node_dy) - float(shock["JEU"]))
 
     def energy(self, contact: bool = True) -> np.ndarray:
         """Mechanical energy at the archived instants: ½ vᵀMv + ½ qᵀKq (modal,

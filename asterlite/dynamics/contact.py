@@ -36,12 +36,23 @@ P_COORD2 = 17  # 3 values
 # global displacement then velocity (6 values each), refreshed by the kernel
 P_DRIVE1 = 20
 P_DRIVE2 = 26
-N_PARAMS = 32
+# TRAITEMENT_NONL='IMPLICITE' (implicit_shocks.py): the normal force of a
+# linearised shock is -k_n (d_0 + g.q) - c_n g.v along the normal frozen at
+# the switch; K and C take the terms in q and v, the force keeps -k_n d_0 n
+P_LIN_GAP = 32  # d_0, the gap extrapolated to q = 0
+P_LIN_COS, P_LIN_SIN = 33, 34  # the frozen normal
+N_PARAMS = 35
 
 # Columns of the per-shock integer rows (``flags``).
 F_GEOMETRY, F_TWO_NODES, F_UNIDIR, F_NPOLAR = range(4)
 F_LAW = 4  # relation (laws.kernel.LAW_CODES): 0 DIS_CHOC, else a law of laws/
-N_FLAGS = 5
+# TRAITEMENT_NONL='IMPLICITE': how the normal force enters the equations
+# (implicit_shocks.py): explicit, linearised in K and C, or left out (a
+# shock out of contact while others are linearised: code_aster applies no
+# explicit normal force then; a new contact is caught at the step's end)
+F_IMPLICIT = 5
+NORMAL_EXPLICIT, NORMAL_LINEARISED, NORMAL_LEFT_OUT = range(3)
+N_FLAGS = 6
 
 # Internal variables of one shock (code_aster's 20-value layout, same order).
 V_FN, V_FT1, V_FT2 = 0, 1, 2
@@ -421,6 +432,16 @@ def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
         )
         if diverged:
             return s
+        mode = flags[s, F_IMPLICIT] if flags.shape[1] > F_IMPLICIT else NORMAL_EXPLICIT
+        if mode != NORMAL_EXPLICIT:  # friction stays explicit, the normal force does not
+            fn = vint[s, V_FN]
+            fy -= fn * cos_n
+            fz -= fn * sin_n
+            if mode == NORMAL_LINEARISED:
+                constant = -p[P_KN] * p[P_LIN_GAP]
+                fy += constant * p[P_LIN_COS]
+                fz += constant * p[P_LIN_SIN]
+                in_contact = True
         if in_contact:
             f_local[0] = fx
             f_local[1] = fy

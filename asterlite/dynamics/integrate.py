@@ -21,6 +21,7 @@ from asterlite.dynamics import (
     scheme_rk54,
     scheme_trbdf2,
 )
+from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
@@ -102,13 +103,15 @@ def integrate(
     rotation=None,
     label: str | None = None,
     energy: bool = False,
+    implicit_shocks: bool = False,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
     ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
     results as its specialised ``run_loop``; kept for comparison).
     ``label`` names the run on the progress bar. ``energy``: accumulate the
     energy balance in the loop (:mod:`asterlite.dynamics.energy`), returned
-    as ``RunResult.energy``."""
+    as ``RunResult.energy``. ``implicit_shocks``: TRAITEMENT_NONL='IMPLICITE'
+    (:mod:`asterlite.dynamics.implicit_shocks`)."""
     options = options or SchemeOptions()
     n = system.n_modes
     module = SCHEMES[scheme]
@@ -135,6 +138,14 @@ def integrate(
         memory, rotating_loop = R.prepare(scheme, memory, rotation)
         if rotation.initial_acceleration is not None:  # a restart keeps its acceleration
             a[:] = rotation.initial_acceleration
+    implicit_loop = None
+    if implicit_shocks and shocks.count:  # K and C change at each contact switch
+        from asterlite.dynamics import implicit_shocks as IS
+
+        lin = system.bundle()
+        model = ((lin[0], lin[1].copy(), lin[2].copy(), lin[3].copy()), model[1], model[2])
+        memory, implicit_loop = IS.prepare(scheme, memory, system, shocks)
+        IS.start(memory, model, q, v, t0)
     adaptive = loop_adapts(scheme, dt, options)
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
@@ -155,6 +166,8 @@ def integrate(
         run_loop = getattr(module, "general_loop", module.run_loop)
     if rotating_loop is not None:
         run_loop = rotating_loop
+    if implicit_loop is not None:
+        run_loop = implicit_loop
     if energy and rotating_loop is not None:
         raise NumericalError("the energy balance (ENERGIE) with VITESSE_VARIABLE='OUI'")
     balance = E.new_energy(system, shocks, capacity, scheme, energy)
@@ -185,6 +198,8 @@ def integrate(
                 break
     finally:
         bar.close()
+        if implicit_loop is not None:  # the shock set is the caller's: explicit again
+            shocks.flags[:, C.F_IMPLICIT] = C.NORMAL_EXPLICIT
     elapsed = wallclock.perf_counter() - started
     if status != K.STATUS_DONE:
         failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
@@ -204,6 +219,10 @@ def integrate(
         "mean_step": (float(clock[K.C_TIME]) - t0) / steps if steps else dt,
         "last_step": float(clock[K.C_STEP]),
     }
+    if implicit_loop is not None:
+        ints = memory[3][5]
+        info["contact_switches"] = int(ints[IS.I_SWITCHES])
+        info["reintegrated_steps"] = int(ints[IS.I_CUTS])
     if scheme in ("ADAPT_ORDRE1", "ADAPT_ORDRE2"):
         kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
@@ -335,6 +354,8 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
         K.STATUS_NOT_FINITE: "the solution became non-finite",
         K.STATUS_SHOCK_DIVERGED: "relative velocity at a shock diverged",
         K.STATUS_STEP_UNDERFLOW: "the adaptive step fell below PAS_MINI",
+        K.STATUS_SWITCH_NOT_LOCATED: "a step was integrated again 100 times without "
+        "locating its contact switch (TRAITEMENT_NONL='IMPLICITE')",
     }.get(status, f"integration failed (status {status})")
     period = stability_limit(system, shocks)
     limit, cause = step_limit(system, shocks, scheme), period.cause()

@@ -439,6 +439,24 @@ def stability_limit(system: LinearSystem, shocks: ShockSet) -> StabilityLimit:
     return best
 
 
+def contact_limit(system: LinearSystem, shocks: ShockSet) -> StabilityLimit:
+    """:func:`stability_limit` with only the DIS_CHOC normal stiffnesses:
+    the shortest period of a mode while a shock is in contact
+    (``mode == 0`` when no shock has a normal stiffness)."""
+    dis_choc = [s for s in range(shocks.count) if shocks.specs[s].relation == "DIS_CHOC"]
+    normal_only = ShockSet(
+        [shocks.specs[s] for s in dis_choc],
+        shocks.flags[dis_choc],
+        shocks.params[dis_choc].copy(),
+        shocks.rots[dis_choc],
+        shocks.phis[dis_choc],
+        shocks.polars[dis_choc],
+    )
+    normal_only.params[:, C.P_KT] = 0.0
+    limit = stability_limit(system, normal_only)
+    return limit if limit.shock is not None else StabilityLimit(period=limit.period)
+
+
 def stability_period(system: LinearSystem, shocks: ShockSet) -> float:
     """Smallest period among the modes, each stiffened by every shock's normal
     and tangential stiffness on each of its shape components (code_aster's

@@ -16,8 +16,9 @@ M⁻¹K and H1, H2 (intdevo_oper). The initial acceleration uses the
 matrices at the initial instant. Ω and Ω' are multipliers of the
 excitation machinery (tables, FORMULE programs), evaluated in the loop.
 
-Each scheme has its rotating loop here: the scheme's ``run_loop`` with the
-update before each step. The generalized matrices are written in place in
+One loop serves every scheme (:func:`rotating_loop`, branching on the
+scheme code of :mod:`asterlite.dynamics.dispatch`): the scheme's step with
+the update before it. The generalized matrices are written in place in
 the (M⁻¹, K, C, diagonal flag) bundle of the model (the flag set to full:
 G couples the modes).
 """
@@ -29,15 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics import implicit as I
+from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import scheme_adapt_ordre1 as A1
-from asterlite.dynamics import scheme_adapt_ordre2 as A2
-from asterlite.dynamics import scheme_devoge as DV
-from asterlite.dynamics import scheme_diff_centre as DC
-from asterlite.dynamics import scheme_newmark as N
-from asterlite.dynamics import scheme_runge_kutta as RK
-from asterlite.dynamics import scheme_trbdf2 as TR
 from asterlite.dynamics.forces import loads_ready, multiplier_at
 from asterlite.dynamics.formula import run_program
 from asterlite.dynamics.model import (
@@ -160,37 +154,6 @@ def update_linear(lin, rot, t):
     flag[0] = 0
 
 
-@njit(cache=True)
-def update_blocks(rows, vector_rows, lin, n):
-    """Copy K, C of the bundle into an implicit scheme's matrix blocks (its
-    effective operators are rebuilt on the next step)."""
-    stiffness = I.block(rows, vector_rows, I.B_STIFF, n)
-    damping = I.block(rows, vector_rows, I.B_DAMP, n)
-    for i in range(n):
-        for j in range(n):
-            stiffness[i, j] = lin[1][i, j]
-            damping[i, j] = lin[2][i, j]
-
-
-@njit(cache=True)
-def update_devoge(mem, smem, lin, n):
-    """M⁻¹C, M⁻¹K and, once the scheme has started, H1 = 4I + dt M⁻¹C,
-    H2 = 6I + dt M⁻¹C for the step it stands at (intdevo on MAT_UPDT)."""
-    minv, stiffness, damping = lin[0], lin[1], lin[2]
-    invm_c, invm_k, h1, h2 = DV.operators(mem, n)
-    for i in range(n):
-        for j in range(n):
-            sc = 0.0
-            sk = 0.0
-            for k in range(n):
-                sc += minv[i, k] * damping[k, j]
-                sk += minv[i, k] * stiffness[k, j]
-            invm_c[i, j] = sc
-            invm_k[i, j] = sk
-    if smem[DV.S_READY] == 1.0:
-        DV.update_implicit_operators(invm_c, h1, h2, smem[DV.S_HDT], False)
-
-
 @njit(cache=True, inline="always")
 def before_step(clock, counters, model, instants, eps, archive):
     """The checks every loop makes before a step: 0 to go on, else the
@@ -204,9 +167,10 @@ def before_step(clock, counters, model, instants, eps, archive):
 
 
 @njit(cache=True)
-def newmark_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    """scheme_newmark.run_loop with the matrices updated before each step;
-    ``memory[3]`` is :meth:`Rotation.bundle`."""
+def rotating_loop(code, clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+    """The time loop of the scheme ``code`` (:mod:`asterlite.dynamics.dispatch`)
+    with C(t), K(t) written into the model and the scheme's operators
+    refreshed before each step; ``memory[3]`` is :meth:`Rotation.bundle`."""
     base, rot = (memory[0], memory[1], memory[2]), memory[3]
     n = state[0].shape[0]
     while K.unfinished(clock, counters, eps):
@@ -215,159 +179,27 @@ def newmark_loop(clock, counters, state, memory, model, instants, pas_arch, eps,
             return paused
         t, dt = K.plan_step(clock, counters, instants, eps)
         update_linear(model[0], rot, t)
-        update_blocks(base[0], N.VECTOR_ROWS, model[0], n)
-        base[1][N.S_DT_BUILT] = -1.0
-        status, shock, dt_used, dt_next, rejected = N.step(
-            t, dt, counters[K.K_STEP], state, base, model
+        D.refresh_operators(code, base, model[0], n)
+        status, shock, dt_used, dt_next, rejected = D.scheme_step(
+            code, t, dt, counters[K.K_STEP], state, base, model
         )
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt)
         result = (dt_used, dt_next, rejected)
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
     return K.STATUS_DONE
-
-
-@njit(cache=True)
-def trbdf2_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    base, rot = (memory[0], memory[1], memory[2]), memory[3]
-    n = state[0].shape[0]
-    while K.unfinished(clock, counters, eps):
-        paused = before_step(clock, counters, model, instants, eps, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        update_linear(model[0], rot, t)
-        update_blocks(base[0], TR.VECTOR_ROWS, model[0], n)
-        base[1][TR.S_DT_BUILT] = -1.0
-        status, shock, dt_used, dt_next, rejected = TR.step(
-            t, dt, counters[K.K_STEP], state, base, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
-        result = (dt_used, dt_next, rejected)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-    return K.STATUS_DONE
-
-
-@njit(cache=True)
-def devoge_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    base, rot = (memory[0], memory[1], memory[2]), memory[3]
-    n = state[0].shape[0]
-    while K.unfinished(clock, counters, eps):
-        paused = before_step(clock, counters, model, instants, eps, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        update_linear(model[0], rot, t)
-        update_devoge(base[0], base[1], model[0], n)
-        status, shock, dt_used, dt_next, rejected = DV.step(
-            t, dt, counters[K.K_STEP], state, base, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
-        result = (dt_used, dt_next, rejected)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-    return K.STATUS_DONE
-
-
-@njit(cache=True)
-def diff_centre_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    """DIFF_CENTRE (and EULER) on the general path (the specialised loop
-    keeps diagonal matrices as 1-D arrays)."""
-    base, rot = (memory[0], memory[1], memory[2]), memory[3]
-    while K.unfinished(clock, counters, eps):
-        paused = before_step(clock, counters, model, instants, eps, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        update_linear(model[0], rot, t)
-        status, shock, dt_used, dt_next, rejected = DC.step(
-            t, dt, counters[K.K_STEP], state, base, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
-        result = (dt_used, dt_next, rejected)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-    return K.STATUS_DONE
-
-
-@njit(cache=True)
-def runge_kutta_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    base, rot = (memory[0], memory[1], memory[2]), memory[3]
-    while K.unfinished(clock, counters, eps):
-        paused = before_step(clock, counters, model, instants, eps, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        update_linear(model[0], rot, t)
-        status, shock, dt_used, dt_next, rejected = RK.step(
-            t, dt, counters[K.K_STEP], state, base, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
-        result = (dt_used, dt_next, rejected)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-    return K.STATUS_DONE
-
-
-@njit(cache=True)
-def adapt_ordre1_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    base, rot = (memory[0], memory[1], memory[2]), memory[3]
-    while K.unfinished(clock, counters, eps):
-        paused = before_step(clock, counters, model, instants, eps, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        update_linear(model[0], rot, t)
-        status, shock, dt_used, dt_next, rejected = A1.step(
-            t, dt, counters[K.K_STEP], state, base, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
-        result = (dt_used, dt_next, rejected)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-    return K.STATUS_DONE
-
-
-@njit(cache=True)
-def adapt_ordre2_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    base, rot = (memory[0], memory[1], memory[2]), memory[3]
-    while K.unfinished(clock, counters, eps):
-        paused = before_step(clock, counters, model, instants, eps, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        update_linear(model[0], rot, t)
-        status, shock, dt_used, dt_next, rejected = A2.step(
-            t, dt, counters[K.K_STEP], state, base, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
-        result = (dt_used, dt_next, rejected)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-    return K.STATUS_DONE
-
-
-LOOPS = {
-    "NEWMARK": newmark_loop,
-    "TRBDF2": trbdf2_loop,
-    "DEVOGE": devoge_loop,
-    "DIFF_CENTRE": diff_centre_loop,
-    "EULER": diff_centre_loop,
-    "RUNGE_KUTTA_32": runge_kutta_loop,
-    "RUNGE_KUTTA_54": runge_kutta_loop,
-    "ADAPT_ORDRE1": adapt_ordre1_loop,
-    "ADAPT_ORDRE2": adapt_ordre2_loop,
-}
 
 
 def prepare(scheme: str, memory, rotation: Rotation):
     """(memory, run_loop) of a scheme run with variable rotation speed."""
-    if scheme not in LOOPS:
+    if scheme not in SCHEMES:
         raise ValueError(scheme)
-    rows, scalars, table = memory[:3]
-    if scheme == "NEWMARK":
-        scalars[N.S_DIAGONAL] = 0.0  # G couples the modes
-    elif scheme == "TRBDF2":
-        scalars[TR.S_DIAGONAL] = 0.0
-    return (rows, scalars, table, rotation.bundle()), LOOPS[scheme]
+    code = D.CODES[scheme]
+    memory = D.full_matrices(scheme, memory) + (rotation.bundle(),)
+
+    def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
+        return rotating_loop(
+            code, clock, counters, state, memory, model, instants, pas_arch, eps, archive
+        )
+
+    return memory, run_loop
