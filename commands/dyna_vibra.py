@@ -161,7 +161,8 @@ def run(ctx, kw):
     if implicit:
         ctx.log(
             f"TRAITEMENT_NONL='IMPLICITE': {result.info['contact_switches']} contact switches, "
-            f"{result.info['reintegrated_steps']} steps integrated again up to a switch"
+            f"{result.info['reintegrated_steps']} steps integrated again up to a switch, "
+            f"{result.info['relinearisations']} linearisations about a contact point that moved"
         )
     if supports:
         result.info["mult_appui"] = supports

@@ -19,7 +19,9 @@ asterlite follows that algorithm with these choices:
   q = 0. code_aster obtains the same terms (exactly, for plane obstacles)
   by finite differences of the whole force and caches them per case;
   asterlite writes them in closed form and linearises again at every
-  switch (curved obstacles: about the current contact point). Friction and
+  switch (curved obstacles: about the current contact point, and again
+  whenever the normal has turned by more than NORMAL_TURN while in
+  contact: a tube orbiting in a circular support). Friction and
   the other relations stay explicit and are not also differentiated into
   K (code_aster's finite differences count a sticking friction twice).
 - While any shock is linearised, the other DIS_CHOC apply no explicit
@@ -75,12 +77,18 @@ CUT_TOLERANCE = 0.01  # a switch within 1 % of a step from its end is made there
 SHORTEST_CUT = 1.0e-10  # s: no shorter re-integrated step
 MAX_TRIES = 100  # code_aster stops after 100 re-integrations of one step
 
-# ints[]: re-integrations of the current step, switches, re-integrations in all
-I_TRIES, I_SWITCHES, I_CUTS = range(3)
-N_INTS = 3
-# rows of ``kinematics`` (per shock): gap, normal velocity, unclipped force
-# at the start, then at the end of the step
-R_GAP0, R_VN0, R_FORCE0, R_GAP1, R_VN1, R_FORCE1 = range(6)
+# ints[]: re-integrations of the current step, switches, re-integrations in
+# all, linearisations again about a contact point that moved (curved obstacles)
+I_TRIES, I_SWITCHES, I_CUTS, I_TURNS = range(4)
+N_INTS = 4
+# rows of ``kinematics`` (per shock): gap, normal velocity, unclipped force,
+# normal (cos, sin) at the start, then at the end of the step
+R_GAP0, R_VN0, R_FORCE0, R_COS0, R_SIN0 = range(5)
+R_GAP1, R_VN1, R_FORCE1, R_COS1, R_SIN1 = range(5, 10)
+N_KINEMATICS = 10
+# a curved obstacle's normal may turn this much (rad) before the shock is
+# linearised again about its current contact point
+NORMAL_TURN = 1.0e-3
 
 
 def prepare(scheme: str, memory, system, shocks):
@@ -99,7 +107,7 @@ def prepare(scheme: str, memory, system, shocks):
         np.zeros(ns, dtype=np.int64),  # in contact (linearised) now
         np.zeros(ns, dtype=np.int64),  # in contact at the end of the step
         np.zeros(N_INTS, dtype=np.int64),
-        np.zeros((6, ns)),  # kinematics
+        np.zeros((N_KINEMATICS, ns)),  # kinematics
         np.zeros((2, n)),  # gradient, scratch
         np.zeros((5, 3)),  # local positions and velocities
         (base[0].copy(), base[1].copy()),  # the scheme's rows and scalars
@@ -162,8 +170,8 @@ def shock_kinematics(s, q, v, shk, work):
 
 @njit(cache=True)
 def indicators(q, v, shk, kinematics, first_row, in_contact, work):
-    """Gap, normal velocity and unclipped normal force of every DIS_CHOC
-    at (q, v) into ``kinematics[first_row:first_row + 3]``, and whether
+    """Gap, normal velocity, unclipped normal force and normal of every
+    DIS_CHOC at (q, v) into ``kinematics[first_row:first_row + 5]``, and whether
     each is in contact (clipped force above :data:`CONTACT_FORCE`)."""
     flags, params = shk[0], shk[1]
     for s in range(flags.shape[0]):
@@ -175,6 +183,8 @@ def indicators(q, v, shk, kinematics, first_row, in_contact, work):
         kinematics[first_row, s] = gap
         kinematics[first_row + 1, s] = vn
         kinematics[first_row + 2, s] = force
+        kinematics[first_row + 3, s] = cos_n
+        kinematics[first_row + 4, s] = sin_n
         if gap <= 0.0 and force > CONTACT_FORCE:
             in_contact[s] = 1
 
@@ -200,6 +210,22 @@ def switch_fraction(active, trial, kinematics):
         if x0 - x1 > 0.0:
             ratio = min(ratio, x0 / (x0 - x1))
     return ratio
+
+
+@njit(cache=True)
+def normal_turned(active, params, kinematics):
+    """Whether the normal of a linearised shock (a curved obstacle: CERCLE,
+    BI_CERCLE, BI_CERC_INT, DISCRET facets) has turned by more than
+    NORMAL_TURN since its linearisation, at the end of the step."""
+    for s in range(active.shape[0]):
+        if active[s] == 0:
+            continue
+        p = params[s]
+        cross = p[C.P_LIN_COS] * kinematics[R_SIN1, s] - p[C.P_LIN_SIN] * kinematics[R_COS1, s]
+        dot = p[C.P_LIN_COS] * kinematics[R_COS1, s] + p[C.P_LIN_SIN] * kinematics[R_SIN1, s]
+        if abs(cross) > NORMAL_TURN or dot < 0.0:
+            return True
+    return False
 
 
 @njit(cache=True)
@@ -356,9 +382,12 @@ def implicit_loop(
         result = (dt_used, dt_next, rejected)
         archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-        if changed:
+        if changed or normal_turned(active, model[1][1], kinematics):
             switch(q, model[1], model[0], treatment)
             D.refresh_operators(code, base, model[0], n)
+            if not changed:
+                ints[I_SWITCHES] -= 1
+                ints[I_TURNS] += 1
         if ints[I_TRIES] > 0:  # after a cut step, the user's step again
             clock[K.C_STEP] = clock[K.C_STEP0]
             ints[I_TRIES] = 0

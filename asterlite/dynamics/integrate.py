@@ -223,6 +223,7 @@ def integrate(
         ints = memory[3][5]
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
         info["reintegrated_steps"] = int(ints[IS.I_CUTS])
+        info["relinearisations"] = int(ints[IS.I_TURNS])
     if scheme in ("ADAPT_ORDRE1", "ADAPT_ORDRE2"):
         kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
