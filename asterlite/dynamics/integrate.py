@@ -294,7 +294,8 @@ class StepBudget:
             f"of {clock[K.C_END]:.6g} reached ({int(counters[K.K_REJECTED])} rejected, "
             f"smallest step {clock[K.C_MIN_STEP]:.3g}); the adaptive step collapsed, as "
             "it does on stick-slip or stiff contact switches: raise PAS_MINI, loosen "
-            "TOLERANCE, or use a fixed-step scheme (DIFF_CENTRE, NEWMARK)"
+            "TOLERANCE, give ALPHA (a floor under the error scale of modes nearly at rest), "
+            "or use a fixed-step scheme (DIFF_CENTRE, NEWMARK)"
         )
 
     def check_archive(self, capacity: int, row_bytes: int, pas_arch: int, clock, counters):
