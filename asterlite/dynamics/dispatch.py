@@ -22,6 +22,7 @@ from __future__ import annotations
 from numba import njit
 
 from asterlite.dynamics import implicit as I
+from asterlite.dynamics import kernel as K
 from asterlite.dynamics import scheme_adapt_ordre1 as A1
 from asterlite.dynamics import scheme_adapt_ordre2 as A2
 from asterlite.dynamics import scheme_devoge as DV
@@ -29,6 +30,7 @@ from asterlite.dynamics import scheme_diff_centre as DC
 from asterlite.dynamics import scheme_newmark as N
 from asterlite.dynamics import scheme_runge_kutta as RK
 from asterlite.dynamics import scheme_trbdf2 as TR
+from asterlite.dynamics.forces import loads_ready
 
 NEWMARK, TRBDF2, DEVOGE, DIFF_CENTRE, RUNGE_KUTTA, ADAPT_ORDRE1, ADAPT_ORDRE2 = range(7)
 CODES = {
@@ -115,3 +117,15 @@ def devoge_operators(mem, smem, lin, n):
             invm_k[i, j] = sk
     if smem[DV.S_READY] == 1.0:
         DV.update_implicit_operators(invm_c, h1, h2, smem[DV.S_HDT], False)
+
+
+@njit(cache=True, inline="always")
+def before_step(clock, counters, model, archive):
+    """The checks a loop makes before each step: 0 to go on, else the
+    status to return (archive full, pause, next load window)."""
+    paused = K.pause_status(counters, archive[0])
+    if paused:
+        return paused
+    if not loads_ready(clock, model[2]):
+        return K.STATUS_LOADS
+    return 0

@@ -69,7 +69,6 @@ from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import add_generalized_force, local_state, obstacle_gap
-from asterlite.dynamics.forces import loads_ready
 
 EPS = np.finfo(np.float64).eps
 CONTACT_FORCE = EPS  # code_aster's r8prem: a shock is in contact above this force
@@ -343,11 +342,9 @@ def implicit_loop(
     n = state[0].shape[0]
     balance = E.is_active(energy)
     while K.unfinished(clock, counters, eps):
-        paused = K.pause_status(counters, archive[0])
+        paused = D.before_step(clock, counters, model, archive)
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
-            return K.STATUS_LOADS
         save(clock, counters, state, base, treatment, clock_copy, counters_copy)
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = D.scheme_step(

@@ -32,7 +32,7 @@ from numba import njit
 
 from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import loads_ready, multiplier_at
+from asterlite.dynamics.forces import multiplier_at
 from asterlite.dynamics.formula import run_program
 from asterlite.dynamics.model import (
     PROL_CONSTANT,
@@ -154,18 +154,6 @@ def update_linear(lin, rot, t):
     flag[0] = 0
 
 
-@njit(cache=True, inline="always")
-def before_step(clock, counters, model, instants, eps, archive):
-    """The checks every loop makes before a step: 0 to go on, else the
-    status to return (archive full, pause, next load window)."""
-    paused = K.pause_status(counters, archive[0])
-    if paused:
-        return paused
-    if not loads_ready(clock, model[2]):
-        return K.STATUS_LOADS
-    return 0
-
-
 @njit(cache=True)
 def rotating_loop(code, clock, counters, state, memory, model, instants, pas_arch, eps, archive):
     """The time loop of the scheme ``code`` (:mod:`asterlite.dynamics.dispatch`)
@@ -174,7 +162,7 @@ def rotating_loop(code, clock, counters, state, memory, model, instants, pas_arc
     base, rot = (memory[0], memory[1], memory[2]), memory[3]
     n = state[0].shape[0]
     while K.unfinished(clock, counters, eps):
-        paused = before_step(clock, counters, model, instants, eps, archive)
+        paused = D.before_step(clock, counters, model, archive)
         if paused:
             return paused
         t, dt = K.plan_step(clock, counters, instants, eps)
