@@ -20,6 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from asterlite.errors import Location, UnsupportedError
 from asterlite.lang.values import FactorDict
@@ -53,6 +54,16 @@ class NewCall:
     command: str
     kwargs: dict
     name_hint: str
+
+
+class _Result:
+    """Stands for the concept a translated call makes, in the calls made after it."""
+
+    def __repr__(self) -> str:
+        return "<the call's result>"
+
+
+RESULT = _Result()
 
 
 def text_of(value) -> str:
@@ -132,6 +143,10 @@ class Env:
     # mesh node name -> a node group holding exactly that node (None: none known)
     node_group: Callable[[str], str | None] | None = None
     notes: list[Note] = field(default_factory=list)
+    # the code_aster version the deck was written for (asterlite.legacy.version)
+    version: int = 17
+    # groups standing for the nodes and cells the deck names (asterlite.legacy.nodes)
+    legacy_groups: Any = None
 
     def where(self, level=None, keyword: str | None = None) -> Location | None:
         """The best location of ``keyword`` in ``level`` (or of the call)."""
@@ -146,9 +161,14 @@ class Env:
     def note(self, old: str, new: str, level=None, keyword: str | None = None) -> None:
         self.notes.append(Note(old, new, self.where(level, keyword)))
 
-    def group_of(self, node) -> str | None:
-        """The node group standing for the mesh node ``node`` (a literal name)."""
-        if self.node_group is None or not isinstance(node, str):
+    def group_of(self, node, cells: bool = False) -> str | None:
+        """The node group standing for the mesh node ``node`` (a literal name),
+        or with ``cells`` the cell group standing for the cell ``node``."""
+        if not isinstance(node, str):
+            return None
+        if self.legacy_groups is not None:
+            return self.legacy_groups.group_of(node, cells)
+        if self.node_group is None or cells:
             return None
         return self.node_group(node)
 
@@ -165,6 +185,9 @@ class Translation:
     command: str
     kwargs: dict
     notes: list[Note]
+    # calls to make on the result once the command ran (DEFI_GROUP on a mesh read):
+    # each NewCall is given the result as its reused concept
+    after: list[NewCall] = field(default_factory=list)
 
 
 # -------------------------------------------------------------------- trees

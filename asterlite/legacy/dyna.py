@@ -74,6 +74,8 @@ ITMI_TO_TOP = ("BASE_ELAS_FLUI", "NUME_VITE_FLUI")
 ITMI_DROPPED = ("ETAT_STAT", "PREC_DUREE", "CHOC_FLUI", "NB_MODE", "NB_MODE_FLUI", "TS_REG_ETAB")
 # legacy shock keywords of the fluid film model, which code_aster 17 dropped
 FLUID_FILM = ("LAME_FLUIDE", "ALPHA", "BETA", "CHI", "DELTA")
+# top-level keywords of the film's iterations (code_aster 10-11), PARA_LAME_FLUI since 12
+FILM_ITERATIONS = ("NMAX_ITER", "RESI_RELA", "LAMBDA")
 # precision keywords with no modern place (ARCHIVAGE of a tran_gene)
 ARCHIVE_DROPPED = ("CRITERE", "PRECISION")
 LEGACY_RK_TOLERANCE = 1.0e-3
@@ -105,6 +107,8 @@ def translate_dyna_tran_modal(kwargs: dict, env: Env) -> Translation:
 
 def is_legacy_dyna_vibra(kwargs: dict, env: Env) -> bool:
     """A DYNA_VIBRA call written before COMPORTEMENT (code_aster 13 to 14)."""
+    if "COMPORTEMENT" in kwargs:
+        return False
     if any(k in kwargs for k in LEGACY_VIBRA_FAMILIES):
         return True
     increment = _only(kwargs.get("INCREMENT"))
@@ -113,9 +117,8 @@ def is_legacy_dyna_vibra(kwargs: dict, env: Env) -> bool:
     scheme = _only(kwargs.get("SCHEMA_TEMPS"))
     if scheme and lit(scheme.get("SCHEMA")) in SCHEME_VALUES:  # EULER (code_aster 13-14)
         return True
-    return any(
-        "NOEUD" in occurrence for occurrence in _all(kwargs.get("EXCIT"))
-    )  # a support named by a mesh node
+    # a support named by a mesh node alone is code_aster 15 syntax (asterlite.legacy.v15)
+    return False
 
 
 def translate_dyna_vibra(kwargs: dict, env: Env) -> Translation:
@@ -155,6 +158,9 @@ def _gene_transient(kw: dict, env: Env, command: str, default_scheme: str) -> di
         elif key in DAMPING_KEYS:
             out.setdefault("AMOR_MODAL", factor({}))[key] = value
             env.note(f"{command}/{key}", f"AMOR_MODAL=_F({key}=...)", None, key)
+        elif key in FILM_ITERATIONS:  # code_aster 10-11: the fluid film's iterations
+            out.setdefault("PARA_LAME_FLUI", factor({}))[key] = value
+            env.note(f"{command}/{key}", f"PARA_LAME_FLUI=_F({key}=...)", None, key)
         elif key in ("METHODE", "SCHEMA_TEMPS"):
             out["SCHEMA_TEMPS"] = scheme
         elif key in NONLINEAR_FAMILIES:
@@ -367,7 +373,15 @@ def _buckling_curves(level: dict, env: Env, occurrence: dict) -> None:
 
 def _drop_fluid_film(level: dict, env: Env, occurrence: dict) -> None:
     if lit(level.get("LAME_FLUIDE")) == "OUI":
-        env.unsupported("CHOC/LAME_FLUIDE='OUI' (fluid film) has no modern equivalent", occurrence)
+        # no code_aster 17 equivalent: kept as asterlite's hidden DIS_CHOC keywords,
+        # which DYNA_VIBRA runs with code_aster 10-12's EULER (dynamics.fluid_film)
+        env.note(
+            "CHOC/LAME_FLUIDE='OUI' (fluid film, removed in code_aster 15)",
+            "COMPORTEMENT/LAME_FLUIDE, ALPHA, BETA, CHI, DELTA (asterlite extension)",
+            occurrence,
+            "LAME_FLUIDE",
+        )
+        return
     for key in pop_keys(level, FLUID_FILM):
         env.note(f"CHOC/{key}", "(removed: the fluid film model is gone)", occurrence, key)
 
@@ -389,16 +403,19 @@ def node_groups(level: dict, renames: dict, env: Env, path: str, required: bool 
     for old in present:
         value = lit(level[old])
         names = value if isinstance(value, (list, tuple)) else (value,)
-        found = [env.group_of(name) for name in names]
+        cells = renames[old].startswith("GROUP_MA")
+        found = [env.group_of(name, cells) for name in names]
         if None in found:
             if not required:
                 return level
             name = names[found.index(None)]
             shown = name if name is not NOT_LITERAL else getattr(level[old], "text", "?")
+            kind, create = ("cell", "CREA_GROUP_MA") if cells else ("node", "CREA_GROUP_NO")
             env.unsupported(
-                f"{path}/{old}={shown!r}: code_aster 17 takes node groups here and the "
-                "run's meshes have no group holding just that node (add one with "
-                f"DEFI_GROUP(CREA_GROUP_NO=_F(NOM=..., NOEUD={shown!r})) and use GROUP_NO)",
+                f"{path}/{old}={shown!r}: code_aster 17 takes {kind} groups here and the "
+                f"run's meshes have no group holding just that {kind} (add one with "
+                f"DEFI_GROUP({create}=_F(NOM=..., {old.rstrip('_12')}={shown!r})) and use "
+                f"{renames[old]})",
                 level,
                 old,
             )
@@ -412,9 +429,10 @@ def node_groups(level: dict, renames: dict, env: Env, path: str, required: bool 
         if key in locations:
             new.keyword_locations[name] = locations[key]
     for old in present:
+        kind = "cell" if renames[old].startswith("GROUP_MA") else "node"
         env.note(
-            f"{path}/{old}={lit(level[old])!r} (mesh node)",
-            f"{renames[old]}={groups[old]!r} (the mesh's group of that node)",
+            f"{path}/{old}={lit(level[old])!r} (mesh {kind})",
+            f"{renames[old]}={groups[old]!r} (the group of just that {kind})",
             level,
             old,
         )

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from asterlite.legacy import dyna, misc, modes
+from asterlite.legacy import dyna, misc, modes, v15
 from asterlite.legacy.base import Env, Translation
 
 OWN = "own"  # the legacy command's own catalogue checks the call as written
@@ -36,12 +36,40 @@ class LegacyForm:
             return None
         return self.translate(kwargs, env)
 
-    def legacy_catalogue(self, own):
+    def legacy_catalogue(self, own, kwargs=None, env=None):
         """The catalogue a legacy call is validated against before translating."""
         found = self._legacy_catalogue
         if found == OWN:
             return own
         return found() if callable(found) else found
+
+
+class FirstOf(LegacyForm):
+    """The first of several legacy forms of a command whose ``detect`` accepts the call
+    (a command that changed more than once: DYNA_VIBRA of code_aster 13 and of 15)."""
+
+    def __init__(self, *forms: LegacyForm):
+        self.forms = forms
+        super().__init__(self._translate, detect=lambda kw, env: self._form(kw, env) is not None)
+
+    def _form(self, kwargs: dict, env: Env) -> LegacyForm | None:
+        for form in self.forms:
+            if form.detect is None or form.detect(kwargs, env):
+                return form
+        return None
+
+    def _translate(self, kwargs: dict, env: Env) -> Translation | None:
+        form = self._form(kwargs, env)
+        return None if form is None else form.translate(kwargs, env)
+
+    def legacy_catalogue(self, own, kwargs=None, env=None):
+        form = self._form(kwargs or {}, env) if env is not None else None
+        return None if form is None else form.legacy_catalogue(own, kwargs, env)
+
+
+def _v15(command_translate=v15.translate_call, detect=v15.is_v15_call) -> LegacyForm:
+    """A code_aster 15 form (NOEUD/MAILLE...), checked by today's catalogue once translated."""
+    return LegacyForm(command_translate, detect=detect)
 
 
 def _legacy_dyna_vibra():
@@ -51,10 +79,18 @@ def _legacy_dyna_vibra():
 
 
 DYNA_TRAN_MODAL = LegacyForm(dyna.translate_dyna_tran_modal, legacy_catalogue=OWN)
-DYNA_VIBRA = LegacyForm(
-    dyna.translate_dyna_vibra, detect=dyna.is_legacy_dyna_vibra, legacy_catalogue=_legacy_dyna_vibra
+DYNA_VIBRA = FirstOf(
+    LegacyForm(
+        dyna.translate_dyna_vibra,
+        detect=dyna.is_legacy_dyna_vibra,
+        legacy_catalogue=_legacy_dyna_vibra,
+    ),
+    _v15(v15.translate_dyna_vibra, v15.is_v15_dyna_vibra),
 )
 MODE_ITER_SIMULT = LegacyForm(modes.translate_mode_iter_simult, legacy_catalogue=OWN)
 MODE_ITER_INV = LegacyForm(modes.translate_mode_iter_inv, legacy_catalogue=OWN)
 LIRE_MAILLAGE = LegacyForm(misc.translate_lire_maillage, detect=misc.is_legacy_lire_maillage)
+# code_aster 15: NOEUD/MAILLE where code_aster 17 takes groups, keywords that had no effect
+V15_ENTITIES = _v15()
+CREA_RESU = _v15(v15.translate_crea_resu, v15.is_v15_crea_resu)
 START = LegacyForm(misc.translate_start, detect=misc.is_legacy_start)

@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+from asterlite.legacy import v15
 from asterlite.legacy.base import NOT_LITERAL, Env, Translation, lit
 
 HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
@@ -24,6 +25,10 @@ def _is_text_mesh(path) -> bool:
 
 
 def is_legacy_lire_maillage(kwargs: dict, env: Env) -> bool:
+    return _format_missing(kwargs, env) or any(v15.mesh_creations(kwargs, env))
+
+
+def _format_missing(kwargs: dict, env: Env) -> bool:
     if "FORMAT" in kwargs or env.unit_path is None:
         return False
     unit = lit(kwargs.get("UNITE", DEFAULT_MESH_UNIT))
@@ -34,11 +39,17 @@ def is_legacy_lire_maillage(kwargs: dict, env: Env) -> bool:
 
 
 def translate_lire_maillage(kwargs: dict, env: Env) -> Translation:
-    env.note(
-        "LIRE_MAILLAGE without FORMAT on an ASTER text mesh (legacy default 'ASTER')",
-        "LIRE_MAILLAGE(FORMAT='ASTER')",
-    )
-    return Translation("LIRE_MAILLAGE", {"FORMAT": "ASTER", **kwargs}, env.notes)
+    """FORMAT written out on a text mesh; the groups standing for the nodes and
+    cells a legacy deck names created on the mesh read (a DEFI_GROUP after it)."""
+    out = dict(kwargs)
+    if _format_missing(kwargs, env):
+        env.note(
+            "LIRE_MAILLAGE without FORMAT on an ASTER text mesh (legacy default 'ASTER')",
+            "LIRE_MAILLAGE(FORMAT='ASTER')",
+        )
+        out = {"FORMAT": "ASTER", **kwargs}
+    groups = v15.mesh_groups_call(kwargs, env)
+    return Translation("LIRE_MAILLAGE", out, env.notes, after=[groups] if groups else [])
 
 
 def is_legacy_start(kwargs: dict, env: Env) -> bool:

@@ -20,8 +20,9 @@ from asterlite.catalog import load_catalogue
 from asterlite.errors import AsterliteError, Location
 from asterlite.lang import parse_deck
 from asterlite.lang.values import FactorDict
-from asterlite.legacy.base import Env, NewCall, Note, NotPortable, Src, literal_text
-from asterlite.legacy.nodes import group_resolver
+from asterlite.legacy.base import RESULT, Env, NewCall, Note, NotPortable, Src, literal_text
+from asterlite.legacy.nodes import LegacyGroups, group_resolver
+from asterlite.legacy.version import deck_version, files_version
 
 LINE_LIMIT = 99
 INDENT = "    "
@@ -341,9 +342,20 @@ def _legacy_calls(tree):
 
 
 def port_text(
-    text: str, filename: str = "deck.comm", unit_path=None, node_group=None
+    text: str,
+    filename: str = "deck.comm",
+    unit_path=None,
+    node_group=None,
+    legacy_groups=None,
+    version: int | None = None,
 ) -> PortResult:
-    """The deck ``text`` with its legacy calls rewritten in current syntax."""
+    """The deck ``text`` with its legacy calls rewritten in current syntax.
+
+    ``version``: the code_aster version the deck was written for (default:
+    detected from ``text``); ``legacy_groups``: the groups standing for the
+    nodes and cells it names (:class:`asterlite.legacy.nodes.LegacyGroups`)."""
+    if version is None:
+        version = deck_version(text)
     module = parse_deck(text, filename)
     reader = _Reader(text, filename, module.lines, _constants(module.tree))
     result = PortResult(text)
@@ -359,6 +371,8 @@ def port_text(
                 dict(keywords.keyword_locations),
                 unit_path=unit_path,
                 node_group=node_group,
+                version=version,
+                legacy_groups=legacy_groups,
             )
             translation = catalogue.compat_syntax(keywords, env)
         except (NotPortable, AsterliteError) as reason:
@@ -371,6 +385,15 @@ def port_text(
         hoisted: list[str] = []
         kwargs = _hoist(translation.kwargs, hoisted, names, indent)
         new_text = _format_call(translation.command, kwargs, indent)
+        if translation.after:
+            target = re.search(r"([A-Za-z_]\w*)\s*=\s*$", text[line_start:start])
+            if target is None:
+                result.skipped.append(
+                    f"{Path(filename).name}:{line}: {name} left as written: its result is "
+                    "not assigned to a name, which the calls after it need"
+                )
+                continue
+            edits.append(_after_edit(text, end, target.group(1), translation.after, indent))
         if hoisted:
             edits.append((line_start, line_start, "".join(hoisted)))
         edits.append((start, end, new_text))
@@ -379,6 +402,19 @@ def port_text(
         text = text[:start] + new_text + text[end:]
     result.text = text
     return result
+
+
+def _after_edit(text: str, end: int, target: str, calls: list, indent: str):
+    """The statements ``target = COMMAND(reuse=target, ...)`` written on the lines
+    after the statement ending at ``end``."""
+    statements = []
+    for call in calls:
+        kwargs = {k: Src(target) if v is RESULT else v for k, v in call.kwargs.items()}
+        statements.append(f"{indent}{target} = {_format_call(call.command, kwargs, indent)}\n")
+    line_end = text.find("\n", end)
+    if line_end < 0:
+        return (len(text), len(text), "\n" + "".join(statements))
+    return (line_end + 1, line_end + 1, "".join(statements))
 
 
 def input_units(deck: Path) -> dict:
@@ -398,14 +434,37 @@ def unit_resolver(deck: Path):
     return units.get if units else None
 
 
-def port_file(deck: Path) -> PortResult:
+def deck_files(deck: Path) -> list[Path]:
+    """The deck files run with ``deck`` (its .export's), ``deck`` included."""
+    from asterlite.runtime.export import read_export
+
+    export = deck.with_suffix(".export")
+    files = [deck]
+    if export.exists():
+        try:
+            files += [f for f in read_export(export).deck_files if f.resolve() != deck.resolve()]
+        except AsterliteError:
+            pass
+    return files
+
+
+def port_file(deck: Path, aster_version: int | None = None) -> PortResult:
+    """``deck`` ported, read as the run of its .export reads it: the same version
+    (that of the oldest deck file, or ``aster_version``) and the same groups."""
     text = deck.read_text(encoding="utf-8", errors="replace")
+    from asterlite.legacy.v15 import named_entities
+
     units = input_units(deck)
+    texts = [f.read_text(encoding="utf-8", errors="replace") for f in deck_files(deck)]
+    groups = LegacyGroups(units.values(), texts, named_entities(texts))
+    version = aster_version or files_version(deck_files(deck))
     return port_text(
         text,
         str(deck),
         unit_path=units.get if units else None,
         node_group=group_resolver(units.values()),
+        legacy_groups=groups,
+        version=version,
     )
 
 

@@ -13,8 +13,10 @@ from __future__ import annotations
 from asterlite.catalog import load_catalogue, validate
 from asterlite.errors import UnsupportedError
 from asterlite.lang.values import CallSite, FactorDict
-from asterlite.legacy.base import Env, NewCall, Translation
-from asterlite.legacy.nodes import group_resolver
+from asterlite.legacy.base import RESULT, Env, NewCall, Translation
+from asterlite.legacy.nodes import LegacyGroups
+from asterlite.legacy.v15 import named_entities
+from asterlite.legacy.version import session_version
 
 
 def _unit_path(session):
@@ -27,20 +29,62 @@ def _unit_path(session):
     return resolve
 
 
+class ModernCall:
+    """What a legacy call became: ``command, catalogue, kwargs = modern``, and
+    :meth:`finish`, to give its result to the calls the translation makes after it."""
+
+    def __init__(self, command, catalogue, kwargs, after, session, site):
+        self.command, self.catalogue, self.kwargs = command, catalogue, kwargs
+        self.after, self.session, self.site = after, session, site
+
+    def __iter__(self):
+        return iter((self.command, self.catalogue, self.kwargs))
+
+    def finish(self, result):
+        """Run the follow-up calls on ``result`` (each reuses it); return it."""
+        from asterlite.runtime.session import CommandProxy
+
+        for call in self.after:
+            site = CallSite(location=self.site.location)
+            kwargs = {k: result if v is RESULT else v for k, v in call.kwargs.items()}
+            kwargs = run_new_calls(kwargs, self.session, site)
+            made = CommandProxy(call.command, self.session).deck_call([], kwargs, site)
+            result = made if kwargs.get("reuse") is result else result
+        return result
+
+
+def legacy_groups(session) -> LegacyGroups:
+    """The groups standing for the mesh nodes and cells the run's decks name (one per run)."""
+    found = getattr(session, "_legacy_groups", None)
+    if found is None:
+        texts = [_text(path) for path in session.run.deck_files]
+        found = LegacyGroups(session.run.units.values(), texts, named_entities(texts))
+        session._legacy_groups = found
+    return found
+
+
+def _text(path) -> str:
+    try:
+        return path.read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return ""
+
+
 def translate_call(catalogue, kwargs: dict, site: CallSite, session, reuse=None):
-    """The modern (command, catalogue, kwargs) of a call, or None if it is not legacy."""
+    """The :class:`ModernCall` of a call, or None if it is not legacy."""
     compat = catalogue.compat_syntax
     env = Env(
         catalogue.nom,
         site.location,
         dict(site.keyword_locations),
         unit_path=_unit_path(session),
-        node_group=group_resolver(session.run.units.values()),
+        version=session_version(session),
+        legacy_groups=legacy_groups(session),
     )
     detect = getattr(compat, "detect", None)
     if detect is not None and not detect(kwargs, env):
         return None
-    legacy = getattr(compat, "legacy_catalogue", lambda own: None)(catalogue)
+    legacy = _legacy_catalogue(compat, catalogue, kwargs, env)
     if legacy is not None:
         validate(legacy, kwargs, site, reuse=reuse)
     translation: Translation | None = compat(kwargs, env)
@@ -52,7 +96,12 @@ def translate_call(catalogue, kwargs: dict, site: CallSite, session, reuse=None)
     if modern is None:
         raise UnsupportedError(f"command {translation.command} is not supported", site.location)
     kwargs = run_new_calls(translation.kwargs, session, CallSite(location=site.location))
-    return translation.command, modern, kwargs
+    return ModernCall(translation.command, modern, kwargs, translation.after, session, site)
+
+
+def _legacy_catalogue(compat, own, kwargs: dict, env: Env):
+    found = getattr(compat, "legacy_catalogue", None)
+    return None if found is None else found(own, kwargs, env)
 
 
 def run_new_calls(value, session, site: CallSite):

@@ -188,3 +188,165 @@ def mode_field(basis, name: str, nume_ordre=1, para: str = "NUME_ORDRE") -> Fiel
     orders = np.arange(1, basis.n_modes + 1) if orders is None else orders
     position = order_position(orders, nume_ordre, "mode")
     return FieldValues(basis.numbering, np.array(basis.shapes[:, position], dtype=float))
+
+
+# ------------------------------------------------ tran_gene nonlinearities
+# code_aster 15's Python access to a tran_gene's localized nonlinearities
+# (LIST_ARCH, VARI_INTERNE, FORCE_NORMALE, FORCE_AXIALE, FORCE_RELATION):
+# nonlinearities are numbered from 1 in COMPORTEMENT order, and each archives
+# a fixed number of internal variables (VINT1..) per instant.
+
+# code_aster's integer code of each relation in the result's nonlinearity
+# types (sd_nl .TYPE) and its number of internal variables (NBVARINT_*)
+NONLINEARITY_CODES = {
+    "DIS_CHOC": 1,
+    "FLAMBAGE": 2,
+    "ANTI_SISM": 3,
+    "DIS_VISC": 4,
+    "DIS_ECRO_TRAC": 5,
+    "ROTOR_FISS": 6,
+    "COUPLAGE_EDYOS": 7,
+    "RELA_EFFO_DEPL": 8,
+    "RELA_EFFO_VITE": 9,
+}
+INTERNAL_VARIABLE_COUNTS = {
+    "DIS_CHOC": 20,
+    "FLAMBAGE": 12,
+    "ANTI_SISM": 8,
+    "DIS_VISC": 11,
+    "DIS_ECRO_TRAC": 20,
+    "ROTOR_FISS": 3,
+    "RELA_EFFO_DEPL": 3,
+    "RELA_EFFO_VITE": 3,
+    "CHOC_ELAS_TRAC": 8,
+}
+
+# What VARI_INTERNE prints for each column (short labels, code_aster's order)
+_VINT_LABELS = {
+    "DIS_CHOC": (
+        "F_NORMAL F_TANGE1 F_TANGE2 DXLOC_N1 DYLOC_N1 DZLOC_N1 DXLOC_N2 DYLOC_N2 DZLOC_N2 "
+        "V_NORMAL V_TANGE1 V_TANGE2 IND_ADHE VINT_FR1 VINT_FR2 VINT_FR3 VINT_FR4 VINT_FR5 "
+        "VINT_FR6 VINT_FR7"
+    ),
+    "FLAMBAGE": (
+        "F_NORMAL DXLOC_N1 DYLOC_N1 DZLOC_N1 DXLOC_N2 DYLOC_N2 DZLOC_N2 V_NORMAL ENFO_PLA "
+        "RIGI_P_F ENFO_MAX AMOR_P_F"
+    ),
+    "ANTI_SISM": "F_AXIAL DXLOC_N1 DYLOC_N1 DZLOC_N1 DXLOC_N2 DYLOC_N2 DZLOC_N2 V_NORMAL",
+    "DIS_VISC": (
+        "DXLOC_N1 DYLOC_N1 DZLOC_N1 DXLOC_N2 DYLOC_N2 DZLOC_N2 V_AXIALE F_AXIALE EPS_VISQ "
+        "D_AXIALE PUISSANC"
+    ),
+    "DIS_ECRO_TRAC": (
+        "DXLOC_N1 DYLOC_N1 DZLOC_N1 DXLOC_N2 DYLOC_N2 DZLOC_N2 FXLOC FYLOC FZLOC DXLOC DYLOC "
+        "DZLOC PUISSANC PCUM DXPLOC DYPLOC DZPLOC FXCINE FYCINE FZCINE"
+    ),
+    "ROTOR_FISS": "PHI_DEGR F_TANGE1 F_TANGE2",
+    "RELA_EFFO_DEPL": "DCMP_N1 FCMP_LOC IND_NONZ",
+    "RELA_EFFO_VITE": "VCMP_N1 FCMP_LOC IND_NONZ",
+    "CHOC_ELAS_TRAC": "F_AXIAL LONGUEUR DXLOC_N1 DYLOC_N1 DZLOC_N1 DXLOC_N2 DYLOC_N2 DZLOC_N2",
+}
+
+
+def archived_instants(times) -> list[float]:
+    """``LIST_ARCH()``: the archived instants as a list."""
+    return [float(t) for t in np.asarray(times, dtype=float)]
+
+
+def nonlinearity_position(shocks, inoli) -> int:
+    """The 0-based position of nonlinearity ``inoli`` (1-based; -1: the first)."""
+    if not isinstance(inoli, (int, np.integer)) or isinstance(inoli, bool):
+        raise CommandError(f"the nonlinearity index must be an integer, got {inoli!r}")
+    if inoli == -1:
+        emit("Nonlinearity index not specified, by default the first nonlinearity is considered.")
+        inoli = 1
+    if not shocks:
+        raise CommandError("linear calculation: the result has no nonlinearity to read")
+    if not 1 <= inoli <= len(shocks):
+        raise CommandError(
+            f"nonlinearity index {inoli}: it must lie between 1 and {len(shocks)}, "
+            "the number of nonlinearities"
+        )
+    return int(inoli) - 1
+
+
+def internal_variable_count(history) -> int:
+    """How many internal variables code_aster archives for this relation."""
+    count = INTERNAL_VARIABLE_COUNTS.get(history.relation)
+    if count is None:
+        raise CommandError(f"{history.relation}: no internal variables are archived")
+    missing = [k for k in range(1, count + 1) if f"VINT{k}" not in history.fields]
+    if missing:
+        raise CommandError(
+            f"{history.relation} {history.name}: internal variable VINT{missing[0]} is not stored"
+        )
+    return count
+
+
+def internal_variables(history) -> np.ndarray:
+    """(n_archived, n_vint): the internal variables of one nonlinearity."""
+    count = internal_variable_count(history)
+    columns = [np.asarray(history.fields[f"VINT{k}"], dtype=float) for k in range(1, count + 1)]
+    return np.column_stack(columns)
+
+
+def _print_vint_labels(history, inoli: int) -> None:
+    labels = _VINT_LABELS[history.relation].split()
+    rule = "-" * 104
+    emit(rule)
+    emit(
+        f"Information regarding the saved internal variables for {history.relation} "
+        f"non linearity (index={inoli})"
+    )
+    emit(rule)
+    for start in range(0, len(labels), 8):
+        chunk = labels[start : start + 8]
+        emit(" | ".join(str(start + i + 1).center(10) for i in range(len(chunk))))
+        emit(" | ".join(label.center(10) for label in chunk))
+        emit(rule)
+
+
+def vari_interne(shocks, inoli=-1, describe=True) -> np.ndarray:
+    """``VARI_INTERNE(inoli)``: internal variables of nonlinearity ``inoli``,
+    one row per archived instant."""
+    position = nonlinearity_position(shocks, inoli)
+    history = shocks[position]
+    values = internal_variables(history)
+    if describe:
+        _print_vint_labels(history, position + 1)
+    return values
+
+
+def _force_column(shocks, inoli, columns: dict[str, int], what: str) -> np.ndarray:
+    position = nonlinearity_position(shocks, inoli)
+    history = shocks[position]
+    if history.relation not in columns:
+        info_nonl(shocks)
+        kinds = ", ".join(columns)
+        raise CommandError(
+            f"nonlinearity {position + 1} is a {history.relation}: only {kinds} "
+            f"nonlinearities archive {what}"
+        )
+    return internal_variables(history)[:, columns[history.relation]].copy()
+
+
+# the internal variable holding each force, as code_aster 15 reads it
+NORMAL_FORCE_COLUMNS = {"DIS_CHOC": 0, "FLAMBAGE": 0}
+# DIS_ECRO_TRAC: code_aster reads column 8 (its FYLOC), kept as it does
+AXIAL_FORCE_COLUMNS = {"ANTI_SISM": 0, "CHOC_ELAS_TRAC": 0, "DIS_VISC": 7, "DIS_ECRO_TRAC": 7}
+RELATION_FORCE_COLUMNS = {"RELA_EFFO_DEPL": 1, "RELA_EFFO_VITE": 1}
+
+
+def normal_force(shocks, inoli=-1) -> np.ndarray:
+    """``FORCE_NORMALE(inoli)``: the normal force at the archived instants."""
+    return _force_column(shocks, inoli, NORMAL_FORCE_COLUMNS, "a normal force")
+
+
+def axial_force(shocks, inoli=-1) -> np.ndarray:
+    """``FORCE_AXIALE(inoli)``: the axial force at the archived instants."""
+    return _force_column(shocks, inoli, AXIAL_FORCE_COLUMNS, "an axial force")
+
+
+def relation_force(shocks, inoli=-1) -> np.ndarray:
+    """``FORCE_RELATION(inoli)``: the force of a RELA_EFFO_DEPL/VITE relation."""
+    return _force_column(shocks, inoli, RELATION_FORCE_COLUMNS, "a relation force")

@@ -1,0 +1,156 @@
+"""Which code_aster version a deck was written for: the one place that decides.
+
+A deck's version is read from its text: commands and keywords that only
+some versions had. Each marker is the *newest* version whose catalogue had
+the form (the next catalogue known to asterlite dropped it), so a deck is
+as old as its oldest marker; a deck with none is of today's version
+(:data:`CURRENT`). ``asterlite run --aster-version N`` overrides the
+detection for a whole run (:func:`session_version`).
+
+Markers come from code_aster's own catalogues: code_aster 15 is the
+``ehmoussi/code_aster`` tree (2020), code_aster 17 today's; the older ones
+from the legacy translations (:mod:`asterlite.legacy.dyna`,
+:mod:`~asterlite.legacy.modes`, :mod:`~asterlite.legacy.v11`).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from functools import lru_cache
+from pathlib import Path
+
+CURRENT = 17
+
+# command -> newest version that had it
+REMOVED_COMMANDS = {
+    "DYNA_TRAN_MODAL": 12,
+    "MODE_ITER_SIMULT": 12,
+    "MODE_ITER_INV": 12,
+    "MACRO_PROJ_BASE": 11,
+    "MACRO_MATR_ASSE": 11,
+}
+
+
+def _removed_keywords() -> dict[tuple[str, ...], int]:
+    """(command, factor..., keyword) -> newest version that had that keyword there."""
+    from asterlite.legacy import dyna, v15
+
+    found: dict[tuple[str, ...], int] = {}
+    for family in dyna.LEGACY_VIBRA_FAMILIES:  # one factor keyword per nonlinearity
+        found[("DYNA_VIBRA", family)] = 14
+    for command, factors in v15.ENTITY_KEYWORDS.items():  # mesh nodes and cells by name
+        for factor, renames in factors.items():
+            for old in renames:
+                path = (command, old) if factor is None else (command, factor, old)
+                found.setdefault(path, 15)
+    for path in v15.REMOVED_AFTER_15:
+        found.setdefault(path, 15)
+    return found
+
+
+def calls(text: str, filename: str = "deck.comm") -> Iterator[tuple[str, tuple[str, ...]]]:
+    """(command, keyword path) of every keyword of every command call in ``text``
+    (a call without keywords yields its command with an empty path)."""
+    from asterlite.lang import parse_deck
+
+    module = parse_deck(text, filename)
+    for node in module.tree.iter_subtrees():
+        if node.data != "funccall":
+            continue
+        name = _callee(node)
+        if not name or not name.isupper() or name == "_F":
+            continue
+        yield name, ()
+        yield from ((name, path) for path in _paths(node, ()))
+
+
+def _callee(node) -> str | None:
+    target = node.children[0]
+    if getattr(target, "data", None) == "var":
+        return str(target.children[0])
+    return None
+
+
+def _paths(call, prefix: tuple[str, ...]) -> Iterator[tuple[str, ...]]:
+    arguments = call.children[1] if len(call.children) > 1 else None
+    for argument in getattr(arguments, "children", None) or ():
+        if getattr(argument, "data", None) != "kwarg":
+            continue
+        key = str(argument.children[0].children[0])
+        yield (*prefix, key)
+        value = argument.children[1]
+        occurrences = [value]
+        if getattr(value, "data", None) in ("tuple", "list"):
+            occurrences = value.children
+        for occurrence in occurrences:
+            if getattr(occurrence, "data", None) == "funccall" and _callee(occurrence) == "_F":
+                yield from _paths(occurrence, (*prefix, key))
+
+
+def _text_version(text: str) -> int | None:
+    """Markers of the text itself (code_aster 11 decks, see asterlite.legacy.v11)."""
+    # every check had VALE_CALC from code_aster 12 on
+    if re.search(r"\bTEST_(RESU|TABLE|FONCTION)\s*\(", text) and "VALE_CALC" not in text:
+        return 11
+    return None
+
+
+@lru_cache(maxsize=64)
+def deck_version(text: str) -> int:
+    """The code_aster major version the deck ``text`` was written for."""
+    from asterlite.errors import AsterliteError
+
+    found = [CURRENT]
+    own = _text_version(text)
+    if own is not None:
+        found.append(own)
+    keywords = _removed_keywords()
+    try:
+        for command, path in calls(text):
+            if not path and command in REMOVED_COMMANDS:
+                found.append(REMOVED_COMMANDS[command])
+            elif (command, *path) in keywords:
+                found.append(keywords[(command, *path)])
+    except AsterliteError:  # not a deck asterlite parses: nothing to decide from
+        pass
+    return min(found)
+
+
+def files_version(paths) -> int:
+    """The version of a run: that of its oldest deck file."""
+    versions = [CURRENT]
+    for path in paths:
+        try:
+            versions.append(deck_version(Path(path).read_text(encoding="utf-8", errors="replace")))
+        except OSError:
+            continue
+    return min(versions)
+
+
+def session_version(session) -> int:
+    """The version a run's decks are read in: ``--aster-version`` if given, else detected."""
+    given = getattr(session, "aster_version", None)
+    if given:
+        return int(given)
+    cached = getattr(session, "_detected_version", None)
+    if cached is None:
+        run = getattr(session, "run", None)  # a session without decks: today's version
+        cached = files_version(getattr(run, "deck_files", ()))
+        session._detected_version = cached
+    return cached
+
+
+# ------------------------------------------------------------ what a version meant
+
+# versions whose tables named mesh nodes (code_aster 17 writes their 1-based number,
+# its meshes keeping no node names). Older versions named them too, but the decks
+# of code_aster 10-14 asterlite runs (tests/legacy_decks) were written against
+# numbers and `asterlite port` does not yet turn a FILTRE on a node name into its
+# number, so only code_aster 15 decks (their corpus) read tables by name for now.
+NODE_NAMES_IN_TABLES = (15,)
+
+
+def tables_name_nodes(session) -> bool:
+    """True when the run's tables give nodes by name (code_aster 15 decks)."""
+    return session is not None and session_version(session) in NODE_NAMES_IN_TABLES
