@@ -14,6 +14,29 @@ The package is split into single-purpose rooms:
 
 Keyword catalogues live in ``asterlite.catalogues`` (one file per command) and
 command implementations in ``asterlite.commands`` (one file per command).
+
+From Python (``docs/api.md``): ``asterlite.run(deck, output=None, **variables)``,
+``asterlite.check(deck)`` and ``asterlite.load("results.h5")``, defined in
+:mod:`asterlite.api` and imported on first use, so that ``import asterlite``
+(and ``asterlite check``) stays free of numpy and numba.
 """
 
 __version__ = "0.1.0"
+
+# the Python API, loaded from asterlite.api when first asked for
+_API = ("run", "check", "load", "RunResult", "CheckResult", "Check", "DeckNotFound")
+
+
+def __getattr__(name: str):
+    if name in _API:
+        from asterlite import api
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'asterlite' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted([*globals(), *_API])
+
+
+__all__ = ["__version__", *_API]

@@ -7,7 +7,10 @@ Built on ``medcoupling``. What is written, as code_aster lays it out:
   numbering order, so :func:`asterlite.io.med_mesh.read_med_mesh` gives the
   cells back in the same order when they were already sorted), node and cell
   names (MED keeps 16 characters), node groups and cell groups (stored as MED
-  families; medcoupling builds the families);
+  families, built here as code_aster does: one family per distinct set of
+  groups, positive numbers for nodes, negative for cells, and family 0 for
+  the entities in no group, so that readers which expect every family but
+  FAMILLE_ZERO to carry groups, such as meshio, read the file);
 - time series of nodal fields (:class:`NodalSeries`): one MED time step per
   stored instant or mode, numbered by NUME_ORDRE (``numdt``; ``numit`` is
   -1) with the instant (or the frequency, for modes) as time value, one value
@@ -190,12 +193,6 @@ def _level_mesh(mc, name: str, coords, mesh: Mesh, cells: np.ndarray, dim: int):
     return umesh
 
 
-def _group_array(mc, name: str, members) -> object:
-    array = mc.DataArrayInt(sorted(int(m) for m in members))
-    array.setName(name)
-    return array
-
-
 def med_mesh(mesh: Mesh, name: str):
     """The mesh as a ``medcoupling.MEDFileUMesh`` named ``name``."""
     mc = _medcoupling()
@@ -216,22 +213,67 @@ def med_mesh(mesh: Mesh, name: str):
         for k, cell in enumerate(cells):
             position[int(cell)] = (level, k)
     med.setNameFieldAtLevel(1, mc.DataArrayAsciiChar(_padded(mesh.node_names)))
-    _set_cell_groups(mc, med, mesh, levels, position)
-    node_groups = [_group_array(mc, g, m) for g, m in mesh.node_groups.items() if len(m)]
-    if node_groups:
-        med.setGroupsAtLevel(1, node_groups)
+    _set_families(mc, med, mesh, levels)
     return med
 
 
-def _set_cell_groups(mc, med, mesh: Mesh, levels, position) -> None:
-    for level in levels:
-        groups = []
-        for group, members in mesh.cell_groups.items():
-            here = [position[int(c)][1] for c in members if position[int(c)][0] == level]
-            if here:
-                groups.append(_group_array(mc, group, here))
-        if groups:
-            med.setGroupsAtLevel(level, groups)
+# MED's family of the entities that belong to no group
+FAMILY_ZERO = "FAMILLE_ZERO"
+
+
+def _memberships(count: int, groups: dict) -> list[tuple[str, ...]]:
+    """The sorted group names of each of ``count`` entities."""
+    held: list[list[str]] = [[] for _ in range(count)]
+    for group in sorted(groups):
+        for member in np.unique(np.asarray(groups[group], dtype=int)):
+            held[int(member)].append(group)
+    return [tuple(names) for names in held]
+
+
+def _family_name(number: int, groups: tuple[str, ...]) -> str:
+    """A unique family name: its number, then its groups (MED keeps 64 characters)."""
+    return f"FAM_{number}_{'_'.join(groups)}"[:MED_NAME_SIZE]
+
+
+def _family_numbers(memberships, families: dict, sign: int) -> list[int]:
+    """Each entity's family number, adding to ``families`` ({groups: number})
+    the sets of groups not seen yet; entities in no group get 0."""
+    numbers = []
+    for groups in memberships:
+        if not groups:
+            numbers.append(0)
+            continue
+        if groups not in families:
+            families[groups] = sign * (len(families) + 1)
+        numbers.append(families[groups])
+    return numbers
+
+
+def _set_families(mc, med, mesh: Mesh, levels) -> None:
+    """Node and cell families as code_aster writes them: one per distinct set
+    of groups (nodes 1, 2, ...; cells -1, -2, ... shared by every level), and
+    family 0 for the entities in no group. medcoupling's own ``setGroupsAtLevel``
+    gives those a family without groups, which meshio cannot read."""
+    node_groups = {g: m for g, m in mesh.node_groups.items() if len(m)}
+    node_families: dict[tuple[str, ...], int] = {}
+    numbers = _family_numbers(_memberships(len(mesh.node_names), node_groups), node_families, 1)
+    med.setFamilyFieldArr(1, mc.DataArrayInt(numbers))
+    cell_groups = {g: m for g, m in mesh.cell_groups.items() if len(m)}
+    cell_memberships = _memberships(len(mesh.cell_names), cell_groups)
+    cell_families: dict[tuple[str, ...], int] = {}
+    for level, cells in levels.items():
+        at_level = [cell_memberships[int(c)] for c in cells]
+        numbers = _family_numbers(at_level, cell_families, -1)
+        med.setFamilyFieldArr(level, mc.DataArrayInt(numbers))
+    med.addFamily(FAMILY_ZERO, 0)
+    group_families: dict[str, list[str]] = {}
+    for groups, number in [*node_families.items(), *cell_families.items()]:
+        name = _family_name(number, groups)
+        med.addFamily(name, number)
+        for group in groups:
+            group_families.setdefault(group, []).append(name)
+    for group, names in group_families.items():
+        med.setFamiliesOnGroup(group, names)
 
 
 # -- fields -------------------------------------------------------------------

@@ -51,8 +51,16 @@ SHOCK_QUANTITIES = ("max_FN", "wear_power")
 # Off by default: sound runs also take isolated tiny steps at contact events.
 MIN_STEP_RATIO = 0.0
 MEMORY_FRACTION = 0.7  # of the physical memory: the address-space cap of `asterlite converge`
-RAN = ("PASS", "NOOK")  # run statuses whose values count
+RAN = ("PASS", "NOOK", "DONE")  # run statuses whose values count
+# a scheme's ladder converges when its finest run's error is below this fraction
+# of its coarsest run's (halving the step four times divides a first-order
+# error by 16); errors this small count as converged whatever their trend
+CONVERGING_RATIO = 0.5
+NEGLIGIBLE_ERROR = 1.0e-9
 UNSTABLE, ERROR, OK = "unstable", "error", "ok"
+
+
+PLOT_PURPOSE = "converge.png (error against cost)"
 
 
 class ConvergeError(ValueError):
@@ -445,6 +453,7 @@ class Study:
     reference: Outcome | None
     reference_values: dict[str, float]
     quantity_names: list[str]
+    notes: list[str] = field(default_factory=list)  # e.g. an output not written
 
     @property
     def rows(self) -> list[Outcome]:
@@ -592,6 +601,7 @@ def format_table(study: Study) -> str:
     against = "the deck's VALE_REFE" if study.against == "reference" else "the reference run"
     lines.append(f"errors: max over {len(study.quantity_names)} quantities, relative to {against}")
     lines.append(verdict(study))
+    lines += convergence_notes(study) + study.notes
     return "\n".join(lines)
 
 
@@ -606,6 +616,37 @@ def verdict(study: Study) -> str:
         f"{best.setting.knob}={setting_text(best, study)} "
         f"({best.seconds:.4f} s integrating, {best.steps} steps, error {best.max_error:.2e})"
     )
+
+
+def convergence_notes(study: Study) -> list[str]:
+    """One line per scheme whose ladder does not converge: its error at the
+    finest setting is not clearly below its error at the coarsest, so the
+    observed orders mean nothing (chaotic impacts give O(1) errors whose
+    "orders" change sign)."""
+    notes = []
+    for scheme in dict.fromkeys(o.setting.scheme for o in study.rows):
+        runs = [
+            o
+            for o in study.rows
+            if o.setting.scheme == scheme and o.status == OK and not math.isnan(o.max_error)
+        ]
+        if len(runs) < 2:
+            continue
+        first, last = runs[0], runs[-1]
+        if last.max_error <= max(CONVERGING_RATIO * first.max_error, NEGLIGIBLE_ERROR):
+            continue
+        orders = [o.order for o in runs[1:] if not math.isnan(o.order)]
+        spread = f", observed orders {min(orders):.2f} to {max(orders):.2f}" if orders else ""
+        knob = first.setting.knob
+        notes.append(
+            f"{scheme}: the ladder does not converge: the max relative error goes from "
+            f"{first.max_error:.2e} ({knob}={setting_text(first, study)}) to {last.max_error:.2e} "
+            f"({knob}={setting_text(last, study)}){spread}; these quantities do not settle as "
+            f"the {knob} is refined, so their errors and orders are no accuracy estimate "
+            f"(chaotic impacts: compare statistics of long runs, or choose quantities with "
+            f"--quantities)"
+        )
+    return notes
 
 
 def markdown_table(study: Study) -> str:
@@ -692,9 +733,10 @@ def _cell(value) -> str:
 def plot(study: Study, path: Path) -> Path:
     """Error against integration time and against steps (log–log), one curve
     per scheme; the target as a horizontal line."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
+    from asterlite.extras import require
 
+    FigureCanvasAgg = require("matplotlib.backends.backend_agg", PLOT_PURPOSE).FigureCanvasAgg
+    Figure = require("matplotlib.figure", PLOT_PURPOSE).Figure
     figure = Figure(figsize=(10, 4.2))
     FigureCanvasAgg(figure)
     axes_time, axes_steps = figure.subplots(1, 2)
@@ -729,14 +771,26 @@ def plot(study: Study, path: Path) -> Path:
 
 def write_outputs(study: Study, directory: Path) -> list[Path]:
     """``converge.csv``, ``converge.png``, ``converge.txt`` (the printed table)
-    and ``converge.md`` (the same in Markdown) in ``directory``."""
+    and ``converge.md`` (the same in Markdown) in ``directory``. Without
+    matplotlib (the plot extra) the picture is skipped and a note in
+    ``study.notes`` (printed with the table) says how to get it."""
+    from asterlite.extras import MissingExtraError
+
     directory.mkdir(parents=True, exist_ok=True)
+    csv_path = write_csv(study, directory / "converge.csv")
+    try:
+        picture = [plot(study, directory / "converge.png")]
+    except MissingExtraError as error:
+        picture = []
+        study.notes.append(f"note: converge.png not drawn: {error.message}")
     text = directory / "converge.txt"
     text.write_text(format_table(study) + "\n", encoding="utf-8")
     markdown = directory / "converge.md"
-    markdown.write_text(markdown_table(study) + "\n\n" + verdict(study) + "\n", encoding="utf-8")
-    csv_path = write_csv(study, directory / "converge.csv")
-    return [csv_path, plot(study, directory / "converge.png"), text, markdown]
+    conclusions = [verdict(study), *convergence_notes(study)]
+    markdown.write_text(
+        markdown_table(study) + "\n\n" + "\n\n".join(conclusions) + "\n", encoding="utf-8"
+    )
+    return [csv_path, *picture, text, markdown]
 
 
 __all__ = [
@@ -745,6 +799,7 @@ __all__ = [
     "Setting",
     "Study",
     "cheapest",
+    "convergence_notes",
     "format_table",
     "ladder",
     "markdown_table",

@@ -10,6 +10,10 @@ others; a worker that dies is reported as an ERROR row too.
 With ``--scheduler`` the tasks go to an existing cluster: its workers need
 asterlite installed and must see the deck and the output folder at the same
 paths (a shared filesystem).
+
+Dask and pyarrow come with the ``sweep`` extra (``pip install
+'asterlite[sweep]'``); without them :func:`dask_client` stops with a
+:class:`~asterlite.extras.MissingExtraError` saying so, before any variant runs.
 """
 
 from __future__ import annotations
@@ -22,7 +26,10 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-STATUSES_THAT_RAN = ("PASS", "NOOK")
+from asterlite.extras import require
+
+PURPOSE = "asterlite sweep"
+STATUSES_THAT_RAN = ("PASS", "NOOK", "DONE")
 FIXED_COLUMNS = ("status", "seconds", "checks_ok", "checks_total", "message")
 TABLE_NAME = "sweep"  # DIR/sweep.csv, DIR/sweep.parquet
 
@@ -172,14 +179,22 @@ def unknown_names(deck: Path, settings: list[Setting]) -> list[str]:
     return report.unknown_overrides
 
 
+def require_extras():
+    """The ``distributed`` module, once Dask and pyarrow are known to import
+    (else a MissingExtraError naming ``asterlite[sweep]``)."""
+    require("pyarrow.parquet", PURPOSE)
+    return require("distributed", PURPOSE)
+
+
 @contextmanager
 def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator:
     """A client of an existing scheduler, or of a LocalCluster of processes
-    (one thread each: a deck run is single-threaded numerics) closed on exit."""
+    (one thread each: a deck run is single-threaded numerics) closed on exit.
+    Checks first that the sweep extra is installed (the tables need pyarrow)."""
     import logging
 
-    from distributed import Client, LocalCluster
-
+    distributed = require_extras()
+    Client, LocalCluster = distributed.Client, distributed.LocalCluster
     if scheduler:
         with Client(scheduler) as client:
             yield client
@@ -206,8 +221,7 @@ def run_sweep(
     progress: Callable[[dict], None] | None = None,
 ) -> list[dict]:
     """Run every variant on ``client``; rows in variant order."""
-    from distributed import as_completed
-
+    as_completed = require("distributed", PURPOSE).as_completed
     all_variants = variants(settings)
     deck = Path(deck).resolve()
     output_dir = Path(output_dir).resolve()
@@ -259,9 +273,8 @@ def write_csv(rows: list[dict], columns: list[str], path: Path) -> Path:
 
 
 def write_parquet(rows: list[dict], columns: list[str], path: Path) -> Path:
-    import pyarrow as pa
-    import pyarrow.parquet as pq
-
+    pa = require("pyarrow", PURPOSE)
+    pq = require("pyarrow.parquet", PURPOSE)
     arrays = {name: _arrow_column([row.get(name) for row in rows]) for name in columns}
     pq.write_table(pa.table(arrays), path)
     return path
@@ -340,6 +353,7 @@ __all__ = [
     "format_sweep_table",
     "parse_setting",
     "parse_value",
+    "require_extras",
     "run_sweep",
     "run_variant",
     "sweep_exit_code",
