@@ -100,11 +100,20 @@ def _names(field, count: int, prefix: str) -> list[str]:
 
 
 def read_med_mesh(path: Path, name: str | None = None) -> Mesh:
-    """Read mesh ``name`` (default: the first) of a MED file."""
-    mc = _medcoupling()
+    """Read mesh ``name`` (default: the first) of a MED file: validated, then
+    read in a child process whose crash on a damaged file becomes a
+    MedMeshError (:mod:`asterlite.io.med_check`)."""
+    from asterlite.io.med_check import read_isolated
+
     path = Path(path)
     if not path.is_file():
         raise MedMeshError(f"{path}: no such MED file")
+    return read_isolated(path, name, _read_here)
+
+
+def _read_here(path: Path, name: str | None) -> Mesh:
+    """The reading itself, in this process (the file is validated already)."""
+    mc = _medcoupling()
     available = med_mesh_names(path)
     if not available:
         raise MedMeshError(f"{path}: the MED file holds no mesh")
@@ -126,6 +135,8 @@ def read_med_mesh(path: Path, name: str | None = None) -> Mesh:
     coords3 = np.zeros((len(coords), 3))
     coords3[:, :dim] = coords
     n_nodes = len(coords3)
+    node_names = _names(med.getNameFieldAtLevel(1), n_nodes, "N")
+    _check_finite(path, name, coords3, node_names)
 
     # cells of each level, tagged with their MED type number for ordering
     parts = []  # (med type number, level, indices in level, aster type, connectivity)
@@ -166,7 +177,6 @@ def read_med_mesh(path: Path, name: str | None = None) -> Mesh:
         cell_names = list(raw_names)
     else:
         cell_names = [f"M{i + 1}" for i in range(n_cells)]
-    node_names = _names(med.getNameFieldAtLevel(1), n_nodes, "N")
 
     node_groups: dict[str, np.ndarray] = {}
     cell_groups: dict[str, np.ndarray] = {}
@@ -193,6 +203,19 @@ def read_med_mesh(path: Path, name: str | None = None) -> Mesh:
         dim=dim,
         title=(med.getDescription() or "").strip(),
     )
+
+
+def _check_finite(path: Path, mesh: str, coords: np.ndarray, node_names: list[str]) -> None:
+    """A NaN or infinite coordinate has no place in a mesh: name the first such node."""
+    bad = np.flatnonzero(~np.isfinite(coords).all(axis=1))
+    if bad.size:
+        node = int(bad[0])
+        coordinates = ", ".join(repr(float(v)) for v in coords[node])
+        more = f" (and {bad.size - 1} more nodes)" if bad.size > 1 else ""
+        raise MedMeshError(
+            f"{path}: mesh '{mesh}': node {node_names[node]} (number {node + 1}) has a "
+            f"non-finite coordinate ({coordinates}){more}"
+        )
 
 
 def _level_names(med, level: int, size: int) -> list[str] | None:

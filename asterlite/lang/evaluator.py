@@ -30,6 +30,8 @@ from time import monotonic
 from asterlite.errors import AsterliteError, DeckRuntimeError, Location
 from asterlite.lang import library
 from asterlite.lang import limits as guards
+from asterlite.lang.calls import bind_arguments, contains_unknown
+from asterlite.lang.imports import ImportStatements
 from asterlite.lang.library import DEEP, DIRECT, STORE, DeckModule
 from asterlite.lang.limits import Limits
 from asterlite.lang.parser import Module, node_position
@@ -98,11 +100,22 @@ class _Return(Exception):
 
 
 class _Escaped(Exception):
-    """A non-deck exception from a DeckCallable (a bug in a command): re-raised
-    unchanged by Evaluator.run rather than disguised as a deck error."""
+    """A non-deck exception from a DeckCallable (a bug in a command, a full
+    disk): re-raised by Evaluator.run rather than disguised as a deck error,
+    with the call's location as its ``deck_location`` attribute."""
 
-    def __init__(self, original: BaseException):
+    def __init__(self, original: BaseException, location: Location | None = None):
         self.original = original
+        attach_location(original, location)
+
+
+def attach_location(error: BaseException, location: Location | None) -> None:
+    """Note where in the deck a non-deck exception arose (``deck_location``)."""
+    if location is not None and getattr(error, "deck_location", None) is None:
+        try:
+            error.deck_location = location
+        except AttributeError:  # an exception type without a __dict__
+            pass
 
 
 class Frame:
@@ -142,7 +155,7 @@ class DeckFunction(DeckCallable):
         return f"<function {self.name}>"
 
 
-class Evaluator:
+class Evaluator(ImportStatements):
     """Runs parsed modules in a shared namespace.
 
     ``module_loader(name) -> dict | None`` provides importable modules beyond
@@ -175,12 +188,22 @@ class Evaluator:
 
     # ------------------------------------------------------------ public API
 
-    def run(self, module: Module) -> None:
-        """Execute a parsed deck's statements, binding names in the namespace."""
+    def run(self, module: Module, on_error=None) -> None:
+        """Execute a parsed deck's statements, binding names in the namespace.
+
+        ``on_error(error, statement)``, when given, receives the deck error of
+        a failed top-level statement, and the run goes on with the next one
+        (``asterlite check`` reports every error of a deck); it may re-raise.
+        """
         self.sources.setdefault(module.filename, module.lines)
         frame = Frame(None, None, module)
         for statement in module.tree.children:
-            self._guarded(lambda s=statement: self._exec(s, frame), statement, module)
+            try:
+                self._guarded(lambda s=statement: self._exec(s, frame), statement, module)
+            except AsterliteError as error:
+                if on_error is None or getattr(error, "fatal", False):  # e.g. time limit
+                    raise
+                on_error(error, statement)
 
     def evaluate(self, module: Module, names: dict | None = None):
         """Value of a module from :func:`parse_expression`, with extra local names."""
@@ -190,7 +213,7 @@ class Evaluator:
 
     def call_function(self, function: DeckFunction, args: list, kwargs: dict):
         """Call a deck function (from the deck or from Python)."""
-        local_names = self._bind_arguments(function, args, kwargs)
+        local_names = bind_arguments(function, args, kwargs)
         self._step()
         if self.depth >= self.limits.max_call_depth:
             raise guards.exceeded("depth of nested function calls", self.limits.max_call_depth)
@@ -218,6 +241,9 @@ class Evaluator:
             raise DeckRuntimeError(
                 "expression or calls nested too deeply", self.location(node, module)
             ) from None
+        except (OSError, MemoryError) as error:  # not a deck error: keep it, located
+            attach_location(error, self.location(node, module))
+            raise
 
     def location(self, node, module: Module) -> Location:
         line, column = node_position(node)
@@ -402,80 +428,6 @@ class Evaluator:
                 defaults[param_name.value] = self.ev(default, frame)
         return DeckFunction(name, names, defaults, body, frame, self, is_lambda)
 
-    def _bind_arguments(self, function: DeckFunction, args: list, kwargs: dict) -> dict:
-        parameters = function.parameters
-        if len(args) > len(parameters):
-            raise DeckRuntimeError(
-                f"{function.name}() takes {len(parameters)} arguments but {len(args)} were given"
-            )
-        bound = dict(zip(parameters, args, strict=False))
-        for name, value in kwargs.items():
-            if name not in parameters:
-                raise DeckRuntimeError(f"{function.name}() got an unexpected keyword '{name}'")
-            if name in bound:
-                raise DeckRuntimeError(f"{function.name}() got two values for '{name}'")
-            bound[name] = value
-        for name in parameters:
-            if name not in bound:
-                if name not in function.defaults:
-                    raise DeckRuntimeError(f"{function.name}() missing argument '{name}'")
-                bound[name] = function.defaults[name]
-        return bound
-
-    def _import_name(self, node, frame):
-        for dotted_as_name in node.children:
-            dotted, alias = dotted_as_name.children
-            parts = [token.value for token in dotted.children]
-            full_name = ".".join(parts)
-            module = self._import(full_name)
-            if alias is not None:
-                self._store(alias.value, module, frame)
-                continue
-            # "import a.b" binds a, with a.b reachable as an attribute
-            top = self._import(parts[0])
-            for depth in range(1, len(parts)):
-                parent = self._import(".".join(parts[:depth]))
-                parent.members.setdefault(parts[depth], self._import(".".join(parts[: depth + 1])))
-            self._store(parts[0], top, frame)
-
-    def _import_from(self, node, frame):
-        dotted, names = node.children
-        full_name = ".".join(token.value for token in dotted.children)
-        module = self._import(full_name)
-        if names.data == "import_star":
-            for name, value in module.public_names().items():
-                self._store(name, value, frame)
-            return
-        for import_as_name in names.children:
-            name, alias = import_as_name.children
-            self._store((alias or name).value, self._import_member(module, name.value), frame)
-
-    def _import_member(self, module: DeckModule, name: str):
-        if name in module.members:
-            return module.members[name]
-        try:
-            return self._import(f"{module.name}.{name}")
-        except DeckRuntimeError:
-            raise DeckRuntimeError(f"cannot import name '{name}' from '{module.name}'") from None
-
-    def _import(self, name: str) -> DeckModule:
-        if name in self.modules:
-            return self.modules[name]
-        if name in self._builtin_modules:
-            module = self._builtin_modules[name]()
-        else:
-            members = self.module_loader(name) if self.module_loader is not None else None
-            if members is None:
-                raise DeckRuntimeError(
-                    f"no module named '{name}' (decks may import math, numpy, code_aster "
-                    "and their own helper files)"
-                )
-            module = members if isinstance(members, DeckModule) else DeckModule(name, members)
-        self.modules[name] = module
-        return module
-
-    # ------------------------------------------------------------- names
-
     def _lookup(self, node, frame: Frame):
         name = node.children[0].value
         scope = frame
@@ -561,14 +513,19 @@ class Evaluator:
         return [self.ev(child, frame) for child in node.children]
 
     def _set(self, node, frame):
-        return {self.ev(child, frame) for child in node.children}
+        return {self._key(self.ev(child, frame)) for child in node.children}
 
     def _dict(self, node, frame):
         result = {}
         for pair in node.children:
-            key = self.ev(pair.children[0], frame)
+            key = self._key(self.ev(pair.children[0], frame))
             result[key] = self.ev(pair.children[1], frame)
         return result
+
+    def _key(self, value):
+        """A value about to be hashed (set item, dict key, index): its nesting checked."""
+        guards.check_hash_depth(value, self.limits)
+        return value
 
     def _listcomp(self, node, frame):
         comprehension = node.children[0]
@@ -583,7 +540,7 @@ class Evaluator:
         result = {}
 
         def add(inner):
-            key = self.ev(pair.children[0], inner)
+            key = self._key(self.ev(pair.children[0], inner))
             result[key] = self.ev(pair.children[1], inner)
 
         self._comprehend(loops, Frame({}, frame, frame.module), add, outer=True)
@@ -643,6 +600,8 @@ class Evaluator:
             if left is Unknown or right is Unknown:
                 return Unknown
             guards.check_binary("==", left, right, self.limits)
+            if op in ("in", "notin"):
+                self._key(left)
             result = COMPARISONS[op](left, right)
             if position + 2 < len(node.children) and not self._truth(result):
                 return result
@@ -683,6 +642,8 @@ class Evaluator:
         if left is Unknown or right is Unknown:
             return Unknown
         guards.check_binary(op, left, right, self.limits)
+        if op == "%" and isinstance(left, str):  # engine objects print neutrally
+            right = guards.deck_text_value(right)
         return (function or BINARY_OPERATORS[op])(left, right)
 
     def _truth(self, value) -> bool:
@@ -707,8 +668,8 @@ class Evaluator:
             return Unknown if Unknown in bounds else slice(*bounds)
         if node.data == "subscript_tuple":
             parts = tuple(self._index(child, frame) for child in node.children)
-            return Unknown if any(part is Unknown for part in parts) else parts
-        return self.ev(node, frame)
+            return Unknown if any(part is Unknown for part in parts) else self._key(parts)
+        return self._key(self.ev(node, frame))
 
     # ------------------------------------------------------------------ calls
 
@@ -721,23 +682,27 @@ class Evaluator:
         if isinstance(callee, DeckCallable):
             location = self.location(node, frame.module)
             site = CallSite(location, keyword_locations, assigned_name)
+            if not isinstance(callee, DeckFunction):  # commands may hash or recurse on it
+                guards.check_nesting((args, kwargs), self.limits)
             try:
                 return callee.deck_call(args, kwargs, site)
             except (AsterliteError, _Escaped, _Return, RecursionError):
                 raise
             except Exception as error:  # a bug in a command, not a deck error
-                raise _Escaped(error) from error
+                raise _Escaped(error, location) from error
         if not callable(callee):
             raise DeckRuntimeError(f"'{type(callee).__name__}' object is not callable")
         return self._call_python(callee, args, kwargs)
 
     def _call_python(self, callee, args: list, kwargs: dict):
+        if hasattr(type(getattr(callee, "__self__", None)), "deck_methods"):
+            guards.check_nesting((args, kwargs), self.limits)  # a concept's method
         policy = self._unknown_policy(callee)
         if policy != STORE:
             values = (*args, *kwargs.values())
             if any(value is Unknown for value in values):
                 return Unknown
-            if policy == DEEP and _contains_unknown(values):
+            if policy == DEEP and contains_unknown(values, _DEEP_SCAN_BUDGET):
                 return Unknown
         return callee(*args, **kwargs)
 
@@ -785,24 +750,6 @@ class Evaluator:
             else:
                 args.append(self.ev(argument, frame))
         return args, kwargs, keyword_locations, spread_unknown
-
-
-def _contains_unknown(values, budget: int = _DEEP_SCAN_BUDGET) -> bool:
-    """Whether Unknown appears in values, inside lists, tuples, sets, dicts or object arrays."""
-    np = guards.numpy_or_none()
-    pending = list(values)
-    while pending and budget > 0:
-        value = pending.pop()
-        budget -= 1
-        if value is Unknown:
-            return True
-        if isinstance(value, (list, tuple, set, frozenset)):
-            pending.extend(itertools.islice(value, budget))
-        elif isinstance(value, dict):
-            pending.extend(itertools.islice(value.values(), budget))
-        elif np is not None and isinstance(value, np.ndarray) and value.dtype == object:
-            pending.extend(itertools.islice(value.flat, budget))
-    return False
 
 
 _STATEMENTS = {

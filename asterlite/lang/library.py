@@ -71,6 +71,7 @@ def _make_print(print_hook, limits: Limits):
     @_policy(STORE)
     def deck_print(*values, sep=" ", end="\n"):
         guards.check_nested_size(values, limits)
+        values = guards.deck_text_value(values)
         hook(str(sep).join(str(value) for value in values) + str(end))
 
     deck_print.__name__ = "print"
@@ -101,12 +102,24 @@ def _make_builtins(limits: Limits) -> dict:
     def as_text(convert):
         def deck_text(*args, **kwargs):
             guards.check_nested_size(args, limits)
-            return convert(*args, **kwargs)
+            return convert(*guards.deck_text_value(args), **kwargs)
 
         deck_text.__name__ = convert.__name__
         return deck_text
 
+    def deck_set(*args):
+        if args and not isinstance(args[0], (set, frozenset, dict)):
+            args = (guards.hashable_items(args[0], limits),)
+        return set(*args)
+
+    def deck_dict(*args, **kwargs):
+        if args and not isinstance(args[0], dict):
+            pairs = guards.hashable_items(args[0], limits)
+            args = (pairs,)
+        return dict(*args, **kwargs)
+
     deck_range.__name__, deck_sum.__name__, deck_pow.__name__ = "range", "sum", "pow"
+    deck_set.__name__, deck_dict.__name__ = "set", "dict"
     return {
         "abs": abs,
         "min": min,
@@ -121,8 +134,8 @@ def _make_builtins(limits: Limits) -> dict:
         "reversed": reversed,
         "list": list,
         "tuple": tuple,
-        "dict": dict,
-        "set": set,
+        "dict": deck_dict,
+        "set": deck_set,
         "int": int,
         "float": float,
         "complex": complex,
@@ -167,6 +180,7 @@ def structural_ids(namespace: dict) -> frozenset[int]:
     ids = {id(namespace[name]) for name in STRUCTURAL_BUILTINS if name in namespace}
     ids.update(id(builtin) for builtin in (len, enumerate, zip, map, reversed, list, tuple))
     ids.update(id(builtin) for builtin in (dict, set, str, repr))
+    # the guarded versions in the namespace are structural too (above, by name)
     return frozenset(ids)
 
 
@@ -178,11 +192,24 @@ _MATH_EXCLUDED = frozenset({"factorial", "comb", "perm", "prod"})
 
 @functools.cache
 def math_members() -> dict:
-    return {
+    members = {
         name: getattr(math, name)
         for name in dir(math)
         if not name.startswith("_") and name not in _MATH_EXCLUDED
     }
+    if "lcm" in members:
+        members["lcm"] = _guarded_lcm
+    return members
+
+
+def _guarded_lcm(*integers):
+    """math.lcm, refused when its result could pass the integer size limit
+    (one C call: it could not be stopped once started)."""
+    guards.check_lcm(integers, Limits())
+    return math.lcm(*integers)
+
+
+_guarded_lcm.__name__ = "lcm"
 
 
 # -------------------------------------------------------------------- numpy
@@ -281,19 +308,45 @@ def _estimate_outer(args, kwargs) -> int:
     return math.prod(_size(a) for a in args[:2])
 
 
-def _estimate_product(args, kwargs) -> int:
-    """dot / matmul / inner: rows of the first times columns of the second."""
+def _product_shapes(args):
+    """The shapes of the two operands of dot / matmul / inner (None if not arrays)."""
     np = guards.numpy_or_none()
     if len(args) < 2:
-        return 0
-    left, right = (np.asarray(a) if isinstance(a, (list, tuple)) else a for a in args[:2])
-    if not isinstance(left, np.ndarray) or not isinstance(right, np.ndarray):
-        return max(_size(left), _size(right))
-    if left.ndim == 0 or right.ndim == 0:
-        return max(left.size, right.size)
-    rows = left.size // max(left.shape[-1], 1)
-    columns = right.size // max(right.shape[-2], 1) if right.ndim >= 2 else 1
-    return rows * columns
+        return None
+    shapes = [np.shape(a) if isinstance(a, (list, tuple, np.ndarray)) else () for a in args[:2]]
+    return shapes
+
+
+def _estimate_product(args, kwargs, name: str = "dot") -> tuple[int, int]:
+    """(result size, multiply-adds) of dot / matmul / inner, from the shapes
+    alone (numpy's rules: dot sums over a's last and b's second-to-last axis,
+    matmul broadcasts the leading axes, inner sums over both last axes)."""
+    shapes = _product_shapes(args)
+    if shapes is None:
+        return 0, 0
+    left, right = shapes
+    if not left or not right:  # a scalar factor: elementwise
+        size = math.prod(left or right)
+        return size, size
+    inner = left[-1]
+    if name == "inner":
+        result = left[:-1] + right[:-1]
+    elif len(right) == 1:
+        result = left[:-1]
+    elif name == "matmul" and len(left) > 1:
+        batch = _broadcast_batch(left[:-2], right[:-2])
+        result = batch + left[-2:-1] + right[-1:]
+    else:  # dot (and matmul of a vector by a matrix)
+        result = left[:-1] + right[:-2] + right[-1:]
+    size = math.prod(result)
+    return size, size * max(int(inner), 1)
+
+
+def _broadcast_batch(left: tuple, right: tuple) -> tuple:
+    length = max(len(left), len(right))
+    left = (1,) * (length - len(left)) + tuple(left)
+    right = (1,) * (length - len(right)) + tuple(right)
+    return tuple(max(a, b) for a, b in zip(left, right, strict=True))
 
 
 def _estimate_meshgrid(args, kwargs) -> int:
@@ -309,7 +362,50 @@ def _estimate_diag(args, kwargs) -> int:
     return size * size if flat else size
 
 
+def _estimate_diff(args, kwargs) -> int:
+    """np.diff loops n times in Python: n beyond the axis length is refused."""
+    np = guards.numpy_or_none()
+    order = int(_argument(args, kwargs, 1, "n", 1))
+    array = _argument(args, kwargs, 0, "a")
+    shape = np.shape(array) if isinstance(array, (list, tuple, np.ndarray)) else ()
+    axis = int(_argument(args, kwargs, 2, "axis", -1))
+    length = shape[axis] if shape and -len(shape) <= axis < len(shape) else 0
+    if order > max(length, 1):
+        raise DeckRuntimeError(f"numpy.diff: order n={order} exceeds the axis length {length}")
+    return _size(array)
+
+
+def _estimate_pairwise(args, kwargs) -> int:
+    """convolve / polyval: each element of one meets each of the other."""
+    return math.prod(_size(a) for a in args[:2])
+
+
+def _estimate_polyfit(args, kwargs) -> int:
+    """polyfit builds a Vandermonde matrix: points times (degree + 1)."""
+    degree = int(_argument(args, kwargs, 2, "deg", 1))
+    return _size(_argument(args, kwargs, 0, "x")) * max(degree + 1, 1)
+
+
+# linear algebra on an n x n matrix costs about n**3
+_CUBIC = frozenset("solve inv det eig eigh eigvals eigvalsh lstsq pinv matrix_rank cond".split())
+
+
+def _cubic_work(args) -> int:
+    np = guards.numpy_or_none()
+    if not args or not isinstance(args[0], (list, tuple, np.ndarray)):
+        return 0
+    shape = np.shape(args[0])
+    if len(shape) < 2:
+        return 0
+    n, m = shape[-2], shape[-1]
+    return math.prod(shape[:-2]) * max(n, m) * min(n, m) ** 2
+
+
 _ESTIMATORS = {
+    "diff": _estimate_diff,
+    "convolve": _estimate_pairwise,
+    "polyval": _estimate_pairwise,
+    "polyfit": _estimate_polyfit,
     "zeros": _estimate_shape_arg,
     "ones": _estimate_shape_arg,
     "empty": _estimate_shape_arg,
@@ -322,9 +418,6 @@ _ESTIMATORS = {
     "tile": _estimate_tile,
     "repeat": _estimate_repeat,
     "outer": _estimate_outer,
-    "dot": _estimate_product,
-    "matmul": _estimate_product,
-    "inner": _estimate_product,
     "meshgrid": _estimate_meshgrid,
     "diag": _estimate_diag,
     "kron": _estimate_outer,
@@ -348,14 +441,15 @@ def _check_dtypes(args, kwargs) -> None:
 
 
 def _input_size(args) -> int:
-    """Total size of the numpy arrays among the arguments (and in lists of them)."""
+    """Total size of the numpy arrays among the arguments and in lists of
+    them: what concatenate, stack, append... put together."""
     np = guards.numpy_or_none()
     total = 0
     for arg in args:
         if isinstance(arg, np.ndarray):
             total += arg.size
         elif isinstance(arg, (list, tuple)):
-            total += sum(a.size for a in arg[:1000] if isinstance(a, np.ndarray))
+            total += len(arg) + sum(a.size for a in arg if isinstance(a, np.ndarray))
     return total
 
 
@@ -368,9 +462,10 @@ def guard_numpy(function, name: str, limits: Limits, bound_to=None):
     @functools.wraps(function)
     def guarded(*args, **kwargs):
         _check_dtypes(args, kwargs)
+        full_args = args if bound_to is None else (bound_to, *args)
         if estimator is not None:
-            full_args = args if bound_to is None else (bound_to, *args)
             guards.check_length(estimator(full_args, kwargs), limits, f"numpy.{name} size")
+        _check_work(name, full_args, kwargs, limits)
         guards.check_length(_input_size(args), limits, f"numpy.{name} size")
         guards.check_broadcast(args, limits)
         result = function(*args, **kwargs)
@@ -380,6 +475,21 @@ def guard_numpy(function, name: str, limits: Limits, bound_to=None):
         return result
 
     return guarded
+
+
+def _check_work(name: str, args, kwargs, limits: Limits) -> None:
+    """Products and solvers: refuse a result or an amount of arithmetic
+    beyond the limits before numpy starts (it cannot be stopped midway)."""
+    work = 0
+    if name in ("dot", "matmul", "inner"):
+        size, work = _estimate_product(args, kwargs, name)
+        guards.check_length(size, limits, f"numpy.{name} size")
+    elif name in _CUBIC:
+        work = _cubic_work(args)
+    elif name in ("convolve", "polyval"):
+        work = _estimate_pairwise(args, kwargs)
+    if work > limits.max_work:
+        raise guards.exceeded(f"numpy.{name} arithmetic (operations)", limits.max_work)
 
 
 def numpy_module(limits: Limits) -> DeckModule:
@@ -465,9 +575,9 @@ def _builtin_attribute(value, name: str, limits: Limits):
     if isinstance(value, tuple):
         return getattr(value, name) if name in TUPLE_METHODS else _MISSING
     if isinstance(value, dict):
-        return getattr(value, name) if name in DICT_METHODS else _MISSING
+        return _hashing(getattr(value, name), limits) if name in DICT_METHODS else _MISSING
     if isinstance(value, (set, frozenset)):
-        return getattr(value, name) if name in SET_METHODS else _MISSING
+        return _hashing(getattr(value, name), limits) if name in SET_METHODS else _MISSING
     if isinstance(value, (int, float, complex)) and not isinstance(value, bool):
         allowed = name in NUMBER_ATTRIBUTES and hasattr(value, name)
         return getattr(value, name) if allowed else _MISSING
@@ -477,6 +587,35 @@ def _builtin_attribute(value, name: str, limits: Limits):
             found = getattr(value, name)
             return guard_numpy(found, name, limits, value) if callable(found) else found
     return _MISSING
+
+
+def _hashing(method, limits: Limits):
+    """A dict or set method with its arguments checked before they are hashed
+    (a key, or an iterable of keys or pairs, read once)."""
+
+    @_policy(STORE)
+    @functools.wraps(method)
+    def checked(*args, **kwargs):
+        checked_args = []
+        for arg in args:
+            guards.check_hash_depth(arg, limits)
+            if not isinstance(arg, (str, tuple, dict, set, frozenset)) and _iterable(arg):
+                arg = guards.hashable_items(arg, limits)
+            checked_args.append(arg)
+        return method(*checked_args, **kwargs)
+
+    return checked
+
+
+def _iterable(value) -> bool:
+    np = guards.numpy_or_none()
+    if np is not None and isinstance(value, (np.ndarray, np.generic)):
+        return False
+    return (
+        isinstance(value, (list, range))
+        or type(value).__name__.endswith("iterator")
+        or (type(value).__name__ in ("zip", "map", "enumerate", "generator", "dict_items"))
+    )
 
 
 def _guarded_extend(target: list, limits: Limits):
@@ -500,7 +639,9 @@ def _str_method(text: str, name: str, limits: Limits):
             args = (list(args[0]),) + args[1:]  # a generator must be read only once
         guards.check_nested_size((*args, *kwargs.values()), limits)
         if name == "format":
-            guards.check_format_template(text, limits)
+            guards.check_format_template(text, limits, args, kwargs)
+            args = guards.deck_text_value(tuple(args))
+            kwargs = {key: guards.deck_text_value(value) for key, value in kwargs.items()}
         guards.check_string_length(_str_result_length(text, name, args, kwargs), limits)
         return method(*args, **kwargs)
 

@@ -8,9 +8,11 @@ location; the evaluator attaches the location of the expression.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import sys
+import types
 from dataclasses import dataclass
 
 from asterlite.errors import DeckRuntimeError
@@ -25,6 +27,8 @@ class Limits:
     max_int_digits: int = 10_000  # decimal digits of an integer result
     max_string_length: int = 10_000_000  # characters of a string
     max_call_depth: int = 64  # nested calls of deck functions
+    max_nesting: int = 100  # levels of containers inside containers (tuples in tuples...)
+    max_work: int = 10_000_000_000  # arithmetic of one numpy call (matrix products, solvers)
     max_seconds: float | None = None  # wall-clock bound on deck-level steps (None: no bound)
 
     @property
@@ -99,17 +103,30 @@ def check_percent_format(template: str, limits: Limits) -> None:
                 raise exceeded("string length", limits.max_string_length)
 
 
-def check_format_template(template: str, limits: Limits) -> None:
-    """str.format: no attribute or index access with '_', no huge widths."""
+def check_format_template(template: str, limits: Limits, args=(), kwargs=None) -> None:
+    """str.format: no index or attribute with '_', attributes only of plain
+    numbers and strings (on an engine object, '{0.x}' would reach any public
+    attribute), no huge widths."""
     import string
 
     try:
         fields = list(string.Formatter().parse(template))
     except ValueError as error:
         raise DeckRuntimeError(f"bad format string: {error}") from None
+    automatic = 0
     for _, field_name, spec, _ in fields:
-        if field_name and re.search(r"(\.|\[)\s*_", field_name):
+        if field_name is None:
+            continue
+        if re.search(r"(\.|\[)\s*_", field_name):
             raise DeckRuntimeError("format fields may not access names starting with '_'")
+        root, attribute = re.match(r"([^.\[]*)(\.)?", field_name).groups()
+        if root == "":
+            root, automatic = automatic, automatic + 1
+        if attribute and not _plain_format_argument(root, args, kwargs or {}):
+            raise DeckRuntimeError(
+                "format fields may read attributes of numbers and strings only "
+                f"('{{{field_name}}}'): format the value itself"
+            )
         for part in (field_name or "", spec or ""):
             if "{" in part:
                 raise DeckRuntimeError("nested format fields are not supported")
@@ -173,3 +190,122 @@ def check_nested_size(values, limits: Limits) -> None:
                 raise exceeded("elements to convert to text", limits.max_sequence_length)
             items = value.values() if isinstance(value, dict) else value
             pending.extend(item for item in items if isinstance(item, (list, tuple, dict, set)))
+
+
+def _plain_format_argument(root, args, kwargs) -> bool:
+    if isinstance(root, int) or str(root).isdigit():
+        index = int(root)
+        value = args[index] if index < len(args) else None
+    else:
+        value = kwargs.get(root)
+    return isinstance(value, (int, float, complex, str))
+
+
+# ----------------------------------------------------------------- nesting
+# CPython hashes a tuple by hashing its items recursively in C, without any
+# depth check: hashing a tuple nested a million deep overflows the C stack.
+# Every place where a deck value may be hashed checks its depth first.
+
+
+def check_hash_depth(value, limits: Limits) -> None:
+    """Refuse a tuple (dict key, set item, index) nested beyond the limit."""
+    if type(value) is not tuple:
+        return
+    _check_depth(value, limits, (tuple, frozenset))
+
+
+def check_nesting(values, limits: Limits) -> None:
+    """Refuse containers (lists, tuples, dicts, sets) nested beyond the limit:
+    what a command receives, which may hash or walk it recursively."""
+    _check_depth(values, limits, (list, tuple, dict, set, frozenset))
+
+
+def _check_depth(root, limits: Limits, kinds) -> None:
+    limit = limits.max_nesting
+    seen = set()
+    pending = [(root, 0)]
+    while pending:
+        value, depth = pending.pop()
+        if depth > limit:
+            raise exceeded("levels of nested containers", limit)
+        if id(value) in seen:
+            continue
+        seen.add(id(value))
+        items = value.values() if isinstance(value, dict) else value
+        if isinstance(value, dict) and dict in kinds:
+            pending.extend((key, depth + 1) for key in value if isinstance(key, kinds))
+        pending.extend((item, depth + 1) for item in items if isinstance(item, kinds))
+
+
+def hashable_items(values, limits: Limits) -> list:
+    """The items of an iterable that will be hashed (set(), dict(), update...),
+    read once into a list, each checked."""
+    items = list(values)
+    check_length(len(items), limits)
+    for item in items:
+        check_hash_depth(item, limits)
+    return items
+
+
+def check_lcm(arguments, limits: Limits) -> None:
+    """math.lcm: the result has up to the sum of the arguments' digits."""
+    bits = sum(abs(int(a)).bit_length() for a in arguments if _is_int(a))
+    if bits > limits.max_int_bits:
+        raise exceeded("integer size in digits", limits.max_int_digits)
+
+
+# ------------------------------------------------------------------- text
+# Objects of the engine a deck holds (commands, concepts' bound methods,
+# builtins) must not show their memory address or internals when printed.
+
+_PLAIN_TEXT = (int, float, complex, bool, str, type(None))
+
+
+def deck_text_value(value, budget: list | None = None):
+    """``value`` ready for str/repr/format: plain data as is, containers with
+    their items converted, any other object replaced by a neutral stand-in
+    unless it has a representation of its own (concepts, numpy values)."""
+    budget = budget if budget is not None else [100_000]
+    budget[0] -= 1
+    if isinstance(value, _PLAIN_TEXT) or budget[0] < 0:
+        return value
+    kind = type(value)
+    if kind in (list, tuple, set, frozenset):
+        return kind(deck_text_value(item, budget) for item in value)
+    if kind is dict:
+        return {deck_text_value(k, budget): deck_text_value(v, budget) for k, v in value.items()}
+    np = numpy_or_none()
+    if np is not None and isinstance(value, (np.ndarray, np.generic)):
+        return value if value.dtype != object else _Opaque("array of objects")
+    if isinstance(value, _FUNCTION_TYPES):
+        name = getattr(value, "__name__", "")
+        return _Opaque(f"function {name}" if name and not name.startswith("_") else "function")
+    if kind.__repr__ is object.__repr__:
+        return _Opaque(kind.__name__.lstrip("_") or "object")
+    return value
+
+
+_FUNCTION_TYPES = (
+    types.FunctionType,
+    types.BuiltinFunctionType,
+    types.MethodType,
+    types.MethodWrapperType,
+    functools.partial,
+)
+
+
+class _Opaque:
+    """Prints as ``<what>``."""
+
+    __slots__ = ("text",)
+
+    def __init__(self, text: str):
+        self.text = text
+
+    def __repr__(self) -> str:
+        return f"<{self.text}>"
+
+    __str__ = __repr__
+
+    def __format__(self, spec: str) -> str:
+        return format(repr(self), spec)

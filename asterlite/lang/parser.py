@@ -41,6 +41,11 @@ UNSUPPORTED_KEYWORDS = {
     "await": "'await' is",
 }
 ALLOWED_UNDERSCORE_NAMES = frozenset({"_F"})
+# levels of the syntax tree a deck may nest (the evaluator recurses on them;
+# real decks stay under 30)
+MAX_TREE_DEPTH = 200
+# characters of a source line shown in an error excerpt
+EXCERPT_WIDTH = 160
 
 
 @dataclass
@@ -53,7 +58,30 @@ class Module:
 
     def location(self, line: int, column: int = 0) -> Location:
         source = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
-        return Location(self.filename, line, column, source)
+        if len(source) <= EXCERPT_WIDTH:
+            return Location(self.filename, line, column, source)
+        # a very long line: show the part around the column
+        start = max(0, min(column - 1 - EXCERPT_WIDTH // 2, len(source) - EXCERPT_WIDTH))
+        clipped = source[start : start + EXCERPT_WIDTH]
+        clipped = (
+            ("..." if start else "")
+            + clipped
+            + ("..." if start + EXCERPT_WIDTH < len(source) else "")
+        )
+        return ClippedLocation(self.filename, line, column, clipped, start - (3 if start else 0))
+
+
+@dataclass(frozen=True)
+class ClippedLocation(Location):
+    """A location whose excerpt shows only part of a long source line."""
+
+    offset: int = 0  # columns of the line left out before the excerpt
+
+    def excerpt(self) -> str:
+        if not self.source_line:
+            return ""
+        caret = " " * max(self.column - 1 - self.offset, 0) + "^"
+        return f"    {self.source_line.rstrip()}\n    {caret}"
 
 
 def parse_deck(text: str, filename: str) -> Module:
@@ -233,10 +261,16 @@ def _check_tree(module: Module) -> None:
     """Refuse what the grammar accepts but decks may not do; fold literals."""
     from lark import Token, Tree
 
-    # (node, inside_loop, inside_function); explicit stack, no recursion
-    stack = [(module.tree, False, False)]
+    # (node, inside_loop, inside_function, depth); explicit stack, no recursion
+    stack = [(module.tree, False, False, 0)]
     while stack:
-        node, in_loop, in_function = stack.pop()
+        node, in_loop, in_function, depth = stack.pop()
+        if depth > MAX_TREE_DEPTH:  # the evaluator walks the tree recursively
+            raise _error(
+                f"expression or statements nested too deeply (more than {MAX_TREE_DEPTH} levels)",
+                node,
+                module,
+            )
         if isinstance(node, Token):
             if node.type == "NAME":
                 _check_name(node, module)
@@ -257,7 +291,7 @@ def _check_tree(module: Module) -> None:
         )
         child_function = in_function or kind in ("funcdef", "lambdef")
         for child in reversed(node.children):
-            stack.append((child, child_loop, child_function))
+            stack.append((child, child_loop, child_function, depth + 1))
 
 
 def _no_check(node, module, in_loop, in_function) -> None:
