@@ -1,7 +1,9 @@
 """Command-line interface: ``asterlite run | check | corpus | sweep | plot | converge``.
 
-Exit status: 0 when every TEST_* check is OK (or a check finds no error),
-1 when a check is NOOK, 2 on any error or unsupported command.
+Exit status: 0 when every TEST_* check is OK, or the deck ran to its end
+without any check (DONE), or ``check`` finds no error; 1 when a check is
+NOOK; 2 on any error, unsupported command, interruption or internal error
+(one line here, the traceback in the run's message.log).
 """
 
 from __future__ import annotations
@@ -11,7 +13,8 @@ import json
 import sys
 from pathlib import Path
 
-from asterlite import progress
+from asterlite import __version__, progress
+from asterlite.extras import MissingExtraError
 
 
 def _run(args) -> int:
@@ -20,12 +23,29 @@ def _run(args) -> int:
     if args.no_progress:
         progress.enable(False)
     deck = Path(args.deck)
+    if deck.is_dir():  # a deck folder: the one .export (or .comm) in it
+        from asterlite.api import DeckNotFound, deck_in_folder
+
+        try:
+            deck = deck_in_folder(deck)
+        except DeckNotFound as error:
+            print(error, file=sys.stderr)
+            return 2
     output = Path(args.output) if args.output else Path("asterlite-out") / deck.stem
-    report = run_deck(deck, output, echo=not args.quiet, save_results=args.save_results)
+    report = run_deck(
+        deck,
+        output,
+        echo=not args.quiet,
+        save_results=args.save_results,
+        time_limit=args.time_limit,
+        memory_limit=args.memory_limit,
+        output_limit=args.output_limit,
+        aster_version=args.aster_version,
+    )
     if not args.quiet:
         print(format_summary(report))
         print(f"output folder: {output}")
-    elif report.status not in ("PASS",):
+    elif report.status not in ("PASS", "DONE"):
         print(f"{report.deck}: {report.status} {report.message}", file=sys.stderr)
     return report.exit_code
 
@@ -40,8 +60,9 @@ def _check(args) -> int:
         results.append(
             {
                 "deck": deck,
-                "status": "OK" if report.exit_code == 0 else "ERROR",
+                "status": "OK" if report.exit_code == 0 else report.status,
                 "message": report.message,
+                "errors": report.errors or ([report.message] if report.exit_code else []),
             }
         )
         worst = max(worst, report.exit_code)
@@ -82,7 +103,7 @@ def _corpus(args) -> int:
     print(format_table(rows))
     if args.json:
         Path(args.json).write_text(json.dumps({"decks": rows}, indent=1) + "\n")
-    return 0 if all(r["status"] == "PASS" for r in rows) else 1
+    return 0 if all(r["status"] in ("PASS", "DONE") for r in rows) else 1
 
 
 def _sweep(args) -> int:
@@ -196,7 +217,7 @@ def _port(args) -> int:
 
     deck = Path(args.deck)
     try:
-        result = port_file(deck)
+        result = port_file(deck, aster_version=args.aster_version)
     except (AsterliteError, OSError) as error:
         print(f"{deck}: {error}", file=sys.stderr)
         return 2
@@ -217,9 +238,10 @@ def build_parser() -> argparse.ArgumentParser:
         prog="asterlite",
         description="Run Code_Aster command files: modal transient dynamics with shocks.",
     )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
 
-    run = commands.add_parser("run", help="run a deck (.comm or .export)")
+    run = commands.add_parser("run", help="run a deck (.comm or .export, or a folder holding one)")
     run.add_argument("deck")
     run.add_argument("-o", "--output", help="output folder (default asterlite-out/<deck>)")
     run.add_argument("-q", "--quiet", action="store_true", help="print only problems")
@@ -231,6 +253,30 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument(
         "--no-progress", action="store_true", help="no progress bars (off anyway off a terminal)"
     )
+    run.add_argument(
+        "--time-limit",
+        type=float,
+        metavar="SECONDS",
+        help="time for the whole run, replacing the export's 'P time_limit' (0: no limit)",
+    )
+    run.add_argument(
+        "--memory-limit",
+        type=float,
+        metavar="MB",
+        help="memory the run may allocate, replacing the export's 'P memory_limit' (0: none)",
+    )
+    run.add_argument(
+        "--output-limit",
+        type=float,
+        metavar="MB",
+        help="what the run may write: message.log and the deck's files (default 2048; 0: none)",
+    )
+    run.add_argument(
+        "--aster-version",
+        type=int,
+        metavar="N",
+        help="read the decks as code_aster N wrote them (default: detected from their text)",
+    )
     run.set_defaults(handler=_run)
 
     check = commands.add_parser("check", help="validate decks without computing")
@@ -241,6 +287,12 @@ def build_parser() -> argparse.ArgumentParser:
     port = commands.add_parser("port", help="rewrite a legacy deck in current syntax")
     port.add_argument("deck")
     port.add_argument("-o", "--output", help="write the ported deck here (default: stdout)")
+    port.add_argument(
+        "--aster-version",
+        type=int,
+        metavar="N",
+        help="read the deck as code_aster N wrote it (default: detected from its text)",
+    )
     port.set_defaults(handler=_port)
 
     corpus = commands.add_parser("corpus", help="run every deck folder under a directory")
@@ -345,4 +397,20 @@ def main(argv: list[str] | None = None) -> int:
         return args.handler(args)
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
+        return 2
+    except MissingExtraError as error:  # e.g. asterlite sweep without asterlite[sweep]
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    except MemoryError:  # e.g. printing a huge report: still an error, not NOOK
+        print("asterlite: out of memory", file=sys.stderr)
+        return 2
+    except OSError as error:  # a full disk, a closed terminal...
+        print(f"asterlite: {error.strerror or error}", file=sys.stderr)
+        return 2
+    except Exception as error:  # a bug: one line here, never exit status 1 (NOOK)
+        first = (str(error).strip().splitlines() or [""])[0][:200]
+        print(
+            f"asterlite: internal error, please report: {type(error).__name__}: {first}",
+            file=sys.stderr,
+        )
         return 2

@@ -8,6 +8,7 @@ matr_asse_depl_c for RIGI_MECA_HYST) and VECT_ASSE/VECTEUR (cham_no_sdaster).
 from asterlite.catalogues.common import OUI_NON, group_ma
 
 from asterlite.catalog import AU_MOINS_UN, BLOC, FACT, MACRO, SIMP, equal_to, is_in
+from asterlite.lang.values import CO
 
 MATRIX_OPTIONS = (
     "RIGI_MECA", "MASS_MECA", "MASS_MECA_DIAG", "AMOR_MECA", "RIGI_MECA_HYST", "IMPE_MECA",
@@ -24,9 +25,29 @@ MATRIX_TYPES = {
     "AMOR_ACOU": "matr_asse_pres_c",
 }
 
+
+def _type_output(value, type_name: str) -> None:
+    """Give a CO("NAME") output its concept type, as code_aster's sd_prod does
+    (``self.type_sdprod``): ``asterlite check`` binds the name to that type."""
+    if isinstance(value, CO):
+        value.produced_type = type_name
+
+
+def _sdprod(kw) -> None:
+    """Types of the CO outputs: the numbering, each matrix by its option, each
+    vector (code_aster's assemblage_prod); the command itself makes nothing."""
+    _type_output(kw.get("NUME_DDL"), "nume_ddl_sdaster")
+    for occurrence in kw.get("MATR_ASSE") or ():
+        option = occurrence.get("OPTION")
+        _type_output(occurrence.get("MATRICE"), MATRIX_TYPES.get(option, "matr_asse_depl_r"))
+    for occurrence in kw.get("VECT_ASSE") or ():
+        _type_output(occurrence.get("VECTEUR"), "cham_no_sdaster")
+    return None
+
+
 ASSEMBLAGE = MACRO(
     nom="ASSEMBLAGE",
-    sd_prod=None,
+    sd_prod=_sdprod,
     fr="Compute assembled matrices and vectors",
     regles=(AU_MOINS_UN("MATR_ASSE", "VECT_ASSE"),),
     MODELE=SIMP(statut="o", typ="modele_sdaster"),

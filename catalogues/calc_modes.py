@@ -1,6 +1,6 @@
 """CALC_MODES: eigenmodes (dynamic, buckling or general eigenproblem)."""
 
-from asterlite.catalogues.common import C_SOLVEUR, OUI_NON
+from asterlite.catalogues.common import C_SOLVEUR, NO_EFFECT_LOG, NO_EFFECT_STORED, OUI_NON
 
 from asterlite.catalog import BLOC, EXCLUS, FACT, MACRO, SIMP, Condition, equal_to, exists, is_in
 from asterlite.lang.values import Unknown
@@ -137,6 +137,11 @@ def _critical_load_windows() -> dict:
     )
 
 
+# The eigen solver's method and tuning change how code_aster converges, not the
+# converged pairs that asterlite computes to full precision with scipy.
+EIGEN_TUNING = "eigen solver method and tuning"
+
+
 def _eigen_solvers(simultaneous) -> dict:
     """SOLVEUR_MODAL: Lanczos/Jacobi/Sorensen/QZ or inverse iterations."""
     return dict(
@@ -146,6 +151,7 @@ def _eigen_solvers(simultaneous) -> dict:
                 statut="d",
                 regles=(EXCLUS("DIM_SOUS_ESPACE", "COEF_DIM_ESPACE"),),
                 METHODE=SIMP(
+                    no_effect=EIGEN_TUNING,
                     statut="f",
                     typ="TXM",
                     defaut="SORENSEN",
@@ -153,54 +159,99 @@ def _eigen_solvers(simultaneous) -> dict:
                 ),
                 b_tri_diag=BLOC(
                     condition=equal_to("METHODE", "TRI_DIAG"),
-                    PREC_ORTHO=SIMP(statut="f", typ="R", defaut=1.0e-12, val_min=0.0),
-                    NMAX_ITER_ORTHO=SIMP(statut="f", typ="I", defaut=5, val_min=0),
-                    PREC_LANCZOS=SIMP(statut="f", typ="R", defaut=1.0e-8, val_min=0.0),
-                    NMAX_ITER_QR=SIMP(statut="f", typ="I", defaut=30, val_min=0),
-                    MODE_RIGIDE=SIMP(statut="f", typ="TXM", defaut="NON", into=OUI_NON),
+                    PREC_ORTHO=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=1.0e-12, val_min=0.0
+                    ),
+                    NMAX_ITER_ORTHO=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=5, val_min=0
+                    ),
+                    PREC_LANCZOS=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=1.0e-8, val_min=0.0
+                    ),
+                    NMAX_ITER_QR=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=30, val_min=0
+                    ),
+                    MODE_RIGIDE=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="TXM", defaut="NON", into=OUI_NON
+                    ),
                 ),
                 b_jacobi=BLOC(
                     condition=equal_to("METHODE", "JACOBI"),
-                    PREC_BATHE=SIMP(statut="f", typ="R", defaut=1.0e-10, val_min=0.0),
-                    NMAX_ITER_BATHE=SIMP(statut="f", typ="I", defaut=40, val_min=0),
-                    PREC_JACOBI=SIMP(statut="f", typ="R", defaut=1.0e-2, val_min=0.0),
-                    NMAX_ITER_JACOBI=SIMP(statut="f", typ="I", defaut=12, val_min=0),
+                    PREC_BATHE=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=1.0e-10, val_min=0.0
+                    ),
+                    NMAX_ITER_BATHE=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=40, val_min=0
+                    ),
+                    PREC_JACOBI=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=1.0e-2, val_min=0.0
+                    ),
+                    NMAX_ITER_JACOBI=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=12, val_min=0
+                    ),
                 ),
                 b_sorensen=BLOC(
                     condition=equal_to("METHODE", "SORENSEN"),
-                    PREC_SOREN=SIMP(statut="f", typ="R", defaut=0.0, val_min=0.0),
-                    NMAX_ITER_SOREN=SIMP(statut="f", typ="I", defaut=20, val_min=1),
-                    PARA_ORTHO_SOREN=SIMP(statut="f", typ="R", defaut=0.717),
+                    PREC_SOREN=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=0.0, val_min=0.0
+                    ),
+                    NMAX_ITER_SOREN=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=20, val_min=1
+                    ),
+                    PARA_ORTHO_SOREN=SIMP(
+                        no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=0.717
+                    ),
                 ),
                 b_qz=BLOC(
                     condition=equal_to("METHODE", "QZ"),
                     TYPE_QZ=SIMP(
+                        no_effect=EIGEN_TUNING,
                         statut="f",
                         typ="TXM",
                         defaut="QZ_SIMPLE",
                         into=("QZ_QR", "QZ_SIMPLE", "QZ_EQUI"),
                     ),
                 ),
-                APPROCHE=SIMP(
-                    statut="f", typ="TXM", defaut="REEL", into=("REEL", "IMAG", "COMPLEXE")
+                APPROCHE=SIMP(  # the operator ARPACK iterates on, not the eigenpairs
+                    no_effect=EIGEN_TUNING,
+                    statut="f",
+                    typ="TXM",
+                    defaut="REEL",
+                    into=("REEL", "IMAG", "COMPLEXE"),
                 ),
-                DIM_SOUS_ESPACE=SIMP(statut="f", typ="I"),
-                COEF_DIM_ESPACE=SIMP(statut="f", typ="I"),
+                DIM_SOUS_ESPACE=SIMP(no_effect=EIGEN_TUNING, statut="f", typ="I"),
+                COEF_DIM_ESPACE=SIMP(no_effect=EIGEN_TUNING, statut="f", typ="I"),
             ),
         ),
         b_EigenSolv2=BLOC(
             condition=is_in("OPTION", INVERSE),
             SOLVEUR_MODAL=FACT(
                 statut="d",
-                NMAX_ITER_SEPARE=SIMP(statut="f", typ="I", defaut=30, val_min=1),
-                PREC_SEPARE=SIMP(statut="f", typ="R", defaut=1.0e-4, val_min=1.0e-70),
-                NMAX_ITER_AJUSTE=SIMP(statut="f", typ="I", defaut=15, val_min=1),
-                PREC_AJUSTE=SIMP(statut="f", typ="R", defaut=1.0e-4, val_min=1.0e-70),
-                OPTION_INV=SIMP(
-                    statut="f", typ="TXM", defaut="DIRECT", into=("DIRECT", "RAYLEIGH")
+                NMAX_ITER_SEPARE=SIMP(
+                    no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=30, val_min=1
                 ),
-                PREC_INV=SIMP(statut="f", typ="R", defaut=1.0e-5, val_min=1.0e-70),
-                NMAX_ITER_INV=SIMP(statut="f", typ="I", defaut=30, val_min=1),
+                PREC_SEPARE=SIMP(
+                    no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=1.0e-4, val_min=1.0e-70
+                ),
+                NMAX_ITER_AJUSTE=SIMP(
+                    no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=15, val_min=1
+                ),
+                PREC_AJUSTE=SIMP(
+                    no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=1.0e-4, val_min=1.0e-70
+                ),
+                OPTION_INV=SIMP(
+                    no_effect=EIGEN_TUNING,
+                    statut="f",
+                    typ="TXM",
+                    defaut="DIRECT",
+                    into=("DIRECT", "RAYLEIGH"),
+                ),
+                PREC_INV=SIMP(
+                    no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=1.0e-5, val_min=1.0e-70
+                ),
+                NMAX_ITER_INV=SIMP(
+                    no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=30, val_min=1
+                ),
             ),
         ),
     )
@@ -209,6 +260,8 @@ def _eigen_solvers(simultaneous) -> dict:
 def _veri_mode(seuil: float, sturm_default: str, sturm_into=OUI_NON) -> FACT:
     return FACT(
         statut="d",
+        # asterlite checks residuals itself where its eigen solver iterates (sparse)
+        no_effect="code_aster's checks of its eigen solver (residuals, Sturm count)",
         STOP_ERREUR=SIMP(statut="f", typ="TXM", defaut="OUI", into=OUI_NON),
         SEUIL=SIMP(statut="f", typ="R", val_min=0.0, defaut=seuil),
         PREC_SHIFT=SIMP(statut="f", typ="R", defaut=5.0e-3, val_min=0.0),
@@ -254,8 +307,8 @@ CALC_MODES = MACRO(
     TYPE_RESU=SIMP(
         statut="f", typ="TXM", defaut="DYNAMIQUE", into=("DYNAMIQUE", "MODE_FLAMB", "GENERAL")
     ),
-    CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
-    CARA_ELEM=SIMP(statut="f", typ="cara_elem"),
+    CHAM_MATER=SIMP(statut="f", typ="cham_mater", no_effect=NO_EFFECT_STORED),
+    CARA_ELEM=SIMP(statut="f", typ="cara_elem", no_effect=NO_EFFECT_STORED),
     b_dyna=BLOC(
         condition=equal_to("TYPE_RESU", "DYNAMIQUE"),
         MATR_RIGI=SIMP(statut="o", typ=MATR_RIGI_TYPES),
@@ -290,6 +343,7 @@ CALC_MODES = MACRO(
             ),
             IMPRESSION=FACT(
                 statut="f",
+                no_effect=NO_EFFECT_LOG,
                 TOUT_PARA=SIMP(statut="f", typ="TXM", defaut="OUI", into=OUI_NON),
                 CUMUL=SIMP(statut="f", typ="TXM", defaut="OUI", into=OUI_NON),
                 CRIT_EXTR=SIMP(

@@ -11,6 +11,16 @@ from asterlite.catalog import BLOC, FACT, SIMP, equal_to, is_in
 # Common choice lists
 # ---------------------------------------------------------------------------
 
+# Why some keywords change no result in asterlite (catalogue ``no_effect=``).
+NO_EFFECT_LOG = "messages of code_aster's run only"
+NO_EFFECT_DATABASE = "code_aster's JEVEUX database and memory management"
+# asterlite solves its linear systems with scipy's direct solvers: the choice
+# and tuning of code_aster's solver changes cost, not results beyond round-off.
+NO_EFFECT_SOLVER = "linear solver method and tuning"
+# code_aster records these with a result for later commands; asterlite's later
+# commands reach the model, material and characteristics through the numbering.
+NO_EFFECT_STORED = "recorded with the result for later commands"
+
 OUI_NON = ("OUI", "NON")
 
 #: Result field names accepted by NOM_CHAM (the subset of code_aster's
@@ -203,6 +213,7 @@ def C_SOLVEUR(command: str, statut: str = "d") -> FACT:  # noqa: N802 - code_ast
     return FACT(
         statut=statut,
         fr="Linear solver",
+        no_effect=NO_EFFECT_SOLVER,
         METHODE=SIMP(typ="TXM", defaut=default, into=methods),
         b_mult_front=BLOC(
             condition=equal_to("METHODE", "MULT_FRONT"),

@@ -9,6 +9,8 @@ that look at the *type* of a concept given to a keyword (code_aster's
 
 from __future__ import annotations
 
+from asterlite.catalogues.common import NO_EFFECT_SOLVER
+
 from asterlite.catalog import BLOC, FACT, SIMP, UN_PARMI, Condition, equal_to, exists
 from asterlite.lang.values import Unknown
 
@@ -238,7 +240,7 @@ def test_reference(keyword: str, max="**") -> dict:  # noqa: A002 - code_aster's
                 condition=Condition(vale_calc_is_zero, "VALE_CALC is zero"),
                 ORDRE_GRANDEUR=SIMP(statut="f", typ="R"),
             ),
-            LEGENDE=SIMP(statut="f", typ="TXM"),
+            LEGENDE=SIMP(statut="f", typ="TXM", no_effect="label of the check in the listing"),
             REFERENCE=SIMP(
                 statut="f",
                 typ="TXM",
@@ -337,7 +339,7 @@ def solveur(default: str, methods: tuple[str, ...]) -> FACT:
             ELIM_LAGR=SIMP(statut="f", typ="TXM", defaut="NON", into=("OUI", "NON")),
             RENUM=SIMP(statut="f", typ="TXM"),
         )
-    return FACT(statut="d", **entries)
+    return FACT(statut="d", no_effect=NO_EFFECT_SOLVER, **entries)
 
 
 # --------------------------------------------------------------------------
@@ -365,6 +367,19 @@ def _two_nodes() -> dict:
         NOEUD_2=SIMP(statut="c", typ="no"),
         GROUP_NO_1=SIMP(statut="f", typ="grno"),
         GROUP_NO_2=SIMP(statut="f", typ="grno"),
+    )
+
+
+def para_lame_flui() -> FACT:
+    """PARA_LAME_FLUI (code_aster 12-14; top-level NMAX_ITER, RESI_RELA, LAMBDA in
+    code_aster 10-11): the fixed-point iterations of the fluid film
+    (CHOC/LAME_FLUIDE), an asterlite extension of today's DYNA_VIBRA."""
+    return FACT(
+        statut="f",
+        max=1,
+        NMAX_ITER=SIMP(statut="f", typ="I", defaut=20, val_min=1),
+        RESI_RELA=SIMP(statut="f", typ="R", defaut=1.0e-3, val_min=0.0),
+        LAMBDA=SIMP(statut="f", typ="R", defaut=10.0),
     )
 
 
@@ -418,6 +433,16 @@ def comportement_dyna() -> FACT:
                 COULOMB_STAT=SIMP(statut="o", typ="R"),
                 COULOMB_DYNA=SIMP(statut="o", typ="R"),
                 UNIDIRECTIONNEL=SIMP(statut="f", typ="TXM", defaut="NON", into=("OUI", "NON")),
+            ),
+            # asterlite extension (hidden): the fluid film of code_aster 10-14's
+            # CHOC (asterlite.dynamics.fluid_film), reached from legacy decks
+            LAME_FLUIDE=SIMP(statut="c", typ="TXM", into=("OUI", "NON")),
+            b_lame_fluide=BLOC(
+                condition=equal_to("LAME_FLUIDE", "OUI"),
+                ALPHA=SIMP(statut="o", typ="R"),
+                BETA=SIMP(statut="o", typ="R"),
+                CHI=SIMP(statut="o", typ="R"),
+                DELTA=SIMP(statut="o", typ="R"),
             ),
         ),
         # -- cracked rotor: stiffness depending on the rotation angle

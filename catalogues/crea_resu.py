@@ -5,9 +5,16 @@ CONV_CHAR. PROL_RTZ, PREP_VARC and CONV_RESU are code_aster choices whose
 keywords asterlite does not describe yet.
 """
 
-from asterlite.catalogues.common import NOM_CHAM_INTO, OUI_NON, critere_precision, group_no
+from asterlite.catalogues.common import (
+    NO_EFFECT_STORED,
+    NOM_CHAM_INTO,
+    OUI_NON,
+    critere_precision,
+    group_no,
+)
 
 from asterlite.catalog import BLOC, FACT, OPER, SIMP, UN_PARMI, equal_to, is_in
+from asterlite.legacy import forms
 
 CHAM_GD = ("cham_no_sdaster", "cham_elem", "carte_sdaster", "cham_gd_sdaster")
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
@@ -69,6 +76,7 @@ def _excit(charges, **extra) -> FACT:
 
 CREA_RESU = OPER(
     nom="CREA_RESU",
+    compat_syntax=forms.CREA_RESU,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod=_sdprod,
     reentrant="f",
     fr="Create or enrich a result from fields",
@@ -149,8 +157,8 @@ CREA_RESU = OPER(
     b_mode_meca=BLOC(
         condition=equal_to("OPERATION", "AFFE")
         & is_in("TYPE_RESU", ("MODE_MECA", "MODE_MECA_C", "DYNA_HARMO", "DYNA_TRANS")),
-        MATR_RIGI=SIMP(statut="f", typ="matr_asse_depl_r"),
-        MATR_MASS=SIMP(statut="f", typ="matr_asse_depl_r"),
+        MATR_RIGI=SIMP(statut="f", typ="matr_asse_depl_r", no_effect=NO_EFFECT_STORED),
+        MATR_MASS=SIMP(statut="f", typ="matr_asse_depl_r", no_effect=NO_EFFECT_STORED),
     ),
     b_evol_elas=BLOC(
         condition=equal_to("OPERATION", "AFFE") & equal_to("TYPE_RESU", "EVOL_ELAS"),

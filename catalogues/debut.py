@@ -1,6 +1,6 @@
 """DEBUT: start a study (code_aster 17 keywords; most only tune the run)."""
 
-from asterlite.catalogues.common import OUI_NON
+from asterlite.catalogues.common import NO_EFFECT_DATABASE, NO_EFFECT_LOG, OUI_NON
 
 from asterlite.catalog import EXCLUS, FACT, MACRO, SIMP
 from asterlite.legacy import forms
@@ -9,9 +9,10 @@ from asterlite.legacy import forms
 def starting_keywords(poursuite: bool = False) -> dict:
     """Keywords shared by DEBUT and POURSUITE."""
     return dict(
-        IMPR_MACRO=SIMP(statut="f", typ="TXM", into=OUI_NON, defaut="NON"),
+        IMPR_MACRO=SIMP(statut="f", typ="TXM", into=OUI_NON, defaut="NON", no_effect=NO_EFFECT_LOG),
         BASE=FACT(
             statut="f",
+            no_effect=NO_EFFECT_DATABASE,
             min=1,
             max=2,
             fr="Parameters of the JEVEUX databases",
@@ -28,14 +29,22 @@ def starting_keywords(poursuite: bool = False) -> dict:
         ),
         CATALOGUE=FACT(
             statut="f",
+            no_effect="element catalogues of a code_aster build",
             min=1,
             max=10,
             FICHIER=SIMP(statut="o", typ="TXM"),
             UNITE=SIMP(statut="f", typ="I"),
         ),
-        CODE=SIMP(statut="f", typ="TXM", into=OUI_NON, fr="Reserved for test cases"),
+        CODE=SIMP(
+            statut="f",
+            typ="TXM",
+            into=OUI_NON,
+            fr="Reserved for test cases",
+            no_effect="test-case mode of code_aster's run (messages only)",
+        ),
         ERREUR=FACT(
             statut="f",
+            no_effect="asterlite stops at the first error whatever the mode",
             min=1,
             max=1,
             fr="Behaviour on errors and alarms",
@@ -44,6 +53,7 @@ def starting_keywords(poursuite: bool = False) -> dict:
         ),
         DEBUG=FACT(
             statut="d",
+            no_effect="code_aster's own developer checks",
             min=1,
             max=1,
             fr="Developer checks",
@@ -53,10 +63,11 @@ def starting_keywords(poursuite: bool = False) -> dict:
             ENVIMA=SIMP(statut="f", typ="TXM", into=("TEST",)),
             VERI_BASE=SIMP(statut="f", typ="TXM", into=("GLOBALE", "VOLATILE")),
             VERI_BASE_NB=SIMP(statut="f", typ="I", defaut=125),
-            HIST_ETAPE=SIMP(statut="f", typ="TXM", into=OUI_NON),  # deprecated, ignored
+            HIST_ETAPE=SIMP(statut="f", typ="TXM", into=OUI_NON),
         ),
         MESURE_TEMPS=FACT(
             statut="d",
+            no_effect=NO_EFFECT_LOG,
             min=1,
             max=1,
             fr="Timing of the main steps",
@@ -65,6 +76,7 @@ def starting_keywords(poursuite: bool = False) -> dict:
         ),
         MEMOIRE=FACT(
             statut="d",
+            no_effect=NO_EFFECT_DATABASE,
             min=1,
             max=1,
             TAILLE_BLOC=SIMP(statut="f", typ="R", defaut=800.0),
@@ -72,6 +84,7 @@ def starting_keywords(poursuite: bool = False) -> dict:
         ),
         RESERVE_CPU=FACT(
             statut="d",
+            no_effect="time kept back by code_aster's batch runs",
             max=1,
             regles=(EXCLUS("VALE", "POURCENTAGE"),),
             VALE=SIMP(statut="f", typ="I", val_min=0),
@@ -79,17 +92,20 @@ def starting_keywords(poursuite: bool = False) -> dict:
         ),
         RESERVE_MEMOIRE=FACT(
             statut="d",
+            no_effect=NO_EFFECT_DATABASE,
             max=1,
             regles=(EXCLUS("VALE", "POURCENTAGE"),),
             VALE=SIMP(statut="f", typ="I", val_min=0),
             POURCENTAGE=SIMP(statut="f", typ="R", val_min=0.0, val_max=1.0),
         ),
-        IGNORE_ALARM=SIMP(statut="f", typ="TXM", max="**", fr="Alarms to ignore"),
-        LANG=SIMP(statut="f", typ="TXM"),
+        IGNORE_ALARM=SIMP(
+            statut="f", typ="TXM", max="**", fr="Alarms to ignore", no_effect=NO_EFFECT_LOG
+        ),
+        LANG=SIMP(statut="f", typ="TXM", no_effect=NO_EFFECT_LOG),
         INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
-        # deprecated in code_aster 17 (removed by its compat_syntax), accepted and ignored
-        PAR_LOT=SIMP(statut="f", typ="TXM", into=OUI_NON),
-        FORMAT_HDF=SIMP(statut="f", typ="TXM", into=OUI_NON),
+        # deprecated in code_aster 17 (removed by its compat_syntax)
+        PAR_LOT=SIMP(statut="f", typ="TXM", into=OUI_NON, no_effect="deprecated by code_aster"),
+        FORMAT_HDF=SIMP(statut="f", typ="TXM", into=OUI_NON, no_effect="deprecated by code_aster"),
     )
 
 

@@ -25,6 +25,8 @@ from asterlite.catalog import (
     exists,
     is_in,
 )
+from asterlite.lang.values import CO
+from asterlite.legacy import forms
 
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
 TRAN = equal_to("TYPE_CALCUL", "TRAN")
@@ -38,7 +40,13 @@ SCHEMAS = (
 
 
 def _sdprod(kw) -> str:
-    return "dyna_harmo" if kw.get("TYPE_CALCUL") == "HARM" else "dyna_trans"
+    harmonic = kw.get("TYPE_CALCUL") == "HARM"
+    # the CO outputs, typed as code_aster's dyna_line_sdprod does
+    if isinstance(kw.get("BASE_RESU"), CO):
+        kw.get("BASE_RESU").produced_type = "mode_meca"
+    if isinstance(kw.get("RESU_GENE"), CO):
+        kw.get("RESU_GENE").produced_type = "harm_gene" if harmonic else "tran_gene"
+    return "dyna_harmo" if harmonic else "dyna_trans"
 
 
 def _archivage(with_exclusions: bool) -> FACT:
@@ -91,6 +99,7 @@ def _rayleigh_vnor(**extra) -> BLOC:
 
 DYNA_LINE = MACRO(
     nom="DYNA_LINE",
+    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod=_sdprod,
     reentrant="n",
     fr="Linear transient or harmonic dynamic response",

@@ -8,11 +8,13 @@ basis and the harmonic forms are catalogued as in code_aster 17 so that
 existing decks validate.
 """
 
+from asterlite.catalogues.common import NO_EFFECT_STORED
 from asterlite.catalogues.common_post import (
     FONCTION_OU_FORMULE,
     comportement_dyna,
     concept_is,
     observation_dyna,
+    para_lame_flui,
     precision_blocs,
     solveur,
 )
@@ -169,9 +171,9 @@ DYNA_VIBRA = OPER(
     # ---------------------------------------------------------------- physical model
     b_phys_model=BLOC(
         condition=equal_to("BASE_CALCUL", "PHYS"),
-        MODELE=SIMP(statut="f", typ="modele_sdaster"),
-        CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
-        CARA_ELEM=SIMP(statut="f", typ="cara_elem"),
+        MODELE=SIMP(statut="f", typ="modele_sdaster", no_effect=NO_EFFECT_STORED),
+        CHAM_MATER=SIMP(statut="f", typ="cham_mater", no_effect=NO_EFFECT_STORED),
+        CARA_ELEM=SIMP(statut="f", typ="cara_elem", no_effect=NO_EFFECT_STORED),
     ),
     # ---------------------------------------------------------------- matrices
     b_matr_tran_phys=BLOC(
@@ -451,6 +453,7 @@ DYNA_VIBRA = OPER(
         ),
         # localized nonlinearities
         COMPORTEMENT=comportement_dyna(),
+        PARA_LAME_FLUI=para_lame_flui(),
         BASE_ELAS_FLUI=SIMP(statut="f", typ="melasflu_sdaster"),
         NUME_VITE_FLUI=SIMP(statut="f", typ="I"),
         VERI_CHOC=FACT(

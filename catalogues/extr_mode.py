@@ -1,5 +1,7 @@
 """EXTR_MODE: select modes from one or several modal results."""
 
+from asterlite.catalogues.common import NO_EFFECT_LOG
+
 from asterlite.catalog import AU_MOINS_UN, BLOC, FACT, OPER, SIMP, UN_PARMI, exists
 
 MODE_TYPES = ("mode_meca", "mode_meca_c", "mode_gene")
@@ -52,6 +54,7 @@ EXTR_MODE = OPER(
     TITRE=SIMP(statut="f", typ="TXM"),
     IMPRESSION=FACT(
         statut="f",
+        no_effect=NO_EFFECT_LOG,
         CUMUL=SIMP(statut="f", typ="TXM", defaut="NON", into=("OUI", "NON")),
         CRIT_EXTR=SIMP(statut="f", typ="TXM", defaut="MASS_EFFE_UN", into=CRIT_EXTR),
     ),

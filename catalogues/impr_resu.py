@@ -60,7 +60,9 @@ IMPR_RESU = PROC(
     ),
     PROC0=SIMP(statut="f", typ="TXM", into=("OUI", "NON")),
     b_modele=BLOC(
-        condition=~equal_to("FORMAT", "MED"), MODELE=SIMP(statut="f", typ="modele_sdaster")
+        condition=~equal_to("FORMAT", "MED"),
+        # code_aster needs it to print element fields; asterlite's fields carry their cells
+        MODELE=SIMP(statut="f", typ="modele_sdaster", no_effect="model of the printed fields"),
     ),
     b_format_resultat=BLOC(
         condition=equal_to("FORMAT", "RESULTAT"), UNITE=SIMP(statut="f", typ="I", defaut=8)

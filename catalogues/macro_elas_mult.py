@@ -3,9 +3,13 @@
 from asterlite.catalogues.common import C_SOLVEUR
 
 from asterlite.catalog import FACT, MACRO, SIMP, UN_PARMI
+from asterlite.lang.values import CO
 
 
 def _sdprod(kw) -> str:
+    numbering = kw.get("NUME_DDL")
+    if isinstance(numbering, CO):  # typed as code_aster's macro_elas_mult_prod does
+        numbering.produced_type = "nume_ddl_sdaster"
     cases = kw.get("CAS_CHARGE") or ()
     if cases and cases[0].get("NOM_CAS") is None and cases[0].get("MODE_FOURIER") is not None:
         return "fourier_elas"

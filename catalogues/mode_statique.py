@@ -1,6 +1,6 @@
 """MODE_STATIQUE: static modes (unit displacement, force or acceleration)."""
 
-from asterlite.catalogues.common import C_SOLVEUR, noeud, tout
+from asterlite.catalogues.common import C_SOLVEUR, NO_EFFECT_STORED, noeud, tout
 
 from asterlite.catalog import BLOC, FACT, OPER, PRESENT_PRESENT, SIMP, UN_PARMI, exists
 
@@ -34,8 +34,8 @@ MODE_STATIQUE = OPER(
         PRESENT_PRESENT("MODE_INTERF", "MATR_MASS"),
         PRESENT_PRESENT("PSEUDO_MODE", "MATR_MASS"),
     ),
-    CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
-    CARA_ELEM=SIMP(statut="f", typ="cara_elem"),
+    CHAM_MATER=SIMP(statut="f", typ="cham_mater", no_effect=NO_EFFECT_STORED),
+    CARA_ELEM=SIMP(statut="f", typ="cara_elem", no_effect=NO_EFFECT_STORED),
     MATR_RIGI=SIMP(statut="o", typ="matr_asse_depl_r"),
     MATR_MASS=SIMP(statut="f", typ="matr_asse_depl_r"),
     MODE_STAT=_unit_loads("Unit imposed displacements"),

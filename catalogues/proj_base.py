@@ -6,12 +6,34 @@ MATR_ASSE_GENE/MATRICE (matr_asse_gene_r), VECT_ASSE_GENE/VECTEUR
 """
 
 from asterlite.catalog import AU_MOINS_UN, FACT, MACRO, SIMP, UN_PARMI
+from asterlite.lang.values import CO
 
 TYPE_VECT = ("FORC", "DEPL", "VITE", "ACCE")
 
+
+def _type_output(value, type_name: str) -> None:
+    """Give a CO("NAME") output its concept type, as code_aster's sd_prod does
+    (``self.type_sdprod``): ``asterlite check`` binds the name to that type."""
+    if isinstance(value, CO):
+        value.produced_type = type_name
+
+
+def _sdprod(kw) -> None:
+    """Types of the CO outputs (code_aster's proj_base_prod): every projected
+    matrix is real, whatever it was projected from."""
+    _type_output(kw.get("NUME_DDL_GENE"), "nume_ddl_gene")
+    for occurrence in kw.get("MATR_ASSE_GENE") or ():
+        _type_output(occurrence.get("MATRICE"), "matr_asse_gene_r")
+    for occurrence in kw.get("VECT_ASSE_GENE") or ():
+        _type_output(occurrence.get("VECTEUR"), "vect_asse_gene")
+    for occurrence in kw.get("RESU_GENE") or ():
+        _type_output(occurrence.get("RESULTAT"), "tran_gene")
+    return None
+
+
 PROJ_BASE = MACRO(
     nom="PROJ_BASE",
-    sd_prod=None,
+    sd_prod=_sdprod,
     fr="Project assembled matrices and vectors on a modal or Ritz basis",
     regles=(AU_MOINS_UN("MATR_ASSE_GENE", "VECT_ASSE_GENE", "RESU_GENE"),),
     BASE=SIMP(statut="o", typ=("mode_meca", "mode_gene")),

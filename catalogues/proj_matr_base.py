@@ -2,14 +2,21 @@
 
 from asterlite.catalog import OPER, SIMP, UN_PARMI
 
+# exact type of the projected matrix -> type of the projection, in the order
+# code_aster's matr_asse_gene_prod tries them (real first)
+PROJECTED = (
+    ("MATR_ASSE", "matr_asse_depl_r", "matr_asse_gene_r"),
+    ("MATR_ASSE_GENE", "matr_asse_gene_r", "matr_asse_gene_r"),
+    ("MATR_ASSE", "matr_asse_depl_c", "matr_asse_gene_c"),
+    ("MATR_ASSE_GENE", "matr_asse_gene_c", "matr_asse_gene_c"),
+)
+
 
 def _sdprod(kw) -> str:
-    for key in ("MATR_ASSE", "MATR_ASSE_GENE"):
-        matrix = kw.get(key)
-        satisfies = getattr(matrix, "satisfies", lambda _t: False)
-        if satisfies("matr_asse_depl_c") or satisfies("matr_asse_gene_c"):
-            return "matr_asse_gene_c"
-    return "matr_asse_gene_r"
+    for key, given, produced in PROJECTED:
+        if getattr(kw.get(key), "aster_type", None) == given:
+            return produced
+    raise TypeError("PROJ_MATR_BASE: the type of the matrix to project is not known")
 
 
 PROJ_MATR_BASE = OPER(

@@ -17,22 +17,6 @@ from asterlite.fem.selection import (
 
 _DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
 _FORCE_COMPONENTS = {"FX": "DX", "FY": "DY", "FZ": "DZ", "MX": "DRX", "MY": "DRY", "MZ": "DRZ"}
-_HANDLED = (
-    "MODELE",
-    "DDL_IMPO",
-    "LIAISON_DDL",
-    "LIAISON_UNIF",
-    "LIAISON_SOLIDE",
-    "FORCE_NODALE",
-    "FORCE_POUTRE",
-    "PESANTEUR",
-    "INFO",
-    "VERI_NORM",
-    "VERI_AFFE",
-    "DOUBLE_LAGRANGE",
-    "CARA_ELEM",
-    "CHAM_MATER",
-)
 _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 _BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
 
@@ -241,8 +225,5 @@ def run(ctx, kw):
             "DIRECTION": tuple(float(x) for x in as_tuple(occ["DIRECTION"])),
             "CELLS": select_cells(ctx, occ, model.mesh) if occ.get("GROUP_MA") else None,
         }
-    for key, value in kw.items():
-        if key not in _HANDLED and isinstance(value, list) and value:
-            ctx.unsupported(f"AFFE_CHAR_MECA/{key}", key, kw)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load

@@ -95,9 +95,10 @@ def _evaluate(formula, columns: list[np.ndarray]) -> np.ndarray:
         ).reshape(columns[0].shape)
 
 
-def _cham_util(ctx, result, occ, rows=None) -> None:
+def _cham_util(ctx, result, occ, rows=None, cells=None) -> None:
     """UTnn_ELNO from a formula of an ELNO field's components; with ``rows``
-    (selected orders) the other orders are NaN (code_aster has no field there)."""
+    (selected orders) the other orders are NaN (code_aster has no field there);
+    with ``cells`` (GROUP_MA of the call) the field lives on those cells only."""
     source = occ["NOM_CHAM"]
     field = result.element_fields.get(source)
     if field is None:
@@ -105,8 +106,14 @@ def _cham_util(ctx, result, occ, rows=None) -> None:
     if occ.get("FORMULE") is None:
         ctx.unsupported("CHAM_UTIL CRITERE / NORME", "CRITERE", occ)
     formulas = as_tuple(occ["FORMULE"])
-    source_values = field.values if rows is None else field.values[rows]
-    values = np.full(field.values.shape[:3] + (len(formulas),), np.nan)
+    on_cells = np.ones(len(field.cells), dtype=bool)
+    if cells is not None:
+        on_cells = np.isin(np.asarray(field.cells), np.asarray(cells))
+        if not on_cells.any():
+            ctx.error(f"{source} is on none of the cells of GROUP_MA", "NOM_CHAM", occ)
+    source_values = (field.values if rows is None else field.values[rows])[:, on_cells]
+    n_orders, _, n_points = field.values.shape[:3]
+    values = np.full((n_orders, int(on_cells.sum()), n_points, len(formulas)), np.nan)
     for k, formula in enumerate(formulas):
         params = formula.nom_para
         missing = [p for p in params if p not in field.components]
@@ -118,8 +125,9 @@ def _cham_util(ctx, result, occ, rows=None) -> None:
         values[target, ..., k] = np.real(_evaluate(formula, columns))
     name = f"UT{int(occ['NUME_CHAM_RESU']):02d}_" + source.split("_")[-1]
     components = tuple(f"X{k + 1}" for k in range(len(formulas)))
-    result.element_fields[name] = ElementField(name, field.cells, components, values)
-    ctx.log(f"CALC_CHAMP {name}: {len(formulas)} components on {len(field.cells)} cells")
+    kept = np.asarray(field.cells)[on_cells]
+    result.element_fields[name] = ElementField(name, kept, components, values)
+    ctx.log(f"CALC_CHAMP {name}: {len(formulas)} components on {len(kept)} cells")
 
 
 def run(ctx, kw):
@@ -182,6 +190,8 @@ def run(ctx, kw):
             f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
         )
     rows = _selected_orders(ctx, kw, result) if kw.factor("CHAM_UTIL") else None
+    mesh = result.numbering.mesh if kw.factor("CHAM_UTIL") else None
+    restricted = select_cells(ctx, kw, mesh) if mesh is not None and kw.get("GROUP_MA") else None
     for occ in kw.factor("CHAM_UTIL"):
-        _cham_util(ctx, result, occ, rows)
+        _cham_util(ctx, result, occ, rows, restricted)
     return result

@@ -24,7 +24,7 @@ def run(ctx, kw):
         None,
     )  # fmt: skip
     if operation is None:
-        given = next((k for k, v in kw.items() if isinstance(v, list) and v), "operation")
+        given = next((k for k, v in dict.items(kw) if isinstance(v, list) and v), "operation")
         ctx.unsupported(f"CALC_FONCTION/{given}", given, kw)
     occurrences = kw.factor(operation)
     try:

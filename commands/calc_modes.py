@@ -60,8 +60,7 @@ def run(ctx, kw):
         ctx.error(str(exc), "OPTION", kw)
     if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
         omega2, vecs = omega2[: calc_freq["NMAX_FREQ"]], vecs[:, : calc_freq["NMAX_FREQ"]]
-    if omega2.size == 0:
-        ctx.error("no eigenmode found for this selection", "CALC_FREQ", kw)
+    check_found(ctx, kw, omega2.size)
     res = residuals(pencil, omega2, vecs)
     modes = build_mode_result(stiffness, mass, omega2, pencil.expand(vecs))
     modes.parameters["ERREUR"] = res
@@ -93,6 +92,17 @@ def run(ctx, kw):
     return modes
 
 
+def check_found(ctx, kw, count: int, what="eigenmode", keyword="CALC_FREQ") -> None:
+    """An empty selection stops the run (STOP_BANDE_VIDE='OUI', the default);
+    with 'NON' code_aster makes an empty result, which asterlite does not."""
+    stop = kw.get("STOP_BANDE_VIDE", "OUI") == "OUI"
+    if count:
+        return
+    if stop:
+        ctx.error(f"no {what} found for this selection", keyword, kw)
+    ctx.unsupported("an empty selection with STOP_BANDE_VIDE='NON'", "STOP_BANDE_VIDE", kw)
+
+
 def _critical(ctx, kw):
     """TYPE_RESU MODE_FLAMB ((K + λ K_geo) φ = 0) and GENERAL ((A + λ B) φ = 0)."""
     if kw["TYPE_RESU"] == "MODE_FLAMB":
@@ -115,8 +125,7 @@ def _critical(ctx, kw):
         loads, vecs = select_critical(loads, vecs, option, window, nmax)
     except (EigenError, ConstraintError) as exc:
         ctx.error(str(exc), "OPTION", kw)
-    if loads.size == 0:
-        ctx.error("no critical load found for this selection", "CALC_CHAR_CRIT", kw)
+    check_found(ctx, kw, loads.size, "critical load", "CALC_CHAR_CRIT")
     modes = build_buckling_result(a, b, loads, pencil.expand(vecs))
     norm = kw.factor("NORM_MODE")
     if norm:
@@ -140,8 +149,7 @@ def _generalized(ctx, kw, stiffness, mass):
         omega2, vecs = generalized_modes(stiffness.matrix, mass.matrix, option, freq, nmax)
     except EigenError as exc:
         ctx.error(str(exc), "OPTION", kw)
-    if omega2.size == 0:
-        ctx.error("no eigenmode found for this selection", "CALC_FREQ", kw)
+    check_found(ctx, kw, omega2.size)
     modes = build_generalized_result(stiffness, mass, omega2, vecs)
     for k, f in enumerate(modes.frequencies, start=1):
         ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
@@ -172,8 +180,7 @@ def _complex(ctx, kw, stiffness, mass, damping):
         ctx.error(str(exc), "OPTION", kw)
     if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
         lam, vecs = lam[: calc_freq["NMAX_FREQ"]], vecs[:, : calc_freq["NMAX_FREQ"]]
-    if lam.size == 0:
-        ctx.error("no eigenmode found for this selection", "CALC_FREQ", kw)
+    check_found(ctx, kw, lam.size)
     res = pencil.residuals(lam, vecs)
     modes = build_complex_mode_result(stiffness, mass, damping, lam, pencil.expand(vecs))
     modes.parameters["ERREUR"] = res
@@ -221,8 +228,7 @@ def _generalized_complex(ctx, kw, stiffness, mass, damping):
         )
     except QuadraticError as exc:
         ctx.error(str(exc), "OPTION", kw)
-    if lam.size == 0:
-        ctx.error("no eigenmode found for this selection", "CALC_FREQ", kw)
+    check_found(ctx, kw, lam.size)
     modes = build_complex_generalized_result(stiffness, mass, damping, lam, vecs)
     ratios = modes.parameters["AMOR_REDUIT"]
     for k, (f, a) in enumerate(zip(modes.frequencies, ratios, strict=True), start=1):

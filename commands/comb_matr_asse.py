@@ -42,6 +42,15 @@ def run(ctx, kw):
         if matrix.numbering is not first.numbering:
             ctx.error("the matrices use different numberings", "MATR_ASSE", occ)
         total = term if total is None else total + term
+    if kw.get("SANS_CMP") == "LAGR" and isinstance(first, AssembledMatrix):
+        # generalized matrices have no Lagrange multipliers: nothing to leave out;
+        # physical ones keep their constraints in the numbering, shared by all
+        ctx.unsupported(
+            "SANS_CMP='LAGR' on physical matrices (asterlite keeps boundary conditions "
+            "as relations of the numbering, not as Lagrange terms of the matrix)",
+            "SANS_CMP",
+            kw,
+        )
     if isinstance(first, AssembledMatrix):
         cls = ComplexAssembledMatrix if keyword == "COMB_C" else AssembledMatrix
         return cls(

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.assembly import DofNumbering, NodalField
 from asterlite.fem.selection import as_tuple, select_nodes
 
 
@@ -36,15 +36,37 @@ def _template_numbering(ctx, kw):
     return DofNumbering(mesh=mesh, dofs=dofs)
 
 
+def _check_meshes(ctx, kw, mesh) -> None:
+    """MAILLAGE and MODELE, when given, must be on the field's mesh."""
+    for key in ("MAILLAGE", "MODELE"):
+        given = kw.get(key)
+        given_mesh = given.mesh if key == "MODELE" and given is not None else given
+        if given_mesh is not None and given_mesh is not mesh:
+            ctx.error(f"{key} is not the mesh of the field's numbering", key, kw)
+
+
+def _prolonged(kw, numbering, values, assigned):
+    """The field on its whole numbering (PROL_ZERO='OUI': unassigned DOFs are
+    zero) or, as code_aster builds it otherwise, on the assigned DOFs only."""
+
+    if kw.get("PROL_ZERO", "NON") == "OUI" or assigned.all():
+        return NodalField(numbering=numbering, values=values)
+    dofs = [dof for dof, kept in zip(numbering.dofs, assigned, strict=True) if kept]
+    return NodalField(
+        numbering=DofNumbering(mesh=numbering.mesh, dofs=dofs), values=values[assigned]
+    )
+
+
 def _affe(ctx, kw):
     type_cham = kw.get("TYPE_CHAM")
     if type_cham not in ("NOEU_DEPL_R",):
         ctx.unsupported(f"CREA_CHAMP TYPE_CHAM={type_cham!r}", "TYPE_CHAM", kw)
     numbering = _template_numbering(ctx, kw)
-    mesh = kw.get("MAILLAGE") or numbering.mesh
-    if mesh is not numbering.mesh:
-        ctx.error("the CHAM_NO template is on another mesh", "CHAM_NO", kw)
+    _check_meshes(ctx, kw, numbering.mesh)
+    mesh = numbering.mesh
+    prolong = kw.get("PROL_ZERO", "NON") == "OUI"
     values = np.zeros(numbering.n_dofs)
+    assigned = np.zeros(numbering.n_dofs, dtype=bool)
     by_node: dict[int, list[str]] = {}
     for node, comp in numbering.dofs:
         by_node.setdefault(node, []).append(comp)
@@ -58,15 +80,12 @@ def _affe(ctx, kw):
             rows = numbering.dof_indices(nodes, comp)
             if np.all(rows < 0):
                 ctx.error(f"no selected node carries {comp} in the numbering", "NOM_CMP", occ)
-            if (
-                np.any(rows < 0)
-                and kw.get("PROL_ZERO", "NON") != "OUI"
-                and occ.get("TOUT") != "OUI"
-            ):
+            if np.any(rows < 0) and not prolong and occ.get("TOUT") != "OUI":
                 missing = mesh.node_names[int(np.asarray(nodes)[rows < 0][0])]
                 ctx.error(f"node {missing} has no {comp} in the numbering", "NOM_CMP", occ)
             values[rows[rows >= 0]] = float(val)
-    return NodalField(numbering=numbering, values=values)
+            assigned[rows[rows >= 0]] = True
+    return _prolonged(kw, numbering, values, assigned)
 
 
 def _nodal_only(ctx, kw):
@@ -211,7 +230,6 @@ def _extr_rows(ctx, kw, access, count) -> np.ndarray:
 
 
 def _union_numbering(mesh, fields):
-    from asterlite.concepts.assembly import DofNumbering
     from asterlite.fem.assemble import build_numbering_dofs
     from asterlite.fem.dofs import sort_components
 
@@ -224,14 +242,27 @@ def _union_numbering(mesh, fields):
     )
 
 
-def _asse(ctx, kw):
+def _output_numbering(ctx, kw, fields):
+    """The numbering of an assembled field: the NUME_DDL / CHAM_NO template's
+    when one is given (as code_aster), else the union of the pieces' DOFs."""
+    if kw.get("NUME_DDL") is not None or kw.get("CHAM_NO") is not None:
+        numbering = _template_numbering(ctx, kw)
+        _check_meshes(ctx, kw, numbering.mesh)
+        return numbering
     mesh = kw.get("MAILLAGE") or kw["MODELE"].mesh
+    _check_meshes(ctx, kw, mesh)
+    return _union_numbering(mesh, fields)
+
+
+def _asse(ctx, kw):
     occs = kw.factor("ASSE")
+    numbering = _output_numbering(ctx, kw, [occ["CHAM_GD"] for occ in occs])
+    mesh = numbering.mesh
     for occ in occs:
         if occ["CHAM_GD"].numbering.mesh is not mesh:
             ctx.error("CHAM_GD is on another mesh", "CHAM_GD", occ)
-    numbering = _union_numbering(mesh, [occ["CHAM_GD"] for occ in occs])
     values = np.zeros(numbering.n_dofs)
+    assigned = np.zeros(numbering.n_dofs, dtype=bool)
     for occ in occs:
         source = occ["CHAM_GD"]
         nodes = set(select_nodes(ctx, occ, mesh).tolist())
@@ -251,7 +282,8 @@ def _asse(ctx, kw):
                 values[row] += coef * value
             else:
                 values[row] = coef * value
-    return NodalField(numbering=numbering, values=values)
+            assigned[row] = True
+    return _prolonged(kw, numbering, values, assigned)
 
 
 def _comb(ctx, kw):

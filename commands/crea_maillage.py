@@ -6,13 +6,8 @@ import numpy as np
 
 from asterlite.fem.selection import as_scalar, select_nodes
 
-_HANDLED = ("MAILLAGE", "CREA_POI1", "INFO", "TITRE")
-
 
 def run(ctx, kw):
-    for key, value in kw.items():
-        if key not in _HANDLED and isinstance(value, list) and value:
-            ctx.unsupported(f"CREA_MAILLAGE/{key}", key, kw)
     mesh = kw["MAILLAGE"].copy()
     for occ in kw.factor("CREA_POI1"):
         nodes = select_nodes(ctx, occ, mesh)

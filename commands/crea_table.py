@@ -65,9 +65,6 @@ def from_result(ctx, occ):
     smoothed nodal field (``*_NOEU``) that CALC_CHAMP stored on RESULTAT."""
     if occ.get("RESULTAT") is None:
         ctx.unsupported("CREA_TABLE RESU/CHAM_GD (RESULTAT only)", "CHAM_GD", occ)
-    for key in ("NOM_VARI", "MODE", "LIST_MODE", "FREQ", "LIST_FREQ"):
-        if occ.get(key) is not None:
-            ctx.unsupported(f"CREA_TABLE RESU/{key}", key, occ)
     result, name = occ["RESULTAT"], occ["NOM_CHAM"]
     field = computed_fields(result).get(name)
     if field is None:

@@ -24,6 +24,8 @@ def build_intervals(ctx, kw, start, intervals, kind):
         here = points[-1]
         if end <= here:
             ctx.error(f"JUSQU_A={end} does not exceed the previous bound {here}", "JUSQU_A", occ)
+        if not np.isfinite(float(end) - float(here)):  # finite bounds, overflowing span
+            ctx.error(f"[{here:g}, {end:g}] exceeds the floating-point range", "JUSQU_A", occ)
         if occ.get("NOMBRE") is not None:
             count = int(occ["NOMBRE"])
             if count < 1:
@@ -34,6 +36,8 @@ def build_intervals(ctx, kw, start, intervals, kind):
             if step <= 0:
                 ctx.error("PAS must be positive", "PAS", occ)
             ratio = (end - here) / step
+            if not np.isfinite(ratio):  # a subnormal PAS
+                ctx.error(f"PAS={step:g} is too small for [{here:g}, {end:g}]", "PAS", occ)
             count = int(round(ratio))
             # code_aster accepts a step that divides the interval up to round-off
             if abs(ratio - count) > 1e-3 * max(1.0, abs(ratio)) or count < 1:
@@ -42,7 +46,20 @@ def build_intervals(ctx, kw, start, intervals, kind):
                     "PAS",
                     occ,
                 )
-        new = here + step * np.arange(1, count + 1)
+        new = accumulate_steps(here, step, count)
         new[-1] = end  # land exactly on JUSQU_A
         points.extend(kind(v) for v in new)
     return np.asarray(points)
+
+
+def accumulate_steps(start, step, count):
+    """start + step, + step, ... (count points) added one step at a time, as
+    code_aster builds its lists: the round-off then grows along the interval
+    (15.000000000007807 rather than 15.0 for 22500 steps of 0.02/30), and
+    that decides on which side of a kink a sampled formula falls. Values
+    within machine epsilon of zero are set to zero, as code_aster does."""
+    steps = np.full(count + 1, float(step))
+    steps[0] = start
+    points = np.add.accumulate(steps)[1:]  # sequential, not pairwise
+    points[np.abs(points) <= np.finfo(float).eps] = 0.0
+    return points

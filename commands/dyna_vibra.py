@@ -11,8 +11,10 @@ import math
 
 import numpy as np
 
+from asterlite.concepts.table import TableNotComputed
 from asterlite.concepts.transient import ShockHistory, TranGene
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row, integrate_film
 from asterlite.dynamics.integrate import SCHEMES, SchemeOptions, integrate
 from asterlite.dynamics.kernel import INFO_REJECTED, INFO_STEP
 from asterlite.dynamics.model import (
@@ -72,15 +74,20 @@ def run(ctx, kw):
     basis = mass_matrix.basis
     system = linear_system(ctx, kw)
     specs = []
+    occurrences = []  # the COMPORTEMENT occurrence of each shock (fluid films)
     for occ in kw.factor("COMPORTEMENT"):
         if occ.get("RELATION") != "DIS_CHOC":  # a relation of asterlite.dynamics.laws
             specs.append(nonlinearity_spec(ctx, kw, occ, basis, system.n_modes, len(specs) + 1))
+            occurrences.append(occ)
             continue
-        specs.extend(shock_specs(ctx, occ, basis, system.n_modes))
+        found = shock_specs(ctx, occ, basis, system.n_modes)
+        specs.extend(found)
+        occurrences.extend([occ] * len(found))
     continue_law_states(kw, specs)
     if kw.factor("VERI_CHOC"):
         check_basis_for_shocks(ctx, kw, specs, basis, system)
     shocks = build_shocks(specs, system)
+    film = fluid_film(ctx, kw, scheme, system, occurrences)
 
     q0, v0, t_init_state = initial_state(ctx, kw, system.n_modes)
     t0, t_end, dt_user, veri_pas = time_span(ctx, kw, t_init_state)
@@ -132,26 +139,35 @@ def run(ctx, kw):
         nb_poin_periode=int(schema_kw.get("NB_POIN_PERIODE", 50)),
     )
     try:
-        result = integrate(
-            system,
-            shocks,
-            excitation,
-            scheme,
-            q0,
-            v0,
-            t0,
-            t_end,
-            dt,
-            instants,
-            pas_arch,
-            options,
-            rotation=rotation,
-            label=f"DYNA_VIBRA {ctx.result_name or ''} {scheme}".replace("  ", " "),
-            energy=energy,
-            implicit_shocks=implicit,
-        )
+        if film is not None:  # CHOC/LAME_FLUIDE of code_aster 10-14 decks
+            refuse_with_film(ctx, kw, implicit, rotation, energy, driven)
+            result = integrate_film(
+                system, shocks, film, excitation, q0, v0, t0, t_end, dt, instants, pas_arch,
+                label=f"DYNA_VIBRA {ctx.result_name or ''} EULER (LAME_FLUIDE)",
+            )  # fmt: skip
+        else:
+            result = integrate(
+                system,
+                shocks,
+                excitation,
+                scheme,
+                q0,
+                v0,
+                t0,
+                t_end,
+                dt,
+                instants,
+                pas_arch,
+                options,
+                rotation=rotation,
+                label=f"DYNA_VIBRA {ctx.result_name or ''} {scheme}".replace("  ", " "),
+                energy=energy,
+                implicit_shocks=implicit,
+                load_labels=load_labels(kw, len(loads)),
+            )
     except NumericalError as error:
-        raise NumericalError(error.message, ctx.location, ctx.command) from None
+        path = f"{ctx.command}/{error.path}" if error.path else ctx.command
+        raise NumericalError(error.message, ctx.location, path) from None
     ctx.log(
         f"DYNA_VIBRA {scheme}: {result.info['steps']} steps "
         f"({result.info['rejected_steps']} rejected), "
@@ -196,11 +212,117 @@ def run(ctx, kw):
         previous = reused.tables.get("PARA_CALC") if continued else None
         produced.tables["PARA_CALC"] = E.table(result.energy, previous, t0)
         produced.info.update(E.summary(result.energy))
+    final = produced
     if continued:
-        joined = appended(reused, produced)
-        joined.tables.update(produced.tables)
-        return joined
-    return produced
+        final = appended(reused, produced)
+        final.tables.update(produced.tables)
+    name = (reused.name if continued else None) or ctx.result_name or ""
+    impression(ctx, kw, final, name, specs, system)
+    return final
+
+
+# schemes that integrate a fluid film: code_aster 10-12's EULER (asterlite's
+# DIFF_CENTRE arithmetic, the name legacy decks are translated to)
+FILM_SCHEMES = ("DIFF_CENTRE", "EULER")
+FRICTION_KEYWORDS = ("COULOMB", "COULOMB_DYNA", "COULOMB_STAT")
+
+
+def fluid_film(ctx, kw, scheme, system, occurrences) -> FluidFilm | None:
+    """The fluid films of the shocks (COMPORTEMENT/LAME_FLUIDE='OUI', an
+    asterlite extension reached from code_aster 10-14 decks), or None."""
+    films = [occ for occ in occurrences if occ.get("LAME_FLUIDE") == "OUI"]
+    if not films:
+        return None
+    where = films[0]
+    if scheme not in FILM_SCHEMES:
+        ctx.unsupported(
+            f"LAME_FLUIDE='OUI' with SCHEMA={scheme!r} (only code_aster 10-12's EULER, "
+            "SCHEMA='DIFF_CENTRE' here)",
+            "LAME_FLUIDE",
+            where,
+        )
+    if not system.diagonal:
+        ctx.unsupported(
+            "LAME_FLUIDE='OUI' with non-diagonal generalized matrices (code_aster 11 "
+            "modifies a diagonal modal mass only)",
+            "LAME_FLUIDE",
+            where,
+        )
+    for occ in occurrences:
+        if occ.get("RELATION") != "DIS_CHOC":
+            ctx.unsupported(
+                f"LAME_FLUIDE='OUI' together with RELATION={occ.get('RELATION')!r}",
+                "RELATION",
+                occ,
+            )
+    for occ in films:
+        for key in FRICTION_KEYWORDS:
+            if occ.get(key):
+                ctx.unsupported(f"{key} on a shock with LAME_FLUIDE='OUI'", key, occ)
+    rows = np.zeros((len(occurrences), N_FILM))
+    for s, occ in enumerate(occurrences):
+        if occ.get("LAME_FLUIDE") == "OUI":
+            rows[s] = film_row(occ["ALPHA"], occ["BETA"], occ["CHI"], occ["DELTA"])
+    controls = (kw.factor("PARA_LAME_FLUI") or [{}])[0]
+    return FluidFilm(
+        rows,
+        max_iterations=int(controls.get("NMAX_ITER", 20)),
+        tolerance=float(controls.get("RESI_RELA", 1.0e-3)),
+        relaxation=float(controls.get("LAMBDA", 10.0)),
+    )
+
+
+def refuse_with_film(ctx, kw, implicit, rotation, energy, driven) -> None:
+    """What the fluid film loop does not combine with, refused by keyword."""
+    refused = (
+        (implicit, "TRAITEMENT_NONL", "TRAITEMENT_NONL='IMPLICITE'"),
+        (rotation is not None, "VITESSE_VARIABLE", "VITESSE_VARIABLE='OUI'"),
+        (energy, "ENERGIE", "ENERGIE"),
+        (bool(driven), "EXCIT", "support motions (MULT_APPUI) or static corrections"),
+    )
+    for present, keyword, what in refused:
+        if present:
+            ctx.unsupported(f"{what} with LAME_FLUIDE='OUI'", keyword, kw)
+
+
+def impression(ctx, kw, result, name, specs, system) -> None:
+    """IMPRESSION: the DIS_VISC / DIS_ECRO_TRAC histories on their logical
+    units (asterlite.io.relation_history), the shocks' local quantities in
+    the message log (asterlite.io.shock_listing)."""
+    from asterlite.io import relation_history, shock_listing
+
+    occs = kw.factor("IMPRESSION")
+    if not occs:
+        return
+    occ = occs[0]
+    units = {k: occ.get(k) for k in relation_history.UNIT_KEYWORDS if occ.get(k) is not None}
+    for note in relation_history.write_histories(ctx.session, result, name, units):
+        ctx.log(note)
+    levels = shock_listing.requested_levels(occ.get("NIVEAU"), occ.get("TOUT"))
+    first, last = occ.get("INST_INIT"), occ.get("INST_FIN")
+    if not levels:
+        if first is not None or last is not None:  # code_aster lists nothing either
+            ctx.log("IMPRESSION/INST_INIT, INST_FIN: nothing listed without NIVEAU or TOUT='OUI'")
+        return
+    rates = restitution_rates(ctx, kw, occ, specs, system) if "TAUX_CHOC" in levels else None
+    for line in shock_listing.listing_lines(result, levels, first, last, rates):
+        ctx.log(line)
+
+
+def restitution_rates(ctx, kw, occ, specs, system) -> dict:
+    """{(shock, node): static restitution rate of the basis} (VERI_CHOC's)."""
+    from asterlite.dynamics.basis_check import node_checks
+
+    basis = kw["MATR_MASS"].basis
+    if basis.stiffness is None:
+        keyword = "NIVEAU" if occ.get("NIVEAU") else "TOUT"
+        ctx.unsupported(
+            "IMPRESSION TAUX_CHOC (restitution rate) on a basis without its assembled stiffness",
+            keyword,
+            occ,
+        )
+    checks = node_checks(specs, basis, np.diag(system.stiffness))
+    return {(check.shock, check.node): check.restitution for check in checks}
 
 
 def implicit_shocks(ctx, kw) -> bool:
@@ -586,7 +708,24 @@ def time_span(ctx, kw, t_state):
         t_end = float(occ["INST_FIN"])
     if t_end <= t0:
         ctx.error(f"INST_FIN ({t_end}) must exceed the initial instant ({t0})", "INST_FIN", occ)
+    refuse_too_many_steps(ctx, occ, t0, t_end, dt)
     return t0, t_end, dt, veri_pas
+
+
+# steps one transient may take (docs/safety.md): bounded before it starts
+MAX_TRANSIENT_STEPS = 1_000_000_000
+
+
+def refuse_too_many_steps(ctx, occ, t0: float, t_end: float, dt: float) -> None:
+    """A located error when (INST_FIN - INST_INIT) / PAS passes the bound."""
+    steps = (t_end - t0) / dt if dt > 0.0 else float("inf")
+    if not steps <= MAX_TRANSIENT_STEPS:
+        ctx.error(
+            f"INST_FIN={t_end:g} and PAS={dt:g} from {t0:g} make {steps:.3g} steps, more than "
+            f"the {MAX_TRANSIENT_STEPS:.0e} a transient may take: shorten INST_FIN or enlarge PAS",
+            "INST_FIN",
+            occ,
+        )
 
 
 def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
@@ -672,7 +811,8 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     if veri_pas and scheme not in STEP_ONLY_WARNED:
         raise NumericalError(
             f"PAS={dt_user:.6g} exceeds the stability limit {limit:.6g} of {scheme}: {why}; "
-            f"use PAS <= {limit:.6g} (e.g. PAS={suggested_step(limit):.6g}) or VERI_PAS='NON'",
+            f"use PAS <= {limit:.6g} (e.g. PAS={suggested_step(limit):.6g}) or "
+            "INCREMENT=_F(VERI_PAS='NON')",
             ctx.location,
             f"{ctx.command}/INCREMENT/PAS",
         )
@@ -733,6 +873,12 @@ def excitations(ctx, kw, n_modes):
         loads.append((vector, mult))
     loads.extend(result_excitations(ctx, kw, n_modes))
     return loads
+
+
+def load_labels(kw, count: int) -> list[str]:
+    """How the deck names each excitation row: EXCIT[k], then EXCIT_RESU."""
+    labels = [f"EXCIT[{k}]" for k in range(1, len(kw.factor("EXCIT")) + 1)]
+    return (labels + ["EXCIT_RESU"] * count)[:count]
 
 
 def result_excitations(ctx, kw, n_modes):
@@ -879,8 +1025,12 @@ def support_motions(ctx, kw, basis) -> list[dict]:
     node's component c) on the basis DOFs, with the support's DEPL / VITE /
     ACCE functions (REST_GENE_PHYS adds Σ ψ_k d_k(t) for absolute motion)."""
     supports = []
+    kw.get("MODE_STAT")  # read by support_shape: code_aster uses it only for MULT_APPUI
     for occ in kw.factor("EXCIT"):
         if occ.get("MULT_APPUI") != "OUI":
+            # without MULT_APPUI, code_aster (mdrecf) reads neither VITE nor DEPL:
+            # ACCE alone multiplies the load vector
+            occ.get("VITE"), occ.get("DEPL")
             continue
         shape = support_shape(ctx, kw, occ)
         supports.append(
@@ -1007,6 +1157,11 @@ def run_physical(ctx, kw):
         )
     archive = Archive(system.n_free)
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    excluded = as_tuple(archiving.get("CHAM_EXCLU"))
+    if excluded:
+        # code_aster stores excluded fields at the last instant only; asterlite keeps
+        # them at every instant, so every value code_aster can give is the same
+        ctx.log(f"CHAM_EXCLU {', '.join(excluded)}: kept at every archived instant")
     last_velocity = None
     energy = None
     if kw.factor("ENERGIE"):
@@ -1093,13 +1248,14 @@ def run_physical(ctx, kw):
                 half_velocity = diff_centre.integrate(
                     system, times, q, v, a, mask, archive, inverse, monitor=energy
                 )
-                if "VITE" in as_tuple(archiving.get("CHAM_EXCLU")) and half_velocity is not None:
+                if "VITE" in excluded and half_velocity is not None:
                     # code_aster's dldiff archives the fields excluded along the run at
                     # the last instant, VITE being then the half-step velocity v_{N-1/2}
                     last_velocity = half_velocity
             stats = {"steps": times.size - 1}
     except FloatingPointError as error:
-        raise NumericalError(f"{scheme}: {error}", ctx.location, ctx.command) from None
+        path = f"{ctx.command}/{error.path}" if getattr(error, "path", "") else ctx.command
+        raise NumericalError(f"{scheme}: {error}", ctx.location, path) from None
     elapsed = __import__("time").perf_counter() - started
     out_t, out_q, out_v, out_a = archive.arrays()
     if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
@@ -1138,6 +1294,16 @@ def run_physical(ctx, kw):
     produced = DynaTrans(numbering=numbering, times=out_t, order=order, fields=fields)
     if energy is not None:
         produced.tables["PARA_CALC"] = energy.table()
+    if kw.factor("OBSERVATION"):
+        for occ in kw.factor("OBSERVATION"):
+            dict(occ.items())  # the occurrences define the deferred table's content
+        path, location = kw.where("OBSERVATION")
+        produced.tables["OBSERVATION"] = TableNotComputed(
+            "the OBSERVATION table of DYNA_VIBRA (values at every PAS_OBSE step, between "
+            "archived instants) is not computed by asterlite",
+            location,
+            path,
+        )
     return produced
 
 
@@ -1317,6 +1483,7 @@ def physical_instants(ctx, kw, t_state):
         dt = float(occ["PAS"])
         t0 = t_state if t_state is not None else float(occ.get("INST_INIT") or 0.0)
         t_end = float(occ["INST_FIN"])
+        refuse_too_many_steps(ctx, occ, t0, t_end, dt)
         n_steps = int(round((t_end - t0) / dt))
         times = t0 + dt * np.arange(n_steps + 1)
         if n_steps >= 1:
@@ -1365,6 +1532,7 @@ def check_basis_for_shocks(ctx, kw, specs, basis, system) -> None:
     from asterlite.dynamics.basis_check import node_checks
 
     occ = kw.factor("VERI_CHOC")[0]
+    stop = occ["STOP_CRITERE"] == "OUI"
     if basis.stiffness is None:
         ctx.unsupported("VERI_CHOC on a basis without its assembled stiffness", "VERI_CHOC", kw)
     checks = node_checks(specs, basis, np.diag(system.stiffness))
@@ -1380,7 +1548,7 @@ def check_basis_for_shocks(ctx, kw, specs, basis, system) -> None:
             f"the modal basis misses the static deflection of a shock node: criterion "
             f"{worst:.4g} > SEUIL {occ['SEUIL']:g} (add modes or static modes at the shock nodes)"
         )
-        if occ["STOP_CRITERE"] == "OUI":
+        if stop:
             ctx.error(message, "VERI_CHOC", kw)
         ctx.log(f"warning: {message}")
 

@@ -30,6 +30,7 @@ def run(ctx, kw):
     fmt = kw.get("FORMAT", "TABLEAU")
     unit = int(kw.get("UNITE", 8))
     path = ctx.session.output_path(unit)
+    styles = [curve_style(occ) for occ in kw.factor("COURBE")]  # a table draws none
     if fmt == "TABLEAU":
         lines = []
         for x, y, legend, para, resu in curves:
@@ -40,10 +41,15 @@ def run(ctx, kw):
         title = title if isinstance(title, str) else " ".join(title)
         xlabel = kw.get("LEGENDE_X") or curves[0][3]
         ylabel = kw.get("LEGENDE_Y") or curves[0][4]
-        drawn = [(x, y, legend) for x, y, legend, _, _ in curves]
+        drawn = [
+            (x, y, legend, style)
+            for (x, y, legend, _, _), style in zip(curves, styles, strict=True)
+        ]
         image_format = IMAGE_FORMATS.get(kw.get("PILOTE") or "")
         if image_format is not None:
             from asterlite.post.plots import curves_figure
+
+            require_matplotlib(ctx, kw)
 
             curves_figure(drawn, title, xlabel, ylabel).savefig(path, format=image_format)
         else:
@@ -54,6 +60,12 @@ def run(ctx, kw):
         ctx.unsupported(f"FORMAT={fmt!r}", "FORMAT", kw)
     ctx.log(f"{len(curves)} curve(s) written to {path.name}")
     return None
+
+
+def curve_style(occ) -> dict:
+    """The drawing styles a COURBE occurrence gives (Grace's numbers)."""
+    names = ("STYLE", "COULEUR", "MARQUEUR", "FREQ_MARQUEUR")
+    return {name: occ[name] for name in names if occ.get(name) is not None}
 
 
 def curve(ctx, occ):
@@ -79,3 +91,15 @@ def curve(ctx, occ):
     which = next((k for k in ("FONC_X", "NAPPE", "TABLE") if occ.get(k) is not None), "COURBE")
     ctx.unsupported(f"IMPR_FONCTION/COURBE with {which}", which, occ)
     return np.zeros(0), np.zeros(0), "", "", ""
+
+
+def require_matplotlib(ctx, kw) -> None:
+    """Images need matplotlib (the plot extra): say so at the PILOTE keyword."""
+    from asterlite.extras import MissingExtraError, require
+
+    try:
+        require("matplotlib.figure", f"PILOTE={kw['PILOTE']!r} (an image)")
+    except MissingExtraError as error:
+        error.path, location = kw.where("PILOTE")
+        error.location = location or ctx.location
+        raise

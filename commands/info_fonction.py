@@ -51,7 +51,8 @@ def maxima(ctx, occ, table):
 def windowed(occ, table, name, statistic):
     func = occ["FONCTION"]
     start, stop = occ.get("INST_INIT"), occ.get("INST_FIN")
-    value = statistic(func, occ.get("METHODE", "TRAPEZE"), start, stop)
+    precision, criterion = occ.get("PRECISION", 1e-6), occ.get("CRITERE", "RELATIF")
+    value = statistic(func, occ.get("METHODE", "TRAPEZE"), start, stop, precision, criterion)
     table.add_row(
         {
             "FONCTION": func.name or "",

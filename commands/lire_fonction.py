@@ -4,7 +4,8 @@ The file on logical unit UNITE is cut into blocks of consecutive numeric
 lines (any other line, or a blank one, ends a block); INDIC_PARA and
 INDIC_RESU give (block, column), both 1-based. Fortran exponents
 (``1.0D+03``) are accepted. TYPE='FONCTION_C' reads REEL_IMAG or
-MODULE_PHASE (degrees) columns.
+MODULE_PHASE (degrees) columns. A NaN or an infinity in a column read is
+refused, naming the file, its unit, the block and the line.
 """
 
 from __future__ import annotations
@@ -18,14 +19,26 @@ from asterlite.commands.defi_fonction import check_abscissas
 from asterlite.concepts.function import ComplexFunction, Function
 
 
-def numeric_blocks(text: str, separator: str | None = None) -> list[list[list[float]]]:
+class Row(list):
+    """The numbers of one line of the file, with its 1-based line number."""
+
+    def __init__(self, values, line: int = 0):
+        super().__init__(values)
+        self.line = line
+
+
+class NonFiniteValue(ValueError):
+    """A column read holds a NaN or an infinity (``nan``, ``inf``, ``1.E+999``)."""
+
+
+def numeric_blocks(text: str, separator: str | None = None) -> list[list[Row]]:
     """Blocks of rows of floats; a line that is not all numbers closes a block."""
     text = re.sub(r"(\d\.?)[dD]([+-]?\d)", r"\1E\2", text)
     blocks, current = [], []
-    for line in text.splitlines():
+    for number, line in enumerate(text.splitlines(), start=1):
         items = line.split(separator) if separator else line.split()
         try:
-            row = [float(item) for item in items if item.strip()]
+            row = Row([float(item) for item in items if item.strip()], number)
         except ValueError:
             row = []
         if row:
@@ -48,7 +61,17 @@ def column(blocks, indices, what: str) -> np.ndarray:
         raise ValueError(
             f"{what}: column {column_no} does not exist (block {block_no} has {width})"
         )
-    return np.array([r[column_no - 1] for r in rows])
+    values = np.array([r[column_no - 1] for r in rows])
+    bad = np.flatnonzero(~np.isfinite(values))
+    if bad.size:
+        row = rows[int(bad[0])]
+        line = getattr(row, "line", 0)
+        where = f"block {block_no}, line {line}" if line else f"block {block_no}"
+        raise NonFiniteValue(
+            f"{what}: {where}, column {column_no} holds {values[bad[0]]!r}: "
+            "a finite number is expected"
+        )
+    return values
 
 
 def run(ctx, kw):
@@ -61,13 +84,21 @@ def run(ctx, kw):
         ctx.error(f"file {path} (unit {kw['UNITE']}) does not exist", "UNITE", kw)
     separator = kw.get("SEPARATEUR")
     separator = None if separator in (None, "None", " ", "") else separator
-    blocks = numeric_blocks(path.read_text(encoding="utf-8", errors="replace"), separator)
+    from asterlite.io.input_files import InputTooLargeError, read_bounded_text
+
+    try:  # rows of Python floats: about 30 bytes of memory per byte of text
+        text = read_bounded_text(path, "function file", 30)
+    except InputTooLargeError as error:
+        ctx.error(str(error), "UNITE", kw)
+    blocks = numeric_blocks(text, separator)
     try:
         x = column(blocks, kw.get("INDIC_PARA", (1, 1)), "INDIC_PARA")
         if kw.get("TYPE", "FONCTION") == "FONCTION_C":
             y = complex_column(blocks, kw)
         else:
             y = column(blocks, kw.get("INDIC_RESU", (1, 2)), "INDIC_RESU")
+    except NonFiniteValue as exc:
+        ctx.error(f"file {path.name} (unit {kw['UNITE']}): {exc}", "UNITE", kw)
     except ValueError as exc:
         ctx.error(f"{path.name}: {exc}", "INDIC_PARA", kw)
     if x.size != y.size:

@@ -8,17 +8,6 @@ import numpy as np
 from asterlite.fem.selection import as_tuple
 
 _SUPPORTED = ("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME")
-_OTHERS = (
-    "ORIE_FISSURE",
-    "ORIE_PEAU_2D",
-    "ORIE_PEAU_3D",
-    "ORIE_SHB",
-    "ORIE_NORM_COQUE",
-    "ORIE_LIGNE",
-    "MODI_MAILLE",
-    "MODI_BASE",
-    "ABSC_CURV",
-)
 
 
 def _vector(values, dim: int = 3) -> np.ndarray:
@@ -91,9 +80,6 @@ def _deforme(ctx, mesh, occ) -> None:
 
 def run(ctx, kw):
     mesh = kw["MAILLAGE"]
-    for key in _OTHERS:
-        if kw.get(key):
-            ctx.unsupported(f"MODI_MAILLAGE/{key}", key, kw)
     # code_aster order: deformation, translation, rotation, symmetry, scale
     for occ in kw.factor("DEFORME"):
         _deforme(ctx, mesh, occ)

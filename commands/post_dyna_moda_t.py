@@ -22,7 +22,9 @@ import numpy as np
 
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import TranGene
+from asterlite.legacy.version import tables_name_nodes
 from asterlite.post import shocks as stats
+from asterlite.post.wear import history_wear_power
 
 from .recu_fonction import shock_quantity
 
@@ -62,20 +64,22 @@ def run(ctx, kw):
         ctx.error("the result has no localized nonlinearity to analyse", "RESU_GENE", kw)
     window = time_window(ctx, occ, result.times)
     option = occ.get("OPTION", "USURE")
+    occ.get("NB_CLASSE")  # read by code_aster's op0130 for both options; IMPACT's histogram
     table = Table()
     columns = IMPACT_COLUMNS if option == "IMPACT" else USURE_COLUMNS
     for name, type_code in columns.items():
         table.add_column(name, type_code)
     mesh = result.basis.numbering.mesh
+    by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: nodes by name
     for number, shock in enumerate(result.shocks, start=1):
-        labels = {"INTITULE": shock.name, "NOEUD": node_number(mesh, shock.node_1)}
+        labels = {"INTITULE": shock.name, "NOEUD": node_number(mesh, shock.node_1, by_name)}
         t = result.times[window]
         fields = {k: np.asarray(v)[window] for k, v in shock.fields.items()}
         if "FN" not in fields:
             ctx.error(f"shock {shock.name} has no archived normal force FN", "RESU_GENE", kw)
         if option == "IMPACT":
             impact_rows(table, labels, t, fields, occ)
-            buckling_rows(table, labels, shock, number, result.times, mesh)
+            buckling_rows(table, labels, shock, number, result.times, mesh, by_name)
         else:
             wear_rows(table, labels, t, fields, occ)
     return table
@@ -85,6 +89,8 @@ def relation_table(ctx, kw, result: TranGene) -> Table:
     """RELA_EFFO_DEPL: the nonlinear phases of the relation at one node
     component (code_aster fails when no RELA_EFFO_DEPL matches)."""
     from asterlite.post.restitution import single_node
+
+    by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: nodes by name
 
     table = Table()
     for name, type_code in RELATION_COLUMNS.items():
@@ -122,8 +128,8 @@ def relation_table(ctx, kw, result: TranGene) -> Table:
         if active is None:
             ctx.error(f"RELA_EFFO_DEPL {shock.name}: no archived flag VINT3", "RESU_GENE", kw)
         labels = {
-            "RELATION": relation_function(shock, node_number(mesh, node), component),
-            "NOEUD": node_number(mesh, node),
+            "RELATION": relation_function(shock, node_number(mesh, node, by_name), component),
+            "NOEUD": node_number(mesh, node, by_name),
             "CMP": component,
         }
         for phase in stats.nonlinear_phases(result.times, value, active):
@@ -158,10 +164,13 @@ def relation_function(shock, number: str, component: str) -> str:
     return ""
 
 
-def node_number(mesh, name: str | None) -> str:
-    """code_aster 17 writes nodes by number (1-based index) in tables."""
+def node_number(mesh, name: str | None, by_name: bool = False) -> str:
+    """code_aster 17 writes nodes by number (1-based index) in tables; code_aster
+    15 and older by name (``by_name``: the deck's version, see asterlite.legacy.version)."""
     if name is None:
         return ""
+    if by_name:
+        return str(name)
     index = mesh.node_index.get(name)
     return str(index + 1) if index is not None else str(name)
 
@@ -226,7 +235,7 @@ def impact_rows(table, labels, t, fields, occ) -> None:
         )
 
 
-def buckling_rows(table, labels, shock, number, times, mesh) -> None:
+def buckling_rows(table, labels, shock, number, times, mesh, by_name=False) -> None:
     """A FLAMBAGE connection that buckled: residual crushing and instant."""
     if shock.relation != "FLAMBAGE":
         return
@@ -238,7 +247,7 @@ def buckling_rows(table, labels, shock, number, times, mesh) -> None:
     nodes = [labels["NOEUD"]]
     if shock.node_2:
         force /= 2  # shared between the two nodes
-        nodes.append(node_number(mesh, shock.node_2))
+        nodes.append(node_number(mesh, shock.node_2, by_name))
     for node in nodes:
         table.add_row(
             {
@@ -333,20 +342,8 @@ def wear_rows(table, labels, t, fields, occ) -> None:
         }
     )
 
-    sticking = fields.get("ADHERENCE", fields.get("IADH"))
-    if sticking is not None:
-        sticking = np.asarray(sticking) != 0
-    power = [
-        stats.wear_power(
-            t[b],
-            fn[b],
-            fields.get("VT1", zeros)[b],
-            fields.get("VT2", zeros)[b],
-            None if sticking is None else sticking[b],
-        )
-        for b in blocks
-    ]
-    table.add_row({**labels, "CALCUL": "PUIS_USURE", "PUIS_USURE": float(np.mean(power))})
+    power = history_wear_power(t, fields, int(occ.get("NB_BLOC", 1)))
+    table.add_row({**labels, "CALCUL": "PUIS_USURE", "PUIS_USURE": power})
 
 
 def acquisition_time(t, blocks) -> float:

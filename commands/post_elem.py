@@ -14,9 +14,6 @@ _COLUMNS = (
 
 
 def run(ctx, kw):
-    for key in ("RESULTAT", "CHAM_GD", "ORIG_INER"):
-        if kw.get(key) is not None:
-            ctx.unsupported(f"POST_ELEM MASS_INER with {key}", key, kw)
     if kw.get("GEOMETRIE", "INITIALE") != "INITIALE":
         ctx.unsupported("POST_ELEM GEOMETRIE='DEFORMEE'", "GEOMETRIE", kw)
     model = kw.get("MODELE")

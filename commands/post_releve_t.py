@@ -36,7 +36,6 @@ from asterlite.post.restitution import as_tuple, node_indices
 
 TRANSLATIONS = ("DX", "DY", "DZ")
 ROTATIONS = ("DRX", "DRY", "DRZ")
-_UNSUPPORTED = ("INVARIANT", "ELEM_PRINCIPAUX", "TRAC_NOR", "TRAC_DIR")
 
 
 def run(ctx, kw):
@@ -54,9 +53,6 @@ def check_supported(ctx, occ) -> None:
     other = [op for op in operations if op != "EXTRACTION"]
     if other:
         ctx.unsupported(f"OPERATION={other[0]!r} (EXTRACTION only)", "OPERATION", occ)
-    for key in _UNSUPPORTED:
-        if occ.get(key) is not None:
-            ctx.unsupported(key, key, occ)
     if occ.get("REPERE", "GLOBAL") != "GLOBAL":
         ctx.unsupported(f"REPERE={occ['REPERE']!r} (GLOBAL only)", "REPERE", occ)
     if occ.get("MOYE_NOEUD", "OUI") != "OUI":

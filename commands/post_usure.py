@@ -73,7 +73,7 @@ def shock_window(shock, times, kw):
     window = slice(first, last + 1)
     fields = shock.fields
     zeros = np.zeros(t.size)
-    sticking = fields.get("ADHERENCE", fields.get("IADH"))
+    adherence = fields.get("ADHERENCE", fields.get("IADH"))
     return {
         "t": t[window],
         "fn": np.asarray(fields.get("FN", zeros))[window],
@@ -81,7 +81,7 @@ def shock_window(shock, times, kw):
         "vt2": np.asarray(fields.get("VT2", zeros))[window],
         "dy": np.asarray(fields.get("DYLOC", zeros))[window],
         "dz": np.asarray(fields.get("DZLOC", zeros))[window],
-        "sliding": None if sticking is None else np.asarray(sticking)[window] == 0,
+        "adherence": None if adherence is None else np.asarray(adherence)[window],
     }
 
 
@@ -209,9 +209,9 @@ def wear_table(ctx, kw):
         result = kw["RESU_GENE"]
         shock = shock_of(ctx, kw)
         history = shock_window(shock, result.times, kw)
-        power = wear.blocked_archard_power(
+        power = wear.wear_power(
             history["t"], history["fn"], history["vt1"], history["vt2"],
-            history["sliding"], kw.get("NB_BLOC", 1),
+            history["adherence"], kw.get("NB_BLOC", 1),
         )  # fmt: skip
     else:
         power = float(kw["PUIS_USURE"])

@@ -11,13 +11,15 @@ from asterlite.concepts.modes import GeneralizedNumbering
 
 def _resu_gene(ctx, occ, basis):
     """A tran_gene holding the generalized coordinates of a physical result's
-    fields (least-squares fit of DEPL, VITE and ACCE at each instant)."""
+    fields DEPL, VITE and ACCE at each instant: a least-squares fit for
+    kinematic fields, or the generalized force (TYPE_VECT='FORC')."""
     from asterlite.concepts.transient import TranGene
     from asterlite.modal.fields import FieldError, field_stack
-    from asterlite.modal.projection import ProjectionError, fit_coordinates
+    from asterlite.modal.projection import ProjectionError, fit_coordinates, project_force
     from asterlite.modal.renumber import transfer
 
     result = occ["RESU"]
+    as_force = occ["TYPE_VECT"] == "FORC"
     stacks = {}
     for name in ("DEPL", "VITE", "ACCE"):
         try:
@@ -26,7 +28,10 @@ def _resu_gene(ctx, occ, basis):
             continue
         physical = transfer(values.T, numbering, basis.numbering)
         try:
-            stacks[name] = fit_coordinates(basis.shapes, physical).T
+            if as_force:
+                stacks[name] = project_force(basis.shapes, physical).T
+            else:
+                stacks[name] = fit_coordinates(basis.shapes, physical).T
         except ProjectionError as exc:
             ctx.error(str(exc), "BASE", occ)
         times, order = access.get("INST"), access["NUME_ORDRE"]
@@ -48,10 +53,11 @@ def generalized_numbering(ctx, kw, basis) -> GeneralizedNumbering:
     """NUME_DDL_GENE: an existing numbering is used as it is (its own storage,
     as code_aster does); CO("NAME") or nothing builds one on the basis with
     STOCKAGE (bound to the name when given)."""
+    storage = kw.get("STOCKAGE", "PLEIN")  # code_aster too ignores it for an existing one
     given = kw.get("NUME_DDL_GENE")
     if isinstance(given, GeneralizedNumbering):
         return given
-    numbering = GeneralizedNumbering(basis=basis, storage=kw.get("STOCKAGE", "PLEIN"))
+    numbering = GeneralizedNumbering(basis=basis, storage=storage)
     if given is not None:
         ctx.bind(given, numbering)
     return numbering

@@ -11,7 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.modes import ModeResult
-from asterlite.concepts.table import Table
+from asterlite.concepts.table import Table, TableNotComputed
+from asterlite.errors import UnsupportedError
 from asterlite.post.restitution import as_tuple
 
 
@@ -25,7 +26,14 @@ def run(ctx, kw):
             ctx.error(
                 f"{source.name or 'CO'} holds no table {name!r} (tables: {known})", "NOM_TABLE", kw
             )
-        return tables[name]
+        table = tables[name]
+        if isinstance(table, TableNotComputed):
+            raise UnsupportedError(
+                f"table {name!r} of {source.name or 'CO'}: {table.reason}",
+                table.location or ctx.location,
+                table.path,
+            )
+        return table
     available = result_parameters(source)
     if not available:
         ctx.unsupported(f"RECU_TABLE parameters of a {source.aster_type}", "CO", kw)

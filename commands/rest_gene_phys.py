@@ -65,8 +65,10 @@ def run(ctx, kw):
     for keyword in ("MULT_APPUI", "CORR_STAT"):
         if kw.get(keyword) == "OUI":
             add_support_motion(ctx, kw, result, rows, selection.times, out, keyword)
-    if kw.get("ACCE_MONO_APPUI") is not None and "ACCE_ABSOLU" in out:
-        add_uniform_acceleration(ctx, kw, numbering, rows, selection.times, out)
+    if kw.get("ACCE_MONO_APPUI") is not None:
+        uniform_accelerations(ctx, kw)  # checked even when ACCE_ABSOLU is not asked for
+        if "ACCE_ABSOLU" in out:
+            add_uniform_acceleration(ctx, kw, numbering, rows, selection.times, out)
     if nodes is None and rows.size == numbering.n_dofs:
         sub = numbering
     else:
@@ -91,9 +93,11 @@ def run(ctx, kw):
 
 def requested_fields(ctx, kw, basis) -> tuple[tuple[str, ...], tuple[str, ...]]:
     """(nodal fields, element fields) to restore. Element fields (SIPO_ELNO,
-    EFGE_ELNO...) recombine those CALC_CHAMP computed on the modal basis."""
+    EFGE_ELNO...) recombine those CALC_CHAMP computed on the modal basis.
+    TOUT_CHAM gives DEPL, VITE, ACCE, and ACCE_ABSOLU with ACCE_MONO_APPUI."""
     if kw.get("TOUT_CHAM") == "OUI" or kw.get("NOM_CHAM") is None:
-        return FIELDS, ()
+        with_entrainment = kw.get("ACCE_MONO_APPUI") is not None
+        return (*FIELDS, "ACCE_ABSOLU") if with_entrainment else FIELDS, ()
     names = tuple(dict.fromkeys(as_tuple(kw["NOM_CHAM"])))
     nodal = (*FIELDS, "ACCE_ABSOLU")
     computed = getattr(basis, "element_fields", None) or {}
@@ -117,18 +121,29 @@ def add_support_motion(ctx, kw, result, rows, times, out, keyword="MULT_APPUI") 
         out[name] = out[name] + support_motion(supports, rows, times, name)
 
 
-def add_uniform_acceleration(ctx, kw, numbering, rows, times, out) -> None:
-    """ACCE_ABSOLU: the relative acceleration plus Σ γ_k(t) DIRECTION_k on
-    the translations (one direction triple per ACCE_MONO_APPUI function)."""
+def uniform_accelerations(ctx, kw):
+    """ACCE_MONO_APPUI functions and their unit DIRECTION triples (code_aster's
+    tran75 checks and normalises them whatever fields are restored)."""
     functions = as_tuple(kw["ACCE_MONO_APPUI"])
     directions = np.asarray(as_tuple(kw.get("DIRECTION")) or (0.0,) * 3, dtype=float)
-    directions = directions.reshape(-1, 3)
-    if len(directions) != len(functions):
+    if directions.size < 3 * len(functions):
         ctx.error(
-            f"{len(functions)} ACCE_MONO_APPUI functions for {len(directions)} DIRECTION",
+            f"{len(functions)} ACCE_MONO_APPUI functions need {3 * len(functions)} DIRECTION "
+            f"values, got {directions.size}",
             "DIRECTION",
             kw,
         )
+    directions = directions[: 3 * len(functions)].reshape(-1, 3)
+    norms = np.linalg.norm(directions, axis=1)
+    if np.any(norms < np.finfo(float).eps):
+        ctx.error("a DIRECTION of ACCE_MONO_APPUI is the zero vector", "DIRECTION", kw)
+    return functions, directions / norms[:, None]
+
+
+def add_uniform_acceleration(ctx, kw, numbering, rows, times, out) -> None:
+    """ACCE_ABSOLU: the relative acceleration plus Σ γ_k(t) DIRECTION_k on
+    the translations (one direction per ACCE_MONO_APPUI function)."""
+    functions, directions = uniform_accelerations(ctx, kw)
     components = [numbering.dofs[i][1] for i in rows]
     for function, direction in zip(functions, directions, strict=True):
         weights = np.array(
@@ -140,8 +155,9 @@ def add_uniform_acceleration(ctx, kw, numbering, rows, times, out) -> None:
 def restored_modes(ctx, kw, modes: GeneralizedModes):
     """A mode_gene restored on its projection basis: the modes Φ q_k (DEPL),
     all of them or those chosen by NUME_ORDRE / NUME_MODE (1-based)."""
+    every_field = kw.get("TOUT_CHAM") == "OUI"  # a mode_gene has DEPL only
     names = [n for n in as_tuple(kw.get("NOM_CHAM")) if n != "DEPL"]
-    if names and kw.get("TOUT_CHAM") != "OUI":
+    if names and not every_field:
         ctx.unsupported(f"NOM_CHAM={names[0]!r} of a mode_gene (DEPL only)", "NOM_CHAM", kw)
     for keyword in ("MULT_APPUI", "CORR_STAT", "ACCE_MONO_APPUI"):
         if kw.get(keyword) is not None:
@@ -157,7 +173,9 @@ def restored_modes(ctx, kw, modes: GeneralizedModes):
 
 
 def chosen_modes(ctx, kw, modes: GeneralizedModes) -> list[int] | None:
-    """0-based indices of the modes NUME_MODE / NUME_ORDRE name (None: all)."""
+    """0-based indices of the modes NUME_MODE / NUME_ORDRE name (None: all, as
+    TOUT_ORDRE asks)."""
+    kw.get("TOUT_ORDRE")
     if kw.get("NUME_MODE") is not None:
         key, known = "NUME_MODE", [int(n) for n in modes.mode_numbers]
     elif kw.get("NUME_ORDRE") is not None:

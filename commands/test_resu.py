@@ -35,9 +35,6 @@ def run(ctx, kw):
     for key, check in checks:
         for i, occ in enumerate(kw.factor(key), start=1):
             check(ctx, occ, f"{key}[{i}]")
-    for key in ("CARTE", "OBJET", "MAILLAGE"):
-        if kw.get(key):
-            ctx.unsupported(f"TEST_RESU/{key}", key, kw)
     return None
 
 

@@ -9,6 +9,8 @@ from asterlite.post.checks import record_check, reduce_values
 
 from .recu_fonction import filter_table
 
+EXTREMES = ("MAXI", "MAXI_ABS", "MINI", "MINI_ABS")
+
 
 def run(ctx, kw):
     table = kw["TABLE"]
@@ -16,6 +18,10 @@ def run(ctx, kw):
     filters = kw.factor("FILTRE")
     for occ in filters:
         table = filter_table(ctx, table, occ)
+        if occ.get("CRIT_COMP") in EXTREMES and len(table) > 1:
+            # code_aster's TEST_TABLE keeps the first row reaching the extreme
+            # (its Python tables, CALC_TABLE's, keep every tie)
+            table = table.first_rows(1)
     if para not in table.types:
         ctx.error(
             f"table has no parameter {para!r} (it has {', '.join(table.columns)})", "NOM_PARA", kw

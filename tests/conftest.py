@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import pytest
@@ -22,3 +23,15 @@ def corpus_dir() -> Path:
     if not CORPUS.is_dir():
         pytest.skip("../shared/aster-corpus is not available")
     return CORPUS
+
+
+@functools.cache
+def corpus_rows(name: str) -> tuple[dict, ...]:
+    """Every deck of ../shared/<name> run once per test session (the slow
+    corpus tests of one folder share it), or skip when the folder is absent."""
+    from asterlite.runtime.corpus import run_corpus
+
+    folder = ROOT.parent / "shared" / name
+    if not folder.is_dir():
+        pytest.skip(f"../shared/{name} is not available")
+    return tuple(run_corpus(folder, jobs=2, timeout=900))

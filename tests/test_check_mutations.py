@@ -65,9 +65,12 @@ MUTATIONS = [
 
 
 @pytest.fixture
-def deck_text():
+def deck_text(tmp_path):
     if not DECK.exists():
         pytest.skip("../shared/aster-corpus is not available")
+    # the mesh beside the copied deck, as `asterlite run` would find it
+    mesh = DECK.with_suffix(".mail")
+    (tmp_path / mesh.name).write_bytes(mesh.read_bytes())
     return DECK.read_text()
 
 

@@ -235,7 +235,7 @@ def test_tube_orbiting_in_circular_supports(tmp_path):
         ]
         out = tmp_path / treatment
         report = run_deck(deck, out, keyword_overrides=overrides)
-        assert report.status in ("PASS", "NOOK"), report.message
+        assert report.status in ("PASS", "NOOK", "DONE"), report.message
         first = [s for s in report.shocks if s["result"] == "DEBUT_CHOCS"]
         peaks[treatment] = max(s["max_FN"] for s in first if s["shock"] == "SUPP1")
         if treatment == "IMPLICITE":

@@ -233,7 +233,7 @@ class Outcome:
 
     @property
     def complete(self) -> bool:
-        return self.report.status in ("PASS", "NOOK")
+        return self.report.status in ("PASS", "NOOK", "DONE")
 
     def physical(self, label: str) -> np.ndarray:
         """Displacement history of one DOF ("N1 DY")."""

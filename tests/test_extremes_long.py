@@ -73,7 +73,7 @@ def test_ten_million_steps_with_sparse_archiving(tmp_path):
     assert child.returncode == 0, child.stderr[-3000:]
     figures = json.loads(child.stdout.strip().splitlines()[-1])
     print(figures)
-    assert figures["status"] == "PASS", figures["message"]
+    assert figures["status"] == "DONE", figures["message"]  # no TEST_*: DONE
     (transient,) = figures["transients"]
     assert transient["steps"] == STEPS
     # Everything Python allocates during the run (archive buffers included):

@@ -152,9 +152,13 @@ def test_wear_work_rate_per_support(tran):
     bars = figure.axes[0].patches
     assert len(bars) == 2
     shock = tran.shocks[0].fields
-    # FN is constant: the rate is FN times the time-averaged sliding speed
+    # FN is constant: the rate is FN times the time-averaged sliding speed, over
+    # the intervals that start sliding (code_aster's PUIS_USURE)
     speed = np.abs(np.hypot(shock["VT1"], shock["VT2"]))
-    integral = np.sum((speed[1:] + speed[:-1]) * np.diff(tran.times)) / 2.0  # trapezoid rule
+    sliding = np.asarray(shock["ADHERENCE"])[:-1] == 0
+    assert sliding.any() and not sliding.all()  # the stick flag matters here
+    pieces = (speed[1:] + speed[:-1]) * np.diff(tran.times)
+    integral = np.sum(pieces[sliding]) / 2.0  # trapezoid rule
     expected = FN * integral / (tran.times[-1] - tran.times[0])
     assert [bar.get_height() for bar in bars] == pytest.approx([expected, expected], rel=1e-9)
     labels = [tick.get_text() for tick in figure.axes[0].get_xticklabels()]

@@ -3,6 +3,7 @@ import pytest
 from asterlite.commands import post_dyna_moda_t
 
 from asterlite.post import shocks
+from asterlite.post.wear import wear_power
 
 from .test_post_support import context, kw, small_transient
 
@@ -60,7 +61,7 @@ def test_shock_counts_and_wear_power():
     assert counts.mean_duration == pytest.approx(0.2)
     assert counts.max_duration == pytest.approx(0.3)
     assert counts.total_contact_time == pytest.approx(0.4)
-    power = shocks.wear_power(T, FN, np.ones(10), np.zeros(10))
+    power = wear_power(T, FN, np.ones(10), np.zeros(10))
     assert power == pytest.approx(0.7 / 0.9)
 
 

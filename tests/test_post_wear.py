@@ -17,11 +17,11 @@ from tests.test_post_support import context, kw, small_transient
 def test_archard_power_of_constant_sliding():
     t = np.linspace(0.0, 2.0, 21)
     fn, vt1, vt2 = np.full(21, 3.0), np.full(21, 0.3), np.full(21, 0.4)
-    assert wear.archard_power(t, fn, vt1, vt2) == pytest.approx(1.5)  # 3 N × 0.5 m/s
+    assert wear.wear_power(t, fn, vt1, vt2) == pytest.approx(1.5)  # 3 N × 0.5 m/s
     # sticking half of the time: half the power
-    sliding = t < 1.0 - 1e-12
-    assert wear.archard_power(t, fn, vt1, vt2, sliding) == pytest.approx(0.75)
-    assert wear.blocked_archard_power(t, fn, vt1, vt2, None, 4) == pytest.approx(1.5)
+    sticking = (t >= 1.0 - 1e-12).astype(int)
+    assert wear.wear_power(t, fn, vt1, vt2, sticking) == pytest.approx(0.75)
+    assert wear.wear_power(t, fn, vt1, vt2, None, 4) == pytest.approx(1.5)
 
 
 def test_archard_volume_is_linear_in_time():

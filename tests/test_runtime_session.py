@@ -70,7 +70,7 @@ def test_unsupported_command_names_itself_and_line(tmp_path):
 
 def test_statements_after_fin_are_not_run(tmp_path):
     text = "DEBUT()\nFIN()\nX = 1 / 0\n"
-    assert run_deck(deck(tmp_path, text), tmp_path / "out").status == "PASS"
+    assert run_deck(deck(tmp_path, text), tmp_path / "out").status == "DONE"
 
 
 def test_testcase_assertions_are_checks(tmp_path):

@@ -13,6 +13,12 @@ The catalogue validator turns a deck call into a :class:`Keywords` mapping:
 ``path`` is the keyword path for messages (``DYNA_VIBRA/COMPORTEMENT[1]``)
 and ``location`` the deck position of the call or ``_F(...)`` occurrence.
 Commands never re-validate: they trust types, counts, ``into`` and rules.
+
+The mapping also remembers which keywords the deck *gave* (``given``, set by
+the validator) and which the command *read* (``[]``, ``get``, ``in``,
+``factor``, ``pop``; iterating over the whole mapping reads everything).
+After a command returns, :func:`unread_keywords` lists the given keywords it
+never looked at: the runtime refuses those rather than ignore them silently.
 """
 
 from __future__ import annotations
@@ -28,6 +34,58 @@ class Keywords(dict):
         self.path = path
         self.location = location
         self.locations: dict[str, Location] = {}  # per-keyword positions when known
+        self.given: frozenset[str] = frozenset()  # keywords written in the deck
+        self.read: set[str] = set()  # keywords the command has looked at
+        self.no_effect: frozenset[str] = frozenset()  # catalogue: changes no result
+
+    # --- reads are recorded so that an ignored keyword can be refused -------------------
+    def __getitem__(self, name):
+        self.read.add(name)
+        return super().__getitem__(name)
+
+    def get(self, name, default=None):
+        self.read.add(name)
+        return super().get(name, default)
+
+    def __contains__(self, name) -> bool:
+        self.read.add(name)
+        return super().__contains__(name)
+
+    def pop(self, name, *default):
+        self.read.add(name)
+        return super().pop(name, *default)
+
+    def _read_all(self) -> None:
+        self.read.update(super().keys())
+
+    def __iter__(self):
+        self._read_all()
+        return super().__iter__()
+
+    def keys(self):
+        self._read_all()
+        return super().keys()
+
+    def items(self):
+        self._read_all()
+        return super().items()
+
+    def values(self):
+        self._read_all()
+        return super().values()
+
+    def copy(self) -> Keywords:
+        """A copy reads nothing: reads of the copy count as reads of this level."""
+        twin = Keywords(dict.items(self), path=self.path, location=self.location)
+        twin.locations = dict(self.locations)
+        twin.given = self.given
+        twin.no_effect = self.no_effect
+        twin.read = self.read  # shared on purpose
+        return twin
+
+    def peek(self, name, default=None):
+        """The value of ``name`` without counting it as used (for logs and summaries)."""
+        return super().get(name, default)
 
     def where(self, keyword: str | None = None) -> tuple[str, Location | None]:
         """(keyword path, best location) for an error about ``keyword``."""
@@ -37,3 +95,30 @@ class Keywords(dict):
     def factor(self, name: str) -> list[Keywords]:
         """The occurrences of factor keyword ``name`` (empty list if absent)."""
         return self.get(name) or []
+
+
+def unread_keywords(keywords: Keywords) -> list[tuple[Keywords, str]]:
+    """(level, name) of every given keyword never read, through factor occurrences.
+
+    Keywords the catalogue marks as having no effect on results (``INFO``...)
+    need not be read. A factor keyword counts as used when one of its
+    occurrences was looked at: the keywords inside are then judged one by one.
+    """
+    found = []
+    for name in [n for n in dict.keys(keywords) if n in keywords.given]:
+        value = dict.get(keywords, name)
+        occurrences = value if _is_occurrences(value) else None
+        if name in keywords.no_effect:
+            continue
+        if name not in keywords.read:
+            # a factor whose given keywords all change no result is not owed a read
+            if occurrences is None or any(map(unread_keywords, occurrences)):
+                found.append((keywords, name))
+        elif occurrences is not None:
+            for occurrence in occurrences:
+                found.extend(unread_keywords(occurrence))
+    return found
+
+
+def _is_occurrences(value) -> bool:
+    return isinstance(value, list) and all(isinstance(v, Keywords) for v in value)

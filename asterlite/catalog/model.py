@@ -71,6 +71,7 @@ class SIMP(Entry):
         val_min_included: bool = True,
         val_max_included: bool = True,
         fr: str = "",
+        no_effect: str = "",
         **ignored,
     ):
         if typ is None:
@@ -86,6 +87,7 @@ class SIMP(Entry):
         self.val_min_included = val_min_included
         self.val_max_included = val_max_included
         self.fr = fr
+        self.no_effect = no_effect  # why the keyword changes no result, if it does not
 
     @property
     def mandatory(self) -> bool:
@@ -98,6 +100,28 @@ class SIMP(Entry):
 
     def __repr__(self) -> str:
         return f"SIMP(statut={self.statut!r}, typ={self.types!r})"
+
+
+# Keywords that change no result wherever they appear, and why. A command need
+# not read them; any other keyword a deck gives must be used or refused.
+NO_EFFECT_ANYWHERE = {
+    "INFO": "verbosity of code_aster's message file",
+    "TITRE": "title of the concept, printed only in code_aster's listings",
+}
+
+
+def has_no_effect(name: str, entry: Entry) -> bool:
+    """True when giving ``name`` cannot change a result: the catalogue says so
+    (``no_effect=``), or the keyword is mandatory with a single allowed value,
+    so that the validated call already says all it says."""
+    if getattr(entry, "no_effect", "") or name in NO_EFFECT_ANYWHERE:
+        return True
+    return (
+        isinstance(entry, SIMP)
+        and entry.mandatory
+        and entry.into is not None
+        and len(entry.into) == 1
+    )
 
 
 class Level(Entry):
@@ -135,6 +159,7 @@ class FACT(Level):
         max: int | str = 1,  # noqa: A002
         regles=(),
         fr: str = "",
+        no_effect: str = "",
         **entries,
     ):
         super().__init__("FACT", regles, entries)
@@ -142,6 +167,7 @@ class FACT(Level):
         self.min = _check_count(min, "min", "FACT")
         self.max = _check_count(max, "max", "FACT")
         self.fr = fr
+        self.no_effect = no_effect
 
     @property
     def mandatory(self) -> bool:

@@ -26,7 +26,7 @@ from collections import ChainMap
 from collections.abc import Mapping
 
 from asterlite.catalog.keywords import Keywords
-from asterlite.catalog.model import BLOC, FACT, MANY, SIMP, Command, Entry, Level
+from asterlite.catalog.model import BLOC, FACT, MANY, SIMP, Command, Entry, Level, has_no_effect
 from asterlite.catalog.values import TypeMismatch, accept, describe_value, is_old_complex, plain
 from asterlite.concepts.base import Concept
 from asterlite.errors import ValidationError
@@ -251,6 +251,8 @@ def _fill(state: _LevelState) -> None:
         else:
             result[name] = state.values[name]
     result.locations = {n: loc for n, loc in result.locations.items() if n in state.given}
+    result.given = frozenset(n for n in state.given if dict.__contains__(result, n))
+    result.no_effect = frozenset(n for n, e in state.entries.items() if has_no_effect(n, e))
 
 
 # --- factor keywords ---------------------------------------------------------------------

@@ -4,12 +4,16 @@
 command expects (int -> float for ``R``, integral float -> int for ``I``,
 ``('RI', re, im)``/``('MP', mod, phase)`` -> complex for ``C``) or raises
 :class:`TypeMismatch` whose text says what was expected and what was got.
-numpy scalars and arrays are recognised by duck typing: numpy is never
-imported here.
+A real or complex value must be finite: a NaN or an infinity given to an
+``R`` or ``C`` keyword is refused here, at its source, rather than switching
+a computation off silently downstream (a NaN gap makes every comparison
+false). numpy scalars and arrays are recognised by duck typing: numpy is
+never imported here.
 """
 
 from __future__ import annotations
 
+import cmath
 import math
 
 from asterlite.concepts.base import Concept
@@ -62,8 +66,16 @@ def _old_complex(value) -> complex:
     return complex(a * math.cos(phase), a * math.sin(phase))
 
 
+_TOO_LARGE = "expected a finite {kind}, got an integer beyond the floating-point range"
+
+
 def _as_real(value):
-    return float(value) if _is_real(value) else None
+    if not _is_real(value):
+        return None
+    try:
+        return float(value)
+    except OverflowError:  # a Python integer beyond the float range
+        raise TypeMismatch(_TOO_LARGE.format(kind="real number (R)")) from None
 
 
 def _as_int(value):
@@ -77,10 +89,13 @@ def _as_int(value):
 
 
 def _as_complex(value):
-    if is_old_complex(value):
-        return _old_complex(value)
-    if _is_real(value) or isinstance(value, complex):
-        return complex(value)
+    try:
+        if is_old_complex(value):
+            return _old_complex(value)
+        if _is_real(value) or isinstance(value, complex):
+            return complex(value)
+    except OverflowError:  # a Python integer beyond the float range
+        raise TypeMismatch(_TOO_LARGE.format(kind="complex number (C)")) from None
     return None
 
 
@@ -126,8 +141,17 @@ def accept(types: tuple[str, ...], value):
     for type_name in types:
         converted = _convert(type_name, value)
         if converted is not None:
+            _require_finite(type_name, converted)
             return converted
     raise TypeMismatch(f"expected {describe_types(types)}, got {describe_value(value)}")
+
+
+def _require_finite(type_name, converted) -> None:
+    """NaN and infinities are not numbers a computation can use: refuse them."""
+    if type_name == "R" and not math.isfinite(converted):
+        raise TypeMismatch(f"expected a finite real number (R), got {converted!r}")
+    if type_name == "C" and not cmath.isfinite(converted):
+        raise TypeMismatch(f"expected a finite complex number (C), got {converted!r}")
 
 
 def describe_types(types: tuple[str, ...]) -> str:

@@ -295,10 +295,30 @@ class Formula(Concept, DeckCallable):
             )
         namespace = dict(self.extra)
         namespace.update({k: np.asarray(v, dtype=float) for k, v in values.items()})
-        result = self.compiled.evaluate(namespace)
+        with np.errstate(all="ignore"):  # a non-finite value is reported below
+            result = self.compiled.evaluate(namespace)
         shape = np.broadcast_shapes(*[np.shape(namespace[p]) for p in self.NOM_PARA])
         dtype = complex if self.complex_result else float
-        return np.broadcast_to(np.asarray(result, dtype=dtype), shape).copy()
+        values = np.broadcast_to(np.asarray(result, dtype=dtype), shape).copy()
+        self._check_finite(values, namespace, shape)
+        return values
+
+    def _check_finite(self, values: np.ndarray, namespace: dict, shape: tuple) -> None:
+        """code_aster computes formulas with Python floats, which raise where
+        numpy gives NaN or inf (1/0, sqrt(-1), exp(1000)): refuse such a value,
+        naming the formula and the first point giving it."""
+        bad = ~np.isfinite(values)
+        if not bad.any():
+            return
+        index = np.unravel_index(int(np.argmax(bad)), shape) if shape else ()
+        point = ", ".join(
+            f"{p}={float(np.broadcast_to(namespace[p], shape)[index])!r}" for p in self.NOM_PARA
+        )
+        label = f"formula {self.name}" if self.name else "formula"
+        raise CommandError(
+            f"{label} {self.VALE!r} evaluates to {values[index].item()!r} at {point}: "
+            "a finite value is expected"
+        )
 
     def evaluate_many(self, *args) -> np.ndarray:
         return self.evaluate(*args)

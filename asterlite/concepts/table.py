@@ -127,6 +127,9 @@ class Table(Concept):
         columns = list(self.columns if columns is None else columns)
         return Table(columns, {c: self.types[c] for c in columns}, rows, self.title)
 
+    def first_rows(self, count: int) -> Table:
+        return self._copy_with([dict(r) for r in self.rows[:count]])
+
     def select(self, names) -> Table:
         """Only the given parameters (in that order); rows left empty are dropped."""
         for name in names:
@@ -255,3 +258,14 @@ class TableView:
         if isinstance(key, int):
             return self.rows[key]
         raise CommandError("an extracted table is indexed as tab['PARAMETER', row_number]")
+
+
+@dataclass
+class TableNotComputed:
+    """A table a command could produce but asterlite computes only on demand,
+    and cannot compute yet: reading it (RECU_TABLE) is refused, naming the
+    keyword that asked for it. Until then nothing the deck uses differs."""
+
+    reason: str
+    location: Any = None
+    path: str = ""

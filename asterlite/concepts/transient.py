@@ -75,6 +75,11 @@ class TranGene(Concept):
             "setDisplacementValues",
             "setVelocityValues",
             "setAccelerationValues",
+            "LIST_ARCH",
+            "VARI_INTERNE",
+            "FORCE_NORMALE",
+            "FORCE_AXIALE",
+            "FORCE_RELATION",
         }
     )
 
@@ -143,6 +148,32 @@ class TranGene(Concept):
         from asterlite.post.deck_api import info_nonl
 
         return info_nonl(self.shocks)
+
+    # code_aster 15's nonlinearity accessors (inoli counts from 1, -1: the first)
+    def LIST_ARCH(self):  # noqa: N802
+        from asterlite.post.deck_api import archived_instants
+
+        return archived_instants(self.times)
+
+    def VARI_INTERNE(self, inoli=-1, describe=True):  # noqa: N802
+        from asterlite.post.deck_api import vari_interne
+
+        return vari_interne(self.shocks, inoli, describe)
+
+    def FORCE_NORMALE(self, inoli=-1):  # noqa: N802
+        from asterlite.post.deck_api import normal_force
+
+        return normal_force(self.shocks, inoli)
+
+    def FORCE_AXIALE(self, inoli=-1):  # noqa: N802
+        from asterlite.post.deck_api import axial_force
+
+        return axial_force(self.shocks, inoli)
+
+    def FORCE_RELATION(self, inoli=-1):  # noqa: N802
+        from asterlite.post.deck_api import relation_force
+
+        return relation_force(self.shocks, inoli)
 
 
 @dataclass(eq=False)

@@ -14,17 +14,25 @@ The program follows the vectorised evaluation of
 :class:`asterlite.concepts.function.Formula` (numpy's semantics: division
 by zero gives inf or nan, comparisons give 1.0/0.0), with the C library's
 math functions where numpy may use its own vectorised ones (a last-bit
-difference at most).
+difference at most). Arithmetic that does not involve the parameter is
+folded once by that evaluation, with Python's exact integers, as code_aster
+computes it (``(2**53 + 1) - 2**53`` is 1, not the 0.0 of float steps); a
+folded or literal integer that no float holds exactly, a folded value that
+is not finite, or one that raises leaves the formula to the sampled path,
+which reports it.
 """
 
 from __future__ import annotations
 
 import ast
+import copy
 import math
 import numbers
 
 import numpy as np
 from numba import njit
+
+from asterlite.errors import CommandError
 
 # Operation codes. PUSH_CONSTANT takes its value from the constants row at
 # the same position; every other code pops its operands and pushes one value.
@@ -78,7 +86,9 @@ def formula_program(mult) -> tuple[list[int], list[float]] | None:
     for name in extra:
         constants.pop(name, None)  # an extra value shadows a math constant
     for name, value in extra.items():
-        if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        if isinstance(value, int) and not isinstance(value, bool):
+            constants[name] = value  # kept exact for folding, as Python would
+        elif isinstance(value, numbers.Real) and not isinstance(value, bool):
             constants[name] = float(value)
         elif isinstance(value, np.ndarray) and value.ndim == 0 and np.isrealobj(value):
             constants[name] = float(value)
@@ -86,12 +96,76 @@ def formula_program(mult) -> tuple[list[int], list[float]] | None:
     values: list[float] = []
     try:
         shadowed = set(extra) | {parameters[0]}
-        depth = emit(compiled.tree.body, parameters[0], constants, shadowed, codes, values, 0)
+        body = fold_constants(compiled, parameters[0], constants)
+        depth = emit(body, parameters[0], constants, shadowed, codes, values, 0)
     except (NotCompilable, RecursionError):
         return None
     if depth > STACK_DEPTH:
         return None
     return codes, values
+
+
+_FOLDABLE = (ast.BinOp, ast.UnaryOp, ast.Constant, ast.Name, ast.operator, ast.unaryop, ast.Load)
+
+
+def fold_constants(compiled, parameter: str, constants: dict):
+    """The expression tree with each largest arithmetic subtree free of the
+    parameter (numbers, numeric extra values, math constants, + - * / ** %
+    //) replaced by its value, computed by the formula's own evaluator."""
+
+    def foldable(node) -> bool:
+        return all(
+            isinstance(n, _FOLDABLE)
+            and not (isinstance(n, ast.Name) and (n.id == parameter or n.id not in constants))
+            for n in ast.walk(node)
+        )
+
+    class Folder(ast.NodeTransformer):
+        def visit(self, node):
+            if isinstance(node, (ast.BinOp, ast.UnaryOp)) and foldable(node):
+                return ast.Constant(value=folded_value(compiled, node, constants))
+            return super().visit(node)
+
+    return Folder().visit(copy.deepcopy(compiled.tree.body))
+
+
+def folded_value(compiled, node, constants: dict) -> float:
+    """The value of a parameter-free subtree as the kernels can hold it."""
+    try:
+        with np.errstate(all="ignore"):
+            value = compiled.evaluate_node(node, constants)
+    except (ArithmeticError, ValueError, CommandError) as exc:  # e.g. an integer overflow
+        raise NotCompilable(str(exc)) from None
+    if isinstance(value, (bool, np.bool_)):  # a folded 'not': 1 or 0 in arithmetic
+        return float(value)
+    if not isinstance(value, numbers.Real):
+        raise NotCompilable(repr(value))
+    if isinstance(value, int):
+        return value  # left exact: emit converts it as Python would, where it is used
+    if not math.isfinite(value):  # numpy's inf or nan where Python raises (1.0/0.0)
+        raise NotCompilable(repr(value))
+    return float(value)
+
+
+def kernel_float(value) -> float:
+    """A number as the float Python converts it to when it meets a float."""
+    try:
+        return float(value)
+    except OverflowError:  # Python raises too: the sampled path reports it
+        raise NotCompilable(f"integer of {value.bit_length()} bits") from None
+
+
+def exact_operand(node, constants: dict) -> None:
+    """Python compares an integer with a float exactly: refuse an integer
+    operand that no float holds (beyond 2**53), which the kernels would round."""
+    value = None
+    if isinstance(node, ast.Constant):
+        value = node.value
+    elif isinstance(node, ast.Name):
+        value = constants.get(node.id)
+    if isinstance(value, int) and not isinstance(value, bool):
+        if kernel_float(value) != value:
+            raise NotCompilable(f"integer {value.bit_length()} bits wide in a comparison")
 
 
 def emit(node, parameter, constants, shadowed, codes, values, depth: int) -> int:
@@ -109,13 +183,13 @@ def emit(node, parameter, constants, shadowed, codes, values, depth: int) -> int
         case ast.Constant(value=value) if isinstance(value, int | float) and not isinstance(
             value, bool
         ):
-            op(PUSH_CONSTANT, float(value))
+            op(PUSH_CONSTANT, kernel_float(value))
             return depth + 1
         case ast.Name(id=name):
             if name == parameter:
                 op(PUSH_TIME)
             elif name in constants:
-                op(PUSH_CONSTANT, constants[name])
+                op(PUSH_CONSTANT, kernel_float(constants[name]))
             else:
                 raise NotCompilable(name)
             return depth + 1
@@ -136,6 +210,8 @@ def emit(node, parameter, constants, shadowed, codes, values, depth: int) -> int
         case ast.Compare(left=left, ops=[comparison], comparators=[right]) if (
             type(comparison) in COMPARISONS
         ):
+            exact_operand(left, constants)
+            exact_operand(right, constants)
             deepest = max(sub(left, 0), sub(right, 1))
             op(COMPARISONS[type(comparison)])
             return deepest

@@ -351,7 +351,7 @@ def implicit_loop(
             code, t, dt, counters[K.K_STEP], state, base, model
         )
         if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
+            return K.record_failure(clock, counters, status, shock, dt_used)
         q, v = state[0], state[1]
         indicators(q, v, model[1], kinematics, R_GAP1, trial, work)
         changed = False

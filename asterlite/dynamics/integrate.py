@@ -12,6 +12,7 @@ import numpy as np
 from asterlite import progress
 from asterlite.dynamics import (
     adapt_control,
+    diagnosis,
     scheme_adapt_ordre1,
     scheme_adapt_ordre2,
     scheme_devoge,
@@ -28,6 +29,7 @@ from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.forces import acceleration, total_force
 from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet, local_bundle
 from asterlite.errors import NumericalError
+from asterlite.runtime import watchdog
 
 # Each scheme module offers prepare(system, dt, options) -> (memory, adaptive)
 # and a compiled run_loop calling its own step function.
@@ -104,6 +106,7 @@ def integrate(
     label: str | None = None,
     energy: bool = False,
     implicit_shocks: bool = False,
+    load_labels: list[str] | None = None,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
     ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
@@ -111,7 +114,9 @@ def integrate(
     ``label`` names the run on the progress bar. ``energy``: accumulate the
     energy balance in the loop (:mod:`asterlite.dynamics.energy`), returned
     as ``RunResult.energy``. ``implicit_shocks``: TRAITEMENT_NONL='IMPLICITE'
-    (:mod:`asterlite.dynamics.implicit_shocks`)."""
+    (:mod:`asterlite.dynamics.implicit_shocks`). ``load_labels``: how the
+    deck names each excitation row (``EXCIT[2]``...), for the message of a
+    load that becomes non-finite; the error's ``path`` then names it."""
     options = options or SchemeOptions()
     n = system.n_modes
     module = SCHEMES[scheme]
@@ -124,9 +129,9 @@ def integrate(
     work = np.zeros((5, 3))
     shock = total_force(t0, q, v, model[1], vint, model[2], work, f)
     acceleration(f, q, v, model[0], np.zeros(n), a)
-    if shock >= 0 or not np.all(np.isfinite(a)):
-        raise law_error(shocks, vint, t0) or NumericalError(
-            f"non-finite initial acceleration at t={t0:g}"
+    if shock >= 0 or diagnosis.bad(a).any():
+        raise law_error(shocks, vint, t0) or initial_error(
+            (q, v, a, f, vint), shocks, excitation, t0, load_labels
         )
     state = (q, v, a, f, vint, np.zeros_like(vint), work)
 
@@ -149,7 +154,7 @@ def integrate(
     adaptive = loop_adapts(scheme, dt, options)
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
-    n_steps = max(1, int(round((t_end - t0) / dt)))
+    n_steps = K.grid_step_count(t0, t_end, dt)
     capacity = 2 + len(instants) + n_steps // max(pas_arch, 1)
     if adaptive:
         capacity = min(capacity, 4096)
@@ -174,6 +179,7 @@ def integrate(
     if energy:
         E.start(balance, t0, q, v, a, vint, model[1], model[2])
     bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
+    model_parts = (system, shocks, excitation, load_labels)
     started = wallclock.perf_counter()
     try:
         while True:
@@ -192,6 +198,7 @@ def integrate(
                 model = (model[0], model[1], excitation.bundle()) + model[3:]
             elif status == K.STATUS_PAUSE:
                 budget.check_steps(clock, counters, scheme)
+                watchdog.check_time()  # the run's time limit (export P time_limit)
                 budget.resize_chunk(wallclock.perf_counter() - chunk_started)
                 bar.update(clock[K.C_TIME], int(counters[K.K_STEP]))
             else:
@@ -203,6 +210,9 @@ def integrate(
     elapsed = wallclock.perf_counter() - started
     if status != K.STATUS_DONE:
         failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
+        if failed is None and status == K.STATUS_NOT_FINITE:
+            last = buffers[0][int(counters[K.K_ARCHIVED]) - 1]
+            failed = nonfinite_error(state, clock, counters, last, model_parts, scheme)
         raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info = (b[:count].copy() for b in buffers)
@@ -269,7 +279,7 @@ class StepBudget:
     ARCHIVE_BYTES = 4 * 1024**3
 
     def __init__(self, t0, t_end, dt, adaptive, options):
-        nominal = max(1, int(math.ceil((t_end - t0) / dt)))
+        nominal = K.grid_step_count(t0, t_end, dt)
         self.max_steps = options.max_steps or (
             max(self.STEP_FACTOR * nominal, self.MIN_STEPS) if adaptive else None
         )
@@ -338,11 +348,34 @@ def grow(buffers):
     return tuple(np.concatenate([b, np.zeros_like(b)]) for b in buffers)
 
 
+def initial_error(state, shocks, excitation, t0: float, labels) -> NumericalError:
+    """The error of an initial state whose acceleration is not finite."""
+    culprit = diagnosis.nonfinite_culprit(state, shocks, excitation, t0, labels)
+    return NumericalError(
+        f"non-finite values in the initial state at t={t0:.9g}: {culprit.text}", path=culprit.path
+    )
+
+
+def nonfinite_error(state, clock, counters, last_archived, model_parts, scheme: str):
+    """The error of a run whose state became non-finite: which quantity
+    (the load of an EXCIT occurrence, the force of a shock, the generalized
+    displacement / velocity / acceleration), at which instant, the last
+    finite and the last archived instants, and what to change; its
+    ``path`` names the keyword at fault below DYNA_VIBRA."""
+    system, shocks, excitation, labels = model_parts
+    t_good, dt = float(clock[K.C_TIME]), float(clock[K.C_STEP])
+    culprit = diagnosis.nonfinite_culprit(state, shocks, excitation, t_good + dt, labels)
+    when = diagnosis.when_text(t_good + dt, t_good, int(counters[K.K_STEP]) + 1, last_archived)
+    if culprit.step_related:
+        advice = step_advice(system, shocks, scheme, dt)
+    else:
+        advice = "check the function that defines it (FONC_MULT, COEF_MULT, the FORMULE)"
+    return NumericalError(f"{scheme}: {when}: {culprit.text}; {advice}", path=culprit.path)
+
+
 def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSystem, scheme: str):
     """The error of a run that failed: when, where (the shock), with which
     step, and a smaller step to try with what sets it."""
-    from asterlite.dynamics.model import damped_step_limit, stability_limit, suggested_step
-
     t = clock[K.C_TIME]
     dt = clock[K.C_STEP]
     shock = counters[K.K_SHOCK]
@@ -359,6 +392,14 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
         K.STATUS_SWITCH_NOT_LOCATED: "a step was integrated again 100 times without "
         "locating its contact switch (TRAITEMENT_NONL='IMPLICITE')",
     }.get(status, f"integration failed (status {status})")
+    advice = step_advice(system, shocks, scheme, dt)
+    return NumericalError(f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; {advice}")
+
+
+def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) -> str:
+    """A smaller step to try, with what sets the stability limit."""
+    from asterlite.dynamics.model import damped_step_limit, stability_limit, suggested_step
+
     period = stability_limit(system, shocks)
     limit, cause = step_limit(system, shocks, scheme), period.cause()
     damped = damped_step_limit(system, shocks)
@@ -371,7 +412,7 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
         )
     else:
         advice = f"try PAS <= {limit:.3g} (e.g. PAS={suggested_step(limit):.3g}; {cause})"
-    return NumericalError(f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; {advice}")
+    return advice
 
 
 def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:

@@ -28,7 +28,12 @@ tableau) and ``model = (lin, shk, exc)`` the bundles of ``model.py``.
 The loop follows code_aster's archiving rules (dtmcalc): the step is
 shortened to land exactly on each requested instant (and on INST_FIN), the
 remainder of the shortened step is taken next, and otherwise every
-``pas_arch``-th step is archived. It stops with STATUS_FULL when the archive
+``pas_arch``-th step is archived. A fixed-step loop stands on the grid
+t0 + n PAS (code_aster's list of instants, mdptem): the instant of a step
+that completes grid interval n is computed from n, never summed step after
+step, so that 2e8 steps of 1e-5 s end at 2000 s exactly (a running sum
+drifts by 4e-6 s there and takes one more, tiny, step). Adaptive loops
+accumulate their steps. It stops with STATUS_FULL when the archive
 buffers are full so that the driver can grow them and resume: memory
 follows the archived instants, never the number of steps. Likewise it
 stops with STATUS_LOADS when a multiplier sampled by windows (a FORMULE)
@@ -44,6 +49,8 @@ step of each archived instant too), the step-size history of adaptive runs.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit
 
@@ -58,12 +65,12 @@ STATUS_LOADS = 11  # a windowed multiplier needs its next window (model.Excitati
 STATUS_PAUSE = 12  # the granted steps are taken: the driver reports progress and resumes
 
 # clock[]: time, stored step, nominal step, end time, shortened step,
-#          smallest and largest step taken
-C_TIME, C_STEP, C_STEP0, C_END, C_NEWDT, C_MIN_STEP, C_MAX_STEP = range(7)
-N_CLOCK = 7
+#          smallest and largest step taken, origin of the fixed-step grid
+C_TIME, C_STEP, C_STEP0, C_END, C_NEWDT, C_MIN_STEP, C_MAX_STEP, C_ORIGIN = range(8)
+N_CLOCK = 8
 # counters[]: step index, archived, next instant, forced-archiving state,
 #             forced irregular archivings, rejected steps, adaptive flag, failing shock,
-#             step index at which to pause
+#             step index at which to pause, grid intervals completed since C_ORIGIN
 (
     K_STEP,
     K_ARCHIVED,
@@ -74,8 +81,13 @@ N_CLOCK = 7
     K_ADAPTIVE,
     K_SHOCK,
     K_PAUSE_AT,
-) = range(9)
-N_COUNTERS = 9
+    K_GRID,
+) = range(10)
+N_COUNTERS = 10
+# a fixed step ending this close (relative to PAS) to the next grid instant
+# completes the grid interval: far above the round-off of a sum of two
+# instants, far below any step cut short (implicit shocks cut at >= 1 %)
+GRID_TOLERANCE = 1.0e-6
 # out_info[] columns of an archived instant: the step that led to it, the
 # steps rejected since the start
 INFO_STEP, INFO_REJECTED = range(2)
@@ -154,7 +166,20 @@ def plan_step(clock, counters, instants, eps):
 
 
 @njit(cache=True, inline="always")
+def expose_trial(q, v, a, q_trial, v_trial, a_trial):
+    """A scheme whose trial step became non-finite copies the trial into the
+    state before it returns STATUS_NOT_FINITE: the run stops there, and the
+    driver reads the state to say which quantity went wrong."""
+    for i in range(q.shape[0]):
+        q[i] = q_trial[i]
+        v[i] = v_trial[i]
+        a[i] = a_trial[i]
+
+
+@njit(cache=True, inline="always")
 def record_failure(clock, counters, status, shock, dt):
+    """Stop on a failed step: ``dt`` the step last tried (the driver reports
+    the failure at clock time + dt), ``shock`` the one at fault or -1."""
     clock[C_STEP] = dt
     counters[K_SHOCK] = shock
     return status
@@ -228,8 +253,15 @@ def advance_clock(
         counters[K_FORCE] = 0
         if not adaptive:
             clock[C_STEP] = clock[C_STEP0]
+    landing = counters[K_FORCE] == 1 and abs(t - instants[k]) <= i * eps
+    if not adaptive:
+        if landing:  # a step not cut short to land there completes its interval
+            if abs(dt_stored - clock[C_NEWDT]) <= i * eps:
+                counters[K_GRID] += 1
+        else:
+            t = grid_instant(clock, counters, t)
     if counters[K_FORCE] == 1:
-        if abs(t - instants[k]) <= i * eps:
+        if landing:
             t = instants[k]
             n = counters[K_ARCHIVED]
             archive(
@@ -255,9 +287,36 @@ def advance_clock(
     clock[C_TIME] = t
 
 
+@njit(cache=True, inline="always")
+def grid_instant(clock, counters, t):
+    """The end ``t`` of a fixed step, replaced by t0 + n PAS when the step
+    completes grid interval n; a step ending elsewhere (cut short at a
+    contact switch: code_aster's grid shifts there) starts a new grid."""
+    n = counters[K_GRID] + 1
+    node = clock[C_ORIGIN] + n * clock[C_STEP0]
+    if abs(t - node) <= GRID_TOLERANCE * clock[C_STEP0]:
+        counters[K_GRID] = n
+        return node
+    clock[C_ORIGIN] = t
+    counters[K_GRID] = 0
+    return t
+
+
+def grid_step_count(t0: float, t_end: float, dt: float) -> int:
+    """Number of fixed steps from t0 to t_end: (t_end - t0)/dt rounded when
+    within round-off of an integer (code_aster's NINT), else the next
+    integer (the last step is then shortened to land on t_end)."""
+    ratio = (t_end - t0) / dt
+    nearest = round(ratio)
+    if abs(ratio - nearest) <= 1.0e-9 * max(1.0, abs(ratio)):
+        return max(1, int(nearest))
+    return max(1, math.ceil(ratio))
+
+
 def new_clock(t0: float, dt: float, t_end: float) -> np.ndarray:
     clock = np.zeros(N_CLOCK)
     clock[C_TIME], clock[C_STEP], clock[C_STEP0], clock[C_END] = t0, dt, dt, t_end
+    clock[C_ORIGIN] = t0
     clock[C_MIN_STEP], clock[C_MAX_STEP] = np.inf, 0.0
     return clock
 

@@ -172,7 +172,7 @@ def rotating_loop(code, clock, counters, state, memory, model, instants, pas_arc
             code, t, dt, counters[K.K_STEP], state, base, model
         )
         if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
+            return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
     return K.STATUS_DONE

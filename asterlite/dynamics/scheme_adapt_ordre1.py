@@ -49,6 +49,7 @@ def step(t, dt, index, state, memory, model):
         if shock >= 0:
             return K.STATUS_SHOCK_DIVERGED, shock, dt_trial, dt_trial, trials - 1
         if not all_finite(a2):
+            K.expose_trial(q, v, a, q2, v2, a2)
             return K.STATUS_NOT_FINITE, -1, dt_trial, dt_trial, trials - 1
         if not adaptive:
             break
@@ -87,7 +88,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
+            return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
         archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)

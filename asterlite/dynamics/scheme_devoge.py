@@ -240,6 +240,7 @@ def step(t, dt, index, state, memory, model):
             x1[i] = 6.0 * (v[i] + (dt / 6.0) * (r4[i] + 4.0 * r3[i] + r1[i] - x2[i]))
         solve_with(h2, x1, v4, diagonal)
         if not (all_finite(q4) and all_finite(v4)):
+            K.expose_trial(q, v, a, q4, v4, a)
             return STATUS_NOT_FINITE, -1, dt, dt, attempts
         if not adaptive:
             break
@@ -365,7 +366,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
+            return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
         archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)

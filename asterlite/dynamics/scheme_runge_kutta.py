@@ -234,6 +234,7 @@ def step(t, dt, index, state, memory, model):
         if shock >= 0:
             return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, rejected
         if not (all_finite(rows[Q_STAGE]) and all_finite(rows[V_STAGE])):
+            K.expose_trial(q, v, a, rows[Q_STAGE], rows[V_STAGE], rows[A_STAGE])
             return K.STATUS_NOT_FINITE, -1, dt, dt, rejected
         if not adaptive:
             break
@@ -275,7 +276,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
+            return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
         archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)

@@ -162,7 +162,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt)
+            return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
         archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)

@@ -80,15 +80,27 @@ def function_lines(abscissas, ordinates, nom_para: str, nom_resu: str, title: st
     return lines
 
 
+# IMPR_FONCTION's curve styles (Grace's own numbers) and the set attribute each sets
+GRACE_STYLE_ATTRIBUTES = {
+    "STYLE": "line linestyle",
+    "COULEUR": "line color",
+    "MARQUEUR": "symbol",
+    "FREQ_MARQUEUR": "symbol skip",
+}
+
+
 def xmgrace_lines(curves, title: str = "", x_label: str = "", y_label: str = ""):
     """A minimal Grace project: one xy set per curve (abscissas, ordinates,
-    legend)."""
+    legend, and the styles the deck gave: ``{"STYLE": 1, ...}``)."""
     lines = ["# Grace project file", "@version 50122"]
     if title:
         lines.append(f'@title "{title}"')
     lines += [f'@xaxis label "{x_label}"', f'@yaxis label "{y_label}"']
-    for k, (x, y, legend) in enumerate(curves):
-        lines += [f'@s{k} legend "{legend}"', f"@target G0.S{k}", "@type xy"]
+    for k, (x, y, legend, *style) in enumerate(curves):
+        lines.append(f'@s{k} legend "{legend}"')
+        for key, value in (style[0] if style else {}).items():
+            lines.append(f"@s{k} {GRACE_STYLE_ATTRIBUTES[key]} {int(value)}")
+        lines += [f"@target G0.S{k}", "@type xy"]
         lines += [f"{xi:.10E} {float(np.real(yi)):.10E}" for xi, yi in zip(x, y, strict=True)]
         lines.append("&")
     return lines

@@ -32,7 +32,7 @@ code_aster's conventions (R5.01.02, CALC_MODES):
 
 APPROCHE (REEL / IMAG / COMPLEXE) only chooses, in code_aster, which real or
 complex operator ARPACK iterates on; the eigenpairs do not depend on it, so
-it is accepted and not used here.
+its catalogue marks it as changing no result.
 """
 
 from __future__ import annotations

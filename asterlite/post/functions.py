@@ -310,28 +310,45 @@ def extrema(func: Function, intervals=None) -> list[tuple[str, float, float]]:
     return rows
 
 
-def cut(func: Function, start=None, stop=None) -> Function:
-    """The function restricted to [start, stop], interpolated at the ends."""
+def _near(x: np.ndarray, bound: float, precision: float, criterion: str) -> np.ndarray:
+    """Abscissas that code_aster takes as the bound itself (CRITERE/PRECISION;
+    RELATIF scales by the bound as it does, so a bound of zero matches exactly)."""
+    tolerance = precision if criterion == "ABSOLU" else precision * bound
+    return ~(np.abs(x - bound) > tolerance)
+
+
+def cut(
+    func: Function, start=None, stop=None, precision: float = 1e-6, criterion: str = "RELATIF"
+) -> Function:
+    """The function restricted to [start, stop], interpolated at the ends; an
+    abscissa within the tolerance of an end is taken as that end."""
     x = func.abscissas
     lo = x[0] if start is None else start
     hi = x[-1] if stop is None else stop
-    inside = x[(x > lo) & (x < hi)]
-    xs = np.concatenate([[lo], inside, [hi]])
+    keep = (x > lo) & (x < hi) & ~_near(x, lo, precision, criterion)
+    keep &= ~_near(x, hi, precision, criterion)
+    xs = np.concatenate([[lo], x[keep], [hi]])
     return func.with_values(xs, func.evaluate(xs), PROL_GAUCHE="EXCLU", PROL_DROITE="EXCLU")
 
 
-def rms(func: Function, method: str = "TRAPEZE", start=None, stop=None) -> float:
-    """sqrt(∫ f² dt / duration) over [start, stop]."""
-    part = cut(func, start, stop)
-    x, y = part.abscissas, np.real(part.ordinates)
+def _window(func, method, start, stop, precision, criterion):
+    part = cut(func, start, stop, precision, criterion)
     rule = primitive_simpson if method == "SIMPSON" else primitive_trapezoid
+    return part.abscissas, np.real(part.ordinates), rule
+
+
+def rms(
+    func: Function, method="TRAPEZE", start=None, stop=None, precision=1e-6, criterion="RELATIF"
+) -> float:
+    """sqrt(∫ f² dt / duration) over [start, stop]."""
+    x, y, rule = _window(func, method, start, stop, precision, criterion)
     return float(np.sqrt(rule(x, y * y)[-1] / (x[-1] - x[0])))
 
 
-def standard_deviation(func: Function, method: str = "TRAPEZE", start=None, stop=None) -> float:
-    part = cut(func, start, stop)
-    x, y = part.abscissas, np.real(part.ordinates)
-    rule = primitive_simpson if method == "SIMPSON" else primitive_trapezoid
+def standard_deviation(
+    func: Function, method="TRAPEZE", start=None, stop=None, precision=1e-6, criterion="RELATIF"
+) -> float:
+    x, y, rule = _window(func, method, start, stop, precision, criterion)
     duration = x[-1] - x[0]
     mean = rule(x, y)[-1] / duration
     return float(np.sqrt(max(rule(x, (y - mean) ** 2)[-1] / duration, 0.0)))

@@ -4,9 +4,10 @@ plane with the obstacle outline, and wear work rates per support.
 
 Every ``*_figure`` function returns a :class:`matplotlib.figure.Figure`
 built without pyplot (no global state, no display: safe in workers and
-tests); :func:`save_figure` writes it as PNG or SVG. matplotlib is imported
-only when a figure is made. :func:`plot_from_store` is ``asterlite plot``:
-it reads a result saved by :mod:`asterlite.io.result_store`.
+tests); :func:`save_figure` writes it as PNG or SVG. matplotlib (the ``plot``
+extra) is imported only when a figure is made; without it a figure request
+stops with a message saying how to install it. :func:`plot_from_store` is
+``asterlite plot``: it reads a result saved by :mod:`asterlite.io.result_store`.
 """
 
 from __future__ import annotations
@@ -22,6 +23,9 @@ IMAGE_FORMATS = (".png", ".svg")
 NODAL_FIELDS = {"DEPL": "depl", "VITE": "vite", "ACCE": "acce"}
 FIELD_UNITS = {"DEPL": "m", "VITE": "m/s", "ACCE": "m/s²"}
 SHOCK_PLOTS = ("orbit", "wear")  # quantities that are not a stored field
+# wear rates below this fraction of the largest rate of the result are rounding
+# noise of FN·|VT| (a support that sticks or barely touches): drawn as zero
+WEAR_NOISE_FLOOR = 1.0e-9
 
 
 class PlotError(ValueError):
@@ -84,14 +88,12 @@ def orbit_coordinates(shock: ShockHistory) -> tuple[np.ndarray, np.ndarray]:
 
 
 def wear_work_rates(tran: TranGene) -> dict[str, float]:
-    """Mean FN·|VT| (the Archard wear power, W) of each shock over the run."""
-    from asterlite.post.wear import archard_power
+    """The Archard wear power (W, code_aster's PUIS_USURE: mean FN·|VT| over
+    the sliding intervals, :func:`asterlite.post.wear.wear_power`) of each
+    shock over the run."""
+    from asterlite.post.wear import history_wear_power
 
-    rates = {}
-    for shock in tran.shocks:
-        f = shock.fields
-        rates[shock.name] = archard_power(tran.times, f["FN"], f["VT1"], f["VT2"])
-    return rates
+    return {shock.name: history_wear_power(tran.times, shock.fields) for shock in tran.shocks}
 
 
 @dataclass
@@ -173,8 +175,9 @@ def _gap_arrow(name: str, size: float, end: tuple[float, float] | None = None) -
 
 def _new_figure(size=(7.0, 4.5)):
     """A pyplot-free Figure (Agg canvas): no display, no global state."""
-    from matplotlib.figure import Figure
+    from asterlite.extras import require
 
+    Figure = require("matplotlib.figure", "drawing a figure").Figure
     return Figure(figsize=size, layout="constrained")
 
 
@@ -271,20 +274,50 @@ def orbit_figure(tran: TranGene, shock_name: str, polar=None):
     return figure
 
 
+def wear_bars(rates: dict[str, float], floor: float = WEAR_NOISE_FLOOR) -> tuple[dict, dict]:
+    """(the rates to draw, the rates drawn as zero): a rate whose size is at
+    most ``floor`` times the largest is rounding noise, not wear."""
+    largest = max((abs(r) for r in rates.values()), default=0.0)
+    noise = {n: r for n, r in rates.items() if r != 0.0 and abs(r) <= floor * largest}
+    drawn = {n: (0.0 if n in noise else r) for n, r in rates.items()}
+    return drawn, noise
+
+
 def wear_figure(tran: TranGene, shock_names: list[str] | None = None):
-    """Bar chart of the wear work rate (mean FN·|VT|) of each support."""
-    rates = wear_work_rates(tran)
+    """Bar chart of the wear work rate (mean FN·|VT|) of each support. Rates
+    below :data:`WEAR_NOISE_FLOOR` of the largest rate of the result (all its
+    supports, also when only some are drawn) are drawn as zero, as the figure
+    says: noise of 3e-14 W would otherwise fill the axes when drawn alone."""
+    all_rates = wear_work_rates(tran)
+    drawn, noise = wear_bars(all_rates)
     if shock_names:
         for name in shock_names:
             find_shock(tran, name)  # a clear error for an unknown name
-        rates = {name: rates[name] for name in shock_names}
+        drawn = {name: drawn[name] for name in shock_names}
+        noise = {name: rate for name, rate in noise.items() if name in shock_names}
     figure = _new_figure()
     axes = figure.add_subplot()
-    axes.bar(list(rates), list(rates.values()), color="tab:orange")
+    axes.bar(list(drawn), list(drawn.values()), color="tab:orange")
     axes.set_xlabel("shock")
     axes.set_ylabel("wear work rate, mean FN·|VT| (W)")
     axes.set_title(f"{tran.name or 'tran_gene'}: wear work rate per support")
     axes.grid(True, axis="y", alpha=0.3)
+    if noise:
+        largest = max(abs(r) for r in all_rates.values())
+        listed = ", ".join(f"{name} {rate:.2g} W" for name, rate in noise.items())
+        axes.text(
+            0.01,
+            0.98,
+            f"drawn as 0, below {WEAR_NOISE_FLOOR:g} x the largest rate ({largest:.4g} W):"
+            f" {listed}",
+            transform=axes.transAxes,
+            ha="left",
+            va="top",
+            fontsize=8,
+            wrap=True,
+        )
+    if not any(drawn.values()):
+        axes.set_ylim(0.0, 1.0)  # no wear: an empty axis, not autoscaled noise
     return figure
 
 
@@ -369,21 +402,46 @@ __all__ = [
     "plot_from_store",
     "save_figure",
     "shock_history_figure",
+    "wear_bars",
     "wear_figure",
     "wear_work_rates",
 ]
 
 
+# Grace's line styles, symbols and first colours, as IMPR_FONCTION numbers them
+GRACE_LINESTYLES = {0: "None", 1: "-", 2: ":", 3: "--", 4: (0, (8, 4)), 5: "-.", 6: "-.", 7: "-."}
+GRACE_SYMBOLS = {0: "", 1: "o", 2: "s", 3: "D", 4: "^", 5: "<", 6: "v", 7: ">", 8: "+", 9: "x"}
+GRACE_COLOURS = {
+    0: "white", 1: "black", 2: "red", 3: "green", 4: "blue", 5: "yellow", 6: "brown",
+    7: "grey", 8: "violet", 9: "cyan", 10: "magenta", 11: "orange", 12: "indigo",
+    13: "maroon", 14: "turquoise", 15: "darkgreen",
+}  # fmt: skip
+
+
+def _curve_style(style: dict) -> dict:
+    """matplotlib options for IMPR_FONCTION's STYLE, COULEUR, MARQUEUR, FREQ_MARQUEUR."""
+    options = {}
+    if "STYLE" in style:
+        options["linestyle"] = GRACE_LINESTYLES.get(int(style["STYLE"]), "-")
+    if "COULEUR" in style:
+        options["color"] = GRACE_COLOURS.get(int(style["COULEUR"]) % 16)
+    if "MARQUEUR" in style:
+        options["marker"] = GRACE_SYMBOLS.get(int(style["MARQUEUR"]), "*")
+    if int(style.get("FREQ_MARQUEUR", 0)) > 0:
+        options["markevery"] = int(style["FREQ_MARQUEUR"])
+    return options
+
+
 def curves_figure(curves, title: str = "", xlabel: str = "", ylabel: str = ""):
-    """Figure of (x, y, legend) curves: the image IMPR_FONCTION draws."""
+    """Figure of (x, y, legend[, style]) curves: the image IMPR_FONCTION draws."""
     figure = _new_figure()
     axes = figure.add_subplot()
-    for x, y, legend in curves:
-        axes.plot(x, y, label=legend or None)
+    for x, y, legend, *style in curves:
+        axes.plot(x, y, label=legend or None, **_curve_style(style[0] if style else {}))
     axes.set_title(title)
     axes.set_xlabel(xlabel)
     axes.set_ylabel(ylabel)
     axes.grid(alpha=0.3)
-    if any(legend for _, _, legend in curves):
+    if any(curve[2] for curve in curves):
         axes.legend()
     return figure

@@ -15,8 +15,8 @@ Definitions follow code_aster (R7.10.02 / its Fortran):
 - *wear* (OPTION='USURE'): mean/std/RMS/max/min of the local displacements,
   of the radial displacement and polar angle (in the plane of the 2nd and
   3rd local axes), of the tangential forces; mean/RMS of FN over the whole
-  time and over contact time; shock counts and durations; Archard wear power
-  (time average of |FN|·|V_T| while sliding).
+  time and over contact time; shock counts and durations. The Archard wear
+  power is :func:`asterlite.post.wear.wear_power`.
 
 Every function here is plain numpy on 1-D arrays, testable by hand.
 """
@@ -238,20 +238,6 @@ def count_shocks(
         mean_rebound=float(np.mean(rebounds)) if rebounds else 0.0,
         total_contact_time=float(d.sum()),
     )
-
-
-def wear_power(
-    t: np.ndarray, fn: np.ndarray, vt1: np.ndarray, vt2: np.ndarray, sticking=None
-) -> float:
-    """Archard wear power: time average of |FN|·|V_T| over sliding intervals
-    (trapezoid rule; an interval counts when its first sample slides)."""
-    t = np.asarray(t, dtype=float)
-    if t.size < 2 or t[-1] == t[0]:
-        return 0.0
-    power = np.abs(np.asarray(fn) * np.hypot(vt1, vt2))
-    sliding = np.ones(t.size - 1, bool) if sticking is None else ~np.asarray(sticking, bool)[:-1]
-    intervals = (power[1:] + power[:-1]) * np.diff(t) / 2
-    return float(intervals[sliding].sum() / (t[-1] - t[0]))
 
 
 def polar(dy: np.ndarray, dz: np.ndarray):

@@ -3,8 +3,10 @@
 Three steps, each a small function:
 
 1. *wear power* P (W): given (PUIS_USURE), or the Archard power of a shock
-   history (time average of |FN|·|V_T| while sliding, averaged over NB_BLOC
-   blocks), or per angular sector of the contact point (SECTEUR);
+   history (:func:`wear_power`, code_aster's definition, the one every
+   wear power of asterlite uses: POST_DYNA_MODA_T's PUIS_USURE, the run
+   summary, ``asterlite plot --quantity wear``), or per angular sector of the
+   contact point (SECTEUR);
 2. *worn volume* V(t) of the tube (mobile) and of the obstacle from a wear
    law: ARCHARD V = K·P·t, KWU_EPRI V = K·W·P·t (W a weighting of the
    impact/sliding regime from the histogram of (FN, V_T) couples), EDF_MZ
@@ -93,26 +95,44 @@ def block_slices(n: int, n_blocks: int) -> list[slice]:
     return [slice(b * size, (b + 1) * size) for b in range(n_blocks)]
 
 
-def archard_power(t, fn, vt1, vt2, sliding=None) -> float:
-    """Time average of |FN|·|V_T| by the trapezoid rule; an interval counts
-    when its first sample slides (``sliding`` None: always)."""
+def wear_power(t, fn, vt1, vt2, adherence=None, n_blocks: int = 1) -> float:
+    """The Archard wear power PUIS_USURE (W) of an archived shock history, as
+    code_aster defines it (statpu, pusure): the history is cut into NB_BLOC
+    blocks of n // NB_BLOC instants (the remainder left out); in each block,
+    the trapezoid integral of |FN|·|V_T| (V_T = (VT1, VT2), the sliding
+    velocity) over the intervals whose first instant is not sticking
+    (``adherence`` 0, code_aster's IADH; None: no stick flag, every
+    interval), divided by the block's duration; the power is the mean over
+    the blocks. A block of fewer than two instants, or of no duration,
+    counts as 0."""
     t = np.asarray(t, dtype=float)
-    if t.size < 2 or t[-1] == t[0]:
-        return 0.0
     power = np.abs(np.asarray(fn, dtype=float) * np.hypot(vt1, vt2))
-    intervals = (power[1:] + power[:-1]) * np.diff(t) / 2
-    if sliding is not None:
-        intervals = intervals[np.asarray(sliding, bool)[:-1]]
-    return float(intervals.sum() / (t[-1] - t[0]))
-
-
-def blocked_archard_power(t, fn, vt1, vt2, sliding=None, n_blocks: int = 1) -> float:
-    """Mean over NB_BLOC blocks of the Archard power of each block."""
-    powers = [
-        archard_power(t[b], fn[b], vt1[b], vt2[b], None if sliding is None else sliding[b])
-        for b in block_slices(len(t), n_blocks)
-    ]
+    sliding = None if adherence is None else np.asarray(adherence) == 0
+    powers = []
+    for block in block_slices(t.size, n_blocks):
+        tb, pb = t[block], power[block]
+        if tb.size < 2 or tb[-1] == tb[0]:
+            powers.append(0.0)
+            continue
+        intervals = (pb[1:] + pb[:-1]) * np.diff(tb) / 2
+        if sliding is not None:
+            intervals = intervals[sliding[block][:-1]]
+        powers.append(float(intervals.sum() / (tb[-1] - tb[0])))
     return float(np.mean(powers))
+
+
+def history_wear_power(times, fields: dict, n_blocks: int = 1) -> float:
+    """:func:`wear_power` of a shock's archived fields (FN, VT1, VT2 and the
+    stick flag ADHERENCE, or IADH); 0 without a normal force (relations
+    other than DIS_CHOC)."""
+    times = np.asarray(times, dtype=float)
+    if "FN" not in fields:
+        return 0.0
+    zeros = np.zeros(times.size)
+    adherence = fields.get("ADHERENCE", fields.get("IADH"))
+    return wear_power(
+        times, fields["FN"], fields.get("VT1", zeros), fields.get("VT2", zeros), adherence, n_blocks
+    )
 
 
 @dataclass

@@ -41,6 +41,9 @@ def run_one(export: Path, timeout: float) -> dict:
             tail = (completed.stderr or completed.stdout).strip().splitlines()[-3:]
             return _row(export, "ERROR", "no summary written: " + " | ".join(tail), start)
         data = json.loads(summary.read_text())
+        if data.get("status") == "RUNNING":  # the process ended without finishing the run
+            detail = f"killed (exit status {completed.returncode}) before the run finished"
+            return _row(export, "ERROR", detail, start)
     return {
         "deck": export.parent.name,
         "status": data["status"],

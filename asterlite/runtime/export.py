@@ -1,15 +1,21 @@
 """Read a code_aster ``.export`` file: which deck files run, which files map
 to which logical units.
 
-A line ``F <type> <path> D <unit>`` declares an input (data) file; ``R``
-lines declare results (asterlite writes results in its output folder, so
-they are recorded but not used); ``P`` lines are run parameters. A bare
-``.comm`` gets a synthetic export: the deck itself, a sibling mesh on unit
-20 and any sibling ``.comN`` continuation files.
+A line ``F <type> <path> D <unit>`` declares an input (data) file; a line
+``R <type> <path> R <unit>`` a result to keep: what the deck writes on that
+unit is copied to the path when the run completes (asterlite writes every
+result into its own output folder first). ``P`` lines are run parameters;
+asterlite enforces two of them as code_aster does: ``time_limit`` (seconds
+for the whole run) and ``memory_limit`` (megabytes the run may allocate
+beyond what the process held when it started, as code_aster adds its
+start-up footprint to the limit). A bare ``.comm`` gets a synthetic export:
+the deck itself, a sibling mesh on unit 20 and any sibling ``.comN``
+continuation files.
 """
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -17,6 +23,16 @@ from asterlite.errors import AsterliteError, Location
 
 MESH_UNIT = 20
 MESH_SUFFIXES = (".mail", ".mmed", ".med")
+
+
+@dataclass(frozen=True)
+class ResultFile:
+    """An ``R`` line: the file the deck writes on ``unit``, kept at ``path``."""
+
+    file_type: str
+    path: Path
+    unit: int
+    location: Location | None = None
 
 
 @dataclass
@@ -29,6 +45,9 @@ class RunDescription:
     helper_modules: dict[str, Path] = field(default_factory=dict)  # module name -> .py file
     parameters: dict[str, str] = field(default_factory=dict)
     source: Path | None = None
+    results: list[ResultFile] = field(default_factory=list)  # R lines, in order
+    time_limit: float | None = None  # seconds (P time_limit)
+    memory_limit: float | None = None  # megabytes (P memory_limit)
 
 
 class ExportError(AsterliteError):
@@ -47,22 +66,31 @@ def read_export(path: Path) -> RunDescription:
         fields = line.split()
         where = Location(str(path), number, 1, raw)
         if fields[0] == "P":
+            if len(fields) < 2:
+                raise ExportError("expected 'P <name> <value>'", where)
             run.parameters[fields[1]] = " ".join(fields[2:]) if len(fields) > 2 else ""
+            if fields[1] in LIMITS:
+                setattr(run, fields[1], _limit(fields, where))
             continue
         if fields[0] not in ("F", "R"):
             raise ExportError(f"unrecognised line kind {fields[0]!r} (expected F, R or P)", where)
         if len(fields) < 5:
             raise ExportError("expected 'F <type> <path> D|R <unit>'", where)
         kind, file_type, name, direction, unit_text = fields[:5]
-        if kind == "R" or "D" not in direction:
-            continue  # results: asterlite writes into its own output folder
-        file_path = (folder / name).resolve()
-        if not file_path.exists():
-            raise ExportError(f"file {name} named by the export does not exist", where)
         try:
             unit = int(unit_text)
         except ValueError:
             raise ExportError(f"logical unit {unit_text!r} is not an integer", where) from None
+        if "R" in direction:  # absolute, symlinks not followed (the copy replaces a link)
+            path_kept = Path(os.path.abspath(folder / name))
+            run.results.append(ResultFile(file_type, path_kept, unit, where))
+        if kind == "R" or "D" not in direction:
+            continue  # an output only: nothing to read
+        file_path = (folder / name).resolve()
+        if not file_path.exists():
+            raise ExportError(f"file {name} named by the export does not exist", where)
+        if file_type in ("comm", "nom") and not file_path.is_file():  # read as text
+            raise ExportError(f"{name} named by the export is not a file", where)
         if file_type == "comm":
             run.deck_files.append(file_path)
         elif file_type == "nom" or (file_path.suffix == ".py" and unit == 0):
@@ -74,6 +102,23 @@ def read_export(path: Path) -> RunDescription:
             "the export names no deck file ('F comm ... D 1')", Location(str(path), 1)
         )
     return run
+
+
+# P lines asterlite enforces, both positive numbers (seconds, megabytes)
+LIMITS = ("time_limit", "memory_limit")
+# R-line types asterlite cannot make: code_aster's databases and folders
+NOT_PRODUCED = frozenset({"base", "bhdf", "repe"})
+
+
+def _limit(fields: list[str], where: Location) -> float:
+    text = fields[2] if len(fields) > 2 else ""
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not value > 0:
+        raise ExportError(f"P {fields[1]} must be a positive number, got {text!r}", where)
+    return value
 
 
 def describe_bare_deck(path: Path) -> RunDescription:

@@ -1,33 +1,54 @@
 """Run (or check) a deck from its path and report what happened.
 
-Result files are written into a staging folder and moved into the output
-folder only when the run completes; a run stopped by an error leaves its
-files under ``incomplete/`` so nothing partial looks finished. The output
-folder always gets ``message.log`` and ``summary.json``.
+The run owns its output folder (:mod:`asterlite.runtime.outdir`): locked,
+cleared of an earlier result, ``message.log`` and ``summary.json`` written
+as it goes; result files are staged and appear under their names only when
+the run completes, else they stay under ``incomplete/`` so nothing partial
+looks finished. A complete run also copies the files the export's ``R``
+lines ask for. The whole run is bounded in time, memory and output
+(:func:`run_limits`); SIGINT and SIGTERM end it cleanly.
+
+Statuses: PASS (every TEST_* check OK), NOOK (some check not OK), DONE
+(the deck ran to its end without any check), ERROR, UNSUPPORTED,
+INTERRUPTED; under ``check``: CHECKED, or ERROR/UNSUPPORTED listing every
+error of the deck. Exit status 1 means NOOK only: every failure is 2.
 """
 
 from __future__ import annotations
 
-import json
+import os
 import shutil
+import signal
 import statistics
+import threading
 import time
 import traceback
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from asterlite.errors import AsterliteError, UnsupportedError
+from asterlite.runtime import stops, watchdog
 from asterlite.runtime.context import TestRecord
-from asterlite.runtime.export import describe_run
+from asterlite.runtime.export import NOT_PRODUCED, describe_run
+from asterlite.runtime.outdir import (
+    OutputFolder,
+    OutputFolderError,
+    OutputLimitError,
+    create_file,
+)
 
 EXIT_OK, EXIT_NOOK, EXIT_ERROR = 0, 1, 2
+# statuses of a run that went to its end (its results and checks count)
+COMPLETE = ("PASS", "NOOK", "DONE")
 
 
 @dataclass
 class RunReport:
     deck: str
-    status: str  # PASS, NOOK, ERROR, UNSUPPORTED (CHECKED under check)
+    status: str  # PASS, NOOK, DONE, ERROR, UNSUPPORTED, INTERRUPTED (CHECKED under check)
     message: str = ""
+    errors: list[str] = field(default_factory=list)  # every error ``check`` found
     tests: list[TestRecord] = field(default_factory=list)
     seconds: float = 0.0
     timings: list = field(default_factory=list)
@@ -40,6 +61,9 @@ class RunReport:
     # one dict per shock of those results: max FN, wear power (mean FN·|VT|)...
     shocks: list[dict] = field(default_factory=list)
     keyword_edits: list[dict] = field(default_factory=list)  # keyword overrides applied
+    # the deck's names and concepts after a computed run (asterlite.api reads them)
+    namespace: dict = field(default_factory=dict, repr=False, compare=False)
+    traceback: str = ""  # of an internal error: written to message.log, not shown
 
     @property
     def checks_total(self) -> int:
@@ -55,7 +79,7 @@ class RunReport:
 
     @property
     def exit_code(self) -> int:
-        if self.status in ("PASS", "CHECKED"):
+        if self.status in ("PASS", "DONE", "CHECKED"):
             return EXIT_OK
         if self.status == "NOOK":
             return EXIT_NOOK
@@ -70,6 +94,7 @@ class RunReport:
             "strict_ok": self.strict_ok,
             "seconds": round(self.seconds, 3),
             "message": self.message,
+            "errors": self.errors,
             "overrides": {k: _plain(v) for k, v in self.overrides.items()},
             "overrides_used": self.overrides_used,
             "transients": self.transients,
@@ -85,6 +110,7 @@ class RunReport:
                     "tolerance": _plain(t.tolerance),
                     "ok": bool(t.ok),
                     "strict": bool(t.strict),
+                    **check_comparisons(t),
                 }
                 for t in self.tests
             ],
@@ -98,6 +124,31 @@ class RunReport:
                 for c in self.timings
             ],
         }
+
+
+def check_comparisons(test: TestRecord) -> dict:
+    """Each value a check compared with, VALE_REFE (with its reference kind)
+    and VALE_CALC, with error, tolerance and verdict; ``failed`` names the
+    comparisons that did not hold (``expected`` alone shows only one)."""
+    shown = {
+        "expected": _plain(test.expected),
+        "error": _plain(test.error),
+        "tolerance": _plain(test.tolerance),
+    }
+    calc = test.calc_comparison
+    comparisons = {}
+    if test.expected is not None and test.reference != "NON_REGRESSION":
+        holds = bool(test.error <= test.tolerance)  # the reference check shown in ``expected``
+        comparisons["VALE_REFE"] = {**shown, "reference": test.reference, "ok": holds}
+    if calc is not None:
+        comparisons["VALE_CALC"] = {
+            "expected": _plain(calc.expected),
+            "error": _plain(calc.error),
+            "tolerance": _plain(calc.tolerance),
+            "ok": bool(calc.holds),
+        }
+    failed = [kind for kind, comparison in comparisons.items() if not comparison["ok"]]
+    return {"comparisons": comparisons, "failed": failed}
 
 
 def _plain(value):
@@ -123,6 +174,10 @@ def run_deck(
     overrides: dict | None = None,
     keyword_overrides: list | None = None,
     save_results: bool = False,
+    time_limit: float | None = None,
+    memory_limit: float | None = None,
+    output_limit: float | None = None,
+    aster_version: int | None = None,
 ) -> RunReport:
     """Run or check the deck at ``deck`` (an .export or a .comm).
 
@@ -131,62 +186,282 @@ def run_deck(
     never assigns makes the run an ERROR naming it. ``keyword_overrides``
     (:class:`asterlite.runtime.session.KeywordOverride`) replace keyword
     values in command calls before validation (e.g. DYNA_VIBRA's scheme).
+    ``time_limit`` (seconds) and ``memory_limit`` (MB) replace the export's
+    ``P`` lines, ``output_limit`` (MB) the cap on what the run writes; None
+    means the default, 0 no limit (see :func:`run_limits`, docs/safety.md).
+    The output folder is taken as :mod:`asterlite.runtime.outdir` describes;
+    one that cannot be taken makes an ERROR report with nothing written.
     """
+    start = time.perf_counter()
+    output_bytes = output_cap_bytes(output_limit)
+    folder = None
+    if output_dir is not None and not check_only:
+        try:
+            cap = log_cap_bytes(output_bytes)
+            folder = OutputFolder(output_dir, log_cap=cap, deck=deck.stem).open()
+        except OutputFolderError as error:
+            report = RunReport(deck.stem, "ERROR", str(error))
+            report.seconds = time.perf_counter() - start
+            return report
+    with stops.stop_on_signals() as stop:
+        try:
+            report, session = _run_session(
+                deck,
+                folder,
+                check_only=check_only,
+                echo=echo,
+                overrides=overrides,
+                keyword_overrides=keyword_overrides,
+                limits=(time_limit, memory_limit, output_bytes),
+                aster_version=aster_version,
+            )
+        except stops.RunInterrupted as interrupt:  # between the session and the report
+            report, session = _interrupted(deck.stem, interrupt, None), None
+        stop.finishing()  # a signal from here on waits until the folder is written
+        report.seconds = time.perf_counter() - start
+        if folder is not None:
+            _finish_output(folder, report, session, save_results)
+    return report
+
+
+def _run_session(
+    deck: Path,
+    folder,
+    *,
+    check_only,
+    echo,
+    overrides,
+    keyword_overrides,
+    limits,
+    aster_version=None,
+):
+    """Run the deck's session; (report, session) whatever happens in it."""
     from asterlite.runtime.session import Session, UnknownOverrideError
 
-    start = time.perf_counter()
+    time_limit, memory_limit, output_bytes = limits
     name = deck.stem
-    staging = None
-    if output_dir is not None and not check_only:
-        output_dir.mkdir(parents=True, exist_ok=True)
-        staging = output_dir / ".running"
-        shutil.rmtree(staging, ignore_errors=True)
-        shutil.rmtree(output_dir / "incomplete", ignore_errors=True)
-        staging.mkdir()
     session = None
     try:
         description = describe_run(deck)
         name = description.name
+        extra = {"messages": folder.log} if folder is not None else {}
         session = Session(
             description,
-            output_dir=staging,
+            output_dir=folder.staging if folder is not None else None,
             check_only=check_only,
             echo=echo,
             overrides=dict(overrides or {}),
             keyword_overrides=list(keyword_overrides or []),
+            aster_version=aster_version,  # None: detected from the decks' text
+            **extra,
         )
-        session.run_all()
+        if folder is not None:
+            session.output_guard = folder.check_name
+            folder.log.on_line = output_watch(folder, output_bytes)
+        seconds, megabytes = run_limits(description, time_limit, memory_limit, check_only)
+        with watchdog.limits(seconds, megabytes, not check_only), file_size_cap(output_bytes):
+            session.run_all()
+    except stops.RunInterrupted as interrupt:
+        report = _interrupted(name, interrupt, session)
     except UnknownOverrideError as error:
         report = RunReport(name, "ERROR", str(error), unknown_overrides=session.unused_overrides())
     except UnsupportedError as error:
         report = RunReport(name, "UNSUPPORTED", str(error))
     except AsterliteError as error:
         report = RunReport(name, "ERROR", str(error))
-    except RecursionError:
-        report = RunReport(name, "ERROR", "internal error: recursion too deep")
+    except RecursionError as error:
+        report = RunReport(name, "ERROR", f"{_where(error)}deck error: nested too deeply")
+    except MemoryError as error:  # outside any command (the session locates those)
+        report = RunReport(name, "ERROR", f"{_where(error)}memory limit exceeded: {_memory_text()}")
+    except OSError as error:
+        report = _os_error_report(name, error, output_bytes)
     except Exception as error:  # an asterlite bug: report it, never crash the caller
-        detail = traceback.format_exc(limit=-3)
-        report = RunReport(name, "ERROR", f"internal error: {error!r}\n{detail}")
+        report = internal_error_report(name, error)
     else:
         if check_only:
-            report = RunReport(name, "CHECKED")
+            report = check_report(name, session.check_errors)
+        elif not session.tests:  # ran to its end, but nothing was checked
+            report = RunReport(name, "DONE")
         elif all(t.ok for t in session.tests):
             report = RunReport(name, "PASS")
         else:
             report = RunReport(name, "NOOK")
+    _fill_report(report, session, overrides, check_only)
+    return report, session
+
+
+def _fill_report(report: RunReport, session, overrides, check_only: bool) -> None:
     report.overrides = dict(overrides or {})
-    if session is not None:
-        report.tests = list(session.tests)
-        report.timings = list(session.timings)
-        report.overrides_used = sorted(session.overrides_used)
-        if not check_only:  # results exist only when computed (and check stays light)
+    if session is None:
+        return
+    report.tests = list(session.tests)
+    report.timings = list(session.timings)
+    report.overrides_used = sorted(session.overrides_used)
+    if not check_only:  # results exist only when computed (and check stays light)
+        try:
             report.table_values = one_row_table_values(session.namespace)
             report.transients, report.shocks = transient_summaries(session.produced)
-        report.keyword_edits = list(session.keyword_edits)
-    report.seconds = time.perf_counter() - start
-    if output_dir is not None and not check_only:
-        _finish_output(output_dir, staging, report, session, save_results)
+        except (MemoryError, RecursionError, ValueError, TypeError) as error:
+            report.status = "ERROR"
+            report.message = f"cannot summarise the results: {type(error).__name__}: {error}"
+        report.namespace = session.namespace
+    report.keyword_edits = list(session.keyword_edits)
+
+
+def _where(error: BaseException) -> str:
+    """``file:line: `` of the deck statement an exception came from, if known."""
+    location = getattr(error, "deck_location", None)
+    return f"{location}: " if location is not None else ""
+
+
+def _interrupted(name: str, interrupt, session) -> RunReport:
+    last = session.timings[-1].command if session is not None and session.timings else None
+    after = f" (after {last})" if last else ""
+    message = f"interrupted by {interrupt.signal_name}{after}: the run's results are incomplete"
+    return RunReport(name, "INTERRUPTED", message)
+
+
+# errno values that mean the disk (or the run's cap on a file) is full
+_FULL = {28: "no space left on the device", 122: "disk quota exceeded", 27: "file too large"}
+
+
+def _os_error_report(name: str, error: OSError, output_bytes: int | None) -> RunReport:
+    """A file the run could not read or write: a located error, not a bug."""
+    where = _where(error)
+    if error.errno == 27 and output_bytes:  # EFBIG: the run's RLIMIT_FSIZE
+        text = f"output limit exceeded: a file reached the run's cap of {output_bytes / 1e6:g} MB"
+        return RunReport(name, "ERROR", where + text)
+    reason = _FULL.get(error.errno, error.strerror or type(error).__name__)
+    target = f" ({error.filename})" if error.filename else ""
+    return RunReport(name, "ERROR", f"{where}cannot read or write a file{target}: {reason}")
+
+
+def internal_error_report(name: str, error: BaseException) -> RunReport:
+    """An asterlite bug: one located line to show, the traceback for message.log."""
+    first = (str(error).strip().splitlines() or [""])[0][:300]
+    text = f"{type(error).__name__}: {first}" if first else type(error).__name__
+    report = RunReport(name, "ERROR", f"{_where(error)}internal error, please report: {text}")
+    report.traceback = "".join(traceback.format_exception(error))
     return report
+
+
+def check_report(name: str, errors: list) -> RunReport:
+    """CHECKED, or every error the check found (UNSUPPORTED when all are)."""
+    if not errors:
+        return RunReport(name, "CHECKED")
+    unsupported = all(isinstance(error, UnsupportedError) for error in errors)
+    texts = [str(error) for error in errors]
+    head = f"{len(errors)} errors:\n" if len(errors) > 1 else ""
+    report = RunReport(name, "UNSUPPORTED" if unsupported else "ERROR", head + "\n".join(texts))
+    report.errors = texts
+    return report
+
+
+# limits of a run whose export has no P line for them (docs/safety.md)
+DEFAULT_TIME_LIMIT = 3600.0  # CPU seconds of a run
+DEFAULT_CHECK_TIME_LIMIT = 60.0  # CPU seconds of ``asterlite check``
+DEFAULT_MEMORY_FRACTION = 0.5  # of the machine's memory, for a run or a check
+DEFAULT_OUTPUT_LIMIT = 2048.0  # MB: message.log and every file the deck writes
+MESSAGE_LOG_CAP = 256 * 1_000_000  # bytes of message.log at most
+
+
+def run_limits(
+    description, time_limit, memory_limit, check_only: bool = False
+) -> tuple[float | None, float | None]:
+    """(seconds, MB) the run may take: the options, else the export's P lines,
+    else the defaults; 0 means no limit. code_aster's FACMTPS environment
+    variable scales the time as it does there."""
+    seconds = description.time_limit if time_limit is None else time_limit
+    megabytes = description.memory_limit if memory_limit is None else memory_limit
+    if seconds is None:
+        seconds = DEFAULT_CHECK_TIME_LIMIT if check_only else DEFAULT_TIME_LIMIT
+    if megabytes is None:
+        megabytes = default_memory_limit()
+    elif megabytes and not check_only:  # a study's own limit measures its data only
+        watchdog.preload_engine()
+    if seconds:
+        try:
+            seconds *= float(os.environ.get("FACMTPS", "1"))
+        except ValueError:
+            pass
+    return (seconds or None), (megabytes or None)
+
+
+def default_memory_limit() -> float | None:
+    """MB: a fraction of the machine's memory (None where it is unknown)."""
+    try:
+        total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        return None
+    return round(DEFAULT_MEMORY_FRACTION * total / watchdog.MEGABYTE)
+
+
+def output_cap_bytes(output_limit: float | None) -> int | None:
+    """Bytes the run may write (None: no cap): ``output_limit`` MB, or the default."""
+    megabytes = DEFAULT_OUTPUT_LIMIT if output_limit is None else output_limit
+    return int(megabytes * 1_000_000) if megabytes else None
+
+
+def log_cap_bytes(output_bytes: int | None) -> int:
+    return MESSAGE_LOG_CAP if output_bytes is None else min(output_bytes, MESSAGE_LOG_CAP)
+
+
+def output_watch(folder, output_bytes: int | None):
+    """A check of the bytes written so far, run as message lines come (every
+    command logs its start and end), at most every half second."""
+    if output_bytes is None:
+        return None
+    last = [0.0]
+
+    def check() -> None:
+        now = time.monotonic()
+        if now - last[0] < 0.5:
+            return
+        last[0] = now
+        written = folder.staged_bytes() + folder.log.written
+        if written > output_bytes:
+            raise OutputLimitError(
+                f"the run wrote {written / 1e6:.1f} MB, beyond its cap of "
+                f"{output_bytes / 1e6:g} MB (asterlite run --output-limit to change it)"
+            )
+
+    return check
+
+
+@contextmanager
+def file_size_cap(output_bytes: int | None):
+    """RLIMIT_FSIZE at the output cap while the deck runs: a single file
+    growing past it fails with EFBIG (SIGXFSZ ignored) instead of filling the
+    disk between two checks. Main thread only (signal dispositions)."""
+    if output_bytes is None or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    try:
+        import resource
+
+        previous = resource.getrlimit(resource.RLIMIT_FSIZE)
+        cap = (
+            output_bytes
+            if previous[1] == resource.RLIM_INFINITY
+            else min(output_bytes, previous[1])
+        )
+        if previous[0] != resource.RLIM_INFINITY:
+            cap = min(cap, previous[0])
+        handler = signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (cap, previous[1]))
+    except (ImportError, ValueError, OSError, AttributeError):
+        yield
+        return
+    try:
+        yield
+    finally:
+        resource.setrlimit(resource.RLIMIT_FSIZE, previous)
+        signal.signal(signal.SIGXFSZ, handler)
+
+
+def _memory_text() -> str:
+    limit = watchdog.memory_limit_mb()
+    return f"the run's limit is {limit:g} MB" if limit else "the machine is out of memory"
 
 
 def one_row_table_values(namespace: dict) -> dict:
@@ -245,15 +520,14 @@ def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
 
 def shock_summary(result: str | None, times, shock) -> dict:
     """Peak and mean normal force, contact fraction and wear power
-    (code_aster's PUIS_USURE: time mean of FN·|VT|) of one shock history."""
+    (code_aster's PUIS_USURE, :func:`asterlite.post.wear.wear_power`: time
+    mean of FN·|VT| over the sliding intervals) of one shock history."""
     import numpy as np
 
-    from asterlite.post.wear import archard_power
+    from asterlite.post.wear import history_wear_power
 
     fields = shock.fields
     fn = np.asarray(fields.get("FN", np.zeros(len(times))), dtype=float)
-    zeros = np.zeros_like(fn)
-    vt1, vt2 = fields.get("VT1", zeros), fields.get("VT2", zeros)
     in_contact = fn != 0.0
     # an impact starts where the archived normal force leaves zero
     impacts = int(in_contact[0]) + int(np.count_nonzero(in_contact[1:] & ~in_contact[:-1]))
@@ -264,35 +538,126 @@ def shock_summary(result: str | None, times, shock) -> dict:
         "max_FN": float(np.abs(fn).max()) if fn.size else 0.0,
         "mean_FN": float(np.abs(fn).mean()) if fn.size else 0.0,
         "contact_fraction": float(np.mean(fn != 0.0)) if fn.size else 0.0,
-        "wear_power": archard_power(times, fn, vt1, vt2),
+        "wear_power": history_wear_power(times, fields),
     }
 
 
-def _finish_output(
-    output_dir: Path, staging: Path, report: RunReport, session, save_results: bool = False
-) -> None:
-    complete = report.status in ("PASS", "NOOK")
+def _finish_output(folder, report: RunReport, session, save_results: bool = False) -> None:
+    """Publish a complete run's files (else keep them under incomplete/),
+    copy the R-line results, end message.log and write the final summary."""
+    try:
+        _place_files(folder, report, session, save_results)
+    except OSError as error:  # a full disk while finishing: say so, keep going
+        failed = _os_error_report(report.deck, error, None)
+        report.status, report.message = "ERROR", failed.message
+    lines = [""]
+    if report.traceback:
+        lines += ["internal error, traceback:", *report.traceback.rstrip("\n").split("\n"), ""]
+    lines.append(format_summary(report))
+    try:
+        folder.log.final("\n".join(lines))
+    except OutputLimitError:
+        pass  # the disk is full: summary.json may still fit
+    try:
+        folder.write_summary(report.as_dict())
+    except OSError:
+        pass  # nothing more can be written; the report is still returned
+    finally:
+        folder.release()
+
+
+def _place_files(folder, report: RunReport, session, save_results: bool) -> None:
+    complete = report.status in COMPLETE
     if complete and save_results:
         # every tran_gene of the deck, in the store documented in docs/results.md
         from asterlite.io.result_store import save_session_results
 
-        saved = save_session_results(staging / "results.h5", session.namespace)
-        session.log(f"results.h5: {', '.join(saved) if saved else 'no tran_gene result to save'}")
+        try:
+            folder.check_name("results.h5")
+            saved = save_session_results(folder.staging / "results.h5", session.namespace)
+            session.log(f"results.h5: {', '.join(saved) if saved else 'no tran_gene result'}")
+        except AsterliteError as error:
+            report.status, report.message = "ERROR", f"results.h5 not saved: {error}"
+            complete = False
     if complete:
-        for item in staging.iterdir():
-            target = output_dir / item.name
-            if target.is_dir():
-                shutil.rmtree(target)
-            item.replace(target)
-        staging.rmdir()
-    elif any(staging.iterdir()):
-        staging.replace(output_dir / "incomplete")
+        blocked = folder.publish()
+        if blocked:
+            report.status = "ERROR"
+            report.message = (
+                f"{', '.join(blocked)}: appeared in the output folder during the run; "
+                "the run's files are kept under incomplete/ instead"
+            )
+            folder.keep_incomplete()
+            return
+        keep_result_files(folder, session)
     else:
-        staging.rmdir()
-    messages = session.messages if session is not None else []
-    lines = list(messages) + ["", format_summary(report)]
-    (output_dir / "message.log").write_text("\n".join(lines) + "\n", encoding="utf-8")
-    (output_dir / "summary.json").write_text(json.dumps(report.as_dict(), indent=1), "utf-8")
+        folder.keep_incomplete()
+
+
+def keep_result_files(folder, session) -> None:
+    """Copy what the deck wrote on each unit an export R line names to that
+    line's path (code_aster's results to keep), and say so in the log. A copy
+    replaces a regular file there (never writes through a symlink, never
+    replaces a folder, nor a file of the output folder this run did not make)."""
+    for result in session.run.results:
+        written = session.output_units.get(result.unit)
+        if result.file_type in NOT_PRODUCED:
+            source = None
+            note = f"R {result.file_type} {result.path.name}: a code_aster database, not produced"
+        elif result.unit == 6 or result.file_type == "mess":
+            source, note = None, f"R {result.file_type}: the messages are in message.log"
+        elif written is None:
+            source = None
+            note = (
+                f"R {result.file_type} {result.path}: the deck wrote nothing on unit {result.unit}"
+            )
+        else:
+            # the unit's file now sits in the output folder under the same name
+            source = folder.path / written.name
+            note = f"R {result.file_type}: unit {result.unit} copied to {result.path}"
+        if source is not None and source.is_file():
+            refusal = _copy_refusal(folder, result.path)
+            if refusal:
+                note = f"R {result.file_type} {result.path}: not copied ({refusal})"
+            else:
+                try:
+                    _copy_replacing(source, result.path)
+                    if folder.inside(result.path):
+                        folder.created.append(result.path.name)
+                except OSError as error:
+                    note = f"R {result.file_type} {result.path}: not copied ({error})"
+        try:
+            session.log(note)
+        except OutputLimitError:
+            pass
+
+
+def _copy_refusal(folder, target: Path) -> str:
+    """Why the R-line copy to ``target`` may not be made ('' when it may)."""
+    if target.is_dir() and not target.is_symlink():
+        return "a folder is there"
+    if folder.inside(target) and os.path.lexists(target) and not folder.owns(target):
+        return "the output folder already holds it and this run did not make it"
+    if folder.inside(target) and Path(os.path.abspath(target)).parent != Path(
+        os.path.abspath(folder.path)
+    ):
+        return "inside the output folder, only its top level may be named"
+    return ""
+
+
+def _copy_replacing(source: Path, target: Path) -> None:
+    """Copy to a new file beside ``target``, then rename it over ``target``
+    (which replaces a symlink there rather than writing through it)."""
+    target.parent.mkdir(parents=True, exist_ok=True)
+    temporary = target.parent / f".{target.name}.asterlite-{os.getpid()}"
+    try:
+        with create_file(temporary, "wb") as copy, open(source, "rb") as original:
+            shutil.copyfileobj(original, copy)
+        os.replace(temporary, target)
+    except BaseException:
+        if os.path.lexists(temporary):
+            os.unlink(temporary)
+        raise
 
 
 def format_test_line(test: TestRecord) -> str:

@@ -19,12 +19,14 @@ from pathlib import Path
 from typing import Any
 
 from asterlite.catalog import load_catalogue, result_type, validate
-from asterlite.catalog.keywords import Keywords
+from asterlite.catalog.keywords import Keywords, unread_keywords
 from asterlite.concepts.base import Concept, Placeholder
 from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown
+from asterlite.runtime import watchdog
 from asterlite.runtime.context import CommandContext, TestRecord
 from asterlite.runtime.export import RunDescription
+from asterlite.runtime.v15_names import GeneratedNames, record_call
 
 
 class DeckFinished(AsterliteError):
@@ -91,13 +93,32 @@ class Session:
     keyword_edits: list[dict] = field(default_factory=list)  # what the overrides replaced
     # (command, result name, concept) of every command that made a concept
     produced: list[tuple[str, str | None, Any]] = field(default_factory=list)
+    started: bool = False  # DEBUT or POURSUITE called in the current deck file
+    # code_aster 15's generated object names ("0000001b") that decks may quote
+    generated_names: GeneratedNames = field(default_factory=GeneratedNames)
+    check: Any = None  # under check: asterlite.runtime.checking.CheckFacts
+    # the code_aster version the decks are read in (asterlite run --aster-version);
+    # None: detected from their text (asterlite.legacy.version)
+    aster_version: int | None = None
+    # refuses an output file name the run may not take (asterlite.runtime.outdir)
+    output_guard: Any = None
 
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
+        from asterlite.runtime import checking
 
         self.namespace.update(base_namespace(print_hook=self._print))
+        # code_aster commands asterlite lacks are refused by name when called
+        for name, version in checking.code_aster_commands().items():
+            self.namespace[name] = checking.UnsupportedCommand(name, version)
         for name in catalogue_command_names():
             self.namespace[name] = CommandProxy(name, self)
+        if self.check_only:
+            self.check = checking.CheckFacts()
+
+    @property
+    def check_errors(self) -> list:
+        return self.check.errors if self.check is not None else []
 
     # ----------------------------------------------------------- services
     def _print(self, text: str) -> None:
@@ -132,9 +153,16 @@ class Session:
         self.output_dir.mkdir(parents=True, exist_ok=True)
         if isinstance(unit_or_name, int):
             if unit_or_name not in self.output_units:
-                self.output_units[unit_or_name] = self.output_dir / f"fort.{unit_or_name}"
+                self.output_units[unit_or_name] = self._output_file(f"fort.{unit_or_name}")
             return self.output_units[unit_or_name]
-        return self.output_dir / Path(unit_or_name).name
+        return self._output_file(Path(unit_or_name).name)
+
+    def _output_file(self, name: str) -> Path:
+        if self.output_guard is not None:
+            self.output_guard(name)
+        elif name in ("", ".", ".."):
+            raise CommandError(f"{name!r} is not a file name")
+        return self.output_dir / name
 
     def bind_output(self, output: Any, concept: Any) -> None:
         if not isinstance(output, CO):
@@ -146,14 +174,24 @@ class Session:
     # ----------------------------------------------------------- running
     def load_module(self, name: str) -> dict | None:
         """Modules a deck may import besides math and numpy."""
-        if name in ("code_aster.Commands", "code_aster.Cata.Commands"):
-            return {n: v for n, v in self.namespace.items() if isinstance(v, CommandProxy)}
+        from asterlite.runtime.checking import UnsupportedCommand
+
+        if name in COMMAND_MODULES:  # the commands, which the namespace already holds
+            commands = (CommandProxy, UnsupportedCommand)
+            return {n: v for n, v in self.namespace.items() if isinstance(v, commands)}
+        if name.startswith("code_aster."):
+            raise UnsupportedError(
+                f"module {name}: asterlite provides code_aster's commands "
+                "(code_aster.Commands) and CA.TestCase, not this module"
+            )
         if name == "code_aster":
             from asterlite.runtime.deck_api import code_aster_module
 
             return code_aster_module(self)
         if name == "aster":
-            return {}
+            from asterlite.runtime.deck_api import aster_module
+
+            return aster_module(self)
         if name in self.run.helper_modules:
             from asterlite.lang import Evaluator, parse_deck
 
@@ -169,17 +207,42 @@ class Session:
         from asterlite.lang import Evaluator, parse_deck
 
         self.current_file = str(path)
+        self.started = False
         self.log(f"# deck {path.name}")
-        module = parse_deck(path.read_text(encoding="utf-8", errors="replace"), str(path))
+        text = path.read_text(encoding="utf-8", errors="replace")
+        try:
+            module = parse_deck(text, str(path))
+        except AsterliteError as error:
+            if self.check is None:
+                raise
+            self.check.record(error)  # check goes on with the next deck file
+            return
         evaluator = Evaluator(
             self.namespace, module_loader=self.load_module, overrides=self.overrides
         )
         try:
-            evaluator.run(module)
+            evaluator.run(module, on_error=self._statement_failed if self.check else None)
         except DeckFinished:
             pass
         finally:
             self.overrides_used |= evaluator.overrides_used
+        if not self.started:  # an empty deck, or one that never starts a study
+            self._no_start(DeckStartError(NO_START, Location(str(path), 1)))
+
+    def _statement_failed(self, error, statement) -> None:
+        """Under check: record the error of a top-level statement and go on."""
+        from asterlite.runtime.checking import statement_failed
+
+        if isinstance(error, DeckFinished):
+            raise error
+        statement_failed(self, statement, error)
+
+    def _no_start(self, error: AsterliteError) -> None:
+        """A command before DEBUT/POURSUITE: an error (recorded once under check)."""
+        if self.check is None:
+            raise error
+        self.check.record(error)
+        self.started = True
 
     def run_all(self) -> None:
         if self.check_only:  # placeholders print nothing; keep start-up light
@@ -237,6 +300,17 @@ def deck_variables(namespace: dict) -> list[str]:
 
 # Commands that steer the session rather than compute: handled here.
 SESSION_COMMANDS = {"DEBUT", "POURSUITE", "FIN", "DEBUG", "DETRUIRE", "DEFI_FICHIER"}
+# Commands that start a study: every deck file calls one before any other command.
+STARTERS = ("DEBUT", "POURSUITE")
+NO_START = "the deck file calls neither DEBUT() nor POURSUITE(), which every study starts with"
+# Modules that only bring the command namespace asterlite already provides.
+COMMAND_MODULES = ("code_aster.Commands", "code_aster.Cata.Commands", "code_aster.CodeCommands")
+
+
+class DeckStartError(AsterliteError):
+    """A deck file without DEBUT()/POURSUITE(), or a command before it."""
+
+    kind = "deck error"
 
 
 class CommandProxy(DeckCallable):
@@ -250,7 +324,29 @@ class CommandProxy(DeckCallable):
         return f"<command {self.name}>"
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
+        if self.session.check is None:
+            return self._deck_call(args, kwargs, site)
+        try:
+            return self._deck_call(args, kwargs, site)
+        except DeckFinished:
+            raise
+        except AsterliteError as error:  # check: record, the outputs become Unknown
+            from asterlite.runtime.checking import command_failed
+
+            if error.location is None:
+                error.location = site.location
+            command_failed(self.session, self.name, kwargs, error)
+            return Unknown
+
+    def _deck_call(self, args: list, kwargs: dict, site: CallSite):
         session = self.session
+        if not session.started and self.name not in STARTERS:
+            session._no_start(
+                DeckStartError(f"{self.name} comes before DEBUT() or POURSUITE()", site.location)
+            )
+        session.started = True
+        if not session.check_only:
+            watchdog.check_time()  # between commands: the run's time limit
         if args:
             raise UnsupportedError(
                 f"{self.name} takes keyword arguments only", site.location, self.name
@@ -260,14 +356,18 @@ class CommandProxy(DeckCallable):
             raise UnsupportedError(f"command {self.name} is not supported", site.location)
         kwargs = dict(kwargs)
         reuse = kwargs.pop("reuse", None)
+        from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
+
+        kwargs = v11.before_call(self.name, kwargs, site, session)
         if catalogue.compat_syntax is not None:  # legacy syntax: check as written, translate
             from asterlite.legacy.runtime import translate_call
 
             modern = translate_call(catalogue, kwargs, site, session, reuse=reuse)
             if modern is not None:
                 name, catalogue, kwargs = modern
-                if name != self.name:  # a renamed legacy command: the modern one runs it
-                    return CommandProxy(name, session)._call(catalogue, kwargs, reuse, site)
+                # a renamed legacy command: the modern one runs it
+                proxy = CommandProxy(name, session) if name != self.name else self
+                return modern.finish(proxy._call(catalogue, kwargs, reuse, site))
         return self._call(catalogue, kwargs, reuse, site)
 
     def _call(self, catalogue, kwargs: dict, reuse, site: CallSite):
@@ -289,16 +389,26 @@ class CommandProxy(DeckCallable):
         if self.name in SESSION_COMMANDS:
             return self._session_command(keywords, site)
         if session.check_only:
-            return self._placeholder(catalogue, keywords)
+            from asterlite.runtime.checking import check_call
+
+            return check_call(self, catalogue, keywords, site, reuse)
         return self._execute(keywords, site, reuse)
 
     # ---------------------------------------------------------------- check
     def _placeholder(self, catalogue, keywords: Keywords):
-        for output in _co_outputs(keywords):
-            self.session.bind_output(output, AnyPlaceholder(self.name))
+        from asterlite.runtime.checking import undecidable
+
         try:
+            # sd_prod also types the CO outputs (CO.produced_type), as code_aster's does
             produced = result_type(catalogue, keywords)
         except Exception:  # sd_prod read a value check mode could not compute
+            produced = AnyPlaceholder
+        for output in _co_outputs(keywords):
+            typed = getattr(output, "produced_type", None)
+            concept = Placeholder(typed, self.name) if typed else AnyPlaceholder(self.name)
+            self.session.bind_output(output, concept)
+        if produced is AnyPlaceholder or undecidable(catalogue, keywords):
+            # a type chosen from uncomputed inputs could be wrong: any type will do
             return AnyPlaceholder(self.name)
         if produced is None:
             return None
@@ -329,17 +439,31 @@ class CommandProxy(DeckCallable):
         start = time.perf_counter()
         try:
             concept = module.run(ctx, keywords)
+        except MemoryError:
+            limit = watchdog.memory_limit_mb()
+            what = f"the run's limit of {limit:g} MB" if limit else "the memory available"
+            raise watchdog.MemoryLimitError(
+                f"the command needs more memory than {what} (export 'P memory_limit', "
+                "or asterlite run --memory-limit to change it)",
+                site.location,
+                self.name,
+            ) from None
         except AsterliteError as error:
             if error.location is None:
                 error.location = site.location
             if not error.path:
                 error.path = self.name
             raise
+        refuse_unread(keywords)
+        from asterlite.legacy import v11
+
+        concept = v11.after_run(self.name, concept, session)
         seconds = time.perf_counter() - start
         session.timings.append(CommandTiming(self.name, site.location, site.assigned_name, seconds))
         session.log(f"  done in {seconds:.3f} s")
         if isinstance(concept, Concept):
             session.produced.append((self.name, site.assigned_name, concept))
+        record_call(session, self.name, keywords, concept, reuse, site.location)
         # a reused concept keeps its name; a new one takes the deck's name
         if isinstance(concept, Concept) and site.assigned_name:
             if reuse is None or concept.name is None:
@@ -348,11 +472,24 @@ class CommandProxy(DeckCallable):
 
     # -------------------------------------------------------------- session
     def _session_command(self, keywords: Keywords, site: CallSite):
+        result = self._run_session_command(keywords, site)
+        refuse_unread(keywords)
+        return result
+
+    def _run_session_command(self, keywords: Keywords, site: CallSite):
         session = self.session
         if self.name == "FIN":
             session.log("FIN")
             raise DeckFinished("FIN reached", site.location)
         if self.name in ("DEBUT", "POURSUITE", "DEBUG"):
+            if keywords.get("MODE") == "POURSUITE":  # continue a saved code_aster database
+                path, location = keywords.where("MODE")
+                raise UnsupportedError(
+                    "MODE='POURSUITE' continues a code_aster database, which asterlite "
+                    "does not read: run the earlier deck in the same .export instead",
+                    location,
+                    path,
+                )
             session.log(self.name)
             return None
         if self.name == "DETRUIRE":
@@ -368,8 +505,33 @@ class CommandProxy(DeckCallable):
             name = keywords.get("FICHIER")
             if unit is not None and name and session.output_dir is not None:
                 session.output_units[int(unit)] = session.output_path(str(name))
+            if session.check is not None:
+                from asterlite.runtime.checking import note_unit_mapping
+
+                note_unit_mapping(session, keywords)
             return None
         return None
+
+
+def refuse_unread(keywords: Keywords) -> None:
+    """Stop on any keyword the deck gave that the command did not use.
+
+    A keyword accepted and ignored would leave a result that looks valid but
+    is not what code_aster computes: refusing it is the honest answer.
+    """
+    unread = unread_keywords(keywords)
+    if not unread:
+        return
+    level, name = unread[0]
+    path, location = level.where(name)
+    others = [lvl.where(n)[0] for lvl, n in unread[1:]]
+    more = f" (also not used: {', '.join(others)})" if others else ""
+    raise UnsupportedError(
+        "given, but asterlite does not implement what this keyword does in code_aster: "
+        f"refused rather than ignored{more}",
+        location,
+        path,
+    )
 
 
 def _blur_empty_sequences(value):

@@ -197,8 +197,9 @@ def law_spec(occ, basis, n_modes: int, number: int, options: dict) -> ShockSpec:
     elif relation == "ROTOR_FISS":
         spec.frame = rotor_frame(mesh, n1, n2)
         variable = options.get("VITESSE_VARIABLE", "NON") == "OUI"
-        speed = options.get("VITE_ROTA") or 0.0
-        spec.law = RF.prepare_rotor_fiss(occ, float(speed), variable)
+        # at variable speed VITE_ROTA is a function and the angle is ANGL_ROTA(t)
+        speed = 0.0 if variable else float(options.get("VITE_ROTA") or 0.0)
+        spec.law = RF.prepare_rotor_fiss(occ, speed, variable)
     return spec
 
 

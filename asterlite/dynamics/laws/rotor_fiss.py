@@ -4,8 +4,14 @@ The crack lies between node D (node 1) and node G (node 2) of a rotor
 whose axis is x (``rot_axis`` = R_y(β) R_z(α), code_aster's nautical angles
 of neighbour(D) - neighbour(G), the rotor nodes next to the crack nodes:
 ``connections.rotor_frame``). The frame turns with the rotor:
-γ(t) = ANGL_ROTA(t) when the speed is variable, else ANGL_INIT + Ω t; as in
-code_aster's rot3d, sin γ and cos γ below 1e-6 in magnitude count as 0.
+γ(t) = ANGL_ROTA(t) (radians, evaluated at the instant of each force
+evaluation) when the speed is variable (VITESSE_VARIABLE='OUI', where
+ANGL_INIT and VITE_ROTA play no part), else ANGL_INIT + Ω t, as code_aster's
+force routine does; as in code_aster's rot3d, sin γ and cos γ below 1e-6 in
+magnitude count as 0. A DEFI_FONCTION ANGL_ROTA is packed with its points
+(linear interpolation, its PROL_*), a FORMULE runs as the kernels' formula
+program (:mod:`asterlite.dynamics.formula`): exact values at every instant,
+no sampling.
 With δθ = θ_G - θ_D (rotations, global) brought to the turning frame
 (δy, δz), the crack's opening angle is
 φ = atan2(δy, δz) in [0, 2π) and the moment on node D is, in that frame,
@@ -26,9 +32,11 @@ import math
 import numpy as np
 from numba import njit
 
+from asterlite.dynamics.formula import STACK_DEPTH, formula_program, run_program
 from asterlite.dynamics.laws.tabulated import LawError, function_table, value
 
-P_VARIABLE_SPEED = 0  # 1.0: γ = ANGL_ROTA(t)
+P_VARIABLE_SPEED = 0  # γ from: CONSTANT_SPEED, ANGLE_TABLE or ANGLE_PROGRAM
+CONSTANT_SPEED, ANGLE_TABLE, ANGLE_PROGRAM = 0.0, 1.0, 2.0
 P_ANGLE0, P_SPEED = 1, 2  # ANGL_INIT (rad), rotation speed Ω (rad/s)
 P_AT_K, P_AT_DK, P_AT_ANGLE = 3, 4, 5  # where the packed functions start (angle: -1 if none)
 HEADER = 6
@@ -41,9 +49,43 @@ TWO_PI = 2.0 * math.pi
 
 @njit(cache=True)
 def rotor_angle(params, t):
-    if params[P_VARIABLE_SPEED] == 1.0:
+    source = params[P_VARIABLE_SPEED]
+    if source == ANGLE_TABLE:
         return value(params, int(params[P_AT_ANGLE]), t)
+    if source == ANGLE_PROGRAM:
+        return program_value(params, int(params[P_AT_ANGLE]), t)
     return params[P_ANGLE0] + params[P_SPEED] * t
+
+
+@njit(cache=True)
+def program_value(params, start, t):
+    """The formula program packed at ``start`` ([n, n codes, n constants])
+    at t, run by the kernels' formula interpreter."""
+    n = int(params[start])
+    codes = np.zeros((1, n + 1), dtype=np.int64)
+    constants = np.zeros((1, n + 1))
+    codes[0, 0] = n
+    for i in range(n):
+        codes[0, 1 + i] = int(params[start + 1 + i])
+        constants[0, 1 + i] = params[start + 1 + n + i]
+    return run_program(codes, constants, 0, t, np.zeros(STACK_DEPTH))
+
+
+def pack_program(func, label: str) -> np.ndarray:
+    """[n, codes, constants] of a FORMULE of INST, or a LawError naming
+    what the kernels cannot run."""
+    names = tuple(getattr(func, "NOM_PARA", ()) or ())
+    if names != ("INST",):
+        raise LawError(f"{label}: a formula of INST is expected, not of {names}")
+    program = formula_program(func)
+    if program is None:
+        raise LawError(
+            f"{label}: this FORMULE uses something the time loop cannot evaluate (a call "
+            "to another function or to a deck def): give it as a DEFI_FONCTION of INST or "
+            "with arithmetic and math functions only"
+        )
+    codes, values = program
+    return np.concatenate([[float(len(codes))], np.asarray(codes, dtype=float), values])
 
 
 @njit(cache=True)
@@ -82,12 +124,10 @@ def cracked_rotor_moment(params, t, rot_axis, dtheta_x, dtheta_y, dtheta_z, stat
 ANGLE_SAMPLES = np.linspace(0.0, TWO_PI, 3601)
 
 
-def prepare_rotor_fiss(
-    kw, rotation_speed: float = 0.0, variable_speed: bool = False, time_samples=None
-) -> np.ndarray:
+def prepare_rotor_fiss(kw, rotation_speed: float = 0.0, variable_speed: bool = False) -> np.ndarray:
     """Parameter array from a validated ROTOR_FISS occurrence. ``rotation_speed``
-    (rad/s) and ``variable_speed`` come from DYNA_VIBRA (VITESSE_ROTATION,
-    VITESSE_VARIABLE); ``time_samples`` tabulates an ANGL_ROTA formula."""
+    (rad/s, constant speed only) and ``variable_speed`` come from DYNA_VIBRA
+    (VITE_ROTA, VITESSE_VARIABLE)."""
     header = np.zeros(HEADER)
     header[P_ANGLE0] = math.radians(float(kw.get("ANGL_INIT", 0.0)))
     header[P_SPEED] = float(rotation_speed)
@@ -100,8 +140,13 @@ def prepare_rotor_fiss(
     if variable_speed:
         if kw.get("ANGL_ROTA") is None:
             raise LawError("ROTOR_FISS: ANGL_ROTA (angle vs INST) is needed at variable speed")
-        header[P_VARIABLE_SPEED] = 1.0
-        blocks.append(function_table(kw["ANGL_ROTA"], "ROTOR_FISS/ANGL_ROTA", time_samples))
+        angle = kw["ANGL_ROTA"]
+        if hasattr(angle, "VALE") and hasattr(angle, "evaluate"):  # a FORMULE
+            header[P_VARIABLE_SPEED] = ANGLE_PROGRAM
+            blocks.append(pack_program(angle, "ROTOR_FISS/ANGL_ROTA"))
+        else:
+            header[P_VARIABLE_SPEED] = ANGLE_TABLE
+            blocks.append(function_table(angle, "ROTOR_FISS/ANGL_ROTA", para="INST"))
     at = HEADER
     for slot, block in zip((P_AT_K, P_AT_DK, P_AT_ANGLE), blocks, strict=False):
         header[slot] = at

@@ -26,6 +26,7 @@ import math
 
 import numpy as np
 
+from asterlite.dynamics.physical.stepping import finite, non_finite_state
 from asterlite.errors import NumericalError
 
 EPS = np.finfo(float).eps
@@ -83,6 +84,7 @@ def integrate(system, t0, t_end, dt_max, q, v, a, archive, inverse_mass, options
     vip1 = v.copy()
     archive.add(t0, depl, vip1, acce)
     temps, dt1, dt2, calm = t0, 0.0, dt_max, 0
+    archived_periods = 1  # the archiving instants are t0 + k PAS PAS_ARCH, never a running sum
     t_archive = t0 + dt_archive
     steps = trials_total = warned = 0
     while temps < t_end:
@@ -116,8 +118,8 @@ def integrate(system, t0, t_end, dt_max, q, v, a, archive, inverse_mass, options
         if err > 1.0:
             dt2 = dt2 * divi
             warned += 1
-        if not np.all(np.isfinite(dep2)):
-            raise NumericalError(f"ADAPT_ORDRE2: the solution became non-finite at t={temps:.6g}")
+        if not (finite(dep2) and finite(vip2) and finite(acc2)):
+            raise non_finite_state(system, temps + dt2, temps, steps + 1, dep2, vip2, acc2, archive)
         dt1 = dt2
         temp2 = temps + dt2
         if err < 0.75:
@@ -133,7 +135,8 @@ def integrate(system, t0, t_end, dt_max, q, v, a, archive, inverse_mass, options
                 archive.add(temp2, dep2, vip2, acc2)
             else:
                 archive.add(temps, depl, vip1, acce)
-            t_archive += dt_archive
+            archived_periods += 1
+            t_archive = t0 + archived_periods * dt_archive
         temps = temp2
         depl, vite, vip1, acce = dep2, vit2, vip2, acc2
     if warned:

@@ -1,12 +1,32 @@
 """The fixed-step loop shared by NEWMARK, WILSON and DIFF_CENTRE: loads
 evaluated exactly at every step instant, by blocks of instants (one
-vectorised evaluation per block), archiving by a precomputed mask."""
+vectorised evaluation per block), archiving by a precomputed mask.
+
+Each block of loads is tested once (a load is non-finite from the first
+instant where it is), every step tests the displacement (NaN propagates: a
+non-finite velocity reaches it within the step or the next), every archived
+state its velocity and acceleration too, so that no archived state is
+non-finite. "Non-finite" is the GENE loops' test: NaN, inf, or a magnitude
+of 1e300 or more (:data:`asterlite.dynamics.diagnosis.LIMIT`). The first
+failure stops the run with :class:`NonFiniteState`, saying what is
+non-finite and when."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from asterlite.dynamics.diagnosis import LIMIT
+
 BLOCK = 512
+
+
+class NonFiniteState(FloatingPointError):
+    """The state of a physical transient became non-finite; ``path``: the
+    keyword at fault below the command (``EXCIT[2]``, ``INCREMENT/PAS``)."""
+
+    def __init__(self, message: str, path: str = ""):
+        super().__init__(message)
+        self.path = path
 
 
 def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, modal=None) -> None:
@@ -21,7 +41,10 @@ def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, m
     for start in range(1, n_steps + 1, BLOCK):
         stop = min(start + BLOCK, n_steps + 1)
         forces = system.forces(times[start:stop])
+        bad_load = first_bad_row(forces)
         for k in range(start, stop):
+            if k - start == bad_load:  # the state at times[k - 1] is the last finite one
+                raise non_finite_state(system, times[k], times[k - 1], k, q, v, a, archive)
             q_old, v_old = q, v
             force = forces[k - start]
             if modal is not None:
@@ -29,7 +52,45 @@ def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, m
             q, v, a = step(times[k] - times[k - 1], force, q, v, a)
             if monitor is not None:
                 monitor(times[k], forces[k - start], q_old, v_old, q, v)
-            if not np.all(np.isfinite(q)):
-                raise FloatingPointError(f"the solution became non-finite at t={times[k]:.6g}")
+            if not finite(q) or (mask[k] and not (finite(v) and finite(a))):
+                raise non_finite_state(system, times[k], times[k - 1], k, q, v, a, archive)
             if mask[k]:
                 archive.add(times[k], q, v, a)
+
+
+def finite(values) -> bool:
+    return bool(np.all(np.abs(values) < LIMIT))
+
+
+def first_bad_row(forces) -> int:
+    """Index of the first row of ``forces`` that is not finite, or -1."""
+    rows = ~np.all(np.abs(forces) < LIMIT, axis=1)
+    return int(np.argmax(rows)) if rows.any() else -1
+
+
+def non_finite_state(system, t, t_good, step, q, v, a, archive) -> NonFiniteState:
+    """The error of a state found non-finite at ``t``: a load first (the
+    state at ``t_good`` was finite), else the displacement, velocity and
+    acceleration themselves (an unstable step)."""
+    from asterlite.dynamics import diagnosis as D
+
+    multipliers = []
+    for load in system.loads:
+        try:
+            multipliers.append(float(load.coefficients([t])[0]))
+        except Exception:  # a function refusing to be evaluated there: not finite
+            multipliers.append(np.nan)
+    vectors = [system.reduce_vector(load.vector) for load in system.loads]
+    labels = [f"EXCIT[{e}]" for e in range(1, len(vectors) + 1)]
+    culprit = D.first_bad_load(multipliers, vectors, labels, t)
+    described = D.state_text(q, v, a, unit="free DOF", qualifier="")
+    if culprit is None:
+        culprit = D.Culprit((described or "the state") + " diverged", "INCREMENT/PAS", True)
+        advice = "try a smaller PAS, and check the stiffness, damping and loads"
+    else:
+        if described:
+            culprit.text += f", and then {described}"
+        advice = "check the function that defines it (FONC_MULT, COEF_MULT, the FORMULE)"
+    last = archive.times[archive.count - 1] if archive.count else None
+    when = D.when_text(t, t_good, step, last)
+    return NonFiniteState(f"{when}: {culprit.text}; {advice}", culprit.path)
