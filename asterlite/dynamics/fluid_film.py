@@ -385,6 +385,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
         divergence_error,
         grow,
         new_buffers,
+        run_info,
     )
 
     if not system.diagonal:
@@ -455,19 +456,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
         raise divergence_error(status, clock, counters, shocks, system, "EULER")
     count = counters[K.K_ARCHIVED]
     out = tuple(b[:count].copy() for b in buffers)
-    steps = int(counters[K.K_STEP])
-    info = {
-        "steps": steps,
-        "rejected_steps": 0,
-        "archived": int(count),
-        "integration_seconds": elapsed,
-        "initial_step": dt,
-        "adaptive": False,
-        "min_step": float(clock[K.C_MIN_STEP]) if steps else dt,
-        "max_step": float(clock[K.C_MAX_STEP]) if steps else dt,
-        "mean_step": (float(clock[K.C_TIME]) - t0) / steps if steps else dt,
-        "last_step": float(clock[K.C_STEP]),
-        "film_iterations": int(scalars[S_TOTAL]),
-        "film_worst_iterations": int(scalars[S_WORST]),
-    }
+    info = run_info(clock, counters, t0, dt, elapsed, adaptive=False)
+    info["film_iterations"] = int(scalars[S_TOTAL])
+    info["film_worst_iterations"] = int(scalars[S_WORST])
     return RunResult(*out, info=info)

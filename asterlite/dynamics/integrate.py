@@ -216,19 +216,7 @@ def integrate(
         raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info = (b[:count].copy() for b in buffers)
-    steps = int(counters[K.K_STEP])
-    info = {
-        "steps": steps,
-        "rejected_steps": int(counters[K.K_REJECTED]),
-        "archived": int(count),
-        "integration_seconds": elapsed,
-        "initial_step": dt,
-        "adaptive": adaptive,
-        "min_step": float(clock[K.C_MIN_STEP]) if steps else dt,
-        "max_step": float(clock[K.C_MAX_STEP]) if steps else dt,
-        "mean_step": (float(clock[K.C_TIME]) - t0) / steps if steps else dt,
-        "last_step": float(clock[K.C_STEP]),
-    }
+    info = run_info(clock, counters, t0, dt, elapsed, adaptive)
     if implicit_loop is not None:
         ints = memory[3][5]
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
@@ -346,6 +334,24 @@ def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | 
 
 def grow(buffers):
     return tuple(np.concatenate([b, np.zeros_like(b)]) for b in buffers)
+
+
+def run_info(clock, counters, t0: float, dt: float, elapsed: float, adaptive: bool) -> dict:
+    """What the run summary says of a finished loop: steps, rejections and
+    the range of the step sizes taken."""
+    steps = int(counters[K.K_STEP])
+    return {
+        "steps": steps,
+        "rejected_steps": int(counters[K.K_REJECTED]),
+        "archived": int(counters[K.K_ARCHIVED]),
+        "integration_seconds": elapsed,
+        "initial_step": dt,
+        "adaptive": adaptive,
+        "min_step": float(clock[K.C_MIN_STEP]) if steps else dt,
+        "max_step": float(clock[K.C_MAX_STEP]) if steps else dt,
+        "mean_step": (float(clock[K.C_TIME]) - t0) / steps if steps else dt,
+        "last_step": float(clock[K.C_STEP]),
+    }
 
 
 def initial_error(state, shocks, excitation, t0: float, labels) -> NumericalError:

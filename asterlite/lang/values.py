@@ -58,6 +58,17 @@ class CO:
         return f"CO({self.name!r})"
 
 
+def co_outputs(value) -> list[CO]:
+    """Every CO(...) output name inside a keyword tree."""
+    if isinstance(value, CO):
+        return [value]
+    if isinstance(value, dict):
+        return [co for v in value.values() for co in co_outputs(v)]
+    if isinstance(value, (list, tuple)):
+        return [co for v in value for co in co_outputs(v)]
+    return []
+
+
 class COBuilder(DeckCallable):
     """The ``CO`` builtin."""
 

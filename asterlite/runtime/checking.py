@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 from asterlite.catalog.model import BLOC, FACT, SIMP
 from asterlite.concepts.base import Placeholder
 from asterlite.errors import CommandError, UnsupportedError
-from asterlite.lang.values import CO, CallSite, DeckCallable, Unknown
+from asterlite.lang.values import CallSite, DeckCallable, Unknown, co_outputs
 
 if TYPE_CHECKING:
     from asterlite.catalog.keywords import Keywords
@@ -137,7 +137,7 @@ def command_failed(session, name: str, kwargs: dict, error) -> None:
 
     facts: CheckFacts = session.check
     facts.record(error)
-    for output in _co_outputs(kwargs):
+    for output in co_outputs(kwargs):
         session.namespace[output.name] = Unknown
     catalogue = load_catalogue(name)
     sd_prod = getattr(catalogue, "sd_prod", "?")
@@ -350,13 +350,3 @@ def _simple_values(level_catalogue, keywords):
 
 def _may_be_mesh(result: Any) -> bool:
     return isinstance(result, Placeholder) and result.satisfies("maillage_sdaster")
-
-
-def _co_outputs(value) -> list[CO]:
-    if isinstance(value, CO):
-        return [value]
-    if isinstance(value, dict):
-        return [co for v in value.values() for co in _co_outputs(v)]
-    if isinstance(value, (list, tuple)):
-        return [co for v in value for co in _co_outputs(v)]
-    return []

@@ -325,26 +325,17 @@ def memory_cap(fraction: float = MEMORY_FRACTION):
     while the study runs, so that a rung whose adaptive step collapses (and
     archives millions of steps) fails with a MemoryError — an ``error`` row —
     instead of being killed by the system. No-op where unsupported."""
-    try:
-        import os
-        import resource
+    import os
 
-        total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
-        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
-    except (ImportError, ValueError, OSError, AttributeError):
-        yield
-        return
-    cap = int(fraction * total)
-    if fraction <= 0 or (soft != resource.RLIM_INFINITY and soft <= cap):
-        yield
-        return
-    if hard != resource.RLIM_INFINITY:
-        cap = min(cap, hard)
-    resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+    from asterlite.runtime.watchdog import address_space_cap
+
     try:
+        total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        total = None
+    cap = int(fraction * total) if total and fraction > 0 else None
+    with address_space_cap(cap):
         yield
-    finally:
-        resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
 
 
 def run_in_scratch(deck: Path, overrides: list | None = None):

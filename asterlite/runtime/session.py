@@ -22,7 +22,7 @@ from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
 from asterlite.concepts.base import Concept, Placeholder
 from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
-from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown
+from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.runtime import watchdog
 from asterlite.runtime.context import CommandContext, TestRecord
 from asterlite.runtime.export import RunDescription
@@ -403,7 +403,7 @@ class CommandProxy(DeckCallable):
             produced = result_type(catalogue, keywords)
         except Exception:  # sd_prod read a value check mode could not compute
             produced = AnyPlaceholder
-        for output in _co_outputs(keywords):
+        for output in co_outputs(keywords):
             typed = getattr(output, "produced_type", None)
             concept = Placeholder(typed, self.name) if typed else AnyPlaceholder(self.name)
             self.session.bind_output(output, concept)
@@ -695,17 +695,6 @@ def _drop_closed(level, given: dict, context: dict) -> list[str]:
     for name in closed:
         del given[name]
     return closed
-
-
-def _co_outputs(value) -> list[CO]:
-    """Every CO(...) output name inside a keyword tree."""
-    if isinstance(value, CO):
-        return [value]
-    if isinstance(value, dict):
-        return [co for v in value.values() for co in _co_outputs(v)]
-    if isinstance(value, (list, tuple)):
-        return [co for v in value for co in _co_outputs(v)]
-    return []
 
 
 __all__ = [

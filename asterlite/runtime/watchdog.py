@@ -238,36 +238,37 @@ def _compile_ended() -> None:
 
 
 @contextmanager
-def _address_space_cap(megabytes: float | None):
-    """Cap RLIMIT_AS at the current size plus ``megabytes`` (never raising an
-    existing lower cap); a no-op where the platform cannot tell or set it."""
-    if megabytes is None:
-        yield
-        return
+def address_space_cap(cap_bytes: int | None):
+    """Cap RLIMIT_AS at ``cap_bytes`` for the block (never raising an existing
+    lower cap), then restore it; a no-op where the platform cannot set it."""
     try:
         import resource
 
         soft, hard = resource.getrlimit(resource.RLIMIT_AS)
     except (ImportError, ValueError, OSError, AttributeError):
+        soft = hard = None
+    if cap_bytes is None or soft is None:
         yield
         return
-    size = _current_size()
-    if size is None:
-        yield
-        return
-    # the address space runs well ahead of the resident memory (thread stacks,
-    # allocator arenas): the cap only stops a runaway allocation at once, the
-    # limit itself is checked on resident memory (check_memory)
-    cap = size + int(ADDRESS_SPACE_HEADROOM * megabytes * MEGABYTE)
-    if soft != resource.RLIM_INFINITY:
-        cap = min(cap, soft)
-    if hard != resource.RLIM_INFINITY:
-        cap = min(cap, hard)
-    resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+    for existing in (soft, hard):
+        if existing != resource.RLIM_INFINITY:
+            cap_bytes = min(cap_bytes, existing)
+    resource.setrlimit(resource.RLIMIT_AS, (cap_bytes, hard))
     try:
         yield
     finally:
         resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
+
+
+def _address_space_cap(megabytes: float | None):
+    """RLIMIT_AS at the current size plus a multiple of ``megabytes``: the
+    address space runs well ahead of the resident memory (thread stacks,
+    allocator arenas), so the cap only stops a runaway allocation at once; the
+    limit itself is checked on resident memory (check_memory)."""
+    size = _current_size()
+    if megabytes is None or size is None:
+        return address_space_cap(None)
+    return address_space_cap(size + int(ADDRESS_SPACE_HEADROOM * megabytes * MEGABYTE))
 
 
 def preload_engine() -> None:
