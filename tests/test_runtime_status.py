@@ -199,7 +199,7 @@ def test_time_limit_is_checked_at_the_time_loop_pauses(tmp_path, monkeypatch):
 
     class ExpiredWatchdog:
         @staticmethod
-        def check_time():
+        def check_limits():
             calls.append(1)
             raise TimeLimitError("the run's time limit of 1 s is exhausted")
 

@@ -436,7 +436,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
                 excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
                 exc = excitation.bundle()
             elif status == K.STATUS_PAUSE:
-                watchdog.check_time()
+                watchdog.check_limits()
                 budget.resize_chunk(wallclock.perf_counter() - chunk_started)
                 bar.update(clock[K.C_TIME], int(counters[K.K_STEP]))
             else:

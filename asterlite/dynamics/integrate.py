@@ -198,7 +198,7 @@ def integrate(
                 model = (model[0], model[1], excitation.bundle()) + model[3:]
             elif status == K.STATUS_PAUSE:
                 budget.check_steps(clock, counters, scheme)
-                watchdog.check_time()  # the run's time limit (export P time_limit)
+                watchdog.check_limits()  # the run's time and memory limits (export P lines)
                 budget.resize_chunk(wallclock.perf_counter() - chunk_started)
                 bar.update(clock[K.C_TIME], int(counters[K.K_STEP]))
             else:

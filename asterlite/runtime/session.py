@@ -346,7 +346,7 @@ class CommandProxy(DeckCallable):
             )
         session.started = True
         if not session.check_only:
-            watchdog.check_time()  # between commands: the run's time limit
+            watchdog.check_limits()  # between commands: the run's time and memory limits
         if args:
             raise UnsupportedError(
                 f"{self.name} takes keyword arguments only", site.location, self.name

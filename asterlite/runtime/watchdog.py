@@ -67,10 +67,16 @@ def _spent() -> float:
     return time.process_time() - _compiling.seconds
 
 
-def check_time() -> None:
-    """Raise TimeLimitError when the current run's deadline has passed (and
-    MemoryLimitError when its resident memory has outgrown the limit)."""
+def check_limits() -> None:
+    """Where a run can stop cleanly (between commands, at the time loop's
+    pauses): MemoryLimitError or TimeLimitError when a limit is passed."""
     check_memory()
+    check_time()
+
+
+def check_time() -> None:
+    """Raise TimeLimitError when the current run's deadline has passed (the
+    CPU timer's signal handler asks this alone: no memory work there)."""
     deadline = getattr(_state, "deadline", None)
     if deadline is None or _spent() < deadline:
         return
