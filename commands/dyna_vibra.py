@@ -1025,12 +1025,12 @@ def support_motions(ctx, kw, basis) -> list[dict]:
     node's component c) on the basis DOFs, with the support's DEPL / VITE /
     ACCE functions (REST_GENE_PHYS adds Σ ψ_k d_k(t) for absolute motion)."""
     supports = []
-    kw.get("MODE_STAT")  # read by support_shape: code_aster uses it only for MULT_APPUI
+    kw.mark_used("MODE_STAT")  # support_shape reads it: code_aster uses it for MULT_APPUI only
     for occ in kw.factor("EXCIT"):
         if occ.get("MULT_APPUI") != "OUI":
             # without MULT_APPUI, code_aster (mdrecf) reads neither VITE nor DEPL:
             # ACCE alone multiplies the load vector
-            occ.get("VITE"), occ.get("DEPL")
+            occ.mark_used("VITE", "DEPL")
             continue
         shape = support_shape(ctx, kw, occ)
         supports.append(

@@ -88,7 +88,7 @@ def first_time(session, path: Path) -> bool:
 def chosen_steps(ctx, kw, steps) -> np.ndarray:
     """Indices of the stored steps selected by the access keywords of ``kw``."""
     access = {}
-    kw.get("TOUT_ORDRE"), kw.get("TOUT_INST")  # every step: the default selection
+    kw.mark_used("TOUT_ORDRE", "TOUT_INST")  # every step: the default selection
     if kw.get("NUME_ORDRE") is not None:
         access["nume_ordre"], key = as_tuple(kw["NUME_ORDRE"]), "NUME_ORDRE"
     elif kw.get("LIST_ORDRE") is not None:

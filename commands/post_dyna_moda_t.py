@@ -64,7 +64,7 @@ def run(ctx, kw):
         ctx.error("the result has no localized nonlinearity to analyse", "RESU_GENE", kw)
     window = time_window(ctx, occ, result.times)
     option = occ.get("OPTION", "USURE")
-    occ.get("NB_CLASSE")  # read by code_aster's op0130 for both options; IMPACT's histogram
+    occ.mark_used("NB_CLASSE")  # op0130 reads it for both options; only IMPACT uses it
     table = Table()
     columns = IMPACT_COLUMNS if option == "IMPACT" else USURE_COLUMNS
     for name, type_code in columns.items():

@@ -78,7 +78,7 @@ def constant_from_field(ctx, kw) -> Function:
 
 def instants(ctx, kw, times, order):
     """The instant selection of RECU_FONCTION (INTERP_NUME, not INTERPOL)."""
-    kw.get("TOUT_INST"), kw.get("TOUT_ORDRE")  # every instant: the default selection
+    kw.mark_used("TOUT_INST", "TOUT_ORDRE")  # every instant: the default selection
     inst = None
     if kw.get("LIST_INST") is not None:
         inst = values_of(kw["LIST_INST"])

@@ -175,7 +175,7 @@ def restored_modes(ctx, kw, modes: GeneralizedModes):
 def chosen_modes(ctx, kw, modes: GeneralizedModes) -> list[int] | None:
     """0-based indices of the modes NUME_MODE / NUME_ORDRE name (None: all, as
     TOUT_ORDRE asks)."""
-    kw.get("TOUT_ORDRE")
+    kw.mark_used("TOUT_ORDRE")
     if kw.get("NUME_MODE") is not None:
         key, known = "NUME_MODE", [int(n) for n in modes.mode_numbers]
     elif kw.get("NUME_ORDRE") is not None:

@@ -69,6 +69,12 @@ def test_peek_and_plain_dict_access_do_not_count():
     assert _unread_paths(kw) == ["DEMO/A"]
 
 
+def test_mark_used_counts_without_reading():
+    kw = _validated(A=1.0, B=3.0)
+    kw.mark_used("A", "B")
+    assert _unread_paths(kw) == []
+
+
 def test_copy_shares_the_reads():
     kw = _validated(A=1.0)
     kw.copy()["A"]

@@ -83,6 +83,12 @@ class Keywords(dict):
         twin.read = self.read  # shared on purpose
         return twin
 
+    def mark_used(self, *names: str) -> None:
+        """Count ``names`` as used without reading them: keywords whose effect is
+        what the command does anyway (TOUT_ORDRE: every stored state), or that
+        code_aster itself reads and then ignores in this case. Say why at the call."""
+        self.read.update(names)
+
     def peek(self, name, default=None):
         """The value of ``name`` without counting it as used (for logs and summaries)."""
         return super().get(name, default)

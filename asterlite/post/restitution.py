@@ -147,7 +147,7 @@ def selection_from_keywords(ctx, kw, times, order, default_interpol: str = "NON"
     INST, LIST_INST, TOUT_ORDRE, TOUT_INST, INTERPOL, PRECISION, CRITERE)."""
     # TOUT_ORDRE / TOUT_INST ask for every archived state: what is selected when
     # no other selector is given (the catalogues' rules make them exclusive)
-    kw.get("TOUT_ORDRE"), kw.get("TOUT_INST")
+    kw.mark_used("TOUT_ORDRE", "TOUT_INST")
     interpol = kw.get("INTERPOL", default_interpol)
     precision = float(kw.get("PRECISION", 1e-6))
     criterion = kw.get("CRITERE", "RELATIF")
