@@ -1,0 +1,203 @@
+"""Round-off sensitivity: does a check's value survive a change in the last bits?
+
+Impact dynamics can be chaotic: two runs whose arithmetic differs by one
+rounding (another compiler, another BLAS, code_aster against asterlite) then
+follow trajectories that part after a few impacts, and a statistic such as an
+RMS normal force lands anywhere in a band. A ``VALE_CALC`` inside that band
+was one draw from it; comparing another machine's draw with it at 1e-3 or
+1e-6 is chance, not a measure of accuracy.
+
+``asterlite sensitivity DECK`` reruns the deck with each transient's step
+``PAS`` moved by a few units in the last place (1, -1, 2, -2... ulps: a
+relative change of about 1e-16, far below any modelling or discretisation
+error) and reports, per check, how far its value moves against the check's
+own tolerance:
+
+- ``stable``: every perturbed value within 1 % of the tolerance of the
+  unperturbed one: the check measures the model;
+- ``marginal``: the spread is a noticeable part of the tolerance;
+- ``sensitive``: the spread exceeds the tolerance: whether the check passes
+  depends on the last bits of the arithmetic, on any machine.
+
+Each run is an ordinary in-process run with the ``DYNA_VIBRA`` keyword
+replaced before validation (:class:`asterlite.runtime.session.KeywordOverride`),
+as ``asterlite converge`` does.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+from asterlite.runtime.converge import RAN, ConvergeError, memory_cap, run_in_scratch
+from asterlite.runtime.session import KeywordOverride
+
+DEFAULT_RUNS = 8
+# spread / tolerance below this: the check is insensitive to round-off
+STABLE_FRACTION = 0.01
+STABLE, MARGINAL, SENSITIVE = "stable", "marginal", "sensitive"
+
+
+def ulp_offsets(runs: int) -> list[int]:
+    """1, -1, 2, -2, ...: ``runs`` signed numbers of ulps."""
+    return [(k // 2 + 1) * (1 if k % 2 == 0 else -1) for k in range(runs)]
+
+
+def moved_by_ulps(value: float, ulps: int) -> float:
+    """``value`` moved ``ulps`` representable doubles up (or down)."""
+    target = math.inf if ulps > 0 else -math.inf
+    for _ in range(abs(ulps)):
+        value = math.nextafter(value, target)
+    return value
+
+
+def perturbed_overrides(transients: list[dict], ulps: int) -> list[KeywordOverride]:
+    """One override per transient of the deck: its step moved by ``ulps``."""
+    return [
+        KeywordOverride(
+            t["command"], {"INCREMENT/PAS": moved_by_ulps(t["step"], ulps)}, call=t["call"]
+        )
+        for t in transients
+    ]
+
+
+@dataclass
+class CheckSpread:
+    """One check over the perturbed runs."""
+
+    label: str
+    value: float  # unperturbed
+    tolerance: float
+    criterion: str  # RELATIF or ABSOLU: how the tolerance reads
+    values: list[float] = field(default_factory=list)  # one per perturbed run
+    passes: list[bool] = field(default_factory=list)
+    verdict_unperturbed: bool = False
+
+    @property
+    def spread(self) -> float:
+        """Largest departure from the unperturbed value, measured as the
+        tolerance is (relative to the value for RELATIF)."""
+        if not self.values:
+            return math.nan
+        departure = max(abs(v - self.value) for v in self.values)
+        if self.criterion == "RELATIF":
+            scale = abs(self.value)
+            return departure / scale if scale > 0 else (0.0 if departure == 0 else math.inf)
+        return departure
+
+    @property
+    def classification(self) -> str:
+        spread = self.spread
+        if not math.isfinite(spread) or self.tolerance <= 0:
+            return SENSITIVE if spread and spread > 0 else STABLE
+        if spread <= STABLE_FRACTION * self.tolerance:
+            return STABLE
+        return SENSITIVE if spread > self.tolerance else MARGINAL
+
+
+@dataclass
+class Sensitivity:
+    deck: str
+    offsets: list[int]
+    checks: list[CheckSpread]
+    failed_runs: list[str] = field(default_factory=list)
+
+    def sensitive(self) -> list[CheckSpread]:
+        return [c for c in self.checks if c.classification == SENSITIVE]
+
+
+def _numeric_checks(report) -> list:
+    checks = []
+    for test in report.tests:
+        if isinstance(test.value, bool):
+            continue
+        try:
+            value = float(test.value)
+        except (TypeError, ValueError):
+            continue  # text and complex checks have no spread to measure
+        if math.isfinite(value) and test.expected is not None:
+            checks.append((test, value))
+    return checks
+
+
+def run_sensitivity(
+    deck: Path,
+    runs: int = DEFAULT_RUNS,
+    progress: Callable[[int, object], None] | None = None,
+) -> Sensitivity:
+    """Run the deck once as written, then ``runs`` times with perturbed steps."""
+    if runs < 1:
+        raise ConvergeError(f"--runs {runs}: at least one perturbed run is needed")
+    base = run_in_scratch(deck)
+    if base.status not in RAN:
+        raise ConvergeError(f"the deck does not run as written: {base.message}")
+    transients = [t for t in base.transients if t["steps"] > 0]
+    if not transients:
+        raise ConvergeError("the deck makes no DYNA_VIBRA TRAN/GENE result (tran_gene)")
+    spreads = [
+        CheckSpread(t.label, v, t.tolerance, t.criterion, verdict_unperturbed=t.ok)
+        for t, v in _numeric_checks(base)
+    ]
+    offsets = ulp_offsets(runs)
+    failed = []
+    for ulps in offsets:
+        report = run_in_scratch(deck, perturbed_overrides(transients, ulps))
+        if progress is not None:
+            progress(ulps, report)
+        if report.status not in RAN:
+            failed.append(f"{ulps:+d} ulp: {report.status} {report.message}")
+            continue
+        found = _numeric_checks(report)
+        if len(found) != len(spreads):
+            failed.append(f"{ulps:+d} ulp: {len(found)} checks instead of {len(spreads)}")
+            continue
+        for spread, (test, value) in zip(spreads, found, strict=True):
+            spread.values.append(value)
+            spread.passes.append(bool(test.ok))
+    return Sensitivity(str(deck), offsets, spreads, failed)
+
+
+def format_table(study: Sensitivity) -> str:
+    lines = [
+        f"round-off sensitivity of {study.deck}: step PAS moved by "
+        + ", ".join(f"{u:+d}" for u in study.offsets)
+        + " ulp",
+        f"{'check':<60} {'value':>14} {'spread':>9} {'tolerance':>9} {'pass':>6}  verdict",
+    ]
+    for check in study.checks:
+        passed = sum(check.passes) + int(check.verdict_unperturbed)
+        lines.append(
+            f"{check.label[:60]:<60} {check.value:>14.8g} {check.spread:>9.2e} "
+            f"{check.tolerance:>9.2e} {passed:>3}/{len(check.passes) + 1:<2}  "
+            f"{check.classification}"
+        )
+    for failure in study.failed_runs:
+        lines.append(f"run failed: {failure}")
+    sensitive = study.sensitive()
+    if sensitive:
+        lines.append(
+            f"{len(sensitive)} check(s) move by more than their tolerance under a last-bit "
+            "change: their verdict is not reproducible on any machine"
+        )
+    return "\n".join(lines)
+
+
+def write_json(study: Sensitivity, directory: Path) -> Path:
+    directory.mkdir(parents=True, exist_ok=True)
+    path = directory / "sensitivity.json"
+    rows = []
+    for check in study.checks:
+        row = asdict(check)
+        row["spread"] = check.spread
+        row["classification"] = check.classification
+        rows.append(row)
+    payload = {"deck": study.deck, "offsets_ulp": study.offsets, "checks": rows}
+    payload["failed_runs"] = study.failed_runs
+    path.write_text(json.dumps(payload, indent=1))
+    return path
+
+
+__all__ = ["memory_cap", "run_sensitivity", "format_table", "write_json", "Sensitivity"]
