@@ -211,6 +211,35 @@ def _run_converge(converge, args, deck, schemes, extra, progress):
     )
 
 
+def _sensitivity(args) -> int:
+    from asterlite.runtime import converge, sensitivity
+
+    deck = Path(args.deck)
+    if not deck.is_file():
+        print(f"error: {deck}: no such deck", file=sys.stderr)
+        return 2
+
+    def progress(ulps, report):
+        if not args.quiet:
+            print(
+                f"  PAS {ulps:+d} ulp: {report.status} "
+                f"{report.checks_ok}/{report.checks_total} checks OK",
+                flush=True,
+            )
+
+    try:
+        with converge.memory_cap(args.memory_fraction):
+            study = sensitivity.run_sensitivity(deck, runs=args.runs, progress=progress)
+    except converge.ConvergeError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    default_output = Path("asterlite-out") / f"{deck.stem}-sensitivity"
+    output = Path(args.output) if args.output else default_output
+    print(sensitivity.format_table(study))
+    print(f"written: {sensitivity.write_json(study, output)}")
+    return 0
+
+
 def _port(args) -> int:
     from asterlite.errors import AsterliteError
     from asterlite.legacy.port import describe_changes, port_file
@@ -372,6 +401,19 @@ def build_parser() -> argparse.ArgumentParser:
     conv.add_argument("-o", "--output", help="folder (default asterlite-out/<deck>-converge)")
     conv.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
     conv.set_defaults(handler=_converge)
+
+    sens = commands.add_parser(
+        "sensitivity",
+        help="rerun with the time step moved by a few ulps: which checks survive round-off",
+    )
+    sens.add_argument("deck")
+    sens.add_argument("--runs", type=int, default=8, help="perturbed runs (default 8)")
+    sens.add_argument(
+        "--memory-fraction", type=float, default=0.7, help="cap the memory (0: no cap)"
+    )
+    sens.add_argument("-o", "--output", help="folder (default asterlite-out/<deck>-sensitivity)")
+    sens.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
+    sens.set_defaults(handler=_sensitivity)
 
     plot = commands.add_parser("plot", help="plot a saved transient result (HDF5)")
     plot.add_argument("result", help="HDF5 result file")
