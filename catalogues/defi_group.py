@@ -36,13 +36,19 @@ def _center_and_axis(**extra) -> dict:
 
 
 def _sdprod(kw) -> str:
-    return "grille_sdaster" if kw.get("GRILLE") is not None else "maillage_sdaster"
+    if kw.get("GRILLE") is not None:
+        return "grille_sdaster"
+    # a skeleton (DEFI_SQUELETTE) stays one, as in code_aster's defi_group_prod
+    types = getattr(kw.get("MAILLAGE"), "aster_types", ())
+    return "squelette" if "squelette" in types else "maillage_sdaster"
 
 
 DEFI_GROUP = OPER(
     nom="DEFI_GROUP",
     sd_prod=_sdprod,
-    reentrant="o",
+    # code_aster 17 changes MAILLAGE in place whether reuse= is given or not
+    # (its DEFI_GROUP takes the mesh as result); decks call it bare too
+    reentrant="f",
     fr="Define new node and element groups in a mesh",
     regles=(
         AU_MOINS_UN("CREA_GROUP_MA", "CREA_GROUP_NO", "DETR_GROUP_NO", "DETR_GROUP_MA"),

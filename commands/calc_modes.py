@@ -145,8 +145,16 @@ def _generalized(ctx, kw, stiffness, mass):
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))
     nmax = calc_freq.get("NMAX_FREQ") or _DEFAULT_NMAX.get(option, 10)
+    constraints = getattr(stiffness.numbering, "constraints", None)
     try:
-        omega2, vecs = generalized_modes(stiffness.matrix, mass.matrix, option, freq, nmax)
+        if constraints is not None:  # a substructured model: its interface relations
+            from asterlite.substructure.coupling import coupled_modes
+
+            omega2, vecs = coupled_modes(
+                stiffness.matrix, mass.matrix, constraints, option, freq, nmax
+            )
+        else:
+            omega2, vecs = generalized_modes(stiffness.matrix, mass.matrix, option, freq, nmax)
     except EigenError as exc:
         ctx.error(str(exc), "OPTION", kw)
     check_found(ctx, kw, omega2.size)

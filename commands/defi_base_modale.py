@@ -150,8 +150,10 @@ def _ortho(ctx, shapes, params, matrix_concept, numbering, drop_zero):
 
 
 def run(ctx, kw):
-    if kw.factor("CLASSIQUE") or kw.factor("DIAG_MASS"):
-        ctx.unsupported("DEFI_BASE_MODALE CLASSIQUE / DIAG_MASS (sub-structuring)", None, kw)
+    if kw.factor("DIAG_MASS"):
+        ctx.unsupported("DEFI_BASE_MODALE DIAG_MASS", "DIAG_MASS", kw)
+    if kw.factor("CLASSIQUE"):
+        return _classical(ctx, kw, kw.factor("CLASSIQUE")[0])
     if kw.factor("ORTHO_BASE"):
         return _ortho_base(ctx, kw)
     pieces = _pieces(ctx, kw)
@@ -187,3 +189,68 @@ def _ortho_base(ctx, kw):
     stiffness = None if static else basis.stiffness
     kind = "static" if static else basis.kind
     return _result(shapes, numbering, params, mass, stiffness, params["NOEUD_CMP"], kind)
+
+
+def _classical(ctx, occ_kw, occ):
+    """CLASSIQUE: the modes (NMAX_MODE of each MODE_MECA) then the static
+    modes of the interfaces (asterlite.substructure.interfaces)."""
+    bases = as_tuple(occ["MODE_MECA"])
+    caps = as_tuple(occ.get("NMAX_MODE"))
+    return classical_basis(ctx, occ, occ["INTERF_DYNA"], bases, caps)
+
+
+def classical_basis(ctx, occ, interfaces, bases, caps):
+    """The classical basis of ``interfaces`` from the modes ``bases`` (the
+    first ``caps[k]`` of each); also CREA_ELEM_SSD's."""
+    from asterlite.concepts.substructure import ReductionBasis
+    from asterlite.substructure.interfaces import InterfaceError, static_modes
+
+    numbering = interfaces.numbering
+    blocks, params = [], []
+    for k, basis in enumerate(bases):
+        cap = caps[k] if k < len(caps) else (caps[-1] if caps else None)
+        count = _capped(ctx, occ, basis.n_modes, cap)
+        if basis.numbering.dofs != numbering.dofs:
+            ctx.error("MODE_MECA and INTERF_DYNA use different numberings", "MODE_MECA", occ)
+        blocks.append(np.asarray(basis.shapes, dtype=float)[:, :count])
+        params.append(_source_parameters(basis, count, False))
+    stiffness, mass = bases[0].stiffness, bases[0].mass
+    if stiffness is None:
+        ctx.error("the stiffness matrix of MODE_MECA is not known", "MODE_MECA", occ)
+    labels, defo = [], []
+    for interface in interfaces.interfaces:
+        try:
+            shapes, owners = static_modes(
+                interface.kind,
+                interface.dofs,
+                numbering,
+                stiffness.matrix,
+                None if mass is None else mass.matrix,
+                interfaces.frequency,
+            )
+        except InterfaceError as exc:
+            ctx.error(f"interface {interface.name}: {exc}", "INTERF_DYNA", occ)
+        blocks.append(shapes)
+        free = interface.dofs.size - owners.size
+        if free:
+            ctx.log(f"interface {interface.name}: {free} DOF(s) not blocked, no static mode")
+        labels.extend(numbering.label(int(d)) for d in owners)
+        kind = "FORC_IMPO" if interface.kind == "MNEAL" else "DEPL_IMPO"
+        defo.extend([kind] * shapes.shape[1])
+    merged = {k: np.concatenate([p[k] for p in params]) for k in params[0]}
+    n_static = len(labels)
+    static = {
+        "FREQ": np.zeros(n_static),
+        "NUME_MODE": np.arange(1, n_static + 1) + len(merged["FREQ"]),
+        "MASS_GENE": np.zeros(n_static),
+        "RIGI_GENE": np.zeros(n_static),
+        "NOEUD_CMP": np.array(labels, dtype=object),
+        "TYPE_DEFO": np.array(defo, dtype=object),
+        "TYPE_MODE": np.array(["MODE_STA"] * n_static, dtype=object),
+    }
+    merged = {k: np.concatenate([merged[k], static[k]]) for k in merged}
+    shapes = np.hstack(blocks)
+    ctx.log(f"classical basis: {shapes.shape[1]} vectors ({n_static} static)")
+    plain = _result(shapes, numbering, merged, mass, stiffness, merged["NOEUD_CMP"], "dynamic")
+    fields = {f: getattr(plain, f) for f in plain.__dataclass_fields__}
+    return ReductionBasis(**fields, interfaces=interfaces)

@@ -28,7 +28,10 @@ from asterlite.dynamics.model import (
     suggested_step,
     tabulate_excitation,
 )
+from asterlite.dynamics.shock_fields import ArchivedFields, column_difference
+from asterlite.dynamics.shock_fields import column as archived_column
 from asterlite.errors import NumericalError
+from asterlite.legacy.v15 import computes
 from asterlite.modal.seismic import SeismicError, combined_static_shape
 
 # VERI_PAS (code_aster's step check): fraction of the shortest period, shock
@@ -71,6 +74,14 @@ def run(ctx, kw):
     implicit = implicit_shocks(ctx, kw)
 
     mass_matrix = kw["MATR_MASS"]
+    if getattr(mass_matrix.numbering, "constraints", None) is not None:
+        # a coupled generalized model: integrate on its interface relations' null space
+        from asterlite.substructure.transient import reduce_keywords
+
+        refused = reduce_keywords(kw)
+        if refused is not None:
+            ctx.error("not on the numbering of MATR_MASS", refused, kw)
+        mass_matrix = kw["MATR_MASS"]
     basis = mass_matrix.basis
     system = linear_system(ctx, kw)
     specs = []
@@ -137,6 +148,7 @@ def run(ctx, kw):
         coef_divi_pas=schema_kw.get("COEF_DIVI_PAS", 1.3333334),
         pas_limi_rela=schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
         nb_poin_periode=int(schema_kw.get("NB_POIN_PERIODE", 50)),
+        force_at_step_start=computes(ctx.session, "NEWMARK_FORCE_AT_STEP_START"),
     )
     try:
         if film is not None:  # CHOC/LAME_FLUIDE of code_aster 10-14 decks
@@ -314,7 +326,7 @@ def restitution_rates(ctx, kw, occ, specs, system) -> dict:
     from asterlite.dynamics.basis_check import node_checks
 
     basis = kw["MATR_MASS"].basis
-    if basis.stiffness is None:
+    if getattr(basis, "stiffness", None) is None:  # also a mode_gene
         keyword = "NIVEAU" if occ.get("NIVEAU") else "TOUT"
         ctx.unsupported(
             "IMPRESSION TAUX_CHOC (restitution rate) on a basis without its assembled stiffness",
@@ -486,8 +498,17 @@ def nonlinearity_spec(ctx, kw, occ, basis, n_modes, number) -> ShockSpec:
     from asterlite.dynamics.laws.connections import ConnectionError_, law_spec
     from asterlite.dynamics.laws.tabulated import LawError
 
-    if occ.get("SOUS_STRUC") or occ.get("SOUS_STRUC_1") or occ.get("SOUS_STRUC_2"):
-        ctx.unsupported("sub-structured nonlinearities (SOUS_STRUC)", "RELATION", occ)
+    if occ.get("SOUS_STRUC_1") or occ.get("SOUS_STRUC_2"):
+        ctx.unsupported("two-node nonlinearities on substructures", "SOUS_STRUC_1", occ)
+    if not occ.get("SOUS_STRUC") and not hasattr(basis.numbering, "mesh"):
+        ctx.error("the basis is a mode_gene: name the node's substructure", "SOUS_STRUC", occ)
+    if occ.get("SOUS_STRUC"):  # the node's modes seen on its substructure
+        from asterlite.substructure.shocks import SubstructureError, substructure_view
+
+        try:
+            basis = substructure_view(basis, occ["SOUS_STRUC"], "SOUS_STRUC")
+        except SubstructureError as exc:
+            ctx.error(str(exc), exc.keyword, occ)
     options = {k: kw.get(k) for k in ("INFO", "VITE_ROTA", "VITESSE_VARIABLE")}
     try:
         return law_spec(occ, basis, n_modes, number, options)
@@ -529,12 +550,20 @@ def shock_specs(ctx, occ, basis, n_modes) -> list[ShockSpec]:
     relation = occ.get("RELATION")
     if relation != "DIS_CHOC":
         ctx.unsupported(f"COMPORTEMENT RELATION={relation!r} (only DIS_CHOC)", "RELATION", occ)
-    if occ.get("SOUS_STRUC_1") or occ.get("SOUS_STRUC_2"):
-        ctx.unsupported("sub-structured shocks (SOUS_STRUC_1/2)", "SOUS_STRUC_1", occ)
-    mesh = basis.numbering.mesh
+    basis_1, basis_2, norm_obst, orig = substructured_views(ctx, occ, basis)
+    mesh = basis_1.numbering.mesh
     obstacle = occ["OBSTACLE"]
     kind = obstacle.obstacle_type
-    pairs = node_pairs(ctx, occ, mesh)
+    if basis_2 is basis_1:
+        pairs = node_pairs(ctx, occ, mesh)
+    else:  # nodes of two substructures: each looked up in its own mesh
+        pairs = [
+            (
+                single_node(ctx, occ, mesh, "NOEUD_1", "GROUP_NO_1"),
+                single_node(ctx, occ, basis_2.numbering.mesh, "NOEUD_2", "GROUP_NO_2"),
+            )
+        ]
+    mesh_2 = basis_2.numbering.mesh
     two_nodes = kind.startswith("BI_")
     specs = []
     for index, (n1, n2) in enumerate(pairs):
@@ -553,17 +582,16 @@ def shock_specs(ctx, occ, basis, n_modes) -> list[ShockSpec]:
         name = occ.get("INTITULE") or f"DIS_CHOC{index + 1:d}"
         if occ.get("INTITULE") and len(pairs) > 1:
             name = f"{occ['INTITULE']}_{index + 1}"
-        orig = occ.get("ORIG_OBST")
         spec = ShockSpec(
             name=name,
             obstacle_type=kind,
             node_1=mesh.node_names[n1],
-            node_2=mesh.node_names[n2] if n2 is not None else None,
+            node_2=mesh_2.node_names[n2] if n2 is not None else None,
             coord_1=np.array(mesh.coords[n1], dtype=float),
-            coord_2=np.array(mesh.coords[n2], dtype=float) if n2 is not None else None,
-            phi_1=node_shape(basis, n1, n_modes),
-            phi_2=node_shape(basis, n2, n_modes) if n2 is not None else None,
-            norm_obst=np.asarray(occ["NORM_OBST"], dtype=float),
+            coord_2=np.array(mesh_2.coords[n2], dtype=float) if n2 is not None else None,
+            phi_1=node_shape(basis_1, n1, n_modes),
+            phi_2=node_shape(basis_2, n2, n_modes) if n2 is not None else None,
+            norm_obst=norm_obst,
             angl_vril=occ.get("ANGL_VRIL"),
             orig_obst=np.asarray(orig, dtype=float) if orig is not None else None,
             gap=float(occ.get("JEU", 1.0)),
@@ -582,6 +610,35 @@ def shock_specs(ctx, occ, basis, n_modes) -> list[ShockSpec]:
             ctx.error("BI_CERC_INT needs DIST_2 (outer radius) >= DIST_1", "DIST_2", occ)
         specs.append(spec)
     return specs
+
+
+def substructured_views(ctx, occ, basis):
+    """(basis of node 1, basis of node 2, NORM_OBST, ORIG_OBST): with
+    SOUS_STRUC_1/2 the modes seen on those substructures in the global
+    frame, and the obstacle's frame REPERE turned into the global one
+    (asterlite.substructure.shocks); otherwise ``basis`` twice."""
+    from asterlite.substructure.shocks import SubstructureError, in_global_frame
+    from asterlite.substructure.shocks import substructure_view as view
+
+    norm, orig = np.asarray(occ["NORM_OBST"], dtype=float), occ.get("ORIG_OBST")
+    orig = np.asarray(orig, dtype=float) if orig is not None else None
+    names = (occ.get("SOUS_STRUC_1"), occ.get("SOUS_STRUC_2"))
+    repere = occ.get("REPERE", "GLOBAL")
+    if names[0] is None and not hasattr(basis.numbering, "mesh"):  # modes of a mode_gene
+        ctx.error("the basis is a mode_gene: name the node's substructure", "SOUS_STRUC_1", occ)
+    if names == (None, None) and repere == "GLOBAL":
+        return basis, basis, norm, orig
+    if occ.get("GROUP_MA") or occ.get("MAILLE"):
+        ctx.unsupported("GROUP_MA/MAILLE shocks on substructures", "GROUP_MA", occ)
+    try:
+        basis_1 = view(basis, names[0], "SOUS_STRUC_1") if names[0] else basis
+        basis_2 = basis_1
+        if names[1] and names[1] != names[0]:
+            basis_2 = view(basis, names[1], "SOUS_STRUC_2")
+        orig, norm = in_global_frame(basis, repere, orig, norm)
+    except SubstructureError as exc:
+        ctx.error(str(exc), exc.keyword, occ)
+    return basis_1, basis_2, norm, orig
 
 
 def node_pairs(ctx, occ, mesh) -> list[tuple[int, int | None]]:
@@ -1080,34 +1137,37 @@ def shock_histories(shocks, vint) -> list[ShockHistory]:
                 )
             )
             continue
-        fields = {
-            "FN": v[:, C.V_FN],
-            "FT1": v[:, C.V_FT1],
-            "FT2": v[:, C.V_FT2],
-            "DXLOC": v[:, C.V_LOC1],
-            "DYLOC": v[:, C.V_LOC1 + 1],
-            "DZLOC": v[:, C.V_LOC1 + 2],
-            "DXLOC_2": v[:, C.V_LOC2],
-            "DYLOC_2": v[:, C.V_LOC2 + 1],
-            "DZLOC_2": v[:, C.V_LOC2 + 2],
-            "VN": v[:, C.V_VN],
-            "VT1": v[:, C.V_VT1],
-            "VT2": v[:, C.V_VT2],
-            "ADHERENCE": v[:, C.V_STICK],
+        # each named column is copied from the archive when first read
+        named = {
+            "FN": C.V_FN,
+            "FT1": C.V_FT1,
+            "FT2": C.V_FT2,
+            "DXLOC": C.V_LOC1,
+            "DYLOC": C.V_LOC1 + 1,
+            "DZLOC": C.V_LOC1 + 2,
+            "DXLOC_2": C.V_LOC2,
+            "DYLOC_2": C.V_LOC2 + 1,
+            "DZLOC_2": C.V_LOC2 + 2,
+            "VN": C.V_VN,
+            "VT1": C.V_VT1,
+            "VT2": C.V_VT2,
+            "ADHERENCE": C.V_STICK,
         }
+        recipes = {name: archived_column(v, j) for name, j in named.items()}
         two = spec.node_2 is not None and spec.obstacle_type.startswith("BI_")
         for axis, i in (("X", 0), ("Y", 1), ("Z", 2)):
-            rel = v[:, C.V_LOC1 + i] - (v[:, C.V_LOC2 + i] if two else 0.0)
-            fields[f"D{axis}REL"] = rel
+            recipes[f"D{axis}REL"] = column_difference(
+                v, C.V_LOC1 + i, C.V_LOC2 + i if two else None
+            )
         for i in range(C.N_VINT):
-            fields[f"VINT{i + 1}"] = v[:, i]
+            recipes[f"VINT{i + 1}"] = archived_column(v, i)
         histories.append(
             ShockHistory(
                 name=spec.name,
                 relation="DIS_CHOC",
                 node_1=spec.node_1,
                 node_2=spec.node_2,
-                fields={k: np.ascontiguousarray(a) for k, a in fields.items()},
+                fields=ArchivedFields(recipes),
                 parameters=shocks.parameters(s),
             )
         )
@@ -1533,7 +1593,7 @@ def check_basis_for_shocks(ctx, kw, specs, basis, system) -> None:
 
     occ = kw.factor("VERI_CHOC")[0]
     stop = occ["STOP_CRITERE"] == "OUI"
-    if basis.stiffness is None:
+    if getattr(basis, "stiffness", None) is None:  # also a mode_gene (no physical matrices)
         ctx.unsupported("VERI_CHOC on a basis without its assembled stiffness", "VERI_CHOC", kw)
     checks = node_checks(specs, basis, np.diag(system.stiffness))
     for check in checks:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.modes import ComplexModeResult, ModeResult
+from asterlite.concepts.modes import ComplexModeResult, GeneralizedModes, ModeResult
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.calc import filter_modes
 
@@ -55,6 +55,8 @@ def run(ctx, kw):
         ctx.error("the bases use different DOF numberings", "FILTRE_MODE", kw)
     if len(parts) == 1:
         result = parts[0]
+    elif all(isinstance(p, GeneralizedModes) for p in parts):
+        result = GeneralizedModes.concatenate(parts)
     else:
         keys = set.intersection(*(set(p.parameters) for p in parts))
         extra = {}

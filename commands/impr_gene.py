@@ -41,8 +41,8 @@ def occurrence_lines(ctx, occ) -> list[str]:
     result = occ["RESU_GENE"]
     if occ.get("FREQ") is not None or occ.get("LIST_FREQ") is not None:
         ctx.unsupported("access by FREQ (harmonic results)", "FREQ", occ)
-    if occ.get("NOM_PARA") is not None:
-        ctx.unsupported("NOM_PARA in IMPR_GENE", "NOM_PARA", occ)
+    if occ.get("NOM_PARA") is not None and not isinstance(result, GeneralizedModes):
+        ctx.unsupported("NOM_PARA in IMPR_GENE (mode_gene only)", "NOM_PARA", occ)
     lines = [RULE, f" RESULTAT GENERALISE {result.name or ''} ({result.aster_type})"]
     if occ.get("SOUS_TITRE"):
         lines.append(f" {occ['SOUS_TITRE']}")
@@ -58,7 +58,10 @@ def occurrence_lines(ctx, occ) -> list[str]:
 def chosen_components(ctx, occ, count: int) -> np.ndarray:
     """0-based generalized components of NUME_CMP_GENE (all by default)."""
     numbers = as_tuple(occ.get("NUME_CMP_GENE"))
-    if not numbers or occ.get("TOUT_CMP_GENE") == "OUI":
+    every = occ.get("TOUT_CMP_GENE")
+    if every == "NON":  # code_aster prints no component then
+        return np.zeros(0, dtype=int)
+    if not numbers or every == "OUI":
         return np.arange(count)
     bad = [n for n in numbers if not 1 <= int(n) <= count]
     if bad:
@@ -124,10 +127,31 @@ def info_lines(result: TranGene) -> list[str]:
 
 def vector_lines(ctx, occ, vector: GeneralizedVector) -> list[str]:
     values = np.asarray(vector.values, dtype=float).ravel()
+    if getattr(vector.numbering, "model", None) is not None:
+        return substructured_vector_lines(occ, vector, values)
     components = chosen_components(ctx, occ, values.size)
     frequencies = None
     if occ.get("INFO_CMP_GENE") == "OUI":
         frequencies = vector.basis.frequencies
+    return [f" VECTEUR GENERALISE ({vector.kind})"] + component_lines(
+        values, components, frequencies
+    )
+
+
+def substructured_vector_lines(occ, vector, values) -> list[str]:
+    """A vector of a generalized model: its substructures' unknowns (code_aster
+    skips the Lagrange multipliers and the NUME_CMP_GENE beyond them);
+    INFO_CMP_GENE gives each one's mode frequency in its substructure's basis."""
+    numbers = as_tuple(occ.get("NUME_CMP_GENE"))
+    components = np.arange(values.size)
+    if occ.get("TOUT_CMP_GENE") == "NON":
+        components = np.zeros(0, dtype=int)
+    elif numbers:
+        components = np.array([int(n) - 1 for n in numbers if 1 <= int(n) <= values.size])
+    frequencies = None
+    if occ.get("INFO_CMP_GENE") == "OUI":
+        subs = vector.numbering.model.substructures
+        frequencies = np.concatenate([s.macro.basis.frequencies for s in subs])
     return [f" VECTEUR GENERALISE ({vector.kind})"] + component_lines(
         values, components, frequencies
     )
@@ -143,13 +167,54 @@ def mode_gene_lines(ctx, occ, modes: GeneralizedModes) -> list[str]:
         picked = [numbers.index(int(n)) for n in wanted]
     else:
         picked = list(range(modes.n_modes))
-    components = chosen_components(ctx, occ, modes.vectors.shape[0])
+    if getattr(modes.numbering, "model", None) is not None:  # substructured: no Lagrange
+        count = modes.vectors.shape[0]
+        numbers_cmp = as_tuple(occ.get("NUME_CMP_GENE"))
+        components = np.array([int(n) - 1 for n in numbers_cmp if 1 <= int(n) <= count])
+        if not numbers_cmp or occ.get("TOUT_CMP_GENE") == "OUI":
+            components = np.arange(count)
+    else:
+        components = chosen_components(ctx, occ, modes.vectors.shape[0])
+    if occ.get("TOUT_CMP_GENE") == "NON":
+        components = np.zeros(0, dtype=int)
+    names = parameter_names(ctx, occ, modes)
+    with_vector = occ.get("TOUT_CHAM") != "NON"
+    frequencies = component_frequencies(modes) if occ.get("INFO_CMP_GENE") == "OUI" else None
+    if not with_vector:
+        occ.mark_used("NOM_CHAM")
     lines = []
+    if occ.get("INFO_GENE") == "OUI":
+        lines.append(f" MODES GENERALISES: {modes.n_modes} modes, {modes.vectors.shape[0]} DDL")
     for k in picked:
         lines.append(" " + "-" * 78)
         lines.append(
             f" NUME_MODE: {numbers[k]:8d} FREQ: "
             f"{fortran_real(float(modes.frequencies[k]), 'E12.5').strip()}"
         )
-        lines.extend(component_lines(modes.vectors[:, k], components))
+        for name in names:  # NOM_PARA / TOUT_PARA: one line per parameter
+            value = np.asarray(modes.parameters[name])[k]
+            text = fortran_real(float(value), REAL) if np.isreal(value) else str(value)
+            lines.append(f" {name:<16s} {text}")
+        if with_vector:
+            lines.extend(component_lines(modes.vectors[:, k], components, frequencies))
     return lines
+
+
+def component_frequencies(modes) -> np.ndarray:
+    """The frequency of the basis vector behind each generalized unknown."""
+    numbering = modes.numbering
+    model = getattr(numbering, "model", None)
+    if model is not None:
+        return np.concatenate([s.macro.basis.frequencies for s in model.substructures])
+    return np.asarray(numbering.basis.frequencies)
+
+
+def parameter_names(ctx, occ, modes) -> list[str]:
+    """The parameters NOM_PARA names (all with TOUT_PARA='OUI', none by default)."""
+    if occ.get("TOUT_PARA") == "OUI":
+        return [k for k, v in modes.parameters.items() if np.ndim(v) == 1]
+    names = list(as_tuple(occ.get("NOM_PARA")))
+    missing = [n for n in names if n not in modes.parameters]
+    if missing:
+        ctx.error(f"the modes have no parameter {missing[0]}", "NOM_PARA", occ)
+    return names

@@ -69,16 +69,23 @@ def run(ctx, kw):
         basis = basis.select(np.arange(int(kw["NB_VECT"])))
     numbering_gene = generalized_numbering(ctx, kw, basis)
     for occ in kw.factor("MATR_ASSE_GENE"):
-        if occ.get("MATR_ASSE") is None:
-            ctx.unsupported("PROJ_BASE of a generalized matrix", "MATR_ASSE_GENE", occ)
-        result = proj_matr_base.project(ctx, occ, basis, numbering_gene, occ["MATR_ASSE"])
+        if occ.get("MATR_ASSE") is None:  # a generalized matrix on a mode_gene
+            result = proj_matr_base.project_generalized(
+                ctx, occ, basis, numbering_gene, occ["MATR_ASSE_GENE"]
+            )
+        else:
+            result = proj_matr_base.project(ctx, occ, basis, numbering_gene, occ["MATR_ASSE"])
         ctx.bind(occ["MATRICE"], result)
     for occ in kw.factor("VECT_ASSE_GENE"):
-        if occ.get("VECT_ASSE") is None:
-            ctx.unsupported("PROJ_BASE of a generalized vector", "VECT_ASSE_GENE", occ)
-        result = proj_vect_base.project(
-            ctx, occ, basis, numbering_gene, occ["VECT_ASSE"], occ.get("TYPE_VECT", "FORC")
-        )
+        type_vect = occ.get("TYPE_VECT", "FORC")
+        if occ.get("VECT_ASSE") is None:  # a generalized vector on a mode_gene
+            result = proj_vect_base.project_generalized(
+                ctx, occ, basis, numbering_gene, occ["VECT_ASSE_GENE"], type_vect
+            )
+        else:
+            result = proj_vect_base.project(
+                ctx, occ, basis, numbering_gene, occ["VECT_ASSE"], type_vect
+            )
         ctx.bind(occ["VECTEUR"], result)
     for occ in kw.factor("RESU_GENE"):
         ctx.bind(occ["RESULTAT"], _resu_gene(ctx, occ, basis))

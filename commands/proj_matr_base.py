@@ -23,9 +23,23 @@ def project(ctx, kw, basis, numbering_gene, matrix):
     )
 
 
+def project_generalized(ctx, kw, basis, numbering_gene, matrix):
+    """Qᵀ A Q of a generalized matrix on the generalized modes Q (a mode_gene
+    computed from matrices on the same generalized numbering)."""
+    vectors = getattr(basis, "vectors", None)
+    if vectors is None or basis.numbering is not matrix.numbering:
+        ctx.error(
+            "BASE must be a mode_gene computed on the numbering of MATR_ASSE_GENE",
+            "MATR_ASSE_GENE",
+            kw,
+        )
+    values = project_matrix(vectors, matrix.matrix, numbering_gene.storage)
+    return GeneralizedMatrix(numbering=numbering_gene, matrix=values, kind=matrix.kind)
+
+
 def run(ctx, kw):
     numbering_gene = kw["NUME_DDL_GENE"]
     basis = kw.get("BASE") or numbering_gene.basis
     if kw.get("MATR_ASSE_GENE") is not None:
-        ctx.unsupported("PROJ_MATR_BASE of a generalized matrix", "MATR_ASSE_GENE", kw)
+        return project_generalized(ctx, kw, basis, numbering_gene, kw["MATR_ASSE_GENE"])
     return project(ctx, kw, basis, numbering_gene, kw["MATR_ASSE"])

@@ -41,9 +41,32 @@ def project(ctx, kw, basis, numbering_gene, field, type_vect):
     return GeneralizedVector(numbering=numbering_gene, values=values, kind=type_vect)
 
 
+def project_generalized(ctx, kw, basis, numbering_gene, vector, type_vect):
+    """A generalized vector on the generalized modes Q of the same numbering:
+    Qᵀ f (FORC) or the least-squares coordinates (DEPL, VITE, ACCE)."""
+    vectors = getattr(basis, "vectors", None)
+    if vectors is None or basis.numbering is not vector.numbering:
+        ctx.error(
+            "BASE must be a mode_gene computed on the numbering of VECT_ASSE_GENE",
+            "VECT_ASSE_GENE",
+            kw,
+        )
+    values = np.asarray(vector.values, dtype=float)
+    if type_vect == "FORC":
+        values = project_force(vectors, values)
+    else:
+        try:
+            values = fit_coordinates(vectors, values)
+        except ProjectionError as exc:
+            ctx.error(str(exc), "BASE", kw)
+    return GeneralizedVector(numbering=numbering_gene, values=values, kind=type_vect)
+
+
 def run(ctx, kw):
     numbering_gene = kw["NUME_DDL_GENE"]
     basis = kw.get("BASE") or numbering_gene.basis
     if kw.get("VECT_ASSE_GENE") is not None:
-        ctx.unsupported("PROJ_VECT_BASE of a generalized vector", "VECT_ASSE_GENE", kw)
+        return project_generalized(
+            ctx, kw, basis, numbering_gene, kw["VECT_ASSE_GENE"], kw.get("TYPE_VECT", "FORC")
+        )
     return project(ctx, kw, basis, numbering_gene, kw["VECT_ASSE"], kw.get("TYPE_VECT", "FORC"))

@@ -3,9 +3,11 @@
 u(t) = Φ q(t) on the chosen DOFs, at the archived states (TOUT_ORDRE,
 NUME_ORDRE) or at chosen instants (INST, LIST_INST), interpolated linearly
 when INTERPOL='LIN'. The restituted states are numbered in sequence, as
-code_aster does: chosen instants (INST, LIST_INST) 1..n; archived states
-0 for the initial state when it is restituted, then 1, 2... (so with
-PAS_ARCH=10 the 10th archived state is order 10, not step 100).
+code_aster's tran75 does: interpolated instants (INTERPOL='LIN') 1..n;
+archived states, whether chosen by order or by instant, 0 for the initial
+state when it is restituted, then 1, 2... (so with PAS_ARCH=10 the 10th
+archived state is order 10, not step 100). An interpolated instant outside
+the archive keeps the field of the previous one, as tran75 leaves it.
 
 MULT_APPUI='OUI' adds the support motion Σ ψ_k s_k(t) when the tran_gene
 carries it in ``info["mult_appui"]`` (a list of dicts with ``"shape"``: a
@@ -22,6 +24,7 @@ from asterlite.concepts.modes import GeneralizedModes
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.restitution import (
     FIELDS,
+    InstantSelection,
     added_motions,
     as_tuple,
     dof_rows,
@@ -30,6 +33,7 @@ from asterlite.post.restitution import (
     recombine_element_field,
     selection_from_keywords,
     support_motion,
+    values_of,
 )
 
 TRANSLATIONS = ("DX", "DY", "DZ")
@@ -46,12 +50,28 @@ def run(ctx, kw):
             kw,
         )
     basis = kw.get("MODE_MECA") or result.basis
+    if isinstance(basis, GeneralizedModes):  # a transient of a coupled generalized model
+        ctx.error(
+            "the transient's basis is a mode_gene: give MODE_MECA (modes restored by"
+            " REST_SOUS_STRUC) or restore with REST_SOUS_STRUC",
+            "MODE_MECA",
+            kw,
+        )
+    return restore_transient(ctx, kw, result, basis)
+
+
+def restore_transient(ctx, kw, result, basis):
+    """The dyna_trans of a tran_gene recombined on ``basis`` (also used by
+    REST_SOUS_STRUC with the substructure's or skeleton's restored modes)."""
     if basis.n_modes != result.n_modes:
         ctx.error(
             f"MODE_MECA has {basis.n_modes} modes, the result {result.n_modes}", "MODE_MECA", kw
         )
     fields, element_names = requested_fields(ctx, kw, basis)
-    selection = selection_from_keywords(ctx, kw, result.times, result.order)
+    if kw.get("INTERPOL") == "LIN" and chosen_instants(kw) is not None:
+        selection = interpolated_instants(ctx, kw, result.times)
+    else:
+        selection = selection_from_keywords(ctx, kw, result.times, result.order)
     numbering = basis.numbering
     nodes = node_indices(ctx, kw, numbering.mesh)
     rows = dof_rows(numbering, nodes, as_tuple(kw.get("NOM_CMP")))
@@ -73,9 +93,9 @@ def run(ctx, kw):
         sub = numbering
     else:
         sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
-    if kw.get("INST") is not None or kw.get("LIST_INST") is not None:
-        order = np.arange(1, len(selection.times) + 1)  # chosen instants: 1..n
-    else:
+    if chosen_instants(kw) is not None and kw.get("INTERPOL") == "LIN":
+        order = np.arange(1, len(selection.times) + 1)  # interpolated instants: 1..n
+    else:  # archived states, also chosen by instant (tran75 from code_aster 10 to 17)
         order = sequence_numbers(selection.times, result.times)
     restored = DynaTrans(sub, selection.times, order, out)
     if element_names:
@@ -196,3 +216,49 @@ def sequence_numbers(selected_times, archived_times) -> np.ndarray:
     initial = count > 0 and len(archived_times) > 0 and selected_times[0] == archived_times[0]
     start = 0 if initial else 1
     return np.arange(start, start + count)
+
+
+def chosen_instants(kw) -> np.ndarray | None:
+    if kw.get("INST") is not None:
+        return values_of(kw["INST"])
+    if kw.get("LIST_INST") is not None:
+        return values_of(kw["LIST_INST"])
+    return None
+
+
+def interpolated_instants(ctx, kw, times) -> InstantSelection:
+    """INTERPOL='LIN' as code_aster does it (tran75 calling extrac, code_aster 10 to
+    17): an instant within PRECISION of the first or last archived one takes that
+    state; an instant outside the archive is not extracted and its field keeps the
+    state restituted for the previous instant (tran75 does not read extrac's
+    return code)."""
+    times = np.asarray(times, dtype=float)
+    wanted = np.atleast_1d(chosen_instants(kw))
+    precision = float(kw.get("PRECISION", 1e-6))
+    relative = kw.get("CRITERE", "RELATIF") == "RELATIF"
+    lower = np.zeros(wanted.size, dtype=int)
+    weight = np.zeros(wanted.size)
+    last = times.size - 1
+    for i, t in enumerate(wanted):
+        if abs(t - times[0]) <= precision * (abs(times[0]) if relative else 1.0):
+            lower[i] = 0
+        elif abs(t - times[last]) <= precision * (abs(times[last]) if relative else 1.0):
+            lower[i] = last
+        elif times[0] < t < times[last]:
+            lower[i] = int(np.searchsorted(times, t, side="right")) - 1
+            weight[i] = (t - times[lower[i]]) / (times[lower[i] + 1] - times[lower[i]])
+        elif i == 0:
+            ctx.unsupported(
+                f"instant {t:g} outside the archived range [{times[0]:g}, {times[last]:g}] "
+                "as the first one restituted (code_aster leaves its field as allocated)",
+                "INST" if kw.get("INST") is not None else "LIST_INST",
+                kw,
+            )
+        else:
+            lower[i], weight[i] = lower[i - 1], weight[i - 1]
+            ctx.log(
+                f"REST_GENE_PHYS: instant {t:g} is outside the archived range "
+                f"[{times[0]:g}, {times[last]:g}]: its field is that of the previous "
+                "instant, as code_aster's tran75 leaves it"
+            )
+    return InstantSelection(lower, weight, wanted.copy(), np.arange(1, wanted.size + 1))

@@ -35,7 +35,9 @@ class ModeResult(Concept):
     """
 
     aster_types = ("mode_meca", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getField", "getIndexes", "getNumberOfModes"})
+    deck_methods = frozenset(
+        {"getName", "getField", "getIndexes", "getNumberOfModes", "setMesh"}
+    )
 
     numbering: DofNumbering
     shapes: np.ndarray
@@ -65,6 +67,11 @@ class ModeResult(Concept):
 
     def getNumberOfModes(self) -> int:  # noqa: N802
         return int(self.n_modes)
+
+    def setMesh(self, mesh) -> None:  # noqa: N802
+        from asterlite.post.deck_api import set_result_mesh
+
+        set_result_mesh(self, mesh)
 
     @property
     def mode_numbers(self) -> np.ndarray:
@@ -288,6 +295,12 @@ class MultElasResult(Concept):
     case_names: list[str] = field(default_factory=list)
     loads: np.ndarray | None = None
     stiffness: AssembledMatrix | None = None
+    # what CREA_RESU/AFFE gave for post-processing (CALC_CHAMP): MODELE,
+    # CHAM_MATER, CARA_ELEM and the CHARGE list
+    model: Any = None
+    materials: Any = None
+    characteristics: Any = None
+    charges: list = field(default_factory=list)
 
     @property
     def n_cases(self) -> int:
@@ -326,6 +339,38 @@ class GeneralizedModes(Concept):
     def mode_numbers(self) -> np.ndarray:
         numbers = self.parameters.get("NUME_MODE")
         return np.arange(1, self.n_modes + 1) if numbers is None else np.asarray(numbers)
+
+    def select(self, indices) -> GeneralizedModes:
+        """The modes at 0-based ``indices`` (EXTR_MODE), NUME_MODE kept."""
+        idx = np.asarray(indices, dtype=int)
+        return GeneralizedModes(
+            numbering=self.numbering,
+            vectors=self.vectors[:, idx].copy(),
+            frequencies=np.asarray(self.frequencies)[idx].copy(),
+            generalized_mass=np.asarray(self.generalized_mass)[idx].copy(),
+            generalized_stiffness=np.asarray(self.generalized_stiffness)[idx].copy(),
+            parameters={
+                k: (np.asarray(v)[idx] if np.ndim(v) == 1 else v)
+                for k, v in self.parameters.items()
+            },
+            norm=self.norm,
+        )
+
+    @staticmethod
+    def concatenate(parts) -> GeneralizedModes:
+        """The modes of several mode_gene on one numbering, one after the other."""
+        keys = set.intersection(*(set(p.parameters) for p in parts))
+        return GeneralizedModes(
+            numbering=parts[0].numbering,
+            vectors=np.hstack([p.vectors for p in parts]),
+            frequencies=np.concatenate([p.frequencies for p in parts]),
+            generalized_mass=np.concatenate([p.generalized_mass for p in parts]),
+            generalized_stiffness=np.concatenate([p.generalized_stiffness for p in parts]),
+            parameters={
+                k: np.concatenate([np.asarray(p.parameters[k]) for p in parts]) for k in keys
+            },
+            norm=parts[0].norm,
+        )
 
     def physical(self, indices=None, basis=None) -> ModeResult:
         """The modes restored on the physical basis (REST_GENE_PHYS): Φ q with

@@ -233,6 +233,33 @@ def beam_inertia_forces(
     )
 
 
+#: Components of SIPM_ELNO.
+SIPM_COMPONENTS = ("SIXXMIN", "SIXXMAX")
+
+
+def beam_extreme_stresses(efge: np.ndarray, sections: list[dict]) -> np.ndarray:
+    """SIPM_ELNO (n_orders, n_cells, 2, 2) from EFGE_ELNO: the smallest and
+    largest axial stress over the section, N/A -+ the bending part, which is
+    |MFY| HZ/(2 IY) + |MFZ| HY/(2 IZ) for a rectangle and
+    R sqrt(MFY² + MFZ²)/IY for a circle (code_aster's rule; it has no value
+    for other sections)."""
+    out = np.zeros(efge.shape[:-1] + (2,))
+    for k, section in enumerate(sections):
+        f = efge[:, k]
+        kind = section.get("SECTION", "GENERALE")
+        if kind == "RECTANGLE":
+            bending = np.abs(f[..., 4]) / section["IY"] * section["HZ"] / 2.0
+            bending += np.abs(f[..., 5]) / section["IZ"] * section["HY"] / 2.0
+        elif kind == "CERCLE":
+            bending = section["R"] / section["IY"] * np.hypot(f[..., 4], f[..., 5])
+        else:
+            raise ValueError("SIPM_ELNO needs a RECTANGLE or CERCLE section")
+        axial = f[..., 0] / section["A"]
+        out[:, k, :, 0] = axial - bending
+        out[:, k, :, 1] = axial + bending
+    return out
+
+
 def beam_stresses(efge: np.ndarray, sections: list[dict], modelisations: list[str]) -> np.ndarray:
     """SIPO_ELNO (n_orders, n_cells, 2, 6) from EFGE_ELNO: SN = N/A,
     SVY = VY/(A/AY), SVZ = VZ/(A/AZ) (A for POU_D_E), SMT = MT RT/JX,

@@ -3,12 +3,13 @@
 - ``EFGE_ELNO`` / ``SIEF_ELNO`` of beams: generalised internal forces N VY VZ
   MT MFY MFZ at both nodes (:func:`asterlite.fem.beam_elements.beam_local_forces`);
 - ``SIPO_ELNO``: the stresses derived from them
-  (:func:`asterlite.fem.beam_elements.beam_stresses`);
+  (:func:`asterlite.fem.beam_elements.beam_stresses`), ``SIPM_ELNO`` the
+  extreme axial stresses over the section (``beam_extreme_stresses``);
 - ``EFGE_ELGA`` / ``SIEF_ELGA``: the same forces at the 3 Gauss points, linear
   between the two nodes (exact for unloaded straight beams: constant forces,
   linear moments);
 - dynamic results (``accelerations`` given: the ACCE field of a dyna_trans)
-  add the element inertia forces to EFGE_ELNO and SIPO_ELNO,
+  add the element inertia forces to EFGE_ELNO, SIPO_ELNO and SIPM_ELNO,
   ``K_e u_e + M_e a_e``, as code_aster's beam elements do for transient
   results (the forces then balance the inertia distribution along each beam,
   so SN differs between its two nodes); SIEF_ELGA / EFGE_ELGA / SIEF_ELNO
@@ -26,14 +27,16 @@ import numpy as np
 from asterlite.concepts.assembly import ElementField, NodalComponentField
 from asterlite.fem.beam_elements import (
     EFGE_COMPONENTS,
+    SIPM_COMPONENTS,
     SIPO_COMPONENTS,
+    beam_extreme_stresses,
     beam_inertia_forces,
     beam_local_forces,
     beam_stresses,
 )
 
 BEAM_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
-ELNO_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO", "SIPO_ELNO")
+ELNO_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO", "SIPO_ELNO", "SIPM_ELNO")
 ELGA_OPTIONS = ("EFGE_ELGA", "SIEF_ELGA")
 #: Positions (0..1 along the beam) of the 3 Gauss points of beam elements.
 BEAM_GAUSS = (1.0 + np.array([-np.sqrt(0.6), 0.0, np.sqrt(0.6)])) / 2.0
@@ -95,6 +98,10 @@ def beam_element_fields(
             out[name] = ElementField(
                 name, cells, SIPO_COMPONENTS, beam_stresses(dynamic, sections, kinds)
             )
+        elif name == "SIPM_ELNO":
+            sections = [characteristics.sections[int(c)] for c in cells]
+            extremes = beam_extreme_stresses(dynamic, sections)
+            out[name] = ElementField(name, cells, SIPM_COMPONENTS, extremes)
         else:
             raise ValueError(f"unknown element field {name}")
     return out

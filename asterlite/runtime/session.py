@@ -102,6 +102,8 @@ class Session:
     aster_version: int | None = None
     # refuses an output file name the run may not take (asterlite.runtime.outdir)
     output_guard: Any = None
+    # files the deck wrote itself (numpy.savetxt), which it may write again
+    deck_written: set = field(default_factory=set)
 
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
@@ -244,7 +246,31 @@ class Session:
         self.check.record(error)
         self.started = True
 
+    def open_deck_file(self, name: str):
+        """A new text stream for a file the deck writes itself (numpy.savetxt) in
+        the output folder (one it wrote before is replaced); None under check."""
+        from asterlite.runtime.outdir import create_file
+
+        if self.check_only:
+            return None
+        path = self.output_path(name)
+        if path in self.deck_written:
+            path.unlink(missing_ok=True)
+        stream = create_file(path)
+        self.deck_written.add(path)
+        self.log(f"  deck file {path.name} written (numpy.savetxt)")
+        return stream
+
     def run_all(self) -> None:
+        from asterlite.lang import savetxt
+
+        token = savetxt.set_writer(self.open_deck_file)
+        try:
+            self._run_all()
+        finally:
+            savetxt.reset_writer(token)
+
+    def _run_all(self) -> None:
         if self.check_only:  # placeholders print nothing; keep start-up light
             self._run_files()
         else:
@@ -503,6 +529,11 @@ class CommandProxy(DeckCallable):
         if self.name == "DEFI_FICHIER":
             unit = keywords.get("UNITE")
             name = keywords.get("FICHIER")
+            if keywords.get("ACTION", "ASSOCIER") == "LIBERER":
+                # the unit is closed: what is written to it later goes to fort.<unit>
+                if unit is not None:
+                    session.output_units.pop(int(unit), None)
+                return None
             if unit is not None and name and session.output_dir is not None:
                 session.output_units[int(unit)] = session.output_path(str(name))
             if session.check is not None:

@@ -1,0 +1,73 @@
+"""DEFI_SQUELETTE: a mesh to view the results of dynamic substructuring."""
+
+from asterlite.catalog import EXCLUS, FACT, OPER, PRESENT_PRESENT, SIMP, UN_PARMI
+
+DEFI_SQUELETTE = OPER(
+    nom="DEFI_SQUELETTE",
+    sd_prod="squelette",
+    reentrant="n",
+    fr="Define a mesh to view the results of a dynamic substructuring",
+    regles=(
+        UN_PARMI("CYCLIQUE", "MODELE_GENE", "MAILLAGE"),
+        PRESENT_PRESENT("CYCLIQUE", "SECTEUR"),
+        EXCLUS("SOUS_STRUC", "SECTEUR"),
+        PRESENT_PRESENT("NOM_GROUP_MA", "MODELE_GENE"),
+        PRESENT_PRESENT("NOM_GROUP_MA", "SOUS_STRUC"),
+    ),
+    CYCLIQUE=FACT(
+        statut="f",
+        regles=(UN_PARMI("MODE_CYCL", "MAILLAGE"), PRESENT_PRESENT("NB_SECTEUR", "MAILLAGE")),
+        MODE_CYCL=SIMP(statut="f", typ="mode_cycl"),
+        NB_SECTEUR=SIMP(statut="f", typ="I", max=1),
+        MAILLAGE=SIMP(statut="f", typ="maillage_sdaster"),
+    ),
+    MODELE_GENE=SIMP(statut="f", typ="modele_gene"),
+    SQUELETTE=SIMP(statut="f", typ="squelette"),
+    RECO_GLOBAL=FACT(
+        statut="f",
+        max="**",
+        regles=(
+            EXCLUS("TOUT", "GROUP_NO_1"),
+            PRESENT_PRESENT("GROUP_NO_1", "GROUP_NO_2"),
+            PRESENT_PRESENT("GROUP_NO_1", "SOUS_STRUC_1"),
+            PRESENT_PRESENT("GROUP_NO_2", "SOUS_STRUC_2"),
+            PRESENT_PRESENT("SOUS_STRUC_1", "SOUS_STRUC_2"),
+        ),
+        TOUT=SIMP(statut="f", typ="TXM", into=("OUI",)),
+        GROUP_NO_1=SIMP(statut="f", typ="grno"),
+        SOUS_STRUC_1=SIMP(statut="f", typ="TXM"),
+        GROUP_NO_2=SIMP(statut="f", typ="grno"),
+        SOUS_STRUC_2=SIMP(statut="f", typ="TXM"),
+        PRECISION=SIMP(statut="f", typ="R", defaut=1.0e-3),
+        CRITERE=SIMP(statut="f", typ="TXM", defaut="RELATIF", into=("RELATIF", "ABSOLU")),
+        DIST_REFE=SIMP(statut="f", typ="R"),
+    ),
+    NOM_GROUP_MA=FACT(
+        statut="f",
+        max="**",
+        NOM=SIMP(statut="o", typ="TXM"),
+        SOUS_STRUC=SIMP(statut="o", typ="TXM"),
+        GROUP_MA=SIMP(statut="o", typ="grma"),
+    ),
+    EXCLUSIF=SIMP(statut="f", typ="TXM", defaut="NON", into=("OUI", "NON")),
+    MAILLAGE=SIMP(statut="f", typ="maillage_sdaster"),
+    GROUP_MA=SIMP(statut="f", typ="grma", max="**"),
+    TOUT=SIMP(statut="f", typ="TXM", into=("OUI",)),
+    TRANS=SIMP(statut="f", typ="R", min=3, max=3),
+    ANGL_NAUT=SIMP(statut="f", typ="R", min=3, max=3),
+    SOUS_STRUC=FACT(
+        statut="f",
+        max="**",
+        regles=(UN_PARMI("TOUT", "GROUP_MA"),),
+        NOM=SIMP(statut="o", typ="TXM"),
+        GROUP_MA=SIMP(statut="f", typ="grma", max="**"),
+        TOUT=SIMP(statut="f", typ="TXM", into=("OUI",)),
+    ),
+    SECTEUR=FACT(
+        statut="f",
+        max="**",
+        GROUP_MA=SIMP(statut="f", typ="grma", max="**"),
+        TOUT=SIMP(statut="f", typ="TXM", into=("OUI",)),
+    ),
+    TITRE=SIMP(statut="f", typ="TXM"),
+)
