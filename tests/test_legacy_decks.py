@@ -4,6 +4,7 @@ deck that passes ``asterlite check`` and reproduces the same TEST_* values."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -43,8 +44,14 @@ def _ported_copy(name: str, tmp_path: Path) -> Path:
     return export
 
 
+def node_blind(label: str) -> str:
+    """A check's label without the node of its table filter: an old deck filters
+    on the node's name (its tables named nodes), the ported one on its number."""
+    return re.sub(r"\bNOEUD=[^\s\]]+", "NOEUD=<node>", label)
+
+
 def _values(report):
-    return [(t.label, t.value) for t in report.tests]
+    return [(node_blind(t.label), t.value) for t in report.tests]
 
 
 def _deprecations(folder: Path) -> list[str]:

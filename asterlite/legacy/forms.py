@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from asterlite.legacy import dyna, misc, modes, v15
+from asterlite.legacy import dyna, macros_v11, misc, modes, v15
 from asterlite.legacy.base import Env, Translation
 
 OWN = "own"  # the legacy command's own catalogue checks the call as written
@@ -94,3 +94,6 @@ LIRE_MAILLAGE = LegacyForm(misc.translate_lire_maillage, detect=misc.is_legacy_l
 V15_ENTITIES = _v15()
 CREA_RESU = _v15(v15.translate_crea_resu, v15.is_v15_crea_resu)
 START = LegacyForm(misc.translate_start, detect=misc.is_legacy_start)
+# code_aster 10-11 macro-commands, renamed in code_aster 12 (asterlite.legacy.macros_v11)
+MACRO_PROJ_BASE = LegacyForm(macros_v11.translate_macro_proj_base, legacy_catalogue=OWN)
+MACRO_MATR_ASSE = LegacyForm(macros_v11.translate_macro_matr_asse, legacy_catalogue=OWN)

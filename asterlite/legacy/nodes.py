@@ -88,6 +88,30 @@ def group_resolver(paths: Iterable[Path]) -> Callable[[str], str | None]:
     return resolve
 
 
+def node_number_resolver(paths: Iterable[Path]) -> Callable[[str], int | None]:
+    """``node name -> its 1-based number`` over the meshes at ``paths`` (read on
+    first use): the number code_aster 17 writes in tables. None when no mesh has
+    the node, or when meshes number it differently (a table cannot tell which)."""
+    paths = list(paths)
+    meshes: list | None = None
+
+    def resolve(node: str) -> int | None:
+        nonlocal meshes
+        if meshes is None:
+            meshes = [m for m in (_read_mesh(str(p), _stamp(p)) for p in paths) if m is not None]
+        numbers = {m.node_index[node] + 1 for m in meshes if node in m.node_index}
+        return numbers.pop() if len(numbers) == 1 else None
+
+    return resolve
+
+
+def _stamp(path) -> float:
+    try:
+        return Path(path).stat().st_mtime
+    except OSError:
+        return 0.0
+
+
 def _own_group(meshes: list[tuple[frozenset, dict]], name: str) -> str | None:
     """The group holding exactly the entity ``name`` in every mesh that has it
     (the one named like it preferred, then the first by name), or None."""

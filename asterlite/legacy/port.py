@@ -20,9 +20,20 @@ from asterlite.catalog import load_catalogue
 from asterlite.errors import AsterliteError, Location
 from asterlite.lang import parse_deck
 from asterlite.lang.values import FactorDict
-from asterlite.legacy.base import RESULT, Env, NewCall, Note, NotPortable, Src, literal_text
-from asterlite.legacy.nodes import LegacyGroups, group_resolver
-from asterlite.legacy.version import deck_version, files_version
+from asterlite.legacy import port_v11, v11
+from asterlite.legacy.base import (
+    RESULT,
+    Env,
+    NewCall,
+    Note,
+    NotPortable,
+    Src,
+    Translation,
+    lit,
+    literal_text,
+)
+from asterlite.legacy.nodes import LegacyGroups, group_resolver, node_number_resolver
+from asterlite.legacy.version import NODE_NAMES_IN_TABLES, deck_version, files_version
 
 LINE_LIMIT = 99
 INDENT = "    "
@@ -326,8 +337,8 @@ def _constants(tree) -> dict:
     return {name: value for name, value in values.items() if counts[name] == 1}
 
 
-def _legacy_calls(tree):
-    """Calls of commands that have a compat_syntax, in text order."""
+def _legacy_calls(tree, also=frozenset()):
+    """Calls of commands that have a compat_syntax (or are named in ``also``), in text order."""
     found = []
     for node in tree.iter_subtrees():
         if node.data != "funccall":
@@ -336,9 +347,73 @@ def _legacy_calls(tree):
         if not name or not name.isupper() or name == "_F":
             continue
         catalogue = load_catalogue(name)
-        if catalogue is not None and catalogue.compat_syntax is not None:
+        if catalogue is not None and (catalogue.compat_syntax is not None or name in also):
             found.append((name, catalogue, node))
     return sorted(found, key=lambda item: item[2].children[0].children[0].start_pos)
+
+
+def _table_node_filters(text: str, filename: str, node_number) -> tuple[str, list[Note]]:
+    """``text`` with every table filter on a node name, ``_F(NOM_PARA='NOEUD',
+    VALE_K='NO1')``, given the node's number instead: code_aster 15 and older
+    wrote node names in tables, code_aster 17 writes numbers (see
+    :data:`asterlite.legacy.version.NODE_NAMES_IN_TABLES`). Filters anywhere in
+    the deck are found, also those kept in variables; a name no mesh of the
+    run numbers one way is left as written."""
+    module = parse_deck(text, filename)
+    reader = _Reader(text, filename, module.lines)
+    edits, notes = [], []
+    for node in module.tree.iter_subtrees():
+        if node.data != "funccall" or _callee_name(node) != "_F":
+            continue
+        found = _node_filter_value(node, text)
+        if found is None:
+            continue
+        start, end, names, token = found
+        numbers = [node_number(name) for name in names]
+        if any(number is None for number in numbers):
+            continue
+        new = tuple(str(n) for n in numbers)
+        edits.append((start, end, literal_text(new if len(new) > 1 else new[0])))
+        notes.append(
+            Note(
+                f"table filter NOEUD={', '.join(names)} (code_aster 15 and older: node names "
+                "in tables)",
+                f"VALE_K={', '.join(new)} (code_aster 17: node numbers)",
+                reader.location(token),
+            )
+        )
+    for start, end, new_text in sorted(edits, reverse=True):
+        text = text[:start] + new_text + text[end:]
+    return text, notes
+
+
+def _node_filter_value(call, text: str):
+    """(start, end, node names, token) of VALE_K in an ``_F`` filtering on NOEUD, or None."""
+    arguments = call.children[1] if len(call.children) > 1 else None
+    values = {}
+    for argument in getattr(arguments, "children", None) or ():
+        if getattr(argument, "data", None) != "kwarg":
+            return None
+        values[argument.children[0].children[0].value] = argument
+    if set(values) - {"NOM_PARA", "VALE_K", "CRIT_COMP"} or "VALE_K" not in values:
+        return None
+    try:
+        parameter = _literal(values["NOM_PARA"].children[1])
+        names = _literal(values["VALE_K"].children[1])
+        comparison = _literal(values["CRIT_COMP"].children[1]) if "CRIT_COMP" in values else "EQ"
+    except ValueError:
+        return None
+    if parameter != "NOEUD" or comparison not in ("EQ", "NE"):  # equality: names as numbers
+        return None
+    names = names if isinstance(names, (tuple, list)) else (names,)
+    if not names or not all(isinstance(n, str) for n in names):
+        return None
+    key = values["VALE_K"].children[0].children[0]
+    start = text.index("=", key.end_pos) + 1
+    end = _scan(text, start)
+    while text[start].isspace():
+        start += 1
+    return start, end, tuple(names), key
 
 
 def port_text(
@@ -348,20 +423,51 @@ def port_text(
     node_group=None,
     legacy_groups=None,
     version: int | None = None,
+    node_number=None,
 ) -> PortResult:
     """The deck ``text`` with its legacy calls rewritten in current syntax.
 
     ``version``: the code_aster version the deck was written for (default:
     detected from ``text``); ``legacy_groups``: the groups standing for the
-    nodes and cells it names (:class:`asterlite.legacy.nodes.LegacyGroups`)."""
+    nodes and cells it names (:class:`asterlite.legacy.nodes.LegacyGroups`); ``node_number``:
+    a mesh node's number (:func:`asterlite.legacy.nodes.node_number_resolver`), to turn
+    table filters on node names into today's numbers."""
     if version is None:
         version = deck_version(text)
+    context = (unit_path, node_group, legacy_groups, version)
+    if node_number is None or version not in NODE_NAMES_IN_TABLES:
+        return _port(text, filename, context)
+    original = text
+    text, filter_notes = _table_node_filters(text, filename, node_number)
+    result = _port(text, filename, context)
+    still = deck_version(result.text)
+    if filter_notes and still in NODE_NAMES_IN_TABLES:  # it keeps reading tables by name
+        result = _port(original, filename, context)
+        result.skipped.append(
+            f"{Path(filename).name}: table filters on node names left as written: the ported "
+            f"deck is still read as a code_aster {still} deck, whose tables name nodes"
+        )
+        return result
+    result.notes[:0] = filter_notes
+    return result
+
+
+def _port(text: str, filename: str, context) -> PortResult:
+    """``port_text`` once the table filters are settled."""
+    unit_path, node_group, legacy_groups, version = context
     module = parse_deck(text, filename)
     reader = _Reader(text, filename, module.lines, _constants(module.tree))
     result = PortResult(text)
     edits = []
     names = set(re.findall(r"\b[A-Za-z_]\w*\b", text))
-    for name, catalogue, node in _legacy_calls(module.tree):
+    old_deck = version <= v11.LAST_VERSION  # code_aster 10-11 forms (asterlite.legacy.v11)
+    calls = _legacy_calls(module.tree, port_v11.commands() if old_deck else frozenset())
+    if old_deck:
+        transients = _bound_names(module.tree, port_v11.DeckFacts.TRANSIENT_COMMANDS)
+        deck_facts = port_v11.DeckFacts(_bound_names(module.tree), transients)
+        point_groups = port_v11.MeshGroups(legacy_groups)
+        port_v11.scan_point_groups(calls, reader, point_groups)
+    for name, catalogue, node in calls:
         line = node.children[0].children[0].line
         try:
             keywords, start, end = reader.call(node)
@@ -374,7 +480,16 @@ def port_text(
                 version=version,
                 legacy_groups=legacy_groups,
             )
-            translation = catalogue.compat_syntax(keywords, env)
+            before: list = []
+            if old_deck and name in port_v11.commands():
+                keywords, before = port_v11.adjust(keywords, env, deck_facts, point_groups)
+            translation = None
+            if catalogue.compat_syntax is not None:
+                translation = catalogue.compat_syntax(keywords, env)
+            if old_deck and name == "LIRE_MAILLAGE":
+                translation = _with_unprefixed_groups(translation, keywords, env)
+            if translation is None and (env.notes or before):
+                translation = Translation(name, keywords, env.notes)
         except (NotPortable, AsterliteError) as reason:
             result.skipped.append(f"{Path(filename).name}:{line}: {name} left as written: {reason}")
             continue
@@ -382,7 +497,10 @@ def port_text(
             continue
         line_start = text.rfind("\n", 0, start) + 1
         indent = " " * (len(text[line_start:start]) - len(text[line_start:start].lstrip()))
-        hoisted: list[str] = []
+        hoisted: list[str] = [
+            f"{indent}{target} = {_format_call('CREA_MAILLAGE', made, indent)}\n"
+            for target, made in before
+        ]
         kwargs = _hoist(translation.kwargs, hoisted, names, indent)
         new_text = _format_call(translation.command, kwargs, indent)
         if translation.after:
@@ -402,6 +520,44 @@ def port_text(
         text = text[:start] + new_text + text[end:]
     result.text = text
     return result
+
+
+def _bound_names(tree, commands=None) -> set[str]:
+    """Names the deck assigns at its top level (variables a FORMULE may read), or
+    only those it assigns the result of one of ``commands``."""
+    found = set()
+    for child in getattr(tree, "children", ()):
+        if getattr(child, "data", None) == "assign":
+            value = child.children[-1]
+            if commands is not None and not (
+                getattr(value, "data", None) == "funccall" and _callee_name(value) in commands
+            ):
+                continue
+            for target in child.children[:-1]:
+                found.update(
+                    str(t)
+                    for t in target.scan_values(lambda v: isinstance(v, Token) and v.type == "NAME")
+                )
+    return found
+
+
+def _with_unprefixed_groups(translation, keywords, env):
+    """A code_aster 11 LIRE_MAILLAGE followed by the DEFI_GROUP naming its prefixed groups."""
+    from asterlite.legacy.misc import DEFAULT_MESH_UNIT
+
+    unit = lit(keywords.get("UNITE", DEFAULT_MESH_UNIT))
+    path = env.unit_path(unit) if env.unit_path is not None and isinstance(unit, int) else None
+    groups = port_v11.unprefixed_groups_call(path)
+    if groups is None:
+        return translation
+    env.note(
+        "mesh groups GROUP_NO_X / GROUP_MA_X named X by the deck (code_aster 11)",
+        "DEFI_GROUP after LIRE_MAILLAGE giving them the names the deck uses",
+    )
+    if translation is None:
+        return Translation("LIRE_MAILLAGE", keywords, env.notes, after=[groups])
+    translation.after.append(groups)
+    return translation
 
 
 def _after_edit(text: str, end: int, target: str, calls: list, indent: str):
@@ -465,6 +621,7 @@ def port_file(deck: Path, aster_version: int | None = None) -> PortResult:
         node_group=group_resolver(units.values()),
         legacy_groups=groups,
         version=version,
+        node_number=node_number_resolver(units.values()),
     )
 
 

@@ -45,7 +45,7 @@ from pathlib import Path
 
 from asterlite.errors import CommandError, UnsupportedError
 from asterlite.lang.values import FactorDict
-from asterlite.legacy.base import Note
+from asterlite.legacy.base import Note, Src, lit
 
 LAST_VERSION = 11  # the forms below are those of code_aster 11 and older
 
@@ -308,7 +308,16 @@ def _drop_no_effect(kwargs: dict, call: _Call) -> dict:
 def _pair(value) -> tuple:
     if value is None:
         return ()
+    if isinstance(value, Src) and isinstance(value.value, (list, tuple)):
+        return tuple(value.value)  # asterlite port: a literal sequence as written
     return tuple(value) if isinstance(value, (list, tuple)) else (value,)
+
+
+def _same(a, b) -> bool:
+    """The same value given twice (the same concept, or the same deck text when porting)."""
+    if isinstance(a, Src) and isinstance(b, Src):
+        return a.text == b.text
+    return a is b
 
 
 def reference_check(level: dict, old_keys: dict, default_precision: float) -> dict | None:
@@ -325,7 +334,7 @@ def reference_check(level: dict, old_keys: dict, default_precision: float) -> di
         return None
     precision = (_pair(level.get("PRECISION")) or (default_precision,))[0]
     criterion = (_pair(level.get("CRITERE")) or (DEFAULT_CRITERION,))[0]
-    reference = level.get("REFERENCE")
+    reference = lit(level.get("REFERENCE"))
     dropped = set(given) | {"PRECISION", "CRITERE", "REFERENCE"}
     new = {k: v for k, v in level.items() if k not in dropped}
     for key in given:
@@ -565,7 +574,7 @@ def _moved_up_in_12(kwargs: dict, call: _Call) -> dict:
                     name,
                     path=f"{factor}/{name}",
                 )
-            if any(v is not values[0] for v in values):
+            if any(not _same(v, values[0]) for v in values):
                 call.unsupported(
                     f"{factor}/{name} differs between occurrences: code_aster 12 and later "
                     "take one for all",
@@ -590,9 +599,9 @@ def _moved_up_in_12(kwargs: dict, call: _Call) -> dict:
 def _fixed_step(kwargs: dict, call: _Call) -> dict:
     """DEVOGE integrated at the deck's PAS in code_aster 11 (R5.06.04 sets it apart
     from the adaptive schemes); today's DEVOGE adapts unless PAS_MINI = PAS_MAXI."""
-    schema = kwargs.get("METHODE")
+    schema = lit(kwargs.get("METHODE"))
     for occurrence in _occurrences(kwargs.get("SCHEMA_TEMPS")):
-        schema = occurrence.get("SCHEMA", schema)
+        schema = lit(occurrence.get("SCHEMA", schema))
     if schema not in FIXED_STEP_SCHEMES:
         return kwargs
 
@@ -635,10 +644,10 @@ def _scheme_of(kwargs: dict) -> str:
     """The scheme of a code_aster 10-11 DYNA_TRAN_MODAL call (METHODE, else
     SCHEMA_TEMPS/SCHEMA; the defaults of asterlite.legacy.dyna)."""
     if "METHODE" in kwargs:
-        return str(kwargs["METHODE"])
+        return str(lit(kwargs["METHODE"]))
     occurrences = _occurrences(kwargs.get("SCHEMA_TEMPS"))
     if occurrences:
-        return str(occurrences[0].get("SCHEMA", "NEWMARK"))
+        return str(lit(occurrences[0].get("SCHEMA", "NEWMARK")))
     old_style = any(k in kwargs for k in ("MASS_GENE", "RIGI_GENE"))
     return "EULER" if old_style else "NEWMARK"
 
@@ -648,7 +657,7 @@ def fluid_film(kwargs: dict, call: _Call) -> dict:
     PARA_LAME_FLUI (code_aster 12's place), defaults of code_aster 11 filled
     in; refused with a scheme other than EULER. Without a film, those
     keywords changed nothing and are dropped."""
-    films = [o for o in _occurrences(kwargs.get("CHOC")) if o.get("LAME_FLUIDE") == "OUI"]
+    films = [o for o in _occurrences(kwargs.get("CHOC")) if lit(o.get("LAME_FLUIDE")) == "OUI"]
     given = [k for k in FILM_ITERATIONS if k in kwargs]
     rest = {k: v for k, v in kwargs.items() if k not in FILM_ITERATIONS}
     if not films:
@@ -672,7 +681,7 @@ def fluid_film(kwargs: dict, call: _Call) -> dict:
             path="CHOC/LAME_FLUIDE",
         )
     values = {k: kwargs.get(k, default) for k, default in FILM_ITERATIONS.items()}
-    shown = ", ".join(f"{k}={v!r}" for k, v in values.items())
+    shown = ", ".join(f"{k}={v.text if isinstance(v, Src) else repr(v)}" for k, v in values.items())
     call.note(
         f"{call.command}/NMAX_ITER, RESI_RELA, LAMBDA (code_aster 11: the fluid film's "
         "iterations, defaults 20, 1e-3, 10)",

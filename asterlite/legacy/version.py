@@ -144,11 +144,12 @@ def session_version(session) -> int:
 # ------------------------------------------------------------ what a version meant
 
 # versions whose tables named mesh nodes (code_aster 17 writes their 1-based number,
-# its meshes keeping no node names). Older versions named them too, but the decks
-# of code_aster 10-14 asterlite runs (tests/legacy_decks) were written against
-# numbers and `asterlite port` does not yet turn a FILTRE on a node name into its
-# number, so only code_aster 15 decks (their corpus) read tables by name for now.
-NODE_NAMES_IN_TABLES = (15,)
+# its meshes keeping no node names). Read from the decks of each era, which filter
+# POST_DYNA_MODA_T's tables on NOEUD='NO1': code_aster 10-11 (ralic/Code_Aster at
+# 427e130c, sdnd101a), 11.4/12 (its 2013 sdnd101a, DYNA_VIBRA with CHOC) and 15
+# (ehmoussi/code_aster). Versions 13-14 sit between two that named them.
+# `asterlite port` turns such filters into node numbers (asterlite.legacy.port).
+NODE_NAMES_IN_TABLES = tuple(range(10, 16))
 
 
 def tables_name_nodes(session) -> bool:
