@@ -1,4 +1,5 @@
-"""LIRE_MAILLAGE: read a mesh (ASTER text format; MED through medcoupling)."""
+"""LIRE_MAILLAGE: read a mesh (ASTER text format; MED through medcoupling; I-DEAS
+universal files through pyuff)."""
 
 from __future__ import annotations
 
@@ -26,10 +27,29 @@ def run(ctx, kw):
             mesh = read_med_mesh(path, kw.get("NOM_MED"))
         except (ValueError, KeyError) as exc:
             ctx.error(str(exc), "UNITE", kw)
+    elif fmt == "IDEAS":
+        mesh = _read_ideas(ctx, kw, path)
     else:
         ctx.unsupported(f"LIRE_MAILLAGE FORMAT={fmt!r}", "FORMAT", kw)
     ctx.log(
         f"mesh {path.name}: {mesh.n_nodes} nodes, {mesh.n_cells} cells, "
         f"{len(mesh.node_groups)} node groups, {len(mesh.cell_groups)} cell groups"
     )
+    return mesh
+
+
+def _read_ideas(ctx, kw, path):
+    from asterlite.io.ideas_mesh import IdeasMeshError, IdeasMeshUnsupported, read_ideas_mesh
+
+    try:
+        mesh = read_ideas_mesh(path, color_groups=kw.get("CREA_GROUP_COUL") == "OUI")
+    except IdeasMeshUnsupported as exc:
+        ctx.unsupported(f"LIRE_MAILLAGE FORMAT='IDEAS': {exc}", "UNITE", kw)
+    except IdeasMeshError as exc:
+        ctx.error(str(exc), "UNITE", kw)
+    for note in mesh.ideas_notes:
+        ctx.log(f"<A> {note}")
+    if mesh.ideas_skipped:
+        numbers = ", ".join(str(n) for n in mesh.ideas_skipped)
+        ctx.log(f"I-DEAS datasets not used for the mesh: {numbers}")
     return mesh

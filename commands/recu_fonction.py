@@ -19,6 +19,7 @@ import numpy as np
 from asterlite.concepts.function import Function
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.legacy.v15 import relation_title
 from asterlite.post.restitution import (
     added_motions,
     as_tuple,
@@ -30,6 +31,7 @@ from asterlite.post.restitution import (
     support_motion,
     values_of,
 )
+from asterlite.runtime.v15_names import GENERATED_NAME
 
 
 def run(ctx, kw):
@@ -42,6 +44,10 @@ def run(ctx, kw):
         para, resu, (x, y) = "INST", None, from_physical(ctx, kw)
     elif kw.get("CHAM_GD") is not None:
         return constant_from_field(ctx, kw)
+    elif kw.get("INTE_SPEC") is not None:
+        from asterlite.post.spectral_functions import function_of_interspectrum
+
+        return function_of_interspectrum(ctx, kw)
     else:
         which = next((k for k in ("CHAM_GD", "BASE_ELAS_FLUI", "NAPPE") if k in kw), "source")
         ctx.unsupported(f"RECU_FONCTION from {which}", which, kw)
@@ -182,6 +188,8 @@ def find_shock(ctx, kw, result):
         wanted = str(kw["INTITULE"]).strip()
         matches = [s for s in result.shocks if s.name.strip() == wanted]
         key = "INTITULE"
+        if not matches:  # code_aster 15's form of a relation's title
+            matches = shocks_titled_as_v15(ctx, kw, result, mesh)
     else:
         if kw.get("GROUP_NO_CHOC") is not None:
             key = "GROUP_NO_CHOC"
@@ -199,6 +207,20 @@ def find_shock(ctx, kw, result):
         known = ", ".join(f"{s.name} ({s.node_1})" for s in result.shocks) or "none"
         ctx.error(f"no localized nonlinearity matches (known: {known})", key, kw)
     return matches[0]
+
+
+def shocks_titled_as_v15(ctx, kw, result, mesh) -> list:
+    """The nonlinearities INTITULE names in code_aster 15's form (node name and
+    generated function name: asterlite.legacy.v15.relation_title)."""
+    title, why = relation_title(
+        str(kw["INTITULE"]), mesh.node_index, getattr(ctx.session, "generated_names", None)
+    )
+    if title is None:
+        if why:
+            ctx.error(why, "INTITULE", kw)
+        return []
+    ctx.log(f"note: INTITULE {kw['INTITULE']!r} (code_aster 15) is {title!r} today")
+    return [s for s in result.shocks if s.name.strip() == title.strip()]
 
 
 def shock_quantity(shock, name: str) -> np.ndarray | None:
@@ -294,6 +316,8 @@ def filter_table(ctx, table: Table, occ) -> Table:
         if occ.get(key) is not None:
             value = occ[key]
             break
+    if occ.get("VALE_K") is not None and value not in table.column(name):
+        value = generated_name_as_today(ctx, value, occ)
     return table.filtered(
         name,
         occ.get("CRIT_COMP", "EQ"),
@@ -301,3 +325,19 @@ def filter_table(ctx, table: Table, occ) -> Table:
         float(occ.get("PRECISION", 1e-3)),
         occ.get("CRITERE", "RELATIF"),
     )
+
+
+def generated_name_as_today(ctx, value, occ):
+    """A code_aster 15 object name quoted in a FILTRE ('00000027'), as the deck
+    name of the concept it stands for, which asterlite's tables hold (when the
+    session followed code_aster 15's names that far; else the value as given)."""
+    names = getattr(ctx.session, "generated_names", None)
+    if not isinstance(value, str) or names is None or not GENERATED_NAME.match(value.strip()):
+        return value
+    concept, why = names.lookup(value.strip())
+    name = getattr(concept, "name", None)
+    if not name:
+        ctx.error(f"{value!r} is a name code_aster 15 generates: {why or 'not a concept'}",
+                  "VALE_K", occ)  # fmt: skip
+    ctx.log(f"note: {value!r} (code_aster 15's name of {name}) filtered as {name!r}")
+    return name

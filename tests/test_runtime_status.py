@@ -67,10 +67,10 @@ def test_command_before_debut_is_refused_where_it_is(tmp_path):
 
 
 def test_code_aster_command_asterlite_lacks_is_unsupported_by_name(tmp_path):
-    deck = write(tmp_path, "u.comm", "DEBUT()\nx = 1\nR = LIRE_RESU(UNITE=20)\nFIN()\n")
+    deck = write(tmp_path, "u.comm", "DEBUT()\nx = 1\nR = LIRE_CHAMP(UNITE=20)\nFIN()\n")
     for report in (run_deck(deck, tmp_path / "out"), run_deck(deck, check_only=True)):
         assert report.status == "UNSUPPORTED" and report.exit_code == 2
-        assert "LIRE_RESU is a code_aster command" in report.message
+        assert "LIRE_CHAMP is a code_aster command" in report.message
         assert f"{deck}:3:" in report.message
 
 

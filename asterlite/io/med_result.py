@@ -1,0 +1,67 @@
+"""Nodal fields of a MED file, step by step (what LIRE_RESU FORMAT='MED' reads).
+
+Read with medcoupling: each time step gives its (iteration, order, time)
+and the field's values on the nodes of its profile (every node when it has
+none). Node k of the file is node k of the mesh the deck names, as code_aster
+reads it (the file is expected to hold that mesh).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+
+class MedResultError(ValueError):
+    """A MED file or field that cannot be read as asked."""
+
+
+@dataclass
+class MedStep:
+    iteration: int
+    order: int  # -1 when the file has none
+    time: float
+    nodes: np.ndarray  # 0-based mesh node indices
+    values: np.ndarray  # (len(nodes), n_components)
+
+
+@dataclass
+class MedNodalField:
+    name: str
+    components: tuple[str, ...]
+    n_mesh_nodes: int
+    steps: list[MedStep]
+
+
+def read_nodal_field(path: str | Path, name: str) -> MedNodalField:
+    import medcoupling as mc
+
+    path = str(path)
+    try:
+        available = list(mc.GetAllFieldNames(path))
+    except Exception as exc:  # medcoupling raises InterpKernelException
+        raise MedResultError(f"{Path(path).name} is not a readable MED file ({exc})") from None
+    if name not in available:
+        listed = ", ".join(available) or "none"
+        raise MedResultError(f"no field {name!r} in {Path(path).name} (fields: {listed})")
+    multi = mc.MEDFileFieldMultiTS.New(path, name, True)
+    mesh = mc.MEDFileMesh.New(path, multi.getMeshName())
+    steps, components = [], None
+    for one in multi:
+        if mc.ON_NODES not in one.getTypesOfFieldAvailable():
+            raise MedResultError(f"field {name!r} is not a field on nodes")
+        iteration, order, time = one.getTime()
+        array, profile = one.getFieldWithProfile(mc.ON_NODES, 0, mesh)
+        comps = tuple(c.strip() for c in array.getInfoOnComponents())
+        if components is not None and comps != components:
+            raise MedResultError(f"field {name!r} changes components between steps")
+        components = comps
+        values = array.toNumPyArray().reshape(array.getNumberOfTuples(), len(comps))
+        if profile is None:
+            nodes = np.arange(values.shape[0])
+        else:
+            nodes = np.asarray(profile.toNumPyArray(), dtype=int)
+        steps.append(MedStep(int(iteration), int(order), float(time), nodes, values.copy()))
+    return MedNodalField(name, components or (), mesh.getNumberOfNodes(), steps)

@@ -1,0 +1,220 @@
+"""LIRE_RESU: a result built from fields of a MED file.
+
+FORMAT='MED', TYPE_RESU 'MODE_MECA' or 'DYNA_TRANS', nodal fields (DEPL,
+VITE, ACCE) named by NOM_CHAM_MED or by the prefix NOM_RESU (code_aster's
+naming: the result name on 8 characters padded with '_', then the field),
+components renamed by NOM_CMP / NOM_CMP_MED. As code_aster's lrfmed:
+
+- TOUT_ORDRE / NUME_ORDRE / LIST_ORDRE pick steps by order number (the
+  file's order, else its iteration); INST / FREQ (and their lists) pick the
+  step whose time matches within CRITERE / PRECISION, and the steps read are
+  then numbered 1, 2, ...;
+- the time of each step becomes the result's INST (DYNA_TRANS) or FREQ
+  (MODE_MECA);
+- values lay on the DOFs of MATR_RIGI's (or MATR_MASS's) numbering, or of the
+  MODELE's, or else on the nodes and components the file gives;
+  PROL_ZERO='OUI' puts zero where the file has no value.
+
+A MODE_MECA read this way keeps the matrices it is given; its generalized
+masses and stiffnesses are computed from them (zero without them).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.modes import ModeResult
+from asterlite.concepts.transient import DynaTrans
+from asterlite.fem.dofs import sort_components
+from asterlite.io.med_result import MedResultError, read_nodal_field
+from asterlite.io.med_writer import med_field_name
+from asterlite.post.restitution import as_tuple
+
+_NODAL = ("DEPL", "VITE", "ACCE")
+
+
+def run(ctx, kw):
+    if kw["FORMAT"] != "MED":
+        ctx.unsupported(f"LIRE_RESU FORMAT={kw['FORMAT']!r}", "FORMAT", kw)
+    kind = kw["TYPE_RESU"]
+    if kind not in ("MODE_MECA", "DYNA_TRANS"):
+        ctx.unsupported(f"LIRE_RESU TYPE_RESU={kind!r}", "TYPE_RESU", kw)
+    if kw.get("RESULTAT") is not None:
+        ctx.unsupported("LIRE_RESU into an existing result (reuse)", "RESULTAT", kw)
+    kw.mark_used("INFO", "TITRE", "CHAM_MATER", "CARA_ELEM")  # recorded by code_aster only
+    path = _input(ctx, kw)
+    fields = {}
+    for occ in kw.factor("FORMAT_MED"):
+        name = occ["NOM_CHAM"]
+        if name not in _NODAL:
+            ctx.unsupported(
+                f"LIRE_RESU of field {name} (nodal DEPL, VITE, ACCE only)", "NOM_CHAM", occ
+            )
+        med_name = occ.get("NOM_CHAM_MED") or med_field_name(occ["NOM_RESU"], name)
+        try:
+            field = read_nodal_field(path, med_name)
+        except MedResultError as exc:
+            ctx.error(str(exc), "NOM_CHAM_MED" if occ.get("NOM_CHAM_MED") else "NOM_RESU", occ)
+        fields[name] = (field, _component_names(ctx, occ, field))
+    mesh = kw["MAILLAGE"] if kw.get("MAILLAGE") is not None else kw["MODELE"].mesh
+    for field, _ in fields.values():
+        if field.n_mesh_nodes != mesh.n_nodes:
+            ctx.error(
+                f"field {field.name} lies on {field.n_mesh_nodes} nodes, "
+                f"the mesh has {mesh.n_nodes}",
+                "MAILLAGE" if kw.get("MAILLAGE") is not None else "MODELE",
+                kw,
+            )
+    first = next(iter(fields.values()))[0]
+    picked, orders, times = _select_steps(ctx, kw, first)
+    numbering = _numbering(ctx, kw, mesh, fields)
+    arrays = {
+        name: _values(ctx, kw, numbering, field, comps, picked)
+        for name, (field, comps) in fields.items()
+    }
+    if kind == "MODE_MECA":
+        return _modes(ctx, kw, numbering, arrays, orders, times)
+    return DynaTrans(numbering=numbering, times=times, order=orders, fields=arrays)
+
+
+def _input(ctx, kw):
+    try:
+        return ctx.session.input_path(kw["UNITE"])
+    except (KeyError, FileNotFoundError, LookupError) as exc:
+        ctx.error(f"no file is mapped to logical unit {kw['UNITE']} ({exc})", "UNITE", kw)
+
+
+def _component_names(ctx, occ, field) -> dict[str, str]:
+    """MED component name -> code_aster component name."""
+    aster = as_tuple(occ.get("NOM_CMP"))
+    med = as_tuple(occ.get("NOM_CMP_MED"))
+    if len(aster) != len(med):
+        ctx.error("NOM_CMP and NOM_CMP_MED must have as many names", "NOM_CMP", occ)
+    renamed = dict(zip(med, aster, strict=True))
+    missing = [c for c in med if c not in field.components]
+    if missing:
+        ctx.error(f"field {field.name} has no component {missing[0]}", "NOM_CMP_MED", occ)
+    if renamed:
+        return renamed
+    return {c: c for c in field.components}
+
+
+def _store_number(step) -> int:
+    return step.order if step.order != -1 else step.iteration
+
+
+def _select_steps(ctx, kw, field):
+    """Indices of the file's steps to read, their order numbers and times."""
+    steps = field.steps
+    numbers = [_store_number(s) for s in steps]
+    wanted_orders = kw.get("NUME_ORDRE") or kw.get("LIST_ORDRE")
+    if wanted_orders is not None:
+        wanted = [int(n) for n in _values_of(wanted_orders)]
+        picked = []
+        for number in wanted:
+            if number not in numbers:
+                ctx.log(f"<A> order {number} is not in field {field.name}: skipped")
+                continue
+            picked.append(numbers.index(number))
+        return picked, np.array([numbers[i] for i in picked]), _times(steps, picked)
+    wanted_times = next(
+        (kw.get(k) for k in ("INST", "LIST_INST", "FREQ", "LIST_FREQ") if kw.get(k) is not None),
+        None,
+    )
+    if wanted_times is None:
+        kw.mark_used("TOUT_ORDRE")  # every step: what the selection rule leaves
+        picked = list(range(len(steps)))
+        return picked, np.array(numbers), _times(steps, picked)
+    precision, relative = kw["PRECISION"], kw["CRITERE"] == "RELATIF"
+    picked, times = [], []
+    for value in _values_of(wanted_times):
+        tolerance = abs(precision * value) if relative else abs(precision)
+        match = next((i for i, s in enumerate(steps) if abs(s.time - value) <= tolerance), None)
+        if match is None:
+            ctx.error(f"no step of field {field.name} at {value:g}", None, kw)
+        picked.append(match)
+        times.append(float(value))  # code_aster stores the asked value
+    return picked, np.arange(1, len(picked) + 1), np.array(times)
+
+
+def _values_of(value):
+    values = getattr(value, "values", value)
+    return [v for v in np.atleast_1d(np.asarray(values)).ravel()]
+
+
+def _times(steps, picked) -> np.ndarray:
+    return np.array([steps[i].time for i in picked], dtype=float)
+
+
+def _numbering(ctx, kw, mesh, fields) -> DofNumbering:
+    matrix = kw.get("MATR_RIGI") or kw.get("MATR_MASS")
+    if matrix is not None:
+        return matrix.numbering
+    if kw.get("MODELE") is not None:
+        from asterlite.commands.nume_ddl import numbering_for
+
+        return numbering_for(kw["MODELE"], [])
+    per_node: dict[int, set] = {}
+    for field, comps in fields.values():
+        for step in field.steps:
+            for node in step.nodes:
+                per_node.setdefault(int(node), set()).update(comps.values())
+    dofs = [(n, c) for n in sorted(per_node) for c in sort_components(per_node[n])]
+    return DofNumbering(mesh=mesh, dofs=dofs)
+
+
+def _values(ctx, kw, numbering, field, comps, picked) -> np.ndarray:
+    """(n_steps, n_dofs) values on the numbering; zero where the file has none
+    (PROL_ZERO='OUI'), refused otherwise."""
+    out = np.zeros((len(picked), numbering.n_dofs))
+    filled = np.zeros((len(picked), numbering.n_dofs), dtype=bool)
+    med_index = {aster: field.components.index(med) for med, aster in comps.items()}
+    for row, i in enumerate(picked):
+        step = field.steps[i]
+        for k, node in enumerate(step.nodes):
+            for aster, column in med_index.items():
+                dof = numbering.index.get((int(node), aster))
+                if dof is not None:
+                    out[row, dof] = step.values[k, column]
+                    filled[row, dof] = True
+    if not np.all(np.isfinite(out)):
+        ctx.error(f"field {field.name} holds a non-finite value", "UNITE", kw)
+    if kw.get("PROL_ZERO", "OUI") == "NON" and not filled.all():
+        dof = numbering.dofs[int(np.argmax(~filled.any(axis=0)))]
+        ctx.unsupported(
+            f"PROL_ZERO='NON' with DOFs the file does not give (node "
+            f"{numbering.mesh.node_names[dof[0]]} {dof[1]}): code_aster leaves them undefined",
+            "PROL_ZERO",
+            kw,
+        )
+    return out
+
+
+def _modes(ctx, kw, numbering, arrays, orders, times) -> ModeResult:
+    if "DEPL" not in arrays:
+        ctx.error("a MODE_MECA needs the DEPL field", "FORMAT_MED", kw)
+    shapes = arrays["DEPL"].T.copy()
+    stiffness, mass = kw.get("MATR_RIGI"), kw.get("MATR_MASS")
+    if mass is not None and stiffness is not None and mass.numbering is not stiffness.numbering:
+        ctx.error("MATR_MASS and MATR_RIGI must share their numbering", "MATR_MASS", kw)
+    gen_mass = _quadratic(mass, shapes)
+    gen_stiff = _quadratic(stiffness, shapes)
+    modes = ModeResult(
+        numbering=numbering,
+        shapes=shapes,
+        frequencies=np.asarray(times, dtype=float),
+        generalized_mass=gen_mass,
+        generalized_stiffness=gen_stiff,
+        mass=mass,
+        stiffness=stiffness,
+    )
+    modes.parameters["NUME_MODE"] = np.asarray(orders, dtype=int)
+    ctx.log(f"{shapes.shape[1]} modes read on {numbering.n_dofs} DOFs")
+    return modes
+
+
+def _quadratic(matrix, shapes) -> np.ndarray:
+    if matrix is None:
+        return np.zeros(shapes.shape[1])
+    return np.einsum("im,im->m", shapes, matrix.matrix @ shapes)

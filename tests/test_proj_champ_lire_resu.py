@@ -1,0 +1,240 @@
+"""PROJ_CHAMP (collocation of nodal fields between meshes) and LIRE_RESU
+(FORMAT='MED': modes and transients read back from a MED file)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from asterlite.concepts.assembly import AssembledMatrix, DofNumbering, NodalField
+from asterlite.concepts.mesh import Mesh
+from asterlite.concepts.transient import DynaTrans
+from asterlite.errors import CommandError, UnsupportedError
+from asterlite.io.med_writer import NodalSeries, write_med
+from tests.test_fem_support import FakeSession, chain_mesh, run
+
+WIDER = Path(__file__).resolve().parent.parent.parent / "shared" / "aster-corpus-wider"
+COMPONENTS = ("DX", "DY")
+
+
+def line(xs, seg3: bool = False) -> Mesh:
+    """Nodes along x; SEG2 cells between neighbours (or SEG3 over triples)."""
+    coords = np.zeros((len(xs), 3))
+    coords[:, 0] = xs
+    if seg3:
+        cells = [(k, k + 2, k + 1) for k in range(0, len(xs) - 2, 2)]
+        types = ["SEG3"] * len(cells)
+    else:
+        cells = [(k, k + 1) for k in range(len(xs) - 1)]
+        types = ["SEG2"] * len(cells)
+    return Mesh(
+        coords=coords,
+        node_names=[f"N{k + 1}" for k in range(len(xs))],
+        cell_names=[f"M{k + 1}" for k in range(len(cells))],
+        cell_types=types,
+        cell_nodes=cells,
+        node_groups={"ALL": np.arange(len(xs))},
+        cell_groups={"LINE": np.arange(len(cells))},
+    )
+
+
+def numbering(mesh, components=COMPONENTS) -> DofNumbering:
+    return DofNumbering(mesh=mesh, dofs=[(n, c) for n in range(mesh.n_nodes) for c in components])
+
+
+def transient(mesh, times=(0.0, 0.5, 1.0)) -> DynaTrans:
+    """DX = x (1 + t), DY = x^2 at each instant."""
+    num = numbering(mesh)
+    x = mesh.coords[:, 0]
+    values = np.array([np.column_stack([x * (1 + t), x**2]).ravel() for t in times])
+    return DynaTrans(
+        numbering=num,
+        times=np.array(times),
+        order=np.arange(1, len(times) + 1),
+        fields={"DEPL": values, "VITE": 2 * values},
+    )
+
+
+# -- PROJ_CHAMP -----------------------------------------------------------------
+
+
+def test_collocation_on_segments_and_coincident_nodes():
+    source = line([0.0, 0.5, 1.0])
+    target = line([0.25, 0.5, 0.9, 1.4])
+    result = transient(source)
+    projected = run(
+        FakeSession(),
+        "PROJ_CHAMP",
+        PROJECTION="OUI",
+        METHODE="AUTO",
+        RESULTAT=result,
+        MAILLAGE_1=source,
+        MAILLAGE_2=target,
+        TOUT_CHAM="OUI",
+        INST=0.5,
+        CRITERE="RELATIF",
+        PRECISION=1e-6,
+    )
+    assert isinstance(projected, DynaTrans) and list(projected.times) == [0.5]
+    assert list(projected.order) == [2]  # the source's order number
+    depl = projected.fields["DEPL"][0].reshape(-1, 2)
+    # DX linear: exact; DY = x^2 interpolated linearly on each segment
+    assert np.allclose(depl[:3, 0], 1.5 * np.array([0.25, 0.5, 0.9]))
+    assert depl[1, 1] == 0.25  # coincident node: the node's value
+    assert depl[0, 1] == pytest.approx(0.5 * 0.0 + 0.5 * 0.25)
+    # beyond the last cell: projected on the nearest point of the nearest cell
+    assert depl[3, 0] == pytest.approx(1.5 * 1.0)
+    assert np.allclose(projected.fields["VITE"], 2 * projected.fields["DEPL"])
+
+
+def test_distance_max_prol_vale_and_target_numbering():
+    source = line([0.0, 0.5, 1.0])
+    target = line([0.25, 1.4])
+    target_num = numbering(target, ("DX", "DY", "DZ"))
+    projected = run(
+        FakeSession(),
+        "PROJ_CHAMP",
+        PROJECTION="OUI",
+        METHODE="COLLOCATION",
+        RESULTAT=transient(source),
+        MAILLAGE_1=source,
+        MAILLAGE_2=target,
+        NOM_CHAM="DEPL",
+        NUME_DDL=target_num,
+        DISTANCE_MAX=0.1,
+        PROL_VALE=7.0,
+        VIS_A_VIS={"GROUP_MA_1": "LINE", "TOUT_2": "OUI"},
+    )
+    values = projected.fields["DEPL"][0].reshape(-1, 3)
+    assert projected.numbering is target_num and projected.fields.keys() == {"DEPL"}
+    assert values[0, 0] == pytest.approx(0.25) and values[0, 2] == 7.0  # no DZ in the source
+    assert np.all(values[1] == 7.0)  # 0.4 beyond DISTANCE_MAX
+
+
+def test_seg3_interpolation_is_exact_for_a_quadratic_field():
+    source = line([0.0, 0.5, 1.0], seg3=True)
+    target = line([0.1, 0.3, 0.8])
+    projected = run(
+        FakeSession(),
+        "PROJ_CHAMP",
+        PROJECTION="OUI",
+        METHODE="AUTO",
+        RESULTAT=transient(source),
+        MAILLAGE_1=source,
+        MAILLAGE_2=target,
+        NOM_CHAM="DEPL",
+        TOUT_ORDRE="OUI",
+    )
+    depl = projected.fields["DEPL"][0].reshape(-1, 2)
+    assert np.allclose(depl[:, 1], np.array([0.1, 0.3, 0.8]) ** 2, atol=1e-14)
+
+
+def test_nodal_field_projection():
+    source = line([0.0, 1.0])
+    field = NodalField(numbering=numbering(source), values=np.array([0.0, 1.0, 2.0, 3.0]))
+    target = line([0.5, 0.75])
+    projected = run(
+        FakeSession(),
+        "PROJ_CHAMP",
+        PROJECTION="OUI",
+        METHODE="AUTO",
+        CHAM_GD=field,
+        MAILLAGE_1=source,
+        MAILLAGE_2=target,
+    )
+    assert isinstance(projected, NodalField)
+    assert np.allclose(projected.values, [1.0, 2.0, 1.5, 2.5])
+
+
+def test_refusals():
+    session = FakeSession()
+    source = chain_mesh(3)
+    quad = Mesh(
+        coords=np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=float),
+        node_names=["A", "B", "C", "D"],
+        cell_names=["Q"],
+        cell_types=["QUAD4"],
+        cell_nodes=[(0, 1, 2, 3)],
+    )
+    inside = line([0.5])
+    field = NodalField(numbering=numbering(quad), values=np.zeros(8))
+    with pytest.raises(UnsupportedError, match="inside a QUAD4"):
+        run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="AUTO", CHAM_GD=field,
+            MAILLAGE_1=quad, MAILLAGE_2=inside)  # fmt: skip
+    field = NodalField(numbering=numbering(source), values=np.zeros(6))
+    with pytest.raises(UnsupportedError, match="NUAGE_DEG_0"):
+        run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="NUAGE_DEG_0", CHAM_GD=field,
+            MAILLAGE_1=source, MAILLAGE_2=inside, CHAM_NO_REFE=field)  # fmt: skip
+    with pytest.raises(CommandError, match="does not lie on mesh 1"):
+        run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="AUTO", CHAM_GD=field,
+            MAILLAGE_1=line([0.0, 1.0, 2.0]), MAILLAGE_2=inside)  # fmt: skip
+
+
+# -- LIRE_RESU --------------------------------------------------------------------
+
+
+def med_file(tmp_path, mesh, name, values, times, orders) -> Path:
+    path = tmp_path / "fort.81"
+    series = NodalSeries(name, COMPONENTS, values, np.asarray(times), np.asarray(orders))
+    write_med(path, mesh, "MAYA", [series])
+    return path
+
+
+def test_lire_resu_mode_meca(tmp_path):
+    mesh = line([0.0, 0.5, 1.0])
+    num = numbering(mesh)
+    shapes = np.array([[[0, 0], [1, 0], [2, 1]], [[0, 0], [1, 2], [0, -1]]], dtype=float)
+    path = med_file(tmp_path, mesh, "MODES___DEPL", shapes, [3.5, 7.25], [1, 2])
+    mass = AssembledMatrix(numbering=num, matrix=2.0 * np.eye(num.n_dofs), kind="MASS")
+    modes = run(
+        FakeSession({81: path}),
+        "LIRE_RESU",
+        FORMAT="MED",
+        UNITE=81,
+        TYPE_RESU="MODE_MECA",
+        FORMAT_MED={"NOM_CHAM": "DEPL", "NOM_RESU": "MODES"},
+        MATR_MASS=mass,
+        MAILLAGE=mesh,
+        TOUT_ORDRE="OUI",
+        PROL_ZERO="OUI",
+    )
+    assert list(modes.frequencies) == [3.5, 7.25]
+    assert np.array_equal(modes.shapes[:, 1], shapes[1].ravel())
+    assert modes.generalized_mass == pytest.approx([2.0 * 6, 2.0 * 6])
+    assert list(modes.parameters["NUME_MODE"]) == [1, 2]
+
+
+def test_lire_resu_dyna_trans_selection_and_errors(tmp_path):
+    mesh = line([0.0, 1.0])
+    values = np.arange(3 * 2 * 2, dtype=float).reshape(3, 2, 2)
+    path = med_file(tmp_path, mesh, "TRAN_DEPL", values, [0.0, 0.1, 0.2], [4, 5, 6])
+    session = FakeSession({81: path})
+    common = dict(FORMAT="MED", UNITE=81, TYPE_RESU="DYNA_TRANS", MAILLAGE=mesh, PROL_ZERO="OUI")
+    fmt = {"NOM_CHAM": "DEPL", "NOM_CHAM_MED": "TRAN_DEPL"}
+    tran = run(session, "LIRE_RESU", FORMAT_MED=fmt, INST=0.1, CRITERE="RELATIF",
+               PRECISION=1e-6, **common)  # fmt: skip
+    assert list(tran.times) == [0.1] and list(tran.order) == [1]  # renumbered from 1
+    assert np.array_equal(tran.fields["DEPL"][0], values[1].ravel())
+    tran = run(session, "LIRE_RESU", FORMAT_MED=fmt, NUME_ORDRE=[6, 4], **common)
+    assert list(tran.order) == [6, 4]
+    with pytest.raises(CommandError, match="no field 'NOPE'"):
+        run(session, "LIRE_RESU", FORMAT_MED={"NOM_CHAM": "DEPL", "NOM_CHAM_MED": "NOPE"},
+            TOUT_ORDRE="OUI", **common)  # fmt: skip
+    with pytest.raises(CommandError, match="no step"):
+        run(session, "LIRE_RESU", FORMAT_MED=fmt, INST=0.15, CRITERE="RELATIF",
+            PRECISION=1e-6, **common)  # fmt: skip
+    with pytest.raises(UnsupportedError, match="IDEAS"):
+        run(session, "LIRE_RESU", FORMAT="IDEAS", UNITE=19, TYPE_RESU="DYNA_TRANS",
+            MAILLAGE=mesh, TOUT_ORDRE="OUI", NOM_CHAM="DEPL")  # fmt: skip
+
+
+def test_sdll113a_passes(tmp_path):
+    export = WIDER / "sdll113a" / "sdll113a.export"
+    if not export.is_file():
+        pytest.skip("../shared/aster-corpus-wider is not available")
+    from asterlite.api import run as run_deck
+
+    result = run_deck(export, tmp_path / "out")
+    assert result.status == "PASS"
