@@ -177,20 +177,45 @@ def _coords_array(mc, mesh: Mesh):
 
 
 def _level_mesh(mc, name: str, coords, mesh: Mesh, cells: np.ndarray, dim: int):
+    """The cells of one level as a MEDCouplingUMesh, connectivity given at once:
+    per cell its medcoupling type code then its nodes in MED order (what
+    inserting the cells one by one builds, without a Python call per cell)."""
     umesh = mc.MEDCouplingUMesh(name, dim)
     umesh.setCoords(coords)
-    umesh.allocateCells(len(cells))
-    for cell in cells:
-        _, med_type, order = _ASTER_TO_MED[mesh.cell_types[cell]]
-        conn = list(mesh.cell_nodes[cell])
+    rows, index = [], [np.zeros(1, dtype=np.int64)]
+    offset = 0
+    for run in _runs_of_one_type(mesh, cells):
+        _, med_type, order = _ASTER_TO_MED[mesh.cell_types[run[0]]]
+        nodes = np.array([mesh.cell_nodes[c] for c in run], dtype=np.int64).reshape(len(run), -1)
         if order is not None:
-            med_conn = [0] * len(conn)
-            for aster_pos, med_pos in enumerate(order):
-                med_conn[med_pos] = conn[aster_pos]
-            conn = med_conn
-        umesh.insertNextCell(getattr(mc, med_type), [int(n) for n in conn])
-    umesh.finishInsertingCells()
+            reordered = np.empty_like(nodes)
+            reordered[:, list(order)] = nodes
+            nodes = reordered
+        width = nodes.shape[1] + 1
+        block = np.empty((len(run), width), dtype=np.int64)
+        block[:, 0] = getattr(mc, med_type)
+        block[:, 1:] = nodes
+        rows.append(block.ravel())
+        index.append(offset + width * np.arange(1, len(run) + 1, dtype=np.int64))
+        offset += width * len(run)
+    connectivity = np.concatenate(rows) if rows else np.zeros(0, dtype=np.int64)
+    umesh.setConnectivity(
+        mc.DataArrayInt64(connectivity), mc.DataArrayInt64(np.concatenate(index)), True
+    )
     return umesh
+
+
+def _runs_of_one_type(mesh: Mesh, cells: np.ndarray) -> list[list[int]]:
+    """``cells`` cut into consecutive runs of one cell type (and node count)."""
+    runs: list[list[int]] = []
+    previous = None
+    for cell in cells.tolist():
+        kind = (mesh.cell_types[cell], len(mesh.cell_nodes[cell]))
+        if kind != previous:
+            runs.append([])
+            previous = kind
+        runs[-1].append(cell)
+    return runs
 
 
 def med_mesh(mesh: Mesh, name: str):

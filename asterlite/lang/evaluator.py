@@ -25,12 +25,13 @@ from __future__ import annotations
 import itertools
 import operator
 from collections.abc import Callable, Mapping
-from time import monotonic
 
 from asterlite.errors import AsterliteError, DeckRuntimeError, Location
 from asterlite.lang import library
 from asterlite.lang import limits as guards
+from asterlite.lang.budget import StepBudget
 from asterlite.lang.calls import bind_arguments, contains_unknown
+from asterlite.lang.deck_function import DeckFunction
 from asterlite.lang.imports import ImportStatements
 from asterlite.lang.library import DEEP, DIRECT, STORE, DeckModule
 from asterlite.lang.limits import Limits
@@ -130,31 +131,6 @@ class Frame:
         self.module = module
 
 
-class DeckFunction(DeckCallable):
-    """A ``def`` or ``lambda`` of the deck; callable from the deck and from Python
-    (``map(f, values)``)."""
-
-    deck_unknown_policy = STORE  # the body itself handles Unknown arguments
-
-    def __init__(self, name, parameters, defaults, body, closure, evaluator, is_lambda=False):
-        self.name = name
-        self.parameters = parameters  # [str]
-        self.defaults = defaults  # {name: value}
-        self.body = body
-        self.closure = closure  # defining Frame
-        self.evaluator = evaluator
-        self.is_lambda = is_lambda
-
-    def deck_call(self, args: list, kwargs: dict, site: CallSite):
-        return self.evaluator.call_function(self, args, kwargs)
-
-    def __call__(self, *args, **kwargs):
-        return self.evaluator.call_function(self, list(args), kwargs)
-
-    def __repr__(self) -> str:
-        return f"<function {self.name}>"
-
-
 class Evaluator(ImportStatements):
     """Runs parsed modules in a shared namespace.
 
@@ -171,6 +147,7 @@ class Evaluator(ImportStatements):
         module_loader: Callable[[str], dict | None] | None = None,
         limits: Limits = Limits(),  # noqa: B008 - frozen dataclass, shared safely
         overrides: Mapping[str, object] | None = None,
+        compile_functions: bool = True,
     ):
         self.namespace = namespace
         self.overrides = dict(overrides or {})
@@ -178,13 +155,22 @@ class Evaluator(ImportStatements):
         self.sources = dict(filename_sources or {})  # filename -> text or lines, for excerpts
         self.module_loader = module_loader
         self.limits = limits
-        self.steps = 0  # loop iterations and function calls so far
-        self.depth = 0  # nested deck function calls
+        self.budget = StepBudget(limits)  # steps and call depth, shared with compiled code
+        self.compile_functions = compile_functions  # False: interpret every deck function
         self.modules: dict[str, DeckModule] = {}
         self._builtin_modules = library.builtin_modules(limits)
         self._structural = library.structural_ids(namespace)
-        seconds = limits.max_seconds
-        self._deadline = None if seconds is None else monotonic() + seconds
+        self._compiled_runtime = None  # helpers of compiled functions, built on first use
+
+    @property
+    def steps(self) -> int:
+        """Loop iterations and function calls so far."""
+        return self.budget.steps
+
+    @property
+    def depth(self) -> int:
+        """Nested deck function calls under way."""
+        return self.budget.depth
 
     # ------------------------------------------------------------ public API
 
@@ -214,11 +200,16 @@ class Evaluator(ImportStatements):
     def call_function(self, function: DeckFunction, args: list, kwargs: dict):
         """Call a deck function (from the deck or from Python)."""
         local_names = bind_arguments(function, args, kwargs)
+        if not function.compile_tried:
+            self._compile(function)
+        if function.direct is not None:  # its prologue takes the step and the depth
+            return function.direct(*[local_names[name] for name in function.parameters])
         self._step()
-        if self.depth >= self.limits.max_call_depth:
-            raise guards.exceeded("depth of nested function calls", self.limits.max_call_depth)
+        budget = self.budget
+        if budget.depth >= budget.max_depth:
+            budget.too_deep()
         frame = Frame(local_names, function.closure, function.closure.module)
-        self.depth += 1
+        budget.depth += 1
         try:
             if function.is_lambda:
                 return self.ev(function.body, frame)
@@ -226,8 +217,21 @@ class Evaluator(ImportStatements):
         except _Return as result:
             return result.value
         finally:
-            self.depth -= 1
+            budget.depth -= 1
         return None
+
+    def _compile(self, function: DeckFunction) -> None:
+        """Compile a deck function's body once, when this evaluator compiles and
+        the body stays within the compiled subset."""
+        function.compile_tried = True
+        if not self.compile_functions or function.evaluator is not self:
+            return
+        from asterlite.lang.compiler import compile_function
+
+        direct = compile_function(function, self)
+        if direct is not None:
+            function.direct = direct
+            function.arity = len(function.parameters)
 
     # ------------------------------------------------------------- machinery
 
@@ -250,11 +254,10 @@ class Evaluator(ImportStatements):
         return module.location(line, column)
 
     def _step(self) -> None:
-        self.steps += 1
-        if self.steps > self.limits.max_loop_iterations:
-            raise guards.exceeded("loop iterations and calls", self.limits.max_loop_iterations)
-        if self._deadline is not None and self.steps % 256 == 0 and monotonic() > self._deadline:
-            raise guards.exceeded("seconds of deck evaluation", self.limits.max_seconds)
+        budget = self.budget
+        budget.steps += 1
+        if budget.steps >= budget.next_check:
+            budget.check()
 
     def _fail(self, error: BaseException, node, frame: Frame):
         """Attach the node's location to a deck error, or convert a Python error."""
@@ -677,7 +680,14 @@ class Evaluator(ImportStatements):
         callee_node, arguments = node.children
         callee = self.ev(callee_node, frame)
         args, kwargs, keyword_locations, spread_unknown = self._arguments(arguments, frame)
-        if callee is Unknown or spread_unknown:
+        if spread_unknown:
+            return Unknown
+        return self.invoke(callee, args, kwargs, keyword_locations, node, frame, assigned_name)
+
+    def invoke(self, callee, args, kwargs, keyword_locations, node, frame, assigned_name=None):
+        """Call an evaluated callee with evaluated arguments (``node``, the call,
+        locates it for commands)."""
+        if callee is Unknown:
             return Unknown
         if isinstance(callee, DeckCallable):
             location = self.location(node, frame.module)
