@@ -149,7 +149,15 @@ def run(ctx, kw):
         pas_limi_rela=schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
         nb_poin_periode=int(schema_kw.get("NB_POIN_PERIODE", 50)),
         force_at_step_start=computes(ctx.session, "NEWMARK_FORCE_AT_STEP_START"),
+        adapt_v11=scheme == "ADAPT_ORDRE2" and computes(ctx.session, "ADAPT_ORDRE2_MDADAP"),
     )
+    if options.adapt_v11 and options.dt_max is None:
+        ctx.unsupported(
+            "ADAPT_ORDRE2 of code_aster 10-12 without PAS_MAXI (that version's default, "
+            "a twentieth of its stability step estimate)",
+            "SCHEMA_TEMPS",
+            kw,
+        )
     try:
         if film is not None:  # CHOC/LAME_FLUIDE of code_aster 10-14 decks
             refuse_with_film(ctx, kw, implicit, rotation, energy, driven)

@@ -33,7 +33,14 @@ from asterlite.legacy.base import (
     literal_text,
 )
 from asterlite.legacy.nodes import LegacyGroups, group_resolver, node_number_resolver
-from asterlite.legacy.version import NODE_NAMES_IN_TABLES, deck_version, files_version
+from asterlite.legacy.version import (
+    NODE_NAMES_IN_TABLES,
+    deck_version,
+    files_version,
+    pragma_needed,
+    pragma_version,
+    with_pragma,
+)
 
 LINE_LIMIT = 99
 INDENT = "    "
@@ -434,7 +441,21 @@ def port_text(
     table filters on node names into today's numbers."""
     if version is None:
         version = deck_version(text)
+    kept = pragma_version(text)  # a deck ported before keeps the version it states
+    text = with_pragma(text, None)
+    stated, why = pragma_needed(text, version)
     context = (unit_path, node_group, legacy_groups, version)
+    result = _port_in_todays_meaning(text, filename, context, node_number)
+    if stated:
+        return _stating_version(result, filename, version, why)
+    result.text = with_pragma(result.text, kept)
+    return result
+
+
+def _port_in_todays_meaning(text: str, filename: str, context, node_number) -> PortResult:
+    """``port_text`` of a deck the port brings to today's version: table filters
+    on node names become node numbers where the ported deck reads today's tables."""
+    version = context[3]
     if node_number is None or version not in NODE_NAMES_IN_TABLES:
         return _port(text, filename, context)
     original = text
@@ -449,6 +470,16 @@ def port_text(
         )
         return result
     result.notes[:0] = filter_notes
+    return result
+
+
+def _stating_version(result: PortResult, filename: str, version: int, why: str) -> PortResult:
+    """``result`` with the line that makes it run as code_aster ``version`` did
+    (:func:`asterlite.legacy.version.pragma_needed`)."""
+    result.text = with_pragma(result.text, version)
+    line = f"# asterlite: aster-version {version}"
+    what = f"the deck {why}, which no code_aster 17 keyword says"
+    result.notes.insert(0, Note(what, line, Location(str(filename), 1)))
     return result
 
 

@@ -15,10 +15,17 @@ Tables read from code_aster 15's catalogues (``ehmoussi/code_aster``,
 - DYNA_VIBRA: supports named by mesh nodes (``EXCIT/NOEUD``) and the
   code_aster 15 default scheme (``DIFF_CENTRE``; ``RUNGE_KUTTA_32`` today for
   a GENE transient, ``NEWMARK`` for a physical one). The scalar buckling law
-  of ``RELATION='FLAMBAGE'`` (``FNOR_CRIT``...) is refused: code_aster 17's
-  crushing functions do not reproduce it (sdnd105a: residual crushing
+  of ``RELATION='FLAMBAGE'`` (``FNOR_CRIT``...) stays as written: code_aster
+  17's crushing functions do not reproduce it (sdnd105a: residual crushing
   2.99863 in code_aster 15, 2.99972 with the functions of its code_aster 17
-  version).
+  version), so today's catalogue keeps its keywords hidden and asterlite runs
+  code_aster 15's law (asterlite.dynamics.laws.flambage);
+- ``OLD_BEHAVIOURS``: what code_aster 13 to 15 computed differently with the
+  same keywords (the NEWMARK right-hand side, POST_GENE_PHYS's static
+  correction, TEST_RESU's NUME_ORDRE on a tran_gene, POST_DYNA_MODA_T's
+  window), asked by the commands through :func:`computes`;
+- code_aster 15's generated object names in RECU_FONCTION/INTITULE
+  (:func:`relation_title`).
 """
 
 from __future__ import annotations
@@ -194,18 +201,8 @@ def _scheme_missing(kwargs: dict) -> bool:
     return scheme is None or "SCHEMA" not in scheme
 
 
-def _scalar_buckling(kwargs: dict) -> list:
-    return [
-        o
-        for o in occurrences(kwargs.get("COMPORTEMENT"))
-        if lit(o.get("RELATION")) == "FLAMBAGE" and "FNOR_CRIT" in o
-    ]
-
-
 def is_v15_dyna_vibra(kwargs: dict, env: Env) -> bool:
     """A DYNA_VIBRA written with COMPORTEMENT as code_aster 15 wrote it."""
-    if "COMPORTEMENT" in kwargs and _scalar_buckling(kwargs):
-        return True
     if has_entities(kwargs, env):
         return True
     return env.version <= VERSION and _scheme_missing(kwargs)
@@ -223,15 +220,8 @@ def translate_dyna_vibra(kwargs: dict, env: Env) -> Translation:
             f"SCHEMA_TEMPS=_F(SCHEMA={OLD_DEFAULT_SCHEME!r})",
             given,
         )
-    for occurrence in _scalar_buckling(out) if "COMPORTEMENT" in out else ():
-        env.unsupported(
-            f"COMPORTEMENT/FNOR_CRIT: the scalar buckling law of RELATION='FLAMBAGE' "
-            f"(code_aster {VERSION}: ENFO_FL transition, post-buckling stiffness derived from "
-            "FNOR_POST_FL) has no exact code_aster 17 form; give the crushing functions "
-            "FX, RIGI_NOR and AMOR_NOR of DEFI_FONCTION(NOM_PARA='DX')",
-            occurrence,
-            "FNOR_CRIT",
-        )
+    # the scalar buckling law (FNOR_CRIT...) stays as written: today's catalogue keeps
+    # its keywords hidden and asterlite runs code_aster 15's law (laws/flambage.py)
     out = translate_entities(out, env)
     return Translation(env.command, out, env.notes)
 
@@ -335,3 +325,69 @@ def _all(value) -> list:
         return occurrences(value)
     except Exception:  # a factor keyword given as a variable
         return []
+
+
+# ------------------------------------------------- what code_aster 13 to 15 computed
+
+# Behaviours that changed results after code_aster 15, read from its sources
+# (ehmoussi/code_aster, 2020) against today's (ZOHAIUB/code_aster): behaviour ->
+# (first, last) version that computed it. The commands ask :func:`computes`.
+OLD_BEHAVIOURS = {
+    # DYNA_VIBRA GENE NEWMARK (intnewm, since 13.0): the right-hand side of the step
+    # t_n -> t_n+1 took the forces of t_n, evaluated after the previous step's update;
+    # code_aster 17 evaluates the external force at t_n+1
+    "NEWMARK_FORCE_AT_STEP_START": (13, 15),
+    # POST_GENE_PHYS (since 13.0): the static correction flag was read from the 7th
+    # slot of the result's .DESC (dismdy) while DYNA_VIBRA set the 5th (mdrecf), so
+    # DEPL/VITE/ACCE came without the correction of MODE_CORR; the correction vectors
+    # existing (.IPSD) made the result count as multi-supported, so *_ABSOLU fields
+    # had the correction added as the support motion
+    "POST_GENE_PHYS_RELATIVE_WITHOUT_CORR_STAT": (13, 15),
+    # TEST_RESU/GENE on a tran_gene (trgene, the same since 2005): NUME_ORDRE=n tested
+    # the n-th archived instant (.DISC(n)); code_aster 17 looks the order number up
+    "TEST_RESU_GENE_NUME_ORDRE_AS_POSITION": (0, 15),
+    # POST_DYNA_MODA_T/CHOC OPTION='USURE' (statch): the window INST_INIT..INST_FIN
+    # became archive indices by truncation, int((t - t0)/dt); code_aster 17's pochoc
+    # keeps the instants from the first one at or after INST_INIT
+    "POST_DYNA_MODA_T_WINDOW_BY_TRUNCATION": (0, 15),
+    # DYNA_TRAN_MODAL/DYNA_VIBRA ADAPT_ORDRE2 (mdadap, until the dtm rewrite of 13.0):
+    # growth after five calm steps, archiving at the nearest computed step on a
+    # PAS_MAXI x PAS_ARCH grid (asterlite.dynamics.scheme_adapt_ordre2_v11)
+    "ADAPT_ORDRE2_MDADAP": (0, 12),
+}
+
+
+def computes(session, behaviour: str) -> bool:
+    """Whether the run's decks were written for a version that computed ``behaviour``."""
+    from asterlite.legacy.version import behaviour_version
+
+    first, last = OLD_BEHAVIOURS[behaviour]
+    return session is not None and first <= behaviour_version(session, behaviour) <= last
+
+
+# ------------------------------------------------ names code_aster 15 generated
+
+# RECU_FONCTION/INTITULE of a RELA_EFFO_DEPL/_VITE nonlinearity: code_aster 15 titled
+# it <node name:8><component:8><function's object name> ("N03     DX      0000000c");
+# code_aster 17 gives the node's number and the function's deck name
+TITLE_FIELDS = (8, 8)
+
+
+def relation_title(title: str, node_index: dict, generated) -> tuple[str | None, str]:
+    """Today's title of the nonlinearity a code_aster 15 INTITULE names, or
+    (None, why) when it is not in that form or names what cannot be followed.
+    ``node_index``: mesh node name -> 0-based index; ``generated``: the session's
+    :class:`asterlite.runtime.v15_names.GeneratedNames`."""
+    from asterlite.runtime.v15_names import GENERATED_NAME
+
+    node_width, component_width = TITLE_FIELDS
+    node = title[:node_width].strip()
+    component = title[node_width : node_width + component_width].strip()
+    function = title[node_width + component_width :].strip()
+    if node not in node_index or not component or not GENERATED_NAME.match(function):
+        return None, ""
+    concept, why = generated.lookup(function) if generated is not None else (None, "")
+    name = getattr(concept, "name", None)
+    if not name:
+        return None, f"{function!r} is a name code_aster 15 generated: {why or 'not a function'}"
+    return f"{node_index[node] + 1:<{node_width}}{component:<{component_width}}{name}", ""

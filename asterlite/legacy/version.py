@@ -7,6 +7,13 @@ as old as its oldest marker; a deck with none is of today's version
 (:data:`CURRENT`). ``asterlite run --aster-version N`` overrides the
 detection for a whole run (:func:`session_version`).
 
+A line ``# asterlite: aster-version N`` (written by ``asterlite port``,
+:func:`pragma_needed`) states the version of the behaviours no code_aster 17
+keyword expresses (:data:`INEXPRESSIBLE`): for those it wins over the
+markers (:func:`behaviour_version`). Everything else in a ported deck is
+already today's syntax and meaning, so the rest of the run follows the
+markers (reading it all as version N would translate it a second time).
+
 Markers come from code_aster's own catalogues: code_aster 15 is the
 ``ehmoussi/code_aster`` tree (2020), code_aster 17 today's; the older ones
 from the legacy translations (:mod:`asterlite.legacy.dyna`,
@@ -96,9 +103,28 @@ def _text_version(text: str) -> int | None:
     return None
 
 
+PRAGMA = re.compile(r"^[ \t]*#[ \t]*asterlite:[ \t]*aster-version[ \t]+(\d+)[ \t]*$", re.M)
+
+
+def pragma_version(text: str) -> int | None:
+    """The version a ``# asterlite: aster-version N`` line states, or None."""
+    found = PRAGMA.search(text)
+    return int(found.group(1)) if found else None
+
+
+def with_pragma(text: str, version: int | None) -> str:
+    """``text`` with its version line replaced by one stating ``version``
+    (none when ``version`` is None), as the first line."""
+    text = PRAGMA.sub("", text).lstrip("\n") if PRAGMA.search(text) else text
+    if version is None:
+        return text
+    return f"# asterlite: aster-version {version}\n{text}"
+
+
 @lru_cache(maxsize=64)
 def deck_version(text: str) -> int:
-    """The code_aster major version the deck ``text`` was written for."""
+    """The code_aster major version the deck ``text`` was written for (its
+    markers; a version line speaks for some behaviours only, :func:`behaviour_version`)."""
     from asterlite.errors import AsterliteError
 
     found = [CURRENT]
@@ -128,6 +154,33 @@ def files_version(paths) -> int:
     return min(versions)
 
 
+def files_stated_version(paths) -> int | None:
+    """The oldest version the run's deck files state on a version line, or None."""
+    stated = []
+    for path in paths:
+        try:
+            found = pragma_version(Path(path).read_text(encoding="utf-8", errors="replace"))
+        except OSError:
+            continue
+        if found is not None:
+            stated.append(found)
+    return min(stated) if stated else None
+
+
+def behaviour_version(session, behaviour: str) -> int:
+    """The version whose meaning of ``behaviour`` the run follows:
+    ``--aster-version`` if given, else a version line's for the behaviours no
+    code_aster 17 keyword expresses, else the detected version."""
+    if getattr(session, "aster_version", None) or behaviour not in INEXPRESSIBLE:
+        return session_version(session)
+    stated = getattr(session, "_stated_version", False)
+    if stated is False:
+        run = getattr(session, "run", None)
+        stated = files_stated_version(getattr(run, "deck_files", ()))
+        session._stated_version = stated
+    return session_version(session) if stated is None else stated
+
+
 def session_version(session) -> int:
     """The version a run's decks are read in: ``--aster-version`` if given, else detected."""
     given = getattr(session, "aster_version", None)
@@ -155,3 +208,31 @@ NODE_NAMES_IN_TABLES = tuple(range(10, 16))
 def tables_name_nodes(session) -> bool:
     """True when the run's tables give nodes by name (code_aster 15 decks)."""
     return session is not None and session_version(session) in NODE_NAMES_IN_TABLES
+
+
+# ------------------------------------------------------------ what port cannot write
+
+# behaviours of asterlite.legacy.v15.OLD_BEHAVIOURS that no code_aster 17 keyword
+# expresses (the ported deck keeps them only by stating its version), each with
+# the deck text that makes a deck rely on it
+INEXPRESSIBLE = {
+    "ADAPT_ORDRE2_MDADAP": re.compile(r"['\"]ADAPT(_ORDRE2)?['\"]"),
+    # POST_DYNA_MODA_T/CHOC OPTION='USURE': its window INST_INIT..INST_FIN cut by
+    # truncation on the archive (today's instants from INST_INIT on)
+    "POST_DYNA_MODA_T_WINDOW_BY_TRUNCATION": re.compile(r"OPTION\s*=\s*['\"]USURE['\"]"),
+}
+
+
+def pragma_needed(text: str, version: int) -> tuple[bool, str]:
+    """Whether the port of ``text`` (a deck of ``version``) must state its
+    version to run as that version ran it, and why."""
+    from asterlite.legacy.v15 import OLD_BEHAVIOURS
+
+    def differs(name: str) -> bool:
+        first, last = OLD_BEHAVIOURS[name]
+        return (first <= version <= last) != (first <= CURRENT <= last)
+
+    relied = [n for n, form in INEXPRESSIBLE.items() if differs(n) and form.search(text)]
+    if not relied:
+        return False, ""
+    return True, f"relies on code_aster {version}'s {', '.join(relied)}"

@@ -1,0 +1,225 @@
+"""ADAPT_ORDRE2 as code_aster 10 to 12 ran it (its routine mdadap, replaced
+in code_aster 13 by intadapt2, :mod:`asterlite.dynamics.scheme_adapt_ordre2`).
+Decks of those versions select it through
+``asterlite.legacy.v15.OLD_BEHAVIOURS["ADAPT_ORDRE2_MDADAP"]``.
+
+The step itself is the same leapfrog: with dt' the previous accepted step
+(0 on the first step) and dt the trial step,
+
+    v_mid' = v_mid + a_n (dt' + dt)/2      q_{n+1} = q_n + v_mid' dt
+    v_{n+1} = v_mid' + a_n dt/2            a_{n+1} = acceleration(q_{n+1}, v_{n+1})
+
+What differs from code_aster 17 is the control around it:
+
+- err = NB_POIN_PERIODE f dt (f: the apparent frequency of the trial,
+  :func:`adapt_control.apparent_frequency`); while err > 1, the step is
+  divided by COEF_DIVI_PAS and retried, at most NMAX_ITER_PAS trials. When
+  the last trial still fails the step is divided once more after it was
+  computed: the state is that of the trial, the clock moves by the divided
+  step (as code_aster did).
+- calm steps (err < 0.75) are counted; the sixth calm step in a row and
+  every calm step after it multiplies the next step by COEF_MULT_PAS (at
+  most PAS_MAXI); any other step resets the count.
+- archiving: the archive times are t0 + k PAS_MAXI PAS_ARCH; a step that
+  brackets one archives whichever of its two ends is nearer (the step is
+  never shortened to land on it). At the end, the slots left of the
+  int((t_end - t0)/spacing) + 1 (+1 if a remainder) planned are filled with
+  the final state.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from asterlite.dynamics import adapt_control as A
+from asterlite.dynamics import kernel as K
+from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
+from asterlite.errors import NumericalError
+
+Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, V_MID, V_MID_TRIAL, RESIDUAL = range(7)
+VECTOR_ROWS = 7
+# scalars after adapt_control's (whose S_KEPT_AT_MAX_TRIALS the driver reads)
+S_PREVIOUS_STEP, S_CALM, S_NEXT_ARCHIVE, S_SPACING, S_SLOTS = range(A.N_SCALARS, A.N_SCALARS + 5)
+N_SCALARS = A.N_SCALARS + 5
+CALM_BEFORE_GROWTH = 5  # mdadap's NPAS: growth once five calm steps have passed
+CALM_ERROR = 0.75
+MACHINE_EPS = np.finfo(np.float64).eps
+
+
+def prepare(system, dt, options):
+    """PAS_MAXI is required: without it code_aster 10-12 took a twentieth of
+    the stability step of mdptem, which asterlite does not compute."""
+    if options.dt_max is None:
+        raise NumericalError(
+            "ADAPT_ORDRE2 of code_aster 10-12 without PAS_MAXI (its default was a "
+            "twentieth of that version's stability step estimate)"
+        )
+    base, _ = A.control_scalars(dt, options)
+    scalars = np.zeros(N_SCALARS)
+    scalars[: A.N_SCALARS] = base
+    rows = np.zeros((VECTOR_ROWS, system.n_modes))
+    rows[V_MIN] = 1.0e-15
+    return (rows, scalars, np.zeros((1, 1))), True
+
+
+@njit(cache=True)
+def planned_slots(t0, t_end, spacing):
+    """Archive slots code_aster allocated: the instants t0 + k spacing up to
+    t_end, plus one when t_end lies beyond the last."""
+    slots = int((t_end - t0) / spacing) + 1
+    if t_end - (t0 + (slots - 1) * spacing) >= MACHINE_EPS:
+        slots += 1
+    return slots
+
+
+@njit(cache=True)
+def start(clock, state, rows, scalars, pas_arch):
+    scalars[A.S_FIRST_CALL] = 0.0
+    copy_into(rows[V_MID], state[1])
+    scalars[S_PREVIOUS_STEP] = 0.0
+    scalars[S_CALM] = 0.0
+    spacing = scalars[A.S_DTMAX] * max(pas_arch, 1)
+    scalars[S_SPACING] = spacing
+    scalars[S_NEXT_ARCHIVE] = clock[K.C_TIME] + spacing
+    scalars[S_SLOTS] = planned_slots(clock[K.C_TIME], clock[K.C_END], spacing)
+
+
+@njit(cache=True)
+def trial(t, dt, state, rows, scalars, model):
+    """One trial of the step ``dt`` from ``t`` into the trial rows: the index
+    of a shock that diverged (>= 0), -2 for a non-finite acceleration, else -1."""
+    q, v, a, f, vint, vint_save, work = state
+    n = q.shape[0]
+    q2, v2, a2 = rows[Q_TRIAL], rows[V_TRIAL], rows[A_TRIAL]
+    v_mid, v_mid2 = rows[V_MID], rows[V_MID_TRIAL]
+    p = 0.5 * (scalars[S_PREVIOUS_STEP] + dt)
+    for i in range(n):
+        v_mid2[i] = v_mid[i] + a[i] * p
+        q2[i] = q[i] + dt * v_mid2[i]
+        v2[i] = v_mid2[i] + 0.5 * dt * a[i]
+    copy_into(vint, vint_save)
+    shock = state_acceleration(t + dt, q2, v2, a2, f, rows[RESIDUAL], vint, work, model)
+    if shock >= 0:
+        return shock
+    if not all_finite(a2):
+        return -2
+    return -1
+
+
+@njit(cache=True)
+def store(clock, counters, archive, t, step, q, v, a, vint, dt):
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
+    n = counters[K.K_ARCHIVED]
+    K.archive(
+        n, t, step, q, v, a, vint, dt, counters[K.K_REJECTED],
+        out_t, out_order, out_q, out_v, out_a, out_vint, out_info,
+    )  # fmt: skip
+    counters[K.K_ARCHIVED] = n + 1
+
+
+@njit(cache=True)
+def archive_nearest(clock, counters, state, rows, scalars, archive, t_new, dt_next):
+    """mdadap's archiving: the step [t, t_new] bracketing the next archive
+    time stores its nearer end (the start: the state before the step)."""
+    t = clock[K.C_TIME]
+    target = scalars[S_NEXT_ARCHIVE]
+    if not (t <= target and t_new >= target):
+        return
+    step = counters[K.K_STEP]
+    if t_new - target <= target - t:
+        store(clock, counters, archive, t_new, step, rows[Q_TRIAL], rows[V_TRIAL],
+              rows[A_TRIAL], state[4], dt_next)  # fmt: skip
+    else:
+        store(clock, counters, archive, t, step - 1, state[0], state[1], state[2],
+              state[5], dt_next)  # fmt: skip
+    scalars[S_NEXT_ARCHIVE] = target + scalars[S_SPACING]
+
+
+@njit(cache=True)
+def update_reference_velocities(rows, scalars):
+    """VITE_MIN from the mid-step velocity of the accepted step."""
+    A.update_reference_velocities(rows[V_MID_TRIAL], rows[V_MIN], scalars)
+
+
+@njit(cache=True)
+def take_step(clock, counters, state, rows, scalars, model, archive):
+    """One accepted step (trials included); a kernel status."""
+    t = clock[K.C_TIME]
+    t_end = clock[K.C_END]
+    dt = clock[K.C_STEP]
+    if t + dt > t_end:
+        dt = t_end - t
+    max_trials = int(round(scalars[A.S_MAX_TRIALS]))
+    err = 100.0
+    trials = 0
+    copy_into(state[5], state[4])  # the shock states of the step's start
+    while err > 1.0 and trials < max_trials:
+        tried = dt
+        failed = trial(t, tried, state, rows, scalars, model)
+        if failed >= 0:
+            return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
+        if failed == -2:
+            K.expose_trial(state[0], state[1], state[2], rows[Q_TRIAL], rows[V_TRIAL],
+                           rows[A_TRIAL])  # fmt: skip
+            return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
+        freq = A.apparent_frequency(tried, state[0], rows[Q_TRIAL], state[2], rows[A_TRIAL],
+                                    rows[V_MIN])  # fmt: skip
+        err = scalars[A.S_POINTS] * freq * tried
+        if err > 1.0:
+            dt = dt / scalars[A.S_DIVI]
+        if dt <= scalars[A.S_DTMIN] and abs(t_end - (t + dt)) > MACHINE_EPS:
+            return K.record_failure(clock, counters, K.STATUS_STEP_UNDERFLOW, -1, dt)
+        trials += 1
+    if err > 1.0:
+        scalars[A.S_KEPT_AT_MAX_TRIALS] += 1.0
+    counters[K.K_REJECTED] += trials - 1
+    scalars[S_PREVIOUS_STEP] = dt
+    t_new = t + dt
+    dt_used = dt
+    if err < CALM_ERROR:
+        if scalars[S_CALM] == CALM_BEFORE_GROWTH:
+            dt = min(scalars[A.S_MULT] * dt, scalars[A.S_DTMAX])
+            scalars[S_CALM] = CALM_BEFORE_GROWTH - 1
+        scalars[S_CALM] += 1.0
+    else:
+        scalars[S_CALM] = 0.0
+    if t + dt > t_end:  # mdadap clips against the step's start here
+        dt = t_end - t
+    counters[K.K_STEP] += 1
+    archive_nearest(clock, counters, state, rows, scalars, archive, t_new, dt)
+    update_reference_velocities(rows, scalars)
+    clock[K.C_TIME] = t_new
+    clock[K.C_STEP] = dt
+    clock[K.C_MIN_STEP] = min(clock[K.C_MIN_STEP], dt_used)
+    clock[K.C_MAX_STEP] = max(clock[K.C_MAX_STEP], dt_used)
+    copy_into(state[0], rows[Q_TRIAL])
+    copy_into(state[1], rows[V_TRIAL])
+    copy_into(state[2], rows[A_TRIAL])
+    copy_into(rows[V_MID], rows[V_MID_TRIAL])
+    return K.STATUS_DONE
+
+
+@njit(cache=True)
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The whole time loop (ARCHIVAGE/LIST_INST and INST are not read: code_aster
+    10-12's ADAPT archived on its own grid); resumable after any pause."""
+    rows, scalars = memory[0], memory[1]
+    out_t = archive[0]
+    if scalars[A.S_FIRST_CALL] == 1.0:
+        start(clock, state, rows, scalars, pas_arch)
+    while clock[K.C_TIME] < clock[K.C_END]:
+        paused = K.pause_status(counters, out_t)
+        if paused:
+            return paused
+        if not loads_ready(clock, model[2]):
+            return K.STATUS_LOADS
+        status = take_step(clock, counters, state, rows, scalars, model, archive)
+        if status != K.STATUS_DONE:
+            return status
+    while scalars[S_SLOTS] > counters[K.K_ARCHIVED]:  # the unused slots: the final state
+        if counters[K.K_ARCHIVED] >= out_t.shape[0]:
+            return K.STATUS_FULL
+        store(clock, counters, archive, clock[K.C_TIME], counters[K.K_STEP], state[0],
+              state[1], state[2], state[4], clock[K.C_STEP])  # fmt: skip
+    return K.STATUS_DONE
