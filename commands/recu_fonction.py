@@ -188,6 +188,10 @@ def find_shock(ctx, kw, result):
         wanted = str(kw["INTITULE"]).strip()
         matches = [s for s in result.shocks if s.name.strip() == wanted]
         key = "INTITULE"
+        if not matches:  # one occurrence over several cells: each shock bears its title
+            matches = [s for s in result.shocks if occurrence_title(s.name) == wanted]
+            if matches and kw.get("NOEUD_CHOC") is not None:
+                matches = [first_titled_on_node(ctx, kw, matches[0])]
         if not matches:  # code_aster 15's form of a relation's title
             matches = shocks_titled_as_v15(ctx, kw, result, mesh)
     else:
@@ -207,6 +211,28 @@ def find_shock(ctx, kw, result):
         known = ", ".join(f"{s.name} ({s.node_1})" for s in result.shocks) or "none"
         ctx.error(f"no localized nonlinearity matches (known: {known})", key, kw)
     return matches[0]
+
+
+def occurrence_title(name: str) -> str | None:
+    """The INTITULE of the DYNA_VIBRA occurrence a shock came from when that
+    occurrence made several (asterlite names them TITLE_1, TITLE_2...)."""
+    title, _, number = name.strip().rpartition("_")
+    return title if title and number.isdigit() else None
+
+
+def first_titled_on_node(ctx, kw, shock):
+    """code_aster gives every shock of a multi-cell occurrence the occurrence's
+    INTITULE and, with NOEUD_CHOC, takes the first of them, which must have
+    that node as its node 1 or node 2 (focrch)."""
+    node = str(kw["NOEUD_CHOC"])
+    if node not in (shock.node_1, shock.node_2):
+        ctx.error(
+            f"node {node!r} is not a node of the first shock titled {kw['INTITULE']!r} "
+            f"({shock.node_1}, {shock.node_2})",
+            "NOEUD_CHOC",
+            kw,
+        )
+    return shock
 
 
 def shocks_titled_as_v15(ctx, kw, result, mesh) -> list:
