@@ -1,4 +1,4 @@
-"""Command-line interface: ``asterlite run | check | corpus | sweep | plot | converge``.
+"""Command-line interface: ``asterlite run | check | corpus | sweep | plot | converge | warmup``.
 
 Exit status: 0 when every TEST_* check is OK, or the deck ran to its end
 without any check (DONE), or ``check`` finds no error; 1 when a check is
@@ -262,6 +262,12 @@ def _port(args) -> int:
     return 2 if result.skipped else 0
 
 
+def _warmup(args) -> int:
+    from asterlite.dynamics import warmup
+
+    return warmup.main(jobs=args.jobs, verbose=args.verbose)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="asterlite",
@@ -414,6 +420,16 @@ def build_parser() -> argparse.ArgumentParser:
     sens.add_argument("-o", "--output", help="folder (default asterlite-out/<deck>-sensitivity)")
     sens.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
     sens.set_defaults(handler=_sensitivity)
+
+    warm = commands.add_parser(
+        "warmup",
+        help="compile every time-loop kernel now (once per install), so that no run waits for it",
+    )
+    warm.add_argument(
+        "-j", "--jobs", type=int, default=None, help="worker processes (default: one per core)"
+    )
+    warm.add_argument("-v", "--verbose", action="store_true", help="each kernel's compile time")
+    warm.set_defaults(handler=_warmup)
 
     plot = commands.add_parser("plot", help="plot a saved transient result (HDF5)")
     plot.add_argument("result", help="HDF5 result file")

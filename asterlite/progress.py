@@ -5,6 +5,11 @@ They draw on standard error only when it is a terminal, and only for work
 lasting more than ``DELAY`` seconds, so logs, pipes, tests and short runs
 see nothing. ``enable(False)`` (``asterlite run --no-progress``) or the
 environment variable ``ASTERLITE_PROGRESS=0`` switch them off.
+
+Compile notices are another matter: whenever numba compiles a kernel (once
+per install, ``asterlite warmup`` does it ahead of time) one line on
+standard error says so, with the time it usually takes, and one more
+when it is done, whatever the terminal (see :func:`kernel`).
 """
 
 from __future__ import annotations
@@ -12,6 +17,7 @@ from __future__ import annotations
 import os
 import sys
 import time
+from contextlib import contextmanager
 
 DELAY = 1.0  # seconds before a bar appears
 _enabled: bool | None = None  # None: decide from the terminal
@@ -103,3 +109,106 @@ def time_bar(label: str, t0: float, t_end: float):
 
 def count_bar(label: str, total: int):
     return CountBar(label, total) if wanted() else NoBar()
+
+
+# --- compile notices -------------------------------------------------------
+
+
+class CompileNotice:
+    """One block of kernel work (:func:`kernel`): its name, the usual time
+    to compile it and the wall seconds numba spent compiling inside it."""
+
+    def __init__(self, name: str, estimate: float | None):
+        self.name = name
+        self.estimate = estimate
+        self.seconds = 0.0
+        self.announced = False
+
+
+_blocks: list[CompileNotice] = []  # the kernel blocks in progress, innermost last
+_compile = {"depth": 0, "started": 0.0, "cpu": 0.0, "generic": None, "total": 0.0, "cpu_total": 0.0}
+_listening = False
+# where notices go (sys.stderr when None; tests and warmup may redirect)
+notice_stream = None
+
+
+def _say(text: str) -> None:
+    print(f"asterlite: {text}", file=notice_stream or sys.stderr, flush=True)
+
+
+@contextmanager
+def kernel(name: str, estimate: float | None = None):
+    """Run a block that calls the compiled kernel ``name`` (e.g. "NEWMARK"):
+    if numba has to compile anything inside it, one line says so before the
+    wait ("compiling the NEWMARK kernel, once per install: ~20 s") and one
+    after it. Yields the :class:`CompileNotice`, whose ``seconds`` is the
+    wall time spent compiling (what a timing of the block should leave out)."""
+    listen_to_compiles()
+    notice = CompileNotice(name, estimate)
+    _blocks.append(notice)
+    try:
+        yield notice
+    finally:
+        _blocks.pop()
+        if notice.announced:
+            _say(
+                f"compiled the {name} kernel in {notice.seconds:.1f} s "
+                "(kept in numba's cache: later runs load it)"
+            )
+
+
+def compiled_seconds(cpu: bool = False) -> float:
+    """Wall (or CPU) seconds this process has spent compiling kernels so far."""
+    return _compile["cpu_total" if cpu else "total"]
+
+
+def listen_to_compiles() -> None:
+    """Follow numba's compile events (once per process; a no-op without numba)."""
+    global _listening
+    if _listening:
+        return
+    try:
+        from numba.core import event
+    except ImportError:
+        return
+
+    class CompileListener(event.Listener):
+        def on_start(self, event_):
+            _compile_started(event_.data.get("dispatcher"))
+
+        def on_end(self, event_):
+            _compile_ended()
+
+    event.register("numba:compile", CompileListener())
+    _listening = True
+
+
+def _compile_started(dispatcher) -> None:
+    _compile["depth"] += 1
+    if _compile["depth"] > 1:  # a callee compiled for the outer function
+        return
+    _compile["started"], _compile["cpu"] = time.perf_counter(), time.process_time()
+    notice = _blocks[-1] if _blocks else None
+    if notice is None:  # a compiled function called outside any kernel block
+        function = getattr(dispatcher, "py_func", None)
+        name = getattr(function, "__module__", "?") + "." + getattr(function, "__qualname__", "?")
+        _compile["generic"] = name
+        _say(f"compiling {name}, once per install")
+    elif not notice.announced:
+        notice.announced = True
+        usual = f": ~{notice.estimate:.0f} s" if notice.estimate else ""
+        _say(f"compiling the {notice.name} kernel, once per install{usual}")
+
+
+def _compile_ended() -> None:
+    _compile["depth"] -= 1
+    if _compile["depth"] > 0:
+        return
+    spent = time.perf_counter() - _compile["started"]
+    _compile["total"] += spent
+    _compile["cpu_total"] += time.process_time() - _compile["cpu"]
+    if _blocks:
+        _blocks[-1].seconds += spent
+    elif _compile["generic"]:
+        _say(f"compiled {_compile['generic']} in {spent:.1f} s")
+    _compile["generic"] = None

@@ -15,6 +15,7 @@ from asterlite.dynamics import (
     diagnosis,
     scheme_adapt_ordre1,
     scheme_adapt_ordre2,
+    scheme_adapt_ordre2_v11,
     scheme_devoge,
     scheme_diff_centre,
     scheme_newmark,
@@ -66,6 +67,12 @@ class SchemeOptions:
     coef_divi_pas: float = 1.3333334
     pas_limi_rela: float = 1.0e-6
     nb_poin_periode: int = 50
+    # NEWMARK with the forces of the step's start (code_aster 13-15 decks:
+    # asterlite.legacy.v15.OLD_BEHAVIOURS)
+    force_at_step_start: bool = False
+    # ADAPT_ORDRE2 as code_aster 10-12 ran it (mdadap: scheme_adapt_ordre2_v11;
+    # asterlite.legacy.v15.OLD_BEHAVIOURS["ADAPT_ORDRE2_MDADAP"])
+    adapt_v11: bool = False
     # asterlite's guards (no keyword): steps an adaptive run may take, bytes
     # the archive may hold; None: StepBudget's defaults
     max_steps: int | None = None
@@ -116,13 +123,100 @@ def integrate(
     as ``RunResult.energy``. ``implicit_shocks``: TRAITEMENT_NONL='IMPLICITE'
     (:mod:`asterlite.dynamics.implicit_shocks`). ``load_labels``: how the
     deck names each excitation row (``EXCIT[2]``...), for the message of a
-    load that becomes non-finite; the error's ``path`` then names it."""
+    load that becomes non-finite; the error's ``path`` then names it.
+
+    A kernel numba has not compiled yet (``asterlite warmup`` compiles them
+    all) is announced on standard error; ``info['compile_seconds']`` is the
+    time compiling took, left out of ``info['integration_seconds']``."""
+    name = loop_kernel(scheme, system, shocks, specialised, rotation, implicit_shocks)
+    with progress.kernel(name, compile_estimate(name)) as notice:
+        return run_kernel(
+            notice, system, shocks, excitation, scheme, q0, v0, t0, t_end, dt, instants,
+            pas_arch, options, specialised, rotation, label, energy, implicit_shocks, load_labels,
+        )  # fmt: skip
+
+
+# About what compiling each kernel takes on a quiet 2-core machine (issue 16
+# measured 15-40 s per kernel; docs/performance.md, "Cold start"): the
+# notice's estimate, nothing depends on it.
+COMPILE_SECONDS = {
+    "DIFF_CENTRE": 30.0,
+    "DIFF_CENTRE (full matrices)": 30.0,
+    "DIFF_CENTRE (general path)": 25.0,
+    "NEWMARK": 20.0,
+    "NEWMARK (general path)": 20.0,
+    "TRBDF2": 20.0,
+    "DEVOGE": 40.0,
+    "RUNGE_KUTTA": 20.0,
+    "ADAPT_ORDRE1": 20.0,
+    "ADAPT_ORDRE2": 20.0,
+    "VITESSE_VARIABLE": 60.0,
+    "TRAITEMENT_NONL='IMPLICITE'": 60.0,
+}
+
+
+def loop_kernel(scheme, system, shocks, specialised=True, rotation=None, implicit=False) -> str:
+    """The name of the compiled loop a run takes: its scheme, or the path
+    shared by every scheme (variable rotation speed, implicit shocks), and
+    DIFF_CENTRE's variants (specialised loop on diagonal or full matrices,
+    general path for the relations of laws/)."""
+    if rotation is not None:
+        return "VITESSE_VARIABLE"
+    if implicit and shocks.count:
+        return "TRAITEMENT_NONL='IMPLICITE'"
+    if SCHEMES[scheme] is scheme_diff_centre:
+        if not specialised or shocks.has_laws:
+            return "DIFF_CENTRE (general path)"
+        return "DIFF_CENTRE" if system.diagonal else "DIFF_CENTRE (full matrices)"
+    if scheme in LOCAL_FRAME_LOOPS and (not specialised or shocks.has_laws):
+        return f"{scheme} (general path)"
+    return "RUNGE_KUTTA" if scheme.startswith("RUNGE_KUTTA") else scheme
+
+
+# the kernels of DIFF_CENTRE's specialised run_loop (the model's 4th bundle)
+SPECIALISED_LOOPS = ("DIFF_CENTRE", "DIFF_CENTRE (full matrices)")
+# schemes whose run_loop takes the shocks in their local frames (the model's
+# 4th bundle: shapes, rest positions, support-motion scratch; the same types
+# for diagonal and full matrices) and keeps the general path as general_loop
+LOCAL_FRAME_LOOPS = ("NEWMARK",)
+
+
+def compile_estimate(name: str) -> float | None:
+    return COMPILE_SECONDS.get(name)
+
+
+def run_kernel(
+    notice,
+    system: LinearSystem,
+    shocks: ShockSet,
+    excitation: Excitation,
+    scheme: str,
+    q0: np.ndarray,
+    v0: np.ndarray,
+    t0: float,
+    t_end: float,
+    dt: float,
+    instants: np.ndarray,
+    pas_arch: int,
+    options: SchemeOptions | None,
+    specialised: bool,
+    rotation,
+    label: str | None,
+    energy: bool,
+    implicit_shocks: bool,
+    load_labels: list[str] | None,
+) -> RunResult:
+    """:func:`integrate` inside its kernel block (``notice``: what was compiled)."""
     options = options or SchemeOptions()
     n = system.n_modes
     module = SCHEMES[scheme]
+    if options.adapt_v11 and scheme == "ADAPT_ORDRE2":
+        module = legacy_adapt_module(rotation, implicit_shocks and shocks.count, energy)
     model = (system.bundle(), shocks.bundle(), excitation.bundle())
-    if hasattr(module, "general_loop"):  # a specialised run_loop: its local arrays
-        model = model + (local_bundle(system, shocks),)
+    if notice.name in SPECIALISED_LOOPS:  # its local arrays (only there: every other
+        model = model + (local_bundle(system, shocks),)  # loop compiles once for any model)
+    elif notice.name in LOCAL_FRAME_LOOPS:
+        model = model + (local_bundle(system, shocks)[3:],)
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
     f, a = np.zeros(n), np.zeros(n)
     vint = shocks.initial_vint(t0)
@@ -180,7 +274,7 @@ def integrate(
         E.start(balance, t0, q, v, a, vint, model[1], model[2])
     bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
     model_parts = (system, shocks, excitation, load_labels)
-    started = wallclock.perf_counter()
+    started, compiled_before = wallclock.perf_counter(), notice.seconds
     try:
         while True:
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
@@ -207,7 +301,8 @@ def integrate(
         bar.close()
         if implicit_loop is not None:  # the shock set is the caller's: explicit again
             shocks.flags[:, C.F_IMPLICIT] = C.NORMAL_EXPLICIT
-    elapsed = wallclock.perf_counter() - started
+    compiled = notice.seconds - compiled_before  # the loop's first call compiles it
+    elapsed = wallclock.perf_counter() - started - compiled
     if status != K.STATUS_DONE:
         failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
         if failed is None and status == K.STATUS_NOT_FINITE:
@@ -215,8 +310,9 @@ def integrate(
             failed = nonfinite_error(state, clock, counters, last, model_parts, scheme)
         raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
-    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = (b[:count].copy() for b in buffers)
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = (trimmed(b, count) for b in buffers)
     info = run_info(clock, counters, t0, dt, elapsed, adaptive)
+    info["compile_seconds"] = notice.seconds
     if implicit_loop is not None:
         ints = memory[3][5]
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
@@ -227,6 +323,16 @@ def integrate(
         info["steps_kept_at_nmax_iter_pas"] = kept
     rows = balance[5][:count].copy() if energy else None
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
+
+
+def legacy_adapt_module(rotation, implicit, energy):
+    """code_aster 10-12's ADAPT_ORDRE2, which had no varying rotation speed,
+    no implicit shocks and no energy balance."""
+    for asked, what in ((rotation, "VITESSE_VARIABLE='OUI'"), (implicit, "implicit shocks"),
+                        (energy, "ENERGIE")):  # fmt: skip
+        if asked:
+            raise NumericalError(f"{what} with code_aster 10-12's ADAPT_ORDRE2")
+    return scheme_adapt_ordre2_v11
 
 
 def loop_adapts(scheme: str, dt: float, options: SchemeOptions) -> bool:
@@ -330,6 +436,16 @@ def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | 
         "(PROL_GAUCHE/PROL_DROITE='EXCLU') or the local integration did not converge "
         "(ITER_INTE_MAXI, RESI_INTE)"
     )
+
+
+def trimmed(buffer: np.ndarray, count: int) -> np.ndarray:
+    """The first ``count`` rows of an archive buffer: a view when they fill
+    most of it (a fixed step's archive is sized exactly: copying 10^5 rows
+    cost as much as the loop that wrote them), a copy when the buffer is
+    mostly empty (so that a grown buffer's unused half is freed)."""
+    if 2 * count >= len(buffer):
+        return buffer[:count]
+    return buffer[:count].copy()
 
 
 def grow(buffers):

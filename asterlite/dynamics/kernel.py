@@ -54,6 +54,11 @@ import math
 import numpy as np
 from numba import njit
 
+from asterlite import progress
+
+# every compilation of a kernel says so on standard error (progress.kernel)
+progress.listen_to_compiles()
+
 STATUS_DONE = 0
 STATUS_NOT_FINITE = 1
 STATUS_SHOCK_DIVERGED = 2

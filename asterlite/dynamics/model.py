@@ -60,19 +60,27 @@ class LinearSystem:
         return out
 
     def bundle(self):
+        """(M⁻¹, K, C, diagonal flag) for the kernels: C-ordered float arrays
+        whatever the caller built (a transposed product is Fortran-ordered),
+        so that each loop compiles for one layout only (asterlite warmup)."""
         flag = np.array([1 if self.diagonal else 0], dtype=np.int64)
-        return (self.minv, self.stiffness, self.damping, flag)
+        return (
+            np.ascontiguousarray(self.minv, dtype=float),
+            np.ascontiguousarray(self.stiffness, dtype=float),
+            np.ascontiguousarray(self.damping, dtype=float),
+            flag,
+        )
 
     def kernel_matrices(self):
         """(M⁻¹, K, C) for the specialised kernels: 1-D diagonals when all
         three matrices are diagonal (one pass per acceleration), else the
         dense (n, n) matrices. The kernels dispatch on ``ndim`` at compile
         time."""
-        if self.diagonal:
-            return (
-                np.ascontiguousarray(np.diag(self.minv)),
-                np.ascontiguousarray(np.diag(self.stiffness)),
-                np.ascontiguousarray(np.diag(self.damping)),
+        if self.diagonal:  # copies: np.diag's read-only view would be kept for one
+            return (  # mode, and a read-only array is another type to compile for
+                np.array(np.diag(self.minv), dtype=float),
+                np.array(np.diag(self.stiffness), dtype=float),
+                np.array(np.diag(self.damping), dtype=float),
             )
         return (
             np.ascontiguousarray(self.minv),

@@ -84,13 +84,16 @@ class ClippedLocation(Location):
         return f"    {self.source_line.rstrip()}\n    {caret}"
 
 
-def parse_deck(text: str, filename: str) -> Module:
+def parse_deck(text: str, filename: str, *, private_names: bool = False) -> Module:
     """Parse a deck (or a helper ``.py`` file) into a :class:`Module`.
 
     Raises DeckSyntaxError, located, for text that does not parse or uses a
-    construct outside the deck subset.
+    construct outside the deck subset. ``private_names`` lets names start
+    with one underscore (``_A0``: code_aster's material files use them for
+    their intermediate functions); ``__`` names stay refused, and attributes
+    are whitelisted by the evaluator whatever their name.
     """
-    return _parse(text, filename, "file_input")
+    return _parse(text, filename, "file_input", private_names)
 
 
 def parse_expression(text: str, filename: str) -> Module:
@@ -99,7 +102,25 @@ def parse_expression(text: str, filename: str) -> Module:
     return _parse(text.strip(), filename, "eval_input")
 
 
-def _parse(text: str, filename: str, start: str) -> Module:
+# checked trees of the texts parsed last: a run parses its deck three times
+# (version detection, code_aster 15 names, the session), a third of its
+# start-up; trees are read-only once checked, so callers can share them
+_RECENT_TREES: dict = {}
+_RECENT_LIMIT = 4
+
+
+def _parse(text: str, filename: str, start: str, private_names: bool = False) -> Module:
+    key = (text, start, private_names)
+    if key in _RECENT_TREES:
+        return Module(_RECENT_TREES[key], text.splitlines(), filename)
+    module = _parse_text(text, filename, start, private_names)
+    if len(_RECENT_TREES) >= _RECENT_LIMIT:
+        _RECENT_TREES.pop(next(iter(_RECENT_TREES)))
+    _RECENT_TREES[key] = module.tree
+    return module
+
+
+def _parse_text(text: str, filename: str, start: str, private_names: bool) -> Module:
     from lark.exceptions import UnexpectedInput
 
     lines = text.splitlines()
@@ -107,7 +128,7 @@ def _parse(text: str, filename: str, start: str) -> Module:
     source = text if text.endswith("\n") else text + "\n"
     try:
         module.tree = _parser().parse(source, start=start)
-        _check_tree(module)
+        _check_tree(module, private_names)
     except _LocatedSyntaxError as error:
         raise DeckSyntaxError(error.message, module.location(error.line, error.column)) from None
     except UnexpectedInput as error:
@@ -257,7 +278,7 @@ def _last_position(module: Module) -> tuple[int, int]:
 # --------------------------------------------------------------------- checks
 
 
-def _check_tree(module: Module) -> None:
+def _check_tree(module: Module, private_names: bool = False) -> None:
     """Refuse what the grammar accepts but decks may not do; fold literals."""
     from lark import Token, Tree
 
@@ -273,7 +294,7 @@ def _check_tree(module: Module) -> None:
             )
         if isinstance(node, Token):
             if node.type == "NAME":
-                _check_name(node, module)
+                _check_name(node, module, private_names)
             continue
         if not isinstance(node, Tree):
             continue
@@ -318,7 +339,9 @@ def node_position(node) -> tuple[int, int]:
     return 1, 1
 
 
-def _check_name(token, module: Module) -> None:
+def _check_name(token, module: Module, private_names: bool = False) -> None:
+    if private_names and token.value.startswith("_") and not token.value.startswith("__"):
+        return
     if token.value.startswith("_") and token.value not in ALLOWED_UNDERSCORE_NAMES:
         message = f"names starting with '_' are not allowed in decks: {token.value}"
         raise _error(message, token, module)

@@ -1,0 +1,298 @@
+"""Compile every kernel of the transient engine ahead of the first run
+(``asterlite warmup``, which the README's install command runs).
+
+numba compiles a kernel the first time it is called with a new combination
+of argument types and keeps the machine code in its cache (``cache=True``:
+``__pycache__`` beside the sources, or ``NUMBA_CACHE_DIR``); later
+processes load it in milliseconds. The engine keeps those combinations few
+and independent of the deck: one loop per scheme whatever its features
+(shocks, laws, loads, ENERGIE are runtime data of the same types), plus
+DIFF_CENTRE's specialised loop on diagonal or full matrices, its general
+path, and the loops shared by every scheme (variable rotation speed,
+implicit shocks, fluid films). Running each of them once on a tiny problem
+through the same constructors as DYNA_VIBRA compiles exactly what any deck
+will use, so that a deck's first run does not wait for the compiler.
+
+The kernels are compiled by ``jobs`` worker processes, in the stages of
+:data:`STAGES`; each worker says on standard error what it compiles
+(:func:`asterlite.progress.kernel`).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+# the kernels, in three stages: the force functions every loop calls (and
+# the film loop, which needs none of them); each scheme's own loop; the two
+# loops shared by every scheme, which call every scheme's step and so find
+# them compiled (run side by side before that, both compiled all the steps:
+# 15 min each on a busy machine instead of 1.5)
+SHARED = "shared force functions"
+FILM = "LAME_FLUIDE"
+SCHEME_LOOPS = (
+    "DIFF_CENTRE",
+    "DEVOGE",
+    "NEWMARK",
+    "TRBDF2",
+    "RUNGE_KUTTA",
+    "ADAPT_ORDRE1",
+    "ADAPT_ORDRE2",
+    "DIFF_CENTRE (full matrices)",
+    "DIFF_CENTRE (general path)",
+    "NEWMARK (general path)",
+)
+EVERY_SCHEME_LOOPS = ("VITESSE_VARIABLE", "TRAITEMENT_NONL='IMPLICITE'")
+LOOPS = SCHEME_LOOPS + EVERY_SCHEME_LOOPS
+STAGES = ((SHARED, FILM), SCHEME_LOOPS, EVERY_SCHEME_LOOPS)
+KERNELS = tuple(name for stage in STAGES for name in stage)
+
+
+@dataclass
+class Warmed:
+    """One kernel made ready: wall seconds, how many of them compiling, and
+    the CPU seconds of that compilation."""
+
+    name: str
+    seconds: float
+    compile_seconds: float
+    compile_cpu: float = 0.0
+    error: str | None = None  # what went wrong (then the kernel is not ready)
+
+
+def tiny_system(diagonal: bool = True):
+    """Two modes (10 and 30 rad/s), lightly damped; coupled when not ``diagonal``."""
+    from asterlite.dynamics.model import LinearSystem
+
+    mass = np.diag([1.0, 2.0])
+    stiffness = np.diag([100.0, 1800.0])
+    damping = np.diag([0.2, 0.6])
+    if not diagonal:
+        stiffness[0, 1] = stiffness[1, 0] = 10.0
+        damping[0, 1] = damping[1, 0] = 0.01
+    return LinearSystem(mass, stiffness, damping)
+
+
+def tiny_shocks(system, obstacle: str = "PLAN_Y"):
+    """One DIS_CHOC with friction, touching within a few steps."""
+    from asterlite.dynamics.model import ShockSpec, build_shocks
+
+    shape = np.array([[0.0, 0.0], [1.0, 0.5], [0.0, 0.2]])
+    spec = ShockSpec(
+        name="WARMUP",
+        obstacle_type=obstacle,
+        node_1="N1",
+        node_2=None,
+        coord_1=np.zeros(3),
+        coord_2=None,
+        phi_1=shape,
+        phi_2=None,
+        norm_obst=np.array([1.0, 0.0, 0.0]),
+        orig_obst=np.zeros(3),
+        gap=1.0e-4,
+        k_n=1.0e4,
+        c_n=1.0,
+        k_t=1.0e3,
+        c_t=0.5,
+        mu_dyn=0.2,
+        mu_stat=0.3,
+    )
+    return build_shocks([spec], system)
+
+
+def tiny_loads(system, t_end: float, dt: float):
+    """A constant load and a tabulated multiplier (the loops' two kinds of rows)."""
+    from asterlite.dynamics.model import tabulate_excitation
+
+    class Table:  # a DEFI_FONCTION with linear interpolation
+        INTERPOL = ("LIN", "LIN")
+        PROL_GAUCHE = PROL_DROITE = "CONSTANT"
+        abscissas = np.array([0.0, t_end])
+        ordinates = np.array([0.0, 1.0])
+
+        def evaluate(self, t):
+            return np.interp(t, self.abscissas, self.ordinates)
+
+    loads = [(np.array([1.0, 0.0]), 0.5), (np.array([0.0, 1.0]), Table())]
+    return tabulate_excitation(system.n_modes, loads, 0.0, t_end, dt / 2.0)
+
+
+def run_loop_kernel(name: str) -> None:
+    """Run the loop ``name`` (a :data:`LOOPS` entry, as
+    :func:`asterlite.dynamics.integrate.loop_kernel` names them) on a tiny
+    problem, with and without ENERGIE where the loop offers it."""
+    from asterlite.dynamics.integrate import SchemeOptions, integrate
+
+    scheme = {
+        "DIFF_CENTRE": "DIFF_CENTRE",
+        "DIFF_CENTRE (full matrices)": "DIFF_CENTRE",
+        "DIFF_CENTRE (general path)": "DIFF_CENTRE",
+        "NEWMARK (general path)": "NEWMARK",
+        "VITESSE_VARIABLE": "NEWMARK",
+        "TRAITEMENT_NONL='IMPLICITE'": "NEWMARK",
+        "RUNGE_KUTTA": "RUNGE_KUTTA_32",
+    }.get(name, name)
+    system = tiny_system(diagonal=name != "DIFF_CENTRE (full matrices)")
+    shocks = tiny_shocks(system)
+    t_end, dt = 0.01, 1.0e-4
+    rotation = tiny_rotation(system, t_end, dt) if name == "VITESSE_VARIABLE" else None
+    for energy in (False, True) if rotation is None else (False,):
+        integrate(
+            system,
+            shocks,
+            tiny_loads(system, t_end, dt),
+            scheme,
+            np.zeros(2),
+            np.array([0.0, 0.1]),
+            0.0,
+            t_end,
+            dt,
+            np.zeros(0),
+            5,
+            SchemeOptions(),
+            specialised=not name.endswith("(general path)"),
+            rotation=rotation,
+            energy=energy,
+            implicit_shocks=name == "TRAITEMENT_NONL='IMPLICITE'",
+            label=f"warmup {name}",
+        )
+
+
+def tiny_rotation(system, t_end: float, dt: float):
+    from asterlite.dynamics.rotation import Rotation
+
+    gyro = np.array([[0.0, 1.0], [-1.0, 0.0]])
+    rotation = Rotation(system.damping, system.stiffness, gyro, np.zeros((2, 2)), 10.0, 0.0)
+    rotation.tabulate(0.0, t_end, dt / 2.0)
+    rotation.matrices_at(0.0)  # DYNA_VIBRA's initial C(t0), K(t0): a compiled call too
+    return rotation
+
+
+def warm_shared() -> None:
+    """The functions every loop calls, compiled once before the loops (so
+    that parallel workers do not each compile them): the forces and the
+    acceleration of the initial state, the archiving, the law diagnosis."""
+    from asterlite import progress
+    from asterlite.dynamics import kernel as K
+    from asterlite.dynamics.forces import acceleration, total_force
+    from asterlite.dynamics.integrate import law_error, new_buffers
+
+    system = tiny_system()
+    shocks = tiny_shocks(system)
+    excitation = tiny_loads(system, 0.01, 1.0e-4)
+    q, v, f, a = np.zeros(2), np.zeros(2), np.zeros(2), np.zeros(2)
+    vint = shocks.initial_vint(0.0)
+    with progress.kernel(SHARED, 30.0):
+        total_force(0.0, q, v, shocks.bundle(), vint, excitation.bundle(), np.zeros((5, 3)), f)
+        acceleration(f, q, v, system.bundle(), np.zeros(2), a)
+        K.archive(0, 0.0, 0, q, v, a, vint, 1.0e-4, 0, *new_buffers(1, 2, 1))
+        law_error(shocks, vint, 0.0)
+
+
+def warm_film() -> None:
+    """code_aster 10-14's LAME_FLUIDE loop (its own kernel)."""
+    from asterlite import progress
+    from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
+
+    system = tiny_system()
+    shocks = tiny_shocks(system)
+    film = FluidFilm(np.array([film_row(1.0, 1.0, 0.1, 1.0)]))
+    with progress.kernel(FILM, 30.0):
+        integrate_film(
+            system, shocks, film, tiny_loads(system, 0.01, 1.0e-4), np.zeros(2),
+            np.array([0.0, 0.1]), 0.0, 0.01, 1.0e-4, np.zeros(0), 5, label="warmup",
+        )  # fmt: skip
+
+
+def warm_one(name: str) -> Warmed:
+    """Make the kernel ``name`` ready in this process (compiled, or loaded
+    from the cache)."""
+    from asterlite import progress
+
+    progress.enable(False)  # no progress bars for the tiny runs
+    progress.listen_to_compiles()
+    started, compiled = time.perf_counter(), progress.compiled_seconds()
+    cpu = progress.compiled_seconds(cpu=True)
+    error = None
+    try:
+        if name == SHARED:
+            warm_shared()
+        elif name == FILM:
+            warm_film()
+        else:
+            run_loop_kernel(name)
+    except Exception as exc:  # reported with the others; runs needing it will fail too
+        error = f"{type(exc).__name__}: {str(exc).strip().splitlines()[0] if str(exc) else ''}"
+    return Warmed(
+        name,
+        time.perf_counter() - started,
+        progress.compiled_seconds() - compiled,
+        progress.compiled_seconds(cpu=True) - cpu,
+        error,
+    )
+
+
+def warm(names=KERNELS, jobs: int | None = None) -> list[Warmed]:
+    """Make every kernel of ``names`` ready, with ``jobs`` worker processes
+    (default: one per core; 1: in this process)."""
+    jobs = max(1, jobs or os.cpu_count() or 1)
+    names = list(names)
+    if jobs == 1 or len(names) == 1:
+        return [warm_one(name) for name in names]
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    context = multiprocessing.get_context("spawn")  # no state inherited from this process
+    done = []
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
+        for stage in STAGES:  # each stage finds the previous ones' kernels in the cache
+            done += list(pool.map(warm_one, [name for name in stage if name in names]))
+        done += list(pool.map(warm_one, [name for name in names if name not in KERNELS]))
+    return done
+
+
+def compile_bytecode() -> int:
+    """Byte-compile asterlite's sources (as pip does for a regular install;
+    an editable install leaves it to the first run, or to nobody where
+    PYTHONDONTWRITEBYTECODE is set): every run then imports them without
+    parsing them again. Returns the number of folders that failed (a
+    read-only install, say: runs just parse the sources)."""
+    import compileall
+    import importlib
+
+    failed = 0
+    for package in ("asterlite", "asterlite.catalogues", "asterlite.commands"):
+        for folder in importlib.import_module(package).__path__:
+            if not compileall.compile_dir(folder, quiet=2):
+                failed += 1
+    return failed
+
+
+def main(jobs: int | None = None, stream=None, verbose: bool = False) -> int:
+    """``asterlite warmup``: compile what is not compiled yet, then say so
+    (``verbose``: each kernel's wall and compile CPU seconds)."""
+    stream = stream or sys.stderr
+    started = time.perf_counter()
+    compile_bytecode()
+    done = warm(KERNELS, jobs)
+    compiled = [w for w in done if w.compile_seconds > 0.0]
+    wall = time.perf_counter() - started
+    for w in done if verbose else ():
+        print(
+            f"  {w.name}: {w.seconds:.1f} s, compiling {w.compile_seconds:.1f} s "
+            f"({w.compile_cpu:.1f} s CPU)",
+            file=stream,
+        )
+    failed = [w for w in done if w.error]
+    for w in failed:
+        print(f"asterlite warmup: the {w.name} kernel failed: {w.error}", file=stream)
+    print(
+        f"asterlite warmup: {len(done) - len(failed)} kernels ready in {wall:.1f} s "
+        f"({len(compiled)} compiled now, the others already in numba's cache)",
+        file=stream,
+    )
+    return 1 if failed else 0
