@@ -167,7 +167,8 @@ def flambage_legacy() -> FACT:
     10-14 (FNOR_CRIT...) or today's functions of the crushing."""
     return _family(
         "FLAMBAGE",
-        drop=("FX", "RIGI_NOR", "AMOR_NOR"),
+        # today's block: the functions, or code_aster 15's scalar law (hidden)
+        drop=("FX", "RIGI_NOR", "AMOR_NOR", "FNOR_CRIT", "b_crushing_functions", "b_scalar_law"),
         RIGI_NOR=SIMP(statut="f", typ=("R", "fonction_sdaster")),
         FNOR_CRIT=SIMP(statut="f", typ="R"),
         FNOR_POST_FL=SIMP(statut="f", typ="R"),

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from asterlite.catalogues.common import NO_EFFECT_SOLVER
 
-from asterlite.catalog import BLOC, FACT, SIMP, UN_PARMI, Condition, equal_to, exists
+from asterlite.catalog import BLOC, FACT, SIMP, UN_PARMI, Condition, absent, equal_to, exists
 from asterlite.lang.values import Unknown
 
 # --------------------------------------------------------------------------
@@ -477,10 +477,28 @@ def comportement_dyna() -> FACT:
             DIST_1=SIMP(statut="f", typ="R"),
             DIST_2=SIMP(statut="f", typ="R"),
             REPERE=SIMP(statut="f", typ="TXM", defaut="GLOBAL"),
-            FX=SIMP(statut="o", typ="fonction_sdaster", fr="Axial force vs relative displacement"),
-            RIGI_NOR=SIMP(statut="o", typ="fonction_sdaster", fr="Stiffness vs displacement"),
-            AMOR_NOR=SIMP(statut="o", typ="fonction_sdaster", fr="Damping vs displacement"),
             CRIT_AMOR=SIMP(statut="f", typ="TXM", defaut="INCLUS", into=("INCLUS", "EXCLUS")),
+            # asterlite extension (hidden): code_aster 15's scalar law, which its decks
+            # give (asterlite.legacy.v15) and asterlite runs as code_aster 15 did
+            FNOR_CRIT=SIMP(statut="c", typ="R"),
+            b_crushing_functions=BLOC(
+                condition=absent("FNOR_CRIT"),
+                FX=SIMP(statut="o", typ="fonction_sdaster", fr="Axial force vs displacement"),
+                RIGI_NOR=SIMP(statut="o", typ="fonction_sdaster", fr="Stiffness vs displacement"),
+                AMOR_NOR=SIMP(statut="o", typ="fonction_sdaster", fr="Damping vs displacement"),
+            ),
+            b_scalar_law=BLOC(
+                condition=exists("FNOR_CRIT"),
+                RIGI_NOR=SIMP(statut="o", typ="R"),
+                AMOR_NOR=SIMP(statut="f", typ="R", defaut=0.0),
+                FNOR_POST_FL=SIMP(statut="o", typ="R"),
+                ENFO_FL=SIMP(statut="f", typ="R", defaut=1.0e-20),
+                AMOR_FL=SIMP(statut="f", typ="R"),
+                LARG_PLAT=SIMP(statut="f", typ="R", defaut=0.0),
+                DEPL_POST_FL=SIMP(statut="f", typ="R", max="**"),
+                RIGI_POST_FL=SIMP(statut="f", typ="R", max="**"),
+                AMOR_POST_FL=SIMP(statut="f", typ="R", max="**"),
+            ),
         ),
         # -- anti-seismic device
         b_antisism=BLOC(

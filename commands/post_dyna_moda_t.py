@@ -22,6 +22,8 @@ import numpy as np
 
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import TranGene
+from asterlite.dynamics.shock_fields import ArchivedFields
+from asterlite.legacy.v15 import computes
 from asterlite.legacy.version import tables_name_nodes
 from asterlite.post import shocks as stats
 from asterlite.post.wear import history_wear_power
@@ -62,8 +64,10 @@ def run(ctx, kw):
     occ = occurrences[0]
     if not result.shocks:
         ctx.error("the result has no localized nonlinearity to analyse", "RESU_GENE", kw)
-    window = time_window(ctx, occ, result.times)
     option = occ.get("OPTION", "USURE")
+    window = time_window(ctx, occ, result.times)
+    if option != "IMPACT" and computes(ctx.session, "POST_DYNA_MODA_T_WINDOW_BY_TRUNCATION"):
+        window = truncated_window(ctx, occ, result.times, result.order)
     occ.mark_used("NB_CLASSE")  # op0130 reads it for both options; only IMPACT uses it
     table = Table()
     columns = IMPACT_COLUMNS if option == "IMPACT" else USURE_COLUMNS
@@ -74,7 +78,7 @@ def run(ctx, kw):
     for number, shock in enumerate(result.shocks, start=1):
         labels = {"INTITULE": shock.name, "NOEUD": node_number(mesh, shock.node_1, by_name)}
         t = result.times[window]
-        fields = {k: np.asarray(v)[window] for k, v in shock.fields.items()}
+        fields = windowed(shock.fields, window)
         if "FN" not in fields:
             ctx.error(f"shock {shock.name} has no archived normal force FN", "RESU_GENE", kw)
         if option == "IMPACT":
@@ -175,7 +179,7 @@ def node_number(mesh, name: str | None, by_name: bool = False) -> str:
     return str(index + 1) if index is not None else str(name)
 
 
-def time_window(ctx, occ, times) -> np.ndarray:
+def time_window(ctx, occ, times) -> slice | np.ndarray:
     times = np.asarray(times)
     start = occ.get("INST_INIT")
     stop = occ.get("INST_FIN")
@@ -189,7 +193,58 @@ def time_window(ctx, occ, times) -> np.ndarray:
         ctx.error(
             "fewer than two archived instants between INST_INIT and INST_FIN", "INST_FIN", occ
         )
-    return np.flatnonzero(keep)
+    kept = np.flatnonzero(keep)
+    if kept[-1] - kept[0] + 1 == kept.size:  # one stretch (always): views, no copies
+        return slice(int(kept[0]), int(kept[-1]) + 1)
+    return kept
+
+
+def truncated_window(ctx, occ, times, order) -> slice:
+    """The window of code_aster 15's statch (OPTION='USURE'): from index
+    int((INST_INIT - t0)/dt) to int((INST_FIN - t0)/dt), dt the mean archive step
+    over the first n-2 instants, on code_aster's archived times (the integrator's
+    running sum of its steps, :func:`summed_times`); truncation, so an instant a
+    rounding below the bound starts the window one archived instant early."""
+    times = summed_times(np.asarray(times, dtype=float), np.asarray(order))
+    n = times.size
+    dt = (times[n - 3] - times[0]) / (n - 3) if n >= 4 else times[1] - times[0]
+    start = max(float(occ.get("INST_INIT", times[0])), times[0])
+    stop = min(float(occ.get("INST_FIN", times[-1])), times[-1])
+    first = int((start - times[0]) / dt)
+    last = min(int((stop - times[0]) / dt), n - 1)
+    if last - first < 1:
+        ctx.error(
+            "fewer than two archived instants between INST_INIT and INST_FIN", "INST_FIN", occ
+        )
+    ctx.log(
+        f"note: code_aster 15 deck: window t={times[first]:g}..{times[last]:g} "
+        "(its statch truncated the bounds to archive indices)"
+    )
+    return slice(first, last + 1)
+
+
+def summed_times(times, order):
+    """The archived instants of a fixed-step run as code_aster's integrator
+    reached them, t0 + dt + dt + ... in floating point (asterlite archives the
+    exact grid t0 + k dt); other runs: as archived."""
+    steps = order - order[0]
+    if times.size < 2 or steps[-1] <= 0 or np.any(np.diff(steps) <= 0):
+        return times
+    step = (times[-1] - times[0]) / steps[-1]
+    if not np.allclose(times, times[0] + steps * step, rtol=0.0, atol=1e-9 * abs(step)):
+        return times
+    running = np.add.accumulate(np.concatenate([[times[0]], np.full(int(steps[-1]), step)]))
+    return running[steps]
+
+
+def windowed(fields, window) -> ArchivedFields:
+    """The shock's fields restricted to the window, each made when first read
+    (a table reads a few of the 36 archived quantities)."""
+    return ArchivedFields({name: window_of(fields, name, window) for name in fields})
+
+
+def window_of(fields, name: str, window):
+    return lambda: np.asarray(fields[name])[window]
 
 
 def impact_rows(table, labels, t, fields, occ) -> None:

@@ -16,7 +16,9 @@ A result computed with a static correction (DYNA_VIBRA MODE_CORR, EXCIT
 CORR_STAT='OUI') has the correction added to every nodal value, as
 RECU_FONCTION / REST_GENE_PHYS with CORR_STAT='OUI' do (code_aster's
 POST_GENE_PHYS restitutes it without a keyword); element fields are not
-available on such a result (the correction modes carry none).
+available on such a result (the correction modes carry none). Decks of
+code_aster 13 to 15 get DEPL/VITE/ACCE without it, as those versions gave
+them (asterlite.legacy.v15.OLD_BEHAVIOURS); their ``*_ABSOLU`` fields have it.
 
 Element fields (``*_ELNO``, ``*_ELGA``) recombine, with q(t), the fields
 CALC_CHAMP stored on the modes, on the cells of GROUP_MA / MAILLE.
@@ -24,7 +26,8 @@ CALC_CHAMP stored on the modes, on the cells of GROUP_MA / MAILLE.
 The table follows code_aster: one row per instant, component and node (in
 that nesting: components outer, nodes inner, as code_aster fills it), with
 the parameters NUME_OBSE, INST, NOM_CHAM, NOM_CMP, NOEUD (node number, as
-code_aster 17 names nodes), MAILLE, POINT (empty for nodal fields), VALE_R.
+code_aster 17 names nodes; the node's name for code_aster 15 decks, as cells
+in MAILLE), MAILLE, POINT (empty for nodal fields), VALE_R.
 Element fields give one row per instant, component, cell and point (ELNO:
 MAILLE and NOEUD, the cell's node; ELGA: MAILLE and POINT ``PT i``).
 """
@@ -36,6 +39,8 @@ import numpy as np
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import TranGene
 from asterlite.fem.dofs import sort_components
+from asterlite.legacy.v15 import computes
+from asterlite.legacy.version import tables_name_nodes
 from asterlite.post.restitution import (
     as_tuple,
     node_indices,
@@ -92,10 +97,11 @@ def observation_rows(ctx, occ, result, basis, number: int) -> list[dict]:
     generalized = selection.apply(getattr(result, field[:4].lower()))
     values = recombine(basis.shapes[rows_of_dofs, :], generalized)
     corrections = result.info.get("corr_stat")
-    if corrections:
+    if corrections and (field.endswith("_ABSOLU") or not relative_without_correction(ctx)):
         values = values + support_motion(corrections, rows_of_dofs, selection.times, field[:4])
     if field.endswith("_ABSOLU"):
         values = values + absolute_part(ctx, occ, result, field, rows_of_dofs, numbering, selection)
+    by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: nodes by name
     rows = []
     for k, instant in enumerate(selection.times):
         for j, (comp, node) in enumerate(pairs):
@@ -105,11 +111,23 @@ def observation_rows(ctx, occ, result, basis, number: int) -> list[dict]:
                     "INST": float(instant),
                     "NOM_CHAM": field,
                     "NOM_CMP": comp,
-                    "NOEUD": str(int(node) + 1),
+                    "NOEUD": node_label(mesh, node, by_name),
                     "VALE_R": float(values[k, j]),
                 }
             )
     return rows
+
+
+def relative_without_correction(ctx) -> bool:
+    """Whether DEPL/VITE/ACCE come without the static correction, as code_aster
+    13 to 15 gave them (asterlite.legacy.v15.OLD_BEHAVIOURS)."""
+    if not computes(ctx.session, "POST_GENE_PHYS_RELATIVE_WITHOUT_CORR_STAT"):
+        return False
+    ctx.log(
+        "note: code_aster 15 deck: DEPL/VITE/ACCE without the static correction "
+        "(code_aster 13 to 15 did not add it; *_ABSOLU fields have it)"
+    )
+    return True
 
 
 def element_rows(ctx, occ, result, basis, number: int, name: str) -> list[dict]:
@@ -145,7 +163,8 @@ def element_rows(ctx, occ, result, basis, number: int, name: str) -> list[dict]:
     picked = modal.values[:, rows_of_cells][..., [modal.components.index(c) for c in comps]]
     values = np.tensordot(generalized, picked, axes=(1, 0))  # (instants, cells, points, cmps)
     by_node = name.endswith("_ELNO")
-    labels = support_labels(mesh, cells, picked.shape[2], by_node)
+    by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: entities by name
+    labels = support_labels(mesh, cells, picked.shape[2], by_node, by_name)
     second_key = "NOEUD" if by_node else "POINT"
     rows = []
     for i, instant in enumerate(selection.times):
@@ -190,17 +209,23 @@ def observed_cells(ctx, occ, mesh, modal) -> np.ndarray:
     return cells
 
 
-def support_labels(mesh, cells, n_points: int, by_node: bool) -> list[tuple]:
+def support_labels(mesh, cells, n_points: int, by_node: bool, by_name=False) -> list[tuple]:
     """(cell position, point, MAILLE, NOEUD or POINT) for each point of each
-    cell: cells by number and nodes by number (code_aster 17), Gauss points
-    as ``PT i``."""
+    cell: cells by number and nodes by number (code_aster 17; by name with
+    ``by_name``, as code_aster 15 wrote them), Gauss points as ``PT i``."""
     labels = []
     for pos, cell in enumerate(cells):
         nodes = mesh.cell_nodes[int(cell)]
+        cell_label = mesh.cell_names[int(cell)] if by_name else str(int(cell) + 1)
         for point in range(n_points):
-            second = str(int(nodes[point]) + 1) if by_node else f"PT {point + 1}"
-            labels.append((pos, point, str(int(cell) + 1), second))
+            second = node_label(mesh, nodes[point], by_name) if by_node else f"PT {point + 1}"
+            labels.append((pos, point, cell_label, second))
     return labels
+
+
+def node_label(mesh, node, by_name: bool) -> str:
+    """A node in a table: its 1-based number (code_aster 17) or its name."""
+    return mesh.node_names[int(node)] if by_name else str(int(node) + 1)
 
 
 def observed_components(ctx, occ, numbering, nodes) -> tuple[str, ...]:

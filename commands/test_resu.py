@@ -12,8 +12,14 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import ElementField, NodalField
-from asterlite.concepts.modes import FieldOnElements, GeneralizedVector, ModeResult
+from asterlite.concepts.modes import (
+    FieldOnElements,
+    GeneralizedVector,
+    ModeResult,
+    MultElasResult,
+)
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.legacy.v15 import computes
 from asterlite.post.checks import record_check, reduce_values
 from asterlite.post.restitution import (
     as_tuple,
@@ -81,9 +87,32 @@ def _field_value(ctx, occ, numbering, values, label):
     return reduce_values(values[rows], type_test), f"{label} {type_test}"
 
 
+def _check_mult_elas(ctx, occ, where, result) -> None:
+    """A DEPL value of one load case, by NOM_CAS or NUME_ORDRE."""
+    name = result.name or "?"
+    if occ.get("NOM_CAS") is not None:
+        case = str(occ["NOM_CAS"])
+        if case not in result.case_names:
+            ctx.error(f"{name} has no case {case!r}", "NOM_CAS", occ)
+        index, state = result.case_names.index(case), f"cas {case}"
+    else:
+        order = np.arange(1, result.n_cases + 1)
+        index, state = _state_index(ctx, occ, order.astype(float), order)
+    if occ.get("PARA") is not None:
+        ctx.unsupported(f"PARA={occ['PARA']!r} of a mult_elas", "PARA", occ)
+    if occ.get("NOM_CHAM") != "DEPL":
+        ctx.unsupported(f"NOM_CHAM={occ.get('NOM_CHAM')!r} of a mult_elas", "NOM_CHAM", occ)
+    values = np.asarray(result.fields)[:, index]
+    value, what = _field_value(ctx, occ, result.numbering, values, f"{name} DEPL")
+    record_check(ctx, f"{where} {what} {state}", value, occ)
+
+
 def check_result(ctx, occ, where):
     result = occ["RESULTAT"]
     name = result.name or "?"
+    if isinstance(result, MultElasResult):
+        _check_mult_elas(ctx, occ, where, result)
+        return
     if isinstance(result, ModeResult):
         times = np.arange(1, result.n_modes + 1, dtype=float)
         order = np.arange(1, result.n_modes + 1)
@@ -153,12 +182,29 @@ def check_gene(ctx, occ, where):
         field = occ.get("NOM_CHAM", "DEPL")
         if field not in ("DEPL", "VITE", "ACCE"):
             ctx.unsupported(f"NOM_CHAM={field!r}", "NOM_CHAM", occ)
-        index, state = _state_index(ctx, occ, result.times, result.order)
+        index, state = _gene_state_index(ctx, occ, result)
         values = getattr(result, field.lower())[index]
         label = f"{where} {result.name or '?'} {field} {state}"
     if not 1 <= mode <= values.size:
         ctx.error(f"NUME_CMP_GENE={mode}: {values.size} generalized DOFs", "NUME_CMP_GENE", occ)
     record_check(ctx, f"{label} cmp {mode}", values[mode - 1], occ)
+
+
+def _gene_state_index(ctx, occ, result) -> tuple[int, str]:
+    """_state_index, except that code_aster 15 and older read NUME_ORDRE on a
+    tran_gene as the position of the archived instant (asterlite.legacy.v15)."""
+    number = occ.get("NUME_ORDRE")
+    if number is None or not computes(ctx.session, "TEST_RESU_GENE_NUME_ORDRE_AS_POSITION"):
+        return _state_index(ctx, occ, result.times, result.order)
+    count = len(result.times)
+    if not 1 <= int(number) <= count:
+        ctx.error(f"NUME_ORDRE {number}: the result archives {count} instants", "NUME_ORDRE", occ)
+    index = int(number) - 1
+    ctx.log(
+        f"note: code_aster 15 deck: NUME_ORDRE={number} read as the {number}th archived "
+        f"instant (t={result.times[index]:g}, order {int(result.order[index])})"
+    )
+    return index, f"ordre {number}"
 
 
 def check_field(ctx, occ, where):

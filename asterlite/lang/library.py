@@ -15,6 +15,7 @@ import sys
 from asterlite.errors import DeckRuntimeError
 from asterlite.lang import limits as guards
 from asterlite.lang.limits import Limits
+from asterlite.lang.savetxt import make_savetxt
 from asterlite.lang.values import COBuilder, FactorBuilder
 
 # How a plain Python callable treats Unknown arguments (see Evaluator._call_python):
@@ -506,6 +507,7 @@ def _numpy_members(limits: Limits) -> dict:
     for name in NUMPY_CONSTANTS + NUMPY_TYPES:
         if hasattr(np, name):
             members[name] = getattr(np, name)
+    members["savetxt"] = make_savetxt(limits)  # into the run's output folder only
     members["linalg"] = DeckModule(
         "numpy.linalg",
         {

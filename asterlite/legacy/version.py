@@ -220,6 +220,10 @@ INEXPRESSIBLE = {
     # POST_DYNA_MODA_T/CHOC OPTION='USURE': its window INST_INIT..INST_FIN cut by
     # truncation on the archive (today's instants from INST_INIT on)
     "POST_DYNA_MODA_T_WINDOW_BY_TRUNCATION": re.compile(r"OPTION\s*=\s*['\"]USURE['\"]"),
+    # code_aster 13-15's GENE NEWMARK (forces of the step's start) and POST_GENE_PHYS
+    # (relative fields without the static correction)
+    "NEWMARK_FORCE_AT_STEP_START": re.compile(r"['\"]NEWMARK['\"]"),
+    "POST_GENE_PHYS_RELATIVE_WITHOUT_CORR_STAT": re.compile(r"POST_GENE_PHYS\s*\("),
 }
 
 

@@ -51,7 +51,15 @@ SINGLE_RESULT_COUNTS = {
     "DEFI_FONCTION": 1,
     "CALC_FONC_INTERP": 1,
     "RECU_FONCTION": 1,
+    "CREA_MAILLAGE": 1,  # a new Mesh
+    "MODE_STATIQUE": 1,  # a ModeResult, as CALC_MODES
+    "CALC_CHAR_SEISME": 1,  # a FieldOnNodesReal
 }
+# commands whose result is the concept they are given (DEFI_GROUP: the mesh): no name
+REUSING_COMMANDS = ("DEFI_GROUP",)
+# macros that make their result with one CREA_TABLE, unless given these keywords
+# (INFO_FONCTION/NOCI_SEISME computes response spectra with CALC_FONCTION first)
+ONE_TABLE_MACROS = {"INFO_FONCTION": ("NOCI_SEISME",)}
 # calls of these keep the count only in their plain form (see _plain_call)
 CONDITIONAL_COUNTS = ("CALC_MODES", "DYNA_VIBRA")
 STIFFNESS_OPTIONS = ("RIGI_MECA", "RIGI_THER", "RIGI_ACOU", "RIGI_FLUI_STRU")
@@ -142,6 +150,12 @@ def names_consumed(command: str, keywords, concept, reuse, namespace) -> Allocat
         if reuse is not None:
             return None
         return Allocation(SINGLE_RESULT_COUNTS[command], _first(concept))
+    if command in REUSING_COMMANDS:
+        return Allocation(0)
+    if command in ONE_TABLE_MACROS:
+        if reuse is not None or any(_given(keywords, k) for k in ONE_TABLE_MACROS[command]):
+            return None
+        return Allocation(1, _first(concept))
     if command in CONDITIONAL_COUNTS:
         if not _plain_call(command, keywords, reuse):
             return None

@@ -171,7 +171,10 @@ def law_spec(occ, basis, n_modes: int, number: int, options: dict) -> ShockSpec:
         spec.dist_1 = float(occ.get("DIST_1") or 0.0)
         spec.dist_2 = float(occ.get("DIST_2") or 0.0)
         spec.polar = obstacle.polar if spec.obstacle_type == "DISCRET" else None
-        spec.law = FL.prepare_flambage(occ)
+        if occ.get("FNOR_CRIT") is not None:  # code_aster 15's scalar law (hidden keywords)
+            spec.law = FL.prepare_scalar_flambage(occ)
+        else:
+            spec.law = FL.prepare_flambage(occ)
         spec.law_state = FL.initial_state(spec.law)
     elif relation == "ANTI_SISM":
         frame = axis_frame(c1, c2)

@@ -20,6 +20,18 @@ code_aster's buckling curves (e.g. those built from the historical
 FNOR_CRIT/FNOR_POST_FL/LARG_PLAT/ENFO_FL/DEPL_POST_FL/RIGI_POST_FL
 parameters, see ``legacy_buckling_curves``) are designed for that reading.
 
+Decks of code_aster 15 give the support by scalars instead (FNOR_CRIT,
+FNOR_POST_FL, RIGI_NOR, AMOR_NOR, ENFO_FL, LARG_PLAT, DEPL_POST_FL,
+RIGI_POST_FL, AMOR_POST_FL, AMOR_FL: hidden keywords of today's catalogue,
+see asterlite.legacy.v15), which code_aster 15 ran with its own scalar law
+(``scalar_buckling_force``): elastic up to FNOR_CRIT, a plateau up to the
+penetration FNOR_CRIT/RIGI_NOR + LARG_PLAT, a linear drop to FNOR_POST_FL over
+ENFO_FL, then branches at FNOR_POST_FL whose crushing and damping are
+interpolated between the DEPL_POST_FL points (reached at the penetrations
+DEPL_POST_FL + FNOR_POST_FL/RIGI_POST_FL); unloading and reloading below the
+largest penetration are elastic with the stiffness and crushing reached.
+code_aster 17's functions of the crushing do not give the same history.
+
 Internal variables (code_aster's 12-value layout, VINT1..VINT12): the
 normal force, local coordinates of both nodes, the normal velocity, the
 crushing (VINT9, POST_DYNA_MODA_T's ECRAS_RESI), then the stiffness, the
@@ -36,7 +48,13 @@ from asterlite.dynamics.laws.tabulated import Curve, LawError, function_table, u
 # Parameters: flags, then where each packed function starts in the same array
 P_DAMPING_IN_CRITERION = 0  # 1: CRIT_AMOR='INCLUS', 0: 'EXCLUS'
 P_AT_FX, P_AT_RIGI, P_AT_AMOR = 1, 2, 3
-HEADER = 4
+P_SCALAR = 4  # 1: code_aster 15's scalar law, its parameters from S_KNORM on
+HEADER = 5
+# the scalar law: stiffness, damping, critical and post-buckling forces, drop
+# width, penetration at the end of the plateau, number of post-buckling points,
+# then the crushings, the total penetrations and the dampings of those points
+S_KNORM, S_CNORM, S_FLIM, S_FPOST, S_ENFO, S_DEFT0, S_COUNT = range(HEADER, HEADER + 7)
+S_POINTS = HEADER + 7
 
 # Internal variables
 V_FN = 0
@@ -60,6 +78,8 @@ def buckling_force(params, gap, vn, state_in, state_out):
     opposite on node 2); updates the memory from ``state_in`` into
     ``state_out`` (the same array is allowed). NaN when a curve is
     evaluated outside its EXCLU domain."""
+    if params[P_SCALAR] == 1.0:
+        return scalar_buckling_force(params, gap, vn, state_in, state_out)
     defpla = state_in[V_DEFPLA]
     umax = state_in[V_DEFMAX]
     rigi = state_in[V_RIGI]
@@ -93,6 +113,139 @@ def buckling_force(params, gap, vn, state_in, state_out):
     return fn
 
 
+@njit(cache=True)
+def scalar_buckling_force(params, gap, vn, state_in, state_out):
+    """buckling_force with code_aster 15's scalar law (its mdflam, step for step)."""
+    included = params[P_DAMPING_IN_CRITERION] != 0.0
+    defpla = state_in[V_DEFPLA]
+    rigi = state_in[V_RIGI]
+    umax = state_in[V_DEFMAX]
+    amor = state_in[V_AMOR]
+    fn = 0.0
+    if gap <= 0.0:
+        u = -gap
+        fn, defpla, rigi, amor = _scalar_law(params, u, vn, included, defpla, rigi, umax, amor)
+        if defpla < 0.0:
+            defpla = 0.0
+        if u > umax:
+            umax = u
+        if not included:
+            fn -= amor * vn
+            if fn < 0.0 or u < defpla:
+                fn = 0.0
+    else:
+        vn = 0.0
+    state_out[V_FN] = fn
+    state_out[V_VN] = vn
+    state_out[V_DEFPLA] = defpla
+    state_out[V_DEFMAX] = umax
+    state_out[V_RIGI] = rigi
+    state_out[V_AMOR] = amor
+    return fn
+
+
+@njit(cache=True)
+def _scalar_law(params, u, vn, included, defpla, rigi, umax, amor):
+    """(force, crushing, stiffness, damping) at the penetration u >= 0."""
+    knorm, cnorm = params[S_KNORM], params[S_CNORM]
+    flim, fpost, enfo, deft0 = params[S_FLIM], params[S_FPOST], params[S_ENFO], params[S_DEFT0]
+    damping = amor if included else 0.0
+    fn = 0.0
+    if defpla <= 0.0:  # not buckled yet
+        c0 = cnorm if included else 0.0
+        if u < (flim + c0 * vn) / knorm:
+            fn = max(knorm * u - c0 * vn, 0.0)
+        else:  # buckling starts
+            fn, defpla = flim, 1.0e-20
+        return fn, defpla, knorm, cnorm
+    if u < defpla:  # inside the gap the crushing opened
+        return 0.0, defpla, rigi, amor
+    n = int(params[S_COUNT])
+    crush = params[S_POINTS : S_POINTS + n]
+    total = params[S_POINTS + n : S_POINTS + 2 * n]
+    damps = params[S_POINTS + 2 * n : S_POINTS + 3 * n]
+    if vn > 0.0 or u <= umax:  # unloading, or reloading below the largest penetration
+        fn = -rigi * (defpla - u) - damping * vn
+        if included:
+            ramp = flim + ((fpost - flim) / enfo) * (u - deft0)
+            if u < deft0 and fn >= flim:
+                fn = flim
+            elif fn >= ramp and u < total[0]:
+                fn = ramp
+            elif fn >= fpost and u >= total[0]:
+                fn = fpost
+            fn = max(fn, 0.0)
+        return fn, defpla, rigi, amor
+    if u < deft0:  # on the plateau: the crushing follows
+        fn = flim
+        defpla = u - flim / rigi
+    if deft0 <= u < total[0]:  # the drop to the post-buckling force
+        fn = flim + ((fpost - flim) / enfo) * (u - deft0)
+        rigi = fn / (u - defpla)
+        defpla = crush[0]
+        amor = cnorm + ((damps[0] - cnorm) / enfo) * (u - deft0)
+    if u >= total[0] and n < 2:
+        fn = fpost
+        rigi = fpost / (total[0] - crush[0])
+        defpla = u - fpost / rigi
+        amor = damps[0]
+    else:
+        for j in range(n - 1):
+            if total[j] <= u < total[j + 1]:
+                alpha = (u - total[j]) / (total[j + 1] - total[j])
+                fn = fpost
+                defpla = crush[j] + alpha * (crush[j + 1] - crush[j])
+                amor = damps[j] + alpha * (damps[j + 1] - damps[j])
+                rigi = fpost / (u - defpla)
+        if u > total[n - 1]:  # beyond the last point: its branch continued
+            fn = fpost
+            rigi = fpost / (total[n - 1] - crush[n - 1])
+            defpla = u - fpost / rigi
+            amor = damps[n - 1]
+    return fn, defpla, rigi, amor
+
+
+def prepare_scalar_flambage(kw) -> np.ndarray:
+    """Parameter array of code_aster 15's scalar law from a FLAMBAGE occurrence
+    with FNOR_CRIT (the defaults and checks of its catalogue and dtmprep_noli_flam)."""
+    knorm = float(kw["RIGI_NOR"])
+    if knorm <= 0.0:
+        raise LawError("FLAMBAGE/RIGI_NOR: the stiffness must be > 0")
+    cnorm = float(kw.get("AMOR_NOR") or 0.0)
+    flim, fpost = float(kw["FNOR_CRIT"]), float(kw["FNOR_POST_FL"])
+    enfo = float(kw.get("ENFO_FL", 1.0e-20))
+    plateau = float(kw.get("LARG_PLAT") or 0.0)
+    deft0 = flim / knorm + plateau
+    crush = np.array([plateau, *_reals(kw.get("DEPL_POST_FL"))])
+    stiff = np.array([fpost / (deft0 + enfo - plateau), *_reals(kw.get("RIGI_POST_FL"))])
+    damped = _reals(kw.get("AMOR_POST_FL"))
+    if np.any(np.diff(crush) < 0.0):
+        raise LawError("FLAMBAGE/DEPL_POST_FL: the crushings must increase")
+    if stiff.size != crush.size or (damped and len(damped) != crush.size - 1):
+        raise LawError("FLAMBAGE: DEPL_POST_FL, RIGI_POST_FL and AMOR_POST_FL: same length")
+    if np.any(crush < 0.0):
+        raise LawError("FLAMBAGE/DEPL_POST_FL: the crushings must be >= 0")
+    total = crush + fpost / stiff
+    if np.any(np.diff(total) < 0.0):
+        raise LawError(
+            "FLAMBAGE: the penetrations DEPL_POST_FL + FNOR_POST_FL/RIGI_POST_FL must increase"
+        )
+    first = float(kw["AMOR_FL"]) if kw.get("AMOR_FL") is not None else cnorm
+    damps = np.array([first, *(damped or [first] * (crush.size - 1))])
+    criterion = kw.get("CRIT_AMOR", "INCLUS")
+    header = np.zeros(HEADER)
+    header[P_DAMPING_IN_CRITERION] = 1.0 if criterion == "INCLUS" else 0.0
+    header[P_SCALAR] = 1.0
+    scalars = [knorm, cnorm, flim, fpost, enfo, deft0, float(crush.size)]
+    return np.concatenate([header, scalars, crush, total, damps])
+
+
+def _reals(value) -> list:
+    if value is None:
+        return []
+    return [float(v) for v in (value if isinstance(value, (list, tuple)) else (value,))]
+
+
 def prepare_flambage(kw, sample=None) -> np.ndarray:
     """Parameter array from a validated FLAMBAGE occurrence: FX, RIGI_NOR
     and AMOR_NOR functions of the crushing, CRIT_AMOR ('INCLUS' default)."""
@@ -120,8 +273,11 @@ def prepare_flambage(kw, sample=None) -> np.ndarray:
 
 
 def initial_state(params) -> np.ndarray:
-    """Internal variables before the first contact (stiffness/damping at zero crushing)."""
+    """Internal variables before the first contact (stiffness/damping at zero crushing;
+    code_aster 15's scalar law starts from zeros)."""
     state = np.zeros(N_VINT)
+    if params[P_SCALAR] == 1.0:
+        return state
     state[V_RIGI] = value(params, int(params[P_AT_RIGI]), 0.0)
     state[V_AMOR] = value(params, int(params[P_AT_AMOR]), 0.0)
     return state
