@@ -46,6 +46,10 @@ def _coerce(value: Any, type_code: str) -> Any:
     return str(value)
 
 
+# _coerce by type code: integers, reals, complexes; text otherwise (K8, K16...)
+COERCIONS = {"I": int, "R": float, "C": complex}
+
+
 def close_to(value: Any, reference: Any, precision: float, criterion: str) -> bool:
     """|value - reference| within PRECISION (RELATIF: scaled by |reference|,
     absolute when the reference is zero)."""
@@ -75,12 +79,16 @@ class Table(Concept):
 
     def add_row(self, values: dict[str, Any], types: dict[str, str] | None = None) -> None:
         row = {}
+        known = self.types
         for name, value in values.items():
             if value is None:
                 continue
-            if name not in self.types:
+            code = known.get(name)
+            if code is None:
                 self.add_column(name, (types or {}).get(name) or infer_type(value))
-            row[name] = _coerce(value, _base_type(self.types[name]))
+                code = known[name]
+            # _coerce inlined (tables of impacts have thousands of rows)
+            row[name] = COERCIONS.get(code, str)(value)
         self.rows.append(row)
 
     @classmethod

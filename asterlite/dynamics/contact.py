@@ -309,7 +309,7 @@ def contact_law(params, unidir, vint, s, gap, cos_n, sin_n, rx, ry, rz, vx, vy, 
     return False, in_contact, fx, fy, fz
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def local_state(rot, phi, coord, drive, origin, q, v, loc, vel):
     """Local position (with rest coordinates, from ORIG_OBST) and velocity of
     a node; ``drive`` adds the support motion (displacement, velocity)."""
@@ -334,7 +334,7 @@ def rotate_in_place(rot, x):
     x[0], x[1], x[2] = a, b, c
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def add_generalized_force(rot, phi, f_local, coef, out):
     """out += coef * Φᵀ (rotᵀ f_local): a local force at a node, projected on the modes."""
     g0 = rot[0, 0] * f_local[0] + rot[1, 0] * f_local[1] + rot[2, 0] * f_local[2]
@@ -344,7 +344,7 @@ def add_generalized_force(rot, phi, f_local, coef, out):
         out[m] += coef * (phi[0, m] * g0 + phi[1, m] * g1 + phi[2, m] * g2)
 
 
-@njit(cache=True)
+@njit(cache=True)  # not inlined: a step evaluates the forces up to 3 times (compile size)
 def shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out):
     """Add every shock's generalized force to ``out``; update ``vint``.
 

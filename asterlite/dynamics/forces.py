@@ -120,7 +120,7 @@ def loads_ready(clock, exc):
     )
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def external_force(t, exc, out):
     vectors, abscissas, ordinates, layout, cursors = exc[0], exc[1], exc[2], exc[3], exc[9]
     codes, constants, stack = exc[12], exc[13], exc[14]
@@ -146,7 +146,7 @@ def add_external_force(
             out[m] += c * vectors[e, m]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def support_motion(t, exc, params):
     """MULT_APPUI: write each shock node's support displacement and velocity
     Σ_k ψ_k(node) (d_k(t), v_k(t)) into its drive slots (global frame)."""
@@ -200,7 +200,7 @@ def local_support_motion(t, rots, shapes, abscissas, ordinates, layout, cursors,
                 drive[s, node, 3 + i] = rots[s, i, 0] * wx + rots[s, i, 1] * wy + rots[s, i, 2] * wz
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def total_force(t, q, v, shk, vint, exc, work, out):
     """out = F_ext(t) + Φᵀ F_shock; returns a diverging shock's index or -1."""
     out[:] = 0.0
@@ -213,7 +213,7 @@ def total_force(t, q, v, shk, vint, exc, work, out):
     return shock
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def matvec_add(a, x, coef, out, diagonal):
     """out += coef * a @ x (only the diagonal of ``a`` when ``diagonal``)."""
     n = out.shape[0]
@@ -228,24 +228,35 @@ def matvec_add(a, x, coef, out, diagonal):
             out[i] += coef * s
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def matvec(a, x, out, diagonal):
     out[:] = 0.0
     matvec_add(a, x, 1.0, out, diagonal)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def acceleration(f, q, v, lin, residual, out):
     """out = M⁻¹ (f - K q - C v); ``residual`` is scratch."""
     minv, stiffness, damping, is_diagonal = lin
     diagonal = is_diagonal[0] == 1
-    residual[:] = f
+    for i in range(f.shape[0]):  # residual[:] = f, which needs a temporary under _nrt=False
+        residual[i] = f[i]
     matvec_add(stiffness, q, -1.0, residual, diagonal)
     matvec_add(damping, v, -1.0, residual, diagonal)
     matvec(minv, residual, out, diagonal)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
+def copy_into(target, source):
+    """target[...] = source for 1-D or 2-D arrays of the same shape, without
+    the temporary numba makes for a slice assignment (loops compiled with
+    ``_nrt=False`` cannot allocate it)."""
+    flat_target, flat_source = target.reshape(target.size), source.reshape(source.size)
+    for i in range(flat_source.shape[0]):
+        flat_target[i] = flat_source[i]
+
+
+@njit(cache=True, inline="always")
 def all_finite(x):
     for i in range(x.shape[0]):
         if not (abs(x[i]) < 1.0e300):
@@ -253,7 +264,7 @@ def all_finite(x):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def state_acceleration(t, q, v, out, f, residual, vint, work, model):
     """out = M⁻¹ (F_ext(t) + F_shock(q, v) - K q - C v), the shock states
     ``vint`` updated (code_aster's dtmacce). Returns a diverging shock's

@@ -28,7 +28,7 @@ def new_rows(vector_rows: int, system, blocks: int = 7) -> np.ndarray:
     return rows
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def block(rows, vector_rows, which, n):
     start = vector_rows + which * n
     return rows[start : start + n]

@@ -11,7 +11,7 @@ from numba import njit
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, loads_ready, state_acceleration
+from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, RESIDUAL = range(5)
 VECTOR_ROWS = 5
@@ -26,19 +26,26 @@ def prepare(system, dt, options):
 
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
+    """One step (see :func:`advance`), a function of its own for the loops
+    shared by every scheme (rotation, implicit shocks)."""
+    return advance(t, dt, index, state, memory, model)
+
+
+@njit(cache=True, inline="always")
+def advance(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
     rows, scalars = memory[0], memory[1]
     n = q.shape[0]
     q2, v2, a2, vmin = rows[Q_TRIAL], rows[V_TRIAL], rows[A_TRIAL], rows[V_MIN]
     adaptive = scalars[A.S_ADAPTIVE] == 1.0
     max_trials = int(round(scalars[A.S_MAX_TRIALS]))
-    vint_save[:, :] = vint
+    copy_into(vint_save, vint)
     dt_proposed = dt
     dt_trial = dt
     dt_next = dt
     trials = 1
     while True:
-        vint[:, :] = vint_save
+        copy_into(vint, vint_save)
         p = 0.5 * (dt_proposed + dt_trial)
         if dt_trial <= 1.0e-13:
             p = dt_trial
@@ -68,14 +75,17 @@ def step(t, dt, index, state, memory, model):
             scalars[A.S_KEPT_AT_MAX_TRIALS] += 1.0
         A.update_reference_velocities(v2, vmin, scalars)
         break
-    q[:] = q2
-    v[:] = v2
-    a[:] = a2
+    copy_into(q, q2)
+    copy_into(v, v2)
+    copy_into(a, a2)
     return K.STATUS_DONE, -1, dt_trial, dt_next, trials - 1
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The loop: the step and the force evaluation inlined, compiled without
+    reference counting (``_nrt=False``: nothing here allocates), so that
+    the bundles of arrays handed down cost nothing (same arithmetic)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
@@ -84,7 +94,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
+        status, shock, dt_used, dt_next, rejected = advance(
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:

@@ -19,7 +19,7 @@ from numba import njit
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, loads_ready, state_acceleration
+from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, V_MID, V_MID_TRIAL, RESIDUAL = range(7)
 VECTOR_ROWS = 7
@@ -34,6 +34,13 @@ def prepare(system, dt, options):
 
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
+    """One step (see :func:`advance`), a function of its own for the loops
+    shared by every scheme (rotation, implicit shocks)."""
+    return advance(t, dt, index, state, memory, model)
+
+
+@njit(cache=True, inline="always")
+def advance(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
     rows, scalars = memory[0], memory[1]
     n = q.shape[0]
@@ -43,16 +50,16 @@ def step(t, dt, index, state, memory, model):
     max_trials = int(round(scalars[A.S_MAX_TRIALS]))
     if scalars[A.S_FIRST_CALL] == 1.0:
         scalars[A.S_FIRST_CALL] = 0.0
-        v_mid[:] = v
+        copy_into(v_mid, v)
         dt_proposed = 0.0
     else:
         dt_proposed = dt
-    vint_save[:, :] = vint
+    copy_into(vint_save, vint)
     dt_trial = dt
     dt_next = dt
     trials = 1
     while True:
-        vint[:, :] = vint_save
+        copy_into(vint, vint_save)
         p = 0.5 * (dt_proposed + dt_trial)
         half = 0.5 * dt_trial
         for i in range(n):
@@ -80,15 +87,18 @@ def step(t, dt, index, state, memory, model):
             scalars[A.S_KEPT_AT_MAX_TRIALS] += 1.0
         A.update_reference_velocities(v_mid_trial, vmin, scalars)
         break
-    q[:] = q2
-    v[:] = v2
-    a[:] = a2
-    v_mid[:] = v_mid_trial
+    copy_into(q, q2)
+    copy_into(v, v2)
+    copy_into(a, a2)
+    copy_into(v_mid, v_mid_trial)
     return K.STATUS_DONE, -1, dt_trial, dt_next, trials - 1
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The loop: the step and the force evaluation inlined, compiled without
+    reference counting (``_nrt=False``: nothing here allocates), so that
+    the bundles of arrays handed down cost nothing (same arithmetic)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
@@ -97,7 +107,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
+        status, shock, dt_used, dt_next, rejected = advance(
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:

@@ -15,6 +15,12 @@ i.e. (q_n, v_n) -- and zero on the very first step, where that storage is
 freshly allocated. The operators are rebuilt when dt changes. Order 2 and
 unconditionally stable on the linear part for the default β = 1/4,
 γ = 1/2 (trapezoidal rule).
+
+``SchemeOptions.force_at_step_start`` (decks of code_aster 13 to 15, see
+asterlite.legacy.v15.OLD_BEHAVIOURS): F_{n+1} above is replaced by the forces
+at the start of the step, F(t_n, q_n, v_n), as code_aster 15's intnewm did
+(it evaluated the forces once per step, after the update, for the next
+step); first order in the load, so results differ from today's by O(dt).
 """
 
 from __future__ import annotations
@@ -25,14 +31,23 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, loads_ready, total_force
+from asterlite.dynamics.contact import local_shock_forces
+from asterlite.dynamics.forces import (
+    add_external_force,
+    all_finite,
+    loads_cover,
+    loads_ready,
+    local_support_motion,
+    total_force,
+)
 
 # vector rows: index-2 displacement and velocity, right-hand side, pivots
 Q_INDEX2, V_INDEX2, RHS, PIVOTS = range(4)
 VECTOR_ROWS = 4
 S_BETA, S_GAMMA, S_DT_BUILT, S_DIAGONAL = range(4)
 A1 = 4  # a1..a8 follow
-N_SCALARS = 12
+S_FORCE_AT_START = 12  # 1.0: code_aster 13-15's forces of the step's start
+N_SCALARS = 13
 EPS = np.finfo(np.float64).eps
 
 
@@ -42,6 +57,7 @@ def prepare(system, dt, options):
     scalars[S_BETA], scalars[S_GAMMA] = options.beta, options.gamma
     scalars[S_DT_BUILT] = -1.0
     scalars[S_DIAGONAL] = 1.0 if system.diagonal else 0.0
+    scalars[S_FORCE_AT_START] = 1.0 if getattr(options, "force_at_step_start", False) else 0.0
     return (rows, scalars, np.zeros((1, 1))), False
 
 
@@ -82,9 +98,11 @@ def step(t, dt, index, state, memory, model):
             return K.STATUS_NOT_FINITE, -1, dt, dt, 0
     c = scalars[A1 : A1 + 8]
     q2, v2, rhs = rows[Q_INDEX2], rows[V_INDEX2], rows[RHS]
-    shock = total_force(t + dt, q2, v2, shk, vint, exc, work, f)
-    if shock >= 0:
-        return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
+    at_start = scalars[S_FORCE_AT_START] == 1.0
+    if not at_start:  # else f holds F(t, q, v): the loop's start or the previous step's end
+        shock = total_force(t + dt, q2, v2, shk, vint, exc, work, f)
+        if shock >= 0:
+            return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
     rhs[:] = f
     I.apply(I.block(rows, VECTOR_ROWS, I.B_F1, n), v, 1.0, rhs, diagonal)
     I.apply(I.block(rows, VECTOR_ROWS, I.B_F2, n), q, 1.0, rhs, diagonal)
@@ -99,11 +117,17 @@ def step(t, dt, index, state, memory, model):
         v2[i] = v[i]
     if not (all_finite(q) and all_finite(v)):
         return K.STATUS_NOT_FINITE, -1, dt, dt, 0
+    if at_start:  # the forces of the next step's start
+        shock = total_force(t + dt, q, v, shk, vint, exc, work, f)
+        if shock >= 0:
+            return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
     return K.STATUS_DONE, -1, dt, dt, 0
 
 
 @njit(cache=True)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The general path (``step`` on the bundles): shocks with a relation of
+    laws/, ``integrate(..., specialised=False)``."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
@@ -122,4 +146,149 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
         if balance:
             E.hook(energy, archived, counters, clock, dt_used, state, model)
+    return K.STATUS_DONE
+
+
+@njit(cache=True, _nrt=False)
+def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The NEWMARK loop :func:`integrate.integrate` runs: ``step``'s
+    arithmetic on plain arrays with the helpers inlined, no reference
+    counting (``_nrt=False``: nothing here allocates) and the shock
+    kinematics in each shock's local frame, as DIFF_CENTRE's
+    :func:`scheme_diff_centre.specialised_loop` (same results as
+    :func:`general_loop` when the shock frames are the global one, rounding
+    otherwise)."""
+    exc = model[2]
+    flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
+    shapes, rest, drive = model[3]  # integrate.LOCAL_FRAME_LOOPS
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
+    return specialised_loop(
+        clock, counters, instants, pas_arch, eps,
+        state[0], state[1], state[2], state[3], state[4], memory[0], memory[1],
+        flags, params, rots, shapes, rest, polars, drive,
+        exc[0], exc[1], exc[2], exc[3], exc[8], exc[9], exc[12], exc[13], exc[14],
+        exc[4], exc[5], exc[6], exc[7], exc[10], exc[11],
+        out_t, out_order, out_q, out_v, out_a, out_vint, out_info,
+        energy, model[1], exc,
+    )  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def local_force(
+    t, q, v, f, vint, flags, params, rots, shapes, rest, polars, drive,
+    load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors, load_codes,
+    load_constants, load_stack, support_shapes, support_abscissas, support_ordinates,
+    support_layout, support_cursors,
+):  # fmt: skip
+    """f = F_ext(t) + the shock forces at (q, v) (``forces.total_force`` in
+    the shocks' local frames); returns a diverging shock's index or -1."""
+    for i in range(f.shape[0]):
+        f[i] = 0.0
+    add_external_force(
+        t, load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors,
+        load_codes, load_constants, load_stack, f,
+    )  # fmt: skip
+    local_support_motion(
+        t, rots, support_shapes, support_abscissas, support_ordinates, support_layout,
+        support_cursors, drive,
+    )  # fmt: skip
+    return local_shock_forces(q, v, flags, params, shapes, rest, polars, drive, vint, f)
+
+
+@njit(cache=True, inline="always")
+def newmark_update(rows, scalars, q, v, a, f, dt, n):
+    """``step``'s update once the force f is known: the right-hand side,
+    the solve, then a, v, q and the index-2 copies."""
+    diagonal = scalars[S_DIAGONAL] == 1.0
+    c = scalars[A1 : A1 + 8]
+    q2, v2, rhs = rows[Q_INDEX2], rows[V_INDEX2], rows[RHS]
+    f1 = rows[VECTOR_ROWS + I.B_F1 * n : VECTOR_ROWS + (I.B_F1 + 1) * n]  # I.block inline
+    f2 = rows[VECTOR_ROWS + I.B_F2 * n : VECTOR_ROWS + (I.B_F2 + 1) * n]
+    f3 = rows[VECTOR_ROWS + I.B_F3 * n : VECTOR_ROWS + (I.B_F3 + 1) * n]
+    keff = rows[VECTOR_ROWS + I.B_KEFF * n : VECTOR_ROWS + (I.B_KEFF + 1) * n]
+    if diagonal:  # I.apply and I.solve_effective written out
+        for i in range(n):
+            x = f[i]
+            x += 1.0 * f1[i, i] * v[i]
+            x += 1.0 * f2[i, i] * q[i]
+            x += 1.0 * f3[i, i] * a[i]
+            rhs[i] = x / keff[i, i]
+    else:
+        for i in range(n):
+            rhs[i] = f[i]
+        I.apply(f1, v, 1.0, rhs, False)
+        I.apply(f2, q, 1.0, rhs, False)
+        I.apply(f3, a, 1.0, rhs, False)
+        I.solve_effective(keff, rows[PIVOTS], rhs, False)
+    for i in range(n):
+        a_new = -c[3] * a[i] + c[0] * (rhs[i] - q[i] - dt * v[i])
+        v[i] = v[i] + c[6] * a[i] + c[7] * a_new
+        a[i] = a_new
+        q[i] = rhs[i]
+        q2[i] = q[i]
+        v2[i] = v[i]
+
+
+@njit(cache=True, _nrt=False)
+def specialised_loop(
+    clock, counters, instants, pas_arch, eps, q, v, a, f, vint, rows, scalars,
+    flags, params, rots, shapes, rest, polars, drive,
+    load_vectors, load_abscissas, load_ordinates, load_layout, load_pending, load_cursors,
+    load_codes, load_constants, load_stack,
+    support_shapes, support_abscissas, support_ordinates, support_layout, support_pending,
+    support_cursors,
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info, energy, shk, exc,
+):  # fmt: skip
+    """The NEWMARK loop on plain arrays (see :func:`run_loop`); the status
+    codes, archiving rules and operator rebuilds of :func:`general_loop`."""
+    n = q.shape[0]
+    balance = E.is_active(energy)
+    q2, v2 = rows[Q_INDEX2], rows[V_INDEX2]
+    at_start = scalars[S_FORCE_AT_START] == 1.0
+    while K.unfinished(clock, counters, eps):
+        paused = K.pause_status(counters, out_t)
+        if paused:
+            return paused
+        t_ahead = clock[K.C_TIME] + 2.0 * clock[K.C_STEP]
+        if not (
+            loads_cover(t_ahead, load_abscissas, load_layout, load_pending)
+            and loads_cover(t_ahead, support_abscissas, support_layout, support_pending)
+        ):
+            return K.STATUS_LOADS
+        t, dt = K.plan_step(clock, counters, instants, eps)
+        built = scalars[S_DT_BUILT]
+        if built < 0.0 or abs(dt / built - 1.0) >= EPS:
+            if not build_operators(rows, scalars, dt, n):
+                return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, dt)
+        if not at_start:  # else f holds F(t, q, v): the loop's start or the previous step's end
+            shock = local_force(
+                t + dt, q2, v2, f, vint, flags, params, rots, shapes, rest, polars, drive,
+                load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors,
+                load_codes, load_constants, load_stack, support_shapes, support_abscissas,
+                support_ordinates, support_layout, support_cursors,
+            )  # fmt: skip
+            if shock >= 0:
+                return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, shock, dt)
+        newmark_update(rows, scalars, q, v, a, f, dt, n)
+        if not (all_finite(q) and all_finite(v)):
+            return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, dt)
+        if at_start:  # the forces of the next step's start
+            shock = local_force(
+                t + dt, q, v, f, vint, flags, params, rots, shapes, rest, polars, drive,
+                load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors,
+                load_codes, load_constants, load_stack, support_shapes, support_abscissas,
+                support_ordinates, support_layout, support_cursors,
+            )  # fmt: skip
+            if shock >= 0:
+                return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, shock, dt)
+        archived = counters[K.K_ARCHIVED] if balance else 0
+        K.advance_clock(
+            clock, counters, q, v, a, vint, instants, pas_arch, eps,
+            out_t, out_order, out_q, out_v, out_a, out_vint, out_info, dt, dt, 0,
+        )  # fmt: skip
+        if balance:
+            E.after_step(
+                energy, archived, counters[K.K_ARCHIVED], clock[K.C_TIME], dt,
+                q, v, a, vint, shk, exc,
+            )  # fmt: skip
     return K.STATUS_DONE

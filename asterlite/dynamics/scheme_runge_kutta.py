@@ -42,7 +42,7 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
-from asterlite.dynamics.forces import all_finite, loads_ready, state_acceleration
+from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
 
 
 @dataclass(frozen=True)
@@ -160,7 +160,7 @@ def prepare_with(tableau: Tableau, system, dt, options):
     return (rows, scalars, tableau.table()), adaptive
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def attempt(t, dt, state, memory, model, s):
     """One trial step of length dt from (q, v, a): stage values in rows,
     the solution in the stage rows. Returns a diverging shock or -1."""
@@ -168,11 +168,11 @@ def attempt(t, dt, state, memory, model, s):
     rows, table = memory[0], memory[2]
     n = q.shape[0]
     qs, vs, acc = rows[Q_STAGE], rows[V_STAGE], rows[A_STAGE]
-    vs[:] = v
-    acc[:] = a
+    copy_into(vs, v)
+    copy_into(acc, a)
     for stage in range(s):
-        rows[VECTOR_ROWS + stage, :] = vs
-        rows[VECTOR_ROWS + s + stage, :] = acc
+        copy_into(rows[VECTOR_ROWS + stage], vs)
+        copy_into(rows[VECTOR_ROWS + s + stage], acc)
         for i in range(n):
             dq = 0.0
             dv = 0.0
@@ -188,7 +188,7 @@ def attempt(t, dt, state, memory, model, s):
     return -1
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def scaled_error(dt, q, v, memory, s):
     rows, scalars, table = memory
     tol, alpha = scalars[S_TOL], scalars[S_ALPHA]
@@ -213,6 +213,13 @@ def scaled_error(dt, q, v, memory, s):
 
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
+    """One step (see :func:`advance`), a function of its own for the loops
+    shared by every scheme (rotation, implicit shocks)."""
+    return advance(t, dt, index, state, memory, model)
+
+
+@njit(cache=True, inline="always")
+def advance(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
     rows, scalars, table = memory
     s = table.shape[0] - 2
@@ -224,12 +231,12 @@ def step(t, dt, index, state, memory, model):
     if adaptive and dt > dt_max:
         dt = dt_max
     low, high = (0.9 / 5.0) ** p, (0.9 / 0.2) ** p
-    vint_save[:, :] = vint
+    copy_into(vint_save, vint)
     previous_error = HUGE
     rejected = 0
     dt_next = dt
     while True:
-        vint[:, :] = vint_save
+        copy_into(vint, vint_save)
         shock = attempt(t, dt, state, memory, model, s)
         if shock >= 0:
             return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, rejected
@@ -256,14 +263,17 @@ def step(t, dt, index, state, memory, model):
         if dt_next < scalars[S_DTMIN]:
             return K.STATUS_STEP_UNDERFLOW, -1, dt, dt, rejected
         break
-    q[:] = rows[Q_STAGE]
-    v[:] = rows[V_STAGE]
-    a[:] = rows[A_STAGE]
+    copy_into(q, rows[Q_STAGE])
+    copy_into(v, rows[V_STAGE])
+    copy_into(a, rows[A_STAGE])
     return K.STATUS_DONE, -1, dt, dt_next, rejected
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The loop: the step and the force evaluation inlined, compiled without
+    reference counting (``_nrt=False``: nothing here allocates), so that
+    the bundles of arrays handed down cost nothing (same arithmetic)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
@@ -272,7 +282,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
+        status, shock, dt_used, dt_next, rejected = advance(
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:

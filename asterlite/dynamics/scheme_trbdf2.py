@@ -57,7 +57,7 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, loads_ready, state_acceleration
+from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
 
 Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
 VECTOR_ROWS = 8
@@ -96,6 +96,13 @@ def build_operators(rows, scalars, dt, n):
 
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
+    """One step (see :func:`advance`), a function of its own for the loops
+    shared by every scheme (rotation, implicit shocks)."""
+    return advance(t, dt, index, state, memory, model)
+
+
+@njit(cache=True, inline="always")
+def advance(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
     rows, scalars = memory[0], memory[1]
     n = q.shape[0]
@@ -140,16 +147,19 @@ def step(t, dt, index, state, memory, model):
     shock = state_acceleration(t + dt, q2, v2, a2, f, residual, vint, work, model)
     if shock >= 0:
         return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
-    q[:] = q2
-    v[:] = v2
-    a[:] = a2
+    copy_into(q, q2)
+    copy_into(v, v2)
+    copy_into(a, a2)
     if not (all_finite(q) and all_finite(v) and all_finite(a)):
         return K.STATUS_NOT_FINITE, -1, dt, dt, 0
     return K.STATUS_DONE, -1, dt, dt, 0
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The loop: the step and the force evaluation inlined, compiled without
+    reference counting (``_nrt=False``: nothing here allocates), so that
+    the bundles of arrays handed down cost nothing (same arithmetic)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
@@ -158,7 +168,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
+        status, shock, dt_used, dt_next, rejected = advance(
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:

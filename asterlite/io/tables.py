@@ -31,22 +31,48 @@ def fortran_real(value: float, spec: str = "E12.5") -> str:
     return text.rjust(int(width or 12))
 
 
+def cell_formatter(type_code: str, real_format: str = "E12.5"):
+    """``format_value`` for one column, its format parsed once (a table of
+    impacts has thousands of rows)."""
+    if type_code != "R":
+        return lambda value: format_value(value, type_code, real_format)
+    kind = real_format[0].upper()
+    width_text, _, digits = real_format[1:].partition(".")
+    width = int(width_text or 12)
+    pattern = f"{{:.{int(digits or 5)}{'E' if kind in 'ED' else 'f'}}}".format
+    isfinite = math.isfinite
+
+    def real_cell(value) -> str:
+        if value is None:
+            return "-"
+        value = float(value)
+        return (pattern(value) if isfinite(value) else str(value)).rjust(width)
+
+    return real_cell
+
+
 def table_lines(table, columns: Iterable[str] | None = None, title: str = "", real_format="E12.5"):
     """Lines of a table in code_aster's TABLEAU layout: a commented title,
     a header of parameter names, one line per row, '-' where a row has no
     value."""
     columns = list(columns or table.columns)
-    cells = [
-        [format_value(row.get(c), table.types[c], real_format) for c in columns]
-        for row in table.rows
+    rows = table.rows
+    by_column = []
+    for c in columns:
+        cell = cell_formatter(table.types[c], real_format)
+        by_column.append([cell(row.get(c)) for row in rows])
+    widths = [
+        max([len(c)] + [len(v) for v in values])
+        for c, values in zip(columns, by_column, strict=True)
     ]
-    widths = [max([len(c)] + [len(r[j]) for r in cells]) for j, c in enumerate(columns)]
     lines = ["#-" * 40]
     if title:
         lines.extend(f"#{t}" for t in title.splitlines())
     lines.append(" ".join(c.ljust(w) for c, w in zip(columns, widths, strict=True)).rstrip())
-    for r in cells:
-        lines.append(" ".join(v.ljust(w) for v, w in zip(r, widths, strict=True)).rstrip())
+    padded = [[v.ljust(w) for v in values] for values, w in zip(by_column, widths, strict=True)]
+    if not padded:  # no column: an empty line per row
+        padded = [[""] * len(rows)]
+    lines.extend(" ".join(r).rstrip() for r in zip(*padded, strict=True))
     return lines
 
 
