@@ -261,6 +261,12 @@ def C_SOLVEUR(command: str, statut: str = "d") -> FACT:  # noqa: N802 - code_ast
             PRETRAITEMENTS=SIMP(typ="TXM", defaut="AUTO", into=("SANS", "AUTO")),
             POSTTRAITEMENTS=SIMP(typ="TXM", defaut="AUTO", into=("SANS", "AUTO", "FORCE", "MINI")),
             PCENT_PIVOT=SIMP(typ="I", defaut=35, val_min=1),
+            # right-hand sides MUMPS solves at once (a block size: speed only)
+            NB_RHS=(
+                SIMP(typ="I", defaut=-128, val_min=-1024, val_max=1024)
+                if command == "MODE_STATIQUE"
+                else SIMP(typ="I", defaut=1, val_min=1, val_max=32)
+            ),
             RESI_RELA=SIMP(typ="R", defaut=1.0e-6 if command in _LINEAR else -1.0),
             GESTION_MEMOIRE=SIMP(
                 typ="TXM", defaut="AUTO", into=("IN_CORE", "OUT_OF_CORE", "AUTO", "EVAL")

@@ -16,7 +16,7 @@ from asterlite.catalog import (
 
 # the orientation/deformation operations are exclusive of each other
 _SINGLE_OPS = (
-    "ORIE_FISSURE", "DEFORME", "ORIE_PEAU_2D", "ORIE_PEAU_3D",
+    "ORIE_FISSURE", "DEFORME", "ORIE_PEAU", "ORIE_PEAU_2D", "ORIE_PEAU_3D",
     "ORIE_NORM_COQUE", "MODI_MAILLE", "ORIE_LIGNE",
 )  # fmt: skip
 
@@ -71,6 +71,12 @@ MODI_MAILLAGE = OPER(
         OPTION=SIMP(statut="o", typ="TXM", into=("TRAN",)),
         DEPL=SIMP(statut="f", typ="cham_no_sdaster"),
         ALEA=SIMP(statut="f", typ="R"),
+    ),
+    ORIE_PEAU=FACT(
+        statut="f",
+        max="**",
+        GROUP_MA_PEAU=group_ma("o"),
+        GROUP_MA_INTERNE=group_ma(),
     ),
     ORIE_PEAU_2D=FACT(statut="f", max="**", GROUP_MA=group_ma("o"), GROUP_MA_SURF=group_ma()),
     ORIE_PEAU_3D=FACT(statut="f", max="**", GROUP_MA=group_ma("o"), GROUP_MA_VOLU=group_ma()),

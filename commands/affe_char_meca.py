@@ -1,5 +1,6 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE) on a model."""
+LIAISON_SOLIDE) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE,
+PRES_REP, FORCE_INTERNE on 3D solids) on a model."""
 
 from __future__ import annotations
 
@@ -202,6 +203,68 @@ def _force_nodale(ctx, model, components, load, occ) -> None:
             load.nodal_forces.append((int(node), comp, value))
 
 
+def _cells_of_3d_model(ctx, model, occ, kinds, what: str) -> np.ndarray:
+    """Cells of the occurrence that the model carries with MODELISATION='3D'
+    and whose type is among ``kinds`` (faces for surface loads, volumes for
+    volume loads); TOUT='OUI' takes those of the whole model."""
+    mesh = model.mesh
+    everywhere = occ.get("TOUT") == "OUI"
+    cells = select_cells(ctx, occ, mesh, all_cells=sorted(model.cell_modelisation))
+    kept = []
+    for cell in cells:
+        carried = model.cell_modelisation.get(int(cell)) == "3D"
+        if carried and mesh.cell_types[cell] in kinds:
+            kept.append(int(cell))
+        elif not everywhere:
+            state = "not in the model" if not carried else f"a {mesh.cell_types[cell]} cell"
+            ctx.error(f"{what} on cell {mesh.cell_names[cell]}, which is {state}", "GROUP_MA", occ)
+    if not kept:
+        ctx.error(f"{what}: no cell of the model can carry it", "GROUP_MA", occ)
+    return np.array(kept, dtype=int)
+
+
+def _check_outward(ctx, model, faces, occ) -> None:
+    """VERI_NORM='OUI': pressure faces on the skin of the model's volumes must
+    point outwards (code_aster stops otherwise)."""
+    from asterlite.fem.skin import inward_faces
+    from asterlite.fem.solid_reference import VOLUME_CELLS
+
+    mesh = model.mesh
+    volumes = [c for c in model.cell_modelisation if mesh.cell_types[c] in VOLUME_CELLS]
+    wrong = inward_faces(mesh, faces, volumes)
+    if wrong:
+        names = ", ".join(mesh.cell_names[c] for c in wrong[:5])
+        ctx.error(
+            f"{len(wrong)} faces point into the volume ({names}): orient them with "
+            "MODI_MAILLAGE/ORIE_PEAU, or give VERI_NORM='NON'",
+            "GROUP_MA",
+            occ,
+        )
+
+
+def _solid_loads(ctx, model, load, kw) -> None:
+    """FORCE_FACE, PRES_REP (faces of 3D models) and FORCE_INTERNE (volumes)."""
+    from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
+
+    for occ in kw.factor("FORCE_FACE"):
+        force = [float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")]
+        cells = _cells_of_3d_model(ctx, model, occ, FACE_CELLS, "FORCE_FACE")
+        load.extra.setdefault("FORCE_FACE", []).append({"CELLS": cells, "FORCE": force})
+    for occ in kw.factor("PRES_REP"):
+        if occ.get("CISA_2D") is not None:
+            ctx.unsupported("PRES_REP CISA_2D (edges of plane models)", "CISA_2D", occ)
+        cells = _cells_of_3d_model(ctx, model, occ, FACE_CELLS, "PRES_REP")
+        if kw.get("VERI_NORM", "OUI") == "OUI":
+            _check_outward(ctx, model, cells, occ)
+        load.extra.setdefault("PRES_REP", []).append(
+            {"CELLS": cells, "PRES": float(occ.get("PRES") or 0.0)}
+        )
+    for occ in kw.factor("FORCE_INTERNE"):
+        force = [float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")]
+        cells = _cells_of_3d_model(ctx, model, occ, VOLUME_CELLS, "FORCE_INTERNE")
+        load.extra.setdefault("FORCE_INTERNE", []).append({"CELLS": cells, "FORCE": force})
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
@@ -218,6 +281,7 @@ def run(ctx, kw):
         _liaison_solide(ctx, model, components, load, occ)
     for occ in kw.factor("FORCE_POUTRE"):
         _force_poutre(ctx, model, load, occ)
+    _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]
         load.extra["PESANTEUR"] = {

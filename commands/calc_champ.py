@@ -63,8 +63,16 @@ def _accelerations(ctx, result, values: np.ndarray) -> np.ndarray | None:
 def _context(ctx, kw, result):
     numbering = result.numbering
     model = kw.get("MODELE") or getattr(result, "model", None) or numbering.model
-    characteristics = kw.get("CARA_ELEM") or getattr(numbering, "characteristics", None)
-    materials = kw.get("CHAM_MATER") or getattr(numbering, "materials", None)
+    characteristics = (
+        kw.get("CARA_ELEM")
+        or getattr(result, "characteristics", None)
+        or getattr(numbering, "characteristics", None)
+    )
+    materials = (
+        kw.get("CHAM_MATER")
+        or getattr(result, "materials", None)
+        or getattr(numbering, "materials", None)
+    )
     if model is None:
         ctx.error("give MODELE: the result does not know its model", "MODELE", kw)
     if model.mesh is not numbering.mesh:

@@ -21,7 +21,8 @@ def run(ctx, kw):
     materials = kw.get("CHAM_MATER")
     terms = []
     for load in loads:
-        if load.extra.get("PESANTEUR") is not None and characteristics is None:
+        needs_cara = any(m != "3D" for m in load.model.cell_modelisation.values())
+        if load.extra.get("PESANTEUR") is not None and characteristics is None and needs_cara:
             ctx.error("PESANTEUR needs CARA_ELEM to know the masses", "CARA_ELEM", kw)
         try:
             terms.extend(load_terms(load, characteristics, materials))

@@ -25,6 +25,7 @@ def _mult_elas(ctx, kw):
     numbering = base.numbering if base is not None else None
     columns = [] if base is None else list(np.asarray(base.fields).T)
     names = [] if base is None else list(base.case_names)
+    context = _base_context(base)
     for occ in kw.factor("AFFE"):
         if occ["NOM_CHAM"] != "DEPL":
             ctx.unsupported(f"MULT_ELAS field {occ['NOM_CHAM']}", "NOM_CHAM", occ)
@@ -34,13 +35,38 @@ def _mult_elas(ctx, kw):
         elif field.numbering.mesh is not numbering.mesh:
             ctx.error("the fields are on different meshes", "CHAM_GD", occ)
         values = transfer(field.values, field.numbering, numbering)
+        _post_context(ctx, occ, numbering, context)
         name = str(occ.get("NOM_CAS") or f"CAS_{len(names) + 1}")
         if name in names:
             columns[names.index(name)] = values
         else:
             columns.append(values)
             names.append(name)
-    return MultElasResult(numbering=numbering, fields=np.column_stack(columns), case_names=names)
+    return MultElasResult(
+        numbering=numbering, fields=np.column_stack(columns), case_names=names, **context
+    )
+
+
+def _base_context(base) -> dict:
+    keys = ("model", "materials", "characteristics")
+    context = {k: getattr(base, k, None) for k in keys}
+    return context | {"charges": list(getattr(base, "charges", []))}
+
+
+def _post_context(ctx, occ, numbering, context: dict) -> None:
+    """MODELE, CHAM_MATER, CARA_ELEM, CHARGE of an AFFE occurrence: kept on
+    the result for its post-processing (CALC_CHAMP), as code_aster does."""
+    model = occ.get("MODELE")
+    if model is not None:
+        if model.mesh is not numbering.mesh:
+            ctx.error("MODELE is built on another mesh than the field", "MODELE", occ)
+        context["model"] = model
+    for keyword, key in (("CHAM_MATER", "materials"), ("CARA_ELEM", "characteristics")):
+        if occ.get(keyword) is not None:
+            context[key] = occ[keyword]
+    for load in as_tuple(occ.get("CHARGE")):
+        if all(load is not known for known in context["charges"]):
+            context["charges"].append(load)
 
 
 def _instants(ctx, occ) -> np.ndarray:

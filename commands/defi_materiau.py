@@ -10,9 +10,11 @@ from asterlite.concepts.assembly import Material
 _FUNCTION_PARAMETERS = ("E", "NU", "RHO", "ALPHA", "AMOR_ALPHA", "AMOR_BETA", "AMOR_HYST")
 
 
-def _constant_value(ctx, occ, name: str, func) -> float:
+def _constant_value(ctx, occ, name: str, func) -> float | None:
     """The value of a function that does not vary (ELAS_FO used with no
-    temperature field): its ordinates must all be equal."""
+    temperature field): its ordinates must all be equal. None when it varies:
+    the material is then kept, but has no value of ``name`` for the element
+    computations (code_aster too needs a command variable field there)."""
     ordinates = getattr(func, "ordinates", None)
     if ordinates is None:
         if getattr(func, "NOM_PARA", None) is not None and callable(func):
@@ -20,12 +22,11 @@ def _constant_value(ctx, occ, name: str, func) -> float:
         ctx.error(f"{name} must be a function", name, occ)
     values = np.asarray(ordinates, dtype=float)
     if values.size == 0 or not np.allclose(values, values[0], rtol=1e-12, atol=0.0):
-        ctx.unsupported(
-            f"ELAS_FO/{name} varying with {getattr(func, 'NOM_PARA', '?')} "
-            "(no command variable field is applied)",
-            name,
-            occ,
+        ctx.log(
+            f"ELAS_FO/{name} varies with {getattr(func, 'NOM_PARA', '?')}: no constant value "
+            "for the element computations (asterlite applies no command variable field)"
         )
+        return None
     return float(values[0])
 
 
@@ -40,18 +41,27 @@ def run(ctx, kw):
             ctx.unsupported("ELAS without E (K/MU or CELE_P/CELE_S)", "E", occ)
         behaviours["ELAS"] = {k: float(v) for k, v in values.items()}
     for occ in kw.factor("ELAS_FO"):
-        elas = {}
+        elas, varying = {}, {}
         for name, value in occ.items():
             if value is None:
                 continue
             if name in _FUNCTION_PARAMETERS:
-                elas[name] = _constant_value(ctx, occ, name, value)
+                constant = _constant_value(ctx, occ, name, value)
+                if constant is not None:
+                    elas[name] = constant
+                else:
+                    varying[name] = str(getattr(value, "NOM_PARA", "?"))
             elif isinstance(value, (int, float)):
                 elas[name] = float(value)
         behaviours["ELAS"] = elas
-    for keyword in ("ECRO_LINE", "ECRO_LINE_FO", "TRACTION"):
+        behaviours["ELAS_FO"] = dict(occ)
+        # parameters without a constant value: refused where a computation needs them
+        behaviours["ELAS_VARYING"] = varying
+    for keyword in ("ECRO_LINE", "ECRO_LINE_FO", "TRACTION", "THER", "THER_FO", "THER_NL"):
         for occ in kw.factor(keyword):
             behaviours[keyword] = dict(occ)
+    for occ in kw.factor("FATIGUE"):
+        behaviours["FATIGUE"] = dict(occ)
     elas = behaviours.get("ELAS", {})
     if elas:
         ctx.log(

@@ -1,5 +1,6 @@
 """MODI_MAILLAGE: change node coordinates in place (ECHELLE, TRANSLATION,
-ROTATION, SYMETRIE, DEFORME); the mesh is returned (reuse)."""
+ROTATION, SYMETRIE, DEFORME) or the orientation of skin faces (ORIE_PEAU);
+the mesh is returned (reuse)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,32 @@ import numpy as np
 
 from asterlite.fem.selection import as_tuple
 
-_SUPPORTED = ("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME")
+_SUPPORTED = ("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU")
+# code_aster 15's name of ORIE_PEAU for 3D skins, and its keywords
+_SKIN_KEYWORDS = {
+    "ORIE_PEAU": ("GROUP_MA_PEAU", "GROUP_MA_INTERNE"),
+    "ORIE_PEAU_3D": ("GROUP_MA", "GROUP_MA_VOLU"),
+}
+
+
+def _orient_skin(ctx, mesh, kw) -> None:
+    """ORIE_PEAU: skin faces turned to point out of their volume cells."""
+    from asterlite.fem.selection import cell_group_members
+    from asterlite.fem.skin import SkinError, orient_skin
+
+    for factor, (faces_key, volumes_key) in _SKIN_KEYWORDS.items():
+        for occ in kw.factor(factor):
+            if mesh.dim != 3:
+                ctx.unsupported(f"{factor} on a plane mesh (edges of 2D skins)", factor, occ)
+            faces = cell_group_members(ctx, occ, mesh, faces_key)
+            volumes = (
+                cell_group_members(ctx, occ, mesh, volumes_key) if occ.get(volumes_key) else None
+            )
+            try:
+                count = orient_skin(mesh, faces, volumes)
+            except SkinError as exc:
+                ctx.error(str(exc), faces_key, occ)
+            ctx.log(f"{factor}: {count} of {len(faces)} faces reversed")
 
 
 def _vector(values, dim: int = 3) -> np.ndarray:
@@ -91,6 +117,7 @@ def run(ctx, kw):
         _mirror(ctx, mesh, occ)
     if kw.get("ECHELLE") is not None:
         mesh.coords[:] = mesh.coords * float(kw["ECHELLE"])
+    _orient_skin(ctx, mesh, kw)
     done = [k for k in _SUPPORTED if kw.get(k)]
     ctx.log(f"mesh modified: {', '.join(done)}")
     return mesh

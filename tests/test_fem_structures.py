@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import scipy.linalg as sla
 
-from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.assembly import DofNumbering, MaterialField
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.transient import DynaTrans
 from asterlite.errors import CommandError
@@ -427,9 +427,14 @@ def test_material_from_constant_functions_and_impr_co():
     session.namespace = {"MAT": material}
     run(session, "IMPR_CO", CONCEPT={"NOM": (material,)})
     assert any("mater_sdaster" in line for line in session.lines)
+    # a temperature-dependent E is kept with the material (code_aster too only
+    # needs its value where an element is computed), and refused there
     varying = Function(np.array([0.0, 100.0]), np.array([E, 0.9 * E]), NOM_PARA="TEMP")
-    with pytest.raises(Exception, match="varying"):
-        run(session, "DEFI_MATERIAU", ELAS_FO={"E": varying, "NU": poisson})
+    kept = run(session, "DEFI_MATERIAU", ELAS_FO={"E": varying, "NU": poisson})
+    assert kept.behaviours["ELAS_VARYING"] == {"E": "TEMP"}
+    field = MaterialField(mesh=None, cell_material={0: kept})
+    with pytest.raises(ValueError, match="varies with TEMP"):
+        field.values([0], "E")
 
 
 def test_lire_maillage_med_of_a_beam_deck(corpus_dir):

@@ -307,6 +307,12 @@ class MaterialField(Concept):
         out = np.full(len(cells), float(default))
         for k, cell in enumerate(np.asarray(cells, dtype=int)):
             material = self.cell_material.get(int(cell))
+            varying = material.behaviours.get("ELAS_VARYING", {}) if material is not None else {}
+            if name in varying:
+                raise ValueError(
+                    f"{name} of material {material.name or '?'} varies with {varying[name]}: "
+                    "asterlite applies no command variable field (AFFE_VARC) to evaluate it"
+                )
             if material is not None:
                 value = material.get(name)
                 if value is not None:

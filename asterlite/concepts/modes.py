@@ -35,9 +35,7 @@ class ModeResult(Concept):
     """
 
     aster_types = ("mode_meca", "resultat_sdaster")
-    deck_methods = frozenset(
-        {"getName", "getField", "getIndexes", "getNumberOfModes", "setMesh"}
-    )
+    deck_methods = frozenset({"getName", "getField", "getIndexes", "getNumberOfModes", "setMesh"})
 
     numbering: DofNumbering
     shapes: np.ndarray

@@ -185,7 +185,7 @@ class DynaTrans(Concept):
     """
 
     aster_types = ("dyna_trans", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getField", "getIndexes", "getTimes"})
+    deck_methods = frozenset({"getName", "getField", "getIndexes", "getTimes", "setMesh"})
 
     numbering: DofNumbering
     times: np.ndarray
@@ -205,3 +205,8 @@ class DynaTrans(Concept):
 
     def getTimes(self) -> list[float]:  # noqa: N802
         return [float(t) for t in self.times]
+
+    def setMesh(self, mesh) -> None:  # noqa: N802
+        from asterlite.post.deck_api import set_result_mesh
+
+        set_result_mesh(self, mesh)

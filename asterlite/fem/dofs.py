@@ -20,6 +20,7 @@ MODELISATION_COMPONENTS: dict[str, tuple[str, ...]] = {
     "POU_D_TG": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX"),
     "BARRE": ("DX", "DY", "DZ"),
     "2D_BARRE": ("DX", "DY"),
+    "3D": ("DX", "DY", "DZ"),
 }
 
 DISCRETE_MODELISATIONS = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
@@ -35,6 +36,11 @@ MODELISATION_CELLS: dict[str, tuple[str, ...]] = {
     "POU_D_TG": ("SEG2",),
     "BARRE": ("SEG2",),
     "2D_BARRE": ("SEG2",),
+    # volumes, plus the faces and edges that carry loads (code_aster's MECA_FACE*, MECA_ARETE*)
+    "3D": (
+        *("HEXA8", "HEXA20", "HEXA27", "PENTA6", "PENTA15", "TETRA4", "TETRA10"),
+        *("PYRAM5", "PYRAM13", "TRIA3", "TRIA6", "QUAD4", "QUAD8", "QUAD9", "SEG2", "SEG3"),
+    ),
 }
 
 

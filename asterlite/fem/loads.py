@@ -21,6 +21,7 @@ import numpy as np
 from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.solid_loads import solid_cells, solid_load_terms, volume_force_terms
 
 _TRANSLATIONS = ("DX", "DY", "DZ")
 GLOBAL_KEYS = ("FX", "FY", "FZ", "MX", "MY", "MZ")
@@ -34,7 +35,14 @@ def gravity_terms(model, characteristics, gravity: float, direction, materials=N
     if norm == 0.0:
         raise ElementError("PESANTEUR DIRECTION is a zero vector")
     d = gravity * d / norm
-    terms = []
+    # 3D solids: the weight integrated on the RIGI points, as code_aster does
+    solid = solid_cells(model, cells)
+    terms = volume_force_terms(model.mesh, solid, d, materials, per_mass=True)
+    if len(solid):
+        pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
+        cells = sorted({int(c) for c in pool} - set(solid.tolist()))
+        if not cells:
+            return terms
     for block in element_blocks(model, characteristics, "M", materials=materials, cells=cells):
         accel = np.array(
             [d[_TRANSLATIONS.index(c)] if c in _TRANSLATIONS else 0.0 for c in block.components]
@@ -132,4 +140,5 @@ def load_terms(load, characteristics=None, materials=None) -> list:
         terms.extend(
             beam_force_terms(model, characteristics, item["CELLS"], item["VALUES"], item["LOCAL"])
         )
+    terms.extend(solid_load_terms(model.mesh, load.extra))
     return terms

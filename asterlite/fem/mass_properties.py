@@ -16,6 +16,7 @@ import numpy as np
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.fem.assemble import assemble_blocks, build_numbering_dofs
 from asterlite.fem.elements import element_blocks
+from asterlite.fem.solid_loads import solid_cells, solid_inertia
 
 _TRANS = ("DX", "DY", "DZ")
 _ROTS = ("DRX", "DRY", "DRZ")
@@ -47,11 +48,19 @@ def mass_properties(model, characteristics=None, materials=None, cells=None) -> 
     (IX_G, IY_G, IZ_G, IXY_G, IXZ_G, IYZ_G: products as integrals of
     (x - xg)(y - yg) dm) and the principal moments IX_PRIN_G <= ... of the
     cells (default: the whole model)."""
-    numbering = DofNumbering(mesh=model.mesh, dofs=build_numbering_dofs(model.node_components()))
-    blocks = element_blocks(model, characteristics, "M", materials=materials, cells=cells)
-    mass_matrix = assemble_blocks(blocks, numbering)
-    modes = rigid_body_modes(numbering)
-    rigid = modes.T @ (mass_matrix @ modes)
+    # 3D solids: volume integrals on code_aster's RIGI points; others: R^T M R
+    solid = solid_cells(model, cells)
+    rigid = solid_inertia(model, materials, solid) if len(solid) else np.zeros((6, 6))
+    pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
+    others = sorted({int(c) for c in pool} - set(solid.tolist()))
+    if others:
+        numbering = DofNumbering(
+            mesh=model.mesh, dofs=build_numbering_dofs(model.node_components())
+        )
+        blocks = element_blocks(model, characteristics, "M", materials=materials, cells=others)
+        mass_matrix = assemble_blocks(blocks, numbering)
+        modes = rigid_body_modes(numbering)
+        rigid = rigid + modes.T @ (mass_matrix @ modes)
     m = float(np.mean(np.diag(rigid)[:3])) if model.dim == 3 else float(rigid[0, 0])
     coupling = rigid[3:, :3]  # [e_k x x]·e_i summed: m (e_k x c)_i
     if m > 0.0:

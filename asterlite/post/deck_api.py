@@ -350,3 +350,15 @@ def axial_force(shocks, inoli=-1) -> np.ndarray:
 def relation_force(shocks, inoli=-1) -> np.ndarray:
     """``FORCE_RELATION(inoli)``: the force of a RELA_EFFO_DEPL/VITE relation."""
     return _force_column(shocks, inoli, RELATION_FORCE_COLUMNS, "a relation force")
+
+
+def set_result_mesh(result, mesh) -> None:
+    """``result.setMesh(mesh)``: code_aster attaches the mesh to a result that
+    has none and refuses another mesh than the one it has; asterlite's
+    physical results always know theirs (from their DOF numbering)."""
+    from asterlite.concepts.mesh import Mesh
+
+    if not isinstance(mesh, Mesh):
+        raise CommandError(f"setMesh expects a mesh, got {type(mesh).__name__}")
+    if result.numbering.mesh is not mesh:
+        raise CommandError("setMesh: incompatible meshes (the result is on another mesh)")

@@ -1,0 +1,105 @@
+"""Factorisation of an assembled matrix under its kinematic relations
+(FACTORISER) and solves with it (RESOUDRE).
+
+The relations of the matrix's numbering are eliminated (``u = T q + u0``,
+:mod:`asterlite.fem.constraints`), the reduced matrix ``Tᵀ A T`` is factorised
+once by a sparse direct method, and each solve gives the displacement with the
+relations' imposed values. A pivot that loses more than ``NPREC`` digits
+against its diagonal term marks the matrix singular, as code_aster's direct
+solvers do (``STOP_SINGULIER='OUI'`` stops, ``'NON'`` only warns).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from asterlite.fem.constraints import Elimination, eliminate
+
+#: iterative refinement steps of the solve phase (POSTTRAITEMENTS)
+REFINEMENT_STEPS = {"SANS": 0, "MINI": 1, "AUTO": 2, "FORCE": 10}
+
+
+class FactorizationError(ValueError):
+    """A matrix that cannot be factorised, or a solve that misses its accuracy."""
+
+
+@dataclass(eq=False)
+class Factorization:
+    """The reduced matrix of an assembled matrix, factorised."""
+
+    elimination: Elimination
+    reduced: sp.csc_matrix
+    lu: object  # scipy SuperLU
+    lost_digits: float  # largest loss of digits over the pivots
+
+    def solve_reduced(self, rhs: np.ndarray) -> np.ndarray:
+        if self.lu is None:  # dropped when the session was saved
+            self.lu = _superlu(self.reduced)
+        return self.lu.solve(rhs)
+
+    def __getstate__(self):
+        # SuperLU objects cannot be pickled: keep the reduced matrix only
+        state = dict(self.__dict__)
+        state["lu"] = None
+        return state
+
+
+def _superlu(reduced: sp.csc_matrix):
+    try:
+        return spla.splu(
+            reduced,
+            permc_spec="MMD_AT_PLUS_A",
+            diag_pivot_thresh=0.0,
+            options={"SymmetricMode": True},
+        )
+    except RuntimeError:
+        raise FactorizationError("the matrix is singular (exactly zero pivot)") from None
+
+
+def pivot_loss(lu, reduced: sp.csc_matrix) -> float:
+    """Largest number of decimal digits lost by a pivot against the diagonal
+    term of its column (symmetric ordering: U's diagonal follows perm_c)."""
+    pivots = np.abs(lu.U.diagonal())
+    diagonal = np.abs(reduced.diagonal()[lu.perm_c])
+    scale = np.where(diagonal > 0.0, diagonal, 1.0)
+    ratio = np.where(pivots > 0.0, pivots / scale, 0.0)
+    smallest = float(ratio.min(initial=1.0))
+    return np.inf if smallest <= 0.0 else max(0.0, -np.log10(smallest))
+
+
+def factorize(matrix, numbering) -> Factorization:
+    """Eliminate the numbering's relations and factorise the reduced matrix."""
+    b_matrix, rhs = numbering.constraint_matrix()
+    elimination = eliminate(b_matrix, np.zeros_like(rhs), numbering.n_dofs)
+    reduced = sp.csc_matrix(elimination.reduce(matrix))
+    if reduced.shape[0] == 0:
+        raise FactorizationError("every DOF is imposed: nothing to factorise")
+    lu = _superlu(reduced)
+    return Factorization(elimination, reduced, lu, pivot_loss(lu, reduced))
+
+
+def solve(
+    factorization: Factorization,
+    matrix,
+    numbering,
+    loads: np.ndarray,
+    relation_rhs: np.ndarray,
+    refinement: int = 0,
+) -> tuple[np.ndarray, float]:
+    """(u, relative residual) of ``A u = f + reactions`` with the relations'
+    right-hand sides ``relation_rhs``; ``refinement`` steps of iterative
+    refinement on the reduced system."""
+    elim = factorization.elimination
+    u0 = elim.particular(np.asarray(relation_rhs, dtype=float))
+    b = np.asarray(elim.T.T @ (np.asarray(loads, dtype=float) - matrix @ u0))
+    q = factorization.solve_reduced(b)
+    for _ in range(refinement):
+        q = q + factorization.solve_reduced(b - factorization.reduced @ q)
+    residual = b - factorization.reduced @ q
+    norm_b = float(np.linalg.norm(b))
+    relative = float(np.linalg.norm(residual)) / norm_b if norm_b > 0.0 else 0.0
+    return u0 + elim.T @ q, relative

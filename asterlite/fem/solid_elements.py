@@ -1,0 +1,190 @@
+"""Element matrices of 3D solid elements (``MODELISATION='3D'``), vectorised.
+
+Cells of one type are computed together: reference shape-function
+gradients at the Gauss points of the family code_aster uses
+(:mod:`asterlite.fem.solid_reference`), Jacobians of every cell at every
+point in one einsum, then
+
+- stiffness ``K = sum_g w_g |J| B^T D B`` on the ``RIGI`` family, D the
+  isotropic elasticity of the cell's material (E, NU);
+- mass ``M = sum_g w_g |J| rho N N^T`` (one block per direction) on the
+  ``MASS`` family; ``MASS_MECA_DIAG`` scales its diagonal so that the element
+  mass is kept (code_aster's diagonal lumping);
+- damping ``C = AMOR_ALPHA K + AMOR_BETA M`` (Rayleigh, per element).
+
+Face cells (TRIA3 ... QUAD9) and edges carried by the 3D modelisation only
+take loads (:mod:`asterlite.fem.solid_loads`): they add no matrix.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+
+import numpy as np
+
+from asterlite.concepts.assembly import ElementBlock
+from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.solid_reference import VOLUME_CELLS, tabulated
+
+COMPONENTS = ("DX", "DY", "DZ")
+SOLID_MODELISATIONS = ("3D",)
+
+
+def cells_by_type(mesh, cells) -> dict[str, np.ndarray]:
+    """Volume cells grouped by cell type (faces and edges left out)."""
+    grouped: dict[str, list[int]] = defaultdict(list)
+    for cell in np.asarray(cells, dtype=int):
+        kind = mesh.cell_types[cell]
+        if kind in VOLUME_CELLS:
+            grouped[kind].append(int(cell))
+    return {k: np.array(v, dtype=int) for k, v in grouped.items()}
+
+
+def connectivity(mesh, cells) -> np.ndarray:
+    return np.array([mesh.cell_nodes[c] for c in cells], dtype=int)
+
+
+def jacobians(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
+    """Physical gradients (e, q, n, 3) and |J| (e, q) of cells with node
+    coordinates ``coords`` (e, n, 3), reference gradients (q, n, 3)."""
+    # J[e, q] = coords[e]^T grads[q]: dx_i / dxi_j, as batched matrix products
+    jac = np.matmul(coords[:, None, :, :].transpose(0, 1, 3, 2), gradients[None, :, :, :])
+    det = np.linalg.det(jac)
+    if np.any(np.abs(det) <= 1e-300):
+        bad = int(np.nonzero(np.any(np.abs(det) <= 1e-300, axis=1))[0][0])
+        name = mesh.cell_names[cells[bad]] if mesh is not None else str(bad)
+        raise ElementError(f"cell {name} is degenerate: zero Jacobian at a Gauss point")
+    inverse = np.linalg.inv(jac)  # dxi_j / dx_i
+    physical = np.matmul(gradients[None, :, :, :], inverse)
+    return physical, np.abs(det)
+
+
+def _check_material(materials, cells, mesh, need_density: bool) -> dict[str, np.ndarray]:
+    if materials is None:
+        raise ElementError("3D elements need a material field (CHAM_MATER)")
+    missing = [int(c) for c in cells if materials.material_of(c) is None]
+    if missing:
+        names = ", ".join(mesh.cell_names[c] for c in missing[:5])
+        raise ElementError(f"no material is assigned to the 3D cells {names}")
+    out = {
+        name: materials.values(cells, name, default)
+        for name, default in (
+            ("E", np.nan),
+            ("NU", np.nan),
+            ("RHO", np.nan),
+            ("AMOR_ALPHA", 0.0),
+            ("AMOR_BETA", 0.0),
+        )
+    }
+    if np.any(np.isnan(out["E"])) or np.any(np.isnan(out["NU"])):
+        raise ElementError("the material of 3D elements needs E and NU (ELAS)")
+    if need_density and np.any(np.isnan(out["RHO"])):
+        raise ElementError("the mass of 3D elements needs RHO in the material (ELAS)")
+    return out
+
+
+def stiffness_matrices(
+    coords, reference: str, family: str, young, poisson, mesh=None, cells=None
+) -> np.ndarray:
+    """(e, 3n, 3n) isotropic elastic stiffness, DOFs node by node (DX DY DZ);
+    ``mesh`` and ``cells`` name a degenerate cell in the error."""
+    _, grads, weights = tabulated(reference, family)
+    g, det = jacobians(coords, grads, mesh, cells)
+    young = np.asarray(young, dtype=float)
+    poisson = np.asarray(poisson, dtype=float)
+    lam = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson))
+    mu = young / (2.0 * (1.0 + poisson))
+    e, q, n, _ = g.shape
+    # S[a i, b j] = sum_g w |J| dNa/dxi dNb/dxj: one batched matrix product
+    flat = g.reshape(e, q, 3 * n)
+    weighted = flat * (weights[None, :] * det)[:, :, None]
+    s = np.matmul(weighted.transpose(0, 2, 1), flat).reshape(e, n, 3, n, 3)
+    # K[a i, b j] = lam S[a i, b j] + mu S[a j, b i] + mu delta_ij sum_k S[a k, b k]
+    k = lam[:, None, None, None, None] * s
+    k += mu[:, None, None, None, None] * s.transpose(0, 1, 4, 3, 2)
+    # sum_k S[a k, b k] = sum_g w |J| grad Na . grad Nb
+    by_node = g.transpose(0, 2, 1, 3).reshape(e, n, 3 * q)
+    scale = np.repeat(weights[None, :] * det, 3, axis=1)[:, None, :]
+    dots = mu[:, None, None] * np.matmul(by_node * scale, by_node.transpose(0, 2, 1))
+    k += dots[:, :, None, :, None] * np.eye(3)[None, None, :, None, :]
+    return k.reshape(e, 3 * n, 3 * n)
+
+
+def scalar_mass(coords, reference: str, family: str, density, mesh=None, cells=None):
+    """(e, n, n) ``int rho N_a N_b`` on the family."""
+    values, grads, weights = tabulated(reference, family)
+    _, det = jacobians(coords, grads, mesh, cells)
+    wd = det * weights[None, :] * np.asarray(density, dtype=float)[:, None]
+    n = values.shape[1]
+    products = (values[:, :, None] * values[:, None, :]).reshape(len(weights), n * n)
+    return (wd @ products).reshape(len(wd), n, n)
+
+
+def expand_scalar(scalar: np.ndarray) -> np.ndarray:
+    """(e, n, n) scalar matrices -> (e, 3n, 3n), the same on each direction."""
+    e, n, _ = scalar.shape
+    out = scalar[:, :, None, :, None] * np.eye(3)[None, None, :, None, :]
+    return out.reshape(e, 3 * n, 3 * n)
+
+
+def lump(scalar: np.ndarray) -> np.ndarray:
+    """Diagonal scaled by total mass / trace (code_aster's MASS_MECA_DIAG)."""
+    diag = np.einsum("eaa->ea", scalar)
+    factor = scalar.sum(axis=(1, 2)) / diag.sum(axis=1)
+    out = np.zeros_like(scalar)
+    idx = np.arange(scalar.shape[1])
+    out[:, idx, idx] = diag * factor[:, None]
+    return out
+
+
+def solid_blocks(
+    model, characteristics, matrix, cells, materials=None, lumped=False, **_options
+) -> list[ElementBlock]:
+    """Global-frame K, M or A matrices of the 3D volume cells among ``cells``."""
+    if matrix not in ("K", "M", "A"):
+        raise ElementError(f"unknown element matrix {matrix!r}")
+    mesh = model.mesh
+    blocks = []
+    for kind, members in cells_by_type(mesh, cells).items():
+        spec = VOLUME_CELLS[kind]
+        conn = connectivity(mesh, members)
+        coords = mesh.coords[conn]
+        props = _check_material(materials, members, mesh, need_density=matrix != "K")
+        try:
+            mats = _matrices(matrix, spec, coords, props, lumped, (mesh, members))
+        except ElementError as exc:
+            raise ElementError(f"{kind} cells: {exc}") from None
+        blocks.append(ElementBlock(nodes=conn, components=COMPONENTS, matrices=mats))
+    return blocks
+
+
+def _matrices(matrix, spec, coords, props, lumped, where) -> np.ndarray:
+    def stiffness():
+        young, poisson = props["E"], props["NU"]
+        return stiffness_matrices(coords, spec.reference, spec.rigi, young, poisson, *where)
+
+    def mass():
+        density = np.nan_to_num(props["RHO"])
+        scalar = scalar_mass(coords, spec.reference, spec.mass, density, *where)
+        return expand_scalar(lump(scalar) if lumped else scalar)
+
+    if matrix == "K":
+        return stiffness()
+    if matrix == "M":
+        return mass()
+    alpha, beta = props["AMOR_ALPHA"], props["AMOR_BETA"]
+    n = coords.shape[1] * 3
+    out = np.zeros((len(coords), n, n))
+    if np.any(alpha):
+        out += alpha[:, None, None] * stiffness()
+    if np.any(beta):
+        out += beta[:, None, None] * mass()
+    return out
+
+
+def _register() -> None:
+    for name in SOLID_MODELISATIONS:
+        ELEMENT_COMPUTERS.setdefault(name, solid_blocks)
+
+
+_register()

@@ -1,0 +1,74 @@
+"""FACTORISER: factorise an assembled matrix under its kinematic relations.
+
+The direct methods (MUMPS, MULT_FRONT, LDLT) give the same factors up to
+rounding: asterlite factorises the reduced matrix with SuperLU whichever is
+named, in a symmetric ordering (the RENUM orderings of code_aster's solvers
+change the cost, not the solution). The factors are kept on the matrix
+(``reuse``, as code_aster keeps them) for RESOUDRE; a pivot losing more than
+NPREC digits stops (STOP_SINGULIER='OUI') or is reported (``'NON'``).
+"""
+
+from __future__ import annotations
+
+from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
+from asterlite.fem.factorization import FactorizationError, factorize
+
+DIRECT_METHODS = ("MUMPS", "MULT_FRONT", "LDLT")
+# keywords of the direct methods that tune their speed or memory, not the factors
+_TUNING = (
+    "RENUM",
+    "TYPE_RESOL",
+    "PRETRAITEMENTS",
+    "PCENT_PIVOT",
+    "ELIM_LAGR",
+    "GESTION_MEMOIRE",
+    "ACCELERATION",
+    "LOW_RANK_SEUIL",
+)
+
+
+def run(ctx, kw):
+    matrix = kw["MATR_ASSE"]
+    method = kw.get("METHODE", "MUMPS")
+    if method not in DIRECT_METHODS:
+        ctx.unsupported(f"FACTORISER METHODE={method!r} (preconditioners)", "METHODE", kw)
+    if isinstance(matrix, ComplexAssembledMatrix) or not isinstance(matrix, AssembledMatrix):
+        ctx.unsupported("FACTORISER of a complex matrix", "MATR_ASSE", kw)
+    for name in ("BLOC_DEBUT", "DDL_DEBUT", "BLOC_FIN", "DDL_FIN"):
+        if kw.get(name) is not None:
+            ctx.unsupported(f"FACTORISER {name} (partial factorisation)", name, kw)
+    if kw.get("LOW_RANK_SEUIL"):
+        # a non-zero threshold makes MUMPS's factors approximate
+        ctx.unsupported("FACTORISER LOW_RANK_SEUIL (approximate factors)", "LOW_RANK_SEUIL", kw)
+    kw.mark_used(*_TUNING)
+    try:
+        factors = factorize(matrix.matrix, matrix.numbering)
+    except FactorizationError as exc:
+        ctx.error(str(exc), "MATR_ASSE", kw)
+    digits = int(kw.get("NPREC", 8))
+    if factors.lost_digits > digits:
+        message = (
+            f"the matrix is singular: a pivot loses {factors.lost_digits:.1f} digits "
+            f"(NPREC={digits})"
+        )
+        if kw.get("STOP_SINGULIER", "OUI") == "OUI":
+            ctx.error(message, "STOP_SINGULIER", kw)
+        ctx.log(f"warning: {message}")
+    ctx.log(
+        f"factorised: {factors.reduced.shape[0]} unknowns after the relations, "
+        f"largest loss of digits {factors.lost_digits:.1f}"
+    )
+    target = matrix if ctx.reuse is matrix else _copy(matrix)
+    target.factorization = factors
+    return target
+
+
+def _copy(matrix: AssembledMatrix) -> AssembledMatrix:
+    return AssembledMatrix(
+        numbering=matrix.numbering,
+        matrix=matrix.matrix,
+        kind=matrix.kind,
+        model=matrix.model,
+        characteristics=matrix.characteristics,
+        materials=matrix.materials,
+    )
