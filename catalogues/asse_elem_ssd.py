@@ -1,7 +1,9 @@
 """ASSE_ELEM_SSD: DEFI_MODELE_GENE, NUME_DDL_GENE and ASSE_MATR_GENE in one
 command, each result bound to its CO("NAME") of RESU_ASSE_SSD."""
 
-from asterlite.catalog import EXCLUS, FACT, MACRO, PRESENT_PRESENT, SIMP
+from asterlite.catalogues.defi_modele_gene import interface_links
+
+from asterlite.catalog import FACT, MACRO, PRESENT_PRESENT, SIMP
 from asterlite.lang.values import CO
 
 _OUTPUTS = {
@@ -46,18 +48,7 @@ ASSE_ELEM_SSD = MACRO(
         ANGL_NAUT=SIMP(statut="f", typ="R", max=3),
         TRANS=SIMP(statut="f", typ="R", max=3),
     ),
-    LIAISON=FACT(
-        statut="o",
-        max="**",
-        regles=(EXCLUS("GROUP_MA_MAIT_1", "GROUP_MA_MAIT_2"),),
-        SOUS_STRUC_1=SIMP(statut="o", typ="TXM"),
-        INTERFACE_1=SIMP(statut="o", typ="TXM"),
-        SOUS_STRUC_2=SIMP(statut="o", typ="TXM"),
-        INTERFACE_2=SIMP(statut="o", typ="TXM"),
-        GROUP_MA_MAIT_1=SIMP(statut="f", typ="grma", max="**"),
-        GROUP_MA_MAIT_2=SIMP(statut="f", typ="grma", max="**"),
-        OPTION=SIMP(statut="f", typ="TXM", defaut="CLASSIQUE", into=("REDUIT", "CLASSIQUE")),
-    ),
+    LIAISON=interface_links(),
     VERIF=FACT(
         statut="d",
         max=1,
