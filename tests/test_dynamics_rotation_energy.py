@@ -143,7 +143,7 @@ class Keywords(dict):
 
 def test_physical_initial_acceleration_only_with_an_initial_state():
     """code_aster (dltali): from rest the first step starts with a = 0."""
-    from asterlite.commands.dyna_vibra import initial_acceleration_computed
+    from asterlite.commands.dyna_vibra_phys import initial_acceleration_computed
 
     assert not initial_acceleration_computed(Keywords())
     assert initial_acceleration_computed(Keywords(ETAT_INIT=[{"DEPL": object()}]))

@@ -1,0 +1,422 @@
+"""DYNA_VIBRA, TYPE_CALCUL='TRAN', BASE_CALCUL='PHYS' (code_aster's DYNA_LINE_TRAN):
+the transient on the assembled physical matrices. commands/dyna_vibra.py
+dispatches here; the keyword readers both paths share stay there."""
+
+from __future__ import annotations
+
+import numpy as np
+from asterlite.commands.dyna_vibra import (
+    as_tuple,
+    first_value,
+    list_values,
+    refuse_too_many_steps,
+    support_shape,
+)
+
+from asterlite.concepts.table import TableNotComputed
+from asterlite.errors import NumericalError
+
+PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
+
+
+def run_physical(ctx, kw):
+    """TYPE_CALCUL='TRAN', BASE_CALCUL='PHYS' (code_aster's DYNA_LINE_TRAN):
+    linear, on the assembled matrices; a ``DynaTrans`` on the numbering's DOFs."""
+    from asterlite.concepts.transient import DynaTrans
+    from asterlite.dynamics.physical import adapt_ordre2, diff_centre, newmark, wilson
+    from asterlite.dynamics.physical.archive import Archive
+    from asterlite.dynamics.physical.system import build_system
+
+    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
+    scheme = schema_kw.get("SCHEMA", "NEWMARK")
+    if scheme not in PHYSICAL_SCHEMES:
+        ctx.unsupported(
+            f"SCHEMA={scheme!r} on a physical basis (code_aster's PHYS transient offers "
+            f"{', '.join(PHYSICAL_SCHEMES)})",
+            "SCHEMA",
+            schema_kw,
+        )
+    if kw.get("EXCIT_RESU"):
+        ctx.unsupported("EXCIT_RESU on a physical basis", "EXCIT_RESU", kw)
+    mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
+    numbering = stiffness_matrix.numbering
+    damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
+    loads = physical_loads(ctx, kw, numbering, stiffness_matrix)
+    system = build_system(numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads)
+    modal = physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
+
+    reused = ctx.reuse if isinstance(getattr(ctx, "reuse", None), DynaTrans) else None
+    q, v, a, t_state, order_offset = physical_initial_state(ctx, kw, system)
+    times, dt = physical_instants(ctx, kw, t_state)
+    if a is None:
+        a = (
+            system.initial_acceleration(times[0], q, v)
+            if initial_acceleration_computed(kw)
+            else np.zeros(system.n_free)
+        )
+    archive = Archive(system.n_free)
+    archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    excluded = as_tuple(archiving.get("CHAM_EXCLU"))
+    if excluded:
+        # code_aster stores excluded fields at the last instant only; asterlite keeps
+        # them at every instant, so every value code_aster can give is the same
+        ctx.log(f"CHAM_EXCLU {', '.join(excluded)}: kept at every archived instant")
+    last_velocity = None
+    energy = None
+    if kw.factor("ENERGIE"):
+        from asterlite.dynamics.physical.energy import EnergyBalance
+
+        if scheme not in ("NEWMARK", "DIFF_CENTRE"):
+            ctx.unsupported(f"ENERGIE with SCHEMA={scheme!r} (NEWMARK, DIFF_CENTRE)", "ENERGIE", kw)
+        if modal is not None:
+            ctx.unsupported("ENERGIE with AMOR_MODAL on a physical basis", "ENERGIE", kw)
+        energy = EnergyBalance(system, times[0])
+        previous = getattr(reused, "tables", {}).get("PARA_CALC") if reused is not None else None
+        if previous is not None and t_state is not None:
+            energy.resume(previous, t_state)
+    started = __import__("time").perf_counter()
+    try:
+        if scheme == "ADAPT_ORDRE2":
+            inverse = checked_diagonal_mass(ctx, system, scheme)
+            if system.elimination.multi_rows is not None and system.elimination.multi_rows.size:
+                ctx.error("ADAPT_ORDRE2 on a physical basis does not accept LIAISON_DDL relations")
+            options = {
+                "vite_min": first_value(schema_kw.get("VITE_MIN", "NORM")),
+                "coef_mult_pas": schema_kw.get("COEF_MULT_PAS", 1.1),
+                "coef_divi_pas": schema_kw.get("COEF_DIVI_PAS", 1.3333334),
+                "dt_min": schema_kw.get("PAS_MINI")
+                if schema_kw.get("PAS_MINI") is not None
+                else dt * schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
+                "nb_poin_periode": int(schema_kw.get("NB_POIN_PERIODE", 50)),
+                "nmax_iter_pas": int(schema_kw.get("NMAX_ITER_PAS", 16)),
+                "pas_arch": int(archiving.get("PAS_ARCH") or 1),
+            }
+            neighbours = adapt_ordre2.same_component_neighbours(numbering, system.elimination.free)
+            stats = adapt_ordre2.integrate(
+                system,
+                times[0],
+                times[-1],
+                dt,
+                q,
+                v,
+                a,
+                archive,
+                inverse,
+                options,
+                neighbours,
+                ctx.log,
+            )
+        else:
+            mask = physical_archive_mask(kw, times)
+            if scheme == "NEWMARK":
+                newmark.integrate(
+                    system,
+                    times,
+                    q,
+                    v,
+                    a,
+                    mask,
+                    archive,
+                    beta=schema_kw.get("BETA", 0.25),
+                    gamma=schema_kw.get("GAMMA", 0.5),
+                    monitor=energy,
+                    modal=modal,
+                )
+            elif scheme == "WILSON":
+                wilson.integrate(
+                    system,
+                    times,
+                    q,
+                    v,
+                    a,
+                    mask,
+                    archive,
+                    theta=schema_kw.get("THETA", 1.4),
+                    modal=modal,
+                )
+            else:
+                inverse = checked_diagonal_mass(ctx, system, scheme)
+                limit = diff_centre.stability_limit(system, inverse)
+                if np.max(np.diff(times)) > limit * (1.0 + 1.0e-12):
+                    raise NumericalError(
+                        f"DIFF_CENTRE: the step {np.max(np.diff(times)):.6g} exceeds "
+                        f"{limit:.6g} (1/20 of the shortest period sqrt(m_ii/k_ii) 2π)",
+                        ctx.location,
+                        f"{ctx.command}/INCREMENT",
+                    )
+                half_velocity = diff_centre.integrate(
+                    system, times, q, v, a, mask, archive, inverse, monitor=energy
+                )
+                if "VITE" in excluded and half_velocity is not None:
+                    # code_aster's dldiff archives the fields excluded along the run at
+                    # the last instant, VITE being then the half-step velocity v_{N-1/2}
+                    last_velocity = half_velocity
+            stats = {"steps": times.size - 1}
+    except FloatingPointError as error:
+        path = f"{ctx.command}/{error.path}" if getattr(error, "path", "") else ctx.command
+        raise NumericalError(f"{scheme}: {error}", ctx.location, path) from None
+    elapsed = __import__("time").perf_counter() - started
+    out_t, out_q, out_v, out_a = archive.arrays()
+    if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
+        out_v[-1] = last_velocity
+    ctx.log(
+        f"DYNA_VIBRA PHYS {scheme}: {stats['steps']} steps, {out_t.size} archived, "
+        f"{system.n_free} free DOFs of {system.n_dofs}, {elapsed:.3f} s"
+    )
+    fields = {
+        "DEPL": system.expand(out_q),
+        "VITE": system.expand_rate(out_v),
+        "ACCE": system.expand_rate(out_a),
+    }
+    supports = physical_supports(ctx, kw, numbering)
+    if supports:
+        # code_aster (dlnew0): the fields are the relative motion; the absolute
+        # ones add Σ ψ_k (d_k, v_k, a_k)(t) (support static modes times motions)
+        for name in ("DEPL", "VITE", "ACCE"):
+            absolute = fields[name].copy()
+            for support in supports:
+                values = np.asarray(support[name].evaluate(out_t), dtype=float)
+                absolute += np.outer(values, support["shape"])
+            fields[f"{name}_ABSOLU"] = absolute
+    order = order_offset + np.arange(out_t.size, dtype=np.int64)
+    if reused is not None and t_state is not None:
+        keep = reused.times < out_t[0] - 1.0e-12 * max(1.0, abs(out_t[0]))
+        start = int(reused.order[keep][-1]) + 1 if np.any(keep) else 0
+        order = start + np.arange(out_t.size, dtype=np.int64)
+        out_t = np.concatenate([reused.times[keep], out_t])
+        order = np.concatenate([reused.order[keep], order])
+        fields = {
+            name: np.concatenate([reused.fields[name][keep], values])
+            for name, values in fields.items()
+            if name in reused.fields
+        }
+    produced = DynaTrans(numbering=numbering, times=out_t, order=order, fields=fields)
+    if energy is not None:
+        produced.tables["PARA_CALC"] = energy.table()
+    if kw.factor("OBSERVATION"):
+        for occ in kw.factor("OBSERVATION"):
+            dict(occ.items())  # the occurrences define the deferred table's content
+        path, location = kw.where("OBSERVATION")
+        produced.tables["OBSERVATION"] = TableNotComputed(
+            "the OBSERVATION table of DYNA_VIBRA (values at every PAS_OBSE step, between "
+            "archived instants) is not computed by asterlite",
+            location,
+            path,
+        )
+    return produced
+
+
+def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme):
+    """AMOR_MODAL of a physical transient (code_aster's nmmoam): a
+    ``ModalDamping`` applied explicitly by NEWMARK and WILSON (dlnew0);
+    DIFF_CENTRE and ADAPT_ORDRE2 do not read the keyword in code_aster."""
+    from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
+    from asterlite.modal.renumber import transfer
+
+    occs = kw.factor("AMOR_MODAL")
+    if not occs:
+        return None
+    occ = occs[0]
+    if scheme not in ("NEWMARK", "WILSON"):
+        ctx.log(
+            f"warning: AMOR_MODAL is ignored with SCHEMA={scheme!r} on a physical basis "
+            "(as code_aster, whose modal damping force is applied by NEWMARK and WILSON only)"
+        )
+        return None
+    modes = occ.get("MODE_MECA")
+    if modes is None:
+        ctx.error("AMOR_MODAL on a physical basis needs MODE_MECA", "MODE_MECA", occ)
+    n_modes = modes.n_modes
+    if occ.get("NB_MODE") is not None:
+        n_modes = min(n_modes, int(occ["NB_MODE"]))
+    values = occ.get("AMOR_REDUIT")
+    if values is None and occ.get("LIST_AMOR") is not None:
+        values = list_values(occ["LIST_AMOR"])
+    if values is None or np.size(values) == 0:
+        ctx.error("AMOR_MODAL needs AMOR_REDUIT or LIST_AMOR", "AMOR_REDUIT", occ)
+    ratios, too_many = damping_ratios(values, n_modes)
+    if too_many:
+        ctx.log(
+            f"warning: AMOR_MODAL gives more damping ratios than the {n_modes} modes used; "
+            "the extra values are ignored"
+        )
+    # b_i = K φ_i with the stiffness of the modes (REF_RIGI_PREM), on their numbering
+    mode_stiffness = modes.stiffness if modes.stiffness is not None else stiffness_matrix
+    shapes = np.asarray(modes.shapes[:, :n_modes], dtype=float)
+    shapes = transfer(shapes, modes.numbering, mode_stiffness.numbering)
+    stiffness_shapes = transfer(mode_stiffness.matrix @ shapes, mode_stiffness.numbering, numbering)
+    masses = modes.parameters.get("MASS_GENE", modes.generalized_mass)
+    masses = np.asarray(masses, dtype=float)[:n_modes]
+    frequencies = np.asarray(modes.frequencies, dtype=float)[:n_modes]
+    supports = [
+        (support["shape"], support["VITE"]) for support in physical_supports(ctx, kw, numbering)
+    ]
+    try:
+        modal = build_modal_damping(
+            system.elimination, stiffness_shapes, frequencies, masses, ratios, supports
+        )
+    except ValueError as error:
+        ctx.error(f"AMOR_MODAL: {error}", "MODE_MECA", occ)
+    ctx.log(f"AMOR_MODAL: modal damping force on {n_modes} modes, applied explicitly")
+    return modal
+
+
+def physical_loads(ctx, kw, numbering, stiffness_matrix):
+    from asterlite.dynamics.physical.system import Load
+    from asterlite.fem.assemble import assemble_terms
+    from asterlite.fem.loads import load_terms
+
+    loads = []
+    for occ in kw.factor("EXCIT"):
+        if occ.get("ACCE") is not None and occ.get("VECT_ASSE") is None:
+            ctx.unsupported("EXCIT ACCE with a CHARGE on a physical basis", "ACCE", occ)
+        if occ.get("VECT_ASSE") is not None:
+            vector = np.asarray(occ["VECT_ASSE"].values, dtype=float)
+            if vector.size != numbering.n_dofs:
+                ctx.error("VECT_ASSE is not on the numbering of the matrices", "VECT_ASSE", occ)
+        else:
+            load = occ["CHARGE"]
+            try:
+                terms = load_terms(
+                    load, stiffness_matrix.characteristics, stiffness_matrix.materials
+                )
+                vector = assemble_terms(terms, numbering)
+            except KeyError as exc:
+                ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
+        mult = occ.get("FONC_MULT")
+        if occ.get("ACCE") is not None:
+            mult = occ["ACCE"]  # relative motion: the vector is -M ψ (CALC_CHAR_SEISME)
+        elif mult is None:
+            mult = float(occ.get("COEF_MULT", 1.0))
+        loads.append(Load(vector, mult))
+    return loads
+
+
+def physical_supports(ctx, kw, numbering) -> list[dict]:
+    """MULT_APPUI='OUI' supports of a physical transient: ψ_k (the static
+    modes of MODE_STAT at the support nodes along DIRECTION) on the
+    numbering, with the support's DEPL / VITE / ACCE functions."""
+    from asterlite.modal.renumber import transfer
+
+    supports = []
+    for occ in kw.factor("EXCIT"):
+        if occ.get("MULT_APPUI") != "OUI":
+            continue
+        for name in ("DEPL", "VITE", "ACCE"):
+            if occ.get(name) is None:
+                ctx.error(f"EXCIT MULT_APPUI='OUI' needs {name}", name, occ)
+        shape = transfer(support_shape(ctx, kw, occ), kw["MODE_STAT"].numbering, numbering)
+        motions = {name: occ[name] for name in ("DEPL", "VITE", "ACCE")}
+        supports.append({"shape": shape, **motions})
+    return supports
+
+
+def initial_acceleration_computed(kw) -> bool:
+    """code_aster (dltali / dltini) solves for the initial acceleration only
+    when ETAT_INIT gives DEPL or VITE; from rest (no ETAT_INIT) the first
+    step starts with a zero acceleration, whatever the load at t0."""
+    occs = kw.factor("ETAT_INIT")
+    if not occs:
+        return False
+    occ = occs[0]
+    return occ.get("RESULTAT") is not None or any(
+        occ.get(name) is not None for name in ("DEPL", "VITE")
+    )
+
+
+def physical_initial_state(ctx, kw, system):
+    """(q, v, a or None, t of the state or None, first NUME_ORDRE)."""
+    n = system.n_free
+    q, v, a = np.zeros(n), np.zeros(n), None
+    occs = kw.factor("ETAT_INIT")
+    if not occs:
+        return q, v, a, None, 0
+    occ = occs[0]
+    previous = occ.get("RESULTAT")
+    if previous is not None:
+        if occ.get("NUME_ORDRE") is not None:
+            hits = np.nonzero(np.asarray(previous.order) == occ["NUME_ORDRE"])[0]
+            if not hits.size:
+                ctx.error(f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived", "NUME_ORDRE", occ)
+            k = int(hits[0])
+        elif occ.get("INST_INIT") is not None:
+            t = occ["INST_INIT"]
+            k = int(np.argmin(np.abs(previous.times - t)))
+            tol = occ.get("PRECISION", 1.0e-6) * (
+                abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
+            )
+            if abs(previous.times[k] - t) > max(tol, 1e-300):
+                ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
+        else:
+            k = len(previous.times) - 1
+        fields = previous.fields
+        q = system.restrict(fields["DEPL"][k])
+        v = system.restrict(fields["VITE"][k]) if "VITE" in fields else v
+        a = system.restrict(fields["ACCE"][k]) if "ACCE" in fields else None
+        return q, v, a, float(previous.times[k]), int(previous.order[k])
+    if occ.get("DEPL") is not None:
+        q = system.restrict(occ["DEPL"].values)
+    if occ.get("VITE") is not None:
+        v = system.restrict(occ["VITE"].values)
+    if occ.get("ACCE") is not None:
+        a = system.restrict(occ["ACCE"].values)
+    return q, v, a, None, 0
+
+
+def physical_instants(ctx, kw, t_state):
+    """The step instants (first = the initial state) and the nominal step."""
+    occ = kw.factor("INCREMENT")[0]
+    if occ.get("LIST_INST") is not None:
+        values = list_values(occ["LIST_INST"])
+        t_end = float(values[-1])
+        if occ.get("NUME_FIN") is not None and occ["NUME_FIN"] < len(values):
+            t_end = float(values[occ["NUME_FIN"]])
+        if occ.get("INST_FIN") is not None:
+            t_end = float(occ["INST_FIN"])
+        t0 = float(values[0]) if t_state is None else t_state
+        tol = 1.0e-9 * max(1.0, abs(t_end))
+        inside = values[(values > t0 + tol) & (values <= t_end + tol)]
+        times = np.concatenate([[t0], inside])
+        dt = (float(values[-1]) - float(values[0])) / (len(values) - 1)
+    else:
+        dt = float(occ["PAS"])
+        t0 = t_state if t_state is not None else float(occ.get("INST_INIT") or 0.0)
+        t_end = float(occ["INST_FIN"])
+        refuse_too_many_steps(ctx, occ, t0, t_end, dt)
+        n_steps = int(round((t_end - t0) / dt))
+        times = t0 + dt * np.arange(n_steps + 1)
+        if n_steps >= 1:
+            times[-1] = t_end if abs(times[-1] - t_end) < 1.0e-9 * dt else times[-1]
+    if times.size < 2 or times[-1] <= times[0]:
+        ctx.error(f"INST_FIN ({t_end}) must exceed the initial instant ({t0})", "INST_FIN", occ)
+    return times, dt
+
+
+def physical_archive_mask(kw, times):
+    from asterlite.dynamics.physical.archive import archived_steps
+
+    occs = kw.factor("ARCHIVAGE")
+    if not occs:
+        return archived_steps(times, 1, (), 0.0, True)
+    occ = occs[0]
+    instants = ()
+    if occ.get("LIST_INST") is not None:
+        instants = list_values(occ["LIST_INST"])
+    elif occ.get("INST") is not None:
+        instants = np.atleast_1d(np.asarray(occ["INST"], dtype=float))
+    pas_arch = occ.get("PAS_ARCH")
+    if pas_arch is None:
+        pas_arch = 0 if len(instants) else 1
+    relative = occ.get("CRITERE", "RELATIF") == "RELATIF"
+    return archived_steps(times, int(pas_arch), instants, occ.get("PRECISION", 1.0e-6), relative)
+
+
+def checked_diagonal_mass(ctx, system, scheme):
+    inverse = system.diagonal_mass_inverse()
+    if inverse is None:
+        ctx.error(
+            f"{scheme} on a physical basis needs a diagonal mass matrix "
+            "(OPTION='MASS_MECA_DIAG'), as in code_aster",
+            "MATR_MASS",
+        )
+    return inverse
