@@ -7,6 +7,7 @@ into a code_aster 17 deck that ``asterlite check`` accepts."""
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -55,6 +56,30 @@ def test_ported_deck_is_accepted_by_check(deck, corpus_v15, tmp_path):
     report = run_deck(tmp_path / f"{deck}.export", check_only=True)
     assert report.status == "CHECKED", report.message
     assert not port_file(tmp_path / f"{deck}.comm").notes  # nothing legacy left
+
+
+@pytest.mark.slow
+@pytest.mark.corpus
+@pytest.mark.parametrize("deck", baseline_passing())
+def test_ported_deck_runs_to_the_same_values(deck, corpus_v15, tmp_path):
+    """The ported deck (with its version line where it relies on a code_aster 15
+    behaviour no keyword expresses) gives the same TEST_* values as the deck as
+    written (issue 15: port and run share one translation)."""
+    from tests.test_legacy_v11_port import _ported_copy
+
+    export, _ = _ported_copy(deck, tmp_path / "ported", corpus=corpus_v15)
+    legacy = run_deck(corpus_v15 / deck / f"{deck}.export", tmp_path / "legacy_run")
+    assert legacy.status == "PASS", legacy.message
+    ported = run_deck(export, tmp_path / "ported_run")
+    assert ported.status == "PASS", ported.message
+    old = [(t.command, t.value) for t in legacy.tests]
+    new = [(t.command, t.value) for t in ported.tests]
+    assert [c for c, _ in old] == [c for c, _ in new]
+    for (_, a), (_, b) in zip(old, new, strict=True):
+        if isinstance(a, str) or isinstance(b, str):
+            assert a == b, (deck, a, b)
+        else:
+            assert math.isclose(a, b, rel_tol=1.0e-9, abs_tol=1.0e-300), (deck, a, b)
 
 
 # the other corpus folders and their committed baselines (decks that pass today)

@@ -139,15 +139,18 @@ def _decks() -> list[str]:
     return sorted(p.name for p in CORPUS_V11.iterdir() if (p / f"{p.name}.export").is_file())
 
 
-def _ported_copy(deck: str, tmp_path: Path):
-    """(the export of the ported deck beside the corpus files, port's result)."""
-    folder = CORPUS_V11 / deck
+def _ported_copy(deck: str, tmp_path: Path, corpus: Path = CORPUS_V11):
+    """(the export of the ported deck beside the corpus files, port's result for
+    its .comm; other command files, .com1..., are ported beside it)."""
+    folder = corpus / deck
     result = port_file(folder / f"{deck}.comm")
     tmp_path.mkdir(parents=True, exist_ok=True)
     for path in folder.iterdir():
         target = tmp_path / path.name
         if path.suffix == ".comm":
             target.write_text(result.text)
+        elif path.suffix.startswith(".com"):
+            target.write_text(port_file(path).text)
         else:
             target.symlink_to(path)
     return tmp_path / f"{deck}.export", result

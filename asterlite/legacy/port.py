@@ -344,6 +344,14 @@ def _constants(tree) -> dict:
     return {name: value for name, value in values.items() if counts[name] == 1}
 
 
+def _old_behaviour(name: str, version: int) -> bool:
+    """Whether a deck of ``version`` meant ``name`` (asterlite.legacy.v15.OLD_BEHAVIOURS)."""
+    from asterlite.legacy.v15 import OLD_BEHAVIOURS
+
+    first, last = OLD_BEHAVIOURS[name]
+    return first <= version <= last
+
+
 def _legacy_calls(tree, also=frozenset()):
     """Calls of commands that have a compat_syntax (or are named in ``also``), in text order."""
     found = []
@@ -492,8 +500,12 @@ def _port(text: str, filename: str, context) -> PortResult:
     edits = []
     names = set(re.findall(r"\b[A-Za-z_]\w*\b", text))
     old_deck = version <= v11.LAST_VERSION  # code_aster 10-11 forms (asterlite.legacy.v11)
-    calls = _legacy_calls(module.tree, port_v11.commands() if old_deck else frozenset())
-    if old_deck:
+    # code_aster 12-15 still read TEST_RESU/GENE NUME_ORDRE as a rank (v11's
+    # adjusters rewrite it for older decks)
+    gene_ranks = not old_deck and _old_behaviour("TEST_RESU_GENE_NUME_ORDRE_AS_POSITION", version)
+    also = port_v11.commands() if old_deck else frozenset({"TEST_RESU"} if gene_ranks else ())
+    calls = _legacy_calls(module.tree, also)
+    if old_deck or gene_ranks:
         transients = _bound_names(module.tree, port_v11.DeckFacts.TRANSIENT_COMMANDS)
         deck_facts = port_v11.DeckFacts(_bound_names(module.tree), transients)
         point_groups = port_v11.MeshGroups(legacy_groups)
@@ -514,6 +526,9 @@ def _port(text: str, filename: str, context) -> PortResult:
             before: list = []
             if old_deck and name in port_v11.commands():
                 keywords, before = port_v11.adjust(keywords, env, deck_facts, point_groups)
+            elif gene_ranks and name == "TEST_RESU":
+                call = port_v11.PortCall(env)
+                keywords = port_v11.gene_rank(keywords, call, deck_facts.transients)
             translation = None
             if catalogue.compat_syntax is not None:
                 translation = catalogue.compat_syntax(keywords, env)

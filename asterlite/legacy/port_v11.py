@@ -103,8 +103,8 @@ def gene_rank(kwargs: dict, call: PortCall, transients: set[str]) -> dict:
                 raise NotPortable("TEST_RESU/GENE/NUME_ORDRE is not a literal number")
             return level
         call.note(
-            "TEST_RESU/GENE/NUME_ORDRE on a transient (code_aster 11: the rank of the "
-            "archived instant)",
+            "TEST_RESU/GENE/NUME_ORDRE on a transient (code_aster 15 and older: the "
+            "rank of the archived instant)",
             "NUME_ORDRE=its order number (one less)",
             level,
             "NUME_ORDRE",
