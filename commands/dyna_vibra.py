@@ -153,18 +153,15 @@ def run(ctx, kw):
         adapt_v11=scheme == "ADAPT_ORDRE2" and computes(ctx.session, "ADAPT_ORDRE2_MDADAP"),
     )
     if options.adapt_v11 and options.dt_max is None:
-        ctx.unsupported(
-            "ADAPT_ORDRE2 of code_aster 10-12 without PAS_MAXI (that version's default, "
-            "a twentieth of its stability step estimate)",
-            "SCHEMA_TEMPS",
-            kw,
-        )
+        options.dt_max = legacy_adapt_step_max(ctx, system, shocks)
     try:
         if film is not None:  # CHOC/LAME_FLUIDE of code_aster 10-14 decks
             refuse_with_film(ctx, kw, implicit, rotation, energy, driven)
+            film_scheme = "ADAPT_ORDRE2" if options.adapt_v11 else "EULER"
             result = integrate_film(
                 system, shocks, film, excitation, q0, v0, t0, t_end, dt, instants, pas_arch,
-                label=f"DYNA_VIBRA {ctx.result_name or ''} EULER (LAME_FLUIDE)",
+                label=f"DYNA_VIBRA {ctx.result_name or ''} {film_scheme} (LAME_FLUIDE)",
+                adapt=options if options.adapt_v11 else None,
             )  # fmt: skip
         else:
             result = integrate(
@@ -243,9 +240,25 @@ def run(ctx, kw):
 
 
 # schemes that integrate a fluid film: code_aster 10-12's EULER (asterlite's
-# DIFF_CENTRE arithmetic, the name legacy decks are translated to)
+# DIFF_CENTRE arithmetic, the name legacy decks are translated to), and its
+# ADAPT_ORDRE2 (mdadap) in decks of those versions (FILM_ADAPT_SCHEMES)
 FILM_SCHEMES = ("DIFF_CENTRE", "EULER")
+FILM_ADAPT_SCHEMES = ("ADAPT_ORDRE2",)
 FRICTION_KEYWORDS = ("COULOMB", "COULOMB_DYNA", "COULOMB_STAT")
+
+
+def legacy_adapt_step_max(ctx, system, shocks) -> float:
+    """PAS_MAXI of code_aster 10-12's ADAPT_ORDRE2 when the deck gives none
+    (mdptem): a twentieth of the shortest period, shock stiffness included."""
+    from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
+
+    shortest = stability_limit(system, shocks)
+    dt_max = default_step_max(shortest.period)
+    ctx.log(
+        f"ADAPT_ORDRE2 (code_aster 10-12): PAS_MAXI={dt_max:.6g}, a twentieth of the shortest "
+        f"period {shortest.period:.6g} s (that version's default), set by {shortest.cause()}"
+    )
+    return dt_max
 
 
 def fluid_film(ctx, kw, scheme, system, occurrences) -> FluidFilm | None:
@@ -255,10 +268,11 @@ def fluid_film(ctx, kw, scheme, system, occurrences) -> FluidFilm | None:
     if not films:
         return None
     where = films[0]
-    if scheme not in FILM_SCHEMES:
+    legacy_adapt = scheme in FILM_ADAPT_SCHEMES and computes(ctx.session, "ADAPT_ORDRE2_MDADAP")
+    if scheme not in FILM_SCHEMES and not legacy_adapt:
         ctx.unsupported(
             f"LAME_FLUIDE='OUI' with SCHEMA={scheme!r} (only code_aster 10-12's EULER, "
-            "SCHEMA='DIFF_CENTRE' here)",
+            "SCHEMA='DIFF_CENTRE' here, and that version's ADAPT_ORDRE2 in its decks)",
             "LAME_FLUIDE",
             where,
         )

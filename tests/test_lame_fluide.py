@@ -119,7 +119,8 @@ def test_code_aster_11_iterations_become_para_lame_flui():
     assert "LAMBDA" not in v11.fluid_film(dry, _Call())
 
 
-def test_code_aster_11_adapt_with_a_film_is_refused():
-    call = {"SCHEMA_TEMPS": {"SCHEMA": "ADAPT_ORDRE2"}, "CHOC": {"LAME_FLUIDE": "OUI"}}
-    with pytest.raises(v11.UnsupportedError, match="ADAPT_ORDRE2.*code_aster 11"):
+def test_code_aster_11_adapt_ordre1_with_a_film_is_refused():
+    """ADAPT_ORDRE2 runs the film (tests/test_fluid_film_adapt.py), ADAPT_ORDRE1 not."""
+    call = {"SCHEMA_TEMPS": {"SCHEMA": "ADAPT_ORDRE1"}, "CHOC": {"LAME_FLUIDE": "OUI"}}
+    with pytest.raises(v11.UnsupportedError, match="ADAPT_ORDRE1.*code_aster 11"):
         v11.fluid_film(call, _Call())

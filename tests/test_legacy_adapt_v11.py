@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 
 from asterlite.dynamics import scheme_adapt_ordre2_v11 as V11
-from asterlite.errors import UnsupportedError
 from asterlite.legacy.port import port_text
 from asterlite.legacy.v15 import OLD_BEHAVIOURS, computes
 from asterlite.legacy.version import (
@@ -115,9 +114,12 @@ def v11_oscillator(schema, pas=1.0e-3, t_end=1.0):
     return dyna_vibra.run(context, kw)
 
 
-def test_without_pas_maxi_the_v11_scheme_is_refused():
-    with pytest.raises(UnsupportedError, match="PAS_MAXI"):
-        v11_oscillator({})
+@pytest.mark.slow  # compiles the scheme's loop
+def test_without_pas_maxi_the_v11_scheme_grows_to_a_twentieth_of_the_period():
+    """code_aster 10-12's default PAS_MAXI (mdptem): 1/20 of the shortest
+    period, here the 1 Hz mode's (NB_POIN_PERIODE=5 lets the step grow)."""
+    result = v11_oscillator({"NB_POIN_PERIODE": 5}, pas=1.0e-3)
+    assert result.info["max_step"] == pytest.approx(1.0 / 20.0)
 
 
 @pytest.mark.slow  # compiles the scheme's loop (a minute or more on a loaded machine)

@@ -173,13 +173,14 @@ TEST_TABLE(TABLE=TAB, NOM_PARA='X', VALE=10., PRECISION=1.E-12)
 
 
 def test_lame_fluide_is_refused_by_name(tmp_path):
-    """The fluid film runs with EULER only (tests/test_lame_fluide.py); code_aster
-    11's ADAPT algorithm with a film is refused by name."""
+    """The fluid film runs with EULER and ADAPT_ORDRE2 (tests/test_lame_fluide.py,
+    tests/test_fluid_film_adapt.py); code_aster 11's ADAPT_ORDRE1 with a film
+    is refused by name."""
     body = """\
 MACRO_PROJ_BASE(BASE=MODES, MATR_ASSE_GENE=(_F(MATRICE=CO('MG'), MATR_ASSE=MASS),
                                              _F(MATRICE=CO('KG'), MATR_ASSE=RIGI)))
 OBS = DEFI_OBSTACLE(TYPE='PLAN_Z')
-TR = DYNA_TRAN_MODAL(MATR_MASS=MG, MATR_RIGI=KG, SCHEMA_TEMPS=_F(SCHEMA='ADAPT_ORDRE2'),
+TR = DYNA_TRAN_MODAL(MATR_MASS=MG, MATR_RIGI=KG, SCHEMA_TEMPS=_F(SCHEMA='ADAPT_ORDRE1'),
     INCREMENT=_F(INST_INIT=0., INST_FIN=0.01, PAS=1.E-4),
     CHOC=_F(NOEUD_1='N2', OBSTACLE=OBS, NORM_OBST=(0., 0., 1.), RIGI_NOR=1.E5,
             LAME_FLUIDE='OUI', ALPHA=0.1, BETA=0.1, CHI=0.1, DELTA=0.))

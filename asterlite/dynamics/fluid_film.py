@@ -1,5 +1,5 @@
 """Fluid-film shocks (CHOC/LAME_FLUIDE='OUI' of code_aster 10-12) and the
-EULER loop that integrates them.
+two loops that integrate them: code_aster 11's EULER, and its ADAPT_ORDRE2.
 
 The model (code_aster 11: mdeul1, mdfcho, mdfflu, mdmasf, ponder):
 
@@ -29,6 +29,17 @@ the initial acceleration is one evaluation with a zero acceleration in the
 film law, as code_aster 11 starts. Shocks without a film in the same run
 follow the DIS_CHOC law (:func:`contact.contact_law`), evaluated once per
 step (their force does not depend on the acceleration).
+
+Under code_aster 10-12's ADAPT_ORDRE2 (mdadap, :func:`run_adapt_loop`) the
+step control, the leapfrog prediction and the archive grid are those of
+:mod:`scheme_adapt_ordre2_v11`; each trial step computes its end acceleration
+by the same fixed-point iterations, started from the acceleration of the
+step's start, and the apparent frequency judges the converged one. As in
+mdadap, a trial whose iterations do not converge stops the run (no smaller
+step is tried), and the boundary-layer state a rejected trial changed is kept.
+The iterations stop on a relative change, not on the fixed point: with
+RESI_RELA loose, the diagonal added-mass stand-in leaves a lag that depends
+on the modal basis (poor when a shock's relative motion spreads over several modes).
 """
 
 from __future__ import annotations
@@ -41,7 +52,9 @@ import numpy as np
 from numba import njit
 
 from asterlite import progress
+from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics import scheme_adapt_ordre2_v11 as V11
 from asterlite.dynamics.contact import (
     F_GEOMETRY,
     F_NPOLAR,
@@ -61,7 +74,7 @@ from asterlite.dynamics.contact import (
     contact_law,
     obstacle_gap,
 )
-from asterlite.dynamics.forces import add_external_force, loads_ready
+from asterlite.dynamics.forces import add_external_force, copy_into, loads_ready
 from asterlite.errors import NumericalError
 from asterlite.runtime import watchdog
 
@@ -371,13 +384,105 @@ def run_loop(clock, counters, q, v, a, vint, linear, model, exc, controls, scala
     return K.STATUS_DONE
 
 
+# ------------------------------------------- code_aster 10-12's ADAPT_ORDRE2
+
+
+@njit(cache=True)
+def film_trial(t, dt, state, rows, scalars, linear, model, exc, controls, counts, work):
+    """One trial of mdadap's step ``dt`` with fluid films: the leapfrog
+    prediction, then the acceleration at its end by the fixed-point
+    iterations, started from the acceleration of the step's start (as
+    mdadap starts each trial). -1 when converged, a shock index (>= 0) whose
+    velocity diverged, -2 for a non-finite acceleration, -3 when NMAX_ITER
+    iterations did not converge."""
+    mass, stiffness, damping = linear
+    flags, params, shapes, rest, polars, film = model[:6]
+    base, f, mass_mod, kin = work[0], work[1], work[2], work[3]
+    vint, vint_save = state[4], state[5]
+    q2, v2, a2 = rows[V11.Q_TRIAL], rows[V11.V_TRIAL], rows[V11.A_TRIAL]
+    V11.predict(dt, state, rows, scalars)
+    copy_into(vint, vint_save)  # the dry shocks' states of the step's start
+    copy_into(a2, state[2])
+    external_force(t + dt, exc, base)
+    shock = dry_shock_forces(q2, v2, a2, flags, params, shapes, rest, polars, film, vint, kin, base)
+    if shock >= 0:
+        return shock
+    for iteration in range(1, int(controls[0]) + 1):
+        change, size, finite = film_acceleration(
+            q2, v2, a2, base, mass, stiffness, damping, model, vint, kin, f, mass_mod
+        )
+        if not finite:
+            return -2
+        counts[S_TOTAL] += 1.0
+        counts[S_RATIO] = change / size if size > 0.0 else 0.0
+        if change <= controls[1] * size:
+            counts[S_WORST] = max(counts[S_WORST], float(iteration))
+            return -1
+    return -3
+
+
+@njit(cache=True)
+def adapt_step(clock, counters, state, rows, scalars, linear, model, exc, controls, counts, work,
+               archive):  # fmt: skip
+    """One accepted step of mdadap with fluid films (its trials included):
+    the control of :func:`scheme_adapt_ordre2_v11.take_step` around
+    :func:`film_trial`; a kernel status."""
+    t = clock[K.C_TIME]
+    dt = V11.first_trial_step(clock)
+    max_trials = int(round(scalars[A.S_MAX_TRIALS]))
+    err = 100.0
+    trials = 0
+    copy_into(state[5], state[4])
+    while err > 1.0 and trials < max_trials:
+        tried = dt
+        failed = film_trial(t, tried, state, rows, scalars, linear, model, exc, controls, counts,
+                            work)  # fmt: skip
+        if failed >= 0:
+            return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
+        if failed == -2:
+            K.expose_trial(state[0], state[1], state[2], rows[V11.Q_TRIAL], rows[V11.V_TRIAL],
+                           rows[V11.A_TRIAL])  # fmt: skip
+            return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
+        if failed == -3:  # mdadap stops the run (ALGORITH15_99)
+            return K.record_failure(clock, counters, STATUS_FILM_NOT_CONVERGED, -1, tried)
+        err, dt, underflow = V11.judge(clock, tried, state, rows, scalars)
+        if underflow:
+            return K.record_failure(clock, counters, K.STATUS_STEP_UNDERFLOW, -1, dt)
+        trials += 1
+    V11.accept(clock, counters, state, rows, scalars, archive, dt, err, trials)
+    return K.STATUS_DONE
+
+
+@njit(cache=True)
+def run_adapt_loop(clock, counters, state, memory, linear, model, exc, controls, counts, work,
+                   archive, pas_arch):  # fmt: skip
+    """code_aster 10-12's ADAPT_ORDRE2 (mdadap) with fluid films: its step
+    control and archive grid (:mod:`scheme_adapt_ordre2_v11`), the film's
+    iterations in each trial; resumable after any pause."""
+    rows, scalars = memory[0], memory[1]
+    if scalars[A.S_FIRST_CALL] == 1.0:
+        V11.start(clock, state, rows, scalars, pas_arch)
+    while clock[K.C_TIME] < clock[K.C_END]:
+        paused = K.pause_status(counters, archive[0])
+        if paused:
+            return paused
+        if not loads_ready(clock, exc):
+            return K.STATUS_LOADS
+        status = adapt_step(clock, counters, state, rows, scalars, linear, model, exc, controls,
+                            counts, work, archive)  # fmt: skip
+        if status != K.STATUS_DONE:
+            return status
+    return V11.fill_slots(clock, counters, state, scalars, archive)
+
+
 # ------------------------------------------------------------------ driver
 
 
 def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_end, dt, instants,
-                   pas_arch, label=None):  # fmt: skip
-    """Integrate from t0 to t_end with code_aster 11's EULER and fluid films;
-    returns an :class:`integrate.RunResult`."""
+                   pas_arch, label=None, adapt=None):  # fmt: skip
+    """Integrate from t0 to t_end with fluid films: code_aster 11's EULER, or
+    with ``adapt`` (the :class:`integrate.SchemeOptions` of the run, PAS_MAXI
+    given) its ADAPT_ORDRE2 (mdadap); returns an :class:`integrate.RunResult`."""
     from asterlite.dynamics.integrate import (
         RunResult,
         SchemeOptions,
@@ -390,6 +495,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
 
     if not system.diagonal:
         raise NumericalError("LAME_FLUIDE needs diagonal generalized matrices (a modal basis)")
+    scheme = "EULER" if adapt is None else "ADAPT_ORDRE2"
     n = system.n_modes
     linear = tuple(
         np.ascontiguousarray(np.diag(m), dtype=float)
@@ -412,23 +518,34 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
     capacity = 2 + len(instants) + K.grid_step_count(t0, t_end, dt) // max(pas_arch, 1)
-    clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(False)
-    budget = StepBudget(t0, t_end, dt, False, SchemeOptions())
+    adaptive = adapt is not None
+    if adaptive:  # mdadap's state (the scheme's rows and scalars) in the generic layout
+        memory, _ = V11.prepare(system, dt, adapt)
+        state = (q, v, a, np.zeros(n), vint, np.zeros_like(vint), np.zeros((5, 3)))
+        capacity = min(capacity, 4096)
+    clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
+    budget = StepBudget(t0, t_end, dt, adaptive, adapt or SchemeOptions())
     row_bytes = 8 * (2 + 3 * n + shocks.count * shocks.vint_width + K.N_INFO)
     budget.check_archive(capacity, row_bytes, pas_arch, clock, counters)
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
     counters[K.K_ARCHIVED] = 1
-    bar = progress.time_bar(label or "DYNA_VIBRA EULER (LAME_FLUIDE)", t0, t_end)
+    bar = progress.time_bar(label or f"DYNA_VIBRA {scheme} (LAME_FLUIDE)", t0, t_end)
     started = wallclock.perf_counter()
     try:
         while True:
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
             chunk_started = wallclock.perf_counter()
-            status = run_loop(
-                clock, counters, q, v, a, vint, linear, model, exc, controls, scalars, work,
-                buffers, instants, pas_arch, eps,
-            )  # fmt: skip
+            if adaptive:
+                status = run_adapt_loop(
+                    clock, counters, state, memory, linear, model, exc, controls, scalars, work,
+                    buffers, pas_arch,
+                )  # fmt: skip
+            else:
+                status = run_loop(
+                    clock, counters, q, v, a, vint, linear, model, exc, controls, scalars, work,
+                    buffers, instants, pas_arch, eps,
+                )  # fmt: skip
             if status == K.STATUS_FULL:
                 budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
                 buffers = grow(buffers)
@@ -436,6 +553,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
                 excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
                 exc = excitation.bundle()
             elif status == K.STATUS_PAUSE:
+                budget.check_steps(clock, counters, scheme)
                 watchdog.check_limits()
                 budget.resize_chunk(wallclock.perf_counter() - chunk_started)
                 bar.update(clock[K.C_TIME], int(counters[K.K_STEP]))
@@ -453,10 +571,12 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
             "LAMBDA, or reduce PAS"
         )
     if status != K.STATUS_DONE:
-        raise divergence_error(status, clock, counters, shocks, system, "EULER")
+        raise divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
     out = tuple(b[:count].copy() for b in buffers)
-    info = run_info(clock, counters, t0, dt, elapsed, adaptive=False)
+    info = run_info(clock, counters, t0, dt, elapsed, adaptive=adaptive)
     info["film_iterations"] = int(scalars[S_TOTAL])
     info["film_worst_iterations"] = int(scalars[S_WORST])
+    if adaptive:
+        info["steps_kept_at_nmax_iter_pas"] = int(memory[1][A.S_KEPT_AT_MAX_TRIALS])
     return RunResult(*out, info=info)

@@ -20,11 +20,17 @@ What differs from code_aster 17 is the control around it:
 - calm steps (err < 0.75) are counted; the sixth calm step in a row and
   every calm step after it multiplies the next step by COEF_MULT_PAS (at
   most PAS_MAXI); any other step resets the count.
+- PAS_MAXI defaults to a twentieth of the shortest period, shock stiffness
+  included (mdptem; :func:`default_step_max`), even below PAS.
 - archiving: the archive times are t0 + k PAS_MAXI PAS_ARCH; a step that
   brackets one archives whichever of its two ends is nearer (the step is
   never shortened to land on it). At the end, the slots left of the
   int((t_end - t0)/spacing) + 1 (+1 if a remainder) planned are filled with
   the final state.
+
+The pieces of a step (:func:`predict`, :func:`judge`, :func:`accept`) also
+serve the loop with fluid films (:func:`asterlite.dynamics.fluid_film.run_adapt_loop`),
+whose trials compute the end acceleration by iterations.
 """
 
 from __future__ import annotations
@@ -48,12 +54,12 @@ MACHINE_EPS = np.finfo(np.float64).eps
 
 
 def prepare(system, dt, options):
-    """PAS_MAXI is required: without it code_aster 10-12 took a twentieth of
-    the stability step of mdptem, which asterlite does not compute."""
+    """PAS_MAXI is required here: the driver gives code_aster 10-12's default
+    when the deck has none (:func:`default_step_max`)."""
     if options.dt_max is None:
         raise NumericalError(
-            "ADAPT_ORDRE2 of code_aster 10-12 without PAS_MAXI (its default was a "
-            "twentieth of that version's stability step estimate)"
+            "ADAPT_ORDRE2 of code_aster 10-12 without PAS_MAXI (DYNA_VIBRA fills in "
+            "that version's default, a twentieth of the shortest period: default_step_max)"
         )
     base, _ = A.control_scalars(dt, options)
     scalars = np.zeros(N_SCALARS)
@@ -61,6 +67,14 @@ def prepare(system, dt, options):
     rows = np.zeros((VECTOR_ROWS, system.n_modes))
     rows[V_MIN] = 1.0e-15
     return (rows, scalars, np.zeros((1, 1))), True
+
+
+def default_step_max(shortest_period: float) -> float:
+    """code_aster 10-12's PAS_MAXI when the deck gives none (mdptem): a
+    twentieth of the shortest period among the modes, each stiffened by every
+    shock's RIGI_NOR and RIGI_TAN on each shape component
+    (:func:`asterlite.dynamics.model.stability_limit`; 1e10 s without any)."""
+    return shortest_period / 20.0
 
 
 @njit(cache=True)
@@ -86,20 +100,31 @@ def start(clock, state, rows, scalars, pas_arch):
 
 
 @njit(cache=True)
-def trial(t, dt, state, rows, scalars, model):
-    """One trial of the step ``dt`` from ``t`` into the trial rows: the index
-    of a shock that diverged (>= 0), -2 for a non-finite acceleration, else -1."""
-    q, v, a, f, vint, vint_save, work = state
-    n = q.shape[0]
-    q2, v2, a2 = rows[Q_TRIAL], rows[V_TRIAL], rows[A_TRIAL]
+def predict(dt, state, rows, scalars):
+    """The leapfrog prediction of the step ``dt`` into the trial rows: the
+    mid-step velocity, the displacement and the end velocity (without the
+    acceleration at the end, which the caller computes)."""
+    q, a = state[0], state[2]
+    q2, v2 = rows[Q_TRIAL], rows[V_TRIAL]
     v_mid, v_mid2 = rows[V_MID], rows[V_MID_TRIAL]
     p = 0.5 * (scalars[S_PREVIOUS_STEP] + dt)
-    for i in range(n):
+    for i in range(q.shape[0]):
         v_mid2[i] = v_mid[i] + a[i] * p
         q2[i] = q[i] + dt * v_mid2[i]
         v2[i] = v_mid2[i] + 0.5 * dt * a[i]
+
+
+@njit(cache=True)
+def trial(t, dt, state, rows, scalars, model):
+    """One trial of the step ``dt`` from ``t`` into the trial rows: the index
+    of a shock that diverged (>= 0), -2 for a non-finite acceleration, else -1."""
+    f, vint, vint_save, work = state[3], state[4], state[5], state[6]
+    predict(dt, state, rows, scalars)
     copy_into(vint, vint_save)
-    shock = state_acceleration(t + dt, q2, v2, a2, f, rows[RESIDUAL], vint, work, model)
+    a2 = rows[A_TRIAL]
+    shock = state_acceleration(
+        t + dt, rows[Q_TRIAL], rows[V_TRIAL], a2, f, rows[RESIDUAL], vint, work, model
+    )
     if shock >= 0:
         return shock
     if not all_finite(a2):
@@ -143,34 +168,36 @@ def update_reference_velocities(rows, scalars):
 
 
 @njit(cache=True)
-def take_step(clock, counters, state, rows, scalars, model, archive):
-    """One accepted step (trials included); a kernel status."""
-    t = clock[K.C_TIME]
-    t_end = clock[K.C_END]
+def first_trial_step(clock):
+    """The step a new step starts its trials with (clipped at the end)."""
     dt = clock[K.C_STEP]
-    if t + dt > t_end:
-        dt = t_end - t
-    max_trials = int(round(scalars[A.S_MAX_TRIALS]))
-    err = 100.0
-    trials = 0
-    copy_into(state[5], state[4])  # the shock states of the step's start
-    while err > 1.0 and trials < max_trials:
-        tried = dt
-        failed = trial(t, tried, state, rows, scalars, model)
-        if failed >= 0:
-            return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
-        if failed == -2:
-            K.expose_trial(state[0], state[1], state[2], rows[Q_TRIAL], rows[V_TRIAL],
-                           rows[A_TRIAL])  # fmt: skip
-            return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
-        freq = A.apparent_frequency(tried, state[0], rows[Q_TRIAL], state[2], rows[A_TRIAL],
-                                    rows[V_MIN])  # fmt: skip
-        err = scalars[A.S_POINTS] * freq * tried
-        if err > 1.0:
-            dt = dt / scalars[A.S_DIVI]
-        if dt <= scalars[A.S_DTMIN] and abs(t_end - (t + dt)) > MACHINE_EPS:
-            return K.record_failure(clock, counters, K.STATUS_STEP_UNDERFLOW, -1, dt)
-        trials += 1
+    if clock[K.C_TIME] + dt > clock[K.C_END]:
+        dt = clock[K.C_END] - clock[K.C_TIME]
+    return dt
+
+
+@njit(cache=True)
+def judge(clock, tried, state, rows, scalars):
+    """(error, step, underflow): the error of the trial of step ``tried``
+    just computed, the step of the next trial (divided by COEF_DIVI_PAS when
+    the error exceeds 1), and whether that step fell to PAS_MINI before the end."""
+    t, t_end = clock[K.C_TIME], clock[K.C_END]
+    freq = A.apparent_frequency(tried, state[0], rows[Q_TRIAL], state[2], rows[A_TRIAL],
+                                rows[V_MIN])  # fmt: skip
+    err = scalars[A.S_POINTS] * freq * tried
+    dt = tried
+    if err > 1.0:
+        dt = dt / scalars[A.S_DIVI]
+    underflow = dt <= scalars[A.S_DTMIN] and abs(t_end - (t + dt)) > MACHINE_EPS
+    return err, dt, underflow
+
+
+@njit(cache=True)
+def accept(clock, counters, state, rows, scalars, archive, dt, err, trials):
+    """Close a step whose last trial (of step ``dt``: the trial's step, or
+    that step divided once more when every trial failed) is kept: the next
+    step, the archive, the reference velocities, the state."""
+    t, t_end = clock[K.C_TIME], clock[K.C_END]
     if err > 1.0:
         scalars[A.S_KEPT_AT_MAX_TRIALS] += 1.0
     counters[K.K_REJECTED] += trials - 1
@@ -197,6 +224,43 @@ def take_step(clock, counters, state, rows, scalars, model, archive):
     copy_into(state[1], rows[V_TRIAL])
     copy_into(state[2], rows[A_TRIAL])
     copy_into(rows[V_MID], rows[V_MID_TRIAL])
+
+
+@njit(cache=True)
+def take_step(clock, counters, state, rows, scalars, model, archive):
+    """One accepted step (trials included); a kernel status."""
+    t = clock[K.C_TIME]
+    dt = first_trial_step(clock)
+    max_trials = int(round(scalars[A.S_MAX_TRIALS]))
+    err = 100.0
+    trials = 0
+    copy_into(state[5], state[4])  # the shock states of the step's start
+    while err > 1.0 and trials < max_trials:
+        tried = dt
+        failed = trial(t, tried, state, rows, scalars, model)
+        if failed >= 0:
+            return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
+        if failed == -2:
+            K.expose_trial(state[0], state[1], state[2], rows[Q_TRIAL], rows[V_TRIAL],
+                           rows[A_TRIAL])  # fmt: skip
+            return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
+        err, dt, underflow = judge(clock, tried, state, rows, scalars)
+        if underflow:
+            return K.record_failure(clock, counters, K.STATUS_STEP_UNDERFLOW, -1, dt)
+        trials += 1
+    accept(clock, counters, state, rows, scalars, archive, dt, err, trials)
+    return K.STATUS_DONE
+
+
+@njit(cache=True)
+def fill_slots(clock, counters, state, scalars, archive):
+    """At the end, the archive slots code_aster allocated and left unused hold
+    the final state; STATUS_FULL when the buffers must grow first."""
+    while scalars[S_SLOTS] > counters[K.K_ARCHIVED]:
+        if counters[K.K_ARCHIVED] >= archive[0].shape[0]:
+            return K.STATUS_FULL
+        store(clock, counters, archive, clock[K.C_TIME], counters[K.K_STEP], state[0],
+              state[1], state[2], state[4], clock[K.C_STEP])  # fmt: skip
     return K.STATUS_DONE
 
 
@@ -217,9 +281,4 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         status = take_step(clock, counters, state, rows, scalars, model, archive)
         if status != K.STATUS_DONE:
             return status
-    while scalars[S_SLOTS] > counters[K.K_ARCHIVED]:  # the unused slots: the final state
-        if counters[K.K_ARCHIVED] >= out_t.shape[0]:
-            return K.STATUS_FULL
-        store(clock, counters, archive, clock[K.C_TIME], counters[K.K_STEP], state[0],
-              state[1], state[2], state[4], clock[K.C_STEP])  # fmt: skip
-    return K.STATUS_DONE
+    return fill_slots(clock, counters, state, scalars, archive)

@@ -31,10 +31,14 @@ import numpy as np
 # the film loop, which needs none of them); each scheme's own loop; the two
 # loops shared by every scheme, which call every scheme's step and so find
 # them compiled (run side by side before that, both compiled all the steps:
-# 15 min each on a busy machine instead of 1.5)
+# 15 min each on a busy machine instead of 1.5), and the film's ADAPT_ORDRE2
+# loop, which needs both the film functions and the legacy ADAPT step control
 SHARED = "shared force functions"
 LEGACY_ADAPT = "ADAPT_ORDRE2 (code_aster 10-12)"
 FILM = "LAME_FLUIDE"
+# the film under code_aster 10-12's ADAPT_ORDRE2: calls the film functions and
+# the legacy ADAPT loop's step control, so it comes after both
+FILM_ADAPT = "LAME_FLUIDE, ADAPT_ORDRE2 (code_aster 10-12)"
 SCHEME_LOOPS = (
     "DIFF_CENTRE",
     "DEVOGE",
@@ -50,7 +54,7 @@ SCHEME_LOOPS = (
 )
 EVERY_SCHEME_LOOPS = ("VITESSE_VARIABLE", "TRAITEMENT_NONL='IMPLICITE'")
 LOOPS = SCHEME_LOOPS + EVERY_SCHEME_LOOPS
-STAGES = ((SHARED, FILM), SCHEME_LOOPS, EVERY_SCHEME_LOOPS)
+STAGES = ((SHARED, FILM), SCHEME_LOOPS, EVERY_SCHEME_LOOPS + (FILM_ADAPT,))
 KERNELS = tuple(name for stage in STAGES for name in stage)
 
 
@@ -200,18 +204,25 @@ def warm_shared() -> None:
         law_error(shocks, vint, 0.0)
 
 
-def warm_film() -> None:
-    """code_aster 10-14's LAME_FLUIDE loop (its own kernel)."""
+def warm_film(adapt: bool = False) -> None:
+    """code_aster 10-14's LAME_FLUIDE loop (its own kernel), or with ``adapt``
+    the film under code_aster 10-12's ADAPT_ORDRE2 (another one)."""
     from asterlite import progress
     from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
+    from asterlite.dynamics.integrate import SchemeOptions
 
     system = tiny_system()
     shocks = tiny_shocks(system)
     film = FluidFilm(np.array([film_row(1.0, 1.0, 0.1, 1.0)]))
-    with progress.kernel(FILM, 30.0):
+    options = None
+    if adapt:  # a physical film (added mass, squeeze): the adaptive step does not collapse
+        film = FluidFilm(np.array([film_row(-0.01, 0.01, -1.0e-6, 0.0)]))
+        options = SchemeOptions(adapt_v11=True, dt_max=1.0e-4)
+    with progress.kernel(FILM_ADAPT if adapt else FILM, 30.0):
         integrate_film(
             system, shocks, film, tiny_loads(system, 0.01, 1.0e-4), np.zeros(2),
             np.array([0.0, 0.1]), 0.0, 0.01, 1.0e-4, np.zeros(0), 5, label="warmup",
+            adapt=options,
         )  # fmt: skip
 
 
@@ -228,8 +239,8 @@ def warm_one(name: str) -> Warmed:
     try:
         if name == SHARED:
             warm_shared()
-        elif name == FILM:
-            warm_film()
+        elif name in (FILM, FILM_ADAPT):
+            warm_film(adapt=name == FILM_ADAPT)
         else:
             run_loop_kernel(name)
     except Exception as exc:  # reported with the others; runs needing it will fail too

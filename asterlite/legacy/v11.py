@@ -30,8 +30,8 @@ be undone before those catalogues check the call: DYNA_TRAN_MODAL
 EXCIT/VECT_ASSE and EXCIT/MODE_STAT (``RENAMED_IN_12``, ``MOVED_UP_IN_12``),
 DEFI_LIST_ENTI INTERV_R. The fluid film (CHOC/LAME_FLUIDE='OUI') keeps its
 shock keywords and has its top-level NMAX_ITER, RESI_RELA, LAMBDA gathered in
-PARA_LAME_FLUI (``FILM_ITERATIONS``); asterlite integrates it with EULER only
-(``FILM_SCHEMES``), other schemes are refused by name.
+PARA_LAME_FLUI (``FILM_ITERATIONS``); asterlite integrates it with EULER and
+ADAPT_ORDRE2 (``FILM_SCHEMES``), other schemes are refused by name.
 
 :func:`before_call` is called by the dispatcher for every command and
 :func:`after_run` on every command result; both do nothing for other decks.
@@ -109,8 +109,10 @@ MESH_GROUP_PREFIXES = {"GROUP_NO_": "node_groups", "GROUP_MA_": "cell_groups"}
 # their code_aster 11 defaults (asterlite.dynamics.fluid_film)
 FILM_ITERATIONS = {"NMAX_ITER": 20, "RESI_RELA": 1.0e-3, "LAMBDA": 10.0}
 # the schemes asterlite integrates a fluid film with: code_aster 11's EULER
-# (mdeul1); its ADAPT algorithm iterated differently (mdadap), not implemented
-FILM_SCHEMES = ("EULER",)
+# (mdeul1) and ADAPT_ORDRE2 (mdadap; 'ADAPT' in code_aster 10). code_aster 11
+# also ran ADAPT_ORDRE1 with a film (mdadap again), which asterlite refuses;
+# mdtr74 handed the film to mdeul1 and mdadap only
+FILM_SCHEMES = ("EULER", "ADAPT_ORDRE2", "ADAPT")
 
 
 # ----------------------------------------------------------------- version
@@ -655,7 +657,7 @@ def _scheme_of(kwargs: dict) -> str:
 def fluid_film(kwargs: dict, call: _Call) -> dict:
     """CHOC/LAME_FLUIDE='OUI': the top-level NMAX_ITER, RESI_RELA, LAMBDA as
     PARA_LAME_FLUI (code_aster 12's place), defaults of code_aster 11 filled
-    in; refused with a scheme other than EULER. Without a film, those
+    in; refused with a scheme other than EULER and ADAPT_ORDRE2. Without a film, those
     keywords changed nothing and are dropped."""
     films = [o for o in _occurrences(kwargs.get("CHOC")) if lit(o.get("LAME_FLUIDE")) == "OUI"]
     given = [k for k in FILM_ITERATIONS if k in kwargs]
@@ -674,8 +676,7 @@ def fluid_film(kwargs: dict, call: _Call) -> dict:
     if scheme not in FILM_SCHEMES:
         call.unsupported(
             f"CHOC/LAME_FLUIDE='OUI' with SCHEMA={scheme!r} (code_aster 11 deck): asterlite "
-            "integrates the fluid film with code_aster 11's EULER only (its ADAPT "
-            "algorithm with fluid film iterations is not implemented)",
+            "integrates the fluid film with code_aster 11's EULER and ADAPT_ORDRE2 only",
             films[0],
             "LAME_FLUIDE",
             path="CHOC/LAME_FLUIDE",
