@@ -26,7 +26,8 @@ from asterlite.lang.compiled_ast import (
     _type_in,
     _type_is,
 )
-from asterlite.lang.compiled_runtime import PLAIN_SCALARS
+from asterlite.lang.compiled_runtime import PLAIN_CALLABLES, PLAIN_SCALARS
+from asterlite.lang.library import DIRECT, DeckModule
 
 
 class ExpressionCompiler:
@@ -293,8 +294,26 @@ class ExpressionCompiler:
         return ast.UnaryOp(UNARY[op.value](), self.expr(operand_node))
 
     def _e_getattr(self, node, line):
-        value = self.expr(node.children[0])
-        return _call("__rt_attribute", value, ast.Constant(node.children[1].value))
+        value = self.operand(node.children[0])
+        name = ast.Constant(node.children[1].value)
+        # a member of a loaded deck module (NU.pi), as the runtime's
+        # attribute() reads it; anything else through the whitelists
+        members = self.temp()
+        module = self.constant(DeckModule)
+        test = [
+            _type_is(value.ref() if value.simple else value.binding(), module),
+            ast.Compare(
+                ast.NamedExpr(
+                    _name(members, store=True), ast.Attribute(value.ref(), "_members", ast.Load())
+                ),
+                [ast.IsNot()],
+                [ast.Constant(None)],
+            ),
+            ast.Compare(name, [ast.In()], [_name(members)]),
+        ]
+        member = ast.Subscript(_name(members), ast.Constant(name.value), ast.Load())
+        slow = _call("__rt_attribute", value.ref(), ast.Constant(name.value))
+        return ast.IfExp(_all(test), member, slow)
 
     def index(self, node, keyed: bool = True) -> ast.expr:
         """The index of a subscript: a slice, a tuple of parts, or a value
@@ -380,9 +399,40 @@ class ExpressionCompiler:
             plain = ast.Call(refs_again()[0], refs_again()[1:], [])
             fallback = ast.IfExp(_all(plain_tests), plain, slow)
         tests = is_deck_function
+        known = self._known_structural_callee(callee_node)
+        if known is not None:  # zip, len, enumerate...: a call as _call_python makes it
+            fast = [ast.Compare(refs_again()[0], [ast.Is()], [_name(known)])]
+            fast += [
+                ast.Compare(ref, [ast.IsNot()], [_name("__U")])
+                for arg, ref in zip(args, refs_again()[1:], strict=True)
+                if arg.static is None
+            ]
+            if bindings:
+                fast.insert(0, _chain(bindings))
+            plain = ast.Call(refs_again()[0], refs_again()[1:], [])
+            return ast.IfExp(_all(fast), plain, ast.IfExp(_all(tests), direct, fallback))
         if bindings:
             tests = [_chain(bindings), *tests]
         return ast.IfExp(_all(tests), direct, fallback)
+
+    def _known_structural_callee(self, callee_node):
+        """The closure name of the deck name's value when compiling, if it is a
+        plain Python callable the interpreter calls directly once no argument
+        is Unknown (``zip``, ``len``, ``map``: structural builtins); the
+        call site tests that the name still holds that very object."""
+        if callee_node.data != "var":
+            return None
+        name = callee_node.children[0].value
+        if name in self.local_names or name not in self.evaluator.namespace:
+            return None
+        value = self.evaluator.namespace[name]
+        if type(value) not in PLAIN_CALLABLES:
+            return None
+        if hasattr(type(getattr(value, "__self__", None)), "deck_methods"):
+            return None  # a concept's method: its arguments' nesting is checked
+        if self.evaluator._unknown_policy(value) != DIRECT:
+            return None
+        return self.constant(value)
 
     def _call_with_keywords(self, callee_node, items, site, assigned_name):
         for position, item in enumerate(items):

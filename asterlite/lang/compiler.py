@@ -27,6 +27,10 @@ semantics and messages:
 - errors are located at the deck node whose code raised them: each node's
   code carries the node's index as its Python line number.
 
+A ``for`` loop doing float arithmetic gets a second, unguarded version
+beside the guarded one, entered when a test before the loop proves the
+types it relies on (:mod:`asterlite.lang.compiled_loops`).
+
 A body using a construct outside the compiled subset (``del``, ``assert``,
 ``import``, nested ``def`` or ``lambda``, comprehensions, ``*args`` before
 other arguments) is not compiled: the interpreter runs it, unchanged.
@@ -52,6 +56,7 @@ from asterlite.lang.compiled_ast import (
     _type_is,
 )
 from asterlite.lang.compiled_expressions import ExpressionCompiler
+from asterlite.lang.compiled_loops import FastLoop
 from asterlite.lang.compiled_runtime import (
     CHAIN,
     PLAIN_CALLABLES,
@@ -91,6 +96,14 @@ def compile_function(function, evaluator):
         return None  # an expression nested beyond what compile() takes: interpreted
 
 
+def _float_value(node) -> float:
+    """The value of a float literal, signed or not (see _float_constant)."""
+    if node.data == "unary":
+        value = node.children[1].children[0]
+        return -value if node.children[0].value == "-" else +value
+    return node.children[0]
+
+
 class FunctionCompiler(ExpressionCompiler):
     """Builds one deck function's Python code."""
 
@@ -109,6 +122,9 @@ class FunctionCompiler(ExpressionCompiler):
         self.local_names = set(self.parameters)
         self.definite = set(self.parameters)  # locals surely bound at this point
         self.float_locals: set[str] = set()  # locals only ever given float constants
+        self.constants: dict[int, tuple[str, object]] = {}  # id -> (closure name, object)
+        self.float_lists: dict[str, tuple[int, tuple]] = {}  # see _float_lists
+        self.namespace_get = evaluator.namespace.get  # one bound method for all reads
 
     # ------------------------------------------------------------- building
 
@@ -119,6 +135,7 @@ class FunctionCompiler(ExpressionCompiler):
             body = [_stamp(ast.Return(self.expr(function.body)), head_line)]
         else:
             self._collect_locals(function.body)
+            self.float_lists = self._float_lists(function.body)
             body = self.suite(function.body)
         initial = [
             ast.Assign([_name(name, store=True)], _name("__UNB"))
@@ -127,7 +144,7 @@ class FunctionCompiler(ExpressionCompiler):
         inner = self._wrap(initial + body, head_line)
         factory = ast.FunctionDef(
             name="__factory",
-            args=_arguments(RUNTIME_NAMES),
+            args=_arguments([*RUNTIME_NAMES, *(name for name, _ in self.constants.values())]),
             body=[inner, ast.Return(_name("__deck_function"))],
             decorator_list=[],
         )
@@ -137,7 +154,8 @@ class FunctionCompiler(ExpressionCompiler):
         factory_code = next(c for c in code.co_consts if isinstance(c, types.CodeType))
         make = types.FunctionType(factory_code, {"__builtins__": {}})
         code_holder: list = []
-        compiled = make(*self._runtime_values(code_holder))
+        constants = [value for _, value in self.constants.values()]
+        compiled = make(*self._runtime_values(code_holder), *constants)
         code_holder.append(compiled.__code__)
         return compiled
 
@@ -226,6 +244,14 @@ class FunctionCompiler(ExpressionCompiler):
         }
         return [values[name] for name in RUNTIME_NAMES]
 
+    def constant(self, value) -> str:
+        """The closure name under which the generated code reaches ``value``
+        (an object seen when compiling: a callee, Exception...)."""
+        key = id(value)
+        if key not in self.constants:
+            self.constants[key] = (f"__K{len(self.constants)}", value)
+        return self.constants[key][0]
+
     def line(self, node) -> int:
         self.nodes.append(node)
         return len(self.nodes)
@@ -261,6 +287,59 @@ class FunctionCompiler(ExpressionCompiler):
                 other.update(self._target_names(node.children[0]))
             pending.extend(child for child in node.children if hasattr(child, "data"))
         self.float_locals = constant - other - set(self.parameters)
+
+    def _float_lists(self, suite) -> dict[str, tuple[int, tuple]]:
+        """Locals given a list or tuple of float constants once, by a statement
+        of the body's top level, and read nowhere but as what a ``for``
+        iterates over (itself or an argument of ``zip``): nothing can change
+        them, their items are floats. {name: (statement index, items)}."""
+        assigned: dict[str, list] = {}
+        for index, statement in enumerate(suite.children):
+            if getattr(statement, "data", None) != "assign" or len(statement.children) != 2:
+                continue
+            target, value = statement.children
+            if (
+                target.data == "var"
+                and value.data in ("list", "tuple")
+                and value.children
+                and all(_float_constant(item) for item in value.children)
+            ):
+                items = tuple(_float_value(item) for item in value.children)
+                assigned.setdefault(target.children[0].value, []).append((index, items))
+        occurrences: dict[str, int] = {}
+        iterated: dict[str, int] = {}
+        pending = [suite]
+        while pending:
+            node = pending.pop()
+            if not hasattr(node, "data"):
+                continue
+            if node.data == "var":
+                name = node.children[0].value
+                occurrences[name] = occurrences.get(name, 0) + 1
+            elif node.data == "for_stmt":
+                iterable = node.children[1]
+                read = []
+                if iterable.data == "var":
+                    read = [iterable]
+                elif (
+                    iterable.data == "funccall"
+                    and iterable.children[0].data == "var"
+                    and iterable.children[0].children[0].value == "zip"
+                    and iterable.children[1] is not None
+                    and iterable.children[1].data == "arguments"
+                ):
+                    read = [a for a in iterable.children[1].children if a.data == "var"]
+                for argument in read:
+                    name = argument.children[0].value
+                    iterated[name] = iterated.get(name, 0) + 1
+            pending.extend(child for child in node.children if hasattr(child, "data"))
+        return {
+            name: places[0]
+            for name, places in assigned.items()
+            if len(places) == 1
+            and name not in self.parameters
+            and occurrences.get(name, 0) == 1 + iterated.get(name, 0)
+        }
 
     def _target_names(self, target) -> set[str]:
         """The names ``target`` binds, added to the locals."""
@@ -499,17 +578,20 @@ class FunctionCompiler(ExpressionCompiler):
         entry = set(self.definite)
         if target.data == "var":
             name = target.children[0].value
-            loop_target = _name(name, store=True)
+            variable = name
             self.definite.add(name)
             binding = []
         else:
-            item = self.temp()
-            loop_target = _name(item, store=True)
-            binding = self.assign_target(target, item, line)
+            variable = self.temp()
+            binding = self.assign_target(target, variable, line)
         body = _stamp(_tick(), line) + binding + self.suite(suite)
         self.definite = set(entry)
         orelse = self.suite(else_clause.children[0]) if else_clause is not None else []
         self.definite = entry
-        return [ast.For(loop_target, iterable, body, orelse)]
+        try:
+            typed = FastLoop(self, node, line)
+            return typed.build(iterable, variable, body, orelse)
+        except Refused:
+            return [ast.For(_name(variable, store=True), iterable, body, orelse)]
 
     # ---------------------------------------------------------- expressions
