@@ -150,8 +150,8 @@ def _eigen_solvers(simultaneous) -> dict:
             SOLVEUR_MODAL=FACT(
                 statut="d",
                 regles=(EXCLUS("DIM_SOUS_ESPACE", "COEF_DIM_ESPACE"),),
+                # JACOBI fixes the basis of equal eigenvalues (modal/subspace_start.py)
                 METHODE=SIMP(
-                    no_effect=EIGEN_TUNING,
                     statut="f",
                     typ="TXM",
                     defaut="SORENSEN",

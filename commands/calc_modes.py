@@ -55,7 +55,7 @@ def run(ctx, kw):
         ctx.error(f"OPTION={option!r} needs CALC_FREQ/FREQ", "CALC_FREQ", kw)
     try:
         pencil = constrained_pencil(stiffness, mass)
-        omega2, vecs = select_modes(pencil, option, freq, nmax or 10)
+        omega2, vecs = select_modes(pencil, option, freq, nmax or 10, _method(kw))
     except (EigenError, ConstraintError) as exc:
         ctx.error(str(exc), "OPTION", kw)
     if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
@@ -90,6 +90,14 @@ def run(ctx, kw):
     for k, f in enumerate(modes.frequencies, start=1):
         ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
     return modes
+
+
+def _method(kw) -> str | None:
+    """SOLVEUR_MODAL/METHODE of a simultaneous-iteration OPTION (None for
+    inverse iterations): only JACOBI changes the result, through the basis of
+    multiple eigenvalues (asterlite.modal.subspace_start)."""
+    solver = kw.factor("SOLVEUR_MODAL")
+    return solver[0].get("METHODE") if solver else None
 
 
 def check_found(ctx, kw, count: int, what="eigenmode", keyword="CALC_FREQ") -> None:
@@ -154,7 +162,9 @@ def _generalized(ctx, kw, stiffness, mass):
                 stiffness.matrix, mass.matrix, constraints, option, freq, nmax
             )
         else:
-            omega2, vecs = generalized_modes(stiffness.matrix, mass.matrix, option, freq, nmax)
+            omega2, vecs = generalized_modes(
+                stiffness.matrix, mass.matrix, option, freq, nmax, _method(kw)
+            )
     except EigenError as exc:
         ctx.error(str(exc), "OPTION", kw)
     check_found(ctx, kw, omega2.size)

@@ -148,10 +148,10 @@ def test_adapt_agrees_with_euler_under_the_decks_iterations():
 
 def test_sdnd112a_depends_on_the_basis_of_its_degenerate_modes():
     """With RESI_RELA=1e-5 the iterations stop far from their fixed point
-    when the diagonal stand-in is poor: on the nodal modes (asterlite's
-    CALC_MODES) they fail at t = 0.625; on the symmetric/antisymmetric pair
-    (what code_aster 11's subspace JACOBI, started from diag(M), returns) the
-    run meets every reference of the deck's first TEST_RESU."""
+    when the diagonal stand-in is poor: on the nodal modes (what CALC_MODES
+    gives with another METHODE) they fail at t = 0.625; on the
+    symmetric/antisymmetric pair (what code_aster 11's subspace JACOBI,
+    started from diag(M), returns) the run meets every reference of the deck's first TEST_RESU."""
     with pytest.raises(NumericalError, match="NMAX_ITER=100"):
         film_adapt_run(0.0)
     result, x = film_adapt_run(np.pi / 4)

@@ -21,6 +21,7 @@ from asterlite.modal.eigen import (
     sort_modes,
 )
 from asterlite.modal.modal_parameters import modal_parameters
+from asterlite.modal.subspace_start import jacobi_basis_rule
 
 
 def constrained_pencil(stiffness: AssembledMatrix, mass: AssembledMatrix) -> ReducedPencil:
@@ -32,11 +33,15 @@ def constrained_pencil(stiffness: AssembledMatrix, mass: AssembledMatrix) -> Red
     return ReducedPencil(stiffness.matrix, mass.matrix, elimination)
 
 
-def select_modes(pencil: ReducedPencil, option: str, freq=(), nmax: int = 10):
-    """(ω², reduced shapes) for a CALC_MODES OPTION, sorted by frequency."""
+def select_modes(pencil: ReducedPencil, option: str, freq=(), nmax: int = 10, method=None):
+    """(ω², reduced shapes) for a CALC_MODES OPTION, sorted by frequency.
+    ``method`` is SOLVEUR_MODAL/METHODE: JACOBI decides the basis inside
+    groups of equal eigenvalues as code_aster's subspace iteration does."""
     freq = np.atleast_1d(np.asarray(freq if freq is not None else (), dtype=float))
     if pencil.n == 0:
         raise EigenError("every DOF is constrained: there is no mode")
+    if method == "JACOBI":
+        pencil.equal_eigenvalue_basis = jacobi_basis_rule(pencil, option, freq)
     if option == "PLUS_PETITE":
         vals, vecs = pencil.smallest(nmax)
     elif option == "PLUS_GRANDE":
@@ -184,7 +189,7 @@ def build_buckling_result(a: AssembledMatrix, b: AssembledMatrix, loads, shapes)
     )
 
 
-def generalized_modes(k_gene, m_gene, option: str, freq=(), nmax: int = 10):
+def generalized_modes(k_gene, m_gene, option: str, freq=(), nmax: int = 10, method=None):
     """(ω², vectors) of a projected pencil (dense, unconstrained)."""
     import scipy.sparse as sp
 
@@ -197,7 +202,7 @@ def generalized_modes(k_gene, m_gene, option: str, freq=(), nmax: int = 10):
     pencil = ReducedPencil(
         np.asarray(k_gene, dtype=float), np.asarray(m_gene, dtype=float), identity
     )
-    return select_modes(pencil, option, freq, nmax)
+    return select_modes(pencil, option, freq, nmax, method)
 
 
 def build_generalized_result(stiffness, mass, omega2, vecs) -> GeneralizedModes:

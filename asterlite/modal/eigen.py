@@ -122,11 +122,17 @@ class ReducedPencil:
 
     def __init__(self, stiffness, mass, elimination: Elimination):
         self.elimination = elimination
-        self.k = elimination.reduce(sp.csr_matrix(stiffness))
-        self.m = elimination.reduce(sp.csr_matrix(mass))
+        k_full, m_full = sp.csr_matrix(stiffness), sp.csr_matrix(mass)
+        # diagonals on the full numbering: where code_aster's JACOBI starts from
+        self.full_diagonals = (k_full.diagonal(), m_full.diagonal())
+        self.k = elimination.reduce(k_full)
+        self.m = elimination.reduce(m_full)
         self.k = 0.5 * (self.k + self.k.T)
         self.m = 0.5 * (self.m + self.m.T)
         self.n = self.k.shape[0]
+        # (ω², shapes) -> shapes: the basis inside groups of equal eigenvalues,
+        # for a method that decides it (None: the solver's own)
+        self.equal_eigenvalue_basis = None
         self._all = None
 
     @property
@@ -141,8 +147,14 @@ class ReducedPencil:
                 sigma = _default_shift(self.k, self.m)
                 vals, vecs = _dense_pencil(self.k, self.m, sigma)
                 order = np.argsort(vals)
-                self._all = (vals[order], vecs[:, order])
+                self._all = self._settled(vals[order], vecs[:, order])
         return self._all
+
+    def _settled(self, vals, vecs):
+        """(ω², shapes) with the basis rule applied to groups of equal ω²."""
+        if self.equal_eigenvalue_basis is None or len(vals) < 2:
+            return vals, vecs
+        return vals, self.equal_eigenvalue_basis(vals, vecs)
 
     def nearest(self, sigma: float, count: int):
         """``count`` eigenpairs nearest σ (ω² units), sorted by distance."""
@@ -152,7 +164,7 @@ class ReducedPencil:
             return vals[order], vecs[:, order]
         vals, vecs = _shift_invert(self.k, self.m, sigma, count)
         order = np.argsort(np.abs(vals - sigma), kind="stable")
-        return vals[order], vecs[:, order]
+        return self._settled(vals[order], vecs[:, order])
 
     def smallest(self, count: int):
         if self.dense or count >= self.n - 1:
@@ -161,7 +173,7 @@ class ReducedPencil:
         sigma, lu = _smallest_shift(self.k, self.m)
         vals, vecs = _shift_invert(self.k, self.m, sigma, count, lu)
         order = np.argsort(vals, kind="stable")
-        return vals[order], vecs[:, order]
+        return self._settled(vals[order], vecs[:, order])
 
     def largest(self, count: int):
         if self.dense or count >= self.n - 1:
@@ -173,7 +185,7 @@ class ReducedPencil:
         except RuntimeError:
             raise EigenError("PLUS_GRANDE on a large model needs a non-singular mass") from None
         minv = spla.LinearOperator(self.m.shape, matvec=lu.solve, dtype=float)
-        return spla.eigsh(self.k, k=count, M=self.m, Minv=minv, which="LA")
+        return self._settled(*spla.eigsh(self.k, k=count, M=self.m, Minv=minv, which="LA"))
 
     def band(self, lower: float, upper: float, limit: int | None = None):
         """Every eigenpair with lower <= ω² <= upper (ω² units)."""
