@@ -32,15 +32,11 @@ def prepare(system, dt, options):
     return (rows, scalars, np.zeros((1, 1))), adaptive
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
-    """One step (see :func:`advance`), a function of its own for the loops
-    shared by every scheme (rotation, implicit shocks)."""
-    return advance(t, dt, index, state, memory, model)
-
-
-@njit(cache=True, inline="always")
-def advance(t, dt, index, state, memory, model):
+    """One step, compiled once without reference counting (nothing in it
+    allocates): the scheme's run_loop and the loops shared by every scheme
+    (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
     rows, scalars = memory[0], memory[1]
     n = q.shape[0]
@@ -96,9 +92,10 @@ def advance(t, dt, index, state, memory, model):
 
 @njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The loop: the step and the force evaluation inlined, compiled without
-    reference counting (``_nrt=False``: nothing here allocates), so that
-    the bundles of arrays handed down cost nothing (same arithmetic)."""
+    """The loop, compiled without reference counting (``_nrt=False``:
+    nothing here allocates), calling :func:`step` (one compiled copy of the
+    step for every loop that takes it: numba's inlining copies a callee's IR
+    at each site, and the step is large; the call costs ~2 % of a step)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
@@ -107,7 +104,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = advance(
+        status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:

@@ -33,7 +33,7 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
-from asterlite.dynamics.forces import all_finite, loads_ready, matvec, total_force
+from asterlite.dynamics.forces import all_finite, loads_ready, matvec, total_force_at
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
     STATUS_NOT_FINITE,
@@ -214,7 +214,7 @@ def step(t, dt, index, state, memory, model):
         for i in range(n):
             q3[i] = q[i] + half * v[i] + (dt * dt / 24.0) * (4.0 * r1[i] - r2[i] - x2[i])
             v3[i] = (q3[i] - q[i]) / half
-        shock = total_force(t + half, q3, v3, shk, vint, exc, work, f)
+        shock = total_force_at(t + half, q3, v3, shk, vint, exc, work, f)
         if shock >= 0:
             return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
         reduced_force(f, q3, minv, invm_k, r3, x1, diagonal)
@@ -229,7 +229,7 @@ def step(t, dt, index, state, memory, model):
         for i in range(n):
             q4[i] = q[i] + dt * v[i] + (dt * dt / 6.0) * (r1[i] + 2.0 * r3[i] - x2[i])
             v4[i] = (q4[i] - q3[i]) / half
-        shock = total_force(t + dt, q4, v4, shk, vint, exc, work, f)
+        shock = total_force_at(t + dt, q4, v4, shk, vint, exc, work, f)
         if shock >= 0:
             return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
         reduced_force(f, q4, minv, invm_k, r4, x1, diagonal)

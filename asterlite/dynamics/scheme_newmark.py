@@ -38,7 +38,7 @@ from asterlite.dynamics.forces import (
     loads_cover,
     loads_ready,
     local_support_motion,
-    total_force,
+    total_force_at,
 )
 
 # vector rows: index-2 displacement and velocity, right-hand side, pivots
@@ -100,7 +100,7 @@ def step(t, dt, index, state, memory, model):
     q2, v2, rhs = rows[Q_INDEX2], rows[V_INDEX2], rows[RHS]
     at_start = scalars[S_FORCE_AT_START] == 1.0
     if not at_start:  # else f holds F(t, q, v): the loop's start or the previous step's end
-        shock = total_force(t + dt, q2, v2, shk, vint, exc, work, f)
+        shock = total_force_at(t + dt, q2, v2, shk, vint, exc, work, f)
         if shock >= 0:
             return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
     rhs[:] = f
@@ -118,7 +118,7 @@ def step(t, dt, index, state, memory, model):
     if not (all_finite(q) and all_finite(v)):
         return K.STATUS_NOT_FINITE, -1, dt, dt, 0
     if at_start:  # the forces of the next step's start
-        shock = total_force(t + dt, q, v, shk, vint, exc, work, f)
+        shock = total_force_at(t + dt, q, v, shk, vint, exc, work, f)
         if shock >= 0:
             return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
     return K.STATUS_DONE, -1, dt, dt, 0
@@ -193,6 +193,25 @@ def local_force(
         support_cursors, drive,
     )  # fmt: skip
     return local_shock_forces(q, v, flags, params, shapes, rest, polars, drive, vint, f)
+
+
+@njit(cache=True, _nrt=False)
+def start_force(
+    t, q, v, f, vint, flags, params, rots, shapes, rest, polars, drive,
+    load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors, load_codes,
+    load_constants, load_stack, support_shapes, support_abscissas, support_ordinates,
+    support_layout, support_cursors,
+):  # fmt: skip
+    """:func:`local_force` as a function of its own for the loop's second
+    call site (code_aster 13-15's forces of the step's start): numba's
+    inlining copies the shock forces at each site, and a second copy made
+    NEWMARK's loop the slowest kernel to compile."""
+    return local_force(
+        t, q, v, f, vint, flags, params, rots, shapes, rest, polars, drive,
+        load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors, load_codes,
+        load_constants, load_stack, support_shapes, support_abscissas, support_ordinates,
+        support_layout, support_cursors,
+    )  # fmt: skip
 
 
 @njit(cache=True, inline="always")
@@ -273,7 +292,7 @@ def specialised_loop(
         if not (all_finite(q) and all_finite(v)):
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, dt)
         if at_start:  # the forces of the next step's start
-            shock = local_force(
+            shock = start_force(
                 t + dt, q, v, f, vint, flags, params, rots, shapes, rest, polars, drive,
                 load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors,
                 load_codes, load_constants, load_stack, support_shapes, support_abscissas,

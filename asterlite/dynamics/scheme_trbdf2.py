@@ -57,7 +57,7 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
+from asterlite.dynamics.forces import all_finite, copy_into, evaluate, loads_ready
 
 Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
 VECTOR_ROWS = 8
@@ -94,15 +94,11 @@ def build_operators(rows, scalars, dt, n):
     return I.factor_effective(I.block(rows, VECTOR_ROWS, I.B_KEFF, n), rows[PIVOTS], diagonal)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
-    """One step (see :func:`advance`), a function of its own for the loops
-    shared by every scheme (rotation, implicit shocks)."""
-    return advance(t, dt, index, state, memory, model)
-
-
-@njit(cache=True, inline="always")
-def advance(t, dt, index, state, memory, model):
+    """One step, compiled once without reference counting (nothing in it
+    allocates): the scheme's run_loop and the loops shared by every scheme
+    (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
     rows, scalars = memory[0], memory[1]
     n = q.shape[0]
@@ -118,7 +114,7 @@ def advance(t, dt, index, state, memory, model):
     delta, r_q, r_v, residual = rows[DELTA], rows[R_Q], rows[R_V], rows[RESIDUAL]
     h = GAMMA * dt
     # --- trapezoidal stage to t + h
-    shock = state_acceleration(t + h, q2, v2, a2, f, residual, vint, work, model)
+    shock = evaluate(t + h, q2, v2, a2, f, residual, vint, work, model)
     if shock >= 0:
         return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
     for i in range(n):
@@ -127,7 +123,7 @@ def advance(t, dt, index, state, memory, model):
     I.apply(f2, v, h, delta, diagonal)
     I.apply(f1, r_v, h, delta, diagonal)
     I.solve_effective(keff, rows[PIVOTS], delta, diagonal)
-    shock = state_acceleration(t + dt, q2, v2, a2, f, residual, vint, work, model)
+    shock = evaluate(t + dt, q2, v2, a2, f, residual, vint, work, model)
     if shock >= 0:
         return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
     for i in range(n):
@@ -144,7 +140,7 @@ def advance(t, dt, index, state, memory, model):
     for i in range(n):
         q2[i] = q[i] + delta[i]
         v2[i] = v[i] + (delta[i] + r_q[i]) / G3 / dt
-    shock = state_acceleration(t + dt, q2, v2, a2, f, residual, vint, work, model)
+    shock = evaluate(t + dt, q2, v2, a2, f, residual, vint, work, model)
     if shock >= 0:
         return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
     copy_into(q, q2)
@@ -157,9 +153,10 @@ def advance(t, dt, index, state, memory, model):
 
 @njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The loop: the step and the force evaluation inlined, compiled without
-    reference counting (``_nrt=False``: nothing here allocates), so that
-    the bundles of arrays handed down cost nothing (same arithmetic)."""
+    """The loop, compiled without reference counting (``_nrt=False``:
+    nothing here allocates), calling :func:`step` (one compiled copy of the
+    step for every loop that takes it: numba's inlining copies a callee's IR
+    at each site, and the step is large; the call costs ~2 % of a step)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
@@ -168,7 +165,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = advance(
+        status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model
         )
         if status != K.STATUS_DONE:
