@@ -143,3 +143,19 @@ def _arguments(names) -> ast.arguments:
         kwarg=None,
         defaults=[],
     )
+
+
+def if_branches(node) -> tuple[list, object]:
+    """An ``if_stmt`` tree's (condition, suite) pairs, ``if`` then each
+    ``elif`` in order, and its ``else`` suite (None without one)."""
+    condition, suite, *clauses = node.children
+    branches = [(condition, suite)]
+    otherwise = None
+    for clause in clauses:
+        if clause is None:
+            continue
+        if clause.data == "elif_clause":
+            branches.append((clause.children[0], clause.children[1]))
+        else:
+            otherwise = clause.children[0]
+    return branches, otherwise

@@ -40,7 +40,15 @@ import copy
 import math
 import types
 
-from asterlite.lang.compiled_ast import BINARY, COMPARE, Refused, _all, _name, _type_is
+from asterlite.lang.compiled_ast import (
+    BINARY,
+    COMPARE,
+    Refused,
+    _all,
+    _name,
+    _type_is,
+    if_branches,
+)
 
 # math functions giving a float for float arguments (they may raise; a
 # raise replays the iteration guarded)
@@ -395,16 +403,7 @@ class FastLoop:
         raise Refused(f"typed loop: {kind}")
 
     def _if(self, node, env: dict) -> list:
-        condition, suite, *clauses = node.children
-        branches = [(condition, suite)]
-        otherwise = None
-        for clause in clauses:
-            if clause is None:
-                continue
-            if clause.data == "elif_clause":
-                branches.append((clause.children[0], clause.children[1]))
-            else:
-                otherwise = clause.children[0]
+        branches, otherwise = if_branches(node)
         outer, self.in_branch = self.in_branch, True
         outcomes, built = [], []
         for test_node, body_node in branches:
@@ -673,16 +672,7 @@ class _Inliner:
             return self.expr(value)
         if first.data != "if_stmt":
             raise Refused(f"inline: {first.data}")
-        condition, suite, *clauses = first.children
-        branches = [(condition, suite)]
-        otherwise = None
-        for clause in clauses:
-            if clause is None:
-                continue
-            if clause.data == "elif_clause":
-                branches.append((clause.children[0], clause.children[1]))
-            else:
-                otherwise = clause.children[0]
+        branches, otherwise = if_branches(first)
         if otherwise is not None:
             if rest:
                 raise Refused("inline: code after if/else")

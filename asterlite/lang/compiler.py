@@ -54,6 +54,7 @@ from asterlite.lang.compiled_ast import (
     _stamp,
     _tick,
     _type_is,
+    if_branches,
 )
 from asterlite.lang.compiled_expressions import ExpressionCompiler
 from asterlite.lang.compiled_loops import FastLoop
@@ -534,16 +535,7 @@ class FunctionCompiler(ExpressionCompiler):
         return statements + [ast.If(update, self._becomes_unknown(container_node), [])]
 
     def _s_if_stmt(self, node, line):
-        condition, suite, *clauses = node.children
-        branches = [(condition, suite)]
-        otherwise = None
-        for clause in clauses:
-            if clause is None:
-                continue
-            if clause.data == "elif_clause":
-                branches.append((clause.children[0], clause.children[1]))
-            else:
-                otherwise = clause.children[0]
+        branches, otherwise = if_branches(node)
         entry = set(self.definite)
         outcomes = []
         built = []
