@@ -100,6 +100,21 @@ def _method(kw) -> str | None:
     return solver[0].get("METHODE") if solver else None
 
 
+def _method_keeping_basis(ctx, kw, problem: str) -> str | None:
+    """SOLVEUR_MODAL/METHODE where asterlite's solver keeps its own basis of
+    multiple eigenvalues: TRI_DIAG, SORENSEN and QZ only change how code_aster
+    reaches the same eigenpairs; JACOBI's basis is built for real modes only."""
+    method = _method(kw)
+    if method == "JACOBI":
+        ctx.unsupported(
+            f"METHODE='JACOBI' for {problem} (code_aster's basis of multiple "
+            "eigenvalues is reproduced for real modes only)",
+            "SOLVEUR_MODAL",
+            kw,
+        )
+    return method
+
+
 def check_found(ctx, kw, count: int, what="eigenmode", keyword="CALC_FREQ") -> None:
     """An empty selection stops the run (STOP_BANDE_VIDE='OUI', the default);
     with 'NON' code_aster makes an empty result, which asterlite does not."""
@@ -123,6 +138,7 @@ def _critical(ctx, kw):
         ctx.unsupported("critical loads of generalized matrices", b_keyword, kw)
     if a.numbering.dofs != b.numbering.dofs:
         ctx.error("the two matrices use different numberings", b_keyword, kw)
+    _method_keeping_basis(ctx, kw, f"TYPE_RESU={kw['TYPE_RESU']!r}")
     option = kw.get("OPTION", "PLUS_PETITE")
     crit = (kw.factor("CALC_CHAR_CRIT") or [{}])[0]
     window = as_tuple(crit.get("CHAR_CRIT"))
@@ -158,6 +174,8 @@ def _generalized(ctx, kw, stiffness, mass):
         if constraints is not None:  # a substructured model: its interface relations
             from asterlite.substructure.coupling import coupled_modes
 
+            _method_keeping_basis(ctx, kw, "a substructured model")
+
             omega2, vecs = coupled_modes(
                 stiffness.matrix, mass.matrix, constraints, option, freq, nmax
             )
@@ -181,6 +199,7 @@ def _complex(ctx, kw, stiffness, mass, damping):
             ctx.unsupported("MATR_AMOR of this type with physical matrices", "MATR_AMOR", kw)
         if damping.numbering is not stiffness.numbering:
             ctx.error("MATR_AMOR and MATR_RIGI use different numberings", "MATR_AMOR", kw)
+    _method_keeping_basis(ctx, kw, "damped modes")
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))
@@ -230,6 +249,7 @@ def _generalized_complex(ctx, kw, stiffness, mass, damping):
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))
+    _method_keeping_basis(ctx, kw, "damped modes")
     amor = as_tuple(calc_freq.get("AMOR_REDUIT")) or (0.0,)
     nmax = calc_freq.get("NMAX_FREQ") or _DEFAULT_NMAX.get(option, 10)
     if option in ("CENTRE", "BANDE", "PROCHE", "AJUSTE", "SEPARE") and not freq:
