@@ -12,8 +12,10 @@ Two loops share the arithmetic:
   kinematics in each shock's local frame (:func:`contact.local_shock_forces`),
   the acceleration in one pass (diagonal matrices as 1-D arrays, the
   finiteness test folded in), multipliers searched from their last
-  interval. The diagonal and full cases are two compiled specialisations
-  of the same source (``mass_inverse.ndim`` is a compile-time constant).
+  interval, FORMULE loads run by :func:`formula.program_value` and written
+  into the force in one pass per load (:func:`external_force_into`). The
+  diagonal and full cases are two compiled specialisations of the same
+  source (``mass_inverse.ndim`` is a compile-time constant).
 """
 
 from __future__ import annotations
@@ -25,15 +27,16 @@ from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import local_shock_forces
 from asterlite.dynamics.forces import (
-    add_external_force,
     all_finite,
     diagonal_acceleration,
     full_acceleration,
     loads_cover,
     loads_ready,
     local_support_motion,
+    multiplier_at,
     state_acceleration,
 )
+from asterlite.dynamics.formula import program_value
 
 RESIDUAL = 0  # memory row: residual scratch
 
@@ -142,6 +145,32 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     )
 
 
+@njit(cache=True, inline="always")
+def external_force_into(
+    t, vectors, abscissas, ordinates, layout, cursors, codes, constants, stack, out
+):
+    """out = Σ_e f_e(t) vector_e: :func:`forces.add_external_force` on a
+    zeroed ``out``, the zeroing folded into the first load's pass (0.0 + x
+    as there) and the FORMULE programs run by :func:`formula.program_value`.
+    Same operations in the same order: the same force to the last bit."""
+    for e in range(vectors.shape[0]):
+        if codes[e, 0] > 0:
+            c = program_value(codes, constants, e, t, stack)
+        else:
+            c = multiplier_at(
+                abscissas, ordinates, e, layout[e, 0], layout[e, 1], layout[e, 2], t, cursors
+            )
+        if e == 0:
+            for m in range(out.shape[0]):
+                out[m] = 0.0 + c * vectors[0, m]
+        else:
+            for m in range(out.shape[0]):
+                out[m] += c * vectors[e, m]
+    if vectors.shape[0] == 0:
+        for m in range(out.shape[0]):
+            out[m] = 0.0
+
+
 @njit(cache=True, _nrt=False)
 def specialised_loop(
     clock,
@@ -216,9 +245,7 @@ def specialised_loop(
             v[i] += dt * a[i]
             q[i] += dt * v[i]
         t_new = t + dt
-        for i in range(n):
-            f[i] = 0.0
-        add_external_force(
+        external_force_into(
             t_new, load_vectors, load_abscissas, load_ordinates, load_layout, load_cursors,
             load_codes, load_constants, load_stack, f,
         )  # fmt: skip

@@ -31,24 +31,25 @@ def fortran_real(value: float, spec: str = "E12.5") -> str:
     return text.rjust(int(width or 12))
 
 
-def cell_formatter(type_code: str, real_format: str = "E12.5"):
-    """``format_value`` for one column, its format parsed once (a table of
+def column_cells(values: list, type_code: str, real_format: str = "E12.5") -> list[str]:
+    """The cells of one column: ``format_value`` of each value, in one
+    comprehension per column with the format parsed once (a table of
     impacts has thousands of rows)."""
-    if type_code != "R":
-        return lambda value: format_value(value, type_code, real_format)
+    if type_code not in ("R", "C"):
+        return ["-" if value is None else str(value) for value in values]
+    if type_code == "C":
+        return [format_value(value, type_code, real_format) for value in values]
     kind = real_format[0].upper()
     width_text, _, digits = real_format[1:].partition(".")
     width = int(width_text or 12)
-    pattern = f"{{:.{int(digits or 5)}{'E' if kind in 'ED' else 'f'}}}".format
+    pattern = f"{{:>{width}.{int(digits or 5)}{'E' if kind in 'ED' else 'f'}}}".format
     isfinite = math.isfinite
-
-    def real_cell(value) -> str:
-        if value is None:
-            return "-"
-        value = float(value)
-        return (pattern(value) if isfinite(value) else str(value)).rjust(width)
-
-    return real_cell
+    return [
+        "-"
+        if value is None
+        else (pattern(x) if isfinite(x := float(value)) else str(x).rjust(width))
+        for value in values
+    ]
 
 
 def table_lines(table, columns: Iterable[str] | None = None, title: str = "", real_format="E12.5"):
@@ -57,10 +58,9 @@ def table_lines(table, columns: Iterable[str] | None = None, title: str = "", re
     value."""
     columns = list(columns or table.columns)
     rows = table.rows
-    by_column = []
-    for c in columns:
-        cell = cell_formatter(table.types[c], real_format)
-        by_column.append([cell(row.get(c)) for row in rows])
+    by_column = [
+        column_cells([row.get(c) for row in rows], table.types[c], real_format) for c in columns
+    ]
     widths = [
         max([len(c)] + [len(v) for v in values])
         for c, values in zip(columns, by_column, strict=True)
@@ -69,10 +69,12 @@ def table_lines(table, columns: Iterable[str] | None = None, title: str = "", re
     if title:
         lines.extend(f"#{t}" for t in title.splitlines())
     lines.append(" ".join(c.ljust(w) for c, w in zip(columns, widths, strict=True)).rstrip())
-    padded = [[v.ljust(w) for v in values] for values, w in zip(by_column, widths, strict=True)]
-    if not padded:  # no column: an empty line per row
-        padded = [[""] * len(rows)]
-    lines.extend(" ".join(r).rstrip() for r in zip(*padded, strict=True))
+    if not columns:  # no column: an empty line per row
+        lines.extend("" for _ in rows)
+        return lines
+    # one format per line: each cell left-justified to its column's width
+    line = " ".join(f"{{:<{w}}}" for w in widths).format
+    lines.extend(line(*cells).rstrip() for cells in zip(*by_column, strict=True))
     return lines
 
 
