@@ -22,10 +22,11 @@ No generality, no dispatch, archiving q and F_N every ``pas_arch`` steps.
 The floors are not asterlite's results bit for bit (the stick-slip
 response is chaotic); they do the same work per step.
 
-Run: python benchmarks/scheme_floors.py [--steps 200000] [--dt 1e-5] [--engine] [SCHEME...]
-(prints each floor's ns/step; ``--engine``: asterlite's ``integrate`` on
-the same problem, best CPU time, and the ratio; the whole run's marginal
-cost comes from ``tube_marginal.py --scheme NAME``).
+Run: python benchmarks/scheme_floors.py [--steps 200000] [--dt 1e-5] [--engine [--general]]
+[SCHEME...] (prints each floor's ns/step; ``--engine``: asterlite's
+``integrate`` on the same problem, best CPU time, and the ratio;
+``--general``: its general path, shocks in the global frame; the whole
+run's marginal cost comes from ``tube_marginal.py --scheme NAME``).
 """
 
 from __future__ import annotations
@@ -384,9 +385,13 @@ def floor_seconds(scheme: str, problem, n_steps: int, dt: float, repeats: int = 
     return best
 
 
-def engine_cpu_seconds(scheme: str, problem, n_steps: int, dt: float, repeats: int = 3):
+def engine_cpu_seconds(
+    scheme: str, problem, n_steps: int, dt: float, repeats: int = 3, specialised: bool = True
+):
     """Best CPU seconds of asterlite's ``integrate`` (DYNA_VIBRA's entry
-    point) for ``scheme`` on the tube, fixed step (PAS_MINI = PAS_MAXI)."""
+    point) for ``scheme`` on the tube, fixed step (PAS_MINI = PAS_MAXI);
+    ``specialised=False``: the scheme's general path (shocks in the global
+    frame, as for the relations of laws/)."""
     from asterlite.dynamics.integrate import SchemeOptions, integrate
 
     t_end = n_steps * dt
@@ -398,7 +403,7 @@ def engine_cpu_seconds(scheme: str, problem, n_steps: int, dt: float, repeats: i
         started = time.process_time()
         integrate(
             system, shocks, excitation, scheme, zeros, zeros, 0.0, t_end, dt,
-            np.array([t_end]), 10, options,
+            np.array([t_end]), 10, options, specialised=specialised,
         )  # fmt: skip
         best = min(best, time.process_time() - started)
     return best
@@ -409,6 +414,9 @@ def main() -> None:
     parser.add_argument("--steps", type=int, default=200_000)
     parser.add_argument("--dt", type=float, default=1.0e-5)
     parser.add_argument("--engine", action="store_true", help="also asterlite's loop, CPU")
+    parser.add_argument(
+        "--general", action="store_true", help="--engine: the general path (global frames)"
+    )
     parser.add_argument("schemes", nargs="*", default=SCHEMES)
     args = parser.parse_args()
     problem = T.tube_problem()
@@ -422,7 +430,9 @@ def main() -> None:
             f"{'finite' if finite else 'NOT FINITE'}"
         )
         if args.engine:
-            engine = engine_cpu_seconds(scheme, problem, args.steps, args.dt)
+            engine = engine_cpu_seconds(
+                scheme, problem, args.steps, args.dt, specialised=not args.general
+            )
             line += (
                 f"; asterlite cpu {1e9 * engine / args.steps:6.0f} ns/step ({engine / cpu:.2f}x)"
             )

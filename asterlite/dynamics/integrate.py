@@ -145,6 +145,11 @@ COMPILE_SECONDS = {
     "DIFF_CENTRE (general path)": 25.0,
     "NEWMARK": 20.0,
     "NEWMARK (general path)": 20.0,
+    "DEVOGE (general path)": 40.0,
+    "TRBDF2 (general path)": 20.0,
+    "RUNGE_KUTTA (general path)": 20.0,
+    "ADAPT_ORDRE1 (general path)": 20.0,
+    "ADAPT_ORDRE2 (general path)": 20.0,
     "TRBDF2": 20.0,
     "DEVOGE": 40.0,
     "RUNGE_KUTTA": 20.0,
@@ -168,17 +173,27 @@ def loop_kernel(scheme, system, shocks, specialised=True, rotation=None, implici
         if not specialised or shocks.has_laws:
             return "DIFF_CENTRE (general path)"
         return "DIFF_CENTRE" if system.diagonal else "DIFF_CENTRE (full matrices)"
-    if scheme in LOCAL_FRAME_LOOPS and (not specialised or shocks.has_laws):
-        return f"{scheme} (general path)"
-    return "RUNGE_KUTTA" if scheme.startswith("RUNGE_KUTTA") else scheme
+    kernel = "RUNGE_KUTTA" if scheme.startswith("RUNGE_KUTTA") else scheme
+    if kernel in LOCAL_FRAME_LOOPS and (not specialised or shocks.has_laws):
+        return f"{kernel} (general path)"
+    return kernel
 
 
 # the kernels of DIFF_CENTRE's specialised run_loop (the model's 4th bundle)
 SPECIALISED_LOOPS = ("DIFF_CENTRE", "DIFF_CENTRE (full matrices)")
-# schemes whose run_loop takes the shocks in their local frames (the model's
+# kernels whose run_loop takes the shocks in their local frames (the model's
 # 4th bundle: shapes, rest positions, support-motion scratch; the same types
-# for diagonal and full matrices) and keeps the general path as general_loop
-LOCAL_FRAME_LOOPS = ("NEWMARK",)
+# for diagonal and full matrices) and keeps a general path: NEWMARK's
+# general_loop; for the others the same run_loop and step compiled for the
+# 3-bundle model (asterlite.dynamics.local_frame)
+LOCAL_FRAME_LOOPS = (
+    "NEWMARK",
+    "DEVOGE",
+    "TRBDF2",
+    "RUNGE_KUTTA",
+    "ADAPT_ORDRE1",
+    "ADAPT_ORDRE2",
+)
 
 
 def compile_estimate(name: str) -> float | None:
@@ -215,7 +230,7 @@ def run_kernel(
     model = (system.bundle(), shocks.bundle(), excitation.bundle())
     if notice.name in SPECIALISED_LOOPS:  # its local arrays (only there: every other
         model = model + (local_bundle(system, shocks),)  # loop compiles once for any model)
-    elif notice.name in LOCAL_FRAME_LOOPS:
+    elif notice.name in LOCAL_FRAME_LOOPS and module is not scheme_adapt_ordre2_v11:
         model = model + (local_bundle(system, shocks)[3:],)
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
     f, a = np.zeros(n), np.zeros(n)

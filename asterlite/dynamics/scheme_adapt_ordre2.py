@@ -19,7 +19,8 @@ from numba import njit
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
+from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.local_frame import copy_vector, evaluate, loads_ready_inline
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, V_MID, V_MID_TRIAL, RESIDUAL = range(7)
 VECTOR_ROWS = 7
@@ -46,23 +47,23 @@ def step(t, dt, index, state, memory, model):
     max_trials = int(round(scalars[A.S_MAX_TRIALS]))
     if scalars[A.S_FIRST_CALL] == 1.0:
         scalars[A.S_FIRST_CALL] = 0.0
-        copy_into(v_mid, v)
+        copy_vector(v_mid, v)
         dt_proposed = 0.0
     else:
         dt_proposed = dt
-    copy_into(vint_save, vint)
+    if adaptive:  # a rejected trial restores the shock states it changed
+        copy_into(vint_save, vint)
     dt_trial = dt
     dt_next = dt
     trials = 1
     while True:
-        copy_into(vint, vint_save)
         p = 0.5 * (dt_proposed + dt_trial)
         half = 0.5 * dt_trial
         for i in range(n):
             v_mid_trial[i] = v_mid[i] + a[i] * p
             q2[i] = q[i] + v_mid_trial[i] * dt_trial
             v2[i] = v_mid_trial[i] + half * a[i]
-        shock = state_acceleration(t + dt_trial, q2, v2, a2, f, rows[RESIDUAL], vint, work, model)
+        shock = evaluate(t + dt_trial, q2, v2, a2, f, rows[RESIDUAL], vint, work, model)
         if shock >= 0:
             return K.STATUS_SHOCK_DIVERGED, shock, dt_trial, dt_trial, trials - 1
         if not all_finite(a2):
@@ -76,6 +77,7 @@ def step(t, dt, index, state, memory, model):
         if err >= 1.0 and dt_next >= scalars[A.S_DTMIN] and trials < max_trials:
             dt_trial = dt_next
             trials += 1
+            copy_into(vint, vint_save)
             continue
         if dt_next < scalars[A.S_DTMIN]:
             return K.STATUS_STEP_UNDERFLOW, -1, dt_trial, dt_trial, trials - 1
@@ -83,10 +85,10 @@ def step(t, dt, index, state, memory, model):
             scalars[A.S_KEPT_AT_MAX_TRIALS] += 1.0
         A.update_reference_velocities(v_mid_trial, vmin, scalars)
         break
-    copy_into(q, q2)
-    copy_into(v, v2)
-    copy_into(a, a2)
-    copy_into(v_mid, v_mid_trial)
+    copy_vector(q, q2)
+    copy_vector(v, v2)
+    copy_vector(a, a2)
+    copy_vector(v_mid, v_mid_trial)
     return K.STATUS_DONE, -1, dt_trial, dt_next, trials - 1
 
 
@@ -95,13 +97,16 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     """The loop, compiled without reference counting (``_nrt=False``:
     nothing here allocates), calling :func:`step` (one compiled copy of the
     step for every loop that takes it: numba's inlining copies a callee's IR
-    at each site, and the step is large; the call costs ~2 % of a step)."""
+    at each site, and the step is large; the call costs ~2 % of a step).
+    With the model's 4th bundle (``integrate.LOCAL_FRAME_LOOPS``) the step
+    takes the shocks in their local frames (:mod:`local_frame`); with three
+    bundles this is the general path."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
+        if not loads_ready_inline(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(

@@ -33,13 +33,14 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
-from asterlite.dynamics.forces import all_finite, loads_ready, matvec, total_force_at
+from asterlite.dynamics.forces import all_finite, copy_into, matvec
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
     STATUS_NOT_FINITE,
     STATUS_SHOCK_DIVERGED,
     STATUS_STEP_UNDERFLOW,
 )
+from asterlite.dynamics.local_frame import copy_vector, loads_ready_inline, total_force_at
 
 Q2, V2, R2, R1, Q3, V3, R3, Q4, V4, R4, X1, Q2E, Q1P, V1P, R1P, Q3E, X2 = range(17)
 MATRIX_ROWS = 17  # then invm_c, invm_k, H1 (or its inverse), H2 (or its inverse): n rows each
@@ -85,7 +86,7 @@ def fill_operators(mem, smem, minv, stiffness, damping, adaptive, tolerance, alp
     smem[S_CAP] = -1.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")  # views of mem, no tuple of them returned by a call
 def operators(mem, n):
     base = MATRIX_ROWS
     return (
@@ -172,9 +173,14 @@ def start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
 
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
+    """One step: the scheme's run_loop and the loops shared by every scheme
+    call it. The forces through :func:`local_frame.total_force_at` (local
+    frames with the model's 4th bundle). Compiled with reference counting:
+    ``start`` and the operator updates allocate (numba compiles a callee
+    with its caller's ``_nrt``)."""
     q, v, a, f, vint, vint_save, work = state
     mem, smem = memory[0], memory[1]
-    lin, shk, exc = model[0], model[1], model[2]
+    lin, shk = model[0], model[1]
     minv, stiffness, damping, is_diagonal = lin
     diagonal = is_diagonal[0] == 1
     n = q.shape[0]
@@ -190,12 +196,12 @@ def step(t, dt, index, state, memory, model):
     q2, v2, r2, r1 = mem[Q2], mem[V2], mem[R2], mem[R1]
     q3, v3, r3, q4, v4, r4 = mem[Q3], mem[V3], mem[R3], mem[Q4], mem[V4], mem[R4]
     x1, x2 = mem[X1], mem[X2]
-    vint_save[:, :] = vint
+    if adaptive:  # a rejected trial restores the shock states it changed
+        copy_into(vint_save, vint)
     dtold = smem[S_DTOLD]
     attempts = 0
     dtnew = dt
     while True:
-        vint[:, :] = vint_save
         half = dt / 2.0
         coeff = dt / dtold
         if abs(coeff - 1.0) >= EPS:
@@ -214,7 +220,7 @@ def step(t, dt, index, state, memory, model):
         for i in range(n):
             q3[i] = q[i] + half * v[i] + (dt * dt / 24.0) * (4.0 * r1[i] - r2[i] - x2[i])
             v3[i] = (q3[i] - q[i]) / half
-        shock = total_force_at(t + half, q3, v3, shk, vint, exc, work, f)
+        shock = total_force_at(t + half, q3, v3, vint, work, f, model)
         if shock >= 0:
             return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
         reduced_force(f, q3, minv, invm_k, r3, x1, diagonal)
@@ -229,7 +235,7 @@ def step(t, dt, index, state, memory, model):
         for i in range(n):
             q4[i] = q[i] + dt * v[i] + (dt * dt / 6.0) * (r1[i] + 2.0 * r3[i] - x2[i])
             v4[i] = (q4[i] - q3[i]) / half
-        shock = total_force_at(t + dt, q4, v4, shk, vint, exc, work, f)
+        shock = total_force_at(t + dt, q4, v4, vint, work, f, model)
         if shock >= 0:
             return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
         reduced_force(f, q4, minv, invm_k, r4, x1, diagonal)
@@ -254,11 +260,12 @@ def step(t, dt, index, state, memory, model):
                 return STATUS_STEP_UNDERFLOW, -1, dt, dt, attempts
             dtold = dt
             dt = dtnew
+            copy_into(vint, vint_save)
             continue
-        mem[Q1P, :] = q
-        mem[V1P, :] = v
-        mem[R1P, :] = r1
-        mem[Q2E, :] = mem[Q3E]
+        copy_vector(mem[Q1P], q)
+        copy_vector(mem[V1P], v)
+        copy_vector(mem[R1P], r1)
+        copy_vector(mem[Q2E], mem[Q3E])
         smem[S_OLDPAS1] = smem[S_OLDPAS2]
         smem[S_OLDPAS2] = dt
         break
@@ -354,12 +361,15 @@ def relative_error(dt, q, v, mem, smem, attempts, n):
 
 @njit(cache=True)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+    """The loop calling :func:`step`; with the model's 4th bundle
+    (``integrate.LOCAL_FRAME_LOOPS``) the shocks in their local frames,
+    without it the general path."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
+        if not loads_ready_inline(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(

@@ -42,7 +42,8 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
-from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
+from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.local_frame import copy_vector, evaluate, loads_ready_inline
 
 
 @dataclass(frozen=True)
@@ -168,11 +169,11 @@ def attempt(t, dt, state, memory, model, s):
     rows, table = memory[0], memory[2]
     n = q.shape[0]
     qs, vs, acc = rows[Q_STAGE], rows[V_STAGE], rows[A_STAGE]
-    copy_into(vs, v)
-    copy_into(acc, a)
+    copy_vector(vs, v)
+    copy_vector(acc, a)
     for stage in range(s):
-        copy_into(rows[VECTOR_ROWS + stage], vs)
-        copy_into(rows[VECTOR_ROWS + s + stage], acc)
+        copy_vector(rows[VECTOR_ROWS + stage], vs)
+        copy_vector(rows[VECTOR_ROWS + s + stage], acc)
         for i in range(n):
             dq = 0.0
             dv = 0.0
@@ -182,7 +183,7 @@ def attempt(t, dt, state, memory, model, s):
             qs[i] = q[i] + dt * dq
             vs[i] = v[i] + dt * dv
         t_stage = t + dt * table[s, stage + 1]
-        shock = state_acceleration(t_stage, qs, vs, acc, f, rows[RESIDUAL], vint, work, model)
+        shock = evaluate(t_stage, qs, vs, acc, f, rows[RESIDUAL], vint, work, model)
         if shock >= 0:
             return shock
     return -1
@@ -227,12 +228,12 @@ def step(t, dt, index, state, memory, model):
     if adaptive and dt > dt_max:
         dt = dt_max
     low, high = (0.9 / 5.0) ** p, (0.9 / 0.2) ** p
-    copy_into(vint_save, vint)
+    if adaptive:  # a rejected trial restores the shock states it changed
+        copy_into(vint_save, vint)
     previous_error = HUGE
     rejected = 0
     dt_next = dt
     while True:
-        copy_into(vint, vint_save)
         shock = attempt(t, dt, state, memory, model, s)
         if shock >= 0:
             return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, rejected
@@ -255,13 +256,14 @@ def step(t, dt, index, state, memory, model):
             dt = dt_next
             previous_error = err
             rejected += 1
+            copy_into(vint, vint_save)
             continue
         if dt_next < scalars[S_DTMIN]:
             return K.STATUS_STEP_UNDERFLOW, -1, dt, dt, rejected
         break
-    copy_into(q, rows[Q_STAGE])
-    copy_into(v, rows[V_STAGE])
-    copy_into(a, rows[A_STAGE])
+    copy_vector(q, rows[Q_STAGE])
+    copy_vector(v, rows[V_STAGE])
+    copy_vector(a, rows[A_STAGE])
     return K.STATUS_DONE, -1, dt, dt_next, rejected
 
 
@@ -270,13 +272,16 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     """The loop, compiled without reference counting (``_nrt=False``:
     nothing here allocates), calling :func:`step` (one compiled copy of the
     step for every loop that takes it: numba's inlining copies a callee's IR
-    at each site, and the step is large; the call costs ~2 % of a step)."""
+    at each site, and the step is large; the call costs ~2 % of a step).
+    With the model's 4th bundle (``integrate.LOCAL_FRAME_LOOPS``) the step
+    takes the shocks in their local frames (:mod:`local_frame`); with three
+    bundles this is the general path."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
+        if not loads_ready_inline(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(

@@ -57,7 +57,8 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, copy_into, evaluate, loads_ready
+from asterlite.dynamics.forces import all_finite
+from asterlite.dynamics.local_frame import copy_vector, evaluate, loads_ready_inline
 
 Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
 VECTOR_ROWS = 8
@@ -143,9 +144,9 @@ def step(t, dt, index, state, memory, model):
     shock = evaluate(t + dt, q2, v2, a2, f, residual, vint, work, model)
     if shock >= 0:
         return K.STATUS_SHOCK_DIVERGED, shock, dt, dt, 0
-    copy_into(q, q2)
-    copy_into(v, v2)
-    copy_into(a, a2)
+    copy_vector(q, q2)
+    copy_vector(v, v2)
+    copy_vector(a, a2)
     if not (all_finite(q) and all_finite(v) and all_finite(a)):
         return K.STATUS_NOT_FINITE, -1, dt, dt, 0
     return K.STATUS_DONE, -1, dt, dt, 0
@@ -156,13 +157,16 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     """The loop, compiled without reference counting (``_nrt=False``:
     nothing here allocates), calling :func:`step` (one compiled copy of the
     step for every loop that takes it: numba's inlining copies a callee's IR
-    at each site, and the step is large; the call costs ~2 % of a step)."""
+    at each site, and the step is large; the call costs ~2 % of a step).
+    With the model's 4th bundle (``integrate.LOCAL_FRAME_LOOPS``) the step
+    takes the shocks in their local frames (:mod:`local_frame`); with three
+    bundles this is the general path."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
+        if not loads_ready_inline(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
