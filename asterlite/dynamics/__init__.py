@@ -1,1 +1,75 @@
-"""Transient dynamics on a modal basis: shock/friction forces, schemes, compiled loop."""
+"""Transient dynamics on a modal basis: shock/friction forces, schemes, compiled loop.
+
+numba's cache (``cache=True``) checks a compiled kernel against its own
+source file only: a kernel whose file did not change is loaded as it was
+compiled even when a helper it inlines from another file of this package
+changed (an upgrade, a ``git pull``), and it would then run the old helper.
+So the kernels are kept in a folder named after a digest of every source
+of this package (:func:`kernel_cache_folder`): a change of any of them
+starts an empty cache, which ``asterlite warmup`` (or the first run, with
+its compile notice) fills. Importing this package therefore sets numba's
+cache folder for the process and its children (``NUMBA_CACHE_DIR``): under
+the one the user gave, else this package's ``__pycache__``, else the user's
+cache folder when the package is read-only.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import sys
+from pathlib import Path
+
+PACKAGE = Path(__file__).resolve().parent
+CACHE_PREFIX = "kernels-"
+
+
+def source_digest(folder: Path = PACKAGE) -> str:
+    """A digest of every Python source below ``folder`` (names and bytes)."""
+    digest = hashlib.sha256()
+    for path in sorted(folder.rglob("*.py")):
+        digest.update(path.relative_to(folder).as_posix().encode())
+        digest.update(b"\0")
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+def _writable(folder: Path) -> bool:
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError:
+        return False
+    return os.access(folder, os.W_OK)
+
+
+def kernel_cache_root(user_folder: str | None) -> Path:
+    """Where the digest folders live: the user's NUMBA_CACHE_DIR, else this
+    package's ``__pycache__``, else ``$XDG_CACHE_HOME/asterlite``."""
+    if user_folder:
+        return Path(user_folder)
+    in_tree = PACKAGE / "__pycache__"
+    if _writable(in_tree):
+        return in_tree
+    home = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(home) / "asterlite"
+
+
+def kernel_cache_folder() -> Path:
+    """This package's numba cache folder, ``<root>/kernels-<digest>``; a
+    NUMBA_CACHE_DIR that already names it (set for a parent process) is kept."""
+    name = CACHE_PREFIX + source_digest()
+    given = os.environ.get("NUMBA_CACHE_DIR")
+    if given and Path(given).name == name:
+        return Path(given)
+    return kernel_cache_root(given) / name
+
+
+def _use_kernel_cache() -> None:
+    folder = str(kernel_cache_folder())
+    os.environ["NUMBA_CACHE_DIR"] = folder  # numba reads it when imported, children too
+    config = sys.modules.get("numba.core.config")
+    if config is not None:  # numba already imported: its locators read the config
+        config.CACHE_DIR = folder
+
+
+_use_kernel_cache()

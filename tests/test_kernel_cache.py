@@ -1,0 +1,62 @@
+"""numba's cache folder follows every source of asterlite.dynamics: a
+kernel compiled from older helpers is never loaded (asterlite/dynamics/__init__.py)."""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+
+import asterlite.dynamics as D
+
+
+def test_digest_follows_every_source(tmp_path):
+    (tmp_path / "laws").mkdir()
+    (tmp_path / "a.py").write_text("x = 1\n")
+    (tmp_path / "laws" / "b.py").write_text("y = 2\n")
+    first = D.source_digest(tmp_path)
+    assert D.source_digest(tmp_path) == first
+    (tmp_path / "laws" / "b.py").write_text("y = 3\n")  # a helper in a subfolder
+    changed = D.source_digest(tmp_path)
+    assert changed != first
+    (tmp_path / "c.py").write_text("")  # a new, empty module
+    assert D.source_digest(tmp_path) not in (first, changed)
+    (tmp_path / "notes.txt").write_text("not a source")
+    assert D.source_digest(tmp_path) == D.source_digest(tmp_path)
+
+
+def test_folder_under_the_users_cache_dir(tmp_path, monkeypatch):
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path))
+    folder = D.kernel_cache_folder()
+    assert folder.parent == tmp_path
+    assert re.fullmatch(r"kernels-[0-9a-f]{16}", folder.name)
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(folder))  # a child of a process that set it
+    assert D.kernel_cache_folder() == folder
+
+
+def test_numba_uses_it(tmp_path):
+    """A fresh process with the user's NUMBA_CACHE_DIR: numba's own config
+    names the digest folder below it, whether numba was imported first or not."""
+    code = (
+        "import numba, asterlite.dynamics as D\n"
+        "from numba.core import config\n"
+        "print(config.CACHE_DIR == str(D.kernel_cache_folder()))\n"
+    )
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path))
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
+    assert out.stdout.strip() == "True", out.stderr
+
+
+def test_warmup_prunes_only_older_in_tree_folders(tmp_path):
+    from asterlite.dynamics.warmup import prune_stale_kernels
+
+    current = tmp_path / "kernels-0123456789abcdef"
+    older = tmp_path / "kernels-fedcba9876543210"
+    foreign = tmp_path / "kernels-mine"  # not a digest: not ours
+    for folder in (current, older, foreign):
+        folder.mkdir()
+    assert prune_stale_kernels(current, in_tree=False) == []  # a user's NUMBA_CACHE_DIR
+    assert older.exists()
+    assert prune_stale_kernels(current, in_tree=True) == [older]
+    assert current.exists() and foreign.exists() and not older.exists()
