@@ -269,13 +269,8 @@ def step(t, dt, index, state, memory, model):
 
 @njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The loop, compiled without reference counting (``_nrt=False``:
-    nothing here allocates), calling :func:`step` (one compiled copy of the
-    step for every loop that takes it: numba's inlining copies a callee's IR
-    at each site, and the step is large; the call costs ~2 % of a step).
-    With the model's 4th bundle (``integrate.LOCAL_FRAME_LOOPS``) the step
-    takes the shocks in their local frames (:mod:`local_frame`); with three
-    bundles this is the general path."""
+    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
+    (no reference counting; local frames with the model's 4th bundle)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
