@@ -60,3 +60,17 @@ def test_warmup_prunes_only_older_in_tree_folders(tmp_path):
     assert older.exists()
     assert prune_stale_kernels(current, in_tree=True) == [older]
     assert current.exists() and foreign.exists() and not older.exists()
+
+
+def test_every_warmed_kernel_has_a_compile_estimate():
+    """compile_seconds.json names every kernel the warmup compiles and every
+    loop a run can take, so each compile notice says about how long it takes."""
+    from asterlite.dynamics import integrate, warmup
+
+    names = set(warmup.KERNELS) | set(integrate.LOCAL_FRAME_LOOPS)
+    names |= set(integrate.SPECIALISED_LOOPS)
+    missing = sorted(name for name in names if not (D.compile_estimate(name) or 0.0) > 0.0)
+    assert not missing
+    assert D.compile_estimate("no such kernel") is None
+    estimates = [D.compile_estimate(name) for name in warmup.SCHEME_LOOPS]
+    assert estimates == sorted(estimates, reverse=True)  # longest first

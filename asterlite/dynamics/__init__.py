@@ -15,7 +15,9 @@ cache folder when the package is read-only.
 
 from __future__ import annotations
 
+import functools
 import hashlib
+import json
 import os
 import sys
 from pathlib import Path
@@ -70,6 +72,19 @@ def _use_kernel_cache() -> None:
     config = sys.modules.get("numba.core.config")
     if config is not None:  # numba already imported: its locators read the config
         config.CACHE_DIR = folder
+
+
+@functools.cache
+def _compile_seconds() -> dict[str, float]:
+    return json.loads((PACKAGE / "compile_seconds.json").read_text())["cpu_seconds"]
+
+
+def compile_estimate(name: str) -> float | None:
+    """About what compiling the kernel ``name`` takes (CPU seconds measured
+    by ``asterlite warmup -v``, kept as data in compile_seconds.json): the
+    compile notice's "~N s" and the warmup's longest-first order; nothing
+    else depends on it."""
+    return _compile_seconds().get(name)
 
 
 _use_kernel_cache()

@@ -115,8 +115,11 @@ def devoge_operators(mem, smem, lin, n):
                 sk += minv[i, k] * stiffness[k, j]
             invm_c[i, j] = sc
             invm_k[i, j] = sk
-    if smem[DV.S_READY] == 1.0:
-        DV.update_implicit_operators(invm_c, h1, h2, smem[DV.S_HDT], False)
+        mem[DV.D_MINV, i] = minv[i, i]
+        mem[DV.D_C, i] = invm_c[i, i]
+        mem[DV.D_K, i] = invm_k[i, i]
+    if smem[DV.S_READY] == 1.0:  # a singular H1 or H2 makes the step non-finite: reported
+        DV.update_implicit_operators(mem, invm_c, h1, h2, smem[DV.S_HDT], False)
 
 
 @njit(cache=True, inline="always")

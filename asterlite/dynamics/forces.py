@@ -109,7 +109,7 @@ def loads_cover(t_next, abscissas, layout, pending):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")  # a call would pass the excitation's 15 arrays each step
 def loads_ready(clock, exc):
     """Whether the windowed multipliers cover the next step (two stored
     steps ahead of the current time); otherwise the loop pauses with
@@ -240,6 +240,18 @@ def matvec_add(a, x, coef, out, diagonal):
 def matvec(a, x, out, diagonal):
     out[:] = 0.0
     matvec_add(a, x, 1.0, out, diagonal)
+
+
+@njit(cache=True, inline="always")
+def matvec_row(a, x, i, diagonal):
+    """(a @ x)[i] with :func:`matvec`'s operations in its order (so the same
+    value), for loops that use one row at a time instead of a scratch vector."""
+    if diagonal:
+        return a[i, i] * x[i]
+    s = 0.0
+    for j in range(x.shape[0]):
+        s += a[i, j] * x[j]
+    return s
 
 
 @njit(cache=True, inline="always")

@@ -12,6 +12,7 @@ import numpy as np
 from asterlite import progress
 from asterlite.dynamics import (
     adapt_control,
+    compile_estimate,
     diagnosis,
     scheme_adapt_ordre1,
     scheme_adapt_ordre2,
@@ -136,30 +137,6 @@ def integrate(
         )  # fmt: skip
 
 
-# About what compiling each kernel takes on a quiet 2-core machine (issue 16
-# measured 15-40 s per kernel; docs/performance.md, "Cold start"): the
-# notice's estimate, nothing depends on it.
-COMPILE_SECONDS = {
-    "DIFF_CENTRE": 30.0,
-    "DIFF_CENTRE (full matrices)": 30.0,
-    "DIFF_CENTRE (general path)": 25.0,
-    "NEWMARK": 20.0,
-    "NEWMARK (general path)": 20.0,
-    "DEVOGE (general path)": 40.0,
-    "TRBDF2 (general path)": 20.0,
-    "RUNGE_KUTTA (general path)": 20.0,
-    "ADAPT_ORDRE1 (general path)": 20.0,
-    "ADAPT_ORDRE2 (general path)": 20.0,
-    "TRBDF2": 20.0,
-    "DEVOGE": 40.0,
-    "RUNGE_KUTTA": 20.0,
-    "ADAPT_ORDRE1": 20.0,
-    "ADAPT_ORDRE2": 20.0,
-    "VITESSE_VARIABLE": 60.0,
-    "TRAITEMENT_NONL='IMPLICITE'": 60.0,
-}
-
-
 def loop_kernel(scheme, system, shocks, specialised=True, rotation=None, implicit=False) -> str:
     """The name of the compiled loop a run takes: its scheme, or the path
     shared by every scheme (variable rotation speed, implicit shocks), and
@@ -194,10 +171,6 @@ LOCAL_FRAME_LOOPS = (
     "ADAPT_ORDRE1",
     "ADAPT_ORDRE2",
 )
-
-
-def compile_estimate(name: str) -> float | None:
-    return COMPILE_SECONDS.get(name)
 
 
 def run_kernel(

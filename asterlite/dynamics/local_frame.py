@@ -33,7 +33,6 @@ from numba.extending import overload
 
 from asterlite.dynamics import forces as F
 from asterlite.dynamics.contact import local_shock_forces
-from asterlite.dynamics.kernel import C_STEP, C_TIME
 from asterlite.dynamics.scheme_diff_centre import external_force_into
 
 
@@ -147,13 +146,3 @@ def copy_vector(target, source):
     its reshapes (each a call into numba's C helpers: ~5 % of a step)."""
     for i in range(source.shape[0]):
         target[i] = source[i]
-
-
-@njit(cache=True, inline="always")
-def loads_ready_inline(clock, exc):
-    """:func:`forces.loads_ready` inlined in the loops (a call there passes
-    the 15 arrays of the excitation bundle at every step)."""
-    t_next = clock[C_TIME] + 2.0 * clock[C_STEP]
-    return F.loads_cover(t_next, exc[1], exc[3], exc[8]) and F.loads_cover(
-        t_next, exc[5], exc[7], exc[10]
-    )

@@ -33,17 +33,22 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
-from asterlite.dynamics.forces import all_finite, copy_into, matvec
+from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, matvec_row
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
     STATUS_NOT_FINITE,
     STATUS_SHOCK_DIVERGED,
     STATUS_STEP_UNDERFLOW,
 )
-from asterlite.dynamics.local_frame import copy_vector, loads_ready_inline, total_force_at
+from asterlite.dynamics.linalg import lu_factor, lu_solve
+from asterlite.dynamics.local_frame import copy_vector, total_force_at
 
 Q2, V2, R2, R1, Q3, V3, R3, Q4, V4, R4, X1, Q2E, Q1P, V1P, R1P, Q3E, X2 = range(17)
-MATRIX_ROWS = 17  # then invm_c, invm_k, H1 (or its inverse), H2 (or its inverse): n rows each
+P0, P1, P2 = 17, 18, 19  # the pivots of H0, H1, H2's LU factors (full damping)
+# the diagonals of M⁻¹, M⁻¹C, M⁻¹K, H1, H2 as rows: a diagonal system's loops
+# then read contiguous memory (and vectorise) instead of a[i, i]
+D_MINV, D_C, D_K, D_H1, D_H2 = 20, 21, 22, 23, 24
+MATRIX_ROWS = 25  # then invm_c, invm_k, H1, H2, H0 (LU factors when full): n rows each
 S_READY, S_DTOLD, S_OLDPAS1, S_OLDPAS2, S_ADAPTIVE, S_TOL, S_ALPHA, S_DTMIN, S_DTMAX, S_HDT = range(
     10
 )
@@ -54,7 +59,7 @@ EPS = np.finfo(np.float64).eps
 
 
 def memory_rows(n: int) -> int:
-    return MATRIX_ROWS + 4 * n
+    return MATRIX_ROWS + 5 * n
 
 
 def prepare(system, dt, options):
@@ -78,6 +83,9 @@ def fill_operators(mem, smem, minv, stiffness, damping, adaptive, tolerance, alp
     ops = mem[MATRIX_ROWS:]
     ops[0:n] = minv @ damping
     ops[n : 2 * n] = minv @ stiffness
+    mem[D_MINV] = np.diag(minv)
+    mem[D_C] = np.diag(ops[0:n])
+    mem[D_K] = np.diag(ops[n : 2 * n])
     smem[:] = 0.0
     smem[S_ADAPTIVE] = 1.0 if adaptive else 0.0
     smem[S_TOL], smem[S_ALPHA] = tolerance, alpha
@@ -97,9 +105,26 @@ def operators(mem, n):
     )
 
 
+@njit(cache=True, inline="always")
+def start_operator(mem, n):
+    """H0's block (built and factored once per run, by :func:`start`)."""
+    base = MATRIX_ROWS + 4 * n
+    return mem[base : base + n]
+
+
+@njit(cache=True, inline="always")
+def times(a, a_diagonal, x, i, diagonal):
+    """(a @ x)[i], from ``a``'s diagonal row when the system is diagonal."""
+    if diagonal:
+        return a_diagonal[i] * x[i]
+    return matvec_row(a, x, i, False)
+
+
 @njit(cache=True)
-def update_implicit_operators(invm_c, h1, h2, dt, diagonal):
-    """H1 = 4I + dt C', H2 = 6I + dt C' (stored inverted when full)."""
+def update_implicit_operators(mem, invm_c, h1, h2, dt, diagonal):
+    """H1 = 4I + dt C', H2 = 6I + dt C' (and their diagonal rows),
+    LU-factored in place when full (only when the step changes); False when
+    one is singular."""
     n = invm_c.shape[0]
     for i in range(n):
         for j in range(n):
@@ -107,77 +132,84 @@ def update_implicit_operators(invm_c, h1, h2, dt, diagonal):
             h2[i, j] = dt * invm_c[i, j]
         h1[i, i] += 4.0
         h2[i, i] += 6.0
-    if not diagonal:
-        h1[:, :] = np.linalg.inv(h1)  # only when the step changes
-        h2[:, :] = np.linalg.inv(h2)
+        mem[D_H1, i] = h1[i, i]
+        mem[D_H2, i] = h2[i, i]
+    if diagonal:
+        return True
+    return lu_factor(h1, mem[P1]) and lu_factor(h2, mem[P2])
 
 
-@njit(cache=True)
-def solve_with(h, rhs, out, diagonal):
+@njit(cache=True, inline="always")
+def solve_with(h, h_diagonal, pivots, rhs, out, diagonal):
+    """out = H⁻¹ rhs, H diagonal or LU-factored (no allocation: the step is
+    compiled without reference counting)."""
     if diagonal:
         for i in range(out.shape[0]):
-            out[i] = rhs[i] / h[i, i]
+            out[i] = rhs[i] / h_diagonal[i]
     else:
-        matvec(h, rhs, out, False)
+        for i in range(out.shape[0]):
+            out[i] = rhs[i]
+        lu_solve(h, pivots, out)
 
 
-@njit(cache=True)
-def reduced_force(f, q, minv, invm_k, out, scratch, diagonal):
+@njit(cache=True, inline="always")
+def reduced_force(f, q, minv, invm_k, mem, out, diagonal):
     """out = M⁻¹ f - M⁻¹K q."""
-    matvec(minv, f, out, diagonal)
-    matvec(invm_k, q, scratch, diagonal)
+    d_minv, d_k = mem[D_MINV], mem[D_K]
     for i in range(out.shape[0]):
-        out[i] -= scratch[i]
+        out[i] = times(minv, d_minv, f, i, diagonal) - times(invm_k, d_k, q, i, diagonal)
 
 
 @njit(cache=True)
 def start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
-    """Build the half-step state at t - dt/2 from (q, v, F) at t."""
+    """Build the half-step state at t - dt/2 from (q, v, F) at t; False when
+    an implicit operator is singular."""
     n = q.shape[0]
     q2, v2, r2, r1, x1, x2 = mem[Q2], mem[V2], mem[R2], mem[R1], mem[X1], mem[X2]
-    update_implicit_operators(invm_c, h1, h2, dt, diagonal)
+    if not update_implicit_operators(mem, invm_c, h1, h2, dt, diagonal):
+        return False
     smem[S_HDT] = dt
-    mem[Q1P, :] = q
-    mem[V1P, :] = v
-    mem[R1P, :] = f  # code_aster keeps the raw force here on the first step
+    copy_vector(mem[Q1P], q)
+    copy_vector(mem[V1P], v)
+    copy_vector(mem[R1P], f)  # code_aster keeps the raw force here on the first step
     smem[S_OLDPAS1] = dt
     smem[S_OLDPAS2] = dt
     smem[S_DTOLD] = dt
     half = dt / 2.0
-    reduced_force(f, q, minv, invm_k, r1, x1, diagonal)
-    matvec(invm_c, v, x1, diagonal)
+    d_c = mem[D_C]
+    reduced_force(f, q, minv, invm_k, mem, r1, diagonal)
     for i in range(n):
-        q2[i] = q[i] - half * v[i] + (half / 4.0) * (r1[i] - x1[i])
-    reduced_force(f, q2, minv, invm_k, r2, x1, diagonal)
+        q2[i] = q[i] - half * v[i] + (half / 4.0) * (r1[i] - times(invm_c, d_c, v, i, diagonal))
+    reduced_force(f, q2, minv, invm_k, mem, r2, diagonal)
     # v2 from H0 v2 = H1 v1 - dt (r1 + r2), H0 = 4I - dt C'
-    h0 = np.empty((n, n))  # once per run
+    h0 = start_operator(mem, n)
+    h0_diagonal = x1  # free here
     for i in range(n):
         for j in range(n):
             h0[i, j] = -dt * invm_c[i, j]
         h0[i, i] += 4.0
-    matvec(invm_c, v, x1, diagonal)
+        h0_diagonal[i] = h0[i, i]
     for i in range(n):
-        x2[i] = 4.0 * v[i] + dt * x1[i] - dt * (r1[i] + r2[i])
-    if diagonal:
-        for i in range(n):
-            v2[i] = x2[i] / h0[i, i]
-    else:
-        v2[:] = np.linalg.solve(h0, x2)
+        x2[i] = 4.0 * v[i] + dt * times(invm_c, d_c, v, i, diagonal) - dt * (r1[i] + r2[i])
+    if not (diagonal or lu_factor(h0, mem[P0])):
+        return False
+    solve_with(h0, h0_diagonal, mem[P0], x2, v2, diagonal)
     if smem[S_ADAPTIVE] == 1.0:
         for i in range(n):
             mem[Q2E, i] = (
                 (2.0 * q2[i] - q[i]) + half * (2.0 * v2[i] - v[i]) + (half**2 / 24.0) * 13.0 * r1[i]
             )
     smem[S_READY] = 1.0
+    return True
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
     """One step: the scheme's run_loop and the loops shared by every scheme
     call it. The forces through :func:`local_frame.total_force_at` (local
-    frames with the model's 4th bundle). Compiled with reference counting:
-    ``start`` and the operator updates allocate (numba compiles a callee
-    with its caller's ``_nrt``)."""
+    frames with the model's 4th bundle). Compiled without reference
+    counting: nothing in it or its callees allocates (the implicit
+    operators are LU-factored in place, in the memory ``prepare`` made)."""
     q, v, a, f, vint, vint_save, work = state
     mem, smem = memory[0], memory[1]
     lin, shk = model[0], model[1]
@@ -192,10 +224,12 @@ def step(t, dt, index, state, memory, model):
     if adaptive and dt > dt_max:
         dt = dt_max
     if smem[S_READY] == 0.0:
-        start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal)
+        if not start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
+            return STATUS_NOT_FINITE, -1, dt, dt, 0
     q2, v2, r2, r1 = mem[Q2], mem[V2], mem[R2], mem[R1]
     q3, v3, r3, q4, v4, r4 = mem[Q3], mem[V3], mem[R3], mem[Q4], mem[V4], mem[R4]
     x1, x2 = mem[X1], mem[X2]
+    d_c, d_h1, d_h2 = mem[D_C], mem[D_H1], mem[D_H2]
     if adaptive:  # a rejected trial restores the shock states it changed
         copy_into(vint_save, vint)
     dtold = smem[S_DTOLD]
@@ -206,7 +240,8 @@ def step(t, dt, index, state, memory, model):
         coeff = dt / dtold
         if abs(coeff - 1.0) >= EPS:
             if dt != smem[S_HDT]:
-                update_implicit_operators(invm_c, h1, h2, dt, diagonal)
+                if not update_implicit_operators(mem, invm_c, h1, h2, dt, diagonal):
+                    return STATUS_NOT_FINITE, -1, dt, dt, attempts
                 smem[S_HDT] = dt
             if attempts > 0:  # retry with a smaller step: rescale the half-step state
                 for i in range(n):
@@ -216,35 +251,35 @@ def step(t, dt, index, state, memory, model):
         # --- t + dt/2
         for i in range(n):
             x1[i] = 4.0 * v[i] - v2[i]
-        matvec(invm_c, x1, x2, diagonal)
         for i in range(n):
-            q3[i] = q[i] + half * v[i] + (dt * dt / 24.0) * (4.0 * r1[i] - r2[i] - x2[i])
+            damped = times(invm_c, d_c, x1, i, diagonal)
+            q3[i] = q[i] + half * v[i] + (dt * dt / 24.0) * (4.0 * r1[i] - r2[i] - damped)
             v3[i] = (q3[i] - q[i]) / half
         shock = total_force_at(t + half, q3, v3, vint, work, f, model)
         if shock >= 0:
             return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
-        reduced_force(f, q3, minv, invm_k, r3, x1, diagonal)
-        matvec(invm_c, v, x2, diagonal)
+        reduced_force(f, q3, minv, invm_k, mem, r3, diagonal)
         for i in range(n):
-            x1[i] = 4.0 * (v[i] + (dt / 4.0) * (r1[i] + r3[i] - x2[i]))
-        solve_with(h1, x1, v3, diagonal)
+            damped = times(invm_c, d_c, v, i, diagonal)
+            x1[i] = 4.0 * (v[i] + (dt / 4.0) * (r1[i] + r3[i] - damped))
+        solve_with(h1, d_h1, mem[P1], x1, v3, diagonal)
         # --- t + dt
         for i in range(n):
             x1[i] = v[i] + 2.0 * v3[i]
-        matvec(invm_c, x1, x2, diagonal)
         for i in range(n):
-            q4[i] = q[i] + dt * v[i] + (dt * dt / 6.0) * (r1[i] + 2.0 * r3[i] - x2[i])
+            damped = times(invm_c, d_c, x1, i, diagonal)
+            q4[i] = q[i] + dt * v[i] + (dt * dt / 6.0) * (r1[i] + 2.0 * r3[i] - damped)
             v4[i] = (q4[i] - q3[i]) / half
         shock = total_force_at(t + dt, q4, v4, vint, work, f, model)
         if shock >= 0:
             return STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts
-        reduced_force(f, q4, minv, invm_k, r4, x1, diagonal)
+        reduced_force(f, q4, minv, invm_k, mem, r4, diagonal)
         for i in range(n):
             x1[i] = 4.0 * v3[i] + v[i]
-        matvec(invm_c, x1, x2, diagonal)
         for i in range(n):
-            x1[i] = 6.0 * (v[i] + (dt / 6.0) * (r4[i] + 4.0 * r3[i] + r1[i] - x2[i]))
-        solve_with(h2, x1, v4, diagonal)
+            damped = times(invm_c, d_c, x1, i, diagonal)
+            x2[i] = 6.0 * (v[i] + (dt / 6.0) * (r4[i] + 4.0 * r3[i] + r1[i] - damped))
+        solve_with(h2, d_h2, mem[P2], x2, v4, diagonal)
         if not (all_finite(q4) and all_finite(v4)):
             K.expose_trial(q, v, a, q4, v4, a)
             return STATUS_NOT_FINITE, -1, dt, dt, attempts
@@ -270,9 +305,8 @@ def step(t, dt, index, state, memory, model):
         smem[S_OLDPAS2] = dt
         break
     # --- shift: half step 3 -> 2, whole step 4 -> 1
-    matvec(invm_c, v4, x1, diagonal)
     for i in range(n):
-        a[i] = r4[i] - x1[i]
+        a[i] = r4[i] - times(invm_c, d_c, v4, i, diagonal)
         q2[i], v2[i], r2[i] = q3[i], v3[i], r3[i]
         q[i], v[i], r1[i] = q4[i], v4[i], r4[i]
     smem[S_DTOLD] = dt
@@ -359,17 +393,16 @@ def relative_error(dt, q, v, mem, smem, attempts, n):
     return err_displacement / scale
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The loop calling :func:`step`; with the model's 4th bundle
-    (``integrate.LOCAL_FRAME_LOOPS``) the shocks in their local frames,
-    without it the general path."""
+    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
+    (no reference counting; local frames with the model's 4th bundle)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, archive[0])
         if paused:
             return paused
-        if not loads_ready_inline(clock, model[2]):
+        if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(

@@ -57,8 +57,8 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite
-from asterlite.dynamics.local_frame import copy_vector, evaluate, loads_ready_inline
+from asterlite.dynamics.forces import all_finite, loads_ready
+from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
 VECTOR_ROWS = 8
@@ -161,7 +161,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         paused = K.pause_status(counters, archive[0])
         if paused:
             return paused
-        if not loads_ready_inline(clock, model[2]):
+        if not loads_ready(clock, model[2]):
             return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(

@@ -31,6 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.dynamics import compile_estimate
+
 # the kernels, in three stages: the force functions every loop calls (and
 # the film loop, which needs none of them); each scheme's own loop; the two
 # loops shared by every scheme, which call every scheme's step and so find
@@ -43,25 +45,31 @@ FILM = "LAME_FLUIDE"
 # the film under code_aster 10-12's ADAPT_ORDRE2: calls the film functions and
 # the legacy ADAPT loop's step control, so it comes after both
 FILM_ADAPT = "LAME_FLUIDE, ADAPT_ORDRE2 (code_aster 10-12)"
-# longest compile first (CPU seconds measured 2026-11-25), so that the two
-# workers finish the stage together
-SCHEME_LOOPS = (
-    "ADAPT_ORDRE1",  # 44: compiles the local-frame evaluation the other schemes share
-    "NEWMARK",  # 43
-    "DEVOGE",  # 38
-    "DIFF_CENTRE",  # 33
-    LEGACY_ADAPT,  # 27
-    "DEVOGE (general path)",  # 23
-    "DIFF_CENTRE (general path)",  # 22
-    "ADAPT_ORDRE1 (general path)",  # 22: compiles forces.evaluate
-    "DIFF_CENTRE (full matrices)",  # 19
-    "NEWMARK (general path)",  # 9
-    "TRBDF2",  # 9
-    "TRBDF2 (general path)",  # 8
-    "RUNGE_KUTTA",  # 8
-    "RUNGE_KUTTA (general path)",  # 8
-    "ADAPT_ORDRE2",  # 7
-    "ADAPT_ORDRE2 (general path)",  # 9
+# each scheme's loops, longest compile first (compile_seconds.json) so that
+# the two workers finish the stage together; ADAPT_ORDRE1, among the first,
+# compiles the local-frame evaluation the later schemes call
+SCHEME_LOOPS = tuple(
+    sorted(
+        (
+            "ADAPT_ORDRE1",
+            "NEWMARK",
+            "DEVOGE",
+            "DIFF_CENTRE",
+            LEGACY_ADAPT,
+            "DEVOGE (general path)",
+            "DIFF_CENTRE (general path)",
+            "ADAPT_ORDRE1 (general path)",
+            "DIFF_CENTRE (full matrices)",
+            "NEWMARK (general path)",
+            "TRBDF2",
+            "TRBDF2 (general path)",
+            "RUNGE_KUTTA",
+            "RUNGE_KUTTA (general path)",
+            "ADAPT_ORDRE2",
+            "ADAPT_ORDRE2 (general path)",
+        ),
+        key=lambda name: -(compile_estimate(name) or 0.0),
+    )
 )
 EVERY_SCHEME_LOOPS = ("VITESSE_VARIABLE", "TRAITEMENT_NONL='IMPLICITE'")
 LOOPS = SCHEME_LOOPS + EVERY_SCHEME_LOOPS
@@ -210,7 +218,7 @@ def warm_shared() -> None:
     excitation = tiny_loads(system, 0.01, 1.0e-4)
     q, v, f, a = np.zeros(2), np.zeros(2), np.zeros(2), np.zeros(2)
     vint = shocks.initial_vint(0.0)
-    with progress.kernel(SHARED, 30.0):
+    with progress.kernel(SHARED, compile_estimate(SHARED)):
         total_force(0.0, q, v, shocks.bundle(), vint, excitation.bundle(), np.zeros((5, 3)), f)
         acceleration(f, q, v, system.bundle(), np.zeros(2), a)
         K.archive(0, 0.0, 0, q, v, a, vint, 1.0e-4, 0, *new_buffers(1, 2, 1))
@@ -231,7 +239,8 @@ def warm_film(adapt: bool = False) -> None:
     if adapt:  # a physical film (added mass, squeeze): the adaptive step does not collapse
         film = FluidFilm(np.array([film_row(-0.01, 0.01, -1.0e-6, 0.0)]))
         options = SchemeOptions(adapt_v11=True, dt_max=1.0e-4)
-    with progress.kernel(FILM_ADAPT if adapt else FILM, 30.0):
+    name = FILM_ADAPT if adapt else FILM
+    with progress.kernel(name, compile_estimate(name)):
         integrate_film(
             system, shocks, film, tiny_loads(system, 0.01, 1.0e-4), np.zeros(2),
             np.array([0.0, 0.1]), 0.0, 0.01, 1.0e-4, np.zeros(0), 5, label="warmup",
