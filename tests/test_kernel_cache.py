@@ -51,15 +51,27 @@ def test_numba_uses_it(tmp_path):
 def test_warmup_prunes_only_older_in_tree_folders(tmp_path):
     from asterlite.dynamics.warmup import prune_stale_kernels
 
-    current = tmp_path / "kernels-0123456789abcdef"
-    older = tmp_path / "kernels-fedcba9876543210"
-    foreign = tmp_path / "kernels-mine"  # not a digest: not ours
-    for folder in (current, older, foreign):
-        folder.mkdir()
+    cache = tmp_path / "dynamics" / "__pycache__"
+    current = cache / "kernels-0123456789abcdef"
+    older = cache / "kernels-fedcba9876543210"
+    foreign = cache / "kernels-mine"  # not a digest: not ours
+    for folder in (current, older, foreign, tmp_path / "dynamics" / "laws" / "__pycache__"):
+        folder.mkdir(parents=True)
+    # numba's files from before the digest folders go too (a subpackage's
+    # also); bytecode and the current folder's files stay
+    old_files = [
+        cache / "forces.loads_ready-112.py311.nbi",
+        cache / "a.b-3.py311.1.nbc",
+        tmp_path / "dynamics" / "laws" / "__pycache__" / "law.force-9.py311.nbi",
+    ]
+    kept = [cache / "forces.cpython-311.pyc", current / "forces.loads_ready-112.py311.nbi"]
+    for path in (*old_files, *kept):
+        path.write_bytes(b"")
     assert prune_stale_kernels(current, in_tree=False) == []  # a user's NUMBA_CACHE_DIR
-    assert older.exists()
-    assert prune_stale_kernels(current, in_tree=True) == [older]
-    assert current.exists() and foreign.exists() and not older.exists()
+    assert older.exists() and all(path.exists() for path in old_files)
+    assert sorted(prune_stale_kernels(current, in_tree=True)) == sorted([older, *old_files])
+    assert current.exists() and foreign.exists() and all(path.exists() for path in kept)
+    assert not older.exists() and not any(path.exists() for path in old_files)
 
 
 def test_every_warmed_kernel_has_a_compile_estimate():

@@ -65,6 +65,7 @@ def test_every_loop_a_run_can_take_is_warmed_up(scheme):
         loop_kernel(scheme, diagonal, shocks, specialised=False),
         loop_kernel(scheme, diagonal, shocks, rotation=rotation),
         loop_kernel(scheme, diagonal, shocks, implicit=True),
+        loop_kernel(scheme, diagonal, shocks, legacy_adapt=True),  # code_aster 10-12
     }
     assert names <= set(warmup.LOOPS)
 

@@ -129,7 +129,8 @@ def integrate(
     A kernel numba has not compiled yet (``asterlite warmup`` compiles them
     all) is announced on standard error; ``info['compile_seconds']`` is the
     time compiling took, left out of ``info['integration_seconds']``."""
-    name = loop_kernel(scheme, system, shocks, specialised, rotation, implicit_shocks)
+    legacy = options is not None and options.adapt_v11
+    name = loop_kernel(scheme, system, shocks, specialised, rotation, implicit_shocks, legacy)
     with progress.kernel(name, compile_estimate(name)) as notice:
         return run_kernel(
             notice, system, shocks, excitation, scheme, q0, v0, t0, t_end, dt, instants,
@@ -137,15 +138,24 @@ def integrate(
         )  # fmt: skip
 
 
-def loop_kernel(scheme, system, shocks, specialised=True, rotation=None, implicit=False) -> str:
+# code_aster 10-12's ADAPT_ORDRE2 (SchemeOptions.adapt_v11): a loop of its own
+LEGACY_ADAPT_LOOP = "ADAPT_ORDRE2 (code_aster 10-12)"
+
+
+def loop_kernel(
+    scheme, system, shocks, specialised=True, rotation=None, implicit=False, legacy_adapt=False
+) -> str:
     """The name of the compiled loop a run takes: its scheme, or the path
     shared by every scheme (variable rotation speed, implicit shocks), and
     DIFF_CENTRE's variants (specialised loop on diagonal or full matrices,
-    general path for the relations of laws/)."""
+    general path for the relations of laws/); ``legacy_adapt``: code_aster
+    10-12's ADAPT_ORDRE2 asked (``SchemeOptions.adapt_v11``)."""
     if rotation is not None:
         return "VITESSE_VARIABLE"
     if implicit and shocks.count:
         return "TRAITEMENT_NONL='IMPLICITE'"
+    if legacy_adapt and scheme == "ADAPT_ORDRE2":
+        return LEGACY_ADAPT_LOOP
     if SCHEMES[scheme] is scheme_diff_centre:
         if not specialised or shocks.has_laws:
             return "DIFF_CENTRE (general path)"

@@ -40,7 +40,7 @@ from asterlite.dynamics import compile_estimate
 # 15 min each on a busy machine instead of 1.5), and the film's ADAPT_ORDRE2
 # loop, which needs both the film functions and the legacy ADAPT step control
 SHARED = "shared force functions"
-LEGACY_ADAPT = "ADAPT_ORDRE2 (code_aster 10-12)"
+LEGACY_ADAPT = "ADAPT_ORDRE2 (code_aster 10-12)"  # integrate.LEGACY_ADAPT_LOOP
 FILM = "LAME_FLUIDE"
 # the film under code_aster 10-12's ADAPT_ORDRE2: calls the film functions and
 # the legacy ADAPT loop's step control, so it comes after both
@@ -76,6 +76,9 @@ LOOPS = SCHEME_LOOPS + EVERY_SCHEME_LOOPS
 STAGES = ((SHARED, FILM), SCHEME_LOOPS, EVERY_SCHEME_LOOPS + (FILM_ADAPT,))
 KERNELS = tuple(name for stage in STAGES for name in stage)
 STALE_NAME = re.compile(r"kernels-[0-9a-f]{16}")  # asterlite.dynamics.kernel_cache_folder
+# numba's index and code files written beside the sources' bytecode before the
+# digest folders (``<module>.<function>-<line>.py311[.N].nbi|nbc``)
+OLD_KERNEL_FILE = re.compile(r"[A-Za-z0-9_]+\.[A-Za-z0-9_.<>]+-\d+\.py\d+(\.\d+)?\.nb[ic]")
 
 
 @dataclass
@@ -314,18 +317,25 @@ def compile_bytecode() -> int:
 
 def prune_stale_kernels(folder: Path, in_tree: bool) -> list[Path]:
     """Delete the kernel folders of older sources beside ``folder`` (named
-    ``kernels-<digest>`` by :mod:`asterlite.dynamics`) and return them; only
-    in this package's own ``__pycache__`` (``in_tree``): a NUMBA_CACHE_DIR
-    the user gave may be shared by other installs."""
+    ``kernels-<digest>`` by :mod:`asterlite.dynamics`), and the kernel files
+    numba kept there before those folders, and return them; only in this
+    package's own ``__pycache__`` (``in_tree``): a NUMBA_CACHE_DIR the user
+    gave may be shared by other installs."""
     if not in_tree:
         return []
-    stale = [
-        sibling
-        for sibling in sorted(folder.parent.iterdir())
-        if sibling != folder and sibling.is_dir() and STALE_NAME.fullmatch(sibling.name)
-    ]
-    for sibling in stale:
-        shutil.rmtree(sibling, ignore_errors=True)
+    stale = []
+    for sibling in sorted(folder.parent.iterdir()):
+        if sibling != folder and sibling.is_dir() and STALE_NAME.fullmatch(sibling.name):
+            shutil.rmtree(sibling, ignore_errors=True)
+            stale.append(sibling)
+    package = folder.parent.parent  # and its subpackages' (laws/)
+    for cache in sorted(package.rglob("__pycache__")):
+        if STALE_NAME.fullmatch(cache.parent.name):
+            continue
+        for path in sorted(cache.iterdir()):
+            if path.is_file() and OLD_KERNEL_FILE.fullmatch(path.name):
+                path.unlink(missing_ok=True)
+                stale.append(path)
     return stale
 
 
