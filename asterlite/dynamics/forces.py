@@ -243,11 +243,10 @@ def matvec(a, x, out, diagonal):
 
 
 @njit(cache=True, inline="always")
-def matvec_row(a, x, i, diagonal):
-    """(a @ x)[i] with :func:`matvec`'s operations in its order (so the same
-    value), for loops that use one row at a time instead of a scratch vector."""
-    if diagonal:
-        return a[i, i] * x[i]
+def matvec_row(a, x, i):
+    """(a @ x)[i] with :func:`matvec`'s operations in its order for a full
+    ``a`` (so the same value), for loops that use one row at a time instead
+    of a scratch vector."""
     s = 0.0
     for j in range(x.shape[0]):
         s += a[i, j] * x[j]

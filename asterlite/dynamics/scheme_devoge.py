@@ -117,7 +117,7 @@ def times(a, a_diagonal, x, i, diagonal):
     """(a @ x)[i], from ``a``'s diagonal row when the system is diagonal."""
     if diagonal:
         return a_diagonal[i] * x[i]
-    return matvec_row(a, x, i, False)
+    return matvec_row(a, x, i)
 
 
 @njit(cache=True)
