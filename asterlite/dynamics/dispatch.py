@@ -115,9 +115,7 @@ def devoge_operators(mem, smem, lin, n):
                 sk += minv[i, k] * stiffness[k, j]
             invm_c[i, j] = sc
             invm_k[i, j] = sk
-        mem[DV.D_MINV, i] = minv[i, i]
-        mem[DV.D_C, i] = invm_c[i, i]
-        mem[DV.D_K, i] = invm_k[i, i]
+    DV.fill_diagonal_rows(mem, minv, n)
     if smem[DV.S_READY] == 1.0:  # a singular H1 or H2 makes the step non-finite: reported
         DV.update_implicit_operators(mem, invm_c, h1, h2, smem[DV.S_HDT], False)
 

@@ -83,9 +83,7 @@ def fill_operators(mem, smem, minv, stiffness, damping, adaptive, tolerance, alp
     ops = mem[MATRIX_ROWS:]
     ops[0:n] = minv @ damping
     ops[n : 2 * n] = minv @ stiffness
-    mem[D_MINV] = np.diag(minv)
-    mem[D_C] = np.diag(ops[0:n])
-    mem[D_K] = np.diag(ops[n : 2 * n])
+    fill_diagonal_rows(mem, minv, n)
     smem[:] = 0.0
     smem[S_ADAPTIVE] = 1.0 if adaptive else 0.0
     smem[S_TOL], smem[S_ALPHA] = tolerance, alpha
@@ -103,6 +101,17 @@ def operators(mem, n):
         mem[base + 2 * n : base + 3 * n],
         mem[base + 3 * n : base + 4 * n],
     )
+
+
+@njit(cache=True)
+def fill_diagonal_rows(mem, minv, n):
+    """The rows D_MINV, D_C, D_K from M⁻¹ and the M⁻¹C, M⁻¹K blocks (after
+    ``prepare`` and after a rotation speed's update of those blocks)."""
+    invm_c, invm_k, _, _ = operators(mem, n)
+    for i in range(n):
+        mem[D_MINV, i] = minv[i, i]
+        mem[D_C, i] = invm_c[i, i]
+        mem[D_K, i] = invm_k[i, i]
 
 
 @njit(cache=True, inline="always")
