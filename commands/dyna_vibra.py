@@ -45,6 +45,10 @@ ROTATING_SCHEMES = tuple(SCHEMES)
 
 
 def run(ctx, kw):
+    if kw.get("TYPE_CALCUL") == "HARM":
+        from asterlite.commands.dyna_vibra_harm import run_harmonic
+
+        return run_harmonic(ctx, kw)
     if kw.get("BASE_CALCUL") == "PHYS" and kw.get("TYPE_CALCUL") == "TRAN":
         from asterlite.commands.dyna_vibra_phys import run_physical
 

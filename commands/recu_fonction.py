@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.function import Function
+from asterlite.concepts.function import ComplexFunction, Function
+from asterlite.concepts.harmonic import DynaHarmo, HarmGene
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.legacy.v15 import relation_title
@@ -35,6 +36,8 @@ from asterlite.runtime.v15_names import GENERATED_NAME
 
 
 def run(ctx, kw):
+    if isinstance(kw.peek("RESULTAT"), DynaHarmo) or isinstance(kw.peek("RESU_GENE"), HarmGene):
+        return from_harmonic(ctx, kw)
     if kw.get("TABLE") is not None:
         x, y = from_table(ctx, kw)
         para, resu = kw["PARA_X"], kw["PARA_Y"]
@@ -59,6 +62,58 @@ def run(ctx, kw):
         y,
         NOM_PARA=kw.get("NOM_PARA") or para,
         NOM_RESU=kw.get("NOM_RESU") or resu,
+        INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
+        PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
+        PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
+    )
+
+
+def from_harmonic(ctx, kw) -> ComplexFunction:
+    """A complex function of the frequency (``fonction_c``, NOM_PARA 'FREQ')
+    from a dyna_harmo (NOM_CHAM at a node component) or a harm_gene (a
+    generalized component NUME_CMP_GENE, or a node component recombined on
+    the modal basis)."""
+    from asterlite.post.harmonic import selection_from_keywords
+
+    generalized = kw.get("RESU_GENE") is not None
+    result = kw["RESU_GENE"] if generalized else kw["RESULTAT"]
+    field = kw.get("NOM_CHAM") or "DEPL"  # rfhge2: DEPL when a harm_gene is read without it
+    if field not in result.fields:
+        known = ", ".join(result.fields)
+        ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", kw)
+    selection = selection_from_keywords(ctx, kw, result.frequencies, result.order)
+    states = selection.apply(result.fields[field])
+    if generalized and kw.get("NUME_CMP_GENE") is not None:
+        mode = int(kw["NUME_CMP_GENE"])
+        if not 1 <= mode <= states.shape[1]:
+            ctx.error(f"NUME_CMP_GENE={mode}: {states.shape[1]} generalized DOFs", None, kw)
+        values = states[:, mode - 1]
+    elif generalized:
+        basis = result.basis
+        if not hasattr(basis, "shape_at"):
+            ctx.unsupported(
+                "RECU_FONCTION at a node of a harm_gene whose basis is not a mode_meca",
+                "GROUP_NO" if kw.get("GROUP_NO") is not None else "NOEUD",
+                kw,
+            )
+        node = single_node(ctx, kw, basis.numbering.mesh)
+        shape = basis.shape_at(node, kw.get("NOM_CMP"))
+        values = states @ shape
+    else:
+        numbering = result.numbering
+        node = single_node(ctx, kw, numbering.mesh)
+        component = kw.get("NOM_CMP")
+        try:
+            row = numbering.dof_index(node, component)
+        except KeyError:
+            name = numbering.mesh.node_names[node]
+            ctx.error(f"no DOF {component} on node {name}", "NOM_CMP", kw)
+        values = states[:, row]
+    return ComplexFunction(
+        np.asarray(selection.times, dtype=float),
+        np.asarray(values, dtype=complex),
+        NOM_PARA=kw.get("NOM_PARA") or "FREQ",
+        NOM_RESU=kw.get("NOM_RESU") or field,
         INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
         PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
         PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
