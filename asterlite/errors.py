@@ -85,3 +85,52 @@ class NumericalError(AsterliteError):
     """Integration diverged, a step is unstable, or a non-finite value appeared."""
 
     kind = "numerical error"
+
+
+# --- suggestions for a name that is not there -------------------------------
+# One place for every "did you mean" of a run or a check: deck names
+# (commands, concepts, variables), mesh groups, components, files...
+
+
+def close_names(word: str, candidates, n: int = 3, cutoff: float = 0.6) -> list[str]:
+    """The candidates nearest to ``word``, best first (difflib's ratio,
+    compared without case: code_aster names are upper case, a deck may not be)."""
+    import difflib
+
+    by_key: dict[str, str] = {}
+    for candidate in candidates:
+        by_key.setdefault(str(candidate).upper(), str(candidate))
+    found = difflib.get_close_matches(str(word).upper(), list(by_key), n=n, cutoff=cutoff)
+    return [by_key[key] for key in found]
+
+
+def did_you_mean(word: str, candidates, quote: bool = False, cutoff: float = 0.7) -> str:
+    """``", did you mean X?"`` (the closest candidate), or "" when none is close."""
+    found = close_names(word, candidates, n=1, cutoff=cutoff)
+    if not found:
+        return ""
+    return f", did you mean {found[0]!r}?" if quote else f", did you mean {found[0]}?"
+
+
+def listing(names, limit: int = 12, quote: bool = True) -> str:
+    """``'A', 'B', ... (40 in all)``: at most ``limit`` names."""
+    names = [str(name) for name in names]
+    shown = [repr(name) if quote else name for name in names[:limit]]
+    more = f", ... ({len(names)} in all)" if len(names) > limit else ""
+    return (", ".join(shown) or "none") + more
+
+
+def missing_name(kind: str, name: str, existing, where: str = "the mesh") -> str:
+    """The message for a name that is not there, with the nearest that are:
+    ``"the mesh has no node group 'SUP2', did you mean 'SUPP2'? (nearest of
+    its 12 node groups: 'SUPP2', 'SUPP1', 'SUPP3')"``; every name when
+    there are few, none when there are none."""
+    existing = [str(name) for name in existing]
+    text = f"{where} has no {kind} {name!r}{did_you_mean(name, existing, quote=True)}"
+    plural = f"{kind}s" if not kind.endswith("s") else kind
+    if not existing:
+        return f"{text} (it has no {plural})"
+    if len(existing) <= 8:
+        return f"{text} (its {plural}: {listing(existing)})"
+    nearest = close_names(name, existing, n=5, cutoff=0.0)
+    return f"{text} (nearest of its {len(existing)} {plural}: {listing(nearest)})"

@@ -20,6 +20,7 @@ from asterlite.concepts.function import ComplexFunction, Function
 from asterlite.concepts.harmonic import DynaHarmo, HarmGene
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.errors import missing_name
 from asterlite.legacy.v15 import relation_title
 from asterlite.post.restitution import (
     added_motions,
@@ -182,7 +183,9 @@ def from_physical(ctx, kw):
     try:
         row = result.numbering.dof_index(node, component)
     except KeyError:
-        ctx.error(f"no DOF {component} on node {node_name(result, node)}", "NOM_CMP", kw)
+        present = [c for n, c in result.numbering.dofs if n == node]
+        where = f"node {node_name(result, node)}"
+        ctx.error(missing_name("DOF", component, present, where), "NOM_CMP", kw)
     return selection.times, selection.apply(result.fields[field][:, row])
 
 
@@ -254,7 +257,7 @@ def find_shock(ctx, kw, result):
             key = "GROUP_NO_CHOC"
             group = kw[key]
             if group not in mesh.node_groups:
-                ctx.error(f"mesh has no node group {group!r}", key, kw)
+                ctx.error(missing_name("node group", group, mesh.node_groups), key, kw)
             names = {mesh.node_names[int(i)] for i in mesh.node_groups[group]}
         else:
             key = "NOEUD_CHOC"

@@ -20,6 +20,7 @@ from asterlite.concepts.modes import (
     MultElasResult,
 )
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.errors import missing_name
 from asterlite.legacy.v15 import computes
 from asterlite.post.checks import record_check, reduce_values
 from asterlite.post.restitution import (
@@ -80,7 +81,8 @@ def _field_value(ctx, occ, numbering, values, label):
             row = numbering.dof_index(node, components[0])
         except KeyError:
             name = numbering.mesh.node_names[node]
-            ctx.error(f"no DOF {components[0]} on node {name}", "NOM_CMP", occ)
+            present = [c for n, c in numbering.dofs if n == node]
+            ctx.error(missing_name("DOF", components[0], present, f"node {name}"), "NOM_CMP", occ)
         return values[row], f"{label} {numbering.mesh.node_names[node]} {components[0]}"
     rows = dof_rows(numbering, nodes, components)
     if rows.size == 0:

@@ -26,7 +26,7 @@ import itertools
 import operator
 from collections.abc import Callable, Mapping
 
-from asterlite.errors import AsterliteError, DeckRuntimeError, Location
+from asterlite.errors import AsterliteError, DeckRuntimeError, Location, did_you_mean
 from asterlite.lang import library
 from asterlite.lang import limits as guards
 from asterlite.lang.budget import StepBudget
@@ -441,7 +441,8 @@ class Evaluator(ImportStatements):
         try:
             return self.namespace[name]
         except KeyError:
-            raise DeckRuntimeError(f"name '{name}' is not defined") from None
+            near = did_you_mean(name, [*self.namespace, *(frame.locals or ())])
+            raise DeckRuntimeError(f"name '{name}' is not defined{near}") from None
 
     def _store(self, name: str, value, frame: Frame) -> None:
         if frame.locals is not None:

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.concepts.titles import compact, same_title, unique_titles
 from asterlite.concepts.transient import ShockHistory, TranGene
 
 IMAGE_FORMATS = (".png", ".svg")
@@ -59,12 +60,25 @@ def node_history(tran: TranGene, node: str, component: str, field: str = "DEPL")
     return np.asarray(generalized) @ np.asarray(tran.basis.shapes)[rows[0]]
 
 
+def shock_names(tran: TranGene) -> list[str]:
+    """One name per shock of the result: its title, made unique as
+    DYNA_VIBRA makes them (results saved before it did may repeat one)."""
+    return unique_titles([shock.name for shock in tran.shocks])
+
+
 def find_shock(tran: TranGene, name: str) -> ShockHistory:
-    for shock in tran.shocks:
-        if shock.name == name:
-            return shock
-    names = [s.name for s in tran.shocks]
-    raise PlotError(f"no shock {name!r} in the result (shocks: {_listing(names)})")
+    """The shock ``name`` designates: its title (blanks ignored: code_aster's
+    ``DIS_CHOC        00000002`` is also ``DIS_CHOC00000002``) or the name
+    of its group in results.h5."""
+    from asterlite.io.result_store import _shock_group_names as shock_group_names
+
+    names = shock_names(tran)
+    for candidates in (names, shock_group_names(tran.shocks)):
+        for shock, title in zip(tran.shocks, candidates, strict=True):
+            if same_title(name, title):
+                return shock
+    listed = _listing([repr(n) if " " in n else n for n in names])  # quoted when blank
+    raise PlotError(f"no shock {name!r} in the result (shocks: {listed})")
 
 
 def shock_quantity(shock: ShockHistory, quantity: str) -> np.ndarray:
@@ -93,7 +107,10 @@ def wear_work_rates(tran: TranGene) -> dict[str, float]:
     shock over the run."""
     from asterlite.post.wear import history_wear_power
 
-    return {shock.name: history_wear_power(tran.times, shock.fields) for shock in tran.shocks}
+    return {
+        name: history_wear_power(tran.times, shock.fields)
+        for name, shock in zip(shock_names(tran), tran.shocks, strict=True)
+    }
 
 
 @dataclass
@@ -283,18 +300,18 @@ def wear_bars(rates: dict[str, float], floor: float = WEAR_NOISE_FLOOR) -> tuple
     return drawn, noise
 
 
-def wear_figure(tran: TranGene, shock_names: list[str] | None = None):
+def wear_figure(tran: TranGene, wanted_names: list[str] | None = None):
     """Bar chart of the wear work rate (mean FN·|VT|) of each support. Rates
     below :data:`WEAR_NOISE_FLOOR` of the largest rate of the result (all its
     supports, also when only some are drawn) are drawn as zero, as the figure
     says: noise of 3e-14 W would otherwise fill the axes when drawn alone."""
     all_rates = wear_work_rates(tran)
     drawn, noise = wear_bars(all_rates)
-    if shock_names:
-        for name in shock_names:
-            find_shock(tran, name)  # a clear error for an unknown name
-        drawn = {name: drawn[name] for name in shock_names}
-        noise = {name: rate for name, rate in noise.items() if name in shock_names}
+    if wanted_names:
+        names = dict(zip(map(id, tran.shocks), shock_names(tran), strict=True))
+        wanted = [names[id(find_shock(tran, name))] for name in wanted_names]
+        drawn = {name: drawn[name] for name in wanted}
+        noise = {name: rate for name, rate in noise.items() if name in wanted}
     figure = _new_figure()
     axes = figure.add_subplot()
     axes.bar(list(drawn), list(drawn.values()), color="tab:orange")
@@ -348,9 +365,10 @@ def figure_for(
         if not component or shock is not None or quantity is not None:
             raise PlotError("--node needs --cmp (and no --shock/--quantity)")
         return node_history_figure(tran, node, component, field), f"{node}_{component}"
+    stem = compact(shock) if shock else None  # a file name without blanks
     if quantity == "wear":
         names = [shock] if shock else None
-        return wear_figure(tran, names), f"{shock or 'supports'}_wear"
+        return wear_figure(tran, names), f"{stem or 'supports'}_wear"
     if shock is None:
         shocks = _listing([s.name for s in tran.shocks])
         raise PlotError(
@@ -358,9 +376,9 @@ def figure_for(
             f"or --quantity wear (shocks: {shocks})"
         )
     if quantity == "orbit":
-        return orbit_figure(tran, shock), f"{shock}_orbit"
+        return orbit_figure(tran, shock), f"{stem}_orbit"
     quantity = quantity or "FN"
-    return shock_history_figure(tran, shock, quantity), f"{shock}_{quantity}"
+    return shock_history_figure(tran, shock, quantity), f"{stem}_{quantity}"
 
 
 def plot_from_store(

@@ -48,6 +48,9 @@ class RunDescription:
     results: list[ResultFile] = field(default_factory=list)  # R lines, in order
     time_limit: float | None = None  # seconds (P time_limit)
     memory_limit: float | None = None  # megabytes (P memory_limit)
+    # why a unit has no file, said when the deck reads it: where a bare deck's
+    # mesh was looked for, or the meshes it could not choose between
+    unmapped: dict[int, str] = field(default_factory=dict)
 
 
 class ExportError(AsterliteError):
@@ -127,15 +130,43 @@ def describe_bare_deck(path: Path) -> RunDescription:
     run = RunDescription(name=path.stem, deck_files=[path.resolve()])
     continuation = sorted(folder.glob(f"{path.stem}.com[0-9]"))
     run.deck_files += [p.resolve() for p in continuation]
-    for suffix in MESH_SUFFIXES:
-        own = sorted(folder.glob(f"{path.stem}{suffix}"))
-        candidates = own or sorted(folder.glob(f"*{suffix}"))
-        if candidates:
-            run.units[MESH_UNIT] = candidates[0].resolve()
-            break
+    mesh, why = sibling_mesh(path)
+    if mesh is not None:
+        run.units[MESH_UNIT] = mesh.resolve()
+    else:
+        run.unmapped[MESH_UNIT] = why
     for helper in folder.glob("*.py"):
         run.helper_modules[helper.stem] = helper.resolve()
     return run
+
+
+def sibling_mesh(deck: Path) -> tuple[Path | None, str]:
+    """The mesh of a bare deck (unit 20): the deck's namesake (``d.mail``,
+    ``d.mmed``, ``d.med``, in that order), else the one mesh file of its
+    folder; (None, why) when there is none, or several to choose from (never
+    the first in alphabetical order: which one the deck means is not known)."""
+    folder = deck.parent
+    for suffix in MESH_SUFFIXES:
+        own = folder / f"{deck.stem}{suffix}"
+        if own.is_file():
+            return own, ""
+    found = sorted(p for suffix in MESH_SUFFIXES for p in folder.glob(f"*{suffix}") if p.is_file())
+    if len(found) == 1:
+        return found[0], ""
+    namesakes = ", ".join(f"{deck.stem}{suffix}" for suffix in MESH_SUFFIXES)
+    patterns = ", ".join(f"*{suffix}" for suffix in MESH_SUFFIXES)
+    if not found:
+        return None, (
+            f"no mesh beside the deck {deck.name}: looked for {namesakes}, then for "
+            f"{patterns} in {folder.resolve()}; put the mesh there, or name it in an "
+            f".export ('F mail <file> D {MESH_UNIT}')"
+        )
+    names = ", ".join(p.name for p in found)
+    return None, (
+        f"{len(found)} meshes beside the deck {deck.name} ({names}) and none named "
+        f"{namesakes}: which one to read is not known; name it in an .export "
+        f"('F mail {found[0].name} D {MESH_UNIT}') or rename it {deck.stem}{found[0].suffix}"
+    )
 
 
 def describe_run(path: Path) -> RunDescription:

@@ -143,10 +143,7 @@ class Session:
         try:
             return self.run.units[unit]
         except KeyError:
-            known = ", ".join(str(u) for u in sorted(self.run.units)) or "none"
-            raise CommandError(
-                f"no file is mapped to logical unit {unit} (mapped units: {known})"
-            ) from None
+            raise CommandError(unmapped_unit_text(self.run, unit, self.output_units)) from None
 
     def output_path(self, unit_or_name: int | str) -> Path:
         """A path in the output folder for a logical unit or a file name."""
@@ -307,6 +304,24 @@ class Session:
             f"not assigned at module level by the deck: {', '.join(hints)} "
             f"(its deck-level variables: {listed})"
         )
+
+
+def unmapped_unit_text(run, unit: int, written: dict) -> str:
+    """Why a deck reads a logical unit no file is mapped to, and every place
+    looked: the export's F lines, the bare deck's sibling files, the units
+    the deck itself wrote."""
+    known = ", ".join(str(u) for u in sorted(run.units)) or "none"
+    if unit in run.unmapped:  # a bare deck's mesh: where it was looked for
+        return f"logical unit {unit}: {run.unmapped[unit]}"
+    if run.source is not None:
+        looked = f"the export {run.source} maps units {known} ('F <type> <file> D <unit>' lines)"
+    else:
+        looked = f"a bare deck maps only its sibling mesh to unit 20 (mapped units: {known})"
+    wrote = ", ".join(str(u) for u in sorted(written)) or "none"
+    return (
+        f"no file is mapped to logical unit {unit}: {looked}; "
+        f"the deck wrote no file on it earlier (units written: {wrote})"
+    )
 
 
 def deck_variables(namespace: dict) -> list[str]:
