@@ -18,6 +18,7 @@ import numpy as np
 
 from asterlite.concepts.function import ComplexFunction, Function
 from asterlite.concepts.harmonic import DynaHarmo, HarmGene
+from asterlite.concepts.modes import GeneralizedModes
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.errors import missing_name
@@ -43,7 +44,9 @@ def run(ctx, kw):
         x, y = from_table(ctx, kw)
         para, resu = kw["PARA_X"], kw["PARA_Y"]
     elif kw.get("RESU_GENE") is not None:
-        para, resu, (x, y) = "INST", None, from_generalized(ctx, kw)
+        modal = isinstance(kw.peek("RESU_GENE"), GeneralizedModes)  # rfmge1: against FREQ
+        para, resu, (x, y) = "FREQ" if modal else "INST", None, from_generalized(ctx, kw)
+        resu = kw.peek("NOM_PARA_RESU") if modal else None
     elif kw.get("RESULTAT") is not None:
         para, resu, (x, y) = "INST", None, from_physical(ctx, kw)
     elif kw.get("CHAM_GD") is not None:
@@ -195,6 +198,8 @@ def node_name(result, node: int) -> str:
 
 def from_generalized(ctx, kw):
     result = kw["RESU_GENE"]
+    if isinstance(result, GeneralizedModes):
+        return from_generalized_modes(ctx, kw, result)
     if not isinstance(result, TranGene):
         ctx.unsupported(f"RECU_FONCTION from a {result.aster_type}", "RESU_GENE", kw)
     if any(kw.get(k) is not None for k in ("GROUP_NO_CHOC", "NOEUD_CHOC", "INTITULE")):
@@ -226,6 +231,58 @@ def from_generalized(ctx, kw):
         # the drive acceleration, whatever the component (as code_aster adds it)
         values = values + kw["ACCE_MONO_APPUI"].evaluate(selection.times)
     return selection.times, values
+
+
+def from_generalized_modes(ctx, kw, modes):
+    """A mode_gene (code_aster's rfmge1), abscissa FREQ: NOM_PARA_RESU gives a
+    parameter of each mode against its frequency; NOM_CHAM + NUME_CMP_GENE
+    one generalized component of each mode, which rfmge1 stores one slot
+    further than the frequencies: the abscissas are 0, f_1 .. f_(n-1) (the
+    first is never written, the last frequency is overwritten by the first
+    ordinate), the ordinates the components of modes 1..n. NOM_PARA is
+    'FREQ'; the result is kept as code_aster builds it."""
+    if kw.get("NUME_ORDRE") is not None:
+        wanted = [int(n) for n in as_tuple(kw["NUME_ORDRE"])]
+        if any(not 1 <= n <= modes.n_modes for n in wanted):
+            ctx.error(f"NUME_ORDRE outside 1..{modes.n_modes}", "NUME_ORDRE", kw)
+        picked = np.asarray(wanted, dtype=int) - 1
+    else:
+        kw.mark_used("TOUT_ORDRE")  # every mode: the default
+        picked = np.arange(modes.n_modes)
+    frequencies = np.asarray(modes.frequencies, dtype=float)[picked]
+    if kw.get("NOM_PARA_RESU") is not None:
+        name = kw["NOM_PARA_RESU"]
+        known = {
+            "FREQ": modes.frequencies,
+            "MASS_GENE": modes.generalized_mass,
+            "RIGI_GENE": modes.generalized_stiffness,
+            **modes.parameters,
+        }
+        if name not in known or np.size(known[name]) != modes.n_modes:
+            ctx.error(f"the mode_gene has no parameter {name!r}", "NOM_PARA_RESU", kw)
+        return frequencies, np.asarray(known[name], dtype=float)[picked]
+    field = kw.get("NOM_CHAM")
+    if field != "DEPL":
+        ctx.unsupported(f"NOM_CHAM={field!r} of a mode_gene (DEPL only)", "NOM_CHAM", kw)
+    if kw.get("NUME_CMP_GENE") is None:
+        ctx.unsupported(
+            "RECU_FONCTION of a mode_gene at a node component (SQUELETTE / SOUS_STRUC)",
+            "NOM_CMP",
+            kw,
+        )
+    component = int(kw["NUME_CMP_GENE"])
+    if not 1 <= component <= modes.vectors.shape[0]:
+        ctx.error(
+            f"NUME_CMP_GENE={component}: {modes.vectors.shape[0]} generalized DOFs",
+            "NUME_CMP_GENE",
+            kw,
+        )
+    abscissas = np.concatenate([[0.0], frequencies[:-1]])
+    ctx.log(
+        "RECU_FONCTION of a mode_gene component: abscissas 0, f_1 .. f_(n-1) "
+        "as code_aster's rfmge1 stores them"
+    )
+    return abscissas, np.asarray(modes.vectors, dtype=float)[component - 1, picked]
 
 
 def added_part(ctx, kw, result, node, field, times, keyword) -> np.ndarray:
