@@ -266,16 +266,19 @@ def orbit_figure(tran: TranGene, shock_name: str, polar=None):
             xy=outline.gap_end,
             xytext=outline.gap_start,
             arrowprops={"arrowstyle": "<->", "color": "tab:red"},
+            zorder=4,
         )
-        middle = np.add(outline.gap_start, outline.gap_end) / 2.0
-        axes.annotate(
+        # in a corner on an opaque box: beside the arrow it sat under the orbit
+        axes.text(
+            0.02,
+            0.03,
             outline.gap_label,
-            xy=tuple(middle),
-            xytext=(0, 4),
-            textcoords="offset points",
+            transform=axes.transAxes,
             color="tab:red",
-            ha="center",
+            ha="left",
             va="bottom",
+            zorder=5,
+            bbox={"boxstyle": "round,pad=0.3", "facecolor": "white", "alpha": 0.9, "lw": 0},
         )
     relative = " (node 1 - node 2)" if is_two_node(shock) else ""
     axes.set_xlabel(f"local y{relative} (m)")
@@ -284,11 +287,45 @@ def orbit_figure(tran: TranGene, shock_name: str, polar=None):
     axes.set_title(f"{tran.name or 'tran_gene'}: orbit at shock {shock.name} ({kind})")
     if outline.equal_aspect:
         axes.set_aspect("equal", adjustable="datalim")
+    else:
+        floor_axes(axes, (y, z), outline)
     handles, labels = axes.get_legend_handles_labels()
     unique = dict(zip(labels, handles, strict=True))
     axes.legend(unique.values(), unique.keys(), loc="upper right")
     axes.grid(True, alpha=0.3)
     return figure
+
+
+# an axis of an orbit spans at least this fraction of the orbit's scale (the
+# gap, the obstacle or the largest motion): the motion of a PLAN_Z shock along
+# y is round-off (3e-17 m for a gap of 1e-4 m), which autoscaling spread over
+# the whole axis as if it were large lateral motion; motion above the floor
+# is physics and keeps its autoscaled axis
+ORBIT_AXIS_FLOOR = 1.0e-4
+
+
+def floor_axes(axes, data: tuple[np.ndarray, np.ndarray], outline: ObstacleOutline) -> None:
+    """Give each axis of an orbit plot at least :data:`ORBIT_AXIS_FLOOR` of
+    the plot's scale: the largest of the obstacle's extent and the motion."""
+    y, z = (np.asarray(values, dtype=float) for values in data)
+    along_y = [y, np.asarray(outline.vertical, float), [outline.gap_end[0]]]
+    along_z = [z, np.asarray(outline.horizontal, float), [outline.gap_end[1]]]
+    for curve_y, curve_z in outline.curves:
+        along_y.append(np.asarray(curve_y, float))
+        along_z.append(np.asarray(curve_z, float))
+    ranges = []
+    for parts in (along_y, along_z):
+        values = np.concatenate([np.ravel(p) for p in parts])
+        values = values[np.isfinite(values)]
+        ranges.append((values.min(), values.max()) if values.size else (0.0, 0.0))
+    scale = max(max(abs(lo), abs(hi), hi - lo) for lo, hi in ranges)
+    if not scale > 0.0:
+        return
+    floor = ORBIT_AXIS_FLOOR * scale
+    for (lo, hi), set_limits in zip(ranges, (axes.set_xlim, axes.set_ylim), strict=True):
+        if hi - lo < floor:
+            middle = 0.5 * (lo + hi)
+            set_limits(middle - 0.5 * floor, middle + 0.5 * floor)
 
 
 def wear_bars(rates: dict[str, float], floor: float = WEAR_NOISE_FLOOR) -> tuple[dict, dict]:
