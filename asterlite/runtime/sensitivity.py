@@ -123,6 +123,23 @@ def _numeric_checks(report) -> list:
     return checks
 
 
+def no_checks_text(report) -> str:
+    """Why there is nothing to measure, and what to do."""
+    why = (
+        "the deck has no TEST_* check"
+        if not report.tests
+        else f"none of the deck's {len(report.tests)} TEST_* checks has a finite real value"
+    )
+    return (
+        f"{why}: sensitivity measures how far each check's value moves when the step "
+        "moves by a few ulps, so it needs checks on the quantities that matter "
+        "(TEST_RESU on RESU_GENE or REST_GENE_PHYS values, TEST_TABLE on POST_DYNA_MODA_T "
+        "statistics, TEST_FONCTION on RECU_FONCTION histories, with VALE_CALC set to this "
+        "run's value); to compare the transients' histories across steps and schemes "
+        "without checks, use asterlite converge"
+    )
+
+
 def run_sensitivity(
     deck: Path,
     runs: int = DEFAULT_RUNS,
@@ -141,6 +158,8 @@ def run_sensitivity(
         CheckSpread(t.label, v, t.tolerance, t.criterion, verdict_unperturbed=t.ok)
         for t, v in _numeric_checks(base)
     ]
+    if not spreads:
+        raise ConvergeError(no_checks_text(base))
     offsets = ulp_offsets(runs)
     failed = []
     for ulps in offsets:
