@@ -264,7 +264,11 @@ def _port(args) -> int:
 
 def _warmup(args) -> int:
     from asterlite.dynamics import warmup
+    from asterlite.isolation import protect_spawned_workers
 
+    # the worker pool's `python -c` would import from the current folder (set
+    # here, not in asterlite.dynamics, whose sources name the kernel cache)
+    protect_spawned_workers()
     return warmup.main(jobs=args.jobs, verbose=args.verbose)
 
 

@@ -2,7 +2,8 @@
 
 A few damaged bytes in a MED file can make HDF5 or medcoupling abort the
 process (std::bad_alloc, SIGABRT, SIGSEGV) instead of raising an error. So a
-mesh is read in a child process (``python -m asterlite.io.med_check``):
+mesh is read in a child process (``python -I ... asterlite.io.med_check``,
+isolated from the current folder: :mod:`asterlite.isolation`):
 
 1. the child validates the file with h5py: the MED layout (``ENS_MAA``,
    ``NOE/COO``, ``MAI/<type>/NOD``), the sizes each dataset declares against
@@ -40,20 +41,15 @@ DEFAULT_TIMEOUT = 3600.0
 def read_isolated(path: Path, name: str | None, read):
     """``read(path, name)`` in a child process; MedMeshError if it fails."""
     from asterlite.io.med_mesh import MedMeshError
+    from asterlite.isolation import python_command
 
     if os.environ.get(IN_CHILD):  # already the child: read here
         validate_med(path, name)
         return read(path, name)
     with tempfile.TemporaryDirectory(prefix="asterlite-med-") as folder:
         result = Path(folder) / "mesh.pickle"
-        command = [
-            sys.executable,
-            "-m",
-            "asterlite.io.med_check",
-            str(path),
-            name or "",
-            str(result),
-        ]
+        # isolated: a json.py or numpy.py beside the study is never imported
+        command = python_command("asterlite.io.med_check", str(path), name or "", str(result))
         environment = dict(os.environ, **{IN_CHILD: "1"})
         try:
             child = subprocess.run(

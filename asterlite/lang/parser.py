@@ -4,8 +4,8 @@ Positions are not propagated to tree nodes (that doubles parse time); a
 node's location is its first token's, see :func:`node_position`.
 
 The LALR parser is built once per process, on first use (importing this
-module stays cheap), from ``deck.lark``; lark's ``cache=True`` keeps the
-built tables in a temporary file so later processes start fast.
+module stays cheap), from ``deck.lark``; its tables are kept in a private
+folder so later processes start fast (:mod:`asterlite.lang.parser_cache`).
 
 After parsing, one iterative pass over the tree (deep nesting cannot
 overflow the stack) refuses what the grammar accepts but decks may not do
@@ -148,16 +148,31 @@ class _LocatedSyntaxError(Exception):
 
 @functools.cache
 def _parser():
+    """The LALR parser: its tables loaded from the private cache, else built
+    and stored there (lark's own ``cache=True`` trusts a file in $TMPDIR)."""
     from lark import Lark
 
-    return Lark(
-        GRAMMAR_PATH.read_text(encoding="utf-8"),
+    from asterlite.lang import parser_cache
+
+    grammar = GRAMMAR_PATH.read_text(encoding="utf-8")
+    folder = parser_cache.cache_folder()
+    key = parser_cache.cache_key(grammar)
+    tables = parser_cache.load_tables(folder, key) if folder else None
+    if tables is not None:
+        try:
+            return Lark._load_from_dict(tables["data"], tables["memo"], postlex=_indenter_class()())
+        except Exception:  # tables of another shape: built again below
+            pass
+    parser = Lark(
+        grammar,
         parser="lalr",
         start=["file_input", "eval_input"],
         postlex=_indenter_class()(),
         maybe_placeholders=True,
-        cache=True,
     )
+    if folder:
+        parser_cache.store_tables(folder, key, parser)
+    return parser
 
 
 @functools.cache

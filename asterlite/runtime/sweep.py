@@ -193,12 +193,15 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator:
     Checks first that the sweep extra is installed (the tables need pyarrow)."""
     import logging
 
+    from asterlite.isolation import protect_spawned_workers
+
     distributed = require_extras()
     Client, LocalCluster = distributed.Client, distributed.LocalCluster
     if scheduler:
         with Client(scheduler) as client:
             yield client
         return
+    protect_spawned_workers()  # the workers' `python -c` would import from the current folder
     with (
         LocalCluster(
             n_workers=workers,
