@@ -169,11 +169,10 @@ def harmonic_curves(name: str, result) -> list[dict]:
 def _spans_decades(series: list[dict]) -> bool:
     values = np.concatenate([np.abs(np.asarray(s["y"], float)) for s in series])
     values = values[np.isfinite(values) & (values > 0)]
-    return (
-        bool(values.size)
-        and values.max() / values.min() > 1.0e3
-        and (np.asarray([np.min(np.asarray(s["y"], float)) for s in series]) > 0).all()
-    )
+    if not values.size:
+        return False
+    lowest = min(float(np.nanmin(np.asarray(s["y"], float))) for s in series)
+    return bool(values.max() / values.min() > 1.0e3 and lowest > 0)
 
 
 def thinned(curve: dict) -> dict:
@@ -228,7 +227,7 @@ def curves_json(curves: list[dict]) -> str:
     def plain(value):
         if isinstance(value, np.ndarray):
             return [None if not np.isfinite(v) else float(v) for v in value.astype(float)]
-        if isinstance(value, (np.floating, np.integer)):
+        if isinstance(value, (np.floating, np.integer, np.bool_)):
             return value.item()
         if isinstance(value, dict):
             return {k: plain(v) for k, v in value.items()}

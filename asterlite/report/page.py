@@ -60,7 +60,7 @@ figcaption a{color:#0969da}
 svg.chart text{font-family:Helvetica,Arial,sans-serif}svg.chart .title{font-size:13px;
 font-weight:600}svg.chart .tick{font-size:11px;fill:#444}svg.chart .label{font-size:12px}
 svg.chart .legend{font-size:11px}svg.chart .note{font-size:12px;font-weight:600}
-.bar{display:inline-block;height:9px;background:#0969da;vertical-align:middle}
+.tbar{display:inline-block;height:9px;background:#0969da;vertical-align:middle}
 """
 
 
@@ -83,8 +83,10 @@ def num(value, digits: int = 6) -> str:
     return str(value)
 
 
-def csv_link(name: str, columns: list[str], rows) -> str:
-    """A download link holding the figure's data as CSV (a data: URI)."""
+def csv_link(name: str, columns: list[str], rows, of: int | None = None) -> str:
+    """A download link holding the figure's data as CSV (a data: URI): the
+    points drawn (``of``: how many the result archived when the figure shows
+    fewer, its extremes kept; results.h5 holds them all)."""
     text = io.StringIO()
     text.write(",".join(columns) + "\n")
     count = 0
@@ -102,6 +104,7 @@ def csv_link(name: str, columns: list[str], rows) -> str:
     return (
         f'<a class="csv" download="{esc(name)}.csv" '
         f'href="data:text/csv;charset=utf-8;base64,{encoded}">data (CSV, {count} rows)</a>'
+        + (f" drawn of {of} archived (extremes kept)" if of is not None and of > count else "")
     )
 
 
@@ -114,14 +117,14 @@ def figure(svg_text: str, caption: str, csv: str = "") -> str:
     return f"<figure>{svg_text}<figcaption>{esc(caption)}{link}</figcaption></figure>"
 
 
-def series_csv(name: str, series: list[svg.Series], x_name: str) -> str:
+def series_csv(name: str, series: list[svg.Series], x_name: str, of: int | None = None) -> str:
     """CSV of series sharing an abscissa when they do, else long form."""
     if series and all(
         len(s.x) == len(series[0].x) and np.array_equal(s.x, series[0].x) for s in series
     ):
         columns = [x_name] + [s.label or f"y{k + 1}" for k, s in enumerate(series)]
         rows = zip(series[0].x, *[s.y for s in series], strict=True)
-        return csv_link(name, columns, rows)
+        return csv_link(name, columns, rows, of=of)
     rows = ((s.label, x, y) for s in series for x, y in zip(s.x, s.y, strict=True))
     return csv_link(name, ["series", x_name, "value"], rows)
 
@@ -230,7 +233,7 @@ def timings_section(data: ReportData) -> str:
     rows = "".join(
         f'<tr><td>{esc(c.get("command"))}</td><td class="num">{esc(c.get("line"))}</td>'
         f'<td>{esc(c.get("result") or "")}</td><td class="num">{num(c.get("seconds"), 4)}</td>'
-        f'<td><span class="bar" style="width:{200 * (c.get("seconds") or 0) / longest:.0f}px">'
+        f'<td><span class="tbar" style="width:{200 * (c.get("seconds") or 0) / longest:.0f}px">'
         "</span></td></tr>"
         for c in commands
     )
@@ -291,12 +294,24 @@ def shocks_section(data: ReportData) -> str:
             f'<td class="num">{100 * float(shock.get("contact_fraction") or 0):.1f} %</td>'
             f'<td class="num">{num(shock.get("wear_power"), 5)}</td></tr>'
         )
+    head = (
+        '<h2 id="shocks">Shocks per support</h2><p>From the archived instants.</p>'
+        '<table id="shocks-table"><thead><tr><th>result</th><th>shock</th><th>relation</th>'
+        "<th>nodes</th><th>obstacle</th><th>gap (m)</th><th>impacts</th><th>max FN (N)</th>"
+        "<th>mean FN (N)</th><th>contact</th><th>wear power (W)</th></tr></thead><tbody>"
+        + "".join(rows)
+        + "</tbody></table>"
+    )
     labels = [
         (f"{s.get('result')}/" if len({x.get("result") for x in shocks}) > 1 else "")
         + str(s.get("shock")).replace("        ", " ")
         for s in shocks
     ]
     wear = [float(s.get("wear_power") or 0.0) for s in shocks]
+    if not any(wear):
+        return (
+            head + "<p>The wear work rate is 0 at every support (no friction, or no sliding).</p>"
+        )
     chart = svg.bars("wear work rate per support", labels, wear, "mean FN·|VT| (W)")
     csv = csv_link(
         "wear",
@@ -308,19 +323,16 @@ def shocks_section(data: ReportData) -> str:
         ),
     )  # fmt: skip
     return (
-        '<h2 id="shocks">Shocks per support</h2><p>From the archived instants.</p>'
-        '<table id="shocks-table"><thead><tr><th>result</th><th>shock</th><th>relation</th>'
-        "<th>nodes</th><th>obstacle</th><th>gap (m)</th><th>impacts</th><th>max FN (N)</th>"
-        "<th>mean FN (N)</th><th>contact</th><th>wear power (W)</th></tr></thead><tbody>"
-        + "".join(rows)
-        + "</tbody></table>"
+        head
         + '<div class="figures">'
         + figure(chart, "Archard wear work rate, code_aster's PUIS_USURE", csv)
         + "</div>"
     )
 
 
-def orbit_chart(tran_name: str, shock) -> tuple[svg.Chart, str] | None:
+def orbit_chart(tran_name: str, shock) -> tuple[svg.Chart, str, np.ndarray] | None:
+    """The orbit's chart, the field prefix (LOC, or REL for two nodes) and
+    the archived instants drawn."""
     from asterlite.post.plots import ORBIT_AXIS_FLOOR, is_two_node, obstacle_outline
 
     prefix = "REL" if is_two_node(shock) else "LOC"
@@ -329,6 +341,7 @@ def orbit_chart(tran_name: str, shock) -> tuple[svg.Chart, str] | None:
         return None
     y = np.asarray(fields[f"DY{prefix}"], float)
     z = np.asarray(fields[f"DZ{prefix}"], float)
+    drawn = svg.path_index(y, z)
     outline = obstacle_outline(dict(shock.parameters or {}))
     relative = " (node 1 - node 2)" if prefix == "REL" else ""
     kind = (shock.parameters or {}).get("OBSTACLE", "?")
@@ -336,7 +349,7 @@ def orbit_chart(tran_name: str, shock) -> tuple[svg.Chart, str] | None:
         title=f"{tran_name}: orbit at {shock.name.strip()} ({kind})",
         x_label=f"local y{relative} (m)",
         y_label=f"local z{relative} (m)",
-        series=[svg.Series("orbit", *svg.envelope_path(y, z))],
+        series=[svg.Series("orbit", y[drawn], z[drawn])],
         vertical=[(v, "obstacle") for v in outline.vertical],
         horizontal=[(v, "obstacle") for v in outline.horizontal],
         equal_aspect=outline.equal_aspect,
@@ -347,7 +360,7 @@ def orbit_chart(tran_name: str, shock) -> tuple[svg.Chart, str] | None:
         chart.series.append(
             svg.Series("obstacle", curve_y, curve_z, colour=svg.OBSTACLE, width=1.8)
         )
-    return chart, prefix
+    return chart, prefix, drawn
 
 
 def shock_figures(data: ReportData) -> str:
@@ -370,26 +383,26 @@ def shock_figures(data: ReportData) -> str:
             title = shock.name.strip()
             made = orbit_chart(tran_name, shock)
             if made is not None:
-                chart, prefix = made
-                y = np.asarray(shock.fields[f"DY{prefix}"], float)
-                z = np.asarray(shock.fields[f"DZ{prefix}"], float)
+                chart, prefix, drawn = made
+                y = np.asarray(shock.fields[f"DY{prefix}"], float)[drawn]
+                z = np.asarray(shock.fields[f"DZ{prefix}"], float)[drawn]
                 csv = csv_link(
                     f"{tran_name}_{_file(title)}_orbit",
                     ["INST", f"DY{prefix}", f"DZ{prefix}"],
-                    zip(times, y, z, strict=True),
+                    zip(times[drawn], y, z, strict=True),
+                    of=len(times),
                 )
                 out.append(figure(svg.render(chart, 460, 400), f"orbit, {title}", csv))
             fn = np.asarray(shock.fields["FN"], float)
-            x, v = svg.envelope(times, fn)
+            drawn = svg.envelope_index(fn)
             chart = svg.Chart(
                 title=f"{tran_name}: impact force at {title}",
                 x_label="time (s)",
                 y_label="FN (N)",
-                series=[svg.Series("FN", x, v)],
+                series=[svg.Series("FN", times[drawn], fn[drawn])],
             )
-            csv = csv_link(
-                f"{tran_name}_{_file(title)}_FN", ["INST", "FN"], zip(times, fn, strict=True)
-            )
+            rows = zip(times[drawn], fn[drawn], strict=True)
+            csv = csv_link(f"{tran_name}_{_file(title)}_FN", ["INST", "FN"], rows, of=len(times))
             out.append(figure(svg.render(chart, 560, 400), f"normal force, {title}", csv))
         out.append("</div>")
     return ('<h2 id="shock-figures">Orbits and forces</h2>' + "".join(out)) if out else ""
@@ -407,22 +420,21 @@ def energy_section(data: ReportData) -> str:
             continue
         columns = [c for c in table.columns if c != "INST"]
         times = np.array([row.get("INST", np.nan) for row in table.rows], float)
-        series = []
-        for name in columns:
-            values = np.array([row.get(name, np.nan) for row in table.rows], float)
-            x, y = svg.envelope(times, values)
-            series.append(svg.Series(name, x, y, dashed=name == "RESIDU"))
+        values = {
+            name: np.array([row.get(name, np.nan) for row in table.rows], float) for name in columns
+        }
+        drawn = np.unique(np.concatenate([svg.envelope_index(v, 600) for v in values.values()]))
+        series = [
+            svg.Series(name, times[drawn], v[drawn], dashed=name == "RESIDU")
+            for name, v in values.items()
+        ]
         chart = svg.Chart(
             title=f"{tran_name}: energy balance (ENERGIE)",
             x_label="time (s)",
             y_label="energy (J)",
             series=series,
         )
-        full = [
-            svg.Series(name, times, np.array([row.get(name, np.nan) for row in table.rows], float))
-            for name in columns
-        ]
-        csv = series_csv(f"{tran_name}_energy", full, "INST")
+        csv = series_csv(f"{tran_name}_energy", series, "INST", of=len(times))
         out.append(figure(svg.render(chart, 760, 420), "energy balance (PARA_CALC table)", csv))
     if not out:
         return ""

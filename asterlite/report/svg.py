@@ -92,46 +92,48 @@ def tick_text(value: float, step: float) -> str:
     return f"{value:.{min(decimals, 6)}f}"
 
 
-def envelope(x: np.ndarray, y: np.ndarray, buckets: int = 1200) -> tuple[np.ndarray, np.ndarray]:
-    """At most ~2 ``buckets`` points: each bucket of consecutive samples kept
-    as its minimum and maximum, in order (peaks survive the thinning)."""
-    x, y = np.asarray(x, float), np.asarray(y, float)
-    n = len(x)
+def envelope_index(y: np.ndarray, buckets: int = 1200) -> np.ndarray:
+    """Indices of at most ~2 ``buckets`` samples of ``y``: each bucket of
+    consecutive samples kept as its minimum and maximum, in order (peaks
+    survive the thinning); every index when there are few."""
+    y = np.asarray(y, float)
+    n = len(y)
     if n <= 2 * buckets:
-        return x, y
+        return np.arange(n)
     edges = np.linspace(0, n, buckets + 1).astype(int)
-    keep = []
+    keep = {0, n - 1}
     for start, stop in zip(edges[:-1], edges[1:], strict=True):
         if stop <= start:
             continue
         chunk = y[start:stop]
-        finite = np.isfinite(chunk)
-        if not finite.any():
-            keep.append(start)
+        if not np.isfinite(chunk).any():
+            keep.add(start)
             continue
-        low = start + int(np.nanargmin(chunk))
-        high = start + int(np.nanargmax(chunk))
-        keep += sorted({low, high})
-    keep = np.array(sorted(set(keep)), dtype=int)
-    return x[keep], y[keep]
+        keep.add(start + int(np.nanargmin(chunk)))
+        keep.add(start + int(np.nanargmax(chunk)))
+    return np.array(sorted(keep), dtype=int)
 
 
-def envelope_path(
-    x: np.ndarray, y: np.ndarray, max_points: int = 6000
-) -> tuple[np.ndarray, np.ndarray]:
-    """A path in the plane (an orbit) thinned to about ``max_points`` points:
-    every k-th point, plus where each coordinate reaches its extremes."""
+def envelope(x: np.ndarray, y: np.ndarray, buckets: int = 1200) -> tuple[np.ndarray, np.ndarray]:
+    """``(x, y)`` thinned by :func:`envelope_index`."""
+    index = envelope_index(y, buckets)
+    return np.asarray(x, float)[index], np.asarray(y, float)[index]
+
+
+def path_index(x: np.ndarray, y: np.ndarray, max_points: int = 3000) -> np.ndarray:
+    """Indices of a path in the plane (an orbit) thinned to about
+    ``max_points``: every k-th point, plus where each coordinate reaches its
+    extremes."""
     x, y = np.asarray(x, float), np.asarray(y, float)
     n = len(x)
     if n <= max_points:
-        return x, y
+        return np.arange(n)
     keep = set(range(0, n, math.ceil(n / max_points)))
     for values in (x, y):
         if np.isfinite(values).any():
             keep |= {int(np.nanargmin(values)), int(np.nanargmax(values))}
     keep.add(n - 1)
-    index = np.array(sorted(keep), dtype=int)
-    return x[index], y[index]
+    return np.array(sorted(keep), dtype=int)
 
 
 def _range(values: list[np.ndarray], log: bool) -> tuple[float, float]:
