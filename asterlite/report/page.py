@@ -2,10 +2,10 @@
 
 Sections, each present when the run has something for it: the verdict
 (status, message, the note of a variant), the checks (VALE_REFE and
-VALE_CALC apart, strict or not), the command timings, the transients,
-shock statistics per support with the wear chart, per shock its orbit in
-the obstacle plane and its impact force, the energy balance (``ENERGIE``),
-curves (the deck's functions, harmonic responses), and the tail of
+VALE_CALC apart, strict or not), the transients, shock statistics per
+support with the wear chart, per shock its orbit in the obstacle plane and
+its impact force, the energy balance (``ENERGIE``), curves (the deck's
+functions, harmonic responses), the command timings, and the tail of
 message.log. Every figure is inline SVG (:mod:`asterlite.report.svg`)
 followed by its data as a CSV download (a ``data:`` link).
 """
@@ -48,7 +48,7 @@ font-size:16px;vertical-align:middle}
 padding:8px 12px;border-radius:6px;margin:10px 0;font-size:14px}
 pre{background:#fff;border:1px solid #d0d7de;padding:10px;overflow:auto;font-size:12px;
 max-height:480px}
-table{border-collapse:collapse;background:#fff;font-size:13px;margin:6px 0}
+table{border-collapse:collapse;background:#fff;font-size:12px;margin:6px 0}
 th,td{border:1px solid #d0d7de;padding:3px 7px;text-align:left;vertical-align:top}
 th{background:#eaeef2}td.num{text-align:right;font-variant-numeric:tabular-nums;
 font-family:ui-monospace,Menlo,Consolas,monospace}
@@ -294,8 +294,8 @@ def shocks_section(data: ReportData) -> str:
             f'<td class="num">{100 * float(shock.get("contact_fraction") or 0):.1f} %</td>'
             f'<td class="num">{num(shock.get("wear_power"), 5)}</td></tr>'
         )
+    title = '<h2 id="shocks">Shocks per support</h2><p>From the archived instants.</p>'
     head = (
-        '<h2 id="shocks">Shocks per support</h2><p>From the archived instants.</p>'
         '<table id="shocks-table"><thead><tr><th>result</th><th>shock</th><th>relation</th>'
         "<th>nodes</th><th>obstacle</th><th>gap (m)</th><th>impacts</th><th>max FN (N)</th>"
         "<th>mean FN (N)</th><th>contact</th><th>wear power (W)</th></tr></thead><tbody>"
@@ -310,7 +310,9 @@ def shocks_section(data: ReportData) -> str:
     wear = [float(s.get("wear_power") or 0.0) for s in shocks]
     if not any(wear):
         return (
-            head + "<p>The wear work rate is 0 at every support (no friction, or no sliding).</p>"
+            title
+            + head
+            + "<p>The wear work rate is 0 at every support (no friction, or no sliding).</p>"
         )
     chart = svg.bars("wear work rate per support", labels, wear, "mean FN·|VT| (W)")
     csv = csv_link(
@@ -323,8 +325,10 @@ def shocks_section(data: ReportData) -> str:
         ),
     )  # fmt: skip
     return (
-        head
-        + '<div class="figures">'
+        title
+        + '<div class="figures"><div>'
+        + head
+        + "</div>"
         + figure(chart, "Archard wear work rate, code_aster's PUIS_USURE", csv)
         + "</div>"
     )
@@ -483,12 +487,12 @@ def render(data: ReportData) -> str:
     body = [
         header(data),
         checks_section(data),
-        timings_section(data),
         transients_section(data),
         shocks_section(data),
         shock_figures(data),
         energy_section(data),
         curves_section(data),
+        timings_section(data),
         log_section(data),
     ]
     return (
