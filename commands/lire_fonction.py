@@ -84,11 +84,11 @@ def run(ctx, kw):
         ctx.error(f"file {path} (unit {kw['UNITE']}) does not exist", "UNITE", kw)
     separator = kw.get("SEPARATEUR")
     separator = None if separator in (None, "None", " ", "") else separator
-    from asterlite.io.input_files import InputTooLargeError, read_bounded_text
+    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     try:  # rows of Python floats: about 30 bytes of memory per byte of text
         text = read_bounded_text(path, "function file", 30)
-    except InputTooLargeError as error:
+    except InputFileError as error:
         ctx.error(str(error), "UNITE", kw)
     blocks = numeric_blocks(text, separator)
     try:

@@ -18,6 +18,7 @@ import numpy as np
 from asterlite.commands.defi_inte_spec import is_diagonal, stored_values
 
 from asterlite.concepts.interspectrum import InterSpectrum
+from asterlite.io.input_files import InputFileError, read_bounded_text
 
 
 def run(ctx, kw):
@@ -26,8 +27,9 @@ def run(ctx, kw):
     kw.mark_used("NOM_PARA", "NOM_RESU", "INTERPOL", "PROL_DROITE", "PROL_GAUCHE")
     try:
         path = ctx.session.input_path(kw["UNITE"])
-        text = path.read_text(encoding="utf-8", errors="replace")
-    except (KeyError, FileNotFoundError, LookupError, OSError) as exc:
+        # rows of Python floats: about 30 bytes of memory per byte of text
+        text = read_bounded_text(path, "inter-spectrum file", 30)
+    except (KeyError, LookupError, OSError, InputFileError) as exc:
         ctx.error(f"no readable file on logical unit {kw['UNITE']} ({exc})", "UNITE", kw)
     try:
         keys, abscissas, values = parse_aster_interspectrum(text, kw["FORMAT_C"])

@@ -201,11 +201,11 @@ PARSE_BYTES_PER_BYTE = 40
 def read_aster_mesh(path: str | Path) -> Mesh:
     """Read an ASTER-format mesh file (refused before reading when parsing it
     would pass the run's memory limit)."""
-    from asterlite.io.input_files import InputTooLargeError, read_bounded_text
+    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     path = Path(path)
     try:
         text = read_bounded_text(path, "ASTER mesh", PARSE_BYTES_PER_BYTE)
-    except InputTooLargeError as error:
+    except InputFileError as error:
         raise AsterMeshError(str(error).split(": ", 1)[-1], 0, str(path)) from None
     return parse_aster_mesh(text, str(path))

@@ -619,11 +619,11 @@ def parse_ideas_mesh(text: str, filename: str = "", color_groups: bool = False) 
 def read_ideas_mesh(path: str | Path, color_groups: bool = False) -> Mesh:
     """Read an I-DEAS universal file mesh (refused before reading when parsing it
     would pass the run's memory limit)."""
-    from asterlite.io.input_files import InputTooLargeError, read_bounded_text
+    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     path = Path(path)
     try:
         text = read_bounded_text(path, "I-DEAS mesh", PARSE_BYTES_PER_BYTE)
-    except InputTooLargeError as error:
+    except InputFileError as error:
         raise IdeasMeshError(str(error).split(": ", 1)[-1], 0, str(path)) from None
     return parse_ideas_mesh(text, str(path), color_groups)

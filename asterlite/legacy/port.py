@@ -18,6 +18,7 @@ from lark import Token
 
 from asterlite.catalog import load_catalogue
 from asterlite.errors import AsterliteError, Location
+from asterlite.io.input_files import read_deck_text
 from asterlite.lang import parse_deck
 from asterlite.lang.values import FactorDict
 from asterlite.legacy import port_v11, v11
@@ -653,11 +654,11 @@ def deck_files(deck: Path) -> list[Path]:
 def port_file(deck: Path, aster_version: int | None = None) -> PortResult:
     """``deck`` ported, read as the run of its .export reads it: the same version
     (that of the oldest deck file, or ``aster_version``) and the same groups."""
-    text = deck.read_text(encoding="utf-8", errors="replace")
+    text = read_deck_text(deck)
     from asterlite.legacy.v15 import named_entities
 
     units = input_units(deck)
-    texts = [f.read_text(encoding="utf-8", errors="replace") for f in deck_files(deck)]
+    texts = [read_deck_text(f) for f in deck_files(deck)]
     groups = LegacyGroups(units.values(), texts, named_entities(texts))
     version = aster_version or files_version(deck_files(deck))
     return port_text(

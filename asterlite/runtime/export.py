@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from asterlite.errors import AsterliteError, Location
+from asterlite.io.input_files import file_kind, read_deck_text
 
 MESH_UNIT = 20
 MESH_SUFFIXES = (".mail", ".mmed", ".med")
@@ -61,7 +62,7 @@ def read_export(path: Path) -> RunDescription:
     """Parse an ``.export`` file; paths are relative to its folder."""
     folder = path.parent
     run = RunDescription(name=path.stem, deck_files=[], source=path)
-    text = path.read_text(encoding="utf-8", errors="replace")
+    text = read_deck_text(path, "export file")
     for number, raw in enumerate(text.splitlines(), 1):
         line = raw.strip()
         if not line or line.startswith("#"):
@@ -94,6 +95,9 @@ def read_export(path: Path) -> RunDescription:
             raise ExportError(f"file {name} named by the export does not exist", where)
         if file_type in ("comm", "nom") and not file_path.is_file():  # read as text
             raise ExportError(f"{name} named by the export is not a file", where)
+        if not (file_path.is_file() or file_path.is_dir()):  # a FIFO would block the run
+            kind = file_kind(file_path.stat().st_mode)
+            raise ExportError(f"{name} named by the export is {kind}: refused", where)
         if file_type == "comm":
             run.deck_files.append(file_path)
         elif file_type == "nom" or (file_path.suffix == ".py" and unit == 0):

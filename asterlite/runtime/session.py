@@ -22,6 +22,7 @@ from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
 from asterlite.concepts.base import Concept, Placeholder
 from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
+from asterlite.io.input_files import read_deck_text
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.runtime import watchdog
 from asterlite.runtime.context import CommandContext, TestRecord
@@ -195,7 +196,7 @@ class Session:
             from asterlite.lang import Evaluator, parse_deck
 
             path = self.run.helper_modules[name]
-            module = parse_deck(path.read_text(encoding="utf-8", errors="replace"), str(path))
+            module = parse_deck(read_deck_text(path, "helper module"), str(path))
             namespace = dict(self.namespace)
             Evaluator(namespace, module_loader=self.load_module).run(module)
             return namespace
@@ -208,9 +209,8 @@ class Session:
         self.current_file = str(path)
         self.started = False
         self.log(f"# deck {path.name}")
-        text = path.read_text(encoding="utf-8", errors="replace")
         try:
-            module = parse_deck(text, str(path))
+            module = parse_deck(read_deck_text(path), str(path))
         except AsterliteError as error:
             if self.check is None:
                 raise

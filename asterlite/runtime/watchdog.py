@@ -154,7 +154,7 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
         _state.deadline = _state.seconds = _state.memory_mb = _state.resident_start = None
 
 
-def _current_size() -> int | None:
+def address_space_size() -> int | None:
     """The process's address space in bytes (Linux), None where unknown."""
     try:
         with open("/proc/self/status", encoding="ascii") as status:
@@ -209,7 +209,7 @@ def _compile_started() -> None:
     if _compiling.depth > 1:  # a callee compiled inside an outer compilation
         return
     _compiling.started = time.process_time()
-    _compiling.size_before = _current_size()
+    _compiling.size_before = address_space_size()
     _compiling.resident_before = _resident_size()
     try:
         import resource
@@ -237,7 +237,7 @@ def _compile_ended() -> None:
     import resource
 
     soft, hard = _compiling.cap
-    grown = max(0, (_current_size() or 0) - (_compiling.size_before or 0))
+    grown = max(0, (address_space_size() or 0) - (_compiling.size_before or 0))
     raised = soft + grown if hard == resource.RLIM_INFINITY else min(soft + grown, hard)
     resource.setrlimit(resource.RLIMIT_AS, (raised, hard))
     _compiling.cap = None
@@ -271,7 +271,7 @@ def _address_space_cap(megabytes: float | None):
     address space runs well ahead of the resident memory (thread stacks,
     allocator arenas), so the cap only stops a runaway allocation at once; the
     limit itself is checked on resident memory (check_memory)."""
-    size = _current_size()
+    size = address_space_size()
     if megabytes is None or size is None:
         return address_space_cap(None)
     return address_space_cap(size + int(ADDRESS_SPACE_HEADROOM * megabytes * MEGABYTE))

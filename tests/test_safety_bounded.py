@@ -1,0 +1,165 @@
+"""A study someone sent you is bounded in every dimension (issue 26, part C):
+inputs that are not regular files are refused before they are read, sizes
+are checked before anything is allocated or decompressed, numpy never holds
+arrays of Python objects, the memory limit holds while deck code runs and a
+SIGXCPU ends the run with its status. Each case ends quickly with a located
+error, the process alive."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+from asterlite.runtime.runner import run_deck
+
+SAMPLE_MESH = Path(__file__).resolve().parents[1] / "samples" / "friction_oscillator"
+
+
+def run_text(tmp_path: Path, body: str, **options):
+    deck = tmp_path / "d.comm"
+    deck.write_text("DEBUT()\n" + body + "FIN()\n")
+    start = time.monotonic()
+    report = run_deck(deck, tmp_path / "out", **options)
+    return report, time.monotonic() - start, deck
+
+
+# ------------------------------------------------------------ input files
+
+
+@pytest.fixture
+def fifo(tmp_path):
+    """A FIFO, and a rescuer that opens its other end after 20 s so that code
+    that (wrongly) waits on it fails the test instead of hanging."""
+    path = tmp_path / "pipe.mail"
+    os.mkfifo(path)
+    done = threading.Event()
+
+    def rescue():
+        if done.wait(20):
+            return
+        while not done.is_set():
+            try:
+                os.close(os.open(path, os.O_WRONLY | os.O_NONBLOCK))
+            except OSError:
+                time.sleep(0.05)
+
+    threading.Thread(target=rescue, daemon=True).start()
+    yield path
+    done.set()
+
+
+def _readers():
+    from asterlite.io.aster_mesh import read_aster_mesh
+    from asterlite.io.ideas_mesh import read_ideas_mesh
+    from asterlite.io.input_files import read_bounded_text, read_deck_text
+    from asterlite.io.med_mesh import read_med_mesh
+    from asterlite.io.med_result import read_nodal_field
+    from asterlite.runtime.export import read_export
+
+    return {
+        "ASTER mesh": read_aster_mesh,
+        "I-DEAS mesh": read_ideas_mesh,
+        "MED mesh": read_med_mesh,
+        "MED result (LIRE_RESU)": lambda path: read_nodal_field(path, "DEPL"),
+        "function file (LIRE_FONCTION)": lambda path: read_bounded_text(path, "function file", 30),
+        "deck, INCLUDE_MATERIAU, helper module": read_deck_text,
+        "export": read_export,
+    }
+
+
+@pytest.mark.parametrize("reader", sorted(_readers()))
+def test_every_reader_refuses_a_fifo_without_waiting(fifo, reader):
+    start = time.monotonic()
+    with pytest.raises(Exception, match="FIFO") as caught:
+        _readers()[reader](fifo)
+    assert time.monotonic() - start < 10
+    assert str(fifo) in str(caught.value) or fifo.name in str(caught.value)
+
+
+def test_a_device_is_refused_before_it_is_opened(tmp_path):
+    from asterlite.io.aster_mesh import AsterMeshError, read_aster_mesh
+
+    link = tmp_path / "null.mail"
+    link.symlink_to("/dev/null")  # reads as empty text: refused all the same
+    with pytest.raises(AsterMeshError, match="character device"):
+        read_aster_mesh(link)
+
+
+def test_a_fifo_swapped_in_after_the_check_is_refused_on_its_descriptor(fifo, monkeypatch):
+    """The stat before opening saw a regular file; the descriptor's fstat
+    catches the FIFO, and opening it with O_NONBLOCK did not wait."""
+    from asterlite.io import input_files
+
+    monkeypatch.setattr(input_files, "check_regular_file", lambda path, what: 0)
+    start = time.monotonic()
+    with pytest.raises(input_files.NotARegularFileError, match="FIFO"):
+        input_files.read_bounded_text(fifo, "mesh", 40)
+    assert time.monotonic() - start < 10
+
+
+def test_an_export_naming_a_fifo_is_refused_at_its_line(tmp_path, fifo):
+    (tmp_path / "d.comm").write_text(
+        "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\nFIN()\n"
+    )
+    export = tmp_path / "d.export"
+    export.write_text(f"P time_limit 30\nF comm d.comm D 1\nF mail {fifo.name} D 20\n")
+    start = time.monotonic()
+    report = run_deck(export, tmp_path / "out")
+    assert report.status == "ERROR" and report.exit_code == 2, report.message
+    assert f"{export}:3" in report.message and "FIFO" in report.message
+    assert time.monotonic() - start < 10
+
+
+def _med_bomb(path: Path, values: int = 300_000_000) -> Path:
+    """A MED mesh of a few kB whose coordinates declare ``values`` doubles:
+    a chunked, compressed dataset never written (HDF5 returns its fill value)."""
+    h5py = pytest.importorskip("h5py")
+    step = "ENS_MAA/bomb/-0000000000000000001-0000000000000000001"
+    with h5py.File(path, "w") as handle:
+        coordinates = handle.create_dataset(
+            f"{step}/NOE/COO", shape=(values,), dtype="f8", chunks=(100_000,), compression="gzip"
+        )
+        coordinates.attrs["NBR"] = values // 3
+        handle.create_dataset(f"{step}/MAI/PO1/NOD", data=[1]).attrs["NBR"] = 1
+    return path
+
+
+def test_a_med_file_declaring_gigabytes_is_refused_before_decompressing(tmp_path):
+    from asterlite.io.med_mesh import MedMeshError, read_med_mesh
+    from asterlite.io.med_result import MedResultError, read_nodal_field
+    from asterlite.runtime import watchdog
+
+    bomb = _med_bomb(tmp_path / "bomb.med")
+    assert bomb.stat().st_size < 100_000
+    start = time.monotonic()
+    with watchdog.limits(None, 256, compiles=False):
+        with pytest.raises(MedMeshError, match="2400 MB of data once decompressed"):
+            read_med_mesh(bomb)
+        with pytest.raises(MedResultError, match="once decompressed"):
+            read_nodal_field(bomb, "DEPL")
+    assert time.monotonic() - start < 30
+
+
+def test_the_med_child_caps_its_own_memory(tmp_path):
+    """The child sets its RLIMIT_AS to its size once its libraries are
+    loaded plus twice the run's memory limit (handed down by the parent)."""
+    script = (
+        "import resource\n"
+        "from asterlite.io import med_check\n"
+        "from asterlite.runtime import watchdog\n"
+        "med_check._cap_own_memory()\n"
+        "print(resource.getrlimit(resource.RLIMIT_AS)[0], watchdog.address_space_size())\n"
+    )
+    environment = dict(os.environ, ASTERLITE_MED_MEMORY_MB="100")
+    child = subprocess.run(
+        [sys.executable, "-c", script], env=environment, capture_output=True, text=True, timeout=120
+    )
+    assert child.returncode == 0, child.stderr
+    cap, size = (int(word) for word in child.stdout.split())
+    assert size < cap <= size + 2 * 100 * 2**20 + 2**20
