@@ -31,6 +31,25 @@ class Location:
         return f"    {self.source_line.rstrip()}\n    {caret}"
 
 
+NOT_A_DECK = (
+    "the file does not read as a code_aster deck (no command call such as DEBUT() in it): "
+    "its text is not shown"
+)
+
+
+@dataclass(frozen=True)
+class UnquotedLocation(Location):
+    """A position in a file not recognised as what it should be: a study may
+    name any file the user can read as its deck, export or mesh (``F comm
+    /etc/passwd``), so neither its lines nor an error's wording (which may
+    quote a name or a token) are shown: where, and ``reason``."""
+
+    reason: str = NOT_A_DECK
+
+    def excerpt(self) -> str:
+        return ""
+
+
 class AsterliteError(Exception):
     """Base of every error reported to the user (exit status 2)."""
 
@@ -39,8 +58,19 @@ class AsterliteError(Exception):
     def __init__(self, message: str, location: Location | None = None, path: str = ""):
         super().__init__(message)
         self.message = message
-        self.location = location
+        self.location = location  # often set later, where the deck statement is known
         self.path = path  # keyword path, e.g. "DYNA_VIBRA/COMPORTEMENT[1]/RIGI_NOR"
+
+    @property
+    def message(self) -> str:
+        """What went wrong; in a file that does not read as a deck, only that."""
+        if isinstance(self.location, UnquotedLocation):
+            return self.location.reason
+        return self._message
+
+    @message.setter
+    def message(self, text: str) -> None:
+        self._message = text
 
     def __str__(self) -> str:
         where = f"{self.location}: " if self.location else ""

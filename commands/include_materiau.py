@@ -84,7 +84,7 @@ def _evaluate(ctx, path, namespace) -> dict:
     from asterlite.lang import Evaluator, parse_deck
 
     text = read_deck_text(path, "material file")
-    module = parse_deck(text, str(path), private_names=True)
+    module = parse_deck(text, str(path), private_names=True, study_file=True)
     Evaluator(namespace, module_loader=ctx.session.load_module).run(module)
     keywords = namespace.get("motscles")
     if not isinstance(keywords, dict):

@@ -19,8 +19,9 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from asterlite.errors import AsterliteError, Location
+from asterlite.errors import AsterliteError, Location, UnquotedLocation
 from asterlite.io.input_files import file_kind, read_deck_text
+from asterlite.io.non_finite import NonFiniteNumber, finite_float
 
 MESH_UNIT = 20
 MESH_SUFFIXES = (".mail", ".mmed", ".med")
@@ -62,12 +63,18 @@ def read_export(path: Path) -> RunDescription:
     """Parse an ``.export`` file; paths are relative to its folder."""
     folder = path.parent
     run = RunDescription(name=path.stem, deck_files=[], source=path)
+    recognised = False  # no line quoted before a first F, R or P line
     text = read_deck_text(path, "export file")
     for number, raw in enumerate(text.splitlines(), 1):
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
         fields = line.split()
+        if not recognised and fields[0] not in ("F", "R", "P"):
+            # not an export (a private file linked as one?): where, never what
+            where = UnquotedLocation(str(path), number, 1, reason=NOT_AN_EXPORT)
+            raise ExportError(NOT_AN_EXPORT, where)
+        recognised = True
         where = Location(str(path), number, 1, raw)
         if fields[0] == "P":
             if len(fields) < 2:
@@ -111,6 +118,7 @@ def read_export(path: Path) -> RunDescription:
     return run
 
 
+NOT_AN_EXPORT = "not an export file: F, R or P lines were expected; the line is not shown"
 # P lines asterlite enforces, both positive numbers (seconds, megabytes)
 LIMITS = ("time_limit", "memory_limit")
 # R-line types asterlite cannot make: code_aster's databases and folders
@@ -120,9 +128,11 @@ NOT_PRODUCED = frozenset({"base", "bhdf", "repe"})
 def _limit(fields: list[str], where: Location) -> float:
     text = fields[2] if len(fields) > 2 else ""
     try:
-        value = float(text)
+        value = finite_float(text)
+    except NonFiniteNumber as error:  # P time_limit inf would be no limit at all
+        raise ExportError(f"P {fields[1]}: {error}", where) from None
     except ValueError:
-        value = float("nan")
+        value = 0.0
     if not value > 0:
         raise ExportError(f"P {fields[1]} must be a positive number, got {text!r}", where)
     return value

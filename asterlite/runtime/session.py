@@ -196,7 +196,8 @@ class Session:
             from asterlite.lang import Evaluator, parse_deck
 
             path = self.run.helper_modules[name]
-            module = parse_deck(read_deck_text(path, "helper module"), str(path))
+            text = read_deck_text(path, "helper module")
+            module = parse_deck(text, str(path), study_file=True)
             namespace = dict(self.namespace)
             Evaluator(namespace, module_loader=self.load_module).run(module)
             return namespace
@@ -210,7 +211,7 @@ class Session:
         self.started = False
         self.log(f"# deck {path.name}")
         try:
-            module = parse_deck(read_deck_text(path), str(path))
+            module = parse_deck(read_deck_text(path), str(path), study_file=True)
         except AsterliteError as error:
             if self.check is None:
                 raise
