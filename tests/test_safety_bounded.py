@@ -163,3 +163,90 @@ def test_the_med_child_caps_its_own_memory(tmp_path):
     assert child.returncode == 0, child.stderr
     cap, size = (int(word) for word in child.stdout.split())
     assert size < cap <= size + 2 * 100 * 2**20 + 2**20
+
+
+# ------------------------------------------------------ the deck evaluator
+
+
+SIZE_CASES = {
+    # list += extends with any iterable: read within the element limit
+    "list += range": ("L = []\nfor i in range(30):\n    L += range(5000000)\n", "sequence length"),
+    "list += range, compiled": (
+        "def f():\n    L = []\n    for i in range(30):\n        L += range(5000000)\n"
+        "    return L\nx = f()\n",
+        "sequence length",
+    ),
+    # the widths and precisions of all the fields add up
+    "format widths": ('s = "{:9999999}" * 150\nt = s.format(*range(150))\n', "string length"),
+    "% widths": ('s = "%9999999d" * 150\nt = s % tuple(range(150))\n', "string length"),
+    "format precisions": ('t = "{:.9999999f}{:.9999999f}".format(1.0, 2.0)\n', "string length"),
+    # numpy's like-functions allocate the shape= asked; long strings count in bytes
+    "ones_like shape=": ("x = np.ones_like([1.0], shape=(10**5, 10**5))\n", "numpy.ones_like size"),
+    "full_like shape=": (
+        "x = np.full_like([1.0], 2.0, shape=(10**5, 10**5))\n",
+        "numpy.full_like size",
+    ),
+    "U100 items": ("x = np.zeros(10**6, dtype='U100')\n", "16-byte items"),
+    # hexadecimal, octal, binary literals and int(text, base)
+    "hex literal": ("x = 0x" + "f" * 2_000_000 + "\n", "integer size in digits"),
+    "octal literal": ("x = 0o" + "7" * 20_000 + "\n", "integer size in digits"),
+    "binary literal": ("x = 0b" + "1" * 40_000 + "\n", "integer size in digits"),
+    "int(text, 16)": ('x = int("f" * 2000000, 16)\n', "integer size in digits"),
+    "int(text, base=2)": ('x = int("1" * 200000, base=2)\n', "integer size in digits"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(SIZE_CASES))
+def test_sizes_are_checked_before_allocation(tmp_path, case):
+    body, expected = SIZE_CASES[case]
+    report, seconds, deck = run_text(tmp_path, "import numpy as np\n" + body)
+    assert report.status == "ERROR" and report.exit_code == 2, report.message
+    assert expected in report.message and f"{deck}:" in report.message
+    assert seconds < 30
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        "x = np.array([10**30] * 10)\n",
+        "x = np.sum([10**30] * 1000)\n",
+        "x = np.array([1.0, None])\n",
+        "x = np.full(3, None)\n",
+        "x = np.full(3, 10**30)\n",
+        "x = np.zeros(3, dtype='O')\n",
+        "x = np.ones(3).astype('O')\n",
+        "x = np.ones(3) + [10**30, 1, 1]\n",
+        "def f(a):\n    return np.array(a)\nx = f([1, 'a', None])\n",
+    ],
+)
+def test_numpy_arrays_of_objects_are_refused(tmp_path, body):
+    """numpy loops over Python objects in C, where no CPU timer can stop it."""
+    report, _, deck = run_text(tmp_path, "import numpy as np\n" + body)
+    assert report.status == "ERROR" and report.exit_code == 2, report.message
+    assert "numpy arrays of Python objects" in report.message and f"{deck}:" in report.message
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        'print("{0[0].session.output_dir}".format([DEBUT]))\n',
+        'print("{0[x].session}".format({"x": DEBUT}))\n',
+        'print("{a[0][0].session}".format(a=[[DEBUT]]))\n',
+        'print("{0[0].upper}".format(["text"]))\n',
+    ],
+)
+def test_every_accessor_of_a_format_field_is_checked(tmp_path, body):
+    report, _, deck = run_text(tmp_path, body)
+    assert report.status == "ERROR" and "format fields may" in report.message, report.message
+    assert f"{deck}:2" in report.message
+    log = (tmp_path / "out" / "message.log").read_text()
+    assert str(tmp_path / "out") not in log
+
+
+def test_plain_format_fields_still_work(tmp_path):
+    body = 'x = "{0.real}|{1[1]:>3}|{k[a]}|{0:.2f}".format(1.5, [1, 2], k={"a": 3})\nprint(x)\n'
+    body += 'print("%5.1f|%s" % (2.5, "z"))\n'
+    report, _, _ = run_text(tmp_path, body)
+    assert report.status == "DONE", report.message
+    log = (tmp_path / "out" / "message.log").read_text()
+    assert "1.5|  2|3|1.50" in log and "  2.5|z" in log
