@@ -180,3 +180,69 @@ def test_page_renders_in_chromium(ran, tmp_path):
     assert count_drawn(pixels, (0x1F, 0x77, 0xB4)) > 300  # a curve drawn in a plot
     background = pixels[0]
     assert sum(1 for p in pixels if p != background) > 0.05 * len(pixels)
+
+
+# ------------------------------------------------------------------ curves
+
+
+def test_curve_sets_of_functions_harmonic_results_and_any_concept():
+    import numpy as np
+
+    from asterlite.concepts.base import Concept
+    from asterlite.concepts.function import ComplexFunction, Function
+    from asterlite.concepts.harmonic import HarmGene
+    from asterlite.report.data import ReportData, collect_curves, curves_json
+    from asterlite.report.page import curves_section
+
+    frequencies = np.linspace(1.0, 100.0, 400)
+    response = 1.0 / (30.0**2 - frequencies**2 + 2j * 0.002 * 30.0 * frequencies)
+
+    class Offered(Concept):  # the generic input: a concept's report_curves()
+        aster_types = ("something",)
+
+        def report_curves(self):
+            return [{"title": "offered", "x_label": "s", "y_label": "m",
+                     "series": [{"label": "a", "x": [0, 1, 2], "y": [1, 4, 9]}]}]  # fmt: skip
+
+    namespace = {
+        "F": Function(np.linspace(0, 1, 5), np.arange(5.0), NOM_PARA="INST", NOM_RESU="DX"),
+        "H": ComplexFunction(frequencies, response, NOM_PARA="FREQ", NOM_RESU="DY"),
+        "Q": HarmGene(None, None, frequencies, np.arange(1, 401),
+                      {"DEPL": np.column_stack([response, 0.1 * response])}),
+        "O": Offered(),
+        "X": 3.0,
+    }  # fmt: skip
+    sets = collect_curves(namespace)
+    titles = [s.get("source", s["title"]) for s in sets]
+    assert titles == ["F", "H", "Q", "offered"]
+    assert sets[1]["y_label"] == "|DY|" and sets[1]["log_y"]  # a complex function: its modulus
+    np.testing.assert_allclose(sets[1]["series"][0]["y"], np.abs(response))
+    assert [s["label"] for s in sets[2]["series"]] == ["q1", "q2"]  # largest peak first
+    assert sets[2]["x_label"] == "FREQ (Hz)"
+    stored = json.loads(curves_json(sets))["curves"]  # what curves.json keeps
+    assert stored[2]["series"][0]["x"][0] == 1.0
+    html = curves_section(ReportData({}, curves=stored))
+    assert html.count("<svg") == 4 and "offered" in html
+
+
+def test_energy_balance_and_deck_functions_are_drawn(tmp_path):
+    from tests.test_extremes_decks import Chain, Shock, write
+
+    chain = Chain(
+        depl={1: (0.0, 1.0e-3, 0.0)},
+        shocks=[Shock(1, 5.0e-4, 1.0e6, c_n=5.0)],
+        pas=1.0e-5,
+        inst_fin=0.1,
+        pas_arch=10,
+        dyna_keywords=", ENERGIE=_F()",
+    )
+    out = tmp_path / "out"
+    report = run_deck(write(chain, tmp_path / "deck"), out, report_page=True, save_results=True)
+    assert report.status == "DONE", report.message
+    page = (out / "report.html").read_text()
+    assert 'id="energy"' in page and "ENER_CIN" in page and "RESIDU" in page
+    assert 'id="curves"' in page and "function FN0" in page  # RECU_FONCTION's FN
+    assert json.loads((out / "curves.json").read_text())["curves"][0]["source"] == "FN0"
+    assert main(["report", str(out)]) == 0  # from the folder: the same sections
+    again = (out / "report.html").read_text()
+    assert 'id="energy"' in again and "function FN0" in again

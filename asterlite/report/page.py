@@ -17,6 +17,7 @@ import html
 import io
 import math
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -144,7 +145,7 @@ def header(data: ReportData) -> str:
         f'<span class="status" id="status" style="background:{colour}">{esc(status)}</span></h1>',
         f'<div class="meta">{num(s.get("seconds"), 4)} s{checks} &middot; asterlite '
         f"{esc(_version())} &middot; report written {esc(time.strftime('%Y-%m-%d %H:%M:%S'))}"
-        + (f" &middot; folder {esc(data.folder)}" if data.folder else "")
+        + (f" &middot; folder {esc(Path(data.folder).resolve())}" if data.folder else "")
         + "</div>",
     ]
     if s.get("overrides"):
