@@ -286,11 +286,21 @@ def _port(args) -> int:
         Path(args.output).write_text(result.text, encoding="utf-8")
         print("\n".join(changes) if changes else f"{deck}: nothing to port")
         print(f"ported deck: {args.output}")
-    else:
-        sys.stdout.write(result.text)
+    else:  # UTF-8 whatever the terminal's locale, as with -o
+        _write_utf8(result.text)
         for line in changes:
             print(line, file=sys.stderr)
     return 2 if result.skipped else 0
+
+
+def _write_utf8(text: str) -> None:
+    sys.stdout.flush()
+    binary = getattr(sys.stdout, "buffer", None)
+    if binary is None:  # a text stream in this process (a test's): no bytes to choose
+        sys.stdout.write(text)
+        return
+    binary.write(text.encode("utf-8"))
+    binary.flush()
 
 
 def _warmup(args) -> int:

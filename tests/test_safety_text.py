@@ -5,7 +5,11 @@ any of the encodings old decks use, and CA.TestCase's verdicts on NaN."""
 
 from __future__ import annotations
 
+import codecs
+import os
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -229,3 +233,86 @@ def test_export_limits_refuse_non_finite_values_by_name(tmp_path, name, value):
     report = run_deck(export, tmp_path / "out")
     assert report.exit_code == 2
     assert f"P {name}: {value!r} is" in report.message and "not a finite number" in report.message
+
+
+# ------------------------------------------------------------- deck encodings
+
+ACCENTED_DECK = 'DEBUT()\nt = "déplacement à l’origine"\nprint(t)\nFIN()\n'
+
+
+def encoded_deck(folder: Path, data: bytes) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / "d.comm"
+    path.write_bytes(data)
+    return path
+
+
+def test_a_deck_with_a_utf8_byte_order_mark_runs(tmp_path):
+    """Editors on Windows start UTF-8 files with a BOM: refused at 1:1 before."""
+    deck = encoded_deck(tmp_path, codecs.BOM_UTF8 + ACCENTED_DECK.encode("utf-8"))
+    report = run_deck(deck, tmp_path / "out")
+    assert report.status == "DONE", report.message
+    log = (tmp_path / "out" / "message.log").read_text(encoding="utf-8")
+    assert "déplacement à l’origine" in log and "read as" not in log
+    assert run_deck(deck, check_only=True).status == "CHECKED"
+
+
+@pytest.mark.parametrize(
+    "encoding, named",
+    [("latin-1", "Latin-1 (ISO-8859-1)"), ("cp1252", "Windows-1252")],
+)
+def test_an_old_french_deck_keeps_its_accents_and_says_how_it_was_read(tmp_path, encoding, named):
+    """Latin-1 letters in deck strings used to become U+FFFD without a word."""
+    text = ACCENTED_DECK if encoding == "cp1252" else ACCENTED_DECK.replace("’", "'")
+    deck = encoded_deck(tmp_path, text.encode(encoding))
+    report = run_deck(deck, tmp_path / "out")
+    assert report.status == "DONE", report.message
+    log = (tmp_path / "out" / "message.log").read_text(encoding="utf-8")
+    assert text.splitlines()[1][5:-1] in log and "\ufffd" not in log
+    assert f"# deck d.comm read as {named}, not UTF-8" in log
+
+
+def test_a_coding_declaration_is_honoured(tmp_path):
+    text = "# -*- coding: iso-8859-15 -*-\nDEBUT()\nprint('prix: 5 €')\nFIN()\n"
+    deck = encoded_deck(tmp_path, text.encode("iso-8859-15"))
+    run_deck(deck, tmp_path / "out")
+    log = (tmp_path / "out" / "message.log").read_text(encoding="utf-8")
+    assert "prix: 5 €" in log and "read as iso8859-15, not UTF-8" in log
+
+
+def test_bytes_contradicting_a_byte_order_mark_are_refused_at_their_line(tmp_path):
+    deck = encoded_deck(tmp_path, codecs.BOM_UTF8 + "DEBUT()\nt = 'é'\n".encode("latin-1"))
+    report = run_deck(deck, tmp_path / "out")
+    assert report.exit_code == 2
+    assert "line 2: byte" in report.message and "byte order mark" in report.message
+
+
+def test_decoding_rules():
+    from asterlite.io.text_encoding import TextEncodingError, decode_text
+
+    assert decode_text("é".encode()) == ("é", "UTF-8")
+    assert decode_text(codecs.BOM_UTF8 + b"x") == ("x", "UTF-8 (with a byte order mark)")
+    assert decode_text("é".encode("latin-1")) == ("é", "Latin-1 (ISO-8859-1)")
+    assert decode_text("’é".encode("cp1252")) == ("’é", "Windows-1252")
+    assert decode_text(b"\x81\xe9") == ("\x81é", "Latin-1 (ISO-8859-1)")  # not Windows-1252
+    declared = b"#!x\n# coding: latin-1\n\xe9"
+    assert decode_text(declared) == (declared.decode("latin-1"), "iso8859-1")
+    # a declaration on line 2 counts only after a comment line 1, as in Python
+    assert decode_text(b"x = 1\n# coding: latin-1\n\xe9")[1] == "Latin-1 (ISO-8859-1)"
+    for declared in (b"# coding: rot13\n", b"# coding: no-such-codec\n"):
+        with pytest.raises(TextEncodingError):
+            decode_text(declared)
+
+
+def test_port_writes_utf8_and_says_so(tmp_path):
+    text = "# -*- coding: iso-8859-1 -*-\nDEBUT()\nt = 'élément'\nFIN()\n"
+    deck = encoded_deck(tmp_path, text.encode("latin-1"))
+    command = [sys.executable, "-m", "asterlite", "port", str(deck)]
+    environment = dict(os.environ, PYTHONIOENCODING="ascii", LC_ALL="C")
+    done = subprocess.run(command, capture_output=True, env=environment, check=False)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.decode("utf-8") == text.replace("iso-8859-1", "utf-8")
+    assert b"encoding: read as iso8859-1, written as UTF-8" in done.stderr
+    written = tmp_path / "p.comm"
+    subprocess.run([*command, "-o", str(written)], env=environment, check=True, capture_output=True)
+    assert written.read_bytes() == done.stdout

@@ -26,6 +26,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from asterlite.errors import AsterliteError, Location
+from asterlite.io.text_encoding import TextEncodingError, decode_text
 
 MAX_TEXT_INPUT_BYTES = 1_000_000_000  # no text input beyond 1 GB, whatever the limits
 _OPEN_FLAGS = (
@@ -109,8 +110,20 @@ def read_input_bytes(path: Path, what: str, bytes_per_byte: float = 1.0) -> byte
 
 
 def read_bounded_text(path: Path, what: str, bytes_per_byte: float) -> str:
-    """The text of an input file (UTF-8, undecodable bytes replaced)."""
-    return read_input_bytes(path, what, bytes_per_byte).decode("utf-8", errors="replace")
+    """The text of an input file (its encoding: :mod:`asterlite.io.text_encoding`)."""
+    return read_decoded(path, what, bytes_per_byte)[0]
+
+
+def read_decoded(path: Path, what: str, bytes_per_byte: float) -> tuple[str, str]:
+    """``(text, encoding)`` of an input file: UTF-8 with or without a byte
+    order mark, a declared encoding, else Windows-1252 or Latin-1; never a
+    byte replaced (InputFileError for bytes that contradict the file's mark
+    or declaration)."""
+    data = read_input_bytes(path, what, bytes_per_byte)
+    try:
+        return decode_text(data)
+    except TextEncodingError as error:
+        raise InputFileError(f"{path}: this {what} cannot be decoded: {error}") from None
 
 
 def read_head(path: Path, count: int, what: str = "input file") -> bytes:
@@ -160,8 +173,14 @@ def _check_size(path: Path, what: str, size: int, bytes_per_byte: float) -> None
 def read_deck_text(path: Path, what: str = "deck file") -> str:
     """The text of a deck, export or helper file, or InputRefusedError
     located at the file (not a regular file, or too large to parse)."""
+    return read_deck(path, what)[0]
+
+
+def read_deck(path: Path, what: str = "deck file") -> tuple[str, str]:
+    """``(text, encoding)`` of a deck file (see :func:`read_decoded`), or
+    InputRefusedError located at the file."""
     try:
-        return read_bounded_text(path, what, DECK_BYTES_PER_BYTE)
+        return read_decoded(path, what, DECK_BYTES_PER_BYTE)
     except InputFileError as error:
         raise InputRefusedError(str(error).split(": ", 1)[-1], Location(str(path), 1)) from None
 

@@ -22,7 +22,8 @@ from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
 from asterlite.concepts.base import Concept, Placeholder
 from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
-from asterlite.io.input_files import read_deck_text
+from asterlite.io.input_files import read_deck, read_deck_text
+from asterlite.io.text_encoding import UTF8, UTF8_BOM
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.runtime import watchdog
 from asterlite.runtime.context import CommandContext, TestRecord
@@ -211,7 +212,10 @@ class Session:
         self.started = False
         self.log(f"# deck {path.name}")
         try:
-            module = parse_deck(read_deck_text(path), str(path), study_file=True)
+            text, encoding = read_deck(path)
+            if encoding not in (UTF8, UTF8_BOM):  # said, since the deck's strings carry it
+                self.log(f"# deck {path.name} read as {encoding}, not UTF-8")
+            module = parse_deck(text, str(path), study_file=True)
         except AsterliteError as error:
             if self.check is None:
                 raise
