@@ -105,3 +105,24 @@ def test_plot_reaches_every_stop(ran, tmp_path):
     assert main(["plot", str(store), "--shock", "DIS_CHOC00000009"]) == 2
     figure = plots.wear_figure(load_tran_gene(store))
     assert len(figure.axes[0].patches) == 4  # one bar per support
+
+
+def test_results_saved_with_repeated_names_are_reached_by_their_stored_names():
+    """A results.h5 written before the names were unique holds DIS_CHOC1 four
+    times, in groups DIS_CHOC1, DIS_CHOC1_2...: each is reached by its group."""
+    pytest.importorskip("matplotlib")
+    import numpy as np
+
+    from asterlite.concepts.transient import ShockHistory, TranGene
+    from asterlite.post import plots
+
+    times = np.linspace(0.0, 1.0, 11)
+    shocks = [
+        ShockHistory("DIS_CHOC1", "DIS_CHOC", f"N{k}", None, {"FN": (k + 1.0) * times})
+        for k in range(4)
+    ]
+    tran = TranGene(None, times, np.arange(11), *(np.zeros((11, 1)),) * 3, shocks=shocks)
+    assert plots.shock_names(tran) == ["DIS_CHOC1", "DIS_CHOC1_2", "DIS_CHOC1_3", "DIS_CHOC1_4"]
+    assert plots.find_shock(tran, "DIS_CHOC1_3") is shocks[2]
+    figure = plots.shock_history_figure(tran, "DIS_CHOC1_4", "FN")
+    np.testing.assert_array_equal(figure.axes[0].lines[0].get_ydata(), 4.0 * times)
