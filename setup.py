@@ -47,8 +47,10 @@ def package_dir() -> dict[str, str]:
 # `python3 -m asterlite` failed. A second .pth file moves the finder in front
 # of the PathFinder, so that asterlite is this checkout's package from any
 # working directory, always under the same path (numba's kernel cache is
-# keyed by the sources' paths). It is written only when setuptools chose its
-# finder (a layout it installs by a plain path entry needs nothing).
+# keyed by the sources' paths); also before PYTHONPATH: in an environment
+# holding an editable install, asterlite is that checkout (another checkout
+# gets an environment of its own). It is written only when setuptools chose
+# its finder (a layout it installs by a plain path entry needs nothing).
 FINDER_FIRST = """\
 import sys
 
