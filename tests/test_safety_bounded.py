@@ -7,7 +7,9 @@ error, the process alive."""
 
 from __future__ import annotations
 
+import json
 import os
+import signal
 import subprocess
 import sys
 import threading
@@ -250,3 +252,84 @@ def test_plain_format_fields_still_work(tmp_path):
     assert report.status == "DONE", report.message
     log = (tmp_path / "out" / "message.log").read_text()
     assert "1.5|  2|3|1.50" in log and "  2.5|z" in log
+
+
+# ------------------------------------------------------ the run's limits
+
+
+def _cli(deck: Path, out: Path, *options: str) -> subprocess.Popen:
+    command = [sys.executable, "-m", "asterlite", "run", str(deck), "-o", str(out), "-q"]
+    pipes = {"stdout": subprocess.PIPE, "stderr": subprocess.PIPE, "text": True}
+    return subprocess.Popen(command + list(options), **pipes)
+
+
+def test_the_memory_limit_holds_while_deck_code_runs(tmp_path):
+    """A deck loop used to grow to the address-space cap (four times the
+    limit) and end as 'MemoryError'; resident memory is now sampled."""
+    deck = tmp_path / "d.comm"
+    deck.write_text(
+        'DEBUT()\nL = []\nwhile True:\n    L.append("x" * 1000000 + str(len(L)))\nFIN()\n'
+    )
+    child = _cli(deck, tmp_path / "out", "--memory-limit", "100")
+    _, stderr = child.communicate(timeout=120)
+    assert child.returncode == 2, stderr
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    message = summary.get("message", "") + stderr
+    assert "memory limit exceeded" in message and f"{deck}:4" in message
+    held = int(message.split("the run holds ")[1].split(" MB")[0])
+    assert held < 2 * 100
+
+
+def test_sigxcpu_ends_the_run_with_its_status(tmp_path):
+    """The soft RLIMIT_CPU's SIGXCPU used to kill the process (summary.json
+    left RUNNING); it now stops the run where Python resumes."""
+    deck = tmp_path / "d.comm"
+    deck.write_text("DEBUT()\nx = 0\nwhile True:\n    x = x + 1\nFIN()\n")
+    out = tmp_path / "out"
+    child = _cli(deck, out, "--time-limit", "600")
+    deadline = time.monotonic() + 60
+    while not (out / "summary.json").exists() and time.monotonic() < deadline:
+        time.sleep(0.1)
+    time.sleep(1.0)
+    child.send_signal(signal.SIGXCPU)
+    _, stderr = child.communicate(timeout=60)
+    assert child.returncode == 2, stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["status"] == "ERROR" and "time limit" in summary.get("message", stderr)
+
+
+def test_compiled_code_that_never_returns_is_ended_soon_after_the_limit(tmp_path):
+    """A C loop holding the interpreter (sum() of a long range checks no
+    signal) cannot be stopped from Python: SIGVTALRM ends it two grace periods
+    past the limit (2 s each for a 1 s limit), not 30 s later as before."""
+    script = (
+        "from asterlite.runtime import watchdog\n"
+        "with watchdog.limits(1.0, None, compiles=False):\n"
+        "    sum(range(10**13))\n"
+    )
+    start = time.monotonic()
+    child = subprocess.run([sys.executable, "-c", script], capture_output=True, timeout=120)
+    assert child.returncode == -signal.SIGVTALRM, child.stderr
+    assert time.monotonic() - start < 20
+
+
+def test_a_compilation_lifts_the_cpu_backstops_and_moves_them():
+    """numba's compilation is not the study's time: while it runs neither
+    SIGXCPU nor SIGVTALRM may come, and afterwards both move by what it took."""
+    import resource
+
+    from asterlite.runtime import watchdog
+
+    with watchdog.limits(30.0, None, compiles=False):
+        soft_before, hard = resource.getrlimit(resource.RLIMIT_CPU)
+        kill_before = signal.getitimer(signal.ITIMER_VIRTUAL)[0]
+        watchdog._compile_started()
+        assert resource.getrlimit(resource.RLIMIT_CPU)[0] == hard
+        assert signal.getitimer(signal.ITIMER_VIRTUAL)[0] == 0.0
+        spin = time.process_time() + 0.3
+        while time.process_time() < spin:
+            pass
+        watchdog._compile_ended()
+        assert resource.getrlimit(resource.RLIMIT_CPU)[0] >= soft_before + 1
+        assert abs(kill_before - signal.getitimer(signal.ITIMER_VIRTUAL)[0]) < 0.1  # paused
+    assert signal.getitimer(signal.ITIMER_VIRTUAL)[0] == 0.0  # disarmed after the run
