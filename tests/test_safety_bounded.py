@@ -333,3 +333,29 @@ def test_a_compilation_lifts_the_cpu_backstops_and_moves_them():
         assert resource.getrlimit(resource.RLIMIT_CPU)[0] >= soft_before + 1
         assert abs(kill_before - signal.getitimer(signal.ITIMER_VIRTUAL)[0]) < 0.1  # paused
     assert signal.getitimer(signal.ITIMER_VIRTUAL)[0] == 0.0  # disarmed after the run
+
+
+def test_a_denormal_stiffness_gives_its_modes(tmp_path):
+    """K = 1e-310 against M = 2: the dense solver's L⁻¹ M L⁻ᵀ overflowed to inf
+    (an internal error); the pencil is now solved scaled by powers of two."""
+    (tmp_path / "d.mail").write_bytes((SAMPLE_MESH / "friction_oscillator.mail").read_bytes())
+    body = (
+        "MA = LIRE_MAILLAGE(FORMAT='ASTER')\n"
+        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', "
+        "MODELISATION='DIS_T'))\n"
+        "CA = AFFE_CARA_ELEM(MODELE=MO, DISCRET=(_F(GROUP_MA='MASSE', CARA='K_T_D_N', "
+        "VALE=(1e-310, 1e-310, 1e-310)), _F(GROUP_MA='MASSE', CARA='M_T_D_N', VALE=2.0)))\n"
+        "KE = CALC_MATR_ELEM(MODELE=MO, CARA_ELEM=CA, OPTION='RIGI_MECA')\n"
+        "ME = CALC_MATR_ELEM(MODELE=MO, CARA_ELEM=CA, OPTION='MASS_MECA')\n"
+        "NU = NUME_DDL(MATR_RIGI=KE)\n"
+        "K = ASSE_MATRICE(MATR_ELEM=KE, NUME_DDL=NU)\n"
+        "M = ASSE_MATRICE(MATR_ELEM=ME, NUME_DDL=NU)\n"
+        "MODES = CALC_MODES(MATR_RIGI=K, MATR_MASS=M, OPTION='PLUS_PETITE', "
+        "CALC_FREQ=_F(NMAX_FREQ=3))\n"
+    )
+    report, _, _ = run_text(tmp_path, body)
+    assert report.status == "DONE", report.message
+    frequencies = report.namespace["MODES"].frequencies
+    exact = (1e-310 / 2.0) ** 0.5 / (2 * 3.141592653589793)
+    assert len(frequencies) == 3
+    assert all(abs(f - exact) <= 1e-6 * exact for f in frequencies)
