@@ -359,3 +359,16 @@ def test_a_denormal_stiffness_gives_its_modes(tmp_path):
     exact = (1e-310 / 2.0) ** 0.5 / (2 * 3.141592653589793)
     assert len(frequencies) == 3
     assert all(abs(f - exact) <= 1e-6 * exact for f in frequencies)
+
+
+def test_message_log_stops_at_32_mb_under_a_print_flood(tmp_path):
+    """code_aster's .mess of a long study takes a few MB: message.log stops
+    at 32 MB (it was 256) with a line saying so and a located error."""
+    body = 's = "x" * 1000000\nfor i in range(40):\n    print(s)\n'
+    report, _, deck = run_text(tmp_path, body)
+    assert report.status == "ERROR" and report.exit_code == 2, report.message
+    assert "message.log would exceed its cap of 32 MB" in report.message
+    assert f"{deck}:4" in report.message
+    log = tmp_path / "out" / "message.log"
+    assert log.stat().st_size < 33_000_000
+    assert "message.log stops here" in log.read_text()[-3000:]

@@ -367,7 +367,9 @@ DEFAULT_TIME_LIMIT = 3600.0  # CPU seconds of a run
 DEFAULT_CHECK_TIME_LIMIT = 60.0  # CPU seconds of ``asterlite check``
 DEFAULT_MEMORY_FRACTION = 0.5  # of the machine's memory, for a run or a check
 DEFAULT_OUTPUT_LIMIT = 2048.0  # MB: message.log and every file the deck writes
-MESSAGE_LOG_CAP = 256 * 1_000_000  # bytes of message.log at most
+# bytes of message.log at most: code_aster's .mess of a long study takes a
+# few MB; a print flood stops here with a located error, not at 256 MB
+MESSAGE_LOG_CAP = 32 * 1_000_000
 
 
 def run_limits(
