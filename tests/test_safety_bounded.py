@@ -372,3 +372,24 @@ def test_message_log_stops_at_32_mb_under_a_print_flood(tmp_path):
     log = tmp_path / "out" / "message.log"
     assert log.stat().st_size < 33_000_000
     assert "message.log stops here" in log.read_text()[-3000:]
+
+
+def test_a_sigprof_pending_when_the_timer_stops_does_not_restart_it():
+    """A SIGPROF that arrives just before the CPU timer is disarmed runs its
+    handler afterwards; re-arming the timer there left it running under the
+    default disposition, and the next tick killed the process (pytest ended
+    with status 155 = 128 + SIGPROF)."""
+    import signal
+
+    from asterlite.runtime import watchdog
+
+    with watchdog._cpu_timer(100.0):
+        pass
+    # as inside limits(), whose deadline outlives the timer's own block by a few bytecodes
+    watchdog._state.deadline = watchdog._spent() + 100.0
+    try:
+        watchdog._on_cpu_timer(signal.SIGPROF, None)
+        assert signal.getitimer(signal.ITIMER_PROF) == (0.0, 0.0)
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0.0)
+        watchdog._state.deadline = None

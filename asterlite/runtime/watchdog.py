@@ -339,6 +339,8 @@ def _next_tick() -> float:
 def _on_cpu_timer(_number, _frame) -> None:
     """SIGPROF: stop the run if its memory or its time is spent (never while
     numba compiles: neither its time nor its memory is the study's)."""
+    if not getattr(_state, "timer_armed", False):
+        return  # arrived while the timer was being disarmed: re-arming it would outlive the handler
     if getattr(_state, "memory_mb", None) is None and getattr(_state, "deadline", None) is None:
         return
     signal.setitimer(signal.ITIMER_PROF, _next_tick())
@@ -381,13 +383,22 @@ def _cpu_timer(seconds: float | None, megabytes: float | None = None):
     previous = signal.signal(signal.SIGPROF, _on_cpu_timer)
     signal.siginterrupt(signal.SIGPROF, False)  # 100 times a second: restart system calls
     previous_xcpu = signal.signal(signal.SIGXCPU, _on_cpu_exhausted) if seconds else None
+    was_armed = getattr(_state, "timer_armed", False)
+    _state.timer_armed = True
     signal.setitimer(signal.ITIMER_PROF, _next_tick())
     backstop = _set_cpu_backstop(seconds) if seconds else None
     try:
         yield
     finally:
+        # disarmed before the timer stops: a SIGPROF already pending runs its
+        # handler after setitimer(0), and must not start the timer again under
+        # the previous (often default: fatal) disposition
+        _state.timer_armed = False
         signal.setitimer(signal.ITIMER_PROF, 0.0)
         signal.signal(signal.SIGPROF, previous)
+        if was_armed:  # an enclosing run's timer goes on
+            _state.timer_armed = True
+            signal.setitimer(signal.ITIMER_PROF, _next_tick())
         _restore_cpu_backstop(backstop)
         if previous_xcpu is not None:
             signal.signal(signal.SIGXCPU, previous_xcpu)
