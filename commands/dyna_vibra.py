@@ -198,6 +198,9 @@ def run(ctx, kw):
             f"{result.info['reintegrated_steps']} steps integrated again up to a switch, "
             f"{result.info['relinearisations']} linearisations about a contact point that moved"
         )
+    # the deck's step bounds (asterlite sensitivity moves them with PAS when equal to it)
+    result.info["pas_mini"] = schema_kw.get("PAS_MINI")
+    result.info["pas_maxi"] = schema_kw.get("PAS_MAXI")
     if supports:
         result.info["mult_appui"] = supports
     if corrections:

@@ -19,6 +19,13 @@ own tolerance:
 - ``sensitive``: the spread exceeds the tolerance: whether the check passes
   depends on the last bits of the arithmetic, on any machine.
 
+A reference check that also gives ``VALE_CALC`` is judged against both
+comparisons (the worse verdict): its value may stay well inside a loose
+``PRECISION`` while moving by more than the 1e-3 of the VALE_CALC comparison,
+which then decides OK or NOOK by chance. A transient whose ``PAS_MINI`` and
+``PAS_MAXI`` equal ``PAS`` (a fixed step of an adaptive scheme) has them moved
+with it.
+
 Each run is an ordinary in-process run with the ``DYNA_VIBRA`` keyword
 replaced before validation (:class:`asterlite.runtime.session.KeywordOverride`),
 as ``asterlite converge`` does.
@@ -55,13 +62,18 @@ def moved_by_ulps(value: float, ulps: int) -> float:
 
 
 def perturbed_overrides(transients: list[dict], ulps: int) -> list[KeywordOverride]:
-    """One override per transient of the deck: its step moved by ``ulps``."""
-    return [
-        KeywordOverride(
-            t["command"], {"INCREMENT/PAS": moved_by_ulps(t["step"], ulps)}, call=t["call"]
-        )
-        for t in transients
-    ]
+    """One override per transient of the deck: its step moved by ``ulps``,
+    and its PAS_MINI / PAS_MAXI with it when the deck sets them equal to PAS
+    (a fixed step of an adaptive scheme, which PAS_MAXI < PAS would refuse)."""
+    overrides = []
+    for t in transients:
+        moved = moved_by_ulps(t["step"], ulps)
+        keywords = {"INCREMENT/PAS": moved}
+        for key in ("pas_mini", "pas_maxi"):
+            if t.get(key) is not None and t[key] == t["step"]:
+                keywords[f"SCHEMA_TEMPS/{key.upper()}"] = moved
+        overrides.append(KeywordOverride(t["command"], keywords, call=t["call"]))
+    return overrides
 
 
 @dataclass
@@ -75,27 +87,51 @@ class CheckSpread:
     values: list[float] = field(default_factory=list)  # one per perturbed run
     passes: list[bool] = field(default_factory=list)
     verdict_unperturbed: bool = False
+    # a reference check's VALE_CALC comparison (asterlite's OK tolerance, 1e-3
+    # relative by default, and the scale its error is divided by), or None
+    calc_tolerance: float | None = None
+    calc_scale: float = 1.0
+
+    def _departure(self) -> float:
+        return max(abs(v - self.value) for v in self.values) if self.values else math.nan
 
     @property
     def spread(self) -> float:
         """Largest departure from the unperturbed value, measured as the
         tolerance is (relative to the value for RELATIF)."""
-        if not self.values:
-            return math.nan
-        departure = max(abs(v - self.value) for v in self.values)
-        if self.criterion == "RELATIF":
+        departure = self._departure()
+        if self.criterion == "RELATIF" and math.isfinite(departure):
             scale = abs(self.value)
             return departure / scale if scale > 0 else (0.0 if departure == 0 else math.inf)
         return departure
 
     @property
-    def classification(self) -> str:
-        spread = self.spread
-        if not math.isfinite(spread) or self.tolerance <= 0:
+    def calc_spread(self) -> float | None:
+        """The departure measured as the VALE_CALC comparison is, or None."""
+        if self.calc_tolerance is None:
+            return None
+        return self._departure() / self.calc_scale if self.calc_scale > 0 else math.inf
+
+    @staticmethod
+    def _classify(spread: float, tolerance: float) -> str:
+        if not math.isfinite(spread) or tolerance <= 0:
             return SENSITIVE if spread and spread > 0 else STABLE
-        if spread <= STABLE_FRACTION * self.tolerance:
+        if spread <= STABLE_FRACTION * tolerance:
             return STABLE
-        return SENSITIVE if spread > self.tolerance else MARGINAL
+        return SENSITIVE if spread > tolerance else MARGINAL
+
+    @property
+    def classification(self) -> str:
+        """The worse of the verdicts against the check's own tolerance and,
+        for a reference check that also gives VALE_CALC, against the
+        VALE_CALC comparison (whose spread can decide OK / NOOK alone)."""
+        own = self._classify(self.spread, self.tolerance)
+        calc = self.calc_spread
+        if calc is None:
+            return own
+        other = self._classify(calc, self.calc_tolerance)
+        order = (STABLE, MARGINAL, SENSITIVE)
+        return max(own, other, key=order.index)
 
 
 @dataclass
@@ -123,6 +159,16 @@ def _numeric_checks(report) -> list:
     return checks
 
 
+def _check_spread(test, value: float) -> CheckSpread:
+    spread = CheckSpread(test.label, value, test.tolerance, test.criterion)
+    spread.verdict_unperturbed = test.ok
+    calc = getattr(test, "calc_comparison", None)
+    if calc is not None and test.reference != "NON_REGRESSION":
+        spread.calc_tolerance = float(calc.tolerance)
+        spread.calc_scale = float(getattr(calc, "scale", 1.0))
+    return spread
+
+
 def run_sensitivity(
     deck: Path,
     runs: int = DEFAULT_RUNS,
@@ -137,10 +183,7 @@ def run_sensitivity(
     transients = [t for t in base.transients if t["steps"] > 0]
     if not transients:
         raise ConvergeError("the deck makes no DYNA_VIBRA TRAN/GENE result (tran_gene)")
-    spreads = [
-        CheckSpread(t.label, v, t.tolerance, t.criterion, verdict_unperturbed=t.ok)
-        for t, v in _numeric_checks(base)
-    ]
+    spreads = [_check_spread(t, v) for t, v in _numeric_checks(base)]
     offsets = ulp_offsets(runs)
     failed = []
     for ulps in offsets:
@@ -174,6 +217,11 @@ def format_table(study: Sensitivity) -> str:
             f"{check.tolerance:>9.2e} {passed:>3}/{len(check.passes) + 1:<2}  "
             f"{check.classification}"
         )
+        if check.calc_spread is not None:
+            lines.append(
+                f"{'  its VALE_CALC comparison':<60} {'':>14} {check.calc_spread:>9.2e} "
+                f"{check.calc_tolerance:>9.2e}"
+            )
     for failure in study.failed_runs:
         lines.append(f"run failed: {failure}")
     sensitive = study.sensitive()
@@ -192,6 +240,7 @@ def write_json(study: Sensitivity, directory: Path) -> Path:
     for check in study.checks:
         row = asdict(check)
         row["spread"] = check.spread
+        row["calc_spread"] = check.calc_spread
         row["classification"] = check.classification
         rows.append(row)
     payload = {"deck": study.deck, "offsets_ulp": study.offsets, "checks": rows}
