@@ -22,7 +22,8 @@ from asterlite.dynamics.model import (
     ShockSpec,
     build_shocks,
     damped_step_limit,
-    modal_damping,
+    diagonal_damping_rates,
+    modal_damping_rates,
     stability_limit,
     suggested_step,
     tabulate_excitation,
@@ -485,8 +486,12 @@ def _joined(previous, new, keep):
 def linear_system(ctx, kw) -> LinearSystem:
     mass = np.array(kw["MATR_MASS"].matrix, dtype=float)
     stiffness = np.array(kw["MATR_RIGI"].matrix, dtype=float)
+    rates = None  # code_aster's AMOR_DIA (LinearSystem.damping_rates)
     if kw.get("MATR_AMOR") is not None:
         damping = np.array(kw["MATR_AMOR"].matrix, dtype=float)
+        numbering = getattr(kw["MATR_AMOR"], "numbering", None)
+        if getattr(numbering, "storage", "PLEIN") == "DIAG" and damping.shape == mass.shape:
+            rates = diagonal_damping_rates(mass, stiffness, damping)
     else:
         damping = np.zeros_like(mass)
         for occ in kw.factor("AMOR_MODAL"):
@@ -501,10 +506,11 @@ def linear_system(ctx, kw) -> LinearSystem:
                         "AMOR_REDUIT",
                         occ,
                     )
-                damping = modal_damping(mass, stiffness, ratios)
+                rates = modal_damping_rates(mass, stiffness, ratios)
+                damping = rates[:, None] * mass  # modal_damping
     if mass.shape != stiffness.shape or mass.shape != damping.shape:
         ctx.error("MATR_MASS, MATR_RIGI and the damping do not have the same size")
-    return LinearSystem(mass, stiffness, damping)
+    return LinearSystem(mass, stiffness, damping, damping_rates=rates)
 
 
 def list_values(obj) -> np.ndarray:
@@ -1091,11 +1097,13 @@ def rotating_matrices(ctx, kw, system, t0, t_end, dt):
     for name, matrix in (("MATR_GYRO", gyro), ("MATR_RIGY", rigy)):
         if matrix.shape != (n, n):
             ctx.error(f"{name} is {matrix.shape}, the system has {n} modes", name, kw)
+    # code_aster (dtmupmat): a damping given per mode (AMOR_DIA: AMOR_MODAL, or a
+    # MATR_AMOR stored DIAG) becomes M diag(c_i / m_i) there, the transpose of the
+    # diag(c_i / m_i) M its constant-speed path applies (dtmacce); a full MATR_AMOR
+    # is used as it is
     damping = system.damping
-    if not np.any(damping - np.diag(np.diag(damping))):
-        # code_aster (dtmupmat): a diagonal damping becomes M diag(c_i / m_i)
-        ratios = np.diag(damping) / np.diag(system.mass)
-        damping = system.mass * ratios[None, :]
+    if system.damping_rates is not None:
+        damping = system.mass * system.damping_rates[None, :]
     # without ACCE_ROTA code_aster takes Ω' = 0 (and then ignores MATR_RIGY)
     acceleration = kw.get("ACCE_ROTA") if kw.get("MATR_RIGY") is not None else None
     rotation = Rotation(damping, system.stiffness, gyro, rigy, kw["VITE_ROTA"], acceleration)

@@ -38,6 +38,11 @@ class LinearSystem:
     mass: np.ndarray
     stiffness: np.ndarray
     damping: np.ndarray
+    # code_aster's AMOR_DIA: c_i / m_i per mode when the damping is given per
+    # mode (AMOR_MODAL, or a MATR_AMOR stored DIAG), None for a full MATR_AMOR.
+    # At variable rotation speed code_aster damps with M diag(rates) (dtmupmat),
+    # at constant speed with diag(rates) M (dtmacce): ``damping`` is the latter.
+    damping_rates: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         self.diagonal = all(is_diagonal(m) for m in (self.mass, self.stiffness, self.damping))
@@ -105,6 +110,13 @@ def modal_damping(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray
     ω_i = sqrt(|k_ii / m_ii|), i.e. c_i = 2 ξ_i sqrt(k_i m_i) for a diagonal
     mass, each row of a full (Ritz basis) mass scaled otherwise. Missing
     ratios repeat the last one given."""
+    return modal_damping_rates(mass, stiffness, ratios)[:, None] * mass
+
+
+def modal_damping_rates(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray:
+    """The per-mode rates 2 ξ_i ω_i of :func:`modal_damping` (code_aster's
+    AMOR_DIA, dtmprep_damp): ω_i = sqrt(|k_ii / m_ii|), 1e-6 and ξ_i = 1 for
+    a massless coordinate (critically damped)."""
     n = mass.shape[0]
     xi = np.asarray(list(ratios), dtype=float)
     if xi.size == 0:
@@ -116,7 +128,16 @@ def modal_damping(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray
     tiny = np.abs(m) <= np.finfo(float).eps
     omega = np.where(tiny, 1.0e-6, np.sqrt(np.abs(k / np.where(tiny, 1.0, m))))
     xi[np.abs(m) < np.finfo(float).eps] = 1.0  # a massless coordinate is critically damped
-    return (2.0 * xi * omega)[:, None] * mass
+    return 2.0 * xi * omega
+
+
+def diagonal_damping_rates(mass: np.ndarray, stiffness: np.ndarray, damping) -> np.ndarray:
+    """code_aster's AMOR_DIA for a MATR_AMOR stored DIAG (dtmprep): c_i / m_i,
+    or 2 ω_i for a massless coordinate."""
+    m, c = np.diag(mass), np.diag(damping)
+    tiny = np.abs(m) <= np.finfo(float).eps
+    rates = modal_damping_rates(mass, stiffness, np.zeros(1))  # 2 ω_i where massless
+    return np.where(tiny, rates, c / np.where(tiny, 1.0, m))
 
 
 @dataclass
