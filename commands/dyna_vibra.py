@@ -24,6 +24,7 @@ from asterlite.dynamics.model import (
     damped_step_limit,
     diagonal_damping_rates,
     modal_damping_rates,
+    optimal_tangential_damping_v15,
     stability_limit,
     suggested_step,
     tabulate_excitation,
@@ -97,6 +98,7 @@ def run(ctx, kw):
         specs.extend(found)
         occurrences.extend([occ] * len(found))
     continue_law_states(kw, specs)
+    legacy_tangential_damping(ctx, system, specs)
     if kw.factor("VERI_CHOC"):
         check_basis_for_shocks(ctx, kw, specs, basis, system)
     shocks = build_shocks(specs, system)
@@ -481,6 +483,24 @@ def _joined(previous, new, keep):
 
 
 # ----------------------------------------------------------------------------- matrices
+
+
+def legacy_tangential_damping(ctx, system, specs) -> None:
+    """A deck of code_aster 13 to 15 giving RIGI_TAN without AMOR_TAN: the
+    default AMOR_TAN those versions computed (it can be negative), set on
+    the shock before the model is built; code_aster 17's otherwise."""
+    if not computes(ctx.session, "AMOR_TAN_DEFAULT_MAX_MODAL_MASS"):
+        return
+    for spec in specs:
+        if spec.relation != "DIS_CHOC" or spec.c_t is not None:
+            continue
+        if spec.k_t > np.finfo(float).eps:
+            spec.c_t = optimal_tangential_damping_v15(spec, system)
+            ctx.log(
+                f"{spec.name}: AMOR_TAN = {spec.c_t:.6g} as code_aster 13-15 computed it "
+                "(mode of largest generalized mass, its AMOR_DIA taken for the reduced "
+                "damping, not floored at 0)"
+            )
 
 
 def linear_system(ctx, kw) -> LinearSystem:

@@ -101,3 +101,17 @@ def test_fixed_step_bounds_move_with_the_step():
         "INCREMENT/PAS": up, "SCHEMA_TEMPS/PAS_MINI": up, "SCHEMA_TEMPS/PAS_MAXI": up,
     }  # fmt: skip
     assert adaptive.keywords == {"INCREMENT/PAS": up}
+
+
+def test_shock_statistics_are_judged_too():
+    """A shock statistic no check tests: 1e-3 relative, and 'zero' for the
+    round-off of a quantity that vanishes in exact arithmetic (tube_planar23:
+    wear powers of 1e-17 W whose relative spread is 10-75 %)."""
+    whirl = S.ShockSpread("TRAN/SUPPORT_2:wear_power", 1.439e-3, [1.420e-3, 1.445e-3])
+    assert whirl.classification == S.SENSITIVE
+    assert S.ShockSpread("T/S:max_FN", 64.0, [64.0 + 6e-8]).classification == S.STABLE
+    planar = S.ShockSpread("TRAN/SUPPORT_2:wear_power", 1.34e-17, [1.1e-17, 1.6e-17])
+    assert planar.spread > 0.1 and planar.classification == S.ZERO
+    study = S.Sensitivity("d", [1], [], [], [whirl, planar])
+    assert study.sensitive_shocks() == [whirl]
+    assert "chaotic" in S.format_table(study) and "'zero'" in S.format_table(study)

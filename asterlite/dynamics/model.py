@@ -384,6 +384,32 @@ def optimal_tangential_damping(spec: ShockSpec, rot: np.ndarray, system: LinearS
     return max(0.0, 2.0 * math.sqrt(m * (k + spec.k_t)) - 2.0 * xi * math.sqrt(k * m))
 
 
+def optimal_tangential_damping_v15(spec: ShockSpec, system: LinearSystem) -> float:
+    """The AMOR_TAN code_aster 13 to 15 computed when RIGI_TAN is given
+    without it (dtmprep_noli_choc of those versions, §3.5): the mode of
+    largest generalized mass (whatever its motion at the contact), its
+    AMOR_DIA entry (2 ξ ω for AMOR_MODAL, c/m for a MATR_AMOR stored DIAG;
+    C_ii for a full MATR_AMOR) taken in place of ξ, and no floor at 0:
+
+        C_T = 2 sqrt(m (k + K_T)) - 2 a sqrt(k m),  k = ω² m.
+
+    ``a`` being 2 ξ ω instead of ξ, any modal damping turns the value
+    negative once ω ξ exceeds about sqrt(1 + K_T / k) / 2 (the tube of
+    ../shared/tube-references: -1.2e6 N s/m where code_aster 17 takes
+    +8.0e3): a stick phase then amplifies the tangential velocity instead
+    of damping it, and friction slides at the Coulomb cap."""
+    masses = np.diag(system.mass)
+    j = int(np.argmax(masses))  # the first of equal maxima, as the strict > scan
+    m = masses[j]
+    omega2 = system.omega2[j]
+    if system.damping_rates is not None:
+        rate = system.damping_rates[j]
+    else:
+        rate = system.damping[j, j]  # code_aster's AMOR_FUL(j, j), the full matrix's term
+    k = omega2 * m
+    return 2.0 * math.sqrt(m * (k + spec.k_t)) - 2.0 * rate * math.sqrt(k * m)
+
+
 @dataclass(frozen=True)
 class StabilityLimit:
     """What sets the shortest period of code_aster's VERI_PAS estimate.

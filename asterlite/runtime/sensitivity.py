@@ -19,6 +19,12 @@ own tolerance:
 - ``sensitive``: the spread exceeds the tolerance: whether the check passes
   depends on the last bits of the arithmetic, on any machine.
 
+The shock statistics of the run's summary (each shock's peak normal force
+and wear power) are judged the same way against 1e-3, a value that no
+check tests can still be a draw of a chaotic response (stick-slip whirl);
+one that stays below 1e-12 is reported ``zero`` (round-off of a quantity
+that vanishes in exact arithmetic).
+
 A reference check that also gives ``VALE_CALC`` is judged against both
 comparisons (the worse verdict): its value may stay well inside a loose
 ``PRECISION`` while moving by more than the 1e-3 of the VALE_CALC comparison,
@@ -134,15 +140,64 @@ class CheckSpread:
         return max(own, other, key=order.index)
 
 
+# shock statistics: the relative spread is judged against asterlite's VALE_CALC
+# tolerance; a value below ZERO_FLOOR (N or W) is zero in exact arithmetic
+SHOCK_QUANTITIES = ("max_FN", "wear_power")
+SHOCK_TOLERANCE = 1.0e-3
+ZERO_FLOOR = 1.0e-12
+ZERO = "zero"
+
+
+@dataclass
+class ShockSpread:
+    """A shock statistic of the run's summary (``RunReport.shocks``) over the
+    perturbed runs: a quantity no check tests may still be a draw."""
+
+    label: str  # result/shock:quantity
+    value: float
+    values: list[float] = field(default_factory=list)
+
+    @property
+    def spread(self) -> float:
+        if not self.values:
+            return math.nan
+        departure = max(abs(v - self.value) for v in self.values)
+        scale = max(abs(self.value), *(abs(v) for v in self.values))
+        return departure / scale if scale > 0 else 0.0
+
+    @property
+    def classification(self) -> str:
+        """``zero`` when every value is below ZERO_FLOOR (round-off of a
+        quantity that vanishes in exact arithmetic: a planar orbit's wear),
+        else as a check of relative tolerance SHOCK_TOLERANCE."""
+        if max([abs(self.value), *(abs(v) for v in self.values)]) < ZERO_FLOOR:
+            return ZERO
+        return CheckSpread._classify(self.spread, SHOCK_TOLERANCE)
+
+
 @dataclass
 class Sensitivity:
     deck: str
     offsets: list[int]
     checks: list[CheckSpread]
     failed_runs: list[str] = field(default_factory=list)
+    shocks: list[ShockSpread] = field(default_factory=list)
 
     def sensitive(self) -> list[CheckSpread]:
         return [c for c in self.checks if c.classification == SENSITIVE]
+
+    def sensitive_shocks(self) -> list[ShockSpread]:
+        return [c for c in self.shocks if c.classification == SENSITIVE]
+
+
+def _shock_values(report) -> dict[str, float]:
+    out = {}
+    for shock in report.shocks:
+        for quantity in SHOCK_QUANTITIES:
+            value = shock.get(quantity)
+            if isinstance(value, int | float) and math.isfinite(value):
+                out[f"{shock.get('result')}/{shock.get('shock')}:{quantity}"] = float(value)
+    return out
 
 
 def _numeric_checks(report) -> list:
@@ -184,6 +239,7 @@ def run_sensitivity(
     if not transients:
         raise ConvergeError("the deck makes no DYNA_VIBRA TRAN/GENE result (tran_gene)")
     spreads = [_check_spread(t, v) for t, v in _numeric_checks(base)]
+    shock_spreads = {k: ShockSpread(k, v) for k, v in _shock_values(base).items()}
     offsets = ulp_offsets(runs)
     failed = []
     for ulps in offsets:
@@ -193,6 +249,9 @@ def run_sensitivity(
         if report.status not in RAN:
             failed.append(f"{ulps:+d} ulp: {report.status} {report.message}")
             continue
+        for key, value in _shock_values(report).items():
+            if key in shock_spreads:
+                shock_spreads[key].values.append(value)
         found = _numeric_checks(report)
         if len(found) != len(spreads):
             failed.append(f"{ulps:+d} ulp: {len(found)} checks instead of {len(spreads)}")
@@ -200,7 +259,7 @@ def run_sensitivity(
         for spread, (test, value) in zip(spreads, found, strict=True):
             spread.values.append(value)
             spread.passes.append(bool(test.ok))
-    return Sensitivity(str(deck), offsets, spreads, failed)
+    return Sensitivity(str(deck), offsets, spreads, failed, list(shock_spreads.values()))
 
 
 def format_table(study: Sensitivity) -> str:
@@ -208,8 +267,11 @@ def format_table(study: Sensitivity) -> str:
         f"round-off sensitivity of {study.deck}: step PAS moved by "
         + ", ".join(f"{u:+d}" for u in study.offsets)
         + " ulp",
-        f"{'check':<60} {'value':>14} {'spread':>9} {'tolerance':>9} {'pass':>6}  verdict",
     ]
+    if study.checks:
+        lines.append(
+            f"{'check':<60} {'value':>14} {'spread':>9} {'tolerance':>9} {'pass':>6}  verdict"
+        )
     for check in study.checks:
         passed = sum(check.passes) + int(check.verdict_unperturbed)
         lines.append(
@@ -222,8 +284,28 @@ def format_table(study: Sensitivity) -> str:
                 f"{'  its VALE_CALC comparison':<60} {'':>14} {check.calc_spread:>9.2e} "
                 f"{check.calc_tolerance:>9.2e}"
             )
+    if study.shocks:
+        lines.append(f"{'shock statistic':<60} {'value':>14} {'spread':>9} {'tolerance':>9}")
+        for shock in study.shocks:
+            lines.append(
+                f"{shock.label[:60]:<60} {shock.value:>14.8g} {shock.spread:>9.2e} "
+                f"{SHOCK_TOLERANCE:>9.2e}         {shock.classification}"
+            )
     for failure in study.failed_runs:
         lines.append(f"run failed: {failure}")
+    chaotic = study.sensitive_shocks()
+    if chaotic:
+        lines.append(
+            f"{len(chaotic)} shock statistic(s) move by more than 1e-3 under a last-bit change: "
+            "the response is chaotic there, judge it by its spread (or run an ensemble), "
+            "not by one run's value"
+        )
+    if any(c.classification == ZERO for c in study.shocks):
+        lines.append(
+            "'zero': round-off of a quantity that vanishes in exact arithmetic (e.g. the wear "
+            "of a planar orbit); whether another code's round-off grows there depends on the "
+            "stability of that motion, not on the step"
+        )
     sensitive = study.sensitive()
     if sensitive:
         lines.append(
@@ -245,8 +327,18 @@ def write_json(study: Sensitivity, directory: Path) -> Path:
         rows.append(row)
     payload = {"deck": study.deck, "offsets_ulp": study.offsets, "checks": rows}
     payload["failed_runs"] = study.failed_runs
+    payload["shocks"] = [
+        {**asdict(c), "spread": c.spread, "classification": c.classification} for c in study.shocks
+    ]
     path.write_text(json.dumps(payload, indent=1))
     return path
 
 
-__all__ = ["memory_cap", "run_sensitivity", "format_table", "write_json", "Sensitivity"]
+__all__ = [
+    "memory_cap",
+    "run_sensitivity",
+    "format_table",
+    "write_json",
+    "Sensitivity",
+    "ShockSpread",
+]
