@@ -9,9 +9,11 @@ every folder under asterlite/, catalogues/ and commands/ holding Python code
 is a package, with or without an ``__init__.py``.
 """
 
+import re
 from pathlib import Path
 
 from setuptools import find_namespace_packages, setup
+from setuptools.command.editable_wheel import editable_wheel
 
 ROOT = Path(__file__).resolve().parent
 # checkout folder -> the package it ships as
@@ -36,4 +38,64 @@ def package_dir() -> dict[str, str]:
     return {name: folder for folder, name in {**MAPPED, **DATA_ONLY}.items()}
 
 
-setup(packages=packages(), package_dir=package_dir())
+# --- editable installs (pip install -e .) ----------------------------------
+# setuptools maps catalogues/ -> asterlite.catalogues with a meta-path finder
+# that it appends to sys.meta_path, after the PathFinder. From the folder that
+# holds the checkout (a `git clone` makes it `asterlite/`), the PathFinder sees
+# that folder, a directory without __init__.py, as a namespace package named
+# asterlite and returns it first: `import asterlite` gave an empty module and
+# `python3 -m asterlite` failed. A second .pth file moves the finder in front
+# of the PathFinder, so that asterlite is this checkout's package from any
+# working directory, always under the same path (numba's kernel cache is
+# keyed by the sources' paths); also before PYTHONPATH: in an environment
+# holding an editable install, asterlite is that checkout (another checkout
+# gets an environment of its own). It is written only when setuptools chose
+# its finder (a layout it installs by a plain path entry needs nothing).
+FINDER_FIRST = """\
+import sys
+
+import {finder} as _finder
+
+_first = getattr(_finder, "_EditableFinder", None)
+if _first is not None:
+    _finder.install()
+    sys.meta_path[:] = [_first] + [f for f in sys.meta_path if f is not _first]
+"""
+
+
+class EditableFirst:
+    """setuptools' editable strategy, plus the module and .pth that put its
+    finder first (see above)."""
+
+    def __init__(self, strategy, name: str):
+        self.strategy, self.name = strategy, name
+
+    def __enter__(self):
+        self.strategy.__enter__()
+        return self
+
+    def __exit__(self, *exc):
+        return self.strategy.__exit__(*exc)
+
+    def __call__(self, wheel, files, mapping):
+        self.strategy(wheel, files, mapping)
+        finder = self.strategy.template_vars()[0]
+        module = "__editable___" + re.sub(r"\W", "_", self.name) + "_first"
+        wheel.writestr(f"{module}.py", FINDER_FIRST.format(finder=finder))
+        # .pth files are read in name order: this one after setuptools' own
+        wheel.writestr(f"__editable__.{self.name}.zz-first.pth", f"import {module}\n")
+
+
+class EditableWheel(editable_wheel):
+    def _select_strategy(self, name, tag, build_lib):
+        strategy = super()._select_strategy(name, tag, build_lib)
+        if hasattr(strategy, "template_vars"):  # setuptools' meta-path finder
+            return EditableFirst(strategy, name)
+        return strategy
+
+
+setup(
+    packages=packages(),
+    package_dir=package_dir(),
+    cmdclass={"editable_wheel": EditableWheel},
+)

@@ -16,7 +16,8 @@ Keyword catalogues live in ``asterlite.catalogues`` (one file per command) and
 command implementations in ``asterlite.commands`` (one file per command).
 
 From Python (``docs/api.md``): ``asterlite.run(deck, output=None, **variables)``,
-``asterlite.check(deck)`` and ``asterlite.load("results.h5")``, defined in
+``asterlite.check(deck)``, ``asterlite.load("results.h5")`` and
+``asterlite.sample(name)`` (a sample's folder), defined in
 :mod:`asterlite.api` and imported on first use, so that ``import asterlite``
 (and ``asterlite check``) stays free of numpy and numba.
 """
@@ -24,7 +25,7 @@ From Python (``docs/api.md``): ``asterlite.run(deck, output=None, **variables)``
 __version__ = "0.1.0"
 
 # the Python API, loaded from asterlite.api when first asked for
-_API = ("run", "check", "load", "RunResult", "CheckResult", "Check", "DeckNotFound")
+_API = ("run", "check", "load", "sample", "RunResult", "CheckResult", "Check", "DeckNotFound")
 
 
 def __getattr__(name: str):

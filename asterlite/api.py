@@ -154,6 +154,25 @@ class RunResult:
         """Per shock: impacts, peak and mean normal force, wear power."""
         return self.report.shocks
 
+    @property
+    def verdicts(self) -> dict[str, str]:
+        """The two kinds of comparison counted apart: ``{"VALE_REFE": "4/4",
+        "VALE_CALC": "0/4"}`` (``"-"`` when no check makes that kind).
+        VALE_REFE checks compare with an independent reference; VALE_CALC ones
+        with the deck's own computed values (non-regression), which a run with
+        other variables (``MU=0.1``) is expected to fail."""
+        from asterlite.runtime.verdicts import CALC, REFE, verdict_text, verdicts
+
+        counts = verdicts(self.report.tests)
+        return {REFE: verdict_text(counts, REFE), CALC: verdict_text(counts, CALC)}
+
+    @property
+    def note(self) -> str:
+        """Why a run with deck variables replaced is NOOK when its VALE_CALC
+        checks fail (they are the deck's results for its own values, named
+        here), else ""."""
+        return (getattr(self.report, "extras", None) or {}).get("note", "")
+
     def __repr__(self) -> str:
         passed = sum(c.ok for c in self.checks)
         names = ", ".join(self.concepts) or "none"
@@ -210,6 +229,20 @@ def check(deck: str | Path) -> CheckResult:
     report = run_deck(find_deck(deck), check_only=True)
     errors = list(getattr(report, "errors", None) or ([report.message] if report.message else []))
     return CheckResult(report.deck, report.status, report.message, errors)
+
+
+def sample(name: str) -> Path:
+    """The folder of a sample shipped with asterlite (``friction_oscillator``,
+    ``tube_supports``): ``asterlite.run(asterlite.sample("friction_oscillator"))``
+    runs it from any working directory."""
+    import importlib.resources
+
+    root = Path(str(importlib.resources.files("asterlite.samples")))
+    folder = root / name
+    if not folder.is_dir():
+        known = sorted(p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith("_"))
+        raise DeckNotFound(f"no sample {name!r} (samples: {', '.join(known)})")
+    return folder
 
 
 def load(path: str | Path, name: str | None = None, *, raw: bool = False):
@@ -315,4 +348,5 @@ __all__ = [
     "find_deck",
     "load",
     "run",
+    "sample",
 ]

@@ -1,4 +1,5 @@
-"""Command-line interface: ``asterlite run | check | corpus | sweep | plot | converge | warmup``.
+"""Command-line interface: ``asterlite run | check | corpus | sweep | plot | report |
+converge | sensitivity | port | warmup``.
 
 Exit status: 0 when every TEST_* check is OK, or the deck ran to its end
 without any check (DONE), or ``check`` finds no error; 1 when a check is
@@ -36,7 +37,8 @@ def _run(args) -> int:
         deck,
         output,
         echo=not args.quiet,
-        save_results=args.save_results,
+        save_results=args.save_results or args.report,  # the report draws the histories
+        report_page=args.report,
         time_limit=args.time_limit,
         memory_limit=args.memory_limit,
         output_limit=args.output_limit,
@@ -47,7 +49,36 @@ def _run(args) -> int:
         print(f"output folder: {output}")
     elif report.status not in ("PASS", "DONE"):
         print(f"{report.deck}: {report.status} {report.message}", file=sys.stderr)
+    if args.report:
+        _say_report(output)
     return report.exit_code
+
+
+def _say_report(output: Path) -> None:
+    """Where ``asterlite run --report`` put the page (incomplete/ for a run
+    that did not complete)."""
+    from asterlite.report import REPORT_NAME
+
+    found = sorted(output.glob(f"incomplete*/{REPORT_NAME}"), key=lambda p: p.stat().st_mtime)
+    page = output / REPORT_NAME
+    if page.is_file() and (not found or page.stat().st_mtime >= found[-1].stat().st_mtime):
+        print(f"report: {page}")
+    elif found:
+        print(f"report: {found[-1]}")
+    else:
+        print("report: not written (see message.log)", file=sys.stderr)
+
+
+def _report(args) -> int:
+    from asterlite.report import ReportError, write_report
+
+    try:
+        page = write_report(Path(args.folder), Path(args.output) if args.output else None)
+    except ReportError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    print(f"report: {page}")
+    return 0
 
 
 def _check(args) -> int:
@@ -255,16 +286,30 @@ def _port(args) -> int:
         Path(args.output).write_text(result.text, encoding="utf-8")
         print("\n".join(changes) if changes else f"{deck}: nothing to port")
         print(f"ported deck: {args.output}")
-    else:
-        sys.stdout.write(result.text)
+    else:  # UTF-8 whatever the terminal's locale, as with -o
+        _write_utf8(result.text)
         for line in changes:
             print(line, file=sys.stderr)
     return 2 if result.skipped else 0
 
 
+def _write_utf8(text: str) -> None:
+    sys.stdout.flush()
+    binary = getattr(sys.stdout, "buffer", None)
+    if binary is None:  # a text stream in this process (a test's): no bytes to choose
+        sys.stdout.write(text)
+        return
+    binary.write(text.encode("utf-8"))
+    binary.flush()
+
+
 def _warmup(args) -> int:
     from asterlite.dynamics import warmup
+    from asterlite.isolation import protect_spawned_workers
 
+    # the worker pool's `python -c` would import from the current folder (set
+    # here, not in asterlite.dynamics, whose sources name the kernel cache)
+    protect_spawned_workers()
     return warmup.main(jobs=args.jobs, verbose=args.verbose)
 
 
@@ -284,6 +329,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--save-results",
         action="store_true",
         help="save every tran_gene result to OUTDIR/results.h5 (layout: docs/results.md)",
+    )
+    run.add_argument(
+        "--report",
+        action="store_true",
+        help="write OUTDIR/report.html, a page with the checks, timings, shocks and plots "
+        "(saves results.h5 too)",
     )
     run.add_argument(
         "--no-progress", action="store_true", help="no progress bars (off anyway off a terminal)"
@@ -430,6 +481,13 @@ def build_parser() -> argparse.ArgumentParser:
     )
     warm.add_argument("-v", "--verbose", action="store_true", help="each kernel's compile time")
     warm.set_defaults(handler=_warmup)
+
+    page = commands.add_parser(
+        "report", help="write the HTML report of a run from its output folder"
+    )
+    page.add_argument("folder", help="a run's output folder (holding summary.json)")
+    page.add_argument("-o", "--output", help="the page to write (default FOLDER/report.html)")
+    page.set_defaults(handler=_report)
 
     plot = commands.add_parser("plot", help="plot a saved transient result (HDF5)")
     plot.add_argument("result", help="HDF5 result file")

@@ -20,6 +20,10 @@ import time
 from contextlib import contextmanager
 
 DELAY = 1.0  # seconds before a bar appears
+# the size of the screen when the terminal does not say: a pseudo-terminal
+# opened by script, docker -t or a CI runner often reports 0 x 0, from which
+# tqdm's own measure makes -1 x -1, and it then draws nothing at all
+DEFAULT_COLUMNS, DEFAULT_ROWS = 80, 24
 _enabled: bool | None = None  # None: decide from the terminal
 
 
@@ -35,6 +39,38 @@ def wanted() -> bool:
     if os.environ.get("ASTERLITE_PROGRESS", "1") == "0":
         return False
     return sys.stderr.isatty()
+
+
+def screen(stream=None) -> tuple[int, int]:
+    """(columns, rows) to draw a bar in on ``stream`` (standard error): the
+    terminal's, else ``COLUMNS``/``LINES``, else 80 x 24 (a terminal that
+    reports 0 x 0 is no reason to draw nothing). tqdm is given them instead
+    of measuring the terminal itself (``dynamic_ncols``)."""
+    stream = stream or sys.stderr
+    try:
+        size = os.get_terminal_size(stream.fileno())
+        width, height = size.columns, size.lines
+    except (AttributeError, OSError, ValueError):
+        width = height = 0
+    return (
+        width if width > 0 else _environment_size("COLUMNS", DEFAULT_COLUMNS),
+        height if height > 0 else _environment_size("LINES", DEFAULT_ROWS),
+    )
+
+
+def _environment_size(name: str, default: int) -> int:
+    try:
+        value = int(os.environ.get(name, ""))
+    except ValueError:
+        return default
+    return value if value > 0 else default
+
+
+def _fit(bar, stream) -> None:
+    """Size a tqdm bar to the screen, one column short of the width (tqdm's
+    own margin, so that the cursor never wraps)."""
+    width, height = screen(stream)
+    bar.ncols, bar.nrows = max(width - 1, 10), height
 
 
 class NoBar:
@@ -58,23 +94,27 @@ class TimeBar:
 
         self.t0 = t0
         self.started = time.perf_counter()
+        self.stream = stream or sys.stderr
         self.bar = tqdm(
             total=max(t_end - t0, 0.0),
             desc=label,
             delay=DELAY,
-            file=stream or sys.stderr,
+            file=self.stream,
             leave=False,
             mininterval=0.0,  # the loop pauses only every quarter second anyway
-            dynamic_ncols=True,
+            ncols=DEFAULT_COLUMNS,  # then the screen's, measured at each update
+            nrows=DEFAULT_ROWS,
             # simulated time since the start; the postfix (", N steps/s") follows
             bar_format=(
                 "{desc}: {percentage:3.0f}%|{bar}| {n:.4g}/{total:.4g} s simulated"
                 "{postfix} [{elapsed}<{remaining}]"
             ),
         )
+        _fit(self.bar, self.stream)
 
     def update(self, t: float, steps: int) -> None:
         rate = steps / max(time.perf_counter() - self.started, 1.0e-9)
+        _fit(self.bar, self.stream)
         self.bar.set_postfix_str(f"{rate:,.0f} steps/s", refresh=False)
         self.bar.update(max(t - self.t0, 0.0) - self.bar.n)
 
@@ -88,11 +128,19 @@ class CountBar:
     def __init__(self, label: str, total: int, stream=None):
         from tqdm import tqdm
 
+        self.stream = stream or sys.stderr
         self.bar = tqdm(
-            total=total, desc=label, delay=DELAY, file=stream or sys.stderr, dynamic_ncols=True
+            total=total,
+            desc=label,
+            delay=DELAY,
+            file=self.stream,
+            ncols=DEFAULT_COLUMNS,
+            nrows=DEFAULT_ROWS,
         )
+        _fit(self.bar, self.stream)
 
     def update(self, done: int, last: str = "") -> None:
+        _fit(self.bar, self.stream)
         self.bar.set_postfix_str(last, refresh=False)
         self.bar.update(done - self.bar.n)
 

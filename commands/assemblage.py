@@ -56,7 +56,10 @@ def run(ctx, kw):
         if occ.get("OPTION", "CHAR_MECA") != "CHAR_MECA":
             ctx.unsupported(f"ASSEMBLAGE VECT_ASSE OPTION={occ['OPTION']!r}", "OPTION", occ)
         terms = []
-        for load in as_tuple(occ.get("CHARGE")):
+        # code_aster (assemblage_ops) assembles the call's CHARGE and the
+        # occurrence's, each load once
+        occurrence_loads = [c for c in as_tuple(occ.get("CHARGE")) if c not in loads]
+        for load in loads + occurrence_loads:
             try:
                 terms.extend(load_terms(load, characteristics, materials))
             except (ElementError, ValueError) as exc:

@@ -37,7 +37,8 @@ def _nodal_values(ctx, result, kw) -> np.ndarray:
     """(n_orders, n_dofs) displacements of the result."""
     fields = getattr(result, "fields", None)
     if isinstance(fields, dict) and "DEPL" in fields:
-        return np.asarray(fields["DEPL"], dtype=float)
+        depl = np.asarray(fields["DEPL"])
+        return depl if np.iscomplexobj(depl) else depl.astype(float)  # dyna_harmo: complex
     shapes = getattr(result, "shapes", None)
     if shapes is not None:
         return np.asarray(shapes, dtype=float).T
@@ -45,19 +46,53 @@ def _nodal_values(ctx, result, kw) -> np.ndarray:
 
 
 def _accelerations(ctx, result, values: np.ndarray) -> np.ndarray | None:
-    """(n_orders, n_dofs) ACCE of a dyna_trans (its beam forces include the
-    inertia M_e a_e, as code_aster's); None for static and modal results.
-    A dyna_trans without ACCE gets zero accelerations, as in code_aster."""
-    if "dyna_trans" not in getattr(result, "aster_types", ()):
+    """(n_orders, n_dofs) ACCE of a dyna_trans or a dyna_harmo (their beam
+    forces include the inertia M_e a_e, as code_aster's); None for static and
+    modal results. A result without ACCE gets zero accelerations, as in
+    code_aster."""
+    kind = next(
+        (t for t in ("dyna_trans", "dyna_harmo") if t in getattr(result, "aster_types", ())), None
+    )
+    if kind is None:
         return None
     acce = result.fields.get("ACCE")
     if acce is None:
-        ctx.log("CALC_CHAMP: the dyna_trans has no ACCE field, inertia forces taken as 0")
+        ctx.log(f"CALC_CHAMP: the {kind} has no ACCE field, inertia forces taken as 0")
         return None
-    acce = np.asarray(acce, dtype=float)
+    acce = np.asarray(acce)
+    acce = acce if np.iscomplexobj(acce) else acce.astype(float)
     if acce.shape != values.shape:
         ctx.error(f"ACCE has shape {acce.shape}, DEPL {values.shape}", "RESULTAT", None)
     return acce
+
+
+def _beam_fields(model, characteristics, materials, numbering, beams, values, elno, acce):
+    """beam_element_fields; complex states (a dyna_harmo) give complex fields,
+    computed from their real and imaginary parts (the fields are linear in
+    the displacements and accelerations)."""
+    if not np.iscomplexobj(values) and not np.iscomplexobj(acce):
+        return beam_element_fields(
+            model, characteristics, materials, numbering, beams, values, elno, accelerations=acce
+        )
+    parts = [
+        beam_element_fields(
+            model,
+            characteristics,
+            materials,
+            numbering,
+            beams,
+            np.ascontiguousarray(part(values)),
+            elno,
+            accelerations=None if acce is None else np.ascontiguousarray(part(acce)),
+        )
+        for part in (np.real, np.imag)
+    ]
+    return {
+        name: ElementField(
+            field.name, field.cells, field.components, field.values + 1j * parts[1][name].values
+        )
+        for name, field in parts[0].items()
+    }
 
 
 def _context(ctx, kw, result):
@@ -176,7 +211,7 @@ def run(ctx, kw):
         values = _nodal_values(ctx, result, kw)
         accelerations = _accelerations(ctx, result, values)
         try:
-            fields = beam_element_fields(
+            fields = _beam_fields(
                 model,
                 characteristics,
                 materials,
@@ -184,7 +219,7 @@ def run(ctx, kw):
                 beams,
                 values,
                 elno,
-                accelerations=accelerations,
+                accelerations,
             )
         except (ElementError, ValueError, KeyError) as exc:
             ctx.error(str(exc), "CONTRAINTE", kw)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
-from asterlite.concepts.modes import GeneralizedMatrix
+from asterlite.concepts.modes import ComplexGeneralizedMatrix, GeneralizedMatrix
 
 
 def _term(ctx, occ, keyword: str):
@@ -62,5 +62,7 @@ def run(ctx, kw):
             materials=first.materials,
         )
     if keyword == "COMB_C":
-        ctx.unsupported("COMB_MATR_ASSE/COMB_C of generalized matrices", keyword, kw)
+        return ComplexGeneralizedMatrix(
+            numbering=first.numbering, matrix=np.asarray(total, dtype=complex), kind=first.kind
+        )
     return GeneralizedMatrix(numbering=first.numbering, matrix=total, kind=first.kind)

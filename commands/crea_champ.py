@@ -92,6 +92,8 @@ def _nodal_only(ctx, kw):
     type_cham = str(kw.get("TYPE_CHAM") or "")
     if kw.get("OPERATION") == "EXTR" and _is_element_type(type_cham) and type_cham.endswith("_R"):
         return  # element fields a result stores (CALC_CHAMP)
+    if kw.get("OPERATION") == "EXTR" and type_cham.startswith("NOEU_") and type_cham.endswith("_C"):
+        return  # complex nodal fields of a dyna_harmo or a mode_meca_c
     if not (type_cham.startswith("NOEU_") and type_cham.endswith("_R")):
         ctx.unsupported(
             f"CREA_CHAMP {kw.get('OPERATION')} on TYPE_CHAM={type_cham!r} (nodal real fields only)",
@@ -122,6 +124,13 @@ def _extr(ctx, kw):
             selected = _selected_state(ctx, kw, access, values)
     except FieldError as exc:
         ctx.error(str(exc), "RESULTAT", kw)
+    complex_type = str(kw.get("TYPE_CHAM")).endswith("_C")
+    if np.iscomplexobj(selected) != complex_type:
+        # code_aster checks the field's scalar type against TYPE_CHAM
+        kind = "complex" if np.iscomplexobj(selected) else "real"
+        ctx.error(
+            f"the {kw['NOM_CHAM']} field is {kind}: TYPE_CHAM does not match", "TYPE_CHAM", kw
+        )
     if not element:
         return NodalField(numbering=numbering, values=selected)
     from asterlite.concepts.modes import FieldOnElements
@@ -176,6 +185,8 @@ def _selected_state(ctx, kw, access, values) -> np.ndarray:
     from asterlite.modal.fields import element_extreme, extreme_over, interpolate, match_real
 
     if kw.get("TYPE_MAXI") is not None:
+        if np.iscomplexobj(values):
+            ctx.unsupported("TYPE_MAXI over complex fields", "TYPE_MAXI", kw)
         rows = _extr_rows(ctx, kw, access, values.shape[0])
         params = _extreme_params(kw, access, rows)
         reduce = element_extreme if values.ndim > 2 else extreme_over
@@ -190,7 +201,7 @@ def _selected_state(ctx, kw, access, values) -> np.ndarray:
         k = match_real(access["FREQ"], float(kw["FREQ"]), precision, criterion)
     else:
         k = _extr_index(ctx, kw, access)
-    return np.array(values[k], dtype=float)
+    return np.array(values[k], dtype=np.result_type(values, float))
 
 
 def _extr_index(ctx, kw, access) -> int:
@@ -300,10 +311,44 @@ def _comb(ctx, kw):
     return NodalField(numbering=numbering, values=values)
 
 
+def _c2r(ctx, kw):
+    """C2R (code_aster's chreco): the real part, imaginary part, modulus or
+    phase (degrees, atan2) of a complex nodal field."""
+    field = kw["CHAM_GD"]
+    if not isinstance(field, NodalField):
+        ctx.unsupported("CREA_CHAMP C2R of a field by element", "CHAM_GD", kw)
+    values = np.asarray(field.values)
+    part = kw["PARTIE"]
+    if part == "REEL":
+        out = values.real
+    elif part == "IMAG":
+        out = values.imag if np.iscomplexobj(values) else np.zeros(values.shape)
+    elif part == "MODULE":
+        out = np.abs(values)
+    else:
+        out = (
+            np.degrees(np.arctan2(values.imag, values.real))
+            if np.iscomplexobj(values)
+            else (np.degrees(np.arctan2(0.0, values)))
+        )
+    return NodalField(numbering=field.numbering, values=np.array(out, dtype=float))
+
+
+def _r2c(ctx, kw):
+    """R2C: a real nodal field as a complex one (zero imaginary part)."""
+    field = kw["CHAM_GD"]
+    if not isinstance(field, NodalField):
+        ctx.unsupported("CREA_CHAMP R2C of a field by element", "CHAM_GD", kw)
+    return NodalField(numbering=field.numbering, values=np.asarray(field.values).astype(complex))
+
+
 def run(ctx, kw):
     operation = kw.get("OPERATION")
     if operation == "AFFE":
         return _affe(ctx, kw)
+    if operation in ("C2R", "R2C"):
+        kw.mark_used("TYPE_CHAM")  # the output type follows from the operation
+        return _c2r(ctx, kw) if operation == "C2R" else _r2c(ctx, kw)
     handlers = {"EXTR": _extr, "ASSE": _asse, "COMB": _comb}
     if operation in handlers:
         _nodal_only(ctx, kw)

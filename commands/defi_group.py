@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.errors import missing_name
 from asterlite.fem.selection import (
     as_scalar,
     as_tuple,
@@ -212,7 +213,7 @@ def _crea_group_no(ctx, mesh, occ) -> None:
         # one node group per cell group, named like it (or by NOM, one to one)
         for gname, new_name in zip(cell_groups, names or cell_groups, strict=True):
             if gname not in mesh.cell_groups:
-                ctx.error(f"the mesh has no cell group {gname!r}", "GROUP_MA", occ)
+                ctx.error(missing_name("cell group", gname, mesh.cell_groups), "GROUP_MA", occ)
             if new_name in mesh.node_groups:
                 ctx.error(f"the node group {new_name!r} already exists", "GROUP_MA", occ)
             mesh.node_groups[new_name] = mesh.nodes_of_cells(mesh.cell_groups[gname])

@@ -36,7 +36,7 @@ import numpy as np
 
 from asterlite.catalog import load_catalogue, validate
 from asterlite.concepts.assembly import MechanicalLoad, NodalField
-from asterlite.errors import AsterliteError
+from asterlite.errors import AsterliteError, missing_name
 from asterlite.fem.selection import as_tuple
 from asterlite.lang.values import CallSite
 from asterlite.modal import frequency_band
@@ -338,7 +338,7 @@ def _node_indices(ctx, mesh, selector, names, occ) -> list[int]:
     for name in names:
         if selector == "GROUP_NO":
             if name not in mesh.node_groups:
-                ctx.error(f"no node group {name!r} in the mesh", "GROUP_NO", occ)
+                ctx.error(missing_name("node group", name, mesh.node_groups), "GROUP_NO", occ)
             nodes.extend(int(n) for n in mesh.node_groups[name])
         else:
             index = mesh.find_node(name)

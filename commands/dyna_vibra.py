@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from asterlite.concepts.titles import default_title, unique_titles
 from asterlite.concepts.transient import ShockHistory, TranGene
 from asterlite.dynamics import contact as C
 from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row, integrate_film
@@ -31,7 +32,7 @@ from asterlite.dynamics.model import (
 )
 from asterlite.dynamics.shock_fields import ArchivedFields, column_difference
 from asterlite.dynamics.shock_fields import column as archived_column
-from asterlite.errors import NumericalError
+from asterlite.errors import NumericalError, missing_name
 from asterlite.legacy.v15 import computes
 from asterlite.modal.seismic import SeismicError, combined_static_shape
 
@@ -47,6 +48,10 @@ ROTATING_SCHEMES = tuple(SCHEMES)
 
 
 def run(ctx, kw):
+    if kw.get("TYPE_CALCUL") == "HARM":
+        from asterlite.commands.dyna_vibra_harm import run_harmonic
+
+        return run_harmonic(ctx, kw)
     if kw.get("BASE_CALCUL") == "PHYS" and kw.get("TYPE_CALCUL") == "TRAN":
         from asterlite.commands.dyna_vibra_phys import run_physical
 
@@ -94,9 +99,11 @@ def run(ctx, kw):
             specs.append(nonlinearity_spec(ctx, kw, occ, basis, system.n_modes, len(specs) + 1))
             occurrences.append(occ)
             continue
-        found = shock_specs(ctx, occ, basis, system.n_modes)
+        found = shock_specs(ctx, occ, basis, system.n_modes, first=len(specs) + 1)
         specs.extend(found)
         occurrences.extend([occ] * len(found))
+    for spec, title in zip(specs, unique_titles([s.name for s in specs]), strict=True):
+        spec.name = title  # one name per shock (asterlite.concepts.titles)
     continue_law_states(kw, specs)
     legacy_tangential_damping(ctx, system, specs)
     if kw.factor("VERI_CHOC"):
@@ -598,7 +605,9 @@ def continue_law_states(kw, specs) -> None:
             spec.law_state = np.array(values)
 
 
-def shock_specs(ctx, occ, basis, n_modes) -> list[ShockSpec]:
+def shock_specs(ctx, occ, basis, n_modes, first: int = 1) -> list[ShockSpec]:
+    """The shocks of one DIS_CHOC occurrence; ``first``: the rank of its
+    first among the call's nonlinearities (code_aster's default INTITULE)."""
     relation = occ.get("RELATION")
     if relation != "DIS_CHOC":
         ctx.unsupported(f"COMPORTEMENT RELATION={relation!r} (only DIS_CHOC)", "RELATION", occ)
@@ -631,7 +640,7 @@ def shock_specs(ctx, occ, basis, n_modes) -> list[ShockSpec]:
             mu_dyn = mu_stat = float(occ["COULOMB"])
         elif friction == "COULOMB_STAT_DYNA":
             mu_dyn, mu_stat = float(occ["COULOMB_DYNA"]), float(occ["COULOMB_STAT"])
-        name = occ.get("INTITULE") or f"DIS_CHOC{index + 1:d}"
+        name = occ.get("INTITULE") or default_title("DIS_CHOC", first + index)
         if occ.get("INTITULE") and len(pairs) > 1:
             name = f"{occ['INTITULE']}_{index + 1}"
         spec = ShockSpec(
@@ -699,7 +708,7 @@ def node_pairs(ctx, occ, mesh) -> list[tuple[int, int | None]]:
     cells = []
     for group in as_tuple(occ.get("GROUP_MA")):
         if group not in mesh.cell_groups:
-            ctx.error(f"no cell group {group!r} in the mesh", "GROUP_MA", occ)
+            ctx.error(missing_name("cell group", group, mesh.cell_groups), "GROUP_MA", occ)
         cells.extend(int(c) for c in mesh.cell_groups[group])
     for name in as_tuple(occ.get("MAILLE")):
         cells.append(mesh.cell_index[name])
@@ -726,7 +735,7 @@ def single_node(ctx, occ, mesh, node_kw, group_kw) -> int | None:
     if occ.get(group_kw) is not None:
         group = occ[group_kw]
         if group not in mesh.node_groups:
-            ctx.error(f"no node group {group!r} in the mesh", group_kw, occ)
+            ctx.error(missing_name("node group", group, mesh.node_groups), group_kw, occ)
         nodes = mesh.node_groups[group]
         if len(nodes) != 1:
             ctx.error(
@@ -1268,7 +1277,7 @@ def support_shape(ctx, kw, occ) -> np.ndarray:
     nodes = []
     for group in as_tuple(occ.get("GROUP_NO")):
         if group not in mesh.node_groups:
-            ctx.error(f"no node group {group!r} in the mesh", "GROUP_NO", occ)
+            ctx.error(missing_name("node group", group, mesh.node_groups), "GROUP_NO", occ)
         nodes.extend(int(n) for n in mesh.node_groups[group])
     for name in as_tuple(occ.get("NOEUD")):
         index = mesh.find_node(name)

@@ -32,7 +32,7 @@ from asterlite.concepts.assembly import NodalField
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.modes import FieldOnElements, ModeResult
 from asterlite.concepts.table import Table
-from asterlite.errors import CommandError
+from asterlite.errors import CommandError, missing_name
 from asterlite.io.med_writer import (
     ElementSeries,
     MedWriteError,
@@ -168,7 +168,7 @@ def chosen_cells(ctx, kw, mesh, carried) -> np.ndarray:
     wanted: list[int] = []
     for group in as_tuple(kw.get("GROUP_MA")):
         if group not in mesh.cell_groups:
-            ctx.error(f"mesh has no cell group {group!r}", "GROUP_MA", kw)
+            ctx.error(missing_name("cell group", group, mesh.cell_groups), "GROUP_MA", kw)
         wanted.extend(int(c) for c in mesh.cell_groups[group])
     for cell_name in as_tuple(kw.get("MAILLE")):
         found = mesh.find_cell(str(cell_name))

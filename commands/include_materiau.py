@@ -80,10 +80,11 @@ def _context(ctx, kw) -> dict:
 
 
 def _evaluate(ctx, path, namespace) -> dict:
+    from asterlite.io.input_files import read_deck_text
     from asterlite.lang import Evaluator, parse_deck
 
-    text = path.read_text(encoding="utf-8", errors="replace")
-    module = parse_deck(text, str(path), private_names=True)
+    text = read_deck_text(path, "material file")
+    module = parse_deck(text, str(path), private_names=True, study_file=True)
     Evaluator(namespace, module_loader=ctx.session.load_module).run(module)
     keywords = namespace.get("motscles")
     if not isinstance(keywords, dict):

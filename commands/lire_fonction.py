@@ -4,19 +4,20 @@ The file on logical unit UNITE is cut into blocks of consecutive numeric
 lines (any other line, or a blank one, ends a block); INDIC_PARA and
 INDIC_RESU give (block, column), both 1-based. Fortran exponents
 (``1.0D+03``) are accepted. TYPE='FONCTION_C' reads REEL_IMAG or
-MODULE_PHASE (degrees) columns. A NaN or an infinity in a column read is
-refused, naming the file, its unit, the block and the line.
+MODULE_PHASE (degrees) columns. A NaN or an infinity anywhere in a line of
+numbers, however spelt (``nan``, ``1.#QNAN``, ``-1.#IND``, ``1.E+999``...),
+is refused, naming the file, its unit, the block, the line and the column.
 """
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import numpy as np
 from asterlite.commands.defi_fonction import check_abscissas
 
 from asterlite.concepts.function import ComplexFunction, Function
+from asterlite.io.non_finite import NonFiniteNumber, finite_float, is_number_token
 
 
 class Row(list):
@@ -28,19 +29,26 @@ class Row(list):
 
 
 class NonFiniteValue(ValueError):
-    """A column read holds a NaN or an infinity (``nan``, ``inf``, ``1.E+999``)."""
+    """A NaN or an infinity in the file (``nan``, ``1.#QNAN``, ``1.E+999``...)."""
+
+
+def file_lines(text: str) -> list[str]:
+    """The lines as code_aster's ``for line in open(...)`` cuts them: at
+    ``\\n``, ``\\r\\n`` and ``\\r`` only (``str.splitlines`` also cuts at
+    form feeds and other separators, which ``split()`` reads as blanks)."""
+    return text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
 
 
 def numeric_blocks(text: str, separator: str | None = None) -> list[list[Row]]:
-    """Blocks of rows of floats; a line that is not all numbers closes a block."""
-    text = re.sub(r"(\d\.?)[dD]([+-]?\d)", r"\1E\2", text)
+    """Blocks of rows of floats; a line that is not all numbers closes a block,
+    as in code_aster's lire_blocs. A line of numbers holding a NaN or an
+    infinity, however spelt, is refused (NonFiniteValue): code_aster would
+    keep a NaN, or end the block at ``1.#QNAN`` and drop what follows."""
     blocks, current = [], []
-    for number, line in enumerate(text.splitlines(), start=1):
-        items = line.split(separator) if separator else line.split()
-        try:
-            row = Row([float(item) for item in items if item.strip()], number)
-        except ValueError:
-            row = []
+    for number, line in enumerate(file_lines(text), start=1):
+        fields = line.split(separator) if separator else line.split()
+        items = [item for item in fields if item.strip()]
+        row = _numbers(items, number, len(blocks) + 1)
         if row:
             current.append(row)
         elif current:
@@ -49,6 +57,29 @@ def numeric_blocks(text: str, separator: str | None = None) -> list[list[Row]]:
     if current:
         blocks.append(current)
     return blocks
+
+
+def _numbers(items: list[str], line: int, block: int) -> Row | None:
+    """The row of numbers ``items`` spell, or None when one is not a number
+    (the line ends a block). NonFiniteValue for a line of numbers with a NaN
+    or an infinity."""
+    try:
+        return Row([finite_float(item, fortran_exponent=True) for item in items], line)
+    except NonFiniteNumber:
+        if not all(is_number_token(item) for item in items):
+            return None  # text mentioning "inf", say: a block separator
+        column, error = next(_non_finite_items(items))
+        raise NonFiniteValue(f"block {block}, line {line}, column {column}: {error}") from None
+    except ValueError:
+        return None
+
+
+def _non_finite_items(items: list[str]):
+    for column, item in enumerate(items, start=1):
+        try:
+            finite_float(item, fortran_exponent=True)
+        except NonFiniteNumber as error:
+            yield column, error
 
 
 def column(blocks, indices, what: str) -> np.ndarray:
@@ -61,17 +92,7 @@ def column(blocks, indices, what: str) -> np.ndarray:
         raise ValueError(
             f"{what}: column {column_no} does not exist (block {block_no} has {width})"
         )
-    values = np.array([r[column_no - 1] for r in rows])
-    bad = np.flatnonzero(~np.isfinite(values))
-    if bad.size:
-        row = rows[int(bad[0])]
-        line = getattr(row, "line", 0)
-        where = f"block {block_no}, line {line}" if line else f"block {block_no}"
-        raise NonFiniteValue(
-            f"{what}: {where}, column {column_no} holds {values[bad[0]]!r}: "
-            "a finite number is expected"
-        )
-    return values
+    return np.array([r[column_no - 1] for r in rows])
 
 
 def run(ctx, kw):
@@ -84,14 +105,14 @@ def run(ctx, kw):
         ctx.error(f"file {path} (unit {kw['UNITE']}) does not exist", "UNITE", kw)
     separator = kw.get("SEPARATEUR")
     separator = None if separator in (None, "None", " ", "") else separator
-    from asterlite.io.input_files import InputTooLargeError, read_bounded_text
+    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     try:  # rows of Python floats: about 30 bytes of memory per byte of text
         text = read_bounded_text(path, "function file", 30)
-    except InputTooLargeError as error:
+    except InputFileError as error:
         ctx.error(str(error), "UNITE", kw)
-    blocks = numeric_blocks(text, separator)
     try:
+        blocks = numeric_blocks(text, separator)
         x = column(blocks, kw.get("INDIC_PARA", (1, 1)), "INDIC_PARA")
         if kw.get("TYPE", "FONCTION") == "FONCTION_C":
             y = complex_column(blocks, kw)

@@ -18,6 +18,8 @@ import numpy as np
 from asterlite.commands.defi_inte_spec import is_diagonal, stored_values
 
 from asterlite.concepts.interspectrum import InterSpectrum
+from asterlite.io.input_files import InputFileError, read_bounded_text
+from asterlite.io.non_finite import finite_float
 
 
 def run(ctx, kw):
@@ -26,8 +28,9 @@ def run(ctx, kw):
     kw.mark_used("NOM_PARA", "NOM_RESU", "INTERPOL", "PROL_DROITE", "PROL_GAUCHE")
     try:
         path = ctx.session.input_path(kw["UNITE"])
-        text = path.read_text(encoding="utf-8", errors="replace")
-    except (KeyError, FileNotFoundError, LookupError, OSError) as exc:
+        # rows of Python floats: about 30 bytes of memory per byte of text
+        text = read_bounded_text(path, "inter-spectrum file", 30)
+    except (KeyError, LookupError, OSError, InputFileError) as exc:
         ctx.error(f"no readable file on logical unit {kw['UNITE']} ({exc})", "UNITE", kw)
     try:
         keys, abscissas, values = parse_aster_interspectrum(text, kw["FORMAT_C"])
@@ -49,11 +52,13 @@ def parse_aster_interspectrum(text: str, format_c: str):
             f"DIM = {dim} needs {len(expected)} FONCTION_C blocks, found {len(blocks)}"
         )
     keys, abscissas, values = [], [], []
+    start = len(head) + len("FONCTION_C")  # where each block starts in the text
     for block, key in zip(blocks, expected, strict=True):
         found = (_integer(block, "I"), _integer(block, "J"))
         if found != key:
             raise ValueError(f"terms must come in row order: expected I, J = {key}, found {found}")
-        triples = _triples(block, key)
+        triples = _triples(block, key, text, start)
+        start += len(block) + len("FONCTION_C")
         if format_c == "MODULE_PHASE":
             ordinates = triples[:, 1] * np.cos(triples[:, 2]) + 1j * (
                 triples[:, 1] * np.sin(triples[:, 2])
@@ -79,18 +84,23 @@ def _integer(block: str, name: str) -> int:
     return int(match.group(1))
 
 
-def _triples(block: str, key) -> np.ndarray:
+def _triples(block: str, key, text: str, block_start: int) -> np.ndarray:
+    """The (frequency, value, value) triples of one term; a token that is not a
+    finite number (``nan``, ``1.#QNAN``, a word) is refused at its line of
+    ``text`` (where the block starts at ``block_start``)."""
     start = block.find("VALEUR =")
     end = block.find("FINSF")
     if start < 0 or end < 0:
         raise ValueError(f"term {key}: no 'VALEUR =' ... 'FINSF'")
-    try:
-        numbers = [float(tok) for tok in block[start + len("VALEUR =") : end].split()]
-    except ValueError as exc:
-        raise ValueError(f"term {key}: {exc}") from None
+    values_start = start + len("VALEUR =")
+    numbers = []
+    for match in re.finditer(r"\S+", block[values_start:end]):
+        at = values_start + match.start()
+        try:
+            numbers.append(finite_float(match.group()))
+        except ValueError as error:  # NonFiniteNumber names the token, else not shown
+            line = text.count("\n", 0, block_start + at) + 1
+            raise ValueError(f"line {line}: term {key}: {error}") from None
     if len(numbers) % 3 or not numbers:
         raise ValueError(f"term {key}: values must come in triples")
-    triples = np.array(numbers).reshape(-1, 3)
-    if not np.all(np.isfinite(triples)):
-        raise ValueError(f"term {key}: a value is not finite")
-    return triples
+    return np.array(numbers).reshape(-1, 3)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.table import Table
+from asterlite.errors import missing_name
 from asterlite.fem.elements import ElementError
 from asterlite.fem.mass_properties import mass_properties
 from asterlite.fem.selection import as_tuple
@@ -39,7 +40,7 @@ def run(ctx, kw):
             places = []
             for group in as_tuple(occ.get("GROUP_MA")):
                 if group not in mesh.cell_groups:
-                    ctx.error(f"the mesh has no cell group {group!r}", "GROUP_MA", occ)
+                    ctx.error(missing_name("cell group", group, mesh.cell_groups), "GROUP_MA", occ)
                 places.append((group, "GROUP_MA", mesh.cell_groups[group]))
         for lieu, entity, cells in places:
             try:
@@ -126,6 +127,6 @@ def _places(ctx, occ, mesh):
     places = []
     for group in as_tuple(occ.get("GROUP_MA")):
         if group not in mesh.cell_groups:
-            ctx.error(f"the mesh has no cell group {group!r}", "GROUP_MA", occ)
+            ctx.error(missing_name("cell group", group, mesh.cell_groups), "GROUP_MA", occ)
         places.append((group, "GROUP_MA", mesh.cell_groups[group]))
     return places

@@ -38,6 +38,7 @@ import numpy as np
 
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import TranGene
+from asterlite.errors import missing_name
 from asterlite.fem.dofs import sort_components
 from asterlite.legacy.v15 import computes
 from asterlite.legacy.version import tables_name_nodes
@@ -190,7 +191,7 @@ def observed_cells(ctx, occ, mesh, modal) -> np.ndarray:
     chosen: list[int] = []
     for group in as_tuple(occ.get("GROUP_MA")):
         if group not in mesh.cell_groups:
-            ctx.error(f"mesh has no cell group {group!r}", "GROUP_MA", occ)
+            ctx.error(missing_name("cell group", group, mesh.cell_groups), "GROUP_MA", occ)
         chosen.extend(int(i) for i in mesh.cell_groups[group])
     for cell_name in as_tuple(occ.get("MAILLE")):
         found = mesh.find_cell(str(cell_name))

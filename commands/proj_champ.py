@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering, NodalField
+from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.transient import DynaTrans
 from asterlite.fem.dofs import sort_components
@@ -192,6 +193,8 @@ def _project_field(ctx, kw, placement, mesh_1, mesh_2, model_2) -> NodalField:
 
 def _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2):
     result = kw["RESULTAT"]
+    if isinstance(result, DynaHarmo):
+        return _project_harmonic(ctx, kw, result, placement, mesh_1, mesh_2, model_2)
     if not isinstance(result, (DynaTrans, ModeResult)):
         ctx.unsupported(f"PROJ_CHAMP of a {result.aster_type}", "RESULTAT", kw)
     _check_source_mesh(ctx, kw, result.numbering, mesh_1, "result")
@@ -213,6 +216,45 @@ def _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2):
         times=result.times[picked].copy(),
         order=result.order[picked].copy(),
         fields=fields,
+    )
+
+
+def _project_harmonic(ctx, kw, result, placement, mesh_1, mesh_2, model_2) -> DynaHarmo:
+    """A dyna_harmo: its complex nodal fields at the chosen frequencies (FREQ,
+    LIST_FREQ within PRECISION / CRITERE, NUME_ORDRE, LIST_ORDRE or all)."""
+    from asterlite.post.harmonic import frequency_indices
+
+    _check_source_mesh(ctx, kw, result.numbering, mesh_1, "result")
+    target = _target_numbering(ctx, kw, mesh_2, model_2, result.numbering)
+    names = _field_names(ctx, kw, list(result.fields))
+    picked = None
+    for key in ("FREQ", "LIST_FREQ"):
+        if kw.get(key) is not None:
+            wanted = getattr(kw[key], "values", kw[key])
+            try:
+                picked = frequency_indices(
+                    result.frequencies, wanted, kw["PRECISION"], kw["CRITERE"]
+                )
+            except Exception as exc:  # CommandError naming the frequency
+                ctx.error(str(exc), key, kw)
+    if picked is None:
+        picked = _instants(ctx, kw, result.frequencies, result.order)
+    fields = {}
+    for name in names:
+        fields[name], _ = fp.project_values(
+            placement,
+            result.numbering.index,
+            result.fields[name][picked],
+            target.dofs,
+            kw.get("PROL_VALE") or 0.0,
+        )
+    ctx.log(f"{len(names)} fields at {len(picked)} frequencies projected on {target.n_dofs} DOFs")
+    return DynaHarmo(
+        numbering=target,
+        frequencies=np.asarray(result.frequencies)[picked].copy(),
+        order=np.asarray(result.order)[picked].copy(),
+        fields=fields,
+        model=model_2,
     )
 
 

@@ -16,9 +16,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.function import Function
+from asterlite.concepts.function import ComplexFunction, Function
+from asterlite.concepts.harmonic import DynaHarmo, HarmGene
+from asterlite.concepts.modes import GeneralizedModes
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.errors import missing_name
 from asterlite.legacy.v15 import relation_title
 from asterlite.post.restitution import (
     added_motions,
@@ -35,11 +38,15 @@ from asterlite.runtime.v15_names import GENERATED_NAME
 
 
 def run(ctx, kw):
+    if isinstance(kw.peek("RESULTAT"), DynaHarmo) or isinstance(kw.peek("RESU_GENE"), HarmGene):
+        return from_harmonic(ctx, kw)
     if kw.get("TABLE") is not None:
         x, y = from_table(ctx, kw)
         para, resu = kw["PARA_X"], kw["PARA_Y"]
     elif kw.get("RESU_GENE") is not None:
-        para, resu, (x, y) = "INST", None, from_generalized(ctx, kw)
+        modal = isinstance(kw.peek("RESU_GENE"), GeneralizedModes)  # rfmge1: against FREQ
+        para, resu, (x, y) = "FREQ" if modal else "INST", None, from_generalized(ctx, kw)
+        resu = kw.peek("NOM_PARA_RESU") if modal else None
     elif kw.get("RESULTAT") is not None:
         para, resu, (x, y) = "INST", None, from_physical(ctx, kw)
     elif kw.get("CHAM_GD") is not None:
@@ -59,6 +66,58 @@ def run(ctx, kw):
         y,
         NOM_PARA=kw.get("NOM_PARA") or para,
         NOM_RESU=kw.get("NOM_RESU") or resu,
+        INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
+        PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
+        PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
+    )
+
+
+def from_harmonic(ctx, kw) -> ComplexFunction:
+    """A complex function of the frequency (``fonction_c``, NOM_PARA 'FREQ')
+    from a dyna_harmo (NOM_CHAM at a node component) or a harm_gene (a
+    generalized component NUME_CMP_GENE, or a node component recombined on
+    the modal basis)."""
+    from asterlite.post.harmonic import selection_from_keywords
+
+    generalized = kw.get("RESU_GENE") is not None
+    result = kw["RESU_GENE"] if generalized else kw["RESULTAT"]
+    field = kw.get("NOM_CHAM") or "DEPL"  # rfhge2: DEPL when a harm_gene is read without it
+    if field not in result.fields:
+        known = ", ".join(result.fields)
+        ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", kw)
+    selection = selection_from_keywords(ctx, kw, result.frequencies, result.order)
+    states = selection.apply(result.fields[field])
+    if generalized and kw.get("NUME_CMP_GENE") is not None:
+        mode = int(kw["NUME_CMP_GENE"])
+        if not 1 <= mode <= states.shape[1]:
+            ctx.error(f"NUME_CMP_GENE={mode}: {states.shape[1]} generalized DOFs", None, kw)
+        values = states[:, mode - 1]
+    elif generalized:
+        basis = result.basis
+        if not hasattr(basis, "shape_at"):
+            ctx.unsupported(
+                "RECU_FONCTION at a node of a harm_gene whose basis is not a mode_meca",
+                "GROUP_NO" if kw.get("GROUP_NO") is not None else "NOEUD",
+                kw,
+            )
+        node = single_node(ctx, kw, basis.numbering.mesh)
+        shape = basis.shape_at(node, kw.get("NOM_CMP"))
+        values = states @ shape
+    else:
+        numbering = result.numbering
+        node = single_node(ctx, kw, numbering.mesh)
+        component = kw.get("NOM_CMP")
+        try:
+            row = numbering.dof_index(node, component)
+        except KeyError:
+            name = numbering.mesh.node_names[node]
+            ctx.error(f"no DOF {component} on node {name}", "NOM_CMP", kw)
+        values = states[:, row]
+    return ComplexFunction(
+        np.asarray(selection.times, dtype=float),
+        np.asarray(values, dtype=complex),
+        NOM_PARA=kw.get("NOM_PARA") or "FREQ",
+        NOM_RESU=kw.get("NOM_RESU") or field,
         INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
         PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
         PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
@@ -127,7 +186,9 @@ def from_physical(ctx, kw):
     try:
         row = result.numbering.dof_index(node, component)
     except KeyError:
-        ctx.error(f"no DOF {component} on node {node_name(result, node)}", "NOM_CMP", kw)
+        present = [c for n, c in result.numbering.dofs if n == node]
+        where = f"node {node_name(result, node)}"
+        ctx.error(missing_name("DOF", component, present, where), "NOM_CMP", kw)
     return selection.times, selection.apply(result.fields[field][:, row])
 
 
@@ -137,6 +198,8 @@ def node_name(result, node: int) -> str:
 
 def from_generalized(ctx, kw):
     result = kw["RESU_GENE"]
+    if isinstance(result, GeneralizedModes):
+        return from_generalized_modes(ctx, kw, result)
     if not isinstance(result, TranGene):
         ctx.unsupported(f"RECU_FONCTION from a {result.aster_type}", "RESU_GENE", kw)
     if any(kw.get(k) is not None for k in ("GROUP_NO_CHOC", "NOEUD_CHOC", "INTITULE")):
@@ -170,6 +233,58 @@ def from_generalized(ctx, kw):
     return selection.times, values
 
 
+def from_generalized_modes(ctx, kw, modes):
+    """A mode_gene (code_aster's rfmge1), abscissa FREQ: NOM_PARA_RESU gives a
+    parameter of each mode against its frequency; NOM_CHAM + NUME_CMP_GENE
+    one generalized component of each mode, which rfmge1 stores one slot
+    further than the frequencies: the abscissas are 0, f_1 .. f_(n-1) (the
+    first is never written, the last frequency is overwritten by the first
+    ordinate), the ordinates the components of modes 1..n. NOM_PARA is
+    'FREQ'; the result is kept as code_aster builds it."""
+    if kw.get("NUME_ORDRE") is not None:
+        wanted = [int(n) for n in as_tuple(kw["NUME_ORDRE"])]
+        if any(not 1 <= n <= modes.n_modes for n in wanted):
+            ctx.error(f"NUME_ORDRE outside 1..{modes.n_modes}", "NUME_ORDRE", kw)
+        picked = np.asarray(wanted, dtype=int) - 1
+    else:
+        kw.mark_used("TOUT_ORDRE")  # every mode: the default
+        picked = np.arange(modes.n_modes)
+    frequencies = np.asarray(modes.frequencies, dtype=float)[picked]
+    if kw.get("NOM_PARA_RESU") is not None:
+        name = kw["NOM_PARA_RESU"]
+        known = {
+            "FREQ": modes.frequencies,
+            "MASS_GENE": modes.generalized_mass,
+            "RIGI_GENE": modes.generalized_stiffness,
+            **modes.parameters,
+        }
+        if name not in known or np.size(known[name]) != modes.n_modes:
+            ctx.error(f"the mode_gene has no parameter {name!r}", "NOM_PARA_RESU", kw)
+        return frequencies, np.asarray(known[name], dtype=float)[picked]
+    field = kw.get("NOM_CHAM")
+    if field != "DEPL":
+        ctx.unsupported(f"NOM_CHAM={field!r} of a mode_gene (DEPL only)", "NOM_CHAM", kw)
+    if kw.get("NUME_CMP_GENE") is None:
+        ctx.unsupported(
+            "RECU_FONCTION of a mode_gene at a node component (SQUELETTE / SOUS_STRUC)",
+            "NOM_CMP",
+            kw,
+        )
+    component = int(kw["NUME_CMP_GENE"])
+    if not 1 <= component <= modes.vectors.shape[0]:
+        ctx.error(
+            f"NUME_CMP_GENE={component}: {modes.vectors.shape[0]} generalized DOFs",
+            "NUME_CMP_GENE",
+            kw,
+        )
+    abscissas = np.concatenate([[0.0], frequencies[:-1]])
+    ctx.log(
+        "RECU_FONCTION of a mode_gene component: abscissas 0, f_1 .. f_(n-1) "
+        "as code_aster's rfmge1 stores them"
+    )
+    return abscissas, np.asarray(modes.vectors, dtype=float)[component - 1, picked]
+
+
 def added_part(ctx, kw, result, node, field, times, keyword) -> np.ndarray:
     """MULT_APPUI / CORR_STAT='OUI': the support motion or static correction
     added to the relative value."""
@@ -199,7 +314,7 @@ def find_shock(ctx, kw, result):
             key = "GROUP_NO_CHOC"
             group = kw[key]
             if group not in mesh.node_groups:
-                ctx.error(f"mesh has no node group {group!r}", key, kw)
+                ctx.error(missing_name("node group", group, mesh.node_groups), key, kw)
             names = {mesh.node_names[int(i)] for i in mesh.node_groups[group]}
         else:
             key = "NOEUD_CHOC"

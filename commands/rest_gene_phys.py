@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.harmonic import DynaHarmo, HarmGene
 from asterlite.concepts.modes import GeneralizedModes
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.post.restitution import (
@@ -43,6 +44,21 @@ def run(ctx, kw):
     result = kw.get("RESU_GENE")
     if isinstance(result, GeneralizedModes):
         return restored_modes(ctx, kw, result)
+    if isinstance(result, HarmGene):
+        basis = result.basis
+        if isinstance(basis, GeneralizedModes) or not hasattr(basis, "shapes"):
+            # harm75 needs the restored modes of a coupled generalized model
+            if kw.get("MODE_MECA") is None:
+                ctx.error(
+                    "the harmonic result's basis is not a mode_meca: give MODE_MECA (modes "
+                    "restored by REST_SOUS_STRUC) or restore with REST_SOUS_STRUC",
+                    "MODE_MECA",
+                    kw,
+                )
+            basis = kw["MODE_MECA"]
+        else:
+            kw.mark_used("MODE_MECA")  # harm75 restores on the result's own basis
+        return restore_harmonic(ctx, kw, result, basis)
     if not isinstance(result, TranGene):
         ctx.unsupported(
             f"REST_GENE_PHYS of a {getattr(result, 'aster_type', type(result).__name__)}",
@@ -109,6 +125,56 @@ def restore_transient(ctx, kw, result, basis):
             for name in element_names
         }
     return restored
+
+
+def restore_harmonic(ctx, kw, result, basis) -> DynaHarmo:
+    """The dyna_harmo of a harm_gene recombined on ``basis`` (code_aster's
+    harm75): u = Φ q at the frequencies FREQ / LIST_FREQ / NUME_ORDRE (all
+    by default), numbered 1..n; TOUT_CHAM gives DEPL, VITE and ACCE, NOM_CHAM
+    (ACCE by default) some of them, which the harm_gene must hold. Also used
+    by REST_SOUS_STRUC with the substructure's or skeleton's restored modes."""
+    from asterlite.post.harmonic import selection_from_keywords as frequency_selection
+
+    if basis.n_modes != result.n_modes:
+        ctx.error(
+            f"the basis has {basis.n_modes} modes, the result {result.n_modes}", "MODE_MECA", kw
+        )
+    if kw.get("INTERPOL", "NON") != "NON":
+        ctx.error("a harmonic result is restored without interpolation", "INTERPOL", kw)
+    if kw.get("TOUT_CHAM") == "OUI":
+        names = FIELDS
+    else:
+        names = tuple(dict.fromkeys(as_tuple(kw.get("NOM_CHAM") or "ACCE")))
+        other = [n for n in names if n not in FIELDS]
+        if other:
+            ctx.unsupported(f"NOM_CHAM={other[0]!r} of a harm_gene", "NOM_CHAM", kw)
+    for name in names:
+        if name not in result.fields:
+            ctx.error(f"the harm_gene holds no {name} field", "NOM_CHAM", kw)
+    for keyword in ("MULT_APPUI", "CORR_STAT", "ACCE_MONO_APPUI"):
+        if kw.get(keyword) is not None:
+            ctx.unsupported(f"{keyword} with a harm_gene", keyword, kw)
+    selection = frequency_selection(ctx, kw, result.frequencies, result.order)
+    numbering = basis.numbering
+    nodes = node_indices(ctx, kw, numbering.mesh)
+    rows = dof_rows(numbering, nodes, as_tuple(kw.get("NOM_CMP")))
+    if rows.size == 0:
+        ctx.error("no DOF matches the requested nodes and components", "GROUP_NO", kw)
+    shapes = np.asarray(basis.shapes)[rows, :]
+    fields = {name: selection.apply(result.fields[name]) @ shapes.T for name in names}
+    if nodes is None and rows.size == numbering.n_dofs:
+        sub = numbering
+    else:
+        sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
+    return DynaHarmo(
+        numbering=sub,
+        frequencies=selection.times,
+        order=np.arange(1, selection.times.size + 1),
+        fields=fields,
+        model=getattr(numbering, "model", None),
+        materials=getattr(numbering, "materials", None),
+        characteristics=getattr(numbering, "characteristics", None),
+    )
 
 
 def requested_fields(ctx, kw, basis) -> tuple[tuple[str, ...], tuple[str, ...]]:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.harmonic import HarmGene
 from asterlite.concepts.modes import GeneralizedModes
 from asterlite.concepts.substructure import SubstructuredNumbering
 from asterlite.concepts.transient import TranGene
@@ -25,6 +26,8 @@ def run(ctx, kw):
         return _modes(ctx, kw, result)
     if isinstance(result, TranGene):
         return _transient(ctx, kw, result)
+    if isinstance(result, HarmGene):
+        return _harmonic(ctx, kw, result)
     ctx.unsupported(f"REST_SOUS_STRUC of a {result.aster_type}", "RESU_GENE", kw)
 
 
@@ -72,6 +75,45 @@ def _transient(ctx, kw, result):
             kw,
         )
     return restore_transient(ctx, kw, result, basis)
+
+
+def _harmonic(ctx, kw, result):
+    """A harm_gene (code_aster's rehaec / rehagl / harm75): computed on the
+    coupled model's assembled matrices, each substructure's Φ_k q_k on
+    SOUS_STRUC or, rotated, on the SQUELETTE; computed on a mode_gene, the
+    modes restored by REST_SOUS_STRUC given as MODE_MECA. NOM_CHAM defaults
+    to ACCE when TOUT_CHAM is absent, as in code_aster's catalogue."""
+    from asterlite.commands.rest_gene_phys import restore_harmonic
+
+    if kw.peek("TOUT_CHAM") is None and kw.peek("NOM_CHAM") is None:
+        dict.__setitem__(kw, "NOM_CHAM", ("ACCE",))
+    basis = result.basis
+    if isinstance(result.numbering, SubstructuredNumbering):
+        if kw.get("MODE_MECA") is not None:
+            ctx.error("MODE_MECA: the result is on the coupled model itself", "MODE_MECA", kw)
+        n = result.numbering.n_modes
+        unit = GeneralizedModes(
+            numbering=result.numbering,
+            vectors=np.eye(n),
+            frequencies=np.zeros(n),
+            generalized_mass=np.zeros(n),
+            generalized_stiffness=np.zeros(n),
+        )
+        basis = _restored(ctx, kw, unit, np.arange(n))  # one shape per generalized DOF
+    elif isinstance(basis, GeneralizedModes):
+        if kw.get("MODE_MECA") is None:
+            ctx.error(
+                "give MODE_MECA: the modes of the mode_gene restored by REST_SOUS_STRUC",
+                "MODE_MECA",
+                kw,
+            )
+        basis = kw["MODE_MECA"]  # already restored on the skeleton / substructure
+        kw.mark_used("SQUELETTE", "SOUS_STRUC")
+    else:
+        ctx.unsupported(
+            "REST_SOUS_STRUC of a harmonic result on a mode_meca basis", "RESU_GENE", kw
+        )
+    return restore_harmonic(ctx, kw, result, basis)
 
 
 def _names(value) -> tuple:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import ElementField, NodalField
+from asterlite.concepts.harmonic import DynaHarmo, HarmGene
 from asterlite.concepts.modes import (
     FieldOnElements,
     GeneralizedVector,
@@ -19,6 +20,7 @@ from asterlite.concepts.modes import (
     MultElasResult,
 )
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.errors import missing_name
 from asterlite.legacy.v15 import computes
 from asterlite.post.checks import record_check, reduce_values
 from asterlite.post.restitution import (
@@ -79,7 +81,8 @@ def _field_value(ctx, occ, numbering, values, label):
             row = numbering.dof_index(node, components[0])
         except KeyError:
             name = numbering.mesh.node_names[node]
-            ctx.error(f"no DOF {components[0]} on node {name}", "NOM_CMP", occ)
+            present = [c for n, c in numbering.dofs if n == node]
+            ctx.error(missing_name("DOF", components[0], present, f"node {name}"), "NOM_CMP", occ)
         return values[row], f"{label} {numbering.mesh.node_names[node]} {components[0]}"
     rows = dof_rows(numbering, nodes, components)
     if rows.size == 0:
@@ -112,6 +115,9 @@ def check_result(ctx, occ, where):
     name = result.name or "?"
     if isinstance(result, MultElasResult):
         _check_mult_elas(ctx, occ, where, result)
+        return
+    if isinstance(result, DynaHarmo):
+        _check_harmonic(ctx, occ, where, result)
         return
     if isinstance(result, ModeResult):
         times = np.arange(1, result.n_modes + 1, dtype=float)
@@ -147,6 +153,51 @@ def check_result(ctx, occ, where):
     record_check(ctx, label, value, occ)
 
 
+def _frequency_index(ctx, occ, result) -> tuple[int, str]:
+    """Index of the tested state of a harmonic result (NUME_ORDRE or FREQ,
+    the frequency searched with the occurrence's PRECISION and CRITERE as
+    for INST)."""
+    from asterlite.post.harmonic import frequency_indices
+
+    if occ.get("FREQ") is None:
+        return _state_index(ctx, occ, result.frequencies, result.order)
+    f = float(occ["FREQ"])
+    precision = float(as_tuple(occ.get("PRECISION") or 1e-6)[0])
+    criterion = str(as_tuple(occ.get("CRITERE") or "RELATIF")[0])
+    try:
+        return int(frequency_indices(result.frequencies, [f], precision, criterion)[0]), (
+            f"freq {f:g}"
+        )
+    except Exception as exc:
+        ctx.error(getattr(exc, "message", str(exc)), "FREQ", occ)
+
+
+def _check_harmonic(ctx, occ, where, result) -> None:
+    """A dyna_harmo: PARA='FREQ', a nodal field component, or a component of
+    an element field CALC_CHAMP computed (complex values)."""
+    name = result.name or "?"
+    index, state = _frequency_index(ctx, occ, result)
+    if occ.get("PARA") is not None:
+        if occ["PARA"] != "FREQ":
+            ctx.unsupported(f"PARA={occ['PARA']!r} of a dyna_harmo", "PARA", occ)
+        value = float(result.frequencies[index])
+        record_check(ctx, f"{where} {name} FREQ {state}", value, occ)
+        return
+    field = occ.get("NOM_CHAM")
+    if field not in result.fields and field in computed_fields(result):
+        if occ.get("TYPE_TEST") is not None:
+            ctx.unsupported(f"TYPE_TEST on {field}", "TYPE_TEST", occ)
+        value = element_value_history(ctx, occ, result, field)[index]
+        record_check(ctx, f"{where} {name} {field} {cell_point_label(occ)} {state}", value, occ)
+        return
+    if field not in result.fields:
+        known = ", ".join([*result.fields, *computed_fields(result)])
+        ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", occ)
+    values = result.fields[field][index]
+    value, what = _field_value(ctx, occ, result.numbering, values, f"{name} {field}")
+    record_check(ctx, f"{where} {what} {state}", value, occ)
+
+
 def result_parameter(ctx, occ, result, index):
     para = occ["PARA"]
     if isinstance(result, DynaTrans):
@@ -175,6 +226,14 @@ def check_gene(ctx, occ, where):
         vector = occ["RESU_GENE"]  # RECU_GENE output tested through RESU_GENE
     if vector is not None:
         values, label = np.asarray(vector.values), f"{where} {vector.name or '?'}"
+    elif isinstance(occ.get("RESU_GENE"), HarmGene):
+        result = occ["RESU_GENE"]
+        field = occ.get("NOM_CHAM", "DEPL")
+        if field not in result.fields:
+            ctx.error(f"the harm_gene holds no {field!r} field", "NOM_CHAM", occ)
+        index, state = _frequency_index(ctx, occ, result)
+        values = result.fields[field][index]
+        label = f"{where} {result.name or '?'} {field} {state}"
     else:
         result = occ.get("RESU_GENE")
         if not isinstance(result, TranGene):

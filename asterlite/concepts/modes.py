@@ -171,6 +171,15 @@ class GeneralizedMatrix(Concept):
 
 
 @dataclass(eq=False)
+class ComplexGeneralizedMatrix(GeneralizedMatrix):
+    """A complex generalized matrix (``matr_asse_gene_c``): COMB_MATR_ASSE
+    COMB_C of generalized matrices, ASSE_MATR_GENE RIGI_GENE_C (hysteretic
+    stiffness K (1 + iη)); ``matrix`` is a complex dense array."""
+
+    aster_types = ("matr_asse_gene_c", "matr_asse_gene")
+
+
+@dataclass(eq=False)
 class GeneralizedVector(Concept):
     """A projected vector Φᵀ f (``TYPE_VECT='FORC'``) or the generalized
     coordinates q of a displacement/velocity/acceleration field

@@ -258,6 +258,15 @@ class TableView:
     def __iter__(self):
         return iter(self.rows)
 
+    def deck_getattr(self, name: str):
+        """``tab.PARA``: the column of a parameter (code_aster's Colonne, here
+        the list of its values: len(), iteration and indexing)."""
+        if name in self.para:
+            return self._table.column(name)
+        raise CommandError(
+            f"the extracted table has no parameter {name!r} (it has {', '.join(self.para)})"
+        )
+
     def __getitem__(self, key):
         if isinstance(key, tuple) and len(key) == 2:
             return self._table.value(key[0], int(key[1]))

@@ -114,7 +114,8 @@ def nodal_average(field: ElementField, mesh, name: str) -> NodalComponentField:
     nodes = np.unique(conn)
     position = np.searchsorted(nodes, conn)  # (n_cells, n_points)
     n_orders, _, _, n_cmp = field.values.shape
-    sums = np.zeros((n_orders, len(nodes), n_cmp))
+    # complex for a harmonic result's fields
+    sums = np.zeros((n_orders, len(nodes), n_cmp), dtype=np.result_type(field.values, float))
     counts = np.zeros(len(nodes))
     for point in range(conn.shape[1]):
         np.add.at(sums, (slice(None), position[:, point]), field.values[:, :, point, :])

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.mesh import Mesh
+from asterlite.errors import missing_name
 
 
 def as_scalar(value):
@@ -37,7 +38,7 @@ def cell_group_members(ctx, kw, mesh: Mesh, keyword: str = "GROUP_MA") -> list[i
     out: list[int] = []
     for name in as_tuple(kw.get(keyword)):
         if name not in mesh.cell_groups:
-            ctx.error(f"the mesh has no cell group {name!r}", keyword, kw)
+            ctx.error(missing_name("cell group", name, mesh.cell_groups), keyword, kw)
         out.extend(mesh.cell_groups[name].tolist())
     return out
 
@@ -46,7 +47,7 @@ def node_group_members(ctx, kw, mesh: Mesh, keyword: str = "GROUP_NO") -> list[i
     out: list[int] = []
     for name in as_tuple(kw.get(keyword)):
         if name not in mesh.node_groups:
-            ctx.error(f"the mesh has no node group {name!r}", keyword, kw)
+            ctx.error(missing_name("node group", name, mesh.node_groups), keyword, kw)
         out.extend(mesh.node_groups[name].tolist())
     return out
 

@@ -10,16 +10,21 @@ by ``FINSF``; ``FIN`` ends the file and ``%`` starts a comment. Sections:
   on the keyword line) followed by member names.
 
 Entries may wrap over several lines: only the token count matters.
+
+Errors quote the file's tokens only once its first line has been read as a
+section keyword: before, the file may be any file the user can read. A
+coordinate that is a NaN or an infinity, however spelt (``nan``, ``1.#QNAN``,
+``1.D+999``...), is refused naming the node and the line.
 """
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
 
 from asterlite.concepts.mesh import CELL_NODE_COUNTS, Mesh
+from asterlite.io.non_finite import NonFiniteNumber, finite_float
 
 
 class AsterMeshError(ValueError):
@@ -33,6 +38,15 @@ class AsterMeshError(ValueError):
 
 _COORD_SECTIONS = {"COOR_1D": 1, "COOR_2D": 2, "COOR_3D": 3}
 _GROUP_SECTIONS = ("GROUP_NO", "GROUP_MA")
+_SECTIONS = frozenset(
+    {"TITRE", "FIN", "FINSF", *_COORD_SECTIONS, *_GROUP_SECTIONS, *CELL_NODE_COUNTS}
+)
+# a file whose first line is not a section keyword may be anything the user
+# can read (F mail /etc/passwd): where, and what was expected, never its text
+NOT_A_MESH = (
+    "not an ASTER mesh: a section keyword was expected (TITRE, COOR_3D, a cell type "
+    "such as SEG2, GROUP_NO, GROUP_MA or FIN); the line is not shown"
+)
 
 
 def _lines(text: str):
@@ -57,19 +71,14 @@ def _header_options(tokens: list[str]) -> tuple[dict[str, str], list[str]]:
     return options, rest
 
 
-def _to_float(token: str, line: int, filename: str) -> float:
+def _to_float(token: str, node: str, line: int, filename: str) -> float:
+    """A coordinate: a finite number, NaN and infinities refused however spelt."""
     try:
-        return float(token.replace("D", "E").replace("d", "e"))
+        return finite_float(token, fortran_exponent=True)
+    except NonFiniteNumber as error:
+        raise AsterMeshError(f"node {node}: {error}", line, filename) from None
     except ValueError:
         raise AsterMeshError(f"expected a number, found {token!r}", line, filename) from None
-
-
-def _check_finite(node: str, xyz: list[float], line: int, filename: str) -> None:
-    """A NaN or infinite coordinate (``nan``, ``inf``, ``1.E+999``) has no place in a mesh."""
-    if not all(math.isfinite(v) for v in xyz):
-        coordinates = ", ".join(repr(v) for v in xyz)
-        message = f"node {node} has a non-finite coordinate ({coordinates})"
-        raise AsterMeshError(message, line, filename)
 
 
 def parse_aster_mesh(text: str, filename: str = "") -> Mesh:
@@ -84,11 +93,15 @@ def parse_aster_mesh(text: str, filename: str = "") -> Mesh:
 
     lines = list(_lines(text))
     raw_lines = text.splitlines()
+    recognised = False
     i = 0
     while i < len(lines):
         number, tokens = lines[i]
         keyword = tokens[0].upper()
         i += 1
+        if not recognised and keyword not in _SECTIONS:
+            raise AsterMeshError(NOT_A_MESH, number, filename)
+        recognised = True  # an ASTER mesh: its tokens may be quoted from here on
         if keyword == "FIN":
             break
         if keyword == "FINSF":
@@ -122,8 +135,7 @@ def parse_aster_mesh(text: str, filename: str = "") -> Mesh:
                 name, line = body[k]
                 if name in node_lines:
                     raise AsterMeshError(f"node {name} defined twice", line, filename)
-                xyz = [_to_float(tok, ln, filename) for tok, ln in body[k + 1 : k + 1 + ndim]]
-                _check_finite(name, xyz, line, filename)
+                xyz = [_to_float(tok, name, ln, filename) for tok, ln in body[k + 1 : k + 1 + ndim]]
                 node_lines[name] = line
                 node_names.append(name)
                 node_xyz.append(tuple(xyz + [0.0] * (3 - ndim)))
@@ -201,11 +213,11 @@ PARSE_BYTES_PER_BYTE = 40
 def read_aster_mesh(path: str | Path) -> Mesh:
     """Read an ASTER-format mesh file (refused before reading when parsing it
     would pass the run's memory limit)."""
-    from asterlite.io.input_files import InputTooLargeError, read_bounded_text
+    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     path = Path(path)
     try:
         text = read_bounded_text(path, "ASTER mesh", PARSE_BYTES_PER_BYTE)
-    except InputTooLargeError as error:
+    except InputFileError as error:
         raise AsterMeshError(str(error).split(": ", 1)[-1], 0, str(path)) from None
     return parse_aster_mesh(text, str(path))

@@ -39,6 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from asterlite.concepts.mesh import Mesh
+from asterlite.io.non_finite import NonFiniteNumber, finite_float
 
 # bytes of memory taken per byte of universal file text (pyuff's float lists, our records)
 PARSE_BYTES_PER_BYTE = 40
@@ -185,9 +186,9 @@ def _split_datasets(text: str, filename: str) -> list[_Dataset]:
         try:
             number = int(header[:6])
         except ValueError:
-            raise IdeasMeshError(
-                f"expected a dataset number, found {header[:20]!r}", i + 2, filename
-            ) from None
+            # before a first dataset the file may be anything: where, never what
+            found = f", found {header[:20]!r}" if datasets else " (the line is not shown)"
+            raise IdeasMeshError(f"expected a dataset number{found}", i + 2, filename) from None
         end = i + 2
         while end < len(lines) and not _is_delimiter(lines[end]):
             end += 1
@@ -272,7 +273,23 @@ def _run_pyuff(number: int, ds: _Dataset, filename: str, as_number: int | None =
         ) from None
 
 
+def _refuse_non_finite(ds: _Dataset, filename: str) -> None:
+    """A NaN or an infinity among a dataset's numbers, however spelt (``nan``,
+    ``1.#QNAN``, ``1.0D+999``), is refused at its line: pyuff would read
+    some as NaN and fail on others with a message of its own."""
+    for offset, line in enumerate(ds.lines):
+        for token in line.split():
+            try:
+                finite_float(token, fortran_exponent=True)
+            except NonFiniteNumber as error:
+                message = f"dataset {ds.number}: {error}"
+                raise IdeasMeshError(message, ds.first_line + 1 + offset, filename) from None
+            except ValueError:
+                continue  # text: pyuff's reader judges it
+
+
 def _read_nodes(ds: _Dataset, out: _Collected) -> None:
+    _refuse_non_finite(ds, out.filename)
     # 781 has the layout of 2411 (label, 3 integers, then 3 coordinates on a line)
     as_number = 2411 if ds.number == 781 else None
     dset = _run_pyuff(ds.number, ds, out.filename, as_number)
@@ -619,11 +636,11 @@ def parse_ideas_mesh(text: str, filename: str = "", color_groups: bool = False) 
 def read_ideas_mesh(path: str | Path, color_groups: bool = False) -> Mesh:
     """Read an I-DEAS universal file mesh (refused before reading when parsing it
     would pass the run's memory limit)."""
-    from asterlite.io.input_files import InputTooLargeError, read_bounded_text
+    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     path = Path(path)
     try:
         text = read_bounded_text(path, "I-DEAS mesh", PARSE_BYTES_PER_BYTE)
-    except InputTooLargeError as error:
+    except InputFileError as error:
         raise IdeasMeshError(str(error).split(": ", 1)[-1], 0, str(path)) from None
     return parse_ideas_mesh(text, str(path), color_groups)

@@ -103,11 +103,16 @@ def read_med_mesh(path: Path, name: str | None = None) -> Mesh:
     """Read mesh ``name`` (default: the first) of a MED file: validated, then
     read in a child process whose crash on a damaged file becomes a
     MedMeshError (:mod:`asterlite.io.med_check`)."""
+    from asterlite.io.input_files import InputFileError, check_regular_file
     from asterlite.io.med_check import read_isolated
 
     path = Path(path)
-    if not path.is_file():
-        raise MedMeshError(f"{path}: no such MED file")
+    try:  # a FIFO or a device is refused here and again in the child, on its descriptor
+        check_regular_file(path, "MED file")
+    except FileNotFoundError:
+        raise MedMeshError(f"{path}: no such MED file") from None
+    except InputFileError as error:
+        raise MedMeshError(str(error)) from None
     return read_isolated(path, name, _read_here)
 
 

@@ -36,16 +36,44 @@ class MedNodalField:
 
 
 def read_nodal_field(path: str | Path, name: str) -> MedNodalField:
+    """Field ``name`` of a MED file: a regular file (read through one
+    descriptor, so a FIFO swapped in meanwhile is never opened) whose
+    datasets fit the run's memory limit once decompressed."""
+    from asterlite.io.input_files import InputFileError, open_input
+
+    path = Path(path)
+    try:
+        with open_input(path, "MED file") as (descriptor, _size):
+            pinned = Path(f"/proc/self/fd/{descriptor}")
+            return _read_field(pinned if pinned.exists() else path, name, path.name)
+    except InputFileError as error:
+        raise MedResultError(str(error)) from None
+
+
+def _check_sizes(path: str, shown: str) -> None:
+    import h5py
+
+    from asterlite.io.med_check import check_declared_bytes
+
+    try:
+        with h5py.File(path, "r") as handle:
+            check_declared_bytes([handle], shown, "MED file", MedResultError)
+    except OSError as exc:
+        raise MedResultError(f"{shown} is not a readable MED file ({exc})") from None
+
+
+def _read_field(path: Path, name: str, shown: str) -> MedNodalField:
     import medcoupling as mc
 
     path = str(path)
+    _check_sizes(path, shown)
     try:
         available = list(mc.GetAllFieldNames(path))
     except Exception as exc:  # medcoupling raises InterpKernelException
-        raise MedResultError(f"{Path(path).name} is not a readable MED file ({exc})") from None
+        raise MedResultError(f"{shown} is not a readable MED file ({exc})") from None
     if name not in available:
         listed = ", ".join(available) or "none"
-        raise MedResultError(f"no field {name!r} in {Path(path).name} (fields: {listed})")
+        raise MedResultError(f"no field {name!r} in {shown} (fields: {listed})")
     multi = mc.MEDFileFieldMultiTS.New(path, name, True)
     mesh = mc.MEDFileMesh.New(path, multi.getMeshName())
     steps, components = [], None

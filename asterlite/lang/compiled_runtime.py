@@ -12,7 +12,7 @@ from __future__ import annotations
 import itertools
 import types
 
-from asterlite.errors import AsterliteError, DeckRuntimeError
+from asterlite.errors import AsterliteError, DeckRuntimeError, did_you_mean
 from asterlite.lang import library
 from asterlite.lang import limits as guards
 from asterlite.lang.values import Unknown
@@ -201,7 +201,8 @@ class CompiledRuntime:
         node = nodes[line - 1] if line is not None and 0 < line <= len(nodes) else nodes[0]
         if isinstance(error, KeyError) and line in global_reads:
             name = global_reads[line]
-            error = DeckRuntimeError(f"name '{name}' is not defined")
+            near = did_you_mean(name, self.evaluator.namespace)
+            error = DeckRuntimeError(f"name '{name}' is not defined{near}")
             error.__cause__ = None
             error.__suppress_context__ = True
         self.evaluator._fail(error, node, frame)

@@ -26,7 +26,7 @@ import itertools
 import operator
 from collections.abc import Callable, Mapping
 
-from asterlite.errors import AsterliteError, DeckRuntimeError, Location
+from asterlite.errors import AsterliteError, DeckRuntimeError, Location, did_you_mean
 from asterlite.lang import library
 from asterlite.lang import limits as guards
 from asterlite.lang.budget import StepBudget
@@ -161,6 +161,7 @@ class Evaluator(ImportStatements):
         self._builtin_modules = library.builtin_modules(limits)
         self._structural = library.structural_ids(namespace)
         self._compiled_runtime = None  # helpers of compiled functions, built on first use
+        self._literals_checked: dict[int, object] = {}  # id(tree) -> tree, literals checked
 
     @property
     def steps(self) -> int:
@@ -182,6 +183,7 @@ class Evaluator(ImportStatements):
         (``asterlite check`` reports every error of a deck); it may re-raise.
         """
         self.sources.setdefault(module.filename, module.lines)
+        self._check_literals(module)
         frame = Frame(None, None, module)
         for statement in module.tree.children:
             try:
@@ -194,6 +196,7 @@ class Evaluator(ImportStatements):
     def evaluate(self, module: Module, names: dict | None = None):
         """Value of a module from :func:`parse_expression`, with extra local names."""
         frame = Frame(dict(names or {}), None, module)
+        self._check_literals(module)
         expression = module.tree.children[0]
         return self._guarded(lambda: self.ev(expression, frame), expression, module)
 
@@ -235,6 +238,21 @@ class Evaluator(ImportStatements):
 
     # ------------------------------------------------------------- machinery
 
+    def _check_literals(self, module: Module) -> None:
+        """Integer literals within the digit limit, once per module: the
+        parser turns a hexadecimal literal of any length into an integer."""
+        tree = module.tree
+        if self._literals_checked.get(id(tree)) is tree:
+            return
+        for node in tree.iter_subtrees():
+            if node.data == "const":
+                try:
+                    guards.check_literal(node.children[0], self.limits)
+                except DeckRuntimeError as error:
+                    error.location = self.location(node, module)
+                    raise
+        self._literals_checked[id(tree)] = tree  # the tree kept: its id stays its own
+
     def _guarded(self, action, node, module: Module):
         """Run one top-level statement: unwrap command bugs, locate stack overflows."""
         try:
@@ -265,6 +283,12 @@ class Evaluator(ImportStatements):
             if error.location is None:
                 error.location = self.location(node, frame.module)
             raise error
+        if isinstance(error, MemoryError):  # the address-space cap of the run's memory limit
+            raise guards.DeckMemoryError(
+                "an allocation failed: the run's memory is exhausted (export 'P memory_limit', "
+                "or asterlite run --memory-limit to change it)",
+                self.location(node, frame.module),
+            ) from None
         message = str(error) or type(error).__name__
         raise DeckRuntimeError(
             f"{type(error).__name__}: {message}", self.location(node, frame.module)
@@ -441,7 +465,8 @@ class Evaluator(ImportStatements):
         try:
             return self.namespace[name]
         except KeyError:
-            raise DeckRuntimeError(f"name '{name}' is not defined") from None
+            near = did_you_mean(name, [*self.namespace, *(frame.locals or ())])
+            raise DeckRuntimeError(f"name '{name}' is not defined{near}") from None
 
     def _store(self, name: str, value, frame: Frame) -> None:
         if frame.locals is not None:
@@ -644,10 +669,17 @@ class Evaluator(ImportStatements):
     def _binary(self, op: str, left, right, function=None):
         if left is Unknown or right is Unknown:
             return Unknown
-        guards.check_binary(op, left, right, self.limits)
+        if function is operator.iadd and type(left) is list and type(right) is not list:
+            # list += any iterable extends the list: read the iterable within the limit
+            room = self.limits.max_sequence_length - len(left)
+            right = guards.bounded_items(right, room, self.limits)
+        arrays = guards.check_binary(op, left, right, self.limits)
         if op == "%" and isinstance(left, str):  # engine objects print neutrally
             right = guards.deck_text_value(right)
-        return (function or BINARY_OPERATORS[op])(left, right)
+        result = (function or BINARY_OPERATORS[op])(left, right)
+        if arrays:
+            guards.check_array_result(result)
+        return result
 
     def _truth(self, value) -> bool:
         return bool(value)

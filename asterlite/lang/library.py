@@ -11,6 +11,7 @@ from __future__ import annotations
 import functools
 import math
 import sys
+import types
 
 from asterlite.errors import DeckRuntimeError
 from asterlite.lang import limits as guards
@@ -119,7 +120,15 @@ def _make_builtins(limits: Limits) -> dict:
             args = (pairs,)
         return dict(*args, **kwargs)
 
+    def deck_int(*args, **kwargs):
+        if len(args) > 1 or "base" in kwargs:
+            base = args[1] if len(args) > 1 else kwargs["base"]
+            guards.check_int_text(args[0] if args else kwargs.get("x", ""), base, limits)
+        return int(*args, **kwargs)
+
     deck_range.__name__, deck_sum.__name__, deck_pow.__name__ = "range", "sum", "pow"
+    deck_int.__name__ = "int"
+    deck_int.numpy_type = int  # np.zeros(3, dtype=int) still means Python's int
     deck_set.__name__, deck_dict.__name__ = "set", "dict"
     return {
         "abs": abs,
@@ -137,7 +146,7 @@ def _make_builtins(limits: Limits) -> dict:
         "tuple": tuple,
         "dict": deck_dict,
         "set": deck_set,
-        "int": int,
+        "int": deck_int,
         "float": float,
         "complex": complex,
         "str": as_text(str),
@@ -269,6 +278,13 @@ def _argument(args, kwargs, position: int, name: str, default=None):
 
 def _estimate_shape_arg(args, kwargs) -> int:
     return _shape_size(_argument(args, kwargs, 0, "shape", 1))
+
+
+def _estimate_like(args, kwargs) -> int:
+    """zeros_like & co: the prototype's size, or the ``shape=`` asked instead."""
+    if kwargs.get("shape") is not None:
+        return _shape_size(kwargs["shape"])
+    return _size(_argument(args, kwargs, 0, "a"))
 
 
 def _estimate_eye(args, kwargs) -> int:
@@ -411,6 +427,10 @@ _ESTIMATORS = {
     "ones": _estimate_shape_arg,
     "empty": _estimate_shape_arg,
     "full": _estimate_shape_arg,
+    "zeros_like": _estimate_like,
+    "ones_like": _estimate_like,
+    "empty_like": _estimate_like,
+    "full_like": _estimate_like,
     "eye": _estimate_eye,
     "identity": _estimate_eye,
     "arange": _estimate_arange,
@@ -427,18 +447,44 @@ _ESTIMATORS = {
 _MAX_ITEMSIZE = 1024  # bytes per element: refuses dtypes like "U100000000"
 
 
-def _check_dtypes(args, kwargs) -> None:
+def _check_dtypes(args, kwargs) -> int:
+    """Refuse object dtypes and huge items; the largest item size asked (0: none)."""
     np = guards.numpy_or_none()
-    candidates = [a for a in args if isinstance(a, (str, type))]
+    candidates = [a for a in args if isinstance(a, (str, type, np.dtype))]
     if "dtype" in kwargs:
         candidates.append(kwargs["dtype"])
+    largest = 0
     for candidate in candidates:
         try:
-            itemsize = np.dtype(candidate).itemsize
+            dtype = np.dtype(candidate)
         except (TypeError, ValueError):
             continue
-        if itemsize > _MAX_ITEMSIZE:
+        if dtype.hasobject:
+            raise guards.object_array_error()
+        if dtype.itemsize > _MAX_ITEMSIZE:
             raise DeckRuntimeError(f"numpy dtype {candidate!r} is too large for decks")
+        largest = max(largest, dtype.itemsize)
+    return largest
+
+
+def _plain_types(args, kwargs):
+    """The deck's guarded ``int`` given as a dtype stands for Python's int."""
+    if any(hasattr(a, "numpy_type") for a in args if isinstance(a, types.FunctionType)):
+        args = tuple(getattr(a, "numpy_type", a) for a in args)
+    if hasattr(kwargs.get("dtype"), "numpy_type"):
+        kwargs = dict(kwargs, dtype=kwargs["dtype"].numpy_type)
+    return args, kwargs
+
+
+def _check_result(result, name: str, limits: Limits) -> None:
+    """What a numpy call made: no array of objects, sizes within the limits
+    (the arrays of a short tuple or list too: meshgrid, gradient)."""
+    np = guards.numpy_or_none()
+    several = isinstance(result, (tuple, list)) and len(result) <= 64
+    for array in result if several else (result,):
+        if isinstance(array, np.ndarray):
+            guards.check_array_result(array)
+            guards.check_length(array.size, limits, f"numpy.{name} size")
 
 
 def _input_size(args) -> int:
@@ -462,17 +508,21 @@ def guard_numpy(function, name: str, limits: Limits, bound_to=None):
     @_policy(DEEP)
     @functools.wraps(function)
     def guarded(*args, **kwargs):
-        _check_dtypes(args, kwargs)
+        args, kwargs = _plain_types(args, kwargs)
+        itemsize = _check_dtypes(args, kwargs)
+        guards.check_no_object_arrays((*args, *kwargs.values()), kwargs.get("dtype"))
         full_args = args if bound_to is None else (bound_to, *args)
+        size = _input_size(full_args)
         if estimator is not None:
-            guards.check_length(estimator(full_args, kwargs), limits, f"numpy.{name} size")
+            size = max(size, estimator(full_args, kwargs))
+            guards.check_length(size, limits, f"numpy.{name} size")
+        if itemsize > 16:  # strings of many characters: the bytes count
+            guards.check_length(size * itemsize // 16, limits, f"numpy.{name} size (16-byte items)")
         _check_work(name, full_args, kwargs, limits)
         guards.check_length(_input_size(args), limits, f"numpy.{name} size")
         guards.check_broadcast(args, limits)
         result = function(*args, **kwargs)
-        np = guards.numpy_or_none()
-        if isinstance(result, np.ndarray):
-            guards.check_length(result.size, limits, f"numpy.{name} size")
+        _check_result(result, name, limits)
         return result
 
     return guarded
@@ -623,9 +673,7 @@ def _iterable(value) -> bool:
 def _guarded_extend(target: list, limits: Limits):
     @_policy(STORE)
     def extend(items):
-        items = list(items)
-        guards.check_length(len(target) + len(items), limits)
-        target.extend(items)
+        target.extend(guards.bounded_items(items, limits.max_sequence_length - len(target), limits))
 
     return extend
 

@@ -9,6 +9,7 @@ location; the evaluator attaches the location of the expression.
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 import re
 import sys
@@ -34,6 +35,13 @@ class Limits:
     @property
     def max_int_bits(self) -> int:
         return int(self.max_int_digits * math.log2(10)) + 1
+
+
+class DeckMemoryError(DeckRuntimeError):
+    """An allocation of deck code failed (MemoryError under the run's cap)."""
+
+    kind = "memory limit exceeded"
+    fatal = True
 
 
 def exceeded(what: str, limit: int) -> DeckRuntimeError:
@@ -89,50 +97,142 @@ def check_int_power(base: int, exponent: int, limits: Limits) -> None:
         raise exceeded("integer size in digits", limits.max_int_digits)
 
 
-# %-format and str.format fields whose width or precision would build a huge string
-_PERCENT_FIELD = re.compile(r"%(?:\([^)]*\))?[-#0 +]*(\*|\d+)?(?:\.(\*|\d+))?")
+# %-format and str.format fields: their widths and precisions, which pad the
+# text, count towards the result's length before anything is formatted
+_PERCENT_FIELD = re.compile(r"%(?:\(([^)]*)\))?[-#0 +]*(\*|\d+)?(?:\.(\*|\d*))?[hlL]?([a-zA-Z%])?")
 _FORMAT_NUMBERS = re.compile(r"\d+")
+_NUMBER_TEXT = 400  # characters of a float or int formatted without a width ('%f' of 1e308: 316)
+_FIELD_ATTRIBUTES = frozenset({"real", "imag"})  # what a format field may read of a number
 
 
-def check_percent_format(template: str, limits: Limits) -> None:
+def check_percent_format(template: str, limits: Limits, arguments=()) -> None:
+    """``template % arguments``: refused when the result could pass the string
+    limit, counting every field's width and precision and its value's text."""
+    values = arguments if isinstance(arguments, tuple) else (arguments,)
+    mapping = arguments if isinstance(arguments, dict) else None
+    total, position = len(template), 0
     for match in _PERCENT_FIELD.finditer(template):
-        for group in match.groups():
-            if group == "*":
-                raise DeckRuntimeError("'*' widths are not supported in % formatting")
-            if group and int(group) > limits.max_string_length:
-                raise exceeded("string length", limits.max_string_length)
+        key, width, precision, conversion = match.groups()
+        if "*" in (width, precision):
+            raise DeckRuntimeError("'*' widths are not supported in % formatting")
+        total += int(width or 0) + int(precision or 0)
+        if conversion == "%" or conversion is None:
+            continue
+        as_repr = conversion in ("r", "a")
+        if key is not None and mapping is not None:
+            total += text_length_bound(mapping.get(key, ""), as_repr)
+        elif position < len(values):
+            total += text_length_bound(values[position], as_repr)
+            position += 1
+        if total > limits.max_string_length:
+            raise exceeded("string length", limits.max_string_length)
+    if total > limits.max_string_length:
+        raise exceeded("string length", limits.max_string_length)
 
 
 def check_format_template(template: str, limits: Limits, args=(), kwargs=None) -> None:
-    """str.format: no index or attribute with '_', attributes only of plain
-    numbers and strings (on an engine object, '{0.x}' would reach any public
-    attribute), no huge widths."""
+    """str.format: every accessor of every field checked (no name with '_',
+    attributes only ``real``/``imag`` of numbers, indexes only into lists,
+    tuples, dicts and strings: on an engine object, '{0[0].x}' would reach
+    any public attribute), and the result's length bounded before formatting
+    (each field's width and precision plus its value's text)."""
     import string
 
     try:
         fields = list(string.Formatter().parse(template))
     except ValueError as error:
         raise DeckRuntimeError(f"bad format string: {error}") from None
-    automatic = 0
-    for _, field_name, spec, _ in fields:
+    kwargs = kwargs or {}
+    automatic, total = 0, 0
+    for literal, field_name, spec, conversion in fields:
+        total += len(literal)
         if field_name is None:
             continue
-        if re.search(r"(\.|\[)\s*_", field_name):
-            raise DeckRuntimeError("format fields may not access names starting with '_'")
-        root, attribute = re.match(r"([^.\[]*)(\.)?", field_name).groups()
-        if root == "":
-            root, automatic = automatic, automatic + 1
-        if attribute and not _plain_format_argument(root, args, kwargs or {}):
-            raise DeckRuntimeError(
-                "format fields may read attributes of numbers and strings only "
-                f"('{{{field_name}}}'): format the value itself"
-            )
-        for part in (field_name or "", spec or ""):
+        for part in (field_name, spec or ""):
             if "{" in part:
                 raise DeckRuntimeError("nested format fields are not supported")
-        for number in _FORMAT_NUMBERS.findall(spec or ""):
-            if int(number) > limits.max_string_length:
-                raise exceeded("string length", limits.max_string_length)
+        if re.search(r"(\.|\[)\s*_", field_name):
+            raise DeckRuntimeError("format fields may not access names starting with '_'")
+        value = _format_field_value(field_name, automatic, args, kwargs)
+        automatic += not field_name or field_name[0] in ".["
+        total += sum(int(number) for number in _FORMAT_NUMBERS.findall(spec or ""))
+        total += text_length_bound(value, as_repr=conversion in ("r", "a"))
+        if total > limits.max_string_length:
+            raise exceeded("string length", limits.max_string_length)
+
+
+def _format_field_value(field_name: str, automatic: int, args, kwargs):
+    """The value a format field shows, each accessor of its chain checked
+    the way a deck may use it (None when the chain fails: format reports it)."""
+    import _string
+
+    first, accessors = _string.formatter_field_name_split(field_name)
+    root = automatic if first == "" else first
+    try:
+        value = args[root] if isinstance(root, int) else kwargs[root]
+    except (IndexError, KeyError):
+        return None
+    for is_attribute, key in accessors:
+        if is_attribute:
+            plain = isinstance(value, (int, float, complex)) and not isinstance(value, bool)
+            if not (plain and key in _FIELD_ATTRIBUTES):
+                raise DeckRuntimeError(
+                    "format fields may read attributes of numbers only (.real, .imag) "
+                    f"('{{{field_name}}}'): format the value itself"
+                )
+            value = getattr(value, key)
+            continue
+        if not isinstance(value, (list, tuple, dict, str)):
+            raise DeckRuntimeError(
+                "format fields may index lists, tuples, dicts and strings only "
+                f"('{{{field_name}}}'): format the value itself"
+            )
+        try:
+            value = value[key]
+        except (IndexError, KeyError, TypeError):
+            return None
+    return value
+
+
+def text_length_bound(value, as_repr: bool = False, budget: int = 10_000_000) -> int:
+    """An upper bound on the characters of ``str(value)`` (``repr`` when
+    ``as_repr``) formatted with any type code, from sizes alone: a float
+    alone may take ``%f``'s 316 digits, in a container its repr's 24; numpy
+    prints at most about a thousand elements."""
+    if isinstance(value, str) and not as_repr:
+        return len(value)
+    if isinstance(value, (float, complex)):
+        return 2 * _NUMBER_TEXT
+    np = numpy_or_none()
+    if np is not None and isinstance(value, np.generic):
+        return 2 * _NUMBER_TEXT + value.dtype.itemsize
+    pending, total, seen = [value], 0, 0
+    while pending:
+        item = pending.pop()
+        seen += 1
+        if seen > budget:
+            return budget * 10  # beyond any limit: refused
+        if isinstance(item, str):  # repr: quotes, escapes of 2 to 10 characters
+            total += (2 if item.isprintable() else 10) * len(item) + 2
+        elif isinstance(item, bool) or item is None:
+            total += 5
+        elif isinstance(item, int):
+            total += item.bit_length() // 3 + 2
+        elif isinstance(item, (float, complex)):
+            total += 54  # two reprs of at most 24 characters, a sign, 'j', brackets
+        elif isinstance(item, (list, tuple, set, frozenset)):
+            total += 2 * len(item) + 2
+            pending.extend(item)
+        elif isinstance(item, dict):
+            total += 4 * len(item) + 2
+            pending.extend(item.keys())
+            pending.extend(item.values())
+        elif np is not None and isinstance(item, (np.ndarray, np.generic)):
+            shown = min(int(item.size), 1000)
+            total += shown * (item.dtype.itemsize + 40) + 20 * item.ndim + 100
+        else:
+            total += 200  # an engine object's stand-in, a concept's short representation
+    return total
 
 
 def numpy_or_none():
@@ -140,8 +240,48 @@ def numpy_or_none():
     return sys.modules.get("numpy")
 
 
-def check_binary(op: str, left, right, limits: Limits) -> None:
-    """Refuse a binary operation whose result would exceed a limit."""
+# Python ints numpy stores without falling back to an array of objects
+_NUMPY_INT_RANGE = (-(2**63), 2**64)
+
+
+def object_array_error() -> DeckRuntimeError:
+    # numpy loops over Python objects in C, where a CPU time limit cannot stop them
+    return DeckRuntimeError(
+        "numpy arrays of Python objects (dtype=object, integers beyond 64 bits, "
+        "None or mixed values) are not available in decks: use numbers"
+    )
+
+
+def check_no_object_arrays(values, dtype=None) -> None:
+    """Refuse numpy arguments numpy would turn into an array of Python
+    objects: integers beyond 64 bits, lists holding them, None or any other
+    object (converted as the call would, with its ``dtype``)."""
+    np = numpy_or_none()
+    for value in values:
+        if type(value) is int and not _NUMPY_INT_RANGE[0] <= value < _NUMPY_INT_RANGE[1]:
+            raise object_array_error()
+        if not isinstance(value, (list, tuple)) or all(
+            isinstance(item, (np.ndarray, np.generic, float)) for item in value
+        ):
+            continue
+        try:
+            converted = np.asarray(value, dtype=dtype)
+        except (ValueError, TypeError, OverflowError):
+            continue  # ragged or invalid: the call itself reports it
+        if converted.dtype.hasobject:
+            raise object_array_error()
+
+
+def check_array_result(result) -> None:
+    """An array of objects made anyway (``np.full(n, None)``) never reaches the deck."""
+    np = numpy_or_none()
+    if np is not None and isinstance(result, np.ndarray) and result.dtype.hasobject:
+        raise object_array_error()
+
+
+def check_binary(op: str, left, right, limits: Limits) -> bool:
+    """Refuse a binary operation whose result would exceed a limit; True when
+    numpy arrays take part (the caller checks the result's type)."""
     if op == "*":
         if _sized_sequence(left) and _is_int(right):
             check_repeat(left, right, limits)
@@ -156,11 +296,46 @@ def check_binary(op: str, left, right, limits: Limits) -> None:
         if _is_int(left) and _is_int(right):
             check_int_power(left, right, limits)
     elif op == "%" and isinstance(left, str):
-        check_percent_format(left, limits)
         check_nested_size((right,), limits)
+        check_percent_format(left, limits, right)
     np = numpy_or_none()
-    if np is not None and (isinstance(left, np.ndarray) or isinstance(right, np.ndarray)):
+    if np is not None and (
+        isinstance(left, (np.ndarray, np.generic)) or isinstance(right, (np.ndarray, np.generic))
+    ):
         check_broadcast((left, right), limits)
+        check_no_object_arrays((left, right))
+        return True
+    return False
+
+
+def bounded_items(items, room: int, limits: Limits) -> list:
+    """The items of an iterable about to extend a list (``+=``, ``extend``)
+    that holds ``room`` fewer than the limit: read no further than that."""
+    if isinstance(items, (list, tuple, str, range, dict, set, frozenset)):
+        if len(items) > room:
+            raise exceeded("sequence length", limits.max_sequence_length)
+        return list(items)
+    taken = list(itertools.islice(items, max(room, 0) + 1))
+    if len(taken) > room:
+        raise exceeded("sequence length", limits.max_sequence_length)
+    return taken
+
+
+def check_literal(value, limits: Limits) -> None:
+    """A number written in the deck: hexadecimal, octal and binary literals
+    are not bounded by Python's 4300-digit rule, decimal ones are."""
+    if _is_int(value) and value.bit_length() > limits.max_int_bits:
+        raise exceeded("integer size in digits", limits.max_int_digits)
+
+
+def check_int_text(text, base: int, limits: Limits) -> None:
+    """``int(text, base)``: Python bounds decimal text only (4300 digits); a
+    power-of-two base turns two million hexadecimal digits into one integer."""
+    if not isinstance(text, (str, bytes, bytearray)):
+        return
+    digits_per_character = math.log10(min(max(int(base), 2), 36) if base else 16)
+    if (len(text) - 2) * digits_per_character > limits.max_int_digits:  # 2: a prefix, a sign
+        raise exceeded("integer size in digits", limits.max_int_digits)
 
 
 def check_broadcast(operands, limits: Limits) -> None:
@@ -190,15 +365,6 @@ def check_nested_size(values, limits: Limits) -> None:
                 raise exceeded("elements to convert to text", limits.max_sequence_length)
             items = value.values() if isinstance(value, dict) else value
             pending.extend(item for item in items if isinstance(item, (list, tuple, dict, set)))
-
-
-def _plain_format_argument(root, args, kwargs) -> bool:
-    if isinstance(root, int) or str(root).isdigit():
-        index = int(root)
-        value = args[index] if index < len(args) else None
-    else:
-        value = kwargs.get(root)
-    return isinstance(value, (int, float, complex, str))
 
 
 # ----------------------------------------------------------------- nesting

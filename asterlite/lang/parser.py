@@ -4,8 +4,8 @@ Positions are not propagated to tree nodes (that doubles parse time); a
 node's location is its first token's, see :func:`node_position`.
 
 The LALR parser is built once per process, on first use (importing this
-module stays cheap), from ``deck.lark``; lark's ``cache=True`` keeps the
-built tables in a temporary file so later processes start fast.
+module stays cheap), from ``deck.lark``; its tables are kept in a private
+folder so later processes start fast (:mod:`asterlite.lang.parser_cache`).
 
 After parsing, one iterative pass over the tree (deep nesting cannot
 overflow the stack) refuses what the grammar accepts but decks may not do
@@ -21,7 +21,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from asterlite.errors import DeckSyntaxError, Location
+from asterlite.errors import DeckSyntaxError, Location, UnquotedLocation
 
 GRAMMAR_PATH = Path(__file__).with_name("deck.lark")
 
@@ -46,6 +46,9 @@ ALLOWED_UNDERSCORE_NAMES = frozenset({"_F"})
 MAX_TREE_DEPTH = 200
 # characters of a source line shown in an error excerpt
 EXCERPT_WIDTH = 160
+# what every code_aster deck has: a command call (DEBUT(), LIRE_MAILLAGE(...))
+# or code_aster named; a file without it has its text shown in no error
+DECK_SIGNATURE = re.compile(r"\b[A-Z][A-Z0-9_]*\s*\(|\bcode_aster\b")
 
 
 @dataclass
@@ -55,8 +58,20 @@ class Module:
     tree: object  # lark.Tree
     lines: list[str]
     filename: str
+    # a file a study names (deck, helper module, material file): its text is
+    # shown in errors only if it reads as a deck (see reads_as_deck)
+    study_file: bool = False
+
+    @functools.cached_property
+    def reads_as_deck(self) -> bool:
+        """The text calls a code_aster command (``DEBUT(``...) or names
+        code_aster; else it may be any file the user can read (``F comm
+        /etc/passwd``)."""
+        return any(DECK_SIGNATURE.search(line) for line in self.lines)
 
     def location(self, line: int, column: int = 0) -> Location:
+        if self.study_file and not self.reads_as_deck:
+            return UnquotedLocation(self.filename, line, column)
         source = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
         if len(source) <= EXCERPT_WIDTH:
             return Location(self.filename, line, column, source)
@@ -84,16 +99,20 @@ class ClippedLocation(Location):
         return f"    {self.source_line.rstrip()}\n    {caret}"
 
 
-def parse_deck(text: str, filename: str, *, private_names: bool = False) -> Module:
+def parse_deck(
+    text: str, filename: str, *, private_names: bool = False, study_file: bool = False
+) -> Module:
     """Parse a deck (or a helper ``.py`` file) into a :class:`Module`.
 
     Raises DeckSyntaxError, located, for text that does not parse or uses a
     construct outside the deck subset. ``private_names`` lets names start
     with one underscore (``_A0``: code_aster's material files use them for
     their intermediate functions); ``__`` names stay refused, and attributes
-    are whitelisted by the evaluator whatever their name.
+    are whitelisted by the evaluator whatever their name. ``study_file``: the
+    text is a file a study named; unless it reads as a deck, errors located
+    in it show neither its lines nor their own wording.
     """
-    return _parse(text, filename, "file_input", private_names)
+    return _parse(text, filename, "file_input", private_names, study_file)
 
 
 def parse_expression(text: str, filename: str) -> Module:
@@ -109,22 +128,26 @@ _RECENT_TREES: dict = {}
 _RECENT_LIMIT = 4
 
 
-def _parse(text: str, filename: str, start: str, private_names: bool = False) -> Module:
+def _parse(
+    text: str, filename: str, start: str, private_names: bool = False, study_file: bool = False
+) -> Module:
     key = (text, start, private_names)
     if key in _RECENT_TREES:
-        return Module(_RECENT_TREES[key], text.splitlines(), filename)
-    module = _parse_text(text, filename, start, private_names)
+        return Module(_RECENT_TREES[key], text.splitlines(), filename, study_file)
+    module = _parse_text(text, filename, start, private_names, study_file)
     if len(_RECENT_TREES) >= _RECENT_LIMIT:
         _RECENT_TREES.pop(next(iter(_RECENT_TREES)))
     _RECENT_TREES[key] = module.tree
     return module
 
 
-def _parse_text(text: str, filename: str, start: str, private_names: bool) -> Module:
+def _parse_text(
+    text: str, filename: str, start: str, private_names: bool, study_file: bool
+) -> Module:
     from lark.exceptions import UnexpectedInput
 
     lines = text.splitlines()
-    module = Module(None, lines, filename)
+    module = Module(None, lines, filename, study_file)
     source = text if text.endswith("\n") else text + "\n"
     try:
         module.tree = _parser().parse(source, start=start)
@@ -148,16 +171,31 @@ class _LocatedSyntaxError(Exception):
 
 @functools.cache
 def _parser():
+    """The LALR parser: its tables loaded from the private cache, else built
+    and stored there (lark's own ``cache=True`` trusts a file in $TMPDIR)."""
     from lark import Lark
 
-    return Lark(
-        GRAMMAR_PATH.read_text(encoding="utf-8"),
+    from asterlite.lang import parser_cache
+
+    grammar = GRAMMAR_PATH.read_text(encoding="utf-8")
+    folder = parser_cache.cache_folder()
+    key = parser_cache.cache_key(grammar)
+    tables = parser_cache.load_tables(folder, key) if folder else None
+    if tables is not None:
+        try:
+            return Lark._load_from_dict(tables["data"], tables["memo"], postlex=_indenter_class()())
+        except Exception:  # tables of another shape: built again below
+            pass
+    parser = Lark(
+        grammar,
         parser="lalr",
         start=["file_input", "eval_input"],
         postlex=_indenter_class()(),
         maybe_placeholders=True,
-        cache=True,
     )
+    if folder:
+        parser_cache.store_tables(folder, key, parser)
+    return parser
 
 
 @functools.cache

@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+from asterlite.io.input_files import InputFileError, read_head
 from asterlite.legacy import v15
 from asterlite.legacy.base import NOT_LITERAL, Env, Translation, lit
 
@@ -17,9 +18,8 @@ DEFAULT_MESH_UNIT = 20
 
 def _is_text_mesh(path) -> bool:
     try:
-        with open(path, "rb") as stream:
-            head = stream.read(8)
-    except OSError:
+        head = read_head(path, 8, "mesh")
+    except (OSError, InputFileError):
         return False
     return head != HDF5_SIGNATURE
 

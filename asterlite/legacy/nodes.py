@@ -20,6 +20,8 @@ from collections.abc import Callable, Iterable
 from functools import lru_cache
 from pathlib import Path
 
+from asterlite.io.input_files import read_head
+
 HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
 
 
@@ -27,8 +29,7 @@ HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
 def _read_mesh(path: str, stamp: float):
     """The mesh file at ``path``, or None when it is not a mesh asterlite reads."""
     try:
-        with open(path, "rb") as stream:
-            head = stream.read(8)
+        head = read_head(Path(path), 8, "mesh")  # a FIFO is refused, never waited on
         if head == HDF5_SIGNATURE:
             from asterlite.io.med_mesh import read_med_mesh
 

@@ -18,6 +18,8 @@ from lark import Token
 
 from asterlite.catalog import load_catalogue
 from asterlite.errors import AsterliteError, Location
+from asterlite.io.input_files import read_deck, read_deck_text
+from asterlite.io.text_encoding import UTF8, UTF8_BOM, with_utf8_declaration
 from asterlite.lang import parse_deck
 from asterlite.lang.values import FactorDict
 from asterlite.legacy import port_v11, v11
@@ -51,6 +53,8 @@ class PortResult:
     text: str
     notes: list[Note] = field(default_factory=list)
     skipped: list[str] = field(default_factory=list)  # calls left as written, and why
+    # what the deck was read as; ``text`` is written out in UTF-8
+    encoding: str = UTF8
 
 
 # ------------------------------------------------------------------ scanning
@@ -653,14 +657,14 @@ def deck_files(deck: Path) -> list[Path]:
 def port_file(deck: Path, aster_version: int | None = None) -> PortResult:
     """``deck`` ported, read as the run of its .export reads it: the same version
     (that of the oldest deck file, or ``aster_version``) and the same groups."""
-    text = deck.read_text(encoding="utf-8", errors="replace")
+    text, encoding = read_deck(deck)
     from asterlite.legacy.v15 import named_entities
 
     units = input_units(deck)
-    texts = [f.read_text(encoding="utf-8", errors="replace") for f in deck_files(deck)]
+    texts = [read_deck_text(f) for f in deck_files(deck)]
     groups = LegacyGroups(units.values(), texts, named_entities(texts))
     version = aster_version or files_version(deck_files(deck))
-    return port_text(
+    result = port_text(
         text,
         str(deck),
         unit_path=units.get if units else None,
@@ -669,11 +673,17 @@ def port_file(deck: Path, aster_version: int | None = None) -> PortResult:
         version=version,
         node_number=node_number_resolver(units.values()),
     )
+    result.encoding = encoding
+    if encoding not in (UTF8, UTF8_BOM):  # written in UTF-8: a declaration must say so
+        result.text = with_utf8_declaration(result.text)
+    return result
 
 
 def describe_changes(result: PortResult) -> list[str]:
     """One line per change: ``line N: old form -> new form``."""
     lines = []
+    if result.encoding not in (UTF8, UTF8_BOM):
+        lines.append(f"encoding: read as {result.encoding}, written as UTF-8")
     for note in sorted(result.notes, key=lambda n: n.line or 0):
         lines.append(f"line {note.line}: {note.old} -> {note.new}")
     return lines + result.skipped

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from asterlite.catalog import load_catalogue, validate
 from asterlite.errors import UnsupportedError
+from asterlite.io.input_files import read_text_or_none
 from asterlite.lang.values import CallSite, FactorDict
 from asterlite.legacy.base import RESULT, Env, NewCall, Translation
 from asterlite.legacy.nodes import LegacyGroups
@@ -64,10 +65,7 @@ def legacy_groups(session) -> LegacyGroups:
 
 
 def _text(path) -> str:
-    try:
-        return path.read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return ""
+    return read_text_or_none(path) or ""
 
 
 def translate_call(catalogue, kwargs: dict, site: CallSite, session, reuse=None):

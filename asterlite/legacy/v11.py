@@ -44,6 +44,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from asterlite.errors import CommandError, UnsupportedError
+from asterlite.io.input_files import read_text_or_none
 from asterlite.lang.values import FactorDict
 from asterlite.legacy.base import Note, Src, lit
 
@@ -152,11 +153,8 @@ def _major(version) -> int | None:
 
 @lru_cache(maxsize=64)
 def _file_version(path: str, stamp: float) -> int | None:
-    try:
-        text = Path(path).read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return None
-    return deck_version(text)
+    text = read_text_or_none(path)
+    return None if text is None else deck_version(text)
 
 
 def applies(session) -> bool:

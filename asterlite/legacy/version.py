@@ -25,7 +25,8 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 from functools import lru_cache
-from pathlib import Path
+
+from asterlite.io.input_files import read_text_or_none
 
 CURRENT = 17
 
@@ -147,10 +148,9 @@ def files_version(paths) -> int:
     """The version of a run: that of its oldest deck file."""
     versions = [CURRENT]
     for path in paths:
-        try:
-            versions.append(deck_version(Path(path).read_text(encoding="utf-8", errors="replace")))
-        except OSError:
-            continue
+        text = read_text_or_none(path)
+        if text is not None:
+            versions.append(deck_version(text))
     return min(versions)
 
 
@@ -158,10 +158,10 @@ def files_stated_version(paths) -> int | None:
     """The oldest version the run's deck files state on a version line, or None."""
     stated = []
     for path in paths:
-        try:
-            found = pragma_version(Path(path).read_text(encoding="utf-8", errors="replace"))
-        except OSError:
+        text = read_text_or_none(path)
+        if text is None:
             continue
+        found = pragma_version(text)
         if found is not None:
             stated.append(found)
     return min(stated) if stated else None

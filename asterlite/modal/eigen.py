@@ -26,6 +26,10 @@ from asterlite.fem.constraints import Elimination
 
 DENSE_LIMIT = 400
 TWO_PI = 2.0 * np.pi
+# matrices whose largest entry lies outside [2**-SAFE_EXPONENT, 2**SAFE_EXPONENT]
+# are scaled by a power of two before solving: a stiffness of 1e-310 (a
+# denormal) against a unit mass overflows L⁻¹ M L⁻ᵀ to inf
+SAFE_EXPONENT = 100
 
 
 class EigenError(ValueError):
@@ -117,8 +121,35 @@ def _shift_invert(k, m, sigma: float, count: int, lu=None):
     return vals, vecs
 
 
+def _scale_exponent(matrix) -> int:
+    """0, or the exponent e of a power of two 2**e bringing the matrix's
+    largest entry near 1 when it is far from it."""
+    data = matrix.data if sp.issparse(matrix) else np.asarray(matrix)
+    largest = float(np.max(np.abs(data), initial=0.0))
+    if largest == 0.0 or not np.isfinite(largest):
+        return 0
+    exponent = int(np.frexp(largest)[1])
+    return 0 if -SAFE_EXPONENT <= exponent <= SAFE_EXPONENT else exponent
+
+
+def _scaled(matrix, exponent: int):
+    """``matrix / 2**exponent``, exactly (ldexp: 2**1030 itself would overflow)."""
+    if exponent == 0:
+        return matrix
+    if sp.issparse(matrix):
+        scaled = matrix.copy()
+        scaled.data = np.ldexp(scaled.data, -exponent)
+        return scaled
+    return np.ldexp(np.asarray(matrix), -exponent)
+
+
 class ReducedPencil:
-    """(Tᵀ K T, Tᵀ M T) with the helpers CALC_MODES selections need."""
+    """(Tᵀ K T, Tᵀ M T) with the helpers CALC_MODES selections need.
+
+    The solvers see ``k / 2**a`` and ``m / 2**b`` (exact, and a = b = 0 for
+    any ordinary model), whose eigenvalues are ``ω² / 2**(a - b)``;
+    eigenvalues come back in ω², vectors as the solver gives them (their
+    scale is arbitrary)."""
 
     def __init__(self, stiffness, mass, elimination: Elimination):
         self.elimination = elimination
@@ -130,6 +161,10 @@ class ReducedPencil:
         self.k = 0.5 * (self.k + self.k.T)
         self.m = 0.5 * (self.m + self.m.T)
         self.n = self.k.shape[0]
+        k_exponent, m_exponent = _scale_exponent(self.k), _scale_exponent(self.m)
+        self._solver_k = _scaled(self.k, k_exponent)
+        self._solver_m = _scaled(self.m, m_exponent)
+        self._omega2_exponent = k_exponent - m_exponent  # ω² = solver's eigenvalue * 2**this
         # (ω², shapes) -> shapes: the basis inside groups of equal eigenvalues,
         # for a method that decides it (None: the solver's own)
         self.equal_eigenvalue_basis = None
@@ -144,11 +179,21 @@ class ReducedPencil:
             if self.n == 0:
                 self._all = (np.zeros(0), np.zeros((0, 0)))
             else:
-                sigma = _default_shift(self.k, self.m)
-                vals, vecs = _dense_pencil(self.k, self.m, sigma)
+                k, m = self._solver_k, self._solver_m
+                vals, vecs = _dense_pencil(k, m, _default_shift(k, m))
+                vals = self._omega2(vals)
                 order = np.argsort(vals)
                 self._all = self._settled(vals[order], vecs[:, order])
         return self._all
+
+    def _omega2(self, solver_values):
+        """The solver's eigenvalues in ω²."""
+        if self._omega2_exponent == 0:
+            return solver_values
+        return np.ldexp(np.asarray(solver_values, dtype=float), self._omega2_exponent)
+
+    def _solver_shift(self, omega2: float) -> float:
+        return float(np.ldexp(omega2, -self._omega2_exponent))
 
     def _settled(self, vals, vecs):
         """(ω², shapes) with the basis rule applied to groups of equal ω²."""
@@ -162,7 +207,9 @@ class ReducedPencil:
             vals, vecs = self.all_modes()
             order = np.argsort(np.abs(vals - sigma), kind="stable")[:count]
             return vals[order], vecs[:, order]
-        vals, vecs = _shift_invert(self.k, self.m, sigma, count)
+        k, m = self._solver_k, self._solver_m
+        vals, vecs = _shift_invert(k, m, self._solver_shift(sigma), count)
+        vals = self._omega2(vals)
         order = np.argsort(np.abs(vals - sigma), kind="stable")
         return self._settled(vals[order], vecs[:, order])
 
@@ -170,8 +217,10 @@ class ReducedPencil:
         if self.dense or count >= self.n - 1:
             vals, vecs = self.all_modes()
             return vals[:count], vecs[:, :count]
-        sigma, lu = _smallest_shift(self.k, self.m)
-        vals, vecs = _shift_invert(self.k, self.m, sigma, count, lu)
+        k, m = self._solver_k, self._solver_m
+        sigma, lu = _smallest_shift(k, m)
+        vals, vecs = _shift_invert(k, m, sigma, count, lu)
+        vals = self._omega2(vals)
         order = np.argsort(vals, kind="stable")
         return self._settled(vals[order], vecs[:, order])
 
@@ -180,12 +229,14 @@ class ReducedPencil:
             vals, vecs = self.all_modes()
             return vals[-count:], vecs[:, -count:]
         # ARPACK regular mode needs an invertible M
+        k, m = self._solver_k, self._solver_m
         try:
-            lu = spla.splu(self.m.tocsc())
+            lu = spla.splu(m.tocsc())
         except RuntimeError:
             raise EigenError("PLUS_GRANDE on a large model needs a non-singular mass") from None
-        minv = spla.LinearOperator(self.m.shape, matvec=lu.solve, dtype=float)
-        return self._settled(*spla.eigsh(self.k, k=count, M=self.m, Minv=minv, which="LA"))
+        minv = spla.LinearOperator(m.shape, matvec=lu.solve, dtype=float)
+        vals, vecs = spla.eigsh(k, k=count, M=m, Minv=minv, which="LA")
+        return self._settled(self._omega2(vals), vecs)
 
     def band(self, lower: float, upper: float, limit: int | None = None):
         """Every eigenpair with lower <= ω² <= upper (ω² units)."""

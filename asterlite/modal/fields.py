@@ -38,6 +38,15 @@ def field_stack(result, name: str):
         return result.numbering, np.asarray(result.fields).T, access
     fields = getattr(result, "fields", None)
     numbering = getattr(result, "numbering", None)
+    if isinstance(fields, dict) and numbering is not None and hasattr(result, "frequencies"):
+        # a dyna_harmo: complex fields, one per frequency
+        if name not in fields:
+            raise FieldError(f"the result has no field {name} (it has {', '.join(fields)})")
+        access = {
+            "NUME_ORDRE": np.asarray(result.order),
+            "FREQ": np.asarray(result.frequencies, dtype=float),
+        }
+        return numbering, np.asarray(fields[name]), access
     if isinstance(fields, dict) and numbering is not None:
         if name not in fields:
             raise FieldError(f"the result has no field {name} (it has {', '.join(fields)})")

@@ -193,7 +193,9 @@ def project_values(
     a DOF the projection does not reach gets ``default``. Also returns how many
     DOFs were not reached."""
     states = source_values.shape[0]
-    out = np.full((states, len(target_dofs)), float(default))
+    # complex for a harmonic result's fields
+    dtype = np.result_type(source_values, float)
+    out = np.full((states, len(target_dofs)), default, dtype=dtype)
     missed = 0
     for j, (node, component) in enumerate(target_dofs):
         where = placement.nodes.get(int(node))

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.concepts.titles import compact, same_title, unique_titles
 from asterlite.concepts.transient import ShockHistory, TranGene
 
 IMAGE_FORMATS = (".png", ".svg")
@@ -59,12 +60,25 @@ def node_history(tran: TranGene, node: str, component: str, field: str = "DEPL")
     return np.asarray(generalized) @ np.asarray(tran.basis.shapes)[rows[0]]
 
 
+def shock_names(tran: TranGene) -> list[str]:
+    """One name per shock of the result: its title, made unique as
+    DYNA_VIBRA makes them (results saved before it did may repeat one)."""
+    return unique_titles([shock.name for shock in tran.shocks])
+
+
 def find_shock(tran: TranGene, name: str) -> ShockHistory:
-    for shock in tran.shocks:
-        if shock.name == name:
-            return shock
-    names = [s.name for s in tran.shocks]
-    raise PlotError(f"no shock {name!r} in the result (shocks: {_listing(names)})")
+    """The shock ``name`` designates: its title (blanks ignored: code_aster's
+    ``DIS_CHOC        00000002`` is also ``DIS_CHOC00000002``) or the name
+    of its group in results.h5."""
+    from asterlite.io.result_store import _shock_group_names as shock_group_names
+
+    names = shock_names(tran)
+    for candidates in (names, shock_group_names(tran.shocks)):
+        for shock, title in zip(tran.shocks, candidates, strict=True):
+            if same_title(name, title):
+                return shock
+    listed = _listing([repr(n) if " " in n else n for n in names])  # quoted when blank
+    raise PlotError(f"no shock {name!r} in the result (shocks: {listed})")
 
 
 def shock_quantity(shock: ShockHistory, quantity: str) -> np.ndarray:
@@ -93,7 +107,10 @@ def wear_work_rates(tran: TranGene) -> dict[str, float]:
     shock over the run."""
     from asterlite.post.wear import history_wear_power
 
-    return {shock.name: history_wear_power(tran.times, shock.fields) for shock in tran.shocks}
+    return {
+        name: history_wear_power(tran.times, shock.fields)
+        for name, shock in zip(shock_names(tran), tran.shocks, strict=True)
+    }
 
 
 @dataclass
@@ -249,16 +266,19 @@ def orbit_figure(tran: TranGene, shock_name: str, polar=None):
             xy=outline.gap_end,
             xytext=outline.gap_start,
             arrowprops={"arrowstyle": "<->", "color": "tab:red"},
+            zorder=4,
         )
-        middle = np.add(outline.gap_start, outline.gap_end) / 2.0
-        axes.annotate(
+        # in a corner on an opaque box: beside the arrow it sat under the orbit
+        axes.text(
+            0.02,
+            0.03,
             outline.gap_label,
-            xy=tuple(middle),
-            xytext=(0, 4),
-            textcoords="offset points",
+            transform=axes.transAxes,
             color="tab:red",
-            ha="center",
+            ha="left",
             va="bottom",
+            zorder=5,
+            bbox={"boxstyle": "round,pad=0.3", "facecolor": "white", "alpha": 0.9, "lw": 0},
         )
     relative = " (node 1 - node 2)" if is_two_node(shock) else ""
     axes.set_xlabel(f"local y{relative} (m)")
@@ -267,11 +287,45 @@ def orbit_figure(tran: TranGene, shock_name: str, polar=None):
     axes.set_title(f"{tran.name or 'tran_gene'}: orbit at shock {shock.name} ({kind})")
     if outline.equal_aspect:
         axes.set_aspect("equal", adjustable="datalim")
+    else:
+        floor_axes(axes, (y, z), outline)
     handles, labels = axes.get_legend_handles_labels()
     unique = dict(zip(labels, handles, strict=True))
     axes.legend(unique.values(), unique.keys(), loc="upper right")
     axes.grid(True, alpha=0.3)
     return figure
+
+
+# an axis of an orbit spans at least this fraction of the orbit's scale (the
+# gap, the obstacle or the largest motion): the motion of a PLAN_Z shock along
+# y is round-off (3e-17 m for a gap of 1e-4 m), which autoscaling spread over
+# the whole axis as if it were large lateral motion; motion above the floor
+# is physics and keeps its autoscaled axis
+ORBIT_AXIS_FLOOR = 1.0e-4
+
+
+def floor_axes(axes, data: tuple[np.ndarray, np.ndarray], outline: ObstacleOutline) -> None:
+    """Give each axis of an orbit plot at least :data:`ORBIT_AXIS_FLOOR` of
+    the plot's scale: the largest of the obstacle's extent and the motion."""
+    y, z = (np.asarray(values, dtype=float) for values in data)
+    along_y = [y, np.asarray(outline.vertical, float), [outline.gap_end[0]]]
+    along_z = [z, np.asarray(outline.horizontal, float), [outline.gap_end[1]]]
+    for curve_y, curve_z in outline.curves:
+        along_y.append(np.asarray(curve_y, float))
+        along_z.append(np.asarray(curve_z, float))
+    ranges = []
+    for parts in (along_y, along_z):
+        values = np.concatenate([np.ravel(p) for p in parts])
+        values = values[np.isfinite(values)]
+        ranges.append((values.min(), values.max()) if values.size else (0.0, 0.0))
+    scale = max(max(abs(lo), abs(hi), hi - lo) for lo, hi in ranges)
+    if not scale > 0.0:
+        return
+    floor = ORBIT_AXIS_FLOOR * scale
+    for (lo, hi), set_limits in zip(ranges, (axes.set_xlim, axes.set_ylim), strict=True):
+        if hi - lo < floor:
+            middle = 0.5 * (lo + hi)
+            set_limits(middle - 0.5 * floor, middle + 0.5 * floor)
 
 
 def wear_bars(rates: dict[str, float], floor: float = WEAR_NOISE_FLOOR) -> tuple[dict, dict]:
@@ -283,18 +337,18 @@ def wear_bars(rates: dict[str, float], floor: float = WEAR_NOISE_FLOOR) -> tuple
     return drawn, noise
 
 
-def wear_figure(tran: TranGene, shock_names: list[str] | None = None):
+def wear_figure(tran: TranGene, wanted_names: list[str] | None = None):
     """Bar chart of the wear work rate (mean FN·|VT|) of each support. Rates
     below :data:`WEAR_NOISE_FLOOR` of the largest rate of the result (all its
     supports, also when only some are drawn) are drawn as zero, as the figure
     says: noise of 3e-14 W would otherwise fill the axes when drawn alone."""
     all_rates = wear_work_rates(tran)
     drawn, noise = wear_bars(all_rates)
-    if shock_names:
-        for name in shock_names:
-            find_shock(tran, name)  # a clear error for an unknown name
-        drawn = {name: drawn[name] for name in shock_names}
-        noise = {name: rate for name, rate in noise.items() if name in shock_names}
+    if wanted_names:
+        names = dict(zip(map(id, tran.shocks), shock_names(tran), strict=True))
+        wanted = [names[id(find_shock(tran, name))] for name in wanted_names]
+        drawn = {name: drawn[name] for name in wanted}
+        noise = {name: rate for name, rate in noise.items() if name in wanted}
     figure = _new_figure()
     axes = figure.add_subplot()
     axes.bar(list(drawn), list(drawn.values()), color="tab:orange")
@@ -348,9 +402,10 @@ def figure_for(
         if not component or shock is not None or quantity is not None:
             raise PlotError("--node needs --cmp (and no --shock/--quantity)")
         return node_history_figure(tran, node, component, field), f"{node}_{component}"
+    stem = compact(shock) if shock else None  # a file name without blanks
     if quantity == "wear":
         names = [shock] if shock else None
-        return wear_figure(tran, names), f"{shock or 'supports'}_wear"
+        return wear_figure(tran, names), f"{stem or 'supports'}_wear"
     if shock is None:
         shocks = _listing([s.name for s in tran.shocks])
         raise PlotError(
@@ -358,9 +413,9 @@ def figure_for(
             f"or --quantity wear (shocks: {shocks})"
         )
     if quantity == "orbit":
-        return orbit_figure(tran, shock), f"{shock}_orbit"
+        return orbit_figure(tran, shock), f"{stem}_orbit"
     quantity = quantity or "FN"
-    return shock_history_figure(tran, shock, quantity), f"{shock}_{quantity}"
+    return shock_history_figure(tran, shock, quantity), f"{stem}_{quantity}"
 
 
 def plot_from_store(

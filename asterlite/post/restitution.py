@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from asterlite.errors import CommandError
+from asterlite.errors import CommandError, missing_name
 
 FIELDS = ("DEPL", "VITE", "ACCE")
 
@@ -186,7 +186,7 @@ def node_indices(
     chosen: list[int] = []
     for name in as_tuple(kw.get("GROUP_NO")):
         if name not in mesh.node_groups:
-            ctx.error(f"mesh has no node group {name!r}", "GROUP_NO", kw)
+            ctx.error(missing_name("node group", name, mesh.node_groups), "GROUP_NO", kw)
         chosen.extend(int(i) for i in mesh.node_groups[name])
     for name in as_tuple(kw.get("NOEUD")):
         name = str(name)
@@ -200,7 +200,7 @@ def node_indices(
     cells: list[int] = []
     for name in as_tuple(kw.get("GROUP_MA")) if with_cells else ():
         if name not in mesh.cell_groups:
-            ctx.error(f"mesh has no cell group {name!r}", "GROUP_MA", kw)
+            ctx.error(missing_name("cell group", name, mesh.cell_groups), "GROUP_MA", kw)
         cells.extend(int(i) for i in mesh.cell_groups[name])
     for name in as_tuple(kw.get("MAILLE")) if with_cells else ():
         found = mesh.find_cell(str(name))
@@ -306,18 +306,14 @@ def element_value_history(ctx, kw, result, name: str, mesh=None) -> np.ndarray:
         if node not in set(int(n) for n in field.nodes):
             ctx.error(f"{name} has no value at node {node_label(mesh, node)}", "GROUP_NO", kw)
         if component not in field.components:
-            ctx.error(f"{name} has no component {component!r}", "NOM_CMP", kw)
+            ctx.error(missing_name("component", component, field.components, name), "NOM_CMP", kw)
         return field.at(node, component)
     field = result.element_fields[name]
     cell = single_cell(ctx, kw, mesh)
     if cell not in set(int(c) for c in field.cells):
         ctx.error(f"{name} is not computed on cell {mesh.cell_names[cell]}", "GROUP_MA", kw)
     if component not in field.components:
-        ctx.error(
-            f"{name} has no component {component!r} (it has {', '.join(field.components)})",
-            "NOM_CMP",
-            kw,
-        )
+        ctx.error(missing_name("component", component, field.components, name), "NOM_CMP", kw)
     if kw.get("POINT") is not None:
         point = int(kw["POINT"]) - 1
     else:
@@ -341,7 +337,7 @@ def single_cell(ctx, kw, mesh) -> int:
     cells: list[int] = []
     for name in as_tuple(kw.get("GROUP_MA")):
         if name not in mesh.cell_groups:
-            ctx.error(f"mesh has no cell group {name!r}", "GROUP_MA", kw)
+            ctx.error(missing_name("cell group", name, mesh.cell_groups), "GROUP_MA", kw)
         cells.extend(int(i) for i in mesh.cell_groups[name])
     for name in as_tuple(kw.get("MAILLE")):
         found = mesh.find_cell(str(name))
@@ -397,7 +393,7 @@ def field_component_value(ctx, kw, field) -> float:
     cells: list[int] = []
     for name in as_tuple(kw.get("GROUP_MA")):
         if name not in mesh.cell_groups:
-            ctx.error(f"mesh has no cell group {name!r}", "GROUP_MA", kw)
+            ctx.error(missing_name("cell group", name, mesh.cell_groups), "GROUP_MA", kw)
         cells.extend(int(i) for i in mesh.cell_groups[name])
     for name in as_tuple(kw.get("MAILLE")):
         found = mesh.find_cell(str(name))

@@ -1,6 +1,7 @@
 """Run every deck folder of a corpus, each in its own process, and tabulate.
 
-Each deck runs as ``python -m asterlite run`` in a subprocess so a crash,
+Each deck runs as ``python -I ... asterlite run`` in a subprocess (isolated
+from the current folder: :mod:`asterlite.isolation`) so a crash,
 a runaway computation or a leak in one deck cannot affect the others, and
 a per-deck timeout applies.
 """
@@ -9,11 +10,12 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+
+from asterlite.isolation import python_command
 
 
 def find_decks(root: Path) -> list[Path]:
@@ -31,7 +33,8 @@ def run_one(export: Path, timeout: float) -> dict:
     start = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="asterlite-corpus-") as tmp:
         out = Path(tmp) / export.stem
-        command = [sys.executable, "-m", "asterlite", "run", str(export), "-o", str(out), "--quiet"]
+        # isolated: nothing in the current folder or the deck's is imported
+        command = python_command("asterlite", "run", str(export), "-o", str(out), "--quiet")
         try:
             completed = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:

@@ -4,6 +4,8 @@ import CA`` (``CA.TestCase`` records its assertions as test checks) and
 
 from __future__ import annotations
 
+import cmath
+import numbers
 from typing import TYPE_CHECKING
 
 from asterlite.lang.library import DeckModule
@@ -15,7 +17,14 @@ if TYPE_CHECKING:
 
 
 class TestCaseRecorder:
-    """``CA.TestCase()``: unittest-style assertions recorded as checks."""
+    """``CA.TestCase()``: unittest-style assertions recorded as checks.
+
+    Each verdict is code_aster's (its TestCase wraps ``unittest.TestCase``'s
+    assertions: ``assertTrue(x)`` holds when ``bool(x)``, ``assertAlmostEqual``
+    holds at once when ``first == second``), except that an assertion given a
+    non-finite number (NaN, ±inf) is NOOK, saying so: ``bool(nan)`` is True
+    in Python, so code_aster reports ``assertTrue(nan)`` as passed.
+    """
 
     deck_methods = frozenset(
         {"assertTrue", "assertFalse", "assertEqual", "assertAlmostEqual", "printSummary"}
@@ -25,7 +34,18 @@ class TestCaseRecorder:
         self.session = session
         self.count = 0
 
-    def _record(self, label: str, ok: bool, value, expected) -> None:
+    def _check(self, label: str, ok: bool, value, expected) -> None:
+        """Record code_aster's verdict ``ok`` unless a non-finite number is involved."""
+        odd = _non_finite_numbers((value, expected))
+        note = ""
+        if odd:
+            note = f": {odd[0]!r} is not a finite number"
+            if ok:
+                note += " (code_aster's unittest-based TestCase would count it as passed)"
+            ok = False
+        self._record(label, ok, value, expected, note)
+
+    def _record(self, label: str, ok: bool, value, expected, note: str = "") -> None:
         self.count += 1
         self.session.record_test(
             TestRecord(
@@ -41,24 +61,45 @@ class TestCaseRecorder:
                 strict=ok,
             )
         )
-        self.session.log(f"  {'OK  ' if ok else 'NOOK'} TestCase.{label} #{self.count}")
+        self.session.log(f"  {'OK  ' if ok else 'NOOK'} TestCase.{label} #{self.count}{note}")
 
     def assertTrue(self, value, msg=None):  # noqa: N802 - unittest's names
-        self._record("assertTrue", bool(value), value, True)
+        self._check("assertTrue", bool(value), value, True)
 
     def assertFalse(self, value, msg=None):  # noqa: N802
-        self._record("assertFalse", not bool(value), value, False)
+        self._check("assertFalse", not bool(value), value, False)
 
     def assertEqual(self, first, second, msg=None):  # noqa: N802
-        self._record("assertEqual", bool(first == second), first, second)
+        self._check("assertEqual", bool(first == second), first, second)
 
-    def assertAlmostEqual(self, first, second, places=7, msg=None, delta=None):  # noqa: N802
-        difference = abs(first - second)
-        ok = difference <= delta if delta is not None else round(difference, places) == 0
-        self._record("assertAlmostEqual", bool(ok), first, second)
+    def assertAlmostEqual(self, first, second, places=None, msg=None, delta=None):  # noqa: N802
+        if first == second:  # unittest's shortcut (inf == inf holds)
+            ok = True
+        elif delta is not None:
+            ok = abs(first - second) <= delta
+        else:
+            ok = round(abs(first - second), 7 if places is None else places) == 0
+        self._check("assertAlmostEqual", bool(ok), first, second)
 
     def printSummary(self):  # noqa: N802
         self.session.log(f"  TestCase: {self.count} assertion(s)")
+
+
+def _non_finite_numbers(values) -> list:
+    """The NaN and infinite numbers among ``values`` and the items of the
+    lists and tuples among them."""
+    found = []
+    for value in values:
+        items = value if isinstance(value, (list, tuple)) else (value,)
+        found += [item for item in items if _is_non_finite(item)]
+    return found
+
+
+def _is_non_finite(value) -> bool:
+    # numbers.Complex covers Python's and numpy's floats and complexes
+    if not isinstance(value, numbers.Complex) or isinstance(value, numbers.Integral):
+        return False
+    return not cmath.isfinite(complex(value))
 
 
 class _TestCaseFactory(DeckCallable):

@@ -19,7 +19,9 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from asterlite.errors import AsterliteError, Location
+from asterlite.errors import AsterliteError, Location, UnquotedLocation
+from asterlite.io.input_files import file_kind, read_deck_text
+from asterlite.io.non_finite import NonFiniteNumber, finite_float
 
 MESH_UNIT = 20
 MESH_SUFFIXES = (".mail", ".mmed", ".med")
@@ -48,6 +50,9 @@ class RunDescription:
     results: list[ResultFile] = field(default_factory=list)  # R lines, in order
     time_limit: float | None = None  # seconds (P time_limit)
     memory_limit: float | None = None  # megabytes (P memory_limit)
+    # why a unit has no file, said when the deck reads it: where a bare deck's
+    # mesh was looked for, or the meshes it could not choose between
+    unmapped: dict[int, str] = field(default_factory=dict)
 
 
 class ExportError(AsterliteError):
@@ -58,12 +63,18 @@ def read_export(path: Path) -> RunDescription:
     """Parse an ``.export`` file; paths are relative to its folder."""
     folder = path.parent
     run = RunDescription(name=path.stem, deck_files=[], source=path)
-    text = path.read_text(encoding="utf-8", errors="replace")
+    recognised = False  # no line quoted before a first F, R or P line
+    text = read_deck_text(path, "export file")
     for number, raw in enumerate(text.splitlines(), 1):
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
         fields = line.split()
+        if not recognised and fields[0] not in ("F", "R", "P"):
+            # not an export (a private file linked as one?): where, never what
+            where = UnquotedLocation(str(path), number, 1, reason=NOT_AN_EXPORT)
+            raise ExportError(NOT_AN_EXPORT, where)
+        recognised = True
         where = Location(str(path), number, 1, raw)
         if fields[0] == "P":
             if len(fields) < 2:
@@ -91,6 +102,9 @@ def read_export(path: Path) -> RunDescription:
             raise ExportError(f"file {name} named by the export does not exist", where)
         if file_type in ("comm", "nom") and not file_path.is_file():  # read as text
             raise ExportError(f"{name} named by the export is not a file", where)
+        if not (file_path.is_file() or file_path.is_dir()):  # a FIFO would block the run
+            kind = file_kind(file_path.stat().st_mode)
+            raise ExportError(f"{name} named by the export is {kind}: refused", where)
         if file_type == "comm":
             run.deck_files.append(file_path)
         elif file_type == "nom" or (file_path.suffix == ".py" and unit == 0):
@@ -104,6 +118,7 @@ def read_export(path: Path) -> RunDescription:
     return run
 
 
+NOT_AN_EXPORT = "not an export file: F, R or P lines were expected; the line is not shown"
 # P lines asterlite enforces, both positive numbers (seconds, megabytes)
 LIMITS = ("time_limit", "memory_limit")
 # R-line types asterlite cannot make: code_aster's databases and folders
@@ -113,9 +128,11 @@ NOT_PRODUCED = frozenset({"base", "bhdf", "repe"})
 def _limit(fields: list[str], where: Location) -> float:
     text = fields[2] if len(fields) > 2 else ""
     try:
-        value = float(text)
+        value = finite_float(text)
+    except NonFiniteNumber as error:  # P time_limit inf would be no limit at all
+        raise ExportError(f"P {fields[1]}: {error}", where) from None
     except ValueError:
-        value = float("nan")
+        value = 0.0
     if not value > 0:
         raise ExportError(f"P {fields[1]} must be a positive number, got {text!r}", where)
     return value
@@ -127,15 +144,43 @@ def describe_bare_deck(path: Path) -> RunDescription:
     run = RunDescription(name=path.stem, deck_files=[path.resolve()])
     continuation = sorted(folder.glob(f"{path.stem}.com[0-9]"))
     run.deck_files += [p.resolve() for p in continuation]
-    for suffix in MESH_SUFFIXES:
-        own = sorted(folder.glob(f"{path.stem}{suffix}"))
-        candidates = own or sorted(folder.glob(f"*{suffix}"))
-        if candidates:
-            run.units[MESH_UNIT] = candidates[0].resolve()
-            break
+    mesh, why = sibling_mesh(path)
+    if mesh is not None:
+        run.units[MESH_UNIT] = mesh.resolve()
+    else:
+        run.unmapped[MESH_UNIT] = why
     for helper in folder.glob("*.py"):
         run.helper_modules[helper.stem] = helper.resolve()
     return run
+
+
+def sibling_mesh(deck: Path) -> tuple[Path | None, str]:
+    """The mesh of a bare deck (unit 20): the deck's namesake (``d.mail``,
+    ``d.mmed``, ``d.med``, in that order), else the one mesh file of its
+    folder; (None, why) when there is none, or several to choose from (never
+    the first in alphabetical order: which one the deck means is not known)."""
+    folder = deck.parent
+    for suffix in MESH_SUFFIXES:
+        own = folder / f"{deck.stem}{suffix}"
+        if own.is_file():
+            return own, ""
+    found = sorted(p for suffix in MESH_SUFFIXES for p in folder.glob(f"*{suffix}") if p.is_file())
+    if len(found) == 1:
+        return found[0], ""
+    namesakes = ", ".join(f"{deck.stem}{suffix}" for suffix in MESH_SUFFIXES)
+    patterns = ", ".join(f"*{suffix}" for suffix in MESH_SUFFIXES)
+    if not found:
+        return None, (
+            f"no mesh beside the deck {deck.name}: looked for {namesakes}, then for "
+            f"{patterns} in {folder.resolve()}; put the mesh there, or name it in an "
+            f".export ('F mail <file> D {MESH_UNIT}')"
+        )
+    names = ", ".join(p.name for p in found)
+    return None, (
+        f"{len(found)} meshes beside the deck {deck.name} ({names}) and none named "
+        f"{namesakes}: which one to read is not known; name it in an .export "
+        f"('F mail {found[0].name} D {MESH_UNIT}') or rename it {deck.stem}{found[0].suffix}"
+    )
 
 
 def describe_run(path: Path) -> RunDescription:

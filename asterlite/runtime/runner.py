@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from asterlite.errors import AsterliteError, UnsupportedError
+from asterlite.report.fields import summary_fields, summary_lines
 from asterlite.runtime import stops, watchdog
 from asterlite.runtime.context import TestRecord
 from asterlite.runtime.export import NOT_PRODUCED, describe_run
@@ -60,6 +61,8 @@ class RunReport:
     # one dict per shock of those results: max FN, wear power (mean FN·|VT|)...
     shocks: list[dict] = field(default_factory=list)
     keyword_edits: list[dict] = field(default_factory=list)  # keyword overrides applied
+    # summary.json fields of asterlite.report.fields (verdicts, supports, ...)
+    extras: dict = field(default_factory=dict)
     # the deck's names and concepts after a computed run (asterlite.api reads them)
     namespace: dict = field(default_factory=dict, repr=False, compare=False)
     traceback: str = ""  # of an internal error: written to message.log, not shown
@@ -98,6 +101,7 @@ class RunReport:
             "overrides_used": self.overrides_used,
             "transients": self.transients,
             "shocks": self.shocks,
+            **self.extras,
             "tests": [
                 {
                     "command": t.command,
@@ -177,6 +181,7 @@ def run_deck(
     memory_limit: float | None = None,
     output_limit: float | None = None,
     aster_version: int | None = None,
+    report_page: bool = False,
 ) -> RunReport:
     """Run or check the deck at ``deck`` (an .export or a .comm).
 
@@ -219,7 +224,7 @@ def run_deck(
         stop.finishing()  # a signal from here on waits until the folder is written
         report.seconds = time.perf_counter() - start
         if folder is not None:
-            _finish_output(folder, report, session, save_results)
+            _finish_output(folder, report, session, save_results, report_page)
     return report
 
 
@@ -305,6 +310,7 @@ def _fill_report(report: RunReport, session, overrides, check_only: bool) -> Non
             report.message = f"cannot summarise the results: {type(error).__name__}: {error}"
         report.namespace = session.namespace
     report.keyword_edits = list(session.keyword_edits)
+    report.extras = summary_fields(report, session)
 
 
 def _where(error: BaseException) -> str:
@@ -361,7 +367,9 @@ DEFAULT_TIME_LIMIT = 3600.0  # CPU seconds of a run
 DEFAULT_CHECK_TIME_LIMIT = 60.0  # CPU seconds of ``asterlite check``
 DEFAULT_MEMORY_FRACTION = 0.5  # of the machine's memory, for a run or a check
 DEFAULT_OUTPUT_LIMIT = 2048.0  # MB: message.log and every file the deck writes
-MESSAGE_LOG_CAP = 256 * 1_000_000  # bytes of message.log at most
+# bytes of message.log at most: code_aster's .mess of a long study takes a
+# few MB; a print flood stops here with a located error, not at 256 MB
+MESSAGE_LOG_CAP = 32 * 1_000_000
 
 
 def run_limits(
@@ -547,11 +555,13 @@ def shock_summary(result: str | None, times, shock) -> dict:
     }
 
 
-def _finish_output(folder, report: RunReport, session, save_results: bool = False) -> None:
+def _finish_output(
+    folder, report: RunReport, session, save_results: bool = False, report_page: bool = False
+) -> None:
     """Publish a complete run's files (else keep them under incomplete/),
     copy the R-line results, end message.log and write the final summary."""
     try:
-        _place_files(folder, report, session, save_results)
+        _place_files(folder, report, session, save_results, report_page)
     except OSError as error:  # a full disk while finishing: say so, keep going
         failed = _os_error_report(report.deck, error, None)
         report.status, report.message = "ERROR", failed.message
@@ -571,7 +581,9 @@ def _finish_output(folder, report: RunReport, session, save_results: bool = Fals
         folder.release()
 
 
-def _place_files(folder, report: RunReport, session, save_results: bool) -> None:
+def _place_files(
+    folder, report: RunReport, session, save_results: bool, report_page: bool = False
+) -> None:
     complete = report.status in COMPLETE
     if complete and save_results:
         # every tran_gene of the deck, in the store documented in docs/results.md
@@ -584,6 +596,10 @@ def _place_files(folder, report: RunReport, session, save_results: bool) -> None
         except AsterliteError as error:
             report.status, report.message = "ERROR", f"results.h5 not saved: {error}"
             complete = False
+    if report_page and session is not None:  # asterlite run --report: report.html
+        from asterlite.report import write_run_page
+
+        write_run_page(folder, report, session)
     if complete:
         blocked = folder.publish()
         if blocked:
@@ -725,6 +741,7 @@ def format_summary(report: RunReport) -> str:
             f"checks: {report.checks_ok}/{report.checks_total} OK, {report.strict_ok} strict"
         )
         lines += [format_test_line(t) for t in report.tests]
+        lines += summary_lines(report)
     if report.message:
         lines.append(report.message)
     return "\n".join(lines)

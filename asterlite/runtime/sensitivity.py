@@ -224,6 +224,23 @@ def _check_spread(test, value: float) -> CheckSpread:
     return spread
 
 
+def no_checks_text(report) -> str:
+    """Why there is nothing to measure, and what to do."""
+    why = (
+        "the deck has no TEST_* check"
+        if not report.tests
+        else f"none of the deck's {len(report.tests)} TEST_* checks has a finite real value"
+    )
+    return (
+        f"{why}: sensitivity measures how far each check's value moves when the step "
+        "moves by a few ulps, so it needs checks on the quantities that matter "
+        "(TEST_RESU on RESU_GENE or REST_GENE_PHYS values, TEST_TABLE on POST_DYNA_MODA_T "
+        "statistics, TEST_FONCTION on RECU_FONCTION histories, with VALE_CALC set to this "
+        "run's value); to compare the transients' histories across steps and schemes "
+        "without checks, use asterlite converge"
+    )
+
+
 def run_sensitivity(
     deck: Path,
     runs: int = DEFAULT_RUNS,
@@ -240,6 +257,8 @@ def run_sensitivity(
         raise ConvergeError("the deck makes no DYNA_VIBRA TRAN/GENE result (tran_gene)")
     spreads = [_check_spread(t, v) for t, v in _numeric_checks(base)]
     shock_spreads = {k: ShockSpread(k, v) for k, v in _shock_values(base).items()}
+    if not spreads:
+        raise ConvergeError(no_checks_text(base))
     offsets = ulp_offsets(runs)
     failed = []
     for ulps in offsets:

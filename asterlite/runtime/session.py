@@ -22,6 +22,8 @@ from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
 from asterlite.concepts.base import Concept, Placeholder
 from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
+from asterlite.io.input_files import read_deck, read_deck_text
+from asterlite.io.text_encoding import UTF8, UTF8_BOM
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.runtime import watchdog
 from asterlite.runtime.context import CommandContext, TestRecord
@@ -143,10 +145,7 @@ class Session:
         try:
             return self.run.units[unit]
         except KeyError:
-            known = ", ".join(str(u) for u in sorted(self.run.units)) or "none"
-            raise CommandError(
-                f"no file is mapped to logical unit {unit} (mapped units: {known})"
-            ) from None
+            raise CommandError(unmapped_unit_text(self.run, unit, self.output_units)) from None
 
     def output_path(self, unit_or_name: int | str) -> Path:
         """A path in the output folder for a logical unit or a file name."""
@@ -198,7 +197,8 @@ class Session:
             from asterlite.lang import Evaluator, parse_deck
 
             path = self.run.helper_modules[name]
-            module = parse_deck(path.read_text(encoding="utf-8", errors="replace"), str(path))
+            text = read_deck_text(path, "helper module")
+            module = parse_deck(text, str(path), study_file=True)
             namespace = dict(self.namespace)
             Evaluator(namespace, module_loader=self.load_module).run(module)
             return namespace
@@ -211,9 +211,11 @@ class Session:
         self.current_file = str(path)
         self.started = False
         self.log(f"# deck {path.name}")
-        text = path.read_text(encoding="utf-8", errors="replace")
         try:
-            module = parse_deck(text, str(path))
+            text, encoding = read_deck(path)
+            if encoding not in (UTF8, UTF8_BOM):  # said, since the deck's strings carry it
+                self.log(f"# deck {path.name} read as {encoding}, not UTF-8")
+            module = parse_deck(text, str(path), study_file=True)
         except AsterliteError as error:
             if self.check is None:
                 raise
@@ -307,6 +309,24 @@ class Session:
             f"not assigned at module level by the deck: {', '.join(hints)} "
             f"(its deck-level variables: {listed})"
         )
+
+
+def unmapped_unit_text(run, unit: int, written: dict) -> str:
+    """Why a deck reads a logical unit no file is mapped to, and every place
+    looked: the export's F lines, the bare deck's sibling files, the units
+    the deck itself wrote."""
+    known = ", ".join(str(u) for u in sorted(run.units)) or "none"
+    if unit in run.unmapped:  # a bare deck's mesh: where it was looked for
+        return f"logical unit {unit}: {run.unmapped[unit]}"
+    if run.source is not None:
+        looked = f"the export {run.source} maps units {known} ('F <type> <file> D <unit>' lines)"
+    else:
+        looked = f"a bare deck maps only its sibling mesh to unit 20 (mapped units: {known})"
+    wrote = ", ".join(str(u) for u in sorted(written)) or "none"
+    return (
+        f"no file is mapped to logical unit {unit}: {looked}; "
+        f"the deck wrote no file on it earlier (units written: {wrote})"
+    )
 
 
 def deck_variables(namespace: dict) -> list[str]:

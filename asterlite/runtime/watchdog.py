@@ -15,6 +15,11 @@ asterlite does the same:
   capped (``RLIMIT_AS``) at the start-up size plus four times the limit, so
   that a runaway allocation fails at once with a MemoryError that the
   session turns into a :class:`MemoryLimitError` located at the command.
+  The address space runs well ahead of the resident memory (thread stacks,
+  allocator arenas), which is why the cap is that loose: a deck loop could
+  grow to four times the limit under it, so in the main thread the
+  resident memory is also sampled every 10 ms of CPU time while anything
+  runs (the CPU-time timer below), which stops deck code at the limit.
 
 numba's compilation of a kernel (once per install, cached afterwards) is
 not the study's work: the time it takes is not counted and the cap is lifted
@@ -23,13 +28,18 @@ while it runs, then moved up by what the compiler kept.
 The limits are per thread (``threading.local``): runs in other threads of
 the same process (a sweep) keep their own.
 
-In the main thread the time limit is also enforced between those points: a
-CPU-time timer (``ITIMER_PROF``) raises TimeLimitError wherever Python code
-runs once the time is spent (a long deck loop, a slow Python-level call),
-and again every second if something swallowed it; and the soft
-``RLIMIT_CPU`` is set a grace period beyond the limit, so a computation stuck
-in compiled code that never returns to Python ends the process (SIGXCPU)
-instead of running on.
+In the main thread the limits are also enforced between those points: a
+CPU-time timer (``ITIMER_PROF``, every 10 ms of CPU when there is a memory
+limit) raises MemoryLimitError or TimeLimitError wherever Python code runs
+(a long deck loop, a slow Python-level call), and again a second later if
+something swallowed it. A computation in compiled code that does not return
+to Python within a grace period past the limit (a quarter of the limit, at
+least 2 s) gets SIGXCPU from the soft ``RLIMIT_CPU``, handled as a
+TimeLimitError where Python resumes, so the run still ends with its status;
+if it never returns, a CPU-time timer with no handler (``ITIMER_VIRTUAL``,
+SIGVTALRM) ends the process one grace period later. Neither is permanent:
+both are restored when the run ends (a hard RLIMIT_CPU could never be
+raised again, and an API user's process outlives the run).
 """
 
 from __future__ import annotations
@@ -97,18 +107,30 @@ def _resident_size() -> int | None:
 
 
 def _released_size() -> int | None:
-    """The resident size once unreachable objects are collected and the C
-    allocator has returned its free pages to the system (glibc)."""
+    """The resident size once the C allocator has returned its free pages to
+    the system (glibc) and, at most once a CPU second (a full collection of
+    a large heap takes long), unreachable objects are collected."""
     import gc
 
-    gc.collect()
+    _trim_allocator()
+    now = time.process_time()
+    if now - getattr(_state, "collected_at", -1.0e9) >= GC_INTERVAL_SECONDS:
+        _state.collected_at = now
+        gc.collect()
+        _trim_allocator()
+    return _resident_size()
+
+
+GC_INTERVAL_SECONDS = 1.0
+
+
+def _trim_allocator() -> None:
     try:
         import ctypes
 
         ctypes.CDLL("libc.so.6").malloc_trim(0)
     except (OSError, AttributeError):
         pass
-    return _resident_size()
 
 
 def check_memory() -> None:
@@ -147,14 +169,15 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
     _state.memory_mb = megabytes
     _state.resident_start = _resident_size()
     _state.compiled_at_start = _compiling.resident
+    _state.quiet_until = None
     try:
-        with _address_space_cap(megabytes), _cpu_timer(seconds):
+        with _address_space_cap(megabytes), _cpu_timer(seconds, megabytes):
             yield
     finally:
         _state.deadline = _state.seconds = _state.memory_mb = _state.resident_start = None
 
 
-def _current_size() -> int | None:
+def address_space_size() -> int | None:
     """The process's address space in bytes (Linux), None where unknown."""
     try:
         with open("/proc/self/status", encoding="ascii") as status:
@@ -209,7 +232,8 @@ def _compile_started() -> None:
     if _compiling.depth > 1:  # a callee compiled inside an outer compilation
         return
     _compiling.started = time.process_time()
-    _compiling.size_before = _current_size()
+    _pause_cpu_backstop()  # a long compilation must not meet SIGXCPU or SIGVTALRM
+    _compiling.size_before = address_space_size()
     _compiling.resident_before = _resident_size()
     try:
         import resource
@@ -228,7 +252,7 @@ def _compile_ended() -> None:
         return
     spent = time.process_time() - _compiling.started
     _compiling.seconds += spent
-    _extend_cpu_backstop(spent)
+    _resume_cpu_backstop(spent)
     after, before = _resident_size(), _compiling.resident_before
     if after is not None and before is not None:
         _compiling.resident += max(0, after - before)
@@ -237,7 +261,7 @@ def _compile_ended() -> None:
     import resource
 
     soft, hard = _compiling.cap
-    grown = max(0, (_current_size() or 0) - (_compiling.size_before or 0))
+    grown = max(0, (address_space_size() or 0) - (_compiling.size_before or 0))
     raised = soft + grown if hard == resource.RLIM_INFINITY else min(soft + grown, hard)
     resource.setrlimit(resource.RLIMIT_AS, (raised, hard))
     _compiling.cap = None
@@ -271,7 +295,7 @@ def _address_space_cap(megabytes: float | None):
     address space runs well ahead of the resident memory (thread stacks,
     allocator arenas), so the cap only stops a runaway allocation at once; the
     limit itself is checked on resident memory (check_memory)."""
-    size = _current_size()
+    size = address_space_size()
     if megabytes is None or size is None:
         return address_space_cap(None)
     return address_space_cap(size + int(ADDRESS_SPACE_HEADROOM * megabytes * MEGABYTE))
@@ -288,49 +312,97 @@ def preload_engine() -> None:
     import scipy.sparse.linalg  # noqa: F401
 
 
-# seconds of CPU past the time limit before RLIMIT_CPU ends a process stuck
-# in compiled code (a Python-level stop is tried first, see _cpu_timer)
-CPU_GRACE_SECONDS = 30.0
+# CPU seconds past the time limit before SIGXCPU stops compiled code that
+# has not returned to Python, and again before SIGVTALRM ends the process
+CPU_GRACE_SECONDS = 2.0
 CPU_GRACE_FRACTION = 0.25
+MEMORY_SAMPLE_SECONDS = 0.01  # CPU seconds between two looks at the resident memory
+REPEAT_SECONDS = 1.0  # a stop swallowed somewhere is raised again this much later
+
+
+def cpu_grace(seconds: float) -> float:
+    return max(CPU_GRACE_SECONDS, CPU_GRACE_FRACTION * seconds)
+
+
+def _next_tick() -> float:
+    """CPU seconds until the timer must look again: the next memory sample,
+    or the deadline (compilation time is not the study's: it moves it)."""
+    waits = []
+    if getattr(_state, "memory_mb", None) is not None:
+        waits.append(MEMORY_SAMPLE_SECONDS)
+    deadline = getattr(_state, "deadline", None)
+    if deadline is not None:
+        waits.append(deadline - _spent())
+    return max(min(waits, default=REPEAT_SECONDS), MEMORY_SAMPLE_SECONDS)
 
 
 def _on_cpu_timer(_number, _frame) -> None:
-    """SIGPROF: stop the run if its time is spent, else wait for the rest."""
-    deadline = getattr(_state, "deadline", None)
-    if deadline is None:
+    """SIGPROF: stop the run if its memory or its time is spent (never while
+    numba compiles: neither its time nor its memory is the study's)."""
+    if getattr(_state, "memory_mb", None) is None and getattr(_state, "deadline", None) is None:
         return
-    remaining = deadline - _spent()
-    if remaining > 0.0:  # compilation time was not the study's: wait longer
-        signal.setitimer(signal.ITIMER_PROF, max(remaining, 0.01))
+    signal.setitimer(signal.ITIMER_PROF, _next_tick())
+    if _compiling.depth > 0:
         return
-    signal.setitimer(signal.ITIMER_PROF, 1.0)  # again, in case this one is swallowed
-    check_time()
+    now = time.process_time()
+    quiet_until = getattr(_state, "quiet_until", None)
+    if quiet_until is not None and now < quiet_until:
+        return  # a stop is on its way out: give it time to end the run
+    try:
+        check_memory()
+        check_time()
+    except (MemoryLimitError, TimeLimitError):
+        _state.quiet_until = now + REPEAT_SECONDS
+        raise
+
+
+def _on_cpu_exhausted(_number, _frame) -> None:
+    """SIGXCPU (the soft RLIMIT_CPU, a grace period past the limit): compiled
+    code held the CPU past the limit; stop where Python resumes."""
+    limit = getattr(_state, "seconds", None)
+    if limit is None:
+        return
+    raise TimeLimitError(
+        f"the run's time limit of {limit:g} s is exhausted: a computation in compiled code "
+        f"went on {cpu_grace(limit):g} s past it (export 'P time_limit', or asterlite run "
+        "--time-limit to change it)"
+    )
 
 
 @contextmanager
-def _cpu_timer(seconds: float | None):
-    """Arm the CPU-time timer and the RLIMIT_CPU backstop (main thread only)."""
-    if seconds is None or threading.current_thread() is not threading.main_thread():
+def _cpu_timer(seconds: float | None, megabytes: float | None = None):
+    """Arm the CPU-time timer, and the SIGXCPU and SIGVTALRM backstops of a
+    time limit (main thread only: signals are handled there)."""
+    if (seconds is None and megabytes is None) or (
+        threading.current_thread() is not threading.main_thread()
+    ):
         yield
         return
     previous = signal.signal(signal.SIGPROF, _on_cpu_timer)
-    signal.setitimer(signal.ITIMER_PROF, max(seconds, 0.01))
-    backstop = _set_cpu_backstop(seconds)
+    signal.siginterrupt(signal.SIGPROF, False)  # 100 times a second: restart system calls
+    previous_xcpu = signal.signal(signal.SIGXCPU, _on_cpu_exhausted) if seconds else None
+    signal.setitimer(signal.ITIMER_PROF, _next_tick())
+    backstop = _set_cpu_backstop(seconds) if seconds else None
     try:
         yield
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0.0)
         signal.signal(signal.SIGPROF, previous)
         _restore_cpu_backstop(backstop)
+        if previous_xcpu is not None:
+            signal.signal(signal.SIGXCPU, previous_xcpu)
 
 
 def _set_cpu_backstop(seconds: float):
-    """Lower the soft RLIMIT_CPU to now + limit + grace; the previous limits."""
+    """Lower the soft RLIMIT_CPU to now + limit + grace (SIGXCPU) and arm the
+    SIGVTALRM timer one grace later (its default action ends the process);
+    the previous RLIMIT_CPU."""
+    grace = cpu_grace(seconds)
+    _arm_kill_timer(seconds + 2 * grace)
     try:
         import resource
 
         soft, hard = resource.getrlimit(resource.RLIMIT_CPU)
-        grace = max(CPU_GRACE_SECONDS, CPU_GRACE_FRACTION * seconds)
         target = int(time.process_time() + seconds + grace) + 1
         if soft != resource.RLIM_INFINITY:
             target = min(target, soft)
@@ -343,15 +415,48 @@ def _set_cpu_backstop(seconds: float):
     return soft, hard
 
 
-def _extend_cpu_backstop(seconds: float) -> None:
-    """Compilation is not the study's time: move the backstop by what it took."""
-    if _backstop.previous is None or seconds <= 0.0:
+def _arm_kill_timer(seconds: float) -> None:
+    """SIGVTALRM after ``seconds`` more of user CPU time, with its default
+    action (the process ends): what compiled code that never returns meets."""
+    try:
+        signal.signal(signal.SIGVTALRM, signal.SIG_DFL)
+        signal.setitimer(signal.ITIMER_VIRTUAL, max(seconds, 0.01))
+        _backstop.kill_armed = True
+    except (AttributeError, OSError, ValueError):
+        _backstop.kill_armed = False
+
+
+def _pause_cpu_backstop() -> None:
+    """While numba compiles: the soft RLIMIT_CPU at its hard value, the
+    SIGVTALRM timer stopped (what it had left is kept)."""
+    if _backstop.previous is None:
         return
+    if _backstop.kill_armed:
+        _backstop.kill_left, _interval = signal.getitimer(signal.ITIMER_VIRTUAL)
+        signal.setitimer(signal.ITIMER_VIRTUAL, 0.0)
     try:
         import resource
 
-        soft, hard = resource.getrlimit(resource.RLIMIT_CPU)
-        if soft == resource.RLIM_INFINITY:
+        _backstop.soft_before_compiling, hard = resource.getrlimit(resource.RLIMIT_CPU)
+        resource.setrlimit(resource.RLIMIT_CPU, (hard, hard))
+    except (ImportError, ValueError, OSError):
+        _backstop.soft_before_compiling = None
+
+
+def _resume_cpu_backstop(seconds: float) -> None:
+    """Compilation is not the study's time: the backstops resume, moved by
+    what it took."""
+    if _backstop.previous is None:
+        return
+    if _backstop.kill_armed and _backstop.kill_left > 0.0:
+        signal.setitimer(signal.ITIMER_VIRTUAL, _backstop.kill_left)
+    soft = _backstop.soft_before_compiling
+    _backstop.soft_before_compiling = None
+    try:
+        import resource
+
+        _, hard = resource.getrlimit(resource.RLIMIT_CPU)
+        if soft is None or soft == resource.RLIM_INFINITY:
             return
         raised = soft + int(seconds) + 1
         if hard != resource.RLIM_INFINITY:
@@ -363,6 +468,9 @@ def _extend_cpu_backstop(seconds: float) -> None:
 
 def _restore_cpu_backstop(previous) -> None:
     _backstop.previous = None
+    if _backstop.kill_armed:
+        signal.setitimer(signal.ITIMER_VIRTUAL, 0.0)
+        _backstop.kill_armed = False
     if previous is None:
         return
     try:
@@ -375,6 +483,9 @@ def _restore_cpu_backstop(previous) -> None:
 
 class _Backstop:
     previous = None  # (soft, hard) RLIMIT_CPU before the run lowered it
+    kill_armed = False  # the SIGVTALRM timer is set
+    kill_left = 0.0  # its seconds left when a compilation stopped it
+    soft_before_compiling = None  # the soft RLIMIT_CPU a compilation lifted
 
 
 _backstop = _Backstop()

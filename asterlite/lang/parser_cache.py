@@ -1,0 +1,139 @@
+"""The deck parser's LALR tables, kept between processes in a private folder.
+
+Building the tables from ``deck.lark`` takes about 0.3 s, loading them
+about 15 ms: without a cache every ``asterlite check`` would pay the build.
+lark's own ``cache=True`` is unsafe: it pickles the tables into the shared
+temporary folder under a name anyone can compute, and unpickles whatever
+file has that name, so any local user could plant a pickle that runs their
+code in the next ``asterlite check``. Here:
+
+- the folder is ``$XDG_CACHE_HOME/asterlite/parser`` (by default
+  ``~/.cache/asterlite/parser``), created with mode 0700, and used only when it
+  and every folder above it belong to this user or to root and nobody else
+  may rename its entries: not writable by group or others, unless sticky and
+  root's (``/tmp``). Otherwise nothing is cached (the tables are built);
+- the file is read through ``O_NOFOLLOW`` and only if it is a regular file
+  of this user that nobody else may write;
+- the tables are plain data (dicts, lists, tuples, strings, numbers); they
+  are unpickled by an Unpickler that refuses every global, so even a file
+  planted there could not run code, only fail to load;
+- a file is written under a temporary name and renamed: a process reading
+  concurrently gets a whole file or none.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import os
+import pickle
+import stat
+import sys
+import tempfile
+from pathlib import Path
+
+CACHE_NAME = ("asterlite", "parser")
+PREFIX = "deck-parser-"
+# the tables are ~0.15 MB; a larger file is not ours
+MAX_BYTES = 16 * 1024 * 1024
+# bump when what is stored changes
+FORMAT = "1"
+
+
+class _DataOnlyUnpickler(pickle.Unpickler):
+    """Unpickles builtin data only: any class or function reference (how a
+    pickle runs code) is refused."""
+
+    def find_class(self, module, name):
+        raise pickle.UnpicklingError(f"refused: {module}.{name} in the parser cache")
+
+
+def cache_folder() -> Path | None:
+    """The private folder (created 0700 if missing), or None when it cannot
+    be made or is not private."""
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    if not os.path.isabs(base):
+        return None
+    folder = Path(base).joinpath(*CACHE_NAME)
+    try:
+        folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+        if not _is_private_folder(folder):
+            return None
+    except OSError:
+        return None
+    return folder
+
+
+def _is_private_folder(folder: Path) -> bool:
+    """The folder is a real folder of this user, writable by nobody else, and
+    no folder above it lets another user rename it."""
+    info = os.lstat(folder)
+    if not stat.S_ISDIR(info.st_mode) or info.st_uid != os.geteuid():
+        return False
+    if info.st_mode & 0o077:  # 0700: others may not even list it
+        return False
+    for above in Path(os.path.realpath(folder)).parents:
+        if not _is_safe_ancestor(os.stat(above)):
+            return False
+    return True
+
+
+def _is_safe_ancestor(info: os.stat_result) -> bool:
+    if info.st_uid not in (os.geteuid(), 0):
+        return False
+    shared = info.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+    # a sticky folder of root's (/tmp): others may add entries, not rename ours
+    return not shared or (info.st_mode & stat.S_ISVTX and info.st_uid == 0)
+
+
+def cache_key(grammar: str) -> str:
+    """Names the tables of ``grammar`` for this lark and this Python."""
+    import lark
+
+    text = "\0".join((FORMAT, lark.__version__, sys.version, grammar))
+    return hashlib.sha256(text.encode()).hexdigest()[:24]
+
+
+def load_tables(folder: Path, key: str) -> dict | None:
+    """The stored tables for ``key``, or None (absent, not ours, not data)."""
+    try:
+        descriptor = os.open(folder / f"{PREFIX}{key}.pickle", os.O_RDONLY | os.O_NOFOLLOW)
+    except OSError:
+        return None
+    with os.fdopen(descriptor, "rb") as stream:
+        info = os.fstat(descriptor)
+        if not (
+            stat.S_ISREG(info.st_mode)
+            and info.st_uid == os.geteuid()
+            and not info.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+            and info.st_size <= MAX_BYTES
+        ):
+            return None
+        try:
+            tables = _DataOnlyUnpickler(io.BytesIO(stream.read())).load()
+        except Exception:  # damaged or foreign: built again
+            return None
+    if not (isinstance(tables, dict) and {"data", "memo"} <= tables.keys()):
+        return None
+    return tables
+
+
+def store_tables(folder: Path, key: str, parser) -> None:
+    """Store ``parser``'s tables for ``key`` (written aside, then renamed) and
+    drop the tables of older grammars; a failure only means no cache."""
+    buffer = io.BytesIO()
+    parser.save(buffer, exclude_options=("postlex",))  # the indenter is given when loading
+    try:
+        descriptor, part = tempfile.mkstemp(prefix=f".{PREFIX}", suffix=".part", dir=folder)
+    except OSError:
+        return
+    try:
+        with os.fdopen(descriptor, "wb") as stream:
+            stream.write(buffer.getvalue())
+        os.replace(part, folder / f"{PREFIX}{key}.pickle")
+    except OSError:  # a full disk, say
+        Path(part).unlink(missing_ok=True)
+        return
+    for older in folder.glob(f"{PREFIX}*.pickle"):
+        if older.name != f"{PREFIX}{key}.pickle":
+            older.unlink(missing_ok=True)

@@ -1,0 +1,319 @@
+"""DYNA_VIBRA, TYPE_CALCUL='HARM' (code_aster's comdlh): the harmonic response
+at a list of frequencies, on a generalized basis (``harm_gene``) or on the
+assembled physical matrices (``dyna_harmo``). commands/dyna_vibra.py
+dispatches here.
+
+This module reads the keywords into matrices, :class:`HarmonicLoad`
+excitations and a frequency list; the solves live in ``asterlite.harmonic``
+(``modal.solve``: all frequencies in batches; ``physical.solve``: one
+sparse factorisation per frequency).
+
+- Frequencies: FREQ or LIST_FREQ, in the order given (NUME_ORDRE 1..n).
+- Fields: NOM_CHAM, or DEPL, VITE and ACCE (TOUT_CHAM='OUI' or nothing
+  given): VITE = iω u, ACCE = -ω² u.
+- Matrices: (K + iωC - ω²M) u = F; K may be complex (RIGI_MECA_HYST,
+  RIGI_GENE_C: hysteretic damping); C is MATR_AMOR, or on a generalized
+  basis AMOR_MODAL's diagonal 2 ξ_i sqrt(|k_ii m_ii|) (dl_CreateDampMatrix:
+  missing ratios repeat the last one, extra ones are ignored).
+- EXCIT: VECT_ASSE / CHARGE (physical) or VECT_ASSE_GENE times
+  COEF_MULT[_C] or FONC_MULT[_C](f), times e^{i PHAS_DEG π/180} and ω^PUIS_PULS.
+- EXCIT_RESU: COEF_MULT_C times the DEPL field of a previous harmonic result
+  at the same frequency (relative precision 1e-6, dyexre).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
+from asterlite.errors import NumericalError
+from asterlite.harmonic import HarmonicLoad, derived_fields, load_matrix
+from asterlite.harmonic import modal as modal_solver
+from asterlite.harmonic.modal import SingularSystem
+
+
+def run_harmonic(ctx, kw):
+    frequencies = frequency_list(ctx, kw)
+    names = field_names(kw)
+    if kw.get("BASE_CALCUL") == "GENE":
+        return generalized(ctx, kw, frequencies, names)
+    return physical(ctx, kw, frequencies, names)
+
+
+# ----------------------------------------------------------------------------- common readers
+
+
+def frequency_list(ctx, kw) -> np.ndarray:
+    if kw.get("LIST_FREQ") is not None:
+        values = np.asarray(kw["LIST_FREQ"].values, dtype=float)
+    else:
+        values = np.atleast_1d(np.asarray(kw["FREQ"], dtype=float))
+    if values.size == 0:
+        ctx.error("no frequency to compute", "FREQ", kw)
+    return values
+
+
+def field_names(kw) -> tuple[str, ...]:
+    """NOM_CHAM in the deck's order, else DEPL, VITE, ACCE (comdlh's default,
+    which TOUT_CHAM='OUI' asks for explicitly)."""
+    kw.mark_used("TOUT_CHAM")  # its only value, 'OUI', is the default set of fields
+    names = kw.get("NOM_CHAM")
+    if not names:
+        return HARMONIC_FIELDS
+    names = (names,) if isinstance(names, str) else tuple(names)
+    return tuple(dict.fromkeys(names))
+
+
+def multiplier(ctx, occ):
+    """(g, label) of an EXCIT occurrence: a number or a function of FREQ."""
+    for key in ("COEF_MULT", "COEF_MULT_C"):
+        if occ.get(key) is not None:
+            return occ[key], key
+    for key in ("FONC_MULT", "FONC_MULT_C"):
+        function = occ.get(key)
+        if function is None:
+            continue
+        parameters = getattr(function, "NOM_PARA", None)
+        if hasattr(function, "VALE") and not isinstance(parameters, str):
+            # a formula: code_aster evaluates it at FREQ=f (fointe with 'FREQ')
+            if tuple(parameters) != ("FREQ",):
+                ctx.error(
+                    f"{key}: the formula {function.name or ''} must depend on FREQ only "
+                    f"(it takes {', '.join(parameters)})",
+                    key,
+                    occ,
+                )
+        return function, key
+    return 1.0, "COEF_MULT"
+
+
+def harmonic_load(ctx, occ, vector, label) -> HarmonicLoad:
+    value, _ = multiplier(ctx, occ)
+    return HarmonicLoad(
+        vector=vector,
+        multiplier=value,
+        phase_deg=float(occ.get("PHAS_DEG", 0.0)),
+        power=int(occ.get("PUIS_PULS", 0)),
+        label=label,
+    )
+
+
+def result_excitations(ctx, kw, frequencies, numbering, size) -> np.ndarray | None:
+    """EXCIT_RESU: Σ COEF_MULT_C · DEPL(f) of previous results (n_freq, size)."""
+    occs = kw.factor("EXCIT_RESU")
+    if not occs:
+        return None
+    out = np.zeros((frequencies.size, size), dtype=complex)
+    for occ in occs:
+        previous = occ["RESULTAT"]
+        if getattr(previous, "numbering", None) is not numbering and (
+            getattr(previous.numbering, "dofs", None) != getattr(numbering, "dofs", ())
+        ):
+            ctx.error("the result is not on the numbering of the matrices", "RESULTAT", occ)
+        depl = previous.fields.get("DEPL")
+        if depl is None:
+            ctx.error("the result holds no DEPL field", "RESULTAT", occ)
+        stored = np.asarray(previous.frequencies, dtype=float)
+        for k, f in enumerate(frequencies):
+            tolerance = 1e-6 * abs(f) if abs(f) > 1e-12 else 1e-12
+            hits = np.flatnonzero(np.abs(stored - f) <= tolerance)
+            if hits.size == 0:
+                ctx.error(f"the result has no field at {f:g} Hz", "RESULTAT", occ)
+            out[k] += complex(occ["COEF_MULT_C"]) * depl[hits[0]]
+    return out
+
+
+def numerical_error(ctx, error: SingularSystem):
+    raise NumericalError(str(error), ctx.location, f"{ctx.command}/FREQ") from None
+
+
+# ----------------------------------------------------------------------------- generalized
+
+
+def generalized(ctx, kw, frequencies, names):
+    mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
+    numbering = mass_matrix.numbering
+    for key in ("MATR_RIGI", "MATR_AMOR"):
+        matrix = kw.get(key)
+        if matrix is not None and matrix.numbering is not numbering:
+            ctx.error(f"{key} is not on the generalized numbering of MATR_MASS", key, kw)
+    mass = np.asarray(mass_matrix.matrix, dtype=float)
+    stiffness = np.asarray(stiffness_matrix.matrix)
+    stiffness = stiffness.astype(complex if np.iscomplexobj(stiffness) else float)
+    n = mass.shape[0]
+    if stiffness.shape != (n, n):
+        ctx.error("MATR_MASS and MATR_RIGI do not have the same size", "MATR_RIGI", kw)
+    damping = None
+    if kw.get("MATR_AMOR") is not None:
+        damping = np.asarray(kw["MATR_AMOR"].matrix, dtype=float)
+    modal = modal_damping(ctx, kw, mass, stiffness)
+    if modal is not None:
+        damping = modal  # comdlh: AMOR_MODAL builds the damping matrix it uses
+    loads = []
+    for i, occ in enumerate(kw.factor("EXCIT"), start=1):
+        vector = occ["VECT_ASSE_GENE"]
+        if vector.numbering is not numbering and np.size(vector.values) != n:
+            ctx.error(
+                f"VECT_ASSE_GENE has {np.size(vector.values)} values for {n} generalized DOFs",
+                "VECT_ASSE_GENE",
+                occ,
+            )
+        loads.append(harmonic_load(ctx, occ, np.asarray(vector.values), f"EXCIT[{i}]"))
+    rhs = load_matrix(loads, frequencies, n)
+    extra = result_excitations(ctx, kw, frequencies, numbering, n)
+    if extra is not None:
+        rhs = rhs + extra
+    constraints = None
+    if np.size(getattr(numbering, "constraints", ())):  # a coupled generalized model
+        from asterlite.substructure.coupling import null_space_basis
+
+        constraints = null_space_basis(np.asarray(numbering.constraints, dtype=float), n)
+    try:
+        depl, info = modal_solver.solve(mass, stiffness, damping, frequencies, rhs, constraints)
+    except SingularSystem as error:
+        numerical_error(ctx, error)
+    extra_note = f", {info.redone} solved again directly" if info.redone else ""
+    ctx.log(
+        f"DYNA_VIBRA HARM GENE: {frequencies.size} frequencies "
+        f"[{frequencies.min():g}, {frequencies.max():g}] Hz, {n} generalized DOFs"
+        + (f" ({constraints.shape[1]} independent)" if constraints is not None else "")
+        + f", {info.method} solve{extra_note}"
+    )
+    return HarmGene(
+        basis=getattr(mass_matrix, "basis", None),
+        numbering=numbering,
+        frequencies=frequencies,
+        order=np.arange(1, frequencies.size + 1),
+        fields=derived_fields(depl, frequencies, names),
+        info={"method": info.method},
+    )
+
+
+def modal_damping(ctx, kw, mass, stiffness) -> np.ndarray | None:
+    """AMOR_MODAL on a generalized basis (dl_CreateDampMatrix): the diagonal
+    matrix 2 ξ_i sqrt(|k_ii m_ii|)."""
+    occs = kw.factor("AMOR_MODAL")
+    if not occs:
+        return None
+    occ = occs[0]
+    ratios = occ.get("AMOR_REDUIT")
+    if ratios is None and occ.get("LIST_AMOR") is not None:
+        ratios = occ["LIST_AMOR"].values
+    if ratios is None:
+        return None
+    ratios = np.atleast_1d(np.asarray(ratios, dtype=float))
+    n = mass.shape[0]
+    if ratios.size > n:
+        ctx.log(
+            f"warning: AMOR_MODAL gives {ratios.size} damping ratios for {n} modes: "
+            "the extra ones are ignored"
+        )
+        ratios = ratios[:n]
+    elif ratios.size < n:
+        ctx.log(f"AMOR_MODAL: the {n - ratios.size} last modes take the last damping ratio given")
+        ratios = np.concatenate([ratios, np.full(n - ratios.size, ratios[-1])])
+    critical = 2.0 * np.sqrt(np.abs(np.diagonal(stiffness) * np.diagonal(mass)))
+    return np.diag(ratios * critical)
+
+
+# ----------------------------------------------------------------------------- physical
+
+
+def physical(ctx, kw, frequencies, names):
+    from asterlite.concepts.assembly import ComplexAssembledMatrix
+    from asterlite.fem.constraints import eliminate
+    from asterlite.harmonic import physical as physical_solver
+
+    mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
+    for key in ("MATR_MASS", "MATR_RIGI", "MATR_AMOR"):
+        matrix = kw.get(key)
+        if matrix is not None and matrix.satisfies("matr_asse_pres_c"):
+            ctx.unsupported("an acoustic harmonic response (matr_asse_pres_c)", key, kw)
+    if kw.factor("AMOR_MODAL"):
+        # code_aster stops too (DYNALINE1_95): modal damping needs a generalized basis
+        ctx.error("AMOR_MODAL needs generalized matrices (BASE_CALCUL='GENE')", "AMOR_MODAL", kw)
+    numbering = stiffness_matrix.numbering
+    for key in ("MATR_MASS", "MATR_AMOR"):
+        matrix = kw.get(key)
+        if matrix is not None and matrix.numbering is not numbering:
+            ctx.error(f"{key} is not on the numbering of MATR_RIGI", key, kw)
+    damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
+    b_matrix, _ = numbering.constraint_matrix()
+    # the relations' values are not those of the harmonic problem: code_aster's
+    # Lagrange right-hand side is zero unless an EXCIT CHARGE imposes values
+    elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
+    sweep = physical_solver.prepare(
+        elimination, stiffness_matrix.matrix, mass_matrix.matrix, damping
+    )
+    loads = physical_loads(ctx, kw, numbering, stiffness_matrix)
+    vectors = (
+        np.array([load.vector for load in loads]) if loads else np.zeros((0, numbering.n_dofs))
+    )
+    coefficients = (
+        np.column_stack([load.coefficients(frequencies) for load in loads])
+        if loads
+        else np.zeros((frequencies.size, 0), dtype=complex)
+    )
+    extra = result_excitations(ctx, kw, frequencies, numbering, numbering.n_dofs)
+    if extra is not None:
+        vectors = np.vstack([vectors, extra])
+        coefficients = np.hstack([coefficients, np.eye(frequencies.size, dtype=complex)])
+    try:
+        depl, info = physical_solver.solve(sweep, frequencies, vectors, coefficients)
+    except SingularSystem as error:
+        numerical_error(ctx, error)
+    hysteretic = isinstance(stiffness_matrix, ComplexAssembledMatrix)
+    ctx.log(
+        f"DYNA_VIBRA HARM PHYS: {frequencies.size} frequencies "
+        f"[{frequencies.min():g}, {frequencies.max():g}] Hz, {info['n_free']} free DOFs of "
+        f"{numbering.n_dofs}{', complex stiffness' if hysteretic else ''}, "
+        f"{info['seconds']:.3f} s"
+    )
+    return DynaHarmo(
+        numbering=numbering,
+        frequencies=frequencies,
+        order=np.arange(1, frequencies.size + 1),
+        fields=derived_fields(depl, frequencies, names),
+        model=kw.get("MODELE") or getattr(stiffness_matrix, "model", None),
+        materials=kw.get("CHAM_MATER") or getattr(stiffness_matrix, "materials", None),
+        characteristics=kw.get("CARA_ELEM") or getattr(stiffness_matrix, "characteristics", None),
+    )
+
+
+def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
+    from asterlite.concepts.assembly import MechanicalLoad
+    from asterlite.fem.assemble import assemble_terms
+    from asterlite.fem.loads import load_terms
+
+    loads = []
+    for i, occ in enumerate(kw.factor("EXCIT"), start=1):
+        if occ.get("VECT_ASSE") is not None:
+            field = occ["VECT_ASSE"]
+            vector = np.asarray(field.values)
+            if vector.size != numbering.n_dofs or (
+                field.numbering is not numbering and field.numbering.dofs != numbering.dofs
+            ):
+                ctx.error("VECT_ASSE is not on the numbering of the matrices", "VECT_ASSE", occ)
+        else:
+            load = occ["CHARGE"]
+            if not isinstance(load, MechanicalLoad):
+                ctx.unsupported(
+                    f"EXCIT CHARGE of type {load.aster_type} in a harmonic response",
+                    "CHARGE",
+                    occ,
+                )
+            if any(abs(relation.rhs) > 0.0 for relation in load.relations):
+                ctx.unsupported(
+                    "EXCIT CHARGE imposing non-zero displacements in a harmonic response",
+                    "CHARGE",
+                    occ,
+                )
+            try:
+                terms = load_terms(
+                    load, stiffness_matrix.characteristics, stiffness_matrix.materials
+                )
+                vector = assemble_terms(terms, numbering)
+            except KeyError as exc:
+                ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
+        loads.append(harmonic_load(ctx, occ, vector, f"EXCIT[{i}]"))
+    return loads
