@@ -23,7 +23,9 @@ from asterlite.dynamics.model import (
     ShockSpec,
     build_shocks,
     damped_step_limit,
-    modal_damping,
+    diagonal_damping_rates,
+    modal_damping_rates,
+    optimal_tangential_damping_v15,
     stability_limit,
     suggested_step,
     tabulate_excitation,
@@ -103,6 +105,7 @@ def run(ctx, kw):
     for spec, title in zip(specs, unique_titles([s.name for s in specs]), strict=True):
         spec.name = title  # one name per shock (asterlite.concepts.titles)
     continue_law_states(kw, specs)
+    legacy_tangential_damping(ctx, system, specs)
     if kw.factor("VERI_CHOC"):
         check_basis_for_shocks(ctx, kw, specs, basis, system)
     shocks = build_shocks(specs, system)
@@ -205,6 +208,9 @@ def run(ctx, kw):
             f"{result.info['reintegrated_steps']} steps integrated again up to a switch, "
             f"{result.info['relinearisations']} linearisations about a contact point that moved"
         )
+    # the deck's step bounds (asterlite sensitivity moves them with PAS when equal to it)
+    result.info["pas_mini"] = schema_kw.get("PAS_MINI")
+    result.info["pas_maxi"] = schema_kw.get("PAS_MAXI")
     if supports:
         result.info["mult_appui"] = supports
     if corrections:
@@ -486,11 +492,33 @@ def _joined(previous, new, keep):
 # ----------------------------------------------------------------------------- matrices
 
 
+def legacy_tangential_damping(ctx, system, specs) -> None:
+    """A deck of code_aster 13 to 15 giving RIGI_TAN without AMOR_TAN: the
+    default AMOR_TAN those versions computed (it can be negative), set on
+    the shock before the model is built; code_aster 17's otherwise."""
+    if not computes(ctx.session, "AMOR_TAN_DEFAULT_MAX_MODAL_MASS"):
+        return
+    for spec in specs:
+        if spec.relation != "DIS_CHOC" or spec.c_t is not None:
+            continue
+        if spec.k_t > np.finfo(float).eps:
+            spec.c_t = optimal_tangential_damping_v15(spec, system)
+            ctx.log(
+                f"{spec.name}: AMOR_TAN = {spec.c_t:.6g} as code_aster 13-15 computed it "
+                "(mode of largest generalized mass, its AMOR_DIA taken for the reduced "
+                "damping, not floored at 0)"
+            )
+
+
 def linear_system(ctx, kw) -> LinearSystem:
     mass = np.array(kw["MATR_MASS"].matrix, dtype=float)
     stiffness = np.array(kw["MATR_RIGI"].matrix, dtype=float)
+    rates = None  # code_aster's AMOR_DIA (LinearSystem.damping_rates)
     if kw.get("MATR_AMOR") is not None:
         damping = np.array(kw["MATR_AMOR"].matrix, dtype=float)
+        numbering = getattr(kw["MATR_AMOR"], "numbering", None)
+        if getattr(numbering, "storage", "PLEIN") == "DIAG" and damping.shape == mass.shape:
+            rates = diagonal_damping_rates(mass, stiffness, damping)
     else:
         damping = np.zeros_like(mass)
         for occ in kw.factor("AMOR_MODAL"):
@@ -505,10 +533,11 @@ def linear_system(ctx, kw) -> LinearSystem:
                         "AMOR_REDUIT",
                         occ,
                     )
-                damping = modal_damping(mass, stiffness, ratios)
+                rates = modal_damping_rates(mass, stiffness, ratios)
+                damping = rates[:, None] * mass  # modal_damping
     if mass.shape != stiffness.shape or mass.shape != damping.shape:
         ctx.error("MATR_MASS, MATR_RIGI and the damping do not have the same size")
-    return LinearSystem(mass, stiffness, damping)
+    return LinearSystem(mass, stiffness, damping, damping_rates=rates)
 
 
 def list_values(obj) -> np.ndarray:
@@ -1097,11 +1126,13 @@ def rotating_matrices(ctx, kw, system, t0, t_end, dt):
     for name, matrix in (("MATR_GYRO", gyro), ("MATR_RIGY", rigy)):
         if matrix.shape != (n, n):
             ctx.error(f"{name} is {matrix.shape}, the system has {n} modes", name, kw)
+    # code_aster (dtmupmat): a damping given per mode (AMOR_DIA: AMOR_MODAL, or a
+    # MATR_AMOR stored DIAG) becomes M diag(c_i / m_i) there, the transpose of the
+    # diag(c_i / m_i) M its constant-speed path applies (dtmacce); a full MATR_AMOR
+    # is used as it is
     damping = system.damping
-    if not np.any(damping - np.diag(np.diag(damping))):
-        # code_aster (dtmupmat): a diagonal damping becomes M diag(c_i / m_i)
-        ratios = np.diag(damping) / np.diag(system.mass)
-        damping = system.mass * ratios[None, :]
+    if system.damping_rates is not None:
+        damping = system.mass * system.damping_rates[None, :]
     # without ACCE_ROTA code_aster takes Ω' = 0 (and then ignores MATR_RIGY)
     acceleration = kw.get("ACCE_ROTA") if kw.get("MATR_RIGY") is not None else None
     rotation = Rotation(damping, system.stiffness, gyro, rigy, kw["VITE_ROTA"], acceleration)

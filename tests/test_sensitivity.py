@@ -71,3 +71,47 @@ def test_sdnl301a_ritz_check_is_round_off_sensitive():
     by_label = {c.label.split()[0]: c for c in study.checks if "RMS_T_TOTAL" in c.label}
     assert by_label["POST"].classification == S.STABLE
     assert by_label["POST2"].classification == S.SENSITIVE
+
+
+def test_reference_check_is_also_judged_by_its_vale_calc():
+    """sdnd107e: VALE_REFE 2.81e-4 at PRECISION 5e-3 (ABSOLU) and VALE_CALC
+    7.2105e-4; one ulp on TOLERANCE moves the value by up to 2.6e-6, far
+    inside the reference's tolerance but beyond the VALE_CALC comparison's
+    1e-6 (absolute here): the verdict is a draw."""
+    check = _spread([7.2e-4 + 2.4e-6], value=7.2e-4, tolerance=5e-3, criterion="ABSOLU")
+    assert check.classification == S.STABLE
+    check.calc_tolerance, check.calc_scale = 1.0e-6, 1.0
+    assert check.calc_spread == pytest.approx(2.4e-6)
+    assert check.classification == S.SENSITIVE
+    check.calc_tolerance = 1.0e-3  # relative comparison: scale |VALE_CALC|
+    check.calc_scale = 7.2e-4
+    assert check.classification == S.SENSITIVE  # 3.3e-3 relative
+
+
+def test_fixed_step_bounds_move_with_the_step():
+    """PAS_MINI = PAS_MAXI = PAS (a fixed-step RUNGE_KUTTA run): moving PAS
+    alone would put PAS above PAS_MAXI, which DYNA_VIBRA refuses."""
+    transients = [
+        {"command": "DYNA_VIBRA", "call": 1, "step": 1e-4, "pas_mini": 1e-4, "pas_maxi": 1e-4},
+        {"command": "DYNA_VIBRA", "call": 2, "step": 1e-4, "pas_mini": None, "pas_maxi": 5e-4},
+    ]
+    fixed, adaptive = S.perturbed_overrides(transients, 1)
+    up = math.nextafter(1e-4, 1.0)
+    assert fixed.keywords == {
+        "INCREMENT/PAS": up, "SCHEMA_TEMPS/PAS_MINI": up, "SCHEMA_TEMPS/PAS_MAXI": up,
+    }  # fmt: skip
+    assert adaptive.keywords == {"INCREMENT/PAS": up}
+
+
+def test_shock_statistics_are_judged_too():
+    """A shock statistic no check tests: 1e-3 relative, and 'zero' for the
+    round-off of a quantity that vanishes in exact arithmetic (tube_planar23:
+    wear powers of 1e-17 W whose relative spread is 10-75 %)."""
+    whirl = S.ShockSpread("TRAN/SUPPORT_2:wear_power", 1.439e-3, [1.420e-3, 1.445e-3])
+    assert whirl.classification == S.SENSITIVE
+    assert S.ShockSpread("T/S:max_FN", 64.0, [64.0 + 6e-8]).classification == S.STABLE
+    planar = S.ShockSpread("TRAN/SUPPORT_2:wear_power", 1.34e-17, [1.1e-17, 1.6e-17])
+    assert planar.spread > 0.1 and planar.classification == S.ZERO
+    study = S.Sensitivity("d", [1], [], [], [whirl, planar])
+    assert study.sensitive_shocks() == [whirl]
+    assert "chaotic" in S.format_table(study) and "'zero'" in S.format_table(study)

@@ -38,6 +38,11 @@ class LinearSystem:
     mass: np.ndarray
     stiffness: np.ndarray
     damping: np.ndarray
+    # code_aster's AMOR_DIA: c_i / m_i per mode when the damping is given per
+    # mode (AMOR_MODAL, or a MATR_AMOR stored DIAG), None for a full MATR_AMOR.
+    # At variable rotation speed code_aster damps with M diag(rates) (dtmupmat),
+    # at constant speed with diag(rates) M (dtmacce): ``damping`` is the latter.
+    damping_rates: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         self.diagonal = all(is_diagonal(m) for m in (self.mass, self.stiffness, self.damping))
@@ -105,6 +110,13 @@ def modal_damping(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray
     ω_i = sqrt(|k_ii / m_ii|), i.e. c_i = 2 ξ_i sqrt(k_i m_i) for a diagonal
     mass, each row of a full (Ritz basis) mass scaled otherwise. Missing
     ratios repeat the last one given."""
+    return modal_damping_rates(mass, stiffness, ratios)[:, None] * mass
+
+
+def modal_damping_rates(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray:
+    """The per-mode rates 2 ξ_i ω_i of :func:`modal_damping` (code_aster's
+    AMOR_DIA, dtmprep_damp): ω_i = sqrt(|k_ii / m_ii|), 1e-6 and ξ_i = 1 for
+    a massless coordinate (critically damped)."""
     n = mass.shape[0]
     xi = np.asarray(list(ratios), dtype=float)
     if xi.size == 0:
@@ -116,7 +128,16 @@ def modal_damping(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.ndarray
     tiny = np.abs(m) <= np.finfo(float).eps
     omega = np.where(tiny, 1.0e-6, np.sqrt(np.abs(k / np.where(tiny, 1.0, m))))
     xi[np.abs(m) < np.finfo(float).eps] = 1.0  # a massless coordinate is critically damped
-    return (2.0 * xi * omega)[:, None] * mass
+    return 2.0 * xi * omega
+
+
+def diagonal_damping_rates(mass: np.ndarray, stiffness: np.ndarray, damping) -> np.ndarray:
+    """code_aster's AMOR_DIA for a MATR_AMOR stored DIAG (dtmprep): c_i / m_i,
+    or 2 ω_i for a massless coordinate."""
+    m, c = np.diag(mass), np.diag(damping)
+    tiny = np.abs(m) <= np.finfo(float).eps
+    rates = modal_damping_rates(mass, stiffness, np.zeros(1))  # 2 ω_i where massless
+    return np.where(tiny, rates, c / np.where(tiny, 1.0, m))
 
 
 @dataclass
@@ -361,6 +382,32 @@ def optimal_tangential_damping(spec: ShockSpec, rot: np.ndarray, system: LinearS
     k = omega2[j] * m
     xi = system.damping[j, j] / (2.0 * math.sqrt(omega2[j]) * m)
     return max(0.0, 2.0 * math.sqrt(m * (k + spec.k_t)) - 2.0 * xi * math.sqrt(k * m))
+
+
+def optimal_tangential_damping_v15(spec: ShockSpec, system: LinearSystem) -> float:
+    """The AMOR_TAN code_aster 13 to 15 computed when RIGI_TAN is given
+    without it (dtmprep_noli_choc of those versions, §3.5): the mode of
+    largest generalized mass (whatever its motion at the contact), its
+    AMOR_DIA entry (2 ξ ω for AMOR_MODAL, c/m for a MATR_AMOR stored DIAG;
+    C_ii for a full MATR_AMOR) taken in place of ξ, and no floor at 0:
+
+        C_T = 2 sqrt(m (k + K_T)) - 2 a sqrt(k m),  k = ω² m.
+
+    ``a`` being 2 ξ ω instead of ξ, any modal damping turns the value
+    negative once ω ξ exceeds about sqrt(1 + K_T / k) / 2 (the tube of
+    ../shared/tube-references: -1.2e6 N s/m where code_aster 17 takes
+    +8.0e3): a stick phase then amplifies the tangential velocity instead
+    of damping it, and friction slides at the Coulomb cap."""
+    masses = np.diag(system.mass)
+    j = int(np.argmax(masses))  # the first of equal maxima, as the strict > scan
+    m = masses[j]
+    omega2 = system.omega2[j]
+    if system.damping_rates is not None:
+        rate = system.damping_rates[j]
+    else:
+        rate = system.damping[j, j]  # code_aster's AMOR_FUL(j, j), the full matrix's term
+    k = omega2 * m
+    return 2.0 * math.sqrt(m * (k + spec.k_t)) - 2.0 * rate * math.sqrt(k * m)
 
 
 @dataclass(frozen=True)

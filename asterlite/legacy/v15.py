@@ -23,7 +23,8 @@ Tables read from code_aster 15's catalogues (``ehmoussi/code_aster``,
 - ``OLD_BEHAVIOURS``: what code_aster 13 to 15 computed differently with the
   same keywords (the NEWMARK right-hand side, POST_GENE_PHYS's static
   correction, TEST_RESU's NUME_ORDRE on a tran_gene, POST_DYNA_MODA_T's
-  window), asked by the commands through :func:`computes`;
+  window, DIS_CHOC's default AMOR_TAN), asked by the commands through
+  :func:`computes`;
 - code_aster 15's generated object names in RECU_FONCTION/INTITULE
   (:func:`relation_title`).
 """
@@ -350,6 +351,12 @@ OLD_BEHAVIOURS = {
     # became archive indices by truncation, int((t - t0)/dt); code_aster 17's pochoc
     # keeps the instants from the first one at or after INST_INIT
     "POST_DYNA_MODA_T_WINDOW_BY_TRUNCATION": (0, 15),
+    # DYNA_VIBRA DIS_CHOC with RIGI_TAN and no AMOR_TAN (dtmprep_noli_choc, 13.0 to 15):
+    # the "optimal" AMOR_TAN from the mode of largest generalized mass, its AMOR_DIA
+    # (2 xi omega) taken for xi, not floored at 0; code_aster 17 picks the mode by its
+    # tangential motion at the contact, divides by 2 omega and floors at 0
+    # (asterlite.dynamics.model.optimal_tangential_damping_v15)
+    "AMOR_TAN_DEFAULT_MAX_MODAL_MASS": (13, 15),
     # DYNA_TRAN_MODAL/DYNA_VIBRA ADAPT_ORDRE2 (mdadap, until the dtm rewrite of 13.0):
     # growth after five calm steps, archiving at the nearest computed step on a
     # PAS_MAXI x PAS_ARCH grid (asterlite.dynamics.scheme_adapt_ordre2_v11)

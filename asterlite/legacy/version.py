@@ -224,6 +224,8 @@ INEXPRESSIBLE = {
     # (relative fields without the static correction)
     "NEWMARK_FORCE_AT_STEP_START": re.compile(r"['\"]NEWMARK['\"]"),
     "POST_GENE_PHYS_RELATIVE_WITHOUT_CORR_STAT": re.compile(r"POST_GENE_PHYS\s*\("),
+    # code_aster 13-15's default AMOR_TAN (a deck giving RIGI_TAN and never AMOR_TAN)
+    "AMOR_TAN_DEFAULT_MAX_MODAL_MASS": re.compile(r"^(?![\s\S]*AMOR_TAN)[\s\S]*RIGI_TAN"),
 }
 
 

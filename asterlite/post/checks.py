@@ -94,6 +94,7 @@ class Comparison:
     error: float
     tolerance: float
     holds: bool
+    scale: float = 1.0  # error = |value - expected| / scale (|expected| when relative)
 
 
 def _numeric_error(value, expected, criterion: str, scale: float | None) -> float:
@@ -126,20 +127,23 @@ def compare_calc(value, exp: Expectation) -> tuple[Comparison, bool] | None:
     machine = DEFAULT_TOLE_MACHINE if exp.tole_machine is None else float(exp.tole_machine)
     best = None
     for calc in exp.calc:
+        scale = 1.0
         if exp.kind == "I":
             error = float(abs(value - calc))
             loose = strict_tol = 0.0
         elif exp.ordre_grandeur:
             error = _numeric_error(value, calc, exp.criterion, float(exp.ordre_grandeur))
             loose, strict_tol = max(LOOSE_TOLERANCE, machine), machine
+            scale = abs(float(exp.ordre_grandeur)) or 1.0
         elif exp.criterion == "RELATIF" and calc != 0:
             error = _numeric_error(value, calc, "RELATIF", None)
             loose, strict_tol = max(LOOSE_TOLERANCE, machine), machine
+            scale = abs(float(calc))
         else:
             error = float(abs(value - calc))
             loose = max(LOOSE_TOLERANCE * abs(calc), machine, DEFAULT_TOLE_MACHINE)
             strict_tol = machine
-        candidate = (error > loose, error, Comparison(calc, error, loose, error <= loose))
+        candidate = (error > loose, error, Comparison(calc, error, loose, error <= loose, scale))
         strict = error <= strict_tol
         if best is None or candidate[:2] < best[0][:2]:
             best = (candidate, strict)

@@ -516,6 +516,9 @@ def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
                 if concept.step_sizes is not None and len(concept.step_sizes) > 1
                 else None,
                 "integration_seconds": float(info.get("integration_seconds", 0.0)),
+                # SCHEMA_TEMPS's PAS_MINI / PAS_MAXI as the deck gave them (None: default)
+                "pas_mini": _plain(info.get("pas_mini")),
+                "pas_maxi": _plain(info.get("pas_maxi")),
             }
         )
         if "energy_residual" in info:  # ENERGIE=_F(): the final balance residual

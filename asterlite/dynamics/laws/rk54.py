@@ -47,6 +47,9 @@ GROW_POWER, SHRINK_POWER = -0.20, -0.25
 SAFETY, FORCED_CUT, MAX_GROWTH = 0.90, 0.30, 5.0
 GROWTH_THRESHOLD = (MAX_GROWTH / SAFETY) ** (1.0 / GROW_POWER)
 TINY_SCALE = 1.0e-8
+# a converged sub-step ending this close to the end of the step (seconds,
+# absolute: code_aster's rk5adp) ends the integration there
+END_PRECISION = 1.0e-8
 HUGE_ERROR = 1.0e8
 SMALLEST_STEP = 1.0e-10  # relative to dt: below, sub-steps would creep towards a wall
 N_WORK = 9  # rows of the scratch array
@@ -98,7 +101,10 @@ def cash_karp_step(system, model, y, rate, h, n, work):
 def adaptive_integrate(system, model, y_in, rate, dt, max_attempts, tolerance, scales, y_out, work):
     """Integrate the system from y_in over dt (rates held fixed) into y_out
     (may be y_in). ``scales``: per-unknown error scales, or empty to scale
-    by |y|. Returns False when a sub-step failed ``max_attempts`` times in a
+    by |y|. As in code_aster, a converged sub-step that ends within
+    END_PRECISION (1e-8 s) of dt ends the integration, even short of dt
+    (a step below 1e-8 s whose first try failed is integrated over the
+    first converged sub-step only). Returns False when a sub-step failed ``max_attempts`` times in a
     row, or sub-steps shrink below 1e-10 dt (e.g. a hardening curve is
     exhausted); y_out then holds the state reached so far (time not completed)."""
     n = y_out.shape[0]
@@ -135,9 +141,9 @@ def adaptive_integrate(system, model, y_in, rate, dt, max_attempts, tolerance, s
             continue
         for i in range(n):
             y_out[i] = work[7, i]
-        t += h
-        if dt - t <= 1.0e-12 * dt:
+        if abs(t + h - dt) <= END_PRECISION:  # rk5adp: within 1e-8 s of the end is the end
             return True
+        t += h
         attempts = 0
         h = SAFETY * h * error**GROW_POWER if error > GROWTH_THRESHOLD else MAX_GROWTH * h
         if t + h > dt:
