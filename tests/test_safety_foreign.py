@@ -279,3 +279,29 @@ def test_a_symlinked_cache_file_is_not_read(tmp_path, monkeypatch):
     elsewhere.write_bytes(pickle.dumps({"data": {}, "memo": {}}))
     (folder / f"deck-parser-{key}.pickle").symlink_to(elsewhere)
     assert parser_cache.load_tables(folder, key) is None
+
+
+def test_numba_kernel_cache_is_never_read_from_a_folder_others_may_write(tmp_path, monkeypatch):
+    """numba's cache index files are pickles: a NUMBA_CACHE_DIR (or a digest
+    folder) that another user may write is passed over for a trusted one."""
+    from asterlite import dynamics
+
+    shared = tmp_path / "shared"
+    shared.mkdir()
+    shared.chmod(0o777)  # world-writable, not sticky: anyone may plant an index
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "home-cache"))
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(shared))
+    folder = dynamics.kernel_cache_folder()
+    assert shared not in folder.parents
+    # a digest folder others may write, in a trusted root, is passed over too
+    private = tmp_path / "private"
+    private.mkdir(mode=0o700)
+    planted = private / folder.name
+    planted.mkdir()
+    planted.chmod(0o777)
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(private))
+    chosen = dynamics.kernel_cache_folder()
+    assert chosen != planted and chosen.name == folder.name
+    # a trusted NUMBA_CACHE_DIR is used as the root
+    planted.chmod(0o700)
+    assert dynamics.kernel_cache_folder() == planted

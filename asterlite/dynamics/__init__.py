@@ -20,7 +20,10 @@ import hashlib
 import json
 import os
 import sys
+import tempfile
 from pathlib import Path
+
+from asterlite.trusted_paths import trusted_folder
 
 PACKAGE = Path(__file__).resolve().parent
 CACHE_PREFIX = "kernels-"
@@ -44,26 +47,39 @@ def _writable(folder: Path) -> bool:
     return os.access(folder, os.W_OK)
 
 
-def kernel_cache_root(user_folder: str | None) -> Path:
-    """Where the digest folders live: the user's NUMBA_CACHE_DIR, else this
-    package's ``__pycache__``, else ``$XDG_CACHE_HOME/asterlite``."""
-    if user_folder:
-        return Path(user_folder)
+def kernel_cache_roots(user_folder: str | None) -> list[Path]:
+    """Where the digest folders may live, in order: the user's
+    NUMBA_CACHE_DIR, this package's ``__pycache__``, ``$XDG_CACHE_HOME/asterlite``."""
+    roots = [Path(user_folder)] if user_folder else []
     in_tree = PACKAGE / "__pycache__"
     if _writable(in_tree):
-        return in_tree
+        roots.append(in_tree)
     home = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return Path(home) / "asterlite"
+    roots.append(Path(home) / "asterlite")
+    return roots
 
 
 def kernel_cache_folder() -> Path:
-    """This package's numba cache folder, ``<root>/kernels-<digest>``; a
-    NUMBA_CACHE_DIR that already names it (set for a parent process) is kept."""
+    """This package's numba cache folder, ``<root>/kernels-<digest>``, in the
+    first root where it is trusted (:mod:`asterlite.trusted_paths`: numba's
+    index files are pickles, so a folder another user may write could make
+    this process run their code); a NUMBA_CACHE_DIR that already names it
+    (set for a parent process) is its root. None trusted: a new private
+    temporary folder (kernels compile in every process, nothing foreign is
+    loaded)."""
     name = CACHE_PREFIX + source_digest()
     given = os.environ.get("NUMBA_CACHE_DIR")
     if given and Path(given).name == name:
-        return Path(given)
-    return kernel_cache_root(given) / name
+        given = str(Path(given).parent)
+    for root in kernel_cache_roots(given):
+        folder = root / name
+        try:
+            folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+        except OSError:
+            continue
+        if trusted_folder(root) and trusted_folder(folder):
+            return folder
+    return Path(tempfile.mkdtemp(prefix="asterlite-kernels-")) / name
 
 
 def _use_kernel_cache() -> None:

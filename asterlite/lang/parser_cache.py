@@ -32,6 +32,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from asterlite.trusted_paths import safe_ancestor
+
 CACHE_NAME = ("asterlite", "parser")
 PREFIX = "deck-parser-"
 # the tables are ~0.15 MB; a larger file is not ours
@@ -72,18 +74,7 @@ def _is_private_folder(folder: Path) -> bool:
         return False
     if info.st_mode & 0o077:  # 0700: others may not even list it
         return False
-    for above in Path(os.path.realpath(folder)).parents:
-        if not _is_safe_ancestor(os.stat(above)):
-            return False
-    return True
-
-
-def _is_safe_ancestor(info: os.stat_result) -> bool:
-    if info.st_uid not in (os.geteuid(), 0):
-        return False
-    shared = info.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
-    # a sticky folder of root's (/tmp): others may add entries, not rename ours
-    return not shared or (info.st_mode & stat.S_ISVTX and info.st_uid == 0)
+    return all(safe_ancestor(os.stat(above)) for above in Path(os.path.realpath(folder)).parents)
 
 
 def cache_key(grammar: str) -> str:
