@@ -27,8 +27,9 @@ import numpy as np
 
 from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
 from asterlite.errors import NumericalError
-from asterlite.harmonic import HarmonicLoad, derived_fields, load_matrix
+from asterlite.harmonic import HarmonicLoad, derived_fields
 from asterlite.harmonic import modal as modal_solver
+from asterlite.harmonic.loads import SweepLoads
 from asterlite.harmonic.modal import SingularSystem
 
 
@@ -159,10 +160,11 @@ def generalized(ctx, kw, frequencies, names):
                 occ,
             )
         loads.append(harmonic_load(ctx, occ, np.asarray(vector.values), f"EXCIT[{i}]"))
-    rhs = load_matrix(loads, frequencies, n)
     extra = result_excitations(ctx, kw, frequencies, numbering, n)
-    if extra is not None:
-        rhs = rhs + extra
+    try:
+        rhs = SweepLoads.of(loads, frequencies, n, extra)
+    except ValueError as error:
+        ctx.error(str(error), "EXCIT", kw)
     constraints = None
     if np.size(getattr(numbering, "constraints", ())):  # a coupled generalized model
         from asterlite.substructure.coupling import null_space_basis

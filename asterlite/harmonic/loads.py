@@ -58,3 +58,38 @@ def load_matrix(loads, frequencies, size: int) -> np.ndarray:
             raise ValueError(f"load {load.label}: {vector.shape[0]} values for {size} unknowns")
         out += np.outer(load.coefficients(f), vector)
     return out
+
+
+@dataclass
+class SweepLoads:
+    """The right-hand sides of a sweep kept factored: F(f_i) = Σ_k
+    coefficients[i, k] vectors[k] (+ extra[i] when given, e.g. EXCIT_RESU).
+    Solvers that project F on a basis do it once per load vector instead
+    of once per frequency."""
+
+    vectors: np.ndarray  # (n_loads, n)
+    coefficients: np.ndarray  # (n_freq, n_loads) complex
+    extra: np.ndarray | None = None  # (n_freq, n) complex
+
+    @classmethod
+    def of(cls, loads, frequencies, size: int, extra=None) -> SweepLoads:
+        f = np.atleast_1d(np.asarray(frequencies, dtype=float))
+        if loads:
+            vectors = np.array([np.asarray(load.vector) for load in loads])
+            coefficients = np.column_stack([load.coefficients(f) for load in loads])
+        else:
+            vectors = np.zeros((0, size))
+            coefficients = np.zeros((f.size, 0), dtype=complex)
+        if vectors.shape[1] != size:
+            raise ValueError(f"load vectors of {vectors.shape[1]} values for {size} unknowns")
+        return cls(vectors, coefficients, extra)
+
+    def dense(self) -> np.ndarray:
+        """(n_freq, n) complex."""
+        out = self.coefficients @ self.vectors.astype(complex)
+        return out if self.extra is None else out + self.extra
+
+    def project(self, matrix: np.ndarray) -> np.ndarray:
+        """F(f) @ matrixᵀ for every frequency, through the load vectors."""
+        out = self.coefficients @ (self.vectors @ matrix.T)
+        return out if self.extra is None else out + self.extra @ matrix.T

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from asterlite.harmonic.fields import TWO_PI, omega2
+from asterlite.harmonic.loads import SweepLoads
 
 # below this many multiply-adds (n_freq · n³) the sweep is solved by LU directly
 DIRECT_BUDGET = 2.0e7
@@ -65,41 +66,47 @@ def solve(
     stiffness: np.ndarray,
     damping: np.ndarray | None,
     frequencies,
-    rhs: np.ndarray,
+    rhs,
     constraints: np.ndarray | None = None,
     method: str = "auto",
 ) -> tuple[np.ndarray, SolveInfo]:
-    """Amplitudes q (n_freq, n) for the right-hand sides ``rhs`` (n_freq, n).
+    """Amplitudes q (n_freq, n) for the right-hand sides ``rhs``: an
+    (n_freq, n) array or a :class:`SweepLoads` (load vectors times their
+    coefficients, projected once on the state-space basis).
 
     ``constraints``: an (n, r) orthonormal basis of the admissible
     coordinates (coupled generalized models), or None. ``method``: ``auto``,
     ``direct`` or ``state-space`` (the last two for tests and benchmarks).
     """
     f = np.atleast_1d(np.asarray(frequencies, dtype=float))
-    rhs = np.asarray(rhs, dtype=complex)
+    if not isinstance(rhs, SweepLoads):
+        rhs = SweepLoads(np.zeros((0, np.shape(rhs)[1])), np.zeros((f.size, 0)), np.asarray(rhs))
     mass = np.asarray(mass)
     stiffness = np.asarray(stiffness)
     damping = None if damping is None else np.asarray(damping)
     if constraints is not None:
         t = np.asarray(constraints)
-        reduced, info = solve(
+        reduced = SweepLoads(
+            rhs.vectors @ t, rhs.coefficients, None if rhs.extra is None else rhs.extra @ t
+        )
+        q, info = solve(
             t.T @ mass @ t,
             t.T @ stiffness @ t,
             None if damping is None else t.T @ damping @ t,
             f,
-            rhs @ t,
+            reduced,
             method=method,
         )
-        return reduced @ t.T, info
+        return q @ t.T, info
     info = SolveInfo()
     matrices = [mass, stiffness] + ([damping] if damping is not None else [])
     if method == "auto" and all(is_diagonal(m) for m in matrices):
         info.method = "diagonal"
-        return _diagonal(mass, stiffness, damping, f, rhs), info
+        return _diagonal(mass, stiffness, damping, f, rhs.dense()), info
     n = mass.shape[0]
     if method == "direct" or (method == "auto" and f.size * n**3 <= DIRECT_BUDGET):
         info.method = "direct"
-        return _direct(mass, stiffness, damping, f, rhs), info
+        return _direct(mass, stiffness, damping, f, rhs.dense()), info
     info.method = "state-space"
     q = _state_space(mass, stiffness, damping, f, rhs, info)
     return q, info
@@ -150,17 +157,43 @@ def _direct(mass, stiffness, damping, f, rhs) -> np.ndarray:
     return out
 
 
-def _state_space(mass, stiffness, damping, f, rhs, info: SolveInfo) -> np.ndarray:
+def _times(matrix, q) -> np.ndarray:
+    """q @ matrixᵀ (rows of q are states), element-wise for a diagonal
+    matrix, real and imaginary parts apart for a real one (real BLAS)."""
+    if is_diagonal(matrix):
+        return q * np.diagonal(matrix)[None, :]
+    if np.iscomplexobj(matrix):
+        return q @ matrix.T
+    return (q.real @ matrix.T) + 1j * (q.imag @ matrix.T)
+
+
+def _residual(mass, stiffness, damping, f, q, rhs) -> np.ndarray:
+    """A(f) q - F row by row."""
+    out = _times(stiffness, q) - omega2(f)[:, None] * _times(mass, q) - rhs
+    if damping is not None:
+        out += (1j * TWO_PI * f)[:, None] * _times(damping, q)
+    return out
+
+
+def _norm(matrix) -> float:
+    return float(np.abs(matrix).sum(axis=1).max())
+
+
+def _state_space(mass, stiffness, damping, f, loads: SweepLoads, info: SolveInfo) -> np.ndarray:
     """z = (iω I - S)⁻¹ [0; M⁻¹F], S = [[0, I], [-M⁻¹K, -M⁻¹C]], with S = V Λ V⁻¹
-    computed once; q is the first half of z."""
+    computed once (real arithmetic when K and C are real); q is the first
+    half of z. One step of iterative refinement with the same operator, then
+    the frequencies whose backward error still exceeds an LU solve's are
+    solved directly."""
     n = mass.shape[0]
     try:
         m_inv = np.linalg.inv(mass)
     except np.linalg.LinAlgError:
         info.notes.append("singular mass: solved directly")
         info.method = "direct"
-        return _direct(mass, stiffness, damping, f, rhs)
-    s = np.zeros((2 * n, 2 * n), dtype=complex)
+        return _direct(mass, stiffness, damping, f, loads.dense())
+    real = not np.iscomplexobj(stiffness) and (damping is None or not np.iscomplexobj(damping))
+    s = np.zeros((2 * n, 2 * n), dtype=float if real else complex)
     s[:n, n:] = np.eye(n)
     s[n:, :n] = -m_inv @ stiffness
     if damping is not None:
@@ -171,25 +204,34 @@ def _state_space(mass, stiffness, damping, f, rhs, info: SolveInfo) -> np.ndarra
     except np.linalg.LinAlgError:
         info.notes.append("defective first-order operator: solved directly")
         info.method = "direct"
-        return _direct(mass, stiffness, damping, f, rhs)
+        return _direct(mass, stiffness, damping, f, loads.dense())
     w = inverse[:, n:] @ m_inv  # (2n, n): V⁻¹ [0; M⁻¹ ·]
-    y = rhs @ w.T  # (n_freq, 2n)
-    denominator = (1j * TWO_PI * f)[:, None] - eigenvalues[None, :]
+    top = np.ascontiguousarray(vectors[:n, :].T)  # (2n, n)
     with np.errstate(divide="ignore", invalid="ignore"):
-        y /= denominator
-    q = y @ vectors[:n, :].T
-    # backward error of each frequency: |A q - F| / (|A| |q| + |F|), max norms
-    residual = q @ stiffness.T - omega2(f)[:, None] * (q @ mass.T) - rhs
-    scale = np.abs(stiffness).sum(axis=1).max() + omega2(np.abs(f)) * np.abs(mass).sum(axis=1).max()
+        gain = 1.0 / ((1j * TWO_PI * f)[:, None] - eigenvalues[None, :])
+    q = (loads.project(w) * gain) @ top
+    rhs = loads.dense()
+    scale = _norm(stiffness) + omega2(np.abs(f)) * _norm(mass)
     if damping is not None:
-        residual += (1j * TWO_PI * f)[:, None] * (q @ damping.T)
-        scale = scale + TWO_PI * np.abs(f) * np.abs(damping).sum(axis=1).max()
-    with np.errstate(invalid="ignore"):
-        error = np.abs(residual).max(axis=1) / (
-            scale * np.abs(q).max(axis=1) + np.abs(rhs).max(axis=1) + 1e-300
-        )
-    redo = ~(error <= BACKWARD_TOLERANCE)
-    if redo.any():
-        q[redo] = _direct(mass, stiffness, damping, f[redo], rhs[redo])
-        info.redone = int(redo.sum())
+        scale = scale + TWO_PI * np.abs(f) * _norm(damping)
+
+    def backward_error(rows):
+        residual = _residual(mass, stiffness, damping, f[rows], q[rows], rhs[rows])
+        with np.errstate(invalid="ignore"):
+            error = np.abs(residual).max(axis=1) / (
+                scale[rows] * np.abs(q[rows]).max(axis=1) + np.abs(rhs[rows]).max(axis=1) + 1e-300
+            )
+        return residual, error
+
+    rows = np.arange(f.size)
+    residual, error = backward_error(rows)
+    refine = ~(error <= BACKWARD_TOLERANCE)
+    if refine.any():  # q -= Ã⁻¹ (A q - F) with the same operator
+        rows = np.flatnonzero(refine)
+        q[rows] -= ((residual[refine] @ w.T) * gain[rows]) @ top
+        _, error = backward_error(rows)
+        redo = rows[~(error <= BACKWARD_TOLERANCE)]
+        if redo.size:
+            q[redo] = _direct(mass, stiffness, damping, f[redo], rhs[redo])
+            info.redone = int(redo.size)
     return q

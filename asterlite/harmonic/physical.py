@@ -11,8 +11,14 @@ code_aster dualises the same relations with Lagrange multipliers, whose
 right-hand side is zero unless an EXCIT CHARGE imposes values: the relations
 are homogeneous here (the command refuses imposed values it cannot carry).
 The reduced matrices share one sparsity pattern, computed once; each
-frequency combines their values and factorises with SuperLU
-(``scipy.sparse.linalg.splu``).
+frequency combines their values and factorises them. Symmetric matrices
+(the usual K, M, C) use a sparse LDLᵀ whose ordering and symbolic analysis
+are done once for the sweep (:mod:`asterlite.harmonic.ldl`: the fill-reducing
+ordering is the lesser-fill of reverse Cuthill-McKee and SuperLU's minimum
+degree on AᵀA + A); its solution is accepted when its backward error is
+that of a stable solve, after one step of iterative refinement if needed,
+else that frequency (and non-symmetric matrices, e.g. gyroscopic damping)
+is factorised by SuperLU with partial pivoting (``scipy.sparse.linalg.splu``).
 """
 
 from __future__ import annotations
@@ -25,8 +31,12 @@ import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 
 from asterlite.fem.constraints import Elimination
+from asterlite.harmonic import ldl
 from asterlite.harmonic.fields import TWO_PI, omega2
 from asterlite.harmonic.modal import SingularSystem
+
+# backward error |A x - b| / (|A| |x| + |b|) (max norms) a solution must reach
+BACKWARD_TOLERANCE = 1.0e-13
 
 
 @dataclass
@@ -40,14 +50,35 @@ class ReducedPencil:
     stiffness: np.ndarray
     mass: np.ndarray
     damping: np.ndarray | None
+    _norms: tuple | None = None
 
-    def at(self, frequency: float) -> sp.csc_matrix:
-        """K + iωC - ω²M at one frequency (CSC, complex)."""
+    def data(self, frequency: float) -> np.ndarray:
+        """The values of K + iωC - ω²M on the pattern."""
         data = self.stiffness - omega2(frequency) * self.mass
         if self.damping is not None:
             data = data + (1j * TWO_PI * frequency) * self.damping
+        return data.astype(complex, copy=False)
+
+    def norm_bound(self, frequency: float) -> float:
+        """|K| + ω²|M| + ω|C| ≥ |K + iωC - ω²M| (max column sums)."""
+        if self._norms is None:
+
+            def column_norm(values):
+                sums = np.add.reduceat(np.abs(values), self.indptr[:-1]) if values.size else [0]
+                return float(np.max(sums))
+
+            self._norms = tuple(
+                column_norm(v) if v is not None else 0.0
+                for v in (self.stiffness, self.mass, self.damping)
+            )
+        k, m, c = self._norms
+        w = TWO_PI * abs(frequency)
+        return k + w * w * m + w * c
+
+    def at(self, frequency: float) -> sp.csc_matrix:
+        """K + iωC - ω²M at one frequency (CSC, complex)."""
         return sp.csc_matrix(
-            (data.astype(complex, copy=False), self.indices, self.indptr), shape=(self.n, self.n)
+            (self.data(frequency), self.indices, self.indptr), shape=(self.n, self.n)
         )
 
 
@@ -77,11 +108,25 @@ def aligned_pencil(stiffness, mass, damping) -> ReducedPencil:
 
 @dataclass
 class PhysicalSweep:
-    """What a physical sweep needs: the elimination u = T q and the reduced
-    pencil."""
+    """What a physical sweep needs: the elimination u = T q, the reduced
+    pencil and, for symmetric matrices, the LDLᵀ analysis of its pattern
+    (made at the first frequency solved)."""
 
     elimination: Elimination
     pencil: ReducedPencil
+    symmetric: bool = False
+    analysis: ldl.Analysis | None = None
+    # seconds of one factorisation by each method, measured at the first
+    # frequency: the faster one factorises the others
+    timings: dict | None = None
+
+    @property
+    def use_ldl(self) -> bool:
+        if not self.symmetric:
+            return False
+        if not self.timings or "ldl" not in self.timings:
+            return True
+        return self.timings["ldl"] <= self.timings.get("superlu", np.inf)
 
     @property
     def n_free(self) -> int:
@@ -103,9 +148,81 @@ def prepare(elimination: Elimination, stiffness, mass, damping=None) -> Physical
     def reduced(matrix):
         return None if matrix is None else sp.csr_matrix(t.T @ (sp.csr_matrix(matrix) @ t))
 
-    return PhysicalSweep(
-        elimination, aligned_pencil(reduced(stiffness), reduced(mass), reduced(damping))
+    matrices = [reduced(stiffness), reduced(mass), reduced(damping)]
+    symmetric = all(m is None or ldl.is_symmetric(m, 1e-13) for m in matrices)
+    return PhysicalSweep(elimination, aligned_pencil(*matrices), symmetric)
+
+
+def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
+    """The LDLᵀ analysis of the pencil's pattern under the fill-reducing
+    ordering of least fill: reverse Cuthill-McKee (banded models: beam
+    lines), SuperLU's minimum degree on AᵀA + A or its COLAMD column order
+    (two- and three-dimensional meshes), these read from factorisations at
+    the first frequency (the COLAMD one timed against LDLᵀ)."""
+    from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+    pencil = sweep.pencil
+    pattern = sp.csr_matrix(
+        (np.ones(pencil.indices.size), pencil.indices, pencil.indptr), shape=(pencil.n, pencil.n)
     )
+    candidates = [np.asarray(reverse_cuthill_mckee(pattern, symmetric_mode=True))]
+    sweep.timings = {}
+    ldl.warm()
+    matrix = pencil.at(frequency)
+    try:
+        lu = splu(matrix, permc_spec="MMD_AT_PLUS_A")
+        candidates.append(np.argsort(lu.perm_c))
+        started = time.perf_counter()  # the factorisation the fallback makes
+        lu = splu(matrix)
+        sweep.timings["superlu"] = time.perf_counter() - started
+        candidates.append(np.argsort(lu.perm_c))
+    except RuntimeError:
+        pass
+    best = None
+    for permutation in candidates:
+        limit = None if best is None else best.fill
+        found = ldl.analyse(pencil.indptr, pencil.indices, pencil.n, permutation, limit)
+        if found is not None and (best is None or found.fill < best.fill):
+            best = found
+    return best
+
+
+def _backward_error(matrix, x, b, norm) -> float:
+    residual = matrix @ x - b
+    scale = norm * np.abs(x).max() + np.abs(b).max()
+    return float(np.abs(residual).max() / scale) if scale > 0 else 0.0
+
+
+def _solve_one(sweep: PhysicalSweep, frequency: float, rhs: np.ndarray, counts: dict):
+    """One frequency: LDLᵀ (checked, refined once) or SuperLU."""
+    pencil = sweep.pencil
+    matrix = pencil.at(frequency)
+    if sweep.use_ldl:
+        first = sweep.analysis is None
+        if first:
+            sweep.analysis = ordering(sweep, frequency)
+        norm = pencil.norm_bound(frequency)
+        try:
+            started = time.perf_counter()
+            factor = ldl.factorise(sweep.analysis, matrix.data)
+            if first:
+                sweep.timings["ldl"] = time.perf_counter() - started
+            x = factor.solve(rhs)
+            if _backward_error(matrix, x, rhs, norm) > BACKWARD_TOLERANCE:
+                x = x + factor.solve(rhs - matrix @ x)
+                counts["refined"] += 1
+                if _backward_error(matrix, x, rhs, norm) > BACKWARD_TOLERANCE:
+                    raise ldl.ZeroPivot(-1)  # not a stable solve: pivot
+            counts["ldl"] += 1
+            return x
+        except ldl.ZeroPivot:
+            pass
+    try:
+        lu = splu(matrix)
+    except RuntimeError:  # SuperLU: "Factor is exactly singular"
+        raise SingularSystem(float(frequency)) from None
+    counts["superlu"] += 1
+    return lu.solve(rhs)
 
 
 def solve(
@@ -127,17 +244,17 @@ def solve(
     t_matrix = sweep.elimination.T
     out = np.empty((f.size, sweep.n_dofs), dtype=complex)
     started = time.perf_counter()
+    counts = {"ldl": 0, "refined": 0, "superlu": 0}
     for k, frequency in enumerate(f):
-        rhs = coefficients[k] @ reduced
-        try:
-            lu = splu(sweep.pencil.at(float(frequency)))
-        except RuntimeError:  # SuperLU: "Factor is exactly singular"
-            raise SingularSystem(float(frequency)) from None
-        q = lu.solve(np.ascontiguousarray(rhs, dtype=complex))
+        rhs = np.ascontiguousarray(coefficients[k] @ reduced, dtype=complex)
+        q = _solve_one(sweep, float(frequency), rhs, counts)
         if not np.all(np.isfinite(q)):
             raise SingularSystem(float(frequency))
         out[k] = t_matrix @ q
         if progress is not None:
             progress(k)
-    info = {"seconds": time.perf_counter() - started, "n_free": sweep.n_free}
+    info = {"seconds": time.perf_counter() - started, "n_free": sweep.n_free, **counts}
+    if sweep.analysis is not None:
+        info["fill"] = sweep.analysis.fill
+        info["timings"] = dict(sweep.timings or {})
     return out, info
