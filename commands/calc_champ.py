@@ -31,6 +31,29 @@ from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
+_BARS = ("BARRE", "2D_BARRE")
+
+
+def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names) -> None:
+    """EFGE_ELNO / SIEF_ELNO (N) of a model of bars (code_aster's te0185:
+    from the displacements, real or complex)."""
+    from asterlite.fem.element_fields import BAR_OPTIONS, bar_element_fields
+
+    other = [n for n in names if n not in BAR_OPTIONS]
+    if other:
+        keyword = "CONTRAINTE" if other[0] in as_tuple(kw.get("CONTRAINTE")) else None
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of bars (EFGE_ELNO, SIEF_ELNO)", keyword, kw)
+    if kw.factor("CHAM_UTIL"):
+        ctx.unsupported("CHAM_UTIL on a model of bars", "CHAM_UTIL", kw)
+    values = _nodal_values(ctx, result, kw)
+    try:
+        fields = bar_element_fields(
+            model, characteristics, materials, result.numbering, bars, values, names
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    result.element_fields.update(fields)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
 
 
 def _nodal_values(ctx, result, kw) -> np.ndarray:
@@ -203,6 +226,12 @@ def run(ctx, kw):
         beams = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _BEAMS], dtype=int
         )
+        bars = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) in _BARS], dtype=int
+        )
+        if bars.size and not beams.size:
+            _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
+            return result
         if not beams.size:
             ctx.unsupported("CALC_CHAMP on a model without POU_D_E / POU_D_T cells", None, kw)
         if characteristics is None:

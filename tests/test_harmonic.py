@@ -342,3 +342,38 @@ def test_an_unread_keyword_stops_the_run_by_name(tmp_path):
     report = run_deck(export, output_dir=tmp_path / "out")
     assert report.status == "UNSUPPORTED"
     assert "MATR_IMPE_PHI" in report.message
+
+
+def test_bar_axial_force_from_complex_displacements():
+    """EFGE_ELNO of a bar (te0185): N = E A / L (u2 - u1)·e at both nodes,
+    complex for a harmonic state."""
+    from asterlite.concepts.assembly import (
+        DofNumbering,
+        ElementCharacteristics,
+        Material,
+        MaterialField,
+        Model,
+    )
+    from asterlite.concepts.mesh import Mesh
+    from asterlite.fem.element_fields import bar_element_fields
+
+    mesh = Mesh(
+        coords=np.array([[0.0, 0.0, 0.0], [3.0, 4.0, 0.0]]),
+        node_names=["A", "B"],
+        cell_names=["AB"],
+        cell_types=["SEG2"],
+        cell_nodes=[(0, 1)],
+    )
+    model = Model(mesh=mesh, cell_modelisation={0: "BARRE"})
+    cara = ElementCharacteristics(model=model, sections={0: {"A": 2.0e-4}})
+    steel = Material(behaviours={"ELAS": {"E": 2.0e11}})
+    materials = MaterialField(mesh=mesh, cell_material={0: steel})
+    numbering = DofNumbering(mesh, [(n, c) for n in (0, 1) for c in ("DX", "DY", "DZ")])
+    u = np.zeros((2, 6), dtype=complex)
+    u[0, 3:5] = (3e-5 + 1e-6j, 4e-5)  # node B moves along the bar
+    u[1, 0] = 1e-5j  # node A moves along x
+    fields = bar_element_fields(model, cara, materials, numbering, [0], u, ["EFGE_ELNO"])
+    n = fields["EFGE_ELNO"].values[:, 0, :, 0]
+    stiffness = 2.0e11 * 2.0e-4 / 5.0
+    expected = stiffness * np.array([(0.6 * (3e-5 + 1e-6j) + 0.8 * 4e-5), -0.6 * 1e-5j])
+    np.testing.assert_allclose(n, np.column_stack([expected, expected]), rtol=1e-13)

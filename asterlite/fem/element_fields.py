@@ -15,7 +15,10 @@
   so SN differs between its two nodes); SIEF_ELGA / EFGE_ELGA / SIEF_ELNO
   stay ``K_e u_e`` (code_aster computes them from the displacement alone);
 - ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
-  cells sharing it (code_aster's nodal smoothing).
+  cells sharing it (code_aster's nodal smoothing);
+- bars (``BARRE``, ``2D_BARRE``): EFGE_ELNO / SIEF_ELNO hold the axial force
+  N = E A / L (u2 - u1)·e at both nodes, from the displacements alone, real
+  or complex (code_aster's te0185, without inertia).
 
 Values keep every order of the result: (n_orders, n_cells, 2, n_components).
 """
@@ -105,6 +108,44 @@ def beam_element_fields(
         else:
             raise ValueError(f"unknown element field {name}")
     return out
+
+
+BAR_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO")
+
+
+def bar_element_fields(
+    model, characteristics, materials, numbering, cells, values: np.ndarray, options
+) -> dict[str, ElementField]:
+    """EFGE_ELNO / SIEF_ELNO (component N) of bar cells for nodal values
+    (n_orders, n_dofs), real or complex."""
+    from asterlite.fem.beam_elements import _material_values
+    from asterlite.fem.elements import ElementError
+
+    cells = np.asarray(cells, dtype=int)
+    other = [name for name in options if name not in BAR_OPTIONS]
+    if other:
+        raise ValueError(f"{other[0]} is not computed for bars (EFGE_ELNO, SIEF_ELNO)")
+    mesh = model.mesh
+    sections = characteristics.sections if characteristics is not None else {}
+    without = [int(c) for c in cells if int(c) not in sections]
+    if without:
+        raise ElementError(f"bar cell {mesh.cell_names[without[0]]} has no section (BARRE)")
+    young = _material_values(materials, cells, "BARRE", need_density=False)["E"]
+    area = np.array([float(sections[int(c)]["A"]) for c in cells])
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    axis = mesh.coords[conn[:, 1]] - mesh.coords[conn[:, 0]]
+    length = np.linalg.norm(axis, axis=1)
+    axis = axis / length[:, None]
+    values = np.asarray(values)
+    elongation = np.zeros((values.shape[0], len(cells)), dtype=np.result_type(values, float))
+    for d, component in enumerate(("DX", "DY", "DZ")):
+        rows = [numbering.dof_indices(conn[:, end], component) for end in (0, 1)]
+        for sign, row in zip((-1.0, 1.0), rows, strict=True):
+            present = row >= 0
+            elongation[:, present] += sign * axis[present, d] * values[:, row[present]]
+    force = elongation * (young * area / length)[None, :]
+    field = np.repeat(force[:, :, None, None], 2, axis=2)
+    return {name: ElementField(name, cells, ("N",), field.copy()) for name in options}
 
 
 def nodal_average(field: ElementField, mesh, name: str) -> NodalComponentField:

@@ -138,7 +138,7 @@ def compare_calc(value, exp: Expectation) -> tuple[Comparison, bool] | None:
         elif exp.criterion == "RELATIF" and calc != 0:
             error = _numeric_error(value, calc, "RELATIF", None)
             loose, strict_tol = max(LOOSE_TOLERANCE, machine), machine
-            scale = abs(float(calc))
+            scale = float(abs(calc))  # complex VALE_CALC_C too
         else:
             error = float(abs(value - calc))
             loose = max(LOOSE_TOLERANCE * abs(calc), machine, DEFAULT_TOLE_MACHINE)
