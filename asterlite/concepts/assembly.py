@@ -157,7 +157,9 @@ class DofNumbering(Concept):
     """
 
     aster_types = ("nume_ddl_sdaster",)
-    deck_methods = frozenset({"getName", "getPhysicalDOFs", "getNumberOfDOFs"})
+    deck_methods = frozenset(
+        {"getName", "getPhysicalDOFs", "getNumberOfDOFs", "getLagrangeDOFs", "getMesh"}
+    )
 
     mesh: Mesh
     dofs: list[tuple[int, str]]
@@ -182,6 +184,22 @@ class DofNumbering(Concept):
 
     def getNumberOfDOFs(self, local=False) -> int:  # noqa: N802
         return self.n_dofs
+
+    def getLagrangeDOFs(self, local=False) -> list[int]:  # noqa: N802
+        """None here; with constraints, code_aster's numbering has some and
+        asterlite's has not: refused by name rather than an empty list."""
+        if self.relations:
+            from asterlite.errors import UnsupportedError
+
+            raise UnsupportedError(
+                f"{self.name or 'numbering'}.getLagrangeDOFs(): code_aster numbers Lagrange "
+                f"multipliers for the {len(self.relations)} constraints of this numbering, "
+                "which asterlite keeps as relations"
+            )
+        return []
+
+    def getMesh(self) -> Mesh:  # noqa: N802
+        return self.mesh
 
     def dof_index(self, node: int | str, component: str) -> int:
         """Index of (node, component); raises KeyError when absent."""
@@ -231,6 +249,7 @@ class AssembledMatrix(Concept):
     """``ASSE_MATRICE`` result on the physical DOFs (scipy sparse CSR)."""
 
     aster_types = ("matr_asse_depl_r", "matr_asse")
+    deck_methods = frozenset({"getName", "toNumpy", "getDOFNumbering"})
 
     numbering: DofNumbering
     matrix: Any  # scipy.sparse.csr_matrix (n_dofs, n_dofs)
@@ -240,6 +259,16 @@ class AssembledMatrix(Concept):
     model: Any = None
     characteristics: Any = None
     materials: Any = None
+
+    def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
+        """The values as a dense array (refused when code_aster's would hold
+        Lagrange multipliers: see asterlite.concepts.numpy_api)."""
+        from asterlite.concepts.numpy_api import assembled_to_numpy
+
+        return assembled_to_numpy(self)
+
+    def getDOFNumbering(self) -> DofNumbering:  # noqa: N802
+        return self.numbering
 
 
 @dataclass(eq=False)

@@ -52,6 +52,19 @@ class Mesh(Concept):
     """
 
     aster_types = ("maillage_sdaster",)
+    # code_aster 16-17's getters of a mesh (its object API)
+    deck_methods = frozenset(
+        {
+            "getName",
+            "getNumberOfNodes",
+            "getNumberOfCells",
+            "getDimension",
+            "hasGroupOfNodes",
+            "hasGroupOfCells",
+            "getGroupsOfNodes",
+            "getGroupsOfCells",
+        }
+    )
 
     coords: np.ndarray
     node_names: list[str]
@@ -137,3 +150,53 @@ class Mesh(Concept):
             dim=self.dim,
             title=self.title,
         )
+
+    # -- code_aster's object API ----------------------------------------------
+
+    def getNumberOfNodes(self) -> int:  # noqa: N802 - code_aster's names
+        return self.n_nodes
+
+    def getNumberOfCells(self) -> int:  # noqa: N802
+        return self.n_cells
+
+    def getDimension(self) -> int:  # noqa: N802
+        return self.dim
+
+    def hasGroupOfNodes(self, name, local=False) -> bool:  # noqa: N802
+        return name in self.node_groups
+
+    def hasGroupOfCells(self, name, local=False) -> bool:  # noqa: N802
+        return name in self.cell_groups
+
+    def getGroupsOfNodes(self, local=False) -> list[str]:  # noqa: N802
+        return list(self.node_groups)
+
+    def getGroupsOfCells(self, local=False) -> list[str]:  # noqa: N802
+        return list(self.cell_groups)
+
+
+class ReadableMesh(Mesh):
+    """``CA.Mesh()`` of code_aster 16-17: empty until ``readMedFile`` reads
+    an input file of the run into it (by name, as the export gives it)."""
+
+    deck_methods = Mesh.deck_methods | {"readMedFile"}
+
+    @classmethod
+    def empty(cls, find_input) -> ReadableMesh:
+        mesh = cls(np.zeros((0, 3)), [], [], [], [])
+        mesh._find_input = find_input  # name -> Path of an input file of the run
+        return mesh
+
+    def readMedFile(self, filename, meshname=None, verbose=0) -> None:  # noqa: N802
+        from asterlite.errors import CommandError
+        from asterlite.io.med_mesh import read_med_mesh
+
+        path = self._find_input(filename)
+        try:
+            read = read_med_mesh(path, meshname or None)
+        except (ValueError, KeyError) as error:
+            raise CommandError(f"readMedFile({filename!r}): {error}") from None
+        name, find_input = self.name, self._find_input
+        self.__dict__.update(read.__dict__)
+        self.name, self._find_input = name, find_input
+        self.refresh_indices()

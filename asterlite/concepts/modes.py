@@ -160,6 +160,7 @@ class GeneralizedMatrix(Concept):
     as code_aster stores it."""
 
     aster_types = ("matr_asse_gene_r", "matr_asse_gene")
+    deck_methods = frozenset({"getName", "toNumpy", "fromNumpy"})
 
     numbering: GeneralizedNumbering
     matrix: np.ndarray
@@ -168,6 +169,27 @@ class GeneralizedMatrix(Concept):
     @property
     def basis(self) -> ModeResult:
         return self.numbering.basis
+
+    def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
+        """The values as a dense array (a copy)."""
+        from asterlite.concepts.numpy_api import dense_copy
+
+        return dense_copy(self.matrix, self.name or "matrix")
+
+    def fromNumpy(self, values) -> None:  # noqa: N802
+        """Replace the values by a deck's array of the same shape (code_aster's
+        EXTR_MATR_GENE/RECU_MATR_GENE of older decks). With ``STOCKAGE='DIAG'``
+        only a diagonal array is taken: code_aster stores no other term."""
+        from asterlite.concepts.numpy_api import replaced_values
+        from asterlite.errors import DeckRuntimeError
+
+        what = self.name or "matrix"
+        values = replaced_values(self.matrix, values, what)
+        if self.numbering.storage == "DIAG" and np.any(values - np.diag(np.diag(values))):
+            raise DeckRuntimeError(
+                f"{what}.fromNumpy: off-diagonal values for a matrix stored 'DIAG'"
+            )
+        self.matrix = values
 
 
 @dataclass(eq=False)

@@ -15,6 +15,7 @@ import types
 from asterlite.errors import AsterliteError, DeckRuntimeError, did_you_mean
 from asterlite.lang import library
 from asterlite.lang import limits as guards
+from asterlite.lang.exceptions import python_error
 from asterlite.lang.values import Unknown
 
 # Python callables the compiled code calls directly when every argument is a
@@ -202,7 +203,7 @@ class CompiledRuntime:
         if isinstance(error, KeyError) and line in global_reads:
             name = global_reads[line]
             near = did_you_mean(name, self.evaluator.namespace)
-            error = DeckRuntimeError(f"name '{name}' is not defined{near}")
+            error = python_error(NameError, f"name '{name}' is not defined{near}")
             error.__cause__ = None
             error.__suppress_context__ = True
         self.evaluator._fail(error, node, frame)

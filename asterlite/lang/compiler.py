@@ -32,8 +32,10 @@ beside the guarded one, entered when a test before the loop proves the
 types it relies on (:mod:`asterlite.lang.compiled_loops`).
 
 A body using a construct outside the compiled subset (``del``, ``assert``,
-``import``, nested ``def`` or ``lambda``, comprehensions, ``*args`` before
-other arguments) is not compiled: the interpreter runs it, unchanged.
+``import``, ``try``, ``raise``, ``with``, f-strings, nested ``def`` or
+``lambda``, comprehensions, ``*args`` before other arguments), or a
+function of a Python 2 deck using its '/' or the dict methods that gave
+lists, is not compiled: the interpreter runs it, unchanged.
 """
 
 from __future__ import annotations
@@ -86,6 +88,8 @@ def compile_function(function, evaluator):
     """The compiled body of a module-level deck function, or None (refused)."""
     if function.closure.locals is not None:  # defined inside a function or comprehension
         return None
+    if function.closure.module.python2 and _python2_meaning(function.body):
+        return None  # Python 2's division or dict methods: interpreted
     runtime = evaluator._compiled_runtime
     if runtime is None:
         runtime = evaluator._compiled_runtime = CompiledRuntime(evaluator)
@@ -95,6 +99,24 @@ def compile_function(function, evaluator):
         return None
     except (RecursionError, SyntaxError, ValueError, MemoryError):
         return None  # an expression nested beyond what compile() takes: interpreted
+
+
+def _python2_meaning(body) -> bool:
+    """A Python 2 body using what the compiled code would read as Python 3:
+    '/' (classic division) and the dict methods that gave lists."""
+    from asterlite.lang.python2 import DICT_METHODS
+
+    pending = [body]
+    while pending:
+        node = pending.pop()
+        for child in getattr(node, "children", ()):
+            if getattr(child, "value", None) in ("/2", "/2="):
+                return True
+            if hasattr(child, "data"):
+                if child.data == "getattr" and child.children[1].value in DICT_METHODS:
+                    return True
+                pending.append(child)
+    return False
 
 
 def _float_value(node) -> float:

@@ -32,10 +32,14 @@ from asterlite.lang import limits as guards
 from asterlite.lang.budget import StepBudget
 from asterlite.lang.calls import bind_arguments, contains_unknown
 from asterlite.lang.deck_function import DeckFunction
+from asterlite.lang.exceptions import python_error
+from asterlite.lang.flow import FlowStatements
 from asterlite.lang.imports import ImportStatements
 from asterlite.lang.library import DEEP, DIRECT, STORE, DeckModule
 from asterlite.lang.limits import Limits
 from asterlite.lang.parser import Module, node_position
+from asterlite.lang.python2 import DICT_METHODS as PYTHON2_DICT_METHODS
+from asterlite.lang.python2 import classic_divide, classic_divide_inplace, dict_method
 from asterlite.lang.values import CallSite, DeckCallable, Unknown
 
 # Python exceptions an operation or a whitelisted callable may raise on bad
@@ -60,6 +64,7 @@ BINARY_OPERATORS = {
     "|": operator.or_,
     "^": operator.xor,
     "&": operator.and_,
+    "/2": classic_divide,  # Python 2's '/' (the parser marks it so in Python 2 decks)
 }
 INPLACE_OPERATORS = {
     "+=": ("+", operator.iadd),
@@ -69,6 +74,7 @@ INPLACE_OPERATORS = {
     "//=": ("//", operator.ifloordiv),
     "%=": ("%", operator.imod),
     "**=": ("**", operator.ipow),
+    "/2=": ("/2", classic_divide_inplace),
 }
 COMPARISONS = {
     "<": operator.lt,
@@ -77,6 +83,7 @@ COMPARISONS = {
     ">=": operator.ge,
     "<=": operator.le,
     "!=": operator.ne,
+    "<>": operator.ne,  # Python 2
     "in": lambda a, b: a in b,
     "notin": lambda a, b: a not in b,
     "is": operator.is_,
@@ -131,13 +138,15 @@ class Frame:
         self.module = module
 
 
-class Evaluator(ImportStatements):
+class Evaluator(ImportStatements, FlowStatements):
     """Runs parsed modules in a shared namespace.
 
     ``module_loader(name) -> dict | None`` provides importable modules beyond
     ``math`` and ``numpy`` (code_aster, the deck's helper files); loaded
     modules are cached per evaluator.
     """
+
+    _FLOW = (_Break, _Continue, _Return)  # control flow, which try/with let through
 
     def __init__(
         self,
@@ -184,14 +193,28 @@ class Evaluator(ImportStatements):
         """
         self.sources.setdefault(module.filename, module.lines)
         self._check_literals(module)
+        if module.python2:
+            self._python2_builtins()
         frame = Frame(None, None, module)
-        for statement in module.tree.children:
-            try:
-                self._guarded(lambda s=statement: self._exec(s, frame), statement, module)
-            except AsterliteError as error:
-                if on_error is None or getattr(error, "fatal", False):  # e.g. time limit
-                    raise
-                on_error(error, statement)
+        try:
+            for statement in module.tree.children:
+                try:
+                    self._guarded(lambda s=statement: self._exec(s, frame), statement, module)
+                except AsterliteError as error:
+                    if on_error is None or getattr(error, "fatal", False):  # e.g. time limit
+                        raise
+                    on_error(error, statement)
+        finally:
+            if module.python2:
+                self.flush_print()
+
+    def _python2_builtins(self) -> None:
+        """A Python 2 deck's namespace: map, zip, range... give lists (once)."""
+        from asterlite.lang import python2
+
+        if not self.namespace.get("__python2__"):
+            self.namespace.update(python2.builtins(self.namespace, self.limits))
+            self.namespace["__python2__"] = True  # no deck name starts with '__'
 
     def evaluate(self, module: Module, names: dict | None = None):
         """Value of a module from :func:`parse_expression`, with extra local names."""
@@ -290,9 +313,9 @@ class Evaluator(ImportStatements):
                 self.location(node, frame.module),
             ) from None
         message = str(error) or type(error).__name__
-        raise DeckRuntimeError(
-            f"{type(error).__name__}: {message}", self.location(node, frame.module)
-        ) from error
+        converted = python_error(type(error), f"{type(error).__name__}: {message}")
+        converted.location = self.location(node, frame.module)
+        raise converted from error
 
     # ------------------------------------------------------------ statements
 
@@ -369,7 +392,7 @@ class Evaluator(ImportStatements):
             name = target.children[0].value
             scope = frame.locals if frame.locals is not None else self.namespace
             if name not in scope:
-                raise DeckRuntimeError(f"name '{name}' is not defined")
+                raise python_error(NameError, f"name '{name}' is not defined")
             del scope[name]
         else:
             container = self.ev(target.children[0], frame)
@@ -396,7 +419,7 @@ class Evaluator(ImportStatements):
         if condition is Unknown or condition:
             return
         message = "" if message_node is None else f": {self.ev(message_node, frame)}"
-        raise DeckRuntimeError(f"assertion failed{message}")
+        raise python_error(AssertionError, f"assertion failed{message}")
 
     def _if_stmt(self, node, frame):
         condition, suite, *clauses = node.children
@@ -466,7 +489,7 @@ class Evaluator(ImportStatements):
             return self.namespace[name]
         except KeyError:
             near = did_you_mean(name, [*self.namespace, *(frame.locals or ())])
-            raise DeckRuntimeError(f"name '{name}' is not defined{near}") from None
+            raise python_error(NameError, f"name '{name}' is not defined{near}") from None
 
     def _store(self, name: str, value, frame: Frame) -> None:
         if frame.locals is not None:
@@ -491,9 +514,10 @@ class Evaluator(ImportStatements):
         else:
             items = list(itertools.islice(iter(value), len(targets) + 1))
             if len(items) != len(targets):
-                raise DeckRuntimeError(
+                raise python_error(
+                    ValueError,
                     f"cannot unpack {'more' if len(items) > len(targets) else len(items)} "
-                    f"values into {len(targets)} names"
+                    f"values into {len(targets)} names",
                 )
         for target, item in zip(targets, items, strict=True):
             self._assign_target(target, item, frame)
@@ -688,7 +712,10 @@ class Evaluator(ImportStatements):
         value = self.ev(node.children[0], frame)
         if value is Unknown:
             return Unknown
-        return library.get_attribute(value, node.children[1].value, self.limits)
+        name = node.children[1].value
+        if type(value) is dict and frame.module.python2 and name in PYTHON2_DICT_METHODS:
+            return dict_method(value, name, self.limits)
+        return library.get_attribute(value, name, self.limits)
 
     def _getitem(self, node, frame):
         container = self.ev(node.children[0], frame)
@@ -733,7 +760,7 @@ class Evaluator(ImportStatements):
             except Exception as error:  # a bug in a command, not a deck error
                 raise _Escaped(error, location) from error
         if not callable(callee):
-            raise DeckRuntimeError(f"'{type(callee).__name__}' object is not callable")
+            raise python_error(TypeError, f"'{type(callee).__name__}' object is not callable")
         return self._call_python(callee, args, kwargs)
 
     def _call_python(self, callee, args: list, kwargs: dict):
@@ -811,6 +838,12 @@ _STATEMENTS = {
     "while_stmt": Evaluator._while_stmt,
     "for_stmt": Evaluator._for_stmt,
     "funcdef": Evaluator._funcdef,
+    "try_stmt": Evaluator._try_stmt,
+    "try_finally": Evaluator._try_finally,
+    "raise_stmt": Evaluator._raise_stmt,
+    "raise_py2": Evaluator._raise_py2,
+    "with_stmt": Evaluator._with_stmt,
+    "print_stmt": Evaluator._print_stmt,
 }
 
 _EXPRESSIONS = {
@@ -841,6 +874,8 @@ _EXPRESSIONS = {
     "getattr": Evaluator._getattr,
     "getitem": Evaluator._getitem,
     "funccall": Evaluator._funccall,
+    "fstring": Evaluator._fstring,
+    "backquote": Evaluator._backquote,
 }
 
 __all__ = ["DeckFunction", "Evaluator", "Limits"]

@@ -1,14 +1,17 @@
 """``import`` statements of decks: the evaluator's half that binds modules.
 
-Decks may import ``math``, ``numpy`` (and ``numpy.linalg``), and what the
+Decks may import ``math``, ``cmath``, ``numpy`` (and ``numpy.linalg``),
+``os`` and ``os.path`` (:mod:`asterlite.lang.stdlib`: string functions of
+paths, file tests inside the run's output folder only), and what the
 evaluator's ``module_loader`` provides (code_aster's command modules, the
-deck's own helper files); every module is a :class:`DeckModule`, cached per
-evaluator.
+deck's own helper files, ``os`` bound to the run's output folder); every
+module is a :class:`DeckModule`, cached per evaluator.
 """
 
 from __future__ import annotations
 
 from asterlite.errors import DeckRuntimeError
+from asterlite.lang.exceptions import python_error
 from asterlite.lang.library import DeckModule
 
 
@@ -34,6 +37,8 @@ class ImportStatements:
 
     def _import_from(self, node, frame):
         dotted, names = node.children
+        if not dotted.children:  # from __future__ import ...: checked by the parser
+            return
         full_name = ".".join(token.value for token in dotted.children)
         module = self._import(full_name)
         if names.data == "import_star":
@@ -59,10 +64,16 @@ class ImportStatements:
             module = self._builtin_modules[name]()
         else:
             members = self.module_loader(name) if self.module_loader is not None else None
-            if members is None:
-                raise DeckRuntimeError(
-                    f"no module named '{name}' (decks may import math, numpy, code_aster "
-                    "and their own helper files)"
+            if members is None and name in ("os", "os.path"):  # no run: no output folder
+                from asterlite.lang import stdlib
+
+                module = stdlib.os_module(lambda: None, self.limits)
+                members = module if name == "os" else module.attribute("path")
+            if members is None:  # as Python says of a module it lacks: a deck may catch it
+                raise python_error(
+                    ImportError,
+                    f"no module named '{name}' (decks may import math, cmath, numpy, os.path, "
+                    "code_aster and their own helper files)",
                 )
             module = members if isinstance(members, DeckModule) else DeckModule(name, members)
         self.modules[name] = module

@@ -182,6 +182,10 @@ def base_namespace(print_hook=None, limits: Limits | None = None) -> dict:
     namespace["print"] = _make_print(print_hook, limits)
     namespace["_F"] = FactorBuilder()
     namespace["CO"] = COBuilder()
+    from asterlite.lang import exceptions, stdlib  # ValueError..., globals(), open refused
+
+    namespace.update(exceptions.deck_exception_names())
+    namespace.update(stdlib.namespace_builtins(namespace))
     return namespace
 
 
@@ -575,7 +579,14 @@ def builtin_modules(limits: Limits) -> dict:
         "math": lambda: DeckModule("math", math_members()),
         "numpy": lambda: numpy_module(limits),
         "numpy.linalg": lambda: numpy_module(limits).attribute("linalg"),
+        "cmath": _cmath_module,
     }
+
+
+def _cmath_module() -> DeckModule:
+    from asterlite.lang.stdlib import cmath_module
+
+    return cmath_module()
 
 
 # ----------------------------------------------------------------- attributes

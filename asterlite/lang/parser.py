@@ -9,16 +9,26 @@ folder so later processes start fast (:mod:`asterlite.lang.parser_cache`).
 
 After parsing, one iterative pass over the tree (deep nesting cannot
 overflow the stack) refuses what the grammar accepts but decks may not do
-(``_`` names, assignments to calls or attributes, ``return`` outside a
-function...) and turns number and string literals into Python values, stored
-as ``const`` nodes so the evaluator never decodes text.
+(``__`` names, attributes starting with ``_``, assignments to calls or
+attributes, ``return`` outside a function...) and turns number and string
+literals into Python values, stored as ``const`` nodes so the evaluator never
+decodes text; an f-string becomes an ``fstring`` node whose fields are
+parsed and checked as any expression.
+
+Decks of code_aster 13 and older are Python 2 (``print "x"``, ``0777``,
+``except E, e``...). A deck that does not parse as Python 3 is read again
+as Python 2: when that reading succeeds the module says so (``python2``)
+and keeps the Python 3 error, which the run reports unless the deck's
+version allows Python 2 (:mod:`asterlite.legacy.version`). In a Python 2
+module ``/`` is Python 2's division (integers divide to an integer) unless
+the deck imports ``division`` from ``__future__``.
 """
 
 from __future__ import annotations
 
 import functools
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from asterlite.errors import DeckSyntaxError, Location, UnquotedLocation
@@ -29,18 +39,26 @@ GRAMMAR_PATH = Path(__file__).with_name("deck.lark")
 # with a message naming them (they would otherwise be read as plain names).
 UNSUPPORTED_KEYWORDS = {
     "class": "class definitions are",
-    "with": "'with' blocks are",
-    "try": "'try' blocks are",
-    "except": "'try' blocks are",
-    "finally": "'try' blocks are",
-    "raise": "'raise' is",
     "global": "'global' declarations are",
     "nonlocal": "'nonlocal' declarations are",
     "yield": "generators ('yield') are",
     "async": "'async' is",
     "await": "'await' is",
 }
-ALLOWED_UNDERSCORE_NAMES = frozenset({"_F"})
+# features a deck may import from __future__ (none changes a Python 3 deck)
+FUTURE_FEATURES = frozenset(
+    {
+        "division",
+        "print_function",
+        "absolute_import",
+        "with_statement",
+        "unicode_literals",
+        "generators",
+        "nested_scopes",
+        "generator_stop",
+        "annotations",
+    }
+)
 # levels of the syntax tree a deck may nest (the evaluator recurses on them;
 # real decks stay under 30)
 MAX_TREE_DEPTH = 200
@@ -61,6 +79,11 @@ class Module:
     # a file a study names (deck, helper module, material file): its text is
     # shown in errors only if it reads as a deck (see reads_as_deck)
     study_file: bool = False
+    # the deck is Python 2 (read so after its Python 3 reading failed with
+    # python3_error); future: the features it imports from __future__
+    python2: bool = False
+    python3_error: object = None
+    future: frozenset = field(default_factory=frozenset)
 
     @functools.cached_property
     def reads_as_deck(self) -> bool:
@@ -100,25 +123,77 @@ class ClippedLocation(Location):
 
 
 def parse_deck(
-    text: str, filename: str, *, private_names: bool = False, study_file: bool = False
+    text: str,
+    filename: str,
+    *,
+    private_names: bool = False,
+    study_file: bool = False,
+    python2: bool | None = None,
 ) -> Module:
     """Parse a deck (or a helper ``.py`` file) into a :class:`Module`.
 
     Raises DeckSyntaxError, located, for text that does not parse or uses a
-    construct outside the deck subset. ``private_names`` lets names start
-    with one underscore (``_A0``: code_aster's material files use them for
-    their intermediate functions); ``__`` names stay refused, and attributes
-    are whitelisted by the evaluator whatever their name. ``study_file``: the
-    text is a file a study named; unless it reads as a deck, errors located
-    in it show neither its lines nor their own wording.
+    construct outside the deck subset. Names may start with one underscore
+    (``_OMEGA``, ``for _ in``); ``__`` names are refused, and so are
+    attributes starting with ``_`` (``private_names`` is kept for callers:
+    it no longer changes anything). ``study_file``: the text is a file a
+    study named; unless it reads as a deck, errors located in it show
+    neither its lines nor their own wording. ``python2``: None reads the
+    text as Python 3, then as Python 2 if that fails (see the module's
+    docstring); True or False reads it so only.
     """
-    return _parse(text, filename, "file_input", private_names, study_file)
+    if python2 is not None:
+        return _parse(text, filename, "file_input", study_file, python2)
+    known = _PYTHON3_ERRORS.get(text)  # a Python 2 deck read before
+    if known is not None:
+        module = _parse(text, filename, "file_input", study_file, True)
+        message, line, column = known
+        module.python3_error = DeckSyntaxError(message, module.location(line, column))
+        return module
+    try:
+        return _parse(text, filename, "file_input", study_file, False)
+    except DeckSyntaxError as error:
+        if _NOT_PYTHON2.search(text):
+            raise
+        try:
+            module = _parse(text, filename, "file_input", study_file, True)
+        except DeckSyntaxError as old_error:
+            # report the reading that went further into the text
+            if _error_line(old_error) > _error_line(error):
+                raise old_error from None
+            raise error from None
+        module.python3_error = error
+        if len(_PYTHON3_ERRORS) >= _RECENT_LIMIT:
+            _PYTHON3_ERRORS.pop(next(iter(_PYTHON3_ERRORS)))
+        location = error.location
+        _PYTHON3_ERRORS[text] = (error._message, location.line, location.column)
+        return module
+
+
+# the Python 3 errors of the Python 2 decks parsed last, by text
+_PYTHON3_ERRORS: dict = {}
+
+
+# Python 3 only: text with these never reads as Python 2
+_NOT_PYTHON2 = re.compile(r"^\s*from\s+__future__\s+import\b.*\bprint_function\b", re.M)
+
+
+def _error_line(error) -> int:
+    location = getattr(error, "location", None)
+    return (location.line, location.column) if location is not None else (0, 0)
 
 
 def parse_expression(text: str, filename: str) -> Module:
     """Parse one expression (a FORMULE's ``VALE``, say); its tree is an ``eval_input``
     node whose only child is the expression. Run it with ``Evaluator.evaluate``."""
     return _parse(text.strip(), filename, "eval_input")
+
+
+class _Dialect:
+    """The reading under way: Python 2 turns statement-leading ``print`` into
+    the print statement (the lexer's stream is filtered, see DeckIndenter)."""
+
+    python2 = False
 
 
 # checked trees of the texts parsed last: a run parses its deck three times
@@ -129,29 +204,34 @@ _RECENT_LIMIT = 4
 
 
 def _parse(
-    text: str, filename: str, start: str, private_names: bool = False, study_file: bool = False
+    text: str, filename: str, start: str, study_file: bool = False, python2: bool = False
 ) -> Module:
-    key = (text, start, private_names)
+    key = (text, start, python2)
     if key in _RECENT_TREES:
-        return Module(_RECENT_TREES[key], text.splitlines(), filename, study_file)
-    module = _parse_text(text, filename, start, private_names, study_file)
+        tree, future = _RECENT_TREES[key]
+        return Module(tree, text.splitlines(), filename, study_file, python2, future=future)
+    module = _parse_text(text, filename, start, study_file, python2)
     if len(_RECENT_TREES) >= _RECENT_LIMIT:
         _RECENT_TREES.pop(next(iter(_RECENT_TREES)))
-    _RECENT_TREES[key] = module.tree
+    _RECENT_TREES[key] = (module.tree, module.future)
     return module
 
 
 def _parse_text(
-    text: str, filename: str, start: str, private_names: bool, study_file: bool
+    text: str, filename: str, start: str, study_file: bool, python2: bool = False
 ) -> Module:
     from lark.exceptions import UnexpectedInput
 
     lines = text.splitlines()
-    module = Module(None, lines, filename, study_file)
+    module = Module(None, lines, filename, study_file, python2)
     source = text if text.endswith("\n") else text + "\n"
     try:
-        module.tree = _parser().parse(source, start=start)
-        _check_tree(module, private_names)
+        _Dialect.python2 = python2
+        try:
+            module.tree = _parser().parse(source, start=start)
+        finally:
+            _Dialect.python2 = False
+        _check_tree(module)
     except _LocatedSyntaxError as error:
         raise DeckSyntaxError(error.message, module.location(error.line, error.column)) from None
     except UnexpectedInput as error:
@@ -225,7 +305,8 @@ def _indenter_class():
                 )
 
         def _process(self, stream):
-            yield from super()._process(self._balanced(stream))
+            tokens = super()._process(self._balanced(stream))
+            yield from _print_statements(tokens) if _Dialect.python2 else tokens
 
         def _balanced(self, stream):
             # lark's indenter asserts on an unmatched closing bracket; report it instead.
@@ -257,10 +338,33 @@ def _refuse_keyword(token):
     return token
 
 
+# tokens after which a statement starts (a colon only outside brackets)
+_STATEMENT_STARTS = frozenset({"_NEWLINE", "_INDENT", "_DEDENT", "SEMICOLON"})
+
+
+def _print_statements(tokens):
+    """Python 2: a statement starting with the name ``print`` is the print
+    statement (its token becomes PRINT2). ``print`` is a keyword there, so no
+    lookahead is needed (the contextual lexer allows none)."""
+    from lark import Token
+
+    previous, depth = None, 0
+    for token in tokens:
+        kind = token.type
+        starts = previous is None or previous in _STATEMENT_STARTS
+        starts = starts or (previous == "COLON" and depth == 0)
+        if kind == "NAME" and token.value == "print" and starts:
+            token = Token.new_borrow_pos("PRINT2", token.value, token)
+        elif kind in ("LPAR", "LSQB", "LBRACE"):
+            depth += 1
+        elif kind in ("RPAR", "RSQB", "RBRACE"):
+            depth -= 1
+        previous = kind
+        yield token
+
+
 def _refuse_prefix(token):
     prefix = re.match(r"[a-zA-Z]*", token.value).group().lower()
-    if "f" in prefix:
-        raise _LocatedSyntaxError("f-strings are not supported in decks", token.line, token.column)
     if "b" in prefix:
         message = "bytes literals are not supported in decks"
         raise _LocatedSyntaxError(message, token.line, token.column)
@@ -316,12 +420,13 @@ def _last_position(module: Module) -> tuple[int, int]:
 # --------------------------------------------------------------------- checks
 
 
-def _check_tree(module: Module, private_names: bool = False) -> None:
-    """Refuse what the grammar accepts but decks may not do; fold literals."""
+def _check_tree(module: Module, root=None) -> None:
+    """Refuse what the grammar accepts but decks may not do; fold literals
+    (``root``: a subtree, an f-string field's expression)."""
     from lark import Token, Tree
 
     # (node, inside_loop, inside_function, depth); explicit stack, no recursion
-    stack = [(module.tree, False, False, 0)]
+    stack = [(module.tree if root is None else root, False, False, 0)]
     while stack:
         node, in_loop, in_function, depth = stack.pop()
         if depth > MAX_TREE_DEPTH:  # the evaluator walks the tree recursively
@@ -332,7 +437,7 @@ def _check_tree(module: Module, private_names: bool = False) -> None:
             )
         if isinstance(node, Token):
             if node.type == "NAME":
-                _check_name(node, module, private_names)
+                _check_name(node, module)
             continue
         if not isinstance(node, Tree):
             continue
@@ -377,12 +482,53 @@ def node_position(node) -> tuple[int, int]:
     return 1, 1
 
 
-def _check_name(token, module: Module, private_names: bool = False) -> None:
-    if private_names and token.value.startswith("_") and not token.value.startswith("__"):
-        return
-    if token.value.startswith("_") and token.value not in ALLOWED_UNDERSCORE_NAMES:
-        message = f"names starting with '_' are not allowed in decks: {token.value}"
+def _check_name(token, module: Module) -> None:
+    """Deck names may start with one underscore (``_OMEGA``, ``for _ in``),
+    never with two (``__builtins__``); attributes are checked apart."""
+    if token.value.startswith("__"):
+        message = f"names starting with '__' are not allowed in decks: {token.value}"
         raise _error(message, token, module)
+
+
+def _check_attribute_name(token, module: Module) -> None:
+    if token.value.startswith("_"):
+        message = f"attributes starting with '_' are not available in decks: {token.value}"
+        raise _error(message, token, module)
+
+
+def _check_getattr(node, module, in_loop, in_function) -> None:
+    _check_attribute_name(node.children[1], module)
+
+
+def _check_import_from(node, module, in_loop, in_function) -> None:
+    dotted, names = node.children
+    parts = [token.value for token in dotted.children]
+    if parts == ["__future__"]:
+        if names.data == "import_star":
+            raise _error("'from __future__ import *' is not allowed", names, module)
+        features = set()
+        for import_as_name in names.children:
+            name = import_as_name.children[0]
+            if name.value not in FUTURE_FEATURES:
+                raise _error(f"future feature {name.value} is not defined", name, module)
+            features.add(name.value)
+        module.future = module.future | frozenset(features)
+        dotted.children = []  # checked: the evaluator skips it
+        return
+    _check_module_names(dotted, module)
+    if names.data != "import_star":
+        for import_as_name in names.children:
+            _check_attribute_name(import_as_name.children[0], module)
+
+
+def _check_import_name(node, module, in_loop, in_function) -> None:
+    for dotted_as_name in node.children:
+        _check_module_names(dotted_as_name.children[0], module)
+
+
+def _check_module_names(dotted, module: Module) -> None:
+    for token in dotted.children:
+        _check_attribute_name(token, module)
 
 
 def _check_targets(node, module: Module, what: str = "assign to") -> None:
@@ -476,9 +622,83 @@ def _check_arguments(node, module, in_loop, in_function) -> None:
             raise _error("positional argument follows keyword argument", argument, module)
 
 
+def _python2_only(what: str):
+    def check(node, module, in_loop, in_function) -> None:
+        if not module.python2:
+            raise _error(f"{what} is Python 2 (code_aster 13 and older decks)", node, module)
+
+    return check
+
+
+def _check_comp_op(node, module, in_loop, in_function) -> None:
+    if node.children[0].value == "<>" and not module.python2:
+        raise _error("'<>' is Python 2 (code_aster 13 and older decks): write '!='", node, module)
+
+
+def _check_term(node, module, in_loop, in_function) -> None:
+    """Python 2's division: '/' of two integers is their floor division."""
+    if not module.python2 or "division" in module.future:
+        return
+    from lark import Token
+
+    for position in range(1, len(node.children), 2):
+        op = node.children[position]
+        if op.value == "/":
+            node.children[position] = Token.new_borrow_pos(op.type, "/2", op)
+
+
+def _check_augassign_python2(node, module, in_loop, in_function) -> None:
+    _check_augassign(node, module, in_loop, in_function)
+    op = node.children[1]
+    if op.value == "/=" and module.python2 and "division" not in module.future:
+        from lark import Token
+
+        node.children[1] = Token.new_borrow_pos(op.type, "/2=", op)
+
+
+def _check_print_to(node, module, in_loop, in_function) -> None:
+    raise _error(
+        "'print >>file' is not supported: decks write files through commands", node, module
+    )
+
+
+def _check_with_item(node, module, in_loop, in_function) -> None:
+    if node.children[1] is not None:
+        _check_targets(node.children[1], module)
+
+
+def _check_except(node, module, in_loop, in_function) -> None:
+    if node.data == "except_py2" and not module.python2:
+        raise _error(
+            "'except E, name' is Python 2 (code_aster 13 and older decks): "
+            "write 'except E as name'",
+            node,
+            module,
+        )
+
+
+def _check_try(node, module, in_loop, in_function) -> None:
+    """A bare 'except:' must be the last handler, as in Python."""
+    handlers = [c for c in node.children[1:] if getattr(c, "data", "").startswith("except")]
+    for handler in handlers[:-1]:
+        if handler.data == "except_clause" and handler.children[1] is None:
+            raise _error("default 'except:' must be last", handler, module)
+
+
 _CHECKS = {
+    "getattr": _check_getattr,
+    "import_from": _check_import_from,
+    "import_name": _check_import_name,
+    "comp_op": _check_comp_op,
+    "term": _check_term,
+    "raise_py2": _python2_only("'raise E, message'"),
+    "except_py2": _check_except,
+    "backquote": _python2_only("a backquoted expression (`x`)"),
+    "print_to": _check_print_to,
+    "with_item": _check_with_item,
+    "try_stmt": _check_try,
     "assign": _check_assign,
-    "augassign": _check_augassign,
+    "augassign": _check_augassign_python2,
     "del_stmt": _check_del,
     "for_stmt": _check_for,
     "comp_for": _check_comp_for,
@@ -507,6 +727,22 @@ def _fold_number(node, module: Module) -> None:
             value = int(text[2:], 8)
         elif token.type == "BIN_NUMBER":
             value = int(text[2:], 2)
+        elif token.type in ("OLD_OCT_NUMBER", "LONG_NUMBER"):
+            if not module.python2:
+                words = "octal literal" if token.type == "OLD_OCT_NUMBER" else "long literal"
+                raise _error(
+                    f"Python 2 {words} {token.value[:20]} (code_aster 13 and older decks): "
+                    + ("write 0o" + text[1:] if token.type == "OLD_OCT_NUMBER" else "drop the L"),
+                    token,
+                    module,
+                )
+            text = text.rstrip("lL")
+            if text.lower().startswith("0x"):
+                value = int(text[2:], 16)
+            elif text.startswith("0") and len(text) > 1:
+                value = int(text[1:], 8)
+            else:
+                value = int(text)
         else:
             value = int(text)
     except ValueError:
@@ -515,14 +751,111 @@ def _fold_number(node, module: Module) -> None:
 
 
 def _fold_strings(node, module: Module) -> None:
+    tokens = [string.children[0] for string in node.children]
+    if any("f" in _prefix(token.value) for token in tokens):
+        _fold_fstring(node, tokens, module)
+        return
     parts = []
-    for string in node.children:
-        token = string.children[0]
+    for token in tokens:
         try:
             parts.append(decode_string_literal(token.value))
         except ValueError as error:
             raise _error(str(error), token, module) from None
-    _make_const(node, "".join(parts), node.children[0].children[0])
+    _make_const(node, "".join(parts), tokens[0])
+
+
+def _prefix(text: str) -> str:
+    return re.match(r"[a-zA-Z]*", text).group().lower()
+
+
+def _fold_fstring(node, tokens, module: Module) -> None:
+    """Adjacent literals, one an f-string at least: an ``fstring`` node
+    [first token, parts...], each part ``fstring_text`` [text] or
+    ``fstring_field`` [expression, conversion, spec fstring or None, debug text]."""
+    from lark import Tree
+
+    from asterlite.lang import fstrings
+
+    parts = []
+    for token in tokens:
+        match = _QUOTE_RE.match(token.value)
+        if match is None:
+            raise _error("malformed string literal", token, module)
+        prefix, quote, body = match.groups()
+        raw = "r" in prefix.lower()
+        if "f" not in prefix.lower():
+            parts.append(Tree("fstring_text", [_decoded(body, raw, token, module)]))
+            continue
+        body_offset = len(prefix) + len(quote)
+        try:
+            pieces, _ = fstrings.split(body, raw=raw)
+        except fstrings.FStringError as error:
+            raise _error_at(str(error), token, body_offset + error.offset, module) from None
+        parts.extend(_fstring_parts(pieces, token, body_offset, raw, module))
+    node.data = "fstring"
+    node.children = [tokens[0], *parts]
+
+
+def _fstring_parts(pieces, token, body_offset: int, raw: bool, module: Module) -> list:
+    from lark import Tree
+
+    parts = []
+    for piece in pieces:
+        if isinstance(piece, str):
+            parts.append(Tree("fstring_text", [_decoded(piece, raw, token, module)]))
+            continue
+        expression = _field_expression(piece, token, body_offset, module)
+        spec = None
+        if piece.spec:
+            spec_parts = _fstring_parts(piece.spec, token, body_offset, raw, module)
+            spec = Tree("fstring", [token, *spec_parts])
+        parts.append(Tree("fstring_field", [expression, piece.conversion, spec, piece.debug]))
+    return parts
+
+
+def _decoded(text: str, raw: bool, token, module: Module) -> str:
+    if raw:
+        return text
+    try:
+        return _ESCAPE_RE.sub(_unescape, text)
+    except ValueError as error:
+        raise _error(str(error), token, module) from None
+
+
+def _field_expression(piece, token, body_offset: int, module: Module):
+    """An f-string field's expression, parsed and checked as any expression,
+    its tokens placed where they stand in the deck."""
+    from lark import Token
+    from lark.exceptions import UnexpectedInput
+
+    line, column = _position_in(token, body_offset + piece.offset)
+    text = piece.expression
+    try:
+        tree = _parser().parse(f"({text})\n", start="eval_input")
+    except UnexpectedInput:
+        raise _LocatedSyntaxError("invalid expression in an f-string field", line, column) from None
+    for item in tree.scan_values(lambda value: isinstance(value, Token)):
+        if item.line == 1:
+            item.line, item.column = line, column + item.column - 2  # '(' added
+        else:
+            item.line = line + item.line - 1
+    expression = tree.children[0]
+    _check_tree(module, expression)
+    return expression
+
+
+def _position_in(token, offset: int) -> tuple[int, int]:
+    """(line, column) of the character ``offset`` characters into ``token``."""
+    before = token.value[:offset]
+    newlines = before.count("\n")
+    if not newlines:
+        return token.line, token.column + offset
+    return token.line + newlines, offset - before.rfind("\n")
+
+
+def _error_at(message: str, token, offset: int, module: Module) -> DeckSyntaxError:
+    line, column = _position_in(token, offset)
+    return DeckSyntaxError(message, module.location(line, column))
 
 
 def _make_const(node, value, token) -> None:

@@ -35,6 +35,7 @@ from asterlite.legacy.base import (
     literal_text,
 )
 from asterlite.legacy.nodes import LegacyGroups, group_resolver, node_number_resolver
+from asterlite.legacy.port_python2 import to_python3
 from asterlite.legacy.version import (
     NODE_NAMES_IN_TABLES,
     deck_version,
@@ -455,9 +456,12 @@ def port_text(
         version = deck_version(text)
     kept = pragma_version(text)  # a deck ported before keeps the version it states
     text = with_pragma(text, None)
+    text, python_notes, python_skipped = to_python3(text, filename)
     stated, why = pragma_needed(text, version)
     context = (unit_path, node_group, legacy_groups, version)
     result = _port_in_todays_meaning(text, filename, context, node_number)
+    result.notes[:0] = python_notes
+    result.skipped[:0] = python_skipped
     if stated:
         return _stating_version(result, filename, version, why)
     result.text = with_pragma(result.text, kept)

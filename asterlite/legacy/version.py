@@ -29,6 +29,9 @@ from functools import lru_cache
 from asterlite.io.input_files import read_text_or_none
 
 CURRENT = 17
+# the last code_aster version whose decks were Python 2 (code_aster 14 moved
+# to Python 3): Python 2 syntax in a deck is a marker of this version
+PYTHON2_LAST = 13
 
 # command -> newest version that had it
 REMOVED_COMMANDS = {
@@ -96,6 +99,13 @@ def _paths(call, prefix: tuple[str, ...]) -> Iterator[tuple[str, ...]]:
                 yield from _paths(occurrence, (*prefix, key))
 
 
+def _is_python2(text: str) -> bool:
+    """The deck's text is Python 2 (it reads as Python 2 only)."""
+    from asterlite.lang import parse_deck
+
+    return parse_deck(text, "deck.comm").python2
+
+
 def _text_version(text: str) -> int | None:
     """Markers of the text itself (code_aster 11 decks, see asterlite.legacy.v11)."""
     # every check had VALE_CALC from code_aster 12 on
@@ -134,6 +144,8 @@ def deck_version(text: str) -> int:
         found.append(own)
     keywords = _removed_keywords()
     try:
+        if _is_python2(text):
+            found.append(PYTHON2_LAST)
         for command, path in calls(text):
             if not path and command in REMOVED_COMMANDS:
                 found.append(REMOVED_COMMANDS[command])

@@ -13,6 +13,7 @@ from __future__ import annotations
 import difflib
 import importlib
 import pkgutil
+import re
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,9 +22,16 @@ from typing import Any
 from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
 from asterlite.concepts.base import Concept, Placeholder
-from asterlite.errors import AsterliteError, CommandError, Location, UnsupportedError
+from asterlite.errors import (
+    AsterliteError,
+    CommandError,
+    DeckSyntaxError,
+    Location,
+    UnsupportedError,
+)
 from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
+from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.runtime import watchdog
 from asterlite.runtime.context import CommandContext, TestRecord
@@ -112,6 +120,9 @@ class Session:
         from asterlite.runtime import checking
 
         self.namespace.update(base_namespace(print_hook=self._print))
+        from asterlite.lang import stdlib
+
+        self.namespace.update(stdlib.namespace_builtins(self.namespace))  # globals(): these names
         # code_aster commands asterlite lacks are refused by name when called
         for name, version in checking.code_aster_commands().items():
             self.namespace[name] = checking.UnsupportedCommand(name, version)
@@ -180,10 +191,14 @@ class Session:
         if name in COMMAND_MODULES:  # the commands, which the namespace already holds
             commands = (CommandProxy, UnsupportedCommand)
             return {n: v for n, v in self.namespace.items() if isinstance(v, commands)}
+        if name == "code_aster.CA":
+            from asterlite.runtime.deck_api import code_aster_ca_module
+
+            return code_aster_ca_module(self)
         if name.startswith("code_aster."):
             raise UnsupportedError(
                 f"module {name}: asterlite provides code_aster's commands "
-                "(code_aster.Commands) and CA.TestCase, not this module"
+                "(code_aster.Commands) and some of code_aster.CA, not this module"
             )
         if name == "code_aster":
             from asterlite.runtime.deck_api import code_aster_module
@@ -193,6 +208,12 @@ class Session:
             from asterlite.runtime.deck_api import aster_module
 
             return aster_module(self)
+        if name in ("os", "os.path"):  # os.path's file tests see the output folder only
+            from asterlite.lang import stdlib
+            from asterlite.lang.limits import Limits
+
+            module = stdlib.os_module(lambda: self.output_dir, Limits())
+            return module if name == "os" else module.attribute("path")
         if name in self.run.helper_modules:
             from asterlite.lang import Evaluator, parse_deck
 
@@ -216,6 +237,10 @@ class Session:
             if encoding not in (UTF8, UTF8_BOM):  # said, since the deck's strings carry it
                 self.log(f"# deck {path.name} read as {encoding}, not UTF-8")
             module = parse_deck(text, str(path), study_file=True)
+            if module.python2:
+                self._python2_allowed(module, path)
+            else:
+                module = self._python2_meaning(module, text, path)
         except AsterliteError as error:
             if self.check is None:
                 raise
@@ -224,6 +249,8 @@ class Session:
         evaluator = Evaluator(
             self.namespace, module_loader=self.load_module, overrides=self.overrides
         )
+        evaluator.caught_hook = self._caught
+        self._code_aster_imports(text)
         try:
             evaluator.run(module, on_error=self._statement_failed if self.check else None)
         except DeckFinished:
@@ -232,6 +259,62 @@ class Session:
             self.overrides_used |= evaluator.overrides_used
         if not self.started:  # an empty deck, or one that never starts a study
             self._no_start(DeckStartError(NO_START, Location(str(path), 1)))
+
+    def _code_aster_imports(self, text: str) -> None:
+        """What code_aster's run_aster adds to a deck that imports nothing of
+        code_aster and starts with DEBUT or POURSUITE (run_aster/command_files.py,
+        add_import_commands): ``import code_aster`` and ``from code_aster import CA``
+        (the commands are in every namespace already)."""
+        if CODE_ASTER_IMPORTED.search(text) or not STARTS_STUDY.search(text):
+            return
+        from asterlite.runtime.deck_api import code_aster_module
+
+        members = code_aster_module(self)
+        self.namespace.setdefault("CA", members["CA"])
+        self.namespace.setdefault("code_aster", DeckModule("code_aster", members))
+
+    def _python2_allowed(self, module, path: Path) -> None:
+        """A Python 2 deck runs as one of code_aster 13 or older; in a run read
+        as a later version, its Python 3 syntax error stands."""
+        from asterlite.legacy.version import PYTHON2_LAST, session_version
+
+        version = session_version(self)
+        if version > PYTHON2_LAST:
+            error = module.python3_error
+            raise DeckSyntaxError(
+                f"{error.message} (the deck reads as Python 2, as decks of code_aster "
+                f"{PYTHON2_LAST} and older were; this run reads it as code_aster {version})",
+                error.location,
+            )
+        self.log(
+            f"# deck {path.name} is Python 2 (code_aster {version}): print statements, "
+            "integer division, lists from map/zip/range/dict.keys() as Python 2 had them"
+        )
+
+    def _python2_meaning(self, module, text: str, path: Path):
+        """A deck of code_aster 13 or older ran under Python 2 even when its
+        text also reads as Python 3: its '/' of integers, map/zip/range...
+        meant Python 2's (asterlite.lang.python2)."""
+        from asterlite.lang import parse_deck
+        from asterlite.legacy.version import PYTHON2_LAST, session_version
+
+        version = session_version(self)
+        if version > PYTHON2_LAST:
+            return module
+        try:
+            old = parse_deck(text, str(path), study_file=True, python2=True)
+        except AsterliteError:  # Python 3 only (f-strings...): read as written
+            return module
+        self.log(
+            f"# deck {path.name} is read as Python 2 (code_aster {version}): integer "
+            "division, lists from map/zip/range/dict.keys() as Python 2 had them"
+        )
+        return old
+
+    def _caught(self, error, location) -> None:
+        """An error the deck catches (try/except, assertRaises) is said in the log."""
+        where = f"{Path(location.file).name}:{location.line}" if location is not None else ""
+        self.log(f"# caught by the deck ({where}): {error.kind}: {error.message}")
 
     def _statement_failed(self, error, statement) -> None:
         """Under check: record the error of a top-level statement and go on."""
@@ -351,6 +434,11 @@ STARTERS = ("DEBUT", "POURSUITE")
 NO_START = "the deck file calls neither DEBUT() nor POURSUITE(), which every study starts with"
 # Modules that only bring the command namespace asterlite already provides.
 COMMAND_MODULES = ("code_aster.Commands", "code_aster.Cata.Commands", "code_aster.CodeCommands")
+
+
+# run_aster's tests (add_import_commands) for a deck that imports code_aster itself
+CODE_ASTER_IMPORTED = re.compile(r"^from +code_aster(\.Commands| +import +CA)", re.M)
+STARTS_STUDY = re.compile(r"^(DEBUT|POURSUITE)", re.M)
 
 
 class DeckStartError(AsterliteError):
