@@ -377,3 +377,23 @@ def test_bar_axial_force_from_complex_displacements():
     stiffness = 2.0e11 * 2.0e-4 / 5.0
     expected = stiffness * np.array([(0.6 * (3e-5 + 1e-6j) + 0.8 * 4e-5), -0.6 * 1e-5j])
     np.testing.assert_allclose(n, np.column_stack([expected, expected]), rtol=1e-13)
+
+
+def test_physical_sweep_falls_back_to_pivoting():
+    """A zero pivot (K = [[0, 1], [1, 0]] at 0 Hz) and a non-symmetric damping
+    are factorised by SuperLU with pivoting; the answers stay exact."""
+    eye = eliminate(sp.csr_matrix((0, 2)), np.zeros(0), 2)
+    stiffness = sp.csr_matrix(np.array([[0.0, 1.0], [1.0, 0.0]]))
+    mass = sp.csr_matrix(np.eye(2))
+    force = np.array([[1.0, 2.0]])
+    sweep = physical.prepare(eye, stiffness, mass)
+    u, info = physical.solve(sweep, [0.0], force, np.ones((1, 1)))
+    np.testing.assert_allclose(u[0], [2.0, 1.0], rtol=1e-14)
+    assert info["superlu"] == 1 and info["ldl"] == 0
+    gyro = sp.csr_matrix(np.array([[1.0, 3.0], [-3.0, 1.0]]))
+    sweep = physical.prepare(eye, 1e3 * sp.csr_matrix(np.eye(2)), mass, gyro)
+    assert not sweep.symmetric
+    u, info = physical.solve(sweep, [2.0], force, np.ones((1, 1)))
+    expected = exact(np.eye(2), 1e3 * np.eye(2), gyro.toarray(), [2.0], force[0])
+    np.testing.assert_allclose(u, expected, rtol=1e-13)
+    assert info["superlu"] == 1

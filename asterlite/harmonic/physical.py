@@ -170,8 +170,18 @@ def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
     ldl.warm()
     matrix = pencil.at(frequency)
     try:
-        lu = splu(matrix, permc_spec="MMD_AT_PLUS_A")
+        # the minimum degree ordering on AᵀA + A, read from a factorisation
+        # on the diagonal (SymmetricMode: partial pivoting would ruin its fill)
+        lu = splu(
+            matrix,
+            permc_spec="MMD_AT_PLUS_A",
+            diag_pivot_thresh=0.0,
+            options={"SymmetricMode": True},
+        )
         candidates.append(np.argsort(lu.perm_c))
+    except RuntimeError:
+        pass
+    try:
         started = time.perf_counter()  # the factorisation the fallback makes
         lu = splu(matrix)
         sweep.timings["superlu"] = time.perf_counter() - started
