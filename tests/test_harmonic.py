@@ -113,7 +113,7 @@ def test_constrained_generalized_coordinates():
     np.testing.assert_allclose(q[:, 0], q[:, 1], rtol=1e-14)
 
 
-def test_physical_sweep_under_a_fixed_dof_equals_the_reduced_exact_response():
+def test_physical_sweep_under_a_fixed_dof_equals_the_reduced_exact_response(monkeypatch):
     """A 3-DOF chain with DOF 0 fixed (DDL_IMPO): the sparse solve on the
     eliminated system gives the 2-DOF exact response and 0 on the fixed DOF."""
     k, m = 2.0e4, 1.5
@@ -124,6 +124,8 @@ def test_physical_sweep_under_a_fixed_dof_equals_the_reduced_exact_response():
     elimination = eliminate(b_matrix, np.zeros(1), 3)
     sweep = physical.prepare(elimination, stiffness, mass, damping)
     f = np.array([1.0, 10.0, 25.0])
+    assert sweep.symmetric
+    monkeypatch.setattr(physical, "LDL_MIN_SIZE", 1)  # the LDLT path on a small system
     force = np.array([0.0, 0.0, 3.0])
     u, info = physical.solve(sweep, f, force[None, :], np.ones((3, 1), dtype=complex))
     reduced = exact(
@@ -131,7 +133,7 @@ def test_physical_sweep_under_a_fixed_dof_equals_the_reduced_exact_response():
     )
     np.testing.assert_allclose(u[:, 1:], reduced, rtol=1e-12)
     assert np.all(u[:, 0] == 0)
-    assert info["n_free"] == 2
+    assert info["n_free"] == 2 and info["ldl"] == 3
 
 
 # ----------------------------------------------------------------------------- loads and fields
@@ -379,7 +381,7 @@ def test_bar_axial_force_from_complex_displacements():
     np.testing.assert_allclose(n, np.column_stack([expected, expected]), rtol=1e-13)
 
 
-def test_physical_sweep_falls_back_to_pivoting():
+def test_physical_sweep_falls_back_to_pivoting(monkeypatch):
     """A zero pivot (K = [[0, 1], [1, 0]] at 0 Hz) and a non-symmetric damping
     are factorised by SuperLU with pivoting; the answers stay exact."""
     eye = eliminate(sp.csr_matrix((0, 2)), np.zeros(0), 2)
@@ -387,6 +389,7 @@ def test_physical_sweep_falls_back_to_pivoting():
     mass = sp.csr_matrix(np.eye(2))
     force = np.array([[1.0, 2.0]])
     sweep = physical.prepare(eye, stiffness, mass)
+    monkeypatch.setattr(physical, "LDL_MIN_SIZE", 1)
     u, info = physical.solve(sweep, [0.0], force, np.ones((1, 1)))
     np.testing.assert_allclose(u[0], [2.0, 1.0], rtol=1e-14)
     assert info["superlu"] == 1 and info["ldl"] == 0

@@ -37,6 +37,9 @@ from asterlite.harmonic.modal import SingularSystem
 
 # backward error |A x - b| / (|A| |x| + |b|) (max norms) a solution must reach
 BACKWARD_TOLERANCE = 1.0e-13
+# smaller systems go to SuperLU directly: loading the LDLT kernels and
+# choosing an ordering (~0.2 s) would cost more than the sweep
+LDL_MIN_SIZE = 1000
 
 
 @dataclass
@@ -122,7 +125,7 @@ class PhysicalSweep:
 
     @property
     def use_ldl(self) -> bool:
-        if not self.symmetric:
+        if not self.symmetric or self.pencil.n < LDL_MIN_SIZE:
             return False
         if not self.timings or "ldl" not in self.timings:
             return True
