@@ -40,6 +40,7 @@ class FlowStatements:
     and ``_FLOW``, its break/continue/return signals)."""
 
     caught_hook = None  # caught_hook(error, location): told of each error a deck catches
+    catching = 0  # try bodies with handlers and with bodies under way (an error may be caught)
 
     @property
     def _handling(self) -> list:
@@ -59,12 +60,19 @@ class FlowStatements:
         final = next((c for c in clauses if c is not None and c.data == "finally_clause"), None)
 
         def attempt():
+            self.catching += bool(handlers)
             try:
                 self._exec_suite(body, frame)
             except AsterliteError as error:
-                kind = classify(error)
-                if kind is None or not self._handle(error, kind, handlers, frame):
-                    raise
+                failure = error
+            else:
+                failure = None
+            finally:
+                self.catching -= bool(handlers)
+            if failure is not None:
+                kind = classify(failure)
+                if kind is None or not self._handle(failure, kind, handlers, frame):
+                    raise failure
                 return
             if else_clause is not None:
                 self._exec_suite(else_clause.children[0], frame)
@@ -178,6 +186,7 @@ class FlowStatements:
         value = manager.deck_enter()
         if target is not None:
             self._assign_target(target, value, frame)
+        self.catching += 1
         try:
             self._with_items(items[1:], suite, frame)
         except self._FLOW:
@@ -188,8 +197,12 @@ class FlowStatements:
             if kind is None:
                 raise
             if manager.deck_exit(error, kind):
+                if self.caught_hook is not None:
+                    self.caught_hook(error, self.location(items[0], frame.module))
                 return
             raise
+        finally:
+            self.catching -= 1
         manager.deck_exit(None, None)
 
     # ------------------------------------------------------------ f-strings

@@ -250,6 +250,7 @@ class Session:
             self.namespace, module_loader=self.load_module, overrides=self.overrides
         )
         evaluator.caught_hook = self._caught
+        self._evaluator = evaluator
         self._code_aster_imports(text)
         try:
             evaluator.run(module, on_error=self._statement_failed if self.check else None)
@@ -310,6 +311,10 @@ class Session:
             "division, lists from map/zip/range/dict.keys() as Python 2 had them"
         )
         return old
+
+    def deck_may_catch(self) -> bool:
+        """A try (with handlers) or with block of the deck file is under way."""
+        return getattr(getattr(self, "_evaluator", None), "catching", 0) > 0
 
     def _caught(self, error, location) -> None:
         """An error the deck catches (try/except, assertRaises) is said in the log."""
@@ -458,7 +463,8 @@ class CommandProxy(DeckCallable):
         return f"<command {self.name}>"
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
-        if self.session.check is None:
+        if self.session.check is None or self.session.deck_may_catch():
+            # a try or with block of the deck may catch the error, as in a run
             return self._deck_call(args, kwargs, site)
         try:
             return self._deck_call(args, kwargs, site)
