@@ -64,7 +64,98 @@ def run(ctx, kw):
         return write_text_format(ctx, kw)
     if fmt == "ASTER":
         return write_aster_format(ctx, kw)
+    if fmt == "IDEAS":
+        return write_ideas_format(ctx, kw)
     ctx.unsupported(f"FORMAT={fmt!r}", "FORMAT", kw)
+
+
+def write_ideas_format(ctx, kw) -> None:
+    """FORMAT='IDEAS' (unit 30): the nodal fields of results as I-DEAS
+    datasets 55 (asterlite.io.ideas_result), every order (or those chosen)
+    and field (or NOM_CHAM), on the nodes of GROUP_NO / GROUP_MA; PARTIE
+    writes the real or imaginary part of a complex field."""
+    from asterlite.concepts.harmonic import DynaHarmo
+    from asterlite.concepts.transient import DynaTrans
+
+    # VERSION changes the mesh datasets only (2411/2412 or 781/780), not 55
+    kw.mark_used("VERSION")
+    path = ctx.session.output_path(int(kw.get("UNITE", 30)))
+    lines: list[str] = []
+    for occ in kw.factor("RESU"):
+        result = occ.get("RESULTAT")
+        if result is None:
+            what = "MAILLAGE" if occ.get("MAILLAGE") is not None else "CHAM_GD"
+            ctx.unsupported(f"IMPR_RESU FORMAT='IDEAS' of a {what}", what, occ)
+        if not isinstance(result, DynaHarmo | DynaTrans | ModeResult):
+            ctx.unsupported(f"IMPR_RESU FORMAT='IDEAS' of a {result.aster_type}", "RESULTAT", occ)
+        if occ.get("NOM_CMP") is not None:
+            ctx.unsupported("NOM_CMP in FORMAT='IDEAS'", "NOM_CMP", occ)
+        occ.mark_used("TOUT_CMP")  # every component: the default
+        lines.extend(_ideas_occurrence(ctx, occ, result))
+    write_lines(path, lines, append=not first_time(ctx.session, path))
+    ctx.log(f"IDEAS datasets written to {path.name} ({len(lines)} lines)")
+
+
+def _ideas_occurrence(ctx, occ, result) -> list[str]:
+    from asterlite.concepts.harmonic import DynaHarmo
+    from asterlite.io.ideas_result import field_lines
+
+    if isinstance(result, ModeResult):
+        fields = {"DEPL": np.asarray(result.shapes).T}
+    else:
+        fields = dict(result.fields)
+    names = list(as_tuple(occ.get("NOM_CHAM"))) or [
+        n for n in ("DEPL", "VITE", "ACCE") if n in fields
+    ]
+    occ.mark_used("TOUT_CHAM")  # every field: the default
+    for name in names:
+        if name not in fields:
+            ctx.error(f"the result has no field {name}", "NOM_CHAM", occ)
+    if isinstance(result, DynaHarmo):
+        from asterlite.post.harmonic import selection_from_keywords
+
+        rows = selection_from_keywords(ctx, occ, result.frequencies, result.order).lower
+    else:
+        rows = chosen_steps(ctx, occ, result_steps(result))
+    nodes = node_indices(ctx, occ, result.numbering.mesh)
+    title = f"ASTERLITE CONCEPT {result.name or ''} DE TYPE {result.aster_type.upper()}"
+    lines: list[str] = []
+    for k in rows:
+        if isinstance(result, ModeResult):
+            analysis, order = 2, k + 1
+            record_7 = (2, 4, order, int(result.mode_numbers[k]))
+            damping = result.parameters.get("AMOR_REDUIT")
+            record_8 = (
+                float(result.frequencies[k]),
+                float(np.asarray(result.generalized_mass)[k]),
+                0.0 if damping is None else float(np.asarray(damping)[k]),
+                0.0,
+            )
+        elif isinstance(result, DynaHarmo):
+            analysis, order = 5, int(result.order[k])
+            record_7, record_8 = (2, 1, 1, order), (float(result.frequencies[k]),)
+        else:
+            analysis, order = 4, int(result.order[k])
+            record_7, record_8 = (2, 1, 1, order), (float(result.times[k]),)
+        for name in names:
+            values = np.asarray(fields[name][k])
+            if np.iscomplexobj(values) and occ.get("PARTIE") is not None:
+                values = values.real if occ["PARTIE"] == "REEL" else values.imag
+            subtitle = occ.get("SOUS_TITRE") or f"CHAMP {name} NUME_ORDRE {order}"
+            lines.extend(
+                field_lines(
+                    result.numbering,
+                    values,
+                    name,
+                    analysis,
+                    record_7,
+                    record_8,
+                    title,
+                    subtitle,
+                    nodes,
+                )  # fmt: skip
+            )
+    return lines
 
 
 # =============================================================================
