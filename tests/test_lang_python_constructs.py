@@ -403,3 +403,24 @@ def test_functions_with_the_new_constructs_run_interpreted_with_the_same_results
         results.append((names["a"], names["b"]))
         assert names["f"].arity == -1  # refused by the compiler: interpreted
     assert results[0] == results[1]
+
+
+def test_a_caught_error_shows_file_names_not_paths():
+    class Failing(DeckCallable):
+        def deck_call(self, args, kwargs, site):
+            raise CommandError("the export /home/user/study/study.export maps units 20")
+
+    from asterlite.lang.exceptions import ASTER_ERROR
+
+    names = run(
+        "try:\n    F()\nexcept E as err:\n    m = err.message\n    s = str(err)\n",
+        {"F": Failing(), "E": ASTER_ERROR},
+    )
+    assert names["m"] == names["s"] == "the export study.export maps units 20"
+
+
+def test_exception_arguments_are_text_within_the_limits():
+    error = error_of("x = [[0] * 10 ** 5] * 10 ** 5\ne = ValueError(x)\n", DeckRuntimeError)
+    assert "elements to convert to text" in error.message
+    names = run("e = ValueError(len)\n")
+    assert str(names["e"]) == "<function len>"

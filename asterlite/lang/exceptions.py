@@ -26,6 +26,8 @@ without running ``finally`` blocks or ``with`` exits.
 
 from __future__ import annotations
 
+import re
+
 from asterlite.errors import (
     AsterliteError,
     CommandError,
@@ -55,8 +57,11 @@ class ExceptionClass(DeckCallable):
         return False
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
+        from asterlite.lang import limits as guards
+
         if kwargs:
             raise DeckRuntimeError(f"{self.name}() takes no keyword arguments")
+        guards.check_nested_size(args, guards.Limits())  # its message is their text
         return RaisedException(self, tuple(args))
 
     def __repr__(self) -> str:
@@ -69,13 +74,15 @@ class RaisedException:
     deck_attributes = frozenset({"args"})
 
     def __init__(self, cls: ExceptionClass, args: tuple):
+        from asterlite.lang import limits as guards
+
         self.cls = cls
         self.args = args
+        shown = guards.deck_text_value(args)  # engine objects neutrally, as print does
+        self._message = str(shown[0]) if len(shown) == 1 else (str(shown) if shown else "")
 
     def message(self) -> str:
-        if len(self.args) == 1:
-            return str(self.args[0])
-        return str(self.args) if self.args else ""
+        return self._message
 
     def __str__(self) -> str:
         return self.message()
@@ -193,6 +200,16 @@ def ends_run(error: BaseException) -> bool:
     return classify(error) is None
 
 
+# an absolute path in a message: a deck sees only its last component
+_ABSOLUTE_PATH = re.compile(r"(?<![\w.~])/(?:[^\s'\"():,;/]+/)+([^\s'\"():,;/]*)")
+
+
+def without_paths(text: str) -> str:
+    """``text`` with absolute paths cut to their file name: an error message
+    may name the export or a mesh by its path, which a deck need not learn."""
+    return _ABSOLUTE_PATH.sub(lambda match: match.group(1) or ".", text)
+
+
 class CaughtError:
     """What ``except ... as err`` binds: the error's class, message and args.
 
@@ -209,7 +226,8 @@ class CaughtError:
             self.message = error.exception.message()
         else:
             cause = error.__cause__
-            self.message = str(cause) if cause is not None and str(cause) else error.message
+            text = str(cause) if cause is not None and str(cause) else error.message
+            self.message = without_paths(text)
             self.args = (self.message,)
 
     def deck_getattr(self, name: str):
