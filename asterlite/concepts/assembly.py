@@ -21,6 +21,7 @@ class Model(Concept):
     """``AFFE_MODELE`` result: which modelisation each cell carries."""
 
     aster_types = ("modele_sdaster",)
+    deck_methods = frozenset({"getName", "getMesh"})
 
     mesh: Mesh
     cell_modelisation: dict[int, str] = field(default_factory=dict)  # cell index -> "DIS_T", ...
@@ -39,6 +40,9 @@ class Model(Concept):
         for node, modelisation in self.node_modelisation.items():
             found.setdefault(node, set()).update(MODELISATION_COMPONENTS.get(modelisation, ()))
         return {n: sort_components(found[n]) for n in sorted(found)}
+
+    def getMesh(self) -> Mesh:  # noqa: N802 - code_aster's name
+        return self.mesh
 
     @property
     def dim(self) -> int:
