@@ -1,5 +1,5 @@
-"""Command-line interface: ``asterlite run | check | corpus | sweep | plot | report |
-converge | sensitivity | port | warmup``.
+"""Command-line interface: ``asterlite run | status | check | corpus | sweep | plot |
+report | converge | sensitivity | port | warmup``.
 
 Exit status: 0 when every TEST_* check is OK, or the deck ran to its end
 without any check (DONE), or ``check`` finds no error; 1 when a check is
@@ -19,6 +19,11 @@ from asterlite.extras import MissingExtraError
 
 
 def _run(args) -> int:
+    from asterlite.runtime import console, stops
+
+    # a signal from here on waits until the run has taken its output folder
+    # (an earlier result moved aside, RUNNING written), then stops it there
+    stops.hold_signals()
     from asterlite.runtime.runner import format_summary, run_deck
 
     if args.no_progress:
@@ -33,25 +38,43 @@ def _run(args) -> int:
             print(error, file=sys.stderr)
             return 2
     output = Path(args.output) if args.output else Path("asterlite-out") / deck.stem
-    report = run_deck(
-        deck,
-        output,
-        echo=not args.quiet,
-        save_results=args.save_results or args.report,  # the report draws the histories
-        report_page=args.report,
-        time_limit=args.time_limit,
-        memory_limit=args.memory_limit,
-        output_limit=args.output_limit,
-        aster_version=args.aster_version,
-    )
+    try:
+        report = run_deck(
+            deck,
+            output,
+            echo=not args.quiet,
+            save_results=args.save_results or args.report,  # the report draws the histories
+            report_page=args.report,
+            time_limit=args.time_limit,
+            memory_limit=args.memory_limit,
+            output_limit=args.output_limit,
+            aster_version=args.aster_version,
+            result_paths=args.allow_result_paths,
+        )
+    except stops.RunInterrupted as interrupt:  # came once the result was written
+        if interrupt.report is None:
+            raise
+        report = interrupt.report
+    # the verdict is in message.log and summary.json: a closed pipe or
+    # terminal silences what follows, never changes the exit status
     if not args.quiet:
-        print(format_summary(report))
-        print(f"output folder: {output}")
+        console.say(format_summary(report))
+        console.say(f"output folder: {output}")
     elif report.status not in ("PASS", "DONE"):
-        print(f"{report.deck}: {report.status} {report.message}", file=sys.stderr)
+        console.say(f"{report.deck}: {report.status} {report.message}", sys.stderr)
     if args.report:
         _say_report(output)
     return report.exit_code
+
+
+def _status(args) -> int:
+    from asterlite.runtime.console import say
+    from asterlite.runtime.folder_status import folder_status
+
+    found = folder_status(Path(args.folder))
+    for line in found.lines:
+        say(line)
+    return found.exit_code
 
 
 def _say_report(output: Path) -> None:
@@ -313,6 +336,21 @@ def _warmup(args) -> int:
     return warmup.main(jobs=args.jobs, verbose=args.verbose)
 
 
+def _limit_option(name: str):
+    """An argparse type: a finite number >= 0 up to the limit's maximum
+    (``--time-limit inf`` or ``nan`` is a usage error, exit status 2)."""
+
+    def parse(text: str) -> float:
+        from asterlite.runtime.export import limit_refusal
+
+        refusal = limit_refusal(name, text)
+        if refusal:
+            raise argparse.ArgumentTypeError(refusal)
+        return float(text)
+
+    return parse
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="asterlite",
@@ -341,19 +379,19 @@ def build_parser() -> argparse.ArgumentParser:
     )
     run.add_argument(
         "--time-limit",
-        type=float,
+        type=_limit_option("time_limit"),
         metavar="SECONDS",
         help="time for the whole run, replacing the export's 'P time_limit' (0: no limit)",
     )
     run.add_argument(
         "--memory-limit",
-        type=float,
+        type=_limit_option("memory_limit"),
         metavar="MB",
         help="memory the run may allocate, replacing the export's 'P memory_limit' (0: none)",
     )
     run.add_argument(
         "--output-limit",
-        type=float,
+        type=_limit_option("output_limit"),
         metavar="MB",
         help="what the run may write: message.log and the deck's files (default 2048; 0: none)",
     )
@@ -363,7 +401,20 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="N",
         help="read the decks as code_aster N wrote them (default: detected from their text)",
     )
+    run.add_argument(
+        "--allow-result-paths",
+        action="store_true",
+        help="write the export's R-line results at their own paths, as code_aster does "
+        "(default: into the output folder; never over the deck, its inputs or the run's files)",
+    )
     run.set_defaults(handler=_run)
+
+    status = commands.add_parser(
+        "status",
+        help="the status of the run in an output folder (a killed run's folder is settled)",
+    )
+    status.add_argument("folder", help="a run's output folder")
+    status.set_defaults(handler=_status)
 
     check = commands.add_parser("check", help="validate decks without computing")
     check.add_argument("decks", nargs="+")

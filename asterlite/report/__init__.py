@@ -13,7 +13,11 @@ Importing this package stays light: the runner imports it at every run.
 
 from __future__ import annotations
 
+import io
 from pathlib import Path
+
+from asterlite.runtime.outdir import list_in_summary
+from asterlite.runtime.write_boundary import replace_outside
 
 REPORT_NAME = "report.html"
 
@@ -64,11 +68,13 @@ def write_report(outdir: Path, output: Path | None = None) -> Path:
     target = Path(output) if output is not None else outdir / REPORT_NAME
     if target.is_symlink() or (target.exists() and not _ours(target, GENERATOR)):
         raise ReportError(f"{target}: a file asterlite did not write is there; give -o FILE")
-    temporary = target.with_name(f".{target.name}.tmp")
-    temporary.write_text(render(data), encoding="utf-8")
-    temporary.replace(target)
-    if output is None:
-        _list_in_summary(outdir, REPORT_NAME)
+    page = io.BytesIO(render(data).encode("utf-8"))
+    try:  # written aside (never through a symlink), then renamed over the target
+        replace_outside(page, target)
+    except OSError as error:
+        raise ReportError(f"{target}: {error.strerror or error}") from None
+    if output is None:  # listed in the run's (verified) summary: the next run moves it aside
+        list_in_summary(outdir, REPORT_NAME)
     return target
 
 
@@ -79,24 +85,6 @@ def _ours(path: Path, generator: str) -> bool:
     except OSError:
         return False
     return f'content="{generator}"' in head
-
-
-def _list_in_summary(outdir: Path, name: str) -> None:
-    import json
-
-    summary = outdir / "summary.json"
-    try:
-        data = json.loads(summary.read_text(encoding="utf-8"))
-        files = data.setdefault("output", {}).setdefault("files", [])
-        if name in files:
-            return
-        files.append(name)
-        files.sort()
-        temporary = outdir / ".summary.json.report"
-        temporary.write_text(json.dumps(data, indent=1), encoding="utf-8")
-        temporary.replace(summary)
-    except (OSError, ValueError, AttributeError):
-        pass
 
 
 __all__ = ["REPORT_NAME", "ReportError", "write_report", "write_run_page"]

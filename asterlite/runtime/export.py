@@ -121,6 +121,11 @@ def read_export(path: Path) -> RunDescription:
 NOT_AN_EXPORT = "not an export file: F, R or P lines were expected; the line is not shown"
 # P lines asterlite enforces, both positive numbers (seconds, megabytes)
 LIMITS = ("time_limit", "memory_limit")
+# the largest limits taken (time: CPU seconds, about 31 years; memory and
+# output: megabytes, a petabyte): beyond them the clocks and resource limits
+# that enforce a limit overflow (P time_limit 1e308 ended in an internal error)
+LIMIT_MAXIMA = {"time_limit": 1e9, "memory_limit": 1e9, "output_limit": 1e9}
+LIMIT_UNITS = {"time_limit": "seconds", "memory_limit": "MB", "output_limit": "MB"}
 # R-line types asterlite cannot make: code_aster's databases and folders
 NOT_PRODUCED = frozenset({"base", "bhdf", "repe"})
 
@@ -133,9 +138,25 @@ def _limit(fields: list[str], where: Location) -> float:
         raise ExportError(f"P {fields[1]}: {error}", where) from None
     except ValueError:
         value = 0.0
-    if not value > 0:
-        raise ExportError(f"P {fields[1]} must be a positive number, got {text!r}", where)
+    refusal = limit_refusal(fields[1], value, zero_means_none=False)
+    if refusal:
+        raise ExportError(f"P {refusal}, got {text!r}", where)
     return value
+
+
+def limit_refusal(name: str, value, zero_means_none: bool = True) -> str:
+    """Why ``value`` cannot be the limit ``name`` ('' when it can): a finite
+    positive number up to LIMIT_MAXIMA (0 means no limit where allowed)."""
+    low = "a number >= 0 (0: no limit)" if zero_means_none else "a positive number"
+    maximum = LIMIT_MAXIMA[name]
+    wanted = f"{name} must be {low} of {LIMIT_UNITS[name]}, at most {maximum:g}"
+    try:
+        number = float(value)
+    except (TypeError, ValueError, OverflowError):
+        return wanted
+    if number != number or not (0 < number <= maximum or (zero_means_none and number == 0)):
+        return wanted
+    return ""
 
 
 def describe_bare_deck(path: Path) -> RunDescription:

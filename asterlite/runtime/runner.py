@@ -17,7 +17,6 @@ error of the deck. Exit status 1 means NOOK only: every failure is 2.
 from __future__ import annotations
 
 import os
-import shutil
 import signal
 import threading
 import time
@@ -30,13 +29,13 @@ from asterlite.errors import AsterliteError, UnsupportedError
 from asterlite.report.fields import summary_fields, summary_lines
 from asterlite.runtime import stops, watchdog
 from asterlite.runtime.context import TestRecord
-from asterlite.runtime.export import NOT_PRODUCED, describe_run
+from asterlite.runtime.export import NOT_PRODUCED, describe_run, limit_refusal
 from asterlite.runtime.outdir import (
     OutputFolder,
     OutputFolderError,
     OutputLimitError,
-    create_file,
 )
+from asterlite.runtime.write_boundary import replace_outside
 
 EXIT_OK, EXIT_NOOK, EXIT_ERROR = 0, 1, 2
 # statuses of a run that went to its end (its results and checks count)
@@ -182,6 +181,7 @@ def run_deck(
     output_limit: float | None = None,
     aster_version: int | None = None,
     report_page: bool = False,
+    result_paths: bool = False,
 ) -> RunReport:
     """Run or check the deck at ``deck`` (an .export or a .comm).
 
@@ -195,37 +195,98 @@ def run_deck(
     means the default, 0 no limit (see :func:`run_limits`, docs/safety.md).
     The output folder is taken as :mod:`asterlite.runtime.outdir` describes;
     one that cannot be taken makes an ERROR report with nothing written.
+    The export's ``R`` lines are kept in the output folder, or at their own
+    paths with ``result_paths`` (``asterlite run --allow-result-paths``).
+
+    A stop signal ends the run INTERRUPTED; one that comes once the result
+    is written is raised after it (RunInterrupted, with ``report`` set).
     """
     start = time.perf_counter()
+    refusal = limits_refusal(
+        time_limit=time_limit, memory_limit=memory_limit, output_limit=output_limit
+    )
+    if refusal:
+        return RunReport(deck.stem, "ERROR", refusal)
     output_bytes = output_cap_bytes(output_limit)
-    folder = None
-    if output_dir is not None and not check_only:
-        try:
-            cap = log_cap_bytes(output_bytes)
-            folder = OutputFolder(output_dir, log_cap=cap, deck=deck.stem).open()
-        except OutputFolderError as error:
-            report = RunReport(deck.stem, "ERROR", str(error))
-            report.seconds = time.perf_counter() - start
-            return report
-    with stops.stop_on_signals() as stop:
-        try:
-            report, session = _run_session(
+    # held while the folder is taken: an earlier result is moved aside and the
+    # RUNNING summary written before a signal stops the run
+    with stops.stop_on_signals(held=True) as stop:
+        folder = None
+        if output_dir is not None and not check_only:
+            try:
+                cap = log_cap_bytes(output_bytes)
+                folder = OutputFolder(
+                    output_dir, log_cap=cap, deck=deck.stem, protected=input_identities(deck)
+                ).open()
+            except OutputFolderError as error:
+                report = RunReport(deck.stem, "ERROR", str(error))
+        if output_dir is None or check_only or folder is not None:
+            report = _run_in_folder(
                 deck,
                 folder,
+                stop,
                 check_only=check_only,
                 echo=echo,
                 overrides=overrides,
                 keyword_overrides=keyword_overrides,
                 limits=(time_limit, memory_limit, output_bytes),
                 aster_version=aster_version,
+                placing=(save_results, report_page, result_paths),
+                started=start,
             )
-        except stops.RunInterrupted as interrupt:  # between the session and the report
-            report, session = _interrupted(deck.stem, interrupt, None), None
-        stop.finishing()  # a signal from here on waits until the folder is written
-        report.seconds = time.perf_counter() - start
-        if folder is not None:
-            _finish_output(folder, report, session, save_results, report_page)
+        else:
+            report.seconds = time.perf_counter() - start
+        late = stop.take_pending()
+    if late is not None:  # the run's result is written: the caller stops now
+        interrupt = stops.RunInterrupted(late)
+        interrupt.report = report
+        raise interrupt
     return report
+
+
+def _run_in_folder(deck, folder, stop, *, started, placing, **session_options) -> RunReport:
+    """The run itself, once its folder is taken: signals stop it from here
+    until its final files are written."""
+    try:
+        stop.release()  # a signal held while the folder was taken stops the run now
+        report, session = _run_session(deck, folder, **session_options)
+    except stops.RunInterrupted as interrupt:  # between the session and the report
+        report, session = _interrupted(deck.stem, interrupt, None), None
+    stop.hold()  # a signal from here on waits until the folder is written
+    report.seconds = time.perf_counter() - started
+    if folder is not None:
+        _finish_output(folder, report, session, *placing)
+    return report
+
+
+def input_identities(deck: Path) -> frozenset:
+    """(device, inode) of the deck, its export and the files its F lines name:
+    never moved aside, never replaced by an R line."""
+    paths = [deck]
+    try:
+        description = describe_run(deck)
+    except (AsterliteError, OSError, ValueError):
+        description = None
+    if description is not None:
+        paths += run_inputs(description)
+    identities = set()
+    for path in paths:
+        for follow in (False, True):
+            try:
+                info = os.stat(path, follow_symlinks=follow)
+            except (OSError, ValueError):
+                continue
+            identities.add((info.st_dev, info.st_ino))
+    return frozenset(identities)
+
+
+def run_inputs(description) -> list[Path]:
+    """Every file a run description reads."""
+    paths = list(description.deck_files) + list(description.units.values())
+    paths += list(description.helper_modules.values())
+    if description.source is not None:
+        paths.append(description.source)
+    return paths
 
 
 def _run_session(
@@ -261,6 +322,7 @@ def _run_session(
         )
         if folder is not None:
             session.output_guard = folder.check_name
+            session.command_hook = folder.record_command
             folder.log.on_line = output_watch(folder, output_bytes)
         seconds, megabytes = run_limits(description, time_limit, memory_limit, check_only)
         with watchdog.limits(seconds, megabytes, not check_only), file_size_cap(output_bytes):
@@ -320,10 +382,22 @@ def _where(error: BaseException) -> str:
 
 
 def _interrupted(name: str, interrupt, session) -> RunReport:
-    last = session.timings[-1].command if session is not None and session.timings else None
-    after = f" (after {last})" if last else ""
-    message = f"interrupted by {interrupt.signal_name}{after}: the run's results are incomplete"
+    where = where_the_run_was(session)
+    message = (
+        f"interrupted by {interrupt.signal_name}{' ' + where if where else ''}: "
+        "the run's results are incomplete"
+    )
     return RunReport(name, "INTERRUPTED", message)
+
+
+def where_the_run_was(session) -> str:
+    """``during IMPR_TABLE (d.comm:3)``, ``after ...`` (in deck code), or ''."""
+    current = session.current_command if session is not None else None
+    if current is None:
+        return ""
+    command, location, running = current
+    where = f" ({Path(location.file).name}:{location.line})" if location is not None else ""
+    return f"{'during' if running else 'after'} {command}{where}"
 
 
 # errno values that mean the disk (or the run's cap on a file) is full
@@ -401,6 +475,16 @@ def default_memory_limit() -> float | None:
     except (ValueError, OSError, AttributeError):
         return None
     return round(DEFAULT_MEMORY_FRACTION * total / watchdog.MEGABYTE)
+
+
+def limits_refusal(**limits) -> str:
+    """Why the limits given to :func:`run_deck` cannot be used ('' if they can)."""
+    for name, value in limits.items():
+        if value is not None:
+            refusal = limit_refusal(name, value)
+            if refusal:
+                return f"{refusal}, got {value!r}"
+    return ""
 
 
 def output_cap_bytes(output_limit: float | None) -> int | None:
@@ -556,12 +640,17 @@ def shock_summary(result: str | None, times, shock) -> dict:
 
 
 def _finish_output(
-    folder, report: RunReport, session, save_results: bool = False, report_page: bool = False
+    folder,
+    report: RunReport,
+    session,
+    save_results: bool = False,
+    report_page: bool = False,
+    result_paths: bool = False,
 ) -> None:
     """Publish a complete run's files (else keep them under incomplete/),
     copy the R-line results, end message.log and write the final summary."""
     try:
-        _place_files(folder, report, session, save_results, report_page)
+        _place_files(folder, report, session, save_results, report_page, result_paths)
     except OSError as error:  # a full disk while finishing: say so, keep going
         failed = _os_error_report(report.deck, error, None)
         report.status, report.message = "ERROR", failed.message
@@ -575,14 +664,37 @@ def _finish_output(
         pass  # the disk is full: summary.json may still fit
     try:
         folder.write_summary(report.as_dict())
-    except OSError:
-        pass  # nothing more can be written; the report is still returned
+    except (OSError, ValueError, TypeError) as error:
+        _summary_not_written(folder, report, error)
     finally:
         folder.release()
 
 
+def _summary_not_written(folder, report: RunReport, error: Exception) -> None:
+    """The final summary could not replace the RUNNING one (a full disk): the
+    run is an ERROR saying so, written in the RUNNING summary's place."""
+    if isinstance(error, OSError):
+        reason = _FULL.get(error.errno, error.strerror or type(error).__name__)
+    else:
+        reason = f"{type(error).__name__}: {error}"
+    ended = f"the run had ended {report.status}" + (
+        f" ({report.message})" if report.message else ""
+    )
+    report.status = "ERROR"
+    report.message = f"summary.json could not be written ({reason}); {ended}"
+    try:
+        folder.write_summary_in_place(report.as_dict())
+    except OSError:
+        pass  # nothing can be written: the next run finds RUNNING and says KILLED
+
+
 def _place_files(
-    folder, report: RunReport, session, save_results: bool, report_page: bool = False
+    folder,
+    report: RunReport,
+    session,
+    save_results: bool,
+    report_page: bool = False,
+    result_paths: bool = False,
 ) -> None:
     complete = report.status in COMPLETE
     if complete and save_results:
@@ -610,75 +722,105 @@ def _place_files(
             )
             folder.keep_incomplete()
             return
-        keep_result_files(folder, session)
+        keep_result_files(folder, session, result_paths)
     else:
         folder.keep_incomplete()
 
 
-def keep_result_files(folder, session) -> None:
-    """Copy what the deck wrote on each unit an export R line names to that
-    line's path (code_aster's results to keep), and say so in the log. A copy
-    replaces a regular file there (never writes through a symlink, never
-    replaces a folder, nor a file of the output folder this run did not make)."""
+def keep_result_files(folder, session, result_paths: bool = False) -> None:
+    """What the deck wrote on each unit an export R line names, kept under
+    that line's file name in the output folder; at the line's own path only
+    with ``result_paths`` (``--allow-result-paths``: an export alone cannot
+    write outside the output folder). Each line's outcome goes to the log."""
+    inputs = _input_files(session.run)
     for result in session.run.results:
-        written = session.output_units.get(result.unit)
-        if result.file_type in NOT_PRODUCED:
-            source = None
-            note = f"R {result.file_type} {result.path.name}: a code_aster database, not produced"
-        elif result.unit == 6 or result.file_type == "mess":
-            source, note = None, f"R {result.file_type}: the messages are in message.log"
-        elif written is None:
-            source = None
-            note = (
-                f"R {result.file_type} {result.path}: the deck wrote nothing on unit {result.unit}"
-            )
-        else:
-            # the unit's file now sits in the output folder under the same name
-            source = folder.path / written.name
-            note = f"R {result.file_type}: unit {result.unit} copied to {result.path}"
-        if source is not None and source.is_file():
-            refusal = _copy_refusal(folder, result.path)
-            if refusal:
-                note = f"R {result.file_type} {result.path}: not copied ({refusal})"
-            else:
-                try:
-                    _copy_replacing(source, result.path)
-                    if folder.inside(result.path):
-                        folder.created.append(result.path.name)
-                except OSError as error:
-                    note = f"R {result.file_type} {result.path}: not copied ({error})"
+        note = _keep_result(folder, session, result, result_paths, inputs)
         try:
             session.log(note)
         except OutputLimitError:
             pass
 
 
-def _copy_refusal(folder, target: Path) -> str:
-    """Why the R-line copy to ``target`` may not be made ('' when it may)."""
-    if target.is_dir() and not target.is_symlink():
-        return "a folder is there"
-    if folder.inside(target) and os.path.lexists(target) and not folder.owns(target):
-        return "the output folder already holds it and this run did not make it"
-    if folder.inside(target) and Path(os.path.abspath(target)).parent != Path(
-        os.path.abspath(folder.path)
-    ):
-        return "inside the output folder, only its top level may be named"
-    return ""
-
-
-def _copy_replacing(source: Path, target: Path) -> None:
-    """Copy to a new file beside ``target``, then rename it over ``target``
-    (which replaces a symlink there rather than writing through it)."""
-    target.parent.mkdir(parents=True, exist_ok=True)
-    temporary = target.parent / f".{target.name}.asterlite-{os.getpid()}"
+def _keep_result(folder, session, result, result_paths: bool, inputs) -> str:
+    head = f"R {result.file_type} {result.path}"
+    if result.file_type in NOT_PRODUCED:
+        return f"R {result.file_type} {result.path.name}: a code_aster database, not produced"
+    if result.unit == 6 or result.file_type == "mess":
+        return f"R {result.file_type}: the messages are in message.log"
+    written = session.output_units.get(result.unit)
+    if written is None or not folder.owns(written.name):
+        return f"{head}: the deck wrote nothing on unit {result.unit}"
+    source, place = written.name, _place_in_folder(folder.path, result.path)
+    if place is None and result_paths:
+        refusal = _outside_refusal(result.path, inputs)
+        if refusal:
+            return f"{head}: not copied ({refusal})"
+        try:
+            with folder.open_own_file(source) as original:
+                replace_outside(original, result.path)
+        except OSError as error:
+            return f"{head}: not copied ({error.strerror or error})"
+        return f"R {result.file_type}: unit {result.unit} copied to {result.path}"
+    if place == "":
+        return f"{head}: not copied (inside the output folder, only its top level may be named)"
+    target = place or result.path.name
+    if target == source:
+        return f"{head}: unit {result.unit} is in the output folder as {source}"
     try:
-        with create_file(temporary, "wb") as copy, open(source, "rb") as original:
-            shutil.copyfileobj(original, copy)
-        os.replace(temporary, target)
-    except BaseException:
-        if os.path.lexists(temporary):
-            os.unlink(temporary)
-        raise
+        folder.copy_own_file(source, target)
+    except OutputFolderError as error:
+        return f"{head}: not copied ({error.message})"
+    except FileExistsError:
+        return f"{head}: not copied (the output folder already holds {target})"
+    except OSError as error:
+        return f"{head}: not copied ({error.strerror or error})"
+    how = "" if place else " (asterlite run --allow-result-paths writes it at the export's path)"
+    return f"{head}: unit {result.unit} kept in the output folder as {target}{how}"
+
+
+def _place_in_folder(folder: Path, target: Path) -> str | None:
+    """The name ``target`` has at the top of ``folder``; '' when it is deeper
+    inside; None when it is outside (symlinks resolved on both sides)."""
+    here = os.path.realpath(folder)
+    parent = os.path.realpath(Path(target).parent)
+    if parent == here:
+        return Path(target).name
+    if os.path.commonpath([here, parent]) == here:
+        return ""
+    return None
+
+
+def _input_files(description) -> tuple[set[str], set[tuple[int, int]]]:
+    """The paths and identities of everything the run reads."""
+    paths, identities = set(), set()
+    for path in run_inputs(description):
+        paths |= {os.path.abspath(path), os.path.realpath(path)}
+        try:
+            info = os.stat(path)
+        except OSError:
+            continue
+        identities.add((info.st_dev, info.st_ino))
+    return paths, identities
+
+
+def _outside_refusal(target: Path, inputs) -> str:
+    """Why an R line may not write ``target`` outside the output folder ('' if it may)."""
+    paths, identities = inputs
+    if not Path(target).parent.is_dir():
+        return "its folder does not exist; asterlite makes no folder outside its output folder"
+    if Path(target).is_dir() and not Path(target).is_symlink():
+        return "a folder is there"
+    named = {os.path.abspath(target), os.path.realpath(target)}
+    found = set()
+    for follow in (False, True):
+        try:
+            info = os.stat(target, follow_symlinks=follow)
+            found.add((info.st_dev, info.st_ino))
+        except OSError:
+            pass
+    if named & paths or found & identities:
+        return "it is a file the run reads: the deck, its export or an F line's file"
+    return ""
 
 
 def format_test_line(test: TestRecord) -> str:

@@ -33,7 +33,7 @@ from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
-from asterlite.runtime import watchdog
+from asterlite.runtime import console, watchdog
 from asterlite.runtime.context import CommandContext, TestRecord
 from asterlite.runtime.export import RunDescription
 from asterlite.runtime.v15_names import GeneratedNames, record_call
@@ -114,6 +114,10 @@ class Session:
     output_guard: Any = None
     # files the deck wrote itself (numpy.savetxt), which it may write again
     deck_written: set = field(default_factory=set)
+    # where the run is: (command, location, running) of the last command started
+    current_command: tuple | None = None
+    # told each command's start and end (the output folder's lock record)
+    command_hook: Any = None
 
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
@@ -143,8 +147,14 @@ class Session:
 
     def log(self, text: str) -> None:
         self.messages.append(text)
-        if self.echo:
-            print(text, flush=True)
+        if self.echo:  # a closed pipe or terminal silences the echo, not the run
+            console.say(text)
+
+    def note_command(self, name: str, location, running: bool) -> None:
+        """The command the run is in (``running``) or has just ended."""
+        self.current_command = (name, location, running)
+        if self.command_hook is not None:
+            self.command_hook(name, location, running)
 
     def record_test(self, record: TestRecord) -> None:
         self.tests.append(record)
@@ -576,6 +586,7 @@ class CommandProxy(DeckCallable):
         where = f"{Path(site.location.file).name}:{site.location.line}" if site.location else ""
         target = f" -> {site.assigned_name}" if site.assigned_name else ""
         session.log(f"{self.name} ({where}){target}")
+        session.note_command(self.name, site.location, True)
         start = time.perf_counter()
         try:
             concept = module.run(ctx, keywords)
@@ -601,6 +612,7 @@ class CommandProxy(DeckCallable):
         seconds = time.perf_counter() - start
         session.timings.append(CommandTiming(self.name, site.location, site.assigned_name, seconds))
         session.log(f"  done in {seconds:.3f} s")
+        session.note_command(self.name, site.location, False)
         if isinstance(concept, Concept):
             session.produced.append((self.name, site.assigned_name, concept))
         record_call(session, self.name, keywords, concept, reuse, site.location)

@@ -1,8 +1,17 @@
-"""SIGINT and SIGTERM end a run cleanly: the signal raises
-:class:`RunInterrupted` where the run is, the runner records INTERRUPTED in
-the output folder, and a signal that comes while the run writes its final
-files waits until they are written (then RunInterrupted is raised to the
-caller).
+"""Signals that would end the process end a run cleanly instead: the signal
+raises :class:`RunInterrupted` where the run is, and the runner records
+INTERRUPTED in the output folder.
+
+Handled: SIGINT, SIGTERM, SIGHUP (a closed terminal), SIGQUIT, SIGUSR1,
+SIGUSR2 and SIGALRM, whose default action ends the process without a word,
+leaving ``summary.json`` saying RUNNING. A signal the process ignores (SIGHUP
+under ``nohup``, SIGPIPE: Python ignores it, a broken pipe is an error on
+the write) stays ignored.
+
+A signal is *held* (remembered, not raised) while the run takes its output
+folder, so that an earlier result is always moved aside and the RUNNING
+summary written before the run stops, and while it writes its final files;
+:meth:`Stops.release` raises one that came meanwhile.
 
 Signal handlers belong to the main thread: a run in another thread (a sweep
 worker) leaves them alone.
@@ -14,48 +23,97 @@ import signal
 import threading
 from contextlib import contextmanager
 
-STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+STOP_SIGNALS = tuple(
+    getattr(signal, name)
+    for name in ("SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM")
+    if hasattr(signal, name)
+)
 
 
 class RunInterrupted(KeyboardInterrupt):
     """A stop signal reached the run (a KeyboardInterrupt, so that code which
-    catches ``Exception`` cannot swallow it)."""
+    catches ``Exception`` cannot swallow it). ``report`` is the run's report
+    when the signal came after the run's result was written."""
 
     def __init__(self, name: str = "SIGINT"):
         super().__init__(name)
         self.signal_name = name
+        self.report = None
 
 
 class Stops:
-    """While active, a stop signal raises RunInterrupted; once ``finishing()``
-    is called it is only remembered, and re-delivered when the block ends."""
+    """While active, a stop signal raises RunInterrupted; while held it is
+    only remembered, and raised by :meth:`release`."""
 
-    def __init__(self):
-        self.finishing_now = False
+    def __init__(self, held: bool = False):
+        self.held = held
         self.pending: int | None = None
 
     def handle(self, number, _frame) -> None:
-        if self.finishing_now:
-            self.pending = number
+        if self.held:
+            if self.pending is None:
+                self.pending = number
             return
         raise RunInterrupted(signal.Signals(number).name)
 
-    def finishing(self) -> None:
-        self.finishing_now = True
+    def hold(self) -> None:
+        """From now on a signal waits (the run writes its final files)."""
+        self.held = True
+
+    finishing = hold
+
+    def release(self) -> None:
+        """Signals stop the run from now on; one that came while held does now."""
+        self.held = False
+        if self.pending is not None:
+            number, self.pending = self.pending, None
+            raise RunInterrupted(signal.Signals(number).name)
+
+    def take_pending(self) -> str | None:
+        """The name of a signal that came while held (forgotten here)."""
+        number, self.pending = self.pending, None
+        return signal.Signals(number).name if number is not None else None
+
+
+def _handled(number: int) -> bool:
+    """Whether to take ``number`` over: not when the process ignores it."""
+    try:
+        return signal.getsignal(number) is not signal.SIG_IGN
+    except (ValueError, OSError):
+        return False
 
 
 @contextmanager
-def stop_on_signals():
-    """Install the handlers for the block (main thread only)."""
-    stops = Stops()
+def stop_on_signals(held: bool = False):
+    """Install the handlers for the block (main thread only). A signal an
+    enclosing :class:`Stops` holds (``asterlite run`` holds them from its
+    start) passes to this one."""
+    stops = Stops(held)
     if threading.current_thread() is not threading.main_thread():
         yield stops
         return
-    previous = {number: signal.signal(number, stops.handle) for number in STOP_SIGNALS}
+    previous = {}
+    for number in STOP_SIGNALS:
+        if _handled(number):
+            previous[number] = signal.signal(number, stops.handle)
+    for handler in previous.values():
+        outer = getattr(handler, "__self__", None)
+        if isinstance(outer, Stops) and outer.pending is not None and stops.pending is None:
+            stops.pending, outer.pending = outer.pending, None
     try:
         yield stops
     finally:
         for number, handler in previous.items():
             signal.signal(number, handler)
-    if stops.pending is not None:  # a signal that came while finishing: the caller stops now
-        raise RunInterrupted(signal.Signals(stops.pending).name)
+
+
+def hold_signals() -> Stops:
+    """Hold every stop signal for the rest of the process (``asterlite run``
+    from its start: a signal before the run has taken its folder waits, the
+    run then records it). Main thread only."""
+    stops = Stops(held=True)
+    if threading.current_thread() is threading.main_thread():
+        for number in STOP_SIGNALS:
+            if _handled(number):
+                signal.signal(number, stops.handle)
+    return stops
