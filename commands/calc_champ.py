@@ -34,6 +34,52 @@ _BEAMS = ("POU_D_E", "POU_D_T")
 _BARS = ("BARRE", "2D_BARRE")
 
 
+_DISCRETE = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
+_ACCESS = ("NUME_ORDRE", "LIST_ORDRE", "INST", "LIST_INST", "FREQ", "LIST_FREQ")
+
+
+def _keep_selected_orders(ctx, kw, result, fields) -> None:
+    """Fields exist at the orders NUME_ORDRE / INST / FREQ... choose (every
+    order by default): the others are NaN, as code_aster stores no field there."""
+    if all(kw.peek(k) is None for k in _ACCESS):
+        kw.mark_used("TOUT_ORDRE")  # every order: the default
+        return
+    if hasattr(result, "frequencies"):  # a dyna_harmo
+        from asterlite.post.harmonic import selection_from_keywords
+
+        rows = selection_from_keywords(ctx, kw, result.frequencies, result.order).lower
+    else:
+        rows = _selected_orders(ctx, kw, result)
+    for field in fields.values():
+        dropped = np.ones(field.values.shape[0], dtype=bool)
+        dropped[rows] = False
+        field.values[dropped] = np.nan
+
+
+def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> None:
+    """EFGE_ELNO / SIEF_ELNO of a model of discrete elements (code_aster's
+    ef0042: the stiffness forces in the element frame, real or complex)."""
+    from asterlite.fem.element_fields import BAR_OPTIONS, discrete_element_fields
+
+    other = [n for n in names if n not in BAR_OPTIONS]
+    if other:
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of discrete elements", "CONTRAINTE", kw)
+    if kw.factor("CHAM_UTIL"):
+        ctx.unsupported("CHAM_UTIL on a model of discrete elements", "CHAM_UTIL", kw)
+    values = _nodal_values(ctx, result, kw)
+    try:
+        fields = discrete_element_fields(
+            model, characteristics, result.numbering, cells, values, names
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    ctx.log(
+        f"CALC_CHAMP {', '.join(names)} on {cells.size} discrete cells, {values.shape[0]} orders"
+    )
+
+
 def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names) -> None:
     """EFGE_ELNO / SIEF_ELNO (N) of a model of bars (code_aster's te0185:
     from the displacements, real or complex)."""
@@ -52,6 +98,7 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
+    _keep_selected_orders(ctx, kw, result, fields)
     result.element_fields.update(fields)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
 
@@ -231,6 +278,12 @@ def run(ctx, kw):
         )
         if bars.size and not beams.size:
             _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
+            return result
+        discrete = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) in _DISCRETE], dtype=int
+        )
+        if discrete.size and not beams.size:
+            _discrete_fields(ctx, kw, result, model, characteristics, discrete, names)
             return result
         if not beams.size:
             ctx.unsupported("CALC_CHAMP on a model without POU_D_E / POU_D_T cells", None, kw)

@@ -400,3 +400,35 @@ def test_physical_sweep_falls_back_to_pivoting(monkeypatch):
     expected = exact(np.eye(2), 1e3 * np.eye(2), gyro.toarray(), [2.0], force[0])
     np.testing.assert_allclose(u, expected, rtol=1e-13)
     assert info["superlu"] == 1
+
+
+def test_discrete_segment_forces_in_the_element_frame():
+    """EFGE_ELNO of a DIS_T segment (ef0042): f = K_local P u, first node's
+    sign reversed: N = k_N (u2 - u1)·x at both nodes, shear along y."""
+    from asterlite.concepts.assembly import (
+        DiscreteAssignment,
+        DofNumbering,
+        ElementCharacteristics,
+        Model,
+    )
+    from asterlite.concepts.mesh import Mesh
+    from asterlite.fem.element_fields import discrete_element_fields
+
+    mesh = Mesh(
+        coords=np.array([[0.0, 0.0, 0.0], [0.0, 2.0, 0.0]]),  # along global Y
+        node_names=["A", "B"],
+        cell_names=["AB"],
+        cell_types=["SEG2"],
+        cell_nodes=[(0, 1)],
+    )
+    model = Model(mesh=mesh, cell_modelisation={0: "DIS_T"})
+    spring = DiscreteAssignment("K", "K_T_D_L", np.array([100.0, 7.0, 3.0]), repere="LOCAL")
+    cara = ElementCharacteristics(model=model, discrete={0: {"K": spring}})
+    numbering = DofNumbering(mesh, [(n, c) for n in (0, 1) for c in ("DX", "DY", "DZ")])
+    u = np.array([[0.0, 0.0, 0.0, 0.5, 2.0 + 1.0j, 0.0]])  # B: DX 0.5, DY 2 + i
+    forces = discrete_element_fields(model, cara, numbering, [0], u, ["EFGE_ELNO"])
+    values = forces["EFGE_ELNO"].values[0, 0]  # (2 nodes, N VY VZ)
+    np.testing.assert_allclose(values[:, 0], [100.0 * (2.0 + 1.0j)] * 2, rtol=1e-14)
+    # local y is -X for a segment along +Y: the shear is -7 x 0.5 at both ends
+    np.testing.assert_allclose(np.abs(values[:, 1]), [3.5, 3.5], rtol=1e-14)
+    assert values[0, 1] == pytest.approx(values[1, 1])

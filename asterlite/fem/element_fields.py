@@ -16,6 +16,10 @@
   stay ``K_e u_e`` (code_aster computes them from the displacement alone);
 - ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
   cells sharing it (code_aster's nodal smoothing);
+- discrete elements (``DIS_T``, ``DIS_TR``, ``2D_DIS_T``, ``2D_DIS_TR``):
+  EFGE_ELNO / SIEF_ELNO hold the stiffness forces in the element frame,
+  f = K_local P u, with the sign of a segment's first node reversed
+  (components N VY VZ, MT MFY MFZ; code_aster's ef0042), real or complex;
 - bars (``BARRE``, ``2D_BARRE``): EFGE_ELNO / SIEF_ELNO hold the axial force
   N = E A / L (u2 - u1)·e at both nodes, from the displacements alone, real
   or complex (code_aster's te0185, without inertia).
@@ -111,6 +115,66 @@ def beam_element_fields(
 
 
 BAR_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO")
+DISCRETE_COMPONENTS = {
+    "DIS_T": ("N", "VY", "VZ"),
+    "DIS_TR": ("N", "VY", "VZ", "MT", "MFY", "MFZ"),
+    "2D_DIS_T": ("N", "VY"),
+    "2D_DIS_TR": ("N", "VY", "MFZ"),
+}
+
+
+def discrete_element_fields(
+    model, characteristics, numbering, cells, values: np.ndarray, options
+) -> dict[str, ElementField]:
+    """EFGE_ELNO / SIEF_ELNO of discrete cells of one modelisation for nodal
+    values (n_orders, n_dofs), real or complex: f = K_local P u_e in the
+    element frame (ORIENTATION, else x along the segment), the first node's
+    sign reversed on segments; zero where a cell has no stiffness (code_aster
+    warns). Points: the cell's nodes (a point cell's second is NaN)."""
+    from asterlite.fem.discrete import local_matrix
+    from asterlite.fem.dofs import MODELISATION_COMPONENTS
+    from asterlite.fem.elements import cell_frames
+    from asterlite.fem.frames import block_rotation
+
+    cells = np.asarray(cells, dtype=int)
+    other = [name for name in options if name not in BAR_OPTIONS]
+    if other:
+        raise ValueError(f"{other[0]} is not computed for discrete elements (EFGE_ELNO, SIEF_ELNO)")
+    kinds = {model.cell_modelisation[int(c)] for c in cells}
+    if len(kinds) != 1:
+        raise ValueError(f"discrete cells of several modelisations ({', '.join(sorted(kinds))})")
+    modelisation = kinds.pop()
+    dofs = MODELISATION_COMPONENTS[modelisation]
+    dim = 2 if modelisation.startswith("2D_") else 3
+    mesh = model.mesh
+    values = np.asarray(values)
+    out = np.full(
+        (values.shape[0], len(cells), 2, len(dofs)), np.nan, dtype=np.result_type(values, float)
+    )
+    frames = cell_frames(model, cells, characteristics)
+    for k, cell in enumerate(cells):
+        nodes = list(mesh.cell_nodes[int(cell)])
+        rows = numbering.dof_indices(np.repeat(nodes, len(dofs)), list(dofs) * len(nodes))
+        u = np.zeros((values.shape[0], rows.size), dtype=values.dtype)
+        u[:, rows >= 0] = values[:, rows[rows >= 0]]
+        rotation = block_rotation(frames[k : k + 1], dofs, len(nodes))[0]
+        assignment = (characteristics.discrete.get(int(cell), {}) if characteristics else {}).get(
+            "K"
+        )
+        if assignment is None:
+            forces = np.zeros_like(u)
+        else:
+            matrix = local_matrix(assignment.cara, assignment.values, dim, assignment.symmetric)
+            if assignment.repere == "LOCAL":
+                forces = (u @ rotation.T) @ matrix.T
+            else:
+                forces = (u @ matrix.T) @ rotation.T
+        forces = forces.reshape(values.shape[0], len(nodes), len(dofs))
+        if len(nodes) == 2:
+            forces[:, 0] = -forces[:, 0]
+        out[:, k, : len(nodes)] = forces
+    components = DISCRETE_COMPONENTS[modelisation]
+    return {name: ElementField(name, cells, components, out.copy()) for name in options}
 
 
 def bar_element_fields(
