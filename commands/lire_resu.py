@@ -35,6 +35,8 @@ _NODAL = ("DEPL", "VITE", "ACCE")
 
 
 def run(ctx, kw):
+    if kw["FORMAT"] == "IDEAS":
+        return _read_ideas(ctx, kw)
     if kw["FORMAT"] != "MED":
         ctx.unsupported(f"LIRE_RESU FORMAT={kw['FORMAT']!r}", "FORMAT", kw)
     kind = kw["TYPE_RESU"]
@@ -218,3 +220,163 @@ def _quadratic(matrix, shapes) -> np.ndarray:
     if matrix is None:
         return np.zeros(shapes.shape[1])
     return np.einsum("im,im->m", shapes, matrix.matrix @ shapes)
+
+
+# ----------------------------------------------------------------------------- IDEAS
+
+# record 6's data type of each field (code_aster's lridea, when RECORD_6 is not given)
+_IDEAS_TYPES = {8: "DEPL", 11: "VITE", 12: "ACCE", 5: "TEMP", 15: "PRES"}
+
+
+def _read_ideas(ctx, kw):
+    """FORMAT='IDEAS' (code_aster's lridea), nodal datasets 55 into a
+    DYNA_HARMO or a DYNA_TRANS: each FORMAT_IDEAS occurrence names the field
+    its datasets hold (RECORD_3 / RECORD_6 / RECORD_9 values to match, else
+    record 6's data type), where the order number (POSI_ORDRE: record,
+    field) and the frequency or instant (POSI_FREQ / POSI_INST) are, and the
+    components of the value slots (NOM_CMP); nodes are found by the name
+    N<label>, else by number. The orders stored are the file's."""
+    from asterlite.concepts.harmonic import DynaHarmo
+    from asterlite.io.ideas_result import IdeasReadError, read_datasets_55, record_field
+
+    kind = kw["TYPE_RESU"]
+    if kind not in ("DYNA_HARMO", "DYNA_TRANS"):
+        ctx.unsupported(f"LIRE_RESU FORMAT='IDEAS' TYPE_RESU={kind!r}", "TYPE_RESU", kw)
+    if kw.get("RESULTAT") is not None:
+        ctx.unsupported("LIRE_RESU into an existing result (reuse)", "RESULTAT", kw)
+    kw.mark_used("INFO", "TITRE", "CHAM_MATER", "CARA_ELEM")  # recorded by code_aster only
+    access = "FREQ" if kind == "DYNA_HARMO" else "INST"
+    mesh = kw["MAILLAGE"] if kw.get("MAILLAGE") is not None else kw["MODELE"].mesh
+    try:
+        datasets = read_datasets_55(_input(ctx, kw))
+    except (IdeasReadError, ValueError, IndexError) as exc:
+        ctx.error(f"the file is not a readable universal file: {exc}", "UNITE", kw)
+    wanted = list(as_tuple(kw["NOM_CHAM"]))
+    occurrences = {occ["NOM_CHAM"]: occ for occ in kw.factor("FORMAT_IDEAS")}
+    missing = [n for n in wanted if n not in occurrences]
+    if missing:
+        ctx.unsupported(
+            f"LIRE_RESU IDEAS of {missing[0]} without FORMAT_IDEAS (code_aster's defaults)",
+            "FORMAT_IDEAS",
+            kw,
+        )
+    read: dict[str, dict[int, tuple[float, dict]]] = {}
+    for name in wanted:
+        occ = occurrences[name]
+        if occ.get("NUME_DATASET", 55) != 55:
+            ctx.unsupported(f"NUME_DATASET={occ['NUME_DATASET']}", "NUME_DATASET", occ)
+        position = occ.get(f"POSI_{access}")
+        if position is None:
+            ctx.error(f"a {kind} needs POSI_{access}", f"POSI_{access}", occ)
+        components = as_tuple(occ["NOM_CMP"])
+        read[name] = {}
+        for dataset in datasets:
+            if not _ideas_matches(occ, dataset, name):
+                continue
+            try:
+                order = int(record_field(dataset["records"], *occ["POSI_ORDRE"]))
+                value = float(record_field(dataset["records"], *position).replace("D", "E"))
+            except (IdeasReadError, ValueError) as exc:
+                ctx.error(str(exc), "POSI_ORDRE", occ)
+            by_node = {}
+            for label, file_name, row in zip(
+                dataset["labels"], dataset["names"], dataset["values"], strict=True
+            ):
+                node = _ideas_node(ctx, occ, mesh, int(label), file_name)
+                by_node[node] = {c: row[k] for k, c in enumerate(components) if k < row.size}
+            read[name][order] = (value, by_node)
+    orders = sorted(set().union(*(set(v) for v in read.values())))
+    if not orders:
+        ctx.error("no dataset of the file matches FORMAT_IDEAS", "FORMAT_IDEAS", kw)
+    picked = _ideas_selection(ctx, kw, orders, read)
+    numbering = _ideas_numbering(kw, mesh, read)
+    complex_values = kind == "DYNA_HARMO"
+    fields = {}
+    for name, steps in read.items():
+        values = np.zeros(
+            (len(picked), numbering.n_dofs), dtype=complex if complex_values else float
+        )
+        for row, order in enumerate(picked):
+            if order not in steps:
+                ctx.error(f"field {name} has no dataset of order {order}", "FORMAT_IDEAS", kw)
+            for node, comps in steps[order][1].items():
+                for component, value in comps.items():
+                    dof = numbering.index.get((node, component))
+                    if dof is not None:
+                        values[row, dof] = value if complex_values else np.real(value)
+        fields[name] = values
+    parameters = np.array([next(iter(read.values()))[o][0] for o in picked], dtype=float)
+    orders = np.asarray(picked, dtype=int)
+    ctx.log(f"{len(fields)} fields at {len(picked)} orders read on {numbering.n_dofs} DOFs")
+    if complex_values:
+        return DynaHarmo(numbering=numbering, frequencies=parameters, order=orders, fields=fields)
+    return DynaTrans(numbering=numbering, times=parameters, order=orders, fields=fields)
+
+
+def _ideas_matches(occ, dataset, name) -> bool:
+    records = dataset["records"]
+    given = False
+    for record in (3, 6, 9):
+        values = occ.get(f"RECORD_{record}")
+        if values is None or record > len(records):
+            continue
+        given = True
+        tokens = records[record - 1].split()
+        for k, value in enumerate(as_tuple(values)):
+            if k >= len(tokens) or int(float(tokens[k])) != int(value):
+                return False
+    if given:
+        return True
+    data_type = int(records[5].split()[3])
+    return _IDEAS_TYPES.get(data_type, "")[:3] == name[:3]
+
+
+def _ideas_node(ctx, occ, mesh, label: int, file_name: str) -> int:
+    node = mesh.find_node(f"N{label}")
+    if node is not None:
+        return int(node)
+    if not 1 <= label <= mesh.n_nodes or mesh.node_names[label - 1] != file_name:
+        ctx.error(f"node {label} ({file_name}) of the file is not a node of the mesh", "UNITE", occ)
+    return label - 1
+
+
+def _ideas_selection(ctx, kw, orders, read) -> list[int]:
+    """The orders to keep: TOUT_ORDRE, NUME_ORDRE / LIST_ORDRE, or the
+    parameter values (INST / FREQ lists within PRECISION)."""
+    wanted = kw.get("NUME_ORDRE") or kw.get("LIST_ORDRE")
+    if wanted is not None:
+        return [o for o in (int(v) for v in _values_of(wanted)) if o in orders]
+    values = next(
+        (kw.get(k) for k in ("INST", "LIST_INST", "FREQ", "LIST_FREQ") if kw.get(k) is not None),
+        None,
+    )
+    if values is None:
+        kw.mark_used("TOUT_ORDRE")  # every order: what the selection rule leaves
+        return list(orders)
+    first = next(iter(read.values()))
+    precision, relative = kw["PRECISION"], kw["CRITERE"] == "RELATIF"
+    picked = []
+    for value in _values_of(values):
+        tolerance = abs(precision * value) if relative else abs(precision)
+        match = [o for o in orders if o in first and abs(first[o][0] - value) <= tolerance]
+        if not match:
+            ctx.error(f"no dataset at {value:g}", None, kw)
+        picked.append(match[0])
+    return picked
+
+
+def _ideas_numbering(kw, mesh, read) -> DofNumbering:
+    matrix = kw.get("MATR_RIGI") or kw.get("MATR_MASS")
+    if matrix is not None:
+        return matrix.numbering
+    if kw.get("MODELE") is not None:
+        from asterlite.commands.nume_ddl import numbering_for
+
+        return numbering_for(kw["MODELE"], [])
+    per_node: dict[int, set] = {}
+    for steps in read.values():
+        for _, by_node in steps.values():
+            for node, comps in by_node.items():
+                per_node.setdefault(node, set()).update(comps)
+    dofs = [(n, c) for n in sorted(per_node) for c in sort_components(per_node[n])]
+    return DofNumbering(mesh=mesh, dofs=dofs)

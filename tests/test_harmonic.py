@@ -432,3 +432,33 @@ def test_discrete_segment_forces_in_the_element_frame():
     # local y is -X for a segment along +Y: the shear is -7 x 0.5 at both ends
     np.testing.assert_allclose(np.abs(values[:, 1]), [3.5, 3.5], rtol=1e-14)
     assert values[0, 1] == pytest.approx(values[1, 1])
+
+
+def test_ideas_dataset_55_round_trip(tmp_path):
+    """A complex nodal field written as code_aster's dataset 55 (1PE13.5,
+    six slots per node) reads back to 6 significant digits."""
+    from asterlite.concepts.assembly import DofNumbering
+    from asterlite.concepts.mesh import Mesh
+    from asterlite.io.ideas_result import field_lines, fortran_e, read_datasets_55, record_field
+
+    assert fortran_e(1.0237e-4) == "  1.02370E-04"
+    assert fortran_e(-2.5e-300, 3) == "-2.50000E-300"  # 13 characters, no blank
+    mesh = Mesh(
+        coords=np.zeros((2, 3)),
+        node_names=["N1", "N2"],
+        cell_names=[],
+        cell_types=[],
+        cell_nodes=[],
+    )
+    numbering = DofNumbering(mesh, [(0, "DX"), (1, "DX"), (1, "DY")])
+    values = np.array([1.0237e-4 - 8.5187e-6j, -2.5e-6 + 1j * 3.3e-7, 7.0])
+    lines = field_lines(numbering, values, "DEPL", 5, (2, 1, 1, 3), (12.5,), "T", "S")
+    path = tmp_path / "fort.38"
+    path.write_text("\n".join(lines) + "\n")
+    (dataset,) = read_datasets_55(path)
+    assert dataset["records"][5].split() == ["1", "5", "3", "8", "5", "6"]
+    assert record_field(dataset["records"], 7, 4) == "3"
+    assert float(record_field(dataset["records"], 8, 1)) == 12.5
+    np.testing.assert_array_equal(dataset["labels"], [1, 2])
+    np.testing.assert_allclose(dataset["values"][1, :2], values[1:], rtol=5e-6)
+    assert dataset["values"][0, 1] == 0

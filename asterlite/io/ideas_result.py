@@ -95,3 +95,73 @@ def field_lines(
             lines.append("".join(fortran_e(v, 3) for v in slots))
     lines.append("    -1")
     return lines
+
+
+# ----------------------------------------------------------------------------- reading
+
+
+class IdeasReadError(ValueError):
+    pass
+
+
+def read_datasets_55(path) -> list[dict]:
+    """Every dataset 55 of a universal file: ``records`` (the eight records
+    after the ``55`` line, as text), ``labels`` and ``names`` of the nodes
+    and ``values`` (n_nodes, n_values), complex when record 6's value type is
+    5 or 6 (real and imaginary parts interleaved), as code_aster's lridea
+    reads them (I10, A13, A8 node lines; 6E13.5 value lines)."""
+    lines = open(path, encoding="utf-8", errors="replace").read().splitlines()
+    out = []
+    i = 0
+    while i < len(lines):
+        if lines[i][:6] != "    55":
+            i += 1
+            continue
+        records = lines[i + 1 : i + 9]
+        if len(records) < 8:
+            raise IdeasReadError("a dataset 55 ends within its header")
+        record_6 = [int(t) for t in records[5].split()]
+        if len(record_6) < 6:
+            raise IdeasReadError(f"record 6 of a dataset 55 has {len(record_6)} fields, not 6")
+        complex_values = record_6[4] in (5, 6)
+        count = record_6[5] * (2 if complex_values else 1)
+        per_line = 6
+        i += 9
+        labels, names, rows = [], [], []
+        while i < len(lines):
+            head = lines[i]
+            label = int(head[:10])
+            if label == -1:
+                i += 1
+                break
+            labels.append(label)
+            names.append(head[23:31].strip() if len(head) > 23 else "")
+            i += 1
+            values: list[float] = []
+            while len(values) < count:
+                text = lines[i]
+                values.extend(
+                    float(text[13 * k : 13 * (k + 1)].replace("D", "E"))
+                    for k in range(per_line)
+                    if text[13 * k : 13 * (k + 1)].strip()
+                )
+                i += 1
+            values = np.asarray(values[:count])
+            rows.append(values[0::2] + 1j * values[1::2] if complex_values else values)
+        out.append(
+            {
+                "records": records,
+                "labels": np.asarray(labels, dtype=int),
+                "names": names,
+                "values": np.asarray(rows),
+            }
+        )
+    return out
+
+
+def record_field(records, record: int, field: int) -> str:
+    """Field ``field`` (1-based, blank-separated) of record ``record`` (1-based)."""
+    tokens = records[record - 1].split()
+    if not 1 <= field <= len(tokens):
+        raise IdeasReadError(f"record {record} has no field {field}")
+    return tokens[field - 1]
