@@ -196,7 +196,7 @@ def test_module_keeps_lines_and_locations():
         ("if 1:\n    x = 1\n  y = 2\n", 3, 3, "unindent does not match"),
         ("x = 1\n    y = 2\n", 2, 5, "unexpected indentation"),
         ("class A:\n    pass\n", 1, 1, "class definitions are not supported"),
-        ("try:\n    pass\nexcept:\n    pass\nexcept E:\n    pass\n", 3, 1, "'except:' must be last"),
+        ("try:\n    pass\nexcept:\n    pass\nexcept E:\n    pass\n", 3, 1, "must be last"),
         ("x = 1\nglobal x\n", 2, 1, "'global' declarations are not supported"),
         ("def f():\n    yield 1\n", 2, 5, "generators"),
         ("nonlocal x\n", 1, 1, "'nonlocal' declarations are not supported"),
