@@ -234,13 +234,16 @@ def from_generalized(ctx, kw):
 
 
 def from_generalized_modes(ctx, kw, modes):
-    """A mode_gene (code_aster's rfmge1), abscissa FREQ: NOM_PARA_RESU gives a
-    parameter of each mode against its frequency; NOM_CHAM + NUME_CMP_GENE
-    one generalized component of each mode, which rfmge1 stores one slot
-    further than the frequencies: the abscissas are 0, f_1 .. f_(n-1) (the
-    first is never written, the last frequency is overwritten by the first
-    ordinate), the ordinates the components of modes 1..n. NOM_PARA is
-    'FREQ'; the result is kept as code_aster builds it."""
+    """A mode_gene, abscissa FREQ, as code_aster's rfmge1 stores it. Its two
+    loops write one slot off the function's two halves (abscissas 0..n-1,
+    ordinates n..2n-1), and the function keeps what they leave:
+
+    - NOM_PARA_RESU: the abscissas are f_1..f_n, the ordinates written from
+      slot n-1 on, so the parameters of modes 2..n and a last 0 (mode 1's
+      value is overwritten by f_n);
+    - NOM_CHAM + NUME_CMP_GENE: the abscissas written from slot 1 on, so 0,
+      f_1..f_(n-1), and f_n in the first ordinate slot, then the components
+      of modes 2..n."""
     if kw.get("NUME_ORDRE") is not None:
         wanted = [int(n) for n in as_tuple(kw["NUME_ORDRE"])]
         if any(not 1 <= n <= modes.n_modes for n in wanted):
@@ -250,6 +253,7 @@ def from_generalized_modes(ctx, kw, modes):
         kw.mark_used("TOUT_ORDRE")  # every mode: the default
         picked = np.arange(modes.n_modes)
     frequencies = np.asarray(modes.frequencies, dtype=float)[picked]
+    ctx.log("RECU_FONCTION of a mode_gene: values laid out as code_aster's rfmge1 leaves them")
     if kw.get("NOM_PARA_RESU") is not None:
         name = kw["NOM_PARA_RESU"]
         known = {
@@ -278,11 +282,7 @@ def from_generalized_modes(ctx, kw, modes):
             kw,
         )
     abscissas = np.concatenate([[0.0], frequencies[:-1]])
-    ctx.log(
-        "RECU_FONCTION of a mode_gene component: abscissas 0, f_1 .. f_(n-1) "
-        "as code_aster's rfmge1 stores them"
-    )
-    return abscissas, np.asarray(modes.vectors, dtype=float)[component - 1, picked]
+    return abscissas, np.concatenate([frequencies[-1:], values[1:]])
 
 
 def added_part(ctx, kw, result, node, field, times, keyword) -> np.ndarray:
