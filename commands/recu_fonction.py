@@ -264,7 +264,8 @@ def from_generalized_modes(ctx, kw, modes):
         }
         if name not in known or np.size(known[name]) != modes.n_modes:
             ctx.error(f"the mode_gene has no parameter {name!r}", "NOM_PARA_RESU", kw)
-        return frequencies, np.asarray(known[name], dtype=float)[picked]
+        values = np.asarray(known[name], dtype=float)[picked]
+        return frequencies, np.concatenate([values[1:], [0.0]])
     field = kw.get("NOM_CHAM")
     if field != "DEPL":
         ctx.unsupported(f"NOM_CHAM={field!r} of a mode_gene (DEPL only)", "NOM_CHAM", kw)
@@ -281,6 +282,7 @@ def from_generalized_modes(ctx, kw, modes):
             "NUME_CMP_GENE",
             kw,
         )
+    values = np.asarray(modes.vectors, dtype=float)[component - 1, picked]
     abscissas = np.concatenate([[0.0], frequencies[:-1]])
     return abscissas, np.concatenate([frequencies[-1:], values[1:]])
 
