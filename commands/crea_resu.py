@@ -1,6 +1,7 @@
 """CREA_RESU OPERATION='AFFE' for the result types of modal recombination
-studies: MULT_ELAS (one field per NOM_CAS, enriching RESULTAT / reuse) and
-DYNA_TRANS (DEPL/VITE/ACCE fields at instants)."""
+studies: MULT_ELAS (one field per NOM_CAS, enriching RESULTAT / reuse),
+DYNA_TRANS (DEPL/VITE/ACCE fields at instants) and MODE_MECA (DEPL fields
+by NUME_MODE)."""
 
 from __future__ import annotations
 
@@ -109,6 +110,52 @@ def _dyna_trans(ctx, kw):
     )
 
 
+def _mode_meca(ctx, kw):
+    """MODE_MECA: one DEPL field per AFFE occurrence, numbered NUME_MODE, at
+    FREQ (0 when not given); MATR_RIGI / MATR_MASS, kept with the modes,
+    give their generalized stiffnesses and masses."""
+    from asterlite.concepts.modes import ModeResult
+
+    if kw.get("RESULTAT") is not None:
+        ctx.unsupported("CREA_RESU MODE_MECA enriching a result", "RESULTAT", kw)
+    numbering, shapes, numbers, frequencies = None, [], [], []
+    for occ in kw.factor("AFFE"):
+        if occ["NOM_CHAM"] != "DEPL":
+            ctx.unsupported(f"MODE_MECA field {occ['NOM_CHAM']}", "NOM_CHAM", occ)
+        if occ.get("AXE") is not None:
+            ctx.unsupported("AXE (modes of a Fourier model)", "AXE", occ)
+        field = _nodal(ctx, occ)
+        if np.iscomplexobj(field.values):
+            ctx.error(
+                "a MODE_MECA holds real fields (MODE_MECA_C for complex ones)", "CHAM_GD", occ
+            )
+        if numbering is None:
+            numbering = field.numbering
+        elif field.numbering.mesh is not numbering.mesh:
+            ctx.error("the fields are on different meshes", "CHAM_GD", occ)
+        shapes.append(transfer(field.values, field.numbering, numbering))
+        numbers.append(int(occ["NUME_MODE"]))
+        frequencies.append(float(occ.get("FREQ") or 0.0))
+    shapes = np.column_stack(shapes)
+    stiffness, mass = kw.get("MATR_RIGI"), kw.get("MATR_MASS")
+
+    def generalized(matrix):
+        if matrix is None or matrix.numbering is not numbering:
+            return np.zeros(shapes.shape[1])
+        return np.einsum("im,im->m", shapes, matrix.matrix @ shapes)
+
+    return ModeResult(
+        numbering=numbering,
+        shapes=shapes,
+        frequencies=np.asarray(frequencies),
+        generalized_mass=generalized(mass),
+        generalized_stiffness=generalized(stiffness),
+        mass=mass,
+        stiffness=stiffness,
+        parameters={"NUME_MODE": np.asarray(numbers, dtype=int)},
+    )
+
+
 def run(ctx, kw):
     if kw["OPERATION"] != "AFFE":
         ctx.unsupported(f"CREA_RESU OPERATION={kw['OPERATION']!r}", "OPERATION", kw)
@@ -117,4 +164,6 @@ def run(ctx, kw):
         return _mult_elas(ctx, kw)
     if type_resu == "DYNA_TRANS":
         return _dyna_trans(ctx, kw)
+    if type_resu == "MODE_MECA":
+        return _mode_meca(ctx, kw)
     ctx.unsupported(f"CREA_RESU TYPE_RESU={type_resu!r}", "TYPE_RESU", kw)
