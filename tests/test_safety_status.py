@@ -142,7 +142,9 @@ def start_looping_run(tmp_path: Path, out: Path) -> subprocess.Popen:
 
 
 @pytest.mark.parametrize(
-    "number", [signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM]
+    "number",
+    [signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM],
+    ids=lambda number: number.name,
 )
 def test_any_stop_signal_ends_the_run_interrupted_and_clears_the_folder(tmp_path, number):
     out = tmp_path / "out"
@@ -238,6 +240,28 @@ def test_a_signal_while_the_folder_is_taken_still_moves_the_earlier_result_aside
     data = summary_of(out)
     assert data["status"] == "INTERRUPTED" and "SIGTERM" in data["message"]
     assert summary_of(next(out.glob("previous-*")))["status"] == "PASS"
+
+
+def test_a_signal_once_the_result_is_written_keeps_the_verdict(tmp_path):
+    """SIGTERM while the final files are written: the run completes, and its
+    exit status is its summary's (PASS, 0), not 2."""
+    out = tmp_path / "out"
+    deck = tmp_path / "p.comm"
+    deck.write_text(PASS_DECK)
+    script = (
+        "import os, signal, sys\n"
+        "from asterlite.runtime import runner\n"
+        "from asterlite.cli import main\n"
+        "original = runner._finish_output\n"
+        "def finish(*args, **kwargs):\n"
+        "    os.kill(os.getpid(), signal.SIGTERM)\n"
+        "    return original(*args, **kwargs)\n"
+        "runner._finish_output = finish\n"
+        f"sys.exit(main(['run', {str(deck)!r}, '-o', {str(out)!r}, '-q']))\n"
+    )
+    child = subprocess.run([sys.executable, "-c", script], capture_output=True, timeout=120)
+    assert summary_of(out)["status"] == "PASS"
+    assert child.returncode == 0, child.stderr
 
 
 def test_a_closed_stdout_pipe_does_not_change_the_verdict(tmp_path):
