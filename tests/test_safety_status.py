@@ -242,6 +242,29 @@ def test_a_signal_while_the_folder_is_taken_still_moves_the_earlier_result_aside
     assert summary_of(next(out.glob("previous-*")))["status"] == "PASS"
 
 
+def test_a_second_signal_while_starting_stops_at_once_leaving_nothing_half_made(tmp_path):
+    out = tmp_path / "out"
+    deck = tmp_path / "p.comm"
+    deck.write_text(PASS_DECK)
+    assert run_deck(deck, out).status == "PASS"
+    before = sorted(os.listdir(out))
+    script = (
+        "import os, signal, sys\n"
+        "from asterlite.runtime import outdir\n"
+        "from asterlite.cli import main\n"
+        "original = outdir.OutputFolder._move_earlier_result\n"
+        "def move(self, earlier):\n"
+        "    os.kill(os.getpid(), signal.SIGINT)\n"
+        "    os.kill(os.getpid(), signal.SIGINT)\n"
+        "    return original(self, earlier)\n"
+        "outdir.OutputFolder._move_earlier_result = move\n"
+        f"sys.exit(main(['run', {str(deck)!r}, '-o', {str(out)!r}, '-q']))\n"
+    )
+    child = subprocess.run([sys.executable, "-c", script], capture_output=True, timeout=120)
+    assert child.returncode == 2 and b"interrupted" in child.stderr, child.stderr
+    assert sorted(os.listdir(out)) == before  # the run never started: no lock, no staging
+
+
 def test_a_signal_once_the_result_is_written_keeps_the_verdict(tmp_path):
     """SIGTERM while the final files are written: the run completes, and its
     exit status is its summary's (PASS, 0), not 2."""

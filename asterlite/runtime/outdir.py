@@ -292,7 +292,7 @@ class OutputFolder:
         except OutputLimitError as error:  # message.log's first lines on a full disk
             self._undo_open()
             raise OutputFolderError(f"{self.path}: {error.message}") from None
-        except OutputFolderError:
+        except BaseException:  # refused, or a second stop signal while starting
             self._undo_open()
             raise
         return self

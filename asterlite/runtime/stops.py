@@ -11,7 +11,8 @@ the write) stays ignored.
 A signal is *held* (remembered, not raised) while the run takes its output
 folder, so that an earlier result is always moved aside and the RUNNING
 summary written before the run stops, and while it writes its final files;
-:meth:`Stops.release` raises one that came meanwhile.
+:meth:`Stops.release` raises one that came meanwhile. While the run starts,
+a second signal stops it at once (a user who insists is not kept waiting).
 
 Signal handlers belong to the main thread: a run in another thread (a sweep
 worker) leaves them alone.
@@ -47,24 +48,27 @@ class Stops:
 
     def __init__(self, held: bool = False):
         self.held = held
+        self.starting = held  # held while the run starts: a second signal stops it
         self.pending: int | None = None
 
     def handle(self, number, _frame) -> None:
-        if self.held:
+        if self.held and not (self.starting and self.pending is not None):
             if self.pending is None:
                 self.pending = number
             return
+        self.pending = None
         raise RunInterrupted(signal.Signals(number).name)
 
     def hold(self) -> None:
         """From now on a signal waits (the run writes its final files)."""
         self.held = True
+        self.starting = False
 
     finishing = hold
 
     def release(self) -> None:
         """Signals stop the run from now on; one that came while held does now."""
-        self.held = False
+        self.held = self.starting = False
         if self.pending is not None:
             number, self.pending = self.pending, None
             raise RunInterrupted(signal.Signals(number).name)
