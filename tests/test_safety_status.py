@@ -199,6 +199,25 @@ def test_a_killed_run_is_told_by_status_which_clears_its_lock_and_staging(tmp_pa
     assert len(killed) == 1 and summary_of(killed[0])["status"] == "KILLED"
 
 
+def test_status_of_a_folder_the_user_may_not_write_is_read_only(tmp_path, monkeypatch):
+    from asterlite.runtime import outdir
+    from asterlite.runtime.folder_status import folder_status
+
+    out = tmp_path / "out"
+    child = start_looping_run(tmp_path, out)
+    child.send_signal(signal.SIGKILL)
+    child.wait(timeout=60)
+
+    def refused(self):
+        raise PermissionError(errno.EACCES, "Permission denied", str(self.path))
+
+    monkeypatch.setattr(outdir.OutputFolder, "take", refused)
+    found = folder_status(out)
+    assert found.status == "KILLED" and found.exit_code == 2
+    assert "read-only here: left as is" in found.lines[0]
+    assert summary_of(out)["status"] == "RUNNING" and (out / STAGING_NAME).exists()
+
+
 def test_a_stale_lock_is_taken_over_and_cleared_by_the_next_run(tmp_path):
     out = tmp_path / "out"
     child = start_looping_run(tmp_path, out)

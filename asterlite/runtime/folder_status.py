@@ -5,11 +5,13 @@ command it is in (the record its lock file keeps). A summary saying RUNNING
 while nobody holds the lock is a run that was killed outright (SIGKILL, the
 out-of-memory killer, a stopped machine): the folder is settled as the next
 run would settle it — its summary says KILLED and where the run was, its
-staging folder becomes ``incomplete/``, the stale lock is removed.
+staging folder becomes ``incomplete/``, the stale lock is removed. A folder
+this user may not write is only read: its status is told, nothing settled.
 """
 
 from __future__ import annotations
 
+import errno
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,7 +23,10 @@ from asterlite.runtime.outdir import (
     OutputFolderBusy,
     OutputFolderError,
     describe_record,
+    lock_record,
+    read_earlier_result,
 )
+from asterlite.runtime.write_boundary import WriteBoundary
 
 EXIT_RUNNING = 3  # a run is on: no verdict yet
 _EXIT = {"PASS": 0, "DONE": 0, "NOOK": 1}
@@ -50,8 +55,15 @@ def folder_status(path: Path) -> FolderStatus:
     try:
         folder.take()
     except OutputFolderBusy as busy:
+        folder.release()
         return _running(path, busy.record)
-    except (OutputFolderError, OSError) as error:
+    except OSError as error:
+        folder.release()
+        if error.errno in (errno.EACCES, errno.EPERM, errno.EROFS):  # not this user's to settle
+            return _read_only(path)
+        return FolderStatus("NONE", [f"{path}: {_text(error)}"])
+    except OutputFolderError as error:
+        folder.release()
         return FolderStatus("NONE", [f"{path}: {_text(error)}"])
     try:
         return _settled(path, folder)
@@ -81,6 +93,51 @@ def _settled(path: Path, folder: OutputFolder) -> FolderStatus:
     if folder.earlier_note:
         cleared.append("the run's files to incomplete/, its summary to KILLED")
     return FolderStatus(status, _final_lines(path, data) + _said(cleared))
+
+
+def _read_only(path: Path) -> FolderStatus:
+    """The status of a folder this user may not write: read, nothing settled."""
+    boundary = WriteBoundary.open(path)
+    try:
+        earlier = read_earlier_result(boundary)
+        if earlier is None:
+            return FolderStatus("NONE", [f"{path}: no asterlite result there"])
+        if earlier.status != "RUNNING":
+            return FolderStatus(earlier.status, _final_lines(path, earlier.data))
+        record = _held_lock_record(boundary)
+        if record is not None:
+            return _running(path, record)
+        return FolderStatus(
+            "KILLED",
+            [
+                f"{path}: KILLED — summary.json says RUNNING but no run holds the folder "
+                "(read-only here: left as is)"
+            ],
+        )
+    except (OutputFolderError, OSError) as error:
+        return FolderStatus("NONE", [f"{path}: {_text(error)}"])
+    finally:
+        boundary.close()
+
+
+def _held_lock_record(boundary: WriteBoundary) -> dict | None:
+    """The record of the lock a live run holds, None when none is held."""
+    import fcntl
+
+    flags = os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC
+    try:
+        descriptor = os.open(LOCK_NAME, flags, dir_fd=boundary.fd)
+    except OSError:
+        return None
+    try:
+        fcntl.flock(descriptor, fcntl.LOCK_SH | fcntl.LOCK_NB)
+    except BlockingIOError:
+        return lock_record(descriptor)
+    except OSError:
+        return None
+    finally:
+        os.close(descriptor)
+    return None
 
 
 def _final_lines(path: Path, data: dict) -> list[str]:

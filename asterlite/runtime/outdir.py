@@ -358,7 +358,7 @@ class OutputFolder:
             if now is None or now.st_ino != os.fstat(descriptor).st_ino:
                 raise BlockingIOError
         except (BlockingIOError, FileNotFoundError):
-            record = _lock_record(descriptor)
+            record = lock_record(descriptor)
             os.close(descriptor)
             raise OutputFolderBusy(
                 f"another asterlite run is using {self.path} (it holds {LOCK_NAME}): "
@@ -366,7 +366,7 @@ class OutputFolder:
                 record,
             ) from None
         if existed:
-            self.stale_record = _lock_record(descriptor)
+            self.stale_record = lock_record(descriptor)
             os.ftruncate(descriptor, 0)  # our file (checked), and the lock is ours now
         self._lock_descriptor = descriptor
         self._own[LOCK_NAME] = os.fstat(descriptor)
@@ -682,7 +682,7 @@ def _clock(seconds: float) -> str:
     return time.strftime("%Y-%m-%dT%H:%M:%S", time.localtime(seconds))
 
 
-def _lock_record(descriptor: int) -> dict:
+def lock_record(descriptor: int) -> dict:
     """What a lock file says about its run (pid, command...), {} if unreadable."""
     try:
         text = os.pread(descriptor, LOCK_RECORD_SIZE, 0).decode("utf-8", "replace")
