@@ -422,3 +422,37 @@ def test_a_report_written_later_is_moved_aside_with_its_run(tmp_path):
     assert run_deck(write(tmp_path, "d.comm", PLAIN_DECK), out).status == "DONE"
     previous = next(out.glob("previous-*"))
     assert "report.html" in os.listdir(previous) and not (out / "report.html").exists()
+
+
+# ------------------------------------------------------ the boundary's rules
+
+
+def test_the_write_boundary_takes_single_names_and_never_follows_or_replaces(tmp_path):
+    from asterlite.runtime.write_boundary import OutputFolderError, WriteBoundary
+
+    victim = write(tmp_path, "victim.txt", "precious\n")
+    folder = tmp_path / "out"
+    folder.mkdir()
+    (folder / "link").symlink_to(victim)
+    write(folder, "taken", "mine\n")
+    boundary = WriteBoundary.open(folder)
+    try:
+        for name in ("../escape", "a/b", "..", ".", ""):
+            with pytest.raises(OutputFolderError):
+                boundary.create(name)
+        with pytest.raises(FileExistsError):
+            boundary.create("link")  # a symlink's name is taken, never followed
+        with boundary.create("new") as stream:
+            stream.write("new\n")
+        with pytest.raises(FileExistsError):
+            boundary.move("new", boundary, "taken")  # a move never replaces
+        made = boundary.lstat("new")
+        os.unlink(folder / "new")
+        os.link(victim, folder / "new")  # a second name of another file, planted
+        with pytest.raises(FileExistsError):
+            boundary.open_own("new", made)
+        boundary.remove_own("new", made)  # not the entry made: left alone
+    finally:
+        boundary.close()
+    assert victim.read_text() == "precious\n" and (folder / "new").exists()
+    assert not (tmp_path / "escape").exists()

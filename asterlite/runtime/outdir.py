@@ -43,7 +43,6 @@ from asterlite.runtime.write_boundary import (
     copy_stream,
     create_file,
     entry_name,
-    rename_no_replace,
     same_unshared,
 )
 
@@ -69,7 +68,7 @@ _SUMMARY_READ_CAP = 64 * 1024 * 1024  # bytes of an earlier summary.json worth r
 # its place when the disk is full (JSON allows trailing blanks)
 SUMMARY_RESERVE = 8192
 LOCK_RECORD_SIZE = 512  # bytes of the lock file's record of the current command
-__all__ = ["OutputFolder", "OutputFolderError", "create_file", "rename_no_replace"]
+__all__ = ["OutputFolder", "OutputFolderError", "create_file"]
 
 
 class OutputFolderBusy(OutputFolderError):

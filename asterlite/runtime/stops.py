@@ -64,8 +64,6 @@ class Stops:
         self.held = True
         self.starting = False
 
-    finishing = hold
-
     def release(self) -> None:
         """Signals stop the run from now on; one that came while held does now."""
         self.held = self.starting = False

@@ -187,17 +187,6 @@ def _load_renameat2():
 _renameat2 = _load_renameat2()
 
 
-def rename_no_replace(source: Path, target: Path) -> None:
-    """Rename ``source`` to ``target``; FileExistsError if ``target`` exists."""
-    source_folder = WriteBoundary.open(Path(source).parent)
-    target_folder = WriteBoundary.open(Path(target).parent)
-    try:
-        source_folder.move(Path(source).name, target_folder, Path(target).name)
-    finally:
-        source_folder.close()
-        target_folder.close()
-
-
 def copy_stream(source, target) -> None:
     while True:
         chunk = source.read(1 << 20)
