@@ -34,6 +34,7 @@ STATUS_COLOURS = {
     "ERROR": "#b91c1c",
     "UNSUPPORTED": "#7c3aed",
     "INTERRUPTED": "#b91c1c",
+    "KILLED": "#b91c1c",  # a run settled after it died (asterlite status)
     "RUNNING": "#555",
 }
 
