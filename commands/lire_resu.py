@@ -247,10 +247,6 @@ def _read_ideas(ctx, kw):
     kw.mark_used("INFO", "TITRE", "CHAM_MATER", "CARA_ELEM")  # recorded by code_aster only
     access = "FREQ" if kind == "DYNA_HARMO" else "INST"
     mesh = kw["MAILLAGE"] if kw.get("MAILLAGE") is not None else kw["MODELE"].mesh
-    try:
-        datasets = read_datasets_55(_input(ctx, kw))
-    except (IdeasReadError, ValueError, IndexError) as exc:
-        ctx.error(f"the file is not a readable universal file: {exc}", "UNITE", kw)
     wanted = list(as_tuple(kw["NOM_CHAM"]))
     occurrences = {occ["NOM_CHAM"]: occ for occ in kw.factor("FORMAT_IDEAS")}
     missing = [n for n in wanted if n not in occurrences]
@@ -260,6 +256,10 @@ def _read_ideas(ctx, kw):
             "FORMAT_IDEAS",
             kw,
         )
+    try:
+        datasets = read_datasets_55(_input(ctx, kw))
+    except (IdeasReadError, ValueError, IndexError) as exc:
+        ctx.error(f"the file is not a readable universal file: {exc}", "UNITE", kw)
     read: dict[str, dict[int, tuple[float, dict]]] = {}
     for name in wanted:
         occ = occurrences[name]
