@@ -1,0 +1,18 @@
+"""The code_aster command language, per version, as data.
+
+- :mod:`~asterlite.catalog.language.generate` writes
+  ``catalogues/language/v<N>.json`` from code_aster's own catalogues
+  (read by :mod:`~asterlite.catalog.language.reader` with :mod:`ast`, never
+  executed; ``sd_prod`` functions read as decision tables by
+  :mod:`~asterlite.catalog.language.sdprod`);
+- :mod:`~asterlite.catalog.language.model` loads it lazily, one command at
+  a time;
+- :mod:`~asterlite.catalog.language.expression` evaluates the conditions
+  of blocks and result types it holds, without ``eval``;
+- :mod:`~asterlite.catalog.language.validate` checks a command call as
+  code_aster's syntax checker does, reporting every finding;
+- :mod:`~asterlite.catalog.language.astest_check` checks every
+  verification deck of a code_aster snapshot (the acceptance test).
+
+Nothing here imports numpy: ``asterlite check`` must start quickly.
+"""
