@@ -174,13 +174,13 @@ def all_invalid_expected(result: dict) -> bool:
 # ------------------------------------------------------------------- checks
 
 
-def _check_one(task: tuple) -> dict:
-    deck, export, version, time_limit = task
+def _check_one(task: tuple[str, str, int]) -> dict:
+    deck, export, version = task
     from asterlite.runtime.check_deck import check_deck
 
     start = time.perf_counter()
     try:
-        result = check_deck(Path(export), aster_version=version, time_limit=time_limit).as_json()
+        result = check_deck(Path(export), aster_version=version).as_json()
     except Exception as error:  # never lose the whole table for one deck
         result = {"status": "ERROR", "message": f"{type(error).__name__}: {error}", "findings": []}
     result["deck"] = deck
@@ -285,12 +285,6 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--sample", type=int, help="a random sample of this many decks")
     parser.add_argument("--seed", type=int, default=27, help="seed of --sample (default 27)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    parser.add_argument(
-        "--deck-time-limit",
-        type=float,
-        default=60.0,
-        help="CPU seconds a deck's check may take (default 60; 0: the export's)",
-    )
     parser.add_argument("--work", help="folder for the decks' files (default: temporary)")
     parser.add_argument("--markdown", help="write the table here")
     parser.add_argument("--json", help="write every deck's result here")
@@ -308,8 +302,7 @@ def main(argv: list[str] | None = None) -> int:
         folder = work / deck
         missing = extract(snapshot, deck, folder)
         if "export" not in missing:
-            limit = args.deck_time_limit or None
-            tasks.append((deck, str(folder / f"{deck}.export"), args.version, limit))
+            tasks.append((deck, str(folder / f"{deck}.export"), args.version))
     snapshot.close()
     extracted = time.perf_counter() - start
 
