@@ -98,19 +98,8 @@ class CheckFacts:
     meshes: list = field(default_factory=list)  # every real Mesh read or made
     names_open: bool = False  # a mesh check cannot see may exist
     units_open: set[int] = field(default_factory=set)  # units written or mapped by the deck
-    session: Any = None  # the session checked (tells deck errors apart by kind)
 
     def record(self, error) -> None:
-        """Record a finding once; a statement's error is first told apart
-        (Python asterlite refuses is unsupported, see language_check)."""
-        if self.errors and error in (self.errors[-1], getattr(self.errors[-1], "original", None)):
-            return
-        if self.session is not None:
-            from asterlite.runtime.language_check import classify_deck_error
-
-            error = classify_deck_error(self.session, error)
-            if error is None:  # a consequence of what check could not follow
-                return
         self.errors.append(error)
 
     def close_names(self, reason: str = "") -> None:
@@ -126,13 +115,7 @@ def check_call(proxy, catalogue, keywords: Keywords, site: CallSite, reuse):
         _check_read_unit(session, keywords, site, name)
     if name in MESH_COMMANDS and _computable(keywords, reuse):
         if name != "LIRE_MAILLAGE" or _unit_readable(session, keywords):
-            try:
-                concept = proxy._execute(keywords, site, reuse)
-            except CommandError as error:
-                # asterlite's own reading or processing of the mesh, not the deck
-                error.asterlite_limit = True
-                facts.close_names()
-                raise
+            concept = proxy._execute(keywords, site, reuse)
             facts.meshes.append(concept)
             _note_written_units(name, keywords, facts)
             return concept
@@ -169,48 +152,29 @@ def statement_failed(session, statement, error) -> None:
     it assigns (targets and CO("NAME") outputs) to Unknown. What it would have
     bound is unknown, a mesh maybe: names are no longer judged."""
     facts: CheckFacts = session.check
-    facts.record(error)
+    if not facts.errors or facts.errors[-1] is not error:
+        facts.record(error)
     for name in statement_outputs(statement):
         session.namespace[name] = Unknown
     facts.close_names()
 
 
 def statement_outputs(statement) -> list[str]:
-    """Names a deck statement binds: assignment and loop targets, imported
-    names, functions, ``with ... as`` names and CO("NAME") outputs."""
+    """Names a deck statement binds: assignment targets and CO("NAME") outputs."""
     names = []
     for node in statement.iter_subtrees_topdown():
-        data = node.data
-        if data == "assign":
+        if node.data == "assign":
             for target in node.children[:-1]:
                 names += _target_names(target)
-        elif data in ("augassign", "for_stmt", "comp_for"):
-            names += _target_names(node.children[0])
-        elif data == "with_item" and len(node.children) > 1 and node.children[1] is not None:
-            names += _target_names(node.children[1])
-        elif data == "funcdef":
-            names.append(str(node.children[0]))
-        elif data == "import_as_name":
-            bound = node.children[1] if len(node.children) > 1 else None
-            names.append(str(bound if bound is not None else node.children[0]))
-        elif data == "dotted_as_name":
-            bound = node.children[1] if len(node.children) > 1 else None
-            if bound is not None:
-                names.append(str(bound))
-            else:
-                dotted = node.children[0]
-                first = dotted.children[0] if hasattr(dotted, "children") else dotted
-                names.append(str(first))
-        elif data == "funccall" and _is_co_call(node):
+        elif node.data == "funccall" and _is_co_call(node):
             names.append(node.children[1].children[0].children[0])
     return names
 
 
 def _target_names(target) -> list[str]:
-    data = getattr(target, "data", None)
-    if data == "var":
+    if target.data == "var":
         return [target.children[0].value]
-    if data in ("tuple", "list", "exprlist", "testlist"):
+    if target.data in ("tuple", "list"):
         return [n for child in target.children for n in _target_names(child)]
     return []
 

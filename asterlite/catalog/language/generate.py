@@ -438,11 +438,6 @@ class Converter:
         return sorted(names)
 
 
-def _assigned_here(text: str, name: str) -> bool:
-    """``name`` is made by this module (not imported from the shared pieces)."""
-    return re.search(rf"^{re.escape(name)}\s*=", text or "", re.M) is not None
-
-
 def callable_command(name: str, instance: Instance) -> dict | None:
     """A module-level object with ``__call__`` (code_aster's VARIABLE): a
     command whose keywords are the call's parameters."""
@@ -624,7 +619,7 @@ def generate(source: Source, version: int) -> tuple[dict, list[str]]:
                     if value.options.get("nom", name) != name:
                         continue  # an alias of a command defined under its own name
                     commands[name] = converter.command(name, value)
-                elif isinstance(value, Instance) and _assigned_here(source.read(path), name):
+                elif isinstance(value, Instance):
                     found = callable_command(name, value)
                     if found is not None:
                         commands[name] = found
