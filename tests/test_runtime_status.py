@@ -116,7 +116,9 @@ def test_other_code_aster_modules_are_unsupported_by_name(tmp_path, line, module
 
 
 def test_ca_members_other_than_testcase_are_unsupported(tmp_path):
-    deck = write(tmp_path, "i.comm", "from code_aster import CA\nDEBUT()\nm = CA.ThermalModel()\nFIN()\n")
+    deck = write(
+        tmp_path, "i.comm", "from code_aster import CA\nDEBUT()\nm = CA.ThermalModel()\nFIN()\n"
+    )
     report = run_deck(deck, tmp_path / "out")
     assert report.status == "UNSUPPORTED" and "code_aster.CA.ThermalModel" in report.message
     assert f"{deck}:3:" in report.message
