@@ -105,26 +105,19 @@ def _report(args) -> int:
 
 
 def _check(args) -> int:
-    from asterlite.runtime.runner import run_deck
+    """Each deck VALID (0), UNSUPPORTED (3), INVALID (2) or ERROR (4), with
+    every finding (asterlite.runtime.check_deck); the worst status's code."""
+    from asterlite.runtime.check_deck import check_deck, format_text, worst_exit_code
 
-    worst = 0
-    results = []
+    checks = []
     for deck in args.decks:
-        report = run_deck(Path(deck), check_only=True)
-        results.append(
-            {
-                "deck": deck,
-                "status": "OK" if report.exit_code == 0 else report.status,
-                "message": report.message,
-                "errors": report.errors or ([report.message] if report.exit_code else []),
-            }
-        )
-        worst = max(worst, report.exit_code)
+        check = check_deck(Path(deck), aster_version=args.aster_version)
+        checks.append(check)
         if args.format == "text":
-            print(f"{deck}: OK" if report.exit_code == 0 else f"{deck}: {report.message}")
+            print(format_text(check))
     if args.format == "json":
-        print(json.dumps({"decks": results}, indent=1))
-    return worst
+        print(json.dumps({"decks": [c.as_json() for c in checks]}, indent=1))
+    return worst_exit_code(checks)
 
 
 def _corpus(args) -> int:
@@ -416,9 +409,22 @@ def build_parser() -> argparse.ArgumentParser:
     status.add_argument("folder", help="a run's output folder")
     status.set_defaults(handler=_status)
 
-    check = commands.add_parser("check", help="validate decks without computing")
+    check = commands.add_parser(
+        "check",
+        help="validate decks without computing: VALID (0), INVALID (2), UNSUPPORTED (3)",
+        description="Validate decks in the language of their code_aster version, and say "
+        "what asterlite does not compute. Exit status: 0 VALID, 2 INVALID, 3 UNSUPPORTED, "
+        "4 ERROR (the check could not finish); the worst of several decks.",
+    )
     check.add_argument("decks", nargs="+")
     check.add_argument("--format", choices=("text", "json"), default="text")
+    check.add_argument(
+        "--aster-version",
+        type=int,
+        default=None,
+        metavar="N",
+        help="read the decks as code_aster N (default: detected from their text)",
+    )
     check.set_defaults(handler=_check)
 
     port = commands.add_parser("port", help="rewrite a legacy deck in current syntax")

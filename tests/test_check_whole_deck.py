@@ -283,5 +283,11 @@ def test_cli_check_lists_every_error_as_json(tmp_path, capsys):
     )
     assert main(["check", str(deck), "--format", "json"]) == 2
     (result,) = json.loads(capsys.readouterr().out)["decks"]
-    assert result["status"] == "ERROR" and len(result["errors"]) == 2
-    assert "NOPE" in result["errors"][0] and "LIRE_RESU" in result["errors"][1]
+    assert result["status"] == "INVALID" and result["exit_code"] == 2
+    findings = result["findings"]
+    assert all(f["kind"] == "invalid" for f in findings)
+    assert set(findings[0]) >= {"kind", "message", "file", "line", "column", "keyword"}
+    assert findings[0]["keyword"] == "DEFI_LIST_REEL/NOPE" and findings[0]["line"] == 2
+    # LIRE_RESU(UNITE=3) lacks what code_aster 17 requires: each reported, at line 3
+    assert {f["line"] for f in findings[1:]} == {3}
+    assert any("TYPE_RESU" in f["message"] for f in findings[1:])

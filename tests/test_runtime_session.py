@@ -95,8 +95,9 @@ def test_check_cli_json(tmp_path, capsys):
     path = deck(tmp_path, FUNCTION_DECK.replace("NOM_PARA=", "NOM_PAR="))
     assert main(["check", str(path), "--format", "json"]) == 2
     result = json.loads(capsys.readouterr().out)
-    assert result["decks"][0]["status"] == "ERROR"
-    assert "did you mean NOM_PARA" in result["decks"][0]["message"]
+    assert result["decks"][0]["status"] == "INVALID"  # not code_aster 17 (asterlite check)
+    first = result["decks"][0]["findings"][0]
+    assert first["kind"] == "invalid" and "did you mean NOM_PARA" in first["message"]
 
 
 def test_check_imports_no_numerical_stack(tmp_path):

@@ -189,6 +189,8 @@ class LegacyGroups:
 
     def creations(self, path) -> tuple[dict, dict]:
         """({group: node}, {group: cell}) to create in the mesh read from ``path``."""
+        if not self.named:  # the decks name no node or cell: nothing to read the mesh for
+            return {}, {}
         try:
             stamp = Path(path).stat().st_mtime
         except OSError:

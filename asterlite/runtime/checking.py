@@ -92,15 +92,34 @@ class UnsupportedCommand(DeckCallable):
 @dataclass
 class CheckFacts:
     """What a check has learnt so far: its errors, the meshes it read, the
-    units the deck wrote or mapped, and whether names can still be judged."""
+    units the deck wrote or mapped, and whether names can still be judged.
+
+    ``errors`` is asterlite's own verdict, the errors ``run`` would meet
+    (``run_deck(check_only=True)``: CHECKED, ERROR or UNSUPPORTED).
+    ``findings`` are the two verdicts of ``asterlite check`` (valid code_aster
+    N, computed by asterlite: see :mod:`asterlite.runtime.language_check`):
+    the language's own findings, and each error told apart by kind."""
 
     errors: list = field(default_factory=list)
     meshes: list = field(default_factory=list)  # every real Mesh read or made
     names_open: bool = False  # a mesh check cannot see may exist
     units_open: set[int] = field(default_factory=set)  # units written or mapped by the deck
+    session: Any = None  # the session checked
+    findings: list = field(default_factory=list)
+    calls: list = field(default_factory=list)  # the command calls under way (language_check)
 
     def record(self, error) -> None:
+        if self.errors and error in (self.errors[-1], getattr(self.errors[-1], "original", None)):
+            return
         self.errors.append(error)
+        if self.session is not None:
+            from asterlite.runtime.language_check import finding_of_error
+
+            self.findings.extend(finding_of_error(self.session, error))
+
+    def note(self, finding) -> None:
+        """A finding of the two verdicts that is no error of asterlite's own."""
+        self.findings.append(finding)
 
     def close_names(self, reason: str = "") -> None:
         self.names_open = True
@@ -115,7 +134,13 @@ def check_call(proxy, catalogue, keywords: Keywords, site: CallSite, reuse):
         _check_read_unit(session, keywords, site, name)
     if name in MESH_COMMANDS and _computable(keywords, reuse):
         if name != "LIRE_MAILLAGE" or _unit_readable(session, keywords):
-            concept = proxy._execute(keywords, site, reuse)
+            try:
+                concept = proxy._execute(keywords, site, reuse)
+            except CommandError as error:
+                # asterlite's own reading or processing of the mesh, not the deck
+                error.asterlite_limit = True
+                facts.close_names()
+                raise
             facts.meshes.append(concept)
             _note_written_units(name, keywords, facts)
             return concept
@@ -160,21 +185,41 @@ def statement_failed(session, statement, error) -> None:
 
 
 def statement_outputs(statement) -> list[str]:
-    """Names a deck statement binds: assignment targets and CO("NAME") outputs."""
+    """Names a deck statement binds: assignment and loop targets, imported
+    names, functions, ``with ... as`` names and CO("NAME") outputs."""
     names = []
     for node in statement.iter_subtrees_topdown():
-        if node.data == "assign":
+        data = node.data
+        if data == "assign":
             for target in node.children[:-1]:
                 names += _target_names(target)
-        elif node.data == "funccall" and _is_co_call(node):
+        elif data in ("augassign", "for_stmt", "comp_for"):
+            names += _target_names(node.children[0])
+        elif data == "with_item" and len(node.children) > 1 and node.children[1] is not None:
+            names += _target_names(node.children[1])
+        elif data == "funcdef":
+            names.append(str(node.children[0]))
+        elif data == "import_as_name":
+            bound = node.children[1] if len(node.children) > 1 else None
+            names.append(str(bound if bound is not None else node.children[0]))
+        elif data == "dotted_as_name":
+            bound = node.children[1] if len(node.children) > 1 else None
+            if bound is not None:
+                names.append(str(bound))
+            else:
+                dotted = node.children[0]
+                first = dotted.children[0] if hasattr(dotted, "children") else dotted
+                names.append(str(first))
+        elif data == "funccall" and _is_co_call(node):
             names.append(node.children[1].children[0].children[0])
     return names
 
 
 def _target_names(target) -> list[str]:
-    if target.data == "var":
+    data = getattr(target, "data", None)
+    if data == "var":
         return [target.children[0].value]
-    if target.data in ("tuple", "list"):
+    if data in ("tuple", "list", "exprlist", "testlist"):
         return [n for child in target.children for n in _target_names(child)]
     return []
 

@@ -76,7 +76,9 @@ def catalogue_command_names() -> list[str]:
     return sorted(
         info.name.upper()
         for info in pkgutil.iter_modules(package.__path__)
-        if not info.name.startswith("common") and not info.name.startswith("_")
+        if not info.name.startswith("common")
+        and not info.name.startswith("_")
+        and not info.ispkg  # the language data (catalogues/language/)
     )
 
 
@@ -127,13 +129,18 @@ class Session:
         from asterlite.lang import stdlib
 
         self.namespace.update(stdlib.namespace_builtins(self.namespace))  # globals(): these names
-        # code_aster commands asterlite lacks are refused by name when called
-        for name, version in checking.code_aster_commands().items():
-            self.namespace[name] = checking.UnsupportedCommand(name, version)
+        if self.check_only:
+            from asterlite.runtime.language_check import bind_language_commands
+
+            self.check = checking.CheckFacts(session=self)
+            # refused by name as before, and validated in the deck version's language
+            bind_language_commands(self)
+        else:
+            # code_aster commands asterlite lacks are refused by name when called
+            for name, version in checking.code_aster_commands().items():
+                self.namespace[name] = checking.UnsupportedCommand(name, version)
         for name in catalogue_command_names():
             self.namespace[name] = CommandProxy(name, self)
-        if self.check_only:
-            self.check = checking.CheckFacts()
 
     @property
     def check_errors(self) -> list:
@@ -205,6 +212,12 @@ class Session:
             from asterlite.runtime.deck_api import code_aster_ca_module
 
             return code_aster_ca_module(self)
+        if name.startswith("code_aster.") and self.check is not None:
+            from asterlite.runtime.language_check import module_commands
+
+            found = module_commands(self, name)  # user macros: code_aster.MacroCommands...
+            if found:
+                return found
         if name.startswith("code_aster."):
             raise UnsupportedError(
                 f"module {name}: asterlite provides code_aster's commands "
@@ -255,6 +268,9 @@ class Session:
             if self.check is None:
                 raise
             self.check.record(error)  # check goes on with the next deck file
+            from asterlite.runtime.language_check import bind_unparsed_names
+
+            bind_unparsed_names(self, path)  # its names are unknown, not undefined
             return
         evaluator = Evaluator(
             self.namespace, module_loader=self.load_module, overrides=self.overrides
@@ -473,7 +489,16 @@ class CommandProxy(DeckCallable):
         return f"<command {self.name}>"
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
-        if self.session.check is None or self.session.deck_may_catch():
+        if self.session.check is None:
+            return self._deck_call(args, kwargs, site)
+        from asterlite.runtime.language_check import checked_call
+
+        # check: valid code_aster N (the deck's version), then what asterlite computes
+        return checked_call(self, args, kwargs, site)
+
+    def _checked_call(self, args: list, kwargs: dict, site: CallSite):
+        """asterlite's own check of a call (its catalogue, mesh names, units)."""
+        if self.session.deck_may_catch():
             # a try or with block of the deck may catch the error, as in a run
             return self._deck_call(args, kwargs, site)
         try:
@@ -657,7 +682,7 @@ class CommandProxy(DeckCallable):
             name = keywords.get("FICHIER")
             if keywords.get("ACTION", "ASSOCIER") == "LIBERER":
                 # the unit is closed: what is written to it later goes to fort.<unit>
-                if unit is not None:
+                if isinstance(unit, int):  # under check, a unit may be unknown
                     session.output_units.pop(int(unit), None)
                 return None
             if unit is not None and name and session.output_dir is not None:

@@ -415,8 +415,9 @@ class Converter:
         return data
 
     def legacy(self, compat) -> list[str]:
-        """Keyword names a ``compat_syntax`` hook reads (old spellings code_aster
-        converts before checking): accepted where the catalogue has no such keyword."""
+        """Keyword names a ``compat_syntax`` hook reads or sets (old spellings
+        code_aster converts before checking): texts used as keys (``.pop("X")``,
+        ``.get("X")``, ``kw["X"]``, ``"X" in kw``, ``{"X": ...}``), not values."""
         if compat is None:
             return []
         functions, seen = [compat], []
@@ -426,16 +427,43 @@ class Converter:
             if not isinstance(function, Function) or function in seen:
                 continue
             seen.append(function)
-            for node in ast.walk(function.node):
-                if isinstance(node, ast.Constant) and isinstance(node.value, str):
-                    if re.fullmatch(r"[A-Z][A-Z0-9_]*", node.value):
-                        names.add(node.value)
-            # compat_union(a, b): the functions held by the closure
-            functions.extend(v for v in function.scope.names.values() if isinstance(v, Function))
-            for value in function.scope.names.values():
-                if isinstance(value, tuple):
-                    functions.extend(v for v in value if isinstance(v, Function))
-        return sorted(names)
+            names |= _key_texts(function.node)
+            # compat_union(a, b): the functions its closure holds (not the module's)
+            if "__name__" not in function.scope.names:
+                for value in function.scope.names.values():
+                    items = value if isinstance(value, tuple) else (value,)
+                    functions.extend(v for v in items if isinstance(v, Function))
+        return sorted(n for n in names if re.fullmatch(r"[A-Z][A-Z0-9_]*", n))
+
+
+def _key_texts(tree) -> set[str]:
+    def text(node) -> str | None:
+        if isinstance(node, ast.Constant) and isinstance(node.value, str):
+            return node.value
+        return None
+
+    found: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+            if node.func.attr in ("pop", "get", "setdefault") and node.args:
+                found.add(text(node.args[0]))
+        elif isinstance(node, ast.Subscript):
+            found.add(text(node.slice))
+        elif isinstance(node, ast.Compare) and any(
+            isinstance(op, (ast.In, ast.NotIn)) for op in node.ops
+        ):
+            found.add(text(node.left))
+        elif isinstance(node, ast.Dict):
+            found.update(text(key) for key in node.keys if key is not None)
+        elif isinstance(node, ast.For) and isinstance(node.iter, (ast.Tuple, ast.List)):
+            found.update(text(item) for item in node.iter.elts)  # for old in ("A", "B")
+    found.discard(None)
+    return found
+
+
+def _assigned_here(text: str, name: str) -> bool:
+    """``name`` is made by this module (not imported from the shared pieces)."""
+    return re.search(rf"^{re.escape(name)}\s*=", text or "", re.M) is not None
 
 
 def callable_command(name: str, instance: Instance) -> dict | None:
@@ -619,7 +647,7 @@ def generate(source: Source, version: int) -> tuple[dict, list[str]]:
                     if value.options.get("nom", name) != name:
                         continue  # an alias of a command defined under its own name
                     commands[name] = converter.command(name, value)
-                elif isinstance(value, Instance):
+                elif isinstance(value, Instance) and _assigned_here(source.read(path), name):
                     found = callable_command(name, value)
                     if found is not None:
                         commands[name] = found

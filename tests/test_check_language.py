@@ -1,0 +1,174 @@
+"""`asterlite check`'s two verdicts (issue 27): valid code_aster N, judged by
+that version's language data, and what asterlite computes. Every finding has
+a kind; a deck is VALID (0), UNSUPPORTED (3) or INVALID (2)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from asterlite.cli import main
+from asterlite.runtime.check_deck import check_deck
+
+
+def deck(tmp_path, body: str, name: str = "d.comm"):
+    path = tmp_path / name
+    path.write_text("DEBUT()\n" + body + "FIN()\n")
+    return path
+
+
+def kinds(check) -> list[tuple[str, str]]:
+    return [(f.kind, f.keyword) for f in check.findings]
+
+
+def test_valid_keyword_asterlite_does_not_compute_is_unsupported(tmp_path):
+    path = deck(tmp_path, "MAT = DEFI_MATERIAU(FLUIDE=_F(RHO=1000.0, CELE_R=1400.0))\n")
+    check = check_deck(path)
+    assert check.status == "UNSUPPORTED" and check.exit_code == 3
+    assert kinds(check) == [("unsupported", "DEFI_MATERIAU/FLUIDE")]
+
+
+def test_valid_command_asterlite_does_not_compute_is_unsupported(tmp_path):
+    path = deck(tmp_path, 'INFO_EXEC_ASTER(LISTE_INFO="UNITE_LIBRE")\n')
+    check = check_deck(path)
+    assert check.status == "UNSUPPORTED"
+    assert kinds(check) == [("unsupported", "INFO_EXEC_ASTER")]
+
+
+def test_misspelt_keyword_is_invalid_with_a_close_match(tmp_path):
+    path = deck(tmp_path, "MAT = DEFI_MATERIAU(ELAS=_F(E=2.0e11, NUU=0.3))\n")
+    check = check_deck(path)
+    assert check.status == "INVALID" and check.exit_code == 2
+    first = check.findings[0]
+    assert (first.kind, first.keyword) == ("invalid", "DEFI_MATERIAU/ELAS[1]/NUU")
+    assert "did you mean NU?" in first.message
+    assert (first.line, first.column) == (2, 39)
+
+
+def test_misspelt_reference_is_the_root_then_what_it_breaks(tmp_path):
+    # REFERENCE misspelt next to VALE_REFE: the unknown keyword first, then
+    # VALE_REFE, which only the missing REFERENCE allows
+    path = deck(
+        tmp_path,
+        'T = CREA_TABLE(LISTE=_F(PARA="A", LISTE_R=(1.0, 2.0)))\n'
+        'TEST_TABLE(TABLE=T, NOM_PARA="A", REFERENC="ANALYTIQUE", VALE_REFE=1.0,'
+        " VALE_CALC=1.0, TYPE_TEST='MAX')\n",
+    )
+    check = check_deck(path)
+    assert check.status == "INVALID"
+    assert kinds(check) == [("invalid", "TEST_TABLE/REFERENC"), ("invalid", "TEST_TABLE/VALE_REFE")]
+    assert "did you mean REFERENCE?" in check.findings[0].message
+    assert "only with" in check.findings[1].message and "REFERENCE" in check.findings[1].message
+
+
+def test_choices_are_checked_in_a_table_filter(tmp_path):
+    path = deck(
+        tmp_path,
+        'T = CREA_TABLE(LISTE=(_F(PARA="A", LISTE_R=(1.0, 2.0)),\n'
+        '                      _F(PARA="B", LISTE_R=(3.0, 4.0))))\n'
+        'TEST_TABLE(TABLE=T, NOM_PARA="B", VALE_CALC=3.0,\n'
+        '           FILTRE=_F(NOM_PARA="A", VALE=1.0, CRITERE="ABSOLUZ"))\n',
+    )
+    check = check_deck(path)
+    assert check.status == "INVALID"
+    (finding,) = check.findings
+    assert finding.keyword == "TEST_TABLE/FILTRE[1]/CRITERE"
+    assert (
+        "'ABSOLUZ' is not one of" in finding.message and "did you mean 'ABSOLU'" in finding.message
+    )
+
+
+def test_every_error_of_one_occurrence_in_one_pass(tmp_path):
+    # an unknown keyword and the rule it then breaks, in the same occurrence
+    path = deck(tmp_path, "MAT = DEFI_MATERIAU(ELAS=_F(E=2.0e11, NUU=0.3, RHOO=7800.0))\n")
+    check = check_deck(path)
+    assert [f.keyword for f in check.findings] == [
+        "DEFI_MATERIAU/ELAS[1]/NUU",
+        "DEFI_MATERIAU/ELAS[1]/RHOO",
+        "DEFI_MATERIAU/ELAS[1]",
+    ]
+    assert "(ENSEMBLE)" in check.findings[2].message
+
+
+def test_a_command_of_another_version_says_which_has_it(tmp_path):
+    path = deck(tmp_path, "X = DEFI_CONT(ZONE=_F(GROUP_MA_MAIT='A', GROUP_MA_ESCL='B'))\n")
+    check = check_deck(path)  # DEFI_CONT is imported from its module in code_aster 17
+    assert check.status == "INVALID"
+    assert "DEFI_CONT" in check.findings[0].message
+
+
+def test_the_version_decides_validity(tmp_path):
+    # DEFI_PRES_EC8 is a command of code_aster 17, not of code_aster 15
+    body = (
+        "P = DEFI_PRES_EC8(Z_FOND=0.0, RAYON=1.0, HAUT_EAU=2.0, RHO_EAU=1000.0, ACCE_SP_H=1.0,"
+        " ACCE_FLEX_H_N=1.0, ACCE_FLEX_V=1.0, ACCE_SP_V=1.0, ACCE_CONV_H=1.0)\n"
+    )
+    path = deck(tmp_path, body)
+    check = check_deck(path, aster_version=17)
+    assert (check.version, check.language, check.status) == (17, 17, "UNSUPPORTED")
+    check = check_deck(path, aster_version=15)
+    assert (check.version, check.language, check.status) == (15, 15, "INVALID")
+    assert check.findings[0].message == (
+        "DEFI_PRES_EC8 is not a command of code_aster 15 (code_aster 17 has it)"
+    )
+
+
+def test_python_asterlite_does_not_take_is_unsupported_not_invalid(tmp_path):
+    path = deck(tmp_path, "import mpi4py\n")
+    check = check_deck(path)
+    assert check.status == "UNSUPPORTED"
+    assert check.findings[0].kind == "unsupported-python"
+
+
+def test_an_undefined_name_is_invalid(tmp_path):
+    path = deck(tmp_path, "L = DEFI_LIST_REEL(VALE=(1.0, X))\n")
+    check = check_deck(path)
+    assert check.status == "INVALID"
+    assert "name 'X' is not defined" in check.findings[0].message
+
+
+def test_cli_statuses_exit_codes_and_json(tmp_path, capsys):
+    valid = deck(tmp_path, "L = DEFI_LIST_REEL(VALE=(1.0, 2.0))\n", "valid.comm")
+    unsupported = deck(tmp_path, 'INFO_EXEC_ASTER(LISTE_INFO="UNITE_LIBRE")\n', "u.comm")
+    invalid = deck(tmp_path, "L = DEFI_LIST_REEL(VALEUR=(1.0, 2.0))\n", "i.comm")
+    assert main(["check", str(valid)]) == 0
+    assert "VALID (code_aster 17)" in capsys.readouterr().out
+    assert main(["check", str(unsupported), "--format", "json"]) == 3
+    (result,) = json.loads(capsys.readouterr().out)["decks"]
+    assert result["status"] == "UNSUPPORTED" and result["counts"]["unsupported"] == 1
+    # several decks: the worst status's code
+    assert main(["check", str(valid), str(unsupported), str(invalid)]) == 2
+    out = capsys.readouterr().out
+    assert "i.comm: INVALID" in out and "did you mean VALE?" in out
+    assert main(["check", str(valid), "--aster-version", "15"]) == 0
+    assert "VALID (code_aster 15)" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("version", [15, 17])
+def test_check_of_a_typical_deck_is_fast(tmp_path, version):
+    import time
+
+    body = (
+        "L = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, PAS=0.01))\n"
+        "F = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))\n"
+        "T = CREA_TABLE(LISTE=_F(PARA='A', LISTE_R=(1.0, 2.0)))\n"
+        "TEST_TABLE(TABLE=T, NOM_PARA='A', VALE_CALC=2.0, TYPE_TEST='MAX')\n"
+    )
+    path = deck(tmp_path, body)
+    check_deck(path, aster_version=version)  # warm: modules imported
+    start = time.perf_counter()
+    check = check_deck(path, aster_version=version)
+    assert check.status == "VALID", check.findings
+    assert time.perf_counter() - start < 0.3
+
+
+def test_asterlites_own_verdict_is_kept_apart(tmp_path):
+    # run_deck(check_only=True) (asterlite.check, sweep) keeps asterlite's own
+    # verdict, what `run` would meet; `asterlite check` tells the two apart
+    from asterlite.runtime.runner import run_deck
+
+    path = deck(tmp_path, "MAT = DEFI_MATERIAU(FLUIDE=_F(RHO=1000.0, CELE_R=1400.0))\n")
+    report = run_deck(path, check_only=True)
+    assert report.status == "ERROR" and "FLUIDE" in report.message
+    assert check_deck(path).status == "UNSUPPORTED"
