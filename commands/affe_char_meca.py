@@ -1,6 +1,7 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
 LIAISON_SOLIDE) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE,
-PRES_REP, FORCE_INTERNE on 3D solids) on a model."""
+PRES_REP, FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
+FORCE_INTERNE on the surfaces of plane models) on a model."""
 
 from __future__ import annotations
 
@@ -207,16 +208,24 @@ def _cells_of_3d_model(ctx, model, occ, kinds, what: str) -> np.ndarray:
     """Cells of the occurrence that the model carries with MODELISATION='3D'
     and whose type is among ``kinds`` (faces for surface loads, volumes for
     volume loads); TOUT='OUI' takes those of the whole model."""
+    return _cells_carrying(ctx, model, occ, {"3D": kinds}, what)
+
+
+def _cells_carrying(ctx, model, occ, accepted: dict, what: str) -> np.ndarray:
+    """Cells of the occurrence whose modelisation is a key of ``accepted`` and
+    whose type is among its value; TOUT='OUI' takes those of the whole model."""
     mesh = model.mesh
     everywhere = occ.get("TOUT") == "OUI"
     cells = select_cells(ctx, occ, mesh, all_cells=sorted(model.cell_modelisation))
     kept = []
     for cell in cells:
-        carried = model.cell_modelisation.get(int(cell)) == "3D"
-        if carried and mesh.cell_types[cell] in kinds:
+        modelisation = model.cell_modelisation.get(int(cell))
+        if modelisation in accepted and mesh.cell_types[cell] in accepted[modelisation]:
             kept.append(int(cell))
         elif not everywhere:
-            state = "not in the model" if not carried else f"a {mesh.cell_types[cell]} cell"
+            state = (
+                "not in the model" if modelisation is None else f"a {mesh.cell_types[cell]} cell"
+            )
             ctx.error(f"{what} on cell {mesh.cell_names[cell]}, which is {state}", "GROUP_MA", occ)
     if not kept:
         ctx.error(f"{what}: no cell of the model can carry it", "GROUP_MA", occ)
@@ -243,26 +252,57 @@ def _check_outward(ctx, model, faces, occ) -> None:
 
 
 def _solid_loads(ctx, model, load, kw) -> None:
-    """FORCE_FACE, PRES_REP (faces of 3D models) and FORCE_INTERNE (volumes)."""
+    """FORCE_FACE, PRES_REP (faces of 3D models, edges of plane ones),
+    FORCE_CONTOUR (edges of plane models) and FORCE_INTERNE (volumes, plane
+    surfaces)."""
+    from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
     from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
+    edges = dict.fromkeys(PLANE_MODELISATIONS, EDGE_CELLS)
+    surfaces = {name: tuple(surface_cells(name)) for name in PLANE_MODELISATIONS}
+    plane = any(m in PLANE_MODELISATIONS for m in model.cell_modelisation.values())
     for occ in kw.factor("FORCE_FACE"):
         force = [float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")]
         cells = _cells_of_3d_model(ctx, model, occ, FACE_CELLS, "FORCE_FACE")
         load.extra.setdefault("FORCE_FACE", []).append({"CELLS": cells, "FORCE": force})
     for occ in kw.factor("PRES_REP"):
-        if occ.get("CISA_2D") is not None:
-            ctx.unsupported("PRES_REP CISA_2D (edges of plane models)", "CISA_2D", occ)
-        cells = _cells_of_3d_model(ctx, model, occ, FACE_CELLS, "PRES_REP")
-        if kw.get("VERI_NORM", "OUI") == "OUI":
-            _check_outward(ctx, model, cells, occ)
-        load.extra.setdefault("PRES_REP", []).append(
-            {"CELLS": cells, "PRES": float(occ.get("PRES") or 0.0)}
-        )
+        pressure = float(occ.get("PRES") or 0.0)
+        shear = occ.get("CISA_2D")
+        accepted = {"3D": FACE_CELLS, **edges}
+        cells = _cells_carrying(ctx, model, occ, accepted, "PRES_REP")
+        on_edges = np.array([model.cell_modelisation[c] != "3D" for c in cells], dtype=bool)
+        if shear is not None and not on_edges.all():
+            ctx.error("CISA_2D applies to edges of plane models only", "CISA_2D", occ)
+        if (~on_edges).any():
+            faces = cells[~on_edges]
+            if kw.get("VERI_NORM", "OUI") == "OUI":
+                _check_outward(ctx, model, faces, occ)
+            load.extra.setdefault("PRES_REP", []).append({"CELLS": faces, "PRES": pressure})
+        if on_edges.any():
+            load.extra.setdefault("PRES_REP_2D", []).append(
+                {"CELLS": cells[on_edges], "PRES": pressure, "CISA_2D": float(shear or 0.0)}
+            )
+    for occ in kw.factor("FORCE_CONTOUR"):
+        if not plane:
+            ctx.error("FORCE_CONTOUR applies to edges of plane models", "GROUP_MA", occ)
+        if any(occ.get(k) for k in ("FZ", "MX", "MY", "MZ")):
+            ctx.unsupported("FORCE_CONTOUR FZ, MX, MY, MZ (shell contours)", "FZ", occ)
+        force = [float(occ.get(k) or 0.0) for k in ("FX", "FY")]
+        cells = _cells_carrying(ctx, model, occ, edges, "FORCE_CONTOUR")
+        load.extra.setdefault("FORCE_CONTOUR", []).append({"CELLS": cells, "FORCE": force})
     for occ in kw.factor("FORCE_INTERNE"):
         force = [float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")]
-        cells = _cells_of_3d_model(ctx, model, occ, VOLUME_CELLS, "FORCE_INTERNE")
-        load.extra.setdefault("FORCE_INTERNE", []).append({"CELLS": cells, "FORCE": force})
+        accepted = {"3D": VOLUME_CELLS, **surfaces}
+        cells = _cells_carrying(ctx, model, occ, accepted, "FORCE_INTERNE")
+        flat = np.array([model.cell_modelisation[c] != "3D" for c in cells], dtype=bool)
+        if (~flat).any():
+            load.extra.setdefault("FORCE_INTERNE", []).append(
+                {"CELLS": cells[~flat], "FORCE": force}
+            )
+        if flat.any():
+            load.extra.setdefault("FORCE_INTERNE_2D", []).append(
+                {"CELLS": cells[flat], "FORCE": force[:2]}
+            )
 
 
 def run(ctx, kw):

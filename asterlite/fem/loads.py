@@ -21,6 +21,7 @@ import numpy as np
 from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
 from asterlite.fem.solid_loads import solid_cells, solid_load_terms, volume_force_terms
 
 _TRANSLATIONS = ("DX", "DY", "DZ")
@@ -35,12 +36,14 @@ def gravity_terms(model, characteristics, gravity: float, direction, materials=N
     if norm == 0.0:
         raise ElementError("PESANTEUR DIRECTION is a zero vector")
     d = gravity * d / norm
-    # 3D solids: the weight integrated on the RIGI points, as code_aster does
+    # 3D and plane solids: the weight integrated on the RIGI points, as code_aster does
     solid = solid_cells(model, cells)
     terms = volume_force_terms(model.mesh, solid, d, materials, per_mass=True)
-    if len(solid):
+    plane = plane_cells(model, cells)
+    terms.extend(surface_force_terms(model, plane, d, materials, per_mass=True))
+    if len(solid) or len(plane):
         pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
-        cells = sorted({int(c) for c in pool} - set(solid.tolist()))
+        cells = sorted({int(c) for c in pool} - set(solid.tolist()) - set(plane.tolist()))
         if not cells:
             return terms
     for block in element_blocks(model, characteristics, "M", materials=materials, cells=cells):
@@ -141,4 +144,5 @@ def load_terms(load, characteristics=None, materials=None) -> list:
             beam_force_terms(model, characteristics, item["CELLS"], item["VALUES"], item["LOCAL"])
         )
     terms.extend(solid_load_terms(model.mesh, load.extra))
+    terms.extend(plane_load_terms(model, load.extra))
     return terms
