@@ -1,5 +1,5 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE,
+LIAISON_SOLIDE, LIAISON_ELEM 3D_POU) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE,
 PRES_REP, FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
 
@@ -154,6 +154,72 @@ def _liaison_solide(ctx, model, components, load, occ) -> None:
                     load.relations.append(LinearRelation([(node, r, 1.0), (master, r, -1.0)]))
         return
     ctx.unsupported("LIAISON_SOLIDE on nodes without rotation DOFs", "GROUP_NO", occ)
+
+
+def _liaison_elem(ctx, model, components, load, occ) -> None:
+    """OPTION='3D_POU': the beam node follows the mean motion of the solid's
+    face (asterlite.fem.solid_beam_link); the other options are refused."""
+    from asterlite.fem.elements import ElementError
+    from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
+
+    option = occ["OPTION"]
+    if option != "3D_POU":
+        ctx.unsupported(f"LIAISON_ELEM OPTION={option!r}", "OPTION", occ)
+    mesh = model.mesh
+    faces = cell_group_members(ctx, occ, mesh, "GROUP_MA_1")
+    if occ.get("GROUP_NO_2"):
+        beam = node_group_members(ctx, occ, mesh, "GROUP_NO_2")
+    else:
+        beam = sorted(set(mesh.nodes_of_cells(cell_group_members(ctx, occ, mesh, "GROUP_MA_2"))))
+    where = "GROUP_NO_2" if occ.get("GROUP_NO_2") else "GROUP_MA_2"
+    if len(beam) != 1:
+        ctx.error(f"LIAISON_ELEM 3D_POU needs one beam node, {len(beam)} given", where, occ)
+    beam_node = int(beam[0])
+    missing = [c for c in _ENCASTRE if c not in components.get(beam_node, ())]
+    if missing:
+        name = mesh.node_names[beam_node]
+        ctx.error(f"beam node {name} carries no {', '.join(missing)} in this model", where, occ)
+    try:
+        section = face_section(mesh, faces)
+    except ElementError as exc:
+        ctx.error(str(exc), "GROUP_MA_1", occ)
+    for node in section.nodes:
+        carried = components.get(int(node), ())
+        if any(r in carried for r in ("DRX", "DRY", "DRZ")):
+            ctx.error(
+                f"face node {mesh.node_names[node]} carries rotations: 3D_POU links the "
+                "faces of a solid (nodes with DX, DY, DZ only)",
+                "GROUP_MA_1",
+                occ,
+            )
+        if not all(c in carried for c in ("DX", "DY", "DZ")):
+            ctx.error(
+                f"face node {mesh.node_names[node]} is not in the 3D model", "GROUP_MA_1", occ
+            )
+    _warn_link_geometry(ctx, mesh, faces, section, beam_node, float(occ["ANGL_MAX"]))
+    for terms, rhs in solid_beam_relations(section, beam_node):
+        load.relations.append(LinearRelation(terms, rhs))
+
+
+def _warn_link_geometry(ctx, mesh, faces, section, beam_node, angle_max) -> None:
+    """code_aster's alarms: faces not plane within ANGL_MAX degrees, beam node
+    farther than 1 % of the equivalent radius from the centroid."""
+    normals = []
+    for cell in faces:
+        x = mesh.coords[list(mesh.cell_nodes[cell][:3])]
+        n = np.cross(x[1] - x[0], x[2] - x[0])
+        normals.append(n / np.linalg.norm(n))
+    cosines = np.clip(np.abs(np.asarray(normals) @ normals[0]), -1.0, 1.0)
+    worst = float(np.degrees(np.arccos(cosines.min())))
+    if worst > angle_max:
+        ctx.log(f"alarm: LIAISON_ELEM faces are not plane: normals {worst:.3g} degrees apart")
+    radius = np.sqrt(section.area / np.pi)
+    offset = float(np.linalg.norm(mesh.coords[beam_node] - section.centroid))
+    if offset > 1.0e-2 * radius:
+        ctx.log(
+            f"alarm: LIAISON_ELEM beam node {mesh.node_names[beam_node]} is {offset:.4g} "
+            f"from the centroid {section.centroid.tolist()} of the faces"
+        )
 
 
 def _force_poutre(ctx, model, load, occ) -> None:
@@ -321,6 +387,8 @@ def run(ctx, kw):
         _liaison_solide(ctx, model, components, load, occ)
     for occ in kw.factor("FORCE_POUTRE"):
         _force_poutre(ctx, model, load, occ)
+    for occ in kw.factor("LIAISON_ELEM"):
+        _liaison_elem(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]
