@@ -1,6 +1,8 @@
 """CALC_CHAMP: beam internal forces and stresses of a result (EFGE_ELNO,
-SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing) and user
-fields (CHAM_UTIL).
+SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing), the
+stresses, strains and energies of 3D and plane solids (SIEF_ELGA, SIGM_ELNO,
+EPSI_ELGA/ELNO, ENEL_ELGA/ELNO, EPOT_ELEM, ECIN_ELEM, _NOEU;
+:mod:`asterlite.fem.solid_fields`) and user fields (CHAM_UTIL).
 
 The fields are computed at every order of the result from its DEPL field
 (mode shapes for a mode_meca), plus the element inertia forces M_e a_e from
@@ -28,6 +30,7 @@ from asterlite.fem.element_fields import (
 )
 from asterlite.fem.elements import ElementError
 from asterlite.fem.selection import as_tuple, select_cells
+from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
@@ -42,7 +45,8 @@ def _keep_selected_orders(ctx, kw, result, fields) -> None:
     """Fields exist at the orders NUME_ORDRE / INST / FREQ... choose (every
     order by default): the others are NaN, as code_aster stores no field there."""
     if all(kw.peek(k) is None for k in _ACCESS):
-        kw.mark_used("TOUT_ORDRE")  # every order: the default
+        # every order, the default; CRITERE / PRECISION only tune an INST or FREQ search
+        kw.mark_used("TOUT_ORDRE", "CRITERE", "PRECISION")
         return
     if hasattr(result, "frequencies"):  # a dyna_harmo
         from asterlite.post.harmonic import selection_from_keywords
@@ -101,6 +105,48 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
     _keep_selected_orders(ctx, kw, result, fields)
     result.element_fields.update(fields)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
+
+
+def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
+    """Stresses, strains and energies of 3D and plane solid cells
+    (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
+    from asterlite.fem.solid_fields import SOLID_FIELDS, solid_element_fields
+
+    other = [n for n in names if n not in SOLID_FIELDS]
+    if other:
+        keyword = next(
+            (
+                k
+                for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE")
+                if other[0] in as_tuple(kw.get(k))
+            ),
+            None,
+        )
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of solid elements", keyword, kw)
+    values = _nodal_values(ctx, result, kw)
+    velocities = omega2 = None
+    if "ECIN_ELEM" in names:
+        fields = getattr(result, "fields", None)
+        if isinstance(fields, dict) and fields.get("VITE") is not None:
+            velocities = np.asarray(fields["VITE"])
+        elif getattr(result, "frequencies", None) is not None and hasattr(result, "shapes"):
+            omega2 = (2.0 * np.pi * np.asarray(result.frequencies, dtype=float)) ** 2
+        else:
+            ctx.error("ECIN_ELEM needs the VITE field of the result", "ENERGIE", kw)
+    element_names = sorted({n.replace("_NOEU", "_ELNO") for n in names})
+    try:
+        fields = solid_element_fields(
+            model, materials, result.numbering, solids, values, element_names, velocities, omega2
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    for name in names:
+        if name.endswith("_NOEU"):
+            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
+            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {solids.size} solid cells, {values.shape[0]} orders")
 
 
 def _nodal_values(ctx, result, kw) -> np.ndarray:
@@ -262,7 +308,8 @@ def run(ctx, kw):
     if kw.factor("EXCIT"):
         ctx.unsupported("CALC_CHAMP EXCIT (distributed loads in the forces)", "EXCIT", kw)
     names = [name for _, name in requested]
-    other = [n for n in names if n not in ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS]
+    known = ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS + SOLID_FIELDS
+    other = [n for n in names if n not in known]
     if other:
         keyword = next(k for k, n in requested if n == other[0])
         ctx.unsupported(f"CALC_CHAMP {keyword}={other[0]!r}", keyword, kw)
@@ -276,6 +323,10 @@ def run(ctx, kw):
         bars = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _BARS], dtype=int
         )
+        solids = solid_cells_of(model, candidates)
+        if solids.size and not beams.size and not bars.size:
+            _solid_fields(ctx, kw, result, model, materials, solids, names)
+            return _cham_utils(ctx, kw, result)
         if bars.size and not beams.size:
             _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
             return result
@@ -314,6 +365,11 @@ def run(ctx, kw):
         ctx.log(
             f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
         )
+    return _cham_utils(ctx, kw, result)
+
+
+def _cham_utils(ctx, kw, result):
+    """The CHAM_UTIL occurrences of the call, then the result."""
     rows = _selected_orders(ctx, kw, result) if kw.factor("CHAM_UTIL") else None
     mesh = result.numbering.mesh if kw.factor("CHAM_UTIL") else None
     restricted = select_cells(ctx, kw, mesh) if mesh is not None and kw.get("GROUP_MA") else None
