@@ -168,9 +168,29 @@ def _barre(ctx, model, result, occ) -> None:
         result.sections[int(cell)] = dict(props)
 
 
+def _verify_cells(ctx, model, kw) -> None:
+    """VERIF='MAILLE': code_aster checks that every cell of an occurrence
+    carries an element of the keyword's family (the checks of DISCRET,
+    DISCRET_2D, POUTRE and BARRE asterlite always makes; ORIENTATION: beams and
+    discretes), and stops when one does not."""
+    if "MAILLE" not in as_tuple(kw.get("VERIF")):
+        return
+    for occ in kw.factor("ORIENTATION"):
+        cells = select_cells(ctx, occ, model.mesh)
+        _check_cells(ctx, model, cells, _BEAMS + DISCRETE_MODELISATIONS, "ORIENTATION", occ)
+    others = [k for k in _OTHER_KEYWORDS if k not in ("POUTRE", "BARRE") and kw.get(k)]
+    if others:
+        ctx.unsupported(
+            f"VERIF='MAILLE' with {', '.join(others)} (cells of those element families)",
+            "VERIF",
+            kw,
+        )
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     result = ElementCharacteristics(model=model)
+    _verify_cells(ctx, model, kw)
     # orientations first: DISCRET ... REPERE='LOCAL' uses them whatever the order
     for occ in kw.factor("ORIENTATION"):
         _orientation(ctx, model, result, occ)
