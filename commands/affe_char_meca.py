@@ -1,6 +1,6 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE, LIAISON_ELEM 3D_POU) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE,
-PRES_REP, FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
+LIAISON_SOLIDE, LIAISON_ELEM 3D_POU, FACE_IMPO) and loads (FORCE_NODALE,
+PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP, FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
 
 from __future__ import annotations
@@ -154,6 +154,54 @@ def _liaison_solide(ctx, model, components, load, occ) -> None:
                     load.relations.append(LinearRelation([(node, r, 1.0), (master, r, -1.0)]))
         return
     ctx.unsupported("LIAISON_SOLIDE on nodes without rotation DOFs", "GROUP_NO", occ)
+
+
+def _face_impo(ctx, model, components, load, occ) -> None:
+    """Components imposed on every node of the faces (edges in 2D), and DNOR
+    (DTAN in 2D): u . n = value with n the mean unit normal at the node, as
+    code_aster's cafaci/canort build them."""
+    from asterlite.fem.elements import ElementError
+    from asterlite.fem.node_normals import node_normals
+
+    mesh = model.mesh
+    dim = 2 if model.dim == 2 else 3
+    cells = [int(c) for c in cell_group_members(ctx, occ, mesh, "GROUP_MA")]
+    excluded_cells = set()
+    if occ.get("SANS_GROUP_MA"):
+        excluded_cells = {int(c) for c in cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")}
+        cells = [c for c in cells if c not in excluded_cells]
+    excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
+    if excluded_cells:
+        excluded |= set(mesh.nodes_of_cells(sorted(excluded_cells)))
+    nodes = [int(n) for n in sorted(set(mesh.nodes_of_cells(cells))) if int(n) not in excluded]
+    if not nodes:
+        ctx.error("FACE_IMPO: no node left on the faces", "GROUP_MA", occ)
+    translations = ("DX", "DY", "DZ")[:dim]
+    for key in ("DNOR", "DTAN"):
+        if occ.get(key) is None:
+            continue
+        if key == "DTAN" and dim == 3:
+            ctx.error("DTAN is defined on edges of plane models only (code_aster)", key, occ)
+        try:
+            vectors = node_normals(mesh, cells, nodes, dim, tangent=key == "DTAN", log=ctx.log)
+        except ElementError as exc:
+            ctx.error(str(exc), key, occ)
+        for node, vector in zip(nodes, vectors, strict=True):
+            carried = components.get(node, ())
+            if not all(c in carried for c in translations):
+                ctx.error(f"node {mesh.node_names[node]} has no {translations} DOFs", key, occ)
+            terms = [(node, c, float(v)) for c, v in zip(translations, vector, strict=True) if v]
+            load.relations.append(LinearRelation(terms, float(occ[key])))
+    for comp in _DDL_COMPONENTS + ("PRES", "PHI", "TEMP"):
+        if occ.get(comp) is None:
+            continue
+        applied = 0
+        for node in nodes:
+            if comp in components.get(node, ()):
+                load.relations.append(LinearRelation([(node, comp, 1.0)], float(occ[comp])))
+                applied += 1
+        if applied == 0:
+            ctx.error(f"no node of the faces carries {comp}", comp, occ)
 
 
 def _liaison_elem(ctx, model, components, load, occ) -> None:
@@ -389,6 +437,8 @@ def run(ctx, kw):
         _force_poutre(ctx, model, load, occ)
     for occ in kw.factor("LIAISON_ELEM"):
         _liaison_elem(ctx, model, components, load, occ)
+    for occ in kw.factor("FACE_IMPO"):
+        _face_impo(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]
