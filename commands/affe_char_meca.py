@@ -1,7 +1,8 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
 LIAISON_SOLIDE, LIAISON_ELEM 3D_POU, FACE_IMPO) and loads (FORCE_NODALE,
-PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP, FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
-FORCE_INTERNE on the surfaces of plane models) on a model."""
+PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP, FORCE_INTERNE on 3D solids;
+PRES_REP, FORCE_CONTOUR on the edges and FORCE_INTERNE on the surfaces of plane
+models) on a model."""
 
 from __future__ import annotations
 
