@@ -123,8 +123,26 @@ def beam_force_terms(model, characteristics, cells, values: dict, local: bool) -
     return terms
 
 
-def load_terms(load, characteristics=None, materials=None) -> list:
-    """Every nodal term of one AFFE_CHAR_MECA load (constant values)."""
+def load_terms(load, characteristics=None, materials=None, complex_values=False) -> list:
+    """Every nodal term of one AFFE_CHAR_MECA load (constant values). A load
+    with complex values (AFFE_CHAR_MECA_C) gives complex terms, for callers
+    that compute on complex values only (``complex_values``)."""
+    imaginary = getattr(load, "imaginary", None)
+    if imaginary is not None:
+        if not complex_values:
+            from asterlite.errors import UnsupportedError
+
+            raise UnsupportedError(
+                f"the complex load {load.name or ''} (AFFE_CHAR_MECA_C) in a computation "
+                "on real values (code_aster uses it in harmonic responses)"
+            )
+        real_terms = _real_load_terms(load, characteristics, materials)
+        imag_terms = _real_load_terms(imaginary, characteristics, materials)
+        return real_terms + [(n, c, 1j * v) for n, c, v in imag_terms]
+    return _real_load_terms(load, characteristics, materials)
+
+
+def _real_load_terms(load, characteristics=None, materials=None) -> list:
     model = load.model
     terms = list(load.nodal_forces)
     gravity = load.extra.get("PESANTEUR")
