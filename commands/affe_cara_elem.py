@@ -1,6 +1,6 @@
 """AFFE_CARA_ELEM: discrete element matrices (DISCRET, DISCRET_2D), beam and
-bar sections (POUTRE, BARRE) and orientations; other keywords are kept for
-the rooms that compute them."""
+bar sections (POUTRE, BARRE), plate thicknesses (COQUE) and orientations;
+other keywords are kept for the rooms that compute them."""
 
 from __future__ import annotations
 
@@ -168,6 +168,39 @@ def _barre(ctx, model, result, occ) -> None:
         result.sections[int(cell)] = dict(props)
 
 
+def _coque(ctx, model, result, occ) -> None:
+    """Plate characteristics of DKT cells: thickness, the DRZ stiffness
+    coefficient, rotary inertia, offset. The stress-output frame (ANGL_REP, VECTEUR),
+    the layer count and the shear coefficient of thick plates (A_CIS) change
+    no matrix of a thin isotropic plate."""
+    if occ.get("EPAIS_FO") is not None:
+        ctx.unsupported("COQUE EPAIS_FO (thickness given by a function)", "EPAIS_FO", occ)
+    if occ.get("EXCENTREMENT_FO") is not None:
+        ctx.unsupported(
+            "COQUE EXCENTREMENT_FO (offset given by a function)", "EXCENTREMENT_FO", occ
+        )
+    offset_given = occ.get("EXCENTREMENT") is not None
+    offset = float(occ.get("EXCENTREMENT") or 0.0)
+    if occ.get("MODI_METRIQUE", "NON") == "OUI":
+        ctx.unsupported("COQUE MODI_METRIQUE='OUI' (COQUE_3D)", "MODI_METRIQUE", occ)
+    thickness = float(occ["EPAIS"])
+    if not thickness > 0.0:
+        ctx.error(f"EPAIS must be > 0, got {thickness}", "EPAIS", occ)
+    for no_effect in ("ANGL_REP", "VECTEUR", "A_CIS", "COQUE_NCOU"):
+        occ.get(no_effect)
+    values = {
+        "EPAIS": thickness,
+        "COEF_RIGI_DRZ": float(occ.get("COEF_RIGI_DRZ", 1.0e-5)),
+        # EXCENTREMENT implies INER_ROTA='OUI' (code_aster's rule)
+        "INER_ROTA": 1.0 if occ.get("INER_ROTA") == "OUI" or offset_given else 0.0,
+        "EXCENTREMENT": offset,
+    }
+    if values["COEF_RIGI_DRZ"] < 0.0:
+        ctx.unsupported("COQUE COEF_RIGI_DRZ < 0 (drilling rotations)", "COEF_RIGI_DRZ", occ)
+    for cell in select_cells(ctx, occ, model.mesh):
+        result.shells[int(cell)] = dict(values)
+
+
 def _verify_cells(ctx, model, kw) -> None:
     """VERIF='MAILLE': code_aster checks that every cell of an occurrence
     carries an element of the keyword's family (the checks of DISCRET,
@@ -202,6 +235,8 @@ def run(ctx, kw):
         _poutre(ctx, model, result, occ)
     for occ in kw.factor("BARRE"):
         _barre(ctx, model, result, occ)
+    for occ in kw.factor("COQUE"):
+        _coque(ctx, model, result, occ)
     for keyword in _OTHER_KEYWORDS:
         if kw.get(keyword):
             result.extra[keyword] = kw.factor(keyword)

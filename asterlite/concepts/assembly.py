@@ -81,6 +81,8 @@ class ElementCharacteristics(Concept):
     extra: dict[str, Any] = field(default_factory=dict)
     # beam / bar section properties per cell (asterlite.fem.sections output)
     sections: dict[int, dict[str, Any]] = field(default_factory=dict)
+    # plate characteristics per cell (COQUE: EPAIS, COEF_RIGI_DRZ, INER_ROTA 1/0)
+    shells: dict[int, dict[str, float]] = field(default_factory=dict)
 
 
 @dataclass(eq=False)

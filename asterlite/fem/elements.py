@@ -129,6 +129,7 @@ def element_blocks(
     """
     import asterlite.fem.beam_elements  # noqa: F401 - registers beam computers
     import asterlite.fem.plane_elements  # noqa: F401 - registers the plane solid computers
+    import asterlite.fem.plate_elements  # noqa: F401 - registers the DKT plate computer
     import asterlite.fem.solid_elements  # noqa: F401 - registers the 3D solid computer
 
     wanted = None if cells is None else {int(c) for c in np.asarray(cells).ravel()}
