@@ -127,6 +127,7 @@ def element_blocks(
     asks for MASS_MECA_DIAG, ``cells`` restricts the computation to a subset
     of the model's cells (default: all of them).
     """
+    import asterlite.fem.absorbing_elements  # noqa: F401 - registers the paraxial boundaries
     import asterlite.fem.beam_elements  # noqa: F401 - registers beam computers
     import asterlite.fem.plane_elements  # noqa: F401 - registers the plane solid computers
     import asterlite.fem.plate_elements  # noqa: F401 - registers the DKT plate computer
