@@ -24,11 +24,16 @@ _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 _BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
 
 
-def _ddl_impo(ctx, model, components, load, occ) -> None:
+def constant_value(raw, node: int, key: str) -> float:
+    """A value of AFFE_CHAR_MECA (AFFE_CHAR_MECA_F gives functions of the node)."""
+    return float(raw)
+
+
+def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> None:
     mesh = model.mesh
     everywhere = occ.get("TOUT") == "OUI"
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
-    imposed = {c: float(occ[c]) for c in _DDL_COMPONENTS if occ.get(c) is not None}
+    imposed = {c: occ[c] for c in _DDL_COMPONENTS if occ.get(c) is not None}
     given = {c for c in _DDL_COMPONENTS if occ.get(c) is not None}
     optional: set[str] = set()
     if occ.get("LIAISON") == "ENCASTRE":
@@ -59,7 +64,8 @@ def _ddl_impo(ctx, model, components, load, occ) -> None:
                     comp,
                     occ,
                 )
-            load.relations.append(LinearRelation([(int(node), comp, 1.0)], value))
+            imposed_value = value_at(value, int(node), comp)
+            load.relations.append(LinearRelation([(int(node), comp, 1.0)], imposed_value))
             applied += 1
         if applied == 0 and comp not in optional:
             ctx.error(f"no node of the selection carries {comp}", comp, occ)
@@ -271,44 +277,54 @@ def _warn_link_geometry(ctx, mesh, faces, section, beam_node, angle_max) -> None
         )
 
 
-def _force_poutre(ctx, model, load, occ) -> None:
+_BEAM_LOAD_GLOBAL = ("FX", "FY", "FZ", "MX", "MY", "MZ")
+_BEAM_LOAD_LOCAL = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
+_BEAM_LOADED = ("POU_D_E", "POU_D_T", "BARRE")
+
+
+def beam_load_cells(ctx, model, occ) -> np.ndarray:
+    """The beam (and bar) cells of a FORCE_POUTRE occurrence; with TOUT='OUI'
+    the other cells of the model are left out, otherwise they are an error."""
     if occ.get("TYPE_CHARGE", "FORCE") != "FORCE":
         ctx.unsupported("FORCE_POUTRE TYPE_CHARGE='VENT'", "TYPE_CHARGE", occ)
-    global_keys = ("FX", "FY", "FZ", "MX", "MY", "MZ")
-    local_keys = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
-    given_global = {k: float(occ[k]) for k in global_keys if occ.get(k) is not None}
-    given_local = {k: float(occ[k]) for k in local_keys if occ.get(k) is not None}
-    if given_global and given_local:
-        ctx.error("FORCE_POUTRE mixes global (FX...) and local (N, VY...) components", None, occ)
     cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    kept = []
     for cell in cells:
-        if model.cell_modelisation.get(int(cell)) not in ("POU_D_E", "POU_D_T", "BARRE"):
-            if occ.get("TOUT") == "OUI":
-                continue
+        if model.cell_modelisation.get(int(cell)) in _BEAM_LOADED:
+            kept.append(int(cell))
+        elif occ.get("TOUT") != "OUI":
             ctx.error(
                 f"FORCE_POUTRE on cell {model.mesh.cell_names[cell]}, which is not a beam",
                 "GROUP_MA",
                 occ,
             )
-    cells = np.array(
-        [
-            c
-            for c in cells
-            if model.cell_modelisation.get(int(c)) in ("POU_D_E", "POU_D_T", "BARRE")
-        ],
-        dtype=int,
-    )
+    return np.array(kept, dtype=int)
+
+
+def beam_load_keys(ctx, occ) -> tuple[tuple[str, ...], bool]:
+    """The component names of the occurrence's frame, and whether it is local."""
+    given_global = [k for k in _BEAM_LOAD_GLOBAL if occ.get(k) is not None]
+    given_local = [k for k in _BEAM_LOAD_LOCAL if occ.get(k) is not None]
+    if given_global and given_local:
+        ctx.error("FORCE_POUTRE mixes global (FX...) and local (N, VY...) components", None, occ)
+    return (_BEAM_LOAD_LOCAL, True) if given_local else (_BEAM_LOAD_GLOBAL, False)
+
+
+def _force_poutre(ctx, model, load, occ) -> None:
+    keys, local = beam_load_keys(ctx, occ)
+    values = {k: float(occ[k]) for k in keys if occ.get(k) is not None}
+    cells = beam_load_cells(ctx, model, occ)
     load.extra.setdefault("FORCE_POUTRE", []).append(
-        {"CELLS": cells, "VALUES": given_local or given_global, "LOCAL": bool(given_local)}
+        {"CELLS": cells, "VALUES": values, "LOCAL": local}
     )
 
 
-def _force_nodale(ctx, model, components, load, occ) -> None:
+def _force_nodale(ctx, model, components, load, occ, value_at=constant_value) -> None:
     mesh = model.mesh
     if occ.get("ANGL_NAUT") is not None:
         ctx.unsupported("FORCE_NODALE with ANGL_NAUT", "ANGL_NAUT", occ)
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
-    given = {k: float(occ[k]) for k in _FORCE_COMPONENTS if occ.get(k) is not None}
+    given = {k: occ[k] for k in _FORCE_COMPONENTS if occ.get(k) is not None}
     if not given:
         ctx.error("no force component is given", None, occ)
     for key, value in given.items():
@@ -316,7 +332,7 @@ def _force_nodale(ctx, model, components, load, occ) -> None:
         for node in nodes:
             if comp not in components.get(int(node), ()):
                 ctx.error(f"node {mesh.node_names[node]} has no {comp} DOF in this model", key, occ)
-            load.nodal_forces.append((int(node), comp, value))
+            load.nodal_forces.append((int(node), comp, value_at(value, int(node), key)))
 
 
 def _cells_of_3d_model(ctx, model, occ, kinds, what: str) -> np.ndarray:

@@ -74,12 +74,15 @@ def beam_element_fields(
     options,
     accelerations: np.ndarray | None = None,
     lumped_mass: bool = False,
+    load_forces: np.ndarray | None = None,
 ) -> dict[str, ElementField]:
     """The requested ELNO fields of beam cells for nodal values (n_orders, n_dofs).
 
     ``accelerations`` (n_orders, n_dofs), when given, adds the inertia forces
     ``M_e a_e`` (consistent mass, or lumped with ``lumped_mass``) to
-    EFGE_ELNO and SIPO_ELNO."""
+    EFGE_ELNO and SIPO_ELNO. ``load_forces`` (n_orders, n_cells, 2, 6), the
+    distributed loads of CALC_CHAMP's EXCIT in the same convention, are taken
+    off EFGE_ELNO, SIPO_ELNO and SIPM_ELNO (not SIEF: code_aster's options)."""
     cells = np.asarray(cells, dtype=int)
     u = element_displacements(model.mesh, numbering, cells, values)
     stiffness = beam_local_forces(model, characteristics, materials, cells, u)
@@ -89,6 +92,8 @@ def beam_element_fields(
         dynamic = stiffness + beam_inertia_forces(
             model, characteristics, materials, cells, a, lumped_mass
         )
+    if load_forces is not None:
+        dynamic = dynamic - load_forces
     out = {}
     for name in options:
         if name == "EFGE_ELNO":
