@@ -11,7 +11,12 @@ from asterlite.fem.beam import BeamError, seg2_angles
 from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS
 from asterlite.fem.frames import angles_from_x_and_y
-from asterlite.fem.sections import SectionError, cara_dict, section_properties
+from asterlite.fem.sections import (
+    SectionError,
+    cara_dict,
+    section_properties,
+    uniform_varying_section,
+)
 from asterlite.fem.selection import as_scalar, as_tuple, select_cells
 
 _BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
@@ -65,7 +70,10 @@ def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
                 ctx.error(f"cell {name} carries no element of the model", "GROUP_MA", occ)
             if modelisation not in DISCRETE_MODELISATIONS:
                 ctx.error(f"cell {name} is a {modelisation} element, not a discrete", "CARA", occ)
-            if modelisation != wanted:
+            # a point mass (M_T_D_N, M_T_D_L: one value) means the same to 2D and 3D
+            # elements, and code_aster gives it under either keyword (vafcar)
+            same_meaning = cara in ("M_T_D_N", "M_T_D_L") and modelisation.endswith("DIS_T")
+            if modelisation != wanted and not same_meaning:
                 ctx.error(
                     f"{cara} needs {wanted} elements but cell {name} is {modelisation}",
                     "CARA",
@@ -130,14 +138,19 @@ def _poutre(ctx, model, result, occ) -> None:
     if section == "COUDE":
         ctx.unsupported("POUTRE SECTION='COUDE' (elbow elements)", "SECTION", occ)
     vari = occ.get("VARI_SECT", "CONSTANT")
-    if vari != "CONSTANT":
-        ctx.unsupported(f"POUTRE VARI_SECT={vari!r} (tapered beams)", "VARI_SECT", occ)
     if occ.get("TABLE_CARA") is not None:
         ctx.unsupported("POUTRE TABLE_CARA (sections from a table)", "TABLE_CARA", occ)
     if occ.get("FCX") is not None:
         ctx.unsupported("POUTRE FCX (wind load function)", "FCX", occ)
     try:
-        props = section_properties(section, cara_dict(occ["CARA"], occ["VALE"]), vari)
+        cara = cara_dict(occ["CARA"], occ["VALE"])
+        if vari != "CONSTANT":
+            # equal start and end values: the constant section, exactly
+            cara = uniform_varying_section(section, vari, cara)
+            if cara is None:
+                what = f"POUTRE VARI_SECT={vari!r} with different start and end (tapered beams)"
+                ctx.unsupported(what, "VARI_SECT", occ)
+        props = section_properties(section, cara)
     except SectionError as exc:
         ctx.error(str(exc), "CARA", occ)
     cells = select_cells(ctx, occ, model.mesh)

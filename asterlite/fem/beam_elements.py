@@ -1,5 +1,5 @@
 """Element computers of straight beams and bars (``POU_D_E``, ``POU_D_T``,
-``BARRE``, ``2D_BARRE``) for :func:`asterlite.fem.elements.element_blocks`.
+``POU_D_TG``, ``BARRE``, ``2D_BARRE``) for :func:`asterlite.fem.elements.element_blocks`.
 
 Each cell needs a section (``AFFE_CARA_ELEM/POUTRE`` or ``BARRE``, kept in
 ``characteristics.sections``) and a material (``CHAM_MATER``: E, NU, RHO,
@@ -22,7 +22,7 @@ from asterlite.fem.beam import BeamError, global_matrices, seg2_angles
 from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
 from asterlite.fem.sections import SectionError
 
-BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "BARRE", "2D_BARRE")
+BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE", "2D_BARRE")
 
 
 def _section_key(section: dict) -> tuple:
