@@ -369,6 +369,8 @@ def run(ctx, kw):
         ctx.unsupported(f"CALC_CHAMP {keyword}={other[0]!r}", keyword, kw)
     if names:
         model, characteristics, materials = _context(ctx, kw, result)
+        # TOUT='OUI' (its only value) is every cell of the model, as without GROUP_MA
+        kw.mark_used("TOUT")
         cells = select_cells(ctx, kw, model.mesh) if kw.get("GROUP_MA") else None
         candidates = sorted(model.cell_modelisation) if cells is None else cells
         beams = np.array(
