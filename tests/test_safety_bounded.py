@@ -153,9 +153,9 @@ def test_the_med_child_caps_its_own_memory(tmp_path):
     loaded plus twice the run's memory limit (handed down by the parent)."""
     script = (
         "import resource\n"
-        "from asterlite.io import med_check\n"
+        "from asterlite.io import med_mesh\n"
         "from asterlite.runtime import watchdog\n"
-        "med_check._cap_own_memory()\n"
+        "med_mesh._cap_own_memory()\n"
         "print(resource.getrlimit(resource.RLIMIT_AS)[0], watchdog.address_space_size())\n"
     )
     environment = dict(os.environ, ASTERLITE_MED_MEMORY_MB="100")

@@ -330,7 +330,8 @@ class _MeshFactory(DeckCallable):
         self.session = session
 
     def deck_call(self, args, kwargs, site: CallSite):
-        from asterlite.concepts.mesh import ReadableMesh
+        # numpy (~150 ms of start-up) stays out of asterlite check: loaded when a deck calls it
+        from asterlite.io.med_mesh import ReadableMesh
 
         if args or kwargs:
             raise UnsupportedError("CA.Mesh() takes no arguments in asterlite", site.location)
