@@ -32,6 +32,13 @@ def run(ctx, kw):
                     model.cell_modelisation[int(cell)] = modelisation
     if not model.cell_modelisation and not model.node_modelisation:
         ctx.error("no element was assigned: check the cell types and MODELISATION", "AFFE", kw)
+    if kw.get("VERI_JACOBIEN", "OUI") == "OUI":
+        from asterlite.fem.jacobian_check import folded_cells
+
+        folded = folded_cells(model)
+        if folded:
+            names = ", ".join(mesh.cell_names[c] for c in folded[:10])
+            ctx.log(f"warning: the Jacobian changes sign inside {len(folded)} cells ({names})")
     counts: dict[str, int] = {}
     for m in model.cell_modelisation.values():
         counts[m] = counts.get(m, 0) + 1

@@ -333,3 +333,20 @@ def test_cantilever_converges_to_beam_theory():
     # the linear quadrangle locks in bending: stiffer, converging from above
     coarse, fine = (_cantilever_frequency("QUAD4", n, m) for n, m in ((20, 2), (80, 8)))
     assert coarse > fine > timoshenko * 0.995
+
+
+def test_folded_cells_are_found_as_code_aster_does():
+    """VERI_JACOBIEN: a QUAD8 whose mid-side node crosses the opposite side
+    has Jacobians of both signs; a cell numbered clockwise (negative
+    everywhere) is not flagged, as in code_aster's te0328."""
+    from asterlite.fem.jacobian_check import folded_cells
+
+    mesh = grid_mesh("QUAD8", (2, 1))
+    model, _ = plane_model(mesh, "D_PLAN")
+    assert folded_cells(model) == []
+    middle = mesh.cell_nodes[0][4]  # the middle of side 1-2
+    mesh.coords[middle, 1] += 1.2
+    assert folded_cells(model) == [0]
+    mesh = grid_mesh("QUAD4", (1, 1))
+    mesh.cell_nodes[0] = tuple(reversed(mesh.cell_nodes[0]))
+    assert folded_cells(plane_model(mesh, "C_PLAN")[0]) == []
