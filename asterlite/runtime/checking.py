@@ -62,7 +62,20 @@ def code_aster_commands() -> dict[str, str]:
     known = dict.fromkeys(names.CURRENT, "17")
     for name, version in names.OLDER.items():
         known.setdefault(name, version)
+    for name in _legacy_language_commands():  # code_aster 10-12's, gone by 15
+        known.setdefault(name, LEGACY_COMMANDS_VERSION)
     return known
+
+
+LEGACY_COMMANDS_VERSION = "10-12"
+
+
+def _legacy_language_commands() -> frozenset[str]:
+    """The commands of code_aster 10-12's language data (v11.json)."""
+    from asterlite.catalog.language.model import language
+
+    old = language(11)
+    return old.command_names if old is not None else frozenset()
 
 
 class UnsupportedCommand(DeckCallable):
@@ -77,6 +90,13 @@ class UnsupportedCommand(DeckCallable):
         return f"<code_aster command {self.name} (not in asterlite)>"
 
     def deck_call(self, args, kwargs, site: CallSite):
+        if self.version == LEGACY_COMMANDS_VERSION:
+            raise UnsupportedError(
+                f"{self.name} is a code_aster 10-12 command that code_aster 15 and 17 no "
+                "longer have; asterlite does not translate it",
+                site.location,
+                self.name,
+            )
         where = "current" if self.version == "17" else f"version {self.version}"
         raise UnsupportedError(
             f"{self.name} is a code_aster command ({where} catalogue) that asterlite "

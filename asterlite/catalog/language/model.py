@@ -27,6 +27,7 @@ from functools import cache
 from pathlib import Path
 
 DATA_PACKAGE = "asterlite.catalogues.language"
+LEGACY_LAST = 12  # the last version whose catalogue was one cata.py (catapy/)
 
 
 def _data_folder() -> Path:
@@ -47,12 +48,15 @@ def available_versions() -> tuple[int, ...]:
 
 def data_version(version: int) -> int | None:
     """The data a deck of code_aster ``version`` is validated with: its own,
-    else that of the nearest version from 13 on (13-14 read as 15, 16 as
-    17); None for versions older than any data (10-12 today)."""
+    else that of the nearest version of the same catalogue layout (10-12,
+    one ``cata.py``: 10 and 12 read as 11; 13 on: 13-14 read as 15, 16 as
+    17); None when that layout has no data."""
     versions = available_versions()
     if version in versions:
         return version
-    if not versions or version < 13:
+    old_layout = version <= LEGACY_LAST
+    versions = [v for v in versions if (v <= LEGACY_LAST) == old_layout]
+    if not versions:
         return None
     return min(versions, key=lambda v: (abs(v - version), -v))
 

@@ -316,6 +316,8 @@ class _Checker:
             if entry is None:
                 continue
             value = level.user[key]
+            if entry.get("statut") == "c" and key not in level.given:
+                continue  # a hidden keyword's default: the supervisor's, not the deck's
             if entry["k"] == "S":
                 self._check_simple(level, key, entry, value)
             else:
