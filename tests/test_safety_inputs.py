@@ -82,7 +82,7 @@ def test_a_damaged_med_mesh_is_a_located_deck_error(tmp_path):
 
 
 def test_a_mesh_too_large_for_the_memory_limit_is_refused_before_reading(tmp_path, monkeypatch):
-    from asterlite.runtime import watchdog
+    from asterlite import watchdog
 
     path = tmp_path / "big.mail"
     lines = [f"N{i} {i}.0 0.0 0.0" for i in range(60000)]

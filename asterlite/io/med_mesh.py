@@ -52,11 +52,11 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite import watchdog
 from asterlite.concepts.mesh import Mesh
 from asterlite.errors import CommandError
 from asterlite.io.input_files import InputFileError, check_regular_file, open_input
 from asterlite.isolation import python_command
-from asterlite.runtime import watchdog
 
 
 class MedMeshError(ValueError):

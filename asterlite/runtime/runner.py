@@ -25,9 +25,10 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from asterlite import watchdog
 from asterlite.errors import AsterliteError, UnsupportedError
 from asterlite.report.fields import summary_fields, summary_lines
-from asterlite.runtime import stops, watchdog
+from asterlite.runtime import stops
 from asterlite.runtime.context import TestRecord
 from asterlite.runtime.export import NOT_PRODUCED, describe_run, limit_refusal
 from asterlite.runtime.outdir import (
