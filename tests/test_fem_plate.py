@@ -169,3 +169,28 @@ def test_simply_supported_square_plate_converges(kind):
     errors = [abs(_square_plate_frequency(kind, n) / exact - 1) for n in (4, 8, 16)]
     assert errors[0] > errors[1] > errors[2]
     assert errors[2] < 3e-3
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_gravity_spreads_the_weight_on_the_corners(kind):
+    """PESANTEUR on plates: rho h g A in total, no moments; a rectangle's
+    corners take a quarter each (code_aster's te0032)."""
+    from asterlite.fem.loads import gravity_terms
+
+    mesh = tilted(grid_mesh(kind, (2, 2), (1.0, 0.8), jitter=0.2, seed=6), ROTATION)
+    model, characteristics, field = plate_model(mesh)
+    terms = gravity_terms(model, characteristics, 9.81, (0.0, 0.0, -1.0), materials=field)
+    total = np.zeros(3)
+    for _, comp, value in terms:
+        assert comp in ("DX", "DY", "DZ")
+        total[("DX", "DY", "DZ").index(comp)] += value
+    assert total == pytest.approx([0.0, 0.0, -9.81 * RHO * H * _area(mesh)], abs=1e-9)
+    if kind == "QUAD4":
+        square = grid_mesh("QUAD4", (1, 1), (2.0, 1.0))
+        model, characteristics, field = plate_model(square)
+        forces = [
+            v
+            for _, c, v in gravity_terms(model, characteristics, 1.0, (0, 0, 1), field)
+            if c == "DZ"
+        ]
+        assert forces == pytest.approx([RHO * H * 2.0 / 4] * 4)

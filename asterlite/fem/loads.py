@@ -24,6 +24,7 @@ from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
+from asterlite.fem.plate_elements import plate_gravity_terms
 from asterlite.fem.solid_loads import solid_cells, solid_load_terms, volume_force_terms
 
 _TRANSLATIONS = ("DX", "DY", "DZ")
@@ -43,9 +44,13 @@ def gravity_terms(model, characteristics, gravity: float, direction, materials=N
     terms = volume_force_terms(model.mesh, solid, d, materials, per_mass=True)
     plane = plane_cells(model, cells)
     terms.extend(surface_force_terms(model, plane, d, materials, per_mass=True))
-    if len(solid) or len(plane):
-        pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
-        cells = sorted({int(c) for c in pool} - set(solid.tolist()) - set(plane.tolist()))
+    # plates: the weight spread on the corners (code_aster's te0032)
+    pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
+    plates = np.array([int(c) for c in pool if model.cell_modelisation.get(int(c)) == "DKT"], int)
+    terms.extend(plate_gravity_terms(model, characteristics, materials, plates, d))
+    if len(solid) or len(plane) or len(plates):
+        handled = set(solid.tolist()) | set(plane.tolist()) | set(plates.tolist())
+        cells = sorted({int(c) for c in pool} - handled)
         if not cells:
             return terms
     for block in element_blocks(model, characteristics, "M", materials=materials, cells=cells):

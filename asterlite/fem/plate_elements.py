@@ -25,6 +25,7 @@ and z is normal to x and to the line joining the middles of sides 1-2 and
   ``rho h^3/12`` of the rotations only with ``INER_ROTA='OUI'`` (code_aster
   leaves it out otherwise); the DRZ term as for the stiffness.
 - Damping: ``AMOR_ALPHA K + AMOR_BETA M`` per element.
+- Gravity: the weight ``rho h g`` spread on the corners without moments.
 
 Characteristics come from ``AFFE_CARA_ELEM/COQUE`` (``EPAIS``,
 ``COEF_RIGI_DRZ``, ``INER_ROTA``, ``EXCENTREMENT``: a mid-surface offset e
@@ -404,6 +405,61 @@ def plate_blocks(
             raise ElementError(f"DKT {kind} cells: {exc}") from None
         blocks.append(ElementBlock(nodes=conn, components=COMPONENTS, matrices=mats))
     return blocks
+
+
+# -- loads ---------------------------------------------------------------------------
+
+
+def nodal_area_weights(coords: np.ndarray) -> np.ndarray:
+    """(e, n) share of a uniform surface load taken by each corner, as
+    code_aster's dxtfor/dxqfor: A/3 on a triangle; on a quadrangle, half the
+    sum over the four corner triangles (i-1, i, i+1) of a third of their
+    (local, projected) area."""
+    frames = local_frames(coords)
+    xy = np.einsum("eij,enj->eni", frames, coords)[..., :2]
+    n = xy.shape[1]
+    if n == 3:
+        d1, d2 = xy[:, 1] - xy[:, 0], xy[:, 2] - xy[:, 0]
+        area = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / 2.0
+        return np.repeat(area[:, None] / 3.0, 3, axis=1)
+    corner = np.zeros((len(xy), 4))
+    for k in range(4):
+        after, before = xy[:, (k + 1) % 4] - xy[:, k], xy[:, k] - xy[:, (k - 1) % 4]
+        corner[:, k] = (before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0]) / 2.0
+    weights = np.zeros_like(corner)
+    for k in range(4):
+        for t in (k - 1, k, k + 1):  # the corner triangles holding node k
+            weights[:, k] += corner[:, t % 4] / 6.0
+    return weights
+
+
+def plate_gravity_terms(model, characteristics, materials, cells, acceleration) -> list:
+    """Nodal forces of gravity ``acceleration`` (3,) on DKT cells: the weight
+    rho h g spread on the corners (no moments), as code_aster's te0032."""
+    mesh = model.mesh
+    acceleration = np.asarray(acceleration, dtype=float)
+    terms = []
+    for kind in _CELLS:
+        members = np.array(
+            [
+                int(c)
+                for c in cells
+                if mesh.cell_types[c] == kind and model.cell_modelisation.get(int(c)) == "DKT"
+            ],
+            dtype=int,
+        )
+        if not members.size:
+            continue
+        conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int)
+        props = _material(materials, members, mesh, need_density=True)
+        shell = shell_values(characteristics, members, mesh)
+        surface = props["RHO"] * shell["EPAIS"]
+        weights = nodal_area_weights(mesh.coords[conn]) * surface[:, None]
+        forces = weights[:, :, None] * acceleration[None, None, :]
+        nodes = np.repeat(conn.ravel(), 3)
+        comps = ["DX", "DY", "DZ"] * conn.size
+        terms.extend(zip(nodes.tolist(), comps, forces.ravel().tolist(), strict=True))
+    return terms
 
 
 def _register() -> None:
