@@ -248,3 +248,27 @@ def _data_file(version: int) -> Path:
     import asterlite.catalogues.language as package
 
     return Path(package.__path__[0]) / f"v{version}.json"
+
+
+def test_old_defaults_read_from_the_data():
+    from asterlite.legacy.language_data import old_default
+
+    assert old_default("MODE_ITER_SIMULT", "CALC_FREQ", "OPTION") == "PLUS_PETITE"
+    assert old_default("MODE_ITER_INV", "CALC_FREQ", "OPTION") == "AJUSTE"
+    assert old_default("PROJ_VECT_BASE", "TYPE_VECT") == "FORC"
+    assert old_default("DYNA_TRAN_MODAL", "PARA_LAME_FLUI", "RESI_RELA") == 1.0e-3
+    with pytest.raises(LookupError):
+        old_default("DYNA_TRAN_MODAL", "PARA_LAME_FLUI", "NO_SUCH")
+    with pytest.raises(LookupError):  # only PARA_LAME_FLUI's and SOLVEUR's in 11
+        old_default("DYNA_TRAN_MODAL", "NMAX_ITER")
+
+
+def test_command_removed_after_12_refused_by_name(tmp_path):
+    from asterlite.runtime.runner import run_deck
+
+    (tmp_path / "d.comm").write_text("DEBUT()\nT = DYNA_LINE_TRAN(MODELE=None)\nFIN()\n")
+    report = run_deck(tmp_path / "d.comm", tmp_path / "out")
+    assert report.status == "UNSUPPORTED"
+    assert "DYNA_LINE_TRAN is a code_aster 10-12 command that code_aster 15 and 17" in (
+        report.message
+    )
