@@ -36,6 +36,7 @@ from asterlite.runtime.outdir import (
     OutputFolderError,
     OutputLimitError,
 )
+from asterlite.runtime.previous_results import DEFAULT_KEEP
 from asterlite.runtime.write_boundary import replace_outside
 
 EXIT_OK, EXIT_NOOK, EXIT_ERROR = 0, 1, 2
@@ -183,6 +184,7 @@ def run_deck(
     aster_version: int | None = None,
     report_page: bool = False,
     result_paths: bool = False,
+    keep_previous: int | None = None,
 ) -> RunReport:
     """Run or check the deck at ``deck`` (an .export or a .comm).
 
@@ -198,6 +200,9 @@ def run_deck(
     one that cannot be taken makes an ERROR report with nothing written.
     The export's ``R`` lines are kept in the output folder, or at their own
     paths with ``result_paths`` (``asterlite run --allow-result-paths``).
+    An earlier result in the folder is moved into ``previous-<time>/``; the
+    ``keep_previous`` most recent of those stay (None: 3, 0: none), see
+    :mod:`asterlite.runtime.previous_results`.
 
     A stop signal ends the run INTERRUPTED; one that comes once the result
     is written is raised after it (RunInterrupted, with ``report`` set).
@@ -206,6 +211,10 @@ def run_deck(
     refusal = limits_refusal(
         time_limit=time_limit, memory_limit=memory_limit, output_limit=output_limit
     )
+    if keep_previous is not None and (
+        isinstance(keep_previous, bool) or not isinstance(keep_previous, int) or keep_previous < 0
+    ):
+        refusal = f"keep_previous={keep_previous!r}: earlier results kept must be a count >= 0"
     if refusal:
         return RunReport(deck.stem, "ERROR", refusal)
     output_bytes = output_cap_bytes(output_limit)
@@ -217,7 +226,11 @@ def run_deck(
             try:
                 cap = log_cap_bytes(output_bytes)
                 folder = OutputFolder(
-                    output_dir, log_cap=cap, deck=deck.stem, protected=input_identities(deck)
+                    output_dir,
+                    log_cap=cap,
+                    deck=deck.stem,
+                    protected=input_identities(deck),
+                    keep_previous=DEFAULT_KEEP if keep_previous is None else keep_previous,
                 ).open()
             except OutputFolderError as error:
                 report = RunReport(deck.stem, "ERROR", str(error))

@@ -21,6 +21,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from asterlite.io.input_files import read_text_or_none
+
 REFE, CALC = "VALE_REFE", "VALE_CALC"
 
 
@@ -50,11 +52,12 @@ def deck_assignments(deck_files, names) -> dict[str, dict]:
     found: dict[str, dict] = {}
     wanted = set(names)
     for path in deck_files or ():
-        try:
-            lines = Path(path).read_text(encoding="utf-8", errors="replace").splitlines()
-        except OSError:
+        # the run's own reader: regular files only (a FIFO would block), the
+        # deck's encoding (UTF-8, declared, Windows-1252), never a byte replaced
+        text = read_text_or_none(Path(path))
+        if text is None:
             continue
-        for number, line in enumerate(lines, 1):
+        for number, line in enumerate(text.splitlines(), 1):
             match = re.match(r"([A-Za-z_]\w*)\s*=(?!=)\s*(.*?)\s*(#.*)?$", line)
             if match and match.group(1) in wanted and match.group(1) not in found:
                 name, value = match.group(1), match.group(2)
