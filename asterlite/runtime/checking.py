@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from asterlite.catalog.model import BLOC, FACT, SIMP
-from asterlite.concepts.base import Placeholder
+from asterlite.concepts.base import AnyPlaceholder, Placeholder
 from asterlite.errors import CommandError, UnsupportedError
 from asterlite.lang.values import CallSite, DeckCallable, Unknown, co_outputs
 
@@ -392,8 +392,6 @@ def undecidable(catalogue, keywords: Keywords) -> bool:
 
 
 def _untyped_concept(entry: SIMP, value) -> bool:
-    from asterlite.runtime.session import AnyPlaceholder
-
     items = value if isinstance(value, (list, tuple)) else (value,)
     concept_typed = any(t not in VALUE_TYPES for t in entry.types if isinstance(t, str))
     return any(

@@ -22,7 +22,7 @@ from typing import Any
 from asterlite import watchdog
 from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
-from asterlite.concepts.base import Concept, Placeholder
+from asterlite.concepts.base import AnyPlaceholder, Concept, Placeholder
 from asterlite.errors import (
     AsterliteError,
     CommandError,
@@ -34,6 +34,9 @@ from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
+from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
+from asterlite.legacy.runtime import translate_call
+from asterlite.legacy.version import PYTHON2_LAST, session_version
 from asterlite.runtime import console
 from asterlite.runtime.context import CommandContext, TestRecord
 from asterlite.runtime.export import RunDescription
@@ -50,16 +53,6 @@ class UnknownOverrideError(AsterliteError):
     """A ``--set NAME=...`` override names a variable the deck never assigns."""
 
     kind = "unknown variable"
-
-
-class AnyPlaceholder(Placeholder):
-    """Stands for a concept of a type ``asterlite check`` cannot tell."""
-
-    def __init__(self, produced_by: str = ""):
-        super().__init__("*", produced_by)
-
-    def satisfies(self, type_name: str) -> bool:
-        return True
 
 
 @dataclass
@@ -166,6 +159,11 @@ class Session:
 
     def record_test(self, record: TestRecord) -> None:
         self.tests.append(record)
+
+    def command(self, name: str) -> CommandProxy:
+        """The deck command ``name`` run in this session (what a deck calling
+        it gets; legacy translations and the code_aster object API call it)."""
+        return CommandProxy(name, self)
 
     def input_path(self, unit: int) -> Path:
         """The input file the run maps to logical ``unit``."""
@@ -304,8 +302,6 @@ class Session:
     def _python2_allowed(self, module, path: Path) -> None:
         """A Python 2 deck runs as one of code_aster 13 or older; in a run read
         as a later version, its Python 3 syntax error stands."""
-        from asterlite.legacy.version import PYTHON2_LAST, session_version
-
         version = session_version(self)
         if version > PYTHON2_LAST:
             error = module.python3_error
@@ -324,7 +320,6 @@ class Session:
         text also reads as Python 3: its '/' of integers, map/zip/range...
         meant Python 2's (asterlite.lang.python2)."""
         from asterlite.lang import parse_deck
-        from asterlite.legacy.version import PYTHON2_LAST, session_version
 
         version = session_version(self)
         if version > PYTHON2_LAST:
@@ -532,12 +527,8 @@ class CommandProxy(DeckCallable):
             raise UnsupportedError(f"command {self.name} is not supported", site.location)
         kwargs = dict(kwargs)
         reuse = kwargs.pop("reuse", None)
-        from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
-
         kwargs = v11.before_call(self.name, kwargs, site, session)
         if catalogue.compat_syntax is not None:  # legacy syntax: check as written, translate
-            from asterlite.legacy.runtime import translate_call
-
             modern = translate_call(catalogue, kwargs, site, session, reuse=reuse)
             if modern is not None:
                 name, catalogue, kwargs = modern
@@ -632,8 +623,6 @@ class CommandProxy(DeckCallable):
                 error.path = self.name
             raise
         refuse_unread(keywords)
-        from asterlite.legacy import v11
-
         concept = v11.after_run(self.name, concept, session)
         seconds = time.perf_counter() - start
         session.timings.append(CommandTiming(self.name, site.location, site.assigned_name, seconds))
