@@ -246,3 +246,28 @@ def test_deck_assignments_read_decks_as_the_run_does(tmp_path):
         pytest.fail("deck_assignments waited on a FIFO")
     assert found["TITRE"]["text"] == "TITRE = 'essai à froid'"
     assert found["MU"] == {"text": "MU = 0.15", "file": "latin.comm", "line": 2}
+
+
+def test_records_survive_a_report_and_a_killed_run_settled(tmp_path, deck):
+    """Re-signing a summary (asterlite report adding report.html, a killed
+    run settled by asterlite status) keeps the records of previous folders."""
+    from asterlite.report import write_report
+    from asterlite.runtime.folder_status import folder_status
+
+    out = tmp_path / "out"
+    rerun(deck, out)
+    first = rerun(deck, out)
+    write_report(out)
+    assert "report.html" in summary(out)["output"]["files"]
+    assert set(summary(out)["manifest"]["previous"]) == {first}
+    # the run after it is killed while RUNNING: its summary (signed, the
+    # records carried) says RUNNING and no process holds the folder
+    second = rerun(deck, out)
+    data = summary(out)
+    data.update(status="RUNNING", message="running")
+    manifest.sign(data, os.stat(out), data["manifest"]["entries"], data["manifest"]["previous"])
+    (out / "summary.json").write_text(json.dumps(data))
+    assert folder_status(out).status == "KILLED"
+    assert set(summary(out)["manifest"]["previous"]) == {first, second}
+    rerun(deck, out, keep_previous=0)
+    assert previous(out) == []
