@@ -220,14 +220,19 @@ def bar_element_fields(
 def nodal_average(field: ElementField, mesh, name: str) -> NodalComponentField:
     """``*_NOEU`` from an ELNO field: at each node, the mean over the cells
     holding it of their value at that node."""
-    conn = np.array([mesh.cell_nodes[c] for c in field.cells], dtype=int)
-    nodes = np.unique(conn)
-    position = np.searchsorted(nodes, conn)  # (n_cells, n_points)
+    connectivity = [mesh.cell_nodes[c] for c in field.cells]
+    nodes = np.unique(np.concatenate([np.asarray(c, dtype=int) for c in connectivity]))
     n_orders, _, _, n_cmp = field.values.shape
     # complex for a harmonic result's fields
     sums = np.zeros((n_orders, len(nodes), n_cmp), dtype=np.result_type(field.values, float))
     counts = np.zeros(len(nodes))
-    for point in range(conn.shape[1]):
-        np.add.at(sums, (slice(None), position[:, point]), field.values[:, :, point, :])
-        np.add.at(counts, position[:, point], 1.0)
+    # cells of one node count at a time (a field on several cell types is padded)
+    sizes = np.array([len(c) for c in connectivity])
+    for size in np.unique(sizes):
+        rows = np.nonzero(sizes == size)[0]
+        conn = np.array([connectivity[r] for r in rows], dtype=int)
+        position = np.searchsorted(nodes, conn)  # (n_rows, size)
+        for point in range(size):
+            np.add.at(sums, (slice(None), position[:, point]), field.values[:, rows, point, :])
+            np.add.at(counts, position[:, point], 1.0)
     return NodalComponentField(name, nodes, field.components, sums / counts[None, :, None])
