@@ -25,7 +25,7 @@ from collections import defaultdict
 import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
-from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.plane_elements import plane_coordinates
 from asterlite.fem.plane_loads import segment_basis
 from asterlite.fem.solid_reference import tabulated
@@ -152,11 +152,3 @@ def absorbing_blocks(
         mats = boundary_matrices(*geometry, normal_coef, tangential_coef)
         blocks.append(ElementBlock(nodes=conn, components=components, matrices=mats))
     return blocks
-
-
-def _register() -> None:
-    for name in ABSORBING_MODELISATIONS:
-        ELEMENT_COMPUTERS.setdefault(name, absorbing_blocks)
-
-
-_register()

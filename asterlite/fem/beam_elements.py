@@ -19,7 +19,7 @@ import numpy as np
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam
 from asterlite.fem.beam import BeamError, global_matrices, seg2_angles
-from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.sections import SectionError
 
 BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE", "2D_BARRE")
@@ -131,14 +131,6 @@ def beam_blocks(
             names = ", ".join(mesh.cell_names[c] for c in cells[rows][:3])
             raise ElementError(f"{modelisation} cells {names}: {exc}") from None
     return [ElementBlock(nodes=conn, components=components, matrices=out)]
-
-
-def _register() -> None:
-    for name in BEAM_MODELISATIONS:
-        ELEMENT_COMPUTERS.setdefault(name, beam_blocks)
-
-
-_register()
 
 
 # -- internal forces ------------------------------------------------------------------

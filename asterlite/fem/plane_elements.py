@@ -26,7 +26,7 @@ from collections import defaultdict
 import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
-from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.solid_elements import jacobians
 from asterlite.fem.solid_reference import CellKind, tabulated
 
@@ -202,11 +202,3 @@ def plane_blocks(
             raise ElementError(f"{modelisation} {kind_name} cells: {exc}") from None
         blocks.append(ElementBlock(nodes=conn, components=COMPONENTS, matrices=mats))
     return blocks
-
-
-def _register() -> None:
-    for name in PLANE_MODELISATIONS:
-        ELEMENT_COMPUTERS.setdefault(name, plane_blocks)
-
-
-_register()

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.elements import ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.plane_elements import (
     PLANE_MODELISATIONS,
     cells_by_type,

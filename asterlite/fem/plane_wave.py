@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from asterlite.fem.absorbing_elements import _edge_geometry, _face_geometry, _material
-from asterlite.fem.elements import ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.plane_elements import plane_coordinates
 
 _EPS = np.finfo(float).eps

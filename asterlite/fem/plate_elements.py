@@ -38,7 +38,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
-from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.solid_reference import REFERENCE_ELEMENTS, gauss_family
 
 COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
@@ -460,11 +460,3 @@ def plate_gravity_terms(model, characteristics, materials, cells, acceleration) 
         comps = ["DX", "DY", "DZ"] * conn.size
         terms.extend(zip(nodes.tolist(), comps, forces.ravel().tolist(), strict=True))
     return terms
-
-
-def _register() -> None:
-    for name in PLATE_MODELISATIONS:
-        ELEMENT_COMPUTERS.setdefault(name, plate_blocks)
-
-
-_register()
