@@ -440,6 +440,10 @@ def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
     load = MechanicalLoad(model=model)
+    if not kw.factor("PRES_REP"):
+        # VERI_NORM checks the faces of loads along their normal (PRES_REP here):
+        # without them code_aster has nothing to check
+        kw.mark_used("VERI_NORM")
     for occ in kw.factor("DDL_IMPO"):
         _ddl_impo(ctx, model, components, load, occ)
     for occ in kw.factor("LIAISON_DDL"):

@@ -114,3 +114,19 @@ def test_dtan_on_a_3d_face_is_an_error():
             MODELE=model,
             FACE_IMPO={"GROUP_MA": "XMAX", "DTAN": 0.0},
         )
+
+
+def test_veri_norm_without_pressure_faces_checks_nothing():
+    from asterlite.catalog.keywords import unread_keywords
+    from tests.test_fem_support import keywords
+
+    _, model = _box_with_face()
+    from asterlite.commands import affe_char_meca
+
+    from asterlite.runtime.context import CommandContext
+
+    kw = keywords("AFFE_CHAR_MECA", {"MODELE": model, "VERI_NORM": "NON",
+                                     "FACE_IMPO": {"GROUP_MA": "XMAX", "DX": 0.0}})  # fmt: skip
+    kw.given = frozenset(kw)
+    affe_char_meca.run(CommandContext(session=FakeSession(), command="AFFE_CHAR_MECA"), kw)
+    assert unread_keywords(kw) == []
