@@ -529,6 +529,10 @@ def classify_deck_error(session, error: AsterliteError) -> AsterliteError | None
         return error
     if not isinstance(error, DeckRuntimeError):
         return error
+    if type(error).__name__ == "DeckRaised":
+        # the deck's own raise, on values check computed without running the
+        # study (a file a tool makes first, a result): no verdict on the language
+        return _unsupported_python(error, "the deck raises here; check cannot tell if a run would")
     kind = getattr(error, "python_type", None)
     if kind is None and type(error) is DeckRuntimeError:
         return _unsupported_python(error, "refused by asterlite's deck evaluator")
