@@ -350,3 +350,13 @@ def test_folded_cells_are_found_as_code_aster_does():
     mesh = grid_mesh("QUAD4", (1, 1))
     mesh.cell_nodes[0] = tuple(reversed(mesh.cell_nodes[0]))
     assert folded_cells(plane_model(mesh, "C_PLAN")[0]) == []
+
+
+def test_axis_cells_left_of_the_axis_are_found():
+    from asterlite.fem.jacobian_check import negative_radius_nodes
+
+    mesh = grid_mesh("QUAD4", (2, 1), (1.0, 1.0), origin=(0.0, 0.0))
+    model, _ = plane_model(mesh, "AXIS")
+    assert negative_radius_nodes(model) == []
+    mesh.coords[0, 0] = -0.1
+    assert negative_radius_nodes(model) == [(0, 0)]

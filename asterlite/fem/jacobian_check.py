@@ -1,4 +1,7 @@
-"""code_aster's VERI_JACOBIEN check of a model's solid cells.
+"""Checks code_aster makes on a model's cells when AFFE_MODELE builds it.
+
+Axisymmetric cells (``AXIS``) must lie in x >= 0 (x is the radius): a node
+at x < -1e-6 x_max (x_max the mesh's largest x) stops the command.
 
 ``AFFE_MODELE`` (``VERI_JACOBIEN='OUI'``, its default) computes the Jacobian
 of every 3D and plane solid cell at the points of its RIGI family and warns
@@ -38,3 +41,18 @@ def folded_cells(model) -> list[int]:
         mixed = np.any(det > 0.0, axis=1) & np.any(det < 0.0, axis=1)
         folded.extend(int(c) for c in np.asarray(members)[mixed])
     return sorted(folded)
+
+
+def negative_radius_nodes(model) -> list[tuple[int, int]]:
+    """(node, cell) pairs of AXIS cells with a node at x < -1e-6 |x_max|
+    (code_aster's taxis)."""
+    mesh = model.mesh
+    tolerance = -1e-6 * abs(float(mesh.coords[:, 0].max()))
+    out = []
+    for cell, modelisation in sorted(model.cell_modelisation.items()):
+        if modelisation != "AXIS":
+            continue
+        for node in mesh.cell_nodes[cell]:
+            if mesh.coords[node, 0] < tolerance:
+                out.append((int(node), int(cell)))
+    return out

@@ -69,11 +69,11 @@ def plane_coordinates(mesh, conn: np.ndarray) -> np.ndarray:
     """(e, n, 2) in-plane coordinates of cells; the cells must lie in z = const."""
     coords = mesh.coords[conn]
     z = coords[..., 2]
-    if np.any(np.abs(z - z[:, :1]) > 1e-9 * (1.0 + np.abs(coords[..., :2]).max())):
-        bad = int(np.nonzero(np.any(np.abs(z - z[:, :1]) > 0, axis=1))[0][0])
-        raise ElementError(
-            f"plane elements must lie in the (x, y) plane (node z varies, cell {bad})"
-        )
+    off = np.abs(z - z[:, :1]) > 1e-9 * (1.0 + np.abs(coords[..., :2]).max())
+    if np.any(off):
+        nodes = conn[np.nonzero(np.any(off, axis=1))[0][0]]
+        names = ", ".join(mesh.node_names[n] for n in nodes)
+        raise ElementError(f"plane elements must lie in a plane z = const (nodes {names})")
     return coords[..., :2]
 
 
