@@ -194,3 +194,21 @@ def test_gravity_spreads_the_weight_on_the_corners(kind):
             if c == "DZ"
         ]
         assert forces == pytest.approx([RHO * H * 2.0 / 4] * 4)
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_diagonal_mass(kind):
+    """MASS_MECA_DIAG: diagonal, each translation summing to rho h A per cell,
+    rotations scaled like their translation (code_aster's dialum)."""
+    mesh = tilted(grid_mesh(kind, (1, 1), (1.0, 0.8), jitter=0.0), ROTATION)
+    model, characteristics, field = plate_model(mesh)
+    (block,) = element_blocks(model, characteristics, "M", materials=field, lumped=True)
+    (full,) = element_blocks(model, characteristics, "M", materials=field)
+    for lumped, consistent in zip(block.matrices, full.matrices, strict=True):
+        assert np.count_nonzero(lumped - np.diag(np.diag(lumped))) == 0
+        d, c = np.diag(lumped).reshape(-1, 6), np.diag(consistent).reshape(-1, 6)
+        area = RHO * H * _area(mesh) / (2 if kind == "TRIA3" else 1)
+        assert d[:, :3].sum(axis=0) == pytest.approx([area] * 3)
+        ratio = d[:, :3].sum(axis=0) / c[:, :3].sum(axis=0)
+        nonzero = c[:, 3:] != 0.0
+        assert np.allclose(d[:, 3:][nonzero], (c[:, 3:] * ratio)[nonzero])

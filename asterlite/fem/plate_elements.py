@@ -24,6 +24,8 @@ and z is normal to x and to the line joining the middles of sides 1-2 and
   incomplete cubic (nodal w and slopes) on the RIGI family; rotary inertia
   ``rho h^3/12`` of the rotations only with ``INER_ROTA='OUI'`` (code_aster
   leaves it out otherwise); the DRZ term as for the stiffness.
+- Diagonal mass (``MASS_MECA_DIAG``): code_aster's lumping of the global
+  consistent matrix's diagonal (translations scaled to the element mass).
 - Damping: ``AMOR_ALPHA K + AMOR_BETA M`` per element.
 - Gravity: the weight ``rho h g`` spread on the corners without moments.
 
@@ -379,8 +381,6 @@ def plate_blocks(
     """Global-frame K, M or A matrices of the DKT cells among ``cells``."""
     if matrix not in ("K", "M", "A"):
         raise ElementError(f"unknown element matrix {matrix!r}")
-    if lumped and matrix != "K":
-        raise ElementError("MASS_MECA_DIAG of DKT elements is not available")
     mesh = model.mesh
     blocks = []
     for kind in _CELLS:
@@ -399,12 +399,43 @@ def plate_blocks(
                     mats += alpha[:, None, None] * plate_matrices("K", coords, kind, props, shell)
                 if np.any(beta):
                     mats += beta[:, None, None] * plate_matrices("M", coords, kind, props, shell)
+            elif matrix == "M" and lumped:
+                consistent = plate_matrices("M", coords, kind, props, shell)
+                mass = np.nan_to_num(props["RHO"]) * shell["EPAIS"] * plate_areas(coords)
+                mats = lump_plate_mass(consistent, mass)
             else:
                 mats = plate_matrices(matrix, coords, kind, props, shell)
         except ElementError as exc:
             raise ElementError(f"DKT {kind} cells: {exc}") from None
         blocks.append(ElementBlock(nodes=conn, components=COMPONENTS, matrices=mats))
     return blocks
+
+
+def plate_areas(coords: np.ndarray) -> np.ndarray:
+    """(e,) areas of plate cells in their local planes (projected)."""
+    return nodal_area_weights(coords).sum(axis=1)
+
+
+def lump_plate_mass(consistent: np.ndarray, mass: np.ndarray) -> np.ndarray:
+    """code_aster's MASS_MECA_DIAG of plates (dialum): the diagonal of the
+    global consistent matrix, the DX terms (and DRX's) scaled so that they
+    sum to the element mass, likewise DY (DRY) and DZ (DRZ); a zero diagonal
+    term becomes 1e-5 x the DX scale x the smallest non-zero term."""
+    e, size, _ = consistent.shape
+    diag = np.einsum("eii->ei", consistent).reshape(e, size // 6, 6)
+    sums = diag[:, :, :3].sum(axis=1)  # (e, 3): DX, DY, DZ
+    scale = mass[:, None] / sums
+    lumped = diag * np.concatenate([scale, scale], axis=1)[:, None, :]
+    flat_diag = diag.reshape(e, size)
+    zero = flat_diag == 0.0
+    smallest = np.where(zero, np.inf, flat_diag).min(axis=1)
+    filler = 1e-5 * scale[:, 0] * np.minimum(smallest, flat_diag[:, 0])
+    lumped = lumped.reshape(e, size)
+    lumped[zero] = np.broadcast_to(filler[:, None], (e, size))[zero]
+    out = np.zeros_like(consistent)
+    idx = np.arange(size)
+    out[:, idx, idx] = lumped
+    return out
 
 
 # -- loads ---------------------------------------------------------------------------
