@@ -360,3 +360,15 @@ def test_axis_cells_left_of_the_axis_are_found():
     assert negative_radius_nodes(model) == []
     mesh.coords[0, 0] = -0.1
     assert negative_radius_nodes(model) == [(0, 0)]
+
+
+def test_plane_models_are_two_dimensional():
+    """A model of plane solids (with their absorbing edges or 2D discrete
+    elements) is 2D: FACE_IMPO DNOR, LIAISON_SOLIDE use edge normals and DRZ."""
+    mesh = grid_mesh("QUAD4", (1, 1))
+    for names in (("D_PLAN",), ("C_PLAN", "2D_DIS_T"), ("AXIS",), ("D_PLAN", "D_PLAN_ABSO")):
+        model = Model(mesh=mesh, cell_modelisation={0: names[0]}, node_modelisation={})
+        for k, name in enumerate(names[1:]):
+            model.node_modelisation[k] = name
+        assert model.dim == 2
+    assert Model(mesh=mesh, cell_modelisation={0: "DKT"}).dim == 3
