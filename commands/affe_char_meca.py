@@ -169,10 +169,13 @@ def _face_impo(ctx, model, components, load, occ) -> None:
     code_aster's cafaci/canort build them."""
     from asterlite.fem.elements import ElementError
     from asterlite.fem.node_normals import node_normals
+    from asterlite.fem.skin import is_plane
 
     mesh = model.mesh
-    dim = 2 if model.dim == 2 else 3
     cells = [int(c) for c in cell_group_members(ctx, occ, mesh, "GROUP_MA")]
+    # a plane model's skin is made of edges (its mesh may have a constant Z)
+    edges = all(mesh.cell_types[c] in ("SEG2", "SEG3") for c in cells)
+    dim = 2 if model.dim == 2 or (edges and is_plane(mesh)) else 3
     excluded_cells = set()
     if occ.get("SANS_GROUP_MA"):
         excluded_cells = {int(c) for c in cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")}
