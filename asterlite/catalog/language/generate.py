@@ -710,8 +710,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--older",
         metavar="VERSION:COMMIT:PATH",
+        action="append",
         help="versions 10-12: an older catalogue of the same tree whose keyword names and "
-        "commands the data keeps as legacy (decks of that version read with this data)",
+        "commands the data keeps as legacy (decks of that version read with this data); "
+        "repeated, newest first",
     )
     args = parser.parse_args(argv)
     if args.version <= LEGACY_LAST:  # one cata.py of Python 2 (legacy_layout)
@@ -721,14 +723,15 @@ def main(argv: list[str] | None = None) -> int:
             Path(args.tree), args.version, args.commit, args.catalogue
         )
         data, problems = generate_legacy(text, args.version, where, types)
-        if args.older:
-            from asterlite.catalog.language.legacy_layout import merge_older
+        from asterlite.catalog.language.legacy_layout import merge_older
 
-            version, commit, path = args.older.split(":", 2)
-            text, where, types = read_catalogue(Path(args.tree), int(version), commit, path)
-            older, older_problems = generate_legacy(text, int(version), where, types)
-            problems += [f"older: {p}" for p in older_problems]
-            data = merge_older(data, older)
+        for given in args.older or ():  # newest first
+            label, commit, path = given.split(":", 2)  # label: "11.0", "10"
+            major = int(label.split(".")[0])
+            text, where, types = read_catalogue(Path(args.tree), major, commit, path)
+            older, older_problems = generate_legacy(text, major, where, types)
+            problems += [f"older {label}: {p}" for p in older_problems]
+            data = merge_older(data, older, label)
     else:
         source = open_source(Path(args.tree), args.commit)
         data, problems = generate(source, args.version)

@@ -516,22 +516,26 @@ def keyword_paths(command: dict) -> set[tuple[str, ...]]:
     return found
 
 
-def merge_older(data: dict, older: dict) -> dict:
+def merge_older(data: dict, older: dict, label: str) -> dict:
     """``data`` reading decks of the versions before it too: a keyword the
     older catalogue had in a command and ``data``'s lacks at that level has
     its name recorded in the command's ``legacy`` names (accepted, its level not
     judged: the check cannot tell where the older spelling went), and a
     command only the older catalogue has is kept with the older data,
-    marked ``"older": VERSION``."""
+    marked ``"older": label`` (the version the older catalogue is of, as
+    ``"11.0"`` or ``"10"``)."""
     commands = data["commands"]
     for name, old in older["commands"].items():
         if name not in commands:
-            commands[name] = {**old, "older": older["header"]["version"]}
+            commands[name] = {**old, "older": label}
+            continue
+        if "older" in commands[name]:  # a command an older catalogue gave already
             continue
         gone = {path[-1] for path in keyword_paths(old) - keyword_paths(commands[name])}
         if gone:
             legacy = set(commands[name].get("legacy", ())) | gone
             commands[name]["legacy"] = sorted(legacy)
     data["commands"] = dict(sorted(commands.items()))
-    data["header"]["older"] = {"version": older["header"]["version"], **older["header"]["source"]}
+    source = {"version": label, **older["header"]["source"]}
+    data["header"]["older"] = [*data["header"].get("older", ()), source]
     return data
