@@ -1,5 +1,5 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE, LIAISON_ELEM 3D_POU, FACE_IMPO) and loads (FORCE_NODALE,
+LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_ELEM 3D_POU, FACE_IMPO) and loads (FORCE_NODALE,
 PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP, FORCE_INTERNE on 3D solids;
 PRES_REP, FORCE_CONTOUR on the edges and FORCE_INTERNE on the surfaces of plane
 models) on a model."""
@@ -212,6 +212,84 @@ def _face_impo(ctx, model, components, load, occ) -> None:
                 applied += 1
         if applied == 0:
             ctx.error(f"no node of the faces carries {comp}", comp, occ)
+
+
+def _group_side(ctx, occ, mesh, side: str) -> list[int]:
+    """The nodes of GROUP_NO_<side> or of the cells of GROUP_MA_<side>, in order."""
+    if occ.get(f"GROUP_NO_{side}"):
+        nodes = node_group_members(ctx, occ, mesh, f"GROUP_NO_{side}")
+    else:
+        cells = cell_group_members(ctx, occ, mesh, f"GROUP_MA_{side}")
+        nodes = mesh.nodes_of_cells(cells).tolist()
+    return [int(n) for n in dict.fromkeys(nodes)]
+
+
+def _paired_nodes(ctx, occ, mesh) -> list[tuple[int, int]]:
+    """code_aster's pairing (pacoap): each node of list 1, moved by ANGL_NAUT
+    about CENTRE then TRAN, takes the nearest node of list 2; the lists have
+    the same length and no node of list 2 may be taken twice."""
+    from asterlite.fem.frames import rotation_from_angles
+
+    first, second = _group_side(ctx, occ, mesh, "1"), _group_side(ctx, occ, mesh, "2")
+    if len(first) != len(second):
+        ctx.error(
+            f"LIAISON_GROUP pairs {len(first)} nodes with {len(second)}: the lists must "
+            "have the same length",
+            "GROUP_NO_2" if occ.get("GROUP_NO_2") else "GROUP_MA_2",
+            occ,
+        )
+    vector = {}
+    for key in ("TRAN", "CENTRE"):
+        given = np.asarray(as_tuple(occ.get(key) or (0.0, 0.0, 0.0)), dtype=float)
+        vector[key] = np.pad(given, (0, 3 - given.size))
+    angles = np.asarray(as_tuple(occ.get("ANGL_NAUT") or (0.0, 0.0, 0.0)), dtype=float)
+    rotation = rotation_from_angles(np.radians(np.pad(angles, (0, 3 - angles.size))))
+    moved = (mesh.coords[first] - vector["CENTRE"]) @ rotation + vector["CENTRE"] + vector["TRAN"]
+    targets = mesh.coords[second]
+    pairs, taken = [], {}
+    for node, x in zip(first, moved, strict=True):
+        nearest = second[int(np.argmin(np.sum((targets - x) ** 2, axis=1)))]
+        if nearest in taken:
+            names = mesh.node_names
+            ctx.error(
+                f"LIAISON_GROUP: nodes {names[taken[nearest]]} and {names[node]} both face "
+                f"node {names[nearest]}",
+                "GROUP_NO_1" if occ.get("GROUP_NO_1") else "GROUP_MA_1",
+                occ,
+            )
+        taken[nearest] = node
+        pairs.append((node, nearest))
+    return pairs
+
+
+def _liaison_group(ctx, model, components, load, occ) -> None:
+    """sum_k COEF_MULT_1[k] u1[DDL_1[k]] + sum_k COEF_MULT_2[k] u2[DDL_2[k]] = COEF_IMPO
+    for each pair of nodes (code_aster's caliag); DNOR refused."""
+    mesh = model.mesh
+    sides = {}
+    for side in ("1", "2"):
+        ddl = as_tuple(occ[f"DDL_{side}"])
+        coefs = as_tuple(occ[f"COEF_MULT_{side}"])
+        if len(ddl) != len(coefs):
+            ctx.error(f"DDL_{side} and COEF_MULT_{side} differ in length", f"DDL_{side}", occ)
+        if "DNOR" in ddl:
+            ctx.unsupported("LIAISON_GROUP DDL_1/DDL_2='DNOR'", f"DDL_{side}", occ)
+        sides[side] = list(zip(ddl, (float(c) for c in coefs), strict=True))
+    excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
+    for node_1, node_2 in _paired_nodes(ctx, occ, mesh):
+        if node_1 in excluded or node_2 in excluded:
+            continue
+        terms = []
+        for node, side in ((node_1, "1"), (node_2, "2")):
+            for comp, coef in sides[side]:
+                if comp not in components.get(node, ()):
+                    ctx.error(
+                        f"node {mesh.node_names[node]} has no {comp} DOF in this model",
+                        f"DDL_{side}",
+                        occ,
+                    )
+                terms.append((node, comp, coef))
+        load.relations.append(LinearRelation(terms, float(occ["COEF_IMPO"])))
 
 
 def _liaison_elem(ctx, model, components, load, occ) -> None:
@@ -463,6 +541,8 @@ def run(ctx, kw):
         _liaison_elem(ctx, model, components, load, occ)
     for occ in kw.factor("FACE_IMPO"):
         _face_impo(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_GROUP"):
+        _liaison_group(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]
