@@ -1,5 +1,7 @@
 """AFFE_CHAR_MECA_F: DDL_IMPO, FORCE_NODALE and FORCE_POUTRE whose values are
-functions (DEFI_FONCTION, FORMULE, DEFI_CONSTANTE) of the geometry.
+functions (DEFI_FONCTION, FORMULE, DEFI_CONSTANTE) of the geometry, and
+ONDE_PLANE (a seismic plane wave on paraxial boundaries, kept as a wave: its
+nodal forces are a history, asterlite.fem.plane_wave).
 
 code_aster evaluates such a function where the load acts: at the node for
 DDL_IMPO and FORCE_NODALE, at both nodes of each beam cell for FORCE_POUTRE
@@ -83,6 +85,43 @@ def _force_poutre(ctx, model, load, occ) -> None:
     )
 
 
+def _onde_plane(ctx, model, load, occ) -> None:
+    """The wave and the absorbing cells it loads (3D_ABSO faces, D_PLAN_ABSO
+    edges); the forces at each instant come from plane_wave_history."""
+    from asterlite.fem.plane_wave import PlaneWave
+    from asterlite.fem.selection import select_cells
+
+    def point(key):
+        given = occ.get(key)
+        if given is None:
+            return None
+        values = np.asarray(given, dtype=float).ravel()
+        return np.pad(values, (0, 3 - values.size))
+
+    cells = select_cells(ctx, occ, model.mesh) if occ.get("GROUP_MA") else None
+    if cells is None:
+        cells = [c for c, m in model.cell_modelisation.items() if m in ("3D_ABSO", "D_PLAN_ABSO")]
+    wrong = [
+        c for c in cells if model.cell_modelisation.get(int(c)) not in ("3D_ABSO", "D_PLAN_ABSO")
+    ]
+    if wrong:
+        ctx.error(
+            f"ONDE_PLANE on cell {model.mesh.cell_names[wrong[0]]}, which is not an absorbing "
+            "boundary (3D_ABSO, D_PLAN_ABSO)",
+            "GROUP_MA",
+            occ,
+        )
+    wave = PlaneWave(
+        kind=occ["TYPE_ONDE"],
+        direction=np.asarray(occ["DIRECTION"], dtype=float),
+        signal=occ["FONC_SIGNAL"],
+        source=point("COOR_SOURCE"),
+        reflection=point("COOR_REFLECHI"),
+        displacement=occ.get("DEPL_IMPO"),
+    )
+    load.extra["ONDE_PLANE"] = {"CELLS": np.asarray(cells, dtype=int), "WAVE": wave}
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
@@ -95,5 +134,7 @@ def run(ctx, kw):
         affe_char_meca._force_nodale(ctx, model, components, load, occ, value_at=value_at)
     for occ in kw.factor("FORCE_POUTRE"):
         _force_poutre(ctx, model, load, occ)
+    for occ in kw.factor("ONDE_PLANE"):
+        _onde_plane(ctx, model, load, occ)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load

@@ -116,3 +116,31 @@ def test_calc_champ_excit_takes_the_line_load_off_the_internal_forces():
     # SIEF_ELNO keeps K u (code_aster gives its option no load)
     sief = out.element_fields["SIEF_ELNO"]
     assert abs(sief.values[1, middle, 1, mfz] - efge.values[1, middle, 1, mfz]) > 1e-3 * q
+
+
+def test_onde_plane_is_kept_as_a_wave_and_refused_as_a_vector():
+    from asterlite.concepts.assembly import Model
+    from tests.solid_meshes import box_mesh, with_side_faces
+
+    mesh = with_side_faces(box_mesh("HEXA8", n=(1, 1, 1)), {"BASE": (2, 0.0)})
+    modelisation = {c: "3D" for c in range(mesh.n_cells)}
+    modelisation.update({int(c): "3D_ABSO" for c in mesh.cell_groups["BASE"]})
+    model = Model(mesh=mesh, cell_modelisation=modelisation)
+    signal = Formula(VALE="sin(INST)", NOM_PARA=("INST",))
+    load = run(
+        FakeSession(),
+        "AFFE_CHAR_MECA_F",
+        MODELE=model,
+        ONDE_PLANE={
+            "DIRECTION": (0.0, 0.0, 1.0),
+            "TYPE_ONDE": "P",
+            "FONC_SIGNAL": signal,
+            "COOR_SOURCE": (0.0, 0.0, -1.0),
+            "GROUP_MA": "BASE",
+        },
+    )
+    item = load.extra["ONDE_PLANE"]
+    assert item["CELLS"].tolist() == mesh.cell_groups["BASE"].tolist()
+    assert item["WAVE"].kind == "P" and item["WAVE"].source.tolist() == [0.0, 0.0, -1.0]
+    with pytest.raises(UnsupportedError, match="ONDE_PLANE"):
+        load_terms(load)

@@ -202,6 +202,16 @@ def load_terms(load, characteristics=None, materials=None, complex_values=False)
 
 
 def _real_load_terms(load, characteristics=None, materials=None) -> list:
+    if load.extra.get("ONDE_PLANE") is not None:
+        from asterlite.errors import UnsupportedError
+
+        # each boundary point sees the wave with its own delay: no vector times f(t)
+        raise UnsupportedError(
+            f"the ONDE_PLANE load {load.name or ''} (AFFE_CHAR_MECA_F) where a fixed "
+            "load vector is taken: its forces are a history of time and space "
+            "(asterlite.fem.plane_wave.plane_wave_history), which this command does not "
+            "take yet"
+        )
     model = load.model
     terms = list(load.nodal_forces)
     gravity = load.extra.get("PESANTEUR")
