@@ -1,8 +1,8 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_ELEM 3D_POU, FACE_IMPO) and loads (FORCE_NODALE,
-PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP, FORCE_INTERNE on 3D solids;
-PRES_REP, FORCE_CONTOUR on the edges and FORCE_INTERNE on the surfaces of plane
-models) on a model."""
+LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP,
+FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
+FORCE_INTERNE on the surfaces of plane models) on a model."""
 
 from __future__ import annotations
 
@@ -292,6 +292,27 @@ def _liaison_group(ctx, model, components, load, occ) -> None:
         load.relations.append(LinearRelation(terms, float(occ["COEF_IMPO"])))
 
 
+def _liaison_chamno(ctx, model, components, load, occ) -> None:
+    """sum over the field's non-zero values v_i u_i = COEF_IMPO (code_aster's calich)."""
+    field = occ["CHAM_NO"]
+    numbering = field.numbering
+    values = np.asarray(field.values, dtype=float)
+    terms = []
+    mesh = model.mesh
+    for row in np.flatnonzero(values):
+        node, comp = numbering.dofs[int(row)]
+        if numbering.mesh is not mesh:
+            ctx.error("CHAM_NO is not on the mesh of the model", "CHAM_NO", occ)
+        if comp not in components.get(int(node), ()):
+            ctx.error(
+                f"node {mesh.node_names[node]} has no {comp} DOF in this model", "CHAM_NO", occ
+            )
+        terms.append((int(node), comp, float(values[row])))
+    if not terms:
+        ctx.error("CHAM_NO holds no non-zero value: no relation to write", "CHAM_NO", occ)
+    load.relations.append(LinearRelation(terms, float(occ["COEF_IMPO"])))
+
+
 def _liaison_elem(ctx, model, components, load, occ) -> None:
     """OPTION='3D_POU': the beam node follows the mean motion of the solid's
     face (asterlite.fem.solid_beam_link); the other options are refused."""
@@ -543,6 +564,8 @@ def run(ctx, kw):
         _face_impo(ctx, model, components, load, occ)
     for occ in kw.factor("LIAISON_GROUP"):
         _liaison_group(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_CHAMNO"):
+        _liaison_chamno(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]

@@ -67,3 +67,30 @@ def test_two_nodes_facing_one_is_an_error():
     model.mesh.coords[3] = (5.0, 5.0, 0.0)
     with pytest.raises(CommandError, match="both face"):
         _liaison(model, TRAN=(0.0, 1.0, 0.0))
+
+
+def test_liaison_chamno_one_relation_from_the_non_zero_values():
+    from asterlite.concepts.assembly import NodalField
+
+    model = _model()
+    numbering = run(FakeSession(), "NUME_DDL", MODELE=model)
+    values = np.zeros(numbering.n_dofs)
+    values[numbering.dof_indices([0], "DY")[0]] = 1.0
+    values[numbering.dof_indices([4], "DY")[0]] = -2.5
+    field = NodalField(numbering=numbering, values=values)
+    load = run(
+        FakeSession(),
+        "AFFE_CHAR_MECA",
+        MODELE=model,
+        LIAISON_CHAMNO={"CHAM_NO": field, "COEF_IMPO": 0.5},
+    )
+    (relation,) = load.relations
+    assert sorted(relation.terms) == [(0, "DY", 1.0), (4, "DY", -2.5)]
+    assert relation.rhs == 0.5
+    with pytest.raises(CommandError, match="no non-zero value"):
+        run(
+            FakeSession(),
+            "AFFE_CHAR_MECA",
+            MODELE=model,
+            LIAISON_CHAMNO={"CHAM_NO": NodalField(numbering, 0 * values), "COEF_IMPO": 0.0},
+        )
