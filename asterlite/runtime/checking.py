@@ -127,15 +127,15 @@ class CheckFacts:
     session: Any = None  # the session checked
     findings: list = field(default_factory=list)
     calls: list = field(default_factory=list)  # the command calls under way (language_check)
+    # (session, error) -> findings: language_check.finding_of_error, given by the session
+    finding_of_error: Any = None
 
     def record(self, error) -> None:
         if self.errors and error in (self.errors[-1], getattr(self.errors[-1], "original", None)):
             return
         self.errors.append(error)
-        if self.session is not None:
-            from asterlite.runtime.language_check import finding_of_error
-
-            self.findings.extend(finding_of_error(self.session, error))
+        if self.session is not None and self.finding_of_error is not None:
+            self.findings.extend(self.finding_of_error(self.session, error))
 
     def note(self, finding) -> None:
         """A finding of the two verdicts that is no error of asterlite's own."""

@@ -37,9 +37,24 @@ from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknow
 from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
 from asterlite.legacy.runtime import translate_call
 from asterlite.legacy.version import PYTHON2_LAST, session_version
-from asterlite.runtime import console
+from asterlite.runtime import checking, console
+from asterlite.runtime.checking import (
+    UnsupportedCommand,
+    check_call,
+    command_failed,
+    note_unit_mapping,
+    statement_failed,
+    undecidable,
+)
 from asterlite.runtime.context import CommandContext, TestRecord
 from asterlite.runtime.export import RunDescription
+from asterlite.runtime.language_check import (
+    bind_language_commands,
+    bind_unparsed_names,
+    checked_call,
+    finding_of_error,
+    module_commands,
+)
 from asterlite.runtime.v15_names import GeneratedNames, record_call
 
 
@@ -117,16 +132,13 @@ class Session:
 
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
-        from asterlite.runtime import checking
 
         self.namespace.update(base_namespace(print_hook=self._print))
         from asterlite.lang import stdlib
 
         self.namespace.update(stdlib.namespace_builtins(self.namespace))  # globals(): these names
         if self.check_only:
-            from asterlite.runtime.language_check import bind_language_commands
-
-            self.check = checking.CheckFacts(session=self)
+            self.check = checking.CheckFacts(session=self, finding_of_error=finding_of_error)
             # refused by name as before, and validated in the deck version's language
             bind_language_commands(self)
         else:
@@ -202,8 +214,6 @@ class Session:
     # ----------------------------------------------------------- running
     def load_module(self, name: str) -> dict | None:
         """Modules a deck may import besides math and numpy."""
-        from asterlite.runtime.checking import UnsupportedCommand
-
         if name in COMMAND_MODULES:  # the commands, which the namespace already holds
             commands = (CommandProxy, UnsupportedCommand)
             return {n: v for n, v in self.namespace.items() if isinstance(v, commands)}
@@ -212,8 +222,6 @@ class Session:
 
             return code_aster_ca_module(self)
         if name.startswith("code_aster.") and self.check is not None:
-            from asterlite.runtime.language_check import module_commands
-
             found = module_commands(self, name)  # user macros: code_aster.MacroCommands...
             if found:
                 return found
@@ -267,8 +275,6 @@ class Session:
             if self.check is None:
                 raise
             self.check.record(error)  # check goes on with the next deck file
-            from asterlite.runtime.language_check import bind_unparsed_names
-
             bind_unparsed_names(self, path)  # its names are unknown, not undefined
             return
         evaluator = Evaluator(
@@ -345,8 +351,6 @@ class Session:
 
     def _statement_failed(self, error, statement) -> None:
         """Under check: record the error of a top-level statement and go on."""
-        from asterlite.runtime.checking import statement_failed
-
         if isinstance(error, DeckFinished):
             raise error
         statement_failed(self, statement, error)
@@ -487,8 +491,6 @@ class CommandProxy(DeckCallable):
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
         if self.session.check is None:
             return self._deck_call(args, kwargs, site)
-        from asterlite.runtime.language_check import checked_call
-
         # check: valid code_aster N (the deck's version), then what asterlite computes
         return checked_call(self, args, kwargs, site)
 
@@ -502,8 +504,6 @@ class CommandProxy(DeckCallable):
         except DeckFinished:
             raise
         except AsterliteError as error:  # check: record, the outputs become Unknown
-            from asterlite.runtime.checking import command_failed
-
             if error.location is None:
                 error.location = site.location
             command_failed(self.session, self.name, kwargs, error)
@@ -556,15 +556,11 @@ class CommandProxy(DeckCallable):
         if self.name in SESSION_COMMANDS:
             return self._session_command(keywords, site)
         if session.check_only:
-            from asterlite.runtime.checking import check_call
-
             return check_call(self, catalogue, keywords, site, reuse)
         return self._execute(keywords, site, reuse)
 
     # ---------------------------------------------------------------- check
     def _placeholder(self, catalogue, keywords: Keywords):
-        from asterlite.runtime.checking import undecidable
-
         try:
             # sd_prod also types the CO outputs (CO.produced_type), as code_aster's does
             produced = result_type(catalogue, keywords)
@@ -678,8 +674,6 @@ class CommandProxy(DeckCallable):
             if unit is not None and name and session.output_dir is not None:
                 session.output_units[int(unit)] = session.output_path(str(name))
             if session.check is not None:
-                from asterlite.runtime.checking import note_unit_mapping
-
                 note_unit_mapping(session, keywords)
             return None
         return None
