@@ -430,4 +430,9 @@ def _simple_values(level_catalogue, keywords):
 
 
 def _may_be_mesh(result: Any) -> bool:
-    return isinstance(result, Placeholder) and result.satisfies("maillage_sdaster")
+    """A placeholder of a mesh, a skeleton included (code_aster's squelette
+    derives from maillage_sdaster: DEFI_SQUELETTE's nodes have names of their own)."""
+    if not isinstance(result, Placeholder):
+        return False
+    types = getattr(result, "aster_types", None) or ()
+    return result.satisfies("maillage_sdaster") or any("squelette" in str(t) for t in types)
