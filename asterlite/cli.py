@@ -10,6 +10,8 @@ NOOK; 2 on any error, unsupported command, interruption or internal error
 from __future__ import annotations
 
 import argparse
+import atexit
+import gc
 import json
 import sys
 from pathlib import Path
@@ -50,6 +52,7 @@ def _run(args) -> int:
             output_limit=args.output_limit,
             aster_version=args.aster_version,
             result_paths=args.allow_result_paths,
+            keep_previous=args.keep_previous,
         )
     except stops.RunInterrupted as interrupt:  # came once the result was written
         if interrupt.report is None:
@@ -329,6 +332,17 @@ def _warmup(args) -> int:
     return warmup.main(jobs=args.jobs, verbose=args.verbose)
 
 
+def _count_option(text: str) -> int:
+    """A whole number >= 0 (argparse type)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = -1
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a count (a whole number >= 0)")
+    return value
+
+
 def _limit_option(name: str):
     """An argparse type: a finite number >= 0 up to the limit's maximum
     (``--time-limit inf`` or ``nan`` is a usage error, exit status 2)."""
@@ -399,6 +413,21 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="write the export's R-line results at their own paths, as code_aster does "
         "(default: into the output folder; never over the deck, its inputs or the run's files)",
+    )
+    previous = run.add_mutually_exclusive_group()
+    previous.add_argument(
+        "--keep-previous",
+        type=_count_option,
+        metavar="N",
+        help="earlier results a rerun keeps under OUTDIR/previous-*/, most recent first "
+        "(default 3; older ones asterlite made are deleted)",
+    )
+    previous.add_argument(
+        "--no-previous",
+        dest="keep_previous",
+        action="store_const",
+        const=0,
+        help="keep no earlier result: a rerun deletes what the earlier run wrote",
     )
     run.set_defaults(handler=_run)
 
@@ -564,7 +593,24 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+# A run's start-up makes about 200 000 objects the collector tracks, living as
+# long as the process (numpy, scipy, numba's typing registries, catalogues); with Python's
+# default thresholds (700, 10, 10) the collector walks them ~360 times in a
+# warm run of sdnd100a, and once more at exit: 250 ms of its CPU on the busy
+# 2-core machine (load 20, 2026-11-28), 60-80 ms with these thresholds and no
+# pass at exit. Young cycles are still collected every 20 000 allocations.
+GC_THRESHOLDS = (20_000, 20, 50)
+
+
+def _lighter_collector() -> None:
+    gc.set_threshold(*GC_THRESHOLDS)
+    # at exit the process is ending: its memory goes back to the system anyway
+    atexit.unregister(gc.disable)
+    atexit.register(gc.disable)
+
+
 def main(argv: list[str] | None = None) -> int:
+    _lighter_collector()
     args = build_parser().parse_args(argv)
     try:
         return args.handler(args)

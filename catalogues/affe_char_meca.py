@@ -332,6 +332,7 @@ AFFE_CHAR_MECA = OPER(
             "LIAISON_SOLIDE",
             "LIAISON_UNIF",
             "LIAISON_ELEM",
+            "LIAISON_CHAMNO",
             "VECT_ASSE",
             "FORCE_NODALE",
             "FORCE_FACE",
@@ -350,6 +351,13 @@ AFFE_CHAR_MECA = OPER(
     CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
     DOUBLE_LAGRANGE=SIMP(statut="f", typ="TXM", into=OUI_NON, defaut="OUI"),
     LIAISON_ELEM=LIAISON_ELEM,
+    LIAISON_CHAMNO=FACT(
+        statut="f",
+        max=1,
+        fr="One relation whose coefficients are the values of a nodal field",
+        CHAM_NO=SIMP(statut="o", typ="cham_no_sdaster"),
+        COEF_IMPO=SIMP(statut="o", typ="R"),
+    ),
     PESANTEUR=FACT(
         statut="f",
         fr="Gravity",

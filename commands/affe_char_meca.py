@@ -1,8 +1,8 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE, LIAISON_ELEM 3D_POU, FACE_IMPO) and loads (FORCE_NODALE,
-PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP, FORCE_INTERNE on 3D solids;
-PRES_REP, FORCE_CONTOUR on the edges and FORCE_INTERNE on the surfaces of plane
-models) on a model."""
+LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP,
+FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
+FORCE_INTERNE on the surfaces of plane models) on a model."""
 
 from __future__ import annotations
 
@@ -24,11 +24,16 @@ _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 _BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
 
 
-def _ddl_impo(ctx, model, components, load, occ) -> None:
+def constant_value(raw, node: int, key: str) -> float:
+    """A value of AFFE_CHAR_MECA (AFFE_CHAR_MECA_F gives functions of the node)."""
+    return float(raw)
+
+
+def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> None:
     mesh = model.mesh
     everywhere = occ.get("TOUT") == "OUI"
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
-    imposed = {c: float(occ[c]) for c in _DDL_COMPONENTS if occ.get(c) is not None}
+    imposed = {c: occ[c] for c in _DDL_COMPONENTS if occ.get(c) is not None}
     given = {c for c in _DDL_COMPONENTS if occ.get(c) is not None}
     optional: set[str] = set()
     if occ.get("LIAISON") == "ENCASTRE":
@@ -59,7 +64,8 @@ def _ddl_impo(ctx, model, components, load, occ) -> None:
                     comp,
                     occ,
                 )
-            load.relations.append(LinearRelation([(int(node), comp, 1.0)], value))
+            imposed_value = value_at(value, int(node), comp)
+            load.relations.append(LinearRelation([(int(node), comp, 1.0)], imposed_value))
             applied += 1
         if applied == 0 and comp not in optional:
             ctx.error(f"no node of the selection carries {comp}", comp, occ)
@@ -163,10 +169,13 @@ def _face_impo(ctx, model, components, load, occ) -> None:
     code_aster's cafaci/canort build them."""
     from asterlite.fem.elements import ElementError
     from asterlite.fem.node_normals import node_normals
+    from asterlite.fem.skin import is_plane
 
     mesh = model.mesh
-    dim = 2 if model.dim == 2 else 3
     cells = [int(c) for c in cell_group_members(ctx, occ, mesh, "GROUP_MA")]
+    # a plane model's skin is made of edges (its mesh may have a constant Z)
+    edges = all(mesh.cell_types[c] in ("SEG2", "SEG3") for c in cells)
+    dim = 2 if model.dim == 2 or (edges and is_plane(mesh)) else 3
     excluded_cells = set()
     if occ.get("SANS_GROUP_MA"):
         excluded_cells = {int(c) for c in cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")}
@@ -203,6 +212,105 @@ def _face_impo(ctx, model, components, load, occ) -> None:
                 applied += 1
         if applied == 0:
             ctx.error(f"no node of the faces carries {comp}", comp, occ)
+
+
+def _group_side(ctx, occ, mesh, side: str) -> list[int]:
+    """The nodes of GROUP_NO_<side> or of the cells of GROUP_MA_<side>, in order."""
+    if occ.get(f"GROUP_NO_{side}"):
+        nodes = node_group_members(ctx, occ, mesh, f"GROUP_NO_{side}")
+    else:
+        cells = cell_group_members(ctx, occ, mesh, f"GROUP_MA_{side}")
+        nodes = mesh.nodes_of_cells(cells).tolist()
+    return [int(n) for n in dict.fromkeys(nodes)]
+
+
+def _paired_nodes(ctx, occ, mesh) -> list[tuple[int, int]]:
+    """code_aster's pairing (pacoap): each node of list 1, moved by ANGL_NAUT
+    about CENTRE then TRAN, takes the nearest node of list 2; the lists have
+    the same length and no node of list 2 may be taken twice."""
+    from asterlite.fem.frames import rotation_from_angles
+
+    first, second = _group_side(ctx, occ, mesh, "1"), _group_side(ctx, occ, mesh, "2")
+    if len(first) != len(second):
+        ctx.error(
+            f"LIAISON_GROUP pairs {len(first)} nodes with {len(second)}: the lists must "
+            "have the same length",
+            "GROUP_NO_2" if occ.get("GROUP_NO_2") else "GROUP_MA_2",
+            occ,
+        )
+    vector = {}
+    for key in ("TRAN", "CENTRE"):
+        given = np.asarray(as_tuple(occ.get(key) or (0.0, 0.0, 0.0)), dtype=float)
+        vector[key] = np.pad(given, (0, 3 - given.size))
+    angles = np.asarray(as_tuple(occ.get("ANGL_NAUT") or (0.0, 0.0, 0.0)), dtype=float)
+    rotation = rotation_from_angles(np.radians(np.pad(angles, (0, 3 - angles.size))))
+    moved = (mesh.coords[first] - vector["CENTRE"]) @ rotation + vector["CENTRE"] + vector["TRAN"]
+    targets = mesh.coords[second]
+    pairs, taken = [], {}
+    for node, x in zip(first, moved, strict=True):
+        nearest = second[int(np.argmin(np.sum((targets - x) ** 2, axis=1)))]
+        if nearest in taken:
+            names = mesh.node_names
+            ctx.error(
+                f"LIAISON_GROUP: nodes {names[taken[nearest]]} and {names[node]} both face "
+                f"node {names[nearest]}",
+                "GROUP_NO_1" if occ.get("GROUP_NO_1") else "GROUP_MA_1",
+                occ,
+            )
+        taken[nearest] = node
+        pairs.append((node, nearest))
+    return pairs
+
+
+def _liaison_group(ctx, model, components, load, occ) -> None:
+    """sum_k COEF_MULT_1[k] u1[DDL_1[k]] + sum_k COEF_MULT_2[k] u2[DDL_2[k]] = COEF_IMPO
+    for each pair of nodes (code_aster's caliag); DNOR refused."""
+    mesh = model.mesh
+    sides = {}
+    for side in ("1", "2"):
+        ddl = as_tuple(occ[f"DDL_{side}"])
+        coefs = as_tuple(occ[f"COEF_MULT_{side}"])
+        if len(ddl) != len(coefs):
+            ctx.error(f"DDL_{side} and COEF_MULT_{side} differ in length", f"DDL_{side}", occ)
+        if "DNOR" in ddl:
+            ctx.unsupported("LIAISON_GROUP DDL_1/DDL_2='DNOR'", f"DDL_{side}", occ)
+        sides[side] = list(zip(ddl, (float(c) for c in coefs), strict=True))
+    excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
+    for node_1, node_2 in _paired_nodes(ctx, occ, mesh):
+        if node_1 in excluded or node_2 in excluded:
+            continue
+        terms = []
+        for node, side in ((node_1, "1"), (node_2, "2")):
+            for comp, coef in sides[side]:
+                if comp not in components.get(node, ()):
+                    ctx.error(
+                        f"node {mesh.node_names[node]} has no {comp} DOF in this model",
+                        f"DDL_{side}",
+                        occ,
+                    )
+                terms.append((node, comp, coef))
+        load.relations.append(LinearRelation(terms, float(occ["COEF_IMPO"])))
+
+
+def _liaison_chamno(ctx, model, components, load, occ) -> None:
+    """sum over the field's non-zero values v_i u_i = COEF_IMPO (code_aster's calich)."""
+    field = occ["CHAM_NO"]
+    numbering = field.numbering
+    values = np.asarray(field.values, dtype=float)
+    terms = []
+    mesh = model.mesh
+    for row in np.flatnonzero(values):
+        node, comp = numbering.dofs[int(row)]
+        if numbering.mesh is not mesh:
+            ctx.error("CHAM_NO is not on the mesh of the model", "CHAM_NO", occ)
+        if comp not in components.get(int(node), ()):
+            ctx.error(
+                f"node {mesh.node_names[node]} has no {comp} DOF in this model", "CHAM_NO", occ
+            )
+        terms.append((int(node), comp, float(values[row])))
+    if not terms:
+        ctx.error("CHAM_NO holds no non-zero value: no relation to write", "CHAM_NO", occ)
+    load.relations.append(LinearRelation(terms, float(occ["COEF_IMPO"])))
 
 
 def _liaison_elem(ctx, model, components, load, occ) -> None:
@@ -271,44 +379,54 @@ def _warn_link_geometry(ctx, mesh, faces, section, beam_node, angle_max) -> None
         )
 
 
-def _force_poutre(ctx, model, load, occ) -> None:
+_BEAM_LOAD_GLOBAL = ("FX", "FY", "FZ", "MX", "MY", "MZ")
+_BEAM_LOAD_LOCAL = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
+_BEAM_LOADED = ("POU_D_E", "POU_D_T", "BARRE")
+
+
+def beam_load_cells(ctx, model, occ) -> np.ndarray:
+    """The beam (and bar) cells of a FORCE_POUTRE occurrence; with TOUT='OUI'
+    the other cells of the model are left out, otherwise they are an error."""
     if occ.get("TYPE_CHARGE", "FORCE") != "FORCE":
         ctx.unsupported("FORCE_POUTRE TYPE_CHARGE='VENT'", "TYPE_CHARGE", occ)
-    global_keys = ("FX", "FY", "FZ", "MX", "MY", "MZ")
-    local_keys = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
-    given_global = {k: float(occ[k]) for k in global_keys if occ.get(k) is not None}
-    given_local = {k: float(occ[k]) for k in local_keys if occ.get(k) is not None}
-    if given_global and given_local:
-        ctx.error("FORCE_POUTRE mixes global (FX...) and local (N, VY...) components", None, occ)
     cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    kept = []
     for cell in cells:
-        if model.cell_modelisation.get(int(cell)) not in ("POU_D_E", "POU_D_T", "BARRE"):
-            if occ.get("TOUT") == "OUI":
-                continue
+        if model.cell_modelisation.get(int(cell)) in _BEAM_LOADED:
+            kept.append(int(cell))
+        elif occ.get("TOUT") != "OUI":
             ctx.error(
                 f"FORCE_POUTRE on cell {model.mesh.cell_names[cell]}, which is not a beam",
                 "GROUP_MA",
                 occ,
             )
-    cells = np.array(
-        [
-            c
-            for c in cells
-            if model.cell_modelisation.get(int(c)) in ("POU_D_E", "POU_D_T", "BARRE")
-        ],
-        dtype=int,
-    )
+    return np.array(kept, dtype=int)
+
+
+def beam_load_keys(ctx, occ) -> tuple[tuple[str, ...], bool]:
+    """The component names of the occurrence's frame, and whether it is local."""
+    given_global = [k for k in _BEAM_LOAD_GLOBAL if occ.get(k) is not None]
+    given_local = [k for k in _BEAM_LOAD_LOCAL if occ.get(k) is not None]
+    if given_global and given_local:
+        ctx.error("FORCE_POUTRE mixes global (FX...) and local (N, VY...) components", None, occ)
+    return (_BEAM_LOAD_LOCAL, True) if given_local else (_BEAM_LOAD_GLOBAL, False)
+
+
+def _force_poutre(ctx, model, load, occ) -> None:
+    keys, local = beam_load_keys(ctx, occ)
+    values = {k: float(occ[k]) for k in keys if occ.get(k) is not None}
+    cells = beam_load_cells(ctx, model, occ)
     load.extra.setdefault("FORCE_POUTRE", []).append(
-        {"CELLS": cells, "VALUES": given_local or given_global, "LOCAL": bool(given_local)}
+        {"CELLS": cells, "VALUES": values, "LOCAL": local}
     )
 
 
-def _force_nodale(ctx, model, components, load, occ) -> None:
+def _force_nodale(ctx, model, components, load, occ, value_at=constant_value) -> None:
     mesh = model.mesh
     if occ.get("ANGL_NAUT") is not None:
         ctx.unsupported("FORCE_NODALE with ANGL_NAUT", "ANGL_NAUT", occ)
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
-    given = {k: float(occ[k]) for k in _FORCE_COMPONENTS if occ.get(k) is not None}
+    given = {k: occ[k] for k in _FORCE_COMPONENTS if occ.get(k) is not None}
     if not given:
         ctx.error("no force component is given", None, occ)
     for key, value in given.items():
@@ -316,7 +434,7 @@ def _force_nodale(ctx, model, components, load, occ) -> None:
         for node in nodes:
             if comp not in components.get(int(node), ()):
                 ctx.error(f"node {mesh.node_names[node]} has no {comp} DOF in this model", key, occ)
-            load.nodal_forces.append((int(node), comp, value))
+            load.nodal_forces.append((int(node), comp, value_at(value, int(node), key)))
 
 
 def _cells_of_3d_model(ctx, model, occ, kinds, what: str) -> np.ndarray:
@@ -424,6 +542,10 @@ def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
     load = MechanicalLoad(model=model)
+    if not kw.factor("PRES_REP"):
+        # VERI_NORM checks the faces of loads along their normal (PRES_REP here):
+        # without them code_aster has nothing to check
+        kw.mark_used("VERI_NORM")
     for occ in kw.factor("DDL_IMPO"):
         _ddl_impo(ctx, model, components, load, occ)
     for occ in kw.factor("LIAISON_DDL"):
@@ -440,6 +562,10 @@ def run(ctx, kw):
         _liaison_elem(ctx, model, components, load, occ)
     for occ in kw.factor("FACE_IMPO"):
         _face_impo(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_GROUP"):
+        _liaison_group(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_CHAMNO"):
+        _liaison_chamno(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]

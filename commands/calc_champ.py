@@ -43,7 +43,8 @@ _ACCESS = ("NUME_ORDRE", "LIST_ORDRE", "INST", "LIST_INST", "FREQ", "LIST_FREQ")
 
 def _keep_selected_orders(ctx, kw, result, fields) -> None:
     """Fields exist at the orders NUME_ORDRE / INST / FREQ... choose (every
-    order by default): the others are NaN, as code_aster stores no field there."""
+    order by default): the others are NaN, as code_aster stores no field there,
+    unless an earlier CALC_CHAMP on the result computed them (they are kept)."""
     if all(kw.peek(k) is None for k in _ACCESS):
         # every order, the default; CRITERE / PRECISION only tune an INST or FREQ search
         kw.mark_used("TOUT_ORDRE", "CRITERE", "PRECISION")
@@ -54,10 +55,18 @@ def _keep_selected_orders(ctx, kw, result, fields) -> None:
         rows = selection_from_keywords(ctx, kw, result.frequencies, result.order).lower
     else:
         rows = _selected_orders(ctx, kw, result)
-    for field in fields.values():
+    for name, field in fields.items():
         dropped = np.ones(field.values.shape[0], dtype=bool)
         dropped[rows] = False
         field.values[dropped] = np.nan
+        # orders computed by an earlier call on the same result keep their values
+        earlier = getattr(result, "element_fields", {}).get(name)
+        if (
+            earlier is not None
+            and earlier.values.shape == field.values.shape
+            and np.array_equal(np.asarray(earlier.cells), np.asarray(field.cells))
+        ):
+            field.values[dropped] = earlier.values[dropped]
 
 
 def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> None:
@@ -182,14 +191,61 @@ def _accelerations(ctx, result, values: np.ndarray) -> np.ndarray | None:
     return acce
 
 
-def _beam_fields(model, characteristics, materials, numbering, beams, values, elno, acce):
+def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders):
+    """(n_orders, n_beams, 2, 6) the distributed loads of EXCIT on the beams,
+    times FONC_MULT at each instant of the result (or COEF_MULT), in the
+    convention of the internal forces; None without EXCIT."""
+    from asterlite.fem.beam_elements import section_forces
+    from asterlite.fem.loads import beam_element_loads
+
+    occurrences = kw.factor("EXCIT")
+    if not occurrences:
+        return None
+    times = getattr(result, "times", None)
+    total = np.zeros((n_orders, len(beams), 2, 6))
+    for occ in occurrences:
+        for key in ("FONC_MULT_C", "COEF_MULT_C", "TYPE_CHARGE", "PHAS_DEG", "PUIS_PULS"):
+            if key == "TYPE_CHARGE" and occ.get(key, "FIXE_CSTE") == "FIXE_CSTE":
+                continue
+            if key in ("PHAS_DEG", "PUIS_PULS") and not occ.get(key):
+                continue
+            if occ.get(key) is not None:
+                ctx.unsupported(f"CALC_CHAMP EXCIT {key} on beams", key, occ)
+        function = occ.get("FONC_MULT")
+        if function is not None:
+            if times is None or len(times) != n_orders:
+                ctx.unsupported(
+                    "CALC_CHAMP EXCIT FONC_MULT on a result without instants", "FONC_MULT", occ
+                )
+            coefficients = np.array([float(function(float(t))) for t in times])
+        else:
+            coefficients = np.full(n_orders, float(occ.get("COEF_MULT", 1.0)))
+        try:
+            local = beam_element_loads(model, characteristics, beams, occ["CHARGE"])
+        except ElementError as exc:
+            ctx.unsupported(str(exc), "CHARGE", occ)
+        total += coefficients[:, None, None, None] * section_forces(local)[None]
+    return total
+
+
+def _beam_fields(model, characteristics, materials, numbering, beams, values, elno, acce, loads):
     """beam_element_fields; complex states (a dyna_harmo) give complex fields,
     computed from their real and imaginary parts (the fields are linear in
     the displacements and accelerations)."""
     if not np.iscomplexobj(values) and not np.iscomplexobj(acce):
         return beam_element_fields(
-            model, characteristics, materials, numbering, beams, values, elno, accelerations=acce
+            model,
+            characteristics,
+            materials,
+            numbering,
+            beams,
+            values,
+            elno,
+            accelerations=acce,
+            load_forces=loads,
         )
+    if loads is not None:
+        raise ValueError("CALC_CHAMP EXCIT on a complex (harmonic) result")
     parts = [
         beam_element_fields(
             model,
@@ -305,8 +361,6 @@ def run(ctx, kw):
     for keyword in ("PROPRIETES", "FORCE"):
         if kw.get(keyword):
             ctx.unsupported(f"CALC_CHAMP {keyword}={as_tuple(kw[keyword])}", keyword, kw)
-    if kw.factor("EXCIT"):
-        ctx.unsupported("CALC_CHAMP EXCIT (distributed loads in the forces)", "EXCIT", kw)
     names = [name for _, name in requested]
     known = ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS + SOLID_FIELDS
     other = [n for n in names if n not in known]
@@ -315,6 +369,8 @@ def run(ctx, kw):
         ctx.unsupported(f"CALC_CHAMP {keyword}={other[0]!r}", keyword, kw)
     if names:
         model, characteristics, materials = _context(ctx, kw, result)
+        # TOUT='OUI' (its only value) is every cell of the model, as without GROUP_MA
+        kw.mark_used("TOUT")
         cells = select_cells(ctx, kw, model.mesh) if kw.get("GROUP_MA") else None
         candidates = sorted(model.cell_modelisation) if cells is None else cells
         beams = np.array(
@@ -343,6 +399,7 @@ def run(ctx, kw):
         elno = sorted({n.replace("_NOEU", "_ELNO") for n in names})
         values = _nodal_values(ctx, result, kw)
         accelerations = _accelerations(ctx, result, values)
+        loads = _excitation_forces(ctx, kw, result, model, characteristics, beams, len(values))
         try:
             fields = _beam_fields(
                 model,
@@ -353,9 +410,11 @@ def run(ctx, kw):
                 values,
                 elno,
                 accelerations,
+                loads,
             )
         except (ElementError, ValueError, KeyError) as exc:
             ctx.error(str(exc), "CONTRAINTE", kw)
+        _keep_selected_orders(ctx, kw, result, fields)
         for name, field in fields.items():
             result.element_fields[name] = field
         for name in names:

@@ -53,3 +53,30 @@ def test_verif_on_families_asterlite_does_not_check_is_refused():
             VERIF="MAILLE",
             COQUE={"GROUP_MA": "RESSORTS", "EPAIS": 0.1},
         )
+
+
+def test_point_mass_under_discret_on_plane_discretes():
+    """A point mass (M_T_D_N, one value) means the same to 2D_DIS_T and DIS_T:
+    code_aster takes it under DISCRET on either; a stiffness (3 values in 3D,
+    2 in 2D) is still refused on the other family."""
+    session = FakeSession()
+    model = run(
+        session,
+        "AFFE_MODELE",
+        MAILLAGE=chain_mesh(3, dim=2),
+        AFFE={"TOUT": "OUI", "PHENOMENE": "MECANIQUE", "MODELISATION": "2D_DIS_T"},
+    )
+    cara = run(
+        session,
+        "AFFE_CARA_ELEM",
+        MODELE=model,
+        DISCRET={"GROUP_MA": "MASSES", "CARA": "M_T_D_N", "VALE": 2.0},
+    )
+    assert len(cara.discrete) == 3
+    with pytest.raises(CommandError, match="needs DIS_T elements"):
+        run(
+            session,
+            "AFFE_CARA_ELEM",
+            MODELE=model,
+            DISCRET={"GROUP_MA": "RESSORTS", "CARA": "K_T_D_L", "VALE": (1.0, 1.0, 1.0)},
+        )

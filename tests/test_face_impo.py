@@ -114,3 +114,38 @@ def test_dtan_on_a_3d_face_is_an_error():
             MODELE=model,
             FACE_IMPO={"GROUP_MA": "XMAX", "DTAN": 0.0},
         )
+
+
+def test_veri_norm_without_pressure_faces_checks_nothing():
+    from asterlite.catalog.keywords import unread_keywords
+    from tests.test_fem_support import keywords
+
+    _, model = _box_with_face()
+    from asterlite.commands import affe_char_meca
+
+    from asterlite.runtime.context import CommandContext
+
+    kw = keywords("AFFE_CHAR_MECA", {"MODELE": model, "VERI_NORM": "NON",
+                                     "FACE_IMPO": {"GROUP_MA": "XMAX", "DX": 0.0}})  # fmt: skip
+    kw.given = frozenset(dict.keys(kw))  # iterating kw would count as reads
+    affe_char_meca.run(CommandContext(session=FakeSession(), command="AFFE_CHAR_MECA"), kw)
+    assert unread_keywords(kw) == []
+
+
+def test_dnor_on_the_edges_of_a_plane_model_with_constant_z():
+    """A D_PLAN model on a mesh stored with Z = 2: its skin is made of edges,
+    whose normal is (dy, -dx)."""
+    from asterlite.concepts.assembly import Model
+    from tests.test_orie_peau_2d import _square
+
+    mesh = _square(z=2.0)
+    model = Model(mesh=mesh, cell_modelisation={c: "D_PLAN" for c in range(mesh.n_cells)})
+    assert set(model.node_components()[1]) >= {"DX", "DY"}
+    mesh.cell_groups["RIGHT"] = np.array([3])  # the edge x = 1, from (1, 0) to (1, 1)
+    load = run(
+        FakeSession(), "AFFE_CHAR_MECA", MODELE=model, FACE_IMPO={"GROUP_MA": "RIGHT", "DNOR": 0.5}
+    )
+    assert sorted((r.terms, r.rhs) for r in load.relations) == [
+        ([(1, "DX", 1.0)], 0.5),
+        ([(2, "DX", 1.0)], 0.5),
+    ]

@@ -333,3 +333,42 @@ def test_cantilever_converges_to_beam_theory():
     # the linear quadrangle locks in bending: stiffer, converging from above
     coarse, fine = (_cantilever_frequency("QUAD4", n, m) for n, m in ((20, 2), (80, 8)))
     assert coarse > fine > timoshenko * 0.995
+
+
+def test_folded_cells_are_found_as_code_aster_does():
+    """VERI_JACOBIEN: a QUAD8 whose mid-side node crosses the opposite side
+    has Jacobians of both signs; a cell numbered clockwise (negative
+    everywhere) is not flagged, as in code_aster's te0328."""
+    from asterlite.fem.jacobian_check import folded_cells
+
+    mesh = grid_mesh("QUAD8", (2, 1))
+    model, _ = plane_model(mesh, "D_PLAN")
+    assert folded_cells(model) == []
+    middle = mesh.cell_nodes[0][4]  # the middle of side 1-2
+    mesh.coords[middle, 1] += 1.2
+    assert folded_cells(model) == [0]
+    mesh = grid_mesh("QUAD4", (1, 1))
+    mesh.cell_nodes[0] = tuple(reversed(mesh.cell_nodes[0]))
+    assert folded_cells(plane_model(mesh, "C_PLAN")[0]) == []
+
+
+def test_axis_cells_left_of_the_axis_are_found():
+    from asterlite.fem.jacobian_check import negative_radius_nodes
+
+    mesh = grid_mesh("QUAD4", (2, 1), (1.0, 1.0), origin=(0.0, 0.0))
+    model, _ = plane_model(mesh, "AXIS")
+    assert negative_radius_nodes(model) == []
+    mesh.coords[0, 0] = -0.1
+    assert negative_radius_nodes(model) == [(0, 0)]
+
+
+def test_plane_models_are_two_dimensional():
+    """A model of plane solids (with their absorbing edges or 2D discrete
+    elements) is 2D: FACE_IMPO DNOR, LIAISON_SOLIDE use edge normals and DRZ."""
+    mesh = grid_mesh("QUAD4", (1, 1))
+    for names in (("D_PLAN",), ("C_PLAN", "2D_DIS_T"), ("AXIS",), ("D_PLAN", "D_PLAN_ABSO")):
+        model = Model(mesh=mesh, cell_modelisation={0: names[0]}, node_modelisation={})
+        for k, name in enumerate(names[1:]):
+            model.node_modelisation[k] = name
+        assert model.dim == 2
+    assert Model(mesh=mesh, cell_modelisation={0: "DKT"}).dim == 3

@@ -24,6 +24,9 @@ MODELISATION_COMPONENTS: dict[str, tuple[str, ...]] = {
     "D_PLAN": ("DX", "DY"),
     "C_PLAN": ("DX", "DY"),
     "AXIS": ("DX", "DY"),
+    "DKT": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+    "3D_ABSO": ("DX", "DY", "DZ"),
+    "D_PLAN_ABSO": ("DX", "DY"),
 }
 
 DISCRETE_MODELISATIONS = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
@@ -49,6 +52,11 @@ MODELISATION_CELLS: dict[str, tuple[str, ...]] = {
         name: ("TRIA3", "TRIA6", "QUAD4", "QUAD8", "QUAD9", "SEG2", "SEG3")
         for name in ("D_PLAN", "C_PLAN", "AXIS")
     },
+    # plates, plus the edges that carry loads (code_aster's MEBODKT)
+    "DKT": ("TRIA3", "QUAD4", "SEG2"),
+    # paraxial absorbing boundaries (code_aster's MEAB_FACE*, MEPASE*)
+    "3D_ABSO": ("TRIA3", "TRIA6", "QUAD4", "QUAD8", "QUAD9"),
+    "D_PLAN_ABSO": ("SEG2", "SEG3"),
 }
 
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.elements import ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.solid_reference import FACE_CELLS, REFERENCE_ELEMENTS
 
 # SEG3: nodes at xi = -1, +1, 0 (code_aster's order); derivatives at each node

@@ -26,7 +26,7 @@ from collections import defaultdict
 import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
-from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.solid_elements import jacobians
 from asterlite.fem.solid_reference import CellKind, tabulated
 
@@ -69,11 +69,11 @@ def plane_coordinates(mesh, conn: np.ndarray) -> np.ndarray:
     """(e, n, 2) in-plane coordinates of cells; the cells must lie in z = const."""
     coords = mesh.coords[conn]
     z = coords[..., 2]
-    if np.any(np.abs(z - z[:, :1]) > 1e-9 * (1.0 + np.abs(coords[..., :2]).max())):
-        bad = int(np.nonzero(np.any(np.abs(z - z[:, :1]) > 0, axis=1))[0][0])
-        raise ElementError(
-            f"plane elements must lie in the (x, y) plane (node z varies, cell {bad})"
-        )
+    off = np.abs(z - z[:, :1]) > 1e-9 * (1.0 + np.abs(coords[..., :2]).max())
+    if np.any(off):
+        nodes = conn[np.nonzero(np.any(off, axis=1))[0][0]]
+        names = ", ".join(mesh.node_names[n] for n in nodes)
+        raise ElementError(f"plane elements must lie in a plane z = const (nodes {names})")
     return coords[..., :2]
 
 
@@ -202,11 +202,3 @@ def plane_blocks(
             raise ElementError(f"{modelisation} {kind_name} cells: {exc}") from None
         blocks.append(ElementBlock(nodes=conn, components=COMPONENTS, matrices=mats))
     return blocks
-
-
-def _register() -> None:
-    for name in PLANE_MODELISATIONS:
-        ELEMENT_COMPUTERS.setdefault(name, plane_blocks)
-
-
-_register()

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.elements import ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.plane_elements import (
     PLANE_MODELISATIONS,
     cells_by_type,
@@ -35,7 +35,7 @@ COMPONENTS = ("DX", "DY")
 _SEGMENTS = {"SEG2": (np.array([-1.0, 1.0]), 2), "SEG3": (np.array([-1.0, 1.0, 0.0]), 4)}
 
 
-def _segment_basis(kind: str):
+def segment_basis(kind: str):
     """Values (q, n), derivatives (q, n) and weights (q,) on the RIGI family."""
     nodes, n_points = _SEGMENTS[kind]
     points, weights = np.polynomial.legendre.leggauss(n_points)
@@ -101,7 +101,7 @@ def _densities(materials, cells, mesh) -> np.ndarray:
 def _edge_geometry(mesh, members, kind: str, axisymmetric: bool):
     """Connectivity, shape values (q, n), weights x length jacobian (x r) (e, q)
     and unit tangents (e, q, 2) of edge cells."""
-    values, derivatives, weights = _segment_basis(kind)
+    values, derivatives, weights = segment_basis(kind)
     conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int)
     coords = plane_coordinates(mesh, conn)
     tangent = np.einsum("qa,eai->eqi", derivatives, coords)

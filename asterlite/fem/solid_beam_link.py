@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from asterlite.fem.elements import ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.solid_reference import FACE_CELLS, tabulated
 
 

@@ -33,7 +33,7 @@ from functools import cache
 import numpy as np
 
 from asterlite.concepts.assembly import ElementField
-from asterlite.fem.elements import ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.plane_elements import PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.solid_elements import jacobians
 from asterlite.fem.solid_reference import (
