@@ -33,8 +33,6 @@ ROOTS = {
 
 # Edges that close a cycle, each to be cut by the work named. Must become empty.
 CYCLE_EDGES_ALLOWED = {
-    # the DYNA_VIBRA wing is reshaped on branch issue28 (issue 28, items 1-2)
-    ("asterlite.commands.dyna_vibra_phys", "asterlite.commands.dyna_vibra"): "issue 28, item 1",
     # the legacy DYNA_VIBRA form checks a call against a legacy catalogue built from
     # today's DYNA_VIBRA catalogue, which names its legacy forms (compat_syntax): cut
     # when legacy/ looks the forms up by command name (DESIGN: catalogues do not import
@@ -73,10 +71,6 @@ UPPER_ROOMS = (
 )
 # Climbs still allowed, each to be removed by the work named. Must become empty.
 CLIMBS_ALLOWED = {
-    # dynamics/ imports the watchdog under its old name (asterlite/runtime/watchdog.py,
-    # the same module as asterlite/watchdog.py): switched on branch issue28
-    ("asterlite.dynamics.integrate", "asterlite.runtime.watchdog"): "issue 28, branch issue28",
-    ("asterlite.dynamics.fluid_film", "asterlite.runtime.watchdog"): "issue 28, branch issue28",
     # TEST_* records are defined by the run; post/checks makes them
     ("asterlite.post.checks", "asterlite.runtime.context"): "TestRecord beside the checks",
     # code_aster 15's generated names are kept by the session; the translation reads them

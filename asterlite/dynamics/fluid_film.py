@@ -76,7 +76,7 @@ from asterlite.dynamics.contact import (
 )
 from asterlite.dynamics.forces import add_external_force, copy_into, loads_ready
 from asterlite.errors import NumericalError
-from asterlite.runtime import watchdog
+from asterlite import watchdog
 
 # columns of the per-shock film rows: film present, the law's coefficients,
 # in the boundary layer (0/1), the frozen thickness of that layer
