@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from asterlite import progress
+from asterlite import progress, watchdog
 from asterlite.dynamics import adapt_control, compile_estimate, diagnosis
 from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
@@ -25,7 +25,6 @@ from asterlite.dynamics.schemes import (
     Scheme,
 )
 from asterlite.errors import NumericalError
-from asterlite import watchdog
 
 
 @dataclass
