@@ -269,6 +269,4 @@ def test_command_removed_after_12_refused_by_name(tmp_path):
     (tmp_path / "d.comm").write_text("DEBUT()\nT = CALC_NO(RESULTAT=None)\nFIN()\n")
     report = run_deck(tmp_path / "d.comm", tmp_path / "out")
     assert report.status == "UNSUPPORTED"
-    assert "CALC_NO is a code_aster 10-12 command that code_aster 15 and 17" in (
-        report.message
-    )
+    assert "CALC_NO is a code_aster 10-12 command that code_aster 15 and 17" in (report.message)
