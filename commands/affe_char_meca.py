@@ -538,6 +538,25 @@ def _solid_loads(ctx, model, load, kw) -> None:
             )
 
 
+#: the factor keywords read one occurrence at a time, in the order their terms
+#: are added to the load
+_OCCURRENCE_READERS = (
+    ("DDL_IMPO", _ddl_impo),
+    ("LIAISON_DDL", _liaison_ddl),
+    ("FORCE_NODALE", _force_nodale),
+    ("LIAISON_UNIF", _liaison_unif),
+    ("LIAISON_SOLIDE", _liaison_solide),
+    (
+        "FORCE_POUTRE",
+        lambda ctx, model, _components, load, occ: _force_poutre(ctx, model, load, occ),
+    ),
+    ("LIAISON_ELEM", _liaison_elem),
+    ("FACE_IMPO", _face_impo),
+    ("LIAISON_GROUP", _liaison_group),
+    ("LIAISON_CHAMNO", _liaison_chamno),
+)
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
@@ -546,26 +565,9 @@ def run(ctx, kw):
         # VERI_NORM checks the faces of loads along their normal (PRES_REP here):
         # without them code_aster has nothing to check
         kw.mark_used("VERI_NORM")
-    for occ in kw.factor("DDL_IMPO"):
-        _ddl_impo(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_DDL"):
-        _liaison_ddl(ctx, model, components, load, occ)
-    for occ in kw.factor("FORCE_NODALE"):
-        _force_nodale(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_UNIF"):
-        _liaison_unif(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_SOLIDE"):
-        _liaison_solide(ctx, model, components, load, occ)
-    for occ in kw.factor("FORCE_POUTRE"):
-        _force_poutre(ctx, model, load, occ)
-    for occ in kw.factor("LIAISON_ELEM"):
-        _liaison_elem(ctx, model, components, load, occ)
-    for occ in kw.factor("FACE_IMPO"):
-        _face_impo(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_GROUP"):
-        _liaison_group(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_CHAMNO"):
-        _liaison_chamno(ctx, model, components, load, occ)
+    for keyword, reader in _OCCURRENCE_READERS:
+        for occ in kw.factor(keyword):
+            reader(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]
