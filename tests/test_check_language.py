@@ -5,6 +5,7 @@ a kind; a deck is VALID (0), UNSUPPORTED (3) or INVALID (2)."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -233,3 +234,25 @@ def test_keyword_of_several_undetermined_blocks_takes_any_definition(tmp_path):
     assert not [f for f in check.findings if f.keyword.startswith("CALC_CHAMP")], [
         f.text() for f in check.findings
     ]
+
+
+def test_run_refuses_the_component_check_reports(tmp_path):
+    # run stops at the call with check's finding, before computing it
+    # (RECU_FONCTION would otherwise give an all-zero function for 'DQ')
+    from asterlite.runtime.runner import run_deck
+
+    sample = Path(__file__).parents[1] / "samples" / "friction_oscillator"
+    text = (sample / "friction_oscillator.comm").read_text()
+    text = text[: text.index("DEPLPHYS = ")]
+    text += (
+        "F = RECU_FONCTION(RESULTAT=MODES, NOM_CHAM='DEPL', GROUP_NO='N1',\n"
+        "                  NOM_CMP='DQ', TOUT_ORDRE='OUI')\nFIN()\n"
+    )
+    (tmp_path / "m.comm").write_text(text)
+    (tmp_path / "m.mail").write_text((sample / "friction_oscillator.mail").read_text())
+    (tmp_path / "m.export").write_text("F comm m.comm D 1\nF mail m.mail D 20\n")
+    report = run_deck(tmp_path / "m.export", tmp_path / "out")
+    assert report.exit_code == 2
+    assert "'DQ' is not a component of DEPL" in report.message
+    line = text.count("\n", 0, text.index("NOM_CMP='DQ'")) + 1
+    assert f"m.comm:{line}" in report.message, report.message

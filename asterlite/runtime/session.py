@@ -52,6 +52,7 @@ from asterlite.runtime.language_check import (
     bind_language_commands,
     bind_unparsed_names,
     checked_call,
+    component_findings,
     finding_of_error,
     module_commands,
 )
@@ -557,6 +558,10 @@ class CommandProxy(DeckCallable):
             return self._session_command(keywords, site)
         if session.check_only:
             return check_call(self, catalogue, keywords, site, reuse)
+        # what the language closes beyond the catalogue (NOM_CMP of a displacement
+        # field): refused before computing, as check reports it
+        for finding in component_findings(self.name, kwargs, site):
+            raise finding
         return self._execute(keywords, site, reuse)
 
     # ---------------------------------------------------------------- check
