@@ -256,3 +256,69 @@ def test_run_refuses_the_component_check_reports(tmp_path):
     assert "'DQ' is not a component of DEPL" in report.message
     line = text.count("\n", 0, text.index("NOM_CMP='DQ'")) + 1
     assert f"m.comm:{line}" in report.message, report.message
+
+
+def test_a_file_associated_without_a_unit_gets_a_free_one(tmp_path):
+    # code_aster's ulnume: the highest free unit of 99..70, returned by DEFI_FICHIER
+    from asterlite.runtime.runner import run_deck
+
+    path = deck(
+        tmp_path,
+        "T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0, 2.0)))\n"
+        "U = DEFI_FICHIER(ACTION='ASSOCIER', FICHIER='t.txt')\n"
+        "V = DEFI_FICHIER(ACTION='ASSOCIER', FICHIER='v.txt')\n"
+        "IMPR_TABLE(UNITE=U, TABLE=T)\n"
+        "DEFI_FICHIER(ACTION='LIBERER', UNITE=U)\n"
+        "W = CREA_TABLE(LISTE=_F(PARA='U', LISTE_I=(U, V)))\n"
+        "TEST_TABLE(TABLE=W, NOM_PARA='U', TYPE_TEST='SOMM', VALE_CALC_I=197,\n"
+        "           REFERENCE='ANALYTIQUE', VALE_REFE_I=197)\n",
+    )
+    assert kinds(check_deck(path)) == []
+    report = run_deck(path, tmp_path / "out")
+    assert report.status == "PASS", report.message
+    assert "X" in (tmp_path / "out" / "t.txt").read_text()
+
+
+def test_a_unit_the_decks_own_python_may_have_written_is_not_judged(tmp_path):
+    # open() is refused (UNSUPPORTED); what it wrote (fort.86) check cannot know
+    read = "F = LIRE_FONCTION(UNITE=86, NOM_PARA='INST', INDIC_PARA=(1, 1), INDIC_RESU=(1, 2))\n"
+    writes = "def write(unit):\n    open('fort.%d' % unit, 'w').write('0 1')\n\nwrite(86)\n"
+    invalid = [f.keyword for f in check_deck(deck(tmp_path, read, "r.comm")).findings]
+    assert invalid == ["LIRE_FONCTION"]
+    found = kinds(check_deck(deck(tmp_path, writes + read, "w.comm")))
+    assert found == [("unsupported", "")], found
+
+
+@pytest.mark.parametrize(
+    ("version", "call", "expected"),
+    [
+        (17, "FIN(exit=True)", []),
+        (17, "FIN(atexit=True)", []),
+        (15, "FIN(exit=True)", []),
+        (15, "FIN(atexit=True)", [("invalid", "FIN/atexit")]),  # 15's wrapper takes exit only
+        (11, "FIN(exit=True)", [("invalid", "FIN/exit")]),
+    ],
+)
+def test_arguments_fin_takes_before_its_syntax_is_checked(tmp_path, version, call, expected):
+    from asterlite.runtime.runner import run_deck
+
+    path = tmp_path / "f.comm"
+    path.write_text(f"DEBUT()\n{call}\nraise RuntimeError('after FIN')\n")
+    assert kinds(check_deck(path, aster_version=version)) == expected
+    if version == 17:  # asterlite's FIN ends the deck: what follows is never run
+        assert run_deck(path, tmp_path / "out").status == "DONE"
+
+
+def test_a_list_filled_by_a_statement_check_could_not_finish_is_unknown(tmp_path):
+    # the loop stops at eval (not provided): MODELS[i] was maybe assigned, so
+    # MODELS is unknown, not the [None] it was made as
+    path = deck(
+        tmp_path,
+        "MODELS = [None] * 2\n"
+        "for i in range(2):\n"
+        "    x = eval('1.0')\n"
+        "    MODELS[i] = i\n"
+        "T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=MODELS[0]))\n",
+    )
+    assert ("invalid", "CREA_TABLE/LISTE[1]/LISTE_R") not in kinds(check_deck(path))
+    assert [kind for kind, _ in kinds(check_deck(path))] == ["unsupported-python"]

@@ -124,6 +124,8 @@ class CheckFacts:
     meshes: list = field(default_factory=list)  # every real Mesh read or made
     names_open: bool = False  # a mesh check cannot see may exist
     units_open: set[int] = field(default_factory=set)  # units written or mapped by the deck
+    # the deck's Python wrote files check did not follow (open()): any unit may be mapped
+    units_unknown: bool = False
     session: Any = None  # the session checked
     findings: list = field(default_factory=list)
     calls: list = field(default_factory=list)  # the command calls under way (language_check)
@@ -134,6 +136,8 @@ class CheckFacts:
         if self.errors and error in (self.errors[-1], getattr(self.errors[-1], "original", None)):
             return
         self.errors.append(error)
+        if getattr(error, "touches_files", False):
+            self.units_unknown = True
         if self.session is not None and self.finding_of_error is not None:
             self.findings.extend(self.finding_of_error(self.session, error))
 
@@ -253,6 +257,8 @@ def _target_names(target) -> list[str]:
         return [target.children[0].value]
     if data in ("tuple", "list", "exprlist", "testlist"):
         return [n for child in target.children for n in _target_names(child)]
+    if data == "getitem":  # A[i] = ...: what A holds is unknown as a whole
+        return _target_names(target.children[0])
     return []
 
 
@@ -278,7 +284,9 @@ def _unit_of(keywords: Keywords):
 def _unit_readable(session, keywords: Keywords) -> bool:
     """False when the unit holds a file the deck writes (not written under check)."""
     unit = _unit_of(keywords)
-    return not (unit in session.check.units_open and unit not in session.run.units)
+    if unit in session.run.units:
+        return True
+    return not (unit in session.check.units_open or session.check.units_unknown)
 
 
 def _check_read_unit(session, keywords: Keywords, site: CallSite, name: str) -> None:
@@ -286,6 +294,8 @@ def _check_read_unit(session, keywords: Keywords, site: CallSite, name: str) -> 
     if not isinstance(unit, int) or isinstance(unit, bool):
         return
     if unit in session.run.units or unit in session.check.units_open:
+        return
+    if session.check.units_unknown:  # written by the deck's own Python, maybe
         return
     known = ", ".join(str(u) for u in sorted(session.run.units)) or "none"
     raise CommandError(
@@ -302,9 +312,11 @@ def _note_written_units(name: str, keywords: Keywords, facts: CheckFacts) -> Non
             facts.units_open.add(value)
 
 
-def note_unit_mapping(session, keywords: Keywords) -> None:
-    """DEFI_FICHIER: the unit it associates may be read or written from now on."""
-    unit = dict.get(keywords, "UNITE")
+def note_unit_mapping(session, keywords: Keywords, unit=None) -> None:
+    """DEFI_FICHIER: the unit it associates (given, or chosen for a file
+    named without one) may be read or written from now on."""
+    if unit is None:
+        unit = dict.get(keywords, "UNITE")
     if isinstance(unit, int):
         session.check.units_open.add(unit)
 

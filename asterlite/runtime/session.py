@@ -187,6 +187,17 @@ class Session:
         except KeyError:
             raise CommandError(unmapped_unit_text(self.run, unit, self.output_units)) from None
 
+    def free_unit(self, location=None) -> int:
+        """The logical unit code_aster gives a file named without one
+        (``ulnume``): the highest of 99 down to 70 not in use."""
+        used = set(self.run.units) | set(self.output_units)
+        if self.check is not None:
+            used |= self.check.units_open
+        for unit in range(99, 69, -1):
+            if unit not in used:
+                return unit
+        raise CommandError("no free logical unit is left among 70 to 99", location)
+
     def output_path(self, unit_or_name: int | str) -> Path:
         """A path in the output folder for a logical unit or a file name."""
         if self.output_dir is None:
@@ -675,12 +686,21 @@ class CommandProxy(DeckCallable):
                 # the unit is closed: what is written to it later goes to fort.<unit>
                 if isinstance(unit, int):  # under check, a unit may be unknown
                     session.output_units.pop(int(unit), None)
+                elif unit is None and isinstance(name, str):
+                    for number, path in list(session.output_units.items()):
+                        if path.name == Path(name).name:
+                            del session.output_units[number]
                 return None
+            # a file named without a unit: code_aster chooses a free one and
+            # returns it (DEFI_FICHIER's result is then an integer)
+            chosen = unit is None and isinstance(name, str)
+            if chosen:
+                unit = session.free_unit(site.location)
             if unit is not None and name and session.output_dir is not None:
                 session.output_units[int(unit)] = session.output_path(str(name))
             if session.check is not None:
-                note_unit_mapping(session, keywords)
-            return None
+                note_unit_mapping(session, keywords, unit)
+            return int(unit) if chosen else None
         return None
 
 

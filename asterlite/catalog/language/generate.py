@@ -589,6 +589,58 @@ def _module_commands(tree: ast.Module) -> dict[str, str]:
     return found
 
 
+def supervisor_keywords(source: Source) -> dict[str, list[str]]:
+    """Arguments a command's Python wrapper takes out of the keywords before
+    their syntax is checked (``FIN(exit=True)``: ``keywords.pop("exit", ...)``
+    in the ``change_syntax`` of the class whose ``command_name`` is FIN):
+    command -> names. Lower-case names only: upper-case ones are catalogue
+    keywords the wrapper renames."""
+    found: dict[str, set] = {}
+    for package in COMMAND_PACKAGES:
+        for path in source.listing(package):
+            text = source.read(path) or ""
+            if "keywords.pop(" not in text:
+                continue
+            for node in ast.parse(text).body:
+                if not isinstance(node, ast.ClassDef):
+                    continue
+                command = _class_command_name(node)
+                if command is None:
+                    continue
+                for call in ast.walk(node):
+                    name = _popped_name(call)
+                    if name is not None and name.islower():
+                        found.setdefault(command, set()).add(name)
+    return {command: sorted(names) for command, names in sorted(found.items())}
+
+
+def _class_command_name(node: ast.ClassDef) -> str | None:
+    for item in node.body:
+        if (
+            isinstance(item, ast.Assign)
+            and any(isinstance(t, ast.Name) and t.id == "command_name" for t in item.targets)
+            and isinstance(item.value, ast.Constant)
+        ):
+            return item.value.value
+    return None
+
+
+def _popped_name(node) -> str | None:
+    """``keywords.pop("name", ...)``: the name."""
+    if (
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Attribute)
+        and node.func.attr == "pop"
+        and isinstance(node.func.value, ast.Name)
+        and node.func.value.id == "keywords"
+        and node.args
+        and isinstance(node.args[0], ast.Constant)
+        and isinstance(node.args[0].value, str)
+    ):
+        return node.args[0].value
+    return None
+
+
 # the folder of code_aster's Python macros: user macros whose catalogue sits
 # beside their implementation (``DEFI_CONT = UserMacro("DEFI_CONT", CATA, ops)``);
 # the wrappers of code_aster.Commands (CodeCommands/, 15's Commands/) use the
@@ -670,6 +722,9 @@ def generate(source: Source, version: int) -> tuple[dict, list[str]]:
         commands[name] = data
     for name, target in command_aliases(source, set(commands)).items():
         commands[name] = {"alias": target}
+    for name, names in supervisor_keywords(source).items():
+        if name in commands and "entries" in commands[name]:
+            commands[name]["supervisor"] = names
     types = {}
     for name, ref in sorted(reader.types.items()):
         types[converter.canonical(name)] = [converter.canonical(b) for b in ref.bases]

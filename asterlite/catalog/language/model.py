@@ -11,7 +11,10 @@ A command is a dict::
     {"kind": "OPER"|"MACRO"|"PROC"|"FORM"|"FUNCTION",
      "reentrant": "n"|"o"|"f"[":KEYWORD"], "sd_prod": {...},
      "rules": [[RULE, names...], ...], "legacy": [names...],
-     "entries": {NAME: entry}}
+     "supervisor": [names...], "entries": {NAME: entry}}
+
+(``supervisor``: arguments the command's Python wrapper takes out before
+the syntax is checked, ``FIN(exit=True)``)
 
 and an entry ``{"k": "S"|"F"|"B", ...}``: a simple keyword (``typ``,
 ``statut``, ``defaut``, ``into``, ``min``, ``max``, ``val_min``,

@@ -172,7 +172,9 @@ class _Checker:
     # ---------------------------------------------------------------- run
     def run(self, kwargs: dict, reuse) -> CallCheck:
         result = CallCheck(findings=self.findings)
-        kwargs = {k: v for k, v in kwargs.items() if k != "reuse"}
+        # reuse, and what the command's wrapper takes out before checking
+        taken = {"reuse", *(self.command or {}).get("supervisor", ())}
+        kwargs = {k: v for k, v in kwargs.items() if k not in taken}
         top = _Level(
             self.command,
             {},
