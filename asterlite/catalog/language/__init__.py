@@ -10,9 +10,10 @@
 - :mod:`~asterlite.catalog.language.expression` evaluates the conditions
   of blocks and result types it holds, without ``eval``;
 - :mod:`~asterlite.catalog.language.validate` checks a command call as
-  code_aster's syntax checker does, reporting every finding;
-- :mod:`~asterlite.catalog.language.astest_check` checks every
-  verification deck of a code_aster snapshot (the acceptance test).
+  code_aster's syntax checker does, reporting every finding.
+
+Every verification deck of a code_aster snapshot is checked against this
+data by :mod:`asterlite.tools.astest_check` (the acceptance test).
 
 Nothing here imports numpy: ``asterlite check`` must start quickly.
 """
