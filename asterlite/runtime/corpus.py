@@ -56,7 +56,9 @@ def run_one(export: Path, timeout: float) -> dict:
         "seconds": round(time.perf_counter() - start, 2),
         "message": _first_line(data.get("message", "")),
         # each TEST_* value as the run computed it (JSON keeps a float's every bit)
-        "tests": [[test["command"], test["value"]] for test in data.get("tests", [])],
+        "tests": [
+            [test["command"], test["label"], test["value"]] for test in data.get("tests", [])
+        ],
     }
 
 
