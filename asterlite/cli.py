@@ -348,7 +348,7 @@ def _limit_option(name: str):
     (``--time-limit inf`` or ``nan`` is a usage error, exit status 2)."""
 
     def parse(text: str) -> float:
-        from asterlite.runtime.export import limit_refusal
+        from asterlite.io.export import limit_refusal
 
         refusal = limit_refusal(name, text)
         if refusal:

@@ -23,6 +23,7 @@ from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.errors import missing_name
 from asterlite.legacy.v15 import relation_title
+from asterlite.legacy.v15_names import GENERATED_NAME
 from asterlite.post.restitution import (
     added_motions,
     as_tuple,
@@ -34,7 +35,6 @@ from asterlite.post.restitution import (
     support_motion,
     values_of,
 )
-from asterlite.runtime.v15_names import GENERATED_NAME
 
 
 def run(ctx, kw):

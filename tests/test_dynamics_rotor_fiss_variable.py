@@ -71,7 +71,7 @@ def rotor_runs(tmp_path_factory):
     speed, and with a speed ramp."""
     if not SDNL133A.is_dir():
         pytest.skip("../shared/aster-corpus is not available")
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     folder = tmp_path_factory.mktemp("rotor")

@@ -14,7 +14,7 @@ import pytest
 from asterlite.errors import AsterliteError
 from asterlite.lang import Evaluator, parse_deck, savetxt
 from asterlite.legacy.v15 import OLD_BEHAVIOURS, computes, relation_title
-from asterlite.runtime.v15_names import GeneratedNames, names_consumed
+from asterlite.legacy.v15_names import GeneratedNames, names_consumed
 from commands.post_dyna_moda_t import summed_times, truncated_window
 from commands.test_resu import _gene_state_index
 

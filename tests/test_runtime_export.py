@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from asterlite.runtime.export import ExportError, describe_run, read_export
+from asterlite.io.export import ExportError, describe_run, read_export
 
 
 def write(path: Path, text: str) -> Path:

@@ -17,6 +17,7 @@ from lark import Token
 
 from asterlite.catalog import load_catalogue
 from asterlite.errors import AsterliteError, Location
+from asterlite.io.export import describe_bare_deck, read_export
 from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM, with_utf8_declaration
 from asterlite.lang import parse_deck
@@ -426,8 +427,6 @@ def _after_edit(text: str, end: int, target: str, calls: list, indent: str):
 
 def input_units(deck: Path) -> dict:
     """Logical unit -> input file, from the deck's .export (beside it) or its folder."""
-    from asterlite.runtime.export import describe_bare_deck, read_export
-
     export = deck.with_suffix(".export")
     try:
         run = read_export(export) if export.exists() else describe_bare_deck(deck)
@@ -443,8 +442,6 @@ def unit_resolver(deck: Path):
 
 def deck_files(deck: Path) -> list[Path]:
     """The deck files run with ``deck`` (its .export's), ``deck`` included."""
-    from asterlite.runtime.export import read_export
-
     export = deck.with_suffix(".export")
     files = [deck]
     if export.exists():

@@ -47,6 +47,7 @@ from asterlite.legacy.v15_facts import (
     ENTITY_KEYWORDS,
     OLD_BEHAVIOURS,
 )
+from asterlite.legacy.v15_names import GENERATED_NAME
 from asterlite.legacy.version import behaviour_version
 
 VERSION = 15
@@ -324,9 +325,7 @@ def relation_title(title: str, node_index: dict, generated) -> tuple[str | None,
     """Today's title of the nonlinearity a code_aster 15 INTITULE names, or
     (None, why) when it is not in that form or names what cannot be followed.
     ``node_index``: mesh node name -> 0-based index; ``generated``: the session's
-    :class:`asterlite.runtime.v15_names.GeneratedNames`."""
-    from asterlite.runtime.v15_names import GENERATED_NAME
-
+    :class:`asterlite.legacy.v15_names.GeneratedNames`."""
     node_width, component_width = TITLE_FIELDS
     node = title[:node_width].strip()
     component = title[node_width : node_width + component_width].strip()

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from asterlite.runtime.context import TestRecord
+from asterlite.post.check_record import TestRecord
 
 LOOSE_TOLERANCE = 1e-3
 DEFAULT_TOLE_MACHINE = 1e-6

@@ -124,8 +124,8 @@ def check_deck(
     """Check one deck (a .comm, an .export or a deck folder); ``time_limit``
     (CPU seconds) replaces the export's and the default."""
     from asterlite import watchdog
+    from asterlite.io.export import describe_run
     from asterlite.runtime import stops
-    from asterlite.runtime.export import describe_run
     from asterlite.runtime.runner import internal_error_report, run_limits
     from asterlite.runtime.session import Session
 

@@ -23,7 +23,7 @@ from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.lang.exceptions import ASTER_CLASSES, ExceptionClass, classify, matches
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CallSite, DeckCallable
-from asterlite.runtime.context import TestRecord
+from asterlite.post.check_record import TestRecord
 
 if TYPE_CHECKING:
     from asterlite.runtime.session import Session

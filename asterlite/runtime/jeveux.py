@@ -4,7 +4,7 @@ code_aster stores each data structure as named vectors: the structure's
 name padded to 19 characters, then the vector's suffix (``.VALE``...).
 Decks name the structure by the deck variable (code_aster up to 14) or by
 the name code_aster 15 generated for it ("0000001b", see
-:mod:`asterlite.runtime.v15_names`). The vectors asterlite can rebuild are
+:mod:`asterlite.legacy.v15_names`). The vectors asterlite can rebuild are
 laid out as code_aster lays them out:
 
 - a function's ``.VALE``: the abscissas, then the ordinates (complex
@@ -26,7 +26,7 @@ import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.errors import UnsupportedError
-from asterlite.runtime.v15_names import GENERATED_NAME
+from asterlite.legacy.v15_names import GENERATED_NAME
 
 STRUCTURE_WIDTH = 19  # characters of a structure's name before the vector's suffix
 SUBSTRUCTURE_WIDTH = 16  # a tran_gene's nonlinearities live in "<16 chars>.NL"

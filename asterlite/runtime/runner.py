@@ -27,10 +27,10 @@ from pathlib import Path
 
 from asterlite import watchdog
 from asterlite.errors import AsterliteError, UnsupportedError
+from asterlite.io.export import NOT_PRODUCED, describe_run, limit_refusal
+from asterlite.post.check_record import TestRecord
 from asterlite.report.fields import summary_fields, summary_lines
 from asterlite.runtime import stops
-from asterlite.runtime.context import TestRecord
-from asterlite.runtime.export import NOT_PRODUCED, describe_run, limit_refusal
 from asterlite.runtime.outdir import (
     OutputFolder,
     OutputFolderError,

@@ -30,13 +30,16 @@ from asterlite.errors import (
     Location,
     UnsupportedError,
 )
+from asterlite.io.export import RunDescription
 from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
 from asterlite.legacy.runtime import translate_call
+from asterlite.legacy.v15_names import GeneratedNames, record_call
 from asterlite.legacy.version import PYTHON2_LAST, session_version
+from asterlite.post.check_record import TestRecord
 from asterlite.runtime import checking, console
 from asterlite.runtime.checking import (
     UnsupportedCommand,
@@ -46,8 +49,7 @@ from asterlite.runtime.checking import (
     statement_failed,
     undecidable,
 )
-from asterlite.runtime.context import CommandContext, TestRecord
-from asterlite.runtime.export import RunDescription
+from asterlite.runtime.context import CommandContext
 from asterlite.runtime.language_check import (
     bind_language_commands,
     bind_unparsed_names,
@@ -56,7 +58,6 @@ from asterlite.runtime.language_check import (
     finding_of_error,
     module_commands,
 )
-from asterlite.runtime.v15_names import GeneratedNames, record_call
 
 
 class DeckFinished(AsterliteError):
