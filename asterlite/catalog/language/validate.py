@@ -162,6 +162,9 @@ class _Checker:
         # code_aster 13-15's checker reads a keyword's max as given (none: no
         # limit on a sequence's length); from 16 on it defaults to 1
         self.count_max_default = None if 13 <= language.version <= 15 else 1
+        # and a factor keyword without max= any number of occurrences (15's
+        # SyntaxChecker: 1e9); from 16 on one
+        self.factor_max_default = MANY if 13 <= language.version <= 15 else 1
 
     # ------------------------------------------------------------ findings
     def fail(self, level: _Level, message: str, keyword: str | None = None) -> None:
@@ -385,7 +388,7 @@ class _Checker:
                 level, f"expected one or more _F(...) occurrences, got {describe(value)}", key
             )
             return
-        low, high = entry.get("min", 0), entry.get("max", 1)
+        low, high = entry.get("min", 0), entry.get("max", self.factor_max_default)
         if len(occurrences) < low:
             self.fail(
                 level, f"expects at least {_count(low, 'occurrence')}, got {len(occurrences)}", key
