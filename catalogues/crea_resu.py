@@ -14,7 +14,6 @@ from asterlite.catalogues.common import (
 )
 
 from asterlite.catalog import BLOC, FACT, OPER, SIMP, UN_PARMI, equal_to, is_in
-from asterlite.legacy import forms
 
 CHAM_GD = ("cham_no_sdaster", "cham_elem", "carte_sdaster", "cham_gd_sdaster")
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
@@ -76,7 +75,6 @@ def _excit(charges, **extra) -> FACT:
 
 CREA_RESU = OPER(
     nom="CREA_RESU",
-    compat_syntax=forms.CREA_RESU,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod=_sdprod,
     reentrant="f",
     fr="Create or enrich a result from fields",

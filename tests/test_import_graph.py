@@ -33,11 +33,6 @@ ROOTS = {
 
 # Edges that close a cycle, each to be cut by the work named. Must become empty.
 CYCLE_EDGES_ALLOWED = {
-    # the legacy DYNA_VIBRA form checks a call against a legacy catalogue built from
-    # today's DYNA_VIBRA catalogue, which names its legacy forms (compat_syntax): cut
-    # when legacy/ looks the forms up by command name (DESIGN: catalogues do not import
-    # the version layer)
-    ("asterlite.legacy.forms", "asterlite.catalogues.common_legacy"): "forms by command name",
     # the language generator's command line dispatches to the old-layout reader,
     # which reuses the generator's converter: cut by a converter module of its own
     (

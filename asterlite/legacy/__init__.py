@@ -1,6 +1,6 @@
 """Legacy syntax (code_aster 10 to 14): run old decks, and port them.
 
-- :mod:`asterlite.legacy.forms`: the ``compat_syntax`` objects of the catalogues;
+- :mod:`asterlite.legacy.forms`: the legacy form of each command, by name;
 - :mod:`asterlite.legacy.dyna`, :mod:`~asterlite.legacy.modes`,
   :mod:`~asterlite.legacy.misc`: the translations, as tables of renames and
   moves plus small functions;

@@ -50,6 +50,7 @@ from asterlite.errors import (
     ValidationError,
 )
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
+from asterlite.legacy.forms import legacy_form
 from asterlite.runtime.checking import MESH_COMMANDS, READERS, code_aster_commands
 
 
@@ -479,7 +480,7 @@ def unsupported_keywords(name: str, kwargs: dict, site: CallSite) -> list[NotCom
 
     catalogue = load_catalogue(name)
     found: list[NotComputed] = []
-    if catalogue is None or catalogue.extra_keywords or catalogue.compat_syntax is not None:
+    if catalogue is None or catalogue.extra_keywords or legacy_form(name) is not None:
         return found  # a legacy spelling asterlite translates first: its refusal says
 
     def visit(levels: list, given: dict, path: str, locations: dict, where) -> None:

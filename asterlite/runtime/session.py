@@ -36,6 +36,7 @@ from asterlite.io.text_encoding import UTF8, UTF8_BOM
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
+from asterlite.legacy.forms import legacy_form
 from asterlite.legacy.runtime import translate_call
 from asterlite.legacy.v15_names import GeneratedNames, record_call
 from asterlite.legacy.version import PYTHON2_LAST, session_version
@@ -541,7 +542,7 @@ class CommandProxy(DeckCallable):
         kwargs = dict(kwargs)
         reuse = kwargs.pop("reuse", None)
         kwargs = v11.before_call(self.name, kwargs, site, session)
-        if catalogue.compat_syntax is not None:  # legacy syntax: check as written, translate
+        if legacy_form(self.name) is not None:  # legacy syntax: check as written, translate
             modern = translate_call(catalogue, kwargs, site, session, reuse=reuse)
             if modern is not None:
                 name, catalogue, kwargs = modern
