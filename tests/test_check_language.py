@@ -329,7 +329,8 @@ def test_a_factor_keyword_without_max_takes_one_occurrence_from_16_on(tmp_path, 
     # code_aster 15's SyntaxChecker: no max means any number; 17's: one
     path = deck(
         tmp_path,
-        "T = CREA_TABLE(LISTE=(_F(PARA='A', LISTE_R=(1.0, 2.0)), _F(PARA='B', LISTE_R=(3.0, 4.0))))\n"
+        "T = CREA_TABLE(LISTE=(_F(PARA='A', LISTE_R=(1.0, 2.0)),\n"
+        "                      _F(PARA='B', LISTE_R=(3.0, 4.0))))\n"
         "IMPR_TABLE(TABLE=T, TRI=(_F(NOM_PARA='A'), _F(NOM_PARA='B')))\n",
     )
     found = [k for k in kinds(check_deck(path, aster_version=version)) if k[0] == "invalid"]

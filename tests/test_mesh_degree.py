@@ -102,7 +102,10 @@ def test_a_code_aster_15_deck_reads_the_prefixed_names(tmp_path):
     )
     deck = tmp_path / "m.comm"
     uses = "G = DEFI_GROUP(MAILLAGE=MA, CREA_GROUP_NO=_F(NOM='M', NOEUD='{}'))\n"
-    body = "DEBUT()\nMA0 = LIRE_MAILLAGE(FORMAT='ASTER')\nMA = CREA_MAILLAGE(MAILLAGE=MA0, LINE_QUAD=_F(TOUT='OUI'))\n"
+    body = (
+        "DEBUT()\nMA0 = LIRE_MAILLAGE(FORMAT='ASTER')\n"
+        "MA = CREA_MAILLAGE(MAILLAGE=MA0, LINE_QUAD=_F(TOUT='OUI'))\n"
+    )
     (tmp_path / "m.export").write_text("F comm m.comm D 1\nF mail m.mail D 20\n")
     for name, known in (("NS4", True), ("NS5", False)):
         deck.write_text(body + uses.format(name) + "FIN()\n")
