@@ -13,6 +13,10 @@ from asterlite.runtime.corpus import find_decks
 from asterlite.runtime.runner import run_deck
 from tests.conftest import CORPUS, corpus_decks, corpus_rows
 
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
+
 BASELINE = Path(__file__).with_name("corpus_baseline.json")
 
 

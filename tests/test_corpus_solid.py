@@ -8,6 +8,10 @@ import pytest
 
 from tests.conftest import ROOT, corpus_rows
 
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
+
 WIDER = ROOT.parent / "shared" / "aster-corpus-wider"
 
 DECKS = {

@@ -17,6 +17,10 @@ from asterlite.runtime.corpus import find_decks
 from asterlite.runtime.runner import run_deck
 from tests.conftest import ROOT, corpus_rows
 
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
+
 CORPUS_V15 = ROOT.parent / "shared" / "aster-corpus-v15"
 BASELINE = Path(__file__).with_name("corpus_baseline_v15.json")
 
@@ -73,7 +77,7 @@ def test_ported_deck_runs_to_the_same_values(deck, corpus_v15, tmp_path):
     assert legacy["status"] == "PASS", legacy["message"]
     ported = run_deck(export, tmp_path / "ported_run")
     assert ported.status == "PASS", ported.message
-    old = [tuple(test) for test in legacy["tests"]]
+    old = [(command, value) for command, _label, value in legacy["tests"]]
     new = [(t.command, t.value) for t in ported.tests]
     assert [c for c, _ in old] == [c for c, _ in new]
     for (_, a), (_, b) in zip(old, new, strict=True):

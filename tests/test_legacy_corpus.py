@@ -36,7 +36,11 @@ TWINS = {  # legacy twin -> corpus deck it translates
 }
 RELATIVE = 1.0e-9  # rounding only: the same arithmetic after translation
 
-pytestmark = pytest.mark.skipif(not CORPUS.is_dir(), reason="aster-corpus is absent")
+# xdist_group: see tests/test_corpus.py
+pytestmark = [
+    pytest.mark.skipif(not CORPUS.is_dir(), reason="aster-corpus is absent"),
+    pytest.mark.xdist_group("shared-corpus"),
+]
 
 
 def _run(export: Path, folder: Path):

@@ -20,6 +20,10 @@ from asterlite.legacy.version import (
 from asterlite.runtime.runner import run_deck
 from tests.conftest import ROOT, corpus_rows
 
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
+
 CORPUS_V11 = ROOT.parent / "shared" / "aster-corpus-v11"
 
 
