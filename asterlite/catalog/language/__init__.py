@@ -4,7 +4,10 @@
   ``catalogues/language/v<N>.json`` from code_aster's own catalogues
   (read by :mod:`~asterlite.catalog.language.reader` with :mod:`ast`, never
   executed; ``sd_prod`` functions read as decision tables by
-  :mod:`~asterlite.catalog.language.sdprod`);
+  :mod:`~asterlite.catalog.language.sdprod`), converted to data by
+  :mod:`~asterlite.catalog.language.convert` (shared with
+  :mod:`~asterlite.catalog.language.legacy_layout`, code_aster 10-12's one
+  ``cata.py``);
 - :mod:`~asterlite.catalog.language.model` loads it lazily, one command at
   a time;
 - :mod:`~asterlite.catalog.language.expression` evaluates the conditions

@@ -19,7 +19,8 @@ parse) and walked by :class:`~asterlite.catalog.language.reader.CatalogueReader`
 in one namespace, as Python ran the module; nothing is executed. Concept types
 are the classes whose bases lead to ``ASSD`` or ``GEOM`` (read from the
 syntax trees, their methods never run). The result has the layout of
-:mod:`asterlite.catalog.language.generate`'s data, made by its ``Converter``.
+:mod:`asterlite.catalog.language.generate`'s data, made by its converter
+(:class:`~asterlite.catalog.language.convert.Converter`).
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ import subprocess
 import tokenize
 from pathlib import Path
 
-from asterlite.catalog.language.generate import FORMAT, ROOT_TYPE, Converter
+from asterlite.catalog.language.convert import FORMAT, ROOT_TYPE, Converter
 from asterlite.catalog.language.reader import (
     CatalogueReader,
     CataObject,
