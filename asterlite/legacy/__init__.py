@@ -5,6 +5,8 @@
   :mod:`~asterlite.legacy.misc`: the translations, as tables of renames and
   moves plus small functions;
 - :mod:`asterlite.legacy.runtime`: what the dispatcher calls;
+- :mod:`asterlite.legacy.v15_names`: code_aster 15's generated object names
+  (``"0000001b"``), for decks that quote them;
 - :mod:`asterlite.legacy.port`: ``asterlite port``, rewriting a deck's text.
 """
 
