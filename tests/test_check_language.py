@@ -335,3 +335,22 @@ def test_a_factor_keyword_without_max_takes_one_occurrence_from_16_on(tmp_path, 
     )
     found = [k for k in kinds(check_deck(path, aster_version=version)) if k[0] == "invalid"]
     assert found == expected
+
+
+@pytest.mark.parametrize(
+    "flow",
+    [
+        "if x == 0:\n    V = 1.0\nelif x == 1:\n    V = 2.0\n",
+        "while x < 3:\n    V = 1.0\n    x = x + 1\n",
+    ],
+)
+def test_names_bound_under_a_condition_check_cannot_compute_are_unknown(tmp_path, flow):
+    # x is not computed (eval is not provided): either branch may run, so V may
+    # be bound; check runs neither and judges nothing that uses V
+    path = deck(
+        tmp_path,
+        "x = eval('1')\nV = None\n"
+        + flow
+        + "T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=V))\nraise ValueError('not reached?')\n",
+    )
+    assert [kind for kind, _ in kinds(check_deck(path))] == ["unsupported-python"] * 2

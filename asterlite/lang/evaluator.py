@@ -29,6 +29,7 @@ from collections.abc import Callable, Mapping
 from asterlite.errors import AsterliteError, DeckRuntimeError, Location, did_you_mean
 from asterlite.lang import library
 from asterlite.lang import limits as guards
+from asterlite.lang.bindings import method_receivers, statement_outputs
 from asterlite.lang.budget import StepBudget
 from asterlite.lang.calls import bind_arguments, contains_unknown
 from asterlite.lang.compiler import compile_function
@@ -175,8 +176,11 @@ class Evaluator(ImportStatements, FlowStatements):
         local_names = bind_arguments(function, args, kwargs)
         if not function.compile_tried:
             self._compile(function)
-        if function.direct is not None:  # its prologue takes the step and the depth
-            return function.direct(*[local_names[name] for name in function.parameters])
+        values = [local_names[name] for name in function.parameters]
+        # its prologue takes the step and the depth; an Unknown argument (check)
+        # runs interpreted, where a test on it leaves every branch undecided
+        if function.direct is not None and all(value is not Unknown for value in values):
+            return function.direct(*values)
         self._step()
         budget = self.budget
         if budget.depth >= budget.max_depth:
@@ -368,29 +372,45 @@ class Evaluator(ImportStatements, FlowStatements):
 
     def _if_stmt(self, node, frame):
         condition, suite, *clauses = node.children
-        if self._truth(self.ev(condition, frame)):
-            self._exec_suite(suite, frame)
-            return
+        branches = [(condition, suite)]
         for clause in clauses:
-            if clause is None:
-                continue
-            if clause.data == "elif_clause":
-                if self._truth(self.ev(clause.children[0], frame)):
-                    self._exec_suite(clause.children[1], frame)
-                    return
-            else:
-                self._exec_suite(clause.children[0], frame)
+            if clause is not None:
+                if clause.data == "elif_clause":
+                    branches.append((clause.children[0], clause.children[1]))
+                else:
+                    branches.append((None, clause.children[0]))
+        for index, (test, body) in enumerate(branches):
+            value = True if test is None else self.ev(test, frame)
+            if value is Unknown:  # check: any branch from here on may run
+                self._undecided([b for _, b in branches[index:]], frame)
+                return
+            if self._truth(value):
+                self._exec_suite(body, frame)
+                return
+
+    def _undecided(self, bodies, frame) -> None:
+        """Under check, blocks that may or may not run (their condition is not
+        computed): none is run, and every name they may bind, or whose object
+        a method of theirs may change, becomes Unknown."""
+        for body in bodies:
+            for name in statement_outputs(body) + method_receivers(body):
+                self._store(name, Unknown, frame)
 
     def _while_stmt(self, node, frame):
         condition, suite, else_clause = node.children
-        while self._truth(self.ev(condition, frame)):
+        value = self.ev(condition, frame)
+        if value is Unknown:
+            self._undecided([suite] + ([else_clause] if else_clause is not None else []), frame)
+            return
+        while self._truth(value):
             self._step()
             try:
                 self._exec_suite(suite, frame)
             except _Break:
                 return
             except _Continue:
-                continue
+                pass
+            value = self.ev(condition, frame)
         if else_clause is not None:
             self._exec_suite(else_clause.children[0], frame)
 

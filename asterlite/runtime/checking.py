@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 from asterlite.catalog.model import BLOC, FACT, SIMP
 from asterlite.concepts.base import AnyPlaceholder, Placeholder
 from asterlite.errors import CommandError, UnsupportedError
+from asterlite.lang.bindings import statement_outputs
 from asterlite.lang.values import CallSite, DeckCallable, Unknown, co_outputs
 
 if TYPE_CHECKING:
@@ -218,60 +219,6 @@ def statement_failed(session, statement, error) -> None:
     for name in statement_outputs(statement):
         session.namespace[name] = Unknown
     facts.close_names()
-
-
-def statement_outputs(statement) -> list[str]:
-    """Names a deck statement binds: assignment and loop targets, imported
-    names, functions, ``with ... as`` names and CO("NAME") outputs."""
-    names = []
-    for node in statement.iter_subtrees_topdown():
-        data = node.data
-        if data == "assign":
-            for target in node.children[:-1]:
-                names += _target_names(target)
-        elif data in ("augassign", "for_stmt", "comp_for"):
-            names += _target_names(node.children[0])
-        elif data == "with_item" and len(node.children) > 1 and node.children[1] is not None:
-            names += _target_names(node.children[1])
-        elif data == "funcdef":
-            names.append(str(node.children[0]))
-        elif data == "import_as_name":
-            bound = node.children[1] if len(node.children) > 1 else None
-            names.append(str(bound if bound is not None else node.children[0]))
-        elif data == "dotted_as_name":
-            bound = node.children[1] if len(node.children) > 1 else None
-            if bound is not None:
-                names.append(str(bound))
-            else:
-                dotted = node.children[0]
-                first = dotted.children[0] if hasattr(dotted, "children") else dotted
-                names.append(str(first))
-        elif data == "funccall" and _is_co_call(node):
-            names.append(node.children[1].children[0].children[0])
-    return names
-
-
-def _target_names(target) -> list[str]:
-    data = getattr(target, "data", None)
-    if data == "var":
-        return [target.children[0].value]
-    if data in ("tuple", "list", "exprlist", "testlist"):
-        return [n for child in target.children for n in _target_names(child)]
-    if data == "getitem":  # A[i] = ...: what A holds is unknown as a whole
-        return _target_names(target.children[0])
-    return []
-
-
-def _is_co_call(node) -> bool:
-    callee, arguments = node.children
-    if callee.data != "var" or callee.children[0].value != "CO" or arguments is None:
-        return False
-    first = arguments.children[0] if arguments.children else None
-    return (
-        getattr(first, "data", None) == "const"
-        and isinstance(first.children[0], str)
-        and first.children[0].isidentifier()
-    )
 
 
 # ------------------------------------------------------------------ units
