@@ -358,6 +358,17 @@ RELATIONS_DYNA = (
     "RELA_EFFO_DEPL",
     "RELA_EFFO_VITE",
 )
+# relations added from outside this package (docs/architecture.md, "Adding a
+# relation"): RELATION value -> the keywords of its block; read when a
+# catalogue holding COMPORTEMENT is built, so register before loading it
+ADDED_RELATIONS: dict[str, dict] = {}
+
+
+def register_relation(name: str, **keywords) -> None:
+    """Add a COMPORTEMENT relation and its keywords (``SIMP``, ``FACT``, ``BLOC``)."""
+    if name in RELATIONS_DYNA or name in ADDED_RELATIONS:
+        raise ValueError(f"relation {name!r} is already catalogued")
+    ADDED_RELATIONS[name] = dict(keywords)
 
 
 def _two_nodes() -> dict:
@@ -392,7 +403,7 @@ def comportement_dyna() -> FACT:
         statut="f",
         max="**",
         fr="Localized nonlinearities (shocks, buckling, dampers, cracked rotor...)",
-        RELATION=SIMP(statut="o", typ="TXM", into=RELATIONS_DYNA),
+        RELATION=SIMP(statut="o", typ="TXM", into=RELATIONS_DYNA + tuple(ADDED_RELATIONS)),
         # -- shock with an obstacle, penalised normal force and Coulomb friction
         b_choc=BLOC(
             condition=equal_to("RELATION", "DIS_CHOC"),
@@ -579,6 +590,10 @@ def comportement_dyna() -> FACT:
             NOM_CMP=SIMP(statut="f", typ="TXM"),
             FONCTION=SIMP(statut="o", typ=FONCTION_OU_FORMULE),
         ),
+        **{
+            f"b_added_{name.lower()}": BLOC(condition=equal_to("RELATION", name), **keywords)
+            for name, keywords in ADDED_RELATIONS.items()
+        },
     )
 
 

@@ -15,6 +15,9 @@ from asterlite.concepts.titles import default_title
 from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row
 from asterlite.dynamics.model import (
     COMPONENTS,
+    MODAL,
+    NORMAL,
+    TANGENTIAL,
     ShockSpec,
     optimal_tangential_damping_v15,
 )
@@ -23,6 +26,10 @@ from asterlite.errors import missing_name
 from asterlite.legacy.v15 import computes
 
 FRICTION_KEYWORDS = ("COULOMB", "COULOMB_DYNA", "COULOMB_STAT")
+# the keywords of the stiffness or damping that sets a stability limit (model.StabilityLimit,
+# model.DampedLimit), as the messages name them
+STIFFNESS_KEYWORDS = {NORMAL: "RIGI_NOR", TANGENTIAL: "RIGI_TAN"}
+DAMPING_KEYWORDS = {NORMAL: "AMOR_NOR", TANGENTIAL: "AMOR_TAN", MODAL: "AMOR_REDUIT"}
 
 
 def shock_specs(ctx, occ, basis, n_modes, first: int = 1) -> list[ShockSpec]:
@@ -167,32 +174,6 @@ def single_node(ctx, occ, mesh, node_kw, group_kw) -> int | None:
 
 def node_shape(basis, node: int, n_modes: int) -> np.ndarray:
     return np.array([basis.shape_at(node, c)[:n_modes] for c in COMPONENTS], dtype=float)
-
-
-def nonlinearity_spec(ctx, kw, occ, basis, n_modes, number) -> ShockSpec:
-    """A COMPORTEMENT occurrence of a relation other than DIS_CHOC
-    (``asterlite.dynamics.laws``)."""
-    from asterlite.dynamics.laws.connections import ConnectionError_, law_spec
-    from asterlite.dynamics.laws.tabulated import LawError
-
-    if occ.get("SOUS_STRUC_1") or occ.get("SOUS_STRUC_2"):
-        ctx.unsupported("two-node nonlinearities on substructures", "SOUS_STRUC_1", occ)
-    if not occ.get("SOUS_STRUC") and not hasattr(basis.numbering, "mesh"):
-        ctx.error("the basis is a mode_gene: name the node's substructure", "SOUS_STRUC", occ)
-    if occ.get("SOUS_STRUC"):  # the node's modes seen on its substructure
-        from asterlite.substructure.shocks import SubstructureError, substructure_view
-
-        try:
-            basis = substructure_view(basis, occ["SOUS_STRUC"], "SOUS_STRUC")
-        except SubstructureError as exc:
-            ctx.error(str(exc), exc.keyword, occ)
-    options = {k: kw.get(k) for k in ("INFO", "VITE_ROTA", "VITESSE_VARIABLE")}
-    try:
-        return law_spec(occ, basis, n_modes, number, options)
-    except ConnectionError_ as error:
-        ctx.error(str(error), error.keyword, occ)
-    except LawError as error:
-        ctx.error(str(error), "RELATION", occ)
 
 
 def continue_law_states(kw, specs) -> None:
@@ -368,7 +349,8 @@ def warn_lagged_shocks(ctx, scheme, system, shocks, dt) -> None:
         f"warning: {scheme} with TRAITEMENT_NONL='EXPLICITE' applies the shock forces of "
         f"the previous state: each elastic impact gains about {100.0 * gain:.3g} % of its "
         f"energy at PAS={dt:.6g} ({factor:g}·ω·dt, ω = {omega:.6g} rad/s set by "
-        f"{limit.cause()}); use TRAITEMENT_NONL='IMPLICITE' (energy-consistent impacts) or "
+        f"{limit.cause(STIFFNESS_KEYWORDS)}); use TRAITEMENT_NONL='IMPLICITE' "
+        "(energy-consistent impacts) or "
         f"PAS <= {step:.3g} for less than 1 %"
     )
 

@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 from asterlite.commands.dyna_vibra_keywords import list_values
+from asterlite.commands.dyna_vibra_shocks import DAMPING_KEYWORDS, STIFFNESS_KEYWORDS
 
 from asterlite.dynamics.model import (
     damped_step_limit,
@@ -141,9 +142,11 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
         radius = tableau.radius if tableau is not None else module.STAGE_RADIUS
         damped = shock_damping_limit(system, shocks, radius, modal=tableau is not None)
         if dt_user > damped.step:
+            keyword = DAMPING_KEYWORDS[damped.damping]
             why = (
-                f"{damped.cause()} gives a damping per unit mass of {damped.per_mass:.6g} 1/s, "
-                f"{damped.damping}*dt/M = {damped.per_mass * dt_user:.6g} beyond the {radius:.4g} "
+                f"{damped.cause(DAMPING_KEYWORDS)} gives a damping per unit mass of "
+                f"{damped.per_mass:.6g} 1/s, {keyword}*dt/M = {damped.per_mass * dt_user:.6g} "
+                f"beyond the {radius:.4g} "
                 f"the explicit stages of {scheme} bear (the critical step is "
                 f"{damped.step:.6g} s)"
             )
@@ -159,7 +162,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
         elif math.isfinite(damped.step) and (dt_max is None or dt_max > damped.step):
             ctx.log(
                 f"{scheme}: the adaptive step stays below {damped.step:.6g} s, the stability "
-                f"limit of its explicit stages set by {damped.cause()}"
+                f"limit of its explicit stages set by {damped.cause(DAMPING_KEYWORDS)}"
             )
     if not entry.step_checked:
         return dt_user
@@ -172,7 +175,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
             if dt_user > damped.step:
                 why = (
                     f"its explicit velocity update is unstable above {damped.step:.6g} s, "
-                    f"set by {damped.cause()}"
+                    f"set by {damped.cause(DAMPING_KEYWORDS)}"
                 )
                 if veri_pas:
                     raise NumericalError(
@@ -188,7 +191,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     why = (
         f"the critical step is {limit:.6g} s, 1/{fraction:g} of the shortest period "
         f"{shortest.period:.6g} s ({shortest.frequency:.6g} Hz, shock stiffness included), "
-        f"set by {shortest.cause()}"
+        f"set by {shortest.cause(STIFFNESS_KEYWORDS)}"
     )
     if veri_pas and entry.step_refused:
         raise NumericalError(
@@ -213,7 +216,8 @@ def legacy_adapt_step_max(ctx, system, shocks) -> float:
     dt_max = default_step_max(shortest.period)
     ctx.log(
         f"ADAPT_ORDRE2 (code_aster 10-12): PAS_MAXI={dt_max:.6g}, a twentieth of the shortest "
-        f"period {shortest.period:.6g} s (that version's default), set by {shortest.cause()}"
+        f"period {shortest.period:.6g} s (that version's default), set by "
+        f"{shortest.cause(STIFFNESS_KEYWORDS)}"
     )
     return dt_max
 

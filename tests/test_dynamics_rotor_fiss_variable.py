@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_rotor_fiss
 
 from asterlite.dynamics.laws import rotor_fiss as RF
 from asterlite.dynamics.laws.connections import rotor_frame
@@ -23,7 +24,9 @@ def test_angl_rota_function_gives_the_angle_and_the_speed_is_not_needed():
     """A DEFI_FONCTION ANGL_ROTA: γ(t) read on it (here 2 t, linear), the
     constant-speed parameters ignored."""
     law = RF.prepare_rotor_fiss(
-        dict(K_PHI=FLAT, DK_DPHI=FLAT, ANGL_INIT=45.0, ANGL_ROTA=Curve([0.0, 1.0], [0.0, 2.0])),
+        read_rotor_fiss(
+            dict(K_PHI=FLAT, DK_DPHI=FLAT, ANGL_INIT=45.0, ANGL_ROTA=Curve([0.0, 1.0], [0.0, 2.0]))
+        ),
         variable_speed=True,
     )
     for t in (0.0, 0.25, 0.7):

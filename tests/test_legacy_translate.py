@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_flambage
 
 from asterlite.catalog import load_catalogue, validate
 from asterlite.errors import ValidationError
@@ -273,7 +274,7 @@ def test_flambage_curves_reproduce_the_legacy_scalar_law():
         return Curve(values[0::2], values[1::2], "CONSTANT", "CONSTANT")
 
     params = flambage.prepare_flambage(
-        {key: curve(behaviour[key]) for key in ("FX", "RIGI_NOR", "AMOR_NOR")}
+        read_flambage({key: curve(behaviour[key]) for key in ("FX", "RIGI_NOR", "AMOR_NOR")})
     )
     state = flambage.initial_state(params)
     x, v, dt, t, buckled_at = 0.0, 2.0, 2.0e-4, 0.0, None

@@ -10,6 +10,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_flambage
 
 from asterlite.errors import AsterliteError
 from asterlite.lang import Evaluator, parse_deck, savetxt
@@ -39,7 +40,7 @@ def scalar_law(**extra):
     from asterlite.dynamics.laws import flambage as FL
 
     kw = {"RIGI_NOR": 1.0, "FNOR_CRIT": 1.0, "FNOR_POST_FL": 0.5, **extra}
-    params = FL.prepare_scalar_flambage(kw)
+    params = FL.prepare_scalar_flambage(read_flambage(kw))
     return FL, params, FL.initial_state(params)
 
 

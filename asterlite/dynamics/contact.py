@@ -45,7 +45,7 @@ N_PARAMS = 35
 
 # Columns of the per-shock integer rows (``flags``).
 F_GEOMETRY, F_TWO_NODES, F_UNIDIR, F_NPOLAR = range(4)
-F_LAW = 4  # relation (laws.kernel.LAW_CODES): 0 DIS_CHOC, else a law of laws/
+F_LAW = 4  # 0 DIS_CHOC, else the branch of laws.kernel of a relation of laws/
 # TRAITEMENT_NONL='IMPLICITE': how the normal force enters the equations
 # (implicit_shocks.py): explicit, linearised in K and C, or left out (a
 # shock out of contact while others are linearised: code_aster applies no

@@ -143,7 +143,7 @@ def shock_culprit(shocks, vint) -> Culprit | None:
             return Culprit(
                 f"the force of the DIS_CHOC {spec.name.strip()!r} (node {spec.node_1}) "
                 f"became non-finite ({', '.join(names)}: {values})",
-                "COMPORTEMENT",
+                spec.source,
                 True,
             )
     return None

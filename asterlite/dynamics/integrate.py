@@ -295,8 +295,8 @@ def run_kernel(
 def legacy_adapt_module(entry: Scheme, rotation, implicit, energy):
     """code_aster 10-12's variant of the scheme (its ADAPT_ORDRE2), which had
     no varying rotation speed, no implicit shocks and no energy balance."""
-    for asked, what in ((rotation, "VITESSE_VARIABLE='OUI'"), (implicit, "implicit shocks"),
-                        (energy, "ENERGIE")):  # fmt: skip
+    for asked, what in ((rotation, "a varying rotation speed"), (implicit, "implicit shocks"),
+                        (energy, "an energy balance")):  # fmt: skip
         if asked:
             raise NumericalError(f"{what} with code_aster 10-12's ADAPT_ORDRE2")
     return entry.legacy_implementation()

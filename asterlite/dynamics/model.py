@@ -9,6 +9,7 @@ tangential damping.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -19,6 +20,18 @@ from asterlite.dynamics.geometry import default_origin, local_frame, rest_side_s
 from asterlite.dynamics.laws import kernel as law_kernel
 
 COMPONENTS = ("DX", "DY", "DZ")
+# which of a shock's stiffnesses or dampings sets a stability limit, or the modes' own damping
+NORMAL, TANGENTIAL, MODAL = "normal", "tangential", "modal"
+
+
+def parameter_name(direction: str, quantity: str, names: Mapping[str, str] | None) -> str:
+    """How a message names a shock's ``direction`` stiffness or damping
+    (``quantity``): the caller's word when it gives one."""
+    if names and direction in names:
+        return names[direction]
+    return f"{direction} {quantity}"
+
+
 OBSTACLE_CODES = {
     "PLAN_Y": C.PLAN_Y,
     "PLAN_Z": C.PLAN_Z,
@@ -167,11 +180,13 @@ class ShockSpec:
     unidirectional: bool = False
     polar: np.ndarray | None = None  # DISCRET: (angle deg, radius) rows
     extra: dict = field(default_factory=dict)
+    source: str = ""  # where the deck gives it (a keyword path below the command), for messages
     # relations other than DIS_CHOC (asterlite.dynamics.laws): the packed law
     # parameters, the internal variables before the first step, the local
     # frame when it is not the obstacle's (rows: local axes) and the
     # rotation mode shapes (DRX, DRY, DRZ rows) of the nodes
     relation: str = "DIS_CHOC"
+    law_code: int = 0  # the relation's branch in laws.kernel (0: DIS_CHOC)
     law: np.ndarray | None = None
     law_state: np.ndarray | None = None
     frame: np.ndarray | None = None
@@ -280,7 +295,9 @@ def build_shocks(specs: list[ShockSpec], system: LinearSystem) -> ShockSet:
                 spec.obstacle_type, spec.norm_obst, spec.angl_vril, spec.coord_1, coord2
             )
         if spec.relation != "DIS_CHOC":
-            flags[s, C.F_LAW] = law_kernel.LAW_CODES[spec.relation]
+            if spec.law_code == law_kernel.DIS_CHOC:
+                raise ValueError(f"{spec.relation} {spec.name!r}: no branch of laws.kernel given")
+            flags[s, C.F_LAW] = spec.law_code
             if spec.law is not None:
                 laws[s, : len(spec.law)] = spec.law
             for node, shape in enumerate((spec.rphi_1, spec.rphi_2)):
@@ -398,8 +415,8 @@ class StabilityLimit:
     ``period`` is the shortest period (s); ``mode`` the 1-based index of
     the mode it belongs to (0 when no mode has a nonzero frequency); when a
     shock stiffens that mode, ``shock`` / ``node`` name the connection and
-    the node, ``stiffness`` is the keyword (``RIGI_NOR`` or ``RIGI_TAN``),
-    ``stiffness_value`` its value and ``component`` the global component
+    the node, ``stiffness`` says which of its stiffnesses (``"normal"`` or
+    ``"tangential"``), ``stiffness_value`` its value and ``component`` the global component
     (DX, DY, DZ) of the mode shape it acts on.
     """
 
@@ -417,15 +434,18 @@ class StabilityLimit:
         """Frequency (Hz) of the shortest period (stiffened by the shock, if any)."""
         return 1.0 / self.period
 
-    def cause(self) -> str:
-        """A sentence naming what sets the period, for messages."""
+    def cause(self, names: Mapping[str, str] | None = None) -> str:
+        """A sentence naming what sets the period, for messages; ``names``:
+        how to name the shock's stiffnesses (the caller's words for
+        ``"normal"`` and ``"tangential"``; default "normal stiffness"...)."""
         if self.mode == 0:
             return "no mode with a nonzero frequency"
         if self.shock is None:
             return f"mode {self.mode} ({self.mode_frequency:.6g} Hz), no shock stiffens it more"
         node = f" (node {self.node})" if self.node else ""
         return (
-            f"shock {self.shock!r}{node}: {self.stiffness}={self.stiffness_value:.6g} N/m "
+            f"shock {self.shock!r}{node}: {parameter_name(self.stiffness, 'stiffness', names)}"
+            f"={self.stiffness_value:.6g} N/m "
             f"on the {self.component} component of mode {self.mode} "
             f"({self.mode_frequency:.6g} Hz) raises it to {self.frequency:.6g} Hz"
         )
@@ -453,7 +473,7 @@ def stability_limit(system: LinearSystem, shocks: ShockSet) -> StabilityLimit:
             for j in range(system.n_modes):
                 if abs(omega[j]) <= eps or abs(masses[j]) <= eps:
                     continue
-                for keyword, k in (("RIGI_NOR", k_n), ("RIGI_TAN", k_t)):
+                for direction, k in ((NORMAL, k_n), (TANGENTIAL, k_t)):
                     if abs(k) > eps:
                         for c in range(3):
                             period = (
@@ -468,7 +488,7 @@ def stability_limit(system: LinearSystem, shocks: ShockSet) -> StabilityLimit:
                                     omega[j] / (2.0 * math.pi),
                                     spec.name,
                                     spec.node_1 if node == 0 else spec.node_2,
-                                    keyword,
+                                    direction,
                                     float(k),
                                     COMPONENTS[c],
                                 )
@@ -510,8 +530,8 @@ class DampedLimit:
     times the squared shape component over the modal mass), the update is
     stable while (ω dt)² + 2 c dt <= 4, i.e. dt <= 4 / (c + sqrt(c² + 4 ω²))
     (2/ω without damping, about 1/(ξ ω) for heavy damping). ``shock`` is
-    None when the mode's own damping sets it; ``damping`` is then
-    ``AMOR_REDUIT``."""
+    None when the mode's own damping sets it; ``damping`` says which
+    damping: ``"normal"`` or ``"tangential"`` (a shock's), ``"modal"``."""
 
     step: float
     mode: int = 0
@@ -523,14 +543,17 @@ class DampedLimit:
     component: str | None = None
     per_mass: float = 0.0  # the damping per unit mass c (1/s): c·dt is the stage's figure
 
-    def cause(self) -> str:
+    def cause(self, names: Mapping[str, str] | None = None) -> str:
+        """A sentence naming what sets the step; ``names``: the caller's
+        words for the shock's ``"normal"`` and ``"tangential"`` dampings."""
         if self.mode == 0:
             return "no mode with a nonzero frequency"
         if self.shock is None:
             return f"the modal damping of mode {self.mode} (reduced damping {self.ratio:.6g})"
         node = f" (node {self.node})" if self.node else ""
         return (
-            f"shock {self.shock!r}{node}: {self.damping}={self.damping_value:.6g} N.s/m on "
+            f"shock {self.shock!r}{node}: {parameter_name(self.damping, 'damping', names)}"
+            f"={self.damping_value:.6g} N.s/m on "
             f"the {self.component} component of mode {self.mode} (equivalent reduced "
             f"damping {self.ratio:.6g})"
         )
@@ -561,16 +584,16 @@ def damped_step_limit(system: LinearSystem, shocks: ShockSet) -> DampedLimit:
         step = explicit_step(omega2[j], c)
         if step < best.step:
             ratio = c / (2.0 * math.sqrt(omega2[j]))
-            best = DampedLimit(step, j + 1, ratio, damping="AMOR_REDUIT")
+            best = DampedLimit(step, j + 1, ratio, damping=MODAL)
     for s in range(shocks.count):
         p = shocks.params[s]
-        pairs = (("AMOR_NOR", p[C.P_KN], p[C.P_CN]), ("AMOR_TAN", p[C.P_KT], p[C.P_CT]))
+        pairs = ((NORMAL, p[C.P_KN], p[C.P_CN]), (TANGENTIAL, p[C.P_KT], p[C.P_CT]))
         nodes = 2 if shocks.flags[s, C.F_TWO_NODES] else 1
         spec = shocks.specs[s]
         for node in range(nodes):
             phi = shocks.phis[s, node]
             for j in usable:
-                for keyword, k, c_shock in pairs:
+                for direction, k, c_shock in pairs:
                     if abs(c_shock) <= eps:
                         continue
                     for c in range(3):
@@ -585,7 +608,7 @@ def damped_step_limit(system: LinearSystem, shocks: ShockSet) -> DampedLimit:
                                 c_total / (2.0 * math.sqrt(w2)),
                                 spec.name,
                                 spec.node_1 if node == 0 else spec.node_2,
-                                keyword,
+                                direction,
                                 float(c_shock),
                                 COMPONENTS[c],
                             )
@@ -620,14 +643,14 @@ def shock_damping_limit(
     usable = [j for j in range(system.n_modes) if abs(masses[j]) > eps]
     for s in range(shocks.count):
         p = shocks.params[s]
-        pairs = (("AMOR_NOR", p[C.P_KN], p[C.P_CN]), ("AMOR_TAN", p[C.P_KT], p[C.P_CT]))
+        pairs = ((NORMAL, p[C.P_KN], p[C.P_CN]), (TANGENTIAL, p[C.P_KT], p[C.P_CT]))
         nodes = 2 if shocks.flags[s, C.F_TWO_NODES] else 1
         spec = shocks.specs[s]
         for node in range(nodes):
             phi = shocks.phis[s, node]
             for j in usable:
                 own = damping[j] / masses[j] if modal else 0.0
-                for keyword, k, c_shock in pairs:
+                for direction, k, c_shock in pairs:
                     if abs(c_shock) <= eps:
                         continue
                     for c in range(3):
@@ -644,7 +667,7 @@ def shock_damping_limit(
                                 c_total / (2.0 * math.sqrt(w2)),
                                 spec.name,
                                 spec.node_1 if node == 0 else spec.node_2,
-                                keyword,
+                                direction,
                                 float(c_shock),
                                 COMPONENTS[c],
                                 c_total,

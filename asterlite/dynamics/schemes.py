@@ -204,8 +204,8 @@ def register(entry: Scheme) -> None:
 # the loop of code_aster 10-12's ADAPT_ORDRE2 (Scheme.legacy_kernel)
 LEGACY_ADAPT_LOOP = SCHEMES["ADAPT_ORDRE2"].legacy_kernel
 # the loops shared by every scheme: variable rotation speed, implicit shocks
-ROTATING_LOOP = "VITESSE_VARIABLE"
-IMPLICIT_LOOP = "TRAITEMENT_NONL='IMPLICITE'"
+ROTATING_LOOP = "variable rotation speed"
+IMPLICIT_LOOP = "implicit shocks"
 
 
 def scheme(name: str) -> Scheme:

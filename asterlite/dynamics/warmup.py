@@ -41,10 +41,10 @@ from asterlite.dynamics import compile_estimate, schemes
 # loop, which needs both the film functions and the legacy ADAPT step control
 SHARED = "shared force functions"
 LEGACY_ADAPT = schemes.LEGACY_ADAPT_LOOP
-FILM = "LAME_FLUIDE"
+FILM = "fluid film"
 # the film under code_aster 10-12's ADAPT_ORDRE2: calls the film functions and
 # the legacy ADAPT loop's step control, so it comes after both
-FILM_ADAPT = "LAME_FLUIDE, ADAPT_ORDRE2 (code_aster 10-12)"
+FILM_ADAPT = "fluid film, ADAPT_ORDRE2 (code_aster 10-12)"
 # each scheme's loops (as asterlite.dynamics.schemes describes them),
 # longest compile first (compile_seconds.json) so that the two workers finish
 # the stage together; ADAPT_ORDRE1, among the first, compiles the local-frame

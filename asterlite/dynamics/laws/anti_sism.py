@@ -20,6 +20,7 @@ Stateless: no internal memory, only archived quantities.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
@@ -72,18 +73,29 @@ def elastic_energy(params, d):
     return energy
 
 
-def prepare_anti_sism(kw) -> np.ndarray:
-    """Parameter array from a validated ANTI_SISM occurrence (defaults filled)."""
+@dataclass(frozen=True)
+class AntiSismParameters:
+    """The device's data (N, m, s): initial and final stiffnesses, the force
+    threshold between them, the viscous coefficient and exponent, and the
+    stroke that scales the viscous term."""
+
+    initial_stiffness: float
+    final_stiffness: float
+    threshold: float
+    viscosity: float
+    exponent: float
+    stroke: float
+
+
+def prepare_anti_sism(data: AntiSismParameters) -> np.ndarray:
+    """Parameter array of the device, after code_aster's checks."""
     p = np.zeros(N_PARAMS)
-    for index, key in (
-        (P_K1, "RIGI_K1"),
-        (P_K2, "RIGI_K2"),
-        (P_SEUIL_FX, "SEUIL_FX"),
-        (P_C, "C"),
-        (P_ALPHA, "PUIS_ALPHA"),
-        (P_DX_MAX, "DX_MAX"),
-    ):
-        p[index] = float(kw.get(key, 0.0 if key != "DX_MAX" else 1.0))
+    p[P_K1] = float(data.initial_stiffness)
+    p[P_K2] = float(data.final_stiffness)
+    p[P_SEUIL_FX] = float(data.threshold)
+    p[P_C] = float(data.viscosity)
+    p[P_ALPHA] = float(data.exponent)
+    p[P_DX_MAX] = float(data.stroke)
     if p[P_K1] < 0.0 or p[P_K2] < 0.0:
         raise LawError("ANTI_SISM: RIGI_K1 and RIGI_K2 must be >= 0")
     if p[P_SEUIL_FX] < 0.0:

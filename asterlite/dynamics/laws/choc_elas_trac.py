@@ -13,6 +13,8 @@ coordinates of both nodes.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
@@ -40,13 +42,24 @@ def elastic_shock_force(params, axial_elongation, state_out):
     return -force
 
 
-def prepare_choc_elas_trac(kw, rest_distance: float = 0.0) -> np.ndarray:
-    """Parameter array from a validated CHOC_ELAS_TRAC occurrence;
-    ``rest_distance``: the distance of the two nodes in the mesh."""
-    dist = float(kw.get("DIST_1") or 0.0) + float(kw.get("DIST_2") or 0.0)
-    if kw.get("FX") is None:
+@dataclass(frozen=True)
+class ChocElasTracParameters:
+    """The shock's data: the force as a function of the crushing, and the
+    distances taken off the nodes' rest distance on each side (0 when not
+    given)."""
+
+    force_curve: object
+    distance_1: float
+    distance_2: float
+
+
+def prepare_choc_elas_trac(data: ChocElasTracParameters, rest_distance: float = 0.0) -> np.ndarray:
+    """Parameter array of the shock; ``rest_distance``: the distance of the
+    two nodes in the mesh."""
+    dist = float(data.distance_1) + float(data.distance_2)
+    if data.force_curve is None:
         raise LawError("CHOC_ELAS_TRAC: FX (force vs crushing DX) is missing")
-    block = function_table(kw["FX"], "CHOC_ELAS_TRAC/FX")
+    block = function_table(data.force_curve, "CHOC_ELAS_TRAC/FX")
     x, y, _, _ = unpack(block)
     if np.any(y < 0.0):
         raise LawError("CHOC_ELAS_TRAC/FX: the force must be >= 0 (a shock only pushes)")

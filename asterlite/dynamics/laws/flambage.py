@@ -40,6 +40,8 @@ maximum penetration and the damping in use.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
@@ -205,20 +207,42 @@ def _scalar_law(params, u, vn, included, defpla, rigi, umax, amor):
     return fn, defpla, rigi, amor
 
 
-def prepare_scalar_flambage(kw) -> np.ndarray:
-    """Parameter array of code_aster 15's scalar law from a FLAMBAGE occurrence
-    with FNOR_CRIT (the defaults and checks of its catalogue and dtmprep_noli_flam)."""
-    knorm = float(kw["RIGI_NOR"])
+@dataclass(frozen=True)
+class ScalarFlambageParameters:
+    """code_aster 15's scalar buckling law: the elastic stiffness and its
+    damping, the critical and post-buckling forces, the width of the drop
+    between them and of the plateau before it, the post-buckling branches
+    (crushings, stiffnesses, dampings; empty when not given), the damping
+    right after buckling (None: the elastic one) and whether the damping
+    force counts in the buckling criterion."""
+
+    stiffness: float
+    damping: float
+    critical_force: float
+    post_buckling_force: float
+    drop: float
+    plateau: float
+    crushings: tuple[float, ...]
+    post_stiffnesses: tuple[float, ...]
+    post_dampings: tuple[float, ...]
+    buckling_damping: float | None
+    damping_in_criterion: bool
+
+
+def prepare_scalar_flambage(data: ScalarFlambageParameters) -> np.ndarray:
+    """Parameter array of code_aster 15's scalar law (the checks of its
+    dtmprep_noli_flam)."""
+    knorm = float(data.stiffness)
     if knorm <= 0.0:
         raise LawError("FLAMBAGE/RIGI_NOR: the stiffness must be > 0")
-    cnorm = float(kw.get("AMOR_NOR") or 0.0)
-    flim, fpost = float(kw["FNOR_CRIT"]), float(kw["FNOR_POST_FL"])
-    enfo = float(kw.get("ENFO_FL", 1.0e-20))
-    plateau = float(kw.get("LARG_PLAT") or 0.0)
+    cnorm = float(data.damping)
+    flim, fpost = float(data.critical_force), float(data.post_buckling_force)
+    enfo = float(data.drop)
+    plateau = float(data.plateau)
     deft0 = flim / knorm + plateau
-    crush = np.array([plateau, *_reals(kw.get("DEPL_POST_FL"))])
-    stiff = np.array([fpost / (deft0 + enfo - plateau), *_reals(kw.get("RIGI_POST_FL"))])
-    damped = _reals(kw.get("AMOR_POST_FL"))
+    crush = np.array([plateau, *_reals(data.crushings)])
+    stiff = np.array([fpost / (deft0 + enfo - plateau), *_reals(data.post_stiffnesses)])
+    damped = _reals(data.post_dampings)
     if np.any(np.diff(crush) < 0.0):
         raise LawError("FLAMBAGE/DEPL_POST_FL: the crushings must increase")
     if stiff.size != crush.size or (damped and len(damped) != crush.size - 1):
@@ -230,41 +254,50 @@ def prepare_scalar_flambage(kw) -> np.ndarray:
         raise LawError(
             "FLAMBAGE: the penetrations DEPL_POST_FL + FNOR_POST_FL/RIGI_POST_FL must increase"
         )
-    first = float(kw["AMOR_FL"]) if kw.get("AMOR_FL") is not None else cnorm
+    first = float(data.buckling_damping) if data.buckling_damping is not None else cnorm
     damps = np.array([first, *(damped or [first] * (crush.size - 1))])
-    criterion = kw.get("CRIT_AMOR", "INCLUS")
     header = np.zeros(HEADER)
-    header[P_DAMPING_IN_CRITERION] = 1.0 if criterion == "INCLUS" else 0.0
+    header[P_DAMPING_IN_CRITERION] = 1.0 if data.damping_in_criterion else 0.0
     header[P_SCALAR] = 1.0
     scalars = [knorm, cnorm, flim, fpost, enfo, deft0, float(crush.size)]
     return np.concatenate([header, scalars, crush, total, damps])
 
 
-def _reals(value) -> list:
-    if value is None:
-        return []
-    return [float(v) for v in (value if isinstance(value, (list, tuple)) else (value,))]
+def _reals(values) -> list:
+    return [float(v) for v in values]
 
 
-def prepare_flambage(kw, sample=None) -> np.ndarray:
-    """Parameter array from a validated FLAMBAGE occurrence: FX, RIGI_NOR
-    and AMOR_NOR functions of the crushing, CRIT_AMOR ('INCLUS' default)."""
+@dataclass(frozen=True)
+class FlambageParameters:
+    """The buckling law as three functions of the crushing: the force
+    threshold, the stiffness and the damping; and whether the damping force
+    counts in the buckling criterion."""
+
+    force_threshold: object
+    stiffness: object
+    damping: object
+    damping_in_criterion: bool
+
+
+def prepare_flambage(data: FlambageParameters, sample=None) -> np.ndarray:
+    """Parameter array of the buckling law (functions checked as code_aster does)."""
     blocks = []
-    for key in ("FX", "RIGI_NOR", "AMOR_NOR"):
-        if kw.get(key) is None:
-            raise LawError(f"FLAMBAGE: {key} (a function of the crushing DX) is missing")
-        blocks.append(function_table(kw[key], f"FLAMBAGE/{key}", sample=sample))
+    for label, function in (
+        ("FLAMBAGE/FX", data.force_threshold),
+        ("FLAMBAGE/RIGI_NOR", data.stiffness),
+        ("FLAMBAGE/AMOR_NOR", data.damping),
+    ):
+        if function is None:
+            raise LawError(f"{label}: a function of the crushing DX is missing")
+        blocks.append(function_table(function, label, sample=sample))
     x, y, _, _ = unpack(blocks[1])
     if np.any(y <= 0.0):
         raise LawError("FLAMBAGE/RIGI_NOR: the stiffness must be > 0 everywhere")
     x, y, _, _ = unpack(blocks[0])
     if np.any(y < 0.0):
         raise LawError("FLAMBAGE/FX: the force threshold must be >= 0")
-    criterion = kw.get("CRIT_AMOR", "INCLUS")
-    if criterion not in ("INCLUS", "EXCLUS"):
-        raise LawError(f"FLAMBAGE/CRIT_AMOR: INCLUS or EXCLUS expected, not {criterion!r}")
     header = np.zeros(HEADER)
-    header[P_DAMPING_IN_CRITERION] = 1.0 if criterion == "INCLUS" else 0.0
+    header[P_DAMPING_IN_CRITERION] = 1.0 if data.damping_in_criterion else 0.0
     at = HEADER
     for slot, block in zip((P_AT_FX, P_AT_RIGI, P_AT_AMOR), blocks, strict=True):
         header[slot] = at

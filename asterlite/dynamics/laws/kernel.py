@@ -1,9 +1,10 @@
 """The laws of this package in the time loop (general path), compiled.
 
 A localized nonlinearity other than DIS_CHOC is a row of the shock arrays
-(``model.build_shocks``) whose ``flags[s, F_LAW]`` holds its relation code
-(:data:`LAW_CODES`); its law parameters are row ``laws[s]`` (packed as the
-law's ``prepare_*`` returns them), its internal variables are ``vint[s]``
+(``model.build_shocks``) whose ``flags[s, F_LAW]`` holds the code of its
+branch below (the ``code`` of its entry in ``connections.RELATIONS``;
+relations may share a branch); its law parameters are row ``laws[s]``
+(packed as the law's ``prepare_*`` returns them), its internal variables are ``vint[s]``
 in the law's own layout (code_aster's VINT1.. order), and column
 :data:`V_TIME` of ``vint`` holds the instant of the stored state.
 
@@ -55,17 +56,6 @@ from asterlite.dynamics.laws import (
 
 DIS_CHOC, FLAMBAGE, ANTI_SISM, DIS_VISC, DIS_ECRO_TRAC = 0, 1, 2, 3, 4
 CHOC_ELAS_TRAC, RELA_EFFO_DEPL, RELA_EFFO_VITE, ROTOR_FISS = 5, 6, 7, 8
-LAW_CODES = {
-    "DIS_CHOC": DIS_CHOC,
-    "FLAMBAGE": FLAMBAGE,
-    "ANTI_SISM": ANTI_SISM,
-    "DIS_VISC": DIS_VISC,
-    "DIS_ECRO_TRAC": DIS_ECRO_TRAC,
-    "CHOC_ELAS_TRAC": CHOC_ELAS_TRAC,
-    "RELA_EFFO_DEPL": RELA_EFFO_DEPL,
-    "RELA_EFFO_VITE": RELA_EFFO_VITE,
-    "ROTOR_FISS": ROTOR_FISS,
-}
 V_TIME = 20  # instant of the stored state (after code_aster's 20 archived values)
 VINT_WIDTH = 21
 # (SCRATCH_ROWS, 14): rk54 work rows, the rates, the kinematics (6 rows), a global vector

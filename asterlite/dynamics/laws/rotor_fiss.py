@@ -28,6 +28,7 @@ M_y and M_z in the turning frame.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
@@ -45,6 +46,7 @@ V_ANGLE, V_MY, V_MZ = 0, 1, 2
 N_VINT = 3
 VINT_NAMES = ("ANGLE", "MY", "MZ")
 TWO_PI = 2.0 * math.pi
+TIME_PARAMETER = "INST"  # the parameter of a function of time (NOM_PARA)
 
 
 @njit(cache=True)
@@ -75,7 +77,7 @@ def pack_program(func, label: str) -> np.ndarray:
     """[n, codes, constants] of a FORMULE of INST, or a LawError naming
     what the kernels cannot run."""
     names = tuple(getattr(func, "NOM_PARA", ()) or ())
-    if names != ("INST",):
+    if names != (TIME_PARAMETER,):
         raise LawError(f"{label}: a formula of INST is expected, not of {names}")
     program = formula_program(func)
     if program is None:
@@ -124,29 +126,46 @@ def cracked_rotor_moment(params, t, rot_axis, dtheta_x, dtheta_y, dtheta_z, stat
 ANGLE_SAMPLES = np.linspace(0.0, TWO_PI, 3601)
 
 
-def prepare_rotor_fiss(kw, rotation_speed: float = 0.0, variable_speed: bool = False) -> np.ndarray:
-    """Parameter array from a validated ROTOR_FISS occurrence. ``rotation_speed``
-    (rad/s, constant speed only) and ``variable_speed`` come from DYNA_VIBRA
-    (VITE_ROTA, VITESSE_VARIABLE)."""
+@dataclass(frozen=True)
+class RotorFissParameters:
+    """The crack's data: the stiffness K(φ) and its derivative K'(φ)
+    (functions of the opening angle in radians), the rotor's angle at
+    t = 0 (degrees) and, at variable speed, its angle as a function of the
+    instant (None otherwise)."""
+
+    stiffness: object
+    stiffness_derivative: object
+    initial_angle: float
+    angle: object | None
+
+
+def prepare_rotor_fiss(
+    data: RotorFissParameters, rotation_speed: float = 0.0, variable_speed: bool = False
+) -> np.ndarray:
+    """Parameter array of the crack. ``rotation_speed`` (rad/s, constant
+    speed only) and ``variable_speed``: the transient's rotation."""
     header = np.zeros(HEADER)
-    header[P_ANGLE0] = math.radians(float(kw.get("ANGL_INIT", 0.0)))
+    header[P_ANGLE0] = math.radians(float(data.initial_angle))
     header[P_SPEED] = float(rotation_speed)
     blocks = []
-    for key in ("K_PHI", "DK_DPHI"):
-        if kw.get(key) is None:
-            raise LawError(f"ROTOR_FISS: {key} is missing")
-        blocks.append(function_table(kw[key], f"ROTOR_FISS/{key}", sample=ANGLE_SAMPLES))
+    for label, function in (
+        ("ROTOR_FISS/K_PHI", data.stiffness),
+        ("ROTOR_FISS/DK_DPHI", data.stiffness_derivative),
+    ):
+        if function is None:
+            raise LawError(f"{label} is missing")
+        blocks.append(function_table(function, label, sample=ANGLE_SAMPLES))
     header[P_AT_ANGLE] = -1.0
     if variable_speed:
-        if kw.get("ANGL_ROTA") is None:
+        angle = data.angle
+        if angle is None:
             raise LawError("ROTOR_FISS: ANGL_ROTA (angle vs INST) is needed at variable speed")
-        angle = kw["ANGL_ROTA"]
         if hasattr(angle, "VALE") and hasattr(angle, "evaluate"):  # a FORMULE
             header[P_VARIABLE_SPEED] = ANGLE_PROGRAM
             blocks.append(pack_program(angle, "ROTOR_FISS/ANGL_ROTA"))
         else:
             header[P_VARIABLE_SPEED] = ANGLE_TABLE
-            blocks.append(function_table(angle, "ROTOR_FISS/ANGL_ROTA", para="INST"))
+            blocks.append(function_table(angle, "ROTOR_FISS/ANGL_ROTA", para=TIME_PARAMETER))
     at = HEADER
     for slot, block in zip((P_AT_K, P_AT_DK, P_AT_ANGLE), blocks, strict=False):
         header[slot] = at
