@@ -139,7 +139,7 @@ def test_onde_plane_is_kept_as_a_wave_and_refused_as_a_vector():
             "GROUP_MA": "BASE",
         },
     )
-    item = load.extra["ONDE_PLANE"]
+    (item,) = load.extra["ONDE_PLANE"]
     assert item["CELLS"].tolist() == mesh.cell_groups["BASE"].tolist()
     assert item["WAVE"].kind == "P" and item["WAVE"].source.tolist() == [0.0, 0.0, -1.0]
     with pytest.raises(UnsupportedError, match="ONDE_PLANE"):
