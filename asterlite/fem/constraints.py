@@ -80,7 +80,12 @@ class Elimination:
         return self.T.shape[1]
 
     def reduce(self, matrix) -> sp.csr_matrix:
-        """Tᵀ A T."""
+        """Tᵀ A T (a copy of A when nothing is eliminated: T is the identity,
+        and the products would hold two more copies of A at once)."""
+        if self.constrained.size == 0 and self.T.shape[0] == self.T.shape[1]:
+            reduced = sp.csr_matrix(matrix, copy=True)
+            reduced.sum_duplicates()
+            return reduced
         return sp.csr_matrix(self.T.T @ (matrix @ self.T))
 
     def expand(self, q: np.ndarray) -> np.ndarray:

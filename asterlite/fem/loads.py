@@ -207,6 +207,10 @@ def load_terms(
     return _real_load_terms(load, characteristics, materials, history_apart)
 
 
+#: instants of a load history computed at once (bounds its work arrays)
+HISTORY_CHUNK = 8
+
+
 def load_history(load, materials):
     """The part of a load that is a history of time and space (an
     ``AFFE_CHAR_MECA_F/ONDE_PLANE`` wave: each boundary point sees the wave
@@ -217,7 +221,7 @@ def load_history(load, materials):
     if not waves:
         return None
 
-    def history(times):
+    def at(times):
         # each ONDE_PLANE occurrence adds its own terms
         parts = [
             plane_wave_history(load.model, materials, wave["CELLS"], wave["WAVE"], times)
@@ -226,6 +230,15 @@ def load_history(load, materials):
         nodes = np.concatenate([p[0] for p in parts])
         components = [c for p in parts for c in p[1]]
         return nodes, components, np.concatenate([p[2] for p in parts], axis=1)
+
+    def history(times):
+        # by a few instants at a time: the free field's gradients and stresses
+        # at every boundary point would otherwise be held for every instant at once
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        nodes, components, first = at(times[:HISTORY_CHUNK])
+        starts = range(HISTORY_CHUNK, times.size, HISTORY_CHUNK)
+        values = [first] + [at(times[k : k + HISTORY_CHUNK])[2] for k in starts]
+        return nodes, components, np.concatenate(values, axis=0)
 
     return history
 
