@@ -119,7 +119,9 @@ def _onde_plane(ctx, model, load, occ) -> None:
         reflection=point("COOR_REFLECHI"),
         displacement=occ.get("DEPL_IMPO"),
     )
-    load.extra["ONDE_PLANE"] = {"CELLS": np.asarray(cells, dtype=int), "WAVE": wave}
+    load.extra.setdefault("ONDE_PLANE", []).append(
+        {"CELLS": np.asarray(cells, dtype=int), "WAVE": wave}
+    )
 
 
 def run(ctx, kw):

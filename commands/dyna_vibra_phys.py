@@ -260,7 +260,7 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
 def physical_loads(ctx, kw, numbering, stiffness_matrix):
     from asterlite.dynamics.physical.system import Load
     from asterlite.fem.assemble import assemble_terms
-    from asterlite.fem.loads import load_terms
+    from asterlite.fem.loads import load_history, load_terms
 
     loads = []
     for occ in kw.factor("EXCIT"):
@@ -270,22 +270,45 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix):
             vector = np.asarray(occ["VECT_ASSE"].values, dtype=float)
             if vector.size != numbering.n_dofs:
                 ctx.error("VECT_ASSE is not on the numbering of the matrices", "VECT_ASSE", occ)
-        else:
+        history = None
+        if occ.get("VECT_ASSE") is None:
             load = occ["CHARGE"]
+            materials = stiffness_matrix.materials
             try:
                 terms = load_terms(
-                    load, stiffness_matrix.characteristics, stiffness_matrix.materials
+                    load, stiffness_matrix.characteristics, materials, history_apart=True
                 )
                 vector = assemble_terms(terms, numbering)
             except KeyError as exc:
                 ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
+            history = load_history(load, materials)
         mult = occ.get("FONC_MULT")
         if occ.get("ACCE") is not None:
             mult = occ["ACCE"]  # relative motion: the vector is -M ψ (CALC_CHAR_SEISME)
         elif mult is None:
             mult = float(occ.get("COEF_MULT", 1.0))
-        loads.append(Load(vector, mult))
+        loads.append(Load(vector, mult, _numbered_history(ctx, history, numbering, occ)))
     return loads
+
+
+def _numbered_history(ctx, history, numbering, occ):
+    """A load history ``times -> (nodes, components, values)`` as a
+    :class:`LoadHistory` on the numbering's DOFs (their rows found once)."""
+    from asterlite.dynamics.physical.system import LoadHistory
+
+    if history is None:
+        return None
+    nodes, components, _ = history(np.zeros(1))
+    rows = numbering.dof_indices(nodes, components)
+    if np.any(rows < 0):
+        k = int(np.flatnonzero(rows < 0)[0])
+        ctx.error(
+            f"load on DOFs the numbering does not have: {components[k]} of node "
+            f"{numbering.mesh.node_names[nodes[k]]}",
+            "CHARGE",
+            occ,
+        )
+    return LoadHistory(rows, lambda times: history(times)[2])
 
 
 def physical_supports(ctx, kw, numbering) -> list[dict]:

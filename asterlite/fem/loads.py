@@ -24,6 +24,7 @@ from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
+from asterlite.fem.plane_wave import plane_wave_history
 from asterlite.fem.plate_elements import plate_gravity_terms
 from asterlite.fem.solid_loads import solid_cells, solid_load_terms, volume_force_terms
 
@@ -182,10 +183,15 @@ def beam_element_loads(model, characteristics, cells, load) -> np.ndarray:
     return out
 
 
-def load_terms(load, characteristics=None, materials=None, complex_values=False) -> list:
+def load_terms(
+    load, characteristics=None, materials=None, complex_values=False, history_apart=False
+) -> list:
     """Every nodal term of one AFFE_CHAR_MECA load (constant values). A load
     with complex values (AFFE_CHAR_MECA_C) gives complex terms, for callers
-    that compute on complex values only (``complex_values``)."""
+    that compute on complex values only (``complex_values``). A caller that
+    takes the load's history of time and space apart (``history_apart``:
+    :func:`load_history`) gets the constant terms only; any other caller
+    is refused such a load by name."""
     imaginary = getattr(load, "imaginary", None)
     if imaginary is not None:
         if not complex_values:
@@ -198,11 +204,47 @@ def load_terms(load, characteristics=None, materials=None, complex_values=False)
         real_terms = _real_load_terms(load, characteristics, materials)
         imag_terms = _real_load_terms(imaginary, characteristics, materials)
         return real_terms + [(n, c, 1j * v) for n, c, v in imag_terms]
-    return _real_load_terms(load, characteristics, materials)
+    return _real_load_terms(load, characteristics, materials, history_apart)
 
 
-def _real_load_terms(load, characteristics=None, materials=None) -> list:
-    if load.extra.get("ONDE_PLANE") is not None:
+#: instants of a load history computed at once (bounds its work arrays)
+HISTORY_CHUNK = 8
+
+
+def load_history(load, materials):
+    """The part of a load that is a history of time and space (an
+    ``AFFE_CHAR_MECA_F/ONDE_PLANE`` wave: each boundary point sees the wave
+    with its own delay, so it is no vector times f(t)), as a function
+    ``times -> (nodes, components, values (n_times, m))``; None when the load
+    has none."""
+    waves = load.extra.get("ONDE_PLANE")
+    if not waves:
+        return None
+
+    def at(times):
+        # each ONDE_PLANE occurrence adds its own terms
+        parts = [
+            plane_wave_history(load.model, materials, wave["CELLS"], wave["WAVE"], times)
+            for wave in waves
+        ]
+        nodes = np.concatenate([p[0] for p in parts])
+        components = [c for p in parts for c in p[1]]
+        return nodes, components, np.concatenate([p[2] for p in parts], axis=1)
+
+    def history(times):
+        # by a few instants at a time: the free field's gradients and stresses
+        # at every boundary point would otherwise be held for every instant at once
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        nodes, components, first = at(times[:HISTORY_CHUNK])
+        starts = range(HISTORY_CHUNK, times.size, HISTORY_CHUNK)
+        values = [first] + [at(times[k : k + HISTORY_CHUNK])[2] for k in starts]
+        return nodes, components, np.concatenate(values, axis=0)
+
+    return history
+
+
+def _real_load_terms(load, characteristics=None, materials=None, history_apart=False) -> list:
+    if load.extra.get("ONDE_PLANE") is not None and not history_apart:
         from asterlite.errors import UnsupportedError
 
         # each boundary point sees the wave with its own delay: no vector times f(t)

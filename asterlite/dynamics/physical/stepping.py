@@ -80,7 +80,7 @@ def non_finite_state(system, t, t_good, step, q, v, a, archive) -> NonFiniteStat
             multipliers.append(float(load.coefficients([t])[0]))
         except Exception:  # a function refusing to be evaluated there: not finite
             multipliers.append(np.nan)
-    vectors = [system.reduce_vector(load.vector) for load in system.loads]
+    vectors = [system.load_vector(load, t) for load in system.loads]
     labels = [f"EXCIT[{e}]" for e in range(1, len(vectors) + 1)]
     culprit = D.first_bad_load(multipliers, vectors, labels, t)
     described = D.state_text(q, v, a, unit="free DOF", qualifier="")

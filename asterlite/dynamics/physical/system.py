@@ -11,13 +11,27 @@ from asterlite.fem.constraints import Elimination, eliminate
 
 
 @dataclass
+class LoadHistory:
+    """Forces that are a history of time and space (a seismic plane wave:
+    each boundary point sees the wave with its own delay, so they are no
+    vector times f(t)): ``values(times)`` gives them, ``(n_times, m)``, on
+    the numbering's DOFs ``rows`` (m,), a DOF appearing as often as it
+    takes a term."""
+
+    rows: np.ndarray
+    values: object
+
+
+@dataclass
 class Load:
     """A physical load vector (on every DOF of the numbering) times a
     multiplier: a float, or a function / one-parameter formula of time
-    evaluated exactly at each instant the scheme asks for."""
+    evaluated exactly at each instant the scheme asks for. ``history``: a
+    part that is a :class:`LoadHistory`, times the same multiplier."""
 
     vector: np.ndarray
     multiplier: object = 1.0
+    history: LoadHistory | None = None
 
     def coefficients(self, times: np.ndarray) -> np.ndarray:
         times = np.atleast_1d(np.asarray(times, dtype=float))
@@ -36,6 +50,8 @@ class PhysicalSystem:
     damping: sp.csr_matrix | None
     full_stiffness: sp.csr_matrix
     loads: list[Load] = field(default_factory=list)
+    # Tᵀ S of each load history (S gathers its terms onto the DOFs), made once
+    _history_maps: dict = field(default_factory=dict, repr=False)
 
     @property
     def n_free(self) -> int:
@@ -70,8 +86,31 @@ class PhysicalSystem:
         offset = self.reduce_vector(self.full_stiffness @ self.elimination.u0)
         out = np.tile(-offset, (times.size, 1))
         for load in self.loads:
-            out += np.outer(load.coefficients(times), self.reduce_vector(load.vector))
+            coefficients = load.coefficients(times)
+            out += np.outer(coefficients, self.reduce_vector(load.vector))
+            if load.history is not None:
+                out += coefficients[:, None] * self.reduced_history(load.history, times)
         return out
+
+    def reduced_history(self, history: LoadHistory, times: np.ndarray) -> np.ndarray:
+        """A load history's reduced forces Tᵀ F(t), (n_times, n_free): its
+        terms go through one sparse map, with no full vector per instant."""
+        key = id(history)
+        if key not in self._history_maps:
+            rows = np.asarray(history.rows, dtype=int)
+            gather = sp.csr_matrix(
+                (np.ones(rows.size), (rows, np.arange(rows.size))), shape=(self.n_dofs, rows.size)
+            )
+            self._history_maps[key] = sp.csr_matrix(self.elimination.T.T @ gather)
+        values = np.asarray(history.values(times), dtype=float)
+        return np.asarray((self._history_maps[key] @ values.T).T)
+
+    def load_vector(self, load: Load, t: float) -> np.ndarray:
+        """The reduced vector a load multiplies by its coefficient at ``t``."""
+        vector = self.reduce_vector(load.vector)
+        if load.history is not None:
+            vector = vector + self.reduced_history(load.history, np.array([t]))[0]
+        return vector
 
     def diagonal_mass_inverse(self) -> np.ndarray | None:
         """1/m_ii when the reduced mass is diagonal (0 for massless DOFs),
