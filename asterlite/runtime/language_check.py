@@ -184,7 +184,7 @@ def component_findings(name: str, kwargs: dict, site: CallSite) -> list:
                     close = difflib.get_close_matches(
                         component, sorted(displacement_components()), n=1, cutoff=0.6
                     )
-                    hint = f", did you mean {close[0]}?" if close else ""
+                    hint = f", did you mean {close[0]!r}?" if close else ""
                     found.append(
                         InvalidCall(
                             f"{component!r} is not a component of {field} (quantity DEPL_R){hint}",
