@@ -5,6 +5,10 @@ relation tests end with their own DYNA_VIBRA."""
 
 from __future__ import annotations
 
+import json
+import shutil
+import subprocess
+import sys
 from pathlib import Path
 
 SAMPLE = Path(__file__).resolve().parent.parent / "samples" / "friction_oscillator"
@@ -39,3 +43,21 @@ DEPLPHYS = CREA_CHAMP(OPERATION="AFFE", PROL_ZERO="OUI", TYPE_CHAM="NOEU_DEPL_R"
                       CHAM_NO=VECTASS, AFFE=_F(TOUT="OUI", NOM_CMP=("DX",), VALE=({U0},)))
 DEPINI = PROJ_VECT_BASE(BASE=MODES, VECT_ASSE=DEPLPHYS, NUME_DDL_GENE=NUMEGE, TYPE_VECT="DEPL")
 """
+
+
+def run_in_a_new_python(folder: Path, deck: str, script: str) -> dict:
+    """Run ``deck`` (with the oscillator's mesh) from a new Python that runs
+    ``script`` with the export's path as its argument (a toy registers itself
+    there, never in the test process) and prints one JSON line: that line."""
+    (folder / "toy.comm").write_text(deck)
+    shutil.copy(MESH, folder / "toy.mail")
+    (folder / "toy.export").write_text(
+        "P time_limit 1200\nP memory_limit 2048\nP ncpus 1\n"
+        "F comm toy.comm D 1\nF mail toy.mail D 20\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", script, str(folder / "toy.export")],
+        capture_output=True, text=True, cwd=SAMPLE.parents[1], timeout=1200,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout.strip().splitlines()[-1])

@@ -10,19 +10,13 @@ the scheme's error (ω dt), far from the oscillator's own ω² = 8e3/2."""
 
 from __future__ import annotations
 
-import json
 import math
-import shutil
-import subprocess
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from tests.one_dof_deck import MESH, one_dof_prelude
+from tests.one_dof_deck import one_dof_prelude, run_in_a_new_python
 
-ROOT = Path(__file__).resolve().parent.parent
 MASS, STIFFNESS, SPRING, U0, DT, T_END = 2.0, 8.0e3, 8.0e3, 3.0e-3, 1.0e-4, 0.1
 
 DECK = (
@@ -55,18 +49,7 @@ print(json.dumps({"status": result.status, "message": result.message,
 
 @pytest.mark.slow
 def test_a_toy_relation_runs_a_deck_through_the_documented_places(tmp_path):
-    (tmp_path / "toy.comm").write_text(DECK)
-    shutil.copy(MESH, tmp_path / "toy.mail")
-    (tmp_path / "toy.export").write_text(
-        "P time_limit 1200\nP memory_limit 2048\nP ncpus 1\n"
-        "F comm toy.comm D 1\nF mail toy.mail D 20\n"
-    )
-    done = subprocess.run(
-        [sys.executable, "-c", RUN, str(tmp_path / "toy.export")],
-        capture_output=True, text=True, cwd=ROOT, timeout=1200,
-    )  # fmt: skip
-    assert done.returncode == 0, done.stderr
-    run = json.loads(done.stdout.strip().splitlines()[-1])
+    run = run_in_a_new_python(tmp_path, DECK, RUN)
     assert run["status"] == "DONE", run["message"]  # no TEST_* in the deck
     assert (run["relation"], run["node"]) == ("TOY_RESSORT", "N1")
     assert run["name"].startswith("TOY_RESSORT") and run["name"].endswith("00000001")

@@ -5,18 +5,10 @@ the archived states follow the scheme's own map, not another scheme's."""
 
 from __future__ import annotations
 
-import json
-import shutil
-import subprocess
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 
-from tests.one_dof_deck import MESH, one_dof_prelude
-
-ROOT = Path(__file__).resolve().parent.parent
+from tests.one_dof_deck import one_dof_prelude, run_in_a_new_python
 
 DECK = (
     one_dof_prelude(2.0, 8.0e3, 3.0e-3)
@@ -44,18 +36,7 @@ print(json.dumps({"status": result.status, "message": result.message, "scheme": 
 
 @pytest.mark.slow
 def test_a_toy_scheme_runs_a_deck_through_the_documented_places(tmp_path):
-    (tmp_path / "toy.comm").write_text(DECK)
-    shutil.copy(MESH, tmp_path / "toy.mail")
-    (tmp_path / "toy.export").write_text(
-        "P time_limit 1200\nP memory_limit 2048\nP ncpus 1\n"
-        "F comm toy.comm D 1\nF mail toy.mail D 20\n"
-    )
-    done = subprocess.run(
-        [sys.executable, "-c", RUN, str(tmp_path / "toy.export")],
-        capture_output=True, text=True, cwd=ROOT, timeout=1200,
-    )  # fmt: skip
-    assert done.returncode == 0, done.stderr
-    run = json.loads(done.stdout.strip().splitlines()[-1])
+    run = run_in_a_new_python(tmp_path, DECK, RUN)
     assert run["status"] == "DONE", run["message"]  # no TEST_* in the deck
     assert run["scheme"] == "TOY_EULER"
     times, q, v = (np.array(run[k]) for k in ("times", "q", "v"))
