@@ -7,7 +7,7 @@ multipliers, support motions (MULT_APPUI) and static corrections
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.dyna_vibra_keywords import as_tuple, list_values
+from asterlite.commands.dyna_vibra_keywords import list_values
 
 from asterlite.dynamics.model import (
     COMPONENTS,
@@ -16,6 +16,7 @@ from asterlite.dynamics.model import (
     modal_damping_rates,
 )
 from asterlite.errors import missing_name
+from asterlite.fem.selection import as_tuple
 from asterlite.modal.seismic import SeismicError, combined_static_shape
 
 

@@ -5,12 +5,13 @@ dispatches here; the keyword readers both paths share stay there."""
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.dyna_vibra_keywords import as_tuple, first_value, list_values
+from asterlite.commands.dyna_vibra_keywords import first_value, list_values
 from asterlite.commands.dyna_vibra_loads import support_shape
-from asterlite.commands.dyna_vibra_time import refuse_too_many_steps
+from asterlite.commands.dyna_vibra_time import archived_index, refuse_too_many_steps
 
 from asterlite.concepts.table import TableNotComputed
 from asterlite.errors import NumericalError
+from asterlite.fem.selection import as_tuple
 
 PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
 
@@ -353,21 +354,7 @@ def physical_initial_state(ctx, kw, system):
     occ = occs[0]
     previous = occ.get("RESULTAT")
     if previous is not None:
-        if occ.get("NUME_ORDRE") is not None:
-            hits = np.nonzero(np.asarray(previous.order) == occ["NUME_ORDRE"])[0]
-            if not hits.size:
-                ctx.error(f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived", "NUME_ORDRE", occ)
-            k = int(hits[0])
-        elif occ.get("INST_INIT") is not None:
-            t = occ["INST_INIT"]
-            k = int(np.argmin(np.abs(previous.times - t)))
-            tol = occ.get("PRECISION", 1.0e-6) * (
-                abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
-            )
-            if abs(previous.times[k] - t) > max(tol, 1e-300):
-                ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
-        else:
-            k = len(previous.times) - 1
+        k = archived_index(ctx, occ, previous)
         fields = previous.fields
         q = system.restrict(fields["DEPL"][k])
         v = system.restrict(fields["VITE"][k]) if "VITE" in fields else v

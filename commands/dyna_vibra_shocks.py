@@ -9,7 +9,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from asterlite.commands.dyna_vibra_keywords import as_tuple
 
 from asterlite.concepts.titles import default_title
 from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row
@@ -23,6 +22,7 @@ from asterlite.dynamics.model import (
 )
 from asterlite.dynamics.schemes import SCHEMES
 from asterlite.errors import missing_name
+from asterlite.fem.selection import as_tuple
 from asterlite.legacy.v15 import computes
 
 FRICTION_KEYWORDS = ("COULOMB", "COULOMB_DYNA", "COULOMB_STAT")

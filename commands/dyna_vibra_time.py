@@ -28,25 +28,7 @@ def initial_state(ctx, kw, n_modes):
     occ = occs[0]
     previous = occ.get("RESULTAT")
     if previous is not None:
-        if occ.get("NUME_ORDRE") is not None:
-            hits = np.nonzero(previous.order == occ["NUME_ORDRE"])[0]
-            if not hits.size:
-                ctx.error(
-                    f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived in the result",
-                    "NUME_ORDRE",
-                    occ,
-                )
-            k = int(hits[0])
-        elif occ.get("INST_INIT") is not None:
-            t = occ["INST_INIT"]
-            k = int(np.argmin(np.abs(previous.times - t)))
-            tol = occ.get("PRECISION", 1.0e-6) * (
-                abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
-            )
-            if abs(previous.times[k] - t) > max(tol, 1e-300):
-                ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
-        else:
-            k = len(previous.times) - 1
+        k = archived_index(ctx, occ, previous)
         return previous.depl[k].copy(), previous.vite[k].copy(), float(previous.times[k])
     if occ.get("DEPL") is not None:
         q0 = np.asarray(occ["DEPL"].values, dtype=float)[:n_modes].copy()
@@ -94,6 +76,31 @@ def time_span(ctx, kw, t_state):
 
 # steps one transient may take (docs/safety.md): bounded before it starts
 MAX_TRANSIENT_STEPS = 1_000_000_000
+
+
+def archived_index(ctx, occ, previous) -> int:
+    """The archive row ETAT_INIT continues from in a previous result: its
+    NUME_ORDRE, else the archived instant at INST_INIT (within PRECISION and
+    CRITERE), else the last one."""
+    if occ.get("NUME_ORDRE") is not None:
+        hits = np.nonzero(np.asarray(previous.order) == occ["NUME_ORDRE"])[0]
+        if not hits.size:
+            ctx.error(
+                f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived in the result",
+                "NUME_ORDRE",
+                occ,
+            )
+        return int(hits[0])
+    if occ.get("INST_INIT") is not None:
+        t = occ["INST_INIT"]
+        k = int(np.argmin(np.abs(previous.times - t)))
+        tol = occ.get("PRECISION", 1.0e-6) * (
+            abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
+        )
+        if abs(previous.times[k] - t) > max(tol, 1e-300):
+            ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
+        return k
+    return len(previous.times) - 1
 
 
 def refuse_too_many_steps(ctx, occ, t0: float, t_end: float, dt: float) -> None:
