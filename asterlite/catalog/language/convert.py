@@ -13,9 +13,7 @@ import ast
 import math
 import re
 
-from asterlite.catalog.language.expression import NotExpressible, from_source
-from asterlite.catalog.language.reader import (
-    CatalogueReader,
+from asterlite.catalog.language.cata_objects import (
     CommandDef,
     Function,
     Keyword,
@@ -26,6 +24,8 @@ from asterlite.catalog.language.reader import (
     UnitRef,
     ValidatorDef,
 )
+from asterlite.catalog.language.expression import NotExpressible, from_source
+from asterlite.catalog.language.reader import CatalogueReader
 from asterlite.catalog.language.sdprod import read_sd_prod
 
 FORMAT = 1  # version of the data layout (asterlite.catalog.language.model reads it)

@@ -30,18 +30,17 @@ import subprocess
 import sys
 from pathlib import Path
 
-from asterlite.catalog.language.convert import FORMAT, Converter
-from asterlite.catalog.language.legacy_layout import generate_legacy, merge_older, read_catalogue
-from asterlite.catalog.language.reader import (
-    CatalogueReader,
+from asterlite.catalog.language.cata_objects import (
     ClassObj,
     CommandDef,
     Function,
     Instance,
     ReadError,
-    Source,
     UserMacroDef,
 )
+from asterlite.catalog.language.convert import FORMAT, Converter
+from asterlite.catalog.language.legacy_layout import generate_legacy, merge_older, read_catalogue
+from asterlite.catalog.language.reader import CatalogueReader, Source
 
 PACKAGE = "code_aster"  # files are read relative to this folder
 CATA = "code_aster/Cata"

@@ -32,19 +32,18 @@ import subprocess
 import tokenize
 from pathlib import Path
 
-from asterlite.catalog.language.convert import FORMAT, ROOT_TYPE, Converter
-from asterlite.catalog.language.reader import (
-    CatalogueReader,
+from asterlite.catalog.language.cata_objects import (
     CataObject,
     CommandDef,
     Keyword,
     Opaque,
     ReadError,
     Scope,
-    Source,
     TypeRef,
-    _builtin,
 )
+from asterlite.catalog.language.convert import FORMAT, ROOT_TYPE, Converter
+from asterlite.catalog.language.reader import CatalogueReader, Source
+from asterlite.catalog.language.subset_values import _builtin
 
 PIECE = re.compile(r"(?m)^(?=#& MODIF )")
 # Accas's rule classes under the names old catalogues write -> the reader's kinds
