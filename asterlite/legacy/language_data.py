@@ -40,7 +40,7 @@ def old_default(command: str, *path: str):
     defaults = {repr(entry.get("defaut")) for entry in levels}
     if len(defaults) != 1 or levels[0].get("defaut") is None:
         raise LookupError(f"code_aster {OLD_VERSION}'s {command}/{'/'.join(path)}: no one default")
-    from asterlite.catalog.language.validate import decode
+    from asterlite.catalog.language.value_checks import decode
 
     return decode(levels[0]["defaut"])
 

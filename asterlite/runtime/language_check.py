@@ -38,6 +38,7 @@ import difflib
 import re
 
 from asterlite.catalog.language import validate as language_validate
+from asterlite.catalog.language import value_checks as language_value_checks
 from asterlite.catalog.language.model import Language, language
 from asterlite.catalog.model import FACT
 from asterlite.concepts.base import Placeholder
@@ -486,7 +487,7 @@ def unsupported_keywords(name: str, kwargs: dict, site: CallSite) -> list[NotCom
     def visit(levels: list, given: dict, path: str, locations: dict, where) -> None:
         vocabulary = _asterlite_vocabulary(levels)
         for key, value in given.items():
-            if key == "reuse" or language_validate.is_undefined(value):
+            if key == "reuse" or language_value_checks.is_undefined(value):
                 continue
             entries = vocabulary.get(key)
             if not entries:
