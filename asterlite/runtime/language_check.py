@@ -517,6 +517,25 @@ def unsupported_keywords(name: str, kwargs: dict, site: CallSite) -> list[NotCom
     return found
 
 
+def refusal_of_valid_call(
+    session, name: str, kwargs: dict, site: CallSite, error: ValidationError
+) -> UnsupportedError | None:
+    """``run``: asterlite's catalogue refused a call (``error``); when the
+    deck version's language accepts it, the refusal is asterlite's limit,
+    not the deck's error: the first keyword asterlite lacks (or the
+    catalogue's message), as unsupported. None when code_aster would
+    refuse the call too, or when there is no language data to tell."""
+    if legacy_form(name) is not None:
+        return None  # legacy spellings are translated before asterlite's catalogue sees them
+    check = check_language(session, name, kwargs, site, record=False)
+    if check is None or check.findings:
+        return None
+    missing = unsupported_keywords(name, kwargs, site)
+    if missing:
+        return missing[0]
+    return as_unsupported(error, deck_version(session))
+
+
 def _asterlite_vocabulary(levels: list) -> dict[str, list]:
     """Every keyword of ``levels`` (blocks included) -> its definitions: a
     factor keyword defined in several blocks allows the keywords of each."""

@@ -29,6 +29,7 @@ from asterlite.errors import (
     DeckSyntaxError,
     Location,
     UnsupportedError,
+    ValidationError,
 )
 from asterlite.io.export import RunDescription
 from asterlite.io.input_files import read_deck, read_deck_text
@@ -58,6 +59,7 @@ from asterlite.runtime.language_check import (
     component_findings,
     finding_of_error,
     module_commands,
+    refusal_of_valid_call,
 )
 
 
@@ -564,7 +566,19 @@ class CommandProxy(DeckCallable):
             kwargs = {k: v for k, v in kwargs.items() if k in known}
         if session.check_only:
             kwargs = _blur_empty_sequences(kwargs)
-        keywords = validate(catalogue, kwargs, site, reuse=reuse)
+        try:
+            keywords = validate(catalogue, kwargs, site, reuse=reuse)
+        except ValidationError as error:
+            # a keyword code_aster has and asterlite lacks is unsupported, never invalid
+            given = dict(kwargs, reuse=reuse) if reuse is not None else kwargs
+            refusal = (
+                None
+                if session.check_only
+                else refusal_of_valid_call(session, self.name, given, site, error)
+            )
+            if refusal is None:
+                raise
+            raise refusal from None
         if extra:
             keywords["_extra"] = extra
         if self.name in SESSION_COMMANDS:
