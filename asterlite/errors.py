@@ -6,6 +6,7 @@ prints ``str(error)`` and exits with status 2. Nothing here imports numpy.
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import dataclass
 
 
@@ -125,7 +126,6 @@ class NumericalError(AsterliteError):
 def close_names(word: str, candidates, n: int = 3, cutoff: float = 0.6) -> list[str]:
     """The candidates nearest to ``word``, best first (difflib's ratio,
     compared without case: code_aster names are upper case, a deck may not be)."""
-    import difflib
 
     by_key: dict[str, str] = {}
     for candidate in candidates:

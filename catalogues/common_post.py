@@ -11,7 +11,19 @@ from __future__ import annotations
 
 from asterlite.catalogues.common import NO_EFFECT_SOLVER
 
-from asterlite.catalog import BLOC, FACT, SIMP, UN_PARMI, Condition, absent, equal_to, exists
+from asterlite.catalog import (
+    BLOC,
+    EXCLUS,
+    FACT,
+    PRESENT_ABSENT,
+    PRESENT_PRESENT,
+    SIMP,
+    UN_PARMI,
+    Condition,
+    absent,
+    equal_to,
+    exists,
+)
 from asterlite.lang.values import Unknown
 
 # --------------------------------------------------------------------------
@@ -396,7 +408,6 @@ def para_lame_flui() -> FACT:
 
 def comportement_dyna() -> FACT:
     """COMPORTEMENT: one occurrence per localized nonlinearity, chosen by RELATION."""
-    from asterlite.catalog import EXCLUS, PRESENT_ABSENT, PRESENT_PRESENT
 
     one_of_each_end = (UN_PARMI("NOEUD_1", "GROUP_NO_1"), UN_PARMI("NOEUD_2", "GROUP_NO_2"))
     return FACT(

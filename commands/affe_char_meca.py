@@ -9,6 +9,10 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
+from asterlite.fem.elements import ElementError
+from asterlite.fem.frames import rotation_from_angles
+from asterlite.fem.node_normals import node_normals
+from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.selection import (
     as_tuple,
     cell_group_members,
@@ -17,6 +21,9 @@ from asterlite.fem.selection import (
     select_cells,
     select_nodes,
 )
+from asterlite.fem.skin import inward_faces, is_plane
+from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
+from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
 _DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
 _FORCE_COMPONENTS = {"FX": "DX", "FY": "DY", "FZ": "DZ", "MX": "DRX", "MY": "DRY", "MZ": "DRZ"}
@@ -167,9 +174,6 @@ def _face_impo(ctx, model, components, load, occ) -> None:
     """Components imposed on every node of the faces (edges in 2D), and DNOR
     (DTAN in 2D): u . n = value with n the mean unit normal at the node, as
     code_aster's cafaci/canort build them."""
-    from asterlite.fem.elements import ElementError
-    from asterlite.fem.node_normals import node_normals
-    from asterlite.fem.skin import is_plane
 
     mesh = model.mesh
     cells = [int(c) for c in cell_group_members(ctx, occ, mesh, "GROUP_MA")]
@@ -228,7 +232,6 @@ def _paired_nodes(ctx, occ, mesh) -> list[tuple[int, int]]:
     """code_aster's pairing (pacoap): each node of list 1, moved by ANGL_NAUT
     about CENTRE then TRAN, takes the nearest node of list 2; the lists have
     the same length and no node of list 2 may be taken twice."""
-    from asterlite.fem.frames import rotation_from_angles
 
     first, second = _group_side(ctx, occ, mesh, "1"), _group_side(ctx, occ, mesh, "2")
     if len(first) != len(second):
@@ -316,8 +319,6 @@ def _liaison_chamno(ctx, model, components, load, occ) -> None:
 def _liaison_elem(ctx, model, components, load, occ) -> None:
     """OPTION='3D_POU': the beam node follows the mean motion of the solid's
     face (asterlite.fem.solid_beam_link); the other options are refused."""
-    from asterlite.fem.elements import ElementError
-    from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
 
     option = occ["OPTION"]
     if option != "3D_POU":
@@ -468,8 +469,6 @@ def _cells_carrying(ctx, model, occ, accepted: dict, what: str) -> np.ndarray:
 def _check_outward(ctx, model, faces, occ) -> None:
     """VERI_NORM='OUI': pressure faces on the skin of the model's volumes must
     point outwards (code_aster stops otherwise)."""
-    from asterlite.fem.skin import inward_faces
-    from asterlite.fem.solid_reference import VOLUME_CELLS
 
     mesh = model.mesh
     volumes = [c for c in model.cell_modelisation if mesh.cell_types[c] in VOLUME_CELLS]
@@ -488,8 +487,6 @@ def _solid_loads(ctx, model, load, kw) -> None:
     """FORCE_FACE, PRES_REP (faces of 3D models, edges of plane ones),
     FORCE_CONTOUR (edges of plane models) and FORCE_INTERNE (volumes, plane
     surfaces)."""
-    from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
-    from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
     edges = dict.fromkeys(PLANE_MODELISATIONS, EDGE_CELLS)
     surfaces = {name: tuple(surface_cells(name)) for name in PLANE_MODELISATIONS}

@@ -19,6 +19,8 @@ from asterlite.commands import affe_char_meca
 
 from asterlite.concepts.assembly import MechanicalLoad
 from asterlite.errors import CommandError
+from asterlite.fem.plane_wave import PlaneWave
+from asterlite.fem.selection import select_cells
 
 # the parameters code_aster gives these functions, and their value at a node
 _GEOMETRY = ("X", "Y", "Z")
@@ -88,8 +90,6 @@ def _force_poutre(ctx, model, load, occ) -> None:
 def _onde_plane(ctx, model, load, occ) -> None:
     """The wave and the absorbing cells it loads (3D_ABSO faces, D_PLAN_ABSO
     edges); the forces at each instant come from plane_wave_history."""
-    from asterlite.fem.plane_wave import PlaneWave
-    from asterlite.fem.selection import select_cells
 
     def point(key):
         given = occ.get(key)

@@ -21,16 +21,21 @@ import copy
 import numpy as np
 
 from asterlite.concepts.assembly import ElementField
+from asterlite.fem.beam_elements import section_forces
 from asterlite.fem.element_fields import (
+    BAR_OPTIONS,
     ELGA_OPTIONS,
     ELNO_OPTIONS,
     NOEU_OPTIONS,
+    bar_element_fields,
     beam_element_fields,
+    discrete_element_fields,
     nodal_average,
 )
 from asterlite.fem.elements import ElementError
+from asterlite.fem.loads import beam_element_loads
 from asterlite.fem.selection import as_tuple, select_cells
-from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of
+from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
@@ -72,7 +77,6 @@ def _keep_selected_orders(ctx, kw, result, fields) -> None:
 def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> None:
     """EFGE_ELNO / SIEF_ELNO of a model of discrete elements (code_aster's
     ef0042: the stiffness forces in the element frame, real or complex)."""
-    from asterlite.fem.element_fields import BAR_OPTIONS, discrete_element_fields
 
     other = [n for n in names if n not in BAR_OPTIONS]
     if other:
@@ -96,7 +100,6 @@ def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> N
 def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names) -> None:
     """EFGE_ELNO / SIEF_ELNO (N) of a model of bars (code_aster's te0185:
     from the displacements, real or complex)."""
-    from asterlite.fem.element_fields import BAR_OPTIONS, bar_element_fields
 
     other = [n for n in names if n not in BAR_OPTIONS]
     if other:
@@ -119,7 +122,6 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
 def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
     """Stresses, strains and energies of 3D and plane solid cells
     (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
-    from asterlite.fem.solid_fields import SOLID_FIELDS, solid_element_fields
 
     other = [n for n in names if n not in SOLID_FIELDS]
     if other:
@@ -195,8 +197,6 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
     """(n_orders, n_beams, 2, 6) the distributed loads of EXCIT on the beams,
     times FONC_MULT at each instant of the result (or COEF_MULT), in the
     convention of the internal forces; None without EXCIT."""
-    from asterlite.fem.beam_elements import section_forces
-    from asterlite.fem.loads import beam_element_loads
 
     occurrences = kw.factor("EXCIT")
     if not occurrences:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.errors import CommandError, ValidationError
+from asterlite.fem.mesh_degree import DuplicateNodeName, line_quad, seg3_to_seg4
 from asterlite.fem.selection import as_scalar, select_cells, select_nodes
 from asterlite.legacy.v15 import computes
 
@@ -34,8 +35,6 @@ def _new_node_names(ctx, occ) -> tuple[str, int] | None:
 
 
 def _change_degree(ctx, kw, mesh) -> None:
-    from asterlite.fem.mesh_degree import DuplicateNodeName, line_quad, seg3_to_seg4
-
     for occ in kw.factor("LINE_QUAD"):
         try:
             added = line_quad(mesh, _cells(ctx, occ, mesh), _new_node_names(ctx, occ))

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import NodalField
-from asterlite.concepts.modes import MultElasResult
+from asterlite.concepts.modes import ModeResult, MultElasResult
 from asterlite.concepts.transient import DynaTrans
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import transfer
@@ -114,7 +114,6 @@ def _mode_meca(ctx, kw):
     """MODE_MECA: one DEPL field per AFFE occurrence, numbered NUME_MODE, at
     FREQ (0 when not given); MATR_RIGI / MATR_MASS, kept with the modes,
     give their generalized stiffnesses and masses."""
-    from asterlite.concepts.modes import ModeResult
 
     if kw.get("RESULTAT") is not None:
         ctx.unsupported("CREA_RESU MODE_MECA enriching a result", "RESULTAT", kw)

@@ -25,8 +25,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.assembly import ComplexAssembledMatrix, MechanicalLoad
 from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
 from asterlite.errors import NumericalError
+from asterlite.fem.loads import load_terms
 from asterlite.harmonic import HarmonicLoad, derived_fields
 from asterlite.harmonic import modal as modal_solver
 from asterlite.harmonic.loads import SweepLoads
@@ -222,7 +224,6 @@ def modal_damping(ctx, kw, mass, stiffness) -> np.ndarray | None:
 
 
 def physical(ctx, kw, frequencies, names):
-    from asterlite.concepts.assembly import ComplexAssembledMatrix
     from asterlite.fem.constraints import eliminate
     from asterlite.harmonic import physical as physical_solver
 
@@ -283,9 +284,7 @@ def physical(ctx, kw, frequencies, names):
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
-    from asterlite.concepts.assembly import MechanicalLoad
     from asterlite.fem.assemble import assemble_terms
-    from asterlite.fem.loads import load_terms
 
     loads = []
     for i, occ in enumerate(kw.factor("EXCIT"), start=1):

@@ -10,8 +10,13 @@ from asterlite.commands.dyna_vibra_loads import support_shape
 from asterlite.commands.dyna_vibra_time import archived_index, refuse_too_many_steps
 
 from asterlite.concepts.table import TableNotComputed
+from asterlite.concepts.transient import DynaTrans
+from asterlite.dynamics.physical.archive import Archive, archived_steps
+from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
 from asterlite.errors import NumericalError
+from asterlite.fem.loads import load_history, load_terms
 from asterlite.fem.selection import as_tuple
+from asterlite.modal.renumber import transfer
 
 PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
 
@@ -19,9 +24,7 @@ PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
 def run_physical(ctx, kw):
     """TYPE_CALCUL='TRAN', BASE_CALCUL='PHYS' (code_aster's DYNA_LINE_TRAN):
     linear, on the assembled matrices; a ``DynaTrans`` on the numbering's DOFs."""
-    from asterlite.concepts.transient import DynaTrans
     from asterlite.dynamics.physical import adapt_ordre2, diff_centre, newmark, wilson
-    from asterlite.dynamics.physical.archive import Archive
     from asterlite.dynamics.physical.system import build_system
 
     schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
@@ -207,8 +210,6 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
     """AMOR_MODAL of a physical transient (code_aster's nmmoam): a
     ``ModalDamping`` applied explicitly by NEWMARK and WILSON (dlnew0);
     DIFF_CENTRE and ADAPT_ORDRE2 do not read the keyword in code_aster."""
-    from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
-    from asterlite.modal.renumber import transfer
 
     occs = kw.factor("AMOR_MODAL")
     if not occs:
@@ -261,7 +262,6 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
 def physical_loads(ctx, kw, numbering, stiffness_matrix):
     from asterlite.dynamics.physical.system import Load
     from asterlite.fem.assemble import assemble_terms
-    from asterlite.fem.loads import load_history, load_terms
 
     loads = []
     for occ in kw.factor("EXCIT"):
@@ -316,7 +316,6 @@ def physical_supports(ctx, kw, numbering) -> list[dict]:
     """MULT_APPUI='OUI' supports of a physical transient: ψ_k (the static
     modes of MODE_STAT at the support nodes along DIRECTION) on the
     numbering, with the support's DEPL / VITE / ACCE functions."""
-    from asterlite.modal.renumber import transfer
 
     supports = []
     for occ in kw.factor("EXCIT"):
@@ -399,8 +398,6 @@ def physical_instants(ctx, kw, t_state):
 
 
 def physical_archive_mask(kw, times):
-    from asterlite.dynamics.physical.archive import archived_steps
-
     occs = kw.factor("ARCHIVAGE")
     if not occs:
         return archived_steps(times, 1, (), 0.0, True)

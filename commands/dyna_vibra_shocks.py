@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from asterlite.concepts.titles import default_title
+from asterlite.dynamics.basis_check import node_checks
 from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row
 from asterlite.dynamics.model import (
     COMPONENTS,
@@ -18,12 +19,15 @@ from asterlite.dynamics.model import (
     NORMAL,
     TANGENTIAL,
     ShockSpec,
+    contact_limit,
     optimal_tangential_damping_v15,
 )
 from asterlite.dynamics.schemes import SCHEMES
 from asterlite.errors import missing_name
 from asterlite.fem.selection import as_tuple
 from asterlite.legacy.v15 import computes
+from asterlite.substructure.shocks import SubstructureError, in_global_frame
+from asterlite.substructure.shocks import substructure_view as view
 
 FRICTION_KEYWORDS = ("COULOMB", "COULOMB_DYNA", "COULOMB_STAT")
 # the keywords of the stiffness or damping that sets a stability limit (model.StabilityLimit,
@@ -105,8 +109,6 @@ def substructured_views(ctx, occ, basis):
     SOUS_STRUC_1/2 the modes seen on those substructures in the global
     frame, and the obstacle's frame REPERE turned into the global one
     (asterlite.substructure.shocks); otherwise ``basis`` twice."""
-    from asterlite.substructure.shocks import SubstructureError, in_global_frame
-    from asterlite.substructure.shocks import substructure_view as view
 
     norm, orig = np.asarray(occ["NORM_OBST"], dtype=float), occ.get("ORIG_OBST")
     orig = np.asarray(orig, dtype=float) if orig is not None else None
@@ -335,7 +337,6 @@ def warn_lagged_shocks(ctx, scheme, system, shocks, dt) -> None:
     factor = SCHEMES[scheme].lagged_impact_gain
     if factor is None or not shocks.count:
         return
-    from asterlite.dynamics.model import contact_limit
 
     limit = contact_limit(system, shocks)
     if limit.shock is None:
@@ -358,7 +359,6 @@ def warn_lagged_shocks(ctx, scheme, system, shocks, dt) -> None:
 def check_basis_for_shocks(ctx, kw, specs, basis, system) -> None:
     """VERI_CHOC: warn, or stop with STOP_CRITERE='OUI', when the basis misses
     too much of a shock node's static compliance (asterlite.dynamics.basis_check)."""
-    from asterlite.dynamics.basis_check import node_checks
 
     occ = kw.factor("VERI_CHOC")[0]
     stop = occ["STOP_CRITERE"] == "OUI"

@@ -15,6 +15,7 @@ from asterlite.dynamics.model import (
     stability_limit,
     suggested_step,
 )
+from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
 from asterlite.dynamics.schemes import SCHEMES
 from asterlite.errors import NumericalError
 
@@ -217,7 +218,6 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
 def legacy_adapt_step_max(ctx, system, shocks) -> float:
     """PAS_MAXI of code_aster 10-12's ADAPT_ORDRE2 when the deck gives none
     (mdptem): a twentieth of the shortest period, shock stiffness included."""
-    from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
 
     shortest = stability_limit(system, shocks)
     dt_max = default_step_max(shortest.period)

@@ -26,6 +26,7 @@ from asterlite.dynamics.shock_fields import ArchivedFields
 from asterlite.legacy.v15 import computes
 from asterlite.legacy.version import tables_name_nodes
 from asterlite.post import shocks as stats
+from asterlite.post.restitution import single_node
 from asterlite.post.wear import history_wear_power
 
 from .recu_fonction import shock_quantity
@@ -92,7 +93,6 @@ def run(ctx, kw):
 def relation_table(ctx, kw, result: TranGene) -> Table:
     """RELA_EFFO_DEPL: the nonlinear phases of the relation at one node
     component (code_aster fails when no RELA_EFFO_DEPL matches)."""
-    from asterlite.post.restitution import single_node
 
     by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: nodes by name
 

@@ -21,6 +21,7 @@ from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.transient import DynaTrans
 from asterlite.fem.dofs import sort_components
 from asterlite.post import field_projection as fp
+from asterlite.post.harmonic import frequency_indices
 from asterlite.post.restitution import as_tuple, nearest_archived
 
 _NODAL = ("DEPL", "VITE", "ACCE")
@@ -222,7 +223,6 @@ def _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2):
 def _project_harmonic(ctx, kw, result, placement, mesh_1, mesh_2, model_2) -> DynaHarmo:
     """A dyna_harmo: its complex nodal fields at the chosen frequencies (FREQ,
     LIST_FREQ within PRECISION / CRITERE, NUME_ORDRE, LIST_ORDRE or all)."""
-    from asterlite.post.harmonic import frequency_indices
 
     _check_source_mesh(ctx, kw, result.numbering, mesh_1, "result")
     target = _target_numbering(ctx, kw, mesh_2, model_2, result.numbering)

@@ -24,11 +24,13 @@ from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.errors import missing_name
 from asterlite.legacy.v15 import relation_title
 from asterlite.legacy.v15_names import GENERATED_NAME
+from asterlite.post.harmonic import selection_from_keywords
 from asterlite.post.restitution import (
     added_motions,
     as_tuple,
     computed_fields,
     element_value_history,
+    field_component_value,
     recombine,
     select_instants,
     single_node,
@@ -77,7 +79,6 @@ def from_harmonic(ctx, kw) -> ComplexFunction:
     from a dyna_harmo (NOM_CHAM at a node component) or a harm_gene (a
     generalized component NUME_CMP_GENE, or a node component recombined on
     the modal basis)."""
-    from asterlite.post.harmonic import selection_from_keywords
 
     generalized = kw.get("RESU_GENE") is not None
     result = kw["RESU_GENE"] if generalized else kw["RESULTAT"]
@@ -126,7 +127,6 @@ def from_harmonic(ctx, kw) -> ComplexFunction:
 
 def constant_from_field(ctx, kw) -> Function:
     """CHAM_GD: the constant function of one field value (code_aster's focste)."""
-    from asterlite.post.restitution import field_component_value
 
     value = field_component_value(ctx, kw, kw["CHAM_GD"])
     component = str(kw["NOM_CMP"])

@@ -14,6 +14,8 @@ import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
+from asterlite.concepts.numpy_api import assembled_to_numpy
+from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
 
 #: modelisations of the (x, y) plane besides the ``2D_`` discrete elements and bars
 _PLANE_MODELISATIONS = ("D_PLAN", "C_PLAN", "AXIS", "D_PLAN_ABSO")
@@ -33,7 +35,6 @@ class Model(Concept):
     def node_components(self) -> dict[int, tuple[str, ...]]:
         """Components carried by each node of the model (union over its elements),
         in code_aster's order; nodes without elements are absent."""
-        from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
 
         found: dict[int, set[str]] = {}
         for cell, modelisation in self.cell_modelisation.items():
@@ -274,7 +275,6 @@ class AssembledMatrix(Concept):
     def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
         """The values as a dense array (refused when code_aster's would hold
         Lagrange multipliers: see asterlite.concepts.numpy_api)."""
-        from asterlite.concepts.numpy_api import assembled_to_numpy
 
         return assembled_to_numpy(self)
 

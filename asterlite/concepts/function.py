@@ -17,6 +17,7 @@ import numpy as np
 from asterlite.concepts.base import Concept
 from asterlite.errors import CommandError
 from asterlite.lang.values import DeckCallable
+from asterlite.post.expression import MATH_CONSTANTS, MATH_FUNCTIONS, CompiledExpression
 
 PROLONGATIONS = ("CONSTANT", "LINEAIRE", "EXCLU")
 
@@ -258,8 +259,6 @@ class Formula(Concept, DeckCallable):
     complex_result: bool = False
 
     def __post_init__(self) -> None:
-        from asterlite.post.expression import CompiledExpression
-
         if isinstance(self.NOM_PARA, str):
             self.NOM_PARA = (self.NOM_PARA,)
         self.NOM_PARA = tuple(self.NOM_PARA)
@@ -340,8 +339,6 @@ class Formula(Concept, DeckCallable):
 
 
 def _is_builtin_name(name: str) -> bool:
-    from asterlite.post.expression import MATH_CONSTANTS, MATH_FUNCTIONS
-
     return name in MATH_CONSTANTS or name in MATH_FUNCTIONS
 
 

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
+from scipy.sparse.csgraph import connected_components
 
 
 class ConstraintError(ValueError):
@@ -187,7 +188,6 @@ def _eliminate_relations(sub: sp.csr_matrix, rhs: np.ndarray, tol: float):
     position, master column, coefficient) of x_slave = value + sum coef
     x_master, the sparse pseudo-inverse of the slave columns (n_slaves,
     n_relations))."""
-    from scipy.sparse.csgraph import connected_components
 
     n_rows, n_cols = sub.shape
     sub = sp.csr_matrix(sub)

@@ -36,11 +36,16 @@ from asterlite.fem.beam_elements import (
     EFGE_COMPONENTS,
     SIPM_COMPONENTS,
     SIPO_COMPONENTS,
+    _material_values,
     beam_extreme_stresses,
     beam_inertia_forces,
     beam_local_forces,
     beam_stresses,
 )
+from asterlite.fem.discrete import local_matrix
+from asterlite.fem.dofs import MODELISATION_COMPONENTS
+from asterlite.fem.elements import ElementError, cell_frames
+from asterlite.fem.frames import block_rotation
 
 BEAM_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 ELNO_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO", "SIPO_ELNO", "SIPM_ELNO")
@@ -136,10 +141,6 @@ def discrete_element_fields(
     element frame (ORIENTATION, else x along the segment), the first node's
     sign reversed on segments; zero where a cell has no stiffness (code_aster
     warns). Points: the cell's nodes (a point cell's second is NaN)."""
-    from asterlite.fem.discrete import local_matrix
-    from asterlite.fem.dofs import MODELISATION_COMPONENTS
-    from asterlite.fem.elements import cell_frames
-    from asterlite.fem.frames import block_rotation
 
     cells = np.asarray(cells, dtype=int)
     other = [name for name in options if name not in BAR_OPTIONS]
@@ -187,8 +188,6 @@ def bar_element_fields(
 ) -> dict[str, ElementField]:
     """EFGE_ELNO / SIEF_ELNO (component N) of bar cells for nodal values
     (n_orders, n_dofs), real or complex."""
-    from asterlite.fem.beam_elements import _material_values
-    from asterlite.fem.elements import ElementError
 
     cells = np.asarray(cells, dtype=int)
     other = [name for name in options if name not in BAR_OPTIONS]

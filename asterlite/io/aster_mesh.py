@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from asterlite.concepts.mesh import CELL_NODE_COUNTS, Mesh
+from asterlite.io.input_files import InputFileError, read_bounded_text
 from asterlite.io.non_finite import NonFiniteNumber, finite_float
 
 
@@ -213,7 +214,6 @@ PARSE_BYTES_PER_BYTE = 40
 def read_aster_mesh(path: str | Path) -> Mesh:
     """Read an ASTER-format mesh file (refused before reading when parsing it
     would pass the run's memory limit)."""
-    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     path = Path(path)
     try:

@@ -48,10 +48,12 @@ import json
 import math
 import os
 import pickle
+import select
 import signal
 import subprocess
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 import numpy as np
@@ -360,8 +362,6 @@ class _ReadingServer:
 
     @classmethod
     def ask(cls, request: dict, timeout: float) -> dict | None:
-        import select
-
         for _attempt in range(2):  # a server that has died is started again, once
             server = cls._running()
             try:
@@ -424,7 +424,6 @@ def _serve() -> int:
 
 def _wait_child(pid: int, timeout: float) -> dict:
     """The child's exit status, or a timeout once it is killed."""
-    import time
 
     deadline = time.monotonic() + timeout
     delay = 0.0005

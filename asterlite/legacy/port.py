@@ -42,8 +42,10 @@ from asterlite.legacy.deck_calls import (
     scan_value,
 )
 from asterlite.legacy.forms import legacy_form
+from asterlite.legacy.misc import DEFAULT_MESH_UNIT
 from asterlite.legacy.nodes import LegacyGroups, group_resolver, node_number_resolver
 from asterlite.legacy.port_python2 import to_python3
+from asterlite.legacy.v15 import named_entities
 from asterlite.legacy.v15_facts import OLD_BEHAVIOURS
 from asterlite.legacy.version import (
     NODE_NAMES_IN_TABLES,
@@ -397,7 +399,6 @@ def _bound_names(tree, commands=None) -> set[str]:
 
 def _with_unprefixed_groups(translation, keywords, env):
     """A code_aster 11 LIRE_MAILLAGE followed by the DEFI_GROUP naming its prefixed groups."""
-    from asterlite.legacy.misc import DEFAULT_MESH_UNIT
 
     unit = lit(keywords.get("UNITE", DEFAULT_MESH_UNIT))
     path = env.unit_path(unit) if env.unit_path is not None and isinstance(unit, int) else None
@@ -458,7 +459,6 @@ def port_file(deck: Path, aster_version: int | None = None) -> PortResult:
     """``deck`` ported, read as the run of its .export reads it: the same version
     (that of the oldest deck file, or ``aster_version``) and the same groups."""
     text, encoding = read_deck(deck)
-    from asterlite.legacy.v15 import named_entities
 
     units = input_units(deck)
     texts = [read_deck_text(f) for f in deck_files(deck)]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import scipy.sparse as sp
 
 from asterlite.concepts.assembly import AssembledMatrix
 from asterlite.concepts.modes import (
@@ -11,7 +12,7 @@ from asterlite.concepts.modes import (
     GeneralizedModes,
     ModeResult,
 )
-from asterlite.fem.constraints import eliminate
+from asterlite.fem.constraints import Elimination, eliminate
 from asterlite.modal import normalize, quadratic
 from asterlite.modal.eigen import (
     EigenError,
@@ -191,9 +192,6 @@ def build_buckling_result(a: AssembledMatrix, b: AssembledMatrix, loads, shapes)
 
 def generalized_modes(k_gene, m_gene, option: str, freq=(), nmax: int = 10, method=None):
     """(ω², vectors) of a projected pencil (dense, unconstrained)."""
-    import scipy.sparse as sp
-
-    from asterlite.fem.constraints import Elimination
 
     n = k_gene.shape[0]
     identity = Elimination(
@@ -291,9 +289,6 @@ def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> 
 
 def complex_generalized_modes(k_gene, m_gene, c_gene, option: str, freq=(), nmax=10, amor=0.0):
     """(λ, vectors, residuals) of a projected quadratic problem (dense, unconstrained)."""
-    import scipy.sparse as sp
-
-    from asterlite.fem.constraints import Elimination
 
     n = np.asarray(k_gene).shape[0]
     identity = Elimination(

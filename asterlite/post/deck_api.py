@@ -21,6 +21,7 @@ from typing import ClassVar
 import numpy as np
 
 from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.mesh import Mesh
 from asterlite.errors import CommandError
 
 # Where INFO_NONL and other printing methods write: the session's message log
@@ -356,7 +357,6 @@ def set_result_mesh(result, mesh) -> None:
     """``result.setMesh(mesh)``: code_aster attaches the mesh to a result that
     has none and refuses another mesh than the one it has; asterlite's
     physical results always know theirs (from their DOF numbering)."""
-    from asterlite.concepts.mesh import Mesh
 
     if not isinstance(mesh, Mesh):
         raise CommandError(f"setMesh expects a mesh, got {type(mesh).__name__}")

@@ -21,7 +21,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from asterlite.catalog import load_catalogue
+from asterlite.catalog.language.model import language
 from asterlite.catalog.model import BLOC, FACT, SIMP
+from asterlite.catalogues import _code_aster_commands as names
 from asterlite.concepts.base import AnyPlaceholder, Placeholder
 from asterlite.errors import CommandError, UnsupportedError
 from asterlite.lang.bindings import statement_outputs
@@ -58,7 +61,6 @@ NOT_MESH_NAMES = {
 
 def code_aster_commands() -> dict[str, str]:
     """Every code_aster command name -> the version whose catalogue lists it."""
-    from asterlite.catalogues import _code_aster_commands as names
 
     known = dict.fromkeys(names.CURRENT, "17")
     for name, version in names.OLDER.items():
@@ -73,7 +75,6 @@ LEGACY_COMMANDS_VERSION = "10-12"
 
 def _legacy_language_commands() -> frozenset[str]:
     """The commands of code_aster 10-12's language data (v11.json)."""
-    from asterlite.catalog.language.model import language
 
     old = language(11)
     return old.command_names if old is not None else frozenset()
@@ -195,7 +196,6 @@ def check_call(proxy, catalogue, keywords: Keywords, site: CallSite, reuse):
 def command_failed(session, name: str, kwargs: dict, error) -> None:
     """After a failed call: record the error; CO outputs become Unknown, and a
     failed command that may make a mesh stops the judging of names."""
-    from asterlite.catalog import load_catalogue
 
     facts: CheckFacts = session.check
     facts.record(error)

@@ -410,7 +410,6 @@ class _GetVectJev(DeckCallable):
         self.session = session
 
     def deck_call(self, args, kwargs, site: CallSite):
-        from asterlite.errors import UnsupportedError
         from asterlite.runtime.jeveux import getvectjev
 
         if len(args) != 1 or kwargs:

@@ -37,10 +37,12 @@ import builtins
 import difflib
 import re
 
+from asterlite.catalog import load_catalogue
 from asterlite.catalog.language import validate as language_validate
 from asterlite.catalog.language import value_checks as language_value_checks
-from asterlite.catalog.language.model import Language, language
-from asterlite.catalog.model import FACT
+from asterlite.catalog.language.components import DISPLACEMENT_FIELDS, displacement_components
+from asterlite.catalog.language.model import Language, available_versions, language
+from asterlite.catalog.model import BLOC, FACT
 from asterlite.concepts.base import Placeholder
 from asterlite.errors import (
     AsterliteError,
@@ -50,6 +52,7 @@ from asterlite.errors import (
     UnsupportedError,
     ValidationError,
 )
+from asterlite.io.input_files import read_text_or_none
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.legacy.forms import legacy_form
 from asterlite.runtime.checking import MESH_COMMANDS, READERS, code_aster_commands
@@ -164,10 +167,6 @@ def component_findings(name: str, kwargs: dict, site: CallSite) -> list:
     """``NOM_CMP`` beside ``NOM_CHAM='DEPL'`` (``VITE``, ``ACCE``...) of a
     result: each component must be one of code_aster's DEPL_R (a field given
     with CHAM_GD may carry another quantity under that name: not judged)."""
-    from asterlite.catalog.language.components import (
-        DISPLACEMENT_FIELDS,
-        displacement_components,
-    )
 
     found = []
 
@@ -229,7 +228,6 @@ def blur_empty_sequences(value):
 
 def not_a_command(name: str, lang: Language, version: int) -> str:
     """Why ``name`` is no command of the deck's version (and which has it)."""
-    from asterlite.catalog.language.model import available_versions
 
     others = []
     for other in available_versions():
@@ -477,7 +475,6 @@ class LanguageCommand(DeckCallable):
 def unsupported_keywords(name: str, kwargs: dict, site: CallSite) -> list[NotComputed]:
     """Keywords of a language-valid call that asterlite's catalogue does not
     have, at every level (each one found, not only the first)."""
-    from asterlite.catalog import load_catalogue
 
     catalogue = load_catalogue(name)
     found: list[NotComputed] = []
@@ -539,7 +536,6 @@ def refusal_of_valid_call(
 def _asterlite_vocabulary(levels: list) -> dict[str, list]:
     """Every keyword of ``levels`` (blocks included) -> its definitions: a
     factor keyword defined in several blocks allows the keywords of each."""
-    from asterlite.catalog.model import BLOC
 
     found: dict[str, list] = {}
 
@@ -681,7 +677,6 @@ def _file_of(error: AsterliteError, session) -> str:
 def _python_tree(path: str):
     """Python 3's syntax tree of a deck file (parsed only, never compiled to
     code or run), or None when Python does not parse it."""
-    from asterlite.io.input_files import read_text_or_none
 
     text = read_text_or_none(path) if path else None
     if text is None:

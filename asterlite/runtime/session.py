@@ -15,13 +15,16 @@ import importlib
 import pkgutil
 import re
 import time
+from collections import ChainMap
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import asterlite.catalogues as package
 from asterlite import watchdog
 from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
+from asterlite.catalog.model import BLOC, FACT, SIMP
 from asterlite.concepts.base import AnyPlaceholder, Concept, Placeholder
 from asterlite.errors import (
     AsterliteError,
@@ -34,6 +37,7 @@ from asterlite.errors import (
 from asterlite.io.export import RunDescription
 from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
+from asterlite.lang import Evaluator, base_namespace, parse_deck, savetxt, stdlib
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
@@ -52,6 +56,7 @@ from asterlite.runtime.checking import (
     undecidable,
 )
 from asterlite.runtime.context import CommandContext
+from asterlite.runtime.deck_api import code_aster_module
 from asterlite.runtime.language_check import (
     bind_language_commands,
     bind_unparsed_names,
@@ -61,6 +66,7 @@ from asterlite.runtime.language_check import (
     module_commands,
     refusal_of_valid_call,
 )
+from asterlite.runtime.outdir import create_file
 
 
 class DeckFinished(AsterliteError):
@@ -85,7 +91,6 @@ class CommandTiming:
 
 def catalogue_command_names() -> list[str]:
     """Names of every command that has a catalogue (no module is imported)."""
-    import asterlite.catalogues as package
 
     return sorted(
         info.name.upper()
@@ -136,10 +141,7 @@ class Session:
     command_hook: Any = None
 
     def __post_init__(self) -> None:
-        from asterlite.lang import base_namespace
-
         self.namespace.update(base_namespace(print_hook=self._print))
-        from asterlite.lang import stdlib
 
         self.namespace.update(stdlib.namespace_builtins(self.namespace))  # globals(): these names
         if self.check_only:
@@ -273,7 +275,6 @@ class Session:
 
     def run_file(self, path: Path) -> None:
         """Parse and evaluate one deck file in the session namespace."""
-        from asterlite.lang import Evaluator, parse_deck
 
         self.current_file = str(path)
         self.started = False
@@ -315,7 +316,6 @@ class Session:
         (the commands are in every namespace already)."""
         if CODE_ASTER_IMPORTED.search(text) or not STARTS_STUDY.search(text):
             return
-        from asterlite.runtime.deck_api import code_aster_module
 
         members = code_aster_module(self)
         self.namespace.setdefault("CA", members["CA"])
@@ -341,7 +341,6 @@ class Session:
         """A deck of code_aster 13 or older ran under Python 2 even when its
         text also reads as Python 3: its '/' of integers, map/zip/range...
         meant Python 2's (asterlite.lang.python2)."""
-        from asterlite.lang import parse_deck
 
         version = session_version(self)
         if version > PYTHON2_LAST:
@@ -381,7 +380,6 @@ class Session:
     def open_deck_file(self, name: str):
         """A new text stream for a file the deck writes itself (numpy.savetxt) in
         the output folder (one it wrote before is replaced); None under check."""
-        from asterlite.runtime.outdir import create_file
 
         if self.check_only:
             return None
@@ -394,8 +392,6 @@ class Session:
         return stream
 
     def run_all(self) -> None:
-        from asterlite.lang import savetxt
-
         token = savetxt.set_writer(self.open_deck_file)
         try:
             self._run_all()
@@ -461,7 +457,6 @@ def unmapped_unit_text(run, unit: int, written: dict) -> str:
 
 def deck_variables(namespace: dict) -> list[str]:
     """Names the deck bound to plain numbers or strings: what --set can vary."""
-    from asterlite.lang import base_namespace
 
     builtins = base_namespace()
     return sorted(
@@ -792,7 +787,6 @@ def override_keywords(name: str, count: int, catalogue, kwargs: dict, session: S
 def apply_keyword_values(catalogue, kwargs: dict, values: dict, log=None) -> dict:
     """A copy of a call's raw keywords with ``values`` (path -> value) put in;
     the levels edited lose the catalogue keywords their new values close."""
-    from asterlite.catalog.model import FACT
 
     kwargs = dict(kwargs)
     edited: dict[str, set] = {}  # factor -> occurrence numbers edited ("" = top level)
@@ -857,7 +851,6 @@ def _copied_occurrences(value) -> list[FactorDict]:
 
 def _all_entries(level) -> dict:
     """Every SIMP and FACT of a level, blocks included."""
-    from asterlite.catalog.model import BLOC
 
     found = {}
     for name, entry in level.entries.items():
@@ -871,9 +864,6 @@ def _all_entries(level) -> dict:
 def _active_names(level, given: dict, context: dict) -> set[str]:
     """Keywords allowed at ``level`` with the given values (blocks opened as
     the validator opens them: on given values and defaults)."""
-    from collections import ChainMap
-
-    from asterlite.catalog.model import BLOC, SIMP
 
     active, values, pending = set(), dict(given), [level]
     opened = True

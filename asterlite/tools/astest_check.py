@@ -43,6 +43,8 @@ import time
 from collections import Counter
 from pathlib import Path
 
+from asterlite.runtime.check_deck import check_deck
+
 # ------------------------------------------------------------- the snapshot
 
 
@@ -176,7 +178,6 @@ def all_invalid_expected(result: dict) -> bool:
 
 def _check_one(task: tuple) -> dict:
     deck, export, version, time_limit = task
-    from asterlite.runtime.check_deck import check_deck
 
     start = time.perf_counter()
     try:

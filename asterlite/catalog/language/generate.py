@@ -30,6 +30,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import asterlite.catalogues.language as installed_language_data
 from asterlite.catalog.language.cata_objects import (
     ClassObj,
     CommandDef,
@@ -487,9 +488,7 @@ def _compact(value) -> str:
 
 
 def default_output(version: int) -> Path:
-    import asterlite.catalogues.language as package
-
-    return Path(package.__path__[0]) / f"v{version}.json"
+    return Path(installed_language_data.__path__[0]) / f"v{version}.json"
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -29,14 +29,14 @@ import json
 from functools import cache
 from pathlib import Path
 
+import asterlite.catalogues.language as package
+
 DATA_PACKAGE = "asterlite.catalogues.language"
 LEGACY_LAST = 12  # the last version whose catalogue was one cata.py (catapy/)
 OLD_LAYOUT_DATA = {10: 11}  # old-layout versions read with another's data
 
 
 def _data_folder() -> Path:
-    import asterlite.catalogues.language as package
-
     return Path(package.__path__[0])
 
 

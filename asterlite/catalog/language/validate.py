@@ -49,6 +49,7 @@ from asterlite.catalog.language.value_checks import (
     decode,
     is_undefined,
 )
+from asterlite.catalog.values import describe_types, describe_value
 from asterlite.errors import Location, ValidationError
 from asterlite.lang.values import CO, CallSite, Unknown
 
@@ -111,8 +112,6 @@ def concept_types(value):
 
 
 def describe(value) -> str:
-    from asterlite.catalog.values import describe_value
-
     return describe_value(value)
 
 
@@ -514,8 +513,6 @@ class _Checker:
         return self.language.is_type(name) and self.language.is_subtype(name, "GEOM")
 
     def _describe_types(self, types) -> str:
-        from asterlite.catalog.values import describe_types
-
         names = tuple("TXM" if self._is_entity(t) else t for t in types)
         return describe_types(names)
 
