@@ -244,8 +244,9 @@ class ComplexFunction(Function):
 class Formula(Concept, DeckCallable):
     """``FORMULE``: an expression of NOM_PARA names and the deck's extra values.
 
-    The expression is compiled once by :mod:`asterlite.post.expression` (a
-    whitelisted ``ast`` walk, never ``eval``) and evaluated on arrays.
+    The expression is parsed and checked once by the formula front end
+    (:mod:`asterlite.lang.formula`: the deck's parser, one whitelist, never
+    ``eval``) and evaluated on arrays by :mod:`asterlite.post.expression`.
     ``extra`` holds the constants and functions passed as extra keywords.
     """
 
@@ -340,9 +341,9 @@ class Formula(Concept, DeckCallable):
 
 
 def _is_builtin_name(name: str) -> bool:
-    from asterlite.post.expression import MATH_CONSTANTS, MATH_FUNCTIONS
+    from asterlite.lang.numeric import CONSTANTS, FUNCTIONS
 
-    return name in MATH_CONSTANTS or name in MATH_FUNCTIONS
+    return name in CONSTANTS or name in FUNCTIONS
 
 
 def as_callable_values(func: Function | Formula, x) -> np.ndarray:
