@@ -62,8 +62,8 @@ def test_a_vale_over_several_lines_is_one_expression():
         ("'abc'", "constant 'abc' is not a number"),
         ("None", "constant None is not a number"),
         ("x +", "does not parse"),
-        ("x <> 1", "does not parse: '<>' is Python 2"),
-        ("__import__('os')", "does not parse: names starting with '__' are not allowed"),
+        ("x <> 1", "does not parse at column 3: '<>' is Python 2"),
+        ("__import__('os')", "does not parse at column 1: names starting with '__' are not"),
     ],
 )
 def test_one_whitelist_refuses_by_name(text, message):
@@ -134,3 +134,11 @@ def test_names_without_a_kernel_code_keep_the_sampled_path():
 
     assert formula_program(formula) is None
     assert formula.evaluate(np.array([0.0, 2.0])).tolist() == [0.0, 1.0]
+
+
+def test_a_parse_error_names_its_column_in_the_text():
+    with pytest.raises(ExpressionError) as error:
+        parse_formula("  x +* 2")
+    assert error.value.message == (
+        "formula '  x +* 2' does not parse at column 6: invalid syntax: unexpected '*'"
+    )

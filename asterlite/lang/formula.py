@@ -156,7 +156,11 @@ def parse_formula(text: str) -> FormulaTree:
     except DeckSyntaxError as error:
         if "nested too deeply" in error.message:
             raise _too_deep(text) from None
-        raise ExpressionError(f"formula {text!r} does not parse: {error.message}") from None
+        where = ""
+        if "\n" not in text.strip() and error.location is not None:  # columns of the text itself
+            column = error.location.column + len(text) - len(text.lstrip())
+            where = f" at column {column}"
+        raise ExpressionError(f"formula {text!r} does not parse{where}: {error.message}") from None
     except (MemoryError, RecursionError):
         raise _too_deep(text) from None
     try:
