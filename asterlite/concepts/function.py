@@ -16,8 +16,9 @@ import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.errors import CommandError
+from asterlite.lang.numeric import CONSTANTS, FUNCTIONS
 from asterlite.lang.values import DeckCallable
-from asterlite.post.expression import MATH_CONSTANTS, MATH_FUNCTIONS, CompiledExpression
+from asterlite.post.expression import CompiledExpression
 
 PROLONGATIONS = ("CONSTANT", "LINEAIRE", "EXCLU")
 
@@ -245,8 +246,9 @@ class ComplexFunction(Function):
 class Formula(Concept, DeckCallable):
     """``FORMULE``: an expression of NOM_PARA names and the deck's extra values.
 
-    The expression is compiled once by :mod:`asterlite.post.expression` (a
-    whitelisted ``ast`` walk, never ``eval``) and evaluated on arrays.
+    The expression is parsed and checked once by the formula front end
+    (:mod:`asterlite.lang.formula`: the deck's parser, one whitelist, never
+    ``eval``) and evaluated on arrays by :mod:`asterlite.post.expression`.
     ``extra`` holds the constants and functions passed as extra keywords.
     """
 
@@ -339,7 +341,7 @@ class Formula(Concept, DeckCallable):
 
 
 def _is_builtin_name(name: str) -> bool:
-    return name in MATH_CONSTANTS or name in MATH_FUNCTIONS
+    return name in CONSTANTS or name in FUNCTIONS
 
 
 def as_callable_values(func: Function | Formula, x) -> np.ndarray:

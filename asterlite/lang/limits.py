@@ -29,6 +29,7 @@ class Limits:
     max_string_length: int = 10_000_000  # characters of a string
     max_call_depth: int = 64  # nested calls of deck functions
     max_nesting: int = 100  # levels of containers inside containers (tuples in tuples...)
+    max_tree_depth: int = 200  # levels of a syntax tree: deck code, a FORMULE's expression
     max_work: int = 10_000_000_000  # arithmetic of one numpy call (matrix products, solvers)
     max_seconds: float | None = None  # wall-clock bound on deck-level steps (None: no bound)
 
