@@ -44,6 +44,7 @@ raised again, and an API user's process outlives the run).
 
 from __future__ import annotations
 
+import ctypes
 import gc
 import os
 import resource
@@ -127,8 +128,6 @@ GC_INTERVAL_SECONDS = 1.0
 
 def _trim_allocator() -> None:
     try:
-        import ctypes
-
         ctypes.CDLL("libc.so.6").malloc_trim(0)
     except (OSError, AttributeError):
         pass

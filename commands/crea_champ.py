@@ -32,13 +32,10 @@ def _template_numbering(ctx, kw):
             return value if key == "NUME_DDL" else value.numbering
     model = kw.get("MODELE")
     if model is not None:
-        from asterlite.concepts.assembly import DofNumbering
         from asterlite.fem.assemble import build_numbering_dofs
 
         return DofNumbering(mesh=model.mesh, dofs=build_numbering_dofs(model.node_components()))
     # MAILLAGE only: a field on exactly the (node, component) pairs affected
-    from asterlite.concepts.assembly import DofNumbering
-
     mesh = kw["MAILLAGE"]
     pairs: dict[int, set[str]] = {}
     for occ in kw.factor("AFFE"):

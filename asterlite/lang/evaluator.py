@@ -31,7 +31,7 @@ import itertools
 from collections.abc import Callable, Mapping
 
 from asterlite.errors import AsterliteError, DeckRuntimeError, Location, did_you_mean
-from asterlite.lang import library
+from asterlite.lang import library, python2
 from asterlite.lang import limits as guards
 from asterlite.lang.bindings import method_receivers, statement_outputs
 from asterlite.lang.budget import StepBudget
@@ -132,7 +132,6 @@ class Evaluator(ExpressionEvaluation, ImportStatements, FlowStatements):
 
     def _python2_builtins(self) -> None:
         """A Python 2 deck's namespace: map, zip, range... give lists (once)."""
-        from asterlite.lang import python2
 
         if not self.namespace.get("__python2__"):
             self.namespace.update(python2.builtins(self.namespace, self.limits))

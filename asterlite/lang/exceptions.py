@@ -36,6 +36,7 @@ from asterlite.errors import (
     UnsupportedError,
     ValidationError,
 )
+from asterlite.lang import limits as guards
 from asterlite.lang.values import CallSite, DeckCallable
 
 
@@ -57,8 +58,6 @@ class ExceptionClass(DeckCallable):
         return False
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
-        from asterlite.lang import limits as guards
-
         if kwargs:
             raise DeckRuntimeError(f"{self.name}() takes no keyword arguments")
         guards.check_nested_size(args, guards.Limits())  # its message is their text
@@ -74,8 +73,6 @@ class RaisedException:
     deck_attributes = frozenset({"args"})
 
     def __init__(self, cls: ExceptionClass, args: tuple):
-        from asterlite.lang import limits as guards
-
         self.cls = cls
         self.args = args
         shown = guards.deck_text_value(args)  # engine objects neutrally, as print does

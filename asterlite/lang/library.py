@@ -18,6 +18,7 @@ from asterlite.lang import exceptions, stdlib
 from asterlite.lang import limits as guards
 from asterlite.lang.limits import Limits
 from asterlite.lang.savetxt import make_savetxt
+from asterlite.lang.stdlib import cmath_module
 from asterlite.lang.values import COBuilder, DeckModule, FactorBuilder
 
 # How a plain Python callable treats Unknown arguments (see Evaluator._call_python):
@@ -553,8 +554,6 @@ def builtin_modules(limits: Limits) -> dict:
 
 
 def _cmath_module() -> DeckModule:
-    from asterlite.lang.stdlib import cmath_module
-
     return cmath_module()
 
 

@@ -8,10 +8,12 @@ location; the evaluator attaches the location of the expression.
 
 from __future__ import annotations
 
+import _string
 import functools
 import itertools
 import math
 import re
+import string
 import sys
 import types
 from dataclasses import dataclass
@@ -137,7 +139,6 @@ def check_format_template(template: str, limits: Limits, args=(), kwargs=None) -
     tuples, dicts and strings: on an engine object, '{0[0].x}' would reach
     any public attribute), and the result's length bounded before formatting
     (each field's width and precision plus its value's text)."""
-    import string
 
     try:
         fields = list(string.Formatter().parse(template))
@@ -165,7 +166,6 @@ def check_format_template(template: str, limits: Limits, args=(), kwargs=None) -
 def _format_field_value(field_name: str, automatic: int, args, kwargs):
     """The value a format field shows, each accessor of its chain checked
     the way a deck may use it (None when the chain fails: format reports it)."""
-    import _string
 
     first, accessors = _string.formatter_field_name_split(field_name)
     root = automatic if first == "" else first

@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from asterlite.errors import DeckSyntaxError, Location, UnquotedLocation
+from asterlite.lang import parser_cache
 from asterlite.lang.tree_checks import (
     LocatedSyntaxError,
     check_tree,
@@ -239,8 +240,6 @@ def _parser():
     """The LALR parser: its tables loaded from the private cache, else built
     and stored there (lark's own ``cache=True`` trusts a file in $TMPDIR)."""
     from lark import Lark
-
-    from asterlite.lang import parser_cache
 
     grammar = GRAMMAR_PATH.read_text(encoding="utf-8")
     folder = parser_cache.cache_folder()

@@ -10,9 +10,11 @@ One iterative pass (deep nesting cannot overflow the stack), bounded by
 from __future__ import annotations
 
 import re
+import unicodedata
 from typing import TYPE_CHECKING
 
 from asterlite.errors import DeckSyntaxError
+from asterlite.lang import fstrings
 from asterlite.lang.limits import Limits
 
 if TYPE_CHECKING:
@@ -400,8 +402,6 @@ def _fold_fstring(node, tokens, module: Module, parse) -> None:
     ``fstring_field`` [expression, conversion, spec fstring or None, debug text]."""
     from lark import Tree
 
-    from asterlite.lang import fstrings
-
     parts = []
     for token in tokens:
         match = _QUOTE_RE.match(token.value)
@@ -522,8 +522,6 @@ def decode_string_literal(text: str) -> str:
 
 
 def _unescape(match: re.Match) -> str:
-    import unicodedata
-
     code = match.group(1)
     if code in _SIMPLE_ESCAPES:
         return _SIMPLE_ESCAPES[code]

@@ -31,6 +31,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from asterlite import watchdog
+from asterlite.errors import AsterliteError
 from asterlite.io.export import describe_run
 from asterlite.runtime import stops
 from asterlite.runtime.runner import internal_error_report, run_limits
@@ -153,8 +154,6 @@ def check_deck(
     except OSError as error:
         result.message = f"cannot read a file: {error.strerror or error}"
     except Exception as error:
-        from asterlite.errors import AsterliteError
-
         if isinstance(error, AsterliteError):
             result.message = str(error)
         else:  # an asterlite bug: said, never a crash of the caller
