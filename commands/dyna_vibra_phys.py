@@ -39,7 +39,10 @@ def run_physical(ctx, kw):
     numbering = stiffness_matrix.numbering
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
     loads = physical_loads(ctx, kw, numbering, stiffness_matrix)
-    system = build_system(numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads)
+    imposed = physical_imposed_motion(ctx, kw, numbering, scheme)
+    system = build_system(
+        numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads, imposed
+    )
     modal = physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
 
     reused = ctx.reuse if isinstance(getattr(ctx, "reuse", None), DynaTrans) else None
@@ -165,6 +168,13 @@ def run_physical(ctx, kw):
         "VITE": system.expand_rate(out_v),
         "ACCE": system.expand_rate(out_a),
     }
+    if system.imposed is not None:
+        # the archived instants are step instants: their motion is the scheme's
+        steps = np.clip(np.searchsorted(times, out_t), 0, times.size - 1)
+        for name, values in zip(
+            ("DEPL", "VITE", "ACCE"), system.imposed_fields(steps), strict=True
+        ):
+            fields[name] = fields[name] + values
     supports = physical_supports(ctx, kw, numbering)
     if supports:
         # code_aster (dlnew0): the fields are the relative motion; the absolute
@@ -256,6 +266,41 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
         ctx.error(f"AMOR_MODAL: {error}", "MODE_MECA", occ)
     ctx.log(f"AMOR_MODAL: modal damping force on {n_modes} modes, applied explicitly")
     return modal
+
+
+def physical_imposed_motion(ctx, kw, numbering, scheme):
+    """(rhs over the numbering's relations, FONC_MULT) of each EXCIT load
+    whose kinematic relations a function of time multiplies (imposed
+    motion, see ``asterlite.dynamics.physical.imposed``)."""
+    position = {id(relation): r for r, relation in enumerate(numbering.relations)}
+    imposed = []
+    for occ in kw.factor("EXCIT"):
+        load, function = occ.get("CHARGE"), occ.get("FONC_MULT")
+        if load is None or function is None or occ.get("MULT_APPUI") == "OUI":
+            continue
+        rhs = np.zeros(len(numbering.relations))
+        for relation in getattr(load, "relations", ()):
+            if id(relation) in position:
+                rhs[position[id(relation)]] = relation.rhs
+        if not np.any(rhs):
+            continue
+        if scheme != "NEWMARK":
+            ctx.unsupported(
+                f"EXCIT FONC_MULT on a load imposing a non-zero motion (DDL_IMPO, LIAISON_DDL) "
+                f"with SCHEMA={scheme!r} on a physical basis (NEWMARK only)",
+                "FONC_MULT",
+                occ,
+            )
+        for name in ("ENERGIE", "AMOR_MODAL"):
+            if kw.factor(name):
+                ctx.unsupported(
+                    f"{name} with an imposed motion (EXCIT FONC_MULT on a DDL_IMPO load) "
+                    "on a physical basis",
+                    name,
+                    kw,
+                )
+        imposed.append((rhs, function))
+    return imposed
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix):
