@@ -269,37 +269,56 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
 
 
 def physical_imposed_motion(ctx, kw, numbering, scheme):
-    """(rhs over the numbering's relations, FONC_MULT) of each EXCIT load
-    whose kinematic relations a function of time multiplies (imposed
-    motion, see ``asterlite.dynamics.physical.imposed``)."""
+    """(rhs over the numbering's relations, multiplier in time) of the
+    imposed motions of the EXCIT loads: their relations times FONC_MULT, and
+    the relations AFFE_CHAR_MECA_F gives as functions of INST times FONC_MULT
+    or COEF_MULT (see ``asterlite.dynamics.physical.imposed``)."""
+    from asterlite.dynamics.physical.imposed import ScaledInTime
+
     position = {id(relation): r for r, relation in enumerate(numbering.relations)}
     imposed = []
     for occ in kw.factor("EXCIT"):
         load, function = occ.get("CHARGE"), occ.get("FONC_MULT")
-        if load is None or function is None or occ.get("MULT_APPUI") == "OUI":
+        if load is None or occ.get("MULT_APPUI") == "OUI":
             continue
-        rhs = np.zeros(len(numbering.relations))
+        constant = np.zeros(len(numbering.relations))
+        in_time = {}
         for relation in getattr(load, "relations", ()):
-            if id(relation) in position:
-                rhs[position[id(relation)]] = relation.rhs
-        if not np.any(rhs):
+            row = position.get(id(relation))
+            if row is None:
+                continue
+            value = getattr(relation, "rhs_in_time", None)
+            if value is None:
+                constant[row] = relation.rhs
+            else:
+                in_time.setdefault(value.key, (value, []))[1].append(row)
+        columns = []
+        if function is not None and np.any(constant):
+            columns.append((constant, function))
+        scale = function if function is not None else float(occ.get("COEF_MULT", 1.0))
+        for value, rows in in_time.values():
+            rhs = np.zeros(len(numbering.relations))
+            rhs[rows] = 1.0  # DDL_IMPO: the relation u = g(t), coefficient 1
+            columns.append((rhs, ScaledInTime(scale, value)))
+        if not columns:
             continue
+        where = "FONC_MULT" if function is not None else "CHARGE"
         if scheme != "NEWMARK":
             ctx.unsupported(
-                f"EXCIT FONC_MULT on a load imposing a non-zero motion (DDL_IMPO, LIAISON_DDL) "
-                f"with SCHEMA={scheme!r} on a physical basis (NEWMARK only)",
-                "FONC_MULT",
+                "an imposed motion (DDL_IMPO times FONC_MULT, or AFFE_CHAR_MECA_F DDL_IMPO "
+                f"of INST) with SCHEMA={scheme!r} on a physical basis (NEWMARK only)",
+                where,
                 occ,
             )
         for name in ("ENERGIE", "AMOR_MODAL"):
             if kw.factor(name):
                 ctx.unsupported(
-                    f"{name} with an imposed motion (EXCIT FONC_MULT on a DDL_IMPO load) "
-                    "on a physical basis",
+                    f"{name} with an imposed motion (DDL_IMPO times FONC_MULT, or "
+                    "AFFE_CHAR_MECA_F DDL_IMPO of INST) on a physical basis",
                     name,
                     kw,
                 )
-        imposed.append((rhs, function))
+        imposed.extend(columns)
     return imposed
 
 

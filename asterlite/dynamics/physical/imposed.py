@@ -42,6 +42,22 @@ class ImposedMotion:
         return np.stack(columns, axis=1)
 
 
+@dataclass
+class ScaledInTime:
+    """An EXCIT multiplier (FONC_MULT, or COEF_MULT: a float) times a
+    right-hand side given in time (AFFE_CHAR_MECA_F of INST)."""
+
+    scale: object
+    value: object
+
+    def evaluate(self, times) -> np.ndarray:
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        scale = self.scale
+        if not isinstance(scale, (int, float)):
+            scale = np.asarray(scale.evaluate(times), dtype=float).reshape(times.shape)
+        return scale * self.value.evaluate(times)
+
+
 def newmark_states(values: np.ndarray, times: np.ndarray, beta: float, gamma: float):
     """Newmark's (c, ċ, c̈) of scalar displacements ``values`` (n_times, k)
     given at every step instant, starting from velocity and acceleration 0:
