@@ -54,8 +54,9 @@ def run_physical(ctx, kw):
             if initial_acceleration_computed(kw)
             else np.zeros(system.n_free)
         )
-    archive = Archive(system.n_free)
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    mask = None if scheme == "ADAPT_ORDRE2" else physical_archive_mask(kw, times)
+    archive = Archive(system.n_free, 64 if mask is None else int(np.count_nonzero(mask)))
     excluded = as_tuple(archiving.get("CHAM_EXCLU"))
     if excluded:
         # code_aster stores excluded fields at the last instant only; asterlite keeps
@@ -107,7 +108,6 @@ def run_physical(ctx, kw):
                 ctx.log,
             )
         else:
-            mask = physical_archive_mask(kw, times)
             if scheme == "NEWMARK":
                 newmark.integrate(
                     system,
@@ -168,6 +168,8 @@ def run_physical(ctx, kw):
         "VITE": system.expand_rate(out_v),
         "ACCE": system.expand_rate(out_a),
     }
+    out_t = out_t.copy()
+    del out_q, out_v, out_a, archive  # the reduced states, views of the archive
     if system.imposed is not None:
         # the archived instants are step instants: their motion is the scheme's
         steps = np.clip(np.searchsorted(times, out_t), 0, times.size - 1)
