@@ -148,7 +148,7 @@ def _transformed(ctx, occ, mesh_2, nodes):
     points = coords.copy()
     for k, function in enumerate(functions):
         names = tuple(getattr(function, "nom_para", ()) or ())
-        unknown = [p for p in names if p not in at]
+        unknown = [p for p in names if p not in at and p != "TOUTPARA"]
         if unknown:
             ctx.error(
                 f"TRANSF_GEOM_2: the function {function.name or ''} depends on "
@@ -156,7 +156,8 @@ def _transformed(ctx, occ, mesh_2, nodes):
                 "TRANSF_GEOM_2",
                 occ,
             )
-        values = function.evaluate_many(*[at[p] for p in names])
+        # DEFI_CONSTANTE's TOUTPARA takes any value: the first coordinate
+        values = function.evaluate_many(*[at.get(p, coords[:, 0]) for p in names])
         points[:, k] = np.broadcast_to(np.real(np.asarray(values, dtype=complex)), len(nodes))
     return points
 

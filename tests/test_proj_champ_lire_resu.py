@@ -252,6 +252,16 @@ class Shift:
         return (x, y, z)[self.axis] + self.offset
 
 
+class Constant:
+    """DEFI_CONSTANTE: a function of TOUTPARA."""
+
+    nom_para = ("TOUTPARA",)
+    name = "ZERO"
+
+    def evaluate_many(self, anything):
+        return np.zeros_like(anything)
+
+
 def test_vis_a_vis_transf_geom_2_cas_figure_and_prol_zero():
     # mesh 2 lies one unit beyond mesh 1: TRANSF_GEOM_2 (X-1, Y, Z) brings its
     # nodes back onto mesh 1, where DX = x (1 + t) is interpolated exactly
@@ -276,7 +286,7 @@ def test_vis_a_vis_transf_geom_2_cas_figure_and_prol_zero():
             "GROUP_MA_1": "LINE",
             "TOUT_2": "OUI",
             "CAS_FIGURE": "1.5D",
-            "TRANSF_GEOM_2": (Shift(0, -1.0), Shift(1), Shift(2)),
+            "TRANSF_GEOM_2": (Shift(0, -1.0), Shift(1), Constant()),
         },
     )
     values = projected.fields["DEPL"][0].reshape(-1, 2)
