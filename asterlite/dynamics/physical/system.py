@@ -179,7 +179,7 @@ def build_system(numbering, mass, stiffness, damping, loads, imposed=()) -> Phys
     """``imposed``: (rhs, multiplier) pairs, rhs over the numbering's
     relations, for the relations a function of time multiplies; those
     relations get no constant right-hand side."""
-    b_matrix, rhs = numbering.constraint_matrix()
+    b_matrix, rhs = numbering.constraint_matrix(rhs_in_time=True)
     rhs = np.array(rhs, dtype=float)
     for varying, _ in imposed:
         rhs[np.asarray(varying) != 0.0] = 0.0
