@@ -241,7 +241,7 @@ def physical(ctx, kw, frequencies, names):
         if matrix is not None and matrix.numbering is not numbering:
             ctx.error(f"{key} is not on the numbering of MATR_RIGI", key, kw)
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
-    b_matrix, _ = numbering.constraint_matrix()
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)
     # the relations' values are not those of the harmonic problem: code_aster's
     # Lagrange right-hand side is zero unless an EXCIT CHARGE imposes values
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
@@ -303,7 +303,10 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
                     "CHARGE",
                     occ,
                 )
-            if any(abs(relation.rhs) > 0.0 for relation in load.relations):
+            if any(
+                abs(relation.rhs) > 0.0 or relation.rhs_in_time is not None
+                for relation in load.relations
+            ):
                 ctx.unsupported(
                     "EXCIT CHARGE imposing non-zero displacements in a harmonic response",
                     "CHARGE",

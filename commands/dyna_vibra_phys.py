@@ -42,7 +42,10 @@ def run_physical(ctx, kw):
     numbering = stiffness_matrix.numbering
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
     loads = physical_loads(ctx, kw, numbering, stiffness_matrix)
-    system = build_system(numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads)
+    imposed = physical_imposed_motion(ctx, kw, numbering, scheme)
+    system = build_system(
+        numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads, imposed
+    )
     modal = physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
 
     reused = ctx.reuse if isinstance(getattr(ctx, "reuse", None), DynaTrans) else None
@@ -54,8 +57,9 @@ def run_physical(ctx, kw):
             if initial_acceleration_computed(kw)
             else np.zeros(system.n_free)
         )
-    archive = Archive(system.n_free)
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    mask = None if scheme == "ADAPT_ORDRE2" else physical_archive_mask(kw, times)
+    archive = Archive(system.n_free, 64 if mask is None else int(np.count_nonzero(mask)))
     excluded = as_tuple(archiving.get("CHAM_EXCLU"))
     if excluded:
         # code_aster stores excluded fields at the last instant only; asterlite keeps
@@ -107,7 +111,6 @@ def run_physical(ctx, kw):
                 ctx.log,
             )
         else:
-            mask = physical_archive_mask(kw, times)
             if scheme == "NEWMARK":
                 newmark.integrate(
                     system,
@@ -168,6 +171,15 @@ def run_physical(ctx, kw):
         "VITE": system.expand_rate(out_v),
         "ACCE": system.expand_rate(out_a),
     }
+    out_t = out_t.copy()
+    del out_q, out_v, out_a, archive  # the reduced states, views of the archive
+    if system.imposed is not None:
+        # the archived instants are step instants: their motion is the scheme's
+        steps = np.clip(np.searchsorted(times, out_t), 0, times.size - 1)
+        for name, values in zip(
+            ("DEPL", "VITE", "ACCE"), system.imposed_fields(steps), strict=True
+        ):
+            fields[name] = fields[name] + values
     supports = physical_supports(ctx, kw, numbering)
     if supports:
         # code_aster (dlnew0): the fields are the relative motion; the absolute
@@ -257,6 +269,60 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
         ctx.error(f"AMOR_MODAL: {error}", "MODE_MECA", occ)
     ctx.log(f"AMOR_MODAL: modal damping force on {n_modes} modes, applied explicitly")
     return modal
+
+
+def physical_imposed_motion(ctx, kw, numbering, scheme):
+    """(rhs over the numbering's relations, multiplier in time) of the
+    imposed motions of the EXCIT loads: their relations times FONC_MULT, and
+    the relations AFFE_CHAR_MECA_F gives as functions of INST times FONC_MULT
+    or COEF_MULT (see ``asterlite.dynamics.physical.imposed``)."""
+    from asterlite.dynamics.physical.imposed import ScaledInTime
+
+    position = {id(relation): r for r, relation in enumerate(numbering.relations)}
+    imposed = []
+    for occ in kw.factor("EXCIT"):
+        load, function = occ.get("CHARGE"), occ.get("FONC_MULT")
+        if load is None or occ.get("MULT_APPUI") == "OUI":
+            continue
+        constant = np.zeros(len(numbering.relations))
+        in_time = {}
+        for relation in getattr(load, "relations", ()):
+            row = position.get(id(relation))
+            if row is None:
+                continue
+            value = getattr(relation, "rhs_in_time", None)
+            if value is None:
+                constant[row] = relation.rhs
+            else:
+                in_time.setdefault(value.key, (value, []))[1].append(row)
+        columns = []
+        if function is not None and np.any(constant):
+            columns.append((constant, function))
+        scale = function if function is not None else float(occ.get("COEF_MULT", 1.0))
+        for value, rows in in_time.values():
+            rhs = np.zeros(len(numbering.relations))
+            rhs[rows] = 1.0  # DDL_IMPO: the relation u = g(t), coefficient 1
+            columns.append((rhs, ScaledInTime(scale, value)))
+        if not columns:
+            continue
+        where = "FONC_MULT" if function is not None else "CHARGE"
+        if scheme != "NEWMARK":
+            ctx.unsupported(
+                "an imposed motion (DDL_IMPO times FONC_MULT, or AFFE_CHAR_MECA_F DDL_IMPO "
+                f"of INST) with SCHEMA={scheme!r} on a physical basis (NEWMARK only)",
+                where,
+                occ,
+            )
+        for name in ("ENERGIE", "AMOR_MODAL"):
+            if kw.factor(name):
+                ctx.unsupported(
+                    f"{name} with an imposed motion (DDL_IMPO times FONC_MULT, or "
+                    "AFFE_CHAR_MECA_F DDL_IMPO of INST) on a physical basis",
+                    name,
+                    kw,
+                )
+        imposed.extend(columns)
+    return imposed
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix):

@@ -41,6 +41,8 @@ def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, m
     for start in range(1, n_steps + 1, BLOCK):
         stop = min(start + BLOCK, n_steps + 1)
         forces = system.forces(times[start:stop])
+        if system.imposed is not None:
+            forces = forces + system.imposed_forces(start, stop)
         bad_load = first_bad_row(forces)
         for k in range(start, stop):
             if k - start == bad_load:  # the state at times[k - 1] is the last finite one

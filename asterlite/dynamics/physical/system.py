@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.sparse as sp
 
+from asterlite.dynamics.physical.imposed import ImposedMotion
 from asterlite.fem.constraints import Elimination, eliminate
 
 
@@ -49,7 +50,15 @@ class PhysicalSystem:
     stiffness: sp.csr_matrix
     damping: sp.csr_matrix | None
     full_stiffness: sp.csr_matrix
+    full_mass: sp.csr_matrix | None = None
+    full_damping: sp.csr_matrix | None = None
     loads: list[Load] = field(default_factory=list)
+    # relations whose right-hand side a function of time multiplies
+    imposed: ImposedMotion | None = None
+    # the scheme's state of the imposed multipliers at every step instant,
+    # and the reduced forces Tᵀ K w, Tᵀ C w, Tᵀ M w it drives (follow_imposed)
+    _imposed_state: tuple | None = field(default=None, repr=False)
+    _imposed_operators: tuple | None = field(default=None, repr=False)
     # Tᵀ S of each load history (S gathers its terms onto the DOFs), made once
     _history_maps: dict = field(default_factory=dict, repr=False)
 
@@ -91,6 +100,35 @@ class PhysicalSystem:
             if load.history is not None:
                 out += coefficients[:, None] * self.reduced_history(load.history, times)
         return out
+
+    def follow_imposed(self, states) -> None:
+        """Sets the scheme's (c, ċ, c̈) of the imposed multipliers, each
+        (n_times, k) over the step instants (see ``imposed``)."""
+        self._imposed_state = states
+        if self._imposed_operators is None:
+            shapes = self.imposed.shapes
+            damping = self.full_damping
+            self._imposed_operators = (
+                np.asarray(self.elimination.T.T @ (self.full_stiffness @ shapes)),
+                None if damping is None else np.asarray(self.elimination.T.T @ (damping @ shapes)),
+                np.asarray(self.elimination.T.T @ (self.full_mass @ shapes)),
+            )
+
+    def imposed_forces(self, start: int, stop: int) -> np.ndarray:
+        """-Tᵀ (K w c + C w ċ + M w c̈) at step instants start..stop-1: the
+        reduced forces of the imposed motion, (stop - start, n_free)."""
+        c, c_dot, c_ddot = (values[start:stop] for values in self._imposed_state)
+        stiffness, damping, mass = self._imposed_operators
+        out = -(c @ stiffness.T) - c_ddot @ mass.T
+        if damping is not None:
+            out -= c_dot @ damping.T
+        return out
+
+    def imposed_fields(self, steps: np.ndarray):
+        """Full displacement, velocity and acceleration of the imposed
+        motion at the step indices ``steps``: three (len(steps), n_dofs)."""
+        shapes = self.imposed.shapes
+        return tuple(values[steps] @ shapes.T for values in self._imposed_state)
 
     def reduced_history(self, history: LoadHistory, times: np.ndarray) -> np.ndarray:
         """A load history's reduced forces Tᵀ F(t), (n_times, n_free): its
@@ -137,15 +175,30 @@ class PhysicalSystem:
         return splu(sp.csc_matrix(self.mass)).solve(rhs)
 
 
-def build_system(numbering, mass, stiffness, damping, loads) -> PhysicalSystem:
-    b_matrix, rhs = numbering.constraint_matrix()
+def build_system(numbering, mass, stiffness, damping, loads, imposed=()) -> PhysicalSystem:
+    """``imposed``: (rhs, multiplier) pairs, rhs over the numbering's
+    relations, for the relations a function of time multiplies; those
+    relations get no constant right-hand side."""
+    b_matrix, rhs = numbering.constraint_matrix(rhs_in_time=True)
+    rhs = np.array(rhs, dtype=float)
+    for varying, _ in imposed:
+        rhs[np.asarray(varying) != 0.0] = 0.0
     elimination = eliminate(b_matrix, rhs, numbering.n_dofs)
     stiffness = sp.csr_matrix(stiffness)
+    mass = sp.csr_matrix(mass)
+    damping = sp.csr_matrix(damping) if damping is not None else None
+    motion = None
+    if imposed:
+        shapes = elimination.particular(np.stack([np.asarray(r, float) for r, _ in imposed], 1))
+        motion = ImposedMotion(shapes, [m for _, m in imposed])
     return PhysicalSystem(
         elimination=elimination,
-        mass=elimination.reduce(sp.csr_matrix(mass)),
+        mass=elimination.reduce(mass),
         stiffness=elimination.reduce(stiffness),
-        damping=elimination.reduce(sp.csr_matrix(damping)) if damping is not None else None,
+        damping=elimination.reduce(damping) if damping is not None else None,
         full_stiffness=stiffness,
+        full_mass=mass,
+        full_damping=damping,
         loads=list(loads),
+        imposed=motion,
     )
