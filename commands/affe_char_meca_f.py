@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 from asterlite.commands import affe_char_meca
 
-from asterlite.concepts.assembly import MechanicalLoad
+from asterlite.concepts.assembly import MechanicalLoad, ValueInTime
 from asterlite.errors import CommandError
 from asterlite.fem.plane_wave import PlaneWave
 from asterlite.fem.selection import select_cells
@@ -39,7 +39,6 @@ def _evaluator(ctx, model, occ, in_time=None):
     ``in_time`` (a dict): a function of INST is accepted, its value at
     INST=0 returned and its ``ValueInTime`` kept in ``in_time[(node, key)]``;
     without it, such a function is refused."""
-    from asterlite.concepts.assembly import ValueInTime
 
     coords = model.mesh.coords
 

@@ -12,6 +12,7 @@ from asterlite.commands.dyna_vibra_time import archived_index, refuse_too_many_s
 from asterlite.concepts.table import TableNotComputed
 from asterlite.concepts.transient import DynaTrans
 from asterlite.dynamics.physical.archive import Archive, archived_steps
+from asterlite.dynamics.physical.imposed import ScaledInTime
 from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
 from asterlite.errors import NumericalError
 from asterlite.fem.loads import load_history, load_terms
@@ -276,7 +277,6 @@ def physical_imposed_motion(ctx, kw, numbering, scheme):
     imposed motions of the EXCIT loads: their relations times FONC_MULT, and
     the relations AFFE_CHAR_MECA_F gives as functions of INST times FONC_MULT
     or COEF_MULT (see ``asterlite.dynamics.physical.imposed``)."""
-    from asterlite.dynamics.physical.imposed import ScaledInTime
 
     position = {id(relation): r for r, relation in enumerate(numbering.relations)}
     imposed = []

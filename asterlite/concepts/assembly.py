@@ -15,6 +15,7 @@ import numpy as np
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.numpy_api import assembled_to_numpy
+from asterlite.errors import UnsupportedError
 from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
 
 #: modelisations of the (x, y) plane besides the ``2D_`` discrete elements and bars
@@ -279,7 +280,6 @@ class DofNumbering(Concept):
         A right-hand side given in time (AFFE_CHAR_MECA_F DDL_IMPO of INST)
         is refused unless the caller evaluates it in time itself or does not
         use b (``rhs_in_time=True``)."""
-        from asterlite.errors import UnsupportedError
         from asterlite.fem.constraints import relation_matrix
 
         if not rhs_in_time and any(r.rhs_in_time is not None for r in self.relations):
