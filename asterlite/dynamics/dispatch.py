@@ -3,10 +3,10 @@ linear operators change during a run (variable rotation speed in
 :mod:`asterlite.dynamics.rotation`, implicit shocks in
 :mod:`asterlite.dynamics.implicit_shocks`).
 
-A scheme's own ``run_loop`` calls its ``step`` directly; these loops are
-written once for all schemes and branch on the code instead (numba caches
-them like any other function, which first-class function arguments would
-prevent). Every scheme's memory is ``(rows, scalars, table)`` with the same
+A scheme's loop (:func:`asterlite.dynamics.loop.scheme_loop`) calls its
+``step`` directly; these loops serve every scheme and branch on the code
+instead (numba caches them like any other function, which first-class
+function arguments would prevent). Every scheme's memory is ``(rows, scalars, table)`` with the same
 array types, so one compiled loop serves them all.
 
 After the generalized K and C of the model's ``(M⁻¹, K, C, flag)`` bundle

@@ -16,6 +16,7 @@ from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.forces import acceleration, total_force
+from asterlite.dynamics.loop import scheme_loop
 from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet, local_bundle
 from asterlite.dynamics.schemes import (
     GENERAL_PATH,
@@ -92,8 +93,8 @@ def integrate(
     load_labels: list[str] | None = None,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
-    ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
-    results as its specialised ``run_loop``; kept for comparison).
+    general path (the time loop around its step on the three bundles, shocks
+    in the global frame), as the relations of laws/ do; kept for comparison.
     ``label`` names the run on the progress bar. ``energy``: accumulate the
     energy balance in the loop (:mod:`asterlite.dynamics.energy`), returned
     as ``RunResult.energy``. ``implicit_shocks``: TRAITEMENT_NONL='IMPLICITE'
@@ -227,13 +228,7 @@ def run_kernel(
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
     counters[K.K_ARCHIVED] = 1
-    run_loop = module.run_loop
-    if not specialised or shocks.has_laws:  # other relations: the general path
-        run_loop = getattr(module, "general_loop", module.run_loop)
-    if rotating_loop is not None:
-        run_loop = rotating_loop
-    if implicit_loop is not None:
-        run_loop = implicit_loop
+    run_loop = implicit_loop or rotating_loop or scheme_run_loop(entry, module, notice.name)
     if energy and rotating_loop is not None:
         raise NumericalError("the energy balance (ENERGIE) with VITESSE_VARIABLE='OUI'")
     balance = E.new_energy(system, shocks, capacity, entry.staggered_velocity, energy)
@@ -246,9 +241,8 @@ def run_kernel(
         while True:
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
             chunk_started = wallclock.perf_counter()
-            extra = (balance,) if rotating_loop is None else ()  # rotation.py: no ENERGIE
             status = run_loop(
-                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, *extra
+                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, balance
             )
             if status == K.STATUS_FULL:
                 budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
@@ -290,6 +284,20 @@ def run_kernel(
         info["steps_kept_at_nmax_iter_pas"] = kept
     rows = balance[5][:count].copy() if energy else None
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
+
+
+def scheme_run_loop(entry: Scheme, module, loop: str):
+    """The compiled loop named ``loop`` (:func:`loop_kernel`) of the scheme
+    ``entry`` whose implementation is ``module``: code_aster 10-12's own
+    loop for the legacy variant; the module's ``fast_loop``, when it has one
+    (DIFF_CENTRE, NEWMARK), for any loop but the general path; else the one
+    time loop around the scheme's step (:func:`asterlite.dynamics.loop.scheme_loop`)."""
+    if loop == entry.legacy_kernel:
+        return module.run_loop
+    fast = getattr(module, "fast_loop", None)
+    if fast is not None and loop != GENERAL_PATH.format(entry.kernel):
+        return fast
+    return scheme_loop(module.step)
 
 
 def legacy_adapt_module(entry: Scheme, rotation, implicit, energy):

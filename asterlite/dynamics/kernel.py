@@ -1,9 +1,9 @@
 """Pieces of the compiled time loop shared by every scheme: step planning,
 archiving, status codes.
 
-Each scheme module owns a small ``run_loop`` (an njit function calling its
-own ``step`` directly, so that everything is cached across processes) built
-from the helpers here::
+The time loop (:mod:`asterlite.dynamics.loop`, written once and compiled
+around each scheme's ``step``, so that everything is cached across
+processes) is built from the helpers here::
 
     while unfinished(clock, counters, eps):
         paused = pause_status(counters, archive[0])

@@ -31,7 +31,6 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import local_shock_forces
 from asterlite.dynamics.forces import (
     add_external_force,
@@ -124,37 +123,17 @@ def step(t, dt, index, state, memory, model):
     return K.STATUS_DONE, -1, dt, dt, 0
 
 
-@njit(cache=True)
-def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The general path (``step`` on the bundles): shocks with a relation of
-    laws/, ``integrate(..., specialised=False)``."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE
-
-
 @njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
     """The NEWMARK loop :func:`integrate.integrate` runs: ``step``'s
     arithmetic on plain arrays with the helpers inlined, no reference
     counting (``_nrt=False``: nothing here allocates) and the shock
     kinematics in each shock's local frame, as DIFF_CENTRE's
-    :func:`scheme_diff_centre.specialised_loop` (same results as
-    :func:`general_loop` when the shock frames are the global one, rounding
-    otherwise)."""
+    :func:`scheme_diff_centre.specialised_loop` (same results as the
+    general path, :func:`loop.scheme_loop` around :func:`step`, when the
+    shock frames are the global one, rounding otherwise). A loop of its own
+    for speed, as DIFF_CENTRE's (docs/performance.md: about 5x faster than
+    the general path on the tube)."""
     exc = model[2]
     flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
     shapes, rest, drive = model[3]  # integrate.local_frame_bundle
@@ -255,8 +234,8 @@ def specialised_loop(
     support_cursors,
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info, energy, shk, exc,
 ):  # fmt: skip
-    """The NEWMARK loop on plain arrays (see :func:`run_loop`); the status
-    codes, archiving rules and operator rebuilds of :func:`general_loop`."""
+    """The NEWMARK loop on plain arrays (see :func:`fast_loop`); the status
+    codes, archiving rules and operator rebuilds of the general path."""
     n = q.shape[0]
     balance = E.is_active(energy)
     q2, v2 = rows[Q_INDEX2], rows[V_INDEX2]
