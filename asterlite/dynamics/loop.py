@@ -44,16 +44,17 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import loads_ready
+from asterlite.dynamics.layouts import LOADS
 
 
 @njit(cache=True, inline="always")
 def before_step(clock, counters, model, archive):
     """The checks a loop makes before each step: 0 to go on, else the
     status to return (archive full, pause, next load window)."""
-    paused = K.pause_status(counters, archive[0])
+    paused = K.pause_status(counters, archive.times)
     if paused:
         return paused
-    if not loads_ready(clock, model[2]):
+    if not loads_ready(clock, model[LOADS]):
         return K.STATUS_LOADS
     return 0
 

@@ -18,6 +18,7 @@ from asterlite.dynamics import contact as C
 from asterlite.dynamics.formula import STACK_DEPTH, formula_program, program_tables
 from asterlite.dynamics.geometry import default_origin, local_frame, rest_side_signs
 from asterlite.dynamics.laws import kernel as law_kernel
+from asterlite.dynamics.layouts import Linear, Loads, Shocks
 
 COMPONENTS = ("DX", "DY", "DZ")
 # which of a shock's stiffnesses or dampings sets a stability limit, or the modes' own damping
@@ -82,7 +83,7 @@ class LinearSystem:
         whatever the caller built (a transposed product is Fortran-ordered),
         so that each loop compiles for one layout only (asterlite warmup)."""
         flag = np.array([1 if self.diagonal else 0], dtype=np.int64)
-        return (
+        return Linear(
             np.ascontiguousarray(self.minv, dtype=float),
             np.ascontiguousarray(self.stiffness, dtype=float),
             np.ascontiguousarray(self.damping, dtype=float),
@@ -240,7 +241,7 @@ class ShockSet:
         return vint
 
     def bundle(self):
-        return (
+        return Shocks(
             self.flags,
             self.params,
             self.rots,
@@ -766,7 +767,7 @@ class Excitation:
         self.drive_sampled = list(self.drive_sampled) or [None] * n_drive
 
     def bundle(self):
-        return (
+        return Loads(
             self.vectors,
             self.abscissas,
             self.ordinates,

@@ -34,6 +34,7 @@ from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import loop as L
 from asterlite.dynamics.forces import multiplier_at
 from asterlite.dynamics.formula import run_program
+from asterlite.dynamics.layouts import EXTRA, LINEAR, ROTATION_CODE, ROWS, SCALARS, TABLE
 from asterlite.dynamics.model import (
     PROL_CONSTANT,
     SampledMultiplier,
@@ -113,11 +114,13 @@ class Rotation:
 
 @njit(cache=True)
 def multiplier_value(exc, e, t):
-    codes, constants, stack = exc[12], exc[13], exc[14]
+    codes, constants, stack = exc.codes, exc.constants, exc.stack
     if codes[e, 0] > 0:
         return run_program(codes, constants, e, t, stack)
-    layout = exc[3]
-    return multiplier_at(exc[1], exc[2], e, layout[e, 0], layout[e, 1], layout[e, 2], t, exc[9])
+    layout = exc.layout
+    return multiplier_at(
+        exc.abscissas, exc.ordinates, e, layout[e, 0], layout[e, 1], layout[e, 2], t, exc.cursors
+    )
 
 
 @njit(cache=True)
@@ -129,7 +132,7 @@ def speed_and_acceleration(exc, t):
 def update_linear(lin, rot, t):
     """C(t), K(t) into the model's (M⁻¹, K, C, flag) bundle, the flag set to
     full matrices."""
-    stiffness, damping, flag = lin[1], lin[2], lin[3]
+    stiffness, damping, flag = lin.stiffness, lin.damping, lin.diagonal
     damping0, stiffness0, gyro, rigy, exc = rot
     speed, accel = speed_and_acceleration(exc, t)
     n = damping.shape[0]
@@ -144,12 +147,16 @@ def update_linear(lin, rot, t):
 def rotating_step(t, dt, index, state, memory, model):
     """The step of the scheme whose code (:mod:`asterlite.dynamics.dispatch`)
     ends ``memory``, with C(t), K(t) written into the model and the
-    scheme's operators refreshed before it; ``memory[3]`` is
+    scheme's operators refreshed before it; ``memory[EXTRA]`` is
     :meth:`Rotation.bundle`. :func:`asterlite.dynamics.loop.scheme_loop`
     runs it."""
-    base, rot, code = (memory[0], memory[1], memory[2]), memory[3], memory[4][0]
-    update_linear(model[0], rot, t)
-    D.refresh_operators(code, base, model[0], state[0].shape[0])
+    base, rot, code = (
+        (memory[ROWS], memory[SCALARS], memory[TABLE]),
+        memory[EXTRA],
+        memory[ROTATION_CODE][0],
+    )
+    update_linear(model[LINEAR], rot, t)
+    D.refresh_operators(code, base, model[LINEAR], state.q.shape[0])
     return D.scheme_step(code, t, dt, index, state, base, model)
 
 

@@ -11,6 +11,7 @@ from numba import njit
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, RESIDUAL = range(5)
@@ -30,7 +31,7 @@ def step(t, dt, index, state, memory, model):
     allocates): the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     n = q.shape[0]
     q2, v2, a2, vmin = rows[Q_TRIAL], rows[V_TRIAL], rows[A_TRIAL], rows[V_MIN]
     adaptive = scalars[A.S_ADAPTIVE] == 1.0

@@ -39,6 +39,7 @@ from asterlite.dynamics.kernel import (
     STATUS_SHOCK_DIVERGED,
     STATUS_STEP_UNDERFLOW,
 )
+from asterlite.dynamics.layouts import LINEAR, ROWS, SCALARS, SHOCKS
 from asterlite.dynamics.linalg import lu_factor, lu_solve
 from asterlite.dynamics.local_frame import copy_vector, total_force_at
 
@@ -219,8 +220,8 @@ def step(t, dt, index, state, memory, model):
     counting: nothing in it or its callees allocates (the implicit
     operators are LU-factored in place, in the memory ``prepare`` made)."""
     q, v, a, f, vint, vint_save, work = state
-    mem, smem = memory[0], memory[1]
-    lin, shk = model[0], model[1]
+    mem, smem = memory[ROWS], memory[SCALARS]
+    lin, shk = model[LINEAR], model[SHOCKS]
     minv, stiffness, damping, is_diagonal = lin
     diagonal = is_diagonal[0] == 1
     n = q.shape[0]

@@ -41,6 +41,7 @@ from asterlite.dynamics.forces import (
     state_acceleration,
 )
 from asterlite.dynamics.formula import program_value
+from asterlite.dynamics.layouts import LOADS, LOCAL, ROWS, SHOCKS
 
 RESIDUAL = 0  # memory row: residual scratch
 
@@ -54,7 +55,7 @@ def prepare(system, dt, options):
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
-    rows = memory[0]
+    rows = memory[ROWS]
     for i in range(q.shape[0]):
         v[i] += dt * a[i]
         q[i] += dt * v[i]
@@ -72,9 +73,14 @@ def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, ar
     without reference counting (``_nrt=False``: nothing here allocates),
     so that the arrays handed to the inlined helpers cost nothing.
     ``energy``: the ENERGIE bundle (:mod:`energy`), inactive without it."""
-    exc = model[2]
-    flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
-    mass_inverse, stiffness, damping, shapes, rest, drive = model[3]
+    exc = model[LOADS]
+    flags, params, rots, polars = (
+        model[SHOCKS].flags,
+        model[SHOCKS].params,
+        model[SHOCKS].rots,
+        model[SHOCKS].polars,
+    )
+    mass_inverse, stiffness, damping, shapes, rest, drive = model[LOCAL]
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
     return specialised_loop(
         clock,
@@ -82,12 +88,12 @@ def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, ar
         instants,
         pas_arch,
         eps,
-        state[0],
-        state[1],
-        state[2],
-        state[3],
-        state[4],
-        memory[0][RESIDUAL],
+        state.q,
+        state.v,
+        state.a,
+        state.f,
+        state.vint,
+        memory[ROWS][RESIDUAL],
         mass_inverse,
         stiffness,
         damping,
@@ -98,21 +104,21 @@ def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, ar
         rest,
         polars,
         drive,
-        exc[0],
-        exc[1],
-        exc[2],
-        exc[3],
-        exc[8],
-        exc[9],
-        exc[12],
-        exc[13],
-        exc[14],
-        exc[4],
-        exc[5],
-        exc[6],
-        exc[7],
-        exc[10],
-        exc[11],
+        exc.vectors,
+        exc.abscissas,
+        exc.ordinates,
+        exc.layout,
+        exc.pending,
+        exc.cursors,
+        exc.codes,
+        exc.constants,
+        exc.stack,
+        exc.drive_shapes,
+        exc.drive_abscissas,
+        exc.drive_ordinates,
+        exc.drive_layout,
+        exc.drive_pending,
+        exc.drive_cursors,
         out_t,
         out_order,
         out_q,
@@ -121,7 +127,7 @@ def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, ar
         out_vint,
         out_info,
         energy,
-        model[1],
+        model[SHOCKS],
         exc,
     )
 

@@ -39,6 +39,7 @@ from asterlite.dynamics.forces import (
     local_support_motion,
     total_force_at,
 )
+from asterlite.dynamics.layouts import LOADS, LOCAL, ROWS, SCALARS, SHOCKS
 
 # vector rows: index-2 displacement and velocity, right-hand side, pivots
 Q_INDEX2, V_INDEX2, RHS, PIVOTS = range(4)
@@ -87,8 +88,8 @@ def build_operators(rows, scalars, dt, n):
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
-    shk, exc = model[1], model[2]
+    rows, scalars = memory[ROWS], memory[SCALARS]
+    shk, exc = model[SHOCKS], model[LOADS]
     n = q.shape[0]
     diagonal = scalars[S_DIAGONAL] == 1.0
     built = scalars[S_DT_BUILT]
@@ -134,18 +135,25 @@ def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, ar
     shock frames are the global one, rounding otherwise). A loop of its own
     for speed, as DIFF_CENTRE's (docs/performance.md: about 5x faster than
     the general path on the tube)."""
-    exc = model[2]
-    flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
-    shapes, rest, drive = model[3]  # integrate.local_frame_bundle
+    exc = model[LOADS]
+    flags, params, rots, polars = (
+        model[SHOCKS].flags,
+        model[SHOCKS].params,
+        model[SHOCKS].rots,
+        model[SHOCKS].polars,
+    )
+    shapes, rest, drive = model[LOCAL]  # integrate.local_frame_bundle
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
     return specialised_loop(
         clock, counters, instants, pas_arch, eps,
-        state[0], state[1], state[2], state[3], state[4], memory[0], memory[1],
+        state.q, state.v, state.a, state.f, state.vint, memory[ROWS], memory[SCALARS],
         flags, params, rots, shapes, rest, polars, drive,
-        exc[0], exc[1], exc[2], exc[3], exc[8], exc[9], exc[12], exc[13], exc[14],
-        exc[4], exc[5], exc[6], exc[7], exc[10], exc[11],
+        exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.pending, exc.cursors,
+        exc.codes, exc.constants, exc.stack,
+        exc.drive_shapes, exc.drive_abscissas, exc.drive_ordinates, exc.drive_layout,
+        exc.drive_pending, exc.drive_cursors,
         out_t, out_order, out_q, out_v, out_a, out_vint, out_info,
-        energy, model[1], exc,
+        energy, model[SHOCKS], exc,
     )  # fmt: skip
 
 

@@ -42,6 +42,7 @@ from numba import njit
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.layouts import LINEAR, ROWS, SHOCKS, TABLE
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 
@@ -165,7 +166,7 @@ def attempt(t, dt, state, memory, model, s):
     """One trial step of length dt from (q, v, a): stage values in rows,
     the solution in the stage rows. Returns a diverging shock or -1."""
     q, v, a, f, vint, vint_save, work = state
-    rows, table = memory[0], memory[2]
+    rows, table = memory[ROWS], memory[TABLE]
     n = q.shape[0]
     qs, vs, acc = rows[Q_STAGE], rows[V_STAGE], rows[A_STAGE]
     copy_vector(vs, v)
@@ -222,7 +223,7 @@ def step(t, dt, index, state, memory, model):
     adaptive = scalars[S_ADAPTIVE] == 1.0
     p = scalars[S_EXPONENT]
     if scalars[S_CAP] < 0.0:
-        scalars[S_CAP] = shock_damping_step(model[0], model[1], True, scalars[S_RADIUS])
+        scalars[S_CAP] = shock_damping_step(model[LINEAR], model[SHOCKS], True, scalars[S_RADIUS])
     dt_max = min(scalars[S_DTMAX], scalars[S_CAP])
     if adaptive and dt > dt_max:
         dt = dt_max

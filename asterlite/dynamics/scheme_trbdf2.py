@@ -57,6 +57,7 @@ from numba import njit
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite
+from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
@@ -100,7 +101,7 @@ def step(t, dt, index, state, memory, model):
     allocates): the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     n = q.shape[0]
     diagonal = scalars[S_DIAGONAL] == 1.0
     built = scalars[S_DT_BUILT]
