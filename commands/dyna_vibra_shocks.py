@@ -335,7 +335,7 @@ def warn_lagged_shocks(ctx, scheme, system, shocks, dt) -> None:
     factor = SCHEMES[scheme].lagged_impact_gain
     if factor is None or not shocks.count:
         return
-    from asterlite.dynamics.model import contact_limit
+    from asterlite.dynamics.step_limits import contact_limit
 
     limit = contact_limit(system, shocks)
     if limit.shock is None:

@@ -12,7 +12,7 @@ Bundles passed to the kernels (tuples of arrays, built by ``model.py``):
   relations, rotation mode shapes, scratch);
 - ``exc = (vectors, abscissas, ordinates, layout)``: excitation e's
   generalized vector ``vectors[e]`` times its piecewise-linear multiplier
-  (``layout[e] = (count, left, right)``, see ``model.Excitation``).
+  (``layout[e] = (count, left, right)``, see ``excitation.Excitation``).
 """
 
 from __future__ import annotations

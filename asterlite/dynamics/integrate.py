@@ -15,10 +15,11 @@ from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
+from asterlite.dynamics.excitation import Excitation
 from asterlite.dynamics.forces import acceleration, total_force
 from asterlite.dynamics.layouts import EXTRA, LINEAR, LOADS, SCALARS, SHOCKS, Archive, State
 from asterlite.dynamics.loop import scheme_loop
-from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet, local_bundle
+from asterlite.dynamics.model import LinearSystem, ShockSet, local_bundle
 from asterlite.dynamics.schemes import (
     GENERAL_PATH,
     IMPLICIT_LOOP,
@@ -499,7 +500,7 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
 
 def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) -> str:
     """A smaller step to try, with what sets the stability limit."""
-    from asterlite.dynamics.model import damped_step_limit, stability_limit, suggested_step
+    from asterlite.dynamics.step_limits import damped_step_limit, stability_limit, suggested_step
 
     period = stability_limit(system, shocks)
     limit, cause = step_limit(system, shocks, scheme), period.cause()
@@ -520,7 +521,7 @@ def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
     """The largest step code_aster's VERI_PAS accepts for ``scheme``: the
     fraction of its description (:mod:`asterlite.dynamics.schemes`) of the
     shortest period with the shock stiffness."""
-    from asterlite.dynamics.model import stability_period
+    from asterlite.dynamics.step_limits import stability_period
 
     return stability_period(system, shocks) / SCHEMES[scheme].step_fraction
 

@@ -68,7 +68,7 @@ STATUS_STEP_UNDERFLOW = 3
 STATUS_REJECTED = 4
 STATUS_SWITCH_NOT_LOCATED = 5  # implicit shocks: a contact switch not located in 100 tries
 STATUS_FULL = 10
-STATUS_LOADS = 11  # a windowed multiplier needs its next window (model.Excitation.refill)
+STATUS_LOADS = 11  # a windowed multiplier needs its next window (excitation.Excitation.refill)
 STATUS_PAUSE = 12  # the granted steps are taken: the driver reports progress and resumes
 
 # clock[]: time, stored step, nominal step, end time, shortened step,

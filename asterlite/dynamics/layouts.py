@@ -35,7 +35,7 @@ Linear = namedtuple("Linear", "minv stiffness damping diagonal")
 # the rows of the relations of laws/ (packed parameters, shapes, scratch)
 Shocks = namedtuple("Shocks", "flags params rots phis polars laws rphis law_scratch")
 
-# model.Excitation.bundle(): the load rows (vectors, tabulated multipliers
+# excitation.Excitation.bundle(): the load rows (vectors, tabulated multipliers
 # and their layout), the support motions (drive_*), the sampling windows
 # still to come (pending), the interval searched last (cursors), and the
 # FORMULE programs run in the kernel (formula.py)

@@ -32,16 +32,16 @@ from numba import njit
 
 from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import loop as L
-from asterlite.dynamics.forces import multiplier_at
-from asterlite.dynamics.formula import run_program
-from asterlite.dynamics.layouts import EXTRA, LINEAR, ROTATION_CODE, ROWS, SCALARS, TABLE
-from asterlite.dynamics.model import (
+from asterlite.dynamics.excitation import (
     PROL_CONSTANT,
     SampledMultiplier,
     kernel_program,
     multiplier_points,
     tabulate_excitation,
 )
+from asterlite.dynamics.forces import multiplier_at
+from asterlite.dynamics.formula import run_program
+from asterlite.dynamics.layouts import EXTRA, LINEAR, ROTATION_CODE, ROWS, SCALARS, TABLE
 
 
 @dataclass

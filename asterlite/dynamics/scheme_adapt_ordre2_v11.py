@@ -74,7 +74,7 @@ def default_step_max(shortest_period: float) -> float:
     """code_aster 10-12's PAS_MAXI when the deck gives none (mdptem): a
     twentieth of the shortest period among the modes, each stiffened by every
     shock's RIGI_NOR and RIGI_TAN on each shape component
-    (:func:`asterlite.dynamics.model.stability_limit`; 1e10 s without any)."""
+    (:func:`asterlite.dynamics.step_limits.stability_limit`; 1e10 s without any)."""
     return shortest_period / 20.0
 
 

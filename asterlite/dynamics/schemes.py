@@ -22,7 +22,7 @@ scheme (variable rotation speed, implicit shocks), a branch on its code in
 from __future__ import annotations
 
 import importlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import ModuleType
 
 # code_aster's VERI_PAS: the step may not exceed this fraction of the shortest
@@ -176,19 +176,16 @@ TABLE: tuple[Scheme, ...] = (
         diagonal_fast_path=True,
         lagged_impact_gain=1.1,
     ),
-    # asterlite extension for legacy decks: code_aster 10's EULER (mdeul1,
-    # v += dt a_n then q += dt v) is the arithmetic code_aster 14+ runs as the
-    # GENE DIFF_CENTRE (dtmprep maps it to its Euler routine): DIFF_CENTRE's module
-    Scheme(
-        "EULER",
-        "asterlite.dynamics.scheme_diff_centre",
-        "DIFF_CENTRE",
-        DIFF_CENTRE,
-        explicit_velocity=True,
-        staggered_velocity=True,
-        film=True,
-        loops="specialised",
-    ),
+)
+
+# other names of a scheme: asterlite extension for legacy decks, code_aster 10's
+# EULER (mdeul1: v += dt a_n, then q += dt v) is the arithmetic code_aster 17
+# runs for the GENE DIFF_CENTRE (dtmprep's first method, which dtmintg sends
+# to its Euler integrator inteuler); code_aster 17 has no EULER value
+ALIASES = {"EULER": "DIFF_CENTRE"}
+TABLE += tuple(
+    replace(next(e for e in TABLE if e.name == target), name=alias)
+    for alias, target in ALIASES.items()
 )
 
 SCHEMES: dict[str, Scheme] = {scheme.name: scheme for scheme in TABLE}
