@@ -46,15 +46,10 @@ from asterlite.commands.dyna_vibra_time import (
 )
 
 from asterlite.concepts.titles import unique_titles
+from asterlite.dynamics.excitation import Excitation, tabulate_excitation
 from asterlite.dynamics.fluid_film import FluidFilm
 from asterlite.dynamics.integrate import SchemeOptions
-from asterlite.dynamics.model import (
-    Excitation,
-    LinearSystem,
-    ShockSet,
-    build_shocks,
-    tabulate_excitation,
-)
+from asterlite.dynamics.model import LinearSystem, ShockSet, build_shocks
 from asterlite.dynamics.schemes import SCHEMES, Scheme
 from asterlite.legacy.v15 import computes
 

@@ -19,10 +19,10 @@ from asterlite.dynamics.model import (
     NORMAL,
     TANGENTIAL,
     ShockSpec,
-    contact_limit,
     optimal_tangential_damping_v15,
 )
 from asterlite.dynamics.schemes import SCHEMES
+from asterlite.dynamics.step_limits import contact_limit
 from asterlite.errors import missing_name
 from asterlite.fem.selection import as_tuple
 from asterlite.legacy.v15 import computes

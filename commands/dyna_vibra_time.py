@@ -10,13 +10,14 @@ import numpy as np
 from asterlite.commands.dyna_vibra_keywords import list_values
 from asterlite.commands.dyna_vibra_shocks import DAMPING_KEYWORDS, STIFFNESS_KEYWORDS
 
-from asterlite.dynamics.model import (
+from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
+from asterlite.dynamics.schemes import SCHEMES
+from asterlite.dynamics.step_limits import (
     damped_step_limit,
+    shock_damping_limit,
     stability_limit,
     suggested_step,
 )
-from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
-from asterlite.dynamics.schemes import SCHEMES
 from asterlite.errors import NumericalError
 
 
@@ -131,7 +132,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     (shock forces explicit in their stages) are refused when PAS exceeds the
     stability limit of a shock's AMOR_NOR/AMOR_TAN (c·dt inside the stages'
     real stability interval), and their adaptive step never grows above it
-    (:func:`asterlite.dynamics.model.shock_damping_limit`)."""
+    (:func:`asterlite.dynamics.step_limits.shock_damping_limit`)."""
     schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
     dt_max = schema_kw.get("PAS_MAXI")
     if dt_max is not None and dt_max < dt_user:
@@ -142,8 +143,6 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
         )
     entry = SCHEMES[scheme]
     if entry.explicit_stages:
-        from asterlite.dynamics.model import shock_damping_limit
-
         # a Runge-Kutta module's tableau, or the stages' radius of DEVOGE's
         module = entry.implementation()
         tableau = getattr(module, "TABLEAU", None)

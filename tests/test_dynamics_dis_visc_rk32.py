@@ -28,11 +28,12 @@ import pytest
 from asterlite.commands.dyna_vibra_relations import read_dis_visc
 from scipy.linalg import expm
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.forces import acceleration, state_acceleration, total_force
 from asterlite.dynamics.integrate import SchemeOptions, integrate
 from asterlite.dynamics.laws import dis_visc, rk54
 from asterlite.dynamics.laws import kernel as LK
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 
 M, KS, X0 = 1.0, 100.0, 0.01  # the mass on its spring, released from X0
 K1, K2, K3, C = 120.0, 10.0, 60.0, 1.7  # sdnd107e's Zener, with a linear dashpot

@@ -6,12 +6,13 @@ import numpy as np
 import pytest
 from asterlite.commands.dyna_vibra_relations import read_dis_visc
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.laws import dis_visc, rela_effo_depl
 from asterlite.dynamics.laws import kernel as LK
 from asterlite.dynamics.laws.kernel import V_TIME
 from asterlite.dynamics.laws.tabulated import pack
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
 
 

@@ -167,8 +167,9 @@ def test_state_text_lists_the_modes():
 def test_the_rotating_loop_stops_likewise(scheme):
     """VITESSE_VARIABLE='OUI' runs its own loop: a load jumping to 1e305 at
     0.1 s stops it at the first step past 0.1 s, naming the load."""
+    from asterlite.dynamics.excitation import tabulate_excitation
     from asterlite.dynamics.integrate import SchemeOptions, integrate
-    from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
+    from asterlite.dynamics.model import LinearSystem, build_shocks
     from asterlite.dynamics.rotation import Rotation
     from asterlite.errors import NumericalError
     from tests.test_dynamics_rotation_energy import Table, rotor

@@ -8,8 +8,9 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.dynamics.physical import diff_centre, newmark
 from asterlite.dynamics.physical.archive import Archive, archived_steps
 from asterlite.dynamics.physical.system import Load, PhysicalSystem

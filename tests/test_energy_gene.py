@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 from asterlite.dynamics import energy as E
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import SchemeOptions, integrate
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from tests.conftest import SAMPLES
 
 ALL_SCHEMES = (

@@ -11,16 +11,12 @@ from scipy.integrate import solve_ivp
 
 from asterlite import progress
 from asterlite.dynamics import warmup
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
 from asterlite.dynamics.integrate import SchemeOptions, integrate
-from asterlite.dynamics.model import (
-    LinearSystem,
-    ShockSpec,
-    build_shocks,
-    stability_limit,
-    tabulate_excitation,
-)
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
+from asterlite.dynamics.step_limits import stability_limit
 from asterlite.errors import NumericalError
 from asterlite.legacy import v11
 from tests.test_lame_fluide import _Call

@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
 from asterlite.legacy import v11
 

@@ -83,8 +83,9 @@ def test_scalar_buckling_law_checks_its_data():
 
 
 def test_newmark_of_code_aster_15_takes_the_forces_of_the_steps_start():
+    from asterlite.dynamics.excitation import tabulate_excitation
     from asterlite.dynamics.integrate import SchemeOptions, integrate
-    from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
+    from asterlite.dynamics.model import LinearSystem, build_shocks
 
     class Ramp:  # F(t) = t on the single mode
         def evaluate(self, t):

@@ -118,8 +118,8 @@ def shock_damping_step(lin, shk, modal, radius):
     """radius/2 times the explicit step of every mode stiffened and damped by
     each damped shock on each shape component (inf without shock damping);
     ``modal``: count the modal damping (explicit in the stages)."""
-    minv, stiffness, damping = lin[0], lin[1], lin[2]
-    flags, params, phis = shk[0], shk[1], shk[3]
+    minv, stiffness, damping = lin.minv, lin.stiffness, lin.damping
+    flags, params, phis = shk.flags, shk.params, shk.phis
     tiny = MACHINE_EPS * 1.0e5
     best = np.inf
     for s in range(flags.shape[0]):

@@ -105,6 +105,7 @@ from asterlite.dynamics.contact import (
 from asterlite.dynamics.forces import external_force, support_motion
 from asterlite.dynamics.kernel import C_TIME, K_ARCHIVED
 from asterlite.dynamics.laws.kernel import law_forces
+from asterlite.dynamics.layouts import LOADS, SHOCKS, Balance
 
 # columns of an archived row (the PARA_CALC table), in this order
 COLUMNS = (
@@ -158,7 +159,7 @@ def new_energy(system, shocks, capacity: int, staggered: bool, enabled: bool):
     Disabled, every array is empty (same types, so the loops compile once
     for both)."""
     if not enabled:
-        return (
+        return Balance(
             np.zeros(N_ACC),
             np.zeros((3, 0, 0)),
             np.zeros((3, 0)),
@@ -174,7 +175,7 @@ def new_energy(system, shocks, capacity: int, staggered: bool, enabled: bool):
     acc[A_DIAGONAL] = 1.0 if system.diagonal else 0.0
     matrices = np.zeros((3, n, n))
     matrices[0], matrices[1], matrices[2] = system.mass, system.stiffness, system.damping
-    return (
+    return Balance(
         acc,
         matrices,
         np.zeros((3, n)),
@@ -186,18 +187,18 @@ def new_energy(system, shocks, capacity: int, staggered: bool, enabled: bool):
 
 
 def enabled(energy) -> bool:
-    return energy[0][A_ON] == 1.0
+    return energy.acc[A_ON] == 1.0
 
 
 def grown(energy, capacity: int):
     """The bundle with room for ``capacity`` archived rows (the driver grows
     it with the archive buffers)."""
-    out = energy[5]
+    out = energy.rows
     if not enabled(energy) or out.shape[0] >= capacity:
         return energy
     bigger = np.zeros((capacity, N_COLUMNS))
     bigger[: out.shape[0]] = out
-    return energy[:5] + (bigger,) + energy[6:]
+    return energy._replace(rows=bigger)
 
 
 @njit(cache=True, inline="always")
@@ -345,8 +346,14 @@ def evaluate(energy, t, q, v, a, dt, vint, shk, exc):
     """Powers and energies at the state (t, q, v); ``dt`` the step that led
     to it (0 at the start). Writes the A_P_* and A_E_* slots and the
     shocks' row ``local[1]``."""
-    acc, matrices, vectors, copy, work = energy[0], energy[1], energy[2], energy[3], energy[4]
-    local = energy[6]
+    acc, matrices, vectors, copy, work = (
+        energy.acc,
+        energy.matrices,
+        energy.vectors,
+        energy.vint_copy,
+        energy.work,
+    )
+    local = energy.local
     n = q.shape[0]
     diagonal = acc[A_DIAGONAL] == 1.0
     w = vectors[R_VELOCITY]
@@ -363,17 +370,31 @@ def evaluate(energy, t, q, v, a, dt, vint, shk, exc):
     for i in range(n):
         p_ext += f[i] * w[i]
     acc[A_P_EXT] = p_ext
-    flags, params, rots, phis, polars = shk[0], shk[1], shk[2], shk[3], shk[4]
+    flags, params, rots, phis, polars = shk.flags, shk.params, shk.rots, shk.phis, shk.polars
     support_motion(t, exc, params)
     e_n, e_tan = shock_powers(q, w, vint, flags, params, rots, phis, polars, copy, work, local[1])
     acc[A_E_N] = e_n
     acc[A_E_TAN] = e_tan
     p_nl = 0.0
-    if shk[5].shape[1] > 0:  # relations of laws/, on a copy of their states
+    if shk.laws.shape[1] > 0:  # relations of laws/, on a copy of their states
         copy_rows(vint, copy)
         g = vectors[R_LAW]
         g[:] = 0.0
-        law_forces(t, q, w, flags, params, rots, phis, polars, shk[5], shk[6], copy, shk[7], g)
+        law_forces(
+            t,
+            q,
+            w,
+            flags,
+            params,
+            rots,
+            phis,
+            polars,
+            shk.laws,
+            shk.rphis,
+            copy,
+            shk.law_scratch,
+            g,
+        )
         for i in range(n):
             p_nl += g[i] * w[i]
     acc[A_P_NL] = p_nl
@@ -382,11 +403,11 @@ def evaluate(energy, t, q, v, a, dt, vint, shk, exc):
 @njit(cache=True)
 def start(energy, t, q, v, a, vint, shk, exc):
     """The balance at the initial state (row 0 of the archive)."""
-    acc = energy[0]
+    acc = energy.acc
     for k in range(A_EXT, A_NL + 1):
         acc[k] = 0.0
     evaluate(energy, t, q, v, a, 0.0, vint, shk, exc)
-    copy_rows(energy[6][1], energy[6][0])
+    copy_rows(energy.local[1], energy.local[0])
     acc[A_E0] = acc[A_E_CIN] + acc[A_E_POT] + acc[A_E_N] + acc[A_E_TAN]
     acc[A_E_TAN0] = acc[A_E_TAN]
     record(energy, 0, t)
@@ -396,11 +417,11 @@ def start(energy, t, q, v, a, vint, shk, exc):
 def accumulate(energy, t, dt, q, v, a, vint, shk, exc):
     """After an accepted step of length dt ending at t: the powers at the new
     state, trapezoidal rule over the step."""
-    acc = energy[0]
-    local = energy[6]
+    acc = energy.acc
+    local = energy.local
     p_ext, p_amor, p_nl = acc[A_P_EXT], acc[A_P_AMOR], acc[A_P_NL]
     evaluate(energy, t, q, v, a, dt, vint, shk, exc)
-    d_choc, w_frot, w_drive = contact_integrals(local[0], local[1], shk[1], dt)
+    d_choc, w_frot, w_drive = contact_integrals(local[0], local[1], shk.params, dt)
     copy_rows(local[1], local[0])
     h = 0.5 * dt
     acc[A_EXT] += h * (p_ext + acc[A_P_EXT]) - w_drive
@@ -413,7 +434,7 @@ def accumulate(energy, t, dt, q, v, a, vint, shk, exc):
 @njit(cache=True)
 def record(energy, row, t):
     """Row ``row`` of the archived balance, at instant t."""
-    acc, out = energy[0], energy[5]
+    acc, out = energy.acc, energy.rows
     e_choc = acc[A_E_N] + acc[A_E_TAN]
     diss_frot = -acc[A_WFROT] - (acc[A_E_TAN] - acc[A_E_TAN0])
     out[row, C_INST] = t
@@ -440,12 +461,12 @@ def record(energy, row, t):
 
 def active(energy) -> bool:
     """Whether the balance is computed (read once, before a time loop)."""
-    return energy[0][A_ON] == 1.0
+    return energy.acc[A_ON] == 1.0
 
 
 @njit(cache=True, inline="always")
 def is_active(energy):
-    return energy[0][A_ON] == 1.0
+    return energy.acc[A_ON] == 1.0
 
 
 @njit(cache=True)
@@ -463,7 +484,7 @@ def hook(energy, archived_before, counters, clock, dt, state, model):
     """:func:`after_step` on the general loops' bundles."""
     after_step(
         energy, archived_before, counters[K_ARCHIVED], clock[C_TIME], dt,
-        state[0], state[1], state[2], state[4], model[1], model[2],
+        state.q, state.v, state.a, state.vint, model[SHOCKS], model[LOADS],
     )  # fmt: skip
 
 

@@ -75,6 +75,7 @@ from asterlite.dynamics.contact import (
     obstacle_gap,
 )
 from asterlite.dynamics.forces import add_external_force, copy_into, loads_ready
+from asterlite.dynamics.layouts import ROWS, SCALARS, State
 from asterlite.errors import NumericalError
 
 # columns of the per-shock film rows: film present, the law's coefficients,
@@ -312,7 +313,8 @@ def external_force(t, exc, out):
     for m in range(out.shape[0]):
         out[m] = 0.0
     add_external_force(
-        t, exc[0], exc[1], exc[2], exc[3], exc[9], exc[12], exc[13], exc[14], out
+        t, exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes,
+        exc.constants, exc.stack, out,
     )  # fmt: skip
 
 
@@ -397,11 +399,11 @@ def film_trial(t, dt, state, rows, scalars, linear, model, exc, controls, counts
     mass, stiffness, damping = linear
     flags, params, shapes, rest, polars, film = model[:6]
     base, f, mass_mod, kin = work[0], work[1], work[2], work[3]
-    vint, vint_save = state[4], state[5]
+    vint, vint_save = state.vint, state.vint_save
     q2, v2, a2 = rows[V11.Q_TRIAL], rows[V11.V_TRIAL], rows[V11.A_TRIAL]
     V11.predict(dt, state, rows, scalars)
     copy_into(vint, vint_save)  # the dry shocks' states of the step's start
-    copy_into(a2, state[2])
+    copy_into(a2, state.a)
     external_force(t + dt, exc, base)
     shock = dry_shock_forces(q2, v2, a2, flags, params, shapes, rest, polars, film, vint, kin, base)
     if shock >= 0:
@@ -431,7 +433,7 @@ def adapt_step(clock, counters, state, rows, scalars, linear, model, exc, contro
     max_trials = int(round(scalars[A.S_MAX_TRIALS]))
     err = 100.0
     trials = 0
-    copy_into(state[5], state[4])
+    copy_into(state.vint_save, state.vint)
     while err > 1.0 and trials < max_trials:
         tried = dt
         failed = film_trial(t, tried, state, rows, scalars, linear, model, exc, controls, counts,
@@ -439,7 +441,7 @@ def adapt_step(clock, counters, state, rows, scalars, linear, model, exc, contro
         if failed >= 0:
             return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
         if failed == -2:
-            K.expose_trial(state[0], state[1], state[2], rows[V11.Q_TRIAL], rows[V11.V_TRIAL],
+            K.expose_trial(state.q, state.v, state.a, rows[V11.Q_TRIAL], rows[V11.V_TRIAL],
                            rows[V11.A_TRIAL])  # fmt: skip
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
         if failed == -3:  # mdadap stops the run (ALGORITH15_99)
@@ -458,11 +460,11 @@ def run_adapt_loop(clock, counters, state, memory, linear, model, exc, controls,
     """code_aster 10-12's ADAPT_ORDRE2 (mdadap) with fluid films: its step
     control and archive grid (:mod:`scheme_adapt_ordre2_v11`), the film's
     iterations in each trial; resumable after any pause."""
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     if scalars[A.S_FIRST_CALL] == 1.0:
         V11.start(clock, state, rows, scalars, pas_arch)
     while clock[K.C_TIME] < clock[K.C_END]:
-        paused = K.pause_status(counters, archive[0])
+        paused = K.pause_status(counters, archive.times)
         if paused:
             return paused
         if not loads_ready(clock, exc):
@@ -520,7 +522,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     adaptive = adapt is not None
     if adaptive:  # mdadap's state (the scheme's rows and scalars) in the generic layout
         memory, _ = V11.prepare(system, dt, adapt)
-        state = (q, v, a, np.zeros(n), vint, np.zeros_like(vint), np.zeros((5, 3)))
+        state = State(q, v, a, np.zeros(n), vint, np.zeros_like(vint), np.zeros((5, 3)))
         capacity = min(capacity, 4096)
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
     budget = StepBudget(t0, t_end, dt, adaptive, adapt or SchemeOptions())
@@ -546,7 +548,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
                     buffers, instants, pas_arch, eps,
                 )  # fmt: skip
             if status == K.STATUS_FULL:
-                budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
+                budget.check_archive(2 * len(buffers.times), row_bytes, pas_arch, clock, counters)
                 buffers = grow(buffers)
             elif status == K.STATUS_LOADS:
                 excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
@@ -577,5 +579,5 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     info["film_iterations"] = int(scalars[S_TOTAL])
     info["film_worst_iterations"] = int(scalars[S_WORST])
     if adaptive:
-        info["steps_kept_at_nmax_iter_pas"] = int(memory[1][A.S_KEPT_AT_MAX_TRIALS])
+        info["steps_kept_at_nmax_iter_pas"] = int(memory[SCALARS][A.S_KEPT_AT_MAX_TRIALS])
     return RunResult(*out, info=info)

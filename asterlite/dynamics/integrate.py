@@ -15,8 +15,11 @@ from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
+from asterlite.dynamics.excitation import Excitation
 from asterlite.dynamics.forces import acceleration, total_force
-from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet, local_bundle
+from asterlite.dynamics.layouts import EXTRA, LINEAR, LOADS, SCALARS, SHOCKS, Archive, State
+from asterlite.dynamics.loop import scheme_loop
+from asterlite.dynamics.model import LinearSystem, ShockSet, local_bundle
 from asterlite.dynamics.schemes import (
     GENERAL_PATH,
     IMPLICIT_LOOP,
@@ -92,8 +95,8 @@ def integrate(
     load_labels: list[str] | None = None,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
-    ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
-    results as its specialised ``run_loop``; kept for comparison).
+    general path (the time loop around its step on the three bundles, shocks
+    in the global frame), as the relations of laws/ do; kept for comparison.
     ``label`` names the run on the progress bar. ``energy``: accumulate the
     energy balance in the loop (:mod:`asterlite.dynamics.energy`), returned
     as ``RunResult.energy``. ``implicit_shocks``: TRAITEMENT_NONL='IMPLICITE'
@@ -188,13 +191,13 @@ def run_kernel(
     f, a = np.zeros(n), np.zeros(n)
     vint = shocks.initial_vint(t0)
     work = np.zeros((5, 3))
-    shock = total_force(t0, q, v, model[1], vint, model[2], work, f)
-    acceleration(f, q, v, model[0], np.zeros(n), a)
+    shock = total_force(t0, q, v, model[SHOCKS], vint, model[LOADS], work, f)
+    acceleration(f, q, v, model[LINEAR], np.zeros(n), a)
     if shock >= 0 or diagnosis.bad(a).any():
         raise law_error(shocks, vint, t0) or initial_error(
             (q, v, a, f, vint), shocks, excitation, t0, load_labels
         )
-    state = (q, v, a, f, vint, np.zeros_like(vint), work)
+    state = State(q, v, a, f, vint, np.zeros_like(vint), work)
 
     memory, _ = module.prepare(system, dt, options)
     rotating_loop = None
@@ -209,7 +212,10 @@ def run_kernel(
         from asterlite.dynamics import implicit_shocks as IS
 
         lin = system.bundle()
-        model = ((lin[0], lin[1].copy(), lin[2].copy(), lin[3].copy()), model[1], model[2])
+        lin = lin._replace(
+            stiffness=lin.stiffness.copy(), damping=lin.damping.copy(), diagonal=lin.diagonal.copy()
+        )
+        model = (lin, model[SHOCKS], model[LOADS])
         memory, implicit_loop = IS.prepare(scheme, memory, system, shocks)
         IS.start(memory, model, q, v, t0)
     adaptive = loop_adapts(entry, dt, options)
@@ -227,18 +233,12 @@ def run_kernel(
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
     counters[K.K_ARCHIVED] = 1
-    run_loop = module.run_loop
-    if not specialised or shocks.has_laws:  # other relations: the general path
-        run_loop = getattr(module, "general_loop", module.run_loop)
-    if rotating_loop is not None:
-        run_loop = rotating_loop
-    if implicit_loop is not None:
-        run_loop = implicit_loop
+    run_loop = implicit_loop or rotating_loop or scheme_run_loop(entry, module, notice.name)
     if energy and rotating_loop is not None:
         raise NumericalError("the energy balance (ENERGIE) with VITESSE_VARIABLE='OUI'")
     balance = E.new_energy(system, shocks, capacity, entry.staggered_velocity, energy)
     if energy:
-        E.start(balance, t0, q, v, a, vint, model[1], model[2])
+        E.start(balance, t0, q, v, a, vint, model[SHOCKS], model[LOADS])
     bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
     model_parts = (system, shocks, excitation, load_labels)
     started, compiled_before = wallclock.perf_counter(), notice.seconds
@@ -246,17 +246,16 @@ def run_kernel(
         while True:
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
             chunk_started = wallclock.perf_counter()
-            extra = (balance,) if rotating_loop is None else ()  # rotation.py: no ENERGIE
             status = run_loop(
-                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, *extra
+                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, balance
             )
             if status == K.STATUS_FULL:
-                budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
+                budget.check_archive(2 * len(buffers.times), row_bytes, pas_arch, clock, counters)
                 buffers = grow(buffers)
-                balance = E.grown(balance, len(buffers[0]))
+                balance = E.grown(balance, len(buffers.times))
             elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
                 excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
-                model = (model[0], model[1], excitation.bundle()) + model[3:]
+                model = (model[LINEAR], model[SHOCKS], excitation.bundle()) + model[3:]
             elif status == K.STATUS_PAUSE:
                 budget.check_steps(clock, counters, scheme)
                 watchdog.check_limits()  # the run's time and memory limits (export P lines)
@@ -273,7 +272,7 @@ def run_kernel(
     if status != K.STATUS_DONE:
         failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
         if failed is None and status == K.STATUS_NOT_FINITE:
-            last = buffers[0][int(counters[K.K_ARCHIVED]) - 1]
+            last = buffers.times[int(counters[K.K_ARCHIVED]) - 1]
             failed = nonfinite_error(state, clock, counters, last, model_parts, scheme)
         raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
@@ -281,15 +280,29 @@ def run_kernel(
     info = run_info(clock, counters, t0, dt, elapsed, adaptive)
     info["compile_seconds"] = notice.seconds
     if implicit_loop is not None:
-        ints = memory[3][5]
+        ints = memory[EXTRA].ints
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
         info["reintegrated_steps"] = int(ints[IS.I_CUTS])
         info["relinearisations"] = int(ints[IS.I_TURNS])
     if entry.frequency_control:
-        kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
+        kept = int(memory[SCALARS][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
-    rows = balance[5][:count].copy() if energy else None
+    rows = balance.rows[:count].copy() if energy else None
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
+
+
+def scheme_run_loop(entry: Scheme, module, loop: str):
+    """The compiled loop named ``loop`` (:func:`loop_kernel`) of the scheme
+    ``entry`` whose implementation is ``module``: code_aster 10-12's own
+    loop for the legacy variant; the module's ``fast_loop``, when it has one
+    (DIFF_CENTRE, NEWMARK), for any loop but the general path; else the one
+    time loop around the scheme's step (:func:`asterlite.dynamics.loop.scheme_loop`)."""
+    if loop == entry.legacy_kernel:
+        return module.run_loop
+    fast = getattr(module, "fast_loop", None)
+    if fast is not None and loop != GENERAL_PATH.format(entry.kernel):
+        return fast
+    return scheme_loop(module.step)
 
 
 def legacy_adapt_module(entry: Scheme, rotation, implicit, energy):
@@ -314,7 +327,7 @@ def loop_adapts(entry: Scheme, dt: float, options: SchemeOptions) -> bool:
 
 
 def new_buffers(capacity: int, n_modes: int, n_shocks: int, width: int = N_VINT):
-    return (
+    return Archive(
         np.zeros(capacity),
         np.zeros(capacity, dtype=np.int64),
         np.zeros((capacity, n_modes)),
@@ -416,7 +429,7 @@ def trimmed(buffer: np.ndarray, count: int) -> np.ndarray:
 
 
 def grow(buffers):
-    return tuple(np.concatenate([b, np.zeros_like(b)]) for b in buffers)
+    return Archive(*(np.concatenate([b, np.zeros_like(b)]) for b in buffers))
 
 
 def run_info(clock, counters, t0: float, dt: float, elapsed: float, adaptive: bool) -> dict:
@@ -487,7 +500,7 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
 
 def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) -> str:
     """A smaller step to try, with what sets the stability limit."""
-    from asterlite.dynamics.model import damped_step_limit, stability_limit, suggested_step
+    from asterlite.dynamics.step_limits import damped_step_limit, stability_limit, suggested_step
 
     period = stability_limit(system, shocks)
     limit, cause = step_limit(system, shocks, scheme), period.cause()
@@ -508,7 +521,7 @@ def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
     """The largest step code_aster's VERI_PAS accepts for ``scheme``: the
     fraction of its description (:mod:`asterlite.dynamics.schemes`) of the
     shortest period with the shock stiffness."""
-    from asterlite.dynamics.model import stability_period
+    from asterlite.dynamics.step_limits import stability_period
 
     return stability_period(system, shocks) / SCHEMES[scheme].step_fraction
 

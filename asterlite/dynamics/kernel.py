@@ -1,12 +1,12 @@
 """Pieces of the compiled time loop shared by every scheme: step planning,
 archiving, status codes.
 
-Each scheme module owns a small ``run_loop`` (an njit function calling its
-own ``step`` directly, so that everything is cached across processes) built
-from the helpers here::
+The time loop (:mod:`asterlite.dynamics.loop`, written once and compiled
+around each scheme's ``step``, so that everything is cached across
+processes) is built from the helpers here::
 
     while unfinished(clock, counters, eps):
-        paused = pause_status(counters, archive[0])
+        paused = pause_status(counters, archive.times)
         if paused: return paused            # STATUS_FULL or STATUS_PAUSE
         if not loads_ready(clock, exc): return STATUS_LOADS
         t, dt = plan_step(clock, counters, instants, eps)
@@ -19,11 +19,13 @@ A step function has the signature
     step(t, dt, index, state, memory, model)
         -> (status, shock, dt_used, dt_next, n_rejected)
 
-with ``index`` the number of steps already taken, ``state = (q, v, a, f,
-vint, vint_save, work)`` advanced in place from t to t + dt_used,
-``memory = (rows, scalars, table)`` the scheme's own persistent arrays
-(rows of length n, scalars, and a coefficient table such as a Butcher
-tableau) and ``model = (lin, shk, exc)`` the bundles of ``model.py``.
+with ``index`` the number of steps already taken, ``state`` a
+``layouts.State`` (q, v, a, f, vint, vint_save, work) advanced in place
+from t to t + dt_used, ``memory = (rows, scalars, table)`` the scheme's own
+persistent arrays (rows of length n, scalars, and a coefficient table such
+as a Butcher tableau; ``layouts.ROWS``...) and ``model = (linear, shocks,
+loads)`` the bundles of ``model.py`` (``layouts.LINEAR``...; each a named
+tuple of :mod:`asterlite.dynamics.layouts`).
 
 The loop follows code_aster's archiving rules (dtmcalc): the step is
 shortened to land exactly on each requested instant (and on INST_FIN), the
@@ -66,7 +68,7 @@ STATUS_STEP_UNDERFLOW = 3
 STATUS_REJECTED = 4
 STATUS_SWITCH_NOT_LOCATED = 5  # implicit shocks: a contact switch not located in 100 tries
 STATUS_FULL = 10
-STATUS_LOADS = 11  # a windowed multiplier needs its next window (model.Excitation.refill)
+STATUS_LOADS = 11  # a windowed multiplier needs its next window (excitation.Excitation.refill)
 STATUS_PAUSE = 12  # the granted steps are taken: the driver reports progress and resumes
 
 # clock[]: time, stored step, nominal step, end time, shortened step,
@@ -199,10 +201,10 @@ def complete_step(clock, counters, state, instants, pas_arch, eps, archive_buffe
     advance_clock(
         clock,
         counters,
-        state[0],
-        state[1],
-        state[2],
-        state[4],
+        state.q,
+        state.v,
+        state.a,
+        state.vint,
         instants,
         pas_arch,
         eps,

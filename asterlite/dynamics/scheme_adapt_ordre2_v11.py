@@ -41,6 +41,7 @@ from numba import njit
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
+from asterlite.dynamics.layouts import LOADS, ROWS, SCALARS
 from asterlite.errors import NumericalError
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, V_MID, V_MID_TRIAL, RESIDUAL = range(7)
@@ -73,7 +74,7 @@ def default_step_max(shortest_period: float) -> float:
     """code_aster 10-12's PAS_MAXI when the deck gives none (mdptem): a
     twentieth of the shortest period among the modes, each stiffened by every
     shock's RIGI_NOR and RIGI_TAN on each shape component
-    (:func:`asterlite.dynamics.model.stability_limit`; 1e10 s without any)."""
+    (:func:`asterlite.dynamics.step_limits.stability_limit`; 1e10 s without any)."""
     return shortest_period / 20.0
 
 
@@ -90,7 +91,7 @@ def planned_slots(t0, t_end, spacing):
 @njit(cache=True)
 def start(clock, state, rows, scalars, pas_arch):
     scalars[A.S_FIRST_CALL] = 0.0
-    copy_into(rows[V_MID], state[1])
+    copy_into(rows[V_MID], state.v)
     scalars[S_PREVIOUS_STEP] = 0.0
     scalars[S_CALM] = 0.0
     spacing = scalars[A.S_DTMAX] * max(pas_arch, 1)
@@ -104,7 +105,7 @@ def predict(dt, state, rows, scalars):
     """The leapfrog prediction of the step ``dt`` into the trial rows: the
     mid-step velocity, the displacement and the end velocity (without the
     acceleration at the end, which the caller computes)."""
-    q, a = state[0], state[2]
+    q, a = state.q, state.a
     q2, v2 = rows[Q_TRIAL], rows[V_TRIAL]
     v_mid, v_mid2 = rows[V_MID], rows[V_MID_TRIAL]
     p = 0.5 * (scalars[S_PREVIOUS_STEP] + dt)
@@ -118,7 +119,7 @@ def predict(dt, state, rows, scalars):
 def trial(t, dt, state, rows, scalars, model):
     """One trial of the step ``dt`` from ``t`` into the trial rows: the index
     of a shock that diverged (>= 0), -2 for a non-finite acceleration, else -1."""
-    f, vint, vint_save, work = state[3], state[4], state[5], state[6]
+    f, vint, vint_save, work = state.f, state.vint, state.vint_save, state.work
     predict(dt, state, rows, scalars)
     copy_into(vint, vint_save)
     a2 = rows[A_TRIAL]
@@ -154,10 +155,10 @@ def archive_nearest(clock, counters, state, rows, scalars, archive, t_new, dt_ne
     step = counters[K.K_STEP]
     if t_new - target <= target - t:
         store(clock, counters, archive, t_new, step, rows[Q_TRIAL], rows[V_TRIAL],
-              rows[A_TRIAL], state[4], dt_next)  # fmt: skip
+              rows[A_TRIAL], state.vint, dt_next)  # fmt: skip
     else:
-        store(clock, counters, archive, t, step - 1, state[0], state[1], state[2],
-              state[5], dt_next)  # fmt: skip
+        store(clock, counters, archive, t, step - 1, state.q, state.v, state.a,
+              state.vint_save, dt_next)  # fmt: skip
     scalars[S_NEXT_ARCHIVE] = target + scalars[S_SPACING]
 
 
@@ -182,7 +183,7 @@ def judge(clock, tried, state, rows, scalars):
     just computed, the step of the next trial (divided by COEF_DIVI_PAS when
     the error exceeds 1), and whether that step fell to PAS_MINI before the end."""
     t, t_end = clock[K.C_TIME], clock[K.C_END]
-    freq = A.apparent_frequency(tried, state[0], rows[Q_TRIAL], state[2], rows[A_TRIAL],
+    freq = A.apparent_frequency(tried, state.q, rows[Q_TRIAL], state.a, rows[A_TRIAL],
                                 rows[V_MIN])  # fmt: skip
     err = scalars[A.S_POINTS] * freq * tried
     dt = tried
@@ -220,9 +221,9 @@ def accept(clock, counters, state, rows, scalars, archive, dt, err, trials):
     clock[K.C_STEP] = dt
     clock[K.C_MIN_STEP] = min(clock[K.C_MIN_STEP], dt_used)
     clock[K.C_MAX_STEP] = max(clock[K.C_MAX_STEP], dt_used)
-    copy_into(state[0], rows[Q_TRIAL])
-    copy_into(state[1], rows[V_TRIAL])
-    copy_into(state[2], rows[A_TRIAL])
+    copy_into(state.q, rows[Q_TRIAL])
+    copy_into(state.v, rows[V_TRIAL])
+    copy_into(state.a, rows[A_TRIAL])
     copy_into(rows[V_MID], rows[V_MID_TRIAL])
 
 
@@ -234,14 +235,14 @@ def take_step(clock, counters, state, rows, scalars, model, archive):
     max_trials = int(round(scalars[A.S_MAX_TRIALS]))
     err = 100.0
     trials = 0
-    copy_into(state[5], state[4])  # the shock states of the step's start
+    copy_into(state.vint_save, state.vint)  # the shock states of the step's start
     while err > 1.0 and trials < max_trials:
         tried = dt
         failed = trial(t, tried, state, rows, scalars, model)
         if failed >= 0:
             return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
         if failed == -2:
-            K.expose_trial(state[0], state[1], state[2], rows[Q_TRIAL], rows[V_TRIAL],
+            K.expose_trial(state.q, state.v, state.a, rows[Q_TRIAL], rows[V_TRIAL],
                            rows[A_TRIAL])  # fmt: skip
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
         err, dt, underflow = judge(clock, tried, state, rows, scalars)
@@ -257,10 +258,10 @@ def fill_slots(clock, counters, state, scalars, archive):
     """At the end, the archive slots code_aster allocated and left unused hold
     the final state; STATUS_FULL when the buffers must grow first."""
     while scalars[S_SLOTS] > counters[K.K_ARCHIVED]:
-        if counters[K.K_ARCHIVED] >= archive[0].shape[0]:
+        if counters[K.K_ARCHIVED] >= archive.times.shape[0]:
             return K.STATUS_FULL
-        store(clock, counters, archive, clock[K.C_TIME], counters[K.K_STEP], state[0],
-              state[1], state[2], state[4], clock[K.C_STEP])  # fmt: skip
+        store(clock, counters, archive, clock[K.C_TIME], counters[K.K_STEP], state.q,
+              state.v, state.a, state.vint, clock[K.C_STEP])  # fmt: skip
     return K.STATUS_DONE
 
 
@@ -268,15 +269,15 @@ def fill_slots(clock, counters, state, scalars, archive):
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
     """The whole time loop (ARCHIVAGE/LIST_INST and INST are not read: code_aster
     10-12's ADAPT archived on its own grid); resumable after any pause."""
-    rows, scalars = memory[0], memory[1]
-    out_t = archive[0]
+    rows, scalars = memory[ROWS], memory[SCALARS]
+    out_t = archive.times
     if scalars[A.S_FIRST_CALL] == 1.0:
         start(clock, state, rows, scalars, pas_arch)
     while clock[K.C_TIME] < clock[K.C_END]:
         paused = K.pause_status(counters, out_t)
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
+        if not loads_ready(clock, model[LOADS]):
             return K.STATUS_LOADS
         status = take_step(clock, counters, state, rows, scalars, model, archive)
         if status != K.STATUS_DONE:

@@ -30,9 +30,7 @@ import math
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.adapt_control import shock_damping_step
 from asterlite.dynamics.forces import all_finite, copy_into, matvec_row
 from asterlite.dynamics.kernel import (
@@ -41,6 +39,7 @@ from asterlite.dynamics.kernel import (
     STATUS_SHOCK_DIVERGED,
     STATUS_STEP_UNDERFLOW,
 )
+from asterlite.dynamics.layouts import LINEAR, ROWS, SCALARS, SHOCKS
 from asterlite.dynamics.linalg import lu_factor, lu_solve
 from asterlite.dynamics.local_frame import copy_vector, total_force_at
 
@@ -215,14 +214,14 @@ def start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
 
 @njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
-    """One step: the scheme's run_loop and the loops shared by every scheme
+    """One step: the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     call it. The forces through :func:`local_frame.total_force_at` (local
     frames with the model's 4th bundle). Compiled without reference
     counting: nothing in it or its callees allocates (the implicit
     operators are LU-factored in place, in the memory ``prepare`` made)."""
     q, v, a, f, vint, vint_save, work = state
-    mem, smem = memory[0], memory[1]
-    lin, shk = model[0], model[1]
+    mem, smem = memory[ROWS], memory[SCALARS]
+    lin, shk = model[LINEAR], model[SHOCKS]
     minv, stiffness, damping, is_diagonal = lin
     diagonal = is_diagonal[0] == 1
     n = q.shape[0]
@@ -401,25 +400,3 @@ def relative_error(dt, q, v, mem, smem, attempts, n):
     if scale <= EPS:
         return 0.9**4
     return err_displacement / scale
-
-
-@njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
-    (no reference counting; local frames with the model's 4th bundle)."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE

@@ -54,11 +54,10 @@ import math
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.forces import all_finite
+from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
@@ -99,10 +98,10 @@ def build_operators(rows, scalars, dt, n):
 @njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
     """One step, compiled once without reference counting (nothing in it
-    allocates): the scheme's run_loop and the loops shared by every scheme
+    allocates): the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     n = q.shape[0]
     diagonal = scalars[S_DIAGONAL] == 1.0
     built = scalars[S_DT_BUILT]
@@ -151,25 +150,3 @@ def step(t, dt, index, state, memory, model):
     if not (all_finite(q) and all_finite(v) and all_finite(a)):
         return K.STATUS_NOT_FINITE, -1, dt, dt, 0
     return K.STATUS_DONE, -1, dt, dt, 0
-
-
-@njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
-    (no reference counting; local frames with the model's 4th bundle)."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE

@@ -2,16 +2,17 @@
 
 One :class:`Scheme` per ``SCHEMA_TEMPS/SCHEMA`` value asterlite integrates:
 the module that implements it (``prepare(system, dt, options) -> (memory,
-adaptive)``, a compiled ``run_loop`` and ``step``, optionally a
-``general_loop``), the name of its compiled loop, and its properties as
-data. Every reader of a scheme name asks this table: the command (which
-schemes exist, VERI_PAS, the fluid film, the warnings), the driver
+adaptive)`` and a compiled ``step``, which :mod:`asterlite.dynamics.loop`'s
+one time loop runs; DIFF_CENTRE and NEWMARK add a ``fast_loop``), the name
+of its compiled loop, and its properties as data. Every reader of a
+scheme name asks this table: the command (which schemes exist, VERI_PAS,
+the fluid film, the warnings), the driver
 (:mod:`asterlite.dynamics.integrate`: module, loop, adaptivity), the loops
 shared by every scheme (:mod:`asterlite.dynamics.dispatch`: the integer
 code each branches on), the energy balance and the warmup (which loops to
 compile). This module imports no numba: the catalogue reads the names.
 
-Adding a scheme: write its module (``prepare``, ``step``, ``run_loop``),
+Adding a scheme: write its module (``prepare``, ``step``),
 add its :class:`Scheme` to :data:`TABLE`, and, for the loops shared by every
 scheme (variable rotation speed, implicit shocks), a branch on its code in
 :mod:`asterlite.dynamics.dispatch` (a scheme without one says
@@ -21,7 +22,7 @@ scheme (variable rotation speed, implicit shocks), a branch on its code in
 from __future__ import annotations
 
 import importlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import ModuleType
 
 # code_aster's VERI_PAS: the step may not exceed this fraction of the shortest
@@ -65,9 +66,11 @@ class Scheme:
     # its module and the name of its compiled loop
     legacy_module: str | None = None
     legacy_kernel: str | None = None
-    # its run_loop takes the shocks in their local frames, and a general path
-    # serves the relations of laws/ ("specialised": DIFF_CENTRE's loops on
-    # diagonal or full matrices)
+    # "local_frame": its loop takes the shocks in their local frames (the
+    # time loop around its step, or its module's fast_loop: NEWMARK), and a
+    # general path serves the relations of laws/; "specialised": the same
+    # with the fast_loop compiled for diagonal or full matrices (DIFF_CENTRE);
+    # "own": one loop
     loops: str = "local_frame"
     # NEWMARK, TRBDF2: a diagonal fast path dropped when K, C stop being diagonal
     diagonal_fast_path: bool = False
@@ -173,19 +176,16 @@ TABLE: tuple[Scheme, ...] = (
         diagonal_fast_path=True,
         lagged_impact_gain=1.1,
     ),
-    # asterlite extension for legacy decks: code_aster 10's EULER (mdeul1,
-    # v += dt a_n then q += dt v) is the arithmetic code_aster 14+ runs as the
-    # GENE DIFF_CENTRE (dtmprep maps it to its Euler routine): DIFF_CENTRE's module
-    Scheme(
-        "EULER",
-        "asterlite.dynamics.scheme_diff_centre",
-        "DIFF_CENTRE",
-        DIFF_CENTRE,
-        explicit_velocity=True,
-        staggered_velocity=True,
-        film=True,
-        loops="specialised",
-    ),
+)
+
+# other names of a scheme: asterlite extension for legacy decks, code_aster 10's
+# EULER (mdeul1: v += dt a_n, then q += dt v) is the arithmetic code_aster 17
+# runs for the GENE DIFF_CENTRE (dtmprep's first method, which dtmintg sends
+# to its Euler integrator inteuler); code_aster 17 has no EULER value
+ALIASES = {"EULER": "DIFF_CENTRE"}
+TABLE += tuple(
+    replace(next(e for e in TABLE if e.name == target), name=alias)
+    for alias, target in ALIASES.items()
 )
 
 SCHEMES: dict[str, Scheme] = {scheme.name: scheme for scheme in TABLE}

@@ -119,7 +119,7 @@ def tiny_shocks(system, obstacle: str = "PLAN_Y"):
 
 def tiny_loads(system, t_end: float, dt: float):
     """A constant load and a tabulated multiplier (the loops' two kinds of rows)."""
-    from asterlite.dynamics.model import tabulate_excitation
+    from asterlite.dynamics.excitation import tabulate_excitation
 
     class Table:  # a DEFI_FONCTION with linear interpolation
         INTERPOL = ("LIN", "LIN")
