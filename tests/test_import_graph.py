@@ -93,9 +93,7 @@ DEFERRED_LIBRARIES = {
 }
 # Rooms whose imports inside functions are not yet sorted (each with the work
 # that sorts them; the list only shrinks)
-DEFERRAL_PENDING = {
-    "asterlite.dynamics": "issue 28: the time loops are being rewritten (one loop, named layouts)",
-}
+DEFERRAL_PENDING: dict[str, str] = {}
 
 
 def package_modules(root: Path = ROOT, roots: dict = ROOTS) -> dict[str, Path]:

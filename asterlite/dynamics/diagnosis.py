@@ -18,6 +18,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.forces import multiplier_at
+from asterlite.dynamics.formula import run_program
 
 # the loops' test (forces.all_finite): beyond this magnitude a value counts
 # as non-finite, so that it is caught before it overflows
@@ -79,8 +81,6 @@ class Culprit:
 def load_multipliers(excitation, t: float) -> np.ndarray:
     """The multiplier of each excitation row at t, evaluated as the loops
     evaluate them (formula programs, tables, sampled functions)."""
-    from asterlite.dynamics.forces import multiplier_at
-    from asterlite.dynamics.formula import run_program
 
     rows = excitation.vectors.shape[0]
     values = np.zeros(rows)

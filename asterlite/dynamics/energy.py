@@ -68,6 +68,7 @@ import math
 import numpy as np
 from numba import njit
 
+from asterlite.concepts.table import Table
 from asterlite.dynamics.contact import (
     EPS,
     F_GEOMETRY,
@@ -492,7 +493,6 @@ def table(rows: np.ndarray, previous=None, t0: float | None = None):
     """The PARA_CALC table of the archived rows; with ``previous`` (the
     table of a reused result) its rows before t0 come first (each run's
     balance starts from its own initial state, as the PHYS balance)."""
-    from asterlite.concepts.table import Table
 
     out = Table(title="PARA_CALC")
     for name in COLUMNS:

@@ -75,6 +75,15 @@ from asterlite.dynamics.contact import (
     obstacle_gap,
 )
 from asterlite.dynamics.forces import add_external_force, copy_into, loads_ready
+from asterlite.dynamics.integrate import (
+    RunResult,
+    SchemeOptions,
+    StepBudget,
+    divergence_error,
+    grow,
+    new_buffers,
+    run_info,
+)
 from asterlite.dynamics.layouts import ROWS, SCALARS, State
 from asterlite.errors import NumericalError
 
@@ -484,15 +493,6 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     """Integrate from t0 to t_end with fluid films: code_aster 11's EULER, or
     with ``adapt`` (the :class:`integrate.SchemeOptions` of the run, PAS_MAXI
     given) its ADAPT_ORDRE2 (mdadap); returns an :class:`integrate.RunResult`."""
-    from asterlite.dynamics.integrate import (
-        RunResult,
-        SchemeOptions,
-        StepBudget,
-        divergence_error,
-        grow,
-        new_buffers,
-        run_info,
-    )
 
     if not system.diagonal:
         raise NumericalError("LAME_FLUIDE needs diagonal generalized matrices (a modal basis)")

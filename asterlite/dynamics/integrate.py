@@ -17,6 +17,7 @@ from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.excitation import Excitation
 from asterlite.dynamics.forces import acceleration, total_force
+from asterlite.dynamics.laws.kernel import failed_law
 from asterlite.dynamics.layouts import EXTRA, LINEAR, LOADS, SCALARS, SHOCKS, Archive, State
 from asterlite.dynamics.loop import scheme_loop
 from asterlite.dynamics.model import LinearSystem, ShockSet, local_bundle
@@ -26,6 +27,12 @@ from asterlite.dynamics.schemes import (
     ROTATING_LOOP,
     SCHEMES,
     Scheme,
+)
+from asterlite.dynamics.step_limits import (
+    damped_step_limit,
+    stability_limit,
+    stability_period,
+    suggested_step,
 )
 from asterlite.errors import NumericalError
 
@@ -404,7 +411,6 @@ class StepBudget:
 def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | None:
     """The error naming a nonlinearity of laws/ whose evaluation failed
     (NaN in its internal variables), or None."""
-    from asterlite.dynamics.laws.kernel import failed_law
 
     s = failed_law(shocks.flags, vint)
     if s < 0:
@@ -500,7 +506,6 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
 
 def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) -> str:
     """A smaller step to try, with what sets the stability limit."""
-    from asterlite.dynamics.step_limits import damped_step_limit, stability_limit, suggested_step
 
     period = stability_limit(system, shocks)
     limit, cause = step_limit(system, shocks, scheme), period.cause()
@@ -521,7 +526,6 @@ def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
     """The largest step code_aster's VERI_PAS accepts for ``scheme``: the
     fraction of its description (:mod:`asterlite.dynamics.schemes`) of the
     shortest period with the shock stiffness."""
-    from asterlite.dynamics.step_limits import stability_period
 
     return stability_period(system, shocks) / SCHEMES[scheme].step_fraction
 

@@ -21,6 +21,8 @@ The kernels are compiled by ``jobs`` worker processes, in the stages of
 
 from __future__ import annotations
 
+import compileall
+import importlib
 import os
 import re
 import shutil
@@ -31,6 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite import dynamics, progress
 from asterlite.dynamics import compile_estimate, schemes
 
 # the kernels, in three stages: the force functions every loop calls (and
@@ -189,7 +192,6 @@ def warm_shared() -> None:
     """The functions every loop calls, compiled once before the loops (so
     that parallel workers do not each compile them): the forces and the
     acceleration of the initial state, the archiving, the law diagnosis."""
-    from asterlite import progress
     from asterlite.dynamics import kernel as K
     from asterlite.dynamics.forces import acceleration, total_force
     from asterlite.dynamics.integrate import law_error, new_buffers
@@ -209,7 +211,6 @@ def warm_shared() -> None:
 def warm_film(adapt: bool = False) -> None:
     """code_aster 10-14's LAME_FLUIDE loop (its own kernel), or with ``adapt``
     the film under code_aster 10-12's ADAPT_ORDRE2 (another one)."""
-    from asterlite import progress
     from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
     from asterlite.dynamics.integrate import SchemeOptions
 
@@ -232,7 +233,6 @@ def warm_film(adapt: bool = False) -> None:
 def warm_one(name: str) -> Warmed:
     """Make the kernel ``name`` ready in this process (compiled, or loaded
     from the cache)."""
-    from asterlite import progress
 
     progress.enable(False)  # no progress bars for the tiny runs
     progress.listen_to_compiles()
@@ -282,8 +282,6 @@ def compile_bytecode() -> int:
     PYTHONDONTWRITEBYTECODE is set): every run then imports them without
     parsing them again. Returns the number of folders that failed (a
     read-only install, say: runs just parse the sources)."""
-    import compileall
-    import importlib
 
     failed = 0
     for package in ("asterlite", "asterlite.catalogues", "asterlite.commands"):
@@ -322,7 +320,6 @@ def main(jobs: int | None = None, stream=None, verbose: bool = False) -> int:
     (``verbose``: each kernel's wall and compile CPU seconds)."""
     stream = stream or sys.stderr
     started = time.perf_counter()
-    from asterlite import dynamics
 
     folder = dynamics.kernel_cache_folder()
     prune_stale_kernels(folder, in_tree=folder.parent == dynamics.PACKAGE / "__pycache__")

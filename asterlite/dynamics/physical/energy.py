@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.table import Table
+
 COLUMNS = ("TRAV_EXT", "ENER_CIN", "ENER_TOT", "TRAV_AMOR", "TRAV_LIAI", "DISS_SCH")
 
 
@@ -52,8 +54,6 @@ class EnergyBalance:
         self.rows = kept + self.rows
 
     def table(self):
-        from asterlite.concepts.table import Table
-
         table = Table(title="PARA_CALC")
         table.add_column("INST", "R")
         for name in COLUMNS:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.dynamics import diagnosis as D
 from asterlite.dynamics.diagnosis import LIMIT
 
 BLOCK = 512
@@ -74,7 +75,6 @@ def non_finite_state(system, t, t_good, step, q, v, a, archive) -> NonFiniteStat
     """The error of a state found non-finite at ``t``: a load first (the
     state at ``t_good`` was finite), else the displacement, velocity and
     acceleration themselves (an unstable step)."""
-    from asterlite.dynamics import diagnosis as D
 
     multipliers = []
     for load in system.loads:

@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
+from scipy.sparse.linalg import splu
 
 from asterlite.dynamics.physical.imposed import ImposedMotion
 from asterlite.fem.constraints import Elimination, eliminate
@@ -164,7 +165,6 @@ class PhysicalSystem:
 
     def initial_acceleration(self, t0: float, q0, v0) -> np.ndarray:
         """M a0 = F(t0) - K q0 - C v0 (massless DOFs get a zero acceleration)."""
-        from scipy.sparse.linalg import splu
 
         rhs = self.forces([t0])[0] - self.stiffness @ q0
         if self.damping is not None:
