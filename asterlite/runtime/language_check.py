@@ -522,8 +522,6 @@ def refusal_of_valid_call(
     not the deck's error: the first keyword asterlite lacks (or the
     catalogue's message), as unsupported. None when code_aster would
     refuse the call too, or when there is no language data to tell."""
-    if legacy_form(name) is not None:
-        return None  # legacy spellings are translated before asterlite's catalogue sees them
     check = check_language(session, name, kwargs, site, record=False)
     if check is None or check.findings:
         return None
