@@ -105,6 +105,14 @@ def _dense_pencil(k, m, sigma):
     return sigma + 1.0 / mu, phi
 
 
+def start_vector(n: int) -> np.ndarray:
+    """ARPACK's starting vector, the same on every run: without one, scipy
+    draws it from fresh entropy and the modes differ from run to run within
+    the solver's tolerance (code_aster's ARPACK seeds its generator with
+    fixed values too)."""
+    return np.random.default_rng(0).uniform(-1.0, 1.0, n)
+
+
 def _shift_invert(k, m, sigma: float, count: int, lu=None):
     """``count`` eigenpairs nearest σ with ARPACK shift-invert."""
     n = k.shape[0]
@@ -117,7 +125,9 @@ def _shift_invert(k, m, sigma: float, count: int, lu=None):
         except RuntimeError as exc:
             raise EigenError(f"K - σM is singular at σ = {sigma:g} ({exc})") from None
     op_inv = spla.LinearOperator((n, n), matvec=lu.solve, dtype=float)
-    vals, vecs = spla.eigsh(k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv)
+    vals, vecs = spla.eigsh(
+        k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv, v0=start_vector(n)
+    )
     return vals, vecs
 
 
@@ -235,7 +245,7 @@ class ReducedPencil:
         except RuntimeError:
             raise EigenError("PLUS_GRANDE on a large model needs a non-singular mass") from None
         minv = spla.LinearOperator(m.shape, matvec=lu.solve, dtype=float)
-        vals, vecs = spla.eigsh(k, k=count, M=m, Minv=minv, which="LA")
+        vals, vecs = spla.eigsh(k, k=count, M=m, Minv=minv, which="LA", v0=start_vector(self.n))
         return self._settled(self._omega2(vals), vecs)
 
     def band(self, lower: float, upper: float, limit: int | None = None):
