@@ -135,6 +135,27 @@ def _imported_names(node, module: str, is_package: bool, modules) -> list[str]:
     return names
 
 
+def import_targets(node, module: str, path: Path, modules) -> tuple[set, set]:
+    """(modules of the package, external top names) one import statement runs:
+    the module it names (or holds the name) and the packages on the way to it."""
+    ours, theirs = set(), set()
+    for name in _imported_names(node, module, path.name == "__init__.py", modules):
+        target = name
+        while target and target not in modules:
+            target = target.rpartition(".")[0]
+        if not target:
+            theirs.add(name.split(".")[0])
+            continue
+        if target != module:
+            ours.add(target)
+        parts = target.split(".")
+        for k in range(1, len(parts)):
+            package = ".".join(parts[:k])
+            if package in modules and not (module == package or module.startswith(package + ".")):
+                ours.add(package)
+    return ours, theirs
+
+
 def import_edges(modules: dict[str, Path]) -> dict[str, dict[str, int]]:
     """module -> {imported module of the package: line of the first import}."""
     graph = {}
@@ -145,19 +166,9 @@ def import_edges(modules: dict[str, Path]) -> dict[str, dict[str, int]]:
         for node in ast.walk(tree):
             if id(node) in skipped or not isinstance(node, (ast.Import, ast.ImportFrom)):
                 continue
-            for name in _imported_names(node, module, path.name == "__init__.py", modules):
-                target = name
-                while target and target not in modules:  # a name inside a module
-                    target = target.rpartition(".")[0]
-                if not target or target == module:
-                    continue
+            ours, _ = import_targets(node, module, path, modules)
+            for target in sorted(ours):
                 edges.setdefault(target, node.lineno)
-                parts = target.split(".")
-                for k in range(1, len(parts)):  # the packages importing it runs
-                    package = ".".join(parts[:k])
-                    inside = module == package or module.startswith(package + ".")
-                    if package in modules and not inside:
-                        edges.setdefault(package, node.lineno)
         graph[module] = edges
     return graph
 
@@ -312,30 +323,11 @@ def _top_level() -> dict[str, tuple[frozenset, frozenset]]:
         for node in ast.walk(tree):
             if not isinstance(node, (ast.Import, ast.ImportFrom)) or id(node) in skipped | inner:
                 continue
-            ours, theirs = _targets(node, module, path, modules)
+            ours, theirs = import_targets(node, module, path, modules)
             edges |= ours
             external |= theirs
         found[module] = (frozenset(edges), frozenset(external))
     return found
-
-
-def _targets(node, module: str, path: Path, modules) -> tuple[set, set]:
-    ours, theirs = set(), set()
-    for name in _imported_names(node, module, path.name == "__init__.py", modules):
-        target = name
-        while target and target not in modules:
-            target = target.rpartition(".")[0]
-        if not target:
-            theirs.add(name.split(".")[0])
-            continue
-        if target != module:
-            ours.add(target)
-        parts = target.split(".")
-        for k in range(1, len(parts)):
-            package = ".".join(parts[:k])
-            if package in modules and not (module == package or module.startswith(package + ".")):
-                ours.add(package)
-    return ours, theirs
 
 
 def _closure(start) -> tuple[set, set]:
@@ -382,7 +374,7 @@ def start_up_paths() -> tuple[frozenset, ...]:
 def deferral_reason(module: str, node, chain: list) -> str | None:
     """Why the import ``node`` inside a function of ``module`` waits, or None."""
     modules = package_modules()
-    ours, theirs = _targets(node, module, modules[module], modules)
+    ours, theirs = import_targets(node, module, modules[module], modules)
     have_modules, have_libraries = _closure([module])
     reached, libraries = _closure(ours)
     new_libraries = (libraries | theirs) & set(DEFERRED_LIBRARIES)
