@@ -139,10 +139,12 @@ def beam_force_terms(model, characteristics, cells, values, local: bool, values_
             raise ElementError(f"FORCE_POUTRE applies to beams, not to {modelisation} ({names})")
         conn, x1, x2, length, rot = _geometry(model, characteristics, members)
         comps = beam.COMPONENTS[modelisation]
-        if len(comps) == 6:
+        if len(comps) >= 6:
             f_local = _beam_local_vectors(rot, length, q1, q2, local)
             r = beam.element_rotation(rot, 6)
             f = np.einsum("eji,ej->ei", r, f_local)
+            if len(comps) == 7:  # POU_D_TG: the line load does no work on GRX
+                f = np.insert(f.reshape(-1, 2, 6), 6, 0.0, axis=2).reshape(-1, 14)
         else:
             dim = len(comps)
             if local:
