@@ -231,9 +231,10 @@ def classical_basis(ctx, occ, interfaces, bases, caps):
         except InterfaceError as exc:
             ctx.error(f"interface {interface.name}: {exc}", "INTERF_DYNA", occ)
         blocks.append(shapes)
-        free = interface.dofs.size - owners.size
-        if free:
-            ctx.log(f"interface {interface.name}: {free} DOF(s) not blocked, no static mode")
+        left = interface.dofs.size - owners.size
+        if left:
+            state = "blocked" if interface.kind == "MNEAL" else "not blocked"
+            ctx.log(f"interface {interface.name}: {left} DOF(s) {state}, no static mode")
         labels.extend(numbering.label(int(d)) for d in owners)
         kind = "FORC_IMPO" if interface.kind == "MNEAL" else "DEPL_IMPO"
         defo.extend([kind] * shapes.shape[1])
