@@ -457,6 +457,10 @@ def _cells_carrying(ctx, model, occ, accepted: dict, what: str) -> np.ndarray:
         if modelisation in accepted and mesh.cell_types[cell] in accepted[modelisation]:
             kept.append(int(cell))
         elif not everywhere:
+            if modelisation is not None and modelisation not in accepted:
+                # the element may carry the load in code_aster (shells, 2D...):
+                # asterlite has not implemented it there, which says nothing of the deck
+                ctx.unsupported(f"{what} on {modelisation} cells", "GROUP_MA", occ)
             state = (
                 "not in the model" if modelisation is None else f"a {mesh.cell_types[cell]} cell"
             )

@@ -45,3 +45,37 @@ def test_a_value_code_aster_refuses_stays_invalid(tmp_path):
     missing keyword keeps the call invalid."""
     report = _run(tmp_path, "DIS_CONTACT=_F(RIGI_NOR='stiff')")
     assert report.status == "ERROR", report.message
+
+
+PLATE_MESH = """COOR_3D
+N1 0.0 0.0 0.0
+N2 1.0 0.0 0.0
+N3 1.0 1.0 0.0
+N4 0.0 1.0 0.0
+FINSF
+QUAD4
+M1 N1 N2 N3 N4
+FINSF
+GROUP_MA
+PLAQ M1
+FINSF
+FIN
+"""
+
+PLATE_DECK = """DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='ASTER')
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='DKT'))
+CH = AFFE_CHAR_MECA(MODELE=MO, PRES_REP=_F(GROUP_MA='PLAQ', PRES=1.0e5))
+FIN()
+"""
+
+
+def test_a_load_on_elements_asterlite_does_not_load_is_unsupported(tmp_path):
+    """code_aster's DKT plates carry PRES_REP; asterlite's do not yet: the
+    run says so by name instead of calling the cells wrong."""
+    (tmp_path / "plate.mail").write_text(PLATE_MESH)
+    deck = tmp_path / "plate.comm"
+    deck.write_text(PLATE_DECK)
+    report = run_deck(deck, tmp_path / "out", aster_version=17)
+    assert report.status == "UNSUPPORTED", report.message
+    assert "PRES_REP on DKT cells" in report.message and "plate.comm:4:" in report.message

@@ -582,9 +582,10 @@ def classify_deck_error(session, error: AsterliteError) -> AsterliteError | None
         return error
     if type(error).__name__ == "DeckStartError" and _file_had_unsupported(session, error):
         return None  # the file's study may start in what check could not follow
+    refusal = python_refusal(error, _file_of(error, session))
+    if refusal is not None:
+        return refusal
     if isinstance(error, DeckSyntaxError):
-        if _python_accepts(_file_of(error, session)):
-            return _unsupported_python(error, "a construct asterlite's deck parser does not take")
         if deck_version(session) < 13:  # Python 2 decks: asterlite reads a part of it
             return _unsupported_python(error, "Python 2 that asterlite does not read")
         return error
@@ -597,13 +598,27 @@ def classify_deck_error(session, error: AsterliteError) -> AsterliteError | None
     kind = getattr(error, "python_type", None)
     if kind is None and type(error) is DeckRuntimeError:
         return _unsupported_python(error, "refused by asterlite's deck evaluator")
-    if kind is not None and issubclass(kind, ImportError):
-        return _unsupported_python(error, "a module asterlite does not provide")
     if kind is NameError:
         return _name_error(session, error)
     if kind is not None:
         return _unsupported_python(error, "check could not evaluate this statement")
     return error
+
+
+def python_refusal(error: AsterliteError, file: str) -> UnsupportedPython | None:
+    """The error as the refusal it is when the deck is valid Python that
+    asterlite does not take (a run and a check say UNSUPPORTED, not that the
+    deck is wrong), else None: a construct Python parses but asterlite's deck
+    parser refuses (``class``, ``global``...), an import of a module it does
+    not provide. Its safety limits (a string too long...) stay errors."""
+    if isinstance(error, DeckSyntaxError):
+        if _python_accepts(file):
+            return _unsupported_python(error, "a construct asterlite's deck parser does not take")
+        return None
+    kind = getattr(error, "python_type", None)
+    if type(error) is DeckRuntimeError and kind is not None and issubclass(kind, ImportError):
+        return _unsupported_python(error, "a module asterlite does not provide")
+    return None
 
 
 def _file_had_unsupported(session, error: AsterliteError) -> bool:
