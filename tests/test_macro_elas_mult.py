@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import pytest
 
+from asterlite.errors import UnsupportedError
 from tests.test_fem_structures import AREA, INERTIA, RHO, E, beam_model, line_mesh
 from tests.test_fem_support import FakeSession, run
 
@@ -52,3 +53,25 @@ def test_global_loads_act_in_every_case_and_fields_follow():
     efge = fields.element_fields["EFGE_ELNO"]
     mfy = efge.components.index("MFY")
     assert abs(efge.values[1, 0, 0, mfy]) == pytest.approx(FORCE * LENGTH, rel=1e-9)
+
+
+def test_a_beam_field_asterlite_lacks_is_unsupported_by_name():
+    """EPSI_ELNO is computed on beams by code_aster, on solids only by
+    asterlite: CALC_CHAMP says so, it does not call the deck wrong."""
+    session = FakeSession()
+    model, field, cara = beam_model(session, line_mesh(N_EL, LENGTH))
+    clamp = run(
+        session, "AFFE_CHAR_MECA", MODELE=model, DDL_IMPO={"GROUP_NO": "A", "LIAISON": "ENCASTRE"}
+    )
+    tip = run(session, "AFFE_CHAR_MECA", MODELE=model, FORCE_NODALE={"GROUP_NO": "B", "FY": 1.0})
+    result = run(
+        session,
+        "MACRO_ELAS_MULT",
+        MODELE=model,
+        CHAM_MATER=field,
+        CARA_ELEM=cara,
+        CHAR_MECA_GLOBAL=clamp,
+        CAS_CHARGE=[{"NOM_CAS": "Y", "CHAR_MECA": tip}],
+    )
+    with pytest.raises(UnsupportedError, match="EPSI_ELNO of beam cells"):
+        run(session, "CALC_CHAMP", RESULTAT=result, DEFORMATION="EPSI_ELNO")

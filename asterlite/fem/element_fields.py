@@ -32,6 +32,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import ElementField, NodalComponentField
+from asterlite.errors import UnsupportedError
 from asterlite.fem.beam_elements import (
     EFGE_COMPONENTS,
     SIPM_COMPONENTS,
@@ -119,8 +120,8 @@ def beam_element_fields(
             sections = [characteristics.sections[int(c)] for c in cells]
             extremes = beam_extreme_stresses(dynamic, sections)
             out[name] = ElementField(name, cells, SIPM_COMPONENTS, extremes)
-        else:
-            raise ValueError(f"unknown element field {name}")
+        else:  # a field code_aster computes on beams too (ECIN_ELEM, EPSI_ELNO...)
+            raise UnsupportedError(f"{name} of beam cells")
     return out
 
 
