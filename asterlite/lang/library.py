@@ -13,7 +13,7 @@ import math
 import sys
 import types
 
-from asterlite.errors import DeckRuntimeError
+from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.lang import exceptions, stdlib
 from asterlite.lang import limits as guards
 from asterlite.lang.limits import Limits
@@ -590,6 +590,12 @@ def get_attribute(value, name: str, limits: Limits):
     found = _builtin_attribute(value, name, limits)
     if found is not _MISSING:
         return found
+    if methods is not None or attributes is not None:
+        # one of code_aster's objects (a mesh, a result...): code_aster's has
+        # far more methods than asterlite provides, so this is asterlite's limit
+        raise UnsupportedError(
+            f"'{cls.__name__}' object: asterlite does not provide code_aster's '{name}'"
+        )
     raise DeckRuntimeError(f"'{cls.__name__}' object has no attribute '{name}' usable in decks")
 
 
