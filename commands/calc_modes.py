@@ -24,7 +24,7 @@ from asterlite.modal.calc import (
     residuals,
     select_modes,
 )
-from asterlite.modal.eigen import EigenError
+from asterlite.modal.eigen import EigenError, omega2_from_freq
 from asterlite.modal.quadratic import QuadraticError
 from asterlite.modal.quadratic import select as select_complex
 
@@ -63,6 +63,10 @@ def run(ctx, kw):
     check_found(ctx, kw, omega2.size)
     res = residuals(pencil, omega2, vecs)
     modes = build_mode_result(stiffness, mass, omega2, pencil.expand(vecs))
+    numbers = _mode_numbers(pencil, option, freq, omega2)
+    if numbers is not None:
+        modes.parameters["NUME_MODE"] = numbers
+        ctx.log(f"NUME_MODE from the Sturm count: the first mode found is mode {numbers[0]}")
     modes.parameters["ERREUR"] = res
     veri = (kw.factor("VERI_MODE") or [{}])[0]
     tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
@@ -87,9 +91,30 @@ def run(ctx, kw):
         )
         modes = modes.select(keep)
         modes.parameters["NUME_MODE"] = np.arange(1, modes.n_modes + 1)
-    for k, f in enumerate(modes.frequencies, start=1):
-        ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
+    for k, (number, f) in enumerate(zip(modes.mode_numbers, modes.frequencies, strict=True)):
+        ctx.log(f"mode {number:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k]:12.5e}")
     return modes
+
+
+def _mode_numbers(pencil, option: str, freq, omega2) -> np.ndarray | None:
+    """NUME_MODE as code_aster gives it, a mode's rank in the whole spectrum
+    (the Sturm count of its shift plus its place from the shift): a band
+    above rigid-body or lower modes starts past 1. None where that is 1, 2...
+    (the selections from the lowest mode) or the count cannot be read."""
+    if option in ("PLUS_PETITE", "TOUT", "PLUS_GRANDE") or not omega2.size:
+        return None
+    if option == "BANDE" or (option in ("AJUSTE", "SEPARE") and len(freq) >= 2):
+        below = pencil.count_below(float(omega2_from_freq(min(freq))))
+        return None if not below else below + np.arange(1, omega2.size + 1)
+    # CENTRE's modes follow one another in the spectrum; PROCHE's may not
+    contiguous = option == "CENTRE"
+    bounds = omega2[:1] if contiguous else omega2
+    counts = [pencil.count_below(w - 1e-9 * max(abs(w), 1.0)) for w in bounds]
+    if any(c is None for c in counts) or not any(counts):
+        return None
+    if contiguous:
+        return counts[0] + np.arange(1, omega2.size + 1)
+    return np.asarray(counts) + 1
 
 
 def _method(kw) -> str | None:
@@ -187,8 +212,8 @@ def _generalized(ctx, kw, stiffness, mass):
         ctx.error(str(exc), "OPTION", kw)
     check_found(ctx, kw, omega2.size)
     modes = build_generalized_result(stiffness, mass, omega2, vecs)
-    for k, f in enumerate(modes.frequencies, start=1):
-        ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
+    for k, (number, f) in enumerate(zip(modes.mode_numbers, modes.frequencies, strict=True)):
+        ctx.log(f"mode {number:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k]:12.5e}")
     return modes
 
 

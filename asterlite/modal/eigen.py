@@ -267,6 +267,27 @@ class ReducedPencil:
         keep = (vals >= lower) & (vals <= upper)
         return vals[keep], vecs[:, keep]
 
+    def count_below(self, omega2: float) -> int | None:
+        """How many eigenvalues lie below ω² (the Sturm count code_aster
+        numbers modes with), or None when it cannot be read: the inertia of
+        K - ω² M (Sylvester's law) from a factorisation that pivots on the
+        diagonal only, so that its U is D Lᵀ."""
+        if self.dense:
+            return int(np.count_nonzero(self.all_modes()[0] < omega2))
+        shifted = self._solver_k - self._solver_shift(omega2) * self._solver_m
+        try:
+            lu = spla.splu(
+                shifted.tocsc(),
+                permc_spec="MMD_AT_PLUS_A",
+                diag_pivot_thresh=0.0,
+                options={"SymmetricMode": True},
+            )
+        except RuntimeError:  # singular: ω² is an eigenvalue
+            return None
+        if not np.array_equal(lu.perm_r, lu.perm_c):  # an off-diagonal pivot was taken
+            return None
+        return int(np.count_nonzero(lu.U.diagonal() < 0.0))
+
     def expand(self, vecs: np.ndarray) -> np.ndarray:
         return np.asarray(self.elimination.T @ vecs)
 
