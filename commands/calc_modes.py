@@ -24,7 +24,7 @@ from asterlite.modal.calc import (
     residuals,
     select_modes,
 )
-from asterlite.modal.eigen import EigenError, omega2_from_freq
+from asterlite.modal.eigen import EigenError
 from asterlite.modal.quadratic import QuadraticError
 from asterlite.modal.quadratic import select as select_complex
 
@@ -100,21 +100,37 @@ def _mode_numbers(pencil, option: str, freq, omega2) -> np.ndarray | None:
     """NUME_MODE as code_aster gives it, a mode's rank in the whole spectrum
     (the Sturm count of its shift plus its place from the shift): a band
     above rigid-body or lower modes starts past 1. None where that is 1, 2...
-    (the selections from the lowest mode) or the count cannot be read."""
+    (the selections from the lowest mode) or the count cannot be read.
+
+    The count is taken just below the highest mode found, where the shifted
+    matrix is regular, not at the band's lower bound: a band from 0 Hz of a
+    free structure puts that bound among its rigid-body modes, whose computed
+    ω² (±1e-8) fall either side of 0 as round-off has it."""
     if option in ("PLUS_PETITE", "TOUT", "PLUS_GRANDE") or not omega2.size:
         return None
-    if option == "BANDE" or (option in ("AJUSTE", "SEPARE") and len(freq) >= 2):
-        below = pencil.count_below(float(omega2_from_freq(min(freq))))
-        return None if not below else below + np.arange(1, omega2.size + 1)
-    # CENTRE's modes follow one another in the spectrum; PROCHE's may not
-    contiguous = option == "CENTRE"
-    bounds = omega2[:1] if contiguous else omega2
-    counts = [pencil.count_below(w - 1e-9 * max(abs(w), 1.0)) for w in bounds]
-    if any(c is None for c in counts) or not any(counts):
+    contiguous = option in ("BANDE", "CENTRE") or (
+        option in ("AJUSTE", "SEPARE") and len(freq) >= 2
+    )
+    if not contiguous:  # PROCHE's modes need not follow one another: each its own count
+        counts = [pencil.count_below(_just_below(w)) for w in omega2]
+        if any(c is None for c in counts) or not any(counts):
+            return None
+        return np.asarray(counts) + 1
+    top = float(omega2.max())
+    if top <= 0.0:
         return None
-    if contiguous:
-        return counts[0] + np.arange(1, omega2.size + 1)
-    return np.asarray(counts) + 1
+    count = pencil.count_below(_just_below(top))
+    if count is None:
+        return None
+    # the first mode of the top's cluster of equal eigenvalues has rank count + 1
+    anchor = int(np.flatnonzero(omega2 >= _just_below(top))[0])
+    numbers = count + 1 + np.arange(omega2.size) - anchor
+    return None if numbers[0] < 1 or numbers[0] == 1 else numbers
+
+
+def _just_below(omega2: float) -> float:
+    """A shift below ω² and its equal eigenvalues, above any distinct one."""
+    return omega2 - 1e-6 * max(abs(omega2), 1e-300)
 
 
 def _method(kw) -> str | None:

@@ -12,7 +12,7 @@ import scipy.sparse as sp
 
 from asterlite.fem.constraints import Elimination
 from asterlite.modal.eigen import DENSE_LIMIT, ReducedPencil
-from tests.test_fem_support import run
+from tests.test_fem_support import chain_matrices, run
 from tests.test_modal_chain import K, M, axial_chain, fixed_fixed_frequencies  # noqa: F401
 
 EXACT = fixed_fixed_frequencies(10, K, M)
@@ -55,3 +55,25 @@ def test_sturm_count_on_the_sparse_path():
     exact = k * (2.0 - 2.0 * np.cos(np.pi * np.arange(n) / n))
     for omega2 in (1.0e-3, 0.5, 40.0, 900.0):
         assert pencil.count_below(omega2) == np.count_nonzero(exact < omega2)
+
+
+def test_a_band_from_zero_of_a_free_chain_counts_the_rigid_mode():
+    """Free-free chain: a rigid mode at 0 Hz, whose computed ω² falls either
+    side of 0; the elastic modes of BANDE (0, f) are modes 2, 3... whether
+    the band kept the rigid mode or not."""
+    session, model, k, m = chain_matrices(
+        8, (K, K, K), M, ddl_impo=[{"TOUT": "OUI", "DY": 0.0, "DZ": 0.0}]
+    )
+    modes = run(
+        session,
+        "CALC_MODES",
+        MATR_RIGI=k,
+        MATR_MASS=m,
+        OPTION="BANDE",
+        CALC_FREQ={"FREQ": (0.0, 15.0)},
+    )
+    elastic = modes.frequencies > 1e-3
+    # free-free chain of 8 masses: f_j = sqrt(k/m) sin(j pi / 16) / pi, j = 1..7
+    exact = np.sqrt(K / M) * np.sin(np.arange(1, 8) * np.pi / 16) / np.pi
+    np.testing.assert_allclose(modes.frequencies[elastic], exact[exact <= 15.0], rtol=1e-10)
+    assert modes.mode_numbers[elastic].tolist() == list(range(2, 2 + int(elastic.sum())))
