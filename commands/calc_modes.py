@@ -80,6 +80,7 @@ def run(ctx, kw):
             f"{res[worst]:.3g} above {tolerance:g}",
             "VERI_MODE",
             kw,
+            "SolverError",  # code_aster's ALGELINE2_74
         )
     norm = kw.factor("NORM_MODE")
     if norm:
@@ -162,8 +163,8 @@ def check_found(ctx, kw, count: int, what="eigenmode", keyword="CALC_FREQ") -> N
     stop = kw.get("STOP_BANDE_VIDE", "OUI") == "OUI"
     if count:
         return
-    if stop:
-        ctx.error(f"no {what} found for this selection", keyword, kw)
+    if stop:  # code_aster's MODAL_1, a SolverError
+        ctx.error(f"no {what} found for this selection", keyword, kw, "SolverError")
     ctx.unsupported("an empty selection with STOP_BANDE_VIDE='NON'", "STOP_BANDE_VIDE", kw)
 
 
@@ -271,6 +272,7 @@ def _complex(ctx, kw, stiffness, mass, damping):
             f"{res[worst]:.3g} above {tolerance:g}",
             "VERI_MODE",
             kw,
+            "SolverError",  # code_aster's ALGELINE2_74
         )
     norm = kw.factor("NORM_MODE")
     if norm:

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
+from asterlite.errors import CommandError
 from asterlite.fem.constraints import Elimination
 from asterlite.modal.eigen import DENSE_LIMIT, ReducedPencil
 from tests.test_fem_support import chain_matrices, run
@@ -77,3 +78,13 @@ def test_a_band_from_zero_of_a_free_chain_counts_the_rigid_mode():
     exact = np.sqrt(K / M) * np.sin(np.arange(1, 8) * np.pi / 16) / np.pi
     np.testing.assert_allclose(modes.frequencies[elastic], exact[exact <= 15.0], rtol=1e-10)
     assert modes.mode_numbers[elastic].tolist() == list(range(2, 2 + int(elastic.sum())))
+
+
+def test_an_empty_band_is_code_asters_solver_error(axial_chain):  # noqa: F811
+    """code_aster stops an empty band with MODAL_1, a SolverError a deck may
+    catch (sdll11j tests it)."""
+    session, model, k, m = axial_chain
+    band = {"FREQ": (1000.0, 2000.0)}
+    with pytest.raises(CommandError, match="no eigenmode found") as caught:
+        run(session, "CALC_MODES", MATR_RIGI=k, MATR_MASS=m, OPTION="BANDE", CALC_FREQ=band)
+    assert caught.value.aster_exception == "SolverError"

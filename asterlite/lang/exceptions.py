@@ -11,10 +11,10 @@ same place, and nothing else:
   ``ArithmeticError``...);
 - a command that fails with valid keywords, invalid keywords or a
   numerical failure: code_aster raises its ``AsterError`` there (asterlite's
-  ``CommandError``, ``ValidationError``, ``NumericalError``). code_aster's
-  subclasses (``ConvergenceError``, ``SolverError``...) are not told apart
-  by asterlite: an ``except CA.SolverError`` lets such an error through, and
-  the run stops with it;
+  ``CommandError``, ``ValidationError``, ``NumericalError``); where code_aster
+  raises one of its subclasses (``SolverError`` for an empty band of
+  CALC_MODES...), the command names it (``aster_exception``), elsewhere an
+  ``except CA.SolverError`` lets the error through and the run stops with it;
 - what the deck raises itself (``raise CA.AsterError("...")``).
 
 Never: the run's limits (time, memory, steps, sizes), interruptions,
@@ -168,7 +168,7 @@ def classify(error: BaseException) -> ExceptionClass | None:
     if isinstance(error, DeckRaised):
         return error.deck_class
     if isinstance(error, (CommandError, ValidationError, NumericalError)):
-        return ASTER_ERROR
+        return ASTER_CLASSES.get(getattr(error, "aster_exception", None), ASTER_ERROR)
     if type(error) is DeckRuntimeError:
         kind = getattr(error, "python_type", None)
         if kind is None:  # one of asterlite's refusals

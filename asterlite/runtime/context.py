@@ -33,15 +33,25 @@ class CommandContext:
     reuse: Any = None  # the concept passed as reuse=, if any
     notes: list[str] = field(default_factory=list)
 
-    def error(self, message: str, keyword: str | None = None, kw: Keywords | None = None):
-        """Raise a CommandError located at the call (and keyword, when given)."""
+    def error(
+        self,
+        message: str,
+        keyword: str | None = None,
+        kw: Keywords | None = None,
+        aster_exception: str | None = None,
+    ):
+        """Raise a CommandError located at the call (and keyword, when given);
+        ``aster_exception`` names the subclass of code_aster's AsterError that
+        code_aster raises there (``SolverError``...), for a deck's ``except``."""
         path, location = self.command, self.location
         if kw is not None:
             path, location = kw.where(keyword)
             location = location or self.location
         elif keyword:
             path = f"{self.command}/{keyword}"
-        raise CommandError(message, location, path)
+        error = CommandError(message, location, path)
+        error.aster_exception = aster_exception
+        raise error
 
     def unsupported(self, what: str, keyword: str | None = None, kw: Keywords | None = None):
         """Raise an UnsupportedError for a keyword value not implemented yet."""
