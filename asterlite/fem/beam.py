@@ -460,8 +460,12 @@ def local_matrices(
         iz=section["IZ"],
         ay=ay,
         az=az,
-        ey=section.get("EY", 0.0),
-        ez=section.get("EZ", 0.0),
+        # code_aster's EY, EZ place the centroid relative to the shear centre
+        # (sdll400a's deck supports its channel at the shear centre with
+        # DY - 0.2215 DRX = 0 for EZ = -0.2215); ey, ez here are the shear
+        # centre relative to the centroid
+        ey=-section.get("EY", 0.0),
+        ez=-section.get("EZ", 0.0),
     )
     shear = shear_modulus(young, poisson)
     if modelisation == "POU_D_TG":
