@@ -36,6 +36,7 @@ from asterlite.fem.elements import ElementError
 from asterlite.fem.loads import beam_element_loads
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
+from asterlite.post.nodal_forces import FORCE_OPTIONS, NodalForceError, nodal_forces
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
@@ -358,9 +359,10 @@ def run(ctx, kw):
     requested = []
     for keyword in ("CONTRAINTE", "DEFORMATION", "ENERGIE", "CRITERES", "VARI_INTERNE"):
         requested.extend((keyword, name) for name in as_tuple(kw.get(keyword)))
-    for keyword in ("PROPRIETES", "FORCE"):
-        if kw.get(keyword):
-            ctx.unsupported(f"CALC_CHAMP {keyword}={as_tuple(kw[keyword])}", keyword, kw)
+    if kw.get("PROPRIETES"):
+        ctx.unsupported(f"CALC_CHAMP PROPRIETES={as_tuple(kw['PROPRIETES'])}", "PROPRIETES", kw)
+    if kw.get("FORCE"):
+        _force_fields(ctx, kw, result)
     names = [name for _, name in requested]
     known = ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS + SOLID_FIELDS
     other = [n for n in names if n not in known]
@@ -425,6 +427,60 @@ def run(ctx, kw):
             f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
         )
     return _cham_utils(ctx, kw, result)
+
+
+def _force_fields(ctx, kw, result) -> None:
+    """FORCE=FORC_NODA / REAC_NODA of a dyna_trans, stored as nodal fields of
+    the result (NaN at the orders not selected, as code_aster stores none)."""
+    options = as_tuple(kw["FORCE"])
+    other = [name for name in options if name not in FORCE_OPTIONS]
+    if other:
+        ctx.unsupported(f"CALC_CHAMP FORCE={other[0]!r}", "FORCE", kw)
+    if "dyna_trans" not in getattr(result, "aster_types", ()):
+        ctx.unsupported(
+            f"CALC_CHAMP FORCE on a {getattr(result, 'aster_type', type(result).__name__)} "
+            "(asterlite computes it on a dyna_trans)",
+            "FORCE",
+            kw,
+        )
+    if kw.get("GROUP_MA"):
+        ctx.unsupported("CALC_CHAMP FORCE on a part of the model (GROUP_MA)", "GROUP_MA", kw)
+    kw.mark_used("TOUT")
+    model, characteristics, materials = _context(ctx, kw, result)
+    occurrences = kw.factor("EXCIT")
+    loads = result.loads
+    if occurrences:
+        for occ in occurrences:
+            for key in ("FONC_MULT_C", "COEF_MULT_C", "PHAS_DEG", "PUIS_PULS"):
+                if occ.get(key):
+                    ctx.unsupported(f"CALC_CHAMP EXCIT {key} with FORCE", key, occ)
+            if occ.get("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE":
+                ctx.unsupported("CALC_CHAMP EXCIT TYPE_CHARGE with FORCE", "TYPE_CHARGE", occ)
+        loads = tuple(
+            (occ["CHARGE"], occ.get("FONC_MULT") or float(occ.get("COEF_MULT", 1.0)))
+            for occ in occurrences
+        )
+    rows = _selected_orders(ctx, kw, result)
+    if rows is None:
+        kw.mark_used("TOUT_ORDRE")  # every order, the default
+    result.fields = dict(result.fields)
+    for option in options:
+        try:
+            values = nodal_forces(result, option, model, characteristics, materials, loads, ctx.log)
+        except (NodalForceError, ElementError, KeyError) as exc:
+            ctx.error(str(exc), "FORCE", kw)
+        except NotImplementedError as exc:
+            ctx.unsupported(str(exc), "FORCE", kw)
+        if rows is not None:
+            kept = np.full(values.shape, np.nan)
+            kept[rows] = values[rows]
+            previous = result.fields.get(option)
+            if previous is not None and previous.shape == values.shape:
+                # what an earlier CALC_CHAMP computed at the other orders stays
+                kept = np.where(np.isnan(kept), previous, kept)
+            values = kept
+        result.fields[option] = values
+        ctx.log(f"CALC_CHAMP {option}: {values.shape[0]} orders, {values.shape[1]} DOFs")
 
 
 def _cham_utils(ctx, kw, result):

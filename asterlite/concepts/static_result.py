@@ -4,7 +4,6 @@ instants of the computation, laid out as a physical transient's."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from asterlite.concepts.transient import DynaTrans
 
@@ -15,7 +14,3 @@ class EvolElas(DynaTrans):
     ``materials`` and ``characteristics`` are those of the computation."""
 
     aster_types = ("evol_elas", "resultat_sdaster")
-
-    model: Any = None
-    materials: Any = None
-    characteristics: Any = None
