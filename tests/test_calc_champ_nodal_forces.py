@@ -133,3 +133,27 @@ U = CALC_CHAMP(reuse=U, RESULTAT=U, FORCE="REAC_NODA")""",
     # EXCIT gives the loads instead of the result's: 3 F instead of F
     np.testing.assert_allclose(reac_v[[5, 7]], reac_b[[5, 7]] - 2.0 * F, rtol=1e-12)
     assert np.isnan(np.delete(reac_v, [5, 7])).all()
+
+
+def test_crea_table_resu_of_a_field_on_the_dofs(tmp_path):
+    done = run(
+        tmp_path,
+        """U = CALC_CHAMP(reuse=U, RESULTAT=U, FORCE="REAC_NODA")
+TD = CREA_TABLE(RESU=_F(RESULTAT=U, NOM_CHAM="DEPL", TOUT_CMP="OUI", TOUT="OUI"))
+TR = CREA_TABLE(RESU=_F(RESULTAT=U, NOM_CHAM="REAC_NODA", NOM_CMP="DX", GROUP_NO="GA",
+                        NUME_ORDRE=(3, 4)))""",
+    )
+    assert done.status == "DONE", done
+    result = done.concepts.raw["U"]
+    depl = done.concepts.raw["TD"]
+    assert list(depl.types)[:5] == ["RESULTAT", "NOM_CHAM", "INST", "NUME_ORDRE", "NOEUD"]
+    assert len(depl.rows) == 2 * result.times.size  # every order, both nodes
+    _, u_b = columns(result, "DEPL")
+    rows_b = [row for row in depl.rows if row["NOEUD"] == "2"]  # NB, node number 2
+    np.testing.assert_array_equal([row["DX"] for row in rows_b], u_b)
+    assert rows_b[7]["INST"] == pytest.approx(result.times[7]) and rows_b[7]["DY"] == 0.0
+    reac = done.concepts.raw["TR"]
+    reac_a, _ = columns(result, "REAC_NODA")
+    assert [(row["NUME_ORDRE"], row["NOEUD"]) for row in reac.rows] == [(3, "1"), (4, "1")]
+    np.testing.assert_array_equal([row["DX"] for row in reac.rows], reac_a[[3, 4]])
+    assert "DY" not in reac.types
