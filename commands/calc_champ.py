@@ -2,7 +2,9 @@
 SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing), the
 stresses, strains and energies of 3D and plane solids (SIEF_ELGA, SIGM_ELNO,
 EPSI_ELGA/ELNO, ENEL_ELGA/ELNO, EPOT_ELEM, ECIN_ELEM, _NOEU;
-:mod:`asterlite.fem.solid_fields`) and user fields (CHAM_UTIL).
+:mod:`asterlite.fem.solid_fields`), user fields (CHAM_UTIL) and the nodal
+forces FORC_NODA / REAC_NODA of a dyna_trans or a dyna_harmo
+(:mod:`asterlite.post.nodal_forces`, stored in ``result.fields``).
 
 The fields are computed at every order of the result from its DEPL field
 (mode shapes for a mode_meca), plus the element inertia forces M_e a_e from
@@ -19,8 +21,10 @@ from __future__ import annotations
 import copy
 
 import numpy as np
+from asterlite.commands.dyna_vibra_harm import harmonic_load
 
 from asterlite.concepts.assembly import ElementField
+from asterlite.fem.assemble import assemble_terms
 from asterlite.fem.beam_elements import section_forces
 from asterlite.fem.element_fields import (
     BAR_OPTIONS,
@@ -33,10 +37,16 @@ from asterlite.fem.element_fields import (
     nodal_average,
 )
 from asterlite.fem.elements import ElementError
-from asterlite.fem.loads import beam_element_loads
+from asterlite.fem.loads import beam_element_loads, load_terms
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
-from asterlite.post.nodal_forces import FORCE_OPTIONS, NodalForceError, nodal_forces
+from asterlite.harmonic.loads import load_matrix
+from asterlite.post.nodal_forces import (
+    FORCE_OPTIONS,
+    NodalForceError,
+    load_forces,
+    nodal_forces,
+)
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
@@ -430,16 +440,18 @@ def run(ctx, kw):
 
 
 def _force_fields(ctx, kw, result) -> None:
-    """FORCE=FORC_NODA / REAC_NODA of a dyna_trans, stored as nodal fields of
-    the result (NaN at the orders not selected, as code_aster stores none)."""
+    """FORCE=FORC_NODA / REAC_NODA of a dyna_trans or a dyna_harmo, stored
+    as nodal fields of the result (NaN at the orders not selected, as
+    code_aster stores none there)."""
     options = as_tuple(kw["FORCE"])
     other = [name for name in options if name not in FORCE_OPTIONS]
     if other:
         ctx.unsupported(f"CALC_CHAMP FORCE={other[0]!r}", "FORCE", kw)
-    if "dyna_trans" not in getattr(result, "aster_types", ()):
+    kinds = getattr(result, "aster_types", ())
+    if "dyna_trans" not in kinds and "dyna_harmo" not in kinds:
         ctx.unsupported(
             f"CALC_CHAMP FORCE on a {getattr(result, 'aster_type', type(result).__name__)} "
-            "(asterlite computes it on a dyna_trans)",
+            "(asterlite computes it on a dyna_trans or a dyna_harmo)",
             "FORCE",
             kw,
         )
@@ -447,32 +459,27 @@ def _force_fields(ctx, kw, result) -> None:
         ctx.unsupported("CALC_CHAMP FORCE on a part of the model (GROUP_MA)", "GROUP_MA", kw)
     kw.mark_used("TOUT")
     model, characteristics, materials = _context(ctx, kw, result)
-    occurrences = kw.factor("EXCIT")
-    loads = result.loads
-    if occurrences:
-        for occ in occurrences:
-            for key in ("FONC_MULT_C", "COEF_MULT_C", "PHAS_DEG", "PUIS_PULS"):
-                if occ.get(key):
-                    ctx.unsupported(f"CALC_CHAMP EXCIT {key} with FORCE", key, occ)
-            if occ.get("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE":
-                ctx.unsupported("CALC_CHAMP EXCIT TYPE_CHARGE with FORCE", "TYPE_CHARGE", occ)
-        loads = tuple(
-            (occ["CHARGE"], occ.get("FONC_MULT") or float(occ.get("COEF_MULT", 1.0)))
-            for occ in occurrences
-        )
+    load_values = None
+    if "REAC_NODA" in options:
+        if "dyna_harmo" in kinds:
+            load_values = _harmonic_load_values(ctx, kw, result, characteristics, materials)
+        else:
+            load_values = _transient_load_values(ctx, kw, result, characteristics, materials)
     rows = _selected_orders(ctx, kw, result)
     if rows is None:
         kw.mark_used("TOUT_ORDRE")  # every order, the default
     result.fields = dict(result.fields)
     for option in options:
         try:
-            values = nodal_forces(result, option, model, characteristics, materials, loads, ctx.log)
+            values = nodal_forces(
+                result, option, model, characteristics, materials, load_values, ctx.log
+            )
         except (NodalForceError, ElementError, KeyError) as exc:
             ctx.error(str(exc), "FORCE", kw)
         except NotImplementedError as exc:
             ctx.unsupported(str(exc), "FORCE", kw)
         if rows is not None:
-            kept = np.full(values.shape, np.nan)
+            kept = np.full(values.shape, np.nan, dtype=values.dtype)
             kept[rows] = values[rows]
             previous = result.fields.get(option)
             if previous is not None and previous.shape == values.shape:
@@ -481,6 +488,49 @@ def _force_fields(ctx, kw, result) -> None:
             values = kept
         result.fields[option] = values
         ctx.log(f"CALC_CHAMP {option}: {values.shape[0]} orders, {values.shape[1]} DOFs")
+
+
+def _transient_load_values(ctx, kw, result, characteristics, materials):
+    """F(t) of REAC_NODA on a dyna_trans: the CALC_CHAMP EXCIT loads, else the
+    result's own (each times its FONC_MULT or COEF_MULT)."""
+    occurrences = kw.factor("EXCIT")
+    loads = result.loads
+    if occurrences:
+        for occ in occurrences:
+            for key in ("FONC_MULT_C", "COEF_MULT_C", "PHAS_DEG", "PUIS_PULS"):
+                if occ.get(key):
+                    ctx.unsupported(f"CALC_CHAMP EXCIT {key} on a dyna_trans", key, occ)
+            if occ.get("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE":
+                ctx.unsupported("CALC_CHAMP EXCIT TYPE_CHARGE with FORCE", "TYPE_CHARGE", occ)
+        loads = tuple(
+            (occ["CHARGE"], occ.get("FONC_MULT") or float(occ.get("COEF_MULT", 1.0)))
+            for occ in occurrences
+        )
+    try:
+        return load_forces(loads, characteristics, materials, result.numbering, result.times)
+    except KeyError as exc:
+        ctx.error(f"load on DOFs the result's numbering does not have: {exc}", "EXCIT", kw)
+
+
+def _harmonic_load_values(ctx, kw, result, characteristics, materials):
+    """F(f) of REAC_NODA on a dyna_harmo: Σ c(f) F of CALC_CHAMP's EXCIT
+    (code_aster reads the harmonic loads from the command's EXCIT)."""
+
+    occurrences = kw.factor("EXCIT")
+    if not occurrences:
+        ctx.unsupported("REAC_NODA of a dyna_harmo without CALC_CHAMP EXCIT", "FORCE", kw)
+    loads = []
+    for occ in occurrences:
+        if occ.get("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE":
+            ctx.unsupported("CALC_CHAMP EXCIT TYPE_CHARGE with FORCE", "TYPE_CHARGE", occ)
+        load = occ["CHARGE"]
+        try:
+            terms = load_terms(load, characteristics, materials, complex_values=True)
+            vector = assemble_terms(terms, result.numbering)
+        except KeyError as exc:
+            ctx.error(f"load on DOFs the result's numbering does not have: {exc}", "CHARGE", occ)
+        loads.append(harmonic_load(ctx, occ, vector, load.name or ""))
+    return load_matrix(loads, result.frequencies, result.numbering.n_dofs)
 
 
 def _cham_utils(ctx, kw, result):

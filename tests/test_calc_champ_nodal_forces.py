@@ -157,3 +157,33 @@ TR = CREA_TABLE(RESU=_F(RESULTAT=U, NOM_CHAM="REAC_NODA", NOM_CMP="DX", GROUP_NO
     assert [(row["NUME_ORDRE"], row["NOEUD"]) for row in reac.rows] == [(3, "1"), (4, "1")]
     np.testing.assert_array_equal([row["DX"] for row in reac.rows], reac_a[[3, 4]])
     assert "DY" not in reac.types
+
+
+def test_reactions_of_a_harmonic_response_are_its_exact_solution(tmp_path):
+    # F e^{iωt} on NB: u_B = F / (k - m ω²); REAC_NODA at NA is -k u_B, at NB
+    # the equation of motion leaves nothing (undamped). code_aster reads a
+    # dyna_harmo's loads from CALC_CHAMP's EXCIT: without it, refused
+    harmonic = """H = DYNA_VIBRA(TYPE_CALCUL="HARM", BASE_CALCUL="PHYS",
+               MODELE=MODELE, CARA_ELEM=CARA,
+               MATR_MASS=MATRMASS, MATR_RIGI=MATRRIGI, FREQ=(5.0, 30.0), TOUT_CHAM="OUI",
+               EXCIT=_F(CHARGE=TIRE, COEF_MULT=1.0))
+H = CALC_CHAMP(reuse=H, RESULTAT=H, FORCE=("FORC_NODA", "REAC_NODA"),
+               EXCIT=_F(CHARGE=TIRE, COEF_MULT_C=1.0 + 0.0j))"""
+    done = run(tmp_path, harmonic)
+    assert done.status == "DONE", done
+    result = done.concepts.raw["H"]
+    omega = 2.0 * np.pi * np.array([5.0, 30.0])
+    u_b = F / (K - M * omega**2)
+    _, depl_b = columns(result, "DEPL")
+    np.testing.assert_allclose(depl_b, u_b, rtol=1e-12)
+    reac_a, reac_b = columns(result, "REAC_NODA")
+    np.testing.assert_allclose(reac_a, -K * u_b, rtol=1e-12)
+    assert np.max(np.abs(reac_b)) < 1e-9 * F
+    _, forc_b = columns(result, "FORC_NODA")
+    np.testing.assert_allclose(forc_b, K * u_b, rtol=1e-12)
+    refused = run(
+        tmp_path,
+        harmonic.split("\nH = CALC_CHAMP")[0]
+        + '\nH = CALC_CHAMP(reuse=H, RESULTAT=H, FORCE="REAC_NODA")',
+    )
+    assert refused.status == "UNSUPPORTED"

@@ -1,13 +1,15 @@
-"""Nodal forces of a physical transient (CALC_CHAMP FORCE: FORC_NODA, REAC_NODA).
+"""Nodal forces of a physical result (CALC_CHAMP FORCE: FORC_NODA, REAC_NODA).
 
-code_aster (ccfnrn) computes, at each order of a ``dyna_trans``:
+code_aster (ccfnrn) computes, at each order of a ``dyna_trans`` (at each
+frequency of a ``dyna_harmo``, on complex values):
 
 - FORC_NODA, the element internal forces assembled on the result's DOFs;
   for linear elastic elements they are K_e u summed over the elements, K
   being the RIGI_MECA matrices of the model (not the deck's MATR_RIGI);
 - REAC_NODA = FORC_NODA - F(t) + M a, F the nodal terms of the loads (the
   CALC_CHAMP EXCIT loads, else the result's own list: the DYNA_VIBRA EXCIT
-  occurrences that give a CHARGE, each times its FONC_MULT), M the result's
+  occurrences that give a CHARGE, each times its FONC_MULT; for a dyna_harmo
+  the EXCIT of CALC_CHAMP, each times its c(f)), M the result's
   mass matrix and a its ACCE field. code_aster leaves the damping forces C v
   out (its warning CALCCHAMP_4), and so does this module.
 """
@@ -32,7 +34,7 @@ def internal_forces(model, characteristics, materials, numbering, displacements)
     ``numbering`` (linear elastic elements: their internal forces)."""
     blocks = option_blocks(model, characteristics, "RIGI_MECA", materials=materials)
     stiffness = assemble_blocks(blocks, numbering)
-    return np.asarray(stiffness @ np.asarray(displacements, dtype=float).T).T
+    return np.asarray(stiffness @ np.asarray(displacements).T).T
 
 
 def load_forces(loads, characteristics, materials, numbering, times) -> np.ndarray:
@@ -52,30 +54,34 @@ def load_forces(loads, characteristics, materials, numbering, times) -> np.ndarr
     return total
 
 
-def nodal_forces(result, option, model, characteristics, materials, loads, log) -> np.ndarray:
-    """FORC_NODA or REAC_NODA (n_orders, n_dofs) of a dyna_trans ``result``
-    (see the module docstring); ``loads`` as :func:`load_forces` takes them."""
+def nodal_forces(result, option, model, characteristics, materials, load_values, log):
+    """FORC_NODA or REAC_NODA (n_orders, n_dofs) of a dyna_trans or a
+    dyna_harmo ``result`` (see the module docstring); ``load_values`` the
+    (n_orders, n_dofs) load terms F, None for none. A dyna_harmo's fields are
+    complex, its element stiffness real (as code_aster's vefnme_cplx)."""
     numbering = result.numbering
-    displacements = np.asarray(result.fields["DEPL"], dtype=float)
+    depl = np.asarray(result.fields["DEPL"])
+    displacements = depl if np.iscomplexobj(depl) else depl.astype(float)
     values = internal_forces(model, characteristics, materials, numbering, displacements)
     if option == "FORC_NODA":
         return values
-    values -= load_forces(loads, characteristics, materials, numbering, result.times)
+    if load_values is not None:
+        values = values - load_values
     acce = result.fields.get("ACCE")
     if acce is None:
-        log("warning: REAC_NODA of a dyna_trans without ACCE: no inertia forces M a")
+        log(f"warning: REAC_NODA of a {result.aster_type} without ACCE: no inertia forces M a")
         return values
     if result.mass_matrix is None:
         raise NodalForceError(
-            "REAC_NODA of a dyna_trans needs the mass matrix the result was computed "
-            "with (M a), and this result does not know it"
+            f"REAC_NODA of a {result.aster_type} needs the mass matrix the result was "
+            "computed with (M a), and this result does not know it"
         )
     mass = result.mass_matrix.matrix
     if mass.shape[0] != numbering.n_dofs:
         raise NodalForceError("the result's mass matrix is not on the result's numbering")
-    values += np.asarray(mass @ np.asarray(acce, dtype=float).T).T
+    values = values + np.asarray(mass @ np.asarray(acce).T).T
     log(
-        "warning: the damping forces C v are left out of REAC_NODA on a dyna_trans, "
+        f"warning: the damping forces C v are left out of REAC_NODA on a {result.aster_type}, "
         "as code_aster does (CALCCHAMP_4)"
     )
     return values
