@@ -455,10 +455,16 @@ def _force_fields(ctx, kw, result) -> None:
             "FORCE",
             kw,
         )
-    if kw.get("GROUP_MA"):
-        ctx.unsupported("CALC_CHAMP FORCE on a part of the model (GROUP_MA)", "GROUP_MA", kw)
-    kw.mark_used("TOUT")
     model, characteristics, materials = _context(ctx, kw, result)
+    cells = None
+    if kw.get("GROUP_MA"):
+        if "REAC_NODA" in options:
+            ctx.unsupported(
+                "CALC_CHAMP REAC_NODA on a part of the model (GROUP_MA)", "GROUP_MA", kw
+            )
+        # FORC_NODA of those cells' elements only, as code_aster's restricted ligrel
+        cells = select_cells(ctx, kw, model.mesh)
+    kw.mark_used("TOUT")
     load_values = None
     if "REAC_NODA" in options:
         if "dyna_harmo" in kinds:
@@ -472,7 +478,7 @@ def _force_fields(ctx, kw, result) -> None:
     for option in options:
         try:
             values = nodal_forces(
-                result, option, model, characteristics, materials, load_values, ctx.log
+                result, option, model, characteristics, materials, load_values, ctx.log, cells
             )
         except (NodalForceError, ElementError, KeyError) as exc:
             ctx.error(str(exc), "FORCE", kw)

@@ -14,3 +14,12 @@ class EvolElas(DynaTrans):
     ``materials`` and ``characteristics`` are those of the computation."""
 
     aster_types = ("evol_elas", "resultat_sdaster")
+
+
+@dataclass(eq=False)
+class EvolChar(DynaTrans):
+    """A load history (``evol_char``, CREA_RESU CONV_RESU): ``fields["FORC_NODA"]``
+    is (n_instants, n_dofs) nodal forces on ``numbering``, which AFFE_CHAR_MECA
+    EVOL_CHAR applies interpolated linearly in time."""
+
+    aster_types = ("evol_char", "resultat_sdaster")

@@ -29,10 +29,13 @@ class NodalForceError(ValueError):
     """A nodal force that cannot be computed from what the result holds."""
 
 
-def internal_forces(model, characteristics, materials, numbering, displacements) -> np.ndarray:
+def internal_forces(
+    model, characteristics, materials, numbering, displacements, cells=None
+) -> np.ndarray:
     """(n_orders, n_dofs) K u, K the model's element stiffness assembled on
-    ``numbering`` (linear elastic elements: their internal forces)."""
-    blocks = option_blocks(model, characteristics, "RIGI_MECA", materials=materials)
+    ``numbering`` (linear elastic elements: their internal forces); with
+    ``cells``, of those cells only (CALC_CHAMP GROUP_MA)."""
+    blocks = option_blocks(model, characteristics, "RIGI_MECA", materials=materials, cells=cells)
     stiffness = assemble_blocks(blocks, numbering)
     return np.asarray(stiffness @ np.asarray(displacements).T).T
 
@@ -54,15 +57,16 @@ def load_forces(loads, characteristics, materials, numbering, times) -> np.ndarr
     return total
 
 
-def nodal_forces(result, option, model, characteristics, materials, load_values, log):
+def nodal_forces(result, option, model, characteristics, materials, load_values, log, cells=None):
     """FORC_NODA or REAC_NODA (n_orders, n_dofs) of a dyna_trans or a
     dyna_harmo ``result`` (see the module docstring); ``load_values`` the
     (n_orders, n_dofs) load terms F, None for none. A dyna_harmo's fields are
-    complex, its element stiffness real (as code_aster's vefnme_cplx)."""
+    complex, its element stiffness real (as code_aster's vefnme_cplx).
+    ``cells`` restricts FORC_NODA to those cells' elements."""
     numbering = result.numbering
     depl = np.asarray(result.fields["DEPL"])
     displacements = depl if np.iscomplexobj(depl) else depl.astype(float)
-    values = internal_forces(model, characteristics, materials, numbering, displacements)
+    values = internal_forces(model, characteristics, materials, numbering, displacements, cells)
     if option == "FORC_NODA":
         return values
     if load_values is not None:

@@ -1,0 +1,84 @@
+"""CREA_RESU CONV_RESU (a result's field as a dyna_trans's DEPL or an
+evol_char's FORC_NODA) and the EVOL_CHAR load it feeds, on the spring-mass
+system of test_calc_champ_nodal_forces (spring k from the clamped NA to NB
+of mass m, step force F on NB through the load TIRE)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from tests.test_calc_champ_nodal_forces import F, columns, run
+
+# the step force F on NB as a history: a DEPL field DX = F at NB, stored at
+# 0 and 0.2 s, turned into the FORC_NODA of an evol_char
+HISTORY = f"""CHF = CREA_CHAMP(OPERATION="AFFE", TYPE_CHAM="NOEU_DEPL_R", MAILLAGE=MAIL,
+                AFFE=(_F(TOUT="OUI", NOM_CMP=("DX", "DY", "DZ"), VALE=(0.0, 0.0, 0.0)),
+                      _F(GROUP_NO="GB", NOM_CMP="DX", VALE={F})))
+DF = CREA_RESU(OPERATION="AFFE", TYPE_RESU="DYNA_TRANS",
+               AFFE=_F(NOM_CHAM="DEPL", CHAM_GD=CHF, INST=(0.0, 0.2)))
+LINST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=0.2, PAS=1.0e-4))
+LRESU = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=0.2, PAS=0.2))
+EV = CREA_RESU(OPERATION="CONV_RESU", TYPE_RESU="EVOL_CHAR",
+               CONV_RESU=_F(RESU_INIT=DF, NOM_CHAM_INIT="DEPL", NUME_DDL=NUMEROTA,
+                            LIST_INST=LRESU))
+CHEV = AFFE_CHAR_MECA(MODELE=MODELE, EVOL_CHAR=EV)
+V = DYNA_VIBRA(TYPE_CALCUL="TRAN", BASE_CALCUL="PHYS", MODELE=MODELE, CARA_ELEM=CARA,
+               MATR_MASS=MATRMASS, MATR_RIGI=MATRRIGI, SCHEMA_TEMPS=_F(SCHEMA="NEWMARK"),
+               EXCIT=(_F(CHARGE=BLOCAGE), _F(CHARGE=CHEV)),
+               INCREMENT=_F(INST_INIT=0.0, INST_FIN=0.2, PAS=1.0e-4))"""
+
+
+def test_an_evol_char_load_is_the_load_it_was_made_from(tmp_path):
+    done = run(tmp_path, HISTORY)
+    assert done.status == "DONE", done
+    with_load = done.concepts.raw["U"]
+    with_history = done.concepts.raw["V"]
+    forces = np.asarray(done.concepts.raw["EV"].fields["FORC_NODA"])
+    assert forces.shape[0] == 2 and done.concepts.raw["EV"].aster_type == "evol_char"
+    np.testing.assert_array_equal(columns(done.concepts.raw["EV"], "FORC_NODA")[1], F)
+    reference = columns(with_load, "DEPL")[1]
+    # the same motion to round-off (the history is summed apart from the vector loads)
+    np.testing.assert_allclose(
+        columns(with_history, "DEPL")[1], reference, rtol=0, atol=1e-10 * np.abs(reference).max()
+    )
+
+
+def test_conv_resu_delays_the_interface_nodes_and_scales(tmp_path):
+    # NB is 1 m from COOR_REFE along DIRECTION: at 1/(3.5 dt) m/s its delay
+    # is 3.5 steps, of which code_aster keeps the whole steps (3)
+    dt = 1.0e-4
+    done = run(
+        tmp_path,
+        f"""LRESU = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=0.01, PAS={dt}))
+D = CREA_RESU(OPERATION="CONV_RESU", TYPE_RESU="DYNA_TRANS",
+              CONV_RESU=_F(RESU_INIT=U, NOM_CHAM_INIT="ACCE", MATR_RIGI=MATRRIGI,
+                           LIST_INST=LRESU, COEF=2.0, GROUP_NO_INTERF="GB",
+                           COOR_REFE=(0.0, 0.0, 0.0), DIRECTION=(2.0, 0.0, 0.0),
+                           VITE_ONDE={1.0 / (3.5 * dt)}))
+E = CREA_RESU(OPERATION="CONV_RESU", TYPE_RESU="DYNA_TRANS",
+              CONV_RESU=_F(RESU_INIT=U, NOM_CHAM_INIT="ACCE", MATR_RIGI=MATRRIGI,
+                           INST=(0.001, 0.002), DDL_EXCLUS="DX"))""",
+    )
+    assert done.status == "DONE", done
+    source = done.concepts.raw["U"]
+    delayed = done.concepts.raw["D"]
+    assert list(delayed.fields) == ["DEPL"]
+    assert delayed.times.size == 101
+    np.testing.assert_allclose(delayed.times, source.times[:101], atol=1e-15)
+    _, acce_b = columns(source, "ACCE")
+    _, depl_b = columns(delayed, "DEPL")
+    assert np.all(depl_b[:3] == 0.0)  # no stored instant 3 steps before
+    np.testing.assert_array_equal(depl_b[3:], 2.0 * acce_b[: 101 - 3])
+    excluded = done.concepts.raw["E"]
+    assert np.all(np.asarray(excluded.fields["DEPL"]) == 0.0)  # every DX excluded
+    assert excluded.times.tolist() == pytest.approx([0.001, 0.002])
+
+
+def test_an_evol_char_is_not_extrapolated(tmp_path):
+    # code_aster stops when the load history has no forces at an instant
+    done = run(
+        tmp_path, HISTORY.replace("INST_FIN=0.2, PAS=1.0e-4))", "INST_FIN=0.3, PAS=1.0e-4))")
+    )
+    assert done.status == "ERROR"
+    assert "no forces at INST=0.2001" in (tmp_path / "out" / "message.log").read_text()
