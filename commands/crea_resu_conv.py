@@ -35,12 +35,12 @@ def _rows_at(times, t: float, precision: float, criterion: str) -> np.ndarray:
 
 
 def _formula_values(formula, parameters: dict) -> np.ndarray:
-    """A deck formula of DX ... DRZ, INST on arrays (point by point when the
-    formula does not take arrays)."""
+    """A deck formula or nappe of DX ... DRZ, INST on arrays (point by point
+    when the formula does not take arrays)."""
     names = tuple(formula.nom_para)
     columns = [np.broadcast_to(parameters[name], parameters["DX"].shape) for name in names]
     try:
-        return np.broadcast_to(formula.evaluate(*columns), columns[0].shape).astype(float)
+        return np.broadcast_to(formula.evaluate_many(*columns), columns[0].shape).astype(float)
     except Exception:  # noqa: BLE001 - deck functions may not take arrays
         return np.array(
             [float(formula(*(float(c[i]) for c in columns))) for i in range(columns[0].size)]

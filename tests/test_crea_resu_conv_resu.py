@@ -82,3 +82,36 @@ def test_an_evol_char_is_not_extrapolated(tmp_path):
     )
     assert done.status == "ERROR"
     assert "no forces at INST=0.2001" in (tmp_path / "out" / "message.log").read_text()
+
+
+def test_conv_resu_formulas_and_nappes_of_the_components(tmp_path):
+    # FONC_DX a nappe of (DX, INST) equal to DX + INST (DEFI_NAPPE, linear in
+    # DX between its two functions of INST), FONC_DZ a formula 3 DX: both of
+    # the source's DX; the field keeps its name (ACCE)
+    done = run(
+        tmp_path,
+        """LRESU = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=0.01, PAS=1.0e-4))
+F0 = DEFI_FONCTION(NOM_PARA="INST", VALE=(0.0, 0.0, 1.0, 1.0),
+                   PROL_DROITE="LINEAIRE", PROL_GAUCHE="LINEAIRE")
+F1 = DEFI_FONCTION(NOM_PARA="INST", VALE=(0.0, 1.0, 1.0, 2.0))
+NDX = DEFI_NAPPE(NOM_PARA="DX", PARA=(0.0, 1.0), FONCTION=(F0, F1),
+                 PROL_DROITE="LINEAIRE", PROL_GAUCHE="LINEAIRE")
+N2 = DEFI_NAPPE(NOM_PARA="AMOR", PARA=(0.0, 1.0), NOM_PARA_FONC="FREQ",
+                DEFI_FONCTION=(_F(VALE=(1.0, 1.0, 2.0, 2.0)), _F(VALE=(1.0, 3.0, 2.0, 5.0))))
+FDZ = FORMULE(NOM_PARA=("DX", "INST"), VALE="3.0 * DX")
+G = CREA_RESU(OPERATION="CONV_RESU", TYPE_RESU="DYNA_TRANS",
+              CONV_RESU=_F(RESU_INIT=U, NOM_CHAM_INIT="ACCE", MATR_RIGI=MATRRIGI,
+                           LIST_INST=LRESU, FONC_DX=NDX, FONC_DZ=FDZ))""",
+    )
+    assert done.status == "DONE", done
+    source, made = done.concepts.raw["U"], done.concepts.raw["G"]
+    assert list(made.fields) == ["ACCE"]
+    _, acce_b = columns(source, "ACCE")
+    b = made.numbering.dof_index("NB", "DX")
+    dz = made.numbering.dof_index("NB", "DZ")
+    values = np.asarray(made.fields["ACCE"])
+    np.testing.assert_allclose(values[:, b], acce_b[:101] + made.times, rtol=1e-12)
+    np.testing.assert_allclose(values[:, dz], 3.0 * acce_b[:101], rtol=1e-12)
+    nappe = done.concepts.raw["N2"]
+    assert nappe.NOM_PARA_FONC == "FREQ"
+    assert nappe(0.5, 1.5) == pytest.approx(0.5 * 1.5 + 0.5 * 4.0)
