@@ -1,6 +1,7 @@
-"""CREA_RESU OPERATION='CONV_RESU': a result's nodal field turned into the
-displacements of a dyna_trans or the nodal forces of an evol_char (a load
-history for AFFE_CHAR_MECA EVOL_CHAR), as code_aster's crcore does it.
+"""CREA_RESU OPERATION='CONV_RESU' and 'KUCV': a result's nodal field turned
+into the displacements of a dyna_trans or the nodal forces of an evol_char
+(a load history for AFFE_CHAR_MECA EVOL_CHAR), as code_aster's crcore and
+crkucv do it. KUCV's forces are C v + K u of RESU_INIT at each instant.
 
 At each instant t of INST / LIST_INST, the field NOM_CHAM_INIT of RESU_INIT
 at t (found within PRECISION / CRITERE) is copied onto the DOFs of NUME_DDL
@@ -48,29 +49,25 @@ def _formula_values(formula, parameters: dict) -> np.ndarray:
 
 
 def conv_resu(ctx, kw):
-    type_resu = kw["TYPE_RESU"]
     occ = kw.factor("CONV_RESU")[0]
-    source = occ["RESU_INIT"]
-    name = occ.get("NOM_CHAM_INIT")
-    if name is None:
-        ctx.error("CONV_RESU needs NOM_CHAM_INIT", "NOM_CHAM_INIT", occ)
-    fields = getattr(source, "fields", None)
-    if not isinstance(fields, dict) or name not in fields:
-        known = ", ".join(fields) if isinstance(fields, dict) else "none"
-        ctx.error(f"RESU_INIT holds no {name} field (it has {known})", "NOM_CHAM_INIT", occ)
-    numbering = occ["MATR_RIGI"].numbering if occ.get("MATR_RIGI") else occ["NUME_DDL"]
-    if numbering.mesh is not source.numbering.mesh:
-        ctx.error("RESU_INIT is on another mesh than the numbering", "RESU_INIT", occ)
-    if occ.get("LIST_INST") is not None:
-        instants = np.asarray(occ["LIST_INST"].values, dtype=float)
+    if occ.get("MATR_RIGI") is not None:
+        numbering = occ["MATR_RIGI"].numbering
     else:
-        instants = np.asarray(as_tuple(occ["INST"]), dtype=float)
-    if instants.size < 2:
-        # code_aster takes the first step of the list as dt
-        ctx.error("CONV_RESU needs at least two instants", "LIST_INST", occ)
+        numbering = occ["NUME_DDL"]
+    return convert(ctx, occ, kw["TYPE_RESU"], numbering)
+
+
+def _instants(occ) -> np.ndarray:
+    if occ.get("LIST_INST") is not None:
+        return np.asarray(occ["LIST_INST"].values, dtype=float)
+    return np.asarray(as_tuple(occ["INST"]), dtype=float)
+
+
+def _source_rows(ctx, occ, source, instants, name) -> tuple[list[int], object]:
+    """The rows of RESU_INIT at the instants (PRECISION / CRITERE), and the
+    search ``t -> row or None`` for other instants."""
     precision, criterion = float(occ.get("PRECISION", 1.0e-6)), occ.get("CRITERE", "RELATIF")
     source_times = np.asarray(source.times, dtype=float)
-    stack = np.asarray(fields[name], dtype=float)
 
     def source_row(t: float) -> int | None:
         rows = _rows_at(source_times, t, precision, criterion)
@@ -80,8 +77,45 @@ def conv_resu(ctx, kw):
     for t in instants:
         row = source_row(float(t))
         if row is None:
-            ctx.error(f"RESU_INIT has no {name} field at INST={t:g}", "LIST_INST", occ)
+            ctx.error(f"RESU_INIT has no {name} field at INST={t:g}", "RESU_INIT", occ)
         rows.append(row)
+    return rows, source_row
+
+
+def _result(type_resu, numbering, instants, values, stored="DEPL"):
+    order = np.arange(1, instants.size + 1)
+    if type_resu == "EVOL_CHAR":
+        return EvolChar(
+            numbering=numbering, times=instants, order=order, fields={"FORC_NODA": values}
+        )
+    return DynaTrans(
+        numbering=numbering,
+        times=instants,
+        order=order,
+        fields={stored: values},
+        model=numbering.model,
+    )
+
+
+def convert(ctx, occ, type_resu: str, numbering):
+    """CONV_RESU from the keywords of ``occ`` (CREA_RESU's CONV_RESU
+    occurrence, or DEFI_CHAR_SOL's own keywords) onto ``numbering``."""
+    source = occ["RESU_INIT"]
+    name = occ.get("NOM_CHAM_INIT")
+    if name is None:
+        ctx.error("CONV_RESU needs NOM_CHAM_INIT", "NOM_CHAM_INIT", occ)
+    fields = getattr(source, "fields", None)
+    if not isinstance(fields, dict) or name not in fields:
+        known = ", ".join(fields) if isinstance(fields, dict) else "none"
+        ctx.error(f"RESU_INIT holds no {name} field (it has {known})", "NOM_CHAM_INIT", occ)
+    if numbering.mesh is not source.numbering.mesh:
+        ctx.error("RESU_INIT is on another mesh than the numbering", "RESU_INIT", occ)
+    instants = _instants(occ)
+    if instants.size < 2:
+        # code_aster takes the first step of the list as dt
+        ctx.error("CONV_RESU needs at least two instants", "LIST_INST", occ)
+    stack = np.asarray(fields[name], dtype=float)
+    rows, source_row = _source_rows(ctx, occ, source, instants, name)
     values = transfer(stack[rows].T, source.numbering, numbering).T.copy()
 
     excluded = occ.get("DDL_EXCLUS")
@@ -96,20 +130,35 @@ def conv_resu(ctx, kw):
         values = _of_functions(numbering, functions, instants, values)
 
     values *= float(occ.get("COEF", 1.0))
-    order = np.arange(1, instants.size + 1)
-    ctx.log(f"CREA_RESU CONV_RESU: {name} of {instants.size} instants, {numbering.n_dofs} DOFs")
-    if type_resu == "EVOL_CHAR":
-        return EvolChar(
-            numbering=numbering, times=instants, order=order, fields={"FORC_NODA": values}
-        )
-    stored = name if functions else "DEPL"
-    return DynaTrans(
-        numbering=numbering,
-        times=instants,
-        order=order,
-        fields={stored: values},
-        model=numbering.model,
-    )
+    ctx.log(f"CONV_RESU: {name} of {instants.size} instants, {numbering.n_dofs} DOFs")
+    return _result(type_resu, numbering, instants, values, name if functions else "DEPL")
+
+
+def kucv(ctx, occ, type_resu: str):
+    """CREA_RESU KUCV (code_aster's crkucv): C v + K u of RESU_INIT at each
+    instant (K u with MATR_RIGI only), on MATR_AMOR's numbering: the
+    forces of a paraxial boundary driven by a free-field motion."""
+    source, damping = occ["RESU_INIT"], occ["MATR_AMOR"]
+    stiffness = occ.get("MATR_RIGI")
+    numbering = damping.numbering
+    if stiffness is not None and stiffness.numbering is not numbering:
+        ctx.error("MATR_RIGI and MATR_AMOR are on different numberings", "MATR_RIGI", occ)
+    instants = _instants(occ)
+    needed = ("VITE", "DEPL") if stiffness is not None else ("VITE",)
+    for name in needed:
+        if name not in source.fields:
+            ctx.error(f"RESU_INIT holds no {name} field", "RESU_INIT", occ)
+    rows, _ = _source_rows(ctx, occ, source, instants, "VITE")
+
+    def on_numbering(name):
+        stack = np.asarray(source.fields[name], dtype=float)[rows]
+        return transfer(stack.T, source.numbering, numbering).T
+
+    values = np.asarray(damping.matrix @ on_numbering("VITE").T).T
+    if stiffness is not None:
+        values = values + np.asarray(stiffness.matrix @ on_numbering("DEPL").T).T
+    ctx.log(f"KUCV: {instants.size} instants, {numbering.n_dofs} DOFs")
+    return _result(type_resu, numbering, instants, values)
 
 
 def _delayed(ctx, occ, numbering, source, stack, instants, values, source_row):

@@ -115,3 +115,34 @@ G = CREA_RESU(OPERATION="CONV_RESU", TYPE_RESU="DYNA_TRANS",
     nappe = done.concepts.raw["N2"]
     assert nappe.NOM_PARA_FONC == "FREQ"
     assert nappe(0.5, 1.5) == pytest.approx(0.5 * 1.5 + 0.5 * 4.0)
+
+
+def test_kucv_and_defi_char_sol_from_a_result(tmp_path):
+    # KUCV: C v + K u of the result at each instant; DEFI_CHAR_SOL builds its
+    # EVOL_CHAR load with KUCV (ONDE_PLANE) or CONV_RESU (FORCE, times COEF)
+    done = run(
+        tmp_path,
+        """U = CALC_CHAMP(reuse=U, RESULTAT=U, FORCE="REAC_NODA")
+LRESU = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=0.01, PAS=1.0e-4))
+K = CREA_RESU(OPERATION="KUCV", TYPE_RESU="EVOL_CHAR",
+              KUCV=_F(RESU_INIT=U, MATR_AMOR=MATRAMOR, MATR_RIGI=MATRRIGI, LIST_INST=LRESU))
+SOL1 = DEFI_CHAR_SOL(CHARGEMENT="ONDE_PLANE", MODELE=MODELE, RESU_INIT=U, MATR_AMOR=MATRAMOR,
+                     LIST_INST=LRESU)
+SOL2 = DEFI_CHAR_SOL(MODELE=MODELE, RESU_INIT=U, NOM_CHAM_INIT="REAC_NODA", COEF=-2.0,
+                     NUME_DDL=NUMEROTA, LIST_INST=LRESU)""",
+        damping=True,
+    )
+    assert done.status == "DONE", done
+    source = done.concepts.raw["U"]
+    _, u_b = columns(source, "DEPL")
+    _, v_b = columns(source, "VITE")
+    _, reac_b = columns(source, "REAC_NODA")
+    k_forces = done.concepts.raw["K"]
+    a_side, b_side = columns(k_forces, "FORC_NODA")
+    # spring k and dashpot c = 30 between NA (fixed) and NB
+    np.testing.assert_allclose(b_side, 30.0 * v_b[:101] + 4.0e4 * u_b[:101], rtol=1e-12)
+    np.testing.assert_allclose(a_side, -b_side, rtol=1e-12)
+    wave = done.concepts.raw["SOL1"].extra["EVOL_CHAR"]
+    np.testing.assert_allclose(columns(wave, "FORC_NODA")[1], 30.0 * v_b[:101], rtol=1e-12)
+    force = done.concepts.raw["SOL2"].extra["EVOL_CHAR"]
+    np.testing.assert_array_equal(columns(force, "FORC_NODA")[1], -2.0 * reac_b[:101])
