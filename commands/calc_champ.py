@@ -426,6 +426,10 @@ def run(ctx, kw):
             )
         except (ElementError, ValueError, KeyError) as exc:
             ctx.error(str(exc), "CONTRAINTE", kw)
+        if discrete.size:
+            fields = _with_discrete_cells(
+                ctx, kw, model, characteristics, result, discrete, values, fields
+            )
         _keep_selected_orders(ctx, kw, result, fields)
         for name, field in fields.items():
             result.element_fields[name] = field
@@ -434,7 +438,9 @@ def run(ctx, kw):
                 elno_field = result.element_fields[name.replace("_NOEU", "_ELNO")]
                 result.node_fields[name] = nodal_average(elno_field, model.mesh, name)
         ctx.log(
-            f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
+            f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells"
+            + (f" and {discrete.size} discrete cells" if discrete.size else "")
+            + f", {values.shape[0]} orders"
         )
     return _cham_utils(ctx, kw, result)
 
@@ -537,6 +543,43 @@ def _harmonic_load_values(ctx, kw, result, characteristics, materials):
             ctx.error(f"load on DOFs the result's numbering does not have: {exc}", "CHARGE", occ)
         loads.append(harmonic_load(ctx, occ, vector, load.name or ""))
     return load_matrix(loads, result.frequencies, result.numbering.n_dofs)
+
+
+def _with_discrete_cells(ctx, kw, model, characteristics, result, cells, values, fields):
+    """The beam fields extended to the discrete cells of the model, as code_aster
+    computes EFGE_ELNO / SIEF_ELNO on every cell that has the option: the
+    discrete elements' stiffness forces (ef0042), one modelisation at a time."""
+    names = [name for name in fields if name in BAR_OPTIONS]
+    if not names:
+        return fields
+    merged = dict(fields)
+    by_kind: dict[str, list[int]] = {}
+    for cell in cells:
+        by_kind.setdefault(model.cell_modelisation[int(cell)], []).append(int(cell))
+    for kind, members in sorted(by_kind.items()):
+        try:
+            extra = discrete_element_fields(
+                model, characteristics, result.numbering, members, values, names
+            )
+        except (ElementError, ValueError, KeyError) as exc:
+            ctx.error(str(exc), "CONTRAINTE", kw)
+        for name in names:
+            field, added = merged[name], extra[name]
+            if added.components != field.components:
+                ctx.unsupported(
+                    f"CALC_CHAMP {name} on beams and {kind} cells at once (components "
+                    f"{', '.join(field.components)} and {', '.join(added.components)}): "
+                    "give GROUP_MA",
+                    "CONTRAINTE",
+                    kw,
+                )
+            merged[name] = ElementField(
+                name,
+                np.concatenate([np.asarray(field.cells), np.asarray(added.cells)]),
+                field.components,
+                np.concatenate([field.values, added.values.astype(field.values.dtype)], axis=1),
+            )
+    return merged
 
 
 def _cham_utils(ctx, kw, result):
