@@ -577,5 +577,23 @@ def run(ctx, kw):
             "DIRECTION": tuple(float(x) for x in as_tuple(occ["DIRECTION"])),
             "CELLS": select_cells(ctx, occ, model.mesh) if occ.get("GROUP_MA") else None,
         }
+    if kw.get("EVOL_CHAR") is not None:
+        _evol_char(ctx, model, load, kw)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load
+
+
+def _evol_char(ctx, model, load, kw) -> None:
+    """EVOL_CHAR: a history of nodal forces (FORC_NODA), applied by the
+    commands that take load histories (asterlite.fem.loads.load_history)."""
+    history = kw["EVOL_CHAR"]
+    if history.numbering.mesh is not model.mesh:
+        ctx.error("EVOL_CHAR is on another mesh than MODELE", "EVOL_CHAR", kw)
+    other = [name for name in history.fields if name != "FORC_NODA"]
+    if other or "FORC_NODA" not in history.fields:
+        ctx.unsupported(
+            f"EVOL_CHAR with the fields {', '.join(history.fields)} (FORC_NODA only)",
+            "EVOL_CHAR",
+            kw,
+        )
+    load.extra["EVOL_CHAR"] = history

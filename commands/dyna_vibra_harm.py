@@ -280,6 +280,7 @@ def physical(ctx, kw, frequencies, names):
         model=kw.get("MODELE") or getattr(stiffness_matrix, "model", None),
         materials=kw.get("CHAM_MATER") or getattr(stiffness_matrix, "materials", None),
         characteristics=kw.get("CARA_ELEM") or getattr(stiffness_matrix, "characteristics", None),
+        mass_matrix=mass_matrix,
     )
 
 

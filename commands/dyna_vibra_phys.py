@@ -203,7 +203,17 @@ def run_physical(ctx, kw):
             for name, values in fields.items()
             if name in reused.fields
         }
-    produced = DynaTrans(numbering=numbering, times=out_t, order=order, fields=fields)
+    produced = DynaTrans(
+        numbering=numbering,
+        times=out_t,
+        order=order,
+        fields=fields,
+        model=kw.get("MODELE") or numbering.model,
+        materials=kw.get("CHAM_MATER") or stiffness_matrix.materials,
+        characteristics=kw.get("CARA_ELEM") or stiffness_matrix.characteristics,
+        mass_matrix=mass_matrix,
+        loads=result_loads(kw),
+    )
     if energy is not None:
         produced.tables["PARA_CALC"] = energy.table()
     if kw.factor("OBSERVATION"):
@@ -323,6 +333,17 @@ def physical_imposed_motion(ctx, kw, numbering, scheme):
                 )
         imposed.extend(columns)
     return imposed
+
+
+def result_loads(kw) -> tuple:
+    """The list of loads code_aster keeps with the result: the EXCIT
+    occurrences that give a CHARGE, with their FONC_MULT (or COEF_MULT);
+    a VECT_ASSE is no load of the result."""
+    return tuple(
+        (occ["CHARGE"], occ.get("FONC_MULT") or float(occ.get("COEF_MULT", 1.0)))
+        for occ in kw.factor("EXCIT")
+        if occ.get("CHARGE") is not None
+    )
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix):

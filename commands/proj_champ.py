@@ -24,7 +24,8 @@ from asterlite.post import field_projection as fp
 from asterlite.post.harmonic import frequency_indices
 from asterlite.post.restitution import as_tuple, nearest_archived
 
-_NODAL = ("DEPL", "VITE", "ACCE")
+# fields on the DOFs; nodal forces are interpolated as any nodal field, as code_aster does
+_NODAL = ("DEPL", "VITE", "ACCE", "FORC_NODA", "REAC_NODA")
 _REFUSED = (
     ("TRANSF_GEOM_1", "a geometric transformation of mesh 1"),
     ("TRANSF_GEOM_2", "a geometric transformation of mesh 2"),

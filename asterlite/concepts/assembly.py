@@ -27,7 +27,7 @@ class Model(Concept):
     """``AFFE_MODELE`` result: which modelisation each cell carries."""
 
     aster_types = ("modele_sdaster",)
-    deck_methods = frozenset({"getName", "getMesh"})
+    deck_methods = frozenset({"getName", "getMesh", "getFiniteElementDescriptor"})
 
     mesh: Mesh
     cell_modelisation: dict[int, str] = field(default_factory=dict)  # cell index -> "DIS_T", ...
@@ -48,6 +48,11 @@ class Model(Concept):
 
     def getMesh(self) -> Mesh:  # noqa: N802 - code_aster's name
         return self.mesh
+
+    def getFiniteElementDescriptor(self) -> Model:  # noqa: N802
+        # code_aster's descriptor of the model's elements: the model itself here,
+        # which is all that the commands taking it (toFieldOnCells) need
+        return self
 
     @property
     def dim(self) -> int:

@@ -384,6 +384,26 @@ class Nappe(Concept, DeckCallable):
     def evaluate_many(self, p, x) -> np.ndarray:
         """Values at (p, x): each function at x, then interpolated in p."""
         p, x = np.broadcast_arrays(np.asarray(p, dtype=float), np.asarray(x, dtype=float))
+        if self.INTERPOL[1] == "LIN":
+            # linear in the ordinates (prolongations included): the value is
+            # Σ_k w_k(p) f_k(x), w_k interpolating the k-th unit vector, on whole arrays
+            columns = np.array([f.evaluate(x) for f in self.functions], dtype=float)
+            unit = np.eye(self.parameters.size)
+            weights = np.array(
+                [
+                    interpolate(
+                        p,
+                        self.parameters,
+                        unit[k],
+                        self.INTERPOL,
+                        self.PROL_GAUCHE,
+                        self.PROL_DROITE,
+                        self.name or "",
+                    )  # fmt: skip
+                    for k in range(self.parameters.size)
+                ]
+            )
+            return np.sum(weights * columns, axis=0)
         out = np.empty(p.shape)
         for index in np.ndindex(p.shape):
             column = np.array([f.evaluate(x[index]) for f in self.functions], dtype=float)

@@ -111,6 +111,15 @@ class TranGene(Concept):
     rejections: np.ndarray | None = None
     # tables kept with the result (RECU_TABLE NOM_TABLE): ENERGIE's PARA_CALC
     tables: dict = field(default_factory=dict)
+    # what the computation was made with, for CALC_CHAMP (None when unknown):
+    # the model, fields of materials and characteristics, the mass matrix
+    # (code_aster's REF_MASS_PREM, for the inertia of REAC_NODA) and the list
+    # of loads, (AFFE_CHAR_MECA load, FONC_MULT function or COEF_MULT) pairs
+    model: Any = None
+    materials: Any = None
+    characteristics: Any = None
+    mass_matrix: Any = None
+    loads: tuple = ()
 
     @property
     def n_modes(self) -> int:
@@ -193,6 +202,15 @@ class DynaTrans(Concept):
     fields: dict[str, np.ndarray] = field(default_factory=dict)
     # tables kept with the result (RECU_TABLE NOM_TABLE): ENERGIE's PARA_CALC
     tables: dict = field(default_factory=dict)
+    # what the computation was made with, for CALC_CHAMP (None when unknown):
+    # the model, fields of materials and characteristics, the mass matrix
+    # (code_aster's REF_MASS_PREM, for the inertia of REAC_NODA) and the list
+    # of loads, (AFFE_CHAR_MECA load, FONC_MULT function or COEF_MULT) pairs
+    model: Any = None
+    materials: Any = None
+    characteristics: Any = None
+    mass_matrix: Any = None
+    loads: tuple = ()
 
     # deck API (code_aster's TransientResult), see asterlite.post.deck_api
     def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802

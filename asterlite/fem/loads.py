@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.errors import CommandError
 from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
@@ -214,15 +215,31 @@ HISTORY_CHUNK = 8
 
 
 def load_history(load, materials):
-    """The part of a load that is a history of time and space (an
-    ``AFFE_CHAR_MECA_F/ONDE_PLANE`` wave: each boundary point sees the wave
-    with its own delay, so it is no vector times f(t)), as a function
+    """The part of a load that is a history of time and space, as a function
     ``times -> (nodes, components, values (n_times, m))``; None when the load
-    has none."""
+    has none. Such parts are an ``AFFE_CHAR_MECA_F/ONDE_PLANE`` wave (each
+    boundary point sees the wave with its own delay, so it is no vector times
+    f(t)) and an ``EVOL_CHAR`` (nodal forces given at instants)."""
+    parts = []
     waves = load.extra.get("ONDE_PLANE")
-    if not waves:
-        return None
+    if waves:
+        parts.append(_plane_wave_history(load, materials, waves))
+    evolution = load.extra.get("EVOL_CHAR")
+    if evolution is not None:
+        parts.append(evol_char_history(evolution, load.name or ""))
+    if len(parts) < 2:
+        return parts[0] if parts else None
 
+    def history(times):
+        found = [part(times) for part in parts]
+        nodes = np.concatenate([p[0] for p in found])
+        components = [c for p in found for c in p[1]]
+        return nodes, components, np.concatenate([p[2] for p in found], axis=1)
+
+    return history
+
+
+def _plane_wave_history(load, materials, waves):
     def at(times):
         # each ONDE_PLANE occurrence adds its own terms
         parts = [
@@ -245,7 +262,49 @@ def load_history(load, materials):
     return history
 
 
+def evol_char_history(evolution, name: str = ""):
+    """The FORC_NODA of an evol_char at any instants, linear between its
+    stored instants; an instant outside them is an error, as in code_aster
+    (its rsinch without extrapolation: CHARGES8_2). Only the DOFs that carry
+    a force at some instant are listed."""
+    stored = np.asarray(evolution.times, dtype=float)
+    forces = np.asarray(evolution.fields["FORC_NODA"], dtype=float)
+    loaded = np.flatnonzero(np.any(forces != 0.0, axis=0))
+    forces = forces[:, loaded]
+    nodes = np.array([evolution.numbering.dofs[i][0] for i in loaded], dtype=int)
+    components = [evolution.numbering.dofs[i][1] for i in loaded]
+    span = max(abs(stored[0]), abs(stored[-1]), 1.0)
+    tolerance = 1.0e-10 * span
+
+    def history(times):
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        outside = (times < stored[0] - tolerance) | (times > stored[-1] + tolerance)
+        if np.any(outside):
+            t = float(times[np.flatnonzero(outside)[0]])
+            raise CommandError(
+                f"the EVOL_CHAR of the load {name} has no forces at INST={t:g}: it holds "
+                f"[{stored[0]:g}, {stored[-1]:g}] (code_aster does not extrapolate it either)",
+                path="EXCIT",
+            )
+        right = np.clip(np.searchsorted(stored, times, side="right"), 1, stored.size - 1)
+        left = right - 1
+        width = stored[right] - stored[left]
+        weight = np.clip((times - stored[left]) / np.where(width > 0, width, 1.0), 0.0, 1.0)
+        values = (1.0 - weight)[:, None] * forces[left] + weight[:, None] * forces[right]
+        return nodes, components, values
+
+    return history
+
+
 def _real_load_terms(load, characteristics=None, materials=None, history_apart=False) -> list:
+    if load.extra.get("EVOL_CHAR") is not None and not history_apart:
+        from asterlite.errors import UnsupportedError
+
+        raise UnsupportedError(
+            f"the EVOL_CHAR load {load.name or ''} where a fixed load vector is taken: "
+            "its forces are a history of instants (asterlite.fem.loads.load_history), "
+            "which this command does not take yet"
+        )
     if load.extra.get("ONDE_PLANE") is not None and not history_apart:
         from asterlite.errors import UnsupportedError
 

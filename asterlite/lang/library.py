@@ -207,6 +207,7 @@ sum prod cumsum cumprod diff gradient dot vdot outer cross inner matmul
 allclose isclose array_equal nonzero flatnonzero argwhere count_nonzero where
 sort argsort unique searchsorted concatenate hstack vstack stack column_stack
 insert append delete tile repeat max min amax amin maximum minimum argmax argmin
+nanmax nanmin nanargmax nanargmin nansum nanmean
 mean average std var median percentile interp reshape transpose ravel flip fliplr flipud roll
 squeeze expand_dims atleast_1d atleast_2d clip any all isnan isinf isfinite nan_to_num
 radians degrees deg2rad rad2deg polyfit polyval trapezoid trapz copy take shape size ndim
