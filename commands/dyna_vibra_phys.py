@@ -8,13 +8,14 @@ import numpy as np
 from asterlite.commands.dyna_vibra_keywords import first_value, list_values
 from asterlite.commands.dyna_vibra_loads import support_shape
 from asterlite.commands.dyna_vibra_time import archived_index, refuse_too_many_steps
+from asterlite.commands.dyna_vibra_words import TRANSIENT
 
 from asterlite.concepts.table import TableNotComputed
 from asterlite.concepts.transient import DynaTrans
 from asterlite.dynamics.physical.archive import Archive, archived_steps
 from asterlite.dynamics.physical.imposed import ScaledInTime
 from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
-from asterlite.errors import NumericalError
+from asterlite.errors import NumericalError, worded
 from asterlite.fem.loads import load_history, load_terms
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import transfer
@@ -109,7 +110,7 @@ def run_physical(ctx, kw):
                 inverse,
                 options,
                 neighbours,
-                ctx.log,
+                lambda text: ctx.log(worded(text, TRANSIENT)),
             )
         else:
             if scheme == "NEWMARK":
@@ -156,9 +157,14 @@ def run_physical(ctx, kw):
                     # the last instant, VITE being then the half-step velocity v_{N-1/2}
                     last_velocity = half_velocity
             stats = {"steps": times.size - 1}
-    except FloatingPointError as error:
-        path = f"{ctx.command}/{error.path}" if getattr(error, "path", "") else ctx.command
-        raise NumericalError(f"{scheme}: {error}", ctx.location, path) from None
+    except FloatingPointError as error:  # worded with the deck's keywords
+        path = worded(getattr(error, "path", ""), TRANSIENT, whole_path=True)
+        path = f"{ctx.command}/{path}" if path else ctx.command
+        message = worded(str(error), TRANSIENT)
+        raise NumericalError(f"{scheme}: {message}", ctx.location, path) from None
+    except NumericalError as error:
+        error = error.worded(TRANSIENT)
+        raise NumericalError(error.message, ctx.location, ctx.command) from None
     elapsed = __import__("time").perf_counter() - started
     out_t, out_q, out_v, out_a = archive.arrays()
     if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
