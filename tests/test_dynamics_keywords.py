@@ -19,6 +19,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
 from asterlite.catalog.model import BLOC, FACT
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -125,3 +127,40 @@ def test_the_scan_finds_a_keyword_name_wherever_it_stands(tmp_path):
         "DX_MAX": {"sub/law.py": [3]},
         "FNOR_CRIT": {"sub/law.py": [4]},
     }
+
+
+FIELD_CALL = re.compile(r"""\b(?:named|field)\(\s*["']([A-Za-z_][\w.]*)["']\s*\)""")
+
+
+def test_every_field_a_message_names_has_its_keyword():
+    """A message of dynamics/ names fields (``errors.field``); the commands
+    word each with its keyword: the transient's vocabulary or a relation
+    reader's words. A field missing from them would reach the user as a
+    field name."""
+    from asterlite.commands.dyna_vibra_relations import READERS
+    from asterlite.commands.dyna_vibra_words import TRANSIENT
+
+    known = set(TRANSIENT).union(*(reader.words for reader in READERS.values()))
+    named = {
+        f"{path.relative_to(DYNAMICS)}: {name}"
+        for path in DYNAMICS.rglob("*.py")
+        for name in FIELD_CALL.findall(path.read_text())
+        if name not in known
+    }
+    assert not named, f"fields without a keyword: {sorted(named)}"
+    assert (
+        len(FIELD_CALL.findall((DYNAMICS / "integrate.py").read_text())) > 5
+    )  # the scan sees them
+
+
+def test_an_error_is_worded_with_the_keywords_of_its_fields():
+    from asterlite.commands.dyna_vibra_words import TRANSIENT, transient_words
+
+    from asterlite.errors import NumericalError, field, worded
+
+    error = NumericalError(f"raise {field('options.dt_min')}", path=field("grid.step"))
+    with pytest.raises(NumericalError) as raised, transient_words():
+        raise error
+    assert raised.value.message == "raise PAS_MINI" and raised.value.path == "INCREMENT/PAS"
+    assert worded(f"{field('unknown.field')} x", TRANSIENT) == "unknown.field x"
+    assert str(error) == "numerical error: grid.step: raise options.dt_min"
