@@ -29,8 +29,9 @@ def run_physical(ctx, kw):
     from asterlite.dynamics.physical import adapt_ordre2, diff_centre, newmark, wilson
     from asterlite.dynamics.physical.system import build_system
 
-    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
-    scheme = schema_kw.get("SCHEMA", "NEWMARK")
+    # SCHEMA_TEMPS is a defaulted factor keyword: always one occurrence, defaults filled
+    schema_kw = kw.factor("SCHEMA_TEMPS")[0]
+    scheme = schema_kw["SCHEMA"]
     if scheme not in PHYSICAL_SCHEMES:
         ctx.unsupported(
             f"SCHEMA={scheme!r} on a physical basis (code_aster's PHYS transient offers "
@@ -87,14 +88,14 @@ def run_physical(ctx, kw):
             if system.elimination.multi_rows is not None and system.elimination.multi_rows.size:
                 ctx.error("ADAPT_ORDRE2 on a physical basis does not accept LIAISON_DDL relations")
             options = {
-                "vite_min": first_value(schema_kw.get("VITE_MIN", "NORM")),
-                "coef_mult_pas": schema_kw.get("COEF_MULT_PAS", 1.1),
-                "coef_divi_pas": schema_kw.get("COEF_DIVI_PAS", 1.3333334),
+                "vite_min": first_value(schema_kw["VITE_MIN"]),
+                "coef_mult_pas": schema_kw["COEF_MULT_PAS"],
+                "coef_divi_pas": schema_kw["COEF_DIVI_PAS"],
                 "dt_min": schema_kw.get("PAS_MINI")
                 if schema_kw.get("PAS_MINI") is not None
-                else dt * schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
-                "nb_poin_periode": int(schema_kw.get("NB_POIN_PERIODE", 50)),
-                "nmax_iter_pas": int(schema_kw.get("NMAX_ITER_PAS", 16)),
+                else dt * schema_kw["PAS_LIMI_RELA"],
+                "nb_poin_periode": int(schema_kw["NB_POIN_PERIODE"]),
+                "nmax_iter_pas": int(schema_kw["NMAX_ITER_PAS"]),
                 "pas_arch": int(archiving.get("PAS_ARCH") or 1),
             }
             neighbours = adapt_ordre2.same_component_neighbours(numbering, system.elimination.free)
@@ -122,8 +123,8 @@ def run_physical(ctx, kw):
                     a,
                     mask,
                     archive,
-                    beta=schema_kw.get("BETA", 0.25),
-                    gamma=schema_kw.get("GAMMA", 0.5),
+                    beta=schema_kw["BETA"],
+                    gamma=schema_kw["GAMMA"],
                     monitor=energy,
                     modal=modal,
                 )
@@ -136,7 +137,7 @@ def run_physical(ctx, kw):
                     a,
                     mask,
                     archive,
-                    theta=schema_kw.get("THETA", 1.4),
+                    theta=schema_kw["THETA"],
                     modal=modal,
                 )
             else:
