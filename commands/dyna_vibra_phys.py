@@ -483,8 +483,10 @@ def physical_archive_mask(kw, times):
     pas_arch = occ.get("PAS_ARCH")
     if pas_arch is None:
         pas_arch = 0 if len(instants) else 1
-    relative = occ.get("CRITERE", "RELATIF") == "RELATIF"
-    return archived_steps(times, int(pas_arch), instants, occ.get("PRECISION", 1.0e-6), relative)
+    if not len(instants):  # no instants: no precision to compare them with
+        return archived_steps(times, int(pas_arch), instants, 0.0, True)
+    relative = occ["CRITERE"] == "RELATIF"  # filled by the catalogue when instants are given
+    return archived_steps(times, int(pas_arch), instants, occ["PRECISION"], relative)
 
 
 def checked_diagonal_mass(ctx, system, scheme):
