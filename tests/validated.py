@@ -15,31 +15,35 @@ from asterlite.catalog.model import BLOC, FACT
 from asterlite.catalog.validator import validate_factor
 
 
-def factor(name: str, level=DYNA_VIBRA) -> FACT:
-    """The factor keyword ``name`` of the catalogue (in whichever block)."""
+def factor(name: str, level=DYNA_VIBRA, block: str | None = None) -> FACT:
+    """The factor keyword ``name`` of the catalogue, in whichever block or,
+    for a keyword several blocks define alike-named (EXCIT_RESU), in the
+    block named ``block``."""
     for key, entry in level.entries.items():
         if isinstance(entry, BLOC):
-            found = factor_or_none(name, entry)
+            inner = None if block == key else block
+            found = factor_or_none(name, entry, inner)
             if found is not None:
                 return found
-        elif key == name and isinstance(entry, FACT):
+        elif key == name and isinstance(entry, FACT) and block is None:
             return entry
     raise KeyError(f"DYNA_VIBRA has no factor keyword {name}")
 
 
-def factor_or_none(name: str, level) -> FACT | None:
+def factor_or_none(name: str, level, block: str | None = None) -> FACT | None:
     try:
-        return factor(name, level)
+        return factor(name, level, block)
     except KeyError:
         return None
 
 
-def occurrence(name: str, values: dict | None = None, **more) -> Keywords:
-    """One occurrence of DYNA_VIBRA's factor keyword ``name`` holding
-    ``values``, validated as a call validates it (defaults filled)."""
+def occurrence(name: str, values: dict | None = None, block: str | None = None, **more):
+    """One occurrence of DYNA_VIBRA's factor keyword ``name`` (of the block
+    named ``block`` if given) holding ``values``, validated as a call
+    validates it (defaults filled)."""
     given = {**(values or {}), **more}
     [validated] = validate_factor(
-        factor(name), [given], Keywords(path="DYNA_VIBRA"), name, context={}
+        factor(name, block=block), [given], Keywords(path="DYNA_VIBRA"), name, context={}
     )
     return validated
 
