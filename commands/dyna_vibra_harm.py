@@ -95,8 +95,8 @@ def harmonic_load(ctx, occ, vector, label) -> HarmonicLoad:
     return HarmonicLoad(
         vector=vector,
         multiplier=value,
-        phase_deg=float(occ.get("PHAS_DEG", 0.0)),
-        power=int(occ.get("PUIS_PULS", 0)),
+        phase_deg=float(occ["PHAS_DEG"]),
+        power=int(occ["PUIS_PULS"]),
         label=label,
     )
 

@@ -97,7 +97,7 @@ def result_excitations(ctx, kw, n_modes):
     loads = []
     for number, occ in enumerate(kw.factor("EXCIT_RESU"), start=1):
         result = occ["RESULTAT"]
-        alpha = float(occ.get("COEF_MULT", 1.0))
+        alpha = float(occ["COEF_MULT"])
         same_basis = result.basis is basis or (
             result.basis.name is not None and result.basis.name == basis.name
         )

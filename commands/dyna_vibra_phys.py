@@ -8,13 +8,14 @@ import numpy as np
 from asterlite.commands.dyna_vibra_keywords import first_value, list_values
 from asterlite.commands.dyna_vibra_loads import support_shape
 from asterlite.commands.dyna_vibra_time import archived_index, refuse_too_many_steps
+from asterlite.commands.dyna_vibra_words import TRANSIENT
 
 from asterlite.concepts.table import TableNotComputed
 from asterlite.concepts.transient import DynaTrans
 from asterlite.dynamics.physical.archive import Archive, archived_steps
 from asterlite.dynamics.physical.imposed import ScaledInTime
 from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
-from asterlite.errors import NumericalError
+from asterlite.errors import NumericalError, worded
 from asterlite.fem.loads import load_history, load_terms
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import transfer
@@ -28,8 +29,9 @@ def run_physical(ctx, kw):
     from asterlite.dynamics.physical import adapt_ordre2, diff_centre, newmark, wilson
     from asterlite.dynamics.physical.system import build_system
 
-    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
-    scheme = schema_kw.get("SCHEMA", "NEWMARK")
+    # SCHEMA_TEMPS is a defaulted factor keyword: always one occurrence, defaults filled
+    schema_kw = kw.factor("SCHEMA_TEMPS")[0]
+    scheme = schema_kw["SCHEMA"]
     if scheme not in PHYSICAL_SCHEMES:
         ctx.unsupported(
             f"SCHEMA={scheme!r} on a physical basis (code_aster's PHYS transient offers "
@@ -86,14 +88,14 @@ def run_physical(ctx, kw):
             if system.elimination.multi_rows is not None and system.elimination.multi_rows.size:
                 ctx.error("ADAPT_ORDRE2 on a physical basis does not accept LIAISON_DDL relations")
             options = {
-                "vite_min": first_value(schema_kw.get("VITE_MIN", "NORM")),
-                "coef_mult_pas": schema_kw.get("COEF_MULT_PAS", 1.1),
-                "coef_divi_pas": schema_kw.get("COEF_DIVI_PAS", 1.3333334),
+                "vite_min": first_value(schema_kw["VITE_MIN"]),
+                "coef_mult_pas": schema_kw["COEF_MULT_PAS"],
+                "coef_divi_pas": schema_kw["COEF_DIVI_PAS"],
                 "dt_min": schema_kw.get("PAS_MINI")
                 if schema_kw.get("PAS_MINI") is not None
-                else dt * schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
-                "nb_poin_periode": int(schema_kw.get("NB_POIN_PERIODE", 50)),
-                "nmax_iter_pas": int(schema_kw.get("NMAX_ITER_PAS", 16)),
+                else dt * schema_kw["PAS_LIMI_RELA"],
+                "nb_poin_periode": int(schema_kw["NB_POIN_PERIODE"]),
+                "nmax_iter_pas": int(schema_kw["NMAX_ITER_PAS"]),
                 "pas_arch": int(archiving.get("PAS_ARCH") or 1),
             }
             neighbours = adapt_ordre2.same_component_neighbours(numbering, system.elimination.free)
@@ -109,7 +111,7 @@ def run_physical(ctx, kw):
                 inverse,
                 options,
                 neighbours,
-                ctx.log,
+                lambda text: ctx.log(worded(text, TRANSIENT)),
             )
         else:
             if scheme == "NEWMARK":
@@ -121,8 +123,8 @@ def run_physical(ctx, kw):
                     a,
                     mask,
                     archive,
-                    beta=schema_kw.get("BETA", 0.25),
-                    gamma=schema_kw.get("GAMMA", 0.5),
+                    beta=schema_kw["BETA"],
+                    gamma=schema_kw["GAMMA"],
                     monitor=energy,
                     modal=modal,
                 )
@@ -135,7 +137,7 @@ def run_physical(ctx, kw):
                     a,
                     mask,
                     archive,
-                    theta=schema_kw.get("THETA", 1.4),
+                    theta=schema_kw["THETA"],
                     modal=modal,
                 )
             else:
@@ -156,9 +158,14 @@ def run_physical(ctx, kw):
                     # the last instant, VITE being then the half-step velocity v_{N-1/2}
                     last_velocity = half_velocity
             stats = {"steps": times.size - 1}
-    except FloatingPointError as error:
-        path = f"{ctx.command}/{error.path}" if getattr(error, "path", "") else ctx.command
-        raise NumericalError(f"{scheme}: {error}", ctx.location, path) from None
+    except FloatingPointError as error:  # worded with the deck's keywords
+        path = worded(getattr(error, "path", ""), TRANSIENT, whole_path=True)
+        path = f"{ctx.command}/{path}" if path else ctx.command
+        message = worded(str(error), TRANSIENT)
+        raise NumericalError(f"{scheme}: {message}", ctx.location, path) from None
+    except NumericalError as error:
+        error = error.worded(TRANSIENT)
+        raise NumericalError(error.message, ctx.location, ctx.command) from None
     elapsed = __import__("time").perf_counter() - started
     out_t, out_q, out_v, out_a = archive.arrays()
     if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
@@ -497,8 +504,10 @@ def physical_archive_mask(kw, times):
     pas_arch = occ.get("PAS_ARCH")
     if pas_arch is None:
         pas_arch = 0 if len(instants) else 1
-    relative = occ.get("CRITERE", "RELATIF") == "RELATIF"
-    return archived_steps(times, int(pas_arch), instants, occ.get("PRECISION", 1.0e-6), relative)
+    if not len(instants):  # no instants: no precision to compare them with
+        return archived_steps(times, int(pas_arch), instants, 0.0, True)
+    relative = occ["CRITERE"] == "RELATIF"  # filled by the catalogue when instants are given
+    return archived_steps(times, int(pas_arch), instants, occ["PRECISION"], relative)
 
 
 def checked_diagonal_mass(ctx, system, scheme):

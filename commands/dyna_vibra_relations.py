@@ -15,8 +15,9 @@ docs/architecture.md).
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
 
 from asterlite.commands.dyna_vibra_shocks import single_node
 
@@ -36,6 +37,7 @@ from asterlite.dynamics.laws.rela_effo_depl import RelationParameters
 from asterlite.dynamics.laws.rotor_fiss import RotorFissParameters
 from asterlite.dynamics.laws.tabulated import LawError
 from asterlite.dynamics.model import ShockSpec
+from asterlite.errors import worded
 
 TWO_ENDS = (("NOEUD_1", "GROUP_NO_1"), ("NOEUD_2", "GROUP_NO_2"))
 
@@ -44,13 +46,17 @@ TWO_ENDS = (("NOEUD_1", "GROUP_NO_1"), ("NOEUD_2", "GROUP_NO_2"))
 class Reader:
     """How a relation's occurrence is read: the (node, group) keywords of
     its first and, if any, second node; whether the second may be absent;
-    ``read(occ)``, the relation's parameter record (a ``LawError`` for data
-    that cannot define it); and whether it acts on an obstacle (FLAMBAGE)."""
+    ``read(occ)``, the relation's parameter record from its validated
+    occurrence (the catalogue filled its defaults: a reader restates none;
+    a ``LawError`` for data that cannot define it); whether it acts on an obstacle (FLAMBAGE); and
+    ``words``, the keyword of each field of the record, with which the
+    messages of its module are worded (:func:`relation_words`)."""
 
     read: Callable[[object], object]
     ends: tuple[tuple[str, str], ...] = TWO_ENDS
     second_optional: bool = False
     obstacle: bool = False
+    words: dict[str, str] = field(default_factory=dict)
 
 
 def reals(value) -> tuple[float, ...]:
@@ -60,15 +66,15 @@ def reals(value) -> tuple[float, ...]:
 
 
 def read_flambage(occ):
-    criterion = occ.get("CRIT_AMOR", "INCLUS")
+    criterion = occ["CRIT_AMOR"]
     if occ.get("FNOR_CRIT") is not None:  # code_aster 15's scalar law (hidden keywords)
         return ScalarFlambageParameters(
             stiffness=float(occ["RIGI_NOR"]),
-            damping=float(occ.get("AMOR_NOR") or 0.0),
+            damping=float(occ["AMOR_NOR"]),
             critical_force=float(occ["FNOR_CRIT"]),
             post_buckling_force=float(occ["FNOR_POST_FL"]),
-            drop=float(occ.get("ENFO_FL", 1.0e-20)),
-            plateau=float(occ.get("LARG_PLAT") or 0.0),
+            drop=float(occ["ENFO_FL"]),
+            plateau=float(occ["LARG_PLAT"]),
             crushings=reals(occ.get("DEPL_POST_FL")),
             post_stiffnesses=reals(occ.get("RIGI_POST_FL")),
             post_dampings=reals(occ.get("AMOR_POST_FL")),
@@ -87,12 +93,12 @@ def read_flambage(occ):
 
 def read_anti_sism(occ):
     return AntiSismParameters(
-        initial_stiffness=float(occ.get("RIGI_K1", 0.0)),
-        final_stiffness=float(occ.get("RIGI_K2", 0.0)),
-        threshold=float(occ.get("SEUIL_FX", 0.0)),
-        viscosity=float(occ.get("C", 0.0)),
-        exponent=float(occ.get("PUIS_ALPHA", 0.0)),
-        stroke=float(occ.get("DX_MAX", 1.0)),
+        initial_stiffness=float(occ["RIGI_K1"]),
+        final_stiffness=float(occ["RIGI_K2"]),
+        threshold=float(occ["SEUIL_FX"]),
+        viscosity=float(occ["C"]),
+        exponent=float(occ["PUIS_ALPHA"]),
+        stroke=float(occ["DX_MAX"]),
     )
 
 
@@ -127,9 +133,9 @@ def read_dis_visc(occ):
         parallel_stiffness=parallel,
         branch_flexibility=branch,
         viscosity=float(occ["C"]),
-        exponent=float(occ.get("PUIS_ALPHA", 0.5)),
-        max_iterations=int(occ.get("ITER_INTE_MAXI", 20)),
-        tolerance=float(occ.get("RESI_INTE", 1.0e-6)),
+        exponent=float(occ["PUIS_ALPHA"]),
+        max_iterations=int(occ["ITER_INTE_MAXI"]),
+        tolerance=float(occ["RESI_INTE"]),
     )
 
 
@@ -148,8 +154,8 @@ def read_dis_ecro_trac(occ):
         curve=occ[key],
         axial=axial,
         kinematic=kinematic,
-        max_iterations=int(occ.get("ITER_INTE_MAXI", 20)),
-        tolerance=float(occ.get("RESI_INTE", 1.0e-6)),
+        max_iterations=int(occ["ITER_INTE_MAXI"]),
+        tolerance=float(occ["RESI_INTE"]),
         curve_label=f"DIS_ECRO_TRAC/{key}",
     )
 
@@ -170,22 +176,75 @@ def read_rotor_fiss(occ):
     return RotorFissParameters(
         stiffness=occ.get("K_PHI"),
         stiffness_derivative=occ.get("DK_DPHI"),
-        initial_angle=float(occ.get("ANGL_INIT", 0.0)),
+        initial_angle=float(occ["ANGL_INIT"]),
         angle=occ.get("ANGL_ROTA"),
     )
 
 
 ONE_NODE = (("NOEUD", "GROUP_NO"),)
-READERS: dict[str, Reader] = {
-    "FLAMBAGE": Reader(read_flambage, second_optional=True, obstacle=True),
-    "ANTI_SISM": Reader(read_anti_sism),
-    "DIS_VISC": Reader(read_dis_visc),
-    "DIS_ECRO_TRAC": Reader(read_dis_ecro_trac),
-    "CHOC_ELAS_TRAC": Reader(read_choc_elas_trac),
-    "RELA_EFFO_DEPL": Reader(read_nodal_relation, ONE_NODE),
-    "RELA_EFFO_VITE": Reader(read_nodal_relation, ONE_NODE),
-    "ROTOR_FISS": Reader(read_rotor_fiss, (("NOEUD_D", "GROUP_NO_D"), ("NOEUD_G", "GROUP_NO_G"))),
+# the keyword each field of a relation's parameter record is read from
+FLAMBAGE_WORDS = {
+    "force_threshold": "FX",
+    "stiffness": "RIGI_NOR",
+    "damping": "AMOR_NOR",
+    "critical_force": "FNOR_CRIT",
+    "post_buckling_force": "FNOR_POST_FL",
+    "drop": "ENFO_FL",
+    "plateau": "LARG_PLAT",
+    "crushings": "DEPL_POST_FL",
+    "post_stiffnesses": "RIGI_POST_FL",
+    "post_dampings": "AMOR_POST_FL",
+    "buckling_damping": "AMOR_FL",
 }
+ANTI_SISM_WORDS = {
+    "initial_stiffness": "RIGI_K1",
+    "final_stiffness": "RIGI_K2",
+    "threshold": "SEUIL_FX",
+    "viscosity": "C",
+    "exponent": "PUIS_ALPHA",
+    "stroke": "DX_MAX",
+}
+LOCAL_INTEGRATION_WORDS = {"max_iterations": "ITER_INTE_MAXI", "tolerance": "RESI_INTE"}
+DIS_VISC_WORDS = {
+    "series_flexibility": "UNSUR_K1",
+    "parallel_stiffness": "K2",
+    "branch_flexibility": "UNSUR_K3",
+    "viscosity": "C",
+    "exponent": "PUIS_ALPHA",
+    **LOCAL_INTEGRATION_WORDS,
+}
+NODAL_WORDS = {"component": "NOM_CMP", "function": "FONCTION"}
+ROTOR_FISS_WORDS = {
+    "stiffness": "K_PHI",
+    "stiffness_derivative": "DK_DPHI",
+    "initial_angle": "ANGL_INIT",
+    "angle": "ANGL_ROTA",
+}
+READERS: dict[str, Reader] = {
+    "FLAMBAGE": Reader(read_flambage, second_optional=True, obstacle=True, words=FLAMBAGE_WORDS),
+    "ANTI_SISM": Reader(read_anti_sism, words=ANTI_SISM_WORDS),
+    "DIS_VISC": Reader(read_dis_visc, words=DIS_VISC_WORDS),
+    "DIS_ECRO_TRAC": Reader(read_dis_ecro_trac, words=LOCAL_INTEGRATION_WORDS),
+    "CHOC_ELAS_TRAC": Reader(read_choc_elas_trac, words={"force_curve": "FX"}),
+    "RELA_EFFO_DEPL": Reader(read_nodal_relation, ONE_NODE, words=NODAL_WORDS),
+    "RELA_EFFO_VITE": Reader(read_nodal_relation, ONE_NODE, words=NODAL_WORDS),
+    "ROTOR_FISS": Reader(
+        read_rotor_fiss,
+        (("NOEUD_D", "GROUP_NO_D"), ("NOEUD_G", "GROUP_NO_G")),
+        words=ROTOR_FISS_WORDS,
+    ),
+}
+
+
+@contextmanager
+def relation_words(relation: str) -> Iterator[None]:
+    """A ``LawError`` raised inside, worded with the keywords of
+    ``relation``'s occurrence (its reader's ``words``)."""
+    try:
+        yield
+    except LawError as error:
+        reader = READERS.get(relation)
+        raise LawError(worded(str(error), reader.words if reader else {})) from None
 
 
 def register(relation: str, reader: Reader) -> None:
@@ -205,7 +264,7 @@ def read_obstacle(ctx, occ, second_node: bool) -> Obstacle:
         normal=occ["NORM_OBST"],
         twist=occ.get("ANGL_VRIL"),
         origin=origin,
-        gap=float(occ.get("JEU", 1.0)),
+        gap=float(occ["JEU"]),
         distance_1=float(occ.get("DIST_1") or 0.0),
         distance_2=float(occ.get("DIST_2") or 0.0),
     )
@@ -214,8 +273,8 @@ def read_obstacle(ctx, occ, second_node: bool) -> Obstacle:
 def transient_rotation(kw) -> Rotation:
     """DYNA_VIBRA's rotation as a cracked rotor sees it: at variable speed
     VITE_ROTA is a function and the angle is ANGL_ROTA(t)."""
-    variable = kw.get("VITESSE_VARIABLE", "NON") == "OUI"
-    return Rotation(0.0 if variable else float(kw.get("VITE_ROTA") or 0.0), variable)
+    variable = kw["VITESSE_VARIABLE"] == "OUI"
+    return Rotation(0.0 if variable else float(kw["VITE_ROTA"]), variable)
 
 
 def nonlinearity_spec(ctx, kw, occ, basis, n_modes, number) -> ShockSpec:
@@ -245,18 +304,19 @@ def nonlinearity_spec(ctx, kw, occ, basis, n_modes, number) -> ShockSpec:
     if len(reader.ends) > 1 and node_2 is None and not reader.second_optional:
         ctx.error(f"{relation} needs two nodes", reader.ends[1][1], occ)
     try:
-        connection = LawConnection(
-            relation=relation,
-            parameters=reader.read(occ),
-            node_1=nodes[0],
-            node_2=node_2,
-            number=number,
-            title=occ.get("INTITULE"),
-            obstacle=read_obstacle(ctx, occ, node_2 is not None) if reader.obstacle else None,
-            rotation=transient_rotation(kw),
-            true_distance=int(kw.get("INFO", 1)) == 2,
-        )
-        return law_spec(connection, basis, n_modes)
+        with relation_words(relation):
+            connection = LawConnection(
+                relation=relation,
+                parameters=reader.read(occ),
+                node_1=nodes[0],
+                node_2=node_2,
+                number=number,
+                title=occ.get("INTITULE"),
+                obstacle=read_obstacle(ctx, occ, node_2 is not None) if reader.obstacle else None,
+                rotation=transient_rotation(kw),
+                true_distance=int(kw.get("INFO", 1)) == 2,
+            )
+            return law_spec(connection, basis, n_modes)
     except ConnectionError_ as error:
         ctx.error(str(error), reader.ends[min(error.end, len(reader.ends) - 1)][1], occ)
     except LawError as error:

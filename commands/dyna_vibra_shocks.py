@@ -86,12 +86,12 @@ def shock_specs(ctx, occ, basis, n_modes, first: int = 1) -> list[ShockSpec]:
             norm_obst=norm_obst,
             angl_vril=occ.get("ANGL_VRIL"),
             orig_obst=np.asarray(orig, dtype=float) if orig is not None else None,
-            gap=float(occ.get("JEU", 1.0)),
+            gap=float(occ["JEU"]),
             dist_1=float(occ.get("DIST_1") or 0.0),
             dist_2=float(occ.get("DIST_2") or 0.0),
             k_n=float(occ["RIGI_NOR"]),
-            c_n=float(occ.get("AMOR_NOR", 0.0)),
-            k_t=float(occ.get("RIGI_TAN", 0.0)),
+            c_n=float(occ["AMOR_NOR"]),
+            k_t=float(occ["RIGI_TAN"]),
             c_t=float(occ["AMOR_TAN"]) if occ.get("AMOR_TAN") is not None else None,
             mu_dyn=mu_dyn,
             mu_stat=mu_stat,
@@ -113,7 +113,7 @@ def substructured_views(ctx, occ, basis):
     norm, orig = np.asarray(occ["NORM_OBST"], dtype=float), occ.get("ORIG_OBST")
     orig = np.asarray(orig, dtype=float) if orig is not None else None
     names = (occ.get("SOUS_STRUC_1"), occ.get("SOUS_STRUC_2"))
-    repere = occ.get("REPERE", "GLOBAL")
+    repere = occ["REPERE"]
     if names[0] is None and not hasattr(basis.numbering, "mesh"):  # modes of a mode_gene
         ctx.error("the basis is a mode_gene: name the node's substructure", "SOUS_STRUC_1", occ)
     if names == (None, None) and repere == "GLOBAL":

@@ -96,9 +96,7 @@ def archived_index(ctx, occ, previous) -> int:
     if occ.get("INST_INIT") is not None:
         t = occ["INST_INIT"]
         k = int(np.argmin(np.abs(previous.times - t)))
-        tol = occ.get("PRECISION", 1.0e-6) * (
-            abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
-        )
+        tol = occ["PRECISION"] * (abs(t) if occ["CRITERE"] == "RELATIF" else 1.0)
         if abs(previous.times[k] - t) > max(tol, 1e-300):
             ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
         return k

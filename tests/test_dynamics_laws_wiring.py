@@ -14,6 +14,7 @@ from asterlite.dynamics.laws.kernel import V_TIME
 from asterlite.dynamics.laws.tabulated import pack
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
+from tests.validated import relation
 
 
 def one_mode(k=100.0):
@@ -62,7 +63,7 @@ def test_dis_visc_state_follows_the_steps():
     """DIS_VISC between the mode's node and a fixed node: the stored state is
     the one of the last evaluation instant (V_TIME)."""
     params = dis_visc.prepare_dis_visc(
-        read_dis_visc({"K1": 120.0, "K2": 10.0, "K3": 60.0, "C": 1.7})
+        read_dis_visc(relation("DIS_VISC", {"K1": 120.0, "K2": 10.0, "K3": 60.0, "C": 1.7}))
     )
     phi = np.array([[1.0], [0.0], [0.0]])
     spec = ShockSpec(

@@ -15,6 +15,7 @@ from asterlite.dynamics.laws import rotor_fiss as RF
 from asterlite.dynamics.laws.connections import rotor_frame
 from asterlite.dynamics.laws.tabulated import Curve
 from tests.conftest import CORPUS
+from tests.validated import relation
 
 FLAT = Curve([0.0, 2.0 * math.pi], [1.0, 1.0], "CONSTANT", "CONSTANT")
 ACCELERATION = 2000.0  # rad/s², the ramp Ω = ACC t, γ = ACC t² / 2
@@ -25,7 +26,15 @@ def test_angl_rota_function_gives_the_angle_and_the_speed_is_not_needed():
     constant-speed parameters ignored."""
     law = RF.prepare_rotor_fiss(
         read_rotor_fiss(
-            dict(K_PHI=FLAT, DK_DPHI=FLAT, ANGL_INIT=45.0, ANGL_ROTA=Curve([0.0, 1.0], [0.0, 2.0]))
+            relation(
+                "ROTOR_FISS",
+                dict(
+                    K_PHI=FLAT,
+                    DK_DPHI=FLAT,
+                    ANGL_INIT=45.0,
+                    ANGL_ROTA=Curve([0.0, 1.0], [0.0, 2.0]),
+                ),
+            )
         ),
         variable_speed=True,
     )

@@ -19,6 +19,8 @@ from asterlite.dynamics.laws.flambage import (
     prepare_flambage,
 )
 from asterlite.dynamics.laws.tabulated import LawError
+from asterlite.errors import ValidationError
+from tests.validated import relation
 
 # sdnd105a's support: K = 1, buckling at 1, post-buckling force 0.5, reached
 # crushing 1 with stiffness 0.5
@@ -36,7 +38,9 @@ LEGACY = dict(
 def support(criterion="INCLUS", **changes):
     fx, rigi, amor = legacy_buckling_curves(**dict(LEGACY, **changes))
     return prepare_flambage(
-        read_flambage(dict(FX=fx, RIGI_NOR=rigi, AMOR_NOR=amor, CRIT_AMOR=criterion))
+        read_flambage(
+            relation("FLAMBAGE", dict(FX=fx, RIGI_NOR=rigi, AMOR_NOR=amor, CRIT_AMOR=criterion))
+        )
     )
 
 
@@ -84,8 +88,8 @@ def test_plateau_width_before_the_drop():
 def test_damping_included_or_excluded_from_the_threshold():
     fx, rigi, amor = legacy_buckling_curves(**LEGACY, amor_nor=0.2, amor_fl=0.2)
     kw = dict(FX=fx, RIGI_NOR=rigi, AMOR_NOR=amor)
-    inclusive = prepare_flambage(read_flambage(dict(kw, CRIT_AMOR="INCLUS")))
-    exclusive = prepare_flambage(read_flambage(dict(kw, CRIT_AMOR="EXCLUS")))
+    inclusive = prepare_flambage(read_flambage(relation("FLAMBAGE", dict(kw, CRIT_AMOR="INCLUS"))))
+    exclusive = prepare_flambage(read_flambage(relation("FLAMBAGE", dict(kw, CRIT_AMOR="EXCLUS"))))
     state = initial_state(inclusive)
     included = buckling_force(inclusive, -0.9, -1.0, state, state.copy())
     excluded = buckling_force(exclusive, -0.9, -1.0, state, state.copy())
@@ -117,11 +121,14 @@ def test_dynamic_buckling_of_a_unit_mass():
 
 def test_prepare_errors():
     fx, rigi, amor = legacy_buckling_curves(**LEGACY)
-    with pytest.raises(LawError, match="RIGI_NOR"):
-        prepare_flambage(read_flambage(dict(FX=fx, AMOR_NOR=amor)))
+    # a missing stiffness function: the catalogue's refusal, named
+    with pytest.raises(ValidationError, match="RIGI_NOR: missing mandatory keyword"):
+        relation("FLAMBAGE", dict(FX=fx, AMOR_NOR=amor))
     bad = type(rigi)(rigi.abscissas, -rigi.ordinates, "CONSTANT", "CONSTANT")
     with pytest.raises(LawError, match="stiffness"):
-        prepare_flambage(read_flambage(dict(FX=fx, RIGI_NOR=bad, AMOR_NOR=amor)))
+        prepare_flambage(
+            read_flambage(relation("FLAMBAGE", dict(FX=fx, RIGI_NOR=bad, AMOR_NOR=amor)))
+        )
     with pytest.raises(LawError, match="increase"):
         legacy_buckling_curves(**dict(LEGACY, depl_post_fl=[0.5, 0.2], rigi_post_fl=[0.5, 0.5]))
 

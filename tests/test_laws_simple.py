@@ -8,6 +8,7 @@ from asterlite.commands.dyna_vibra_relations import (
     read_choc_elas_trac,
     read_nodal_relation,
     read_rotor_fiss,
+    relation_words,
 )
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -38,6 +39,7 @@ from asterlite.dynamics.laws.rotor_fiss import (
     prepare_rotor_fiss,
 )
 from asterlite.dynamics.laws.tabulated import Curve, LawError
+from tests.validated import relation
 
 GALET = Curve(
     np.array([0.0, 2.0, 5.0, 7.0, 9.5, 10.0]) / 10.0,
@@ -49,7 +51,8 @@ GALET = Curve(
 
 def test_elastic_shock_only_in_compression():
     p = prepare_choc_elas_trac(
-        read_choc_elas_trac(dict(FX=GALET, DIST_1=0.01, DIST_2=0.02)), rest_distance=0.1
+        read_choc_elas_trac(relation("CHOC_ELAS_TRAC", dict(FX=GALET, DIST_1=0.01, DIST_2=0.02))),
+        rest_distance=0.1,
     )
     state = np.zeros(8)
     assert elastic_shock_force(p, 0.05, state) == 0.0
@@ -65,7 +68,9 @@ def test_elastic_shock_only_in_compression():
 @settings(max_examples=50, deadline=None)
 @given(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0))
 def test_elastic_shock_conservative_and_finite(a, b):
-    p = prepare_choc_elas_trac(read_choc_elas_trac(dict(FX=GALET)), rest_distance=0.0)
+    p = prepare_choc_elas_trac(
+        read_choc_elas_trac(relation("CHOC_ELAS_TRAC", dict(FX=GALET))), rest_distance=0.0
+    )
     state = np.zeros(8)
     grid = np.linspace(a, b, 2001)
     forces = np.array([elastic_shock_force(p, x, state) for x in grid])
@@ -76,7 +81,9 @@ def test_elastic_shock_conservative_and_finite(a, b):
 
 def test_relations_of_displacement_and_velocity():
     p = prepare_rela_effo_depl(
-        read_nodal_relation(dict(NOM_CMP="DY", FONCTION=Curve([-1.0, 1.0], [2.0, -2.0])))
+        read_nodal_relation(
+            relation("RELA_EFFO_DEPL", dict(NOM_CMP="DY", FONCTION=Curve([-1.0, 1.0], [2.0, -2.0])))
+        )
     )
     assert p[P_COMPONENT] == 1.0
     state = np.zeros(3)
@@ -85,12 +92,18 @@ def test_relations_of_displacement_and_velocity():
     assert math.isnan(relation_force(p, 2.0, state))  # EXCLU
     assert relation_force(p, 0.0, state) == 0.0 and state[2] == 0.0
     p = prepare_rela_effo_vite(
-        read_nodal_relation(dict(NOM_CMP="DRZ", FONCTION=Curve([0.0, 1.0], [0.0, 3.0])))
+        read_nodal_relation(
+            relation("RELA_EFFO_VITE", dict(NOM_CMP="DRZ", FONCTION=Curve([0.0, 1.0], [0.0, 3.0])))
+        )
     )
     assert p[P_COMPONENT] == 5.0
-    with pytest.raises(LawError, match="NOM_CMP"):
+    with pytest.raises(LawError, match="NOM_CMP"), relation_words("RELA_EFFO_VITE"):
         prepare_rela_effo_vite(
-            read_nodal_relation(dict(NOM_CMP="TEMP", FONCTION=Curve([0.0, 1.0], [0.0, 3.0])))
+            read_nodal_relation(
+                relation(
+                    "RELA_EFFO_VITE", dict(NOM_CMP="TEMP", FONCTION=Curve([0.0, 1.0], [0.0, 3.0]))
+                )
+            )
         )
 
 
@@ -98,7 +111,8 @@ def rotor(k=2.0, dk=0.0, **kw):
     k_phi = Curve([0.0, 2.0 * math.pi], [k, k], "CONSTANT", "CONSTANT")
     dk_dphi = Curve([0.0, 2.0 * math.pi], [dk, dk], "CONSTANT", "CONSTANT")
     return prepare_rotor_fiss(
-        read_rotor_fiss(dict(K_PHI=k_phi, DK_DPHI=dk_dphi, **kw)), rotation_speed=3.0
+        read_rotor_fiss(relation("ROTOR_FISS", dict(K_PHI=k_phi, DK_DPHI=dk_dphi, **kw))),
+        rotation_speed=3.0,
     )
 
 
@@ -173,9 +187,12 @@ def test_rotor_axis_neighbour_rule_and_missing_neighbour():
 
 
 def test_registry():
-    for name, relation in RELATIONS.items():
-        assert len(internal_variable_names(name)) == relation.module.N_VINT
-    with pytest.raises(LawError, match="ANGL_ROTA"):
+    for name, entry in RELATIONS.items():
+        assert len(internal_variable_names(name)) == entry.module.N_VINT
+    with pytest.raises(LawError, match="ANGL_ROTA"), relation_words("ROTOR_FISS"):
         flat = Curve([0.0, 1.0], [1.0, 1.0])
         slope = Curve([0.0, 1.0], [0.0, 0.0])
-        prepare_rotor_fiss(read_rotor_fiss(dict(K_PHI=flat, DK_DPHI=slope)), variable_speed=True)
+        prepare_rotor_fiss(
+            read_rotor_fiss(relation("ROTOR_FISS", dict(K_PHI=flat, DK_DPHI=slope))),
+            variable_speed=True,
+        )

@@ -1,5 +1,5 @@
 """Energy balance of a generalized transient (DYNA_VIBRA TRAN/GENE with
-``ENERGIE=_F()``, an asterlite extension), accumulated in the compiled time
+asked by the deck, an asterlite extension), accumulated in the compiled time
 loops: one :func:`accumulate` call per accepted step, one :func:`record`
 per archived instant, nothing at all when the keyword is absent.
 
@@ -20,10 +20,11 @@ never from the generalized force the scheme applied):
   the penetration, F_el the force held by the tangential spring (stick:
   F_T + C_T v_T, the force without its viscous part; slip: the sliding force,
   which the spring carries and a new stick phase starts from (eq. 13);
-  nothing when RIGI_TAN = 0).
+  nothing without tangential stiffness).
 - ``TRAV_EXT`` = ∫ vᵀ F_ext dt - ∫ Σ F_loc · v_drive dt: the work of the
-  generalized loads (EXCIT, also the -Φᵀ M ψ γ(t) loads of relative-motion
-  seismic decks and EXCIT_RESU) and, with MULT_APPUI or CORR_STAT, the work
+  generalized loads (the excitation's, also the -Φᵀ M ψ γ(t) loads of relative-motion
+  seismic decks and loads given as results) and, with support motions
+(multiple supports or static corrections), the work
   the moving supports do through the contacts (the shocks see the node's
   absolute motion Φ q + ψ d(t), the modal equations only Φ q).
 - ``DISS_AMOR`` = ∫ vᵀ C v dt (modal or full damping matrix).
@@ -292,7 +293,7 @@ def shock_powers(q, v, vint, flags, params, rots, phis, polars, copy, work, loca
                 if not unidir:
                     el2 += params[s, P_CT] * vt2
             e_tan += 0.5 * (el1 * el1 + el2 * el2) / k_t
-        # the support motion seen by the contact (MULT_APPUI, CORR_STAT), local frame
+        # the support motion seen by the contact (supports, static corrections), local frame
         w1, w2, w3 = 0.0, 0.0, 0.0
         for i in range(3):
             g = drive1[3 + i]

@@ -1,6 +1,6 @@
 """The loads of a transient for the kernels: generalized load vectors, each
 times a multiplier tabulated (its own linear points, sampled windows) or
-compiled to a program (a FORMULE of INST), and the support motions.
+compiled to a program (a formula of time), and the support motions.
 
 Everything here runs once (or once per sampling window), in numpy.
 """
@@ -20,7 +20,7 @@ SAMPLES_PER_WINDOW = 1 << 16  # samples of a windowed multiplier held at a time
 
 @dataclass
 class SampledMultiplier:
-    """A multiplier without linear points of its own (a FORMULE, a function
+    """A multiplier without linear points of its own (a formula, a function
     with logarithmic interpolation...), sampled on the regular grid
     t0 + h k, k < count, one window of samples at a time."""
 
@@ -50,7 +50,7 @@ class Excitation:
     (``layout[e] = (count, left, right)``, extension codes PROL_CONSTANT or
     PROL_LINEAIRE beyond the ends): a DEFI_FONCTION with linear
     interpolation keeps its own points, so the kernels evaluate it exactly
-    as code_aster does at any instant; a FORMULE of INST becomes a program
+    as code_aster does at any instant; a formula of time becomes a program
     the kernels run at each instant (``programs``, :mod:`formula`); other
     multipliers (formulas calling functions, log interpolation) are
     sampled on a regular grid, one window at a time
@@ -63,7 +63,7 @@ class Excitation:
     abscissas: np.ndarray  # (n_exc, n_points)
     ordinates: np.ndarray  # (n_exc, n_points)
     layout: np.ndarray  # (n_exc, 3) int: count, left, right
-    # MULT_APPUI support motion seen by the shocks: static modes at each
+    # support motion seen by the shocks: static modes at each
     # shock node (n_shocks, 2, 3, n_supports) and, rows 2k / 2k+1, the
     # displacement / velocity of support k tabulated as the multipliers
     drive_shapes: np.ndarray | None = None
@@ -211,7 +211,7 @@ def tabulate_excitation(n_modes: int, loads, t0: float, t_end: float, h: float) 
     """``loads``: list of (vector, multiplier) with multiplier a float, a
     tabulated function (``abscissas``, ``ordinates``, ``INTERPOL``,
     ``PROL_GAUCHE``/``PROL_DROITE``) or any object with ``evaluate(t_array)``
-    (a FORMULE of INST runs as a program in the kernels; anything else is
+    (a formula of time runs as a program in the kernels; anything else is
     sampled every ``h`` over [t0, t_end], one window at a time)."""
     programs = [kernel_program(mult) for _, mult in loads]
     points = [

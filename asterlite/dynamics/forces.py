@@ -155,7 +155,7 @@ def add_external_force(
 
 @njit(cache=True, inline="always")
 def support_motion(t, exc, params):
-    """MULT_APPUI: write each shock node's support displacement and velocity
+    """Multiple supports: write each shock node's support displacement and velocity
     Σ_k ψ_k(node) (d_k(t), v_k(t)) into its drive slots (global frame)."""
     shapes, abscissas, ordinates, layout, cursors = (
         exc.drive_shapes,
@@ -191,7 +191,7 @@ def support_values(t, k, abscissas, ordinates, layout, cursors):
 
 @njit(cache=True, inline="always")
 def local_support_motion(t, rots, shapes, abscissas, ordinates, layout, cursors, drive):
-    """MULT_APPUI for :func:`contact.local_shock_forces`: ``drive[s, node]``
+    """Multiple supports for :func:`contact.local_shock_forces`: ``drive[s, node]``
     = rot Σ_k ψ_k(node) (d_k(t), v_k(t)), summed in the global frame as
     :func:`support_motion` does, then rotated. Nothing to do without supports."""
     n_supports = shapes.shape[3]

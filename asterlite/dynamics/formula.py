@@ -1,7 +1,7 @@
-"""FORMULE load multipliers evaluated inside the compiled time loops: the
+"""Formula load multipliers evaluated inside the compiled time loops: the
 postfix back end of :mod:`asterlite.lang.formula`.
 
-A ``FORMULE`` of one parameter (``NOM_PARA='INST'``) whose checked tree
+A deck formula of one parameter, the time (``NOM_PARA='INST'``), whose checked tree
 uses only numbers, the parameter, numeric extra values, arithmetic,
 comparisons, conditional expressions and the functions with a kernel code
 in :mod:`asterlite.lang.numeric` is translated once into a small postfix
@@ -102,7 +102,7 @@ class NotCompilable(Exception):
 
 
 def formula_program(mult) -> tuple[list[int], list[float]] | None:
-    """(codes, constants) of a one-parameter real FORMULE, or None when it
+    """(codes, constants) of a one-parameter real formula, or None when it
     cannot run in the kernels (then it is sampled)."""
     compiled = getattr(mult, "compiled", None)
     parameters = tuple(getattr(mult, "NOM_PARA", ()) or ())
@@ -346,7 +346,7 @@ def program_value(codes, constants, row, t, stack):
     load formula is made of (numbers, the parameter, ``*``, ``+``, ``sin``,
     ``cos``) tested first: the same operations on the same operands in the
     same order, so the same value to the last bit, with fewer loads and
-    stores per code (the specialised DIFF_CENTRE loop runs each FORMULE
+    stores per code (the specialised DIFF_CENTRE loop runs each formula
     load at every step)."""
     top = -1  # stack depth - 1; the value at that depth is ``x``
     x = 0.0

@@ -1,4 +1,4 @@
-"""Shocks treated implicitly (DYNA_VIBRA TRAITEMENT_NONL='IMPLICITE').
+"""Shocks treated implicitly (DYNA_VIBRA's implicit treatment of the nonlinearities).
 
 A DIS_CHOC normal force is piecewise linear in the modal coordinates: zero
 while the gap is open, -k_n d - c_n v_n in contact. code_aster
@@ -52,7 +52,7 @@ asterlite follows that algorithm with these choices:
   the next step runs whole with the contact spring in tension. At most
   MAX_TRIES integrations of one step; the step after a cut one is the
   user's step again (the time grid shifts, as in code_aster).
-- Not with support motion (MULT_APPUI, CORR_STAT): the gap then moves with
+- Not with support motion (multiple supports, static corrections): the gap then moves with
   the supports and a constant force cannot carry it (refused upstream).
 
 Everything runs in the compiled loop; the state of a step (scheme memory

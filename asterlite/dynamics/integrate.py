@@ -35,11 +35,12 @@ from asterlite.dynamics.step_limits import (
     suggested_step,
 )
 from asterlite.errors import NumericalError
+from asterlite.errors import field as named
 
 
 @dataclass
 class SchemeOptions:
-    """SCHEMA_TEMPS parameters (code_aster 17 defaults)."""
+    """The scheme's parameters (code_aster 17 defaults)."""
 
     tolerance: float = 1.0e-5
     alpha: float = 0.0
@@ -77,7 +78,7 @@ class RunResult:
     # instant and the steps rejected so far (code_aster's PTEM and more)
     step_info: np.ndarray = field(default_factory=lambda: np.zeros((0, K.N_INFO)))
     info: dict = field(default_factory=dict)
-    # (n_archived, energy.N_COLUMNS): the energy balance (ENERGIE), or None
+    # (n_archived, energy.N_COLUMNS): the energy balance, or None
     energy: np.ndarray | None = None
 
 
@@ -106,9 +107,9 @@ def integrate(
     in the global frame), as the relations of laws/ do; kept for comparison.
     ``label`` names the run on the progress bar. ``energy``: accumulate the
     energy balance in the loop (:mod:`asterlite.dynamics.energy`), returned
-    as ``RunResult.energy``. ``implicit_shocks``: TRAITEMENT_NONL='IMPLICITE'
+    as ``RunResult.energy``. ``implicit_shocks``: the implicit shock treatment
     (:mod:`asterlite.dynamics.implicit_shocks`). ``load_labels``: how the
-    deck names each excitation row (``EXCIT[2]``...), for the message of a
+    deck names each excitation row (the command's label of a load), for the message of a
     load that becomes non-finite; the error's ``path`` then names it.
 
     A kernel numba has not compiled yet (``asterlite warmup`` compiles them
@@ -208,7 +209,7 @@ def run_kernel(
 
     memory, _ = module.prepare(system, dt, options)
     rotating_loop = None
-    if rotation is not None:  # VITESSE_VARIABLE='OUI': matrices updated every step
+    if rotation is not None:  # variable rotation speed: matrices updated every step
         from asterlite.dynamics import rotation as R
 
         memory, rotating_loop = R.prepare(scheme, memory, rotation)
@@ -242,7 +243,10 @@ def run_kernel(
     counters[K.K_ARCHIVED] = 1
     run_loop = implicit_loop or rotating_loop or scheme_run_loop(entry, module, notice.name)
     if energy and rotating_loop is not None:
-        raise NumericalError("the energy balance (ENERGIE) with VITESSE_VARIABLE='OUI'")
+        raise NumericalError(
+            f"the energy balance ({named('energy')}) at variable rotation speed "
+            f"({named('rotation.variable')}='OUI')"
+        )
     balance = E.new_energy(system, shocks, capacity, entry.staggered_velocity, energy)
     if energy:
         E.start(balance, t0, q, v, a, vint, model[SHOCKS], model[LOADS])
@@ -324,8 +328,8 @@ def legacy_adapt_module(entry: Scheme, rotation, implicit, energy):
 
 def loop_adapts(entry: Scheme, dt: float, options: SchemeOptions) -> bool:
     """Whether the time loop follows the step proposed by the scheme
-    (code_aster's dtmprep: adaptive families with PAS_MINI != PAS_MAXI,
-    defaults 1e-6 and 1e6 times PAS)."""
+    (code_aster's dtmprep: adaptive families whose step bounds differ,
+    defaults 1e-6 and 1e6 times dt)."""
     if not entry.adaptive:
         return False
     dt_min = options.dt_min if options.dt_min is not None else 1.0e-6 * dt
@@ -384,9 +388,10 @@ class StepBudget:
             f"{scheme}: step budget exhausted: {steps} steps taken and t={clock[K.C_TIME]:.6g} "
             f"of {clock[K.C_END]:.6g} reached ({int(counters[K.K_REJECTED])} rejected, "
             f"smallest step {clock[K.C_MIN_STEP]:.3g}); the adaptive step collapsed, as "
-            "it does on stick-slip or stiff contact switches: raise PAS_MINI, loosen "
-            "TOLERANCE, give ALPHA (a floor under the error scale of modes nearly at rest), "
-            "or use a fixed-step scheme (DIFF_CENTRE, NEWMARK)"
+            f"it does on stick-slip or stiff contact switches: raise {named('options.dt_min')}, "
+            f"loosen {named('options.tolerance')}, give {named('options.alpha')} (a floor under "
+            "the error scale of modes nearly at rest), or use a fixed-step scheme "
+            "(DIFF_CENTRE, NEWMARK)"
         )
 
     def check_archive(self, capacity: int, row_bytes: int, pas_arch: int, clock, counters):
@@ -403,9 +408,16 @@ class StepBudget:
         raise NumericalError(
             f"archive memory limit: {capacity} archived instants would take "
             f"{needed / 1024**3:.2f} GB (limit {self.archive_bytes / 1024**3:.2f} GB; "
-            f"{where}, PAS_ARCH={pas_arch}): archive less often (ARCHIVAGE PAS_ARCH or "
-            "LIST_INST)"
+            f"{where}, {named('archive.period')}={pas_arch}): archive less often "
+            f"({named('archive')} {named('archive.period')} or {named('archive.instants')})"
         )
+
+
+# what to check when a load is not finite (its multiplier: function, coefficient)
+LOAD_ADVICE = (
+    f"check the function that defines it ({named('excitation.function')}, "
+    f"{named('excitation.coefficient')}, the formula)"
+)
 
 
 def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | None:
@@ -417,10 +429,10 @@ def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | 
         return None
     spec = shocks.specs[s]
     return NumericalError(
-        f"COMPORTEMENT {spec.relation} {spec.name.strip()!r} (node {spec.node_1}) could not be "
-        f"evaluated at t={t:.6g}: a function was evaluated outside its domain "
+        f"{named('relations')} {spec.relation} {spec.name.strip()!r} (node {spec.node_1}) "
+        f"could not be evaluated at t={t:.6g}: a function was evaluated outside its domain "
         "(PROL_GAUCHE/PROL_DROITE='EXCLU') or the local integration did not converge "
-        "(ITER_INTE_MAXI, RESI_INTE)"
+        f"({named('relation.max_iterations')}, {named('relation.tolerance')})"
     )
 
 
@@ -466,7 +478,7 @@ def initial_error(state, shocks, excitation, t0: float, labels) -> NumericalErro
 
 def nonfinite_error(state, clock, counters, last_archived, model_parts, scheme: str):
     """The error of a run whose state became non-finite: which quantity
-    (the load of an EXCIT occurrence, the force of a shock, the generalized
+    (a load of the excitation, the force of a shock, the generalized
     displacement / velocity / acceleration), at which instant, the last
     finite and the last archived instants, and what to change; its
     ``path`` names the keyword at fault below DYNA_VIBRA."""
@@ -477,7 +489,7 @@ def nonfinite_error(state, clock, counters, last_archived, model_parts, scheme: 
     if culprit.step_related:
         advice = step_advice(system, shocks, scheme, dt)
     else:
-        advice = "check the function that defines it (FONC_MULT, COEF_MULT, the FORMULE)"
+        advice = LOAD_ADVICE
     return NumericalError(f"{scheme}: {when}: {culprit.text}; {advice}", path=culprit.path)
 
 
@@ -496,9 +508,9 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
     what = {
         K.STATUS_NOT_FINITE: "the solution became non-finite",
         K.STATUS_SHOCK_DIVERGED: "relative velocity at a shock diverged",
-        K.STATUS_STEP_UNDERFLOW: "the adaptive step fell below PAS_MINI",
+        K.STATUS_STEP_UNDERFLOW: f"the adaptive step fell below {named('options.dt_min')}",
         K.STATUS_SWITCH_NOT_LOCATED: "a step was integrated again 100 times without "
-        "locating its contact switch (TRAITEMENT_NONL='IMPLICITE')",
+        f"locating its contact switch ({named('implicit')}='IMPLICITE')",
     }.get(status, f"integration failed (status {status})")
     advice = step_advice(system, shocks, scheme, dt)
     return NumericalError(f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; {advice}")
@@ -515,15 +527,17 @@ def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) 
     if limit >= dt:  # the step already resolves the model: halving is all one can say
         advice = (
             f"the step is already below the stability estimate {limit:.3g} s ({cause}); "
-            f"try PAS={suggested_step(dt / 2.0):.3g} and check the stiffness, damping and loads"
+            f"try {named('grid.step')}={suggested_step(dt / 2.0):.3g} and check the "
+            "stiffness, damping and loads"
         )
     else:
-        advice = f"try PAS <= {limit:.3g} (e.g. PAS={suggested_step(limit):.3g}; {cause})"
+        step = named("grid.step")
+        advice = f"try {step} <= {limit:.3g} (e.g. {step}={suggested_step(limit):.3g}; {cause})"
     return advice
 
 
 def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
-    """The largest step code_aster's VERI_PAS accepts for ``scheme``: the
+    """The largest step code_aster's step check accepts for ``scheme``: the
     fraction of its description (:mod:`asterlite.dynamics.schemes`) of the
     shortest period with the shock stiffness."""
 

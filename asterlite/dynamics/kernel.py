@@ -28,17 +28,17 @@ loads)`` the bundles of ``model.py`` (``layouts.LINEAR``...; each a named
 tuple of :mod:`asterlite.dynamics.layouts`).
 
 The loop follows code_aster's archiving rules (dtmcalc): the step is
-shortened to land exactly on each requested instant (and on INST_FIN), the
+shortened to land exactly on each requested instant (and on the final instant), the
 remainder of the shortened step is taken next, and otherwise every
 ``pas_arch``-th step is archived. A fixed-step loop stands on the grid
-t0 + n PAS (code_aster's list of instants, mdptem): the instant of a step
+t0 + n dt (code_aster's list of instants, mdptem): the instant of a step
 that completes grid interval n is computed from n, never summed step after
 step, so that 2e8 steps of 1e-5 s end at 2000 s exactly (a running sum
 drifts by 4e-6 s there and takes one more, tiny, step). Adaptive loops
 accumulate their steps. It stops with STATUS_FULL when the archive
 buffers are full so that the driver can grow them and resume: memory
 follows the archived instants, never the number of steps. Likewise it
-stops with STATUS_LOADS when a multiplier sampled by windows (a FORMULE)
+stops with STATUS_LOADS when a multiplier sampled by windows (a formula)
 needs its next window, and with STATUS_PAUSE when it has taken the steps
 the driver granted (``counters[K_PAUSE_AT]``): the driver reports progress,
 checks the step budget and resumes, so that a long run stays responsive
@@ -91,7 +91,7 @@ N_CLOCK = 8
     K_GRID,
 ) = range(10)
 N_COUNTERS = 10
-# a fixed step ending this close (relative to PAS) to the next grid instant
+# a fixed step ending this close (relative to dt) to the next grid instant
 # completes the grid interval: far above the round-off of a sum of two
 # instants, far below any step cut short (implicit shocks cut at >= 1 %)
 GRID_TOLERANCE = 1.0e-6
@@ -296,7 +296,7 @@ def advance_clock(
 
 @njit(cache=True, inline="always")
 def grid_instant(clock, counters, t):
-    """The end ``t`` of a fixed step, replaced by t0 + n PAS when the step
+    """The end ``t`` of a fixed step, replaced by t0 + n dt when the step
     completes grid interval n; a step ending elsewhere (cut short at a
     contact switch: code_aster's grid shifts there) starts a new grid."""
     n = counters[K_GRID] + 1

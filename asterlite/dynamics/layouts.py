@@ -38,7 +38,7 @@ Shocks = namedtuple("Shocks", "flags params rots phis polars laws rphis law_scra
 # excitation.Excitation.bundle(): the load rows (vectors, tabulated multipliers
 # and their layout), the support motions (drive_*), the sampling windows
 # still to come (pending), the interval searched last (cursors), and the
-# FORMULE programs run in the kernel (formula.py)
+# formula programs run in the kernel (formula.py)
 Loads = namedtuple(
     "Loads",
     "vectors abscissas ordinates layout drive_shapes drive_abscissas drive_ordinates "

@@ -17,7 +17,7 @@ follows from the model tuple's type, when numba compiles the step:
   arrays): the mode shapes already rotated into each shock's frame, as
   NEWMARK's and DIFF_CENTRE's specialised loops evaluate them
   (:func:`contact.local_shock_forces` inlined in :func:`local_evaluate`,
-  the external force as DIFF_CENTRE's loop computes it, FORMULE programs
+  the external force as DIFF_CENTRE's loop computes it, formula programs
   through :func:`formula.program_value`).
 
 So one source per step and two compiled copies of it (the scheme's loop
@@ -49,7 +49,7 @@ def local_total_force(t, q, v, vint, f, model):
     shk, exc = model[SHOCKS], model[LOADS]
     shapes, rest, drive = model[LOCAL]
     # f[:] = 0 then forces.external_force, as DIFF_CENTRE's loop writes them
-    # (FORMULE programs through formula.program_value): the same value
+    # (formula programs through formula.program_value): the same value
     external_force_into(
         t, exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes,
         exc.constants, exc.stack, f,

@@ -64,7 +64,7 @@ def after_step(
     clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
 ):
     """Advance the clock over an accepted step ``result`` = (dt_used,
-    dt_next, rejected), archive when due, and, with ``balance`` (ENERGIE:
+    dt_next, rejected), archive when due, and, with ``balance`` (the energy balance:
     ``energy.is_active``, read once before the loop), add the step to the
     energy balance (:mod:`asterlite.dynamics.energy`)."""
     archived = counters[K.K_ARCHIVED]
@@ -75,7 +75,7 @@ def after_step(
 
 def time_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
     """The loop from the clock's time to its end around ``step`` (a global
-    :func:`scheme_loop` binds). ``energy``: the ENERGIE bundle
+    :func:`scheme_loop` binds). ``energy``: the energy balance's bundle
     (:mod:`asterlite.dynamics.energy`), inactive without it. Returns a
     ``K.STATUS_*``: done, or why it paused or failed."""
     balance = E.is_active(energy)

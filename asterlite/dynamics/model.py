@@ -53,7 +53,7 @@ class LinearSystem:
     stiffness: np.ndarray
     damping: np.ndarray
     # code_aster's AMOR_DIA: c_i / m_i per mode when the damping is given per
-    # mode (AMOR_MODAL, or a MATR_AMOR stored DIAG), None for a full MATR_AMOR.
+    # mode (modal damping, or a damping matrix stored diagonal), None for a full damping matrix.
     # At variable rotation speed code_aster damps with M diag(rates) (dtmupmat),
     # at constant speed with diag(rates) M (dtmacce): ``damping`` is the latter.
     damping_rates: np.ndarray | None = None
@@ -146,7 +146,7 @@ def modal_damping_rates(mass: np.ndarray, stiffness: np.ndarray, ratios) -> np.n
 
 
 def diagonal_damping_rates(mass: np.ndarray, stiffness: np.ndarray, damping) -> np.ndarray:
-    """code_aster's AMOR_DIA for a MATR_AMOR stored DIAG (dtmprep): c_i / m_i,
+    """code_aster's AMOR_DIA for a damping matrix stored diagonal (dtmprep): c_i / m_i,
     or 2 ω_i for a massless coordinate."""
     m, c = np.diag(mass), np.diag(damping)
     tiny = np.abs(m) <= np.finfo(float).eps
@@ -255,7 +255,7 @@ class ShockSet:
     def local_arrays(self):
         """(shapes, rest) in each shock's local frame, for
         :func:`contact.local_shock_forces`: ``shapes[s, node]`` = rot Φ
-        (3, n_modes) and ``rest[s, node]`` = rot (coord - ORIG_OBST)."""
+        (3, n_modes) and ``rest[s, node]`` = rot (coord - obstacle origin)."""
         ns = self.count
         shapes = np.zeros_like(self.phis)
         rest = np.zeros((ns, 2, 3))
@@ -384,11 +384,11 @@ def optimal_tangential_damping(spec: ShockSpec, rot: np.ndarray, system: LinearS
 
 
 def optimal_tangential_damping_v15(spec: ShockSpec, system: LinearSystem) -> float:
-    """The AMOR_TAN code_aster 13 to 15 computed when RIGI_TAN is given
+    """The tangential damping code_aster 13 to 15 computed when a tangential stiffness is given
     without it (dtmprep_noli_choc of those versions, §3.5): the mode of
     largest generalized mass (whatever its motion at the contact), its
-    AMOR_DIA entry (2 ξ ω for AMOR_MODAL, c/m for a MATR_AMOR stored DIAG;
-    C_ii for a full MATR_AMOR) taken in place of ξ, and no floor at 0:
+    AMOR_DIA entry (2 ξ ω for modal damping, c/m for a damping matrix stored diagonal;
+    C_ii for a full damping matrix) taken in place of ξ, and no floor at 0:
 
         C_T = 2 sqrt(m (k + K_T)) - 2 a sqrt(k m),  k = ω² m.
 

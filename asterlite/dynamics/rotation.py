@@ -1,10 +1,10 @@
-"""Rotating machinery at variable speed (DYNA_VIBRA VITESSE_VARIABLE='OUI').
+"""Rotating machinery at variable speed.
 
 The generalized damping and stiffness depend on the rotation speed Ω(t)
 and acceleration Ω'(t) (code_aster's dtmupmat)::
 
-    C(t) = C + Ω(t) G          (MATR_AMOR or modal damping, MATR_GYRO)
-    K(t) = K + Ω'(t) K_gy      (MATR_RIGI, MATR_RIGY; no MATR_RIGY: K)
+    C(t) = C + Ω(t) G          (damping matrix or modal damping, gyroscopic matrix G)
+    K(t) = K + Ω'(t) K_gy      (stiffness, gyroscopic stiffness K_gy; none: K)
 
 code_aster (dtmcalc) updates the matrices at the start of every step, the
 instant t_i of the state the step leaves, whatever the scheme (dtmintg
@@ -14,7 +14,7 @@ their integrators do on MAT_UPDT: the accelerations use C(t_i), K(t_i);
 NEWMARK and TRBDF2 rebuild their effective operators, DEVOGE its M⁻¹C,
 M⁻¹K and H1, H2 (intdevo_oper). The initial acceleration uses the
 matrices at the initial instant. Ω and Ω' are multipliers of the
-excitation machinery (tables, FORMULE programs), evaluated in the loop.
+excitation machinery (tables, formula programs), evaluated in the loop.
 
 One loop serves every scheme: :mod:`asterlite.dynamics.loop`'s around
 :func:`rotating_step`, the scheme's step (branching on its code, see
@@ -52,12 +52,12 @@ class Rotation:
     stiffness: np.ndarray
     gyro: np.ndarray
     rigy: np.ndarray
-    speed: object  # function of INST
-    acceleration: object | None = None  # function of INST, or None (0)
+    speed: object  # function of time
+    acceleration: object | None = None  # function of time, or None (0)
 
     def __post_init__(self) -> None:
         self.excitation = None
-        # ETAT_INIT RESULTAT: code_aster (dtminit) restarts from the archived
+        # a run continuing a result: code_aster (dtminit) restarts from the archived
         # acceleration instead of solving the equilibrium at the new start
         self.initial_acceleration = None
 

@@ -11,18 +11,19 @@ The step itself is the same leapfrog: with dt' the previous accepted step
 
 What differs from code_aster 17 is the control around it:
 
-- err = NB_POIN_PERIODE f dt (f: the apparent frequency of the trial,
+- err = N f dt (N points per period, f: the apparent frequency of the trial,
   :func:`adapt_control.apparent_frequency`); while err > 1, the step is
-  divided by COEF_DIVI_PAS and retried, at most NMAX_ITER_PAS trials. When
+  divided by the division factor and retried, at most the largest number
+  of trials. When
   the last trial still fails the step is divided once more after it was
   computed: the state is that of the trial, the clock moves by the divided
   step (as code_aster did).
 - calm steps (err < 0.75) are counted; the sixth calm step in a row and
-  every calm step after it multiplies the next step by COEF_MULT_PAS (at
-  most PAS_MAXI); any other step resets the count.
-- PAS_MAXI defaults to a twentieth of the shortest period, shock stiffness
-  included (mdptem; :func:`default_step_max`), even below PAS.
-- archiving: the archive times are t0 + k PAS_MAXI PAS_ARCH; a step that
+  every calm step after it multiplies the next step by the growth factor (at
+  most the upper bound); any other step resets the count.
+- the step's upper bound defaults to a twentieth of the shortest period, shock stiffness
+  included (mdptem; :func:`default_step_max`), even below dt.
+- archiving: the archive times are t0 + k dt_max period; a step that
   brackets one archives whichever of its two ends is nearer (the step is
   never shortened to land on it). At the end, the slots left of the
   int((t_end - t0)/spacing) + 1 (+1 if a remainder) planned are filled with
@@ -43,6 +44,7 @@ from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
 from asterlite.dynamics.layouts import LOADS, ROWS, SCALARS
 from asterlite.errors import NumericalError
+from asterlite.errors import field as named
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, V_MID, V_MID_TRIAL, RESIDUAL = range(7)
 VECTOR_ROWS = 7
@@ -55,12 +57,13 @@ MACHINE_EPS = np.finfo(np.float64).eps
 
 
 def prepare(system, dt, options):
-    """PAS_MAXI is required here: the driver gives code_aster 10-12's default
+    """The step's upper bound is required here: the command gives code_aster 10-12's default
     when the deck has none (:func:`default_step_max`)."""
     if options.dt_max is None:
         raise NumericalError(
-            "ADAPT_ORDRE2 of code_aster 10-12 without PAS_MAXI (DYNA_VIBRA fills in "
-            "that version's default, a twentieth of the shortest period: default_step_max)"
+            f"ADAPT_ORDRE2 of code_aster 10-12 without an upper step bound "
+            f"({named('options.dt_max')}; the command fills in that version's default, a "
+            "twentieth of the shortest period: default_step_max)"
         )
     base, _ = A.control_scalars(dt, options)
     scalars = np.zeros(N_SCALARS)
@@ -71,9 +74,9 @@ def prepare(system, dt, options):
 
 
 def default_step_max(shortest_period: float) -> float:
-    """code_aster 10-12's PAS_MAXI when the deck gives none (mdptem): a
+    """code_aster 10-12's upper bound of the step when the deck gives none (mdptem): a
     twentieth of the shortest period among the modes, each stiffened by every
-    shock's RIGI_NOR and RIGI_TAN on each shape component
+    shock's normal and tangential stiffness on each shape component
     (:func:`asterlite.dynamics.step_limits.stability_limit`; 1e10 s without any)."""
     return shortest_period / 20.0
 
@@ -164,7 +167,7 @@ def archive_nearest(clock, counters, state, rows, scalars, archive, t_new, dt_ne
 
 @njit(cache=True)
 def update_reference_velocities(rows, scalars):
-    """VITE_MIN from the mid-step velocity of the accepted step."""
+    """The reference velocities from the mid-step velocity of the accepted step."""
     A.update_reference_velocities(rows[V_MID_TRIAL], rows[V_MIN], scalars)
 
 
@@ -180,8 +183,8 @@ def first_trial_step(clock):
 @njit(cache=True)
 def judge(clock, tried, state, rows, scalars):
     """(error, step, underflow): the error of the trial of step ``tried``
-    just computed, the step of the next trial (divided by COEF_DIVI_PAS when
-    the error exceeds 1), and whether that step fell to PAS_MINI before the end."""
+    just computed, the step of the next trial (divided by the division factor when
+    the error exceeds 1), and whether that step fell to the lower bound before the end."""
     t, t_end = clock[K.C_TIME], clock[K.C_END]
     freq = A.apparent_frequency(tried, state.q, rows[Q_TRIAL], state.a, rows[A_TRIAL],
                                 rows[V_MIN])  # fmt: skip
@@ -267,7 +270,7 @@ def fill_slots(clock, counters, state, scalars, archive):
 
 @njit(cache=True)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The whole time loop (ARCHIVAGE/LIST_INST and INST are not read: code_aster
+    """The whole time loop (the archiving instants are not read: code_aster
     10-12's ADAPT archived on its own grid); resumable after any pause."""
     rows, scalars = memory[ROWS], memory[SCALARS]
     out_t = archive.times

@@ -9,18 +9,18 @@ t - dt/2). With r = M⁻¹F - M⁻¹K q (the "reduced" force) and C' = M⁻¹C:
     v4 = v1 + dt/6 (r1 + 4 r3 + r4 - C'(v1 + 4 v3 + v4))         Simpson
 
 Shock forces at 3 and 4 use the finite-difference velocities
-(q3 - q1)/(dt/2) and (q4 - q3)/(dt/2), as code_aster does. Unless PAS_MINI
-equals PAS_MAXI the step adapts: a local error estimate on q3, compared
-with TOLERANCE * (|q| + ALPHA), rescales dt by 0.5..1.5 (up to 24 retries).
+(q3 - q1)/(dt/2) and (q4 - q3)/(dt/2), as code_aster does. Unless the step's
+bounds are equal the step adapts: a local error estimate on q3, compared
+with tol * (|q| + alpha), rescales dt by 0.5..1.5 (up to 24 retries).
 
 asterlite's guard (not in code_aster): the shock forces, with their
 finite-difference velocities, are explicit, so the adaptive step never
-exceeds the stability limit of the stiffest damped shock (AMOR_NOR·dt/M
+exceeds the stability limit of the stiffest damped shock (c_n·dt/M
 <= 2 for a heavy damping: :func:`asterlite.dynamics.adapt_control.
 shock_damping_step` with radius 2, the modal damping being implicit; inf
-without AMOR_NOR / AMOR_TAN). The error estimate on q3 does not see that
+without normal or tangential shock damping). The error estimate on q3 does not see that
 instability: entering a stiffly damped contact after a long free flight it
-accepts steps with AMOR_NOR·dt/M ~ 15 that double the energy.
+accepts steps with c_n·dt/M ~ 15 that double the energy.
 """
 
 from __future__ import annotations
@@ -64,7 +64,7 @@ def memory_rows(n: int) -> int:
 
 def prepare(system, dt, options):
     """(memory, adaptive): operators and control parameters. The step adapts
-    unless PAS_MINI equals PAS_MAXI (defaults 1e-10 and 1e10 times PAS)."""
+    unless its bounds are equal (defaults 1e-10 and 1e10 times dt)."""
     n = system.n_modes
     dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt
     dt_max = options.dt_max if options.dt_max is not None else 1.0e10 * dt

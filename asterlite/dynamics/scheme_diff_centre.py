@@ -14,7 +14,7 @@ Two loops share the arithmetic:
   kinematics in each shock's local frame (:func:`contact.local_shock_forces`),
   the acceleration in one pass (diagonal matrices as 1-D arrays, the
   finiteness test folded in), multipliers searched from their last
-  interval, FORMULE loads run by :func:`formula.program_value` and written
+  interval, formula loads run by :func:`formula.program_value` and written
   into the force in one pass per load (:func:`external_force_into`). The
   diagonal and full cases are two compiled specialisations of the same
   source (``mass_inverse.ndim`` is a compile-time constant). It stays a
@@ -72,7 +72,7 @@ def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, ar
     """The specialised DIFF_CENTRE loop on the engine's bundles. Compiled
     without reference counting (``_nrt=False``: nothing here allocates),
     so that the arrays handed to the inlined helpers cost nothing.
-    ``energy``: the ENERGIE bundle (:mod:`energy`), inactive without it."""
+    ``energy``: the energy balance's bundle (:mod:`energy`), inactive without it."""
     exc = model[LOADS]
     flags, params, rots, polars = (
         model[SHOCKS].flags,
@@ -138,7 +138,7 @@ def external_force_into(
 ):
     """out = Σ_e f_e(t) vector_e: :func:`forces.add_external_force` on a
     zeroed ``out``, the zeroing folded into the first load's pass (0.0 + x
-    as there) and the FORMULE programs run by :func:`formula.program_value`.
+    as there) and the formula programs run by :func:`formula.program_value`.
     Same operations in the same order: the same force to the last bit."""
     for e in range(vectors.shape[0]):
         if codes[e, 0] > 0:
@@ -216,7 +216,7 @@ def specialised_loop(
     (n_shocks, 2, 6) scratch for the support motion in the local frames.
     """
     n = q.shape[0]
-    balance = E.is_active(energy)  # ENERGIE: energy.after_step on the bundles
+    balance = E.is_active(energy)  # energy balance: energy.after_step on the bundles
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, out_t)
         if paused:

@@ -18,18 +18,18 @@ s_q = max(tol |q_n + α|, tol (|Δq| + α), ε), s_v likewise,
 accepts the step (err = 0.99). The factor 0.9 err^(-1/p) is bounded to
 [0.2, 5] (p = 4 for the 3(2) pair, 6 for the 5(4) pair, code_aster's
 exponents); the step is retried while err >= 1 and the new step stays
-above PAS_MINI (falling below PAS_MINI stops the run), and the next step
-is min(PAS_MAXI, factor dt). PAS_MINI == PAS_MAXI gives a fixed step.
+above its lower bound (falling below it stops the run), and the next step
+is min(upper bound, factor dt). Equal bounds give a fixed step.
 
 asterlite's guard (not in code_aster): the stages evaluate the shock
 forces explicitly, so an adaptive step never exceeds the stability limit
 of the stiffest damped shock (c·dt inside the tableau's real stability
 interval [-radius, 0], :func:`asterlite.dynamics.adapt_control.
-shock_damping_step`, inf without AMOR_NOR / AMOR_TAN). Without it a long
+shock_damping_step`, inf without normal or tangential shock damping). Without it a long
 free flight grows the step far beyond that limit; entering the contact,
 the first retries amplify the stages so much that the error grows as the
 step shrinks, and the rule above accepts a step that multiplies the energy
-(AMOR_NOR·dt/M ~ 70 at the contact entry: 20 times the initial energy).
+(c_n·dt/M ~ 70 at the contact entry: 20 times the initial energy).
 """
 
 from __future__ import annotations
@@ -144,7 +144,7 @@ HUGE = np.finfo(np.float64).max
 
 
 def prepare_with(tableau: Tableau, system, dt, options):
-    """(memory, adaptive); PAS_MINI/PAS_MAXI default to 1e-10/1e10 times PAS."""
+    """(memory, adaptive); the step's bounds default to 1e-10/1e10 times dt."""
     n = system.n_modes
     s = tableau.stages
     dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt

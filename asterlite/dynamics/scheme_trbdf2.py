@@ -26,7 +26,7 @@ the linear system, modal damping included (substituting ã = M⁻¹(F - K q_n
 - C v_n) makes the TR stage the trapezoidal rule on (q, v) and the BDF2
 stage the BDF2 rule, C v taken at the stage's own velocity): order 2 with
 or without damping. The first step is not: code_aster allocates
-DEPL/VITE/ACCE at index 2 on the first call of inttrbdf2 (intinivec fills
+displacement/velocity/acceleration at index 2 on the first call of inttrbdf2 (intinivec fills
 them with zeros), and both dtmacce(index 2) calls of that step evaluate
 the accelerations at q = 0, v = 0 instead of (q_0, v_0). Asterlite keeps
 that parity (rows Q_INDEX2/V_INDEX2 start at zero). With e = M⁻¹(K q_0 +
@@ -60,14 +60,14 @@ from asterlite.dynamics.forces import all_finite
 from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
-Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
+Q_INDEX2, V_INDEX2, A_INDEX2, DELTA_ROW, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
 VECTOR_ROWS = 8
 S_DT_BUILT, S_DIAGONAL, S_A1, S_A2 = range(4)
 N_SCALARS = 4
-GAMMA = 2.0 - math.sqrt(2.0)
-G1 = 1.0 / GAMMA / (2.0 - GAMMA)
-G2 = -((1.0 - GAMMA) ** 2) / GAMMA / (2.0 - GAMMA)
-G3 = (1.0 - GAMMA) / (2.0 - GAMMA)
+STAGE_FRACTION = 2.0 - math.sqrt(2.0)  # TR-BDF2's γ: the trapezoidal stage ends at t + γ dt
+G1 = 1.0 / STAGE_FRACTION / (2.0 - STAGE_FRACTION)
+G2 = -((1.0 - STAGE_FRACTION) ** 2) / STAGE_FRACTION / (2.0 - STAGE_FRACTION)
+G3 = (1.0 - STAGE_FRACTION) / (2.0 - STAGE_FRACTION)
 EPS = np.finfo(np.float64).eps
 
 
@@ -81,7 +81,7 @@ def prepare(system, dt, options):
 
 @njit(cache=True)
 def build_operators(rows, scalars, dt, n):
-    h = GAMMA * dt
+    h = STAGE_FRACTION * dt
     a1, a2 = 4.0 / (h * h), 2.0 / h
     scalars[S_A1], scalars[S_A2] = a1, a2
     mass = I.block(rows, VECTOR_ROWS, I.B_MASS, n)
@@ -112,8 +112,8 @@ def step(t, dt, index, state, memory, model):
     f1 = I.block(rows, VECTOR_ROWS, I.B_F1, n)
     f2 = I.block(rows, VECTOR_ROWS, I.B_F2, n)
     q2, v2, a2 = rows[Q_INDEX2], rows[V_INDEX2], rows[A_INDEX2]
-    delta, r_q, r_v, residual = rows[DELTA], rows[R_Q], rows[R_V], rows[RESIDUAL]
-    h = GAMMA * dt
+    delta, r_q, r_v, residual = rows[DELTA_ROW], rows[R_Q], rows[R_V], rows[RESIDUAL]
+    h = STAGE_FRACTION * dt
     # --- trapezoidal stage to t + h
     shock = evaluate(t + h, q2, v2, a2, f, residual, vint, work, model)
     if shock >= 0:

@@ -1,11 +1,11 @@
 """The GENE schemes of DYNA_VIBRA, each described once.
 
-One :class:`Scheme` per ``SCHEMA_TEMPS/SCHEMA`` value asterlite integrates:
+One :class:`Scheme` per scheme name asterlite integrates:
 the module that implements it (``prepare(system, dt, options) -> (memory,
 adaptive)`` and a compiled ``step``, which :mod:`asterlite.dynamics.loop`'s
 one time loop runs; DIFF_CENTRE and NEWMARK add a ``fast_loop``), the name
 of its compiled loop, and its properties as data. Every reader of a
-scheme name asks this table: the command (which schemes exist, VERI_PAS,
+scheme name asks this table: the command (which schemes exist, the step check,
 the fluid film, the warnings), the driver
 (:mod:`asterlite.dynamics.integrate`: module, loop, adaptivity), the loops
 shared by every scheme (:mod:`asterlite.dynamics.dispatch`: the integer
@@ -25,7 +25,7 @@ import importlib
 from dataclasses import dataclass, replace
 from types import ModuleType
 
-# code_aster's VERI_PAS: the step may not exceed this fraction of the shortest
+# code_aster's step check: the step may not exceed this fraction of the shortest
 # period (shock stiffness included), 1/10 for the schemes that say so
 VERI_PAS_FRACTION = 20.0
 VERI_PAS_FRACTION_IMPLICIT = 10.0
@@ -39,27 +39,28 @@ FULL_MATRICES = "{} (full matrices)"
 class Scheme:
     """One GENE scheme: where it lives and what it supports."""
 
-    name: str  # the SCHEMA value
+    name: str  # the scheme's name in the deck
     module: str  # the dotted name of its module
     kernel: str  # the name of its compiled loop (shared by schemes of one module)
     code: int  # its branch in the loops shared by every scheme (dispatch)
-    # VERI_PAS: PAS <= shortest period / step_fraction (the step advice of a
-    # failed run uses it too); step_checked False: VERI_PAS does not check it
+    # the step check: dt <= shortest period / step_fraction (the step advice of
+    # a failed run uses it too); step_checked False: the check skips it
     step_fraction: float = VERI_PAS_FRACTION
     step_checked: bool = True
     step_refused: bool = True  # above that limit: refused (else a warning only)
-    # PAS above the damped limit of its explicit velocity update is refused
+    # a step above the damped limit of its explicit velocity update is refused
     # (DIFF_CENTRE: about 1/(ξ ω), which the undamped period ignores)
     explicit_velocity: bool = False
-    # shock forces explicit in its stages: PAS above the stability limit of
+    # shock forces explicit in its stages: a step above the stability limit of
     # a shock's damping refused, the adaptive step kept below it
     explicit_stages: bool = False
-    adaptive: bool = False  # adapts its step when PAS_MINI != PAS_MAXI
-    # the apparent-frequency step control of ADAPT_ORDRE1/2 (steps kept at NMAX_ITER_PAS)
+    adaptive: bool = False  # adapts its step when its bounds differ
+    # the apparent-frequency step control of ADAPT_ORDRE1/2 (steps kept after
+    # the largest number of trials)
     frequency_control: bool = False
     # its velocity lags half a step (asterlite.dynamics.energy)
     staggered_velocity: bool = False
-    # LAME_FLUIDE: integrates fluid films; film_legacy: only as code_aster 10-12 ran it
+    # film: integrates fluid films; film_legacy: only as code_aster 10-12 ran it
     film: bool = False
     film_legacy: bool = False
     # code_aster 10-12's variant (asterlite.legacy.v15 ADAPT_ORDRE2_MDADAP):

@@ -1,4 +1,4 @@
-"""The step a transient can take: code_aster's VERI_PAS estimate (the
+"""The step a transient can take: code_aster's step check estimate (the
 shortest period, each mode stiffened by the shocks), the damped limit of
 an explicit velocity update, the stability limit of a shock's damping in
 explicit stages, and a round step to suggest in messages.
@@ -28,7 +28,7 @@ from asterlite.dynamics.model import (
 
 @dataclass(frozen=True)
 class StabilityLimit:
-    """What sets the shortest period of code_aster's VERI_PAS estimate.
+    """What sets the shortest period of code_aster's step check estimate.
 
     ``period`` is the shortest period (s); ``mode`` the 1-based index of
     the mode it belongs to (0 when no mode has a nonzero frequency); when a
@@ -72,7 +72,7 @@ class StabilityLimit:
 def stability_limit(system: LinearSystem, shocks: ShockSet) -> StabilityLimit:
     """Smallest period among the modes, each stiffened by every shock's normal
     and tangential stiffness on each of its shape components (code_aster's
-    VERI_PAS estimate), with what sets it (see :class:`StabilityLimit`)."""
+    step check estimate), with what sets it (see :class:`StabilityLimit`)."""
     omega = np.sqrt(system.omega2)
     masses = np.diag(system.mass)
     eps = np.finfo(float).eps * 1.0e5
@@ -134,7 +134,7 @@ def contact_limit(system: LinearSystem, shocks: ShockSet) -> StabilityLimit:
 def stability_period(system: LinearSystem, shocks: ShockSet) -> float:
     """Smallest period among the modes, each stiffened by every shock's normal
     and tangential stiffness on each of its shape components (code_aster's
-    VERI_PAS estimate); :func:`stability_limit` also says what sets it."""
+    step check estimate); :func:`stability_limit` also says what sets it."""
     return stability_limit(system, shocks).period
 
 
@@ -144,7 +144,7 @@ class DampedLimit:
     (v += dt a, then q += dt v) once damping is counted, and what sets it.
 
     For one mode of pulsation ω (stiffened as in :func:`stability_limit`)
-    and damping c per unit mass (modal 2 ξ ω, plus AMOR_NOR or AMOR_TAN
+    and damping c per unit mass (modal 2 ξ ω, plus the normal or tangential damping
     times the squared shape component over the modal mass), the update is
     stable while (ω dt)² + 2 c dt <= 4, i.e. dt <= 4 / (c + sqrt(c² + 4 ω²))
     (2/ω without damping, about 1/(ξ ω) for heavy damping). ``shock`` is
@@ -185,9 +185,9 @@ def explicit_step(omega2: float, damping: float) -> float:
 def damped_step_limit(system: LinearSystem, shocks: ShockSet) -> DampedLimit:
     """The damping-aware stability limit of the explicit DIFF_CENTRE update
     (see :class:`DampedLimit`): modal damping (diagonal terms) and each
-    shock's AMOR_NOR / AMOR_TAN with its RIGI_NOR / RIGI_TAN on each shape
+    shock's normal / tangential damping with its stiffness on each shape
     component of each mode. Without damping it is 2/ω = T/π, far above
-    VERI_PAS's T/20: it only binds for heavy damping (an equivalent reduced
+    the step check's T/20: it only binds for heavy damping (an equivalent reduced
     damping above about 3)."""
     omega2 = system.omega2
     masses = np.diag(system.mass)
@@ -237,11 +237,11 @@ def shock_damping_limit(
     system: LinearSystem, shocks: ShockSet, radius: float, modal: bool = True
 ) -> DampedLimit:
     """Largest step at which the explicit stages of an adaptive scheme stay
-    stable once a shock's AMOR_NOR / AMOR_TAN acts (what sets it, see
+    stable once a shock's normal or tangential damping acts (what sets it, see
     :class:`DampedLimit`), ``math.inf`` without shock damping.
 
     For each mode and each shape component of each damped shock, with
-    ω² stiffened by RIGI_NOR / RIGI_TAN and c the shock damping per unit
+    ω² stiffened by the shocks' normal / tangential stiffness and c the shock damping per unit
     mass (plus the modal damping when ``modal``: RUNGE_KUTTA_* treat it
     explicitly, DEVOGE implicitly), the step is ``radius / 2`` times
     :func:`explicit_step`: ``radius / c`` for a heavy damping, where the

@@ -7,7 +7,7 @@ in the folder :func:`asterlite.dynamics.kernel_cache_folder` names after
 the sources; the folders of older sources are deleted here); later
 processes load it in milliseconds. The engine keeps those combinations few
 and independent of the deck: one loop per scheme whatever its features
-(shocks, laws, loads, ENERGIE are runtime data of the same types), plus
+(shocks, laws, loads, energy balance are runtime data of the same types), plus
 DIFF_CENTRE's specialised loop on diagonal or full matrices, its general
 path, and the loops shared by every scheme (variable rotation speed,
 implicit shocks, fluid films). Running each of them once on a tiny problem
@@ -140,7 +140,7 @@ def tiny_loads(system, t_end: float, dt: float):
 def run_loop_kernel(name: str) -> None:
     """Run the loop ``name`` (a :data:`LOOPS` entry, as
     :func:`asterlite.dynamics.integrate.loop_kernel` names them) on a tiny
-    problem, with and without ENERGIE where the loop offers it."""
+    problem, with and without the energy balance where the loop offers it."""
     from asterlite.dynamics.integrate import SchemeOptions, integrate
 
     runs = {loop: entry.name for loop, entry in schemes.kernels().items()}
@@ -153,7 +153,7 @@ def run_loop_kernel(name: str) -> None:
     t_end, dt = 0.01, 1.0e-4
     rotation = tiny_rotation(system, t_end, dt) if name == schemes.ROTATING_LOOP else None
     options = SchemeOptions()
-    if name == LEGACY_ADAPT:  # mdadap: no energy balance, PAS_MAXI given
+    if name == LEGACY_ADAPT:  # mdadap: no energy balance, the step's upper bound given
         options = SchemeOptions(adapt_v11=True, dt_max=dt)
     energies = (False, True) if rotation is None and name != LEGACY_ADAPT else (False,)
     for energy in energies:
@@ -209,7 +209,7 @@ def warm_shared() -> None:
 
 
 def warm_film(adapt: bool = False) -> None:
-    """code_aster 10-14's LAME_FLUIDE loop (its own kernel), or with ``adapt``
+    """code_aster 10-14's fluid film loop (its own kernel), or with ``adapt``
     the film under code_aster 10-12's ADAPT_ORDRE2 (another one)."""
     from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
     from asterlite.dynamics.integrate import SchemeOptions

@@ -1,6 +1,6 @@
 """Localized nonlinearities of a modal transient other than DIS_CHOC.
 
-One module per COMPORTEMENT relation of DYNA_VIBRA (TRAN/GENE): a compiled
+One module per localized nonlinearity of DYNA_VIBRA (TRAN/GENE) other than the shock: a compiled
 force law working on local scalars and flat float64 arrays (parameters,
 internal variables in code_aster's archived layout), a frozen
 ``*Parameters`` record of the relation's data with named fields (the

@@ -31,7 +31,7 @@ from asterlite.dynamics.laws.tabulated import LawError
 from asterlite.dynamics.model import COMPONENTS, ShockSpec
 
 ROTATIONS = ("DRX", "DRY", "DRZ")
-# where a FORMULE of a displacement or velocity (RELA_EFFO_*) is tabulated:
+# where a formula of a displacement or velocity (RELA_EFFO_*) is tabulated:
 # 0 and ±10^-9..10^4 (linear formulas are reproduced to rounding)
 _LOG = np.logspace(-9.0, 4.0, 6001)
 FORMULA_SAMPLES = np.concatenate([-_LOG[::-1], [0.0], _LOG])
@@ -155,7 +155,7 @@ def law_spec(connection: LawConnection, basis, n_modes: int) -> ShockSpec:
     shares (nodes, shapes, title), then its :class:`Relation`'s ``build``."""
     relation = RELATIONS.get(connection.relation)
     if relation is None:
-        raise LawError(f"COMPORTEMENT RELATION={connection.relation!r} is not available")
+        raise LawError(f"no relation {connection.relation!r} is registered (connections.RELATIONS)")
     mesh = basis.numbering.mesh
     n1, n2 = connection.node_1, connection.node_2
     spec = ShockSpec(
@@ -247,7 +247,7 @@ def build_rotor_fiss(connection: LawConnection, spec: ShockSpec, mesh) -> None:
 
 @dataclass(frozen=True)
 class Relation:
-    """A relation of this package: its name (COMPORTEMENT's RELATION), its
+    """A relation of this package: its name (the relation's name in the deck), its
     module (``N_VINT``, ``VINT_NAMES``: the archived internal variables),
     its force's branch in the time loop (a code of ``laws.kernel``) and
     ``build(connection, spec, mesh)``, which completes the shock row (law

@@ -1,9 +1,10 @@
 """DIS_ECRO_TRAC: discrete element with a hardening force–displacement curve.
 
-FX = f(DX): axial law along the local x axis node 1 -> node 2 (isotropic
-hardening). FTAN = f(DTAN): the same law in the plane (y, z) orthogonal to
-the axis, with ECROUISSAGE='ISOTROPE' or 'CINEMATIQUE' (linear kinematic
-with the first hardening slope; the curve then has exactly 3 points).
+Axial force = f(axial elongation): the law along the local x axis node 1 ->
+node 2 (isotropic hardening). Tangential force = f(tangential displacement):
+the same law in the plane (y, z) orthogonal to the axis, with isotropic or
+linear kinematic hardening (linear kinematic with the first hardening
+slope; the curve then has exactly 3 points).
 
 The curve starts at (0, 0); its second point (dx0, fx0) is the elastic
 limit; slopes must decrease (code_aster's checks, EXCLU prolongations).
@@ -28,9 +29,10 @@ from numba import njit
 from asterlite.dynamics.laws import rk54
 from asterlite.dynamics.laws.discrete_hardening import C_DX0, C_FX0, C_KINEMATIC, C_N, N_Y
 from asterlite.dynamics.laws.tabulated import LawError
+from asterlite.errors import field as named
 
 # Parameters: law, controls, then the curve block read by discrete_hardening
-P_AXIAL = 0  # 1.0: FX (axial), 0.0: FTAN (transverse)
+P_AXIAL = 0  # 1.0: axial law, 0.0: transverse law
 P_ITER_MAX, P_RESI = 1, 2
 P_SCALES = 3  # error scales of the 14 unknowns (code_aster's choice)
 P_CURVE = P_SCALES + N_Y  # curve block: kinematic flag, fx0, dx0, n, x..., y...
@@ -106,7 +108,9 @@ def prepare_dis_ecro_trac(data: DisEcroTracParameters) -> np.ndarray:
     p[P_ITER_MAX] = int(data.max_iterations)
     p[P_RESI] = float(data.tolerance)
     if p[P_ITER_MAX] < 1 or p[P_RESI] <= 0.0:
-        raise LawError("DIS_ECRO_TRAC: ITER_INTE_MAXI must be >= 1 and RESI_INTE > 0")
+        raise LawError(
+            f"DIS_ECRO_TRAC: {named('max_iterations')} must be >= 1 and {named('tolerance')} > 0"
+        )
     fx0, dx0 = y[1], x[1]
     scales = np.empty(N_Y)
     scales[0:3] = fx0 / 10.0

@@ -102,7 +102,7 @@ def kinematics(s, q, v, params, rots, phis, two_nodes, out):
             d, w = node_motion(phis[s, node], q, v, i)
             gu[i] = d + params[s, drive + i]
             gx[i] = params[s, coord + i] - params[s, P_ORIGIN + i] + gu[i]
-            gu[i] -= params[s, P_ORIGIN + i]  # code_aster's gloloc(u, ORIG_OBST)
+            gu[i] -= params[s, P_ORIGIN + i]  # code_aster's gloloc(u, obstacle origin)
             gv[i] = w + params[s, drive + 3 + i]
         for i in range(3):
             out[node, i] = rots[s, i, 0] * gx[0] + rots[s, i, 1] * gx[1] + rots[s, i, 2] * gx[2]
@@ -149,7 +149,7 @@ def law_forces(t, q, v, flags, params, rots, phis, polars, laws, rphis, vint, wo
             for m in range(out.shape[0]):
                 out[m] += f * shape[c % 3, m]
             continue
-        if code == ROTOR_FISS:  # node 1 = NOEUD_D, node 2 = NOEUD_G
+        if code == ROTOR_FISS:  # node 1: the crack's right node, node 2: its left node
             dtx = node_motion(rphis[s, 1], q, v, 0)[0] - node_motion(rphis[s, 0], q, v, 0)[0]
             dty = node_motion(rphis[s, 1], q, v, 1)[0] - node_motion(rphis[s, 0], q, v, 1)[0]
             dtz = node_motion(rphis[s, 1], q, v, 2)[0] - node_motion(rphis[s, 0], q, v, 2)[0]

@@ -1,7 +1,7 @@
 """RELA_EFFO_VITE: a nodal force that is a function of a velocity component.
 
-Same as RELA_EFFO_DEPL with the velocity v of NOM_CMP (global frame, from
-the modal basis): F = FONCTION(v) on that component. Internal variables
+Same as RELA_EFFO_DEPL with the velocity v of the chosen component (global frame, from
+the modal basis): F = f(v) on that component. Internal variables
 (VINT1..VINT3): v, F, and 1 when F is non-zero.
 """
 

@@ -4,12 +4,12 @@ The crack lies between node D (node 1) and node G (node 2) of a rotor
 whose axis is x (``rot_axis`` = R_y(β) R_z(α), code_aster's nautical angles
 of neighbour(D) - neighbour(G), the rotor nodes next to the crack nodes:
 ``connections.rotor_frame``). The frame turns with the rotor:
-γ(t) = ANGL_ROTA(t) (radians, evaluated at the instant of each force
-evaluation) when the speed is variable (VITESSE_VARIABLE='OUI', where
-ANGL_INIT and VITE_ROTA play no part), else ANGL_INIT + Ω t, as code_aster's
+γ(t) = the user's angle function of time (radians, evaluated at the
+instant of each force evaluation) when the speed is variable (the initial
+angle and the constant speed then play no part), else γ0 + Ω t, as code_aster's
 force routine does; as in code_aster's rot3d, sin γ and cos γ below 1e-6 in
-magnitude count as 0. A DEFI_FONCTION ANGL_ROTA is packed with its points
-(linear interpolation, its PROL_*), a FORMULE runs as the kernels' formula
+magnitude count as 0. A tabulated angle function is packed with its points
+(linear interpolation, its prolongations), a formula runs as the kernels' formula
 program (:mod:`asterlite.dynamics.formula`): exact values at every instant,
 no sampling.
 With δθ = θ_G - θ_D (rotations, global) brought to the turning frame
@@ -18,7 +18,8 @@ With δθ = θ_G - θ_D (rotations, global) brought to the turning frame
 
     M = (0,  K(φ) δy + ½ K'(φ) δz,  K(φ) δz - ½ K'(φ) δy)
 
-(node G receives -M), with K = K_PHI and K' = DK_DPHI read at φ (radians).
+(node G receives -M), with the stiffness K and its derivative K' = dK/dφ
+the user's functions read at φ (radians).
 
 Internal variables (code_aster's order, VINT1..VINT3): the angle φ in
 degrees (code_aster 17: φ·180/π; versions up to 16 wrote φ·180/(2π)), then
@@ -35,10 +36,13 @@ from numba import njit
 
 from asterlite.dynamics.formula import STACK_DEPTH, formula_program, run_program
 from asterlite.dynamics.laws.tabulated import LawError, function_table, value
+from asterlite.errors import field as named
+
+ANGLE_FIELD = named("angle")
 
 P_VARIABLE_SPEED = 0  # γ from: CONSTANT_SPEED, ANGLE_TABLE or ANGLE_PROGRAM
 CONSTANT_SPEED, ANGLE_TABLE, ANGLE_PROGRAM = 0.0, 1.0, 2.0
-P_ANGLE0, P_SPEED = 1, 2  # ANGL_INIT (rad), rotation speed Ω (rad/s)
+P_ANGLE0, P_SPEED = 1, 2  # initial angle γ0 (rad), rotation speed Ω (rad/s)
 P_AT_K, P_AT_DK, P_AT_ANGLE = 3, 4, 5  # where the packed functions start (angle: -1 if none)
 HEADER = 6
 
@@ -74,17 +78,17 @@ def program_value(params, start, t):
 
 
 def pack_program(func, label: str) -> np.ndarray:
-    """[n, codes, constants] of a FORMULE of INST, or a LawError naming
+    """[n, codes, constants] of a formula of time, or a LawError naming
     what the kernels cannot run."""
     names = tuple(getattr(func, "NOM_PARA", ()) or ())
     if names != (TIME_PARAMETER,):
-        raise LawError(f"{label}: a formula of INST is expected, not of {names}")
+        raise LawError(f"{label}: a formula of {TIME_PARAMETER} is expected, not of {names}")
     program = formula_program(func)
     if program is None:
         raise LawError(
-            f"{label}: this FORMULE uses something the time loop cannot evaluate (a call "
-            "to another function or to a deck def): give it as a DEFI_FONCTION of INST or "
-            "with arithmetic and math functions only"
+            f"{label}: this formula uses something the time loop cannot evaluate (a call "
+            f"to another function or to a deck def): give it as a DEFI_FONCTION of "
+            f"{TIME_PARAMETER} or with arithmetic and math functions only"
         )
     codes, values = program
     return np.concatenate([[float(len(codes))], np.asarray(codes, dtype=float), values])
@@ -149,8 +153,8 @@ def prepare_rotor_fiss(
     header[P_SPEED] = float(rotation_speed)
     blocks = []
     for label, function in (
-        ("ROTOR_FISS/K_PHI", data.stiffness),
-        ("ROTOR_FISS/DK_DPHI", data.stiffness_derivative),
+        (f"ROTOR_FISS/{named('stiffness')}", data.stiffness),
+        (f"ROTOR_FISS/{named('stiffness_derivative')}", data.stiffness_derivative),
     ):
         if function is None:
             raise LawError(f"{label} is missing")
@@ -159,13 +163,15 @@ def prepare_rotor_fiss(
     if variable_speed:
         angle = data.angle
         if angle is None:
-            raise LawError("ROTOR_FISS: ANGL_ROTA (angle vs INST) is needed at variable speed")
-        if hasattr(angle, "VALE") and hasattr(angle, "evaluate"):  # a FORMULE
+            raise LawError(
+                f"ROTOR_FISS: {ANGLE_FIELD} (angle vs {TIME_PARAMETER}) is needed at variable speed"
+            )
+        if hasattr(angle, "VALE") and hasattr(angle, "evaluate"):  # a formula
             header[P_VARIABLE_SPEED] = ANGLE_PROGRAM
-            blocks.append(pack_program(angle, "ROTOR_FISS/ANGL_ROTA"))
+            blocks.append(pack_program(angle, f"ROTOR_FISS/{ANGLE_FIELD}"))
         else:
             header[P_VARIABLE_SPEED] = ANGLE_TABLE
-            blocks.append(function_table(angle, "ROTOR_FISS/ANGL_ROTA", para=TIME_PARAMETER))
+            blocks.append(function_table(angle, f"ROTOR_FISS/{ANGLE_FIELD}", para=TIME_PARAMETER))
     at = HEADER
     for slot, block in zip((P_AT_K, P_AT_DK, P_AT_ANGLE), blocks, strict=False):
         header[slot] = at

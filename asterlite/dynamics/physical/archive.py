@@ -36,7 +36,7 @@ class Archive:
 def archived_steps(times: np.ndarray, pas_arch: int, instants, precision: float, relative: bool):
     """Boolean mask over the step instants ``times`` (index 0 is the initial
     state): every ``pas_arch``-th step, the requested instants (within
-    PRECISION), the first and the last instant."""
+    precision), the first and the last instant."""
     n = times.size
     mask = np.zeros(n, dtype=bool)
     mask[0] = mask[-1] = True

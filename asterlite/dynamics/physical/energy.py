@@ -1,4 +1,4 @@
-"""Energy balance of a physical transient (DYNA_VIBRA PHYS ENERGIE=_F()),
+"""Energy balance of a physical transient (DYNA_VIBRA PHYS, when asked),
 as code_aster's enerca accumulates it after each step (op0048)::
 
     TRAV_EXT  += Δu · (F_n + F_{n+1}) / 2      work of the external loads

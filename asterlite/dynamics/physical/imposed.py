@@ -1,5 +1,5 @@
 """Imposed motion of a physical transient: kinematic relations (DDL_IMPO,
-LIAISON_DDL) of an EXCIT load multiplied by a function of time.
+LIAISON_DDL) of a load of the excitation multiplied by a function of time.
 
 code_aster (dlnew0) integrates the full vector of unknowns, the constrained
 DOFs included: their displacement is the imposed value at each step and
@@ -12,7 +12,7 @@ q alone if its force gains -Tᵀ (K w c_l + C w ċ_l + M w c̈_l), with (c_l,
 linear in the multipliers, so the scheme's recurrence runs on scalars, one
 per load, not on vectors.
 
-The state at the first instant is (c_l(t0), 0, 0): no ETAT_INIT gives the
+The state at the first instant is (c_l(t0), 0, 0): no initial state gives the
 constrained DOFs a velocity or acceleration, as code_aster's zero initial
 fields.
 """
@@ -44,8 +44,8 @@ class ImposedMotion:
 
 @dataclass
 class ScaledInTime:
-    """An EXCIT multiplier (FONC_MULT, or COEF_MULT: a float) times a
-    right-hand side given in time (AFFE_CHAR_MECA_F of INST)."""
+    """A load multiplier (a function, or a float coefficient) times a
+    right-hand side given in time (AFFE_CHAR_MECA_F of the time, ``INST``)."""
 
     scale: object
     value: object

@@ -17,13 +17,15 @@ import numpy as np
 
 from asterlite.dynamics import diagnosis as D
 from asterlite.dynamics.diagnosis import LIMIT
+from asterlite.dynamics.integrate import LOAD_ADVICE
+from asterlite.errors import field as named
 
 BLOCK = 512
 
 
 class NonFiniteState(FloatingPointError):
     """The state of a physical transient became non-finite; ``path``: the
-    keyword at fault below the command (``EXCIT[2]``, ``INCREMENT/PAS``)."""
+    problem field at fault, a mark the command words (:func:`asterlite.errors.field`)."""
 
     def __init__(self, message: str, path: str = ""):
         super().__init__(message)
@@ -33,7 +35,7 @@ class NonFiniteState(FloatingPointError):
 def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, modal=None) -> None:
     """``step(dt, F_{n+1}, q, v, a) -> (q, v, a)`` advanced over ``times``;
     ``monitor(t, F_{n+1}, q_n, v_n, q_{n+1}, v_{n+1})`` after each step
-    (the energy balance) when given. ``modal`` (AMOR_MODAL, a
+    (the energy balance) when given. ``modal`` (modal damping, a
     ``ModalDamping``): the step receives F_{n+1} - f_am(v_n), explicit in
     the velocity at the start of the step as code_aster's dlnew0."""
     if mask[0]:
@@ -83,16 +85,17 @@ def non_finite_state(system, t, t_good, step, q, v, a, archive) -> NonFiniteStat
         except Exception:  # a function refusing to be evaluated there: not finite
             multipliers.append(np.nan)
     vectors = [system.load_vector(load, t) for load in system.loads]
-    labels = [f"EXCIT[{e}]" for e in range(1, len(vectors) + 1)]
+    labels = [f"{named('excitation')}[{e}]" for e in range(1, len(vectors) + 1)]
     culprit = D.first_bad_load(multipliers, vectors, labels, t)
     described = D.state_text(q, v, a, unit="free DOF", qualifier="")
     if culprit is None:
-        culprit = D.Culprit((described or "the state") + " diverged", "INCREMENT/PAS", True)
-        advice = "try a smaller PAS, and check the stiffness, damping and loads"
+        step = named("grid.step")
+        culprit = D.Culprit((described or "the state") + " diverged", step, True)
+        advice = f"try a smaller {step}, and check the stiffness, damping and loads"
     else:
         if described:
             culprit.text += f", and then {described}"
-        advice = "check the function that defines it (FONC_MULT, COEF_MULT, the FORMULE)"
+        advice = LOAD_ADVICE
     last = archive.times[archive.count - 1] if archive.count else None
     when = D.when_text(t, t_good, step, last)
     return NonFiniteState(f"{when}: {culprit.text}; {advice}", culprit.path)
