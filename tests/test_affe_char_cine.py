@@ -26,7 +26,9 @@ def test_static_kinematic_equals_ddl_impo_and_closed_form():
     clamp_cine = run(session, "AFFE_CHAR_CINE", MODELE=model,
                      MECA_IMPO={"GROUP_NO": "A", "DX": 0.0, "DY": 0.0, "DZ": 0.0,
                                 "DRX": 0.0, "DRY": 0.0, "DRZ": 0.0})  # fmt: skip
-    lift_cine = run(session, "AFFE_CHAR_CINE", MODELE=model, MECA_IMPO={"GROUP_NO": "B", "DY": LIFT})
+    lift_cine = run(
+        session, "AFFE_CHAR_CINE", MODELE=model, MECA_IMPO={"GROUP_NO": "B", "DY": LIFT}
+    )
     assert clamp_cine.aster_type == "char_cine_meca"
     clamp = run(session, "AFFE_CHAR_MECA", MODELE=model,
                 DDL_IMPO={"GROUP_NO": "A", "LIAISON": "ENCASTRE"})  # fmt: skip
@@ -59,3 +61,75 @@ def test_unhonoured_forms_are_refused_by_name():
         run(session, "AFFE_CHAR_CINE", MODELE=model, EVOL_IMPO=object())
     with pytest.raises(UnsupportedError, match="TEMP"):
         run(session, "AFFE_CHAR_CINE", MODELE=model, MECA_IMPO={"TOUT": "OUI", "TEMP": 1.0})
+
+
+# ----------------------------------------------------------------------------- harmonic
+
+HARM_DECK = """DEBUT(CODE="OUI")
+MAIL = LIRE_MAILLAGE(FORMAT="ASTER")
+MODELE = AFFE_MODELE(MAILLAGE=MAIL, AFFE=_F(TOUT="OUI", PHENOMENE="MECANIQUE",
+                     MODELISATION="DIS_T"))
+CARA = AFFE_CARA_ELEM(MODELE=MODELE, DISCRET=(
+    _F(GROUP_MA="P2", CARA="M_T_D_N", VALE={M2}),
+    _F(GROUP_MA="P3", CARA="M_T_D_N", VALE={M3}),
+    _F(GROUP_MA="S12", CARA="K_T_D_L", VALE=({K1}, 1.0, 1.0)),
+    _F(GROUP_MA="S23", CARA="K_T_D_L", VALE=({K2}, 1.0, 1.0)),
+    _F(GROUP_MA="S12", CARA="A_T_D_L", VALE=({C1}, 0.0, 0.0)),
+    _F(GROUP_MA="S23", CARA="A_T_D_L", VALE=({C2}, 0.0, 0.0)),
+))
+GUIDE = AFFE_CHAR_MECA(MODELE=MODELE, DDL_IMPO=_F(TOUT="OUI", DY=0.0, DZ=0.0))
+BASE_CINE = AFFE_CHAR_CINE(MODELE=MODELE, MECA_IMPO=_F(GROUP_NO="N1", DX={U0}, DY=0.0, DZ=0.0))
+BASE_MECA = AFFE_CHAR_MECA(MODELE=MODELE, DDL_IMPO=_F(GROUP_NO="N1", DX={U0}))
+LF = DEFI_LIST_REEL(VALE={FREQS})
+RESU = {{}}
+for name, charges, cine in (("CINE", (GUIDE,), BASE_CINE), ("MECA", (GUIDE, BASE_MECA), None)):
+    RIGEL = CALC_MATR_ELEM(MODELE=MODELE, OPTION="RIGI_MECA", CARA_ELEM=CARA, CHARGE=charges)
+    MASEL = CALC_MATR_ELEM(MODELE=MODELE, OPTION="MASS_MECA", CARA_ELEM=CARA, CHARGE=charges)
+    AMOEL = CALC_MATR_ELEM(MODELE=MODELE, OPTION="AMOR_MECA", CARA_ELEM=CARA, CHARGE=charges)
+    NUM = NUME_DDL(MATR_RIGI=RIGEL)
+    if cine is None:
+        RIGI = ASSE_MATRICE(MATR_ELEM=RIGEL, NUME_DDL=NUM)
+        MASS = ASSE_MATRICE(MATR_ELEM=MASEL, NUME_DDL=NUM)
+        AMOR = ASSE_MATRICE(MATR_ELEM=AMOEL, NUME_DDL=NUM)
+        base = BASE_MECA
+    else:
+        RIGI = ASSE_MATRICE(MATR_ELEM=RIGEL, NUME_DDL=NUM, CHAR_CINE=cine)
+        MASS = ASSE_MATRICE(MATR_ELEM=MASEL, NUME_DDL=NUM, CHAR_CINE=cine)
+        AMOR = ASSE_MATRICE(MATR_ELEM=AMOEL, NUME_DDL=NUM, CHAR_CINE=cine)
+        base = cine
+    RESU[name] = DYNA_VIBRA(TYPE_CALCUL="HARM", BASE_CALCUL="PHYS", MATR_MASS=MASS,
+        MATR_RIGI=RIGI, MATR_AMOR=AMOR, LIST_FREQ=LF, NOM_CHAM="DEPL",
+        EXCIT=_F(CHARGE=base, COEF_MULT_C={COEF}))
+HCINE = RESU["CINE"]
+HMECA = RESU["MECA"]
+FIN()
+"""
+M2, M3, K1, K2, C1, C2, U0, COEF = 3.0, 1.5, 2.0e4, 1.0e4, 12.0, 4.0, 0.002, 2.0 - 0.5j
+FREQS = (2.0, 9.5, 17.0, 31.0)
+
+
+def test_harmonic_base_motion_equals_ddl_impo_and_closed_form(tmp_path):
+    from asterlite.io.export import describe_run
+    from asterlite.runtime.session import Session
+    from tests.test_harmonic import MESH
+
+    deck = HARM_DECK.format(M2=M2, M3=M3, K1=K1, K2=K2, C1=C1, C2=C2, U0=U0, COEF=COEF,
+                            FREQS=FREQS)  # fmt: skip
+    (tmp_path / "d.mail").write_text(MESH)
+    (tmp_path / "d.comm").write_text(deck)
+    export = tmp_path / "d.export"
+    export.write_text("P time_limit 300\nF comm d.comm D 1\nF mail d.mail D 20\n")
+    session = Session(describe_run(export), output_dir=tmp_path / "out")
+    session.run_all()
+    cine, meca = session.namespace["HCINE"], session.namespace["HMECA"]
+    mesh = cine.numbering.mesh
+    columns = [cine.numbering.dof_index(mesh.node_index[n], "DX") for n in ("N1", "N2", "N3")]
+    got = cine.fields["DEPL"][:, columns]
+    np.testing.assert_allclose(meca.fields["DEPL"][:, columns], got, rtol=1e-10)
+    base = U0 * COEF
+    for k, f in enumerate(FREQS):
+        w = 2 * np.pi * f
+        dynamic = np.array([[K1 + K2 + 1j * w * (C1 + C2) - w**2 * M2, -(K2 + 1j * w * C2)],
+                            [-(K2 + 1j * w * C2), K2 + 1j * w * C2 - w**2 * M3]])  # fmt: skip
+        exact = np.linalg.solve(dynamic, [(K1 + 1j * w * C1) * base, 0.0])
+        np.testing.assert_allclose(got[k], [base, *exact], rtol=1e-10)
