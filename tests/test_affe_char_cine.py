@@ -133,3 +133,56 @@ def test_harmonic_base_motion_equals_ddl_impo_and_closed_form(tmp_path):
                             [-(K2 + 1j * w * C2), K2 + 1j * w * C2 - w**2 * M3]])  # fmt: skip
         exact = np.linalg.solve(dynamic, [(K1 + 1j * w * C1) * base, 0.0])
         np.testing.assert_allclose(got[k], [base, *exact], rtol=1e-10)
+
+
+# ----------------------------------------------------------------------------- transient
+
+
+def _kinematic_oscillator(tmp_path, imposed: str, coefficient: float):
+    """sdld110a's base-driven oscillator of test_dynamics_physical_imposed,
+    its support moved by AFFE_CHAR_CINE(_F) eliminated from the matrices."""
+    from asterlite.runtime.runner import run_deck
+    from tests.test_dynamics_physical_imposed import DECK, MESH
+
+    deck = DECK.replace(
+        'CHAR = AFFE_CHAR_MECA_F(MODELE=MOD, DDL_IMPO=_F(GROUP_NO="P1", DX=MOTION, DY=ZERO))',
+        f'CHAR = {imposed}\nGUIDE = AFFE_CHAR_MECA(MODELE=MOD, DDL_IMPO=_F(GROUP_NO="P3", DY=0.0))',
+    ).replace("CHARGE=CHAR, NUME_DDL", "CHARGE=GUIDE, NUME_DDL")
+    deck = deck.replace(
+        "EXCIT=_F(CHARGE=CHAR, COEF_MULT=0.5)", f"EXCIT=_F(CHARGE=CHAR, COEF_MULT={coefficient})"
+    )
+    deck = deck.replace(
+        "DYNA = DYNA_VIBRA(",
+        'RIGI = ASSE_MATRICE(MATR_ELEM=CALC_MATR_ELEM(MODELE=MOD, CARA_ELEM=CARA, CHARGE=GUIDE, OPTION="RIGI_MECA"), NUME_DDL=NUME, CHAR_CINE=CHAR)\n'
+        'MASSE = ASSE_MATRICE(MATR_ELEM=CALC_MATR_ELEM(MODELE=MOD, CARA_ELEM=CARA, CHARGE=GUIDE, OPTION="MASS_MECA"), NUME_DDL=NUME, CHAR_CINE=CHAR)\n'
+        "DYNA = DYNA_VIBRA(",
+    )
+    (tmp_path / "d.comm").write_text(deck)
+    (tmp_path / "d.mail").write_text(MESH)
+    (tmp_path / "d.export").write_text("F comm d.comm D 1\nF mail d.mail D 20\nF libr f.txt R 30\n")
+    report = run_deck(tmp_path / "d.export", tmp_path / "out")
+    rows = [
+        line.split()
+        for line in (tmp_path / "out" / "f.txt").read_text().splitlines()
+        if line.strip() and line.split()[0][0] in "-0123456789"
+    ]
+    values = np.array(rows, dtype=float)
+    return report, values[:361, 0], values[:361, 1], values[361:, 1]
+
+
+def test_transient_support_motion_by_affe_char_cine_f(tmp_path):
+    report, times, d1, d3 = _kinematic_oscillator(
+        tmp_path,
+        'AFFE_CHAR_CINE_F(MODELE=MOD, MECA_IMPO=_F(GROUP_NO="P1", DX=MOTION, DY=ZERO))',
+        0.5,
+    )
+    np.testing.assert_allclose(d1, np.sin(2.0 * times), atol=1e-6)
+    assert np.abs(d3 - (2.0 * np.sin(times) - np.sin(2.0 * times)) / 3.0).max() < 1.0e-3
+    assert report.status == "PASS", report.message
+
+
+def test_transient_constant_imposed_value_is_scaled_by_coef_mult(tmp_path):
+    _, _, d1, _ = _kinematic_oscillator(
+        tmp_path, 'AFFE_CHAR_CINE(MODELE=MOD, MECA_IMPO=_F(GROUP_NO="P1", DX=0.25, DY=0.0))', 2.0
+    )
+    np.testing.assert_allclose(d1, 0.5, atol=1e-6)
