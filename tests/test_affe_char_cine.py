@@ -151,12 +151,12 @@ def _kinematic_oscillator(tmp_path, imposed: str, coefficient: float):
     deck = deck.replace(
         "EXCIT=_F(CHARGE=CHAR, COEF_MULT=0.5)", f"EXCIT=_F(CHARGE=CHAR, COEF_MULT={coefficient})"
     )
-    deck = deck.replace(
-        "DYNA = DYNA_VIBRA(",
-        'RIGI = ASSE_MATRICE(MATR_ELEM=CALC_MATR_ELEM(MODELE=MOD, CARA_ELEM=CARA, CHARGE=GUIDE, OPTION="RIGI_MECA"), NUME_DDL=NUME, CHAR_CINE=CHAR)\n'
-        'MASSE = ASSE_MATRICE(MATR_ELEM=CALC_MATR_ELEM(MODELE=MOD, CARA_ELEM=CARA, CHARGE=GUIDE, OPTION="MASS_MECA"), NUME_DDL=NUME, CHAR_CINE=CHAR)\n'
-        "DYNA = DYNA_VIBRA(",
+    assembled = "".join(
+        f"{name} = ASSE_MATRICE(NUME_DDL=NUME, CHAR_CINE=CHAR, MATR_ELEM=CALC_MATR_ELEM(\n"
+        f'    MODELE=MOD, CARA_ELEM=CARA, CHARGE=GUIDE, OPTION="{option}"))\n'
+        for name, option in (("RIGI", "RIGI_MECA"), ("MASSE", "MASS_MECA"))
     )
+    deck = deck.replace("DYNA = DYNA_VIBRA(", assembled + "DYNA = DYNA_VIBRA(")
     (tmp_path / "d.comm").write_text(deck)
     (tmp_path / "d.mail").write_text(MESH)
     (tmp_path / "d.export").write_text("F comm d.comm D 1\nF mail d.mail D 20\nF libr f.txt R 30\n")
