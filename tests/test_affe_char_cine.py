@@ -186,3 +186,11 @@ def test_transient_constant_imposed_value_is_scaled_by_coef_mult(tmp_path):
         tmp_path, 'AFFE_CHAR_CINE(MODELE=MOD, MECA_IMPO=_F(GROUP_NO="P1", DX=0.25, DY=0.0))', 2.0
     )
     np.testing.assert_allclose(d1, 0.5, atol=1e-6)
+
+
+def test_a_value_of_freq_is_refused_by_name():
+    session = FakeSession()
+    model, _, _ = beam_model(session, line_mesh(N_EL, LENGTH))
+    of_freq = run(session, "FORMULE", NOM_PARA="FREQ", VALE="1.0/FREQ")
+    with pytest.raises(UnsupportedError, match="FREQ"):
+        run(session, "AFFE_CHAR_CINE_F", MODELE=model, MECA_IMPO={"TOUT": "OUI", "DZ": of_freq})
