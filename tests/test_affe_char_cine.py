@@ -194,3 +194,28 @@ def test_a_value_of_freq_is_refused_by_name():
     of_freq = run(session, "FORMULE", NOM_PARA="FREQ", VALE="1.0/FREQ")
     with pytest.raises(UnsupportedError, match="FREQ"):
         run(session, "AFFE_CHAR_CINE_F", MODELE=model, MECA_IMPO={"TOUT": "OUI", "DZ": of_freq})
+
+
+def test_resoudre_with_cham_cine_lifts_the_eliminated_dofs():
+    from asterlite.concepts.assembly import NodalField
+
+    session = FakeSession()
+    model, field, cara = beam_model(session, line_mesh(N_EL, LENGTH))
+    kinematic = run(session, "AFFE_CHAR_CINE", MODELE=model, MECA_IMPO=[
+        {"GROUP_NO": "A", "DX": 0.0, "DY": 0.0, "DZ": 0.0, "DRX": 0.0, "DRY": 0.0, "DRZ": 0.0},
+        {"GROUP_NO": "B", "DY": LIFT}])  # fmt: skip
+    elementary = run(session, "CALC_MATR_ELEM", OPTION="RIGI_MECA", MODELE=model,
+                     CHAM_MATER=field, CARA_ELEM=cara)  # fmt: skip
+    numbering = run(session, "NUME_DDL", MATR_RIGI=elementary)
+    stiffness = run(session, "ASSE_MATRICE", MATR_ELEM=elementary, NUME_DDL=numbering,
+                    CHAR_CINE=kinematic)  # fmt: skip
+    stiffness = run(session, "FACTORISER", MATR_ASSE=stiffness)
+    values = run(session, "CALC_CHAR_CINE", NUME_DDL=numbering, CHAR_CINE=kinematic)
+    zero = NodalField(numbering=numbering, values=np.zeros(numbering.n_dofs))
+    lifted = run(session, "RESOUDRE", MATR=stiffness, CHAM_NO=zero, CHAM_CINE=values)
+    middle, tip = numbering.dof_indices([N_EL // 2, N_EL], "DY")
+    assert lifted.values[tip] == pytest.approx(LIFT, rel=1e-12)
+    assert lifted.values[middle] == pytest.approx(LIFT * 5.0 / 16.0, rel=1e-9)
+    # without CHAM_CINE the eliminated DOFs are zero, as in code_aster
+    rest = run(session, "RESOUDRE", MATR=stiffness, CHAM_NO=zero)
+    assert not np.any(rest.values)
