@@ -37,7 +37,9 @@ def impose(ctx, kw, evaluator=None):
         value_at = affe_char_meca.constant_value
         if evaluator is not None:
             value_at = evaluator(model, occ, in_time)
-        affe_char_meca._ddl_impo(ctx, model, components, load, occ, value_at=value_at)
+        affe_char_meca._ddl_impo(
+            ctx, model, components, load, occ, value_at=value_at, skip_absent=True
+        )
         for relation in load.relations[first:]:
             node, component, _ = relation.terms[0]
             relation.rhs_in_time = in_time.get((node, component))

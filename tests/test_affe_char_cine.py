@@ -219,3 +219,13 @@ def test_resoudre_with_cham_cine_lifts_the_eliminated_dofs():
     # without CHAM_CINE the eliminated DOFs are zero, as in code_aster
     rest = run(session, "RESOUDRE", MATR=stiffness, CHAM_NO=zero)
     assert not np.any(rest.values)
+
+
+def test_a_component_the_nodes_do_not_carry_is_passed_over():
+    # as code_aster's AFFE_CHAR_CINE (sslp113b imposes DRZ on a plane model)
+    session = FakeSession()
+    model, _, _ = beam_model(session, line_mesh(N_EL, LENGTH))
+    load = run(
+        session, "AFFE_CHAR_CINE", MODELE=model, MECA_IMPO={"GROUP_NO": "A", "GRX": 0.0, "DX": 0.0}
+    )
+    assert [r.terms[0][1] for r in load.relations] == ["DX"]
