@@ -36,9 +36,13 @@ def constant_value(raw, node: int, key: str) -> float:
     return float(raw)
 
 
-def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> None:
+def _ddl_impo(
+    ctx, model, components, load, occ, value_at=constant_value, skip_absent=False
+) -> None:
+    """``skip_absent``: a component a node does not carry is passed over
+    (AFFE_CHAR_CINE builds its field on the components that exist)."""
     mesh = model.mesh
-    everywhere = occ.get("TOUT") == "OUI"
+    everywhere = occ.get("TOUT") == "OUI" or skip_absent
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
     imposed = {c: occ[c] for c in _DDL_COMPONENTS if occ.get(c) is not None}
     given = {c for c in _DDL_COMPONENTS if occ.get(c) is not None}
@@ -74,7 +78,7 @@ def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> Non
             imposed_value = value_at(value, int(node), comp)
             load.relations.append(LinearRelation([(int(node), comp, 1.0)], imposed_value))
             applied += 1
-        if applied == 0 and comp not in optional:
+        if applied == 0 and comp not in optional and not skip_absent:
             ctx.error(f"no node of the selection carries {comp}", comp, occ)
 
 

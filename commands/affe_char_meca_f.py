@@ -46,6 +46,14 @@ def _evaluator(ctx, model, occ, in_time=None):
         if isinstance(function, (int, float)):
             return float(function)
         names = _parameters(function)
+        if "FREQ" in names:
+            # code_aster evaluates it at each frequency of a harmonic response
+            ctx.unsupported(
+                f"{ctx.command} {key}={function.name or 'function'} depends on FREQ (a value "
+                "varying with the frequency of a harmonic response)",
+                key,
+                occ,
+            )
         if "INST" in names and in_time is not None:
             unknown = [p for p in names if p not in _GEOMETRY and p not in ("INST", _CONSTANT)]
             if unknown:

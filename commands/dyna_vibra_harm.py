@@ -31,6 +31,7 @@ from asterlite.errors import NumericalError
 from asterlite.fem.loads import load_terms
 from asterlite.harmonic import HarmonicLoad, derived_fields
 from asterlite.harmonic import modal as modal_solver
+from asterlite.harmonic.fields import TWO_PI
 from asterlite.harmonic.loads import SweepLoads
 from asterlite.harmonic.modal import SingularSystem
 
@@ -257,6 +258,14 @@ def physical(ctx, kw, frequencies, names):
         if loads
         else np.zeros((frequencies.size, 0), dtype=complex)
     )
+    imposed = imposed_motion(ctx, kw, numbering, elimination, frequencies)
+    if imposed is not None:
+        # u = u_imposed + T q: the imposed part moves to the right-hand side
+        lift_vectors, lift_coefficients = lifting_loads(
+            *imposed, frequencies, stiffness_matrix, mass_matrix, kw.get("MATR_AMOR")
+        )
+        vectors = np.vstack([vectors.astype(complex), lift_vectors])
+        coefficients = np.hstack([coefficients, lift_coefficients])
     extra = result_excitations(ctx, kw, frequencies, numbering, numbering.n_dofs)
     if extra is not None:
         vectors = np.vstack([vectors, extra])
@@ -265,6 +274,8 @@ def physical(ctx, kw, frequencies, names):
         depl, info = physical_solver.solve(sweep, frequencies, vectors, coefficients)
     except SingularSystem as error:
         numerical_error(ctx, error)
+    if imposed is not None:
+        depl = depl + imposed[1] @ imposed[0].T
     hysteretic = isinstance(stiffness_matrix, ComplexAssembledMatrix)
     ctx.log(
         f"DYNA_VIBRA HARM PHYS: {frequencies.size} frequencies "
@@ -282,6 +293,48 @@ def physical(ctx, kw, frequencies, names):
         characteristics=kw.get("CARA_ELEM") or getattr(stiffness_matrix, "characteristics", None),
         mass_matrix=mass_matrix,
     )
+
+
+def imposed_motion(ctx, kw, numbering, elimination, frequencies):
+    """The displacements EXCIT CHARGE imposes (AFFE_CHAR_CINE, or DDL_IMPO
+    of a dualised load), each scaled by its occurrence's coefficient, as
+    code_aster scales the imposed values: (U (n_dofs, n_k), C (n_freq, n_k)),
+    the motion being C @ U.T; None when no occurrence imposes a value."""
+    row_of = {id(relation): row for row, relation in enumerate(numbering.relations)}
+    particulars, motions = [], []
+    for i, occ in enumerate(kw.factor("EXCIT")):
+        charge = occ.get("CHARGE")
+        if charge is None or not any(relation.rhs != 0.0 for relation in charge.relations):
+            continue
+        rhs = np.zeros(len(numbering.relations))
+        for relation in charge.relations:
+            row = row_of.get(id(relation))
+            if row is None:
+                ctx.error(
+                    "the values this load imposes are not among the constraints of the "
+                    "matrices: assemble them with it (ASSE_MATRICE CHAR_CINE, or the load "
+                    "in CALC_MATR_ELEM CHARGE)",
+                    "CHARGE",
+                    occ,
+                )
+            rhs[row] = relation.rhs
+        particulars.append(elimination.particular(rhs))
+        motions.append(harmonic_load(ctx, occ, None, f"EXCIT[{i + 1}]").coefficients(frequencies))
+    if not particulars:
+        return None
+    return np.column_stack(particulars), np.column_stack(motions)
+
+
+def lifting_loads(particular, motion, frequencies, stiffness, mass, damping):
+    """-(K + i w C - w^2 M) U c(f) as load vectors and their coefficients:
+    -K U with c, -C U with i w c, M U with w^2 c."""
+    omega = TWO_PI * np.asarray(frequencies, dtype=float)[:, None]
+    vectors = [-(stiffness.matrix @ particular).T, (mass.matrix @ particular).T]
+    coefficients = [motion, omega**2 * motion]
+    if damping is not None:
+        vectors.append(-(damping.matrix @ particular).T)
+        coefficients.append(1j * omega * motion)
+    return np.vstack(vectors).astype(complex), np.hstack(coefficients)
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
@@ -304,12 +357,10 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
                     "CHARGE",
                     occ,
                 )
-            if any(
-                abs(relation.rhs) > 0.0 or relation.rhs_in_time is not None
-                for relation in load.relations
-            ):
+            if any(relation.rhs_in_time is not None for relation in load.relations):
                 ctx.unsupported(
-                    "EXCIT CHARGE imposing non-zero displacements in a harmonic response",
+                    "EXCIT CHARGE imposing displacements given in time (INST) in a "
+                    "harmonic response",
                     "CHARGE",
                     occ,
                 )

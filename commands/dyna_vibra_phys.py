@@ -13,7 +13,7 @@ from asterlite.commands.dyna_vibra_words import TRANSIENT
 from asterlite.concepts.table import TableNotComputed
 from asterlite.concepts.transient import DynaTrans
 from asterlite.dynamics.physical.archive import Archive, archived_steps
-from asterlite.dynamics.physical.imposed import ScaledInTime
+from asterlite.dynamics.physical.imposed import ConstantInTime, ScaledInTime
 from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
 from asterlite.errors import NumericalError, worded
 from asterlite.fem.loads import load_history, load_terms
@@ -315,6 +315,9 @@ def physical_imposed_motion(ctx, kw, numbering, scheme):
         columns = []
         if function is not None and np.any(constant):
             columns.append((constant, function))
+        elif float(occ.get("COEF_MULT", 1.0)) != 1.0 and np.any(constant):
+            # code_aster scales the imposed values by COEF_MULT too
+            columns.append((constant, ConstantInTime(float(occ["COEF_MULT"]))))
         scale = function if function is not None else float(occ.get("COEF_MULT", 1.0))
         for value, rows in in_time.values():
             rhs = np.zeros(len(numbering.relations))

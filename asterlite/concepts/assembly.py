@@ -157,6 +157,16 @@ class MechanicalLoad(Concept):
 
 
 @dataclass(eq=False)
+class KinematicLoad(MechanicalLoad):
+    """``AFFE_CHAR_CINE``/``_F`` result: imposed values of DOFs (relations
+    with one term). code_aster eliminates these DOFs from the assembled
+    system instead of dualising them; asterlite applies them through the same
+    elimination as DDL_IMPO, which gives the same solution."""
+
+    aster_types = ("char_cine_meca",)
+
+
+@dataclass(eq=False)
 class ElementaryMatrices(Concept):
     """``CALC_MATR_ELEM`` result: element matrices of one option plus the loads
     whose kinematic relations come with them (code_aster's Lagrange terms)."""
@@ -218,6 +228,8 @@ class DofNumbering(Concept):
 
     def __post_init__(self) -> None:
         self.index = {dof: i for i, dof in enumerate(self.dofs)}
+        # the kinematic loads (AFFE_CHAR_CINE) whose values are in ``relations``
+        self.kinematic_loads: tuple = ()
 
     @property
     def n_dofs(self) -> int:
@@ -295,6 +307,32 @@ class DofNumbering(Concept):
             )
 
         return relation_matrix(self.relations, self.index, self.n_dofs)
+
+    def with_kinematic(self, loads) -> DofNumbering:
+        """This numbering with the imposed values of kinematic loads
+        (ASSE_MATRICE CHAR_CINE) added to its relations; the same loads give
+        the same numbering object, so the matrices assembled with them share it."""
+        fresh = [load for load in loads if not any(load is r for r in self.kinematic_loads)]
+        if not fresh:
+            return self
+        key = tuple(id(load) for load in fresh)
+        cache = self.__dict__.setdefault("_with_kinematic", {})
+        if key not in cache:
+            relations = list(self.relations)
+            for load in fresh:
+                relations.extend(load.relations)
+            derived = DofNumbering(
+                mesh=self.mesh,
+                dofs=self.dofs,
+                relations=relations,
+                model=self.model,
+                characteristics=self.characteristics,
+                materials=self.materials,
+            )
+            derived.name = self.name
+            derived.kinematic_loads = (*self.kinematic_loads, *fresh)
+            cache[key] = derived
+        return cache[key]
 
     def label(self, i: int) -> str:
         node, comp = self.dofs[i]
