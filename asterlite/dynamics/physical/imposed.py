@@ -80,8 +80,8 @@ def newmark_states(values: np.ndarray, times: np.ndarray, beta: float, gamma: fl
 
 @dataclass
 class ConstantInTime:
-    """COEF_MULT of an EXCIT load whose imposed values are constant: the
-    multiplier of their relations at every instant."""
+    """The constant coefficient of a load whose imposed values do not vary
+    in time: the multiplier of their relations at every instant."""
 
     value: float
 
