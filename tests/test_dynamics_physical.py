@@ -15,6 +15,7 @@ from asterlite.dynamics.physical import diff_centre, newmark
 from asterlite.dynamics.physical.archive import Archive, archived_steps
 from asterlite.dynamics.physical.system import Load, PhysicalSystem
 from asterlite.fem.constraints import eliminate
+from tests.validated import scheme_options
 
 
 def chain(n=3, k=1.0e4, m=2.0):
@@ -72,6 +73,7 @@ def test_phys_newmark_equals_gene_newmark_with_all_modes():
         dt,
         np.array([times[-1]]),
         1,
+        scheme_options("NEWMARK"),
     )
     # code_aster's GENE NEWMARK takes the first step's shock forces at zero,
     # without shocks the two schemes are the same linear recurrence
@@ -183,6 +185,7 @@ def test_mult_appui_support_motion_reaches_the_shock_node():
         1e-3,
         np.array([0.25, 0.5]),
         10**6,
+        scheme_options("DIFF_CENTRE"),
     )
     local_y = run.vint[:, 0, C.V_LOC1 + 1]
     rot = shocks.rots[0]
