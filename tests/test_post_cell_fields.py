@@ -53,3 +53,16 @@ def test_max_resultant_for_pipe_is_code_aster_rule():
                 assert out.getValue(cell, k, point, 0) == abs(history[best, k])
     with pytest.raises(CommandError):
         max_resultant_for_pipe(result, "SIEF_ELNO")
+
+
+def test_indexes_for_field_name_are_the_orders_storing_it():
+    """``getIndexesForFieldName``: every order for a nodal field, the orders
+    CALC_CHAMP computed for an element field, none for an absent field."""
+    from asterlite.post.deck_api import field_indexes
+
+    result, _ = result_with_field()
+    result.order = np.array([10, 20, 30, 40])
+    result.fields = {"DEPL": np.zeros((4, 3))}
+    assert field_indexes(result, "EFGE_ELNO") == [10, 20, 40]
+    assert field_indexes(result, " depl ") == [10, 20, 30, 40]
+    assert field_indexes(result, "SIEF_ELNO") == []

@@ -14,6 +14,9 @@
   results (the forces then balance the inertia distribution along each beam,
   so SN differs between its two nodes); SIEF_ELGA / EFGE_ELGA / SIEF_ELNO
   stay ``K_e u_e`` (code_aster computes them from the displacement alone);
+- ``POU_D_TG``: EFGE_ELNO only, N VY VZ MT MFY MFZ and the bimoment BX,
+  ``K_e u_e`` less EXCIT's line loads, never with inertia (code_aster's
+  ef0344);
 - ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
   cells sharing it (code_aster's nodal smoothing);
 - discrete elements (``DIS_T``, ``DIS_TR``, ``2D_DIS_T``, ``2D_DIS_TR``):
