@@ -14,7 +14,9 @@ instant before INST_CC_FIN), linear in between and constant outside. An
 occurrence that starts where the first one ends continues the first one's
 wave (tau keeps counting from the first start); any other starts a new short
 circuit (tau from its INST_CC_INIT), with a zero at the previous end. The
-table ends with a zero two steps after its last instant.
+table ends with a zero two steps after its last instant. (COUR_PRIN and
+INTC_CC_*, which code_aster 17 cannot compute, are not in asterlite's
+catalogue: see asterlite.catalogues.defi_fonc_elec.)
 """
 
 from __future__ import annotations
@@ -45,29 +47,7 @@ def _averaged(t, i1, i2, start, phi1, phi2, tau1, tau2) -> float:
     return _COEF * i1 * i2 * (decay + 0.5 * cos(a2 - a1))
 
 
-def _refuse_forms(ctx, kw) -> None:
-    if kw.factor("COUR_PRIN"):
-        # its list of values holds one value for all the instants it lists
-        ctx.unsupported(
-            "DEFI_FONC_ELEC/COUR_PRIN (and COUR_SECO): code_aster 17's own macro-command "
-            "ends in an IndexError for any input of this form, so there is no behaviour "
-            "to reproduce; give the currents with COUR",
-            "COUR_PRIN",
-            kw,
-        )
-    for occ in kw.factor("COUR"):
-        for index in (1, 2):
-            if occ.get(f"INTC_CC_{index}") is not None:
-                ctx.unsupported(
-                    f"DEFI_FONC_ELEC/COUR/INTC_CC_{index}: code_aster 17 computes the "
-                    f"current with PHI_CC_{index} only (its macro-command fails without it)",
-                    f"INTC_CC_{index}",
-                    occ,
-                )
-
-
 def run(ctx, kw):
-    _refuse_forms(ctx, kw)
     freq = float(kw.get("FREQ", 50.0))
     if freq <= 0.0:
         ctx.error("FREQ must be positive", "FREQ", kw)
