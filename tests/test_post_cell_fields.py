@@ -61,8 +61,12 @@ def test_indexes_for_field_name_are_the_orders_storing_it():
     from asterlite.post.deck_api import field_indexes
 
     result, _ = result_with_field()
-    result.order = np.array([10, 20, 30, 40])
-    result.fields = {"DEPL": np.zeros((4, 3))}
+    result.getIndexes = lambda: [10, 20, 30, 40]
+    result.fields = {"DEPL": np.zeros((4, 3)), "VITE": np.zeros((4, 3))}
     assert field_indexes(result, "EFGE_ELNO") == [10, 20, 40]
-    assert field_indexes(result, " depl ") == [10, 20, 30, 40]
+    assert field_indexes(result, " vite ") == [10, 20, 30, 40]
     assert field_indexes(result, "SIEF_ELNO") == []
+    # a modal basis: its shapes are the DEPL of every mode
+    modes = SimpleNamespace(getIndexes=lambda: [1, 2], element_fields={})
+    assert field_indexes(modes, "DEPL") == [1, 2]
+    assert field_indexes(modes, "VITE") == []

@@ -183,14 +183,17 @@ def field_indexes(result, name: str) -> list[int]:
     result stores the field (an element field CALC_CHAMP computed at some
     orders only is stored at those)."""
     name = str(name).strip().upper()
-    if name in result.fields:
-        return [int(o) for o in result.order]
+    order = result.getIndexes()
+    # a modal basis holds its shapes as DEPL
+    nodal = getattr(result, "fields", None) or {"DEPL": None}
+    if name in nodal:
+        return [int(o) for o in order]
     field = (getattr(result, "element_fields", None) or {}).get(name)
     if field is None:
         return []
     values = np.asarray(field.values)
     stored = ~np.all(np.isnan(values.reshape(values.shape[0], -1)), axis=1)
-    return [int(o) for o, kept in zip(result.order, stored, strict=True) if kept]
+    return [int(o) for o, kept in zip(order, stored, strict=True) if kept]
 
 
 def _position(result, name: str, value, para: str) -> int:
