@@ -1,6 +1,6 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
 LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
-and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP,
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_ELEC; FORCE_FACE, PRES_REP,
 FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
 
@@ -11,6 +11,7 @@ import numpy as np
 from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
 from asterlite.fem.elements import ElementError
 from asterlite.fem.frames import rotation_from_angles
+from asterlite.fem.laplace_force import DIRECT, DIST, FINITE, INFINITE, TRANS, SecondConductor
 from asterlite.fem.node_normals import node_normals
 from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.selection import (
@@ -426,6 +427,47 @@ def _force_poutre(ctx, model, load, occ) -> None:
     )
 
 
+#: the modelisations whose elements compute the Laplace force (code_aster's
+#: CHAR_MECA_FRELEC; its POU_D_EM and POU_D_TGM are not asterlite's)
+_CONDUCTORS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+
+
+def _point(occ, key) -> tuple[float, float, float]:
+    values = [float(v) for v in as_tuple(occ.get(key))]
+    # code_aster reads three values; fewer leave the others at zero
+    return tuple(values + [0.0] * (3 - len(values)))[:3]
+
+
+def _second_conductor(occ) -> SecondConductor:
+    position = occ.get("POSITION")
+    if position is None:
+        return SecondConductor(DIRECT, tuple(float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")))
+    if position == "PARA":
+        if occ.get("DIST") is not None:
+            return SecondConductor(DIST, (float(occ["DIST"]), 0.0, 0.0), _point(occ, "POINT2"))
+        return SecondConductor(TRANS, _point(occ, "TRANS"))
+    kind = INFINITE if position == "INFI" else FINITE
+    return SecondConductor(kind, _point(occ, "POINT1"), _point(occ, "POINT2"))
+
+
+def _force_elec(ctx, model, load, occ) -> None:
+    """The second conductor of each beam cell; a later occurrence replaces an
+    earlier one on the cells they share (code_aster fills one map of values
+    per cell). Cells of other elements carry no Laplace force, as in
+    code_aster, whose other elements do not compute it."""
+    cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    conductor = _second_conductor(occ)
+    on_cells = load.extra.setdefault("FORCE_ELEC", {})
+    skipped = 0
+    for cell in cells:
+        if model.cell_modelisation.get(int(cell)) in _CONDUCTORS:
+            on_cells[int(cell)] = conductor
+        else:
+            skipped += 1
+    if skipped:
+        ctx.log(f"FORCE_ELEC: {skipped} cells are not beams and carry no Laplace force")
+
+
 def _force_nodale(ctx, model, components, load, occ, value_at=constant_value) -> None:
     mesh = model.mesh
     if occ.get("ANGL_NAUT") is not None:
@@ -555,6 +597,7 @@ _OCCURRENCE_READERS = (
         "FORCE_POUTRE",
         lambda ctx, model, _components, load, occ: _force_poutre(ctx, model, load, occ),
     ),
+    ("FORCE_ELEC", lambda ctx, model, _components, load, occ: _force_elec(ctx, model, load, occ)),
     ("LIAISON_ELEM", _liaison_elem),
     ("FACE_IMPO", _face_impo),
     ("LIAISON_GROUP", _liaison_group),

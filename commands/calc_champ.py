@@ -49,7 +49,7 @@ from asterlite.post.nodal_forces import (
 )
 from asterlite.post.restitution import selection_from_keywords
 
-_BEAMS = ("POU_D_E", "POU_D_T")
+_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
 _BARS = ("BARRE", "2D_BARRE")
 
 
@@ -405,7 +405,9 @@ def run(ctx, kw):
             _discrete_fields(ctx, kw, result, model, characteristics, discrete, names)
             return result
         if not beams.size:
-            ctx.unsupported("CALC_CHAMP on a model without POU_D_E / POU_D_T cells", None, kw)
+            ctx.unsupported(
+                "CALC_CHAMP on a model without POU_D_E / POU_D_T / POU_D_TG cells", None, kw
+            )
         if characteristics is None:
             ctx.error("beam fields need CARA_ELEM", "CARA_ELEM", kw)
         elno = sorted({n.replace("_NOEU", "_ELNO") for n in names})

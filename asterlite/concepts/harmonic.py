@@ -15,6 +15,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.base import Concept
+from asterlite.post.deck_api import field_indexes
 
 HARMONIC_FIELDS = ("DEPL", "VITE", "ACCE")
 
@@ -67,7 +68,7 @@ class DynaHarmo(Concept):
     """
 
     aster_types = ("dyna_harmo", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getIndexes", "getFrequencies"})
+    deck_methods = frozenset({"getName", "getIndexes", "getIndexesForFieldName", "getFrequencies"})
 
     numbering: DofNumbering
     frequencies: np.ndarray
@@ -91,3 +92,6 @@ class DynaHarmo(Concept):
 
     def getFrequencies(self) -> list[float]:  # noqa: N802
         return [float(f) for f in self.frequencies]
+
+    def getIndexesForFieldName(self, name) -> list[int]:  # noqa: N802
+        return field_indexes(self, name)

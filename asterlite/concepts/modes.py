@@ -12,7 +12,7 @@ from asterlite.concepts.assembly import AssembledMatrix, DofNumbering
 from asterlite.concepts.base import Concept
 from asterlite.concepts.numpy_api import dense_copy, replaced_values
 from asterlite.errors import DeckRuntimeError
-from asterlite.post.deck_api import mode_field, set_result_mesh
+from asterlite.post.deck_api import field_indexes, mode_field, set_result_mesh
 
 
 @dataclass(eq=False)
@@ -39,7 +39,16 @@ class ModeResult(Concept):
     """
 
     aster_types = ("mode_meca", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getField", "getIndexes", "getNumberOfModes", "setMesh"})
+    deck_methods = frozenset(
+        {
+            "getName",
+            "getField",
+            "getIndexes",
+            "getIndexesForFieldName",
+            "getNumberOfModes",
+            "setMesh",
+        }
+    )
 
     numbering: DofNumbering
     shapes: np.ndarray
@@ -65,6 +74,9 @@ class ModeResult(Concept):
 
     def getIndexes(self) -> list[int]:  # noqa: N802
         return list(range(1, self.n_modes + 1))
+
+    def getIndexesForFieldName(self, name) -> list[int]:  # noqa: N802
+        return field_indexes(self, name)
 
     def getNumberOfModes(self) -> int:  # noqa: N802
         return int(self.n_modes)

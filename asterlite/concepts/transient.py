@@ -14,6 +14,7 @@ from asterlite.concepts.modes import ModeResult
 from asterlite.post.deck_api import (
     archived_instants,
     axial_force,
+    field_indexes,
     generalized_values,
     info_nonl,
     normal_force,
@@ -194,7 +195,9 @@ class DynaTrans(Concept):
     """
 
     aster_types = ("dyna_trans", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getField", "getIndexes", "getTimes", "setMesh"})
+    deck_methods = frozenset(
+        {"getName", "getField", "getIndexes", "getIndexesForFieldName", "getTimes", "setMesh"}
+    )
 
     numbering: DofNumbering
     times: np.ndarray
@@ -219,6 +222,9 @@ class DynaTrans(Concept):
 
     def getIndexes(self) -> list[int]:  # noqa: N802
         return [int(o) for o in self.order]
+
+    def getIndexesForFieldName(self, name) -> list[int]:  # noqa: N802
+        return field_indexes(self, name)
 
     def getTimes(self) -> list[float]:  # noqa: N802
         return [float(t) for t in self.times]

@@ -225,6 +225,36 @@ def beam_inertia_forces(
     )
 
 
+#: Components of POU_D_TG's EFGE_ELNO: the bimoment BX after the six others.
+WARPING_EFGE_COMPONENTS = EFGE_COMPONENTS + ("BX",)
+
+
+def warping_beam_forces(model, characteristics, materials, cells, displacements) -> np.ndarray:
+    """(n_orders, n_cells, 2, 7) EFGE_ELNO of POU_D_TG cells from their
+    (n_orders, n_cells, 14) global-frame DOFs (DX..DRZ, GRX of each node):
+    ``K_local u_local`` with node 1's sign reversed, components N VY VZ MT
+    MFY MFZ BX. code_aster's element (ef0344) adds no inertia, whatever the
+    result."""
+    mesh = model.mesh
+    cells = np.asarray(cells, dtype=int)
+    sections = characteristics.sections if characteristics is not None else {}
+    props = _material_values(materials, cells, "POU_D_TG", need_density=False)
+    angles = cell_angles(model, characteristics, cells)
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    rot = beam.element_rotation(beam.rotation_from_angles(angles), 7)
+    u_local = np.einsum("eij,oej->oei", rot, displacements)
+    f = np.zeros_like(u_local)
+    for k, cell in enumerate(cells):
+        k_local = beam.local_matrices(
+            "POU_D_TG", "K", lengths[k], sections[int(cell)], props["E"][k], props["NU"][k]
+        )[0]
+        f[:, k, :] = u_local[:, k, :] @ k_local.T
+    out = f.reshape(f.shape[:-1] + (2, 7)).copy()
+    out[..., 0, :] *= -1.0
+    return out
+
+
 #: Components of SIPM_ELNO.
 SIPM_COMPONENTS = ("SIXXMIN", "SIXXMAX")
 

@@ -14,6 +14,8 @@ Terms are ``(node, component, value)`` triples summed by
   the consistent nodal loads of the cubic beam (uniform: ``q L / 2`` forces,
   ``q L^2 / 12`` end moments, distributed bending moments ``m`` giving ``-/+ m``
   forces).
+- FORCE_ELEC: Laplace forces on beam conductors
+  (:mod:`asterlite.fem.laplace_force`), in the global frame.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from asterlite.errors import CommandError
 from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.laplace_force import laplace_vectors
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
 from asterlite.fem.plane_wave import plane_wave_history
 from asterlite.fem.plate_elements import plate_gravity_terms
@@ -340,6 +343,33 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
                 item.get("VALUES_2"),
             )
         )
+    terms.extend(laplace_force_terms(model, load.extra.get("FORCE_ELEC")))
     terms.extend(solid_load_terms(model.mesh, load.extra))
     terms.extend(plane_load_terms(model, load.extra))
+    return terms
+
+
+_BEAM_FORCES_MOMENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+
+
+def laplace_force_terms(model, on_cells) -> list:
+    """Nodal terms of FORCE_ELEC: ``on_cells`` maps each beam cell to its
+    second conductor (a warping DOF, POU_D_TG's GRX, gets nothing)."""
+    if not on_cells:
+        return []
+    mesh = model.mesh
+    by_conductor: dict = {}
+    for cell, conductor in on_cells.items():
+        by_conductor.setdefault(conductor, []).append(int(cell))
+    coords = np.asarray(mesh.coords, dtype=float)
+    if coords.shape[1] < 3:
+        coords = np.pad(coords, ((0, 0), (0, 3 - coords.shape[1])))
+    terms = []
+    for conductor, cells in by_conductor.items():
+        conn = np.array([mesh.cell_nodes[c][:2] for c in cells], dtype=int)
+        names = [mesh.cell_names[c] for c in cells]
+        vectors = laplace_vectors(coords[conn[:, 0]], coords[conn[:, 1]], conductor, names)
+        nodes = np.repeat(conn, 6, axis=1).ravel()
+        comps = list(_BEAM_FORCES_MOMENTS) * (2 * len(cells))
+        terms.extend(zip(nodes.tolist(), comps, vectors.ravel().tolist(), strict=True))
     return terms

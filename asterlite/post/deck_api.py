@@ -178,6 +178,24 @@ def transient_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> 
     return FieldValues(result.numbering, np.array(result.fields[name][position], dtype=float))
 
 
+def field_indexes(result, name: str) -> list[int]:
+    """``result.getIndexesForFieldName(name)``: the NUME_ORDRE at which the
+    result stores the field (an element field CALC_CHAMP computed at some
+    orders only is stored at those)."""
+    name = str(name).strip().upper()
+    order = result.getIndexes()
+    # a modal basis holds its shapes as DEPL
+    nodal = getattr(result, "fields", None) or {"DEPL": None}
+    if name in nodal:
+        return [int(o) for o in order]
+    field = (getattr(result, "element_fields", None) or {}).get(name)
+    if field is None:
+        return []
+    values = np.asarray(field.values)
+    stored = ~np.all(np.isnan(values.reshape(values.shape[0], -1)), axis=1)
+    return [int(o) for o, kept in zip(order, stored, strict=True) if kept]
+
+
 def _position(result, name: str, value, para: str) -> int:
     if value is None:
         return len(result.order) - 1
