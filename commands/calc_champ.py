@@ -37,6 +37,7 @@ from asterlite.fem.element_fields import (
     nodal_average,
 )
 from asterlite.fem.elements import ElementError
+from asterlite.fem.fibre_fields import multifibre_stresses
 from asterlite.fem.loads import beam_element_loads, load_terms
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
@@ -128,6 +129,38 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
     _keep_selected_orders(ctx, kw, result, fields)
     result.element_fields.update(fields)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
+
+
+def _multifibre_fields(ctx, kw, result, model, characteristics, materials, cells, names) -> None:
+    """SIEF_ELGA (fibre stresses SIXX) of POU_D_EM cells; a model where they
+    are mixed with other element families is refused."""
+    other = [n for n in names if n != "SIEF_ELGA"]
+    if other:
+        keyword = next(
+            k
+            for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE", "CRITERES")
+            if other[0] in as_tuple(kw.get(k))
+        )
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of multifibre beams (SIEF_ELGA)", keyword, kw)
+    mixed = sorted({m for c, m in model.cell_modelisation.items() if m != "POU_D_EM"})
+    if mixed:
+        ctx.unsupported(
+            f"CALC_CHAMP on POU_D_EM cells mixed with {', '.join(mixed)} cells", "CONTRAINTE", kw
+        )
+    values = _nodal_values(ctx, result, kw)
+    try:
+        field = multifibre_stresses(
+            model, characteristics, materials, result.numbering, cells, values
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    fields = {"SIEF_ELGA": field}
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    ctx.log(
+        f"CALC_CHAMP SIEF_ELGA on {cells.size} multifibre cells "
+        f"({field.sub_points} fibres at most), {values.shape[0]} orders"
+    )
 
 
 def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
@@ -391,6 +424,15 @@ def run(ctx, kw):
         bars = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _BARS], dtype=int
         )
+        multifibre = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) == "POU_D_EM"],
+            dtype=int,
+        )
+        if multifibre.size:
+            _multifibre_fields(
+                ctx, kw, result, model, characteristics, materials, multifibre, names
+            )
+            return _cham_utils(ctx, kw, result)
         solids = solid_cells_of(model, candidates)
         if solids.size and not beams.size and not bars.size:
             _solid_fields(ctx, kw, result, model, materials, solids, names)
