@@ -51,6 +51,8 @@ from asterlite.post.nodal_forces import (
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
+#: what CALC_CHAMP computes on multifibre beams (POU_D_EM)
+_MULTIFIBRE_OPTIONS = ("SIEF_ELGA", "EFGE_ELNO", "EFGE_NOEU")
 _BARS = ("BARRE", "2D_BARRE")
 
 
@@ -131,17 +133,9 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
 
 
-def _multifibre_fields(ctx, kw, result, model, characteristics, materials, cells, names) -> None:
+def _multifibre_fields(ctx, kw, result, model, characteristics, materials, cells) -> None:
     """SIEF_ELGA (fibre stresses SIXX) of POU_D_EM cells; a model where they
     are mixed with other element families is refused."""
-    other = [n for n in names if n != "SIEF_ELGA"]
-    if other:
-        keyword = next(
-            k
-            for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE", "CRITERES")
-            if other[0] in as_tuple(kw.get(k))
-        )
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of multifibre beams (SIEF_ELGA)", keyword, kw)
     mixed = sorted({m for c, m in model.cell_modelisation.items() if m != "POU_D_EM"})
     if mixed:
         ctx.unsupported(
@@ -243,6 +237,8 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
     convention of the internal forces; None without EXCIT."""
 
     occurrences = kw.factor("EXCIT")
+    if not occurrences and "evol_elas" in getattr(result, "aster_types", ()):
+        return _static_result_loads(ctx, kw, result, model, characteristics, beams, n_orders)
     if not occurrences:
         return None
     times = getattr(result, "times", None)
@@ -269,6 +265,26 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
         except ElementError as exc:
             ctx.unsupported(str(exc), "CHARGE", occ)
         total += coefficients[:, None, None, None] * section_forces(local)[None]
+    return total
+
+
+def _static_result_loads(ctx, kw, result, model, characteristics, beams, n_orders):
+    """Without EXCIT, code_aster takes the loads of a MECA_STATIQUE result off
+    the beams' internal forces: its FORCE_POUTRE loads here (None if none)."""
+    total = None
+    for load, mult in getattr(result, "loads", ()):
+        if not load.extra.get("FORCE_POUTRE"):
+            continue
+        if callable(mult):
+            coefficients = np.array([float(mult(float(t))) for t in result.times])
+        else:
+            coefficients = np.full(n_orders, float(mult))
+        try:
+            local = beam_element_loads(model, characteristics, beams, load)
+        except ElementError as exc:
+            ctx.unsupported(f"{exc} (the loads of the static result)", "RESULTAT", kw)
+        term = coefficients[:, None, None, None] * section_forces(local)[None]
+        total = term if total is None else total + term
     return total
 
 
@@ -429,10 +445,21 @@ def run(ctx, kw):
             dtype=int,
         )
         if multifibre.size:
-            _multifibre_fields(
-                ctx, kw, result, model, characteristics, materials, multifibre, names
-            )
-            return _cham_utils(ctx, kw, result)
+            other = [n for n in names if n not in _MULTIFIBRE_OPTIONS]
+            if other:
+                keyword = next(k for k, n in requested if n == other[0])
+                ctx.unsupported(
+                    f"CALC_CHAMP {other[0]} of multifibre beams ({', '.join(_MULTIFIBRE_OPTIONS)})",
+                    keyword,
+                    kw,
+                )
+            if "SIEF_ELGA" in names:
+                _multifibre_fields(ctx, kw, result, model, characteristics, materials, multifibre)
+            names = [n for n in names if n != "SIEF_ELGA"]
+            if not names:
+                return _cham_utils(ctx, kw, result)
+            # their generalised forces: K u (+ M a) of the fibre-integrated element
+            beams = np.union1d(beams, multifibre).astype(int)
         solids = solid_cells_of(model, candidates)
         if solids.size and not beams.size and not bars.size:
             _solid_fields(ctx, kw, result, model, materials, solids, names)

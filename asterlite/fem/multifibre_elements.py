@@ -74,6 +74,32 @@ def _cell_section(model, characteristics, materials, cell: int):
     return young_sum, rho_sum, float(shear) * float(section["JX"]), alpha, beta
 
 
+def local_matrix(
+    model, characteristics, materials, cell: int, length: float, matrix: str, lumped=False
+):
+    """12x12 local matrix K, M (MASS_MECA_DIAG with ``lumped``) or A of one
+    POU_D_EM cell of length ``length``."""
+    name = model.mesh.cell_names[cell]
+    young_sum, rho_sum, gj, alpha, beta = _cell_section(model, characteristics, materials, cell)
+    try:
+        stiffness = stiffness_local(length, young_sum, gj) if matrix != "M" else None
+        if matrix != "K":
+            if not np.any(rho_sum) and matrix == "M":
+                raise ElementError(
+                    f"the mass of POU_D_EM cell {name} needs RHO in its fibre materials (ELAS)"
+                )
+            centre_z = young_sum[2] / young_sum[0]
+            centre_y = -young_sum[1] / young_sum[0]
+            mass = mass_local(length, rho_sum, centre_z, centre_y, lumped=lumped)
+    except FibreError as exc:
+        raise ElementError(f"POU_D_EM cell {name}: {exc}") from None
+    if matrix == "K":
+        return stiffness
+    if matrix == "M":
+        return mass
+    return alpha * stiffness + beta * mass
+
+
 def multifibre_blocks(
     model, characteristics, matrix, cells, materials=None, lumped=False, **_options
 ) -> list[ElementBlock]:
@@ -88,27 +114,9 @@ def multifibre_blocks(
     lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
     local = np.zeros((len(cells), 12, 12))
     for k, cell in enumerate(cells):
-        cell = int(cell)
-        young_sum, rho_sum, gj, alpha, beta = _cell_section(model, characteristics, materials, cell)
-        try:
-            stiffness = stiffness_local(lengths[k], young_sum, gj) if matrix != "M" else None
-            if matrix != "K":
-                if not np.any(rho_sum) and matrix == "M":
-                    raise ElementError(
-                        f"the mass of POU_D_EM cell {mesh.cell_names[cell]} needs RHO in "
-                        "its fibre materials (ELAS)"
-                    )
-                centre_z = young_sum[2] / young_sum[0]
-                centre_y = -young_sum[1] / young_sum[0]
-                mass = mass_local(lengths[k], rho_sum, centre_z, centre_y, lumped=lumped)
-        except FibreError as exc:
-            raise ElementError(f"POU_D_EM cell {mesh.cell_names[cell]}: {exc}") from None
-        if matrix == "K":
-            local[k] = stiffness
-        elif matrix == "M":
-            local[k] = mass
-        else:
-            local[k] = alpha * stiffness + beta * mass
+        local[k] = local_matrix(
+            model, characteristics, materials, int(cell), lengths[k], matrix, lumped
+        )
     angles = cell_angles(model, characteristics, cells)
     out = beam.to_global(local, beam.rotation_from_angles(angles), 6)
     return [ElementBlock(nodes=conn, components=beam.BEAM_COMPONENTS, matrices=out)]
