@@ -20,8 +20,8 @@ from asterlite.fem.sections import (
 )
 from asterlite.fem.selection import as_scalar, as_tuple, select_cells
 
-_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG", "POU_D_EM")
-_MULTIFIBRE_BEAMS = ("POU_D_EM",)
+_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG", "POU_D_EM", "POU_D_TGM")
+_MULTIFIBRE_BEAMS = ("POU_D_EM", "POU_D_TGM")
 _BARS = ("BARRE", "2D_BARRE")
 
 _OTHER_KEYWORDS = (
@@ -307,7 +307,7 @@ def run(ctx, kw):
     ]
     if kw.factor("MULTIFIBRE") and without:
         names = ", ".join(model.mesh.cell_names[c] for c in without[:5])
-        ctx.error(f"POU_D_EM cells {names} have no fibres (MULTIFIBRE)", "MULTIFIBRE", kw)
+        ctx.error(f"multifibre beam cells {names} have no fibres (MULTIFIBRE)", "MULTIFIBRE", kw)
     for keyword in _OTHER_KEYWORDS:
         if kw.get(keyword):
             result.extra[keyword] = kw.factor(keyword)

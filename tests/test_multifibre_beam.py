@@ -133,3 +133,19 @@ def test_lumped_mass_keeps_the_total_mass():
     ones = np.zeros(12)
     ones[[1, 7]] = 1.0  # rigid translation along y
     assert ones @ consistent @ ones == pytest.approx(cars[0] * 1.5, rel=1e-12)
+
+
+def test_warping_multifibre_element_of_one_material_is_pou_d_tg():
+    """POU_D_TGM with one material: POU_D_TG's matrices for the fibres' A, IY, IZ."""
+    from asterlite.fem.multifibre_elements import _Section, _warping_local
+
+    young, nu, rho, length = 2.1e11, 0.3, 7850.0, 0.8
+    integrals = section_integrals(*_rectangle_fibres(0.06, 0.1, 6, 10))
+    poutre = {"JX": 3.0e-6, "JG": 1.0e-9, "AY": 1.2, "AZ": 1.2, "EY": 0.0, "EZ": 0.0}
+    shear = young / (2 * (1 + nu))
+    section = _Section(young * integrals, rho * integrals, integrals, shear, 0.0, 0.0, poutre)
+    geometric = {"A": integrals[0], "IY": integrals[4], "IZ": integrals[3], **poutre}
+    for matrix in ("K", "M"):
+        got = _warping_local(section, length, matrix, False, "test")
+        expected = beam.local_matrices("POU_D_TG", matrix, length, geometric, young, nu, rho)[0]
+        np.testing.assert_allclose(got, expected, rtol=1e-10, atol=1e-12 * np.abs(expected).max())

@@ -122,9 +122,13 @@ def _geometry(model, characteristics, members):
     return conn, x1, x2, length, rot
 
 
-#: components of the beams and bars FORCE_POUTRE loads (the multifibre beam's
-#: consistent line load is POU_D_E's: code_aster's te0150 serves both)
-_LOADED_COMPONENTS = {**beam.COMPONENTS, "POU_D_EM": beam.BEAM_COMPONENTS}
+#: components of the beams and bars FORCE_POUTRE loads (the multifibre beams'
+#: consistent line loads are POU_D_E's and POU_D_TG's: code_aster's te0150 serves them all)
+_LOADED_COMPONENTS = {
+    **beam.COMPONENTS,
+    "POU_D_EM": beam.BEAM_COMPONENTS,
+    "POU_D_TGM": beam.COMPONENTS["POU_D_TG"],
+}
 
 
 def beam_force_terms(model, characteristics, cells, values, local: bool, values_2=None) -> list:
