@@ -74,3 +74,12 @@ def test_format_4_is_refused_by_name(tmp_path):
     path.write_text("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n")
     with pytest.raises(GmshMeshError, match="formats 1 and 2"):
         read_gmsh_mesh(path)
+
+
+def test_a_group_of_one_point_cell_is_also_a_node_group(tmp_path):
+    path = tmp_path / "m.msh"
+    path.write_text(V1.replace("3\n1 1 7 7 2 1 2", "4\n4 15 24 24 1 3\n1 1 7 7 2 1 2"))
+    mesh = read_gmsh_mesh(path)
+    assert mesh.cell_types[0] == "POI1"
+    np.testing.assert_array_equal(mesh.node_groups["GM24"], [mesh.node_names.index("N3")])
+    assert "GM12" not in mesh.node_groups

@@ -7,7 +7,8 @@ converts them (its pregms / gmlelt): ASCII formats 1 ($NOD ... $ELM) and 2
 - format 1: each cell joins the group ``GM<physical number>``;
 - format 2: with $PhysicalNames, a cell joins each named group whose tag is
   among its tags and whose dimension is the cell's (names cut to 8
-  characters); without $PhysicalNames there are no groups.
+  characters); without $PhysicalNames there are no groups;
+- a group of a single POI1 cell is also a node group of that node.
 
 Cell types: gmsh's 1-11, 15, 16, 17 (SEG2 ... TETRA10, POI1, QUAD8, HEXA20);
 gmsh's 9-node quadrangle becomes a QUAD8 on its first 8 nodes and the
@@ -154,6 +155,12 @@ def _read(path, tokens, first, version: int, names) -> Mesh:
             groups.setdefault(name, []).extend(members)
     used = sorted({n for nodes in cell_nodes for n in nodes})
     renumber = {old: new for new, old in enumerate(used)}
+    # a group of one POI1 cell also names its node (gmeelt)
+    node_groups = {
+        name: np.array([renumber[cell_nodes[m[0]][0]]], dtype=int)
+        for name, m in groups.items()
+        if len(m) == 1 and cell_types[m[0]] == "POI1"
+    }
     return Mesh(
         coords=np.array([coords[i] for i in used], dtype=float).reshape(-1, 3),
         node_names=[f"N{numbers[i]}" for i in used],
@@ -161,6 +168,7 @@ def _read(path, tokens, first, version: int, names) -> Mesh:
         cell_types=cell_types,
         cell_nodes=[tuple(renumber[n] for n in nodes) for nodes in cell_nodes],
         cell_groups={name: np.array(m, dtype=int) for name, m in groups.items()},
+        node_groups=node_groups,
         dim=3,
         title="INTERFACE_GMSH",
     )
