@@ -10,6 +10,7 @@ from asterlite.concepts.assembly import DiscreteAssignment, ElementCharacteristi
 from asterlite.fem.beam import BeamError, seg2_angles
 from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS
+from asterlite.fem.fibres import section_integrals
 from asterlite.fem.frames import angles_from_x_and_y
 from asterlite.fem.sections import (
     SectionError,
@@ -19,7 +20,8 @@ from asterlite.fem.sections import (
 )
 from asterlite.fem.selection import as_scalar, as_tuple, select_cells
 
-_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG", "POU_D_EM", "POU_D_TGM")
+_MULTIFIBRE_BEAMS = ("POU_D_EM", "POU_D_TGM")
 _BARS = ("BARRE", "2D_BARRE")
 
 _OTHER_KEYWORDS = (
@@ -34,7 +36,6 @@ _OTHER_KEYWORDS = (
     "RIGI_PARASOL",
     "MASS_AJOU",
     "GENE_TUYAU",
-    "MULTIFIBRE",
     "POUTRE_FLUI",
 )
 
@@ -214,6 +215,51 @@ def _coque(ctx, model, result, occ) -> None:
         result.shells[int(cell)] = dict(values)
 
 
+def _multifibre(ctx, model, result, occ, geometry) -> None:
+    """Fibre groups of POU_D_EM cells, checked as code_aster does against the
+    cell's POUTRE section: |A - Σ A_f| / A <= PREC_AIRE and the same for IY
+    (Σ z² A_f) and IZ (Σ y² A_f) with PREC_INERTIE."""
+    mesh = model.mesh
+    names = as_tuple(occ["GROUP_FIBRE"])
+    missing = [n for n in names if n not in geometry.groups]
+    if missing:
+        ctx.error(f"GEOM_FIBRE has no fibre group {missing[0]!r}", "GROUP_FIBRE", occ)
+    integrals = sum(
+        section_integrals(g.y, g.z, g.area) for g in (geometry.groups[n] for n in names)
+    )
+    cells = select_cells(ctx, occ, mesh)
+    _check_cells(ctx, model, cells, _MULTIFIBRE_BEAMS, "MULTIFIBRE", occ)
+    checks = (
+        ("A", integrals[0], "PREC_AIRE", 0.01),
+        ("IY", integrals[4], "PREC_INERTIE", 0.1),
+        ("IZ", integrals[3], "PREC_INERTIE", 0.1),
+    )
+    for cell in cells:
+        section = result.sections.get(int(cell))
+        name = mesh.cell_names[cell]
+        if section is None:
+            ctx.error(
+                f"multifibre cell {name} has no POUTRE section (its A, IY, IZ are checked "
+                "against the fibres and its JX gives the torsion)",
+                "GROUP_MA",
+                occ,
+            )
+        for cara, fibres, keyword, default in checks:
+            given = float(section[cara])
+            if not given > 0.0:
+                ctx.error(f"the POUTRE section of cell {name} has {cara} <= 0", "GROUP_MA", occ)
+            precision = float(occ.get(keyword, default))
+            error = abs(given - fibres) / given
+            if error > precision:
+                ctx.error(
+                    f"cell {name}: {cara} of the POUTRE section is {given:.6g}, the fibres "
+                    f"give {fibres:.6g}, relative difference {error:.3g} > {keyword}={precision:g}",
+                    keyword,
+                    occ,
+                )
+        result.fibre_groups[int(cell)] = tuple(names)
+
+
 def _verify_cells(ctx, model, kw) -> None:
     """VERIF='MAILLE': code_aster checks that every cell of an occurrence
     carries an element of the keyword's family (the checks of DISCRET,
@@ -250,6 +296,18 @@ def run(ctx, kw):
         _barre(ctx, model, result, occ)
     for occ in kw.factor("COQUE"):
         _coque(ctx, model, result, occ)
+    if kw.get("GEOM_FIBRE") is not None:
+        result.geom_fibre = kw["GEOM_FIBRE"]
+    for occ in kw.factor("MULTIFIBRE"):
+        _multifibre(ctx, model, result, occ, result.geom_fibre)
+    without = [
+        c
+        for c, m in model.cell_modelisation.items()
+        if m in _MULTIFIBRE_BEAMS and c not in result.fibre_groups
+    ]
+    if kw.factor("MULTIFIBRE") and without:
+        names = ", ".join(model.mesh.cell_names[c] for c in without[:5])
+        ctx.error(f"multifibre beam cells {names} have no fibres (MULTIFIBRE)", "MULTIFIBRE", kw)
     for keyword in _OTHER_KEYWORDS:
         if kw.get(keyword):
             result.extra[keyword] = kw.factor(keyword)

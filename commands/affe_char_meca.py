@@ -387,7 +387,7 @@ def _warn_link_geometry(ctx, mesh, faces, section, beam_node, angle_max) -> None
 
 _BEAM_LOAD_GLOBAL = ("FX", "FY", "FZ", "MX", "MY", "MZ")
 _BEAM_LOAD_LOCAL = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
-_BEAM_LOADED = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE")
+_BEAM_LOADED = ("POU_D_E", "POU_D_T", "POU_D_TG", "POU_D_EM", "POU_D_TGM", "BARRE")
 
 
 def beam_load_cells(ctx, model, occ) -> np.ndarray:

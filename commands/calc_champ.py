@@ -37,6 +37,7 @@ from asterlite.fem.element_fields import (
     nodal_average,
 )
 from asterlite.fem.elements import ElementError
+from asterlite.fem.fibre_fields import multifibre_stresses
 from asterlite.fem.loads import beam_element_loads, load_terms
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
@@ -50,6 +51,8 @@ from asterlite.post.nodal_forces import (
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+#: what CALC_CHAMP computes on multifibre beams (POU_D_EM)
+_MULTIFIBRE_OPTIONS = ("SIEF_ELGA", "EFGE_ELNO", "EFGE_NOEU")
 _BARS = ("BARRE", "2D_BARRE")
 
 
@@ -128,6 +131,30 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
     _keep_selected_orders(ctx, kw, result, fields)
     result.element_fields.update(fields)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
+
+
+def _multifibre_fields(ctx, kw, result, model, characteristics, materials, cells) -> None:
+    """SIEF_ELGA (fibre stresses SIXX) of POU_D_EM cells; a model where they
+    are mixed with other element families is refused."""
+    mixed = sorted({m for c, m in model.cell_modelisation.items() if m != "POU_D_EM"})
+    if mixed:
+        ctx.unsupported(
+            f"CALC_CHAMP on POU_D_EM cells mixed with {', '.join(mixed)} cells", "CONTRAINTE", kw
+        )
+    values = _nodal_values(ctx, result, kw)
+    try:
+        field = multifibre_stresses(
+            model, characteristics, materials, result.numbering, cells, values
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    fields = {"SIEF_ELGA": field}
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    ctx.log(
+        f"CALC_CHAMP SIEF_ELGA on {cells.size} multifibre cells "
+        f"({field.sub_points} fibres at most), {values.shape[0]} orders"
+    )
 
 
 def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
@@ -210,6 +237,8 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
     convention of the internal forces; None without EXCIT."""
 
     occurrences = kw.factor("EXCIT")
+    if not occurrences and "evol_elas" in getattr(result, "aster_types", ()):
+        return _static_result_loads(ctx, kw, result, model, characteristics, beams, n_orders)
     if not occurrences:
         return None
     times = getattr(result, "times", None)
@@ -236,6 +265,26 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
         except ElementError as exc:
             ctx.unsupported(str(exc), "CHARGE", occ)
         total += coefficients[:, None, None, None] * section_forces(local)[None]
+    return total
+
+
+def _static_result_loads(ctx, kw, result, model, characteristics, beams, n_orders):
+    """Without EXCIT, code_aster takes the loads of a MECA_STATIQUE result off
+    the beams' internal forces: its FORCE_POUTRE loads here (None if none)."""
+    total = None
+    for load, mult in getattr(result, "loads", ()):
+        if not load.extra.get("FORCE_POUTRE"):
+            continue
+        if callable(mult):
+            coefficients = np.array([float(mult(float(t))) for t in result.times])
+        else:
+            coefficients = np.full(n_orders, float(mult))
+        try:
+            local = beam_element_loads(model, characteristics, beams, load)
+        except ElementError as exc:
+            ctx.unsupported(f"{exc} (the loads of the static result)", "RESULTAT", kw)
+        term = coefficients[:, None, None, None] * section_forces(local)[None]
+        total = term if total is None else total + term
     return total
 
 
@@ -391,6 +440,26 @@ def run(ctx, kw):
         bars = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _BARS], dtype=int
         )
+        multifibre = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) == "POU_D_EM"],
+            dtype=int,
+        )
+        if multifibre.size:
+            other = [n for n in names if n not in _MULTIFIBRE_OPTIONS]
+            if other:
+                keyword = next(k for k, n in requested if n == other[0])
+                ctx.unsupported(
+                    f"CALC_CHAMP {other[0]} of multifibre beams ({', '.join(_MULTIFIBRE_OPTIONS)})",
+                    keyword,
+                    kw,
+                )
+            if "SIEF_ELGA" in names:
+                _multifibre_fields(ctx, kw, result, model, characteristics, materials, multifibre)
+            names = [n for n in names if n != "SIEF_ELGA"]
+            if not names:
+                return _cham_utils(ctx, kw, result)
+            # their generalised forces: K u (+ M a) of the fibre-integrated element
+            beams = np.union1d(beams, multifibre).astype(int)
         solids = solid_cells_of(model, candidates)
         if solids.size and not beams.size and not bars.size:
             _solid_fields(ctx, kw, result, model, materials, solids, names)

@@ -290,6 +290,8 @@ def element_block(ctx, kw, result, name: str):
     """(cells, components, values (n_selected_steps, n_cells, n_points,
     n_comp), step indices) of an element field of a result."""
     field = result.element_fields[name]
+    if field.sub_points > 1:
+        ctx.unsupported(f"IMPR_RESU of {name} on sub-points (multifibre beams)", "NOM_CHAM", kw)
     indices = chosen_steps(ctx, kw, result_steps(result))
     rows = chosen_cells(ctx, kw, result_mesh(result), field.cells)
     cmp_idx = element_components(ctx, kw, name, field.components)

@@ -180,6 +180,10 @@ def run(ctx, kw):
             ctx.unsupported("MODI_CHAM GROUP_MA (AFFE says where)", "GROUP_MA", occ)
         element = getattr(result, "element_fields", {}).get(name)
         nodal = getattr(result, "node_fields", {}).get(name)
+        if element is not None and element.sub_points > 1:
+            ctx.unsupported(
+                f"MODI_REPERE of {name} on sub-points (multifibre beams)", "NOM_CHAM", occ
+            )
         if kind == "TENS_3D" and element is not None:
             field = copy.copy(element)
             field.values = np.array(element.values, copy=True)

@@ -27,6 +27,8 @@ def run(ctx, kw):
     field = (getattr(result, "element_fields", None) or {}).get(name)
     if field is None:
         ctx.error(f"{name} is not computed on the result (CALC_CHAMP first)", "NOM_CHAM", occ)
+    if field.sub_points > 1:
+        ctx.unsupported(f"POST_RCCM on {name} of multifibre beams", "NOM_CHAM", occ)
     mesh = result.numbering.mesh
     cells = analysed_cells(ctx, kw.factor("ZONE_ANALYSE")[0], mesh, field.cells)
     orders = selected_orders(ctx, occ, result, field.values.shape[0])

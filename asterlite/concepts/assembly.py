@@ -95,6 +95,9 @@ class ElementCharacteristics(Concept):
     sections: dict[int, dict[str, Any]] = field(default_factory=dict)
     # plate characteristics per cell (COQUE: EPAIS, COEF_RIGI_DRZ, INER_ROTA 1/0)
     shells: dict[int, dict[str, float]] = field(default_factory=dict)
+    # multifibre beams (MULTIFIBRE): the fibre groups of each cell, from geom_fibre
+    fibre_groups: dict[int, tuple[str, ...]] = field(default_factory=dict)
+    geom_fibre: Any = None  # asterlite.concepts.fibres.FibreGeometry
 
 
 @dataclass(eq=False)
@@ -421,6 +424,10 @@ class MaterialField(Concept):
 
     mesh: Mesh
     cell_material: dict[int, Material] = field(default_factory=dict)
+    # every material AFFE gave a cell (the fibre groups of multifibre beams take theirs there)
+    cell_materials: dict[int, tuple[Material, ...]] = field(default_factory=dict)
+    # AFFE_COMPOR: the multifibre behaviour of a cell (asterlite.concepts.fibres)
+    cell_behaviour: dict[int, Any] = field(default_factory=dict)
 
     def material_of(self, cell: int) -> Material | None:
         return self.cell_material.get(int(cell))
@@ -451,13 +458,17 @@ class ElementField:
     ``values`` is (n_orders, n_cells, n_points, n_components) for the cells
     ``cells`` (mesh cell indices), ``components`` their names (``N``,
     ``VY``... for EFGE_ELNO); points are the cell's nodes for ELNO (in
-    connectivity order) or its Gauss points for ELGA.
+    connectivity order) or its Gauss points for ELGA. A field on sub-points
+    (the fibres of multifibre beams) has ``sub_points`` > 1: point index
+    ``p * sub_points + s`` for Gauss point p and sub-point s (NaN past a
+    cell's own sub-points).
     """
 
     name: str
     cells: np.ndarray
     components: tuple[str, ...]
     values: np.ndarray
+    sub_points: int = 1
 
     def at(self, cell: int, point: int, component: str) -> np.ndarray:
         """Values along the orders of one cell, point (0-based) and component."""

@@ -161,6 +161,15 @@ def _local_products(
     out = np.zeros_like(v_local)
     for k, cell in enumerate(cells):
         modelisation = model.cell_modelisation[int(cell)]
+        if modelisation == "POU_D_EM":
+            # the fibre-integrated element (code_aster's ef0142 / poefgr use pmfrig, pmfmas)
+            from asterlite.fem.multifibre_elements import local_matrix
+
+            a_local = local_matrix(
+                model, characteristics, materials, int(cell), lengths[k], matrix, lumped
+            )
+            out[:, k, :] = v_local[:, k, :] @ a_local.T
+            continue
         if modelisation not in ("POU_D_E", "POU_D_T"):
             raise ElementError(f"internal forces of {modelisation} cells are not available")
         a_local = beam.local_matrices(

@@ -18,6 +18,8 @@ MODELISATION_COMPONENTS: dict[str, tuple[str, ...]] = {
     "POU_D_E": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
     "POU_D_T": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
     "POU_D_TG": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX"),
+    "POU_D_EM": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+    "POU_D_TGM": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX"),
     "BARRE": ("DX", "DY", "DZ"),
     "2D_BARRE": ("DX", "DY"),
     "3D": ("DX", "DY", "DZ"),
@@ -40,6 +42,8 @@ MODELISATION_CELLS: dict[str, tuple[str, ...]] = {
     "POU_D_E": ("SEG2",),
     "POU_D_T": ("SEG2",),
     "POU_D_TG": ("SEG2",),
+    "POU_D_EM": ("SEG2",),
+    "POU_D_TGM": ("SEG2",),
     "BARRE": ("SEG2",),
     "2D_BARRE": ("SEG2",),
     # volumes, plus the faces and edges that carry loads (code_aster's MECA_FACE*, MECA_ARETE*)

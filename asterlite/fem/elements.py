@@ -24,6 +24,7 @@ from asterlite.fem.discrete import local_matrix, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.frames import angles_from_axis, block_rotation, rotation_from_angles
+from asterlite.fem.multifibre_elements import MULTIFIBRE_MODELISATIONS, multifibre_blocks
 from asterlite.fem.plane_elements import PLANE_MODELISATIONS, plane_blocks
 from asterlite.fem.plate_elements import PLATE_MODELISATIONS, plate_blocks
 from asterlite.fem.solid_elements import SOLID_MODELISATIONS, solid_blocks
@@ -117,6 +118,7 @@ def _rotation_invariant(local: np.ndarray, components, n_nodes: int) -> bool:
 ELEMENT_FAMILIES = (
     (DISCRETE_MODELISATIONS, _discrete_blocks),
     (BEAM_MODELISATIONS, beam_blocks),  # beams and bars
+    (MULTIFIBRE_MODELISATIONS, multifibre_blocks),  # multifibre beams
     (PLANE_MODELISATIONS, plane_blocks),  # plane strain, plane stress, axisymmetric solids
     (SOLID_MODELISATIONS, solid_blocks),  # 3D solids
     (PLATE_MODELISATIONS, plate_blocks),  # DKT plates

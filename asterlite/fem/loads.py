@@ -125,6 +125,15 @@ def _geometry(model, characteristics, members):
     return conn, x1, x2, length, rot
 
 
+#: components of the beams and bars FORCE_POUTRE loads (the multifibre beams'
+#: consistent line loads are POU_D_E's and POU_D_TG's: code_aster's te0150 serves them all)
+_LOADED_COMPONENTS = {
+    **beam.COMPONENTS,
+    "POU_D_EM": beam.BEAM_COMPONENTS,
+    "POU_D_TGM": beam.COMPONENTS["POU_D_TG"],
+}
+
+
 def beam_force_terms(model, characteristics, cells, values, local: bool, values_2=None) -> list:
     """Consistent nodal terms of FORCE_POUTRE on beam (or bar) cells: ``values``
     a dict of uniform components, or (with ``values_2``) arrays (n_cells, 6) of
@@ -138,11 +147,11 @@ def beam_force_terms(model, characteristics, cells, values, local: bool, values_
         chosen = kinds == modelisation
         members = cells[chosen]
         q1, q2 = at_first[chosen], at_second[chosen]
-        if modelisation not in beam.COMPONENTS:
+        if modelisation not in _LOADED_COMPONENTS:
             names = ", ".join(mesh.cell_names[c] for c in members[:3])
             raise ElementError(f"FORCE_POUTRE applies to beams, not to {modelisation} ({names})")
         conn, x1, x2, length, rot = _geometry(model, characteristics, members)
-        comps = beam.COMPONENTS[modelisation]
+        comps = _LOADED_COMPONENTS[modelisation]
         if len(comps) >= 6:
             f_local = _beam_local_vectors(rot, length, q1, q2, local)
             r = beam.element_rotation(rot, 6)
