@@ -205,8 +205,8 @@ def _generalized(ctx, kw, stiffness, mass):
     """Modes of projected matrices (a mode_gene): a dense pencil, no relations."""
     if stiffness.matrix.shape != mass.matrix.shape:
         ctx.error("MATR_RIGI and MATR_MASS differ in size", "MATR_MASS", kw)
-    if kw.get("MATR_AMOR") is not None:
-        return _generalized_complex(ctx, kw, stiffness, mass, kw["MATR_AMOR"])
+    if kw.get("MATR_AMOR") is not None or np.iscomplexobj(stiffness.matrix):
+        return _generalized_complex(ctx, kw, stiffness, mass, kw.get("MATR_AMOR"))
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))
@@ -284,10 +284,11 @@ def _complex(ctx, kw, stiffness, mass, damping):
 
 
 def _generalized_complex(ctx, kw, stiffness, mass, damping):
-    """Damped modes of projected matrices: a mode_gene with complex vectors."""
-    if not isinstance(damping, GeneralizedMatrix):
+    """Modes of projected matrices with damping or a complex (hysteretic)
+    stiffness: a mode_gene with complex vectors."""
+    if damping is not None and not isinstance(damping, GeneralizedMatrix):
         ctx.error("MATR_AMOR must be generalized like MATR_RIGI", "MATR_AMOR", kw)
-    if damping.matrix.shape != stiffness.matrix.shape:
+    if damping is not None and damping.matrix.shape != stiffness.matrix.shape:
         ctx.error("MATR_AMOR and MATR_RIGI differ in size", "MATR_AMOR", kw)
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
@@ -301,7 +302,7 @@ def _generalized_complex(ctx, kw, stiffness, mass, damping):
         lam, vecs, _res = complex_generalized_modes(
             stiffness.matrix,
             mass.matrix,
-            damping.matrix,
+            None if damping is None else damping.matrix,
             option,
             freq,
             int(nmax),

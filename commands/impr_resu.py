@@ -40,6 +40,7 @@ from asterlite.io.med_writer import (
     ElementSeries,
     MedWriteError,
     NodalSeries,
+    complex_part,
     dofs_to_nodal,
     med_field_name,
     write_med,
@@ -374,7 +375,17 @@ def write_med_format(ctx, kw) -> None:
 
 
 def med_occurrence(ctx, occ):
-    """(mesh, mesh name, [NodalSeries]) of one RESU occurrence."""
+    """(mesh, mesh name, [NodalSeries]) of one RESU occurrence; PARTIE
+    writes a part of the values (asterlite.io.med_writer.complex_part)."""
+    mesh, name, series = _med_series(ctx, occ)
+    part = occ.get("PARTIE")
+    if part is not None:
+        for one in series:
+            one.values = complex_part(one.values, part)
+    return mesh, name, series
+
+
+def _med_series(ctx, occ):
     if occ.get("NOM_PARA") is not None:
         ctx.unsupported("NOM_PARA (MED scalar variables)", "NOM_PARA", occ)
     result, field = occ.get("RESULTAT"), occ.get("CHAM_GD")

@@ -14,7 +14,7 @@ import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
-from asterlite.concepts.numpy_api import assembled_to_numpy
+from asterlite.concepts.numpy_api import assembled_to_numpy, assembled_triplets
 from asterlite.errors import UnsupportedError
 from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
 
@@ -344,7 +344,9 @@ class AssembledMatrix(Concept):
     """``ASSE_MATRICE`` result on the physical DOFs (scipy sparse CSR)."""
 
     aster_types = ("matr_asse_depl_r", "matr_asse")
-    deck_methods = frozenset({"getName", "toNumpy", "getDOFNumbering"})
+    deck_methods = frozenset(
+        {"getName", "toNumpy", "getDOFNumbering", "EXTR_MATR", "getValuesWithDescription"}
+    )
 
     numbering: DofNumbering
     matrix: Any  # scipy.sparse.csr_matrix (n_dofs, n_dofs)
@@ -356,10 +358,22 @@ class AssembledMatrix(Concept):
     materials: Any = None
 
     def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
-        """The values as a dense array (refused when code_aster's would hold
-        Lagrange multipliers: see asterlite.concepts.numpy_api)."""
+        """The values as a dense array, kinematically imposed DOFs eliminated
+        (refused when code_aster's would hold Lagrange multipliers: see
+        asterlite.concepts.numpy_api)."""
 
         return assembled_to_numpy(self)
+
+    def getValuesWithDescription(self, epsilon=None):  # noqa: N802
+        """(values, rows, columns, size) of the stored terms (numpy_api)."""
+
+        return assembled_triplets(self, epsilon)
+
+    def EXTR_MATR(self, sparse=False, epsilon=None):  # noqa: N802
+        """code_aster's older name: toNumpy(), or getValuesWithDescription()
+        with ``sparse=True``."""
+
+        return assembled_triplets(self, epsilon) if sparse else assembled_to_numpy(self)
 
     def getDOFNumbering(self) -> DofNumbering:  # noqa: N802
         return self.numbering
@@ -378,9 +392,25 @@ class NodalField(Concept):
     """A field on nodes (``cham_no_sdaster``): one value per DOF of a numbering."""
 
     aster_types = ("cham_no_sdaster",)
+    deck_methods = frozenset({"getName", "getValues"})
 
     numbering: DofNumbering
     values: np.ndarray
+
+    def getValues(self) -> list:  # noqa: N802 - code_aster's name
+        """One value per DOF (real or complex). Refused when code_aster's
+        numbering would also hold Lagrange multipliers (dualised constraints),
+        whose values asterlite does not compute."""
+        numbering = self.numbering
+        kinematic = {id(r) for load in numbering.kinematic_loads for r in load.relations}
+        dualised = sum(1 for r in numbering.relations if id(r) not in kinematic)
+        if dualised:
+            raise UnsupportedError(
+                f"{self.name or 'field'}.getValues(): code_aster's field holds Lagrange "
+                f"multiplier values for the {dualised} constraints of its numbering, which "
+                "asterlite keeps as relations"
+            )
+        return np.asarray(self.values).tolist()
 
 
 @dataclass(eq=False)

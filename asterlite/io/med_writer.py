@@ -65,6 +65,23 @@ def _medcoupling():
     return medcoupling
 
 
+
+def complex_part(values, part: str) -> np.ndarray:
+    """IMPR_RESU's PARTIE of a field's values, as code_aster writes them (its
+    ircmva): REEL, IMAG, MODULE or PHASE (degrees, atan2); a real field has a
+    zero imaginary part and a phase of 0 or 180."""
+    values = np.asarray(values)
+    if part == "REEL":
+        return np.array(values.real, dtype=float)
+    if part == "IMAG":
+        return np.array(values.imag, dtype=float)
+    if part == "MODULE":
+        return np.abs(values).astype(float)
+    if part == "PHASE":
+        return np.degrees(np.arctan2(values.imag, values.real)).astype(float)
+    raise ValueError(part)
+
+
 @dataclass
 class NodalSeries:
     """A nodal field at a sequence of steps, ready for MED.

@@ -125,7 +125,8 @@ class FieldValues(NodalField):
     )
 
     def getValues(self):  # noqa: N802 - code_aster's names
-        return np.asarray(self.values, dtype=float).tolist()
+        values = np.asarray(self.values)
+        return values.astype(complex if np.iscomplexobj(values) else float).tolist()
 
     def size(self) -> int:
         return int(np.asarray(self.values).size)
