@@ -65,7 +65,7 @@ def test_to_numpy_eliminates_kinematic_dofs_as_code_aster():
     assert u[k.numbering.index[(N_EL, "DY")]] == pytest.approx(2.0**3 / (3 * E * inertia), 1e-10)
 
 
-def test_to_numpy_refuses_dualised_constraints():
+def test_dualised_constraints_give_lagrange_rows_and_unknown_field_values():
     session = FakeSession()
     model, field, cara = beam_model(session, line_mesh(N_EL, 2.0))
     clamp = run(session, "AFFE_CHAR_MECA", MODELE=model,
@@ -74,8 +74,9 @@ def test_to_numpy_refuses_dualised_constraints():
                CARA_ELEM=cara, CHARGE=clamp)  # fmt: skip
     numbering = run(session, "NUME_DDL", MATR_RIGI=rigi)
     k = run(session, "ASSE_MATRICE", MATR_ELEM=rigi, NUME_DDL=numbering)
-    with pytest.raises(UnsupportedError, match="Lagrange"):
-        k.toNumpy()
+    # code_aster's layout: two multipliers per constraint (tests/test_lagrange_layout.py)
+    assert k.toNumpy().shape == (numbering.n_dofs + 12,) * 2
+    # a field's multiplier values are unknown without its reactions: refused
     with pytest.raises(UnsupportedError, match="Lagrange"):
         NodalField(numbering=numbering, values=np.zeros(numbering.n_dofs)).getValues()
 

@@ -15,8 +15,9 @@ import numpy as np
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.numpy_api import assembled_to_numpy, assembled_triplets
-from asterlite.errors import UnsupportedError
+from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
+from asterlite.fem.lagrange_layout import dualised_relations, lagrange_layout
 
 #: modelisations of the (x, y) plane besides the ``2D_`` discrete elements and bars
 _PLANE_MODELISATIONS = ("D_PLAN", "C_PLAN", "AXIS", "D_PLAN_ABSO")
@@ -214,7 +215,16 @@ class DofNumbering(Concept):
 
     aster_types = ("nume_ddl_sdaster",)
     deck_methods = frozenset(
-        {"getName", "getPhysicalDOFs", "getNumberOfDOFs", "getLagrangeDOFs", "getMesh"}
+        {
+            "getName",
+            "getPhysicalDOFs",
+            "getNumberOfDOFs",
+            "getLagrangeDOFs",
+            "getMesh",
+            "getNodeAndComponentFromDOF",
+            "getComponentFromDOF",
+            "getNodeFromDOF",
+        }
     )
 
     mesh: Mesh
@@ -235,26 +245,36 @@ class DofNumbering(Concept):
     def n_dofs(self) -> int:
         return len(self.dofs)
 
-    # deck API: code_aster's numbering mixes physical DOFs and Lagrange
-    # multipliers; here every DOF is physical, so all indices are returned
+    # deck API: code_aster's numbering of these DOFs, with two Lagrange
+    # multipliers per dualised constraint (asterlite.fem.lagrange_layout)
     def getPhysicalDOFs(self, local=False) -> list[int]:  # noqa: N802
-        return list(range(self.n_dofs))
+        return lagrange_layout(self).physical.tolist()
 
     def getNumberOfDOFs(self, local=False) -> int:  # noqa: N802
-        return self.n_dofs
+        return lagrange_layout(self).size
 
     def getLagrangeDOFs(self, local=False) -> list[int]:  # noqa: N802
-        """None here; with constraints, code_aster's numbering has some and
-        asterlite's has not: refused by name rather than an empty list."""
-        if self.relations:
-            from asterlite.errors import UnsupportedError
+        return lagrange_layout(self).lagrange.tolist()
 
+    def getNodeAndComponentFromDOF(self, dof: int, local=False) -> tuple[int, str]:  # noqa: N802
+        """(0-based node, component) of a DOF of code_aster's numbering: the
+        constrained node and 'LAGR:<component>' for a DDL_IMPO multiplier."""
+        layout = lagrange_layout(self)
+        if not 0 <= int(dof) < layout.size:
+            raise DeckRuntimeError(f"DOF {dof} is outside the numbering (0..{layout.size - 1})")
+        node, component = layout.labels[int(dof)]
+        if not component:
             raise UnsupportedError(
-                f"{self.name or 'numbering'}.getLagrangeDOFs(): code_aster numbers Lagrange "
-                f"multipliers for the {len(self.relations)} constraints of this numbering, "
-                "which asterlite keeps as relations"
+                f"DOF {dof} is a multiplier of a relation of several terms, which has no "
+                "single node and component here"
             )
-        return []
+        return int(node), component
+
+    def getComponentFromDOF(self, dof: int, local=False) -> str:  # noqa: N802
+        return self.getNodeAndComponentFromDOF(dof)[1]
+
+    def getNodeFromDOF(self, dof: int, local=False) -> int:  # noqa: N802
+        return self.getNodeAndComponentFromDOF(dof)[0]
 
     def getMesh(self) -> Mesh:  # noqa: N802
         return self.mesh
@@ -358,9 +378,9 @@ class AssembledMatrix(Concept):
     materials: Any = None
 
     def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
-        """The values as a dense array, kinematically imposed DOFs eliminated
-        (refused when code_aster's would hold Lagrange multipliers: see
-        asterlite.concepts.numpy_api)."""
+        """The values as a dense array, as code_aster's: on its numbering with
+        Lagrange multipliers, kinematically imposed DOFs eliminated
+        (asterlite.concepts.numpy_api)."""
 
         return assembled_to_numpy(self)
 
@@ -401,9 +421,7 @@ class NodalField(Concept):
         """One value per DOF (real or complex). Refused when code_aster's
         numbering would also hold Lagrange multipliers (dualised constraints),
         whose values asterlite does not compute."""
-        numbering = self.numbering
-        kinematic = {id(r) for load in numbering.kinematic_loads for r in load.relations}
-        dualised = sum(1 for r in numbering.relations if id(r) not in kinematic)
+        dualised = len(dualised_relations(self.numbering))
         if dualised:
             raise UnsupportedError(
                 f"{self.name or 'field'}.getValues(): code_aster's field holds Lagrange "

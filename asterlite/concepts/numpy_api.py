@@ -3,19 +3,19 @@
 A deck gets a dense copy of the values (never the concept's own array), of
 at most the evaluator's element limit; ``fromNumpy`` replaces a
 generalized matrix's values by a deck's array of the same shape and kind,
-finite. An assembled matrix shows the DOFs its kinematic loads
-(ASSE_MATRICE CHAR_CINE) impose as code_aster's toNumpy does: their rows and
-columns zero, their diagonal term one. A numbering with dualised constraints
-(AFFE_CHAR_MECA) is refused: code_aster's matrix holds Lagrange multiplier
-rows and columns for them, which asterlite does not build (it keeps those
-constraints as relations).
+finite. An assembled matrix is shown as code_aster's toNumpy shows it: on
+its numbering with the Lagrange multipliers of the dualised constraints
+(AFFE_CHAR_MECA, see asterlite.fem.lagrange_layout), the DOFs its kinematic
+loads (ASSE_MATRICE CHAR_CINE) impose with zero rows and columns and a unit
+diagonal term.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from asterlite.errors import DeckRuntimeError, UnsupportedError
+from asterlite.errors import DeckRuntimeError
+from asterlite.fem.lagrange_layout import full_matrix, lagrange_layout
 from asterlite.lang.limits import Limits
 
 
@@ -34,18 +34,8 @@ def dense_copy(matrix, what: str) -> np.ndarray:
 
 
 def _eliminated_dofs(assembled) -> np.ndarray:
-    """Rows of the DOFs the matrix's kinematic loads impose; refused when the
-    numbering also has dualised constraints (Lagrange multipliers)."""
+    """Rows (physical numbering) of the DOFs the matrix's kinematic loads impose."""
     numbering = assembled.numbering
-    kinematic = {id(relation) for load in numbering.kinematic_loads for relation in load.relations}
-    dualised = [r for r in numbering.relations if id(r) not in kinematic]
-    if dualised:
-        raise UnsupportedError(
-            f"{assembled.name or 'matrix'}.toNumpy(): code_aster's matrix holds Lagrange "
-            f"multiplier rows and columns for the {len(dualised)} constraints of "
-            "its numbering (AFFE_CHAR_MECA's DDL_IMPO, LIAISON_*), which asterlite keeps as "
-            "relations and does not build"
-        )
     rows = {
         numbering.index[(node, comp)]
         for load in numbering.kinematic_loads
@@ -56,8 +46,23 @@ def _eliminated_dofs(assembled) -> np.ndarray:
 
 
 def assembled_to_numpy(assembled) -> np.ndarray:
-    eliminated = _eliminated_dofs(assembled)
+    """code_aster's toNumpy(): with dualised constraints, the matrix on its
+    numbering with Lagrange multipliers (asterlite.fem.lagrange_layout: the
+    stiffness carries the double-Lagrange terms, the other matrices zeros);
+    the DOFs the kinematic loads impose eliminated (zero rows and columns,
+    unit diagonal)."""
+    numbering = assembled.numbering
+    layout = lagrange_layout(numbering)
+    limit = Limits().max_sequence_length
+    if layout.size**2 > limit:
+        raise DeckRuntimeError(
+            f"limit exceeded: {assembled.name or 'matrix'}.toNumpy() would make "
+            f"{layout.size} x {layout.size} values (limit {limit:,})"
+        )
     dense = dense_copy(assembled.matrix, assembled.name or "matrix")
+    if layout.relations:
+        dense = full_matrix(assembled, dense, with_load_terms=assembled.kind == "RIGI")
+    eliminated = layout.physical[_eliminated_dofs(assembled)]
     if eliminated.size:
         dense[eliminated, :] = 0.0
         dense[:, eliminated] = 0.0
@@ -67,32 +72,22 @@ def assembled_to_numpy(assembled) -> np.ndarray:
 
 def assembled_triplets(assembled, epsilon=None):
     """code_aster's getValuesWithDescription: (values, rows, columns, size) of
-    the stored terms, the terms of magnitude below ``epsilon`` left out, the
-    eliminated DOFs' rows and columns dropped and their unit diagonal terms
-    first."""
-    eliminated = _eliminated_dofs(assembled)
-    matrix = assembled.matrix
-    coo = matrix.tocoo() if hasattr(matrix, "tocoo") else None
-    if coo is None:
-        dense = np.asarray(matrix)
-        rows, cols = np.nonzero(np.ones(dense.shape, dtype=bool))
-        data = dense[rows, cols]
-    else:
-        rows, cols, data = coo.row.astype(int), coo.col.astype(int), coo.data
-    limit = Limits().max_sequence_length
-    if data.size > limit:
-        raise DeckRuntimeError(
-            f"limit exceeded: {assembled.name or 'matrix'} has {data.size} terms (limit {limit:,})"
-        )
+    the stored terms of toNumpy()'s matrix, the terms of magnitude below
+    ``epsilon`` left out, the eliminated DOFs' unit diagonal terms first."""
+    dense = assembled_to_numpy(assembled)
+    eliminated = lagrange_layout(assembled.numbering).physical[_eliminated_dofs(assembled)]
+    keep = dense != 0.0
     if epsilon is not None:
-        kept = np.abs(data) >= float(epsilon)
-        rows, cols, data = rows[kept], cols[kept], data[kept]
+        keep &= np.abs(dense) >= float(epsilon)
+    keep[eliminated, :] = False
+    keep[:, eliminated] = False
+    rows, cols = np.nonzero(keep)
+    data = dense[rows, cols]
     if eliminated.size:
-        kept = ~np.isin(rows, eliminated) & ~np.isin(cols, eliminated)
-        rows = np.concatenate([eliminated, rows[kept]])
-        cols = np.concatenate([eliminated, cols[kept]])
-        data = np.concatenate([np.ones(eliminated.size, dtype=data.dtype), data[kept]])
-    return data, rows, cols, matrix.shape[0]
+        rows = np.concatenate([eliminated, rows])
+        cols = np.concatenate([eliminated, cols])
+        data = np.concatenate([np.ones(eliminated.size, dtype=data.dtype), data])
+    return data, rows, cols, dense.shape[0]
 
 
 def replaced_values(matrix, values, what: str) -> np.ndarray:
