@@ -1,4 +1,5 @@
-"""CREA_CHAMP on nodal fields (TYPE_CHAM 'NOEU_*_R'): AFFE (values by node and
+"""CREA_CHAMP on nodal fields (TYPE_CHAM 'NOEU_*_R', and 'NOEU_*_C' for EXTR,
+ASSE, R2C and C2R): AFFE (values by node and
 component), EXTR (one field of a result, or its extreme over the stored
 fields with TYPE_MAXI; also on the ELNO/ELGA fields CALC_CHAMP stored on a
 result, giving a ``cham_elem``), ASSE (pieces of fields, later ones overriding earlier
@@ -101,8 +102,9 @@ def _nodal_only(ctx, kw):
     type_cham = str(kw.get("TYPE_CHAM") or "")
     if kw.get("OPERATION") == "EXTR" and _is_element_type(type_cham) and type_cham.endswith("_R"):
         return  # element fields a result stores (CALC_CHAMP)
-    if kw.get("OPERATION") == "EXTR" and type_cham.startswith("NOEU_") and type_cham.endswith("_C"):
-        return  # complex nodal fields of a dyna_harmo or a mode_meca_c
+    if kw.get("OPERATION") in ("EXTR", "ASSE") and type_cham.startswith("NOEU_"):
+        if type_cham.endswith("_C"):
+            return  # complex nodal fields (a dyna_harmo's, a mode_meca_c's, R2C's)
     if not (type_cham.startswith("NOEU_") and type_cham.endswith("_R")):
         ctx.unsupported(
             f"CREA_CHAMP {kw.get('OPERATION')} on TYPE_CHAM={type_cham!r} (nodal real fields only)",
@@ -270,13 +272,26 @@ def _output_numbering(ctx, kw, fields):
 
 
 def _asse(ctx, kw):
+    """Pieces of nodal fields on one numbering. As code_aster's chpass, each
+    piece has the scalar type TYPE_CHAM names; COEF_C needs a complex piece;
+    a later piece overrides earlier ones on the DOFs it covers unless
+    CUMUL='OUI'."""
     occs = kw.factor("ASSE")
     numbering = _output_numbering(ctx, kw, [occ["CHAM_GD"] for occ in occs])
     mesh = numbering.mesh
+    complex_type = str(kw.get("TYPE_CHAM")).endswith("_C")
     for occ in occs:
-        if occ["CHAM_GD"].numbering.mesh is not mesh:
+        source = occ["CHAM_GD"]
+        if not isinstance(source, NodalField):
+            ctx.unsupported("CREA_CHAMP ASSE of a field by element", "CHAM_GD", occ)
+        if source.numbering.mesh is not mesh:
             ctx.error("CHAM_GD is on another mesh", "CHAM_GD", occ)
-    values = np.zeros(numbering.n_dofs)
+        if np.iscomplexobj(source.values) != complex_type:
+            kind = "complex" if np.iscomplexobj(source.values) else "real"
+            ctx.error(f"CHAM_GD is a {kind} field: TYPE_CHAM does not match", "CHAM_GD", occ)
+        if occ.get("COEF_C") is not None and not complex_type:
+            ctx.error("COEF_C needs complex fields (TYPE_CHAM NOEU_*_C)", "COEF_C", occ)
+    values = np.zeros(numbering.n_dofs, dtype=complex if complex_type else float)
     assigned = np.zeros(numbering.n_dofs, dtype=bool)
     for occ in occs:
         source = occ["CHAM_GD"]
@@ -286,7 +301,8 @@ def _asse(ctx, kw):
         if len(renamed) != len(comps):
             ctx.error("NOM_CMP and NOM_CMP_RESU differ in length", "NOM_CMP_RESU", occ)
         rename = dict(zip(comps, renamed, strict=True))
-        coef = float(occ.get("COEF_R", 1.0))
+        coef = occ.get("COEF_C")
+        coef = complex(coef) if coef is not None else float(occ.get("COEF_R", 1.0))
         for (node, comp), value in zip(source.numbering.dofs, source.values, strict=True):
             if node not in nodes or (comps and comp not in rename):
                 continue
@@ -320,19 +336,17 @@ def _c2r(ctx, kw):
     if not isinstance(field, NodalField):
         ctx.unsupported("CREA_CHAMP C2R of a field by element", "CHAM_GD", kw)
     values = np.asarray(field.values)
+    if not np.iscomplexobj(values):
+        ctx.error("C2R needs a complex field: CHAM_GD is real", "CHAM_GD", kw)
     part = kw["PARTIE"]
     if part == "REEL":
         out = values.real
     elif part == "IMAG":
-        out = values.imag if np.iscomplexobj(values) else np.zeros(values.shape)
+        out = values.imag
     elif part == "MODULE":
         out = np.abs(values)
     else:
-        out = (
-            np.degrees(np.arctan2(values.imag, values.real))
-            if np.iscomplexobj(values)
-            else (np.degrees(np.arctan2(0.0, values)))
-        )
+        out = np.degrees(np.arctan2(values.imag, values.real))
     return NodalField(numbering=field.numbering, values=np.array(out, dtype=float))
 
 
@@ -341,6 +355,8 @@ def _r2c(ctx, kw):
     field = kw["CHAM_GD"]
     if not isinstance(field, NodalField):
         ctx.unsupported("CREA_CHAMP R2C of a field by element", "CHAM_GD", kw)
+    if np.iscomplexobj(field.values):
+        ctx.error("R2C needs a real field: CHAM_GD is complex", "CHAM_GD", kw)
     return NodalField(numbering=field.numbering, values=np.asarray(field.values).astype(complex))
 
 
@@ -349,7 +365,11 @@ def run(ctx, kw):
     if operation == "AFFE":
         return _affe(ctx, kw)
     if operation in ("C2R", "R2C"):
-        kw.mark_used("TYPE_CHAM")  # the output type follows from the operation
+        # code_aster derives the output quantity from CHAM_GD's (DEPL_R <-> DEPL_C);
+        # a TYPE_CHAM of the other scalar type is a deck error
+        wanted = "_C" if operation == "R2C" else "_R"
+        if not str(kw.get("TYPE_CHAM")).endswith(wanted):
+            ctx.error(f"{operation} gives a NOEU_*{wanted} field", "TYPE_CHAM", kw)
         return _c2r(ctx, kw) if operation == "C2R" else _r2c(ctx, kw)
     handlers = {"EXTR": _extr, "ASSE": _asse, "COMB": _comb}
     if operation in handlers:

@@ -30,6 +30,12 @@ def run(ctx, kw):
                 ctx.unsupported("LISTE without LISTE_R, LISTE_I or LISTE_K", None, occ)
             key, code = given[0]
             values = list(as_tuple(occ[key]))
+            if key == "LISTE_K":
+                # code_aster reads the texts into strings of TYPE_K's length
+                # (K8 by default), cutting longer ones
+                code = occ.get("TYPE_K", "K8")
+                width = int(code[1:])
+                values = [str(v)[:width] for v in values]
             if occ.get("NUME_LIGN") is not None:
                 lines = [int(n) - 1 for n in as_tuple(occ["NUME_LIGN"])]
                 if len(lines) != len(values):

@@ -240,12 +240,12 @@ def _read_ideas(ctx, kw):
     N<label>, else by number. The orders stored are the file's."""
 
     kind = kw["TYPE_RESU"]
-    if kind not in ("DYNA_HARMO", "DYNA_TRANS"):
+    if kind not in ("DYNA_HARMO", "DYNA_TRANS", "MODE_MECA"):
         ctx.unsupported(f"LIRE_RESU FORMAT='IDEAS' TYPE_RESU={kind!r}", "TYPE_RESU", kw)
     if kw.get("RESULTAT") is not None:
         ctx.unsupported("LIRE_RESU into an existing result (reuse)", "RESULTAT", kw)
     kw.mark_used("INFO", "TITRE", "CHAM_MATER", "CARA_ELEM")  # recorded by code_aster only
-    access = "FREQ" if kind == "DYNA_HARMO" else "INST"
+    access = "INST" if kind == "DYNA_TRANS" else "FREQ"
     mesh = kw["MAILLAGE"] if kw.get("MAILLAGE") is not None else kw["MODELE"].mesh
     wanted = list(as_tuple(kw["NOM_CHAM"]))
     occurrences = {occ["NOM_CHAM"]: occ for occ in kw.factor("FORMAT_IDEAS")}
@@ -261,6 +261,7 @@ def _read_ideas(ctx, kw):
     except (IdeasReadError, ValueError, IndexError) as exc:
         ctx.error(f"the file is not a readable universal file: {exc}", "UNITE", kw)
     read: dict[str, dict[int, tuple[float, dict]]] = {}
+    mode_parameters: dict[int, dict[str, float]] = {}
     for name in wanted:
         occ = occurrences[name]
         if occ.get("NUME_DATASET", 55) != 55:
@@ -276,6 +277,8 @@ def _read_ideas(ctx, kw):
             try:
                 order = int(record_field(dataset["records"], *occ["POSI_ORDRE"]))
                 value = float(record_field(dataset["records"], *position).replace("D", "E"))
+                if kind == "MODE_MECA":
+                    mode_parameters[order] = _ideas_mode_parameters(occ, dataset["records"])
             except (IdeasReadError, ValueError) as exc:
                 ctx.error(str(exc), "POSI_ORDRE", occ)
             by_node = {}
@@ -307,10 +310,43 @@ def _read_ideas(ctx, kw):
         fields[name] = values
     parameters = np.array([next(iter(read.values()))[o][0] for o in picked], dtype=float)
     orders = np.asarray(picked, dtype=int)
+    if kind == "MODE_MECA":
+        return _ideas_modes(
+            ctx, kw, numbering, fields, parameters, [mode_parameters[o] for o in picked]
+        )
     ctx.log(f"{len(fields)} fields at {len(picked)} orders read on {numbering.n_dofs} DOFs")
     if complex_values:
         return DynaHarmo(numbering=numbering, frequencies=parameters, order=orders, fields=fields)
     return DynaTrans(numbering=numbering, times=parameters, order=orders, fields=fields)
+
+
+def _ideas_mode_parameters(occ, records) -> dict[str, float]:
+    """NUME_MODE, MASS_GENE and the damping of a mode's dataset (POSI_*),
+    zero where the occurrence does not place them, as code_aster's lridea;
+    code_aster stores the damping read at POSI_AMOR_GENE as AMOR_REDUIT."""
+    out = {}
+    for key, name in (
+        ("POSI_NUME_MODE", "NUME_MODE"),
+        ("POSI_MASS_GENE", "MASS_GENE"),
+        ("POSI_AMOR_GENE", "AMOR_REDUIT"),
+    ):
+        position = occ.get(key)
+        text = record_field(records, *position).replace("D", "E") if position else "0"
+        out[name] = int(float(text)) if name == "NUME_MODE" else float(text)
+    return out
+
+
+def _ideas_modes(ctx, kw, numbering, fields, frequencies, parameters) -> ModeResult:
+    """A MODE_MECA read from datasets 55: the DEPL shapes, FREQ, and the
+    file's NUME_MODE, MASS_GENE and AMOR_REDUIT; MATR_RIGI / MATR_MASS are
+    the matrices the modes refer to (RIGI_GENE from them, as for MED)."""
+    if "DEPL" not in fields:
+        ctx.error("a MODE_MECA needs the DEPL field", "NOM_CHAM", kw)
+    modes = _modes(ctx, kw, numbering, fields, np.zeros(len(parameters), dtype=int), frequencies)
+    modes.generalized_mass = np.array([p["MASS_GENE"] for p in parameters], dtype=float)
+    modes.parameters["NUME_MODE"] = np.array([p["NUME_MODE"] for p in parameters], dtype=int)
+    modes.parameters["AMOR_REDUIT"] = np.array([p["AMOR_REDUIT"] for p in parameters], dtype=float)
+    return modes
 
 
 def _ideas_matches(occ, dataset, name) -> bool:

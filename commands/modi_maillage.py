@@ -89,14 +89,34 @@ def _mirror(ctx, mesh, occ) -> None:
     mesh.coords[:] = mesh.coords - 2.0 * distance[:, None] * n
 
 
+def lehmer_uniform(count: int, seed: int = 24331) -> np.ndarray:
+    """``count`` numbers in (0, 1) of the minimal-standard Lehmer generator
+    (multiplier 16807, modulus 2**31 - 1) that code_aster's ggubs draws,
+    starting from its seed; each is the new state over 2**31."""
+    out = np.empty(count)
+    state = seed
+    for i in range(count):
+        state = state * 16807 % 2147483647
+        out[i] = state / 2147483648.0
+    return out
+
+
+def _random_shift(mesh, alea: float) -> None:
+    """DEFORME ALEA as code_aster's modi_alea: node by node, x, y and z move by
+    (2 r - 1) * ALEA * (the mesh's extent along that axis), r drawn in turn
+    from one generator seeded 24331 (three draws per node whatever the
+    dimension, so a 2D mesh moves as code_aster moves it)."""
+    coords = mesh.coords
+    extent = np.zeros(3)
+    extent[: coords.shape[1]] = coords.max(axis=0) - coords.min(axis=0)
+    draws = lehmer_uniform(3 * mesh.n_nodes).reshape(mesh.n_nodes, 3)
+    shift = 2.0 * (draws - 0.5) * (alea * extent)
+    coords[:] = coords + shift[:, : coords.shape[1]]
+
+
 def _deforme(ctx, mesh, occ) -> None:
     if occ.get("ALEA") is not None:
-        # a small reproducible perturbation of every coordinate in [-ALEA, ALEA]
-        amplitude = float(occ["ALEA"])
-        rng = np.random.default_rng(0)
-        shift = rng.uniform(-amplitude, amplitude, size=mesh.coords.shape)
-        shift[:, mesh.dim :] = 0.0
-        mesh.coords[:] = mesh.coords + shift
+        _random_shift(mesh, float(occ["ALEA"]))
         return
     field = occ["DEPL"]
     numbering = field.numbering

@@ -360,7 +360,9 @@ def _project_modes(ctx, kw, modes, placement, target, default) -> ModeResult:
     names = _field_names(ctx, kw, ["DEPL"])
     if names != ["DEPL"]:
         ctx.unsupported("PROJ_CHAMP of modes: DEPL only", "NOM_CHAM", kw)
-    picked = _instants(ctx, kw, modes.frequencies, modes.mode_numbers())
+    # NUME_ORDRE counts the stored modes from 1 (NUME_MODE is a parameter)
+    orders = np.arange(1, modes.n_modes + 1)
+    picked = _instants(ctx, kw, modes.frequencies, orders)
     shapes, _ = fp.project_values(
         placement, modes.numbering.index, modes.shapes[:, picked].T, target.dofs, default
     )

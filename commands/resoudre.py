@@ -29,7 +29,12 @@ def run(ctx, kw):
     numbering = matrix.numbering
     if field.numbering.mesh is not numbering.mesh:
         ctx.error("the field and the matrix are on different meshes", "CHAM_NO", kw)
-    loads = transfer(np.asarray(field.values, dtype=float), field.numbering, numbering)
+    complex_matrix = np.issubdtype(matrix.matrix.dtype, np.complexfloating)
+    if np.iscomplexobj(field.values) != complex_matrix:
+        # code_aster solves a real system with a real field, a complex one with a complex one
+        kinds = ("complex", "real") if complex_matrix else ("real", "complex")
+        ctx.error(f"a {kinds[0]} matrix and a {kinds[1]} CHAM_NO", "CHAM_NO", kw)
+    loads = transfer(field.values, field.numbering, numbering)
     kinematic = {id(r) for load in numbering.kinematic_loads for r in load.relations}
     dualised = np.array([r.rhs for r in numbering.relations if id(r) not in kinematic], dtype=float)
     if np.any(dualised != 0.0):
@@ -58,13 +63,13 @@ def kinematic_values(ctx, kw, numbering, kinematic) -> np.ndarray:
     """The relations' right-hand side: CHAM_CINE (CALC_CHAR_CINE's field)
     gives the values of the DOFs the kinematic loads eliminate, zero without
     it, as code_aster; the other relations impose zero here."""
-    imposed = np.zeros(len(numbering.relations))
     field = kw.get("CHAM_CINE")
     if field is None:
-        return imposed
+        return np.zeros(len(numbering.relations))
     if not isinstance(field, NodalField):
         ctx.error("CHAM_CINE is not a nodal field", "CHAM_CINE", kw)
-    values = transfer(np.asarray(field.values, dtype=float), field.numbering, numbering)
+    values = transfer(field.values, field.numbering, numbering)
+    imposed = np.zeros(len(numbering.relations), dtype=values.dtype)
     for row, relation in enumerate(numbering.relations):
         if id(relation) in kinematic:
             node, component, coefficient = relation.terms[0]

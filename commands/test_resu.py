@@ -15,6 +15,7 @@ from asterlite.concepts.assembly import ElementField, NodalField
 from asterlite.concepts.harmonic import DynaHarmo, HarmGene
 from asterlite.concepts.modes import (
     FieldOnElements,
+    GeneralizedModes,
     GeneralizedVector,
     ModeResult,
     MultElasResult,
@@ -40,6 +41,7 @@ def run(ctx, kw):
         ("GENE", check_gene),
         ("CHAM_NO", check_field),
         ("CHAM_ELEM", check_element_field),
+        ("OBJET", check_object),
     )
     for key, check in checks:
         for i, occ in enumerate(kw.factor(key), start=1):
@@ -120,14 +122,17 @@ def check_result(ctx, occ, where):
     if isinstance(result, DynaHarmo):
         _check_harmonic(ctx, occ, where, result)
         return
-    if isinstance(result, ModeResult):
+    if isinstance(result, GeneralizedModes) and occ.get("PARA") is None:
+        # code_aster tests a mode_gene's vectors through GENE (RESU_GENE)
+        ctx.unsupported("TEST_RESU/RESU of a mode_gene's field (use GENE)", "NOM_CHAM", occ)
+    if isinstance(result, (ModeResult, GeneralizedModes)):
         times = np.arange(1, result.n_modes + 1, dtype=float)
         order = np.arange(1, result.n_modes + 1)
     elif isinstance(result, DynaTrans):
         times, order = result.times, result.order
     else:
         ctx.unsupported(f"TEST_RESU of a {result.aster_type}", "RESULTAT", occ)
-    if isinstance(result, ModeResult) and occ.get("NUME_MODE") is not None:
+    if isinstance(result, (ModeResult, GeneralizedModes)) and occ.get("NUME_MODE") is not None:
         index, state = _mode_index(ctx, occ, result)
     else:
         index, state = _state_index(ctx, occ, times, order)
@@ -259,6 +264,47 @@ def check_gene(ctx, occ, where):
     if not 1 <= mode <= values.size:
         ctx.error(f"NUME_CMP_GENE={mode}: {values.size} generalized DOFs", "NUME_CMP_GENE", occ)
     record_check(ctx, f"{label} cmp {mode}", values[mode - 1], occ)
+
+
+_GENERALIZED_FIELDS = (".DEPL", ".VITE", ".ACCE")
+
+
+def check_object(ctx, occ, where):
+    """OBJET: code_aster's check sum of a stored array (its tstvec without
+    weights: the sum of the finite values, real and imaginary parts alike).
+    The arrays asterlite keeps under code_aster's names: the generalized
+    DEPL/VITE/ACCE of a harm_gene or a tran_gene ('<name> .DEPL')."""
+    text = str(occ["NOM"])
+    name, suffix = text[:-5].strip(), text[-5:]
+    concept = next(
+        (
+            value
+            for value in ctx.session.namespace.values()
+            if getattr(value, "name", None) == name and isinstance(value, (HarmGene, TranGene))
+        ),
+        None,
+    )
+    if concept is None or suffix not in _GENERALIZED_FIELDS:
+        ctx.unsupported(
+            f"OBJET {text.strip()!r}: asterlite keeps only the generalized "
+            f"{'/'.join(_GENERALIZED_FIELDS)} arrays of harm_gene and tran_gene results",
+            "NOM",
+            occ,
+        )
+    field = suffix[1:]
+    if isinstance(concept, HarmGene):
+        if field not in concept.fields:
+            ctx.error(f"the harm_gene {name} holds no {field} field", "NOM", occ)
+        values = np.asarray(concept.fields[field])
+    else:
+        values = np.asarray(getattr(concept, field.lower()))
+    parts = (
+        np.concatenate([values.real.ravel(), values.imag.ravel()])
+        if np.iscomplexobj(values)
+        else values.ravel()
+    )
+    kept = parts[np.isfinite(parts) & (np.abs(parts) < 1e300)]
+    record_check(ctx, f"{where} {name}{suffix} sum", float(kept.sum()), occ)
 
 
 def _gene_state_index(ctx, occ, result) -> tuple[int, str]:

@@ -297,3 +297,60 @@ def test_vis_a_vis_transf_geom_2_cas_figure_and_prol_zero():
             RESULTAT=transient(source), MAILLAGE_1=source, MAILLAGE_2=target,
             NOM_CHAM="DEPL", VIS_A_VIS={"GROUP_MA_1": "LINE", "TOUT_2": "OUI",
                                         "CAS_FIGURE": "2D"})  # fmt: skip
+
+
+def test_lire_resu_ideas_mode_meca_reads_the_modes_parameters(tmp_path):
+    # datasets 55 of two modes (record 7: 2 4 order mode; record 8: FREQ
+    # MASS_GENE damping 0), read back as code_aster's lridea stores them
+    from asterlite.io.ideas_result import field_lines
+
+    mesh = line([0.0, 0.5, 1.0])
+    num = numbering(mesh)
+    shapes = np.array([[0.0, 0.0, 1.0, 0.5, 2.0, 1.0], [0.0, 0.0, 1.0, -2.0, 0.0, 1.0]])
+    lines = []
+    for k, (freq, mass, damping) in enumerate([(3.5, 0.25, 0.01), (7.25, 0.5, 0.02)]):
+        lines += field_lines(num, shapes[k], "DEPL", 2, (2, 4, k + 1, k + 3),
+                             (freq, mass, damping, 0.0), "T", "S")  # fmt: skip
+    path = tmp_path / "modes.unv"
+    path.write_text("\n".join(lines) + "\n")
+    modes = run(
+        FakeSession({21: path}),
+        "LIRE_RESU",
+        FORMAT="IDEAS",
+        UNITE=21,
+        TYPE_RESU="MODE_MECA",
+        MAILLAGE=mesh,
+        NOM_CHAM="DEPL",
+        TOUT_ORDRE="OUI",
+        FORMAT_IDEAS={
+            "NOM_CHAM": "DEPL",
+            "NUME_DATASET": 55,
+            "RECORD_6": (1, 2, 3, 8, 2, 6),
+            "POSI_ORDRE": (7, 3),
+            "POSI_NUME_MODE": (7, 4),
+            "POSI_FREQ": (8, 1),
+            "POSI_MASS_GENE": (8, 2),
+            "POSI_AMOR_GENE": (8, 3),
+            "NOM_CMP": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+        },
+    )
+    assert list(modes.frequencies) == [3.5, 7.25]
+    assert list(modes.parameters["NUME_MODE"]) == [3, 4]
+    assert list(modes.generalized_mass) == [0.25, 0.5]
+    assert list(modes.parameters["AMOR_REDUIT"]) == [0.01, 0.02]
+    rows = [modes.numbering.index[dof] for dof in num.dofs]  # the file's six slots were read
+    np.testing.assert_allclose(modes.shapes[rows].T, shapes, rtol=1e-6)
+
+
+def test_mesh_labels_rename_every_node_and_cell():
+    mesh = line([0.0, 0.5, 1.0])
+    mesh.addNodeLabels(["A", "B", "C"])
+    assert mesh.node_names == ["A", "B", "C"] and mesh.find_node("B") == 1
+    mesh.addCellLabels([f"E{k}" for k in range(mesh.n_cells)])
+    assert mesh.find_cell("E0") == 0
+    from asterlite.errors import DeckRuntimeError
+
+    with pytest.raises(DeckRuntimeError, match="Bad label size"):
+        mesh.addNodeLabels(["A", "B"])
+    with pytest.raises(DeckRuntimeError, match="repeat"):
+        mesh.addNodeLabels(["A", "A", "C"])

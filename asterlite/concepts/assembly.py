@@ -14,9 +14,10 @@ import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
-from asterlite.concepts.numpy_api import assembled_to_numpy
-from asterlite.errors import UnsupportedError
+from asterlite.concepts.numpy_api import assembled_to_numpy, assembled_triplets
+from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
+from asterlite.fem.lagrange_layout import dualised_relations, lagrange_layout
 
 #: modelisations of the (x, y) plane besides the ``2D_`` discrete elements and bars
 _PLANE_MODELISATIONS = ("D_PLAN", "C_PLAN", "AXIS", "D_PLAN_ABSO")
@@ -217,7 +218,16 @@ class DofNumbering(Concept):
 
     aster_types = ("nume_ddl_sdaster",)
     deck_methods = frozenset(
-        {"getName", "getPhysicalDOFs", "getNumberOfDOFs", "getLagrangeDOFs", "getMesh"}
+        {
+            "getName",
+            "getPhysicalDOFs",
+            "getNumberOfDOFs",
+            "getLagrangeDOFs",
+            "getMesh",
+            "getNodeAndComponentFromDOF",
+            "getComponentFromDOF",
+            "getNodeFromDOF",
+        }
     )
 
     mesh: Mesh
@@ -238,26 +248,36 @@ class DofNumbering(Concept):
     def n_dofs(self) -> int:
         return len(self.dofs)
 
-    # deck API: code_aster's numbering mixes physical DOFs and Lagrange
-    # multipliers; here every DOF is physical, so all indices are returned
+    # deck API: code_aster's numbering of these DOFs, with two Lagrange
+    # multipliers per dualised constraint (asterlite.fem.lagrange_layout)
     def getPhysicalDOFs(self, local=False) -> list[int]:  # noqa: N802
-        return list(range(self.n_dofs))
+        return lagrange_layout(self).physical.tolist()
 
     def getNumberOfDOFs(self, local=False) -> int:  # noqa: N802
-        return self.n_dofs
+        return lagrange_layout(self).size
 
     def getLagrangeDOFs(self, local=False) -> list[int]:  # noqa: N802
-        """None here; with constraints, code_aster's numbering has some and
-        asterlite's has not: refused by name rather than an empty list."""
-        if self.relations:
-            from asterlite.errors import UnsupportedError
+        return lagrange_layout(self).lagrange.tolist()
 
+    def getNodeAndComponentFromDOF(self, dof: int, local=False) -> tuple[int, str]:  # noqa: N802
+        """(0-based node, component) of a DOF of code_aster's numbering: the
+        constrained node and 'LAGR:<component>' for a DDL_IMPO multiplier."""
+        layout = lagrange_layout(self)
+        if not 0 <= int(dof) < layout.size:
+            raise DeckRuntimeError(f"DOF {dof} is outside the numbering (0..{layout.size - 1})")
+        node, component = layout.labels[int(dof)]
+        if not component:
             raise UnsupportedError(
-                f"{self.name or 'numbering'}.getLagrangeDOFs(): code_aster numbers Lagrange "
-                f"multipliers for the {len(self.relations)} constraints of this numbering, "
-                "which asterlite keeps as relations"
+                f"DOF {dof} is a multiplier of a relation of several terms, which has no "
+                "single node and component here"
             )
-        return []
+        return int(node), component
+
+    def getComponentFromDOF(self, dof: int, local=False) -> str:  # noqa: N802
+        return self.getNodeAndComponentFromDOF(dof)[1]
+
+    def getNodeFromDOF(self, dof: int, local=False) -> int:  # noqa: N802
+        return self.getNodeAndComponentFromDOF(dof)[0]
 
     def getMesh(self) -> Mesh:  # noqa: N802
         return self.mesh
@@ -347,7 +367,9 @@ class AssembledMatrix(Concept):
     """``ASSE_MATRICE`` result on the physical DOFs (scipy sparse CSR)."""
 
     aster_types = ("matr_asse_depl_r", "matr_asse")
-    deck_methods = frozenset({"getName", "toNumpy", "getDOFNumbering"})
+    deck_methods = frozenset(
+        {"getName", "toNumpy", "getDOFNumbering", "EXTR_MATR", "getValuesWithDescription"}
+    )
 
     numbering: DofNumbering
     matrix: Any  # scipy.sparse.csr_matrix (n_dofs, n_dofs)
@@ -359,10 +381,22 @@ class AssembledMatrix(Concept):
     materials: Any = None
 
     def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
-        """The values as a dense array (refused when code_aster's would hold
-        Lagrange multipliers: see asterlite.concepts.numpy_api)."""
+        """The values as a dense array, as code_aster's: on its numbering with
+        Lagrange multipliers, kinematically imposed DOFs eliminated
+        (asterlite.concepts.numpy_api)."""
 
         return assembled_to_numpy(self)
+
+    def getValuesWithDescription(self, epsilon=None):  # noqa: N802
+        """(values, rows, columns, size) of the stored terms (numpy_api)."""
+
+        return assembled_triplets(self, epsilon)
+
+    def EXTR_MATR(self, sparse=False, epsilon=None):  # noqa: N802
+        """code_aster's older name: toNumpy(), or getValuesWithDescription()
+        with ``sparse=True``."""
+
+        return assembled_triplets(self, epsilon) if sparse else assembled_to_numpy(self)
 
     def getDOFNumbering(self) -> DofNumbering:  # noqa: N802
         return self.numbering
@@ -381,9 +415,23 @@ class NodalField(Concept):
     """A field on nodes (``cham_no_sdaster``): one value per DOF of a numbering."""
 
     aster_types = ("cham_no_sdaster",)
+    deck_methods = frozenset({"getName", "getValues"})
 
     numbering: DofNumbering
     values: np.ndarray
+
+    def getValues(self) -> list:  # noqa: N802 - code_aster's name
+        """One value per DOF (real or complex). Refused when code_aster's
+        numbering would also hold Lagrange multipliers (dualised constraints),
+        whose values asterlite does not compute."""
+        dualised = len(dualised_relations(self.numbering))
+        if dualised:
+            raise UnsupportedError(
+                f"{self.name or 'field'}.getValues(): code_aster's field holds Lagrange "
+                f"multiplier values for the {dualised} constraints of its numbering, which "
+                "asterlite keeps as relations"
+            )
+        return np.asarray(self.values).tolist()
 
 
 @dataclass(eq=False)

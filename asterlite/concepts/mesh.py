@@ -64,6 +64,8 @@ class Mesh(Concept):
             "hasGroupOfCells",
             "getGroupsOfNodes",
             "getGroupsOfCells",
+            "addNodeLabels",
+            "addCellLabels",
         }
     )
 
@@ -178,3 +180,27 @@ class Mesh(Concept):
 
     def getGroupsOfCells(self, local=False) -> list[str]:  # noqa: N802
         return list(self.cell_groups)
+
+    def addNodeLabels(self, labels) -> None:  # noqa: N802
+        """Rename every node, in order (code_aster's Mesh.addNodeLabels: one
+        label per node, the names it had replaced)."""
+        self.node_names = self._labels(labels, self.n_nodes, "node")
+        self.node_index = {n: i for i, n in enumerate(self.node_names)}
+
+    def addCellLabels(self, labels) -> None:  # noqa: N802
+        """Rename every cell, in order (code_aster's Mesh.addCellLabels)."""
+        self.cell_names = self._labels(labels, self.n_cells, "cell")
+        self.cell_index = {n: i for i, n in enumerate(self.cell_names)}
+
+    @staticmethod
+    def _labels(labels, count: int, what: str) -> list[str]:
+        from asterlite.errors import DeckRuntimeError
+
+        if isinstance(labels, str) or not all(isinstance(x, str) for x in labels):
+            raise DeckRuntimeError(f"add{what.title()}Labels takes a list of names")
+        names = [str(x).strip() for x in labels]
+        if len(names) != count:
+            raise DeckRuntimeError(f"Bad label size: {len(names)} labels for {count} {what}s")
+        if len(set(names)) != count:
+            raise DeckRuntimeError(f"add{what.title()}Labels: the {what} labels repeat a name")
+        return names

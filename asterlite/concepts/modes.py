@@ -221,6 +221,7 @@ class GeneralizedVector(Concept):
     u lies in the span of the basis)."""
 
     aster_types = ("vect_asse_gene",)
+    deck_methods = frozenset({"getName", "EXTR_VECT_GENE", "RECU_VECT_GENE"})
 
     numbering: GeneralizedNumbering
     values: np.ndarray
@@ -230,6 +231,31 @@ class GeneralizedVector(Concept):
     @property
     def basis(self) -> ModeResult:
         return self.numbering.basis
+
+    def EXTR_VECT_GENE(self) -> np.ndarray:  # noqa: N802 - code_aster's name
+        """The generalized values as a numpy array (a copy)."""
+
+        return np.array(self.values, copy=True)
+
+    def RECU_VECT_GENE(self, values) -> None:  # noqa: N802
+        """Replace the values by a deck's sequence of the same length; a real
+        vector takes real values only, as code_aster's setValues."""
+
+        what = f"{self.name or 'vector'}.RECU_VECT_GENE"
+        current = np.asarray(self.values)
+        try:
+            array = np.asarray(values)
+        except (TypeError, ValueError):
+            raise DeckRuntimeError(f"{what} takes a sequence of numbers") from None
+        if array.shape != current.shape:
+            raise DeckRuntimeError(f"{what}: {array.size} values for a vector of {current.size}")
+        if array.dtype.kind not in "biufc" or (
+            array.dtype.kind == "c" and current.dtype.kind != "c"
+        ):
+            raise DeckRuntimeError(f"{what}: {array.dtype} values for a real vector")
+        if not np.all(np.isfinite(array)):
+            raise DeckRuntimeError(f"{what}: the values hold non-finite numbers")
+        self.values = np.array(array, dtype=current.dtype, copy=True)
 
 
 @dataclass(eq=False)

@@ -258,9 +258,24 @@ class TableView:
     def __iter__(self):
         return iter(self.rows)
 
+    def Array(self, para: str, champ: str) -> np.ndarray:  # noqa: N802 - code_aster's name
+        """code_aster's Table.Array: the rows' (para, champ) values as an
+        (n_rows, 2) float array, in row order."""
+        for name in (para, champ):
+            if name not in self.para:
+                raise CommandError(
+                    f"the extracted table has no parameter {name!r} (it has {', '.join(self.para)})"
+                )
+        return np.array([[r.get(para), r.get(champ)] for r in self.rows], dtype=float).reshape(
+            -1, 2
+        )
+
     def deck_getattr(self, name: str):
         """``tab.PARA``: the column of a parameter (code_aster's Colonne, here
-        the list of its values: len(), iteration and indexing)."""
+        the list of its values: len(), iteration and indexing); ``tab.Array``
+        is code_aster's method of that name."""
+        if name == "Array":
+            return self.Array
         if name in self.para:
             return self._table.column(name)
         raise CommandError(

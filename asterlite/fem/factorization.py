@@ -92,10 +92,15 @@ def solve(
 ) -> tuple[np.ndarray, float]:
     """(u, relative residual) of ``A u = f + reactions`` with the relations'
     right-hand sides ``relation_rhs``; ``refinement`` steps of iterative
-    refinement on the reduced system."""
+    refinement on the reduced system. Complex matrices and right-hand sides
+    (a harmonic system) are solved as they are."""
     elim = factorization.elimination
-    u0 = elim.particular(np.asarray(relation_rhs, dtype=float))
-    b = np.asarray(elim.T.T @ (np.asarray(loads, dtype=float) - matrix @ u0))
+    relation_rhs = np.asarray(relation_rhs)
+    u0 = elim.particular(relation_rhs.real)
+    if np.iscomplexobj(relation_rhs):
+        u0 = u0 + 1j * elim.particular(relation_rhs.imag)
+    loads = np.asarray(loads)
+    b = np.asarray(elim.T.T @ (loads - matrix @ u0))
     q = factorization.solve_reduced(b)
     for _ in range(refinement):
         q = q + factorization.solve_reduced(b - factorization.reduced @ q)

@@ -261,6 +261,12 @@ def complex_pencil(stiffness, mass, damping=None) -> quadratic.QuadraticPencil:
     return quadratic.QuadraticPencil(stiffness.matrix, c, mass.matrix, elimination)
 
 
+def _stiffness_only(stiffness, damping) -> bool:
+    """A complex stiffness without damping matrix: code_aster's generalized
+    (not quadratic) problem, whose FREQ is |λ|/2π."""
+    return damping is None and np.issubdtype(stiffness.matrix.dtype, np.complexfloating)
+
+
 def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> ComplexModeResult:
     """A mode_meca_c: largest component 1 + 0i, code_aster's per-mode parameters."""
     numbering = stiffness.numbering
@@ -269,7 +275,7 @@ def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> 
     lam = np.asarray(eigenvalues, dtype=complex)
     c = damping.matrix if damping is not None else None
     params = {"NUME_MODE": np.arange(1, lam.size + 1)}
-    params.update(quadratic.modal_quantities(lam))
+    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping)))
     params.update(quadratic.generalized_parameters(shapes, stiffness.matrix, c, mass.matrix))
     return ComplexModeResult(
         numbering=numbering,
@@ -311,7 +317,7 @@ def build_complex_generalized_result(stiffness, mass, damping, lam, vecs) -> Gen
     vecs = vecs * quadratic.largest_modulus(vecs)[None, :]
     c = None if damping is None else np.asarray(damping.matrix)
     params = {"NUME_MODE": np.arange(1, vecs.shape[1] + 1)}
-    params.update(quadratic.modal_quantities(lam))
+    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping)))
     params.update(
         quadratic.generalized_parameters(
             vecs, np.asarray(stiffness.matrix), c, np.asarray(mass.matrix)

@@ -23,6 +23,12 @@ import numpy as np
 from asterlite.concepts.assembly import NodalField
 from asterlite.concepts.mesh import Mesh
 from asterlite.errors import CommandError
+from asterlite.fem.lagrange_layout import (
+    dualised_relations,
+    full_vector,
+    lagrange_coefficient,
+    lagrange_layout,
+)
 from asterlite.post.cell_fields import result_cell_field
 
 # Where INFO_NONL and other printing methods write: the session's message log
@@ -115,20 +121,29 @@ def info_nonl(shocks):
 class FieldValues(NodalField):
     """A nodal field taken from a result (``result.getField(...)``).
 
-    ``getValues()`` gives one value per DOF of the numbering: every asterlite
-    DOF is physical (no Lagrange multipliers), so ``getPhysicalDOFs()`` of the
-    numbering indexes all of them.
+    ``getValues()`` gives one value per DOF of code_aster's numbering: with
+    dualised constraints, the Lagrange multipliers too (their values from
+    ``reactions``, the loads' reactions per physical DOF, and ``beta``, the
+    stiffness's Lagrange coefficient: asterlite.fem.lagrange_layout), so that
+    ``getPhysicalDOFs()`` of the numbering indexes the physical values.
     """
 
     deck_methods: ClassVar[frozenset[str]] = frozenset(
         {"getName", "getValues", "size", "norm", "getComponents"}
     )
 
+    reactions: np.ndarray | None = None
+    beta: float = 1.0
+
     def getValues(self):  # noqa: N802 - code_aster's names
-        return np.asarray(self.values, dtype=float).tolist()
+        values = np.asarray(self.values)
+        values = values.astype(complex if np.iscomplexobj(values) else float)
+        if dualised_relations(self.numbering):
+            values = full_vector(self.numbering, values, self.reactions, self.beta)
+        return values.tolist()
 
     def size(self) -> int:
-        return int(np.asarray(self.values).size)
+        return int(lagrange_layout(self.numbering).size)
 
     def norm(self, normType: str = "NORM_2") -> float:  # noqa: N803
         values = np.asarray(self.values, dtype=float)
@@ -213,7 +228,16 @@ def mode_field(basis, name: str, nume_ordre=1, para: str = "NUME_ORDRE") -> Fiel
     orders = basis.mode_numbers if str(para).upper() == "NUME_MODE" else None
     orders = np.arange(1, basis.n_modes + 1) if orders is None else orders
     position = order_position(orders, nume_ordre, "mode")
-    return FieldValues(basis.numbering, np.array(basis.shapes[:, position], dtype=float))
+    shape = np.array(basis.shapes[:, position], dtype=float)
+    field = FieldValues(basis.numbering, shape)
+    stiffness, mass = getattr(basis, "stiffness", None), getattr(basis, "mass", None)
+    dynamic = getattr(basis, "kind", "dynamic") == "dynamic" and not np.iscomplexobj(basis.shapes)
+    if dualised_relations(basis.numbering) and dynamic and None not in (stiffness, mass):
+        # the constraints' reactions of the mode: (ω² M - K) φ
+        omega2 = (2.0 * np.pi * float(basis.frequencies[position])) ** 2
+        field.reactions = omega2 * (mass.matrix @ shape) - stiffness.matrix @ shape
+        field.beta = lagrange_coefficient(stiffness.matrix)
+    return field
 
 
 # ------------------------------------------------ tran_gene nonlinearities

@@ -683,9 +683,14 @@ class CommandProxy(DeckCallable):
             session.log(self.name)
             return None
         if self.name == "DETRUIRE":
-            for occurrence in keywords.factor("CONCEPT"):
-                names = occurrence.get("NOM") or ()
-                for concept in names if isinstance(names, tuple) else (names,):
+            # NOM (code_aster 13+) or CONCEPT=_F(NOM=...) (older decks): every
+            # deck name bound to a destroyed concept goes
+            given = [keywords.get("NOM")]
+            given += [occurrence.get("NOM") for occurrence in keywords.factor("CONCEPT")]
+            for names in given:
+                for concept in names if isinstance(names, (tuple, list)) else (names,):
+                    if concept is None:
+                        continue
                     for key, value in list(session.namespace.items()):
                         if value is concept:
                             del session.namespace[key]

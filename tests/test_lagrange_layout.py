@@ -1,0 +1,89 @@
+"""code_aster's numbering with Lagrange multipliers, as the object API shows
+it (asterlite.fem.lagrange_layout): the dualised matrix toNumpy() gives
+solves the constrained problem (a clamped cantilever's tip deflection under
+a tip force, L³/3EI), its multipliers hold half the reaction over β, the
+mode shapes' multiplier values make the dualised eigenproblem hold, and the
+placement is code_aster's (λ1 before the node's DOFs, λ2 after)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from asterlite.fem.lagrange_layout import lagrange_coefficient, lagrange_layout
+from asterlite.post.deck_api import mode_field
+from tests.test_fem_structures import E, R, beam_model, line_mesh
+from tests.test_fem_support import FakeSession, run
+
+N_EL, LENGTH = 4, 2.0
+COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+
+
+def _clamped_beam():
+    session = FakeSession()
+    model, field, cara = beam_model(session, line_mesh(N_EL, LENGTH))
+    clamp = run(session, "AFFE_CHAR_MECA", MODELE=model,
+                DDL_IMPO={"GROUP_NO": "A", "LIAISON": "ENCASTRE"})  # fmt: skip
+    options = {"MODELE": model, "CHAM_MATER": field, "CARA_ELEM": cara, "CHARGE": clamp}
+    rigi = run(session, "CALC_MATR_ELEM", OPTION="RIGI_MECA", **options)
+    mass = run(session, "CALC_MATR_ELEM", OPTION="MASS_MECA", **options)
+    numbering = run(session, "NUME_DDL", MATR_RIGI=rigi)
+    k = run(session, "ASSE_MATRICE", MATR_ELEM=rigi, NUME_DDL=numbering)
+    m = run(session, "ASSE_MATRICE", MATR_ELEM=mass, NUME_DDL=numbering)
+    return session, k, m
+
+
+def test_placement_and_labels_are_code_aster_ones():
+    _, k, _ = _clamped_beam()
+    numbering = k.numbering
+    n = numbering.n_dofs
+    assert numbering.getNumberOfDOFs() == n + 2 * 6
+    # node A (first): six λ1, its six DOFs, six λ2; then the other nodes
+    assert numbering.getLagrangeDOFs() == list(range(6)) + list(range(12, 18))
+    assert numbering.getPhysicalDOFs() == list(range(6, 12)) + list(range(18, n + 12))
+    for k_comp, comp in enumerate(COMPONENTS):
+        assert numbering.getNodeAndComponentFromDOF(k_comp) == (0, f"LAGR:{comp}")
+        assert numbering.getNodeAndComponentFromDOF(12 + k_comp) == (0, f"LAGR:{comp}")
+        assert numbering.getComponentFromDOF(6 + k_comp) == comp
+
+
+def test_dualised_stiffness_solves_the_clamped_cantilever():
+    _, k, m = _clamped_beam()
+    numbering = k.numbering
+    full = k.toNumpy()
+    layout = lagrange_layout(numbering)
+    beta = lagrange_coefficient(k.matrix)
+    physical = layout.physical
+    np.testing.assert_array_equal(full[np.ix_(physical, physical)], k.matrix.toarray())
+    one, two = layout.first[0], layout.second[0]
+    assert full[one, one] == full[two, two] == -beta and full[one, two] == beta
+    # the mass carries no load terms: zero multiplier rows and columns
+    mass = m.toNumpy()
+    assert not mass[layout.lagrange].any() and not mass[:, layout.lagrange].any()
+    force = np.zeros(layout.size)
+    force[physical[numbering.index[(N_EL, "DY")]]] = 1.0
+    solution = np.linalg.solve(full, force)
+    inertia = np.pi * R**4 / 4.0
+    tip = solution[physical[numbering.index[(N_EL, "DY")]]]
+    assert tip == pytest.approx(LENGTH**3 / (3.0 * E * inertia), rel=1e-10)
+    # λ1 = λ2 = r / (2 β), r = (f - K u) at the clamp: the unit force (DY) ...
+    reaction = -(k.matrix @ solution[physical])
+    dy, drz = COMPONENTS.index("DY"), COMPONENTS.index("DRZ")
+    for comp, magnitude in ((dy, 1.0), (drz, LENGTH)):
+        lam1, lam2 = solution[layout.first[comp]], solution[layout.second[comp]]
+        assert lam1 == pytest.approx(lam2, rel=1e-10)
+        assert 2.0 * beta * lam1 == pytest.approx(reaction[comp], rel=1e-8)
+        assert abs(reaction[comp]) == pytest.approx(magnitude, rel=1e-8)  # ... and the moment L
+
+
+def test_mode_values_satisfy_the_dualised_eigenproblem():
+    session, k, m = _clamped_beam()
+    modes = run(session, "CALC_MODES", MATR_RIGI=k, MATR_MASS=m, CALC_FREQ={"NMAX_FREQ": 2})
+    k_full, m_full = k.toNumpy(), m.toNumpy()
+    for order in (1, 2):
+        values = np.array(mode_field(modes, "DEPL", order).getValues())
+        omega2 = (2.0 * np.pi * modes.frequencies[order - 1]) ** 2
+        residual = k_full @ values - omega2 * (m_full @ values)
+        assert np.linalg.norm(residual) <= 1e-7 * np.linalg.norm(k_full @ values)
+        physical = k.numbering.getPhysicalDOFs()
+        np.testing.assert_array_equal(values[physical], modes.shapes[:, order - 1])
