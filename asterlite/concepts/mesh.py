@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from asterlite.concepts.base import Concept
+from asterlite.errors import DeckRuntimeError
 
 #: Number of nodes of each code_aster cell type asterlite knows.
 CELL_NODE_COUNTS = {
@@ -194,8 +195,6 @@ class Mesh(Concept):
 
     @staticmethod
     def _labels(labels, count: int, what: str) -> list[str]:
-        from asterlite.errors import DeckRuntimeError
-
         if isinstance(labels, str) or not all(isinstance(x, str) for x in labels):
             raise DeckRuntimeError(f"add{what.title()}Labels takes a list of names")
         names = [str(x).strip() for x in labels]

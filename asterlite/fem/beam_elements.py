@@ -18,8 +18,9 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam
-from asterlite.fem.beam import BeamError, global_matrices, seg2_angles
+from asterlite.fem.beam import BeamError, cell_angles, global_matrices
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.multifibre_elements import local_matrix
 from asterlite.fem.sections import SectionError
 
 BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE", "2D_BARRE")
@@ -27,20 +28,6 @@ BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE", "2D_BARRE")
 
 def _section_key(section: dict) -> tuple:
     return tuple(sorted((k, v) for k, v in section.items() if not isinstance(v, str)))
-
-
-def cell_angles(model, characteristics, cells) -> np.ndarray:
-    """(n, 3) nautical angles of SEG2 cells: ORIENTATION when given, else the
-    segment direction with no twist (code_aster's default)."""
-    mesh = model.mesh
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    angles = seg2_angles(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
-    if characteristics is not None:
-        for k, cell in enumerate(cells):
-            given = characteristics.orientation.get(int(cell))
-            if given is not None:
-                angles[k] = given
-    return angles
 
 
 def _material_values(materials, cells, modelisation: str, need_density: bool):
@@ -163,8 +150,6 @@ def _local_products(
         modelisation = model.cell_modelisation[int(cell)]
         if modelisation == "POU_D_EM":
             # the fibre-integrated element (code_aster's ef0142 / poefgr use pmfrig, pmfmas)
-            from asterlite.fem.multifibre_elements import local_matrix
-
             a_local = local_matrix(
                 model, characteristics, materials, int(cell), lengths[k], matrix, lumped
             )

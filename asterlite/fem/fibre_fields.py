@@ -16,7 +16,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementField
 from asterlite.fem import beam
-from asterlite.fem.beam_elements import cell_angles
+from asterlite.fem.beam import cell_angles
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.fibres import section_integrals
 

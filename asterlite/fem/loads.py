@@ -24,7 +24,7 @@ import numpy as np
 
 from asterlite.errors import CommandError
 from asterlite.fem import beam
-from asterlite.fem.beam_elements import cell_angles
+from asterlite.fem.beam import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
 from asterlite.fem.laplace_force import laplace_vectors
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms

@@ -25,7 +25,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam
-from asterlite.fem.beam_elements import cell_angles
+from asterlite.fem.beam import cell_angles
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.fibres import FibreError, mass_local, section_integrals, stiffness_local
 

@@ -21,7 +21,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam, gyro
-from asterlite.fem.beam_elements import cell_angles
+from asterlite.fem.beam import cell_angles
 from asterlite.fem.discrete import local_matrix, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
 from asterlite.fem.elements import ElementError, cell_frames, element_blocks
