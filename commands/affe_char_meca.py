@@ -12,6 +12,7 @@ from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
 from asterlite.fem.elements import ElementError
 from asterlite.fem.frames import rotation_from_angles
 from asterlite.fem.node_normals import node_normals
+from asterlite.fem.pipe_elements import FOURIER_COMPONENTS
 from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.selection import (
     as_tuple,
@@ -25,10 +26,15 @@ from asterlite.fem.skin import inward_faces, is_plane
 from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
 from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
-_DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
+_DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX", *FOURIER_COMPONENTS)
 _FORCE_COMPONENTS = {"FX": "DX", "FY": "DY", "FZ": "DZ", "MX": "DRX", "MY": "DRY", "MZ": "DRZ"}
 _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
-_BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
+_BLOCAGE = {
+    "DEPLACEMENT": ("DX", "DY", "DZ"),
+    "ROTATION": ("DRX", "DRY", "DRZ"),
+    # the ovalisation terms of pipe elements
+    "TUYAU_FOURIER": FOURIER_COMPONENTS,
+}
 
 
 def constant_value(raw, node: int, key: str) -> float:

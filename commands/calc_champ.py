@@ -38,6 +38,7 @@ from asterlite.fem.element_fields import (
 )
 from asterlite.fem.elements import ElementError
 from asterlite.fem.loads import beam_element_loads, load_terms
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_element_fields
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
 from asterlite.harmonic.loads import load_matrix
@@ -51,6 +52,7 @@ from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
 _BARS = ("BARRE", "2D_BARRE")
+_PIPES = PIPE_MODELISATIONS
 
 
 _DISCRETE = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
@@ -128,6 +130,41 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
     _keep_selected_orders(ctx, kw, result, fields)
     result.element_fields.update(fields)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
+
+
+def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names) -> None:
+    """EFGE_ELNO (and EFGE_NOEU) of a model of pipes (code_aster's te0185:
+    from the displacements' stresses, real or complex; no inertia)."""
+
+    other = [n for n in names if n not in ("EFGE_ELNO", "EFGE_NOEU")]
+    if other:
+        keyword = next(
+            (
+                k
+                for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE")
+                if other[0] in as_tuple(kw.get(k))
+            ),
+            None,
+        )
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of pipe elements (EFGE_ELNO)", keyword, kw)
+    if kw.factor("CHAM_UTIL"):
+        ctx.unsupported("CHAM_UTIL on a model of pipes", "CHAM_UTIL", kw)
+    if kw.factor("EXCIT"):
+        ctx.unsupported("CALC_CHAMP EXCIT on pipe elements", "EXCIT", kw)
+    values = _nodal_values(ctx, result, kw)
+    try:
+        fields = pipe_element_fields(
+            model, characteristics, materials, result.numbering, pipes, values, ["EFGE_ELNO"]
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    for name in names:
+        if name.endswith("_NOEU"):
+            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
+            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {pipes.size} pipe cells, {values.shape[0]} orders")
 
 
 def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
@@ -392,6 +429,16 @@ def run(ctx, kw):
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _BARS], dtype=int
         )
         solids = solid_cells_of(model, candidates)
+        pipes = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) in _PIPES], dtype=int
+        )
+        if pipes.size:
+            if pipes.size != len(candidates):
+                ctx.unsupported(
+                    "CALC_CHAMP on pipe elements and other elements at once", "GROUP_MA", kw
+                )
+            _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names)
+            return result
         if solids.size and not beams.size and not bars.size:
             _solid_fields(ctx, kw, result, model, materials, solids, names)
             return _cham_utils(ctx, kw, result)
