@@ -1,0 +1,199 @@
+"""Straight pipe elements TUYAU_3M / TUYAU_6M: rigid modes on a tilted line,
+a cantilever's deflections and section forces against beam theory, the
+ovalisation modes of a ring against the closed form, the first bending
+frequency converging with the mesh, and the frames of the pipe lines."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import scipy.linalg as sl
+
+from asterlite.concepts.assembly import (
+    DofNumbering,
+    ElementCharacteristics,
+    Material,
+    MaterialField,
+    Model,
+)
+from asterlite.concepts.mesh import Mesh
+from asterlite.fem import pipe
+from asterlite.fem.assemble import assemble_blocks, build_numbering_dofs
+from asterlite.fem.elements import element_blocks
+from asterlite.fem.pipe_elements import pipe_element_fields, pipe_frames
+
+E, NU, RHO = 1.658e11, 0.3, 1.3404106e4
+R, EP = 9.25e-2, 6.12e-3
+KINDS = (("TUYAU_3M", 3), ("TUYAU_3M", 4), ("TUYAU_6M", 3))
+
+
+def line_mesh(n_cells, n_nodes, length=10.0, direction=(1.0, 0.0, 0.0), bend=None):
+    """A straight line of pipe cells (ends first in each cell), node 0 at the
+    origin; ``bend`` moves the middle node of the first cell sideways."""
+    axis = np.asarray(direction, float) / np.linalg.norm(direction)
+    ends = [i * length / n_cells for i in range(n_cells + 1)]
+    coords = [e * axis for e in ends]
+    cells = []
+    for i in range(n_cells):
+        inner = []
+        for k in range(1, n_nodes - 1):
+            s = ends[i] + k * (ends[i + 1] - ends[i]) / (n_nodes - 1)
+            inner.append(len(coords))
+            coords.append(s * axis)
+        cells.append((i, i + 1, *inner))
+    coords = np.array(coords)
+    if bend is not None:
+        coords[cells[0][2]] += bend
+    kind = f"SEG{n_nodes}"
+    return Mesh(
+        coords=coords,
+        node_names=[f"N{k + 1}" for k in range(len(coords))],
+        cell_names=[f"M{k + 1}" for k in range(n_cells)],
+        cell_types=[kind] * n_cells,
+        cell_nodes=cells,
+    )
+
+
+def pipe_model(mesh, modelisation, generators=(), nsec=16, ncou=3):
+    cells = range(len(mesh.cell_names))
+    model = Model(mesh=mesh, cell_modelisation=dict.fromkeys(cells, modelisation))
+    section = {"SECTION": "CERCLE", "R": R, "EP": EP, "TUYAU_NSEC": nsec, "TUYAU_NCOU": ncou}
+    characteristics = ElementCharacteristics(
+        model=model,
+        sections={c: dict(section) for c in cells},
+        pipe_frames=pipe_frames(mesh, list(cells), generators),
+    )
+    material = Material(behaviours={"ELAS": {"E": E, "NU": NU, "RHO": RHO}})
+    field = MaterialField(mesh=mesh, cell_material=dict.fromkeys(cells, material))
+    return model, characteristics, field
+
+
+def assembled(mesh, modelisation, matrix, **options):
+    model, characteristics, field = pipe_model(mesh, modelisation, **options)
+    numbering = DofNumbering(mesh=mesh, dofs=build_numbering_dofs(model.node_components()))
+    blocks = element_blocks(model, characteristics, matrix, materials=field)
+    return numbering, assemble_blocks(blocks, numbering).toarray(), (model, characteristics, field)
+
+
+def section_area_inertia():
+    ri = R - EP
+    return np.pi * (R**2 - ri**2), np.pi / 4.0 * (R**4 - ri**4)
+
+
+@pytest.mark.parametrize("modelisation,n_nodes", KINDS)
+def test_rigid_motions_of_a_tilted_line_store_no_energy(modelisation, n_nodes):
+    mesh = line_mesh(3, n_nodes, length=2.0, direction=(0.3, -0.5, 0.8))
+    numbering, k, _ = assembled(mesh, modelisation, "K")
+    x = mesh.coords[numbering.dof_nodes]
+    comps = np.asarray(numbering.dof_components)
+    for rigid in range(6):
+        u = np.zeros(len(comps))
+        if rigid < 3:
+            u[comps == ("DX", "DY", "DZ")[rigid]] = 1.0
+        else:
+            omega = np.eye(3)[rigid - 3]
+            velocity = np.cross(omega, x)
+            for d, name in enumerate(("DX", "DY", "DZ")):
+                u[comps == name] = velocity[comps == name, d]
+            u[comps == ("DRX", "DRY", "DRZ")[rigid - 3]] = 1.0
+        assert np.abs(k @ u).max() < 1e-6 * np.abs(k).max()
+
+
+@pytest.mark.parametrize("modelisation,n_nodes", KINDS)
+def test_cantilever_deflections_and_section_forces(modelisation, n_nodes):
+    length, force = 10.0, 3.0e3
+    mesh = line_mesh(8, n_nodes, length=length)
+    # generating line -Z at the clamp: the local frame is the global one
+    generators = [(0, np.array([0.0, 0.0, -1.0]), 1e-4, "RELATIF")]
+    numbering, k, (model, characteristics, field) = assembled(
+        mesh, modelisation, "K", generators=generators
+    )
+    comps = np.asarray(numbering.dof_components)
+    clamped = (numbering.dof_nodes == 0) & np.isin(comps, ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"))
+    free = np.nonzero(~clamped)[0]
+    area, inertia = section_area_inertia()
+    tip = {c: numbering.dof_indices([8], c)[0] for c in ("DX", "DY")}
+    for component, exact in (
+        ("DX", force * length / (E * area)),
+        ("DY", force * length**3 / (3.0 * E * inertia)),
+    ):
+        f = np.zeros(len(comps))
+        f[tip[component]] = force
+        u = np.zeros(len(comps))
+        u[free] = np.linalg.solve(k[np.ix_(free, free)], f[free])
+        # axial: exact; bending: Euler-Bernoulli plus shear and ovalisation (< 0.2 %)
+        tolerance = 1e-9 if component == "DX" else 2e-3
+        assert u[tip[component]] == pytest.approx(exact, rel=tolerance)
+        efge = pipe_element_fields(
+            model, characteristics, field, numbering, np.arange(8), u[None], ["EFGE_ELNO"]
+        )["EFGE_ELNO"].values[0]
+        if component == "DX":
+            assert np.allclose(efge[:, :2, 0], force, rtol=1e-6)
+        else:
+            # shear force along the pipe; bending moment P (L - x) at the clamp
+            assert np.allclose(efge[:, :2, 1], force, rtol=2e-2)
+            assert efge[0, 0, 5] == pytest.approx(force * length, rel=2e-2)
+
+
+@pytest.mark.parametrize("modelisation,modes", (("TUYAU_3M", 3), ("TUYAU_6M", 6)))
+def test_ring_ovalisation_frequencies(modelisation, modes):
+    """A uniform inextensional ovalisation w = cos(m phi), v = -sin(m phi)/m:
+    the Rayleigh quotient is a thin ring's frequency,
+    w^2 = E t^2 m^2 (m^2 - 1)^2 / (12 rho (1 - nu^2) a^4 (m^2 + 1))."""
+    mesh = line_mesh(1, 3, length=0.5)
+    numbering, k, _ = assembled(mesh, modelisation, "K")
+    _, m, _ = assembled(mesh, modelisation, "M")
+    comps = np.asarray(numbering.dof_components)
+    a = R - EP / 2.0
+    for mode in range(2, modes + 1):
+        for phase in "IO":
+            q = np.zeros(len(comps))
+            q[comps == f"W{phase}{mode}"] = 1.0
+            q[comps == f"V{phase}{mode}"] = (-1.0 if phase == "I" else 1.0) / mode
+            omega2 = (q @ k @ q) / (q @ m @ q)
+            exact = E * EP**2 * mode**2 * (mode**2 - 1) ** 2
+            exact /= 12.0 * RHO * (1.0 - NU**2) * a**4 * (mode**2 + 1)
+            assert omega2 == pytest.approx(exact, rel=1e-9)
+
+
+def test_first_bending_frequency_converges_to_the_beam_one():
+    length = 10.0
+    area, inertia = section_area_inertia()
+    euler = 1.8751040687**2 / (2 * np.pi) * np.sqrt(E * inertia / (RHO * area * length**4))
+    frequencies = []
+    for n_cells in (2, 4, 8, 16):
+        mesh = line_mesh(n_cells, 3, length=length)
+        numbering, k, _ = assembled(mesh, "TUYAU_3M", "K")
+        _, m, _ = assembled(mesh, "TUYAU_3M", "M")
+        comps = np.asarray(numbering.dof_components)
+        clamped = (numbering.dof_nodes == 0) & np.isin(
+            comps, ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+        )
+        free = np.nonzero(~clamped)[0]
+        w = sl.eigh(
+            k[np.ix_(free, free)], m[np.ix_(free, free)], eigvals_only=True, subset_by_index=[0, 0]
+        )
+        frequencies.append(np.sqrt(w[0]) / (2 * np.pi))
+    errors = np.abs(np.array(frequencies[:-1]) / frequencies[-1] - 1.0)
+    assert errors[0] > 4 * errors[1] > 16 * errors[2]
+    # shear and rotary inertia lower it by about 0.1 % at L/R = 108
+    assert frequencies[-1] == pytest.approx(euler, rel=2e-3)
+
+
+def test_frames_follow_the_generating_line_and_refuse_elbows():
+    mesh = line_mesh(3, 3, length=3.0)
+    cells = [0, 1, 2]
+    frames = pipe_frames(mesh, cells, [(0, np.array([0.0, 0.0, -1.0]), 1e-4, "RELATIF")])
+    # z opposite the generating line, y = x ^ generating line
+    for frame in frames.values():
+        assert np.allclose(frame, np.eye(3))
+    # given at the last node: the same line walked backwards
+    frames = pipe_frames(mesh, cells, [(3, np.array([0.0, 1.0, 1.0]), 1e-4, "RELATIF")])
+    expected = np.array([[1, 0, 0], [0, -1, 1], [0, -1, -1]]) / np.array([[1], [2**0.5], [2**0.5]])
+    for frame in frames.values():
+        assert np.allclose(frame, expected)
+    bent = line_mesh(3, 3, length=3.0, bend=(0.0, 0.05, 0.0))
+    with pytest.raises(pipe.PipeError, match="elbow"):
+        pipe_frames(bent, cells)
+    with pytest.raises(pipe.PipeError, match="not an end"):
+        pipe_frames(mesh, cells, [(4, np.array([0.0, 0.0, 1.0]), 1e-4, "RELATIF")])
