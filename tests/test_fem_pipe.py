@@ -180,20 +180,71 @@ def test_first_bending_frequency_converges_to_the_beam_one():
     assert frequencies[-1] == pytest.approx(euler, rel=2e-3)
 
 
-def test_frames_follow_the_generating_line_and_refuse_elbows():
+def arc_mesh(n_cells, radius=1.0, angle=np.pi / 2.0, n_nodes=3):
+    """A quarter torus' centre line in the XY plane, then a straight leg."""
+    ends = np.linspace(0.0, angle, n_cells + 1)
+    point = lambda a: radius * np.array([np.sin(a), 1.0 - np.cos(a), 0.0])  # noqa: E731
+    coords = [point(a) for a in ends]
+    cells = []
+    for i in range(n_cells):
+        inner = []
+        for k in range(1, n_nodes - 1):
+            inner.append(len(coords))
+            coords.append(point(ends[i] + k * (ends[i + 1] - ends[i]) / (n_nodes - 1)))
+        cells.append((i, i + 1, *inner))
+    last = coords[n_cells]
+    coords += [last + np.array([0.0, 0.5, 0.0]), last + np.array([0.0, 1.0, 0.0])]
+    cells.append((n_cells, len(coords) - 1, len(coords) - 2))
+    return Mesh(
+        coords=np.array(coords),
+        node_names=[f"N{k + 1}" for k in range(len(coords))],
+        cell_names=[f"M{k + 1}" for k in range(len(cells))],
+        cell_types=[f"SEG{n_nodes}"] * len(cells),
+        cell_nodes=cells,
+    )
+
+
+@pytest.mark.parametrize("modelisation", ("TUYAU_3M", "TUYAU_6M"))
+def test_rigid_motions_of_an_elbow_store_no_energy(modelisation):
+    mesh = arc_mesh(4)
+    generators = [(0, np.array([0.0, 0.3, 1.0]), 1e-4, "RELATIF")]
+    numbering, k, (_, characteristics, _) = assembled(
+        mesh, modelisation, "K", generators=generators
+    )
+    elbows = [c for c in characteristics.pipe_frames.values() if isinstance(c.geometry, pipe.Elbow)]
+    assert len(elbows) == 4
+    assert elbows[0].geometry.radius == pytest.approx(1.0)
+    assert elbows[0].geometry.angle == pytest.approx(np.pi / 8.0)
+    x = mesh.coords[numbering.dof_nodes]
+    comps = np.asarray(numbering.dof_components)
+    for rigid in range(6):
+        u = np.zeros(len(comps))
+        if rigid < 3:
+            u[comps == ("DX", "DY", "DZ")[rigid]] = 1.0
+        else:
+            velocity = np.cross(np.eye(3)[rigid - 3], x)
+            for d, name in enumerate(("DX", "DY", "DZ")):
+                u[comps == name] = velocity[comps == name, d]
+            u[comps == ("DRX", "DRY", "DRZ")[rigid - 3]] = 1.0
+        # the arc's interpolation holds a rigid rotation only to O(theta^n)
+        tolerance = 1e-9 if rigid < 3 else 1e-5
+        assert np.abs(k @ u).max() < tolerance * np.abs(k).max()
+
+
+def test_frames_follow_the_generating_line_and_refuse_seg4_elbows():
     mesh = line_mesh(3, 3, length=3.0)
     cells = [0, 1, 2]
     frames = pipe_frames(mesh, cells, [(0, np.array([0.0, 0.0, -1.0]), 1e-4, "RELATIF")])
     # z opposite the generating line, y = x ^ generating line
-    for frame in frames.values():
-        assert np.allclose(frame, np.eye(3))
+    for cell in frames.values():
+        assert np.allclose(cell.frames, np.eye(3))
     # given at the last node: the same line walked backwards
     frames = pipe_frames(mesh, cells, [(3, np.array([0.0, 1.0, 1.0]), 1e-4, "RELATIF")])
     expected = np.array([[1, 0, 0], [0, -1, 1], [0, -1, -1]]) / np.array([[1], [2**0.5], [2**0.5]])
-    for frame in frames.values():
-        assert np.allclose(frame, expected)
-    bent = line_mesh(3, 3, length=3.0, bend=(0.0, 0.05, 0.0))
-    with pytest.raises(pipe.PipeError, match="elbow"):
+    for cell in frames.values():
+        assert np.allclose(cell.frames, expected)
+    bent = line_mesh(3, 4, length=3.0, bend=(0.0, 0.05, 0.0))
+    with pytest.raises(pipe.PipeError, match="elbow pipe elements on SEG4"):
         pipe_frames(bent, cells)
     with pytest.raises(pipe.PipeError, match="not an end"):
         pipe_frames(mesh, cells, [(4, np.array([0.0, 0.0, 1.0]), 1e-4, "RELATIF")])

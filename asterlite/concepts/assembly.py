@@ -95,8 +95,9 @@ class ElementCharacteristics(Concept):
     sections: dict[int, dict[str, Any]] = field(default_factory=dict)
     # plate characteristics per cell (COQUE: EPAIS, COEF_RIGI_DRZ, INER_ROTA 1/0)
     shells: dict[int, dict[str, float]] = field(default_factory=dict)
-    # pipe cells' global-to-local rotations (their lines and GENE_TUYAU)
-    pipe_frames: dict[int, np.ndarray] = field(default_factory=dict)
+    # pipe cells' geometry and node frames (asterlite.fem.pipe_elements.PipeCell),
+    # from their lines and GENE_TUYAU
+    pipe_frames: dict[int, Any] = field(default_factory=dict)
 
 
 @dataclass(eq=False)

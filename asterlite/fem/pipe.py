@@ -27,6 +27,16 @@ from functools import cache
 
 import numpy as np
 
+from asterlite.fem.pipe_elbow import (
+    Elbow,
+    PipeError,
+    elbow_beam_shape,
+    elbow_strain_operator,
+    fibre_length_factor,
+)
+
+__all__ = ["Elbow", "PipeError"]
+
 #: Gauss rules on [-1, 1] (code_aster's FPG2 and FPG3, in its point order).
 _GAUSS = {
     2: (np.array([1.0, -1.0]) / np.sqrt(3.0), np.array([1.0, 1.0])),
@@ -37,10 +47,6 @@ _NODES = {3: np.array([-1.0, 1.0, 0.0]), 4: np.array([-1.0, 1.0, -1.0 / 3.0, 1.0
 #: Gauss points of the RIGI family by node count (the MASS family has 3).
 RIGI_POINTS = {3: 2, 4: 3}
 MASS_POINTS = 3
-
-
-class PipeError(ValueError):
-    """A pipe element that cannot be computed (bad section, geometry)."""
 
 
 def node_components(modes: int) -> tuple[str, ...]:
@@ -121,18 +127,20 @@ def elasticity(young: float, poisson: float) -> np.ndarray:
 
 
 def strain_operator(
-    modes: int, length: float, section: PipeSection, n_nodes: int, n_points: int
+    modes: int, geometry: float | Elbow, section: PipeSection, n_nodes: int, n_points: int
 ) -> np.ndarray:
     """B (npg, n_layer_points, n_sector_points, 4, n_dofs) of a straight pipe
-    of length ``length`` (local DOFs, code_aster's order)."""
-    h, dh, d2h, _, _ = lagrange(n_nodes, n_points)
-    scale = 2.0 / length
-    dh, d2h = dh * scale, d2h * scale**2
+    of length ``geometry``, or of an elbow (local DOFs, code_aster's order)."""
+    h, dh, d2h, xi, _ = lagrange(n_nodes, n_points)
     zeta, phi, _, r = section.points()
+    shape = (n_points,) + np.broadcast(zeta, phi).shape
+    if isinstance(geometry, Elbow):
+        return elbow_strain_operator(h, dh, d2h, xi, geometry, section, modes, shape)
+    scale = 2.0 / geometry
+    dh, d2h = dh * scale, d2h * scale**2
     big_r = section.mean_radius
     per = 9 + 6 * (modes - 1)
     cos, sin = np.cos(phi), np.sin(phi)
-    shape = (n_points,) + np.broadcast(zeta, phi).shape
     b = np.zeros(shape + (4, n_nodes * per))
     for a in range(n_nodes):
         # (npg, 1, 1) factors against (layers, sectors) ones
@@ -183,35 +191,40 @@ def strain_operator(
     return b
 
 
-def _quadrature_weights(length: float, section: PipeSection, n_points: int, n_nodes: int):
+def _quadrature_weights(geometry, section: PipeSection, n_points: int, n_nodes: int):
     """(npg, layers, sectors) weights of the volume integral (Gauss x Simpson x
-    Jacobian), and the section sub-point weights alone."""
+    Jacobian: half the length, or the fibre's arc on an elbow)."""
     _, _, _, _, gauss = lagrange(n_nodes, n_points)
-    _, _, section_weight, _ = section.points()
-    return gauss[:, None, None] * section_weight[None] * (length / 2.0), section_weight
+    _, phi, section_weight, r = section.points()
+    if isinstance(geometry, Elbow):
+        along = fibre_length_factor(geometry, r, phi)
+    else:
+        along = geometry / 2.0
+    return gauss[:, None, None] * (section_weight * along)[None]
 
 
 def stiffness(
-    modes: int, length: float, section: PipeSection, young: float, poisson: float, n_nodes: int
+    modes: int, geometry, section: PipeSection, young: float, poisson: float, n_nodes: int
 ) -> np.ndarray:
-    """Local stiffness matrix of a straight pipe element."""
+    """Local stiffness matrix of a pipe element (``geometry``: the length of
+    a straight one, or an :class:`Elbow`)."""
     n_points = RIGI_POINTS[n_nodes]
-    b = strain_operator(modes, length, section, n_nodes, n_points)
-    weights, _ = _quadrature_weights(length, section, n_points, n_nodes)
+    b = strain_operator(modes, geometry, section, n_nodes, n_points)
+    weights = _quadrature_weights(geometry, section, n_points, n_nodes)
     c = elasticity(young, poisson)
     cb = np.einsum("ij,...jk->...ik", c, b)
     return np.einsum("pls,plsik,plsij->kj", weights, b, cb)
 
 
-def mass(modes: int, length: float, section: PipeSection, density: float, n_nodes: int):
-    """Local consistent mass matrix of a straight pipe element.
+def mass(modes: int, geometry, section: PipeSection, density: float, n_nodes: int):
+    """Local consistent mass matrix of a pipe element.
 
     The shell terms follow code_aster's tumass column for column: it lays
     each mode's six terms out mode by mode (UI VI WI UO VO WO), the element
     vector mode-type by mode-type; with an exact Simpson rule (TUYAU_NSEC
     large enough for the products of modes) both give the same matrix."""
-    h, _, _, _, gauss = lagrange(n_nodes, MASS_POINTS)
-    _, phi, section_weight, r = section.points()
+    h, _, _, xi, _ = lagrange(n_nodes, MASS_POINTS)
+    _, phi, _, r = section.points()
     per = 9 + 6 * (modes - 1)
     shape = (MASS_POINTS,) + np.broadcast(r, phi).shape
     n = np.zeros(shape + (6, n_nodes * per))
@@ -223,13 +236,19 @@ def mass(modes: int, length: float, section: PipeSection, density: float, n_node
         def put(row, col, value, base=base):
             n[..., row, base + col] = np.broadcast_to(value, shape)
 
-        put(0, 0, hk)
-        put(0, 4, -hk * r * cos)
-        put(0, 5, hk * r * sin)
-        put(1, 1, hk)
-        put(1, 3, hk * r * cos)
-        put(2, 2, hk)
-        put(2, 3, -hk * r * sin)
+        if isinstance(geometry, Elbow):
+            arc = (1.0 + xi) * geometry.angle / 2.0 - geometry.node_angles(n_nodes)[a]
+            ck, sk = np.cos(arc)[:, None, None], np.sin(arc)[:, None, None]
+            for row, col, value in elbow_beam_shape(hk, ck, sk, r, cos, sin):
+                put(row, col, value)
+        else:
+            put(0, 0, hk)
+            put(0, 4, -hk * r * cos)
+            put(0, 5, hk * r * sin)
+            put(1, 1, hk)
+            put(1, 3, hk * r * cos)
+            put(2, 2, hk)
+            put(2, 3, -hk * r * sin)
         for m in range(2, modes + 1):
             col = 6 + 6 * (m - 2)
             cm, sm = np.cos(m * phi), np.sin(m * phi)
@@ -245,13 +264,13 @@ def mass(modes: int, length: float, section: PipeSection, density: float, n_node
         put(5, col + 1, hk * cos)
         put(4, col + 2, -hk * cos)
         put(5, col + 2, hk * sin)
-    weights = gauss[:, None, None] * section_weight[None] * (length / 2.0) * density
+    weights = _quadrature_weights(geometry, section, MASS_POINTS, n_nodes) * density
     return np.einsum("pls,plsik,plsij->kj", weights, n, n)
 
 
 def section_forces_at_gauss(
     modes: int,
-    length: float,
+    geometry,
     section: PipeSection,
     young: float,
     poisson: float,
@@ -262,7 +281,7 @@ def section_forces_at_gauss(
     stresses of local displacements ``u_local`` (..., n_dofs), integrated
     over the section as code_aster's EFGE (linear elasticity)."""
     n_points = RIGI_POINTS[n_nodes]
-    b = strain_operator(modes, length, section, n_nodes, n_points)
+    b = strain_operator(modes, geometry, section, n_nodes, n_points)
     _, phi, weight, r = section.points()
     c = elasticity(young, poisson)
     stress = np.einsum("ij,plsjk,...k->...plsi", c, b, u_local)  # (..., npg, L, S, 4)

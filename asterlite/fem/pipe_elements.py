@@ -4,8 +4,9 @@ frames along the pipe lines and their internal forces (EFGE_ELNO).
 
 Each cell needs a section (``AFFE_CARA_ELEM/POUTRE`` SECTION='CERCLE', R and
 EP, with TUYAU_NSEC, TUYAU_NCOU, MODI_METRIQUE) and a material (E, NU, RHO,
-AMOR_ALPHA, AMOR_BETA). Only straight elements are computed: a cell whose
-middle node leaves the chord (an elbow) is refused by name.
+AMOR_ALPHA, AMOR_BETA). A SEG3 cell whose middle node leaves the chord is
+an elbow (:mod:`asterlite.fem.pipe_elbow`); elbows on SEG4 cells are refused
+by name.
 
 Frames (code_aster's aceatu / angcou): the pipe cells are chained into lines
 (node 2 of a cell is node 1 of the next); on each line the generating line
@@ -17,6 +18,7 @@ made orthogonal to each cell's axis.
 from __future__ import annotations
 
 from collections import defaultdict
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -24,6 +26,7 @@ from asterlite.concepts.assembly import ElementBlock, ElementField
 from asterlite.fem import pipe
 from asterlite.fem.beam_elements import _material_values
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.pipe_elbow import elbow_frames
 
 PIPE_MODELISATIONS = ("TUYAU_3M", "TUYAU_6M")
 FOURIER_MODES = {"TUYAU_3M": 3, "TUYAU_6M": 6}
@@ -31,6 +34,15 @@ PIPE_COMPONENTS = {name: pipe.node_components(m) for name, m in FOURIER_MODES.it
 #: The Fourier DOFs DDL_IMPO BLOCAGE='TUYAU_FOURIER' fixes (up to mode 6).
 FOURIER_COMPONENTS = pipe.node_components(6)[6:]
 EFGE_COMPONENTS = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
+
+
+@dataclass(frozen=True, eq=False)
+class PipeCell:
+    """A pipe cell's geometry (its length, or its :class:`pipe.Elbow`) and
+    its nodes' global-to-local rotations (n_nodes, 3, 3)."""
+
+    geometry: float | pipe.Elbow
+    frames: np.ndarray
 
 
 def _unit(v) -> np.ndarray:
@@ -79,8 +91,8 @@ def _straight(coords, tolerance: float, relative: bool) -> bool:
     return sine <= limit
 
 
-def pipe_frames(mesh, cells, generators=()) -> dict[int, np.ndarray]:
-    """{cell: 3x3 global-to-local rotation} of straight pipe cells.
+def pipe_frames(mesh, cells, generators=()) -> dict[int, PipeCell]:
+    """{cell: PipeCell} of pipe cells, straight or elbows.
 
     ``generators``: (node, vector, PRECISION, CRITERE) of each ORIENTATION
     GENE_TUYAU; its node must start or end a pipe line."""
@@ -113,20 +125,28 @@ def pipe_frames(mesh, cells, generators=()) -> dict[int, np.ndarray]:
             if np.linalg.norm(generator) < 1.0e-4 * np.linalg.norm(v):
                 generator = np.array([0.0, -v[2], v[1]])
             generator = _unit(generator)
+        given = k in starts
         for cell in order:
             coords = mesh.coords[np.asarray(mesh.cell_nodes[cell])]
             name = mesh.cell_names[cell]
             try:
-                straight = _straight(coords, precision, criterion == "RELATIF")
+                if _straight(coords, precision, criterion == "RELATIF"):
+                    frame = pipe.local_frame(coords[1] - coords[0], generator)
+                    # rounded: cells of one length share their matrices
+                    length = round(float(np.linalg.norm(coords[1] - coords[0])), 12)
+                    frames[cell] = PipeCell(length, np.array([frame] * len(coords)))
+                    generator = -frame[2]  # carried to the next cell
+                    continue
+                if len(coords) != 3:
+                    raise pipe.PipeError(
+                        "it is curved: elbow pipe elements on SEG4 cells are not computed"
+                    )
+                elbow, node_frames, generator = elbow_frames(
+                    coords, generator, sense < 0, given, criterion == "RELATIF"
+                )
+                frames[cell] = PipeCell(elbow, np.array(node_frames))
             except pipe.PipeError as exc:
                 raise pipe.PipeError(f"pipe cell {name}: {exc}") from None
-            if not straight:
-                raise pipe.PipeError(
-                    f"pipe cell {name} is curved: elbow pipe elements are not computed"
-                )
-            frame = pipe.local_frame(coords[1] - coords[0], generator)
-            frames[cell] = frame
-            generator = -frame[2]  # carried to the next cell
     return frames
 
 
@@ -156,29 +176,29 @@ def _checked(model, characteristics, cells):
     return sections, frames
 
 
-def _element_rotation(frame: np.ndarray, n_nodes: int, per: int) -> np.ndarray:
-    """The frame on each node's translations and rotations, identity elsewhere."""
+def _element_rotation(frames: np.ndarray, per: int) -> np.ndarray:
+    """Each node's frame on its translations and rotations, identity elsewhere."""
+    n_nodes = len(frames)
     p = np.eye(n_nodes * per)
     for a in range(n_nodes):
         for offset in (0, 3):
             start = a * per + offset
-            p[start : start + 3, start : start + 3] = frame
+            p[start : start + 3, start : start + 3] = frames[a]
     return p
 
 
 def _groups(model, characteristics, cells, values):
-    """Cells sharing modelisation, node count, length, section and material."""
+    """Cells sharing modelisation, node count, geometry, section and material."""
     mesh = model.mesh
     sections = characteristics.sections
     groups: dict[tuple, list[int]] = defaultdict(list)
     for k, cell in enumerate(cells):
         conn = mesh.cell_nodes[int(cell)]
-        length = float(np.linalg.norm(mesh.coords[conn[1]] - mesh.coords[conn[0]]))
         section = _pipe_section(sections[int(cell)])
         key = (
             model.cell_modelisation[int(cell)],
             len(conn),
-            round(length, 12),
+            characteristics.pipe_frames[int(cell)].geometry,
             section,
             tuple(float(values[n][k]) for n in ("E", "NU", "RHO", "AMOR_ALPHA", "AMOR_BETA")),
         )
@@ -201,31 +221,31 @@ def pipe_blocks(
     _, frames = _checked(model, characteristics, cells)
     values = _material_values(materials, cells, "TUYAU", need_density=matrix != "K")
     blocks = []
-    for (modelisation, n_nodes, length, section, mat), rows in _groups(
+    for (modelisation, n_nodes, geometry, section, mat), rows in _groups(
         model, characteristics, cells, values
     ).items():
         young, poisson, density, alpha, beta = mat
         modes = FOURIER_MODES[modelisation]
         try:
             if matrix == "K":
-                local = pipe.stiffness(modes, length, section, young, poisson, n_nodes)
+                local = pipe.stiffness(modes, geometry, section, young, poisson, n_nodes)
             elif matrix == "M":
-                local = pipe.mass(modes, length, section, density, n_nodes)
+                local = pipe.mass(modes, geometry, section, density, n_nodes)
             else:
                 local = np.zeros((n_nodes * (9 + 6 * (modes - 1)),) * 2)
                 if alpha:
                     local = local + alpha * pipe.stiffness(
-                        modes, length, section, young, poisson, n_nodes
+                        modes, geometry, section, young, poisson, n_nodes
                     )
                 if beta:
-                    local = local + beta * pipe.mass(modes, length, section, density, n_nodes)
+                    local = local + beta * pipe.mass(modes, geometry, section, density, n_nodes)
         except pipe.PipeError as exc:
             name = mesh.cell_names[cells[rows[0]]]
             raise ElementError(f"{modelisation} cell {name}: {exc}") from None
         local = 0.5 * (local + local.T)
         per = len(PIPE_COMPONENTS[modelisation])
         members = cells[rows]
-        rotations = np.array([_element_rotation(frames[int(c)], n_nodes, per) for c in members])
+        rotations = np.array([_element_rotation(frames[int(c)].frames, per) for c in members])
         matrices = np.einsum("eji,jk,ekl->eil", rotations, local, rotations)
         nodes = np.array([mesh.cell_nodes[int(c)] for c in members], dtype=int)
         blocks.append(
@@ -253,7 +273,7 @@ def pipe_element_fields(
     out = np.full(
         (values.shape[0], len(cells), max_nodes, 6), np.nan, dtype=np.result_type(values, float)
     )
-    for (modelisation, n_nodes, length, section, mat), rows in _groups(
+    for (modelisation, n_nodes, geometry, section, mat), rows in _groups(
         model, characteristics, cells, props
     ).items():
         components = PIPE_COMPONENTS[modelisation]
@@ -265,11 +285,11 @@ def pipe_element_fields(
             dofs = numbering.dof_indices(np.repeat(nodes, per), list(components) * n_nodes)
             u = np.zeros((values.shape[0], dofs.size), dtype=values.dtype)
             u[:, dofs >= 0] = values[:, dofs[dofs >= 0]]
-            u_local = u @ _element_rotation(frames[cell], n_nodes, per).T
+            u_local = u @ _element_rotation(frames[cell].frames, per).T
             parts = [np.real(u_local)] + ([np.imag(u_local)] if np.iscomplexobj(u_local) else [])
             gauss = [
                 pipe.section_forces_at_gauss(
-                    FOURIER_MODES[modelisation], length, section, mat[0], mat[1], n_nodes, p
+                    FOURIER_MODES[modelisation], geometry, section, mat[0], mat[1], n_nodes, p
                 )
                 for p in parts
             ]
