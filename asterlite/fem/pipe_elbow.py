@@ -32,9 +32,10 @@ class Elbow:
     omega: float  # ANGZZK
 
     def node_angles(self, n_nodes: int) -> np.ndarray:
-        if n_nodes != 3:
-            raise PipeError("elbow pipe elements on SEG4 cells are not computed")
-        return np.array([0.0, self.angle, self.angle / 2.0])
+        """Angular abscissae of the cell's nodes (ends first)."""
+        if n_nodes == 3:
+            return np.array([0.0, self.angle, self.angle / 2.0])
+        return np.array([0.0, self.angle, self.angle / 3.0, 2.0 * self.angle / 3.0])
 
 
 def _frame(x, y) -> np.ndarray:
@@ -51,8 +52,8 @@ def _rotate(vector, axis, cosine, sine) -> np.ndarray:
 
 
 def elbow_frames(coords, generator, backwards: bool, given: bool, relative: bool = True):
-    """(Elbow, [P1, P2, P3] node frames, carried generating line) of an
-    elbow cell (code_aster's angcou, curved branch). ``generator`` is the
+    """(Elbow, [P1, P2, P3] node frames, carried generating line, the line
+    halfway) of a three-node arc (code_aster's angcou, curved branch). ``generator`` is the
     generating line arriving at the cell (at node 1, or at node 2 when the
     line is walked ``backwards``); ``given``: it comes from a GENE_TUYAU."""
     c1, c2, c3 = (np.asarray(c, dtype=float) for c in coords[:3])
@@ -79,6 +80,8 @@ def elbow_frames(coords, generator, backwards: bool, given: bool, relative: bool
     zk1 /= np.linalg.norm(zk1)
     zk2 = _rotate(zk1, axis, np.cos(theta), np.sin(theta))
     zk2 /= np.linalg.norm(zk2)
+    zk3 = _rotate(zk1, axis, ct2, st2)
+    zk3 /= np.linalg.norm(zk3)
 
     def angle(zk, tangent):
         return np.arctan2(np.dot(tangent, np.cross(zk, normal)), np.dot(normal, zk))
@@ -95,7 +98,26 @@ def elbow_frames(coords, generator, backwards: bool, given: bool, relative: bool
         raise PipeError(
             f"the generating line turns along the elbow (angles {omega:g} and {omega_in:g})"
         )
-    return Elbow(radius, theta, omega), frames, zk2
+    return Elbow(radius, theta, omega), frames, zk2, zk3
+
+
+def elbow_frames_seg4(coords, generator, backwards: bool, given: bool, relative: bool = True):
+    """(Elbow, [P1..P4], carried generating line) of a SEG4 elbow: two
+    three-node arcs, nodes (1, 4, 3) then (3, 2, 4), which must agree on the
+    radius, the angle and omega (code_aster's angco4)."""
+    c = [np.asarray(x, dtype=float) for x in coords[:4]]
+    first, f1, _, half = elbow_frames([c[0], c[3], c[2]], generator, backwards, given, relative)
+    second, f2, zk2, _ = elbow_frames([c[2], c[1], c[3]], half, backwards, given, relative)
+    for name, a, b in (
+        ("radius", first.radius, second.radius),
+        ("angle", first.angle, second.angle),
+        ("omega", first.omega, second.omega),
+    ):
+        limit = 1e-4 if not relative else max(1e-4 * abs(a), np.finfo(float).eps)
+        if abs(a - b) > limit:
+            raise PipeError(f"its two halves differ in {name} ({a:g}, {b:g}): not an arc")
+    elbow = Elbow(second.radius, 1.5 * first.angle, first.omega)
+    return elbow, [f1[0], f2[1], f2[0], f2[2]], zk2
 
 
 def elbow_strain_operator(h, dh, d2h, xi, elbow: Elbow, section, modes: int, shape):

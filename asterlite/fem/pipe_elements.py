@@ -4,9 +4,8 @@ frames along the pipe lines and their internal forces (EFGE_ELNO).
 
 Each cell needs a section (``AFFE_CARA_ELEM/POUTRE`` SECTION='CERCLE', R and
 EP, with TUYAU_NSEC, TUYAU_NCOU, MODI_METRIQUE) and a material (E, NU, RHO,
-AMOR_ALPHA, AMOR_BETA). A SEG3 cell whose middle node leaves the chord is
-an elbow (:mod:`asterlite.fem.pipe_elbow`); elbows on SEG4 cells are refused
-by name.
+AMOR_ALPHA, AMOR_BETA). A cell whose inner nodes leave the chord is an
+elbow (:mod:`asterlite.fem.pipe_elbow`).
 
 Frames (code_aster's aceatu / angcou): the pipe cells are chained into lines
 (node 2 of a cell is node 1 of the next); on each line the generating line
@@ -26,7 +25,7 @@ from asterlite.concepts.assembly import ElementBlock, ElementField
 from asterlite.fem import pipe
 from asterlite.fem.beam_elements import _material_values
 from asterlite.fem.element_errors import ElementError
-from asterlite.fem.pipe_elbow import elbow_frames
+from asterlite.fem.pipe_elbow import elbow_frames, elbow_frames_seg4
 
 PIPE_MODELISATIONS = ("TUYAU_3M", "TUYAU_6M")
 FOURIER_MODES = {"TUYAU_3M": 3, "TUYAU_6M": 6}
@@ -137,11 +136,8 @@ def pipe_frames(mesh, cells, generators=()) -> dict[int, PipeCell]:
                     frames[cell] = PipeCell(length, np.array([frame] * len(coords)))
                     generator = -frame[2]  # carried to the next cell
                     continue
-                if len(coords) != 3:
-                    raise pipe.PipeError(
-                        "it is curved: elbow pipe elements on SEG4 cells are not computed"
-                    )
-                elbow, node_frames, generator = elbow_frames(
+                compute = elbow_frames if len(coords) == 3 else elbow_frames_seg4
+                elbow, node_frames, generator, *_ = compute(
                     coords, generator, sense < 0, given, criterion == "RELATIF"
                 )
                 frames[cell] = PipeCell(elbow, np.array(node_frames))
