@@ -59,7 +59,8 @@ def _ddl_impo(
     for kind in as_tuple(occ.get("BLOCAGE")):
         if kind not in _BLOCAGE:
             ctx.unsupported(f"DDL_IMPO BLOCAGE={kind!r}", "BLOCAGE", occ)
-        # BLOCAGE fixes the components the nodes carry (none is required)
+        # BLOCAGE fixes the components the nodes carry (none is required,
+        # but TUYAU_FOURIER needs Fourier DOFs on each node, as code_aster)
         imposed.update({c: 0.0 for c in _BLOCAGE[kind] if c not in given})
         optional |= set(_BLOCAGE[kind]) - given
     excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
@@ -67,6 +68,15 @@ def _ddl_impo(
         excluded |= set(mesh.nodes_of_cells(cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")))
     if excluded:
         nodes = np.array([n for n in nodes if int(n) not in excluded], dtype=int)
+    if "TUYAU_FOURIER" in as_tuple(occ.get("BLOCAGE")):
+        for node in nodes:
+            if not set(FOURIER_COMPONENTS) & set(components.get(int(node), ())):
+                ctx.error(
+                    f"BLOCAGE='TUYAU_FOURIER': node {mesh.node_names[node]} carries no "
+                    "Fourier DOF of a pipe element",
+                    "BLOCAGE",
+                    occ,
+                )
     if not imposed:
         ctx.error("no component is imposed", None, occ)
     for comp, value in imposed.items():

@@ -251,3 +251,49 @@ def test_frames_follow_the_generating_line_and_refuse_bad_arcs():
         pipe_frames(bent, cells)
     with pytest.raises(pipe.PipeError, match="not an end"):
         pipe_frames(mesh, cells, [(4, np.array([0.0, 0.0, 1.0]), 1e-4, "RELATIF")])
+
+
+def test_commands_orient_pipes_and_block_their_fourier_dofs():
+    from asterlite.errors import CommandError
+    from tests.test_fem_support import FakeSession, run
+
+    mesh = line_mesh(2, 3, length=2.0)
+    mesh.node_groups.update({"A": np.array([0]), "B": np.array([2])})
+    mesh.cell_groups["ALL"] = np.arange(2)
+    session = FakeSession()
+    model = run(
+        session,
+        "AFFE_MODELE",
+        MAILLAGE=mesh,
+        AFFE={"TOUT": "OUI", "PHENOMENE": "MECANIQUE", "MODELISATION": "TUYAU_6M"},
+    )
+    cara = run(
+        session,
+        "AFFE_CARA_ELEM",
+        MODELE=model,
+        POUTRE={"GROUP_MA": "ALL", "SECTION": "CERCLE", "CARA": ("R", "EP"), "VALE": (R, EP)},
+        ORIENTATION={"GROUP_NO": "B", "CARA": "GENE_TUYAU", "VALE": (0.0, 0.0, -1.0)},
+    )
+    assert cara.sections[0]["TUYAU_NSEC"] == 16 and cara.sections[0]["TUYAU_NCOU"] == 3
+    assert np.allclose(cara.pipe_frames[0].frames, np.eye(3))
+    load = run(
+        session,
+        "AFFE_CHAR_MECA",
+        MODELE=model,
+        DDL_IMPO=[
+            {"GROUP_NO": "A", "BLOCAGE": ("DEPLACEMENT", "TUYAU_FOURIER")},
+            {"GROUP_NO": "B", "WO6": 0.5},
+        ],
+    )
+    fixed = {(t[0][0], t[0][1]): r.rhs for r in load.relations for t in [r.terms]}
+    assert len(fixed) == 3 + 33 + 1
+    assert fixed[(0, "WO1")] == 0.0 and fixed[(0, "UI6")] == 0.0 and (0, "DRX") not in fixed
+    assert fixed[(2, "WO6")] == 0.5
+    with pytest.raises(CommandError, match="no WO6 DOF"):
+        model3 = run(
+            session,
+            "AFFE_MODELE",
+            MAILLAGE=mesh,
+            AFFE={"TOUT": "OUI", "PHENOMENE": "MECANIQUE", "MODELISATION": "TUYAU_3M"},
+        )
+        run(session, "AFFE_CHAR_MECA", MODELE=model3, DDL_IMPO={"GROUP_NO": "B", "WO6": 0.0})
