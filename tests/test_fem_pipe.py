@@ -297,3 +297,28 @@ def test_commands_orient_pipes_and_block_their_fourier_dofs():
             AFFE={"TOUT": "OUI", "PHENOMENE": "MECANIQUE", "MODELISATION": "TUYAU_3M"},
         )
         run(session, "AFFE_CHAR_MECA", MODELE=model3, DDL_IMPO={"GROUP_NO": "B", "WO6": 0.0})
+
+
+def test_mass_and_centre_of_a_straight_pipe_and_an_elbow():
+    """MASS_INER of pipes: rho A L, the centre of a straight pipe at its
+    middle, an elbow's on the bisector at Rc sin(a)/a (1 + (Re^2 + Ri^2) /
+    (4 Rc^2)) from the bend centre (a torus' centroid, a = theta / 2)."""
+    from asterlite.fem.mass_properties import mass_properties
+
+    area, _ = section_area_inertia()
+    mesh = line_mesh(4, 3, length=2.0, direction=(0.0, 1.0, 1.0))
+    values = mass_properties(*pipe_model(mesh, "TUYAU_3M"))
+    assert values["MASSE"] == pytest.approx(RHO * area * 2.0, rel=1e-12)
+    middle = 2.0 / np.sqrt(2.0) / 2.0
+    assert [values[f"CDG_{c}"] for c in "XYZ"] == pytest.approx([0.0, middle, middle])
+    for n_nodes in (3, 4):
+        mesh = arc_mesh(1, radius=1.0, angle=np.pi / 2.0, n_nodes=n_nodes)
+        generators = [(0, np.array([0.0, 0.0, 1.0]), 1e-4, "RELATIF")]
+        model, characteristics, field = pipe_model(mesh, "TUYAU_3M", generators)
+        values = mass_properties(model, characteristics, field, cells=[0])
+        assert values["MASSE"] == pytest.approx(RHO * area * np.pi / 2.0, rel=1e-12)
+        half = np.pi / 4.0
+        distance = np.sin(half) / half * (1.0 + (R**2 + (R - EP) ** 2) / 4.0)
+        # bend centre (0, 1, 0), bisector towards (sin 45, -cos 45)
+        expected = [distance * np.sin(half), 1.0 - distance * np.cos(half), 0.0]
+        assert [values[f"CDG_{c}"] for c in "XYZ"] == pytest.approx(expected, rel=1e-12)

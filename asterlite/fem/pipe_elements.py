@@ -292,3 +292,83 @@ def pipe_element_fields(
             at_gauss = gauss[0] if len(gauss) == 1 else gauss[0] + 1j * gauss[1]
             out[:, k, :n_nodes, :] = np.einsum("ng,ogc->onc", extrapolation, at_gauss)
     return {name: ElementField(name, cells, EFGE_COMPONENTS, out.copy()) for name in options}
+
+
+def _cell_inertia(coords, section, cell: PipeCell, density: float):
+    """(mass, centre of gravity, 3x3 inertia tensor about it) of a pipe
+    cell by code_aster's own formulas (te0038), not from its mass matrix."""
+    outer, thickness = float(section["R"]), float(section["EP"])
+    inner, mean = outer - thickness, outer - thickness / 2.0
+    area = np.pi * (outer**2 - inner**2)
+    bending = np.pi * (outer**4 - inner**4) / 4.0
+    middle = (coords[0] + coords[1]) / 2.0
+    geometry = cell.geometry
+    if not isinstance(geometry, pipe.Elbow):
+        length = float(geometry)
+        mass = density * area * length
+        local = np.diag(
+            [
+                density * 2.0 * bending * length,
+                density * length * (bending + area * length**2 / 12.0),
+                density * length * (bending + area * length**2 / 12.0),
+            ]
+        )
+        frame = cell.frames[0]
+        return mass, middle, frame.T @ local @ frame
+    theta, radius = geometry.angle, geometry.radius
+    length = theta * radius
+    mass = density * area * length
+    if len(coords) == 3:
+        frame = cell.frames[2]
+    else:  # the chord's frame in the bend plane of the inner nodes' midpoint
+        inner_middle = (coords[2] + coords[3]) / 2.0
+        t1 = _unit(inner_middle - coords[0])
+        t2 = _unit(coords[1] - inner_middle)
+        chord = coords[1] - coords[0]
+        frame = np.array(_chord_frame(chord, np.cross(chord, _unit(np.cross(t2, t1)))))
+    spread = 1.0 + (mean**2 + thickness**2 / 4.0) / (2.0 * radius**2)
+    offset = -radius * (np.sin(theta / 2.0) / (theta / 2.0) * spread - np.cos(theta / 2.0))
+    centre = middle + frame.T @ np.array([0.0, offset, 0.0])
+    # code_aster's te0038 terms as written (outer radius in both)
+    xa = area * outer**2 + 3.0 * bending
+    xb = outer * np.sin(theta / 2.0) / theta / 2.0
+    xb *= 1.0 + (mean**2 + thickness**2 / 4.0) / (2.0 * outer**2)
+    local = np.diag(
+        [
+            density * length * (bending + xa * (0.5 + np.sin(theta) / (4.0 * theta)))
+            - mass * xb**2,
+            density * length * (bending + xa * (0.5 - np.sin(theta) / (4.0 * theta))),
+            density * length * xa - mass * xb**2,
+        ]
+    )
+    return mass, centre, frame.T @ local @ frame
+
+
+def _chord_frame(x, y):
+    x = _unit(x)
+    y = _unit(y - np.dot(y, x) * x)
+    return [x, y, np.cross(x, y)]
+
+
+def pipe_rigid_inertia(model, characteristics, materials, cells) -> np.ndarray:
+    """6x6 projection of the pipe cells' masses on the rigid motions about
+    the origin (translations, then rotations), from code_aster's MASS_INER
+    formulas of pipes: m I, m [e_k x c]_i, J_c + m (|c|^2 I - c c^T)."""
+    cells = np.asarray(cells, dtype=int)
+    rigid = np.zeros((6, 6))
+    if not len(cells):
+        return rigid
+    mesh = model.mesh
+    sections, frames = _checked(model, characteristics, cells)
+    density = _material_values(materials, cells, "TUYAU", need_density=True)["RHO"]
+    for k, cell in enumerate(cells):
+        coords = mesh.coords[np.asarray(mesh.cell_nodes[int(cell)])]
+        mass, centre, inertia = _cell_inertia(
+            coords, sections[int(cell)], frames[int(cell)], float(density[k])
+        )
+        coupling = mass * np.array([np.cross(e, centre) for e in np.eye(3)])
+        rigid[:3, :3] += mass * np.eye(3)
+        rigid[3:, :3] += coupling
+        rigid[:3, 3:] += coupling.T
+        rigid[3:, 3:] += inertia + mass * (centre @ centre * np.eye(3) - np.outer(centre, centre))
+    return rigid
