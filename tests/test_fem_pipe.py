@@ -322,3 +322,23 @@ def test_mass_and_centre_of_a_straight_pipe_and_an_elbow():
         # bend centre (0, 1, 0), bisector towards (sin 45, -cos 45)
         expected = [distance * np.sin(half), 1.0 - distance * np.cos(half), 0.0]
         assert [values[f"CDG_{c}"] for c in "XYZ"] == pytest.approx(expected, rel=1e-12)
+
+
+def test_gravity_on_pipes_is_the_weight_on_the_translations():
+    """PESANTEUR on pipes (te0583): the nodes' DX, DY, DZ share rho g V, no
+    moment; on a straight cell the shares are rho g A L (1/6, 1/6, 2/3)."""
+    from asterlite.fem.loads import gravity_terms
+
+    area, _ = section_area_inertia()
+    for mesh, length in ((line_mesh(1, 3, length=2.0), 2.0), (arc_mesh(2), np.pi / 2.0 + 1.0)):
+        generators = [(0, np.array([0.0, 0.0, 1.0]), 1e-4, "RELATIF")]
+        model, characteristics, field = pipe_model(mesh, "TUYAU_3M", generators)
+        terms = gravity_terms(model, characteristics, 9.81, (0.0, 0.0, -1.0), materials=field)
+        assert {c for _, c, _ in terms} == {"DX", "DY", "DZ"}
+        total = sum(v for _, c, v in terms if c == "DZ")
+        assert total == pytest.approx(-9.81 * RHO * area * length, rel=1e-12)
+    model, characteristics, field = pipe_model(line_mesh(1, 3, length=2.0), "TUYAU_3M")
+    terms = gravity_terms(model, characteristics, 9.81, (0.0, 0.0, -1.0), materials=field)
+    shares = {n: v for n, c, v in terms if c == "DZ"}
+    weight = -9.81 * RHO * area * 2.0
+    assert [shares[n] for n in (0, 1, 2)] == pytest.approx([weight / 6, weight / 6, 2 * weight / 3])

@@ -191,7 +191,7 @@ def strain_operator(
     return b
 
 
-def _quadrature_weights(geometry, section: PipeSection, n_points: int, n_nodes: int):
+def quadrature_weights(geometry, section: PipeSection, n_points: int, n_nodes: int):
     """(npg, layers, sectors) weights of the volume integral (Gauss x Simpson x
     Jacobian: half the length, or the fibre's arc on an elbow)."""
     _, _, _, _, gauss = lagrange(n_nodes, n_points)
@@ -210,7 +210,7 @@ def stiffness(
     a straight one, or an :class:`Elbow`)."""
     n_points = RIGI_POINTS[n_nodes]
     b = strain_operator(modes, geometry, section, n_nodes, n_points)
-    weights = _quadrature_weights(geometry, section, n_points, n_nodes)
+    weights = quadrature_weights(geometry, section, n_points, n_nodes)
     c = elasticity(young, poisson)
     cb = np.einsum("ij,...jk->...ik", c, b)
     return np.einsum("pls,plsik,plsij->kj", weights, b, cb)
@@ -264,7 +264,7 @@ def mass(modes: int, geometry, section: PipeSection, density: float, n_nodes: in
         put(5, col + 1, hk * cos)
         put(4, col + 2, -hk * cos)
         put(5, col + 2, hk * sin)
-    weights = _quadrature_weights(geometry, section, MASS_POINTS, n_nodes) * density
+    weights = quadrature_weights(geometry, section, MASS_POINTS, n_nodes) * density
     return np.einsum("pls,plsik,plsij->kj", weights, n, n)
 
 

@@ -372,3 +372,33 @@ def pipe_rigid_inertia(model, characteristics, materials, cells) -> np.ndarray:
         rigid[:3, 3:] += coupling.T
         rigid[3:, 3:] += inertia + mass * (centre @ centre * np.eye(3) - np.outer(centre, centre))
     return rigid
+
+
+def pipe_gravity_terms(model, characteristics, materials, cells, acceleration) -> list:
+    """(node, component, force) of a uniform acceleration on pipe cells, as
+    code_aster's te0583: each node's DX, DY, DZ take the integral of its shape
+    function times rho g over the volume (MASS points; an elbow's fibres by
+    their own length), no moment and no ovalisation term."""
+    cells = np.asarray(cells, dtype=int)
+    if not len(cells):
+        return []
+    mesh = model.mesh
+    sections, frames = _checked(model, characteristics, cells)
+    density = _material_values(materials, cells, "TUYAU", need_density=True)["RHO"]
+    terms = []
+    for k, cell in enumerate(cells):
+        nodes = mesh.cell_nodes[int(cell)]
+        h = pipe.lagrange(len(nodes), pipe.MASS_POINTS)[0]
+        weights = pipe.quadrature_weights(
+            frames[int(cell)].geometry,
+            _pipe_section(sections[int(cell)]),
+            pipe.MASS_POINTS,
+            len(nodes),
+        )
+        shares = density[k] * h.T @ weights.sum(axis=(1, 2))  # (nno,)
+        for node, share in zip(nodes, shares, strict=True):
+            terms.extend(
+                (int(node), c, share * a)
+                for c, a in zip(("DX", "DY", "DZ"), acceleration, strict=True)
+            )
+    return terms
