@@ -1,6 +1,6 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
 LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
-and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP,
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_TUYAU; FORCE_FACE, PRES_REP,
 FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
 
@@ -12,7 +12,7 @@ from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
 from asterlite.fem.elements import ElementError
 from asterlite.fem.frames import rotation_from_angles
 from asterlite.fem.node_normals import node_normals
-from asterlite.fem.pipe_elements import FOURIER_COMPONENTS
+from asterlite.fem.pipe_elements import FOURIER_COMPONENTS, PIPE_MODELISATIONS
 from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.selection import (
     as_tuple,
@@ -415,6 +415,9 @@ def beam_load_cells(ctx, model, occ) -> np.ndarray:
     for cell in cells:
         if model.cell_modelisation.get(int(cell)) in _BEAM_LOADED:
             kept.append(int(cell))
+        elif model.cell_modelisation.get(int(cell)) in PIPE_MODELISATIONS:
+            # code_aster loads pipes too (te0583), asterlite not yet
+            ctx.unsupported("FORCE_POUTRE on pipe elements (TUYAU_3M, TUYAU_6M)", "GROUP_MA", occ)
         elif occ.get("TOUT") != "OUI":
             ctx.error(
                 f"FORCE_POUTRE on cell {model.mesh.cell_names[cell]}, which is not a beam",
@@ -559,6 +562,21 @@ def _solid_loads(ctx, model, load, kw) -> None:
             )
 
 
+def _force_tuyau(ctx, model, load, occ) -> None:
+    """FORCE_TUYAU: a pressure inside the pipe cells of the selection (the
+    other cells have no such load, as in code_aster), assembled with the
+    cells' frames (asterlite.fem.pipe_elements.pipe_pressure_terms)."""
+    cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    pipes = [int(c) for c in cells if model.cell_modelisation.get(int(c)) in PIPE_MODELISATIONS]
+    if not pipes:
+        ctx.error("FORCE_TUYAU: no pipe element (TUYAU_3M, TUYAU_6M) among the cells", None, occ)
+    pressure = occ.get("PRES")
+    if pressure is not None:
+        load.extra.setdefault("FORCE_TUYAU", []).append(
+            {"CELLS": np.array(pipes, dtype=int), "PRES": float(pressure)}
+        )
+
+
 #: the factor keywords read one occurrence at a time, in the order their terms
 #: are added to the load
 _OCCURRENCE_READERS = (
@@ -571,6 +589,7 @@ _OCCURRENCE_READERS = (
         "FORCE_POUTRE",
         lambda ctx, model, _components, load, occ: _force_poutre(ctx, model, load, occ),
     ),
+    ("FORCE_TUYAU", lambda ctx, model, _components, load, occ: _force_tuyau(ctx, model, load, occ)),
     ("LIAISON_ELEM", _liaison_elem),
     ("FACE_IMPO", _face_impo),
     ("LIAISON_GROUP", _liaison_group),

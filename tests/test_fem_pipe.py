@@ -342,3 +342,31 @@ def test_gravity_on_pipes_is_the_weight_on_the_translations():
     shares = {n: v for n, c, v in terms if c == "DZ"}
     weight = -9.81 * RHO * area * 2.0
     assert [shares[n] for n in (0, 1, 2)] == pytest.approx([weight / 6, weight / 6, 2 * weight / 3])
+
+
+def test_internal_pressure_swells_a_straight_pipe_as_a_thin_tube():
+    """FORCE_TUYAU on a straight pipe, free to stretch: hoop stress
+    p Ri / t, so WO = p Ri a / (E t) (a the mean radius) and the length
+    shrinks by nu p Ri / (E t) L."""
+    from asterlite.fem.pipe_elements import pipe_pressure_terms
+
+    length, pressure = 2.0, 1.0e6
+    mesh = line_mesh(4, 3, length=length)
+    numbering, k, (model, characteristics, _) = assembled(mesh, "TUYAU_3M", "K")
+    f = np.zeros(numbering.n_dofs)
+    for node, component, value in pipe_pressure_terms(
+        model, characteristics, np.arange(4), pressure
+    ):
+        f[numbering.dof_indices([node], component)[0]] += value
+    inner, mean = R - EP, R - EP / 2.0
+    assert f.sum() == pytest.approx(pressure * 2.0 * np.pi * inner * length, rel=1e-12)
+    comps = np.asarray(numbering.dof_components)
+    # the first node holds the rigid motions, the swelling is free
+    fixed = (numbering.dof_nodes == 0) & np.isin(comps, ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"))
+    free = np.nonzero(~fixed)[0]
+    u = np.zeros(numbering.n_dofs)
+    u[free] = np.linalg.solve(k[np.ix_(free, free)], f[free])
+    hoop = pressure * inner / EP / E
+    assert u[comps == "WO"] == pytest.approx(hoop * mean, rel=1e-9)
+    tip = numbering.dof_indices([4], "DX")[0]
+    assert u[tip] == pytest.approx(-NU * hoop * length, rel=1e-9)

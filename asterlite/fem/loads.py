@@ -24,7 +24,11 @@ from asterlite.errors import CommandError
 from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
-from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_gravity_terms
+from asterlite.fem.pipe_elements import (
+    PIPE_MODELISATIONS,
+    pipe_gravity_terms,
+    pipe_pressure_terms,
+)
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
 from asterlite.fem.plane_wave import plane_wave_history
 from asterlite.fem.plate_elements import plate_gravity_terms
@@ -347,6 +351,10 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
                 item.get("VALUES_2"),
             )
         )
+    for item in load.extra.get("FORCE_TUYAU", []):
+        if characteristics is None:
+            raise ElementError("FORCE_TUYAU needs the pipes' CARA_ELEM")
+        terms.extend(pipe_pressure_terms(model, characteristics, item["CELLS"], item["PRES"]))
     terms.extend(solid_load_terms(model.mesh, load.extra))
     terms.extend(plane_load_terms(model, load.extra))
     return terms

@@ -97,8 +97,8 @@ class PipeSection:
         phi = np.arange(2 * s + 1) * 2.0 * np.pi / (2.0 * s)
         radius = self.mean_radius + (zeta if self.metric else 0.0 * zeta)
         weight = (
-            _simpson(n)[:, None]
-            * _simpson(s)[None, :]
+            simpson(n)[:, None]
+            * simpson(s)[None, :]
             * self.thickness
             * 2.0
             * np.pi
@@ -108,7 +108,7 @@ class PipeSection:
         return zeta[:, None], phi[None, :], weight, radius[:, None]
 
 
-def _simpson(n: int) -> np.ndarray:
+def simpson(n: int) -> np.ndarray:
     """Composite Simpson weights of 2n intervals (h = 1)."""
     w = np.empty(2 * n + 1)
     w[0::2], w[1::2] = 2.0 / 3.0, 4.0 / 3.0

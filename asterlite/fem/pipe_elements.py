@@ -402,3 +402,55 @@ def pipe_gravity_terms(model, characteristics, materials, cells, acceleration) -
                 for c, a in zip(("DX", "DY", "DZ"), acceleration, strict=True)
             )
     return terms
+
+
+def pipe_pressure_terms(model, characteristics, cells, pressure: float) -> list:
+    """(node, component, force) of a uniform pressure inside pipe cells, as
+    code_aster's te0583 (FORCE_TUYAU): on the inner surface, at the MASS
+    points along the axis and the section's Simpson points; a straight cell
+    loads the swelling WO only, an elbow also its translations (the inner
+    fibres are shorter) and WI1, WO1."""
+    cells = np.asarray(cells, dtype=int)
+    mesh = model.mesh
+    sections, frames = _checked(model, characteristics, cells)
+    terms = []
+    for cell in cells:
+        nodes = mesh.cell_nodes[int(cell)]
+        n_nodes = len(nodes)
+        per = len(PIPE_COMPONENTS[model.cell_modelisation[int(cell)]])
+        section = _pipe_section(sections[int(cell)])
+        h, _, _, xi, gauss = pipe.lagrange(n_nodes, pipe.MASS_POINTS)
+        sectors = section.sectors
+        phi = np.arange(2 * sectors + 1) * np.pi / sectors
+        sector_weights = pipe.simpson(sectors) * np.pi / sectors  # sum: 2 pi
+        inner = section.radius - section.thickness
+        geometry = frames[int(cell)].geometry
+        forces = np.zeros((n_nodes, per))
+        wo = 6 + 6 * (FOURIER_MODES[model.cell_modelisation[int(cell)]] - 1)
+        if isinstance(geometry, pipe.Elbow):
+            theta, omega = geometry.angle, geometry.omega
+            half_length = theta * (geometry.radius + inner * np.sin(phi)) / 2.0  # (sectors,)
+            arc = (1.0 + xi)[:, None] * theta / 2.0 - geometry.node_angles(n_nodes)[None, :]
+            for a in range(n_nodes):
+                # (npg, sectors) weights of the inner surface
+                w = (gauss * h[:, a])[:, None] * (sector_weights * half_length)[None, :]
+                w = w * inner * pressure
+                ck, sk = np.cos(arc[:, a])[:, None], np.sin(arc[:, a])[:, None]
+                sin, cos = np.sin(phi)[None, :], np.cos(phi)[None, :]
+                forces[a, 0] = np.sum(w * sin * sk)
+                forces[a, 1] = -np.sum(w * sin * ck)
+                forces[a, 2] = -np.sum(w * cos)
+                forces[a, wo] = np.sum(w)
+                forces[a, wo + 1] = np.sum(w * np.cos(phi - omega)[None, :])
+                forces[a, wo + 2] = np.sum(w * np.sin(phi - omega)[None, :])
+        else:
+            shares = (gauss[:, None] * h).sum(axis=0) * float(geometry) / 2.0
+            forces[:, wo] = shares * sector_weights.sum() * inner * pressure
+        rotation = _element_rotation(frames[int(cell)].frames, per)
+        global_forces = (rotation.T @ forces.ravel()).reshape(n_nodes, per)
+        components = PIPE_COMPONENTS[model.cell_modelisation[int(cell)]]
+        for a, node in enumerate(nodes):
+            for c, value in zip(components, global_forces[a], strict=True):
+                if value != 0.0:
+                    terms.append((int(node), c, float(value)))
+    return terms
