@@ -370,3 +370,20 @@ def test_internal_pressure_swells_a_straight_pipe_as_a_thin_tube():
     assert u[comps == "WO"] == pytest.approx(hoop * mean, rel=1e-9)
     tip = numbering.dof_indices([4], "DX")[0]
     assert u[tip] == pytest.approx(-NU * hoop * length, rel=1e-9)
+
+
+def test_internal_pressure_on_an_elbow_has_the_resultant_of_its_missing_caps():
+    """The pressure on a 90-degree elbow's wall balances the caps it lacks:
+    its resultant is p Ai (t1 - t2), t1 and t2 the end tangents."""
+    from asterlite.fem.pipe_elements import pipe_pressure_terms
+
+    mesh = arc_mesh(8)
+    generators = [(0, np.array([0.0, 0.0, 1.0]), 1e-4, "RELATIF")]
+    model, characteristics, _ = pipe_model(mesh, "TUYAU_3M", generators)
+    terms = pipe_pressure_terms(model, characteristics, np.arange(8), 1.0)
+    resultant = np.zeros(3)
+    for _, component, value in terms:
+        if component in ("DX", "DY", "DZ"):
+            resultant["XYZ".index(component[1])] += value
+    expected = np.pi * (R - EP) ** 2 * np.array([1.0, -1.0, 0.0])
+    assert resultant == pytest.approx(expected, rel=1e-6, abs=1e-12)
