@@ -385,6 +385,7 @@ AFFE_CHAR_MECA = OPER(
             "PRE_EPSI",
             "FORCE_POUTRE",
             "FORCE_ELEC",
+            "FORCE_TUYAU",
             "EVOL_CHAR",
         ),
     ),  # fmt: skip
@@ -423,6 +424,15 @@ AFFE_CHAR_MECA = OPER(
         CENTRE=SIMP(statut="f", typ="R", min=2, max=3),
     ),
     VECT_ASSE=SIMP(statut="f", typ="cham_no_sdaster"),
+    FORCE_TUYAU=FACT(
+        statut="f",
+        max="**",
+        fr="Pressure inside pipe elements (TUYAU_3M, TUYAU_6M)",
+        regles=(AU_MOINS_UN("TOUT", "GROUP_MA"),),
+        TOUT=tout(),
+        GROUP_MA=group_ma(),
+        PRES=SIMP(statut="f", typ="R"),
+    ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
     **mechanical_loads("R"),
 )

@@ -12,13 +12,15 @@ from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS
 from asterlite.fem.fibres import section_integrals
 from asterlite.fem.frames import angles_from_x_and_y
+from asterlite.fem.pipe import PipeError
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_frames
 from asterlite.fem.sections import (
     SectionError,
     cara_dict,
     section_properties,
     uniform_varying_section,
 )
-from asterlite.fem.selection import as_scalar, as_tuple, select_cells
+from asterlite.fem.selection import as_scalar, as_tuple, node_group_members, select_cells
 
 _BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG", "POU_D_EM", "POU_D_TGM")
 _MULTIFIBRE_BEAMS = ("POU_D_EM", "POU_D_TGM")
@@ -95,11 +97,18 @@ def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
         ctx.error(f"VALE has {values.size} values, CARA uses {start}", "VALE", occ)
 
 
-def _orientation(ctx, model, result, occ) -> None:
+def _orientation(ctx, model, result, occ, generators: list) -> None:
     mesh = model.mesh
-    cells = select_cells(ctx, occ, mesh)
     cara = as_scalar(occ.get("CARA"))
     vale = np.atleast_1d(np.asarray(as_tuple(occ.get("VALE")), dtype=float))
+    if cara == "GENE_TUYAU":
+        nodes = node_group_members(ctx, occ, mesh)
+        if len(nodes) != 1:
+            ctx.error("GENE_TUYAU needs a GROUP_NO of one node", "GROUP_NO", occ)
+        precision = float(occ.get("PRECISION", 1.0e-4))
+        generators.append((int(nodes[0]), vale[:3], precision, occ.get("CRITERE", "RELATIF")))
+        return
+    cells = select_cells(ctx, occ, mesh)
     for cell in cells:
         cell = int(cell)
         conn = mesh.cell_nodes[cell]
@@ -155,10 +164,28 @@ def _poutre(ctx, model, result, occ) -> None:
     except SectionError as exc:
         ctx.error(str(exc), "CARA", occ)
     cells = select_cells(ctx, occ, model.mesh)
-    _check_cells(ctx, model, cells, _BEAMS, "POUTRE", occ)
+    _check_cells(ctx, model, cells, _BEAMS + PIPE_MODELISATIONS, "POUTRE", occ)
+    pipes = [c for c in cells if model.cell_modelisation.get(int(c)) in PIPE_MODELISATIONS]
+    if pipes:
+        props = _pipe_section(ctx, occ, section, vari, props)
     for cell in cells:
         # a later occurrence completes or overrides the section of a cell
         result.sections[int(cell)] = dict(props)
+
+
+def _pipe_section(ctx, occ, section, vari, props) -> dict:
+    """A pipe's section: a tube (CERCLE with R and EP) and its integration
+    (TUYAU_NSEC sectors, TUYAU_NCOU layers, MODI_METRIQUE)."""
+    if section != "CERCLE" or "EP" not in as_tuple(occ.get("CARA")):
+        ctx.error("pipe elements need SECTION='CERCLE' with R and EP", "SECTION", occ)
+    if vari != "CONSTANT":
+        ctx.unsupported(f"POUTRE VARI_SECT={vari!r} on pipe elements", "VARI_SECT", occ)
+    return {
+        **props,
+        "TUYAU_NSEC": int(occ.get("TUYAU_NSEC", 16)),
+        "TUYAU_NCOU": int(occ.get("TUYAU_NCOU", 3)),
+        "MODI_METRIQUE": 1.0 if occ.get("MODI_METRIQUE", "NON") == "OUI" else 0.0,
+    }
 
 
 def _barre(ctx, model, result, occ) -> None:
@@ -268,6 +295,8 @@ def _verify_cells(ctx, model, kw) -> None:
     if "MAILLE" not in as_tuple(kw.get("VERIF")):
         return
     for occ in kw.factor("ORIENTATION"):
+        if occ.get("CARA") == "GENE_TUYAU":
+            continue  # a node of a pipe line, checked with the pipe frames
         cells = select_cells(ctx, occ, model.mesh)
         _check_cells(ctx, model, cells, _BEAMS + DISCRETE_MODELISATIONS, "ORIENTATION", occ)
     others = [k for k in _OTHER_KEYWORDS if k not in ("POUTRE", "BARRE") and kw.get(k)]
@@ -279,13 +308,31 @@ def _verify_cells(ctx, model, kw) -> None:
         )
 
 
+def _pipe_frames(ctx, model, result, generators, kw) -> None:
+    """Frames of every pipe cell of the model, from the pipe lines and
+    ORIENTATION GENE_TUYAU (code_aster's aceatu)."""
+    pipes = [c for c, m in model.cell_modelisation.items() if m in PIPE_MODELISATIONS]
+    if generators and not pipes:
+        # code_aster reads GENE_TUYAU only to orient pipe elements
+        ctx.log("warning: ORIENTATION GENE_TUYAU on a model without pipe elements: no effect")
+    if not pipes:
+        return
+    try:
+        result.pipe_frames = pipe_frames(model.mesh, sorted(pipes), generators)
+    except PipeError as exc:
+        if "elbow" in str(exc):
+            ctx.unsupported(str(exc), "ORIENTATION" if generators else "POUTRE", kw)
+        ctx.error(str(exc), "ORIENTATION" if generators else "POUTRE", kw)
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     result = ElementCharacteristics(model=model)
     _verify_cells(ctx, model, kw)
     # orientations first: DISCRET ... REPERE='LOCAL' uses them whatever the order
+    generators: list = []
     for occ in kw.factor("ORIENTATION"):
-        _orientation(ctx, model, result, occ)
+        _orientation(ctx, model, result, occ, generators)
     for occ in kw.factor("DISCRET"):
         _discrete(ctx, model, result, occ, 3, "DISCRET")
     for occ in kw.factor("DISCRET_2D"):
@@ -308,6 +355,7 @@ def run(ctx, kw):
     if kw.factor("MULTIFIBRE") and without:
         names = ", ".join(model.mesh.cell_names[c] for c in without[:5])
         ctx.error(f"multifibre beam cells {names} have no fibres (MULTIFIBRE)", "MULTIFIBRE", kw)
+    _pipe_frames(ctx, model, result, generators, kw)
     for keyword in _OTHER_KEYWORDS:
         if kw.get(keyword):
             result.extra[keyword] = kw.factor(keyword)

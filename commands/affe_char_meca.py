@@ -1,6 +1,6 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
 LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
-and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_ELEC; FORCE_FACE, PRES_REP,
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_ELEC, FORCE_TUYAU; FORCE_FACE, PRES_REP,
 FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
 
@@ -13,6 +13,7 @@ from asterlite.fem.elements import ElementError
 from asterlite.fem.frames import rotation_from_angles
 from asterlite.fem.laplace_force import DIRECT, DIST, FINITE, INFINITE, TRANS, SecondConductor
 from asterlite.fem.node_normals import node_normals
+from asterlite.fem.pipe_elements import FOURIER_COMPONENTS, PIPE_MODELISATIONS
 from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.selection import (
     as_tuple,
@@ -26,10 +27,15 @@ from asterlite.fem.skin import inward_faces, is_plane
 from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
 from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
-_DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
+_DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX", *FOURIER_COMPONENTS)
 _FORCE_COMPONENTS = {"FX": "DX", "FY": "DY", "FZ": "DZ", "MX": "DRX", "MY": "DRY", "MZ": "DRZ"}
 _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
-_BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
+_BLOCAGE = {
+    "DEPLACEMENT": ("DX", "DY", "DZ"),
+    "ROTATION": ("DRX", "DRY", "DRZ"),
+    # the ovalisation terms of pipe elements
+    "TUYAU_FOURIER": FOURIER_COMPONENTS,
+}
 
 
 def constant_value(raw, node: int, key: str) -> float:
@@ -54,7 +60,8 @@ def _ddl_impo(
     for kind in as_tuple(occ.get("BLOCAGE")):
         if kind not in _BLOCAGE:
             ctx.unsupported(f"DDL_IMPO BLOCAGE={kind!r}", "BLOCAGE", occ)
-        # BLOCAGE fixes the components the nodes carry (none is required)
+        # BLOCAGE fixes the components the nodes carry (none is required,
+        # but TUYAU_FOURIER needs Fourier DOFs on each node, as code_aster)
         imposed.update({c: 0.0 for c in _BLOCAGE[kind] if c not in given})
         optional |= set(_BLOCAGE[kind]) - given
     excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
@@ -62,6 +69,15 @@ def _ddl_impo(
         excluded |= set(mesh.nodes_of_cells(cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")))
     if excluded:
         nodes = np.array([n for n in nodes if int(n) not in excluded], dtype=int)
+    if "TUYAU_FOURIER" in as_tuple(occ.get("BLOCAGE")):
+        for node in nodes:
+            if not set(FOURIER_COMPONENTS) & set(components.get(int(node), ())):
+                ctx.error(
+                    f"BLOCAGE='TUYAU_FOURIER': node {mesh.node_names[node]} carries no "
+                    "Fourier DOF of a pipe element",
+                    "BLOCAGE",
+                    occ,
+                )
     if not imposed:
         ctx.error("no component is imposed", None, occ)
     for comp, value in imposed.items():
@@ -400,6 +416,9 @@ def beam_load_cells(ctx, model, occ) -> np.ndarray:
     for cell in cells:
         if model.cell_modelisation.get(int(cell)) in _BEAM_LOADED:
             kept.append(int(cell))
+        elif model.cell_modelisation.get(int(cell)) in PIPE_MODELISATIONS:
+            # code_aster loads pipes too (te0583), asterlite not yet
+            ctx.unsupported("FORCE_POUTRE on pipe elements (TUYAU_3M, TUYAU_6M)", "GROUP_MA", occ)
         elif occ.get("TOUT") != "OUI":
             ctx.error(
                 f"FORCE_POUTRE on cell {model.mesh.cell_names[cell]}, which is not a beam",
@@ -585,6 +604,21 @@ def _solid_loads(ctx, model, load, kw) -> None:
             )
 
 
+def _force_tuyau(ctx, model, load, occ) -> None:
+    """FORCE_TUYAU: a pressure inside the pipe cells of the selection (the
+    other cells have no such load, as in code_aster), assembled with the
+    cells' frames (asterlite.fem.pipe_elements.pipe_pressure_terms)."""
+    cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    pipes = [int(c) for c in cells if model.cell_modelisation.get(int(c)) in PIPE_MODELISATIONS]
+    if not pipes:
+        ctx.error("FORCE_TUYAU: no pipe element (TUYAU_3M, TUYAU_6M) among the cells", None, occ)
+    pressure = occ.get("PRES")
+    if pressure is not None:
+        load.extra.setdefault("FORCE_TUYAU", []).append(
+            {"CELLS": np.array(pipes, dtype=int), "PRES": float(pressure)}
+        )
+
+
 #: the factor keywords read one occurrence at a time, in the order their terms
 #: are added to the load
 _OCCURRENCE_READERS = (
@@ -598,6 +632,7 @@ _OCCURRENCE_READERS = (
         lambda ctx, model, _components, load, occ: _force_poutre(ctx, model, load, occ),
     ),
     ("FORCE_ELEC", lambda ctx, model, _components, load, occ: _force_elec(ctx, model, load, occ)),
+    ("FORCE_TUYAU", lambda ctx, model, _components, load, occ: _force_tuyau(ctx, model, load, occ)),
     ("LIAISON_ELEM", _liaison_elem),
     ("FACE_IMPO", _face_impo),
     ("LIAISON_GROUP", _liaison_group),

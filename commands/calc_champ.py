@@ -39,6 +39,7 @@ from asterlite.fem.element_fields import (
 from asterlite.fem.elements import ElementError
 from asterlite.fem.fibre_fields import multifibre_stresses
 from asterlite.fem.loads import beam_element_loads, load_terms
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_element_fields
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
 from asterlite.harmonic.loads import load_matrix
@@ -54,6 +55,7 @@ _BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
 #: what CALC_CHAMP computes on multifibre beams (POU_D_EM)
 _MULTIFIBRE_OPTIONS = ("SIEF_ELGA", "EFGE_ELNO", "EFGE_NOEU")
 _BARS = ("BARRE", "2D_BARRE")
+_PIPES = PIPE_MODELISATIONS
 
 
 _DISCRETE = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
@@ -155,6 +157,41 @@ def _multifibre_fields(ctx, kw, result, model, characteristics, materials, cells
         f"CALC_CHAMP SIEF_ELGA on {cells.size} multifibre cells "
         f"({field.sub_points} fibres at most), {values.shape[0]} orders"
     )
+
+
+def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names) -> None:
+    """EFGE_ELNO (and EFGE_NOEU) of a model of pipes (code_aster's te0185:
+    from the displacements' stresses, real or complex; no inertia)."""
+
+    other = [n for n in names if n not in ("EFGE_ELNO", "EFGE_NOEU")]
+    if other:
+        keyword = next(
+            (
+                k
+                for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE")
+                if other[0] in as_tuple(kw.get(k))
+            ),
+            None,
+        )
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of pipe elements (EFGE_ELNO)", keyword, kw)
+    if kw.factor("CHAM_UTIL"):
+        ctx.unsupported("CHAM_UTIL on a model of pipes", "CHAM_UTIL", kw)
+    if kw.factor("EXCIT"):
+        ctx.unsupported("CALC_CHAMP EXCIT on pipe elements", "EXCIT", kw)
+    values = _nodal_values(ctx, result, kw)
+    try:
+        fields = pipe_element_fields(
+            model, characteristics, materials, result.numbering, pipes, values, ["EFGE_ELNO"]
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    for name in names:
+        if name.endswith("_NOEU"):
+            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
+            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {pipes.size} pipe cells, {values.shape[0]} orders")
 
 
 def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
@@ -461,6 +498,16 @@ def run(ctx, kw):
             # their generalised forces: K u (+ M a) of the fibre-integrated element
             beams = np.union1d(beams, multifibre).astype(int)
         solids = solid_cells_of(model, candidates)
+        pipes = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) in _PIPES], dtype=int
+        )
+        if pipes.size:
+            if pipes.size != len(candidates):
+                ctx.unsupported(
+                    "CALC_CHAMP on pipe elements and other elements at once", "GROUP_MA", kw
+                )
+            _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names)
+            return result
         if solids.size and not beams.size and not bars.size:
             _solid_fields(ctx, kw, result, model, materials, solids, names)
             return _cham_utils(ctx, kw, result)

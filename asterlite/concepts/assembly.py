@@ -99,6 +99,9 @@ class ElementCharacteristics(Concept):
     # multifibre beams (MULTIFIBRE): the fibre groups of each cell, from geom_fibre
     fibre_groups: dict[int, tuple[str, ...]] = field(default_factory=dict)
     geom_fibre: Any = None  # asterlite.concepts.fibres.FibreGeometry
+    # pipe cells' geometry and node frames (asterlite.fem.pipe_elements.PipeCell),
+    # from their lines and GENE_TUYAU
+    pipe_frames: dict[int, Any] = field(default_factory=dict)
 
 
 @dataclass(eq=False)

@@ -25,6 +25,7 @@ from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.frames import angles_from_axis, block_rotation, rotation_from_angles
 from asterlite.fem.multifibre_elements import MULTIFIBRE_MODELISATIONS, multifibre_blocks
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_blocks
 from asterlite.fem.plane_elements import PLANE_MODELISATIONS, plane_blocks
 from asterlite.fem.plate_elements import PLATE_MODELISATIONS, plate_blocks
 from asterlite.fem.solid_elements import SOLID_MODELISATIONS, solid_blocks
@@ -123,6 +124,7 @@ ELEMENT_FAMILIES = (
     (SOLID_MODELISATIONS, solid_blocks),  # 3D solids
     (PLATE_MODELISATIONS, plate_blocks),  # DKT plates
     (ABSORBING_MODELISATIONS, absorbing_blocks),  # paraxial (absorbing) boundaries
+    (PIPE_MODELISATIONS, pipe_blocks),  # straight pipes with ovalisation (TUYAU_3M, TUYAU_6M)
 )
 ELEMENT_COMPUTERS = {name: compute for names, compute in ELEMENT_FAMILIES for name in names}
 if len(ELEMENT_COMPUTERS) != sum(len(names) for names, _ in ELEMENT_FAMILIES):

@@ -27,6 +27,11 @@ from asterlite.fem import beam
 from asterlite.fem.beam import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
 from asterlite.fem.laplace_force import laplace_vectors
+from asterlite.fem.pipe_elements import (
+    PIPE_MODELISATIONS,
+    pipe_gravity_terms,
+    pipe_pressure_terms,
+)
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
 from asterlite.fem.plane_wave import plane_wave_history
 from asterlite.fem.plate_elements import plate_gravity_terms
@@ -53,8 +58,14 @@ def gravity_terms(model, characteristics, gravity: float, direction, materials=N
     pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
     plates = np.array([int(c) for c in pool if model.cell_modelisation.get(int(c)) == "DKT"], int)
     terms.extend(plate_gravity_terms(model, characteristics, materials, plates, d))
-    if len(solid) or len(plane) or len(plates):
+    # pipes: the weight on the translations only (code_aster's te0583)
+    pipes = np.array(
+        [int(c) for c in pool if model.cell_modelisation.get(int(c)) in PIPE_MODELISATIONS], int
+    )
+    terms.extend(pipe_gravity_terms(model, characteristics, materials, pipes, d))
+    if len(solid) or len(plane) or len(plates) or len(pipes):
         handled = set(solid.tolist()) | set(plane.tolist()) | set(plates.tolist())
+        handled |= set(pipes.tolist())
         cells = sorted({int(c) for c in pool} - handled)
         if not cells:
             return terms
@@ -353,6 +364,10 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
             )
         )
     terms.extend(laplace_force_terms(model, load.extra.get("FORCE_ELEC")))
+    for item in load.extra.get("FORCE_TUYAU", []):
+        if characteristics is None:
+            raise ElementError("FORCE_TUYAU needs the pipes' CARA_ELEM")
+        terms.extend(pipe_pressure_terms(model, characteristics, item["CELLS"], item["PRES"]))
     terms.extend(solid_load_terms(model.mesh, load.extra))
     terms.extend(plane_load_terms(model, load.extra))
     return terms
