@@ -20,10 +20,10 @@ DEFI_MATERIAU = MACRO(
     reentrant="f",
     fr="Define the parameters of a material",
     regles=(
-        EXCLUS("ELAS", "ELAS_FO"),
+        EXCLUS("ELAS", "ELAS_FO", "ELAS_VISCO"),
         EXCLUS("ECRO_LINE", "ECRO_LINE_FO"),
         AU_MOINS_UN(
-            *("ELAS", "ELAS_FO", "ECRO_LINE", "ECRO_LINE_FO", "TRACTION"),
+            *("ELAS", "ELAS_FO", "ELAS_VISCO", "ECRO_LINE", "ECRO_LINE_FO", "TRACTION"),
             *("THER", "THER_FO", "THER_NL", "FATIGUE"),
         ),
     ),
@@ -71,6 +71,13 @@ DEFI_MATERIAU = MACRO(
         B_ENDOGE=SIMP(statut="f", typ="R", defaut=0.0),
         LONG_CARA=SIMP(statut="f", typ="R", val_min=0.0),
         COEF_AMOR=SIMP(statut="f", typ="R", defaut=1.0),
+    ),
+    ELAS_VISCO=FACT(
+        statut="f",
+        fr="Isotropic viscoelasticity at one frequency: complex shear modulus and Poisson ratio",
+        G=SIMP(statut="o", typ="C"),
+        NU=SIMP(statut="o", typ="C"),
+        RHO=SIMP(statut="f", typ="R"),
     ),
     ECRO_LINE=FACT(
         statut="f",

@@ -20,8 +20,9 @@ _HONOURED = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
 
 def impose(ctx, kw, evaluator=None):
     """The kinematic load of MECA_IMPO. AFFE_CHAR_CINE_F gives
-    ``evaluator(model, occ, in_time)``: the value of a function at a node,
-    its dependence on INST kept in ``in_time[(node, component)]``."""
+    ``evaluator(model, occ, in_time, in_frequency)``: the value of a function
+    at a node, its dependence on INST kept in ``in_time[(node, component)]``,
+    on FREQ in ``in_frequency``."""
     if kw.get("EVOL_IMPO") is not None:
         ctx.unsupported("AFFE_CHAR_CINE EVOL_IMPO (imposed values from a result)", "EVOL_IMPO", kw)
     model = kw["MODELE"]
@@ -34,15 +35,17 @@ def impose(ctx, kw, evaluator=None):
                     ctx.unsupported(f"MECA_IMPO component {name}", name, occ)
         first = len(load.relations)
         in_time: dict = {}
+        in_frequency: dict = {}
         value_at = affe_char_meca.constant_value
         if evaluator is not None:
-            value_at = evaluator(model, occ, in_time)
+            value_at = evaluator(model, occ, in_time, in_frequency)
         affe_char_meca._ddl_impo(
             ctx, model, components, load, occ, value_at=value_at, skip_absent=True
         )
         for relation in load.relations[first:]:
             node, component, _ = relation.terms[0]
             relation.rhs_in_time = in_time.get((node, component))
+            relation.rhs_in_frequency = in_frequency.get((node, component))
     if not load.relations:
         ctx.error("no DOF is imposed", "MECA_IMPO", kw)
     ctx.log(f"kinematic load: {len(load.relations)} imposed DOFs")

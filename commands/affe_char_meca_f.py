@@ -7,9 +7,11 @@ code_aster evaluates such a function where the load acts: at the node for
 DDL_IMPO and FORCE_NODALE, at both nodes of each beam cell for FORCE_POUTRE
 (the load then varies linearly along the cell, ptforp/ptfop1), with the
 parameters X, Y, Z of the point (and INST, the current time, in time
-stepping). asterlite evaluates them once, when the load is built: a function
-of INST (a load varying in time) is refused, as are the other keywords of the
-catalogue (not read, hence refused by name).
+stepping, or FREQ, in a harmonic response). asterlite evaluates them once,
+when the load is built, except DDL_IMPO values of INST (evaluated in time by
+a physical-basis transient) or FREQ (evaluated at each frequency by
+DYNA_VIBRA HARM); forces of INST or FREQ are refused, as are the other
+keywords of the catalogue (not read, hence refused by name).
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 from asterlite.commands import affe_char_meca
 
-from asterlite.concepts.assembly import MechanicalLoad, ValueInTime
+from asterlite.concepts.assembly import MechanicalLoad, ValueInFrequency, ValueInTime
 from asterlite.errors import CommandError
 from asterlite.fem.plane_wave import PlaneWave
 from asterlite.fem.selection import select_cells
@@ -34,11 +36,13 @@ def _parameters(function) -> tuple[str, ...]:
     return tuple(names)
 
 
-def _evaluator(ctx, model, occ, in_time=None):
+def _evaluator(ctx, model, occ, in_time=None, in_frequency=None):
     """value_at(function, node, key): the function at the node's coordinates.
     ``in_time`` (a dict): a function of INST is accepted, its value at
     INST=0 returned and its ``ValueInTime`` kept in ``in_time[(node, key)]``;
-    without it, such a function is refused."""
+    ``in_frequency`` likewise for a function of FREQ (evaluated at each
+    frequency of a harmonic response: 0 is returned); without them, such
+    functions are refused."""
 
     coords = model.mesh.coords
 
@@ -46,8 +50,20 @@ def _evaluator(ctx, model, occ, in_time=None):
         if isinstance(function, (int, float)):
             return float(function)
         names = _parameters(function)
-        if "FREQ" in names:
+        if "FREQ" in names and in_frequency is not None:
             # code_aster evaluates it at each frequency of a harmonic response
+            unknown = [p for p in names if p not in _GEOMETRY and p not in ("FREQ", _CONSTANT)]
+            if unknown:
+                ctx.error(
+                    f"{key}: the function {function.name or ''} depends on "
+                    f"{', '.join(unknown)}; an imposed value takes X, Y, Z and FREQ",
+                    key,
+                    occ,
+                )
+            point = tuple(float(x) for x in np.pad(coords[node], (0, 3 - len(coords[node]))))
+            in_frequency[(node, key)] = ValueInFrequency(function, point)
+            return 0.0
+        if "FREQ" in names:
             ctx.unsupported(
                 f"{ctx.command} {key}={function.name or 'function'} depends on FREQ (a value "
                 "varying with the frequency of a harmonic response)",
@@ -158,14 +174,15 @@ def run(ctx, kw):
     components = model.node_components()
     load = MechanicalLoad(model=model)
     for occ in kw.factor("DDL_IMPO"):
-        in_time = {}
+        in_time, in_frequency = {}, {}
         first = len(load.relations)
-        value_at = _evaluator(ctx, model, occ, in_time)
+        value_at = _evaluator(ctx, model, occ, in_time, in_frequency)
         affe_char_meca._ddl_impo(ctx, model, components, load, occ, value_at=value_at)
         for relation in load.relations[first:]:
             if len(relation.terms) == 1:
                 node, component, _ = relation.terms[0]
                 relation.rhs_in_time = in_time.get((node, component))
+                relation.rhs_in_frequency = in_frequency.get((node, component))
     for occ in kw.factor("FORCE_NODALE"):
         value_at = _evaluator(ctx, model, occ)
         affe_char_meca._force_nodale(ctx, model, components, load, occ, value_at=value_at)

@@ -24,6 +24,13 @@ def run(ctx, kw):
                     "CHAR_CINE",
                     kw,
                 )
+            if relation.rhs_in_frequency is not None:
+                ctx.unsupported(
+                    "CALC_CHAR_CINE of a value given as a function of FREQ (it evaluates "
+                    "the loads at INST)",
+                    "CHAR_CINE",
+                    kw,
+                )
             value = relation.rhs
             if relation.rhs_in_time is not None:
                 value = float(relation.rhs_in_time.evaluate([instant])[0])

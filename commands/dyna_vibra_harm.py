@@ -17,6 +17,9 @@ sparse factorisation per frequency).
   missing ratios repeat the last one, extra ones are ignored).
 - EXCIT: VECT_ASSE / CHARGE (physical) or VECT_ASSE_GENE times
   COEF_MULT[_C] or FONC_MULT[_C](f), times e^{i PHAS_DEG π/180} and ω^PUIS_PULS.
+  A CHARGE's imposed values (AFFE_CHAR_CINE[_F], DDL_IMPO), constant or
+  functions of FREQ evaluated at each frequency, are scaled likewise and
+  lifted into the right-hand side.
 - EXCIT_RESU: COEF_MULT_C times the DEPL field of a previous harmonic result
   at the same frequency (relative precision 1e-6, dyexre).
 """
@@ -27,7 +30,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ComplexAssembledMatrix, MechanicalLoad
 from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
-from asterlite.errors import NumericalError
+from asterlite.errors import CommandError, NumericalError
 from asterlite.fem.loads import load_terms
 from asterlite.harmonic import HarmonicLoad, derived_fields
 from asterlite.harmonic import modal as modal_solver
@@ -242,7 +245,7 @@ def physical(ctx, kw, frequencies, names):
         if matrix is not None and matrix.numbering is not numbering:
             ctx.error(f"{key} is not on the numbering of MATR_RIGI", key, kw)
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
-    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True, rhs_in_frequency=True)
     # the relations' values are not those of the harmonic problem: code_aster's
     # Lagrange right-hand side is zero unless an EXCIT CHARGE imposes values
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
@@ -296,17 +299,24 @@ def physical(ctx, kw, frequencies, names):
 
 
 def imposed_motion(ctx, kw, numbering, elimination, frequencies):
-    """The displacements EXCIT CHARGE imposes (AFFE_CHAR_CINE, or DDL_IMPO
-    of a dualised load), each scaled by its occurrence's coefficient, as
-    code_aster scales the imposed values: (U (n_dofs, n_k), C (n_freq, n_k)),
-    the motion being C @ U.T; None when no occurrence imposes a value."""
+    """The displacements EXCIT CHARGE imposes (AFFE_CHAR_CINE[_F], or
+    DDL_IMPO of a dualised load), each scaled by its occurrence's
+    coefficient, as code_aster scales the imposed values (ascavc): (U
+    (n_dofs, n_k), C (n_freq, n_k)), the motion being C @ U.T; None when no
+    occurrence imposes a value. Constant values make one column; values
+    given as a function of FREQ one column per function (and point, for a
+    function of X, Y, Z too), its value at each frequency in C."""
     row_of = {id(relation): row for row, relation in enumerate(numbering.relations)}
     particulars, motions = [], []
     for i, occ in enumerate(kw.factor("EXCIT")):
         charge = occ.get("CHARGE")
-        if charge is None or not any(relation.rhs != 0.0 for relation in charge.relations):
+        if charge is None or not any(
+            relation.rhs != 0.0 or relation.rhs_in_frequency is not None
+            for relation in charge.relations
+        ):
             continue
-        rhs = np.zeros(len(numbering.relations))
+        constant = np.zeros(len(numbering.relations))
+        in_frequency: dict = {}
         for relation in charge.relations:
             row = row_of.get(id(relation))
             if row is None:
@@ -317,9 +327,27 @@ def imposed_motion(ctx, kw, numbering, elimination, frequencies):
                     "CHARGE",
                     occ,
                 )
-            rhs[row] = relation.rhs
-        particulars.append(elimination.particular(rhs))
-        motions.append(harmonic_load(ctx, occ, None, f"EXCIT[{i + 1}]").coefficients(frequencies))
+            value = relation.rhs_in_frequency
+            if value is None:
+                constant[row] = relation.rhs
+            else:
+                # u = g(f) with the relation's coefficient: the rhs is coefficient g(f)
+                coefficient = relation.terms[0][2]
+                in_frequency.setdefault(value.key, (value, []))[1].append((row, coefficient))
+        scale = harmonic_load(ctx, occ, None, f"EXCIT[{i + 1}]").coefficients(frequencies)
+        if np.any(constant):
+            particulars.append(elimination.particular(constant))
+            motions.append(scale)
+        for value, rows in in_frequency.values():
+            rhs = np.zeros(len(numbering.relations))
+            for row, coefficient in rows:
+                rhs[row] = coefficient
+            try:
+                values = value.evaluate(frequencies)
+            except CommandError as exc:
+                ctx.error(str(exc), "CHARGE", occ)
+            particulars.append(elimination.particular(rhs))
+            motions.append(scale * values)
     if not particulars:
         return None
     return np.column_stack(particulars), np.column_stack(motions)

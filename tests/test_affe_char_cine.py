@@ -188,12 +188,19 @@ def test_transient_constant_imposed_value_is_scaled_by_coef_mult(tmp_path):
     np.testing.assert_allclose(d1, 0.5, atol=1e-6)
 
 
-def test_a_value_of_freq_is_refused_by_name():
+def test_a_value_of_freq_is_refused_outside_a_harmonic_response():
+    """A value of FREQ is kept for DYNA_VIBRA HARM (tests/test_viscoelastic.py);
+    a static solve and CALC_CHAR_CINE, which evaluate no frequency, refuse it."""
     session = FakeSession()
-    model, _, _ = beam_model(session, line_mesh(N_EL, LENGTH))
+    model, field, cara = beam_model(session, line_mesh(N_EL, LENGTH))
     of_freq = run(session, "FORMULE", NOM_PARA="FREQ", VALE="1.0/FREQ")
+    load = run(session, "AFFE_CHAR_CINE_F", MODELE=model, MECA_IMPO={"TOUT": "OUI", "DZ": of_freq})
+    assert any(relation.rhs_in_frequency is not None for relation in load.relations)
     with pytest.raises(UnsupportedError, match="FREQ"):
-        run(session, "AFFE_CHAR_CINE_F", MODELE=model, MECA_IMPO={"TOUT": "OUI", "DZ": of_freq})
+        _static(session, model, field, cara, [load])
+    numbering = run(session, "NUME_DDL", MODELE=model)
+    with pytest.raises(UnsupportedError, match="FREQ"):
+        run(session, "CALC_CHAR_CINE", NUME_DDL=numbering, CHAR_CINE=load)
 
 
 def test_resoudre_with_cham_cine_lifts_the_eliminated_dofs():

@@ -8,7 +8,7 @@ attributes documented here; add fields, do not rename them.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -124,6 +124,10 @@ class LinearRelation:
     # AFFE_CHAR_MECA_F of INST: the right-hand side in time (``rhs`` is its
     # value at INST=0, code_aster's instant for a computation that gives none)
     rhs_in_time: ValueInTime | None = None
+    # AFFE_CHAR_CINE_F / AFFE_CHAR_MECA_F of FREQ: the right-hand side at each
+    # frequency of a harmonic response (``rhs`` is then 0: no other
+    # computation evaluates it)
+    rhs_in_frequency: ValueInFrequency | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,6 +138,8 @@ class ValueInTime:
 
     function: Any
     point: tuple[float, float, float]
+    #: the names the function's varying parameter may have
+    parameters: ClassVar[tuple[str, ...]] = ("INST", "TOUTPARA")
 
     @property
     def key(self) -> tuple:
@@ -144,11 +150,17 @@ class ValueInTime:
     def evaluate(self, times) -> np.ndarray:
         times = np.atleast_1d(np.asarray(times, dtype=float))
         at = dict(zip(("X", "Y", "Z"), self.point, strict=True))
-        args = [
-            times if p in ("INST", "TOUTPARA") else at.get(p, 0.0) for p in self.function.nom_para
-        ]
+        args = [times if p in self.parameters else at.get(p, 0.0) for p in self.function.nom_para]
         values = np.real(np.asarray(self.function.evaluate_many(*args), dtype=complex))
         return np.broadcast_to(values, times.shape).astype(float)
+
+
+@dataclass(frozen=True, eq=False)
+class ValueInFrequency(ValueInTime):
+    """A load function of FREQ (and X, Y, Z, fixed at ``point``):
+    ``evaluate(frequencies)``, real as code_aster's kinematic values."""
+
+    parameters: ClassVar[tuple[str, ...]] = ("FREQ", "TOUTPARA")
 
 
 @dataclass(eq=False)
@@ -317,14 +329,21 @@ class DofNumbering(Concept):
     def dof_components(self) -> list[str]:
         return [c for _, c in self.dofs]
 
-    def constraint_matrix(self, rhs_in_time: bool = False):
+    def constraint_matrix(self, rhs_in_time: bool = False, rhs_in_frequency: bool = False):
         """(B, b): the relations as a sparse (n_relations, n_dofs) matrix and rhs.
 
         A right-hand side given in time (AFFE_CHAR_MECA_F DDL_IMPO of INST)
         is refused unless the caller evaluates it in time itself or does not
-        use b (``rhs_in_time=True``)."""
+        use b (``rhs_in_time=True``); one given in frequency likewise
+        (``rhs_in_frequency=True``)."""
         from asterlite.fem.constraints import relation_matrix
 
+        if not rhs_in_frequency and any(r.rhs_in_frequency is not None for r in self.relations):
+            raise UnsupportedError(
+                "an imposed value given as a function of FREQ (AFFE_CHAR_CINE_F, "
+                "AFFE_CHAR_MECA_F DDL_IMPO): only DYNA_VIBRA TYPE_CALCUL='HARM' evaluates it; "
+                f"the numbering {self.name or ''} holds such a relation"
+            )
         if not rhs_in_time and any(r.rhs_in_time is not None for r in self.relations):
             raise UnsupportedError(
                 "AFFE_CHAR_MECA_F DDL_IMPO of INST (an imposed value varying in time): only "
@@ -443,8 +462,9 @@ class Material(Concept):
 
     ``behaviours["ELAS"]`` maps code_aster names (E, NU, RHO, AMOR_ALPHA,
     AMOR_BETA, AMOR_HYST, ALPHA...) to floats; ELAS_FO values are stored
-    there too once evaluated (constant functions). ``get(name, default)``
-    reads an elastic parameter.
+    there too once evaluated (constant functions); ``behaviours["ELAS_VISCO"]``
+    holds a viscoelastic material's complex G and NU and its RHO.
+    ``get(name, default)`` reads an elastic parameter.
     """
 
     aster_types = ("mater_sdaster",)
@@ -452,7 +472,16 @@ class Material(Concept):
     behaviours: dict[str, dict[str, Any]] = field(default_factory=dict)
 
     def get(self, name: str, default: float | None = None) -> float | None:
-        return self.behaviours.get("ELAS", {}).get(name, default)
+        elastic = self.behaviours.get("ELAS")
+        if elastic is None and name == "RHO":
+            # a viscoelastic material's density is its ELAS_VISCO's
+            elastic = self.behaviours.get("ELAS_VISCO")
+        return (elastic or {}).get(name, default)
+
+    @property
+    def viscoelastic(self) -> dict[str, complex] | None:
+        """ELAS_VISCO's complex G and NU (and RHO), None for other materials."""
+        return self.behaviours.get("ELAS_VISCO")
 
     @property
     def young(self) -> float:

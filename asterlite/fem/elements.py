@@ -138,12 +138,15 @@ def element_blocks(
     materials=None,
     lumped: bool = False,
     cells=None,
+    complex_stiffness: bool = False,
 ) -> list[ElementBlock]:
     """Global-frame element matrices of the model for ``matrix`` (K, M or A).
 
     ``materials`` is the CHAM_MATER (needed by beams and bars), ``lumped``
     asks for MASS_MECA_DIAG, ``cells`` restricts the computation to a subset
-    of the model's cells (default: all of them).
+    of the model's cells (default: all of them). ``complex_stiffness``
+    keeps the imaginary part of K on viscoelastic cells (RIGI_MECA_HYST):
+    only the 3D and plane solids take such materials.
     """
     wanted = None if cells is None else {int(c) for c in np.asarray(cells).ravel()}
     by_modelisation: dict[str, list[int]] = defaultdict(list)
@@ -164,6 +167,7 @@ def element_blocks(
                 np.array(sorted(members), dtype=int),
                 materials=materials,
                 lumped=lumped,
+                **({"complex_stiffness": True} if complex_stiffness else {}),
             )
         )
     return blocks

@@ -29,7 +29,7 @@ def constrained_pencil(stiffness: AssembledMatrix, mass: AssembledMatrix) -> Red
     """Eliminate the numbering's relations (homogeneous: imposed values do
     not enter an eigenproblem) and reduce K and M."""
     numbering = stiffness.numbering
-    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)  # b unused: eigenproblem
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True, rhs_in_frequency=True)  # b unused
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
     return ReducedPencil(stiffness.matrix, mass.matrix, elimination)
 
@@ -255,7 +255,7 @@ def apply_complex_norm(modes: ComplexModeResult, norme: str, stiffness=None, mas
 def complex_pencil(stiffness, mass, damping=None) -> quadratic.QuadraticPencil:
     """The quadratic problem reduced on the numbering's relations."""
     numbering = stiffness.numbering
-    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)  # b unused: eigenproblem
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True, rhs_in_frequency=True)  # b unused
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
     c = damping.matrix if damping is not None else None
     return quadratic.QuadraticPencil(stiffness.matrix, c, mass.matrix, elimination)
