@@ -87,3 +87,25 @@ def test_mode_values_satisfy_the_dualised_eigenproblem():
         assert np.linalg.norm(residual) <= 1e-7 * np.linalg.norm(k_full @ values)
         physical = k.numbering.getPhysicalDOFs()
         np.testing.assert_array_equal(values[physical], modes.shapes[:, order - 1])
+
+
+def test_restituted_fields_carry_the_recombined_modes_multipliers():
+    """REST_GENE_PHYS recombines the modes over all of code_aster's
+    equations: a field's multipliers are those of the modes recombined."""
+    from asterlite.concepts.transient import DynaTrans
+    from asterlite.post.deck_api import transient_field
+
+    session, k, m = _clamped_beam()
+    modes = run(session, "CALC_MODES", MATR_RIGI=k, MATR_MASS=m, CALC_FREQ={"NMAX_FREQ": 2})
+    q = np.array([[0.3, -1.2]])
+    result = DynaTrans(k.numbering, np.array([0.0]), np.array([1]), {"DEPL": q @ modes.shapes.T})
+    result.modal_source = (modes, {"DEPL": q})
+    values = np.array(transient_field(result, "DEPL", 1).getValues())
+    expected = sum(
+        q[0, j] * np.array(mode_field(modes, "DEPL", j + 1).getValues()) for j in range(2)
+    )
+    np.testing.assert_allclose(values, expected, rtol=1e-12, atol=1e-12)
+    # without a modal source the multipliers are not known: refused by name
+    result.modal_source = None
+    with pytest.raises(Exception, match="Lagrange multipliers"):
+        transient_field(result, "DEPL", 1).getValues()

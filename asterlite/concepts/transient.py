@@ -214,6 +214,9 @@ class DynaTrans(Concept):
     characteristics: Any = None
     mass_matrix: Any = None
     loads: tuple = ()
+    # (modal basis, {field: generalized values per stored instant}) of a
+    # result restituted on a whole modal basis (REST_GENE_PHYS), else None
+    modal_source: Any = None
 
     # deck API (code_aster's TransientResult), see asterlite.post.deck_api
     def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802

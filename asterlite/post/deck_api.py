@@ -190,7 +190,16 @@ def transient_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> 
             f"result {result.name or ''} has no field {name} (it has {', '.join(result.fields)})"
         )
     position = _position(result, name, value, para)
-    return FieldValues(result.numbering, np.array(result.fields[name][position], dtype=float))
+    field = FieldValues(result.numbering, np.array(result.fields[name][position], dtype=float))
+    source = getattr(result, "modal_source", None)
+    if source is not None and name in source[1] and dualised_relations(result.numbering):
+        # a recombination of modes: its multipliers are those of the modes recombined
+        basis, generalized = source
+        modal = mode_reactions(basis)
+        if modal is not None:
+            reactions, field.beta = modal
+            field.reactions = reactions @ np.asarray(generalized[name][position], dtype=float)
+    return field
 
 
 def field_indexes(result, name: str) -> list[int]:
@@ -230,14 +239,35 @@ def mode_field(basis, name: str, nume_ordre=1, para: str = "NUME_ORDRE") -> Fiel
     position = order_position(orders, nume_ordre, "mode")
     shape = np.array(basis.shapes[:, position], dtype=float)
     field = FieldValues(basis.numbering, shape)
+    if dualised_relations(basis.numbering):
+        modal = mode_reactions(basis)
+        if modal is not None:
+            reactions, field.beta = modal
+            field.reactions = reactions[:, position]
+    return field
+
+
+def mode_reactions(basis):
+    """(the constraints' reactions (ω² M - K) φ of every mode, one column
+    each; the stiffness's Lagrange coefficient) of a real dynamic modal
+    basis, or None where they are not known (static or complex modes,
+    matrices not kept)."""
     stiffness, mass = getattr(basis, "stiffness", None), getattr(basis, "mass", None)
     dynamic = getattr(basis, "kind", "dynamic") == "dynamic" and not np.iscomplexobj(basis.shapes)
-    if dualised_relations(basis.numbering) and dynamic and None not in (stiffness, mass):
-        # the constraints' reactions of the mode: (ω² M - K) φ
-        omega2 = (2.0 * np.pi * float(basis.frequencies[position])) ** 2
-        field.reactions = omega2 * (mass.matrix @ shape) - stiffness.matrix @ shape
-        field.beta = lagrange_coefficient(stiffness.matrix)
-    return field
+    if not dynamic or stiffness is None or mass is None:
+        return None
+    cached = _MODE_REACTIONS.get("last")
+    if cached is None or cached[0] is not basis:  # a deck reads fields mode after mode
+        shapes = np.asarray(basis.shapes, dtype=float)
+        omega2 = (2.0 * np.pi * np.asarray(basis.frequencies, dtype=float)) ** 2
+        reactions = (mass.matrix @ shapes) * omega2 - stiffness.matrix @ shapes
+        # the last basis only (bounded memory), held so that it stays that object
+        cached = (basis, (reactions, lagrange_coefficient(stiffness.matrix)))
+        _MODE_REACTIONS["last"] = cached
+    return cached[1]
+
+
+_MODE_REACTIONS: dict = {}
 
 
 # ------------------------------------------------ tran_gene nonlinearities
