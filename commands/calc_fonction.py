@@ -136,7 +136,7 @@ def spec_osci(ctx, occurrences, kw):
             NOM_PARA="FREQ",
             NOM_RESU=nature,
             INTERPOL=("LOG", "LOG"),
-            PROL_GAUCHE="CONSTANT",
+            PROL_GAUCHE="EXCLU",  # code_aster's spectra (15 and 17) stop below the first frequency
             PROL_DROITE="CONSTANT",
         )  # fmt: skip
         for xi in dampings

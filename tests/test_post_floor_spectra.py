@@ -75,11 +75,14 @@ def test_oscillator_spectrum_at_resonance_is_one_over_twice_the_damping():
 
 
 def test_spectrum_for_all_frequencies_at_once_matches_one_by_one():
+    """... and NORME divides the spectrum (the accelerogram is in the deck's units)."""
     f = signal()
     freqs = [2.0, 20.0, 45.0]
     together = fops.response_spectrum(f, freqs, 0.05, "ACCE", 9.81)
     alone = [
-        (2 * np.pi * fr) ** 2 * fops.sdof_peak_response(f.abscissas, f.ordinates, fr, 0.05)[0]
+        (2 * np.pi * fr) ** 2
+        * fops.sdof_peak_response(f.abscissas, f.ordinates, fr, 0.05)[0]
+        / 9.81
         for fr in freqs
     ]
     assert together == pytest.approx(alone, rel=1e-12)
@@ -178,3 +181,15 @@ def test_command_refuses_mass_fractions_not_summing_to_one():
     occurrence["COEF_MASS_EQUIP"] = (0.5, 0.25, 0.2)
     with pytest.raises(CommandError, match="sums to"):
         calc_spectre_ipm.run(context(), ipm_keywords(signal(), EQUIPEMENT=[occurrence]))
+
+
+def test_spec_osci_scales_by_norme_and_stops_below_its_first_frequency():
+    f = signal()
+    occurrence = {"FONCTION": f, "AMOR_REDUIT": (0.05,), "FREQ": (2.0, 20.0), "NORME": 1.0,
+                  "METHODE": "NIGAM", "NATURE": "ACCE", "TYPE_RESU": "FONCTION"}  # fmt: skip
+    in_units = calc_fonction.run(context(), kw(SPEC_OSCI=[occurrence]))
+    in_g = calc_fonction.run(context(), kw(SPEC_OSCI=[{**occurrence, "NORME": 9.81}]))
+    assert in_g.ordinates == pytest.approx(in_units.ordinates / 9.81, rel=1e-12)
+    assert (in_g.PROL_GAUCHE, in_g.PROL_DROITE) == ("EXCLU", "CONSTANT")
+    with pytest.raises(CommandError):
+        in_g(1.0)

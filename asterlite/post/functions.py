@@ -331,9 +331,9 @@ def peak_relative_displacements(t, accel, freqs, damping: float) -> np.ndarray:
 
 def response_spectrum(func: Function, freqs, damping: float, nature: str, norme: float):
     """Oscillator spectrum: pseudo-acceleration ω²·max|u| (ACCE), pseudo-velocity
-    ω·max|u| (VITE) or max|u| (DEPL), divided by NORME."""
-    t, acc = func.abscissas, func.ordinates * norme
-    peak_u = peak_relative_displacements(t, acc, freqs, damping)
+    ω·max|u| (VITE) or max|u| (DEPL) under the function's acceleration, divided
+    by NORME (code_aster scales the spectrum, not the accelerogram)."""
+    peak_u = peak_relative_displacements(func.abscissas, func.ordinates, freqs, damping)
     w = 2 * np.pi * np.asarray(freqs, dtype=float)
     values = {"DEPL": peak_u, "VITE": w * peak_u, "ACCE": w * w * peak_u}[nature]
     return values / norme
