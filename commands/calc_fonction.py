@@ -2,7 +2,7 @@
 
 Supported: COMB, COMB_C, MULT (optionally re-tabulated on LIST_PARA), ABS,
 ASSE, COMPOSE, DERIVE, INTEGRE, ENVELOPPE, EXTRACTION, FFT (real to
-complex), INVERSE, PUISSANCE, SPEC_OSCI (NIGAM). NOM_PARA, NOM_RESU,
+complex and back), INVERSE, PUISSANCE, SPEC_OSCI (NIGAM). NOM_PARA, NOM_RESU,
 INTERPOL, PROL_* override the attributes of the result.
 """
 
@@ -104,9 +104,10 @@ OPERATIONS = {
 def fft(ctx, occurrences, kw):
     occ = single(occurrences)
     func = occ["FONCTION"]
+    method = occ.get("METHODE", "PROL_ZERO")
     if func.is_complex:
-        ctx.unsupported("FFT of a complex function (inverse transform)", "FFT", kw)
-    return fops.fft(func, occ.get("METHODE", "PROL_ZERO"))
+        return fops.inverse_fft(func, method, symmetric=occ.get("SYME", "OUI") == "OUI")
+    return fops.fft(func, method)
 
 
 def spec_osci(ctx, occurrences, kw):
@@ -135,7 +136,7 @@ def spec_osci(ctx, occurrences, kw):
             NOM_PARA="FREQ",
             NOM_RESU=nature,
             INTERPOL=("LOG", "LOG"),
-            PROL_GAUCHE="CONSTANT",
+            PROL_GAUCHE="EXCLU",  # code_aster's spectra (15 and 17) stop below the first frequency
             PROL_DROITE="CONSTANT",
         )  # fmt: skip
         for xi in dampings
