@@ -34,10 +34,14 @@ def run(ctx, kw):
     except TableFileError as error:
         ctx.error(f"file {path.name} (unit {unit}): {error}", "FORMAT", kw)
     # code_aster's table keeps the first line of the title read, unless TITRE
-    title = kw.get("TITRE") or (read.title.splitlines() or [""])[0][:80]
+    title = kw.get("TITRE") or read.title_line()
     table = Table(title=title)
     for name, code in zip(read.columns, read.types, strict=True):
         table.add_column(name, code)
+    # code_aster's CREA_TABLE places cells by row number: rows after the last
+    # cell of any column are not made
+    while read.rows and not read.rows[-1]:
+        read.rows.pop()
     for row in read.rows:
         table.add_row({name: row.get(name) for name in read.columns})
     ctx.log(f"{len(table)} rows, {len(table.columns)} parameters read from unit {unit}")

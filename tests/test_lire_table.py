@@ -110,3 +110,29 @@ def test_deck_reads_tables_through_the_export(tmp_path: Path):
     log = (tmp_path / "out" / "message.log").read_text()
     assert "t.53 (unit 53): table 2 asked for, the file holds 1" in log
     assert report.exit_code == 2
+
+
+def test_title_line_joins_free_titles_and_keeps_aster_lines_apart():
+    text = "# first part\n# second part\nA\n1\n"
+    assert read_table(text, "TABLEAU").title_line() == "# first part # second part"
+    long_line = " ".join(["word"] * 30)  # 149 characters
+    table = read_table(f"{long_line}\nA;B\n1;2\n", "LIBRE", separator=";")
+    assert table.title_line() == " ".join(["word"] * 16)  # 79 characters, the next word overflows
+    aster = "#DEBUT_TABLE\n#TITRE one\n#TITRE two\nA\nI\n1\n#FIN_TABLE\n"
+    assert read_table(aster, "ASTER").title_line() == "one"
+
+
+def test_deck_table_keeps_interior_empty_rows_and_drops_trailing_ones(tmp_path: Path):
+    (tmp_path / "t.52").write_text("A B\n1 -\n- -\n2 3\n- -\n")
+    (tmp_path / "d.comm").write_text(
+        "DEBUT()\nT = LIRE_TABLE(UNITE=52)\n"
+        "TEST_TABLE(TABLE=T, NOM_PARA='A', TYPE_TEST='SOMM', VALE_CALC_I=3)\n"
+        "TEST_TABLE(TABLE=T, NOM_PARA='B', VALE_CALC=3.0, FILTRE=_F(NOM_PARA='A', VALE_I=2))\n"
+        "FIN()\n"
+    )
+    (tmp_path / "d.export").write_text("F comm d.comm D 1\nF libr t.52 D 52\n")
+    report = run_deck(tmp_path / "d.export", tmp_path / "out")
+    assert [test.ok for test in report.tests] == [True, True], report.status
+    assert (
+        "3 rows, 2 parameters read from unit 52" in (tmp_path / "out" / "message.log").read_text()
+    )

@@ -40,14 +40,57 @@ class TableFileError(ValueError):
     """The text does not hold the table asked for; the message says where."""
 
 
+TITLE_WIDTH = 80  # a table's title line
+
+
 @dataclass
 class ReadTable:
-    """A table as read: column names, their type codes, sparse rows, title."""
+    """A table as read: column names, their type codes, sparse rows, title
+    (its lines as the file gives them) and whether the title's lines are
+    joined (LIBRE and TABLEAU) or kept apart (ASTER)."""
 
     columns: list[str]
     types: list[str | None]
     rows: list[dict[str, int | float | str]] = field(default_factory=list)
     title: str = ""
+    joined_title: bool = False
+
+    def title_line(self) -> str:
+        """The one title line the table keeps, at most 80 characters: long
+        lines are cut between words; in LIBRE and TABLEAU the first line gathers
+        as many of the title's lines (joined by a space) as fit."""
+        pieces = [piece for line in self.title.splitlines() for piece in _wrapped(line)]
+        if not self.joined_title:
+            return pieces[0] if pieces else ""
+        first = ""
+        for piece in pieces:
+            candidate = f"{first} {piece}" if first else piece
+            if len(candidate) > TITLE_WIDTH:
+                break
+            first = candidate
+        return first
+
+
+def _wrapped(line: str) -> list[str]:
+    """``line`` cut between words into pieces of at most 80 characters (a
+    longer word cut every 80 characters)."""
+    if len(line) <= TITLE_WIDTH:
+        return [line]
+    words = [
+        word[i : i + TITLE_WIDTH]
+        for word in line.split(" ")
+        for i in range(0, max(len(word), 1), TITLE_WIDTH)
+    ]
+    pieces, current = [], None
+    for word in words:
+        if current is not None and len(current) + 1 + len(word) <= TITLE_WIDTH:
+            current = f"{current} {word}"
+        else:
+            if current is not None:
+                pieces.append(current)
+            current = word
+    pieces.append(current)
+    return [piece for piece in pieces if piece]
 
 
 def split_fields(line: str, separator: str) -> list[str]:
@@ -137,7 +180,9 @@ def _read_free(text: str, separator: str, number: int, unique: bool, comments: b
         raise TableFileError(f"table {number} has no line of column names")
     # with a separator other than a space a name may hold spaces: not in a table
     names = [name.replace(" ", "_") for name in split_fields(body[0], separator)]
-    table = ReadTable(_named(names, unique, number), [None] * width, title="\n".join(title))
+    table = ReadTable(
+        _named(names, unique, number), [None] * width, title="\n".join(title), joined_title=True
+    )
     empty = EMPTY_CELL if comments else ""
     for line in body[1:]:
         cells = split_fields(line, separator)
