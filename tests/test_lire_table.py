@@ -136,3 +136,17 @@ def test_deck_table_keeps_interior_empty_rows_and_drops_trailing_ones(tmp_path: 
     assert (
         "3 rows, 2 parameters read from unit 52" in (tmp_path / "out" / "message.log").read_text()
     )
+
+
+def test_extracted_columns_have_code_aster_colonne_methods(tmp_path: Path):
+    (tmp_path / "t.31").write_text("ALPHA GAMMA\n1 -\n2 1.5\n3 -3.4\n")
+    (tmp_path / "d.comm").write_text(
+        "DEBUT()\nT = LIRE_TABLE(UNITE=31)\npy = T.EXTR_TABLE()\n"
+        "g = py.GAMMA.values()\nk = py.GAMMA.not_none_values()\nd = py.values()\n"
+        "ok = g == [None, 1.5, -3.4] and k == [1.5, -3.4] and d['ALPHA'] == [1, 2, 3]\n"
+        "TEST_TABLE(TABLE=T, NOM_PARA='ALPHA', TYPE_TEST='SOMM', VALE_CALC_I=6 if ok else 0)\n"
+        "FIN()\n"
+    )
+    (tmp_path / "d.export").write_text("F comm d.comm D 1\nF libr t.31 D 31\n")
+    report = run_deck(tmp_path / "d.export", tmp_path / "out")
+    assert [test.ok for test in report.tests] == [True], report.status
