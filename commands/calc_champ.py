@@ -197,10 +197,12 @@ def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, name
 
 
 def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, names) -> None:
-    """EFGE_ELNO (and EFGE_NOEU) of DKT plates (code_aster's ef0033: from the
-    displacements, real or complex; no inertia)."""
+    """EFGE_ELNO (and EFGE_NOEU), SIEF_ELGA and SIGM_ELNO of DKT plates
+    (code_aster's ef0033 / te0033: from the displacements, real or complex;
+    no inertia)."""
 
-    other = [n for n in names if n not in ("EFGE_ELNO", "EFGE_NOEU")]
+    known = ("EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA", "SIGM_ELNO")
+    other = [n for n in names if n not in known]
     if other:
         keyword = next(
             (
@@ -210,15 +212,16 @@ def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, na
             ),
             None,
         )
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of DKT plates (EFGE_ELNO, EFGE_NOEU)", keyword, kw)
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of DKT plates ({', '.join(known)})", keyword, kw)
     if kw.factor("CHAM_UTIL"):
         ctx.unsupported("CHAM_UTIL on a model of DKT plates", "CHAM_UTIL", kw)
     if kw.factor("EXCIT"):
         ctx.unsupported("CALC_CHAMP EXCIT on DKT plates", "EXCIT", kw)
     values = _nodal_values(ctx, result, kw)
     try:
+        computed = sorted({n.replace("EFGE_NOEU", "EFGE_ELNO") for n in names})
         fields = plate_element_fields(
-            model, characteristics, materials, result.numbering, plates, values, ["EFGE_ELNO"]
+            model, characteristics, materials, result.numbering, plates, values, computed
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)

@@ -77,9 +77,9 @@ def test_plate_fields_refuse_other_options():
     mesh = grid_mesh("TRIA3", (1, 1), (1.0, 1.0))
     model, characteristics, field = plate_model(mesh)
     numbering = DofNumbering(mesh=mesh, dofs=build_numbering_dofs(model.node_components()))
-    with pytest.raises(ValueError, match="SIEF_ELGA is not computed for DKT plates"):
+    with pytest.raises(ValueError, match="EPSI_ELGA is not computed for DKT plates"):
         plate_element_fields(
-            model, characteristics, field, numbering, [0], np.zeros((1, 1)), ["SIEF_ELGA"]
+            model, characteristics, field, numbering, [0], np.zeros((1, 1)), ["EPSI_ELGA"]
         )
 
 
@@ -105,3 +105,50 @@ def test_shear_is_the_divergence_of_moments_on_parallelograms():
     q_local = np.array([-rigidity * d, 0.0])
     expected = np.array([[cos, sin], [-sin, cos]]) @ q_local
     assert np.abs(efge.values[0, :, :, 6:] - expected).max() < 1e-9 * rigidity * d
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_layer_stresses_of_bending_and_membrane(kind):
+    """SIEF_ELGA / SIGM_ELNO on 2 layers (6 sub-points: bottom, middle, top of
+    each): sigma = N / h + 12 z M / h^3 for the constant state of the patch,
+    SIZZ = 0, no transverse shear; SIGM_ELNO holds the same at the nodes."""
+    mesh = tilted(grid_mesh(kind, (3, 3), (1.0, 1.3), jitter=0.25, seed=2), ROTATION)
+    model, characteristics, field = plate_model(mesh)
+    for shell in characteristics.shells.values():
+        shell["COQUE_NCOU"] = 2
+    numbering = DofNumbering(mesh=mesh, dofs=build_numbering_dofs(model.node_components()))
+    a, b, c = 1e-3, -2e-3, 5e-4
+    g = np.array([[1e-4, 3e-5], [-2e-5, 2e-4]])
+
+    def state(xy):
+        x, y = xy[:, 0], xy[:, 1]
+        w = 0.5 * (a * x * x + b * y * y) + c * x * y
+        uv = xy @ g.T
+        return np.stack([uv[:, 0], uv[:, 1], w, b * y + c * x, -(a * x + c * y), 0 * x], axis=1)
+
+    u = nodal(numbering, mesh, ROTATION, state)
+    fields = plate_element_fields(
+        model,
+        characteristics,
+        field,
+        numbering,
+        np.arange(mesh.n_cells),
+        u[None],
+        ["SIEF_ELGA", "SIGM_ELNO"],
+    )
+    cos, sin = _output_axis((0.0, 0.0))
+    curvature = _rotated(LAW @ np.array([-a, -b, -2 * c]), cos, sin)
+    strain = _rotated(LAW @ np.array([g[0, 0], g[1, 1], g[0, 1] + g[1, 0]]), cos, sin)
+    z = H * np.array([-0.5, -0.25, 0.0, 0.0, 0.25, 0.5])
+    in_plane = strain[None, :] + z[:, None] * curvature[None, :]
+    expected = np.zeros((6, 6))
+    expected[:, [0, 1, 3]] = in_plane
+    n_points = 3 if kind == "TRIA3" else 4
+    n_nodes = len(mesh.cell_nodes[0])
+    for name, count in (("SIEF_ELGA", n_points), ("SIGM_ELNO", n_nodes)):
+        got = fields[name].values[0, :, : count * 6].reshape(mesh.n_cells, count, 6, 6)
+        assert fields[name].sub_points == 6
+        # shears: exact on triangles only (see the EFGE test)
+        columns = [0, 1, 2, 3, 4, 5] if kind == "TRIA3" else [0, 1, 2, 3]
+        error = np.abs(got - expected[None, None])[..., columns].max()
+        assert error < 1e-9 * np.abs(expected).max()

@@ -1,5 +1,6 @@
-"""Generalised forces of DKT plates (``EFGE_ELNO``), as code_aster's
-dktedg / dkqedg compute them for linear elasticity.
+"""Generalised forces (``EFGE_ELNO``) and stresses (``SIEF_ELGA``,
+``SIGM_ELNO``) of DKT plates, as code_aster's dktedg / dkqedg and dktsie /
+dkqsie compute them for an isotropic linear-elastic plate without offset.
 
 At each node of a cell (the NOEU family: the corners' reference
 coordinates), from the local displacements:
@@ -13,10 +14,14 @@ coordinates), from the local displacements:
   the Jacobian at the node (exact on triangles and parallelograms, the same
   approximation as code_aster's dkqtxy on other quadrangles).
 
-Forces are given in the cells' output frame (code_aster's coqrep): x along
+Stresses: at the RIGI Gauss points, on 3 sub-points (bottom, middle, top)
+of each of the COQUE_NCOU equal layers, sub-point index 3 (layer - 1) +
+level; SIGM_ELNO takes each sub-point's Gauss values to the nodes.
+
+Forces and stresses are given in the cells' output frame (code_aster's coqrep): x along
 the projection on the cell's plane of the direction ``ANGL_REP`` (alpha,
 beta) of AFFE_CARA_ELEM/COQUE, (0, 0) being the global X. Values are linear
-in the displacements, so complex states (a dyna_harmo) give complex forces.
+in the displacements, so complex states (a dyna_harmo) give complex fields.
 """
 
 from __future__ import annotations
@@ -35,10 +40,12 @@ from asterlite.fem.plate_elements import (
     rotation_functions,
     shell_values,
 )
-from asterlite.fem.solid_reference import REFERENCE_ELEMENTS
+from asterlite.fem.solid_fields import gauss_to_nodes
+from asterlite.fem.solid_reference import REFERENCE_ELEMENTS, gauss_family
 
 PLATE_EFGE_COMPONENTS = ("NXX", "NYY", "NXY", "MXX", "MYY", "MXY", "QX", "QY")
-PLATE_FIELD_OPTIONS = ("EFGE_ELNO",)
+SIGMA_COMPONENTS = ("SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ")
+PLATE_FIELD_OPTIONS = ("EFGE_ELNO", "SIEF_ELGA", "SIGM_ELNO")
 
 #: step of the central differences of the rotations' reference gradients:
 #: those gradients are polynomials of degree <= 2, so the difference is exact
@@ -75,11 +82,10 @@ def _rotation_hessians(xy, rotation_ref, points) -> np.ndarray:
     return np.stack(columns, axis=-1)
 
 
-def _local_forces(xy, kind, young, poisson, thickness, u_membrane, u_bending) -> np.ndarray:
-    """(o, e, n, 8) forces in the cells' local frames at their nodes for
-    local membrane DOFs (o, e, 2n) and bending DOFs (o, e, 3n)."""
+def _local_forces(xy, kind, young, poisson, thickness, u_membrane, u_bending, points):
+    """(o, e, q, 8) forces in the cells' local frames at reference ``points``
+    for local membrane DOFs (o, e, 2n) and bending DOFs (o, e, 3n)."""
     corner_ref, rotation_ref, _ = _CELLS[kind]
-    points = REFERENCE_ELEMENTS[corner_ref].nodes
     inverse, _ = _geometry(xy, corner_ref, points)
     if kind == "TRIA3":  # constant membrane strain
         centre = np.array([[1.0 / 3.0, 1.0 / 3.0]])
@@ -139,15 +145,20 @@ def plate_element_fields(
     complex: (n_orders, n_cells, max nodes, 8), NaN beyond a cell's nodes."""
     other = [name for name in options if name not in PLATE_FIELD_OPTIONS]
     if other:
-        raise ValueError(f"{other[0]} is not computed for DKT plates (EFGE_ELNO)")
+        raise ValueError(
+            f"{other[0]} is not computed for DKT plates ({', '.join(PLATE_FIELD_OPTIONS)})"
+        )
     mesh = model.mesh
     cells = np.asarray(cells, dtype=int)
     values = np.asarray(values)
     max_nodes = max(len(mesh.cell_nodes[int(c)]) for c in cells)
-    out = np.full(
-        (values.shape[0], len(cells), max_nodes, 8), np.nan, dtype=np.result_type(values, float)
-    )
+    dtype = np.result_type(values, float)
+    out = np.full((values.shape[0], len(cells), max_nodes, 8), np.nan, dtype=dtype)
     shells_of = characteristics.shells if characteristics is not None else {}
+    layers = max(int(shells_of.get(int(c), {}).get("COQUE_NCOU", 1)) for c in cells)
+    levels = 3 * layers
+    gauss = np.full((values.shape[0], len(cells), max_nodes * levels, 6), np.nan, dtype=dtype)
+    nodal = np.full_like(gauss, np.nan)
     for kind in _CELLS:
         rows = np.array([k for k, c in enumerate(cells) if mesh.cell_types[c] == kind], dtype=int)
         if not rows.size:
@@ -177,12 +188,55 @@ def plate_element_fields(
             [local[:, :, :, 0, 2], local[:, :, :, 1, 1], -local[:, :, :, 1, 0]], axis=-1
         )
         u_bending = bending.reshape(values.shape[0], len(members), 3 * n)
+        corner_ref, _, family = _CELLS[kind]
+        c, s = output_axes(frames, angles)
+        args = (xy, kind, props["E"], props["NU"], shell["EPAIS"], u_membrane, u_bending)
         try:
-            forces = _local_forces(
-                xy, kind, props["E"], props["NU"], shell["EPAIS"], u_membrane, u_bending
-            )
+            at_nodes = _local_forces(*args, REFERENCE_ELEMENTS[corner_ref].nodes)
+            points = gauss_family(corner_ref, family)[0]
+            at_points = _local_forces(*args, points) if set(options) - {"EFGE_ELNO"} else None
         except ElementError as exc:
             raise ElementError(f"DKT {kind} cells: {exc}") from None
-        c, s = output_axes(frames, angles)
-        out[:, rows, :n, :] = _to_output_frame(forces, c, s)
-    return {name: ElementField(name, cells, PLATE_EFGE_COMPONENTS, out.copy()) for name in options}
+        out[:, rows, :n, :] = _to_output_frame(at_nodes, c, s)
+        if at_points is None:
+            continue
+        ncou = np.array([int(shells_of[int(m)].get("COQUE_NCOU", 1)) for m in members])
+        if np.any(ncou != layers):
+            raise ElementError("SIEF_ELGA of DKT cells with different COQUE_NCOU in one call")
+        sigma = _layer_stresses(_to_output_frame(at_points, c, s), shell["EPAIS"], layers)
+        q = len(points)
+        gauss[:, rows, : q * levels, :] = sigma.reshape(values.shape[0], len(members), -1, 6)
+        # SIGM_ELNO: each sub-point's Gauss values taken to the nodes
+        to_nodes = gauss_to_nodes(corner_ref, family)
+        at_corner = np.einsum("nq,oeqlc->oenlc", to_nodes, sigma)
+        nodal[:, rows, : n * levels, :] = at_corner.reshape(values.shape[0], len(members), -1, 6)
+    fields = {}
+    for name in options:
+        if name == "EFGE_ELNO":
+            fields[name] = ElementField(name, cells, PLATE_EFGE_COMPONENTS, out.copy())
+        elif name == "SIEF_ELGA":
+            fields[name] = ElementField(name, cells, SIGMA_COMPONENTS, gauss.copy(), levels)
+        else:
+            fields[name] = ElementField(name, cells, SIGMA_COMPONENTS, nodal.copy(), levels)
+    return fields
+
+
+def _layer_stresses(forces: np.ndarray, thickness: np.ndarray, layers: int) -> np.ndarray:
+    """(o, e, q, 3 layers, 6) stresses at the bottom, middle and top of each
+    of ``layers`` equal layers from the generalised forces (o, e, q, 8) of
+    an isotropic plate: sigma = N / h + 12 z M / h^3 in the plane, the
+    parabolic 3 Q / (2 h) (1 - 4 z^2 / h^2) across it, SIZZ = 0 (code_aster's
+    dktsie / dkqsie)."""
+    h = thickness[None, :, None, None]
+    z = (
+        np.array([-0.5 + (k + 0.5 * level) / layers for k in range(layers) for level in range(3)])[
+            None, None, None, :
+        ]
+        * h
+    )
+    membrane, moments = forces[..., None, 0:3], forces[..., None, 3:6]
+    in_plane = membrane / h[..., None] + 12.0 * z[..., None] * moments / h[..., None] ** 3
+    shear_profile = 1.5 / h * (1.0 - 4.0 * z * z / (h * h))
+    shear = forces[..., None, 6:8] * shear_profile[..., None]
+    zero = np.zeros_like(in_plane[..., :1])
+    return np.concatenate([in_plane[..., :2], zero, in_plane[..., 2:3], shear], axis=-1)
