@@ -166,9 +166,13 @@ def plate_element_fields(
         members = cells[rows]
         shell = shell_values(characteristics, members, mesh)
         if np.any(shell["EXCENTREMENT"]):
-            raise ElementError("EFGE_ELNO of DKT cells with EXCENTREMENT is not computed")
+            raise ElementError(
+                "forces and stresses of DKT cells with EXCENTREMENT are not computed"
+            )
         if any(shells_of[int(c)].get("VECTEUR") is not None for c in members):
-            raise ElementError("EFGE_ELNO of DKT cells whose output frame is given by VECTEUR")
+            raise ElementError(
+                "forces and stresses of DKT cells whose output frame is given by VECTEUR"
+            )
         angles = np.array([shells_of[int(c)].get("ANGL_REP", (0.0, 0.0)) for c in members], float)
         props = _material(materials, members, mesh, False)
         conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int)
