@@ -541,12 +541,16 @@ def run(ctx, kw):
         pipes = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _PIPES], dtype=int
         )
+        on_plates = [
+            c for c in candidates if model.cell_modelisation.get(int(c)) in PLATE_MODELISATIONS
+        ]
+        # the edges (SEG2) a DKT modelisation also covers carry no plate field
         plates = np.array(
-            [c for c in candidates if model.cell_modelisation.get(int(c)) in PLATE_MODELISATIONS],
+            [c for c in on_plates if model.mesh.cell_types[int(c)] in ("TRIA3", "QUAD4")],
             dtype=int,
         )
         if plates.size:
-            if plates.size != len(candidates):
+            if len(on_plates) != len(candidates):
                 ctx.unsupported(
                     "CALC_CHAMP on DKT plates and other elements at once", "GROUP_MA", kw
                 )
