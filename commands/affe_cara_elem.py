@@ -211,9 +211,10 @@ def _barre(ctx, model, result, occ) -> None:
 
 def _coque(ctx, model, result, occ) -> None:
     """Plate characteristics of DKT cells: thickness, the DRZ stiffness
-    coefficient, rotary inertia, offset. The stress-output frame (ANGL_REP, VECTEUR),
-    the layer count and the shear coefficient of thick plates (A_CIS) change
-    no matrix of a thin isotropic plate."""
+    coefficient, rotary inertia, offset, and the output frame of its forces
+    (ANGL_REP, degrees; VECTEUR is kept so that the fields refuse it), the
+    layer count of its stress sub-points (COQUE_NCOU). The shear coefficient
+    of thick plates (A_CIS) changes no matrix of a thin isotropic plate."""
     if occ.get("EPAIS_FO") is not None:
         ctx.unsupported("COQUE EPAIS_FO (thickness given by a function)", "EPAIS_FO", occ)
     if occ.get("EXCENTREMENT_FO") is not None:
@@ -227,14 +228,19 @@ def _coque(ctx, model, result, occ) -> None:
     thickness = float(occ["EPAIS"])
     if not thickness > 0.0:
         ctx.error(f"EPAIS must be > 0, got {thickness}", "EPAIS", occ)
-    for no_effect in ("ANGL_REP", "VECTEUR", "A_CIS", "COQUE_NCOU"):
+    for no_effect in ("A_CIS",):
         occ.get(no_effect)
+    angles = tuple(float(a) for a in (occ.get("ANGL_REP") or (0.0, 0.0)))
     values = {
         "EPAIS": thickness,
         "COEF_RIGI_DRZ": float(occ.get("COEF_RIGI_DRZ", 1.0e-5)),
         # EXCENTREMENT implies INER_ROTA='OUI' (code_aster's rule)
         "INER_ROTA": 1.0 if occ.get("INER_ROTA") == "OUI" or offset_given else 0.0,
         "EXCENTREMENT": offset,
+        "ANGL_REP": angles,
+        # layers of the stress sub-points (SIEF_ELGA, SIGM_ELNO)
+        "COQUE_NCOU": int(occ.get("COQUE_NCOU", 1)),
+        "VECTEUR": occ.get("VECTEUR"),
     }
     if values["COEF_RIGI_DRZ"] < 0.0:
         ctx.unsupported("COQUE COEF_RIGI_DRZ < 0 (drilling rotations)", "COEF_RIGI_DRZ", occ)

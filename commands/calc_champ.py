@@ -40,6 +40,8 @@ from asterlite.fem.elements import ElementError
 from asterlite.fem.fibre_fields import multifibre_stresses
 from asterlite.fem.loads import beam_element_loads, load_terms
 from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_element_fields
+from asterlite.fem.plate_elements import PLATE_MODELISATIONS
+from asterlite.fem.plate_fields import plate_element_fields
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
 from asterlite.harmonic.loads import load_matrix
@@ -192,6 +194,44 @@ def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, name
             source = result.element_fields[name.replace("_NOEU", "_ELNO")]
             result.node_fields[name] = nodal_average(source, model.mesh, name)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {pipes.size} pipe cells, {values.shape[0]} orders")
+
+
+def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, names) -> None:
+    """EFGE_ELNO (and EFGE_NOEU), SIEF_ELGA and SIGM_ELNO of DKT plates
+    (code_aster's ef0033 / te0033: from the displacements, real or complex;
+    no inertia)."""
+
+    known = ("EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA", "SIGM_ELNO")
+    other = [n for n in names if n not in known]
+    if other:
+        keyword = next(
+            (
+                k
+                for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE")
+                if other[0] in as_tuple(kw.get(k))
+            ),
+            None,
+        )
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of DKT plates ({', '.join(known)})", keyword, kw)
+    if kw.factor("CHAM_UTIL"):
+        ctx.unsupported("CHAM_UTIL on a model of DKT plates", "CHAM_UTIL", kw)
+    if kw.factor("EXCIT"):
+        ctx.unsupported("CALC_CHAMP EXCIT on DKT plates", "EXCIT", kw)
+    values = _nodal_values(ctx, result, kw)
+    try:
+        computed = sorted({n.replace("EFGE_NOEU", "EFGE_ELNO") for n in names})
+        fields = plate_element_fields(
+            model, characteristics, materials, result.numbering, plates, values, computed
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    for name in names:
+        if name.endswith("_NOEU"):
+            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
+            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {plates.size} DKT cells, {values.shape[0]} orders")
 
 
 def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
@@ -501,6 +541,21 @@ def run(ctx, kw):
         pipes = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _PIPES], dtype=int
         )
+        on_plates = [
+            c for c in candidates if model.cell_modelisation.get(int(c)) in PLATE_MODELISATIONS
+        ]
+        # the edges (SEG2) a DKT modelisation also covers carry no plate field
+        plates = np.array(
+            [c for c in on_plates if model.mesh.cell_types[int(c)] in ("TRIA3", "QUAD4")],
+            dtype=int,
+        )
+        if plates.size:
+            if len(on_plates) != len(candidates):
+                ctx.unsupported(
+                    "CALC_CHAMP on DKT plates and other elements at once", "GROUP_MA", kw
+                )
+            _plate_fields(ctx, kw, result, model, characteristics, materials, plates, names)
+            return result
         if pipes.size:
             if pipes.size != len(candidates):
                 ctx.unsupported(

@@ -111,3 +111,19 @@ def test_extracted_table_array():
     table.add_row({"INST": 1.5, "DX": -1.0})
     array = TableView(table).deck_getattr("Array")("INST", "DX")
     np.testing.assert_array_equal(array, [[0.5, 2.0], [1.5, -1.0]])
+
+
+def test_get_field_of_a_harmonic_result():
+    """getField(name, NUME_ORDRE) / getField(name, freq, 'FREQ') give the
+    complex nodal field; a missing order and an element field are refused."""
+    from asterlite.errors import CommandError, UnsupportedError
+
+    result = _harmonic()
+    assert result.getField("DEPL", 1).getValues() == [1.0 + 2.0j, -3.0 + 0.5j, 0.25j]
+    assert result.getField("DEPL", 20.0, "FREQ").getValues() == [2.0, 4.0 - 1.0j, -1.0]
+    assert result.getField("DEPL").getValues() == [2.0, 4.0 - 1.0j, -1.0]
+    with pytest.raises(CommandError, match="NUME_ORDRE 3 is not stored"):
+        result.getField("DEPL", 3)
+    result.element_fields["EFGE_ELNO"] = object()
+    with pytest.raises(UnsupportedError, match="EFGE_ELNO of a dyna_harmo"):
+        result.getField("EFGE_ELNO", 1)

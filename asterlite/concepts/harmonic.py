@@ -15,7 +15,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.base import Concept
-from asterlite.post.deck_api import field_indexes
+from asterlite.post.deck_api import field_indexes, harmonic_field
 
 HARMONIC_FIELDS = ("DEPL", "VITE", "ACCE")
 
@@ -68,7 +68,9 @@ class DynaHarmo(Concept):
     """
 
     aster_types = ("dyna_harmo", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getIndexes", "getIndexesForFieldName", "getFrequencies"})
+    deck_methods = frozenset(
+        {"getName", "getField", "getIndexes", "getIndexesForFieldName", "getFrequencies"}
+    )
 
     numbering: DofNumbering
     frequencies: np.ndarray
@@ -95,3 +97,6 @@ class DynaHarmo(Concept):
 
     def getIndexesForFieldName(self, name) -> list[int]:  # noqa: N802
         return field_indexes(self, name)
+
+    def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802
+        return harmonic_field(self, name, value, para)

@@ -22,7 +22,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import NodalField
 from asterlite.concepts.mesh import Mesh
-from asterlite.errors import CommandError
+from asterlite.errors import CommandError, UnsupportedError
 from asterlite.fem.lagrange_layout import (
     dualised_relations,
     full_vector,
@@ -200,6 +200,28 @@ def transient_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> 
             reactions, field.beta = modal
             field.reactions = reactions @ np.asarray(generalized[name][position], dtype=float)
     return field
+
+
+def harmonic_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> FieldValues:
+    """``dyna_harmo.getField(name, value, para)``: the complex nodal field at
+    a NUME_ORDRE (the last one when omitted) or a frequency (``para='FREQ'``,
+    relative 1e-6). Element fields of a harmonic result are not given."""
+    name = str(name).strip().upper()
+    if name not in result.fields:
+        if name in (getattr(result, "element_fields", None) or {}):
+            raise UnsupportedError(f"getField of the element field {name} of a dyna_harmo")
+        raise CommandError(
+            f"result {result.name or ''} has no field {name} (it has {', '.join(result.fields)})"
+        )
+    if value is None:
+        position = len(result.order) - 1
+    elif str(para).upper() == "FREQ":
+        position = instant_position(result.frequencies, value, f"field {name} (FREQ)")
+    elif str(para).upper() == "NUME_ORDRE":
+        position = order_position(result.order, value, f"field {name}")
+    else:
+        raise CommandError(f"getField of a dyna_harmo: para must be NUME_ORDRE or FREQ, got {para}")
+    return FieldValues(result.numbering, np.array(result.fields[name][position], dtype=complex))
 
 
 def field_indexes(result, name: str) -> list[int]:
