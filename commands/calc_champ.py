@@ -161,11 +161,10 @@ def _multifibre_fields(ctx, kw, result, model, characteristics, materials, cells
     )
 
 
-def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names) -> None:
-    """EFGE_ELNO (and EFGE_NOEU) of a model of pipes (code_aster's te0185:
-    from the displacements' stresses, real or complex; no inertia)."""
-
-    other = [n for n in names if n not in ("EFGE_ELNO", "EFGE_NOEU")]
+def _refuse_other_options(ctx, kw, names, known, message: str) -> None:
+    """Refuse by name the first requested option not in ``known``
+    (``message`` formats it), located at the keyword that asked for it."""
+    other = [n for n in names if n not in known]
     if other:
         keyword = next(
             (
@@ -175,7 +174,27 @@ def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, name
             ),
             None,
         )
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of pipe elements (EFGE_ELNO)", keyword, kw)
+        ctx.unsupported(message.format(other[0]), keyword, kw)
+
+
+def _store_fields(ctx, kw, result, model, fields, names) -> None:
+    """Store element ``fields`` at the selected orders, and the nodal
+    averages of their ELNO fields for the _NOEU ``names``."""
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    for name in names:
+        if name.endswith("_NOEU"):
+            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
+            result.node_fields[name] = nodal_average(source, model.mesh, name)
+
+
+def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names) -> None:
+    """EFGE_ELNO (and EFGE_NOEU) of a model of pipes (code_aster's te0185:
+    from the displacements' stresses, real or complex; no inertia)."""
+
+    _refuse_other_options(
+        ctx, kw, names, ("EFGE_ELNO", "EFGE_NOEU"), "CALC_CHAMP {} of pipe elements (EFGE_ELNO)"
+    )
     if kw.factor("CHAM_UTIL"):
         ctx.unsupported("CHAM_UTIL on a model of pipes", "CHAM_UTIL", kw)
     if kw.factor("EXCIT"):
@@ -187,12 +206,7 @@ def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, name
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
-    _keep_selected_orders(ctx, kw, result, fields)
-    result.element_fields.update(fields)
-    for name in names:
-        if name.endswith("_NOEU"):
-            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
-            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    _store_fields(ctx, kw, result, model, fields, names)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {pipes.size} pipe cells, {values.shape[0]} orders")
 
 
@@ -202,17 +216,9 @@ def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, na
     no inertia)."""
 
     known = ("EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA", "SIGM_ELNO")
-    other = [n for n in names if n not in known]
-    if other:
-        keyword = next(
-            (
-                k
-                for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE")
-                if other[0] in as_tuple(kw.get(k))
-            ),
-            None,
-        )
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of DKT plates ({', '.join(known)})", keyword, kw)
+    _refuse_other_options(
+        ctx, kw, names, known, f"CALC_CHAMP {{}} of DKT plates ({', '.join(known)})"
+    )
     if kw.factor("CHAM_UTIL"):
         ctx.unsupported("CHAM_UTIL on a model of DKT plates", "CHAM_UTIL", kw)
     if kw.factor("EXCIT"):
@@ -225,12 +231,7 @@ def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, na
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
-    _keep_selected_orders(ctx, kw, result, fields)
-    result.element_fields.update(fields)
-    for name in names:
-        if name.endswith("_NOEU"):
-            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
-            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    _store_fields(ctx, kw, result, model, fields, names)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {plates.size} DKT cells, {values.shape[0]} orders")
 
 
@@ -238,17 +239,7 @@ def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
     """Stresses, strains and energies of 3D and plane solid cells
     (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
 
-    other = [n for n in names if n not in SOLID_FIELDS]
-    if other:
-        keyword = next(
-            (
-                k
-                for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE")
-                if other[0] in as_tuple(kw.get(k))
-            ),
-            None,
-        )
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of solid elements", keyword, kw)
+    _refuse_other_options(ctx, kw, names, SOLID_FIELDS, "CALC_CHAMP {} of solid elements")
     values = _nodal_values(ctx, result, kw)
     velocities = omega2 = None
     if "ECIN_ELEM" in names:
@@ -266,12 +257,7 @@ def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
-    _keep_selected_orders(ctx, kw, result, fields)
-    result.element_fields.update(fields)
-    for name in names:
-        if name.endswith("_NOEU"):
-            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
-            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    _store_fields(ctx, kw, result, model, fields, names)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {solids.size} solid cells, {values.shape[0]} orders")
 
 
@@ -603,13 +589,7 @@ def run(ctx, kw):
             fields = _with_discrete_cells(
                 ctx, kw, model, characteristics, result, discrete, values, fields
             )
-        _keep_selected_orders(ctx, kw, result, fields)
-        for name, field in fields.items():
-            result.element_fields[name] = field
-        for name in names:
-            if name.endswith("_NOEU"):
-                elno_field = result.element_fields[name.replace("_NOEU", "_ELNO")]
-                result.node_fields[name] = nodal_average(elno_field, model.mesh, name)
+        _store_fields(ctx, kw, result, model, fields, names)
         ctx.log(
             f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells"
             + (f" and {discrete.size} discrete cells" if discrete.size else "")
