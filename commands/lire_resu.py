@@ -249,13 +249,9 @@ def _read_ideas(ctx, kw):
     mesh = kw["MAILLAGE"] if kw.get("MAILLAGE") is not None else kw["MODELE"].mesh
     wanted = list(as_tuple(kw["NOM_CHAM"]))
     occurrences = {occ["NOM_CHAM"]: occ for occ in kw.factor("FORMAT_IDEAS")}
-    missing = [n for n in wanted if n not in occurrences]
-    if missing:
-        ctx.unsupported(
-            f"LIRE_RESU IDEAS of {missing[0]} without FORMAT_IDEAS (code_aster's defaults)",
-            "FORMAT_IDEAS",
-            kw,
-        )
+    for name in wanted:
+        if name not in occurrences:
+            occurrences[name] = _ideas_default_format(ctx, kw, name)
     try:
         datasets = read_datasets_55(_input(ctx, kw))
     except (IdeasReadError, ValueError, IndexError) as exc:
@@ -349,6 +345,38 @@ def _ideas_modes(ctx, kw, numbering, fields, frequencies, parameters) -> ModeRes
     return modes
 
 
+def _ideas_default_format(ctx, kw, name: str) -> dict:
+    """code_aster's format of a field that FORMAT_IDEAS does not describe
+    (its crsdfi): nodal datasets 55 for the fields asterlite reads."""
+    for prefix, (record_6, components) in _IDEAS_DEFAULT_FORMATS.items():
+        if name.startswith(prefix):
+            return {
+                "NOM_CHAM": name,
+                "NUME_DATASET": 55,
+                "RECORD_6": record_6,
+                "POSI_ORDRE": (7, 4),
+                "POSI_INST": (8, 1),
+                "POSI_FREQ": (8, 1),
+                "NOM_CMP": components,
+            }
+    ctx.unsupported(
+        f"LIRE_RESU IDEAS of {name} without FORMAT_IDEAS: code_aster's default format of "
+        "this field is an element dataset (57), which asterlite does not read",
+        "FORMAT_IDEAS",
+        kw,
+    )
+
+
+# code_aster's default record 6 (None: any value) and components per field
+_TRANSLATIONS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+_IDEAS_DEFAULT_FORMATS = {
+    "DEPL": ((1, None, 3, 8, 2, 6), _TRANSLATIONS),
+    "VITE": ((1, None, 3, 11, 2, 6), _TRANSLATIONS),
+    "ACCE": ((1, None, 3, 12, 2, 6), _TRANSLATIONS),
+    "TEMP": ((2, 4, 1, 5, 2, 1), ("TEMP",)),
+}
+
+
 def _ideas_matches(occ, dataset, name) -> bool:
     records = dataset["records"]
     given = False
@@ -359,6 +387,8 @@ def _ideas_matches(occ, dataset, name) -> bool:
         given = True
         tokens = records[record - 1].split()
         for k, value in enumerate(as_tuple(values)):
+            if value is None:
+                continue
             if k >= len(tokens) or int(float(tokens[k])) != int(value):
                 return False
     if given:

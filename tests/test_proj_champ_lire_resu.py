@@ -225,9 +225,9 @@ def test_lire_resu_dyna_trans_selection_and_errors(tmp_path):
     with pytest.raises(CommandError, match="no step"):
         run(session, "LIRE_RESU", FORMAT_MED=fmt, INST=0.15, CRITERE="RELATIF",
             PRECISION=1e-6, **common)  # fmt: skip
-    with pytest.raises(UnsupportedError, match="IDEAS"):
+    with pytest.raises(UnsupportedError, match="IDEAS"):  # element datasets (57)
         run(session, "LIRE_RESU", FORMAT="IDEAS", UNITE=19, TYPE_RESU="DYNA_TRANS",
-            MAILLAGE=mesh, TOUT_ORDRE="OUI", NOM_CHAM="DEPL")  # fmt: skip
+            MAILLAGE=mesh, TOUT_ORDRE="OUI", NOM_CHAM="VARI_ELNO")  # fmt: skip
 
 
 def test_sdll113a_passes(tmp_path):
@@ -354,3 +354,39 @@ def test_mesh_labels_rename_every_node_and_cell():
         mesh.addNodeLabels(["A", "B"])
     with pytest.raises(DeckRuntimeError, match="repeat"):
         mesh.addNodeLabels(["A", "A", "C"])
+
+
+def test_lire_resu_ideas_reads_fields_without_format_ideas_in_code_asters_default_format(
+    tmp_path,
+):
+    # code_aster's crsdfi defaults: dataset 55, record 6 data type 8 (DEPL) or
+    # 11 (VITE), order at record 7 field 4, instant at record 8 field 1
+    from asterlite.io.ideas_result import field_lines
+
+    mesh = line([0.0, 0.5, 1.0])
+    num = numbering(mesh)
+    depl = np.array([0.0, 0.0, 1.0, 0.5, 2.0, 1.0])
+    lines = []
+    for order, time in ((1, 0.5), (2, 1.0)):
+        lines += field_lines(num, order * depl, "DEPL", 4, (2, 4, 1, order), (time,), "T", "S")
+        lines += field_lines(num, -order * depl, "VITE", 4, (2, 4, 1, order), (time,), "T", "S")
+    path = tmp_path / "resu.unv"
+    path.write_text("\n".join(lines) + "\n")
+    result = run(
+        FakeSession({38: path}),
+        "LIRE_RESU",
+        FORMAT="IDEAS",
+        UNITE=38,
+        TYPE_RESU="DYNA_TRANS",
+        MAILLAGE=mesh,
+        NOM_CHAM=("DEPL", "VITE"),
+        TOUT_ORDRE="OUI",
+    )
+    assert list(result.times) == [0.5, 1.0]
+    rows = [result.numbering.index[dof] for dof in num.dofs]
+    np.testing.assert_allclose(result.fields["DEPL"][1][rows], 2 * depl, rtol=1e-6)
+    np.testing.assert_allclose(result.fields["VITE"][0][rows], -depl, rtol=1e-6)
+    with pytest.raises(UnsupportedError, match="element dataset"):
+        run(FakeSession({38: path}), "LIRE_RESU", FORMAT="IDEAS", UNITE=38,
+            TYPE_RESU="DYNA_TRANS", MAILLAGE=mesh, NOM_CHAM="SIEF_ELNO",
+            TOUT_ORDRE="OUI")  # fmt: skip

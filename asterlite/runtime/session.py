@@ -260,7 +260,7 @@ class Session:
             from asterlite.lang import stdlib
             from asterlite.lang.limits import Limits
 
-            module = stdlib.os_module(lambda: self.output_dir, Limits())
+            module = stdlib.os_module(lambda: self.output_dir, Limits(), self.log)
             return module if name == "os" else module.attribute("path")
         if name in self.run.helper_modules:
             from asterlite.lang import Evaluator, parse_deck
