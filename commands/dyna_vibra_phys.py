@@ -12,12 +12,13 @@ from asterlite.commands.dyna_vibra_words import TRANSIENT
 
 from asterlite.concepts.table import TableNotComputed
 from asterlite.concepts.transient import DynaTrans
-from asterlite.dynamics.physical.archive import Archive, archived_steps
+from asterlite.dynamics.physical.archive import Archive, archive_on_disk, archived_steps
 from asterlite.dynamics.physical.imposed import ConstantInTime, ScaledInTime
 from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
 from asterlite.errors import NumericalError, worded
 from asterlite.fem.loads import load_history, load_terms
 from asterlite.fem.selection import as_tuple
+from asterlite.io.disk_rows import DiskRows
 from asterlite.modal.renumber import transfer
 
 PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
@@ -62,7 +63,14 @@ def run_physical(ctx, kw):
         )
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
     mask = None if scheme == "ADAPT_ORDRE2" else physical_archive_mask(kw, times)
-    archive = Archive(system.n_free, 64 if mask is None else int(np.count_nonzero(mask)))
+    capacity = 64 if mask is None else int(np.count_nonzero(mask))
+    # past its share of the memory limit the archive lives on disk
+    disk = (
+        ctx.session.output_dir
+        if mask is not None and archive_on_disk(capacity, system.n_free, system.n_dofs)
+        else False
+    )
+    archive = Archive(system.n_free, capacity, disk)
     excluded = as_tuple(archiving.get("CHAM_EXCLU"))
     if excluded:
         # code_aster stores excluded fields at the last instant only; asterlite keeps
@@ -167,20 +175,27 @@ def run_physical(ctx, kw):
         error = error.worded(TRANSIENT)
         raise NumericalError(error.message, ctx.location, ctx.command) from None
     elapsed = __import__("time").perf_counter() - started
-    out_t, out_q, out_v, out_a = archive.arrays()
-    if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
-        out_v[-1] = last_velocity
+    out_t = archive.times[: archive.count].copy()
     ctx.log(
         f"DYNA_VIBRA PHYS {scheme}: {stats['steps']} steps, {out_t.size} archived, "
         f"{system.n_free} free DOFs of {system.n_dofs}, {elapsed:.3f} s"
     )
-    fields = {
-        "DEPL": system.expand(out_q),
-        "VITE": system.expand_rate(out_v),
-        "ACCE": system.expand_rate(out_a),
-    }
-    out_t = out_t.copy()
-    del out_q, out_v, out_a, archive  # the reduced states, views of the archive
+    fields = {}
+    # one quantity at a time, its reduced states let go of once expanded: the
+    # archive and the fields are never both whole in memory
+    for k, (name, expand) in enumerate(
+        (("DEPL", system.expand), ("VITE", system.expand_rate), ("ACCE", system.expand_rate))
+    ):
+        states = archive.take(k)
+        if name == "VITE" and last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
+            states[-1] = last_velocity
+        fields[name] = expand(
+            states, DiskRows(system.n_dofs, disk or None) if archive.on_disk else None
+        )
+        del states
+    if archive.on_disk:
+        ctx.log(f"archive of {out_t.size} states kept on disk (over its share of the memory limit)")
+    del archive
     if system.imposed is not None:
         # the archived instants are step instants: their motion is the scheme's
         steps = np.clip(np.searchsorted(times, out_t), 0, times.size - 1)

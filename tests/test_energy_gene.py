@@ -228,10 +228,8 @@ def test_friction_dissipation_follows_the_coulomb_decay(tmp_path):
 
 
 def test_the_run_summary_reports_the_residual(tmp_path):
-    from asterlite.runtime.runner import transient_summaries
-
     session = friction_session(tmp_path)
-    transients, _ = transient_summaries(session.produced)
+    transients, _ = session.summaries.results()
     (run,) = transients
     assert abs(run["energy_residual"]) < 1.0e-4
     assert 0.0 <= run["energy_residual_ratio"] < 1.0e-3
