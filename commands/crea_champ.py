@@ -162,10 +162,11 @@ def _extr(ctx, kw):
 
 
 def _mesh_field(ctx, kw):
-    """EXTR of a mesh's field: its curvilinear abscissa (NOM_CHAM='ABSC_CURV')."""
+    """EXTR of a mesh's field: its curvilinear abscissa (NOM_CHAM='ABSC_CURV')
+    or its node coordinates (NOM_CHAM='GEOMETRIE')."""
     mesh, name = kw["MAILLAGE"], kw["NOM_CHAM"]
-    if name != "ABSC_CURV":
-        ctx.unsupported(f"CREA_CHAMP EXTR of the mesh's {name}", "NOM_CHAM", kw)
+    if name == "GEOMETRIE":
+        return _geometry(ctx, kw, mesh)
     if kw.get("TYPE_CHAM") != "CART_ABSC_R":
         ctx.error(
             f"the mesh's ABSC_CURV is a CART_ABSC_R field, not {kw.get('TYPE_CHAM')}",
@@ -182,6 +183,20 @@ def _mesh_field(ctx, kw):
         components=ABSCISSA_COMPONENTS,
         values=dict(mesh.curvilinear_abscissa),
     )
+
+
+def _geometry(ctx, kw, mesh):
+    """The coordinates X, Y, Z of every node (code_aster keeps three, also
+    for a plane mesh), as a NOEU_GEOM_R field."""
+    if kw.get("TYPE_CHAM") != "NOEU_GEOM_R":
+        ctx.error(
+            f"the mesh's GEOMETRIE is a NOEU_GEOM_R field, not {kw.get('TYPE_CHAM')}",
+            "TYPE_CHAM",
+            kw,
+        )
+    dofs = [(node, axis) for node in range(mesh.n_nodes) for axis in ("X", "Y", "Z")]
+    values = np.asarray(mesh.coords, dtype=float)[:, :3].reshape(-1).copy()
+    return NodalField(numbering=DofNumbering(mesh=mesh, dofs=dofs), values=values)
 
 
 def _is_element_type(type_cham) -> bool:

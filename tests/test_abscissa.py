@@ -211,3 +211,33 @@ def test_post_rccm_cham_gd_with_abscissa():
                 RESU_MECA=[{"CHAM_GD": other}],
             ),
         )
+
+
+def test_test_resu_carte_and_geometry():
+    from asterlite.commands import test_resu
+
+    mesh = bent_line()
+    mesh.cell_groups["ARC2_ONLY"] = np.array([4])
+    modi_maillage.run(
+        context("MODI_MAILLAGE"),
+        kw(MAILLAGE=mesh, ABSC_CURV=[{"TOUT": "OUI", "GROUP_NO_ORIG": "A"}]),
+    )
+    carte = crea_champ.run(
+        context("CREA_CHAMP"),
+        kw(OPERATION="EXTR", TYPE_CHAM="CART_ABSC_R", NOM_CHAM="ABSC_CURV", MAILLAGE=mesh),
+    )
+    ctx = context("TEST_RESU")
+    occ = {"CHAM_GD": carte, "GROUP_MA": "ARC2_ONLY", "NOM_CMP": "ABSC3"}
+    test_resu.run(ctx, kw(CARTE=[dict(occ, VALE_CALC=1.0 + 3 * np.pi / 8)]))
+    test_resu.run(ctx, kw(CARTE=[dict(occ, VALE_CALC=1.0)]))
+    assert [t.ok for t in ctx.session.tests] == [True, False]
+    with pytest.raises(CommandError, match="has 2 cells"):
+        test_resu.run(ctx, kw(CARTE=[dict(occ, GROUP_MA="ARCS", VALE_CALC=1.0)]))
+    with pytest.raises(CommandError, match="no ABSC4"):
+        test_resu.run(ctx, kw(CARTE=[dict(occ, NOM_CMP="ABSC4", VALE_CALC=1.0)]))
+    geometry = crea_champ.run(
+        context("CREA_CHAMP"),
+        kw(OPERATION="EXTR", TYPE_CHAM="NOEU_GEOM_R", NOM_CHAM="GEOMETRIE", MAILLAGE=mesh),
+    )
+    assert geometry.values.reshape(-1, 3) == pytest.approx(mesh.coords)
+    assert geometry.numbering.dofs[:3] == [(0, "X"), (0, "Y"), (0, "Z")]
