@@ -1,16 +1,19 @@
 """CREA_CHAMP on nodal fields (TYPE_CHAM 'NOEU_*_R', and 'NOEU_*_C' for EXTR,
-ASSE, R2C and C2R): AFFE (values by node and
-component), EXTR (one field of a result, or its extreme over the stored
-fields with TYPE_MAXI; also on the ELNO/ELGA fields CALC_CHAMP stored on a
-result, giving a ``cham_elem``), ASSE (pieces of fields, later ones overriding earlier
-ones unless CUMUL='OUI') and COMB (linear combination)."""
+ASSE, R2C and C2R): AFFE (values by node and component), EXTR (one field of
+a result, or its extreme over the stored fields with TYPE_MAXI; also on the
+ELNO/ELGA fields CALC_CHAMP stored on a result, giving a ``cham_elem``, and
+on the curvilinear abscissa carte MODI_MAILLAGE ABSC_CURV stored on a mesh,
+TYPE_CHAM='CART_ABSC_R'), ASSE (pieces of fields, later ones overriding
+earlier ones unless CUMUL='OUI') and COMB (linear combination)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering, NodalField
+from asterlite.concepts.mesh import CellConstantField
 from asterlite.concepts.modes import FieldOnElements
+from asterlite.fem.abscissa import ABSCISSA_COMPONENTS
 from asterlite.fem.dofs import sort_components
 from asterlite.fem.selection import as_tuple, select_nodes
 from asterlite.modal.fields import (
@@ -100,6 +103,8 @@ def _affe(ctx, kw):
 
 def _nodal_only(ctx, kw):
     type_cham = str(kw.get("TYPE_CHAM") or "")
+    if kw.get("OPERATION") == "EXTR" and kw.get("MAILLAGE") is not None:
+        return  # the mesh's own fields (_mesh_field)
     if kw.get("OPERATION") == "EXTR" and _is_element_type(type_cham) and type_cham.endswith("_R"):
         return  # element fields a result stores (CALC_CHAMP)
     if kw.get("OPERATION") in ("EXTR", "ASSE") and type_cham.startswith("NOEU_"):
@@ -118,6 +123,8 @@ def _extr(ctx, kw):
     the stored fields (TYPE_MAXI), nodal or by element (ELNO/ELGA fields
     CALC_CHAMP stored on the result)."""
 
+    if kw.get("MAILLAGE") is not None:
+        return _mesh_field(ctx, kw)
     if kw.get("RESULTAT") is None:
         ctx.unsupported("CREA_CHAMP EXTR from something else than RESULTAT", "OPERATION", kw)
     result = kw["RESULTAT"]
@@ -152,6 +159,44 @@ def _extr(ctx, kw):
         components=tuple(field.components),
         values=selected,
     )
+
+
+def _mesh_field(ctx, kw):
+    """EXTR of a mesh's field: its curvilinear abscissa (NOM_CHAM='ABSC_CURV')
+    or its node coordinates (NOM_CHAM='GEOMETRIE')."""
+    mesh, name = kw["MAILLAGE"], kw["NOM_CHAM"]
+    if name == "GEOMETRIE":
+        return _geometry(ctx, kw, mesh)
+    if kw.get("TYPE_CHAM") != "CART_ABSC_R":
+        ctx.error(
+            f"the mesh's ABSC_CURV is a CART_ABSC_R field, not {kw.get('TYPE_CHAM')}",
+            "TYPE_CHAM",
+            kw,
+        )
+    if mesh.curvilinear_abscissa is None:
+        ctx.error(
+            "the mesh has no curvilinear abscissa (MODI_MAILLAGE ABSC_CURV first)", "NOM_CHAM", kw
+        )
+    return CellConstantField(
+        mesh=mesh,
+        field_type="CART_ABSC_R",
+        components=ABSCISSA_COMPONENTS,
+        values=dict(mesh.curvilinear_abscissa),
+    )
+
+
+def _geometry(ctx, kw, mesh):
+    """The coordinates X, Y, Z of every node (code_aster keeps three, also
+    for a plane mesh), as a NOEU_GEOM_R field."""
+    if kw.get("TYPE_CHAM") != "NOEU_GEOM_R":
+        ctx.error(
+            f"the mesh's GEOMETRIE is a NOEU_GEOM_R field, not {kw.get('TYPE_CHAM')}",
+            "TYPE_CHAM",
+            kw,
+        )
+    dofs = [(node, axis) for node in range(mesh.n_nodes) for axis in ("X", "Y", "Z")]
+    values = np.asarray(mesh.coords, dtype=float)[:, :3].reshape(-1).copy()
+    return NodalField(numbering=DofNumbering(mesh=mesh, dofs=dofs), values=values)
 
 
 def _is_element_type(type_cham) -> bool:

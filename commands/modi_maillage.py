@@ -1,15 +1,25 @@
 """MODI_MAILLAGE: change node coordinates in place (ECHELLE, TRANSLATION,
-ROTATION, SYMETRIE, DEFORME) or the orientation of skin faces (ORIE_PEAU);
-the mesh is returned (reuse)."""
+ROTATION, SYMETRIE, DEFORME), the orientation of skin faces (ORIE_PEAU), or
+store the curvilinear abscissa of a line of segments (ABSC_CURV); the mesh
+is returned (reuse)."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.selection import as_tuple, cell_group_members
+from asterlite.fem.abscissa import AbscissaError, curvilinear_abscissa
+from asterlite.fem.selection import (
+    as_tuple,
+    cell_group_members,
+    named_nodes,
+    node_group_members,
+    select_cells,
+)
 from asterlite.fem.skin import SkinError, is_plane, orient_edges, orient_skin
 
-_SUPPORTED = ("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU")
+_SUPPORTED = (
+    "ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU", "ABSC_CURV",
+)  # fmt: skip
 # code_aster 15's name of ORIE_PEAU for 3D skins, and its keywords
 _SKIN_KEYWORDS = {
     "ORIE_PEAU": ("GROUP_MA_PEAU", "GROUP_MA_INTERNE"),
@@ -128,6 +138,27 @@ def _deforme(ctx, mesh, occ) -> None:
         mesh.coords[present, axis] += field.values[rows[present]]
 
 
+def _abscissa(ctx, mesh, occ) -> None:
+    """ABSC_CURV: the abscissa carte of the chosen cells from the origin node."""
+    origin_key = "GROUP_NO_ORIG" if occ.get("GROUP_NO_ORIG") is not None else "NOEUD_ORIG"
+    if origin_key == "GROUP_NO_ORIG":
+        origin = node_group_members(ctx, occ, mesh, origin_key)
+    else:
+        origin = named_nodes(ctx, occ, mesh, origin_key)
+    if len(origin) != 1:
+        ctx.error(f"{origin_key} must name exactly one node ({len(origin)} given)", origin_key, occ)
+    cells = select_cells(ctx, occ, mesh)
+    try:
+        carte = curvilinear_abscissa(mesh, cells, origin[0])
+    except AbscissaError as exc:
+        ctx.error(str(exc), "GROUP_MA" if occ.get("GROUP_MA") else "TOUT", occ)
+    if mesh.curvilinear_abscissa is not None:
+        ctx.log("ABSC_CURV: the mesh's former curvilinear abscissa is replaced")
+    mesh.curvilinear_abscissa = carte
+    length = max((max(v) for v in carte.values()), default=0.0)
+    ctx.log(f"ABSC_CURV: {len(carte)} cells, line length {length:.6g}")
+
+
 def run(ctx, kw):
     mesh = kw["MAILLAGE"]
     # code_aster order: deformation, translation, rotation, symmetry, scale
@@ -142,6 +173,8 @@ def run(ctx, kw):
     if kw.get("ECHELLE") is not None:
         mesh.coords[:] = mesh.coords * float(kw["ECHELLE"])
     _orient_skin(ctx, mesh, kw)
+    for occ in kw.factor("ABSC_CURV"):
+        _abscissa(ctx, mesh, occ)
     done = [k for k in _SUPPORTED if kw.get(k)]
     ctx.log(f"mesh modified: {', '.join(done)}")
     return mesh

@@ -3,7 +3,8 @@
 RESU (RESULTAT + NOM_CHAM + node + NOM_CMP at NUME_ORDRE / INST, or PARA of a
 state, or TYPE_TEST over a field), GENE (RESU_GENE + NUME_CMP_GENE, or
 VECT_GENE), CHAM_NO (CHAM_GD + node + NOM_CMP, or TYPE_TEST), CHAM_ELEM
-(a cham_elem at a cell node or Gauss point, or TYPE_TEST). Verdicts:
+(a cham_elem at a cell node or Gauss point, or TYPE_TEST), CARTE (a
+carte's component on the one cell of GROUP_MA). Verdicts:
 ``asterlite.post.checks``.
 """
 
@@ -13,6 +14,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementField, NodalField
 from asterlite.concepts.harmonic import DynaHarmo, HarmGene
+from asterlite.concepts.mesh import CellConstantField
 from asterlite.concepts.modes import (
     FieldOnElements,
     GeneralizedModes,
@@ -41,6 +43,7 @@ def run(ctx, kw):
         ("GENE", check_gene),
         ("CHAM_NO", check_field),
         ("CHAM_ELEM", check_element_field),
+        ("CARTE", check_carte),
         ("OBJET", check_object),
     )
     for key, check in checks:
@@ -332,6 +335,30 @@ def check_field(ctx, occ, where):
         ctx, occ, field.numbering, np.asarray(field.values), field.name or "?"
     )
     record_check(ctx, f"{where} {what}", value, occ)
+
+
+def check_carte(ctx, occ, where):
+    """CARTE: the value of NOM_CMP a carte holds on the cell of GROUP_MA
+    (a group of exactly one cell, as code_aster requires)."""
+    carte = occ.get("CHAM_GD")
+    if not isinstance(carte, CellConstantField):
+        kind = getattr(carte, "aster_type", type(carte).__name__)
+        ctx.unsupported(f"TEST_RESU/CARTE of a {kind}", "CHAM_GD", occ)
+    mesh, group = carte.mesh, occ.get("GROUP_MA")
+    if group is None:
+        ctx.error("GROUP_MA names the cell to test", "GROUP_MA", occ)
+    if group not in mesh.cell_groups:
+        ctx.error(missing_name("cell group", group, mesh.cell_groups), "GROUP_MA", occ)
+    cells = mesh.cell_groups[group]
+    if len(cells) != 1:
+        ctx.error(
+            f"group {group} has {len(cells)} cells, TEST_RESU/CARTE needs one", "GROUP_MA", occ
+        )
+    component = occ["NOM_CMP"]
+    given = dict(zip(carte.components, carte.values.get(int(cells[0]), ()), strict=False))
+    if component not in given:
+        ctx.error(f"the carte has no {component} on the cell of {group}", "NOM_CMP", occ)
+    record_check(ctx, f"{where} {carte.name or '?'} {group} {component}", given[component], occ)
 
 
 def cell_point_label(occ) -> str:

@@ -79,6 +79,8 @@ class Mesh(Concept):
     cell_groups: dict[str, np.ndarray] = field(default_factory=dict)
     dim: int = 3
     title: str = ""
+    # MODI_MAILLAGE ABSC_CURV's carte: cell -> abscissa of its nodes (ABSC1...)
+    curvilinear_abscissa: dict[int, tuple[float, ...]] | None = None
 
     def __post_init__(self) -> None:
         self.node_index = {n: i for i, n in enumerate(self.node_names)}
@@ -153,6 +155,9 @@ class Mesh(Concept):
             cell_groups={k: v.copy() for k, v in self.cell_groups.items()},
             dim=self.dim,
             title=self.title,
+            curvilinear_abscissa=(
+                None if self.curvilinear_abscissa is None else dict(self.curvilinear_abscissa)
+            ),
         )
 
     # -- code_aster's object API ----------------------------------------------
@@ -203,3 +208,19 @@ class Mesh(Concept):
         if len(set(names)) != count:
             raise DeckRuntimeError(f"add{what.title()}Labels: the {what} labels repeat a name")
         return names
+
+
+@dataclass(eq=False)
+class CellConstantField(Concept):
+    """A field constant by cell (code_aster's ``carte``), as CREA_CHAMP EXTR
+    takes it from a mesh (``CART_ABSC_R``: MODI_MAILLAGE ABSC_CURV's abscissa).
+
+    ``values`` maps a mesh cell to its components' values, the first
+    ``len(values[cell])`` of ``components`` (a SEG2 carries ABSC1, ABSC2)."""
+
+    aster_types = ("carte_sdaster", "cham_gd_sdaster")
+
+    mesh: Mesh
+    field_type: str
+    components: tuple[str, ...]
+    values: dict[int, tuple[float, ...]]
