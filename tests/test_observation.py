@@ -23,6 +23,7 @@ TRANSLATION = np.array([1.0e-3, -2.0e-3, 0.5e-3])
 SPIN = np.array([0.2e-3, -0.1e-3, 0.3e-3])  # small rotation vector
 DIRECTION = np.array([2.0, 1.0, 0.5]) / np.linalg.norm([2.0, 1.0, 0.5])
 SENSORS = np.outer([0.3, 1.25, 1.7], DIRECTION)  # between the nodes of the line
+INSIDE_BOX = np.array([[0.3, 0.4, 0.55], [0.75, 0.2, 0.9], [0.5, 0.5, 0.5]])
 
 
 def _solid(session):
@@ -42,9 +43,9 @@ def _line(session):
     return mesh, model, run(session, "NUME_DDL", MODELE=model)
 
 
-def _sensors(session):
+def _sensors(session, points=SENSORS):
     mesh = Mesh(
-        coords=SENSORS.copy(),
+        coords=np.asarray(points, dtype=float).copy(),
         node_names=["C1", "C2", "C3"],
         cell_names=["P1", "P2", "P3"],
         cell_types=["POI1"] * 3,
@@ -69,10 +70,14 @@ def _displacements(mesh, numbering):
     return depl
 
 
-def test_rigid_displacement_projected_and_turned_into_the_sensor_frame():
+@pytest.mark.parametrize("source", ["line", "box"])
+def test_rigid_displacement_projected_and_turned_into_the_sensor_frame(source):
     session = FakeSession()
-    mesh, model, numbering = _line(session)
-    sensors = _sensors(session)
+    if source == "line":
+        (mesh, model, numbering), points = _line(session), SENSORS
+    else:  # the sensors inside HEXA8 cells, trilinear: a rigid motion exactly
+        (mesh, model, numbering), points = _solid(session), INSIDE_BOX
+    sensors = _sensors(session, points)
     result = DynaTrans(
         numbering, np.array([0.0, 1.0]), np.array([1, 2]), {"DEPL": _displacements(mesh, numbering)}
     )
@@ -94,7 +99,7 @@ def test_rigid_displacement_projected_and_turned_into_the_sensor_frame():
     assert sorted(out.numbering.dofs) == [(0, "DX"), (0, "DY"), (1, "DX"), (1, "DY")]
     c, s = np.cos(np.radians(30.0)), np.sin(np.radians(30.0))
     for node in (0, 1):
-        u = _rigid(SENSORS[node])  # linear along the segments: interpolated exactly
+        u = _rigid(points[node])  # a linear field: interpolated exactly
         expected = {"DX": c * u[0] + s * u[1], "DY": -s * u[0] + c * u[1]}
         for component, value in expected.items():
             column = out.numbering.index[(node, component)]
