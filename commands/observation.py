@@ -299,16 +299,18 @@ def _turn(ctx, kw, name, field, mesh) -> None:
         else:
             nodes = select_nodes(ctx, occ, mesh)
         rows = field.rows_of(nodes)
-        if rows.size == 0:
-            continue
         axes = _axes(ctx, occ, mesh.coords[field.nodes[rows]])
+        names = as_tuple(occ["NOM_CMP"])
+        if rows.size == 0:
+            ctx.log(f"OBSERVATION {name}: no node of MODI_REPERE's selection holds a value")
+            continue
         if kind.endswith("2D") and not obs.plane_rotation(axes):
             ctx.unsupported(
                 f"TYPE_CHAM={kind!r} in a frame that does not turn about Z only", "REPERE", occ
             )
         try:
             turn = obs.rotate_tensors if tensor else obs.rotate_vectors
-            turn(field, rows, as_tuple(occ["NOM_CMP"]), axes)
+            turn(field, rows, names, axes)
         except ValueError as exc:
             ctx.error(f"{name}: {exc}", "NOM_CMP", occ)
         ctx.log(f"OBSERVATION {name} turned ({kind}, REPERE={occ['REPERE']}) at {rows.size} nodes")

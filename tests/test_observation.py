@@ -233,3 +233,28 @@ def test_refusals_by_name():
                       FILTRE={"TOUT": "OUI", "NOM_CHAM": "DEPL", "DDL_ACTIF": ("DX",)})  # fmt: skip
     with pytest.raises(CommandError, match="SIEF_NOEU"):
         validated_run(session, "OBSERVATION", **{**common, "NOM_CHAM": "SIEF_NOEU"})
+
+
+def test_plane_strains_and_vectors_turned_about_z():
+    theta = np.radians(25.0)
+    c, s = np.cos(theta), np.sin(theta)
+    axes = np.array([[[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]]])
+    exx, eyy, ezz, exy = 2.0, -1.0, 0.5, 0.7
+    field = obs.ObservedField(
+        np.array([4]),
+        ("EPXX", "EPYY", "EPZZ", "EPXY", "DX", "DY"),
+        np.array([[[exx, eyy, ezz, exy, 3.0, 4.0]]]),
+        np.ones((1, 6), dtype=bool),
+    )
+    assert obs.plane_rotation(axes)
+    obs.rotate_tensors(field, np.array([0]), ("EPXX", "EPYY", "EPZZ", "EPXY"), axes)
+    obs.rotate_vectors(field, np.array([0]), ("DX", "DY"), axes)
+    expected = [
+        c * c * exx + s * s * eyy + 2 * c * s * exy,
+        s * s * exx + c * c * eyy - 2 * c * s * exy,
+        ezz,
+        (eyy - exx) * c * s + (c * c - s * s) * exy,
+        c * 3.0 + s * 4.0,
+        -s * 3.0 + c * 4.0,
+    ]
+    np.testing.assert_allclose(field.values[0, 0], expected, rtol=1e-14)
