@@ -17,8 +17,10 @@ EPSI_NOEU from CALC_CHAMP), at the chosen orders:
    their GROUP_MA, VECT_2D / VECT_3D occurrences turn DEPL (not VITE nor
    ACCE, as in code_aster) at their NOEUD / GROUP_NO / GROUP_MA nodes, into
    the frame of REPERE: UTILISATEUR (ANGL_NAUT), CYLINDRIQUE (ORIGINE,
-   AXE_Z, per node) or DIR_JAUGE (VECT_X / VECT_Y, see
-   :func:`asterlite.post.observation.gauge_axes`).
+   AXE_Z, per node), DIR_JAUGE (VECT_X / VECT_Y, see
+   :func:`asterlite.post.observation.gauge_axes`) or NORMALE (at each node
+   of the occurrence on MODELE_2's mesh, VECT_X or VECT_Y with the normal
+   of MODELE_1's skin cells collocated there, 3D meshes).
 4. FILTRE: the occurrences naming the field keep the DDL_ACTIF components
    at their nodes; a field no occurrence names is kept whole.
 
@@ -27,8 +29,8 @@ MODELE_2 when projected, else on MODELE_1. The order selection (TOUT_ORDRE,
 NUME_ORDRE, NUME_MODE, FREQ, LIST_FREQ, INST, LIST_INST; frequencies and
 instants within 1e-6 relative) applies to every field. A mode_meca keeps
 MATR_RIGI and MATR_MASS when a FILTRE applies, and an unfiltered DEPL lies
-on MATR_RIGI's numbering, as code_aster does. REPERE='NORMALE' and
-NOEUD_CMP are refused by name.
+on MATR_RIGI's numbering, as code_aster does. NOEUD_CMP, CAS_FIGURE and
+NORMALE on a plane mesh are refused by name.
 """
 
 from __future__ import annotations
@@ -39,10 +41,13 @@ import numpy as np
 from asterlite.commands.modi_repere import cylindrical_axes
 from asterlite.commands.proj_champ import place
 
+from asterlite.catalog.keywords import Keywords
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.modes import ModeResult
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.frames import rotation_from_angles
+from asterlite.fem.node_normals import node_normals
 from asterlite.fem.selection import as_tuple, select_cells, select_nodes
 from asterlite.post import observation as obs
 from asterlite.post.harmonic import frequency_indices
@@ -121,11 +126,9 @@ def _refuse(ctx, kw) -> None:
                 "VIS_A_VIS: GROUP_MA_1 and GROUP_MA_2 must name the same groups", "GROUP_MA_2", occ
             )
     for occ in kw.factor("MODI_REPERE"):
-        if occ["REPERE"] == "NORMALE":
+        if occ["REPERE"] == "NORMALE" and kw["MODELE_1"].mesh.dim != 3:
             ctx.unsupported(
-                "OBSERVATION MODI_REPERE REPERE='NORMALE' (frames from the skin normals)",
-                "REPERE",
-                occ,
+                "OBSERVATION MODI_REPERE REPERE='NORMALE' on a plane mesh", "REPERE", occ
             )
         if occ.get("TOUT") is not None:
             ctx.error(
@@ -287,6 +290,9 @@ def _turn(ctx, kw, name, field, mesh) -> None:
         if _TURNED[kind] != name:
             continue
         tensor = kind.startswith("TENS")
+        if occ["REPERE"] == "NORMALE":
+            _turn_to_normals(ctx, kw, occ, name, field, mesh)
+            continue
         if tensor:
             if occ.get("GROUP_MA") is None:
                 ctx.error(
@@ -314,6 +320,55 @@ def _turn(ctx, kw, name, field, mesh) -> None:
         except ValueError as exc:
             ctx.error(f"{name}: {exc}", "NOM_CMP", occ)
         ctx.log(f"OBSERVATION {name} turned ({kind}, REPERE={occ['REPERE']}) at {rows.size} nodes")
+
+
+def _turn_to_normals(ctx, kw, occ, name, field, mesh) -> None:
+    """REPERE='NORMALE': at each node the occurrence names on MODELE_2's
+    mesh, the frame of the normal there (MODELE_1's skin normals collocated
+    onto MODELE_2's nodes, as code_aster's macro does) and VECT_X or VECT_Y."""
+    sensors = kw["MODELE_2"].mesh
+    normals = _sensor_normals(ctx, kw, occ)
+    names = as_tuple(occ["NOM_CMP"])
+    vect_x, vect_y = occ.get("VECT_X"), occ.get("VECT_Y")
+    turn = obs.rotate_tensors if occ["TYPE_CHAM"].startswith("TENS") else obs.rotate_vectors
+    count = 0
+    for node in select_nodes(ctx, occ, sensors):
+        label = sensors.node_names[int(node)]
+        at = normals.rows_of([node])
+        if at.size == 0 or not normals.defined[at[0]].all():
+            ctx.error(f"no normal of MODELE_1's skin reaches node {label}", "REPERE", occ)
+        own = node if mesh is sensors else mesh.find_node(label)
+        rows = field.rows_of([own]) if own is not None else np.array([], dtype=int)
+        if rows.size == 0:
+            continue
+        axes = obs.normal_axes(normals.values[0, at[0]].real, vect_x, vect_y)[None]
+        try:
+            turn(field, rows, names, axes)
+        except ValueError as exc:
+            ctx.error(f"{name}: {exc}", "NOM_CMP", occ)
+        count += 1
+    ctx.log(f"OBSERVATION {name} turned ({occ['TYPE_CHAM']}, REPERE=NORMALE) at {count} nodes")
+
+
+def _sensor_normals(ctx, kw, occ) -> obs.ObservedField:
+    """The unit normals of every cell of MODELE_1's mesh (skin cells, as
+    code_aster's CREA_CHAMP NORMALE needs), collocated onto MODELE_2's nodes."""
+    model_1, model_2 = kw["MODELE_1"], kw["MODELE_2"]
+    mesh_1 = model_1.mesh
+    cells = np.arange(mesh_1.n_cells)
+    nodes = np.unique(mesh_1.nodes_of_cells(cells))
+    try:
+        normals = node_normals(mesh_1, cells, nodes, 3, log=ctx.log)
+    except ElementError as exc:
+        ctx.error(f"REPERE='NORMALE' takes the normals of every cell of MODELE_1: {exc}",
+                  "REPERE", occ)  # fmt: skip
+    field = obs.ObservedField(
+        nodes, ("DX", "DY", "DZ"), normals[None], np.ones((nodes.size, 3), dtype=bool)
+    )
+    # the macro's own PROJ_CHAMP: the two models, none of the command's options
+    alone = Keywords({"MODELE_1": model_1}, path=occ.path, location=occ.location)
+    placement, targets = place(ctx, alone, mesh_1, model_2.mesh, model_2)
+    return obs.project(field, placement, targets)
 
 
 def _axes(ctx, occ, points) -> np.ndarray:

@@ -12,7 +12,7 @@ from asterlite.concepts.assembly import NodalComponentField
 from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.transient import DynaTrans
-from asterlite.errors import CommandError, UnsupportedError
+from asterlite.errors import CommandError
 from asterlite.post import observation as obs
 from asterlite.post.field_projection import Placement
 from tests.solid_meshes import box_mesh
@@ -224,7 +224,7 @@ def test_refusals_by_name():
     result = _strain_result(mesh, numbering)
     common = dict(RESULTAT=result, MODELE_1=model, MODELE_2=model, PROJECTION="NON",
                   TOUT_ORDRE="OUI", NOM_CHAM="EPSI_NOEU")  # fmt: skip
-    with pytest.raises(UnsupportedError, match="NORMALE"):
+    with pytest.raises(CommandError, match="normals of every cell of MODELE_1.*not a face"):
         validated_run(session, "OBSERVATION", **common, MODI_REPERE={
             "GROUP_MA": "GAUGE", "TYPE_CHAM": "TENS_3D", "REPERE": "NORMALE", "VECT_X": (1, 0, 0)
         })  # fmt: skip
@@ -258,3 +258,60 @@ def test_plane_strains_and_vectors_turned_about_z():
         -s * 3.0 + c * 4.0,
     ]
     np.testing.assert_allclose(field.values[0, 0], expected, rtol=1e-14)
+
+
+def test_nautical_angles_of_an_orthonormal_frame_give_back_its_axes():
+    rng = np.random.default_rng(5)
+    for _ in range(5):
+        frame, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+        frame = frame.T * np.sign(np.linalg.det(frame))  # rows: a right-handed frame
+        # y's length does not count, nor does x's for the x axis itself
+        np.testing.assert_allclose(
+            obs.nautical_rotation(frame[0], 2.0 * frame[1]), frame, atol=1e-12
+        )
+        np.testing.assert_allclose(obs.nautical_rotation(3.0 * frame[0], frame[1])[0], frame[0])
+    # with a normal along z and VECT_X along x the frame is the global one
+    np.testing.assert_allclose(obs.normal_axes((0, 0, 2.0), vect_x=(1, 0, 0)), np.eye(3))
+
+
+def _tilted_plate(session, tilt):
+    """2 x 2 QUAD4 on the plane through the origin of normal (0, -sin t, cos t)."""
+    u, v = np.meshgrid([0.0, 0.5, 1.0], [0.0, 0.5, 1.0], indexing="ij")
+    along = np.array([0.0, np.cos(tilt), np.sin(tilt)])
+    coords = np.outer(u.ravel(), [1.0, 0.0, 0.0]) + np.outer(v.ravel(), along)
+    quads = [(3 * i + j, 3 * (i + 1) + j, 3 * (i + 1) + j + 1, 3 * i + j + 1)
+             for i in range(2) for j in range(2)]  # fmt: skip
+    mesh = Mesh(coords, [f"N{k}" for k in range(9)], [f"Q{k}" for k in range(4)],
+                ["QUAD4"] * 4, quads)  # fmt: skip
+    model = run(session, "AFFE_MODELE", MAILLAGE=mesh,
+                AFFE={"TOUT": "OUI", "PHENOMENE": "MECANIQUE", "MODELISATION": "DKT"})  # fmt: skip
+    return mesh, model, run(session, "NUME_DDL", MODELE=model)
+
+
+def test_displacement_in_the_frame_of_the_skin_normal():
+    session = FakeSession()
+    tilt = np.radians(35.0)
+    mesh, model, numbering = _tilted_plate(session, tilt)
+    depl = np.zeros((1, numbering.n_dofs))
+    for j, (_, component) in enumerate(numbering.dofs):
+        depl[0, j] = {"DX": 0.3, "DY": 0.0, "DZ": 1.0}.get(component, 0.0)
+    result = DynaTrans(numbering, np.array([0.0]), np.array([1]), {"DEPL": depl})
+    points = [mesh.coords[4], 0.5 * (mesh.coords[0] + mesh.coords[4]), mesh.coords[8]]
+    out = validated_run(
+        session,
+        "OBSERVATION",
+        RESULTAT=result,
+        MODELE_1=model,
+        MODELE_2=_sensors(session, points),
+        NOM_CHAM="DEPL",
+        TOUT_ORDRE="OUI",
+        MODI_REPERE={"GROUP_NO": ("C1", "C2"), "REPERE": "NORMALE", "VECT_X": (1.0, 0.0, 0.0)},
+    )
+    # x along VECT_X, y = normal ^ x in the plate, z the normal
+    local = {"DX": 0.3, "DY": np.sin(tilt), "DZ": np.cos(tilt)}
+    for node in (0, 1):
+        for component, value in local.items():
+            got = out.fields["DEPL"][0, out.numbering.index[(node, component)]]
+            assert got == pytest.approx(value, abs=1e-13)
+    # the third sensor is not turned
+    assert out.fields["DEPL"][0, out.numbering.index[(2, "DZ")]] == pytest.approx(1.0)

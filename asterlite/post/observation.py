@@ -17,7 +17,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering, NodalComponentField
 from asterlite.fem.dofs import sort_components
-from asterlite.fem.frames import angles_from_x_and_y, rotation_from_angles
+from asterlite.fem.frames import rotation_from_angles
 
 _TENSOR_PAIRS = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
 
@@ -146,12 +146,42 @@ def gauge_axes(vect_x, vect_y) -> np.ndarray:
         products = [np.cross(axis, given) for axis in np.eye(3)]
         other = products[int(np.argmax([np.linalg.norm(p) for p in products]))]
         x, y = (given, other) if vect_x is not None else (other, given)
-    if np.linalg.norm(np.cross(x, y)) == 0.0:
+    z = np.cross(x, y)
+    if np.linalg.norm(z) == 0.0:
         raise ValueError("VECT_X and VECT_Y do not span a plane")
-    if vect_x is None:
-        # VECT_Y alone fixes y exactly: x is its normal in the plane of the pair
-        x = np.cross(y, np.cross(x, y))
-    return rotation_from_angles(angles_from_x_and_y(x, y))
+    # code_aster keeps the given vector's length: VECT_X as x, (x ^ y) ^ x as
+    # y; or VECT_Y as y and y ^ (x ^ y) as x
+    if vect_x is not None:
+        return nautical_rotation(x, np.cross(z, x))
+    return nautical_rotation(np.cross(y, z), y)
+
+
+def normal_axes(normal, vect_x=None, vect_y=None) -> np.ndarray:
+    """The rotation of a frame built on a surface normal (code_aster's
+    REPERE='NORMALE'): x = VECT_X and y = normal ^ VECT_X, or y = VECT_Y and
+    x = VECT_Y ^ normal."""
+    n = np.asarray(normal, dtype=float)
+    if vect_x is not None:
+        x = np.asarray(vect_x, dtype=float)
+        return nautical_rotation(x, np.cross(n, x))
+    y = np.asarray(vect_y, dtype=float)
+    return nautical_rotation(np.cross(y, n), y)
+
+
+def nautical_rotation(x_axis, y_axis) -> np.ndarray:
+    """The rotation of code_aster's nautical angles of a frame given by its x
+    and y vectors, as its observation macro computes them: alpha and beta
+    from x, the twist gamma from y against the horizontal normal of x. The
+    vectors need not be unit nor orthogonal; as in code_aster the twist's
+    sine carries the length of x."""
+    x = np.asarray(x_axis, dtype=float)
+    y = np.asarray(y_axis, dtype=float)
+    horizontal = float(np.hypot(x[0], x[1]))
+    alpha = float(np.arctan2(x[1], x[0])) if horizontal > 0.0 else 0.0
+    beta = float(np.arctan2(-x[2], horizontal))
+    across = np.array([-np.sin(alpha), np.cos(alpha), 0.0])
+    gamma = float(np.arctan2(x @ np.cross(across, y), across @ y))
+    return rotation_from_angles(np.array([alpha, beta, gamma]))
 
 
 def rotate_vectors(field: ObservedField, rows: np.ndarray, names, axes: np.ndarray) -> None:
