@@ -12,7 +12,8 @@ EPSI_NOEU from CALC_CHAMP), at the chosen orders:
 2. PROJECTION='OUI': collocation onto the nodes of MODELE_2 (VIS_A_VIS,
    DISTANCE_MAX as PROJ_CHAMP), where a cell lacking some values
    interpolates with the others as code_aster's cnsprj does; DEPL, VITE,
-   ACCE keep the DOFs of MODELE_2.
+   ACCE lie on the DOFs of MODELE_2, zero where the projection does not
+   reach.
 3. MODI_REPERE: TENS_2D / TENS_3D occurrences turn EPSI_NOEU at the nodes of
    their GROUP_MA, VECT_2D / VECT_3D occurrences turn DEPL (not VITE nor
    ACCE, as in code_aster) at their NOEUD / GROUP_NO / GROUP_MA nodes, into
@@ -91,7 +92,8 @@ def run(ctx, kw):
         if projecting:
             field = obs.project(field, placement, targets)
             if name in _DOF_FIELDS:
-                field.defined &= _dof_mask(field, target_dofs)
+                # on MODELE_2's DOFs, zero where the projection does not reach (PROJ_CHAMP)
+                field.defined = _dof_mask(field, target_dofs)
         _turn(ctx, kw, name, field, mesh)
         chosen = _filters(ctx, kw, name, mesh)
         if chosen:

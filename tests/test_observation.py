@@ -315,3 +315,20 @@ def test_displacement_in_the_frame_of_the_skin_normal():
             assert got == pytest.approx(value, abs=1e-13)
     # the third sensor is not turned
     assert out.fields["DEPL"][0, out.numbering.index[(2, "DZ")]] == pytest.approx(1.0)
+
+
+def test_a_sensor_beyond_distance_max_holds_zero_displacement():
+    session = FakeSession()
+    mesh, model, numbering = _line(session)
+    result = DynaTrans(
+        numbering, np.array([0.0, 1.0]), np.array([1, 2]), {"DEPL": _displacements(mesh, numbering)}
+    )
+    far = np.vstack([SENSORS[:2], [[5.0, 5.0, 5.0]]])
+    out = validated_run(session, "OBSERVATION", RESULTAT=result, MODELE_1=model,
+                        MODELE_2=_sensors(session, far), NOM_CHAM="DEPL", NUME_ORDRE=2,
+                        DISTANCE_MAX=0.1)  # fmt: skip
+    assert out.numbering.n_dofs == 9
+    assert out.fields["DEPL"][0, out.numbering.index[(2, "DX")]] == 0.0
+    assert out.fields["DEPL"][0, out.numbering.index[(0, "DX")]] == pytest.approx(
+        2 * _rigid(SENSORS[0])[0], rel=1e-12
+    )
