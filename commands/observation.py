@@ -72,6 +72,8 @@ def run(ctx, kw):
                 f"OBSERVATION observes DEPL, VITE, ACCE or EPSI_NOEU, not {name}", "NOM_CHAM", kw
             )
     _check_keyword_targets(ctx, kw, names)
+    if source.numbering.mesh is not model_1.mesh:
+        ctx.error("RESULTAT does not lie on the mesh of MODELE_1", "MODELE_1", kw)
     states = _states(ctx, kw, source)
     projecting = kw["PROJECTION"] == "OUI"
     mesh_1 = model_1.mesh
