@@ -159,10 +159,11 @@ def test_refusals():
         cell_nodes=[(0, 1, 2, 3)],
     )
     inside = line([0.5])
-    field = NodalField(numbering=numbering(quad), values=np.zeros(8))
-    with pytest.raises(UnsupportedError, match="inside a QUAD4"):
-        run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="AUTO", CHAM_GD=field,
-            MAILLAGE_1=quad, MAILLAGE_2=inside)  # fmt: skip
+    # inside a QUAD4 now: interpolated (tests/test_field_projection_cells.py)
+    field = NodalField(numbering=numbering(quad), values=np.arange(8.0))
+    out = run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="AUTO", CHAM_GD=field,
+              MAILLAGE_1=quad, MAILLAGE_2=inside)  # fmt: skip
+    np.testing.assert_allclose(out.values, [1.0, 2.0])  # halfway between A and B
     field = NodalField(numbering=numbering(source), values=np.zeros(6))
     with pytest.raises(UnsupportedError, match="NUAGE_DEG_0"):
         run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="NUAGE_DEG_0", CHAM_GD=field,

@@ -559,13 +559,24 @@ class ElementField:
 @dataclass(eq=False)
 class NodalComponentField:
     """A nodal field with named components (``*_NOEU`` such as SIPO_NOEU):
-    ``values`` is (n_orders, n_nodes_listed, n_components) on ``nodes``."""
+    ``values`` is (n_orders, n_nodes_listed, n_components) on ``nodes``.
+    ``defined`` (n_nodes_listed, n_components) marks the components each node
+    holds when they differ from node to node (OBSERVATION's FILTRE); None
+    when every listed node holds every component."""
 
     name: str
     nodes: np.ndarray
     components: tuple[str, ...]
     values: np.ndarray
+    defined: np.ndarray | None = None
 
     def at(self, node: int, component: str) -> np.ndarray:
         row = int(np.flatnonzero(self.nodes == node)[0])
         return self.values[:, row, self.components.index(component)]
+
+    def holds(self, node: int, component: str) -> bool:
+        """Whether the listed ``node`` holds ``component``."""
+        if self.defined is None:
+            return True
+        row = int(np.flatnonzero(self.nodes == node)[0])
+        return bool(self.defined[row, self.components.index(component)])

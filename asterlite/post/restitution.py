@@ -307,6 +307,8 @@ def element_value_history(ctx, kw, result, name: str, mesh=None) -> np.ndarray:
             ctx.error(f"{name} has no value at node {node_label(mesh, node)}", "GROUP_NO", kw)
         if component not in field.components:
             ctx.error(missing_name("component", component, field.components, name), "NOM_CMP", kw)
+        if not field.holds(node, component):
+            ctx.error(f"{name} has no {component} at node {node_label(mesh, node)}", "NOM_CMP", kw)
         return field.at(node, component)
     field = result.element_fields[name]
     cell = single_cell(ctx, kw, mesh)
