@@ -76,6 +76,21 @@ def _beam_cells(ctx, model, occ) -> list[BeamCell]:
     return beams
 
 
+def _check_node_names(ctx, mesh, relations, occ) -> None:
+    """code_aster writes the relations on the nodes named 'N' + their number
+    (five digits at most): on a mesh named otherwise it ties other nodes or
+    stops, so such meshes are refused."""
+    for terms, _ in relations:
+        for node, _, _ in terms:
+            if mesh.node_names[node] != f"N{node + 1}" or node + 1 > 99999:
+                ctx.unsupported(
+                    f"LIAISON_ELEM 3D_POU_ARLEQUIN on node {mesh.node_names[node]} (number "
+                    f"{node + 1}): code_aster names the coupled nodes 'N' + their number",
+                    "GROUP_MA_1",
+                    occ,
+                )
+
+
 def arlequin_link(ctx, model, components, load, occ) -> None:
     """Append the Arlequin relations of one LIAISON_ELEM occurrence to the load."""
     mesh = model.mesh
@@ -98,5 +113,6 @@ def arlequin_link(ctx, model, components, load, occ) -> None:
         relations = arlequin_relations(mesh, solids, beams)
     except ElementError as exc:
         ctx.error(str(exc), "GROUP_MA_2", occ)
+    _check_node_names(ctx, mesh, relations, occ)
     for terms, rhs in relations:
         load.relations.append(LinearRelation(terms, rhs))
