@@ -1,5 +1,5 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
+LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU and 3D_POU_ARLEQUIN, FACE_IMPO)
 and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_ELEC, FORCE_TUYAU; FORCE_FACE, PRES_REP,
 FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
@@ -7,6 +7,7 @@ FORCE_INTERNE on the surfaces of plane models) on a model."""
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands.liaison_arlequin import arlequin_link
 
 from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
 from asterlite.fem.elements import ElementError
@@ -339,9 +340,14 @@ def _liaison_chamno(ctx, model, components, load, occ) -> None:
 
 def _liaison_elem(ctx, model, components, load, occ) -> None:
     """OPTION='3D_POU': the beam node follows the mean motion of the solid's
-    face (asterlite.fem.solid_beam_link); the other options are refused."""
+    face (asterlite.fem.solid_beam_link); '3D_POU_ARLEQUIN': the beam is tied
+    to the solid it runs in (commands.liaison_arlequin); the other options
+    are refused."""
 
     option = occ["OPTION"]
+    if option == "3D_POU_ARLEQUIN":
+        arlequin_link(ctx, model, components, load, occ)
+        return
     if option != "3D_POU":
         ctx.unsupported(f"LIAISON_ELEM OPTION={option!r}", "OPTION", occ)
     mesh = model.mesh
