@@ -1,7 +1,7 @@
 """POST_NEWMARK: permanent displacement of a sliding block (Newmark's method)
 in an embankment under a 2D dynamic result."""
 
-from asterlite.catalog import AU_MOINS_UN, BLOC, FACT, MACRO, SIMP, UN_PARMI, exists
+from asterlite.catalog import AU_MOINS_UN, BLOC, FACT, MACRO, SIMP, UN_PARMI, equal_to, exists
 from asterlite.lang.values import CO
 
 
@@ -9,6 +9,9 @@ def _sdprod(kw):
     """A table; MAILLAGE_RESU/MAILLAGE is a mesh."""
     for occurrence in kw.get("MAILLAGE_RESU") or ():
         output = occurrence.get("MAILLAGE")
+        if isinstance(output, CO):
+            output.produced_type = "maillage_sdaster"
+        output = occurrence.get("MAILLAGE_MASSE")
         if isinstance(output, CO):
             output.produced_type = "maillage_sdaster"
     return "table_sdaster"
@@ -37,7 +40,14 @@ POST_NEWMARK = MACRO(
     RESULTAT=SIMP(statut="f", typ="dyna_trans"),
     b_RESULTAT=BLOC(
         condition=exists("RESULTAT"),
-        VERI_MASSE=SIMP(statut="f", typ="TXM", into=("NON",), defaut="NON"),
+        VERI_MASSE=SIMP(statut="f", typ="TXM", into=("OUI", "NON"), defaut="NON"),
+        # VERI_MASSE='OUI' is refused by the command, by name
+        b_VERI_MASS=BLOC(
+            condition=equal_to("VERI_MASSE", "OUI"),
+            RESI_RELA=SIMP(statut="f", typ="R", val_min=0.0),
+            ITER_MAXI=SIMP(statut="f", typ="I", val_min=1),
+            CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
+        ),
     ),
     KY=SIMP(statut="f", typ="R"),
     GROUP_MA_CALC=SIMP(statut="o", typ="grma", max="**"),
@@ -46,10 +56,10 @@ POST_NEWMARK = MACRO(
         max=1,
         NOM_GROUP=SIMP(statut="f", typ="TXM"),
         MAILLAGE=SIMP(statut="f", typ="CO"),
+        MAILLAGE_MASSE=SIMP(statut="f", typ="CO"),
     ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )
 
-# code_aster's VERI_MASSE='OUI' (mass on refined meshes), RESULTAT_PESANTEUR
-# (local safety factors, KY from them), MAILLAGE_MASSE and evol_noli results
-# are left out of this catalogue: asterlite refuses them by name
+# code_aster's RESULTAT_PESANTEUR (local safety factors, KY from them) and
+# evol_noli results are left out of this catalogue: asterlite refuses them

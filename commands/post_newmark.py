@@ -102,6 +102,13 @@ def run(ctx, kw):
             "KY",
             kw,
         )
+    if kw.get("VERI_MASSE", "NON") == "OUI":
+        ctx.unsupported(
+            "POST_NEWMARK VERI_MASSE='OUI' (the zone's mass on meshes HOMARD refines about "
+            "the zone, MACR_ADAP_MAIL RAFF_DERA_ZONE or RAFFINEMENT_UNIFORME)",
+            "VERI_MASSE",
+            kw,
+        )
     if "DEPL" not in result.fields:
         ctx.error("RESULTAT holds no DEPL field", "RESULTAT", kw)
     computed = _groups(ctx, mesh, kw["GROUP_MA_CALC"], "GROUP_MA_CALC", kw)
@@ -139,6 +146,8 @@ def run(ctx, kw):
         f"a_y = {critical:g}, final displacement {displacement[-1]:.6g}"
     )
     for occ in kw.factor("MAILLAGE_RESU"):
+        if occ.get("MAILLAGE_MASSE") is not None:
+            ctx.unsupported("MAILLAGE_MASSE (the mesh of VERI_MASSE)", "MAILLAGE_MASSE", occ)
         name = occ.get("NOM_GROUP") or "GLISSE"
         if occ.get("MAILLAGE") is not None:
             out = _restricted_copy(mesh)
