@@ -11,9 +11,6 @@ def _sdprod(kw):
         output = occurrence.get("MAILLAGE")
         if isinstance(output, CO):
             output.produced_type = "maillage_sdaster"
-        output = occurrence.get("MAILLAGE_MASSE")
-        if isinstance(output, CO):
-            output.produced_type = "maillage_sdaster"
     return "table_sdaster"
 
 
@@ -40,8 +37,9 @@ POST_NEWMARK = MACRO(
     RESULTAT=SIMP(statut="f", typ="dyna_trans"),
     b_RESULTAT=BLOC(
         condition=exists("RESULTAT"),
-        VERI_MASSE=SIMP(statut="f", typ="TXM", into=("OUI", "NON"), defaut="NON"),
-        # VERI_MASSE='OUI' is refused by the command, by name
+        # VERI_MASSE='OUI' (the mass on refined meshes) is refused by name; its
+        # keywords stay here so that the refusal names VERI_MASSE itself
+        VERI_MASSE=SIMP(statut="f", typ="TXM", into=("NON",), defaut="NON"),
         b_VERI_MASS=BLOC(
             condition=equal_to("VERI_MASSE", "OUI"),
             RESI_RELA=SIMP(statut="f", typ="R", val_min=0.0),
@@ -56,7 +54,6 @@ POST_NEWMARK = MACRO(
         max=1,
         NOM_GROUP=SIMP(statut="f", typ="TXM"),
         MAILLAGE=SIMP(statut="f", typ="CO"),
-        MAILLAGE_MASSE=SIMP(statut="f", typ="CO"),
     ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )

@@ -96,19 +96,9 @@ def run(ctx, kw):
     if mesh.dim == 3 and np.any(mesh.coords[:, 2] != 0.0):
         ctx.error("POST_NEWMARK applies to plane models (code_aster's POST0_51)", "RESULTAT", kw)
     if kw.get("KY") is None:
-        ctx.unsupported(
-            "POST_NEWMARK without KY (its critical acceleration from the safety factors of "
-            "RESULTAT_PESANTEUR)",
-            "KY",
-            kw,
-        )
-    if kw.get("VERI_MASSE", "NON") == "OUI":
-        ctx.unsupported(
-            "POST_NEWMARK VERI_MASSE='OUI' (the zone's mass on meshes HOMARD refines about "
-            "the zone, MACR_ADAP_MAIL RAFF_DERA_ZONE or RAFFINEMENT_UNIFORME)",
-            "VERI_MASSE",
-            kw,
-        )
+        # without RESULTAT_PESANTEUR code_aster has no critical acceleration either
+        ctx.error("POST_NEWMARK needs KY (the critical acceleration in g)", "KY", kw)
+    kw.mark_used("VERI_MASSE")  # 'NON' only (the catalogue): the mass on this mesh
     if "DEPL" not in result.fields:
         ctx.error("RESULTAT holds no DEPL field", "RESULTAT", kw)
     computed = _groups(ctx, mesh, kw["GROUP_MA_CALC"], "GROUP_MA_CALC", kw)
@@ -146,8 +136,6 @@ def run(ctx, kw):
         f"a_y = {critical:g}, final displacement {displacement[-1]:.6g}"
     )
     for occ in kw.factor("MAILLAGE_RESU"):
-        if occ.get("MAILLAGE_MASSE") is not None:
-            ctx.unsupported("MAILLAGE_MASSE (the mesh of VERI_MASSE)", "MAILLAGE_MASSE", occ)
         name = occ.get("NOM_GROUP") or "GLISSE"
         if occ.get("MAILLAGE") is not None:
             out = _restricted_copy(mesh)
