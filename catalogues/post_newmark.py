@@ -54,6 +54,8 @@ POST_NEWMARK = MACRO(
         max=1,
         NOM_GROUP=SIMP(statut="f", typ="TXM"),
         MAILLAGE=SIMP(statut="f", typ="CO"),
+        # the refined mesh of VERI_MASSE='OUI' (refused)
+        MAILLAGE_MASSE=SIMP(statut="f", typ="CO"),
     ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )

@@ -136,6 +136,9 @@ def run(ctx, kw):
         f"a_y = {critical:g}, final displacement {displacement[-1]:.6g}"
     )
     for occ in kw.factor("MAILLAGE_RESU"):
+        if occ.get("MAILLAGE_MASSE") is not None:
+            # code_aster makes it with VERI_MASSE='OUI' only, which asterlite refuses
+            ctx.error("MAILLAGE_MASSE is made with VERI_MASSE='OUI' only", "MAILLAGE_MASSE", occ)
         name = occ.get("NOM_GROUP") or "GLISSE"
         if occ.get("MAILLAGE") is not None:
             out = _restricted_copy(mesh)
