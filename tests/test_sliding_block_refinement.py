@@ -104,3 +104,43 @@ def test_nodes_inside_cells_within_a_tolerance():
     near = block.cells_near_centre(mesh, [0], (2.0, 0.0), 1.0)
     assert near.tolist() == [0]  # the node (1, 0) lies on the circle
     assert block.cells_near_centre(mesh, [0], (2.0, 0.0), 0.99).size == 0
+
+
+def test_post_newmark_mean_acceleration_of_a_stretched_plane_strain_strip():
+    # two QUAD4 cells side by side, u_x = eps(t) x: the left cell (the zone,
+    # the disc reaching its nodes only) pushes on the right one through the
+    # edge x = 1 with sigma_xx = (lambda + 2 mu) eps, over its mass rho x 1 x 1
+    from asterlite.concepts.assembly import DofNumbering
+    from asterlite.concepts.transient import DynaTrans
+    from asterlite.fem.assemble import build_numbering_dofs
+    from tests.test_fem_plane import NU, RHO, E, grid_mesh, plane_model
+    from tests.test_fem_support import FakeSession, run
+
+    mesh = grid_mesh("QUAD4", n=(2, 1), size=(2.0, 1.0))
+    mesh.cell_groups["TOUT"] = np.arange(mesh.n_cells)
+    model, materials = plane_model(mesh, "D_PLAN")
+    numbering = DofNumbering(mesh=mesh, dofs=build_numbering_dofs(model.node_components()))
+    times = np.linspace(0.0, 1.0, 11)
+    strain = 1.0e-7 * times
+    depl = np.zeros((times.size, numbering.n_dofs))
+    for k, (node, comp) in enumerate(numbering.dofs):
+        if comp == "DX":
+            depl[:, k] = strain * mesh.coords[node, 0]
+    result = DynaTrans(numbering=numbering, times=times, order=np.arange(1, 12),
+                       fields={"DEPL": depl}, model=model, materials=materials)  # fmt: skip
+    session = FakeSession()
+    ky = 0.02
+    table = run(session, "POST_NEWMARK", RESULTAT=result, KY=ky, RAYON=1.2, CENTRE_X=-1.0,
+                CENTRE_Y=0.5, GROUP_MA_CALC="TOUT", POSITION="AVAL")  # fmt: skip
+    lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+    expected = (lam + 2 * mu) * strain / RHO
+    columns = table.EXTR_TABLE().values()
+    np.testing.assert_allclose(columns["ACCE_MOY"], expected, rtol=1e-10)
+    _, displacement = block.newmark_displacement(times, expected, ky * block.GRAVITY)
+    assert displacement[-1] > 0.0  # up to 3.4 m/s² against a_y = 0.196 m/s²
+    np.testing.assert_allclose(columns["DEPL"], displacement, rtol=1e-10)
+    # upstream, the same forces pull the other way: no sliding
+    upstream = run(session, "POST_NEWMARK", RESULTAT=result, KY=ky, RAYON=1.2, CENTRE_X=-1.0,
+                   CENTRE_Y=0.5, GROUP_MA_CALC="TOUT", POSITION="AMONT")  # fmt: skip
+    np.testing.assert_allclose(upstream.EXTR_TABLE().values()["ACCE_MOY"], -expected, rtol=1e-10)
+    assert not any(upstream.EXTR_TABLE().values()["DEPL"])
