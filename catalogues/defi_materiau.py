@@ -93,6 +93,24 @@ DEFI_MATERIAU = MACRO(
         SY=SIMP(statut="o", typ=FONCTION),
     ),
     TRACTION=FACT(statut="f", fr="Tensile curve", SIGM=SIMP(statut="o", typ=FONCTION)),
+    # parameters of the MFront Iwan behaviour (soils): kept with the material,
+    # read by no command of asterlite (the linear ones use ELAS)
+    Iwan=FACT(
+        statut="f",
+        fr="Iwan soil behaviour: elasticity, hyperbolic distortion and exponent",
+        YoungModulus=SIMP(statut="o", typ="R"),
+        PoissonRatio=SIMP(statut="o", typ="R"),
+        HypDistortion=SIMP(statut="o", typ="R"),
+        HypExponent=SIMP(statut="o", typ="R"),
+    ),
+    Iwan_FO=FACT(
+        statut="f",
+        fr="Iwan soil behaviour given by functions",
+        YoungModulus=SIMP(statut="o", typ="fonction_sdaster"),
+        PoissonRatio=SIMP(statut="o", typ="fonction_sdaster"),
+        HypDistortion=SIMP(statut="o", typ="fonction_sdaster"),
+        HypExponent=SIMP(statut="o", typ="fonction_sdaster"),
+    ),
     # thermal and fatigue data: kept with the material (no command of asterlite uses them)
     THER=FACT(
         statut="f",

@@ -173,6 +173,9 @@ def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
     load = MechanicalLoad(model=model)
+    if not any(kw.factor(k) for k in ("FACE_IMPO", "PRES_REP", "FORCE_COQUE", "EFFE_FOND")):
+        # code_aster's VERI_NORM checks the faces of these keywords only
+        kw.mark_used("VERI_NORM")
     for occ in kw.factor("DDL_IMPO"):
         in_time, in_frequency = {}, {}
         first = len(load.relations)

@@ -240,6 +240,12 @@ def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
     (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
 
     _refuse_other_options(ctx, kw, names, SOLID_FIELDS, "CALC_CHAMP {} of solid elements")
+    # the loads asterlite builds hold no initial strain or stress (EPSI_INIT,
+    # SIGM_INTERNE are refused by AFFE_CHAR_MECA): the elastic stresses,
+    # strains and energies of solids then depend on the displacements only
+    kw.mark_used("EXCIT")
+    for occ in kw.factor("EXCIT"):
+        occ.mark_used(*(k for k, v in dict.items(occ) if v is not None))
     values = _nodal_values(ctx, result, kw)
     velocities = omega2 = None
     if "ECIN_ELEM" in names:

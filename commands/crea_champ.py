@@ -8,6 +8,8 @@ earlier ones unless CUMUL='OUI') and COMB (linear combination)."""
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering, NodalField
@@ -35,12 +37,14 @@ def _template_numbering(ctx, kw):
         if value is not None:
             return value if key == "NUME_DDL" else value.numbering
     model = kw.get("MODELE")
-    if model is not None:
+    neutral = kw.get("TYPE_CHAM") == "NOEU_NEUT_R"
+    if model is not None and not neutral:
         from asterlite.fem.assemble import build_numbering_dofs
 
         return DofNumbering(mesh=model.mesh, dofs=build_numbering_dofs(model.node_components()))
-    # MAILLAGE only: a field on exactly the (node, component) pairs affected
-    mesh = kw["MAILLAGE"]
+    # MAILLAGE only, or a NEUT field (its components X1... are no DOFs of the
+    # model): a field on exactly the (node, component) pairs affected
+    mesh = kw["MAILLAGE"] if model is None else model.mesh
     pairs: dict[int, set[str]] = {}
     for occ in kw.factor("AFFE"):
         for node in select_nodes(ctx, occ, mesh):
@@ -72,8 +76,13 @@ def _prolonged(kw, numbering, values, assigned):
 
 def _affe(ctx, kw):
     type_cham = kw.get("TYPE_CHAM")
-    if type_cham not in ("NOEU_DEPL_R",):
+    if type_cham not in ("NOEU_DEPL_R", "NOEU_NEUT_R"):
         ctx.unsupported(f"CREA_CHAMP TYPE_CHAM={type_cham!r}", "TYPE_CHAM", kw)
+    if type_cham == "NOEU_NEUT_R":
+        for occ in kw.factor("AFFE"):
+            for comp in as_tuple(occ.get("NOM_CMP")):
+                if not re.fullmatch(r"X([1-9]|[12]\d|30)", str(comp)):
+                    ctx.error(f"{comp} is no component of NEUT_R (X1 ... X30)", "NOM_CMP", occ)
     numbering = _template_numbering(ctx, kw)
     _check_meshes(ctx, kw, numbering.mesh)
     mesh = numbering.mesh

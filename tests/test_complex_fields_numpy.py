@@ -181,3 +181,24 @@ def test_complex_stiffness_frequency_is_code_aster_gep_one():
     assert gep["OMEGA2"][0] == pytest.approx(w0**2, rel=1e-14)
     quadratic = modal_quantities(lam)
     assert quadratic["FREQ"][0] == pytest.approx(root.real / (2 * np.pi), rel=1e-14)
+
+
+def test_crea_champ_neut_fields_on_the_affected_nodes_and_their_assembly():
+    # NOEU_NEUT_R: components X1... on the nodes of the AFFE groups only (the
+    # model's DOFs are no template), assembled with CUMUL
+    session, model, _, _, _ = _kinematic_matrices()
+    phi = run(session, "CREA_CHAMP", OPERATION="AFFE", TYPE_CHAM="NOEU_NEUT_R", MODELE=model,
+              AFFE={"GROUP_NO": "B", "NOM_CMP": "X1", "VALE": 33.2})  # fmt: skip
+    assert phi.numbering.dofs == [(N_EL, "X1")] and phi.values.tolist() == [33.2]
+    cohesion = run(session, "CREA_CHAMP", OPERATION="AFFE", TYPE_CHAM="NOEU_NEUT_R",
+                   MODELE=model, AFFE={"TOUT": "OUI", "NOM_CMP": "X2", "VALE": 4.0})  # fmt: skip
+    assert len(cohesion.numbering.dofs) == N_EL + 1
+    both = run(session, "CREA_CHAMP", OPERATION="ASSE", TYPE_CHAM="NOEU_NEUT_R", MODELE=model,
+               ASSE=[{"CHAM_GD": phi, "TOUT": "OUI", "CUMUL": "OUI", "COEF_R": 1.0},
+                     {"CHAM_GD": phi, "TOUT": "OUI", "CUMUL": "OUI", "COEF_R": 1.0},
+                     {"CHAM_GD": cohesion, "GROUP_NO": "A", "CUMUL": "OUI"}])  # fmt: skip
+    values = dict(zip(both.numbering.dofs, both.values, strict=True))
+    assert values == {(0, "X2"): 4.0, (N_EL, "X1"): 66.4}
+    with pytest.raises(CommandError, match="NEUT_R"):
+        run(session, "CREA_CHAMP", OPERATION="AFFE", TYPE_CHAM="NOEU_NEUT_R", MODELE=model,
+            AFFE={"TOUT": "OUI", "NOM_CMP": "DX", "VALE": 1.0})  # fmt: skip

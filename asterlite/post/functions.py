@@ -208,6 +208,49 @@ def derivative(func: Function) -> Function:
     )
 
 
+def _without_linear_trend(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """y minus its least-squares line a1 x + a0."""
+    n = x.size
+    sx, sy, sxy, sxx = x.sum(), y.sum(), (x * y).sum(), (x * x).sum()
+    det = n * sxx - sx * sx
+    a1 = (n * sxy - sx * sy) / det
+    a0 = (sxx * sy - sx * sxy) / det
+    return y - a1 * x - a0
+
+
+def high_pass_clough_penzien(y: np.ndarray, dt: float, corner: float, damping: float = 1.0):
+    """The signal through the second-order high-pass filter of Clough and
+    Penzien, H(w) = -w^2 / (wc^2 - w^2 + 2 i xi wc w), applied on its real
+    FFT (the signal is taken periodic over its length)."""
+    n = y.size
+    wc = 2.0 * np.pi * corner
+    w = 2.0 * np.pi * np.fft.rfftfreq(n, d=dt)
+    gain = -(w**2) / ((wc**2 - w**2) + 2.0j * damping * wc * w)
+    return np.fft.irfft(np.fft.rfft(y) * gain, n=n)
+
+
+def corrected_accelerogram(
+    func: Function, method: str, corner: float = 0.05, correct_displacement: bool = False
+) -> Function:
+    """CORR_ACCE. FILTRAGE: the Clough-Penzien high-pass filter at ``corner``
+    Hz (the step taken from the first two abscissas). POLYNOME: the linear
+    trend of the acceleration removed, then that of its velocity (and, with
+    ``correct_displacement``, of its displacement), each by integrating
+    (trapezoids from 0) and differentiating back."""
+    x, y = func.abscissas, func.ordinates
+    if x.size < 3:
+        raise CommandError("CORR_ACCE: the function needs at least three points")
+    if method == "FILTRAGE":
+        values = high_pass_clough_penzien(y, float(x[1] - x[0]), corner)
+        return func.with_values(x, values)
+    velocity = _without_linear_trend(x, primitive_trapezoid(x, _without_linear_trend(x, y)))
+    if correct_displacement:
+        displacement = _without_linear_trend(x, primitive_trapezoid(x, velocity))
+        velocity = derivative(func.with_values(x, displacement)).ordinates
+    values = derivative(func.with_values(x, velocity)).ordinates
+    return func.with_values(x, values, PROL_GAUCHE="EXCLU", PROL_DROITE="EXCLU")
+
+
 # ------------------------------------------------------------------ FFT
 
 
