@@ -9,6 +9,7 @@ from asterlite.harmonic.soil_column import (
     StrainCurve,
     complex_shear_modulus,
     equivalent_linear,
+    fe_column_response,
     interface_transfer,
     midlayer_strain_transfer,
     propagate,
@@ -134,3 +135,37 @@ def test_strain_curve_is_log_linear_and_constant_outside():
     assert c(1e-7) == 1.0 and c(1.0) == 0.5
     with pytest.raises(ValueError):
         StrainCurve((1e-3, 1e-5), (1.0, 0.5))
+
+
+def test_fe_column_converges_to_the_layered_continuum():
+    # code_aster's column (one cell per layer) and finer ones against the wave
+    # solution; an undamped substratum keeps the phase reference apart from its cell
+    freqs = np.linspace(0.0, 10.0, 41)
+    layers = [_layer(10.0, 0.05), _layer(15.0, 0.1, young=2 * E), _layer(5.0, 0.02)]
+    rock = SoilLayer(1.0, 20 * E, NU, 2500.0, 0.0)
+    exact = np.abs(interface_transfer(propagate(layers, rock, freqs), "AFFLEURANT"))
+    errors = []
+    for cells in (1, 4, 16, 64):
+        fe = fe_column_response(layers, rock, 20.0, freqs, cells_per_layer=cells)
+        assert fe.shape == (len(layers) + 2, freqs.size)
+        assert np.allclose(fe[:, 0], 1.0)
+        errors.append(np.max(np.abs(np.abs(fe[:-1]) - exact) / np.abs(exact)))
+    assert errors[0] > errors[1] > errors[2] > errors[3]
+    # second order in h (the largest relative error sits by a node of the transfer)
+    assert errors[2] / errors[3] == pytest.approx(16.0, rel=0.1)
+    assert errors[3] < 1e-3
+
+
+def test_fe_cell_is_the_two_node_shear_element():
+    # one cell of soil on its dashpot: solve the 2 x 2 system by hand
+    f, h, eta = 3.0, 20.0, 0.1
+    w = 2 * np.pi * f
+    rock = SoilLayer(1.0, E, NU, RHO, eta)
+    fe = fe_column_response([], rock, h, np.array([f]))[:, 0]
+    g = complex_shear_modulus(E / (2 * (1 + NU)), eta)
+    z = np.sqrt(RHO * E / (2 * (1 + NU)))
+    a = np.array([[g / h, -g / h], [-g / h, g / h]]) - w**2 * RHO * h / 6 * np.array(
+        [[2, 1], [1, 2]]
+    )
+    a[1, 1] += 1j * w * z
+    assert fe == pytest.approx(np.linalg.solve(a, [0.0, 1j * w * z]), rel=1e-12)

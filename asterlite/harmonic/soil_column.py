@@ -25,9 +25,12 @@ impedance ratio α = √(ρ G*)ₘ / √(ρ G*)ₘ₊₁:
     Aₘ₊₁ = ½ Aₘ (1 + α) e^{ik*h} + ½ Bₘ (1 - α) e^{-ik*h}
     Bₘ₊₁ = ½ Aₘ (1 - α) e^{ik*h} + ½ Bₘ (1 + α) e^{-ik*h}
 
-code_aster computes the same column with plane-strain finite elements and
-harmonic DYNA_VIBRA runs; the wave solution here is the exact continuum
-limit of that discretisation (each layer's strain is taken at mid-depth)."""
+code_aster computes the column with plane-strain finite elements, one cell
+per layer, and harmonic DYNA_VIBRA runs: ``fe_column_response`` is that
+discretisation (second-order close to the wave solution as the cells
+shrink); ``equivalent_linear`` iterates on the wave solution (each layer's
+strain taken at mid-depth). Neither is a command yet: DEFI_SOL_EQUI's
+signal chain (its FFTs, filter and tables) is still to be reproduced."""
 
 from __future__ import annotations
 
@@ -260,3 +263,58 @@ def equivalent_linear(
     result.interface_acceleration = np.fft.irfft(motion_tf * spectrum, n)[:, : accel.size]
     result.strain = strain
     return result
+
+
+def fe_column_response(
+    layers: list[SoilLayer],
+    substratum: SoilLayer,
+    substratum_thickness: float,
+    freqs: np.ndarray,
+    lysmer: bool = False,
+    cells_per_layer: int = 1,
+) -> np.ndarray:
+    """Displacements of the nodes of code_aster's finite-element column (the
+    free surface first, then each layer's base, the top and the base of the
+    substratum cell), per unit displacement of the outcropping rock (twice
+    the incident wave), at each frequency.
+
+    DEFI_SOL_EQUI meshes the column 1 m wide with one QUAD4 D_PLAN cell per
+    layer and one for the substratum, ties its two sides (LIAISON_GROUP on DX
+    and DY) and closes it with a D_PLAN_ABSO edge. With the sides tied, a
+    horizontal shear motion is u(y) in each cell, linear between its nodes:
+    the cell is exactly a two-node shear element, stiffness G*/h [[1, -1],
+    [-1, 1]] (RIGI_MECA_HYST) and consistent mass ρh/6 [[2, 1], [1, 2]]
+    (MASS_MECA), per metre of width. The absorbing edge is the dashpot ρVs of
+    the substratum's elastic modulus; an incident wave of displacement u_i
+    at the base loads it with 2 iω ρVs u_i (the incident wave's traction and
+    the dashpot's share of its velocity). ``cells_per_layer`` splits every
+    cell (1 is code_aster's mesh)."""
+    freqs = np.asarray(freqs, dtype=float)
+    omega = 2.0 * np.pi * freqs
+    cells = [
+        (layer, layer.thickness / cells_per_layer)
+        for layer in layers
+        for _ in range(cells_per_layer)
+    ]
+    cells += [(substratum, substratum_thickness / cells_per_layer)] * cells_per_layer
+    n = len(cells) + 1
+    stiffness = np.zeros((n, n), dtype=complex)
+    mass = np.zeros((n, n))
+    for k, (soil, h) in enumerate(cells):
+        g = complex_shear_modulus(soil.shear_modulus, soil.loss_factor, lysmer)
+        stiffness[k : k + 2, k : k + 2] += g / h * np.array([[1.0, -1.0], [-1.0, 1.0]])
+        mass[k : k + 2, k : k + 2] += soil.density * h / 6.0 * np.array([[2.0, 1.0], [1.0, 2.0]])
+    impedance = np.sqrt(substratum.density * substratum.shear_modulus)
+    out = np.empty((n, freqs.size), dtype=complex)
+    for j, w in enumerate(omega):
+        if w == 0.0:  # the column moves with the rock
+            out[:, j] = 1.0
+            continue
+        system = stiffness - w * w * mass
+        system[-1, -1] += 1j * w * impedance
+        force = np.zeros(n, dtype=complex)
+        force[-1] = 2j * w * impedance * 0.5  # incident wave of half the outcrop motion
+        out[:, j] = np.linalg.solve(system, force)
+    # the nodes at the layers' bases (and the substratum's top), as in code_aster's mesh
+    keep = [0] + [cells_per_layer * (m + 1) for m in range(len(layers))] + [n - 1]
+    return out[keep]
