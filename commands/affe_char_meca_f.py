@@ -10,8 +10,10 @@ parameters X, Y, Z of the point (and INST, the current time, in time
 stepping, or FREQ, in a harmonic response). asterlite evaluates them once,
 when the load is built, except DDL_IMPO values of INST (evaluated in time by
 a physical-basis transient) or FREQ (evaluated at each frequency by
-DYNA_VIBRA HARM); forces of INST or FREQ are refused, as are the other
-keywords of the catalogue (not read, hence refused by name).
+DYNA_VIBRA HARM) and FORCE_NODALE values of INST (a history of nodal forces,
+evaluated at its instants by a physical-basis transient, refused by the
+commands that take a fixed load vector); forces of FREQ are refused, as are
+the other keywords of the catalogue (not read, hence refused by name).
 """
 
 from __future__ import annotations
@@ -113,6 +115,28 @@ def _evaluator(ctx, model, occ, in_time=None, in_frequency=None):
     return value_at
 
 
+def _forces_in_time(load, first: int, in_time: dict) -> None:
+    """The nodal forces of one FORCE_NODALE occurrence that are functions of
+    INST leave the constant terms for the load's history
+    (``extra['FORCE_NODALE_INST']``: node, component, ValueInTime), which a
+    physical-basis transient evaluates at its instants
+    (asterlite.fem.loads.load_history)."""
+    if not in_time:
+        return
+    timed = {
+        (node, affe_char_meca._FORCE_COMPONENTS[key]): value
+        for (node, key), value in in_time.items()
+    }
+    added = load.nodal_forces[first:]
+    del load.nodal_forces[first:]
+    history = load.extra.setdefault("FORCE_NODALE_INST", [])
+    for node, component, value in added:
+        if (node, component) in timed:
+            history.append((node, component, timed[(node, component)]))
+        else:
+            load.nodal_forces.append((node, component, value))
+
+
 def _force_poutre(ctx, model, load, occ) -> None:
     """Values at the first and the second node of each cell (linear along it)."""
     keys, local = affe_char_meca.beam_load_keys(ctx, occ)
@@ -187,8 +211,11 @@ def run(ctx, kw):
                 relation.rhs_in_time = in_time.get((node, component))
                 relation.rhs_in_frequency = in_frequency.get((node, component))
     for occ in kw.factor("FORCE_NODALE"):
-        value_at = _evaluator(ctx, model, occ)
+        in_time = {}
+        first = len(load.nodal_forces)
+        value_at = _evaluator(ctx, model, occ, in_time)
         affe_char_meca._force_nodale(ctx, model, components, load, occ, value_at=value_at)
+        _forces_in_time(load, first, in_time)
     for occ in kw.factor("FORCE_POUTRE"):
         _force_poutre(ctx, model, load, occ)
     for occ in kw.factor("ONDE_PLANE"):

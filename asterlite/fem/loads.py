@@ -242,7 +242,9 @@ def load_history(load, materials):
     ``times -> (nodes, components, values (n_times, m))``; None when the load
     has none. Such parts are an ``AFFE_CHAR_MECA_F/ONDE_PLANE`` wave (each
     boundary point sees the wave with its own delay, so it is no vector times
-    f(t)) and an ``EVOL_CHAR`` (nodal forces given at instants)."""
+    f(t)), an ``EVOL_CHAR`` (nodal forces given at instants) and the
+    ``AFFE_CHAR_MECA_F/FORCE_NODALE`` values that are functions of INST (and
+    of the node's X, Y, Z)."""
     parts = []
     waves = load.extra.get("ONDE_PLANE")
     if waves:
@@ -250,6 +252,9 @@ def load_history(load, materials):
     evolution = load.extra.get("EVOL_CHAR")
     if evolution is not None:
         parts.append(evol_char_history(evolution, load.name or ""))
+    timed = load.extra.get("FORCE_NODALE_INST")
+    if timed:
+        parts.append(nodal_force_history(timed))
     if len(parts) < 2:
         return parts[0] if parts else None
 
@@ -281,6 +286,22 @@ def _plane_wave_history(load, materials, waves):
         starts = range(HISTORY_CHUNK, times.size, HISTORY_CHUNK)
         values = [first] + [at(times[k : k + HISTORY_CHUNK])[2] for k in starts]
         return nodes, components, np.concatenate(values, axis=0)
+
+    return history
+
+
+def nodal_force_history(timed):
+    """Nodal forces given as functions of INST at their nodes
+    (``[(node, component, ValueInTime)]``), at any instants."""
+    nodes = np.array([node for node, _, _ in timed], dtype=int)
+    components = [component for _, component, _ in timed]
+
+    def history(times):
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        values = np.empty((times.size, len(timed)))
+        for k, (_, _, value) in enumerate(timed):
+            values[:, k] = value.evaluate(times)
+        return nodes, components, values
 
     return history
 
@@ -327,6 +348,14 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
             f"the EVOL_CHAR load {load.name or ''} where a fixed load vector is taken: "
             "its forces are a history of instants (asterlite.fem.loads.load_history), "
             "which this command does not take yet"
+        )
+    if load.extra.get("FORCE_NODALE_INST") and not history_apart:
+        from asterlite.errors import UnsupportedError
+
+        raise UnsupportedError(
+            f"the load {load.name or ''} whose FORCE_NODALE are functions of INST "
+            "(AFFE_CHAR_MECA_F) where a fixed load vector is taken: its forces are a "
+            "history (asterlite.fem.loads.load_history), which this command does not take yet"
         )
     if load.extra.get("ONDE_PLANE") is not None and not history_apart:
         from asterlite.errors import UnsupportedError
