@@ -109,3 +109,38 @@ def test_restituted_fields_carry_the_recombined_modes_multipliers():
     result.modal_source = None
     with pytest.raises(Exception, match="Lagrange multipliers"):
         transient_field(result, "DEPL", 1).getValues()
+
+
+def test_harmonic_fields_carry_the_dualised_solution_multipliers():
+    """DYNA_VIBRA HARM on the physical basis: getValues() is the solution of
+    code_aster's dualised system (K - ω² M) x = F at each frequency,
+    multipliers included (λ = r / 2β, r = F - (K - ω² M) u at the clamp);
+    VITE scales all of it by iω, as comdlh does. Near f = 0 the clamp holds
+    the tip force: r = -(K u) there is minus the support's reaction, r_DY = 1
+    and r_DRZ = L (closed form)."""
+    session, k, m = _clamped_beam()
+    model = k.model
+    force = run(session, "AFFE_CHAR_MECA", MODELE=model,
+                FORCE_NODALE={"GROUP_NO": "B", "FY": 1.0})  # fmt: skip
+    elementary = run(session, "CALC_VECT_ELEM", CHARGE=force, OPTION="CHAR_MECA")
+    vector = run(session, "ASSE_VECTEUR", VECT_ELEM=elementary, NUME_DDL=k.numbering)
+    frequencies = (1.0e-3, 37.0, 420.0)
+    excitation = {"VECT_ASSE": vector, "COEF_MULT": 1.0, "PHAS_DEG": 0.0, "PUIS_PULS": 0}
+    result = run(session, "DYNA_VIBRA", TYPE_CALCUL="HARM", BASE_CALCUL="PHYS",
+                 MATR_RIGI=k, MATR_MASS=m, FREQ=frequencies, EXCIT=excitation)  # fmt: skip
+    k_full, m_full = k.toNumpy(), m.toNumpy()
+    layout = lagrange_layout(k.numbering)
+    rhs = np.zeros(layout.size)
+    rhs[layout.physical[k.numbering.index[(N_EL, "DY")]]] = 1.0
+    beta = lagrange_coefficient(k.matrix)
+    for order, frequency in enumerate(frequencies, start=1):
+        omega = 2.0 * np.pi * frequency
+        expected = np.linalg.solve(k_full - omega**2 * m_full, rhs)
+        depl = np.array(result.getField("DEPL", order).getValues())
+        np.testing.assert_allclose(depl, expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max())
+        vite = np.array(result.getField("VITE", order).getValues())
+        np.testing.assert_allclose(vite, 1j * omega * depl, rtol=1e-12)
+    static = np.array(result.getField("DEPL", 1).getValues()).real
+    dy, drz = COMPONENTS.index("DY"), COMPONENTS.index("DRZ")
+    assert 2.0 * beta * static[layout.first[dy]] == pytest.approx(1.0, rel=1e-6)
+    assert 2.0 * beta * static[layout.second[drz]] == pytest.approx(LENGTH, rel=1e-6)
