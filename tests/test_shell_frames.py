@@ -1,0 +1,131 @@
+"""MODI_REPERE REPERE='COQUE', 'COQUE_INTR_UTIL', 'COQUE_UTIL_INTR' of DKT
+plate fields (code_aster's te0442): on a tilted, distorted mesh, the forces
+and stresses computed in the CARA_ELEM frame ANGL_REP = (0, 0) and turned to
+(30, 10) equal those computed with CARA_ELEM ANGL_REP = (30, 10), complex
+values included; the intrinsic frame is reached from either user frame; a
+rotation by a right angle swaps the axes (closed form); angvx's angles."""
+
+from __future__ import annotations
+
+import copy
+
+import numpy as np
+import pytest
+
+from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.harmonic import DynaHarmo
+from asterlite.errors import CommandError
+from asterlite.fem.assemble import build_numbering_dofs
+from asterlite.fem.plate_fields import plate_element_fields
+from asterlite.fem.shell_frames import GENERALISED, TENSOR, angles_from_vector, rotate_in_plane
+from tests.test_fem_plane import grid_mesh
+from tests.test_fem_plate import KINDS, ROTATION, plate_model, tilted
+from tests.test_fem_support import FakeSession, run
+
+OPTIONS = ["EFGE_ELNO", "SIGM_ELNO"]
+TURNED = (30.0, 10.0)
+
+
+def _result(kind, angles):
+    """A dyna_harmo of random complex states of a tilted DKT mesh, its forces
+    and stresses computed in the CARA_ELEM frame ``angles``."""
+    mesh = tilted(grid_mesh(kind, (2, 3), (1.0, 1.3), jitter=0.25, seed=5), ROTATION)
+    model, characteristics, materials = plate_model(mesh)
+    for shell in characteristics.shells.values():
+        shell["ANGL_REP"] = angles
+    numbering = DofNumbering(mesh=mesh, dofs=build_numbering_dofs(model.node_components()))
+    rng = np.random.default_rng(3)
+    depl = rng.normal(size=(1, numbering.n_dofs)) + 1j * rng.normal(size=(1, numbering.n_dofs))
+    cells = np.arange(mesh.n_cells)
+    fields = plate_element_fields(
+        model, characteristics, materials, numbering, cells, depl * 1e-3, OPTIONS
+    )
+    return DynaHarmo(
+        numbering=numbering,
+        frequencies=np.array([5.0]),
+        order=np.array([1]),
+        fields={"DEPL": depl},
+        model=model,
+        characteristics=characteristics,
+        element_fields=fields,
+    )
+
+
+def _turned(result, repere, **affe):
+    return run(
+        FakeSession(),
+        "MODI_REPERE",
+        RESULTAT=result,
+        REPERE=repere,
+        MODI_CHAM=[
+            {"TYPE_CHAM": "COQUE_GENE", "NOM_CHAM": "EFGE_ELNO"},
+            {"TYPE_CHAM": "TENS_3D", "NOM_CHAM": "SIGM_ELNO"},
+        ],
+        AFFE={"TOUT": "OUI", **affe},
+    )
+
+
+def _close(a, b):
+    finite = np.isfinite(a)
+    assert np.array_equal(finite, np.isfinite(b))
+    scale = np.abs(b[finite]).max()
+    assert np.abs(a[finite] - b[finite]).max() < 1e-12 * scale
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_coque_turns_the_fields_to_the_frame_affe_gives(kind):
+    plain, reference = _result(kind, (0.0, 0.0)), _result(kind, TURNED)
+    for affe in ({"ANGL_REP": TURNED}, {"VECTEUR": _direction(TURNED)}):
+        out = _turned(plain, "COQUE", **affe)
+        for name in OPTIONS:
+            _close(out.element_fields[name].values, reference.element_fields[name].values)
+    # the input is unchanged; the cells AFFE does not name go to (0, 0)
+    assert plain.element_fields["EFGE_ELNO"] is not out.element_fields["EFGE_ELNO"]
+    back = _turned(reference, "COQUE", ANGL_REP=(0.0, 0.0))
+    for name in OPTIONS:
+        _close(back.element_fields[name].values, plain.element_fields[name].values)
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_intrinsic_frame_from_either_user_frame(kind):
+    plain, reference = _result(kind, (0.0, 0.0)), _result(kind, TURNED)
+    a = _turned(plain, "COQUE_UTIL_INTR")
+    b = _turned(reference, "COQUE_UTIL_INTR")
+    for name in OPTIONS:
+        _close(a.element_fields[name].values, b.element_fields[name].values)
+    again = _turned(copy.copy(b), "COQUE_INTR_UTIL")
+    for name in OPTIONS:
+        _close(again.element_fields[name].values, reference.element_fields[name].values)
+
+
+def _direction(angles):
+    alpha, beta = np.radians(angles)
+    return (np.cos(beta) * np.cos(alpha), np.cos(beta) * np.sin(alpha), -np.sin(beta))
+
+
+def test_a_right_angle_swaps_the_axes():
+    """x' = y, y' = -x: NXX <-> NYY, NXY and QY change sign; SIZZ kept."""
+    forces = np.array([[[[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]]]])
+    out = rotate_in_plane(forces, GENERALISED, np.array([0.0]), np.array([1.0]))
+    np.testing.assert_allclose(out[0, 0, 0], [2.0, 1.0, -3.0, 5.0, 4.0, -6.0, 8.0, -7.0])
+    stresses = np.array([[[[1.0, 2.0, 9.0, 3.0, 7.0, 8.0]]]])
+    out = rotate_in_plane(stresses, TENSOR, np.array([0.0]), np.array([1.0]))
+    np.testing.assert_allclose(out[0, 0, 0], [2.0, 1.0, 9.0, -3.0, 8.0, -7.0])
+
+
+def test_angles_of_a_vector_are_angvx_ones():
+    assert angles_from_vector((0.0, 2.0, 0.0)) == pytest.approx((90.0, 0.0))
+    assert angles_from_vector((1.0, 0.0, -1.0)) == pytest.approx((0.0, 45.0))
+    assert angles_from_vector((0.0, 0.0, 0.0)) == (0.0, 0.0)
+
+
+def test_one_affe_occurrence_naming_cells():
+    result = _result("TRIA3", (0.0, 0.0))
+    field = {"TYPE_CHAM": "COQUE_GENE", "NOM_CHAM": "EFGE_ELNO"}
+    with pytest.raises(CommandError, match="one AFFE occurrence"):
+        run(FakeSession(), "MODI_REPERE", RESULTAT=result, REPERE="COQUE", MODI_CHAM=field,
+            AFFE=[{"TOUT": "OUI", "ANGL_REP": (0.0, 0.0)}] * 2)  # fmt: skip
+    with pytest.raises(CommandError, match="turns EFGE_ELGA"):
+        run(FakeSession(), "MODI_REPERE", RESULTAT=result, REPERE="COQUE_INTR_UTIL",
+            MODI_CHAM={"TYPE_CHAM": "COQUE_GENE", "NOM_CHAM": "SIGM_ELNO"},
+            AFFE={"TOUT": "OUI"})  # fmt: skip
