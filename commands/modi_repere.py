@@ -288,7 +288,12 @@ def run(ctx, kw):
             if occ.get("TOUT") is None and occ.get("GROUP_MA") is not None:
                 ctx.unsupported("MODI_CHAM GROUP_MA (AFFE says where)", "GROUP_MA", occ)
             field = _shell_field(ctx, kw, occ, result, characteristics, mesh)
-            result.element_fields[occ["NOM_CHAM"]] = field
+            # NOM_CHAM_RESU (EGRU_ELNO): the turned field beside the input one
+            stored = occ.get("NOM_CHAM_RESU")
+            if stored is not None and (stored, occ["NOM_CHAM"]) != ("EGRU_ELNO", "EFGE_ELNO"):
+                ctx.error("NOM_CHAM_RESU is EGRU_ELNO, of an EFGE_ELNO", "NOM_CHAM_RESU", occ)
+            field.name = stored or occ["NOM_CHAM"]
+            result.element_fields[field.name] = field
             ctx.log(f"MODI_REPERE {occ['NOM_CHAM']} ({occ['TYPE_CHAM']}) to REPERE={kw['REPERE']}")
         return result
     frames = _frames(ctx, kw, mesh)

@@ -98,6 +98,29 @@ def test_intrinsic_frame_from_either_user_frame(kind):
         _close(again.element_fields[name].values, reference.element_fields[name].values)
 
 
+def test_nom_cham_resu_keeps_the_input_field():
+    """COQUE_INTR_UTIL with NOM_CHAM_RESU='EGRU_ELNO' stores the turned
+    EFGE_ELNO beside the untouched input; COQUE_UTIL_INTR of that EGRU_ELNO
+    turns it back."""
+    result = _result("QUAD4", TURNED)
+    out = run(FakeSession(), "MODI_REPERE", RESULTAT=result, REPERE="COQUE_INTR_UTIL",
+              MODI_CHAM={"TYPE_CHAM": "COQUE_GENE", "NOM_CHAM": "EFGE_ELNO",
+                         "NOM_CHAM_RESU": "EGRU_ELNO"},
+              AFFE={"TOUT": "OUI"})  # fmt: skip
+    efge, egru = out.element_fields["EFGE_ELNO"], out.element_fields["EGRU_ELNO"]
+    assert efge.values is result.element_fields["EFGE_ELNO"].values
+    assert egru.name == "EGRU_ELNO"
+    finite = np.isfinite(efge.values)
+    assert (
+        np.abs(egru.values[finite] - efge.values[finite]).max()
+        > 1e-3 * np.abs(efge.values[finite]).max()
+    )
+    back = run(FakeSession(), "MODI_REPERE", RESULTAT=out, REPERE="COQUE_UTIL_INTR",
+               MODI_CHAM={"TYPE_CHAM": "COQUE_GENE", "NOM_CHAM": "EGRU_ELNO"},
+               AFFE={"TOUT": "OUI"})  # fmt: skip
+    _close(back.element_fields["EGRU_ELNO"].values, efge.values)
+
+
 def _direction(angles):
     alpha, beta = np.radians(angles)
     return (np.cos(beta) * np.cos(alpha), np.cos(beta) * np.sin(alpha), -np.sin(beta))
