@@ -265,6 +265,10 @@ def _shell_frames(ctx, kw, result):
     if occ.get("GROUP_NO") is not None or occ.get("NOEUD") is not None:
         key = "GROUP_NO" if occ.get("GROUP_NO") is not None else "NOEUD"
         ctx.error(f"REPERE={repere!r} turns element fields: AFFE names cells, not nodes", key, occ)
+    if repere != "COQUE":
+        # code_aster turns every cell of the field between its own frames: the
+        # cells AFFE names only choose ANGL_REP for REPERE='COQUE' (chrpel)
+        occ.mark_used("TOUT", "GROUP_MA", "MAILLE")
     return kw.get("CARA_ELEM") or getattr(result, "characteristics", None)
 
 

@@ -3,7 +3,9 @@ plate fields (code_aster's te0442): on a tilted, distorted mesh, the forces
 and stresses computed in the CARA_ELEM frame ANGL_REP = (0, 0) and turned to
 (30, 10) equal those computed with CARA_ELEM ANGL_REP = (30, 10), complex
 values included; the intrinsic frame is reached from either user frame; a
-rotation by a right angle swaps the axes (closed form); angvx's angles."""
+rotation by a right angle swaps the axes (closed form); angvx's angles;
+the frames of triangles and quadrangles in one field. FORCE_ARETE on the
+plates' edges (te0034: F L / 2 per node)."""
 
 from __future__ import annotations
 
@@ -152,3 +154,63 @@ def test_one_affe_occurrence_naming_cells():
         run(FakeSession(), "MODI_REPERE", RESULTAT=result, REPERE="COQUE_INTR_UTIL",
             MODI_CHAM={"TYPE_CHAM": "COQUE_GENE", "NOM_CHAM": "SIGM_ELNO"},
             AFFE={"TOUT": "OUI"})  # fmt: skip
+
+
+def _square_with_edges():
+    """Two DKT triangles of a tilted unit square, its edge x = 1 as SEG2
+    cells (two segments: lengths 0.4 and 0.6), a bar elsewhere."""
+    from asterlite.concepts.mesh import Mesh
+
+    coords = np.array(
+        [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.4, 0.0]]
+    )
+    coords = coords @ ROTATION.T
+    return Mesh(
+        coords=coords,
+        node_names=["N1", "N2", "N3", "N4", "N5"],
+        cell_names=["T1", "T2", "E1", "E2"],
+        cell_types=["TRIA3", "TRIA3", "SEG2", "SEG2"],
+        cell_nodes=[(0, 1, 3), (1, 2, 3), (1, 4), (4, 2)],
+        node_groups={},
+        cell_groups={"PLAQUE": np.array([0, 1]), "BORD": np.array([2, 3])},
+        dim=3,
+    )
+
+
+def test_force_arete_on_plate_edges_is_half_the_edge_per_node():
+    """FORCE_ARETE (te0034): F L / 2 at each node of each SEG2 edge, moments
+    too; the resultant is F times the edge's length."""
+    from asterlite.concepts.assembly import Model
+
+    mesh = _square_with_edges()
+    model = Model(mesh=mesh, cell_modelisation=dict.fromkeys(range(4), "DKT"))
+    load = run(FakeSession(), "AFFE_CHAR_MECA", MODELE=model,
+               FORCE_ARETE={"GROUP_MA": "BORD", "FX": 3.0, "FZ": -2.0, "MY": 5.0})  # fmt: skip
+    got = {}
+    for node, comp, value in load.nodal_forces:
+        got[(node, comp)] = got.get((node, comp), 0.0) + value
+    assert got[(1, "DX")] == pytest.approx(3.0 * 0.2)
+    assert got[(4, "DX")] == pytest.approx(3.0 * 0.5)
+    assert got[(2, "DZ")] == pytest.approx(-2.0 * 0.3)
+    assert got[(4, "DRY")] == pytest.approx(5.0 * 0.5)
+    assert sum(v for (_, c), v in got.items() if c == "DX") == pytest.approx(3.0)
+    assert {c for _, c in got} == {"DX", "DZ", "DRY"}
+
+
+def test_frame_axes_of_triangles_and_quadrangles_together():
+    """A mesh of both kinds (zzzz333a's): each cell's axes from its own
+    intrinsic frame; in the XY plane ANGL_REP (alpha, 0) makes the angle
+    alpha with global X, so (c, s) = (cos, sin)(alpha - the cell's x angle)."""
+    from asterlite.concepts.mesh import Mesh
+    from asterlite.fem.shell_frames import frame_axes
+
+    coords = np.array(
+        [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 1, 0]], dtype=float
+    )  # a square 1-2-3-4 and a triangle 2-5-3
+    mesh = Mesh(coords=coords, node_names=[f"N{i}" for i in range(5)], cell_names=["Q", "T"],
+                cell_types=["QUAD4", "TRIA3"], cell_nodes=[(0, 1, 2, 3), (1, 4, 2)],
+                node_groups={}, cell_groups={}, dim=3)  # fmt: skip
+    c, s = frame_axes(mesh, np.array([0, 1]), [(30.0, 0.0), (30.0, 0.0)])
+    triangle_x = np.degrees(np.arctan2(1.0, 1.0))  # its first side, 2 -> 5
+    np.testing.assert_allclose(c, np.cos(np.radians([30.0, 30.0 - triangle_x])), atol=1e-14)
+    np.testing.assert_allclose(s, np.sin(np.radians([30.0, 30.0 - triangle_x])), atol=1e-14)

@@ -44,8 +44,14 @@ def angles_from_vector(vector) -> tuple[float, float]:
 def frame_axes(mesh, cells, angles) -> tuple[np.ndarray, np.ndarray]:
     """(cos, sin) of the x axis given by ``angles`` (n_cells, 2; degrees) in
     each cell's intrinsic frame."""
-    coords = np.stack([mesh.coords[list(mesh.cell_nodes[int(c)])] for c in cells])
-    return output_axes(local_frames(coords), np.asarray(angles, dtype=float))
+    angles = np.asarray(angles, dtype=float).reshape(-1, 2)
+    counts = np.array([len(mesh.cell_nodes[int(c)]) for c in cells])
+    c, s = np.zeros(len(cells)), np.zeros(len(cells))
+    for count in np.unique(counts):  # triangles and quadrangles apart
+        rows = np.flatnonzero(counts == count)
+        coords = np.stack([mesh.coords[list(mesh.cell_nodes[int(cells[r])])] for r in rows])
+        c[rows], s[rows] = output_axes(local_frames(coords), angles[rows])
+    return c, s
 
 
 def rotate_in_plane(values: np.ndarray, layout, c: np.ndarray, s: np.ndarray) -> np.ndarray:
