@@ -144,3 +144,27 @@ def test_harmonic_fields_carry_the_dualised_solution_multipliers():
     dy, drz = COMPONENTS.index("DY"), COMPONENTS.index("DRZ")
     assert 2.0 * beta * static[layout.first[dy]] == pytest.approx(1.0, rel=1e-6)
     assert 2.0 * beta * static[layout.second[drz]] == pytest.approx(LENGTH, rel=1e-6)
+
+
+def test_restituted_harmonic_fields_carry_the_recombined_modes_multipliers():
+    """REST_GENE_PHYS of a harm_gene (harm_75) recombines the modes over all
+    of code_aster's equations: each field's multipliers are those of the modes
+    times its own complex generalized coordinates."""
+    from asterlite.concepts.harmonic import DynaHarmo
+    from asterlite.post.deck_api import harmonic_field
+
+    session, k, m = _clamped_beam()
+    modes = run(session, "CALC_MODES", MATR_RIGI=k, MATR_MASS=m, CALC_FREQ={"NMAX_FREQ": 2})
+    q = {"DEPL": np.array([[0.3 - 0.1j, -1.2 + 2.0j]]), "ACCE": np.array([[4.0j, 0.5]])}
+    fields = {name: values @ modes.shapes.T for name, values in q.items()}
+    result = DynaHarmo(k.numbering, np.array([3.0]), np.array([1]), fields)
+    result.modal_source = (modes, q)
+    for name, values in q.items():
+        got = np.array(harmonic_field(result, name, 1).getValues())
+        expected = sum(
+            values[0, j] * np.array(mode_field(modes, "DEPL", j + 1).getValues()) for j in range(2)
+        )
+        np.testing.assert_allclose(got, expected, rtol=1e-12, atol=1e-12)
+    result.modal_source = None
+    with pytest.raises(Exception, match="Lagrange multipliers"):
+        harmonic_field(result, "DEPL", 1).getValues()

@@ -90,6 +90,9 @@ class DynaHarmo(Concept):
     # None when unknown (a result read or built otherwise)
     reactions: tuple | None = None
     lagrange_beta: float = 1.0
+    # (modal basis, {field: generalized coordinates (n_freq, n_modes)}) of a
+    # recombined harm_gene (REST_GENE_PHYS): its multipliers are the modes'
+    modal_source: tuple | None = None
 
     @property
     def n_freq(self) -> int:

@@ -232,6 +232,15 @@ def harmonic_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> F
         field.reactions = np.zeros(result.numbering.n_dofs, dtype=complex)
         field.reactions[rows] = scaled[0]
         field.beta = result.lagrange_beta
+    source = getattr(result, "modal_source", None)
+    if known is None and source is not None and name in source[1]:
+        if dualised_relations(result.numbering):
+            # a recombination of modes over all equations (harm75): the modes' multipliers
+            basis, generalized = source
+            modal = mode_reactions(basis)
+            if modal is not None:
+                reactions, field.beta = modal
+                field.reactions = reactions @ np.asarray(generalized[name][position])
     return field
 
 
