@@ -168,3 +168,32 @@ def test_restituted_harmonic_fields_carry_the_recombined_modes_multipliers():
     result.modal_source = None
     with pytest.raises(Exception, match="Lagrange multipliers"):
         harmonic_field(result, "DEPL", 1).getValues()
+
+
+def test_harmonic_multipliers_with_an_imposed_motion():
+    """EXCIT CHARGE imposing DY = g at the clamp (DDL_IMPO): getValues() is
+    the solution of the dualised system whose multiplier rows hold β g."""
+    session = FakeSession()
+    model, field, cara = beam_model(session, line_mesh(N_EL, LENGTH))
+    imposed = {c: 0.0 for c in COMPONENTS} | {"DY": 0.01}
+    clamp = run(session, "AFFE_CHAR_MECA", MODELE=model,
+                DDL_IMPO={"GROUP_NO": "A", **imposed})  # fmt: skip
+    options = {"MODELE": model, "CHAM_MATER": field, "CARA_ELEM": cara, "CHARGE": clamp}
+    rigi = run(session, "CALC_MATR_ELEM", OPTION="RIGI_MECA", **options)
+    mass = run(session, "CALC_MATR_ELEM", OPTION="MASS_MECA", **options)
+    numbering = run(session, "NUME_DDL", MATR_RIGI=rigi)
+    k = run(session, "ASSE_MATRICE", MATR_ELEM=rigi, NUME_DDL=numbering)
+    m = run(session, "ASSE_MATRICE", MATR_ELEM=mass, NUME_DDL=numbering)
+    excitation = {"CHARGE": clamp, "COEF_MULT": 1.0, "PHAS_DEG": 0.0, "PUIS_PULS": 0}
+    result = run(session, "DYNA_VIBRA", TYPE_CALCUL="HARM", BASE_CALCUL="PHYS",
+                 MATR_RIGI=k, MATR_MASS=m, FREQ=(55.0,), EXCIT=excitation)  # fmt: skip
+    layout = lagrange_layout(numbering)
+    beta = lagrange_coefficient(k.matrix)
+    rhs = np.zeros(layout.size)
+    dy = COMPONENTS.index("DY")
+    rhs[[layout.first[dy], layout.second[dy]]] = beta * 0.01
+    omega = 2.0 * np.pi * 55.0
+    expected = np.linalg.solve(k.toNumpy() - omega**2 * m.toNumpy(), rhs)
+    got = np.array(result.getField("DEPL", 1).getValues())
+    assert got[layout.physical[numbering.index[(0, "DY")]]] == pytest.approx(0.01)
+    np.testing.assert_allclose(got, expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max())
