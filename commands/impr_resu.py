@@ -394,8 +394,8 @@ def _med_series(ctx, occ):
     mesh = occ.get("MAILLAGE")
     if result is not None:
         if isinstance(result, DynaHarmo) and occ.get("PARTIE") is None:
-            # MED holds real values: the part to write is chosen with PARTIE
-            ctx.unsupported("IMPR_RESU FORMAT='MED' of a dyna_harmo without PARTIE", "PARTIE", occ)
+            # MED holds real values: code_aster stops too (ircmva, RESULT3_69)
+            ctx.error("a complex field is written to MED one PARTIE at a time", "PARTIE", occ)
         if not (is_physical_result(result) or isinstance(result, DynaHarmo)):
             ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
         mesh = mesh or result_mesh(result)

@@ -131,8 +131,8 @@ def test_get_field_of_a_harmonic_result():
 
 def test_impr_resu_med_of_a_dyna_harmo_writes_the_part_asked(tmp_path):
     """MED holds real values: a dyna_harmo is written one PARTIE at a time,
-    the frequency as the step's time; without PARTIE it is refused by name."""
-    from asterlite.errors import UnsupportedError
+    the frequency as the step's time; without PARTIE, code_aster stops."""
+    from asterlite.errors import CommandError
     from asterlite.io.med_result import read_nodal_field
 
     result = _harmonic()
@@ -148,6 +148,6 @@ def test_impr_resu_med_of_a_dyna_harmo_writes_the_part_asked(tmp_path):
         # N1 carries DX only (DY written as zero); N2 DX then DY
         np.testing.assert_allclose(second.values[0, 0], expected[0])
         np.testing.assert_allclose(second.values[1, :2], expected[1:], rtol=1e-14)
-    with pytest.raises(UnsupportedError, match="without PARTIE"):
+    with pytest.raises(CommandError, match="one PARTIE at a time"):
         run(session, "IMPR_RESU", FORMAT="MED", UNITE=22,
             RESU={"RESULTAT": result, "NOM_CHAM": "DEPL"})  # fmt: skip
