@@ -1,6 +1,7 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
 LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU and 3D_POU_ARLEQUIN, FACE_IMPO)
-and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_ELEC, FORCE_TUYAU; FORCE_FACE, PRES_REP,
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_ELEC, FORCE_TUYAU, FORCE_ARETE
+on the edges of DKT plates; FORCE_FACE, PRES_REP,
 FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
 
@@ -625,12 +626,31 @@ def _force_tuyau(ctx, model, load, occ) -> None:
         )
 
 
+def _force_arete(ctx, model, components, load, occ) -> None:
+    """FORCE_ARETE on the edges (SEG2) of DKT plates: forces and moments per
+    unit length in the global frame, half of each times the edge's length at
+    each of its nodes (code_aster's te0034); on other elements refused by name."""
+    mesh = model.mesh
+    given = {k: float(occ[k]) for k in _FORCE_COMPONENTS if occ.get(k) is not None}
+    cells = _cells_carrying(ctx, model, occ, {"DKT": ("SEG2",)}, "FORCE_ARETE")
+    for cell in cells:
+        nodes = [int(n) for n in mesh.cell_nodes[int(cell)]]
+        half = 0.5 * float(np.linalg.norm(mesh.coords[nodes[1]] - mesh.coords[nodes[0]]))
+        for key, value in given.items():
+            comp = _FORCE_COMPONENTS[key]
+            for node in nodes:
+                if comp not in components.get(node, ()):
+                    ctx.error(f"node {mesh.node_names[node]} has no {comp} DOF", key, occ)
+                load.nodal_forces.append((node, comp, value * half))
+
+
 #: the factor keywords read one occurrence at a time, in the order their terms
 #: are added to the load
 _OCCURRENCE_READERS = (
     ("DDL_IMPO", _ddl_impo),
     ("LIAISON_DDL", _liaison_ddl),
     ("FORCE_NODALE", _force_nodale),
+    ("FORCE_ARETE", _force_arete),
     ("LIAISON_UNIF", _liaison_unif),
     ("LIAISON_SOLIDE", _liaison_solide),
     (

@@ -211,11 +211,11 @@ def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, name
 
 
 def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, names) -> None:
-    """EFGE_ELNO (and EFGE_NOEU), SIEF_ELGA and SIGM_ELNO of DKT plates
+    """EFGE_ELNO (and EFGE_NOEU), EFGE_ELGA, SIEF_ELGA and SIGM_ELNO of DKT plates
     (code_aster's ef0033 / te0033: from the displacements, real or complex;
     no inertia)."""
 
-    known = ("EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA", "SIGM_ELNO")
+    known = ("EFGE_ELNO", "EFGE_NOEU", "EFGE_ELGA", "SIEF_ELGA", "SIGM_ELNO")
     _refuse_other_options(
         ctx, kw, names, known, f"CALC_CHAMP {{}} of DKT plates ({', '.join(known)})"
     )

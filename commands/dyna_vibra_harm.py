@@ -31,6 +31,7 @@ import numpy as np
 from asterlite.concepts.assembly import ComplexAssembledMatrix, MechanicalLoad
 from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
 from asterlite.errors import CommandError, NumericalError
+from asterlite.fem.lagrange_layout import constrained_rows, lagrange_coefficient
 from asterlite.fem.loads import load_terms
 from asterlite.harmonic import HarmonicLoad, derived_fields
 from asterlite.harmonic import modal as modal_solver
@@ -261,6 +262,10 @@ def physical(ctx, kw, frequencies, names):
         if loads
         else np.zeros((frequencies.size, 0), dtype=complex)
     )
+    # the applied loads (the lifting of imposed motion aside) on the DOFs the
+    # dualised relations hold: the reactions there give code_aster's multipliers
+    rows = constrained_rows(numbering)
+    forces = coefficients @ vectors[:, rows] if loads else np.zeros((frequencies.size, rows.size))
     imposed = imposed_motion(ctx, kw, numbering, elimination, frequencies)
     if imposed is not None:
         # u = u_imposed + T q: the imposed part moves to the right-hand side
@@ -273,12 +278,16 @@ def physical(ctx, kw, frequencies, names):
     if extra is not None:
         vectors = np.vstack([vectors, extra])
         coefficients = np.hstack([coefficients, np.eye(frequencies.size, dtype=complex)])
+        forces = forces + extra[:, rows]
     try:
         depl, info = physical_solver.solve(sweep, frequencies, vectors, coefficients)
     except SingularSystem as error:
         numerical_error(ctx, error)
     if imposed is not None:
         depl = depl + imposed[1] @ imposed[0].T
+    reactions = physical_solver.constraint_reactions(
+        rows, depl, forces, frequencies, stiffness_matrix.matrix, mass_matrix.matrix, damping
+    )
     hysteretic = isinstance(stiffness_matrix, ComplexAssembledMatrix)
     ctx.log(
         f"DYNA_VIBRA HARM PHYS: {frequencies.size} frequencies "
@@ -295,6 +304,8 @@ def physical(ctx, kw, frequencies, names):
         materials=kw.get("CHAM_MATER") or getattr(stiffness_matrix, "materials", None),
         characteristics=kw.get("CARA_ELEM") or getattr(stiffness_matrix, "characteristics", None),
         mass_matrix=mass_matrix,
+        reactions=(rows, reactions),
+        lagrange_beta=lagrange_coefficient(stiffness_matrix.matrix),
     )
 
 

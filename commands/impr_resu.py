@@ -393,7 +393,10 @@ def _med_series(ctx, occ):
     result, field = occ.get("RESULTAT"), occ.get("CHAM_GD")
     mesh = occ.get("MAILLAGE")
     if result is not None:
-        if not is_physical_result(result):
+        if isinstance(result, DynaHarmo) and occ.get("PARTIE") is None:
+            # MED holds real values: code_aster stops too (ircmva, RESULT3_69)
+            ctx.error("a complex field is written to MED one PARTIE at a time", "PARTIE", occ)
+        if not (is_physical_result(result) or isinstance(result, DynaHarmo)):
             ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
         mesh = mesh or result_mesh(result)
         return mesh, mesh_label(mesh), result_series(ctx, occ, result)

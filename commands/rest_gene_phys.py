@@ -179,7 +179,7 @@ def restore_harmonic(ctx, kw, result, basis) -> DynaHarmo:
         sub = numbering
     else:
         sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
-    return DynaHarmo(
+    restored = DynaHarmo(
         numbering=sub,
         frequencies=selection.times,
         order=np.arange(1, selection.times.size + 1),
@@ -188,6 +188,14 @@ def restore_harmonic(ctx, kw, result, basis) -> DynaHarmo:
         materials=getattr(numbering, "materials", None),
         characteristics=getattr(numbering, "characteristics", None),
     )
+    if sub is numbering:
+        # recombined over all of code_aster's equations: a field's multipliers
+        # are the modes' (asterlite.post.deck_api.harmonic_field)
+        restored.modal_source = (
+            basis,
+            {name: selection.apply(result.fields[name]) for name in names},
+        )
+    return restored
 
 
 def requested_fields(ctx, kw, basis) -> tuple[tuple[str, ...], tuple[str, ...]]:

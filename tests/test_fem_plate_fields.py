@@ -152,3 +152,52 @@ def test_layer_stresses_of_bending_and_membrane(kind):
         columns = [0, 1, 2, 3, 4, 5] if kind == "TRIA3" else [0, 1, 2, 3]
         error = np.abs(got - expected[None, None])[..., columns].max()
         assert error < 1e-9 * np.abs(expected).max()
+
+
+@pytest.mark.parametrize("layers", [1, 2, 5])
+def test_efge_elga_integrates_the_layer_stresses_back(layers):
+    """EFGE_ELGA (te0451): Simpson's rule on each layer integrates the linear
+    in-plane and parabolic shear profiles exactly, giving back N, M and Q."""
+    from asterlite.fem.plate_fields import _layer_stresses, through_thickness_forces
+
+    rng = np.random.default_rng(layers)
+    forces = rng.normal(size=(2, 3, 4, 8)) + 1j * rng.normal(size=(2, 3, 4, 8))
+    thickness = np.array([0.01, 0.2, 1.5])
+    sigma = _layer_stresses(forces, thickness, layers)
+    back = through_thickness_forces(sigma, thickness)
+    np.testing.assert_allclose(back, forces, rtol=1e-12, atol=1e-12 * np.abs(forces).max())
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_efge_elga_of_the_constant_patch(kind):
+    """On the bending and membrane patch, EFGE_ELGA holds at every Gauss
+    point the constant N and M of EFGE_ELNO, and on triangles no shear
+    (ANGL_REP (30, 10), 3 layers)."""
+    mesh = tilted(grid_mesh(kind, (3, 3), (1.0, 1.3), jitter=0.25, seed=2), ROTATION)
+    model, characteristics, field = plate_model(mesh)
+    for shell in characteristics.shells.values():
+        shell["ANGL_REP"], shell["COQUE_NCOU"] = (30.0, 10.0), 3
+    numbering = DofNumbering(mesh=mesh, dofs=build_numbering_dofs(model.node_components()))
+    a, b, c = 1e-3, -2e-3, 5e-4
+    g = np.array([[1e-4, 3e-5], [-2e-5, 2e-4]])
+
+    def state(xy):
+        x, y = xy[:, 0], xy[:, 1]
+        w = 0.5 * (a * x * x + b * y * y) + c * x * y
+        uv = xy @ g.T
+        return np.stack([uv[:, 0], uv[:, 1], w, b * y + c * x, -(a * x + c * y), 0 * x], axis=1)
+
+    u = nodal(numbering, mesh, ROTATION, state)
+    cells = np.arange(mesh.n_cells)
+    efge = plate_element_fields(
+        model, characteristics, field, numbering, cells, u[None], ["EFGE_ELGA"]
+    )["EFGE_ELGA"]
+    cos, sin = _output_axis((30.0, 10.0))
+    moments = _rotated(H**3 / 12 * LAW @ np.array([-a, -b, -2 * c]), cos, sin)
+    membrane = _rotated(H * LAW @ np.array([g[0, 0], g[1, 1], g[0, 1] + g[1, 0]]), cos, sin)
+    expected = np.concatenate([membrane, moments])
+    points = 3 if kind == "TRIA3" else 4
+    got = efge.values[0, :, :points, :]
+    assert np.abs(got[..., :6] - expected).max() < 1e-9 * np.abs(expected).max()
+    if kind == "TRIA3":  # the shear of distorted quadrangles is approximate (dkqtxy)
+        assert np.abs(got[..., 6:]).max() < 1e-9 * np.abs(expected).max()

@@ -127,3 +127,27 @@ def test_get_field_of_a_harmonic_result():
     result.element_fields["EFGE_ELNO"] = object()
     with pytest.raises(UnsupportedError, match="EFGE_ELNO of a dyna_harmo"):
         result.getField("EFGE_ELNO", 1)
+
+
+def test_impr_resu_med_of_a_dyna_harmo_writes_the_part_asked(tmp_path):
+    """MED holds real values: a dyna_harmo is written one PARTIE at a time,
+    the frequency as the step's time; without PARTIE, code_aster stops."""
+    from asterlite.errors import CommandError
+    from asterlite.io.med_result import read_nodal_field
+
+    result = _harmonic()
+    session = _Session(tmp_path)
+    for unit, part in ((20, "IMAG"), (21, "PHASE")):
+        run(session, "IMPR_RESU", FORMAT="MED", UNITE=unit,
+            RESU={"RESULTAT": result, "NOM_CHAM": "DEPL", "PARTIE": part,
+                  "NOM_CHAM_MED": f"DEPL_{part}"})  # fmt: skip
+        back = read_nodal_field(tmp_path / f"fort.{unit}", f"DEPL_{part}")
+        assert [step.time for step in back.steps] == [10.0, 20.0]
+        second = back.steps[1]
+        expected = complex_part(result.fields["DEPL"][1], part)
+        # N1 carries DX only (DY written as zero); N2 DX then DY
+        np.testing.assert_allclose(second.values[0, 0], expected[0])
+        np.testing.assert_allclose(second.values[1, :2], expected[1:], rtol=1e-14)
+    with pytest.raises(CommandError, match="one PARTIE at a time"):
+        run(session, "IMPR_RESU", FORMAT="MED", UNITE=22,
+            RESU={"RESULTAT": result, "NOM_CHAM": "DEPL"})  # fmt: skip

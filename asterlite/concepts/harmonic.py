@@ -84,6 +84,15 @@ class DynaHarmo(Concept):
     # the MATR_MASS of the computation (code_aster's REF_MASS_PREM): the
     # inertia M a of CALC_CHAMP REAC_NODA; None when unknown
     mass_matrix: Any = None
+    # (rows, F - (K + iωC - ω²M) u on those rows (n_freq, n_rows)): the reactions
+    # of the dualised constraints, whose multipliers code_aster's fields hold,
+    # and the stiffness's Lagrange coefficient (asterlite.fem.lagrange_layout);
+    # None when unknown (a result read or built otherwise)
+    reactions: tuple | None = None
+    lagrange_beta: float = 1.0
+    # (modal basis, {field: generalized coordinates (n_freq, n_modes)}) of a
+    # recombined harm_gene (REST_GENE_PHYS): its multipliers are the modes'
+    modal_source: tuple | None = None
 
     @property
     def n_freq(self) -> int:

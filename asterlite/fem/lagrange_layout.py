@@ -41,6 +41,16 @@ def dualised_relations(numbering) -> list:
     return [r for r in numbering.relations if id(r) not in kinematic]
 
 
+def constrained_rows(numbering) -> np.ndarray:
+    """The numbering rows of the DOFs the dualised relations involve (sorted):
+    where a solve must know the reactions to give the multipliers."""
+    index = numbering.index
+    rows = {
+        index[(node, comp)] for r in dualised_relations(numbering) for node, comp, _a in r.terms
+    }
+    return np.array(sorted(rows), dtype=int)
+
+
 @dataclass(frozen=True)
 class LagrangeLayout:
     """Positions of the physical DOFs and of the multipliers in code_aster's

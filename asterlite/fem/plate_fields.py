@@ -1,6 +1,7 @@
-"""Generalised forces (``EFGE_ELNO``) and stresses (``SIEF_ELGA``,
-``SIGM_ELNO``) of DKT plates, as code_aster's dktedg / dkqedg and dktsie /
-dkqsie compute them for an isotropic linear-elastic plate without offset.
+"""Generalised forces (``EFGE_ELNO``, ``EFGE_ELGA``) and stresses
+(``SIEF_ELGA``, ``SIGM_ELNO``) of DKT plates, as code_aster's dktedg /
+dkqedg, dktsie / dkqsie and te0451 compute them for an isotropic
+linear-elastic plate without offset.
 
 At each node of a cell (the NOEU family: the corners' reference
 coordinates), from the local displacements:
@@ -16,7 +17,8 @@ coordinates), from the local displacements:
 
 Stresses: at the RIGI Gauss points, on 3 sub-points (bottom, middle, top)
 of each of the COQUE_NCOU equal layers, sub-point index 3 (layer - 1) +
-level; SIGM_ELNO takes each sub-point's Gauss values to the nodes.
+level; SIGM_ELNO takes each sub-point's Gauss values to the nodes; EFGE_ELGA
+integrates SIEF_ELGA through the thickness (Simpson's rule on each layer).
 
 Forces and stresses are given in the cells' output frame (code_aster's coqrep): x along
 the projection on the cell's plane of the direction ``ANGL_REP`` (alpha,
@@ -45,7 +47,7 @@ from asterlite.fem.solid_reference import REFERENCE_ELEMENTS, gauss_family
 
 PLATE_EFGE_COMPONENTS = ("NXX", "NYY", "NXY", "MXX", "MYY", "MXY", "QX", "QY")
 SIGMA_COMPONENTS = ("SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ")
-PLATE_FIELD_OPTIONS = ("EFGE_ELNO", "SIEF_ELGA", "SIGM_ELNO")
+PLATE_FIELD_OPTIONS = ("EFGE_ELNO", "EFGE_ELGA", "SIEF_ELGA", "SIGM_ELNO")
 
 #: step of the central differences of the rotations' reference gradients:
 #: those gradients are polynomials of degree <= 2, so the difference is exact
@@ -159,6 +161,7 @@ def plate_element_fields(
     levels = 3 * layers
     gauss = np.full((values.shape[0], len(cells), max_nodes * levels, 6), np.nan, dtype=dtype)
     nodal = np.full_like(gauss, np.nan)
+    efge_gauss = np.full((values.shape[0], len(cells), max_nodes, 8), np.nan, dtype=dtype)
     for kind in _CELLS:
         rows = np.array([k for k, c in enumerate(cells) if mesh.cell_types[c] == kind], dtype=int)
         if not rows.size:
@@ -210,6 +213,7 @@ def plate_element_fields(
         sigma = _layer_stresses(_to_output_frame(at_points, c, s), shell["EPAIS"], layers)
         q = len(points)
         gauss[:, rows, : q * levels, :] = sigma.reshape(values.shape[0], len(members), -1, 6)
+        efge_gauss[:, rows, :q, :] = through_thickness_forces(sigma, shell["EPAIS"])
         # SIGM_ELNO: each sub-point's Gauss values taken to the nodes
         to_nodes = gauss_to_nodes(corner_ref, family)
         at_corner = np.einsum("nq,oeqlc->oenlc", to_nodes, sigma)
@@ -218,11 +222,36 @@ def plate_element_fields(
     for name in options:
         if name == "EFGE_ELNO":
             fields[name] = ElementField(name, cells, PLATE_EFGE_COMPONENTS, out.copy())
+        elif name == "EFGE_ELGA":
+            fields[name] = ElementField(name, cells, PLATE_EFGE_COMPONENTS, efge_gauss.copy())
         elif name == "SIEF_ELGA":
             fields[name] = ElementField(name, cells, SIGMA_COMPONENTS, gauss.copy(), levels)
         else:
             fields[name] = ElementField(name, cells, SIGMA_COMPONENTS, nodal.copy(), levels)
     return fields
+
+
+def through_thickness_forces(sigma: np.ndarray, thickness: np.ndarray) -> np.ndarray:
+    """(o, e, q, 8) generalised forces from the layer stresses (o, e, q,
+    3 layers, 6) at the bottom, middle and top of equal layers: Simpson's
+    rule on each layer, N = sum of sigma dz, M = sum of z sigma dz, Q = sum of
+    tau dz (code_aster's te0451 for EFGE_ELGA; exact for the linear and
+    parabolic profiles of an isotropic plate)."""
+    layers = sigma.shape[-2] // 3
+    h = np.asarray(thickness, dtype=float)[None, :, None]
+    step = h / layers
+    weights = np.array([1.0, 4.0, 1.0]) / 6.0
+    forces = np.zeros(sigma.shape[:3] + (8,), dtype=sigma.dtype)
+    for k in range(layers):
+        bottom = -h / 2.0 + k * step
+        for level in range(3):
+            stress = sigma[..., 3 * k + level, :]
+            w = weights[level] * step
+            z = bottom + 0.5 * level * step
+            forces[..., 0:3] += w[..., None] * stress[..., [0, 1, 3]]
+            forces[..., 3:6] += (w * z)[..., None] * stress[..., [0, 1, 3]]
+            forces[..., 6:8] += w[..., None] * stress[..., [4, 5]]
+    return forces
 
 
 def _layer_stresses(forces: np.ndarray, thickness: np.ndarray, layers: int) -> np.ndarray:

@@ -289,3 +289,21 @@ def solve(
         info["fill"] = sweep.analysis.fill
         info["timings"] = dict(sweep.timings or {})
     return out, info
+
+
+def constraint_reactions(
+    rows: np.ndarray, depl: np.ndarray, forces: np.ndarray, frequencies, stiffness, mass, damping
+) -> np.ndarray:
+    """F - (K + iωC - ω²M) u on the DOFs ``rows`` (n_freq, n_rows): the
+    reactions of the constraints acting there, which code_aster's dualised
+    solve holds in its Lagrange multipliers (asterlite.fem.lagrange_layout).
+    ``forces`` (n_freq, n_rows) are the loads applied on those DOFs; the
+    coefficients follow comdlh's dynamic matrix (-omega2(f), iω)."""
+    f = np.asarray(frequencies, dtype=float)
+    states = np.asarray(depl).T  # (n_dofs, n_freq)
+    response = (sp.csr_matrix(stiffness)[rows] @ states).T
+    response = response - omega2(f)[:, None] * (sp.csr_matrix(mass)[rows] @ states).T
+    if damping is not None:
+        velocity = (sp.csr_matrix(damping)[rows] @ states).T
+        response = response + (1j * TWO_PI * f)[:, None] * velocity
+    return np.asarray(forces) - response

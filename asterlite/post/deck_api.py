@@ -29,6 +29,7 @@ from asterlite.fem.lagrange_layout import (
     lagrange_coefficient,
     lagrange_layout,
 )
+from asterlite.harmonic.fields import derived_fields
 from asterlite.post.cell_fields import result_cell_field
 
 # Where INFO_NONL and other printing methods write: the session's message log
@@ -221,7 +222,26 @@ def harmonic_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> F
         position = order_position(result.order, value, f"field {name}")
     else:
         raise CommandError(f"getField of a dyna_harmo: para must be NUME_ORDRE or FREQ, got {para}")
-    return FieldValues(result.numbering, np.array(result.fields[name][position], dtype=complex))
+    field = FieldValues(result.numbering, np.array(result.fields[name][position], dtype=complex))
+    known = getattr(result, "reactions", None)
+    if known is not None and dualised_relations(result.numbering):
+        # VITE and ACCE scale the whole solution, multipliers included (comdlh)
+        rows, reactions = known
+        frequency = np.asarray(result.frequencies, dtype=float)[position : position + 1]
+        scaled = derived_fields(reactions[position : position + 1], frequency, (name,))[name]
+        field.reactions = np.zeros(result.numbering.n_dofs, dtype=complex)
+        field.reactions[rows] = scaled[0]
+        field.beta = result.lagrange_beta
+    source = getattr(result, "modal_source", None)
+    if known is None and source is not None and name in source[1]:
+        if dualised_relations(result.numbering):
+            # a recombination of modes over all equations (harm75): the modes' multipliers
+            basis, generalized = source
+            modal = mode_reactions(basis)
+            if modal is not None:
+                reactions, field.beta = modal
+                field.reactions = reactions @ np.asarray(generalized[name][position])
+    return field
 
 
 def field_indexes(result, name: str) -> list[int]:
