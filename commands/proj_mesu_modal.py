@@ -1,0 +1,266 @@
+"""PROJ_MESU_MODAL: the generalized coordinates on MODELE_CALCUL's BASE that
+best explain MODELE_MESURE's MESURE (code_aster's op0193).
+
+Sensors are the measured translations (DX, DY, DZ) of the measurement
+mesh: for identified modes (mode_meca) the components some mode moves
+(above 100 machine precisions), for a transient or harmonic measurement
+every translation its field carries. The basis is seen at the sensors by
+collocation of the measurement nodes in the calculation mesh's cells (as
+PROJ_CHAMP places them). Each measured state is solved as
+asterlite.modal.measured_projection describes. The result is a mode_gene
+(measured modes: FREQ and the NOM_PARA parameters copied), a tran_gene
+(instants; velocities and accelerations by finite differences, or
+displacements integrated from measured VITE / ACCE as code_aster does) or
+a harm_gene (frequencies; VITE = iω DEPL, ACCE = -ω² DEPL).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.harmonic import DynaHarmo, HarmGene
+from asterlite.concepts.modes import (
+    ComplexModeResult,
+    GeneralizedModes,
+    GeneralizedNumbering,
+    ModeResult,
+)
+from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.modal import measured_projection as mp
+from asterlite.post import field_projection as fp
+
+_TRANSLATIONS = ("DX", "DY", "DZ")
+
+
+def run(ctx, kw):
+    calc = kw.factor("MODELE_CALCUL")[0]
+    mesu = kw.factor("MODELE_MESURE")[0]
+    basis, measured = calc["BASE"], mesu["MESURE"]
+    names = _field_name(ctx, mesu)
+    for occ in kw.factor("CORR_MANU"):
+        ctx.unsupported("PROJ_MESU_MODAL with a manual node correspondence", "CORR_MANU", occ)
+    if isinstance(measured, ComplexModeResult):
+        ctx.unsupported("PROJ_MESU_MODAL of complex modes (mode_meca_c)", "MESURE", mesu)
+    if not hasattr(basis, "shapes"):
+        ctx.unsupported(f"PROJ_MESU_MODAL on a {basis.aster_type} basis", "BASE", calc)
+    calc_mesh, mesu_mesh = calc["MODELE"].mesh, mesu["MODELE"].mesh
+    if basis.numbering.mesh is not calc_mesh:
+        ctx.error("the basis does not lie on MODELE_CALCUL's mesh", "BASE", calc)
+    if measured.numbering.mesh is not mesu_mesh:
+        ctx.error("the measured result does not lie on MODELE_MESURE's mesh", "MESURE", mesu)
+
+    abscissas, values = _measured_states(ctx, mesu, measured, names)
+    sensors, data = _sensors(ctx, mesu, measured, values)
+    observation = _observation(ctx, calc, mesu, basis, sensors)
+    resolution = _resolution(ctx, kw, basis.n_modes, abscissas)
+    try:
+        eta = mp.identify(observation, data, resolution)
+    except mp.MeasuredProjectionError as exc:
+        ctx.error(str(exc), "RESOLUTION")
+    ctx.log(
+        f"PROJ_MESU_MODAL: {len(sensors)} sensors, {basis.n_modes} modes, "
+        f"{len(abscissas)} measured states, {resolution.method} "
+        f"(REGUL={resolution.regul})"
+    )
+    if isinstance(measured, DynaTrans):
+        return _transient(basis, abscissas, eta, names[0])
+    if isinstance(measured, DynaHarmo):
+        return _harmonic(basis, abscissas, eta, names[0])
+    return _modes(ctx, kw, basis, measured, eta)
+
+
+def _field_name(ctx, mesu) -> list[str]:
+    names = list(np.atleast_1d(mesu["NOM_CHAM"]))
+    for name in names:
+        if name in ("SIEF_NOEU", "EPSI_NOEU"):
+            ctx.unsupported(
+                f"PROJ_MESU_MODAL of measured {name} (strain or stress gauges)", "NOM_CHAM", mesu
+            )
+    if len(names) > 1:
+        ctx.unsupported("PROJ_MESU_MODAL with several NOM_CHAM", "NOM_CHAM", mesu)
+    return names
+
+
+def _measured_states(ctx, mesu, measured, names):
+    """Abscissas (instants, frequencies) and the (n_states, n_dofs) values."""
+    name = names[0]
+    if isinstance(measured, ModeResult):
+        if name != "DEPL":
+            ctx.error(f"measured modes have no field {name}", "NOM_CHAM", mesu)
+        return np.asarray(measured.frequencies, dtype=float), measured.shapes.T
+    if name not in measured.fields:
+        ctx.error(f"the measured result has no field {name}", "NOM_CHAM", mesu)
+    if isinstance(measured, DynaTrans):
+        abscissas = np.asarray(measured.times, dtype=float)
+        if abscissas.size < 2:
+            ctx.error("a measured transient needs at least two instants", "MESURE", mesu)
+    else:
+        abscissas = np.asarray(measured.frequencies, dtype=float)
+    return abscissas, np.asarray(measured.fields[name])
+
+
+def _sensors(ctx, mesu, measured, values):
+    """The measured (node, component) pairs and their (n_states, n_sensors) data."""
+    dofs = measured.numbering.dofs
+    columns = [i for i, (_, c) in enumerate(dofs) if c in _TRANSLATIONS]
+    local = [c for _, c in dofs if c in ("D1", "D2", "D3")]
+    if local:
+        ctx.unsupported(
+            f"PROJ_MESU_MODAL of sensors in local directions ({local[0]})", "MESURE", mesu
+        )
+    if isinstance(measured, ModeResult):
+        moved = np.abs(values[:, columns]).max(axis=0) > mp.SENSOR_THRESHOLD
+        columns = [c for c, keep in zip(columns, moved, strict=True) if keep]
+    if not columns:
+        ctx.error("the measurement has no measured translation", "MESURE", mesu)
+    return [dofs[i] for i in columns], values[:, columns]
+
+
+def _observation(ctx, calc, mesu, basis, sensors) -> np.ndarray:
+    """The basis at the sensors, (n_sensors, n_modes): each measurement node
+    placed in the calculation cells (collocation)."""
+    calc_mesh = calc["MODELE"].mesh
+    mesu_mesh = mesu["MODELE"].mesh
+    cells = fp.source_cells(calc_mesh, _model_cells(calc["MODELE"]))
+    nodes = np.unique([n for n, _ in sensors])
+    try:
+        placement = fp.place_nodes(calc_mesh, cells, mesu_mesh, nodes)
+    except fp.ProjectionUnsupported as exc:
+        ctx.unsupported(f"PROJ_MESU_MODAL: {exc}", "MODELE", calc)
+    if placement.unplaced:
+        name = mesu_mesh.node_names[placement.unplaced[0]]
+        ctx.error(
+            f"the measurement node {name} lies in no cell of the calculation model", "MODELE", mesu
+        )
+    if placement.farthest > 0.0:
+        ctx.log(
+            f"PROJ_MESU_MODAL: measurement nodes up to {placement.farthest:g} "
+            "from the calculation cells (nearest cell taken)"
+        )
+    seen, missed = fp.project_values(placement, basis.numbering.index, basis.shapes.T, sensors)
+    if missed:
+        ctx.error(f"{missed} measured components have no DOF in the basis", "BASE", calc)
+    return seen.T
+
+
+def _model_cells(model):
+    return np.asarray(sorted(model.cell_modelisation), dtype=int)
+
+
+def _resolution(ctx, kw, n_modes, abscissas) -> mp.Resolution:
+    occurrences = kw.factor("RESOLUTION")
+    if not occurrences:
+        return mp.Resolution()
+    occ = occurrences[0]
+    method, regul = occ["METHODE"], occ["REGUL"]
+    eps = float(occ.get("EPS") or 0.0) if method == "SVD" else 0.0
+    weights = None
+    if regul != "NON":
+        if occ.get("COEF_PONDER") is not None:
+            weights = _constant_weights(ctx, occ, n_modes)
+        elif occ.get("COEF_PONDER_F") is not None:
+            weights = _function_weights(ctx, occ, n_modes, abscissas)
+    return mp.Resolution(method=method, eps=eps, regul=regul, weights=weights)
+
+
+def _constant_weights(ctx, occ, n_modes) -> np.ndarray:
+    given = [float(v) for v in np.atleast_1d(occ["COEF_PONDER"])]
+    if len(given) > n_modes:
+        ctx.error(f"{len(given)} weights for {n_modes} modes", "COEF_PONDER", occ)
+    # fewer weights than modes: the last one stands for the others
+    return np.array(given + [given[-1]] * (n_modes - len(given)))
+
+
+def _function_weights(ctx, occ, n_modes, abscissas) -> np.ndarray:
+    """(n_states, n_modes) weights: one function per mode (the last one for
+    the modes after it), tabulated on the measured abscissas."""
+    functions = list(np.atleast_1d(occ["COEF_PONDER_F"]))
+    if len(functions) > n_modes:
+        ctx.error(f"{len(functions)} functions for {n_modes} modes", "COEF_PONDER_F", occ)
+    functions += [functions[-1]] * (n_modes - len(functions))
+    steps = np.diff(abscissas)
+    steps = np.concatenate([steps[:1], steps]) if steps.size else np.ones(1)
+    out = np.zeros((abscissas.size, n_modes))
+    for k, function in enumerate(functions):
+        x = np.asarray(getattr(function, "abscissas", []), dtype=float)
+        if x.size != abscissas.size or np.any(np.abs(x - abscissas) > np.abs(steps) * 1e-4):
+            ctx.error(
+                "each COEF_PONDER_F function must be tabulated on the measured abscissas",
+                "COEF_PONDER_F",
+                occ,
+            )
+        out[:, k] = np.asarray(function.ordinates, dtype=float)
+    return out
+
+
+def _transient(basis, times, eta, name) -> TranGene:
+    if name == "DEPL":
+        depl = eta
+        vite, acce = mp.time_derivatives(depl, times)
+    elif name == "VITE":
+        vite = eta
+        acce, _ = mp.time_derivatives(vite, times)
+        depl = mp.time_integral(vite, times)
+    else:
+        acce = eta
+        vite = mp.time_integral(acce, times)
+        depl = mp.time_integral(vite, times)
+    return TranGene(
+        basis=basis,
+        times=times.copy(),
+        order=np.arange(times.size),
+        depl=depl,
+        vite=vite,
+        acce=acce,
+        step=float((times[-1] - times[0]) / times.size),
+    )
+
+
+def _harmonic(basis, frequencies, eta, name) -> HarmGene:
+    iw = (2j * np.pi * frequencies)[:, None]
+    eta = eta.astype(complex)
+    if name == "DEPL":
+        depl = eta
+    elif name == "VITE":
+        depl = np.divide(eta, iw, out=np.zeros_like(eta), where=iw != 0)
+    else:
+        depl = np.divide(eta, iw**2, out=np.zeros_like(eta), where=iw != 0)
+    return HarmGene(
+        basis=basis,
+        numbering=GeneralizedNumbering(basis=basis),
+        frequencies=frequencies.copy(),
+        order=np.arange(1, frequencies.size + 1),
+        fields={"DEPL": depl, "VITE": iw * depl, "ACCE": iw**2 * depl},
+    )
+
+
+def _modes(ctx, kw, basis, measured, eta) -> GeneralizedModes:
+    """One generalized mode per measured mode: FREQ kept, NOM_PARA copied."""
+    n = eta.shape[0]
+    parameters = {"NUME_MODE": np.arange(1, n + 1)}
+    for name in np.atleast_1d(kw.get("NOM_PARA") or ()):
+        value = _measured_parameter(measured, str(name))
+        if value is None:
+            ctx.error(f"the measured modes have no parameter {name}", "NOM_PARA", kw)
+        parameters[str(name)] = value
+    unknown = np.full(n, np.nan)  # code_aster leaves them unset
+    return GeneralizedModes(
+        numbering=GeneralizedNumbering(basis=basis),
+        vectors=eta.T.copy(),
+        frequencies=np.asarray(measured.frequencies, dtype=float).copy(),
+        generalized_mass=parameters.get("MASS_GENE", unknown),
+        generalized_stiffness=parameters.get("RIGI_GENE", unknown),
+        parameters=parameters,
+        norm=measured.norm,
+    )
+
+
+def _measured_parameter(measured, name):
+    if name in measured.parameters:
+        return np.asarray(measured.parameters[name]).copy()
+    direct = {
+        "FREQ": measured.frequencies,
+        "MASS_GENE": measured.generalized_mass,
+        "RIGI_GENE": measured.generalized_stiffness,
+    }
+    return None if name not in direct else np.asarray(direct[name], dtype=float).copy()
