@@ -30,6 +30,8 @@ from asterlite.modal import measured_projection as mp
 from asterlite.post import field_projection as fp
 
 _TRANSLATIONS = ("DX", "DY", "DZ")
+_PLATES = ("DKT", "DST", "Q4G", "COQUE", "GRILLE", "MEMBRANE")
+_STRUCTURAL = ("DIS_", "2D_DIS_", "BARRE", "2D_BARRE", "CABLE", "TUYAU") + _PLATES
 
 
 def run(ctx, kw):
@@ -100,29 +102,96 @@ def _measured_states(ctx, mesu, measured, names):
 
 
 def _sensors(ctx, mesu, measured, values):
-    """The measured (node, component) pairs and their (n_states, n_sensors) data."""
+    """The sensors, (node, unit direction) each, and their (n_states,
+    n_sensors) data: translations DX, DY, DZ, and for a transient or harmonic
+    measurement D1, D2, D3 along the direction their D1X..D3Z give."""
     dofs = measured.numbering.dofs
-    columns = [i for i, (_, c) in enumerate(dofs) if c in _TRANSLATIONS]
-    local = [c for _, c in dofs if c in ("D1", "D2", "D3")]
-    if local:
-        ctx.unsupported(
-            f"PROJ_MESU_MODAL of sensors in local directions ({local[0]})", "MESURE", mesu
-        )
-    if isinstance(measured, ModeResult):
+    index = measured.numbering.index
+    modes = isinstance(measured, ModeResult)
+    kinds = _TRANSLATIONS if modes else _TRANSLATIONS + ("D1", "D2", "D3")
+    columns = [i for i, (_, c) in enumerate(dofs) if c in kinds]
+    if modes:
         moved = np.abs(values[:, columns]).max(axis=0) > mp.SENSOR_THRESHOLD
         columns = [c for c, keep in zip(columns, moved, strict=True) if keep]
     if not columns:
         ctx.error("the measurement has no measured translation", "MESURE", mesu)
-    return [dofs[i] for i in columns], values[:, columns]
+    sensors = []
+    for i in columns:
+        node, component = dofs[i]
+        if component in _TRANSLATIONS:
+            direction = np.eye(3)[_TRANSLATIONS.index(component)]
+        else:
+            # the sensor's orientation, read at the first measured state
+            direction = np.array(
+                [
+                    np.real(values[0, index[(node, f"{component}{axis}")]])
+                    if (node, f"{component}{axis}") in index
+                    else 0.0
+                    for axis in "XYZ"
+                ]
+            )
+            norm = np.linalg.norm(direction)
+            if norm <= np.finfo(float).eps:
+                name = measured.numbering.mesh.node_names[node]
+                ctx.error(f"the sensor {component} at node {name} has no direction", "MESURE", mesu)
+            direction = direction / norm
+        sensors.append((node, direction))
+    return sensors, values[:, columns]
 
 
 def _observation(ctx, calc, mesu, basis, sensors) -> np.ndarray:
     """The basis at the sensors, (n_sensors, n_modes): each measurement node
-    placed in the calculation cells (collocation)."""
+    placed in the calculation cells (collocation), its translations
+    projected on the sensor's direction."""
     calc_mesh = calc["MODELE"].mesh
     mesu_mesh = mesu["MODELE"].mesh
-    cells = fp.source_cells(calc_mesh, _model_cells(calc["MODELE"]))
     nodes = np.unique([n for n, _ in sensors])
+    if _nearest_nodes(calc["MODELE"]):
+        placement = _paired(ctx, mesu, calc_mesh, mesu_mesh, nodes)
+    else:
+        placement = _collocated(ctx, calc, mesu, calc_mesh, mesu_mesh, nodes)
+    targets = [(n, c) for n, _ in sensors for c in _TRANSLATIONS]
+    seen, _ = fp.project_values(
+        placement, basis.numbering.index, basis.shapes.T, targets, default=np.nan
+    )
+    seen = seen.T.reshape(len(sensors), 3, basis.n_modes)
+    out = np.zeros((len(sensors), basis.n_modes))
+    for k, (node, direction) in enumerate(sensors):
+        used = direction != 0.0
+        if np.isnan(seen[k, used]).any():
+            name = mesu_mesh.node_names[node]
+            ctx.error(f"the basis has no translation at the sensor of node {name}", "BASE", calc)
+        out[k] = direction[used] @ seen[k, used]
+    return out
+
+
+def _nearest_nodes(model) -> bool:
+    """code_aster pairs each measurement node with the nearest calculation node
+    when the calculation model has structural elements (discrete elements,
+    bars, pipes...) but neither beams (placed on their segments) nor plates
+    or shells (op0193's mpjeft); otherwise the nodes are placed in its cells."""
+    kinds = set(model.cell_modelisation.values()) | set(model.node_modelisation.values())
+    beams = any(k.startswith("POU") for k in kinds)
+    plates = any(k.startswith(_PLATES) for k in kinds)
+    structural = any(k.startswith(_STRUCTURAL) for k in kinds)
+    return structural and not beams and not plates
+
+
+def _paired(ctx, mesu, calc_mesh, mesu_mesh, nodes) -> fp.Placement:
+    coords = calc_mesh.coords
+    placed = {}
+    for node in nodes:
+        distance = np.linalg.norm(coords - mesu_mesh.coords[node], axis=1)
+        placed[int(node)] = (np.array([int(np.argmin(distance))]), np.ones(1))
+    images = [int(v[0][0]) for v in placed.values()]
+    if len(set(images)) != len(images):
+        ctx.error("two measurement nodes have the same nearest calculation node", "MODELE", mesu)
+    ctx.log("PROJ_MESU_MODAL: each measurement node takes its nearest calculation node")
+    return fp.Placement(placed, [], 0.0)
+
+
+def _collocated(ctx, calc, mesu, calc_mesh, mesu_mesh, nodes) -> fp.Placement:
+    cells = fp.source_cells(calc_mesh, _model_cells(calc["MODELE"]))
     try:
         placement = fp.place_nodes(calc_mesh, cells, mesu_mesh, nodes)
     except fp.ProjectionUnsupported as exc:
@@ -137,10 +206,7 @@ def _observation(ctx, calc, mesu, basis, sensors) -> np.ndarray:
             f"PROJ_MESU_MODAL: measurement nodes up to {placement.farthest:g} "
             "from the calculation cells (nearest cell taken)"
         )
-    seen, missed = fp.project_values(placement, basis.numbering.index, basis.shapes.T, sensors)
-    if missed:
-        ctx.error(f"{missed} measured components have no DOF in the basis", "BASE", calc)
-    return seen.T
+    return placement
 
 
 def _model_cells(model):

@@ -24,7 +24,7 @@ N_MODES = 3
 
 
 def _model(mesh) -> Model:
-    return Model(mesh=mesh, cell_modelisation={c: "DIS_T" for c in range(mesh.n_cells)})
+    return Model(mesh=mesh, cell_modelisation={c: "POU_D_E" for c in range(mesh.n_cells)})
 
 
 def _shape(x, k, component):
