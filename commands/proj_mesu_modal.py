@@ -1,12 +1,16 @@
 """PROJ_MESU_MODAL: the generalized coordinates on MODELE_CALCUL's BASE that
 best explain MODELE_MESURE's MESURE (code_aster's op0193).
 
-Sensors are the measured translations (DX, DY, DZ) of the measurement
-mesh: for identified modes (mode_meca) the components some mode moves
-(above 100 machine precisions), for a transient or harmonic measurement
-every translation its field carries. The basis is seen at the sensors by
-collocation of the measurement nodes in the calculation mesh's cells (as
-PROJ_CHAMP places them). Each measured state is solved as
+Sensors are the measured translations of the measurement mesh: for
+identified modes (mode_meca) the DX, DY, DZ some mode moves (above 100
+machine precisions), for a transient or harmonic measurement every DX, DY,
+DZ its field carries and every D1, D2, D3 along the direction its D1X..D3Z
+give (LIRE_RESU FORMAT='IDEAS_DS58'); or gauges, every measured component
+of SIEF_NOEU / EPSI_NOEU, compared with the basis' SIGM_NOEU / EPSI_NOEU
+(CALC_CHAMP). Measurement nodes are paired with the nearest calculation
+node when the calculation model has discrete elements, bars or pipes but
+no beams, plates or shells, else placed in its cells by collocation (as
+PROJ_CHAMP does); CORR_MANU pairs a node by hand. Each measured state is solved as
 asterlite.modal.measured_projection describes. The result is a mode_gene
 (measured modes: FREQ and the NOM_PARA parameters copied), a tran_gene
 (instants; velocities and accelerations by finite differences, or
@@ -30,6 +34,11 @@ from asterlite.modal import measured_projection as mp
 from asterlite.post import field_projection as fp
 
 _TRANSLATIONS = ("DX", "DY", "DZ")
+# gauges: the measured field, the basis field they are compared with, its components
+_GAUGES = {
+    "SIEF_NOEU": ("SIGM_NOEU", ("SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ")),
+    "EPSI_NOEU": ("EPSI_NOEU", ("EPXX", "EPYY", "EPZZ", "EPXY", "EPXZ", "EPYZ")),
+}
 _PLATES = ("DKT", "DST", "Q4G", "COQUE", "GRILLE", "MEMBRANE")
 _STRUCTURAL = ("DIS_", "2D_DIS_", "BARRE", "2D_BARRE", "CABLE", "TUYAU") + _PLATES
 
@@ -39,8 +48,6 @@ def run(ctx, kw):
     mesu = kw.factor("MODELE_MESURE")[0]
     basis, measured = calc["BASE"], mesu["MESURE"]
     names = _field_name(ctx, mesu)
-    for occ in kw.factor("CORR_MANU"):
-        ctx.unsupported("PROJ_MESU_MODAL with a manual node correspondence", "CORR_MANU", occ)
     if isinstance(measured, ComplexModeResult):
         ctx.unsupported("PROJ_MESU_MODAL of complex modes (mode_meca_c)", "MESURE", mesu)
     if not hasattr(basis, "shapes"):
@@ -52,8 +59,8 @@ def run(ctx, kw):
         ctx.error("the measured result does not lie on MODELE_MESURE's mesh", "MESURE", mesu)
 
     abscissas, values = _measured_states(ctx, mesu, measured, names)
-    sensors, data = _sensors(ctx, mesu, measured, values)
-    observation = _observation(ctx, calc, mesu, basis, sensors)
+    sensors, data = _sensors(ctx, mesu, measured, values, names[0])
+    observation = _observation(ctx, kw, calc, mesu, basis, sensors, names[0])
     resolution = _resolution(ctx, kw, basis.n_modes, abscissas)
     try:
         eta = mp.identify(observation, data, resolution)
@@ -73,11 +80,6 @@ def run(ctx, kw):
 
 def _field_name(ctx, mesu) -> list[str]:
     names = list(np.atleast_1d(mesu["NOM_CHAM"]))
-    for name in names:
-        if name in ("SIEF_NOEU", "EPSI_NOEU"):
-            ctx.unsupported(
-                f"PROJ_MESU_MODAL of measured {name} (strain or stress gauges)", "NOM_CHAM", mesu
-            )
     if len(names) > 1:
         ctx.unsupported("PROJ_MESU_MODAL with several NOM_CHAM", "NOM_CHAM", mesu)
     return names
@@ -87,6 +89,8 @@ def _measured_states(ctx, mesu, measured, names):
     """Abscissas (instants, frequencies) and the (n_states, n_dofs) values."""
     name = names[0]
     if isinstance(measured, ModeResult):
+        if name in _GAUGES:
+            ctx.unsupported(f"PROJ_MESU_MODAL of measured modes' {name}", "NOM_CHAM", mesu)
         if name != "DEPL":
             ctx.error(f"measured modes have no field {name}", "NOM_CHAM", mesu)
         return np.asarray(measured.frequencies, dtype=float), measured.shapes.T
@@ -101,12 +105,18 @@ def _measured_states(ctx, mesu, measured, names):
     return abscissas, np.asarray(measured.fields[name])
 
 
-def _sensors(ctx, mesu, measured, values):
+def _sensors(ctx, mesu, measured, values, name):
     """The sensors, (node, unit direction) each, and their (n_states,
     n_sensors) data: translations DX, DY, DZ, and for a transient or harmonic
     measurement D1, D2, D3 along the direction their D1X..D3Z give."""
     dofs = measured.numbering.dofs
     index = measured.numbering.index
+    if name in _GAUGES:
+        # every measured component of the gauges' tensor is a sensor
+        columns = [i for i, (_, c) in enumerate(dofs) if c in _GAUGES[name][1]]
+        if not columns:
+            ctx.error(f"the measurement has no {name} component", "MESURE", mesu)
+        return [dofs[i] for i in columns], values[:, columns]
     modes = isinstance(measured, ModeResult)
     kinds = _TRANSLATIONS if modes else _TRANSLATIONS + ("D1", "D2", "D3")
     columns = [i for i, (_, c) in enumerate(dofs) if c in kinds]
@@ -139,10 +149,11 @@ def _sensors(ctx, mesu, measured, values):
     return sensors, values[:, columns]
 
 
-def _observation(ctx, calc, mesu, basis, sensors) -> np.ndarray:
+def _observation(ctx, kw, calc, mesu, basis, sensors, name) -> np.ndarray:
     """The basis at the sensors, (n_sensors, n_modes): each measurement node
-    placed in the calculation cells (collocation), its translations
-    projected on the sensor's direction."""
+    paired with a calculation node or placed in the calculation cells (then
+    CORR_MANU's pairs); displacements projected on the sensor's direction,
+    gauges compared with the basis' stress or strain component."""
     calc_mesh = calc["MODELE"].mesh
     mesu_mesh = mesu["MODELE"].mesh
     nodes = np.unique([n for n, _ in sensors])
@@ -150,6 +161,14 @@ def _observation(ctx, calc, mesu, basis, sensors) -> np.ndarray:
         placement = _paired(ctx, mesu, calc_mesh, mesu_mesh, nodes)
     else:
         placement = _collocated(ctx, calc, mesu, calc_mesh, mesu_mesh, nodes)
+    for occ in kw.factor("CORR_MANU"):
+        measured_node = _one_node(ctx, occ, "NOEU_MESURE", mesu_mesh)
+        placement.nodes[measured_node] = (
+            np.array([_one_node(ctx, occ, "NOEU_CALCUL", calc_mesh)]),
+            np.ones(1),
+        )
+    if name in _GAUGES:
+        return _gauges_seen(ctx, calc, basis, placement, sensors, name)
     targets = [(n, c) for n, _ in sensors for c in _TRANSLATIONS]
     seen, _ = fp.project_values(
         placement, basis.numbering.index, basis.shapes.T, targets, default=np.nan
@@ -162,6 +181,39 @@ def _observation(ctx, calc, mesu, basis, sensors) -> np.ndarray:
             name = mesu_mesh.node_names[node]
             ctx.error(f"the basis has no translation at the sensor of node {name}", "BASE", calc)
         out[k] = direction[used] @ seen[k, used]
+    return out
+
+
+def _one_node(ctx, occ, keyword, mesh) -> int:
+    node = mesh.find_node(str(occ[keyword]))
+    if node is None:
+        ctx.error(f"no node {occ[keyword]} in the mesh", keyword, occ)
+    return int(node)
+
+
+def _gauges_seen(ctx, calc, basis, placement, sensors, name) -> np.ndarray:
+    """Each gauge's component of the basis' nodal stresses (SIGM_NOEU) or
+    strains (EPSI_NOEU, CALC_CHAMP on the basis), at its placed nodes."""
+    field_name, _ = _GAUGES[name]
+    field = (getattr(basis, "node_fields", None) or {}).get(field_name)
+    if field is None:
+        ctx.error(f"the basis has no {field_name} field (CALC_CHAMP)", "BASE", calc)
+    if field.values.shape[0] != basis.n_modes:
+        ctx.error(f"the basis' {field_name} is not computed for every mode", "BASE", calc)
+    rows = {int(n): k for k, n in enumerate(field.nodes)}
+    out = np.zeros((len(sensors), basis.n_modes))
+    for k, (node, component) in enumerate(sensors):
+        calc_nodes, weights = placement.nodes[int(node)]
+        if component not in field.components or any(int(n) not in rows for n in calc_nodes):
+            calc_name = basis.numbering.mesh.node_names[int(calc_nodes[0])]
+            ctx.error(
+                f"the basis' {field_name} has no {component} at node {calc_name}", "BASE", calc
+            )
+        column = field.components.index(component)
+        out[k] = sum(
+            w * np.real(field.values[:, rows[int(n)], column])
+            for n, w in zip(calc_nodes, weights, strict=True)
+        )
     return out
 
 
@@ -260,7 +312,7 @@ def _function_weights(ctx, occ, n_modes, abscissas) -> np.ndarray:
 
 
 def _transient(basis, times, eta, name) -> TranGene:
-    if name == "DEPL":
+    if name not in ("VITE", "ACCE"):  # displacements, or gauges
         depl = eta
         vite, acce = mp.time_derivatives(depl, times)
     elif name == "VITE":
@@ -285,10 +337,10 @@ def _transient(basis, times, eta, name) -> TranGene:
 def _harmonic(basis, frequencies, eta, name) -> HarmGene:
     iw = (2j * np.pi * frequencies)[:, None]
     eta = eta.astype(complex)
-    if name == "DEPL":
-        depl = eta
-    elif name == "VITE":
+    if name == "VITE":
         depl = np.divide(eta, iw, out=np.zeros_like(eta), where=iw != 0)
+    elif name != "ACCE":
+        depl = eta
     else:
         depl = np.divide(eta, iw**2, out=np.zeros_like(eta), where=iw != 0)
     return HarmGene(

@@ -160,18 +160,36 @@ def test_refused_forms_are_named(setup):
         generalized_mass=np.ones(1),
         generalized_stiffness=np.ones(1),
     )
-    with pytest.raises(UnsupportedError, match="CORR_MANU"):
-        _call(
-            calc_mesh,
-            sensor_mesh,
-            basis,
-            measured,
-            CORR_MANU={"NOEU_CALCUL": "N1", "NOEU_MESURE": "N1"},
-        )
     with pytest.raises(UnsupportedError, match="EPSI_NOEU"):
         _call(calc_mesh, sensor_mesh, basis, measured, mesu={"NOM_CHAM": "EPSI_NOEU"})
     with pytest.raises(CommandError, match="no parameter AMOR_REDUIT"):
         _call(calc_mesh, sensor_mesh, basis, measured, NOM_PARA="AMOR_REDUIT")
+
+
+def test_corr_manu_pairs_a_measurement_node_with_a_calculation_node(setup):
+    calc_mesh, sensor_mesh, basis, numbering, seen = setup
+    moved = seen.copy()
+    for i, (node, component) in enumerate(numbering.dofs):
+        if node == 0 and component != "DRZ":  # sensor N1 read at calculation node N4
+            moved[i] = basis.shapes[basis.numbering.index[(3, component)]]
+    eta = np.array([[0.5, -1.0, 2.0]])
+    measured = ModeResult(
+        numbering=numbering,
+        shapes=moved @ eta.T,
+        frequencies=np.ones(1),
+        generalized_mass=np.ones(1),
+        generalized_stiffness=np.ones(1),
+    )
+    result = _call(
+        calc_mesh,
+        sensor_mesh,
+        basis,
+        measured,
+        CORR_MANU={"NOEU_CALCUL": "N4", "NOEU_MESURE": "N1"},
+    )
+    np.testing.assert_allclose(result.vectors.T, eta, atol=1e-12)
+    plain = _call(calc_mesh, sensor_mesh, basis, measured)
+    assert np.abs(plain.vectors.T - eta).max() > 1e-3
 
 
 # -- the solver alone -----------------------------------------------------------------
