@@ -185,3 +185,48 @@ def test_harmonic_ds58_file(tmp_path):
     np.testing.assert_allclose(
         result.fields["DEPL"][:, result.numbering.index[(1, "D1")]], [1 - 1j, 2 + 0.5j, 3.0]
     )
+
+
+def test_gauges_compared_with_the_basis_nodal_stresses():
+    """Measured SIEF_NOEU (SIXX at one node, SIYY at another) explained by the
+    basis' SIGM_NOEU at the paired calculation nodes."""
+    from asterlite.concepts.assembly import NodalComponentField
+
+    calc = line([0.0, 1.0, 2.0])
+    sensors = line([0.1, 1.9])  # nearest: calculation nodes 0 and 2
+    basis = _spring_basis(calc)
+    stresses = np.zeros((2, 3, 2))  # (modes, nodes, [SIXX, SIYY])
+    stresses[0] = [[1.0, 0.0], [0.0, 0.0], [0.5, 2.0]]
+    stresses[1] = [[3.0, 0.0], [0.0, 0.0], [0.0, -1.0]]
+    basis.node_fields = {
+        "SIGM_NOEU": NodalComponentField("SIGM_NOEU", np.arange(3), ("SIXX", "SIYY"), stresses)
+    }
+    times = np.linspace(0.0, 1.0, 4)
+    eta = np.column_stack([times, 1.0 - times**2])
+    dofs = [(0, "SIXX"), (1, "SIXX"), (1, "SIYY")]
+    seen = np.array([[1.0, 3.0], [0.5, 0.0], [2.0, -1.0]])
+    measured = DynaTrans(
+        numbering=DofNumbering(mesh=sensors, dofs=dofs),
+        times=times,
+        order=np.arange(1, 5),
+        fields={"SIEF_NOEU": eta @ seen.T},
+    )
+    result = validated_run(
+        FakeSession(),
+        "PROJ_MESU_MODAL",
+        MODELE_CALCUL={"MODELE": _discrete(calc), "BASE": basis},
+        MODELE_MESURE={"MODELE": _discrete(sensors), "MESURE": measured, "NOM_CHAM": "SIEF_NOEU"},
+    )
+    np.testing.assert_allclose(result.depl, eta, atol=1e-12)
+    del basis.node_fields
+    with pytest.raises(CommandError, match="no SIGM_NOEU field"):
+        validated_run(
+            FakeSession(),
+            "PROJ_MESU_MODAL",
+            MODELE_CALCUL={"MODELE": _discrete(calc), "BASE": basis},
+            MODELE_MESURE={
+                "MODELE": _discrete(sensors),
+                "MESURE": measured,
+                "NOM_CHAM": "SIEF_NOEU",
+            },
+        )
