@@ -237,3 +237,38 @@ def test_svd_threshold_drops_small_singular_values():
     rhs = np.array([4.0, 2.0, 1.0])
     np.testing.assert_allclose(mp.svd_solve(matrix, rhs, 1e-6), [1.0, 2.0, 0.0])
     np.testing.assert_allclose(mp.svd_solve(matrix, rhs, 0.0), [1.0, 2.0, 1e9])
+
+
+def test_identified_results_restore_on_the_calculation_model(setup):
+    """REST_GENE_PHYS of the harm_gene and of the mode_gene: the basis
+    combined with the identified coordinates."""
+    calc_mesh, sensor_mesh, basis, numbering, seen = setup
+    freqs = np.array([1.0, 2.0])
+    eta = np.array([[1 + 1j, 0.5, -2j], [0.1, 0.2j, 3.0]])
+    harmonic = DynaHarmo(
+        numbering=numbering, frequencies=freqs, order=np.arange(1, 3), fields={"DEPL": eta @ seen.T}
+    )
+    restored = validated_run(
+        FakeSession(),
+        "REST_GENE_PHYS",
+        RESU_GENE=_call(calc_mesh, sensor_mesh, basis, harmonic),
+        TOUT_CHAM="OUI",
+        TOUT_ORDRE="OUI",
+    )
+    np.testing.assert_allclose(restored.fields["DEPL"], eta @ basis.shapes.T, atol=1e-12)
+    modes = ModeResult(
+        numbering=numbering,
+        shapes=seen @ eta.real.T,
+        frequencies=freqs,
+        generalized_mass=np.ones(2),
+        generalized_stiffness=np.ones(2),
+    )
+    restored = validated_run(
+        FakeSession(),
+        "REST_GENE_PHYS",
+        RESU_GENE=_call(calc_mesh, sensor_mesh, basis, modes),
+        TOUT_ORDRE="OUI",
+        NOM_CHAM="DEPL",
+    )
+    np.testing.assert_allclose(restored.shapes, basis.shapes @ eta.real.T, atol=1e-12)
+    np.testing.assert_allclose(restored.frequencies, freqs)
