@@ -15,7 +15,14 @@ asterlite.modal.measured_projection describes. The result is a mode_gene
 (measured modes: FREQ and the NOM_PARA parameters copied), a tran_gene
 (instants; velocities and accelerations by finite differences, or
 displacements integrated from measured VITE / ACCE as code_aster does) or
-a harm_gene (frequencies; VITE = iω DEPL, ACCE = -ω² DEPL).
+a harm_gene (frequencies; VITE = iω DEPL, ACCE = -ω² DEPL; measured VITE or
+ACCE give DEPL = VITE / iω or -ACCE / ω²: code_aster's mpinvc multiplies by
+-iω there, with ω taken past the last frequency, which is not kept).
+
+Two more departures from op0193, both where its result is not the least-
+squares solution it means: with fewer sensors than modes and no weight the
+minimum-norm coordinates Hᵀ(HHᵀ)⁺y are taken whole (mpinvr keeps only the
+last sensor's term); complex measured modes (mode_meca_c) are refused.
 """
 
 from __future__ import annotations
