@@ -1,4 +1,5 @@
-"""LIRE_RESU: a result built from fields of a MED file.
+"""LIRE_RESU: a result built from fields of a MED file (universal files:
+datasets 55 below, datasets 58 in lire_resu_ds58).
 
 FORMAT='MED', TYPE_RESU 'MODE_MECA' or 'DYNA_TRANS', nodal fields (DEPL,
 VITE, ACCE) named by NOM_CHAM_MED or by the prefix NOM_RESU (code_aster's
@@ -22,6 +23,7 @@ masses and stiffnesses are computed from them (zero without them).
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands import lire_resu_ds58
 
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.harmonic import DynaHarmo
@@ -39,6 +41,8 @@ _NODAL = ("DEPL", "VITE", "ACCE")
 def run(ctx, kw):
     if kw["FORMAT"] == "IDEAS":
         return _read_ideas(ctx, kw)
+    if kw["FORMAT"] == "IDEAS_DS58":
+        return lire_resu_ds58.read(ctx, kw, _input(ctx, kw))
     if kw["FORMAT"] != "MED":
         ctx.unsupported(f"LIRE_RESU FORMAT={kw['FORMAT']!r}", "FORMAT", kw)
     kind = kw["TYPE_RESU"]
