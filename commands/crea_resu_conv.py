@@ -24,6 +24,7 @@ import numpy as np
 
 from asterlite.concepts.static_result import EvolChar
 from asterlite.concepts.transient import DynaTrans
+from asterlite.fem.loads import load_history, load_terms
 from asterlite.fem.selection import as_tuple, node_group_members
 from asterlite.modal.renumber import transfer
 
@@ -227,8 +228,9 @@ def conv_char(ctx, kw):
     AFFE_CHAR_MECA_F/ONDE_PLANE at that instant; imposed displacements are
     no force) assembled on MATR_RIGI's numbering, stored as DEPL in a
     dyna_trans or FORC_NODA in an evol_char."""
+    from asterlite.commands.dyna_vibra_phys import history_rows
+
     from asterlite.fem.assemble import assemble_terms
-    from asterlite.fem.loads import load_history, load_terms
 
     occ = kw.factor("CONV_CHAR")[0]
     if ctx.reuse is not None:
@@ -256,15 +258,7 @@ def conv_char(ctx, kw):
         if history is None:
             continue
         nodes, components, forces = history(instants)
-        rows = numbering.dof_indices(nodes, components)
-        if np.any(rows < 0):
-            k = int(np.flatnonzero(rows < 0)[0])
-            ctx.error(
-                f"load on DOFs the numbering does not have: {components[k]} of node "
-                f"{numbering.mesh.node_names[nodes[k]]}",
-                "CHARGE",
-                occ,
-            )
+        rows = history_rows(ctx, numbering, nodes, components, occ)
         for k in range(instants.size):
             np.add.at(values[k], rows, forces[k])
     count = len(as_tuple(occ["CHARGE"]))

@@ -412,6 +412,14 @@ def _numbered_history(ctx, history, numbering, occ):
     if history is None:
         return None
     nodes, components, _ = history(np.zeros(1))
+    return LoadHistory(
+        history_rows(ctx, numbering, nodes, components, occ), lambda times: history(times)[2]
+    )
+
+
+def history_rows(ctx, numbering, nodes, components, occ) -> np.ndarray:
+    """The numbering's rows of a load history's (node, component) terms; an
+    error at the occurrence's CHARGE for a term the numbering lacks."""
     rows = numbering.dof_indices(nodes, components)
     if np.any(rows < 0):
         k = int(np.flatnonzero(rows < 0)[0])
@@ -421,7 +429,7 @@ def _numbered_history(ctx, history, numbering, occ):
             "CHARGE",
             occ,
         )
-    return LoadHistory(rows, lambda times: history(times)[2])
+    return rows
 
 
 def physical_supports(ctx, kw, numbering) -> list[dict]:

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from asterlite.concepts.mesh import Mesh
+from asterlite.fem.solid_reference import FACE_CELLS, REFERENCE_ELEMENTS, VOLUME_CELLS
 
 _DIMENSION = {
     "POI1": 0,
@@ -186,8 +187,6 @@ def _locate(cell_type, coords, conn, point, size):
 
 
 def _reference(cell_type: str):
-    from asterlite.fem.solid_reference import FACE_CELLS, REFERENCE_ELEMENTS, VOLUME_CELLS
-
     kind = VOLUME_CELLS.get(cell_type) or FACE_CELLS.get(cell_type)
     if kind is None:
         raise ProjectionUnsupported(f"interpolation inside {cell_type} cells")
