@@ -66,7 +66,10 @@ def run(ctx, kw):
             visco["RHO"] = float(occ["RHO"])
         behaviours["ELAS_VISCO"] = visco
         ctx.log("material ELAS_VISCO: " + ", ".join(f"{k}={v:g}" for k, v in visco.items()))
-    for keyword in ("ECRO_LINE", "ECRO_LINE_FO", "TRACTION", "THER", "THER_FO", "THER_NL"):
+    for keyword in (
+        *("ECRO_LINE", "ECRO_LINE_FO", "TRACTION", "THER", "THER_FO", "THER_NL"),
+        "DIS_CONTACT",
+    ):
         for occ in kw.factor(keyword):
             behaviours[keyword] = dict(occ)
     for occ in kw.factor("FATIGUE"):
