@@ -394,7 +394,8 @@ def _result_load(ctx, occ, numbering):
     read as code_aster's dlnew0 reads it: the stored field at an instant the
     result holds (1e-9 relative, 1e-12 absolute at 0), else linear between the
     fields of orders i and i+1 that bracket the instant; before the instant
-    of order 1, the field of order 1; after the last, the last field."""
+    of order 1, the field of order 1; after the last, the last field (orders
+    0, 1, 2... as a physical transient archives them, or 1, 2...)."""
     from asterlite.dynamics.physical.system import Load, LoadHistory
 
     result = occ["RESULTAT"]
@@ -416,6 +417,9 @@ def _result_load(ctx, occ, numbering):
             return values[hits[0]]
         for i in range(1, count):
             left, right = by_order[i - 1], by_order[i]
+            if right is None and i == count - 1:
+                # orders 0..n-1: code_aster's last order i+1 is the last field
+                right = count - 1
             if left is None or right is None:
                 ctx.error(
                     f"the result's orders are not 0, 1, 2...: order {i if left is None else i + 1} "
