@@ -12,13 +12,14 @@ displacements:
   taking -F and the second +F; out of contact none;
 - a point: ``d = u1x + JEU - DIST_1``, the force ``(min(RIGI_NOR d, 0), K22 u1y,
   K33 u1z)`` on its node;
+- rotations (DIS_TR) take, in contact, the forces of the element's matrix
+  whose diagonal springs are code_aster's (K11 replaced by RIGI_NOR);
 - the result is that force (in the global frame) minus the linear element's
   K u; a force whose normal part is below machine precision counts as none.
   On a segment, code_aster then keeps the second node's values only.
 
 RIGI_NOR defaults to K11. Friction (COULOMB > 0), the corner contact
-(CONTACT='COIN_2D'), parallel springs (KP, KT...) and elements with
-rotations are refused by name.
+(CONTACT='COIN_2D') and parallel springs (KP, KT...) are refused by name.
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ from asterlite.fem.elements import cell_frames
 from asterlite.fem.frames import block_rotation
 
 EPS = float(np.finfo(float).eps)
-CONTACT_MODELISATIONS = ("DIS_T", "2D_DIS_T")
+CONTACT_MODELISATIONS = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
 
 
 def _contact_law(material, cell_name: str) -> dict:
@@ -76,44 +77,58 @@ def dis_choc_nodal_forces(
             )
         law = _contact_law(materials.material_of(int(cell)), name)
         dofs = MODELISATION_COMPONENTS[modelisation]
-        dim = len(dofs)
+        per_node = len(dofs)
+        dim = 2 if modelisation.startswith("2D_") else 3
         nodes = list(mesh.cell_nodes[int(cell)])
         n_nodes = len(nodes)
-        rows = numbering.dof_indices(np.repeat(nodes, dim), list(dofs) * n_nodes)
+        rows = numbering.dof_indices(np.repeat(nodes, per_node), list(dofs) * n_nodes)
         if np.any(rows < 0):
             raise ElementError(f"cell {name}: its DOFs are not all in the result's numbering")
         rotation = block_rotation(frames[k : k + 1], dofs, n_nodes)[0]
         assignment = (characteristics.discrete.get(int(cell), {}) if characteristics else {}).get(
             "K"
         )
+        size = per_node * n_nodes
         if assignment is None:
-            stiffness = np.zeros((dim * n_nodes, dim * n_nodes))
+            stiffness = np.zeros((size, size))
         else:
-            matrix = local_matrix(
-                assignment.cara, assignment.values, len(dofs), assignment.symmetric
-            )
+            matrix = local_matrix(assignment.cara, assignment.values, dim, assignment.symmetric)
             stiffness = matrix if assignment.repere == "LOCAL" else rotation @ matrix @ rotation.T
-        local = values[:, rows] @ rotation.T  # (n_orders, n_nodes * dim)
-        linear = local @ stiffness.T
-        normal = float(law.get("RIGI_NOR") if law.get("RIGI_NOR") is not None else stiffness[0, 0])
+        local = values[:, rows] @ rotation.T  # (n_orders, size)
+        springs = np.diag(stiffness)[:per_node].copy()  # code_aster's raide
+        normal = float(law["RIGI_NOR"]) if law.get("RIGI_NOR") is not None else springs[0]
         dist_1 = float(law.get("DIST_1") or 0.0)
         if n_nodes == 2:
             coords = np.asarray(mesh.coords[nodes], dtype=float)
             span = (coords[1] - coords[0]) @ frames[k][0][: coords.shape[1]]
-            relative = local[:, dim:] - local[:, :dim]
+            relative = local[:, per_node:] - local[:, :per_node]
             gap = span + relative[:, 0] - (dist_1 + float(law.get("DIST_2") or 0.0)) - EPS
         else:
             relative = local
             gap = relative[:, 0] + float(law.get("JEU") or 0.0) - dist_1
         force = np.zeros((values.shape[0], dim))
-        touching = gap <= 0.0
-        force[:, 0] = np.where(touching, np.minimum(normal * gap, 0.0), 0.0)
+        force[:, 0] = np.minimum(normal * gap, 0.0)
         for c in range(1, dim):
-            force[:, c] = np.where(touching, stiffness[c, c] * relative[:, c], 0.0)
-        force[np.abs(force[:, 0]) < EPS] = 0.0
-        contact = np.concatenate([-force, force], axis=1) if n_nodes == 2 else force
-        nodal = (contact - linear) @ rotation  # back to the global frame
+            force[:, c] = springs[c] * relative[:, c]
+        acting = (gap <= 0.0) & (np.abs(force[:, 0]) >= EPS)
+        # in contact, the element's matrix with its diagonal springs (normal
+        # one RIGI_NOR) gives the rotations' forces; the translations take F
+        contact_matrix = stiffness.copy()
+        springs[0] = normal
+        for c in range(per_node):
+            for a in range(n_nodes):
+                contact_matrix[a * per_node + c, a * per_node + c] = springs[c]
+            if n_nodes == 2:
+                contact_matrix[c, per_node + c] = contact_matrix[per_node + c, c] = -springs[c]
+        contact = local @ contact_matrix.T
         if n_nodes == 2:
-            nodal[:, :dim] = 0.0
+            contact[:, :dim] = -force
+            contact[:, per_node : per_node + dim] = force
+        else:
+            contact[:, :dim] = force
+        contact[~acting] = 0.0
+        nodal = (contact - local @ stiffness.T) @ rotation  # back to the global frame
+        if n_nodes == 2:
+            nodal[:, :per_node] = 0.0
         np.add.at(out, (slice(None), rows), nodal)
     return out
