@@ -8,7 +8,8 @@ the total. Translations take the given values times the weight. Rotations
 take, times the weight, the given rotational value less what the nodes'
 translation springs already give about the centre (GROUP_NO_CENTRE or
 COOR_CENTRE): KRX - Σ w (KY z² + KZ y²), and likewise about y and z. Each
-POI1 cell of GROUP_MA_POI1 gets the values of its node."""
+POI1 cell of GROUP_MA_POI1 gets the values (*_N) of its node; each SEG2 cell
+of GROUP_MA_SEG2 (*_L) those of the first of its nodes on the surface."""
 
 from __future__ import annotations
 
@@ -86,7 +87,7 @@ def node_weights(ctx, mesh, occ) -> tuple[list[int], np.ndarray]:
 
 def rigi_parasol(ctx, model, result, occ) -> None:
     mesh = model.mesh
-    for name in ("FONC_GROUP", "GROUP_MA_SEG2", "UNITE"):
+    for name in ("FONC_GROUP", "UNITE"):
         if occ.get(name) is not None:
             ctx.unsupported(f"RIGI_PARASOL/{name}", name, occ)
     if mesh.dim != 3:
@@ -102,26 +103,41 @@ def rigi_parasol(ctx, model, result, occ) -> None:
     offsets = coords[nodes] - centre
     repere = as_scalar(occ.get("REPERE")) or "GLOBAL"
     values = np.asarray(as_tuple(occ["VALE"]), dtype=float)
-    poi1_group = as_scalar(occ["GROUP_MA_POI1"])
-    if poi1_group not in mesh.cell_groups:
-        ctx.error(f"the mesh has no cell group {poi1_group!r}", "GROUP_MA_POI1", occ)
-    poi1 = mesh.cell_groups[poi1_group].tolist()
-    if len(poi1) != len(nodes):
+    support_key = "GROUP_MA_POI1" if occ.get("GROUP_MA_POI1") is not None else "GROUP_MA_SEG2"
+    support_group = as_scalar(occ[support_key])
+    if support_group not in mesh.cell_groups:
+        ctx.error(f"the mesh has no cell group {support_group!r}", support_key, occ)
+    supports = mesh.cell_groups[support_group].tolist()
+    if len(supports) != len(nodes):
         ctx.error(
-            f"{poi1_group} has {len(poi1)} cells for the {len(nodes)} nodes of the surface",
-            "GROUP_MA_POI1",
+            f"{support_group} has {len(supports)} cells for the {len(nodes)} nodes of the surface",
+            support_key,
             occ,
         )
+    # a support cell carries the values of the first of its nodes on the surface
+    surface_nodes = set(nodes)
     cell_of_node = {}
-    for cell in poi1:
-        if mesh.cell_types[cell] != "POI1":
+    wanted_type = "POI1" if support_key == "GROUP_MA_POI1" else "SEG2"
+    for cell in supports:
+        if mesh.cell_types[cell] != wanted_type:
             ctx.error(
-                f"cell {mesh.cell_names[cell]} of {poi1_group} is not a POI1", "GROUP_MA_POI1", occ
+                f"cell {mesh.cell_names[cell]} of {support_group} is not a {wanted_type}",
+                support_key,
+                occ,
             )
-        cell_of_node[int(mesh.cell_nodes[cell][0])] = int(cell)
+        on_surface = [int(n) for n in mesh.cell_nodes[cell] if int(n) in surface_nodes]
+        if not on_surface:
+            ctx.error(
+                f"cell {mesh.cell_names[cell]} of {support_group} has no node on the surface",
+                support_key,
+                occ,
+            )
+        cell_of_node[on_surface[0]] = int(cell)
     start = 0
     for cara in as_tuple(occ["CARA"]):
         rotations = "_TR_" in cara
+        if cara.endswith("_N") != (support_key == "GROUP_MA_POI1"):
+            ctx.error(f"{cara} does not fit the cells of {support_key}", "CARA", occ)
         count = 6 if rotations else 3
         given = values[start : start + count]
         if given.size != count:
@@ -148,8 +164,8 @@ def rigi_parasol(ctx, model, result, occ) -> None:
             cell = cell_of_node.get(node)
             if cell is None:
                 ctx.error(
-                    f"node {mesh.node_names[node]} of the surface has no POI1 cell in {poi1_group}",
-                    "GROUP_MA_POI1",
+                    f"node {mesh.node_names[node]} of the surface has no cell in {support_group}",
+                    support_key,
                     occ,
                 )
             modelisation = model.cell_modelisation.get(cell)
