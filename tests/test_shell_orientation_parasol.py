@@ -63,6 +63,24 @@ def test_without_vector_the_first_cell_leads_and_unreached_cells_fail():
         orient_shells(apart, [0, 1], (0, 0, 1.0), node=0)
 
 
+def test_segments_turn_to_the_vector_and_follow_their_neighbours():
+    # N1 -> N2 -> N3 along x, the second segment given backwards (N3 -> N2)
+    mesh = Mesh(
+        coords=np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0]], dtype=float),
+        node_names=["N1", "N2", "N3"],
+        cell_names=["S1", "S2"],
+        cell_types=["SEG2", "SEG2"],
+        cell_nodes=[(0, 1), (2, 1)],
+        node_groups={},
+        cell_groups={},
+    )
+    # a segment's normal is (y2 - y1, x1 - x2): -y for N1 -> N2, +y for N3 -> N2
+    assert orient_shells(mesh, [0, 1], (0, 1.0, 0), node=0) == 1
+    assert mesh.cell_nodes[0] == (1, 0) and mesh.cell_nodes[1] == (2, 1)
+    assert orient_shells(mesh, [0, 1], (0, -1.0, 0), node=0) == 2
+    assert mesh.cell_nodes[0] == (0, 1) and mesh.cell_nodes[1] == (1, 2)
+
+
 def test_command_orients_the_group():
     session = FakeSession()
     mesh = two_quads(second=(1, 4, 5, 2))

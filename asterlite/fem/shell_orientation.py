@@ -2,13 +2,16 @@
 orvlma/ornorm).
 
 A cell's normal is that of its vertex order, (P2 - P1) x (Pn - P1) at a
-vertex. With VECT_NORM, each cell holding the given node is turned so that
-its normal at that node points along the vector; without it, the first cell
-of the group is kept as it is. The orientation then spreads to the cells
+vertex; a segment's (plane lines: SEG2, SEG3) is its tangent P1 -> P2 turned
+by -90 degrees in the xy plane, (y2 - y1, x1 - x2). With VECT_NORM, each
+cell holding the given node is turned so that its normal at that node points
+along the vector; without it, the first cell of the group is kept as it is. The orientation then spreads to the cells
 sharing an edge with an oriented cell: a neighbour that runs the shared edge
 the same way is reversed. Every cell must be reached (one connected surface
 per starting cell). Reversing keeps the first vertex, reverses the others,
-and the mid-side nodes follow their edges.
+and the mid-side nodes follow their edges; a segment swaps its ends, and
+segments spread through their shared ends (a neighbour starting where the
+cell starts, or ending where it ends, is reversed).
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ from collections import deque
 import numpy as np
 
 VERTICES = {"TRIA3": 3, "TRIA6": 3, "TRIA7": 3, "QUAD4": 4, "QUAD8": 4, "QUAD9": 4}
+SEGMENTS = ("SEG2", "SEG3")
 
 
 class ShellOrientationError(ValueError):
@@ -28,6 +32,9 @@ def reversed_nodes(nodes: tuple, vertices: int) -> tuple:
     """The cell's nodes in the reverse order (code_aster's swap of vertex 2
     and the last vertex, and of the mid-side nodes in pairs)."""
     out = list(nodes)
+    if vertices == 2:
+        out[0], out[1] = out[1], out[0]
+        return tuple(out)
     out[1], out[vertices - 1] = out[vertices - 1], out[1]
     if len(out) > vertices:
         for i in range(1, vertices // 2 + 1):
@@ -50,23 +57,29 @@ def orient_shells(mesh, cells, vector=None, node: int | None = None) -> int:
     coords = np.asarray(mesh.coords, dtype=float)
     if coords.shape[1] < 3:
         coords = np.pad(coords, ((0, 0), (0, 3 - coords.shape[1])))
+    kinds = set()
     for cell in cells:
-        if mesh.cell_types[cell] not in VERTICES:
+        if mesh.cell_types[cell] not in VERTICES and mesh.cell_types[cell] not in SEGMENTS:
             raise ShellOrientationError(
                 f"cell {mesh.cell_names[cell]} is a {mesh.cell_types[cell]}: ORIE_NORM_COQUE "
-                "orients triangles and quadrangles"
+                "orients segments, triangles and quadrangles"
             )
+        kinds.add(mesh.cell_types[cell] in SEGMENTS)
+    if len(kinds) > 1:
+        raise ShellOrientationError("the group mixes segments and surface cells")
+    lines = kinds == {True}
     members = set(cells)
     reversed_count = 0
 
+    def count_of(cell: int) -> int:
+        return 2 if lines else VERTICES[mesh.cell_types[cell]]
+
     def corners(cell: int) -> list[int]:
-        return list(mesh.cell_nodes[cell][: VERTICES[mesh.cell_types[cell]]])
+        return list(mesh.cell_nodes[cell][: count_of(cell)])
 
     def reverse(cell: int) -> None:
         nonlocal reversed_count
-        mesh.cell_nodes[cell] = reversed_nodes(
-            tuple(mesh.cell_nodes[cell]), VERTICES[mesh.cell_types[cell]]
-        )
+        mesh.cell_nodes[cell] = reversed_nodes(tuple(mesh.cell_nodes[cell]), count_of(cell))
         reversed_count += 1
 
     oriented: set[int] = set()
@@ -77,7 +90,11 @@ def orient_shells(mesh, cells, vector=None, node: int | None = None) -> int:
             vertices = corners(cell)
             if node not in vertices:
                 continue
-            scal = float(_vertex_normal(coords, vertices, vertices.index(node)) @ direction)
+            if lines:
+                a, b = coords[vertices[0]], coords[vertices[1]]
+                scal = float((b[1] - a[1]) * direction[0] + (a[0] - b[0]) * direction[1])
+            else:
+                scal = float(_vertex_normal(coords, vertices, vertices.index(node)) @ direction)
             if scal == 0.0:
                 raise ShellOrientationError(
                     f"cell {mesh.cell_names[cell]}: its normal is orthogonal to VECT_NORM"
@@ -107,6 +124,14 @@ def orient_shells(mesh, cells, vector=None, node: int | None = None) -> int:
                 if other not in members:
                     continue
                 theirs = corners(other)
+                if lines:
+                    if edges[0] == theirs[0] or edges[1] == theirs[1]:
+                        reverse(other)
+                    elif edges[0] != theirs[1] and edges[1] != theirs[0]:
+                        continue
+                    oriented.add(other)
+                    queue.append(other)
+                    continue
                 their_edges = [
                     (theirs[i], theirs[(i + 1) % len(theirs)]) for i in range(len(theirs))
                 ]
