@@ -111,3 +111,27 @@ def test_vect_asse_load_acts_as_its_forces():
         solutions.append(result.fields["DEPL"][0])
     assert np.abs(solutions[0]).max() > 0.0
     np.testing.assert_allclose(solutions[1], solutions[0], rtol=1e-12)
+
+
+def test_generalized_results_both_ways():
+    from asterlite.concepts.harmonic import HarmGene
+    from asterlite.concepts.transient import TranGene
+
+    session = FakeSession()
+    basis = object()
+    spectra = np.zeros((9, 2), complex)
+    spectra[2] = [1.0 - 2.0j, 0.5j]
+    harmonic = HarmGene(basis=basis, numbering=None, frequencies=0.5 * np.arange(9),
+                        order=np.arange(1, 10), fields={"DEPL": spectra})  # fmt: skip
+    transient = run(session, "REST_SPEC_TEMP", RESU_GENE=harmonic, METHODE="PROL_ZERO",
+                    SYMETRIE="NON", N_PUIS=0)  # fmt: skip
+    assert isinstance(transient, TranGene) and transient.basis is basis
+    assert transient.order[0] == 0 and transient.times.size == 32
+    assert not transient.vite.any() and not transient.acce.any()  # not computed: zero
+    t = transient.times
+    expected = 2.0 * (spectra[2][None, :] * np.exp(2j * np.pi * 1.0 * t[:, None])).real / 32
+    np.testing.assert_allclose(transient.depl, expected, atol=1e-15)
+    back = run(session, "REST_SPEC_TEMP", RESU_GENE=transient, METHODE="PROL_ZERO",
+               SYMETRIE="NON", N_PUIS=0, NOM_CHAM=("DEPL",))  # fmt: skip
+    assert isinstance(back, HarmGene) and list(back.fields) == ["DEPL"]
+    np.testing.assert_allclose(back.fields["DEPL"][:9], spectra, atol=1e-14)
