@@ -2,6 +2,7 @@
 
 from asterlite.catalog import (
     AU_MOINS_UN,
+    BLOC,
     ENSEMBLE,
     EXCLUS,
     FACT,
@@ -10,6 +11,7 @@ from asterlite.catalog import (
     PRESENT_PRESENT,
     SIMP,
     UN_PARMI,
+    equal_to,
 )
 
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
@@ -24,7 +26,7 @@ DEFI_MATERIAU = MACRO(
         EXCLUS("ECRO_LINE", "ECRO_LINE_FO"),
         AU_MOINS_UN(
             *("ELAS", "ELAS_FO", "ELAS_VISCO", "ECRO_LINE", "ECRO_LINE_FO", "TRACTION"),
-            *("THER", "THER_FO", "THER_NL", "FATIGUE"),
+            *("THER", "THER_FO", "THER_NL", "FATIGUE", "DIS_CONTACT"),
         ),
     ),
     MATER=SIMP(statut="f", typ="mater_sdaster"),
@@ -156,6 +158,32 @@ DEFI_MATERIAU = MACRO(
         E_REFE=SIMP(statut="f", typ="R"),
         D0=SIMP(statut="f", typ="R"),
         TAU0=SIMP(statut="f", typ="R"),
+    ),
+    # the contact law of a discrete element (relation DIS_CHOC of a non-linear
+    # computation): kept with the material; linear assemblies take the
+    # element's stiffness from AFFE_CARA_ELEM, as code_aster does
+    DIS_CONTACT=FACT(
+        statut="f",
+        fr="Contact law of a discrete element (normal stiffness, gaps, friction)",
+        regles=(PRESENT_ABSENT("DIST_2", "JEU"),),
+        RIGI_NOR=SIMP(statut="f", typ="R"),
+        RIGI_TAN=SIMP(statut="f", typ="R"),
+        AMOR_NOR=SIMP(statut="f", typ="R"),
+        AMOR_TAN=SIMP(statut="f", typ="R"),
+        KP=SIMP(statut="f", typ="R", defaut=0.0),
+        KT=SIMP(statut="f", typ="R", defaut=0.0),
+        KT1=SIMP(statut="f", typ="R", defaut=0.0),
+        KT2=SIMP(statut="f", typ="R", defaut=0.0),
+        COULOMB=SIMP(statut="f", typ="R", val_min=0.0),
+        DIST_1=SIMP(statut="f", typ="R", val_min=0.0),
+        DIST_2=SIMP(statut="f", typ="R", val_min=0.0),
+        JEU=SIMP(statut="f", typ="R", val_min=0.0),
+        INST_COMP_INIT=SIMP(statut="f", typ="R", max=2, min=2),
+        CONTACT=SIMP(statut="f", typ="TXM", into=("1D", "COIN_2D"), defaut="1D"),
+        b_coin_2d=BLOC(
+            condition=equal_to("CONTACT", "COIN_2D"),
+            PRECISION=SIMP(statut="o", typ="R", min=3, max=3),
+        ),
     ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )

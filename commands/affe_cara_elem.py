@@ -5,6 +5,7 @@ other keywords are kept for the rooms that compute them."""
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands.affe_cara_elem_parasol import rigi_parasol
 
 from asterlite.concepts.assembly import DiscreteAssignment, ElementCharacteristics
 from asterlite.fem.beam import BeamError, seg2_angles
@@ -35,7 +36,6 @@ _OTHER_KEYWORDS = (
     "GRILLE",
     "MEMBRANE",
     "MASS_REP",
-    "RIGI_PARASOL",
     "MASS_AJOU",
     "GENE_TUYAU",
     "POUTRE_FLUI",
@@ -343,6 +343,8 @@ def run(ctx, kw):
         _discrete(ctx, model, result, occ, 3, "DISCRET")
     for occ in kw.factor("DISCRET_2D"):
         _discrete(ctx, model, result, occ, 2, "DISCRET_2D")
+    for occ in kw.factor("RIGI_PARASOL"):
+        rigi_parasol(ctx, model, result, occ)
     for occ in kw.factor("POUTRE"):
         _poutre(ctx, model, result, occ)
     for occ in kw.factor("BARRE"):

@@ -687,8 +687,27 @@ def run(ctx, kw):
         }
     if kw.get("EVOL_CHAR") is not None:
         _evol_char(ctx, model, load, kw)
+    if kw.get("VECT_ASSE") is not None:
+        _vect_asse(ctx, load, kw)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load
+
+
+def _vect_asse(ctx, load, kw) -> None:
+    """VECT_ASSE: an assembled vector taken as the load's nodal forces, DOF by
+    DOF (code_aster adds it to the load vectors as it is)."""
+    vector = kw["VECT_ASSE"]
+    values = np.asarray(getattr(vector, "values", None))
+    numbering = getattr(vector, "numbering", None)
+    if numbering is None or values.ndim != 1 or len(values) != numbering.n_dofs:
+        ctx.error("VECT_ASSE must be an assembled vector (cham_no)", "VECT_ASSE", kw)
+    if np.iscomplexobj(values):
+        ctx.unsupported("AFFE_CHAR_MECA/VECT_ASSE of a complex vector", "VECT_ASSE", kw)
+    load.extra["VECT_ASSE"] = [
+        (int(node), str(component), float(value))
+        for (node, component), value in zip(numbering.dofs, values, strict=True)
+        if value != 0.0
+    ]
 
 
 def _evol_char(ctx, model, load, kw) -> None:

@@ -158,6 +158,14 @@ def _extr(ctx, kw):
             f"the {kw['NOM_CHAM']} field is {kind}: TYPE_CHAM does not match", "TYPE_CHAM", kw
         )
     if not element:
+        target = kw.get("NUME_DDL")
+        if target is not None and target is not numbering:
+            # code_aster copies the field onto the given numbering (vtcopy):
+            # DOFs it lacks are dropped, DOFs the result lacks are zero
+            from asterlite.modal.renumber import transfer
+
+            selected = transfer(selected, numbering, target)
+            numbering = target
         return NodalField(numbering=numbering, values=selected)
 
     return FieldOnElements(

@@ -68,7 +68,7 @@ def run(ctx, kw):
         ctx.log("material ELAS_VISCO: " + ", ".join(f"{k}={v:g}" for k, v in visco.items()))
     for keyword in (
         *("ECRO_LINE", "ECRO_LINE_FO", "TRACTION", "THER", "THER_FO", "THER_NL"),
-        *("Iwan", "Iwan_FO"),
+        *("Iwan", "Iwan_FO", "DIS_CONTACT"),
     ):
         for occ in kw.factor(keyword):
             behaviours[keyword] = dict(occ)

@@ -275,12 +275,12 @@ def physical(ctx, kw, frequencies, names):
         vectors = np.vstack([vectors.astype(complex), lift_vectors])
         coefficients = np.hstack([coefficients, lift_coefficients])
     extra = result_excitations(ctx, kw, frequencies, numbering, numbering.n_dofs)
-    if extra is not None:
-        vectors = np.vstack([vectors, extra])
-        coefficients = np.hstack([coefficients, np.eye(frequencies.size, dtype=complex)])
+    if extra is not None:  # one load vector per frequency, solved as such
         forces = forces + extra[:, rows]
     try:
-        depl, info = physical_solver.solve(sweep, frequencies, vectors, coefficients)
+        depl, info = physical_solver.solve(
+            sweep, frequencies, vectors, coefficients, per_frequency=extra
+        )
     except SingularSystem as error:
         numerical_error(ctx, error)
     if imposed is not None:

@@ -40,8 +40,6 @@ def run_physical(ctx, kw):
             "SCHEMA",
             schema_kw,
         )
-    if kw.get("EXCIT_RESU"):
-        ctx.unsupported("EXCIT_RESU on a physical basis", "EXCIT_RESU", kw)
     mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
     numbering = stiffness_matrix.numbering
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
@@ -401,7 +399,63 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix):
         elif mult is None:
             mult = float(occ.get("COEF_MULT", 1.0))
         loads.append(Load(vector, mult, _numbered_history(ctx, history, numbering, occ)))
+    for occ in kw.factor("EXCIT_RESU"):
+        loads.append(_result_load(ctx, occ, numbering))
     return loads
+
+
+def _result_load(ctx, occ, numbering):
+    """EXCIT_RESU: the DEPL field of a dyna_trans as forces, times COEF_MULT,
+    read as code_aster's dlnew0 reads it: the stored field at an instant the
+    result holds (1e-9 relative, 1e-12 absolute at 0), else linear between the
+    fields of orders i and i+1 that bracket the instant; before the instant
+    of order 1, the field of order 1; after the last, the last field (orders
+    0, 1, 2... as a physical transient archives them, or 1, 2...)."""
+    from asterlite.dynamics.physical.system import Load, LoadHistory
+
+    result = occ["RESULTAT"]
+    depl = result.fields.get("DEPL")
+    if depl is None:
+        ctx.error("the result holds no DEPL field", "RESULTAT", occ)
+    if list(result.numbering.dofs) != list(numbering.dofs):
+        ctx.error("the result is not on the numbering of the matrices", "RESULTAT", occ)
+    stored = np.asarray(result.times, dtype=float)
+    position = {int(o): k for k, o in enumerate(result.order)}
+    count = len(stored)
+    by_order = [position.get(i) for i in range(1, count + 1)]
+    values = np.asarray(depl, dtype=float)
+
+    def field_at(t: float) -> np.ndarray:
+        tolerance = 1e-9 * abs(t) if abs(t) > 1e-12 else 1e-12
+        hits = np.flatnonzero(np.abs(stored - t) <= tolerance)
+        if hits.size:
+            return values[hits[0]]
+        for i in range(1, count):
+            left, right = by_order[i - 1], by_order[i]
+            if right is None and i == count - 1:
+                # orders 0..n-1: code_aster's last order i+1 is the last field
+                right = count - 1
+            if left is None or right is None:
+                ctx.error(
+                    f"the result's orders are not 0, 1, 2...: order {i if left is None else i + 1} "
+                    "is missing where code_aster interpolates",
+                    "RESULTAT",
+                    occ,
+                )
+            if i == 1 and t < stored[left]:
+                return values[left]
+            if stored[left] <= t < stored[right]:
+                alpha = (t - stored[left]) / (stored[right] - stored[left])
+                return (1.0 - alpha) * values[left] + alpha * values[right]
+            if i == count - 1 and t >= stored[right]:
+                return values[right]
+        ctx.error(f"the result has no field near INST={t:g}", "RESULTAT", occ)
+
+    def history(times) -> np.ndarray:
+        return np.array([field_at(float(t)) for t in np.atleast_1d(times)])
+
+    rows = np.arange(numbering.n_dofs)
+    return Load(np.zeros(numbering.n_dofs), float(occ["COEF_MULT"]), LoadHistory(rows, history))
 
 
 def _numbered_history(ctx, history, numbering, occ):

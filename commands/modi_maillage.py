@@ -1,7 +1,7 @@
 """MODI_MAILLAGE: change node coordinates in place (ECHELLE, TRANSLATION,
-ROTATION, SYMETRIE, DEFORME), the orientation of skin faces (ORIE_PEAU), or
-store the curvilinear abscissa of a line of segments (ABSC_CURV); the mesh
-is returned (reuse)."""
+ROTATION, SYMETRIE, DEFORME), the orientation of skin faces (ORIE_PEAU) and
+of shells (ORIE_NORM_COQUE), or store the curvilinear abscissa of a line of
+segments (ABSC_CURV); the mesh is returned (reuse)."""
 
 from __future__ import annotations
 
@@ -15,11 +15,13 @@ from asterlite.fem.selection import (
     node_group_members,
     select_cells,
 )
+from asterlite.fem.shell_orientation import ShellOrientationError, orient_shells
 from asterlite.fem.skin import SkinError, is_plane, orient_edges, orient_skin
 
 _SUPPORTED = (
-    "ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU", "ABSC_CURV",
-)  # fmt: skip
+    *("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU"),
+    *("ORIE_NORM_COQUE", "ABSC_CURV"),
+)
 # code_aster 15's name of ORIE_PEAU for 3D skins, and its keywords
 _SKIN_KEYWORDS = {
     "ORIE_PEAU": ("GROUP_MA_PEAU", "GROUP_MA_INTERNE"),
@@ -48,6 +50,32 @@ def _orient_skin(ctx, mesh, kw) -> None:
                 ctx.error(str(exc), faces_key, occ)
             what = "edges" if plane else "faces"
             ctx.log(f"{factor}: {count} of {len(faces)} {what} reversed")
+
+
+def _orient_shells(ctx, mesh, kw) -> None:
+    """ORIE_NORM_COQUE: each GROUP_MA's shell cells turned to one normal,
+    along VECT_NORM at the node given (the first of GROUP_NO; without it the
+    first node of the first cell), else as the group's first cell."""
+    for occ in kw.factor("ORIE_NORM_COQUE"):
+        groups = as_tuple(occ["GROUP_MA"])
+        vector = occ.get("VECT_NORM")
+        node = None
+        if vector is not None:
+            vector = _vector(vector)
+            if occ.get("GROUP_NO") is not None:
+                node = node_group_members(ctx, occ, mesh)[0]
+            elif occ.get("NOEUD") is not None:
+                node = mesh.find_node(as_tuple(occ["NOEUD"])[0])
+                if node is None:
+                    ctx.error(f"the mesh has no node {occ['NOEUD']!r}", "NOEUD", occ)
+        for group in groups:
+            cells = cell_group_members(ctx, {"GROUP_MA": group}, mesh)
+            start = node if node is not None or not cells else mesh.cell_nodes[cells[0]][0]
+            try:
+                count = orient_shells(mesh, cells, vector, start)
+            except ShellOrientationError as exc:
+                ctx.error(f"group {group}: {exc}", "GROUP_MA", occ)
+            ctx.log(f"ORIE_NORM_COQUE: {count} of {len(cells)} cells of {group} reversed")
 
 
 def _vector(values, dim: int = 3) -> np.ndarray:
@@ -173,6 +201,7 @@ def run(ctx, kw):
     if kw.get("ECHELLE") is not None:
         mesh.coords[:] = mesh.coords * float(kw["ECHELLE"])
     _orient_skin(ctx, mesh, kw)
+    _orient_shells(ctx, mesh, kw)
     for occ in kw.factor("ABSC_CURV"):
         _abscissa(ctx, mesh, occ)
     done = [k for k in _SUPPORTED if kw.get(k)]

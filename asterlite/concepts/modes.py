@@ -47,6 +47,7 @@ class ModeResult(Concept):
             "getIndexesForFieldName",
             "getNumberOfModes",
             "setMesh",
+            "LIST_VARI_ACCES",
         }
     )
 
@@ -80,6 +81,18 @@ class ModeResult(Concept):
 
     def getNumberOfModes(self) -> int:  # noqa: N802
         return int(self.n_modes)
+
+    def LIST_VARI_ACCES(self) -> dict:  # noqa: N802 - code_aster's name
+        """The access variables of a mode_meca, one value per mode:
+        NUME_ORDRE, NUME_MODE, FREQ and NOEUD_CMP (a static mode's label,
+        None for a dynamic mode)."""
+        labels = list(self.mode_labels) or [None] * self.n_modes
+        return {
+            "NUME_ORDRE": list(range(1, self.n_modes + 1)),
+            "NUME_MODE": [int(n) for n in self.mode_numbers],
+            "FREQ": [float(f) for f in self.frequencies],
+            "NOEUD_CMP": labels,
+        }
 
     def setMesh(self, mesh) -> None:  # noqa: N802
 

@@ -369,6 +369,7 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
         )
     model = load.model
     terms = list(load.nodal_forces)
+    terms.extend(load.extra.get("VECT_ASSE", ()))
     gravity = load.extra.get("PESANTEUR")
     if gravity is not None:
         terms.extend(

@@ -262,22 +262,28 @@ def solve(
     vectors: np.ndarray,
     coefficients: np.ndarray,
     progress=None,
+    per_frequency: np.ndarray | None = None,
 ) -> tuple[np.ndarray, dict]:
     """Amplitudes u (n_freq, n_dofs) on the numbering's DOFs.
 
     ``vectors`` (n_loads, n_dofs): the load vectors; ``coefficients``
-    (n_freq, n_loads): their complex multipliers at each frequency.
+    (n_freq, n_loads): their complex multipliers at each frequency;
+    ``per_frequency`` (n_freq, n_dofs): forces added at each frequency.
     ``progress(k)`` is called after each frequency when given.
     """
     f = np.atleast_1d(np.asarray(frequencies, dtype=float))
     vectors = np.atleast_2d(np.asarray(vectors))
-    reduced = sweep.reduce(vectors.T).T  # (n_loads, n_free)
+    # complex and contiguous once: each frequency's product is then a plain gemv
+    reduced = np.ascontiguousarray(sweep.reduce(vectors.T).T, dtype=complex)
+    coefficients = np.asarray(coefficients, dtype=complex)
     t_matrix = sweep.elimination.T
     out = np.empty((f.size, sweep.n_dofs), dtype=complex)
     started = time.perf_counter()
     counts = {"ldl": 0, "refined": 0, "superlu": 0}
     for k, frequency in enumerate(f):
-        rhs = np.ascontiguousarray(coefficients[k] @ reduced, dtype=complex)
+        rhs = np.ascontiguousarray(coefficients[k] @ reduced)
+        if per_frequency is not None:
+            rhs = rhs + sweep.reduce(np.asarray(per_frequency[k], dtype=complex))
         q = _solve_one(sweep, float(frequency), rhs, counts)
         if not np.all(np.isfinite(q)):
             raise SingularSystem(float(frequency))
