@@ -61,8 +61,26 @@ def test_points_outside_nearest_or_beyond_distance_max():
 
 
 def test_unknown_family_refused():
-    with pytest.raises(ValueError, match="QUAD4 with 9 Gauss points"):
-        exploded_mesh(_mesh(), [0], [9])
+    with pytest.raises(ValueError, match="QUAD4 with 7 Gauss points"):
+        exploded_mesh(_mesh(), [0], [7])
+
+
+def test_quadrangle_with_nine_gauss_points_ninths():
+    mesh = _mesh()
+    exploded, _ = exploded_mesh(mesh, [0], [9])
+    areas = []
+    for conn in exploded.cell_nodes:
+        x, y = exploded.coords[list(conn), 0], exploded.coords[list(conn), 1]
+        areas.append(0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+    assert areas == pytest.approx([1.0 / 9.0] * 9)
+    # FPG9 order: the 4 corner points, the 4 edge middles (edge 1-2 first), the centre
+    quad = np.arange(1.0, 10.0)[:, None]
+    points = np.array(
+        [[0.1, 0.1], [0.9, 0.1], [0.9, 0.9], [0.1, 0.9], [0.5, 0.1], [0.9, 0.5], [0.5, 0.9]]
+        + [[0.1, 0.5], [0.5, 0.5]]
+    )
+    values, placed = values_at_points(mesh, [0], [quad], points)
+    assert placed.all() and values[:, 0] == pytest.approx(np.arange(1.0, 10.0))
 
 
 def test_triangle_with_three_gauss_points_one_third_each():

@@ -11,7 +11,9 @@ middles next, then the centre):
 
 * triangles, FPG1: the triangle itself;
 * triangles, FPG3: three quadrangles about the centroid;
-* quadrangles, FPG4: four quadrangles about the centre, one per vertex.
+* quadrangles, FPG4: four quadrangles about the centre, one per vertex;
+* quadrangles, FPG9: nine quadrangles on the edges' third points and four
+  inner points (each the mean of three vertices).
 """
 
 from __future__ import annotations
@@ -21,21 +23,57 @@ import numpy as np
 from asterlite.concepts.mesh import Mesh
 from asterlite.post.field_projection import place_nodes
 
-# sub-cells as lists of local points: vertices 0..v-1, edge middles v..2v-1
-# (middle k between vertices k and k+1), centre 2v; one sub-cell per
-# Gauss point, in the Gauss points' order
+
+# the points sub-cells are built on, as weights of the cell's vertices (ecla2d)
+def _mix(n_vertices: int, *pairs) -> list[float]:
+    row = [0.0] * n_vertices
+    for vertex, weight in pairs:
+        row[vertex] = weight
+    total = sum(row)
+    return [w / total for w in row]
+
+
+def _corners_middles_centre(n: int) -> list[list[float]]:
+    corners = [_mix(n, (k, 1)) for k in range(n)]
+    middles = [_mix(n, (k, 1), ((k + 1) % n, 1)) for k in range(n)]
+    return corners + middles + [_mix(n, *[(k, 1) for k in range(n)])]
+
+
+_THIRDS = [_mix(4, (k, 1)) for k in range(4)]
+for _k in range(4):
+    _THIRDS += [_mix(4, (_k, 2), ((_k + 1) % 4, 1)), _mix(4, (_k, 1), ((_k + 1) % 4, 2))]
+_THIRDS += [_mix(4, (0, 1), (1, 1), (3, 1)), _mix(4, (0, 1), (1, 1), (2, 1))]
+_THIRDS += [_mix(4, (1, 1), (2, 1), (3, 1)), _mix(4, (0, 1), (2, 1), (3, 1))]
+
+# (points, sub-cells as lists of those points), one sub-cell per Gauss point
+# in the Gauss points' order; corners_middles_centre numbers the vertices
+# 0..v-1, the edge middles v..2v-1 (middle k between vertices k and k+1),
+# the centre 2v; _THIRDS the vertices 0..3, the third points of edge k at
+# 4 + 2k (nearer vertex k) and 5 + 2k, then four inner points
 _SUBCELLS = {
-    ("TRIA", 1): [(0, 1, 2)],
-    ("TRIA", 3): [(0, 3, 6, 5), (1, 4, 6, 3), (4, 2, 5, 6)],
-    ("QUAD", 4): [(7, 0, 4, 8), (4, 1, 5, 8), (5, 2, 6, 8), (6, 3, 7, 8)],
+    ("TRIA", 1): (_corners_middles_centre(3), [(0, 1, 2)]),
+    ("TRIA", 3): (_corners_middles_centre(3), [(0, 3, 6, 5), (1, 4, 6, 3), (4, 2, 5, 6)]),
+    ("QUAD", 4): (
+        _corners_middles_centre(4),
+        [(7, 0, 4, 8), (4, 1, 5, 8), (5, 2, 6, 8), (6, 3, 7, 8)],
+    ),
+    ("QUAD", 9): (
+        _THIRDS,
+        [
+            (0, 4, 12, 11),
+            (1, 6, 13, 5),
+            (7, 2, 8, 14),
+            (15, 9, 3, 10),
+            (5, 13, 12, 4),
+            (6, 7, 14, 13),
+            (14, 8, 9, 15),
+            (15, 10, 11, 12),
+            (12, 13, 14, 15),
+        ],
+    ),
 }
 _SHAPE = {"TRIA3": ("TRIA", 3), "TRIA6": ("TRIA", 3), "TRIA7": ("TRIA", 3)}
 _SHAPE |= {"QUAD4": ("QUAD", 4), "QUAD8": ("QUAD", 4), "QUAD9": ("QUAD", 4)}
-
-
-def _local_points(vertices: np.ndarray) -> np.ndarray:
-    middles = 0.5 * (vertices + np.roll(vertices, -1, axis=0))
-    return np.vstack([vertices, middles, vertices.mean(axis=0, keepdims=True)])
 
 
 def exploded_mesh(mesh: Mesh, cells, n_gauss) -> tuple[Mesh, np.ndarray]:
@@ -50,8 +88,9 @@ def exploded_mesh(mesh: Mesh, cells, n_gauss) -> tuple[Mesh, np.ndarray]:
         if (shape, int(npg)) not in _SUBCELLS:
             raise ValueError(f"ECLA_PG: no sub-cells for {cell_type} with {npg} Gauss points")
         vertices = mesh.coords[list(mesh.cell_nodes[int(cell)][:n_vertices])]
-        points = _local_points(vertices)
-        for gauss, local in enumerate(_SUBCELLS[(shape, int(npg))]):
+        weights, subcells = _SUBCELLS[(shape, int(npg))]
+        points = np.asarray(weights) @ vertices
+        for gauss, local in enumerate(subcells):
             first = len(coords)
             coords.extend(points[list(local)])
             types.append("TRIA3" if len(local) == 3 else "QUAD4")
