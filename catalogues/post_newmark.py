@@ -19,7 +19,7 @@ POST_NEWMARK = MACRO(
     sd_prod=_sdprod,
     reentrant="n",
     fr="Newmark sliding-block displacement of a circular or given sliding zone",
-    regles=(UN_PARMI("RAYON", "MAILLAGE_GLIS"), AU_MOINS_UN("RESULTAT")),
+    regles=(UN_PARMI("RAYON", "MAILLAGE_GLIS"), AU_MOINS_UN("RESULTAT", "RESULTAT_PESANTEUR")),
     MAILLAGE_GLIS=SIMP(statut="f", typ="maillage_sdaster"),
     RAYON=SIMP(statut="f", typ="R"),
     b_RAYON=BLOC(
@@ -47,6 +47,15 @@ POST_NEWMARK = MACRO(
             CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
         ),
     ),
+    RESULTAT_PESANTEUR=SIMP(statut="f", typ=("evol_elas", "evol_noli")),
+    b_RESULTAT_PESANTEUR=BLOC(
+        condition=exists("RESULTAT_PESANTEUR"),
+        CHAM_PHI=SIMP(statut="o", typ="cham_no_sdaster"),
+        CHAM_COHESION=SIMP(statut="o", typ="cham_no_sdaster"),
+        CHAM_FS=SIMP(statut="f", typ="CO"),
+        NB_ECART_TYPE=SIMP(statut="f", typ="R", val_min=0.0, val_max=6.0, defaut=3.0),
+        METHODE=SIMP(statut="f", typ="TXM", into=("ECLA_PG", "COLLOCATION"), defaut="ECLA_PG"),
+    ),
     KY=SIMP(statut="f", typ="R"),
     GROUP_MA_CALC=SIMP(statut="o", typ="grma", max="**"),
     MAILLAGE_RESU=FACT(
@@ -60,5 +69,4 @@ POST_NEWMARK = MACRO(
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )
 
-# code_aster's RESULTAT_PESANTEUR (local safety factors, KY from them) and
-# evol_noli results are left out of this catalogue: asterlite refuses them
+# evol_noli as RESULTAT is left out of this catalogue: asterlite refuses it

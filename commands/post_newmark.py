@@ -7,6 +7,9 @@ result's model and materials (as POST_ELEM MASS_INER), its mean horizontal
 acceleration from the zone's internal forces (FORC_NODA of its cells) summed
 on the nodes of the other surface cells of GROUP_MA_CALC, times -1 with
 POSITION='AMONT'. The table has INST, ACCE_MOY, VITE and DEPL.
+RESULTAT_PESANTEUR (with RAYON; asterlite.post.newmark_safety): the slip
+circle's safety factor at each instant (column FS) and, without KY, the
+critical acceleration from them (column KY, in g).
 MAILLAGE_RESU/MAILLAGE: the structure's mesh (its cells and nodes in some
 group) with the zone as the cell group NOM_GROUP (default GLISSE).
 """
@@ -20,7 +23,9 @@ from asterlite.concepts.table import Table
 from asterlite.errors import missing_name
 from asterlite.fem.mass_properties import mass_properties
 from asterlite.fem.selection import as_tuple
+from asterlite.post import newmark_safety as safety
 from asterlite.post import sliding_block as block
+from asterlite.post import slip_line_safety
 from asterlite.post.nodal_forces import internal_forces
 
 
@@ -35,8 +40,8 @@ def _groups(ctx, mesh, names, keyword, kw) -> np.ndarray:
 
 def _sliding_cells(ctx, kw, mesh, computed) -> np.ndarray:
     if kw.get("RAYON") is not None:
-        # RAFF_CERCLE refines the disc mesh of the safety factors
-        # (RESULTAT_PESANTEUR), which asterlite refuses: no effect here
+        # RAFF_CERCLE refines the disc of the safety factors: code_aster reads it
+        # with RESULTAT_PESANTEUR only (_safety_factors)
         kw.mark_used("RAFF_CERCLE")
         radius = float(kw["RAYON"])
         if radius <= 0.0:
@@ -87,17 +92,53 @@ def _restricted_copy(mesh: Mesh) -> Mesh:
     )
 
 
+def _safety_factors(ctx, kw, result, sign) -> np.ndarray:
+    """The slip circle's safety factor at each instant (RESULTAT_PESANTEUR)."""
+    if kw.get("METHODE", "ECLA_PG") != "ECLA_PG":
+        ctx.error("METHODE='COLLOCATION' is not implemented (ECLA_PG is)", "METHODE", kw)
+    if kw.get("RAYON") is None:
+        ctx.error(
+            "RESULTAT_PESANTEUR is implemented on a slip circle (RAYON), not MAILLAGE_GLIS",
+            "RESULTAT_PESANTEUR",
+            kw,
+        )
+    static = kw["RESULTAT_PESANTEUR"]
+    if getattr(static, "model", None) is None:
+        ctx.error("RESULTAT_PESANTEUR has no model", "RESULTAT_PESANTEUR", kw)
+    refine = kw.get("RAFF_CERCLE")
+    try:
+        return safety.dynamic_safety_factors(
+            result,
+            static,
+            kw["CHAM_PHI"],
+            kw["CHAM_COHESION"],
+            (float(kw["CENTRE_X"]), float(kw["CENTRE_Y"])),
+            float(kw["RAYON"]),
+            7 if refine is None else int(refine),  # code_aster's default level
+            sign,
+        )
+    except safety.SafetyError as exc:
+        ctx.error(str(exc), "RESULTAT_PESANTEUR", kw)
+
+
 def run(ctx, kw):
-    result = kw["RESULTAT"]
+    result = kw.get("RESULTAT")
+    if result is None:
+        # code_aster then gives the static safety factor and CHAM_FS only
+        ctx.error(
+            "POST_NEWMARK without RESULTAT (static safety factor, CHAM_FS) is not implemented",
+            "RESULTAT_PESANTEUR",
+            kw,
+        )
     model, materials = getattr(result, "model", None), getattr(result, "materials", None)
     if model is None or materials is None:
         ctx.error("RESULTAT has no model or no material field", "RESULTAT", kw)
     mesh = model.mesh
     if mesh.dim == 3 and np.any(mesh.coords[:, 2] != 0.0):
         ctx.error("POST_NEWMARK applies to plane models (code_aster's POST0_51)", "RESULTAT", kw)
-    if kw.get("KY") is None:
-        # without RESULTAT_PESANTEUR code_aster has no critical acceleration either
-        ctx.error("POST_NEWMARK needs KY (the critical acceleration in g)", "KY", kw)
+    if kw.get("KY") is None and kw.get("RESULTAT_PESANTEUR") is None:
+        # code_aster has no critical acceleration then either
+        ctx.error("POST_NEWMARK needs KY or RESULTAT_PESANTEUR", "KY", kw)
     kw.mark_used("VERI_MASSE")  # 'NON' only (the catalogue): the mass on this mesh
     if "DEPL" not in result.fields:
         ctx.error("RESULTAT holds no DEPL field", "RESULTAT", kw)
@@ -122,11 +163,30 @@ def run(ctx, kw):
     sign = -1.0 if kw.get("POSITION", "AVAL") == "AMONT" else 1.0
     times = np.asarray(result.times, dtype=float)
     acceleration = sign * forces[:, rows[rows >= 0]].sum(axis=1) / mass
-    critical = float(kw["KY"]) * block.GRAVITY
+    columns = {"INST": times, "ACCE_MOY": acceleration}
+    if kw.get("RESULTAT_PESANTEUR") is not None:
+        # CHAM_FS: code_aster produces it only without RESULTAT, so not here
+        kw.mark_used("CHAM_FS")
+        factors = _safety_factors(ctx, kw, result, sign)
+        ky = kw.get("KY")
+        if ky is None:
+            try:
+                critical = slip_line_safety.critical_acceleration(
+                    factors, acceleration, float(kw.get("NB_ECART_TYPE", 3.0))
+                )
+            except ValueError as exc:
+                ctx.error(str(exc), "RESULTAT_PESANTEUR", kw)
+            ky_column = np.full(times.size, critical / block.GRAVITY)
+    if kw.get("KY") is not None:
+        critical = float(kw["KY"]) * block.GRAVITY
     velocity, displacement = block.newmark_displacement(times, acceleration, critical)
+    columns |= {"VITE": velocity, "DEPL": displacement}
+    if kw.get("RESULTAT_PESANTEUR") is not None:
+        columns["FS"] = factors
+        if kw.get("KY") is None:
+            columns["KY"] = ky_column
 
     table = Table(title="")
-    columns = {"INST": times, "ACCE_MOY": acceleration, "VITE": velocity, "DEPL": displacement}
     for name in columns:
         table.add_column(name, "R")
     for k in range(times.size):
