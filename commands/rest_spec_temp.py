@@ -39,26 +39,19 @@ def run(ctx, kw):
         characteristics=result.characteristics,
         mass_matrix=result.mass_matrix,
     )
+    options = (method, symmetric, extra_power)
     if isinstance(result, DynaHarmo):
-        names = [name for name in asked if name in result.fields]
-        if not names:
-            ctx.error(
-                f"the harmonic result holds none of the fields {', '.join(asked)}",
-                "NOM_CHAM",
-                kw,
-            )
-        fields, instants = {}, None
-        for name in names:
-            try:
-                instants, fields[name] = frequency_to_time(
-                    np.asarray(result.frequencies, dtype=float),
-                    result.fields[name],
-                    method,
-                    symmetric,
-                    extra_power,
-                )
-            except ValueError as exc:
-                ctx.error(str(exc), "RESULTAT", kw)
+        names = _harmonic_names(ctx, kw, result, asked)
+        instants, fields = _transformed(
+            ctx,
+            kw,
+            "RESULTAT",
+            frequency_to_time,
+            result.frequencies,
+            result.fields,
+            names,
+            options,
+        )
         ctx.log(
             f"REST_SPEC_TEMP: {len(result.frequencies)} frequencies -> {len(instants)} "
             f"instants, step {instants[1] - instants[0]:g} s ({', '.join(names)})"
@@ -73,18 +66,10 @@ def run(ctx, kw):
     steps = np.diff(times)
     if steps.size and np.any(np.abs(steps - steps[0]) > 1e-6 * abs(steps[0])):
         ctx.log("REST_SPEC_TEMP: the instants are not evenly spaced; the first step is used")
-    fields, frequencies = {}, None
-    for name in asked:
-        try:
-            frequencies, fields[name] = time_to_frequency(
-                times,
-                np.asarray(result.fields[name], dtype=float),
-                method,
-                symmetric,
-                extra_power,
-            )
-        except ValueError as exc:
-            ctx.error(str(exc), "RESULTAT", kw)
+    stored = {name: np.asarray(result.fields[name], dtype=float) for name in asked}
+    frequencies, fields = _transformed(
+        ctx, kw, "RESULTAT", time_to_frequency, times, stored, asked, options
+    )
     ctx.log(
         f"REST_SPEC_TEMP: {len(times)} instants -> {len(frequencies)} frequencies, "
         f"step {frequencies[1] - frequencies[0]:g} Hz ({', '.join(asked)})"
@@ -98,26 +83,19 @@ def _generalized(ctx, kw, result, asked, method, symmetric, extra_power):
     """harm_gene -> tran_gene and back, on the same basis. As code_aster's
     ecresu: orders from 0; a field not asked for is zero in a tran_gene
     (which always holds the three) and absent from a harm_gene."""
+    options = (method, symmetric, extra_power)
     if isinstance(result, HarmGene):
-        names = [name for name in asked if name in result.fields]
-        if not names:
-            ctx.error(
-                f"the harmonic result holds none of the fields {', '.join(asked)}",
-                "NOM_CHAM",
-                kw,
-            )
-        fields, instants = {}, None
-        for name in names:
-            try:
-                instants, fields[name] = frequency_to_time(
-                    np.asarray(result.frequencies, dtype=float),
-                    result.fields[name],
-                    method,
-                    symmetric,
-                    extra_power,
-                )
-            except ValueError as exc:
-                ctx.error(str(exc), "RESU_GENE", kw)
+        names = _harmonic_names(ctx, kw, result, asked)
+        instants, fields = _transformed(
+            ctx,
+            kw,
+            "RESU_GENE",
+            frequency_to_time,
+            result.frequencies,
+            result.fields,
+            names,
+            options,
+        )
         zero = np.zeros_like(next(iter(fields.values())))
         ctx.log(
             f"REST_SPEC_TEMP: {len(result.frequencies)} frequencies -> {len(instants)} "
@@ -135,19 +113,11 @@ def _generalized(ctx, kw, result, asked, method, symmetric, extra_power):
         )
     if not isinstance(result, TranGene):
         ctx.error("RESU_GENE must be a harm_gene or a tran_gene", "RESU_GENE", kw)
-    fields, frequencies = {}, None
     stored = {"DEPL": result.depl, "VITE": result.vite, "ACCE": result.acce}
-    for name in asked:
-        try:
-            frequencies, fields[name] = time_to_frequency(
-                np.asarray(result.times, dtype=float),
-                np.asarray(stored[name], dtype=float),
-                method,
-                symmetric,
-                extra_power,
-            )
-        except ValueError as exc:
-            ctx.error(str(exc), "RESU_GENE", kw)
+    stored = {name: np.asarray(stored[name], dtype=float) for name in asked}
+    frequencies, fields = _transformed(
+        ctx, kw, "RESU_GENE", time_to_frequency, result.times, stored, asked, options
+    )
     ctx.log(
         f"REST_SPEC_TEMP: {len(result.times)} instants -> {len(frequencies)} frequencies "
         f"({', '.join(asked)})"
@@ -159,3 +129,27 @@ def _generalized(ctx, kw, result, asked, method, symmetric, extra_power):
         order=np.arange(len(frequencies)),
         fields=fields,
     )
+
+
+def _harmonic_names(ctx, kw, result, asked) -> list[str]:
+    """The fields asked for that the harmonic result holds (an error if none)."""
+    names = [name for name in asked if name in result.fields]
+    if not names:
+        ctx.error(
+            f"the harmonic result holds none of the fields {', '.join(asked)}", "NOM_CHAM", kw
+        )
+    return names
+
+
+def _transformed(ctx, kw, keyword, transform, abscissa, stored, names, options):
+    """The fields ``names`` of ``stored`` through ``transform``
+    (frequency_to_time or time_to_frequency) over ``abscissa``: (the new
+    abscissa, the fields); a transform's refusal is an error at ``keyword``."""
+    abscissa = np.asarray(abscissa, dtype=float)
+    fields, out = {}, None
+    for name in names:
+        try:
+            out, fields[name] = transform(abscissa, stored[name], *options)
+        except ValueError as exc:
+            ctx.error(str(exc), keyword, kw)
+    return out, fields
