@@ -68,20 +68,7 @@ def run(ctx, kw):
         modes.parameters["NUME_MODE"] = numbers
         ctx.log(f"NUME_MODE from the Sturm count: the first mode found is mode {numbers[0]}")
     modes.parameters["ERREUR"] = res
-    veri = (kw.factor("VERI_MODE") or [{}])[0]
-    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
-    # rigid-body modes (below SEUIL_FREQ) have K φ ≈ 0: their relative residual means nothing
-    elastic = np.abs(modes.frequencies) >= float(calc_freq.get("SEUIL_FREQ", 1e-2) or 1e-2)
-    checked = np.where(elastic, res, 0.0)
-    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(checked > max(tolerance, 1e-6)):
-        worst = int(np.argmax(checked))
-        ctx.error(
-            f"mode {worst + 1} ({modes.frequencies[worst]:.6g} Hz) has a residual "
-            f"{res[worst]:.3g} above {tolerance:g}",
-            "VERI_MODE",
-            kw,
-            "SolverError",  # code_aster's ALGELINE2_74
-        )
+    _check_residuals(ctx, kw, modes.frequencies, res)
     norm = kw.factor("NORM_MODE")
     if norm:
         apply_norm(modes, norm[0].get("NORME", "TRAN_ROTA"))
@@ -236,12 +223,30 @@ def _generalized(ctx, kw, stiffness, mass):
     return modes
 
 
+def _check_residuals(ctx, kw, frequencies, res) -> None:
+    """VERI_MODE: stop (STOP_ERREUR='OUI') when a mode's relative residual
+    ``res`` exceeds SEUIL; rigid-body modes (below CALC_FREQ's SEUIL_FREQ)
+    have K φ ≈ 0, so their relative residual means nothing."""
+    calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
+    veri = (kw.factor("VERI_MODE") or [{}])[0]
+    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
+    elastic = np.abs(frequencies) >= float(calc_freq.get("SEUIL_FREQ", 1e-2) or 1e-2)
+    checked = np.where(elastic, res, 0.0)
+    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(checked > max(tolerance, 1e-6)):
+        worst = int(np.argmax(checked))
+        ctx.error(
+            f"mode {worst + 1} ({frequencies[worst]:.6g} Hz) has a residual "
+            f"{res[worst]:.3g} above {tolerance:g}",
+            "VERI_MODE",
+            kw,
+            "SolverError",  # code_aster's ALGELINE2_74
+        )
+
+
 def _check_generalized_residuals(ctx, kw, stiffness, mass, modes) -> None:
     """VERI_MODE on generalized modes, as on physical ones: the relative
     residual |K v - ω² M v| / |K v| of each mode above SEUIL_FREQ (a
     rigid-body mode's relative residual means nothing) against SEUIL."""
-    calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
-    veri = (kw.factor("VERI_MODE") or [{}])[0]
     k, m = np.asarray(stiffness.matrix), np.asarray(mass.matrix)
     vectors = np.asarray(modes.vectors)
     omega2 = (2.0 * np.pi * np.asarray(modes.frequencies)) ** 2
@@ -250,18 +255,7 @@ def _check_generalized_residuals(ctx, kw, stiffness, mass, modes) -> None:
     scale = np.linalg.norm(k_v, axis=0)
     res = np.where(scale > 0.0, residual / np.where(scale > 0.0, scale, 1.0), residual)
     modes.parameters["ERREUR"] = res
-    elastic = np.abs(modes.frequencies) >= float(calc_freq.get("SEUIL_FREQ", 1e-2) or 1e-2)
-    checked = np.where(elastic, res, 0.0)
-    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
-    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(checked > max(tolerance, 1e-6)):
-        worst = int(np.argmax(checked))
-        ctx.error(
-            f"mode {worst + 1} ({modes.frequencies[worst]:.6g} Hz) has a residual "
-            f"{res[worst]:.3g} above {tolerance:g}",
-            "VERI_MODE",
-            kw,
-            "SolverError",
-        )
+    _check_residuals(ctx, kw, modes.frequencies, res)
 
 
 def _complex(ctx, kw, stiffness, mass, damping):
@@ -293,20 +287,7 @@ def _complex(ctx, kw, stiffness, mass, damping):
     res = pencil.residuals(lam, vecs)
     modes = build_complex_mode_result(stiffness, mass, damping, lam, pencil.expand(vecs))
     modes.parameters["ERREUR"] = res
-    veri = (kw.factor("VERI_MODE") or [{}])[0]
-    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
-    # as for real modes: a rigid-body mode's (below SEUIL_FREQ) relative residual means nothing
-    elastic = np.abs(modes.frequencies) >= float(calc_freq.get("SEUIL_FREQ", 1e-2) or 1e-2)
-    checked = np.where(elastic, res, 0.0)
-    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(checked > max(tolerance, 1e-6)):
-        worst = int(np.argmax(checked))
-        ctx.error(
-            f"mode {worst + 1} ({modes.frequencies[worst]:.6g} Hz) has a residual "
-            f"{res[worst]:.3g} above {tolerance:g}",
-            "VERI_MODE",
-            kw,
-            "SolverError",  # code_aster's ALGELINE2_74
-        )
+    _check_residuals(ctx, kw, modes.frequencies, res)
     norm = kw.factor("NORM_MODE")
     if norm:
         apply_norm(modes, norm[0].get("NORME", "TRAN_ROTA"))
