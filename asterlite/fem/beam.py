@@ -80,6 +80,12 @@ def segment_lengths(x1, x2) -> np.ndarray:
     return np.linalg.norm(np.asarray(x2, float) - np.asarray(x1, float), axis=-1)
 
 
+def segment_cells(mesh, cells) -> tuple[np.ndarray, np.ndarray]:
+    """(n, 2) nodes and (n,) lengths of the two-node cells ``cells``."""
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    return conn, segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+
+
 def axis_angles(direction) -> np.ndarray:
     """(n, 2) nautical angles (alpha, beta) turning global X onto ``direction``.
 

@@ -128,6 +128,15 @@ EFGE_COMPONENTS = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
 SIPO_COMPONENTS = ("SN", "SVY", "SVZ", "SMT", "SMFY", "SMFZ")
 
 
+def _in_local_frames(model, characteristics, cells, values, dofs_per_node):
+    """(lengths, ``values`` in the cells' local frames) of two-node beam
+    cells; ``values`` (n_orders, n_cells, 2 dofs_per_node) global-frame DOFs."""
+    angles = cell_angles(model, characteristics, cells)
+    _, lengths = beam.segment_cells(model.mesh, cells)
+    rot = beam.element_rotation(beam.rotation_from_angles(angles), dofs_per_node)
+    return lengths, np.einsum("eij,oej->oei", rot, values)
+
+
 def _local_products(
     model, characteristics, materials, cells, values, matrix: str, lumped: bool = False
 ) -> np.ndarray:
@@ -135,16 +144,11 @@ def _local_products(
     of POU_D_E / POU_D_T cells, ``A`` the stiffness ('K') or the mass ('M',
     lumped as MASS_MECA_DIAG with ``lumped``), ``values`` (n_orders, n_cells, 12)
     global-frame element DOFs."""
-    mesh = model.mesh
     cells = np.asarray(cells, dtype=int)
     sections = characteristics.sections if characteristics is not None else {}
     # no RHO: no inertia (code_aster takes 0)
     props = _material_values(materials, cells, "beam", need_density=False)
-    angles = cell_angles(model, characteristics, cells)
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
-    rot = beam.element_rotation(beam.rotation_from_angles(angles), 6)
-    v_local = np.einsum("eij,oej->oei", rot, values)
+    lengths, v_local = _in_local_frames(model, characteristics, cells, values, 6)
     out = np.zeros_like(v_local)
     for k, cell in enumerate(cells):
         modelisation = model.cell_modelisation[int(cell)]
@@ -229,15 +233,10 @@ def warping_beam_forces(model, characteristics, materials, cells, displacements)
     ``K_local u_local`` with node 1's sign reversed, components N VY VZ MT
     MFY MFZ BX. code_aster's element (ef0344) adds no inertia, whatever the
     result."""
-    mesh = model.mesh
     cells = np.asarray(cells, dtype=int)
     sections = characteristics.sections if characteristics is not None else {}
     props = _material_values(materials, cells, "POU_D_TG", need_density=False)
-    angles = cell_angles(model, characteristics, cells)
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
-    rot = beam.element_rotation(beam.rotation_from_angles(angles), 7)
-    u_local = np.einsum("eij,oej->oei", rot, displacements)
+    lengths, u_local = _in_local_frames(model, characteristics, cells, displacements, 7)
     f = np.zeros_like(u_local)
     for k, cell in enumerate(cells):
         k_local = beam.local_matrices(

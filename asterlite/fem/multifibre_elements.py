@@ -173,8 +173,7 @@ def multifibre_blocks(
         return []
     components = COMPONENTS[model.cell_modelisation[int(cells[0])]]
     size = 2 * len(components)
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    conn, lengths = beam.segment_cells(mesh, cells)
     local = np.zeros((len(cells), size, size))
     for k, cell in enumerate(cells):
         local[k] = local_matrix(

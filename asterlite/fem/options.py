@@ -78,8 +78,7 @@ def _beam_gyro_blocks(model, characteristics, materials, cells, option) -> list[
     if np.any(np.isnan(density)):
         raise ElementError(f"{option} of beams needs RHO in the material (ELAS)")
     poisson = materials.values(cells, "NU", 0.0)
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    conn, lengths = beam.segment_cells(mesh, cells)
     if np.any(lengths <= 0.0):
         raise ElementError(f"{option}: beam element of zero length")
     euler = np.array([model.cell_modelisation[int(c)] == "POU_D_E" for c in cells])
