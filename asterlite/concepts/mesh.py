@@ -81,6 +81,10 @@ class Mesh(Concept):
     title: str = ""
     # MODI_MAILLAGE ABSC_CURV's carte: cell -> abscissa of its nodes (ABSC1...)
     curvilinear_abscissa: dict[int, tuple[float, ...]] | None = None
+    # MACR_ADAP_MAIL's history: how many uniform refinements every cell has
+    # had, and whether a zone adaptation left cells of several levels
+    uniform_level: int = 0
+    zone_adapted: bool = False
 
     def __post_init__(self) -> None:
         self.node_index = {n: i for i, n in enumerate(self.node_names)}
@@ -158,6 +162,8 @@ class Mesh(Concept):
             curvilinear_abscissa=(
                 None if self.curvilinear_abscissa is None else dict(self.curvilinear_abscissa)
             ),
+            uniform_level=self.uniform_level,
+            zone_adapted=self.zone_adapted,
         )
 
     # -- code_aster's object API ----------------------------------------------
