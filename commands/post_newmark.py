@@ -185,10 +185,10 @@ def _restricted_copy(mesh: Mesh) -> Mesh:
 def _safety_factors(ctx, kw, result, sign) -> np.ndarray:
     """The slip circle's safety factor at each instant (RESULTAT_PESANTEUR)."""
     if kw.get("METHODE", "ECLA_PG") != "ECLA_PG":
-        ctx.error("METHODE='COLLOCATION' is not implemented (ECLA_PG is)", "METHODE", kw)
+        ctx.unsupported("METHODE='COLLOCATION' (ECLA_PG is computed)", "METHODE", kw)
     if kw.get("RAYON") is None:
-        ctx.error(
-            "RESULTAT_PESANTEUR is implemented on a slip circle (RAYON), not MAILLAGE_GLIS",
+        ctx.unsupported(
+            "RESULTAT_PESANTEUR on MAILLAGE_GLIS (asterlite computes it on a slip circle, RAYON)",
             "RESULTAT_PESANTEUR",
             kw,
         )
@@ -215,8 +215,8 @@ def run(ctx, kw):
     result = kw.get("RESULTAT")
     if result is None:
         # code_aster then gives the static safety factor and CHAM_FS only
-        ctx.error(
-            "POST_NEWMARK without RESULTAT (static safety factor, CHAM_FS) is not implemented",
+        ctx.unsupported(
+            "POST_NEWMARK without RESULTAT (the static safety factor and CHAM_FS)",
             "RESULTAT_PESANTEUR",
             kw,
         )
