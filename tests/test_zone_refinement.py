@@ -167,6 +167,17 @@ def test_quadratic_children_share_their_middle_nodes():
     assert sorted(users.values()) == [1] * 6 + [2] * 6
 
 
+def test_a_curved_quadrangle_is_split_about_the_mean_of_its_vertices():
+    # HOMARD's centre of a QUAD8 is the mean of its vertices, not the
+    # isoparametric centre (0.6, 0.5 here); its new edges are straight
+    mesh = _grid(1, 1, quadratic=True)
+    mesh.coords[5] = (1.2, 0.5, 0.0)  # the right edge bulges out
+    fine = refine_uniformly(mesh)
+    centre = [n for n in range(mesh.n_nodes, fine.n_nodes) if fine.node_names[n] == "N9"]
+    np.testing.assert_allclose(fine.coords[centre[0]], (0.5, 0.5, 0.0))
+    assert fine.node_groups == {}
+
+
 def test_zone_shapes_as_homard_tests_nodes():
     coords = np.array([(0, 0, 0), (1, 0, 0), (2, 0, 0), (0, 0, 3)], dtype=float)
     disc = Zone("DISQUE_PERCE", {"X_CENTRE": 0, "Y_CENTRE": 0, "RAYON_INT": 1, "RAYON_EXT": 2})

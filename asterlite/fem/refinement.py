@@ -6,10 +6,12 @@ edge, else a new node), every quadrangle also at its centre; a segment
 becomes 2 segments, a triangle 4 triangles (three at its corners and the
 middle one), a quadrangle 4 quadrangles, each child oriented as its parent.
 A quadratic child has middle nodes on its edges: new nodes at the middle of
-the straight sub-edge. The centre of a QUAD8 is its isoparametric centre.
+the straight sub-edge (HOMARD takes every new edge as straight). The
+centre of a quadrangle, QUAD8 too, is the mean of its four vertices.
 Points (POI1) are kept. The old nodes keep their names, the new nodes and
 all cells are named N<number> and M<number> after the last numbers in use.
-Each cell group holds the children of its cells; node groups keep their nodes.
+Each cell group holds the children of its cells; node groups keep their
+nodes (HOMARD puts the nodes it creates in no group).
 """
 
 from __future__ import annotations
@@ -73,13 +75,8 @@ def _children(builder: NodeBuilder, kind: str, nodes: tuple[int, ...]):
         v = nodes[:4]
         given = nodes[4:8] if quadratic else (None,) * 4
         local = list(v) + [builder.middle(v[k], v[(k + 1) % 4], given[k]) for k in range(4)]
-        corners = np.array([builder.coords[n] for n in v])
-        if quadratic:
-            mids = np.array([builder.coords[n] for n in nodes[4:8]])
-            centre = 0.5 * mids.sum(axis=0) - 0.25 * corners.sum(axis=0)
-        else:
-            centre = corners.mean(axis=0)
-        local.append(builder.node(centre))
+        # HOMARD puts the centre at the mean of the vertices, QUAD8 too
+        local.append(builder.node(np.mean([builder.coords[n] for n in v], axis=0)))
         halves = [tuple(local[i] for i in child) for child in _QUADRANGLE_CHILDREN]
     else:
         raise RefinementError(
