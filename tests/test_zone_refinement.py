@@ -11,7 +11,7 @@ import pytest
 
 from asterlite.concepts.mesh import Mesh
 from asterlite.fem.refinement import RefinementError, refine_uniformly
-from asterlite.fem.zone_refinement import Zone, refine_zones
+from asterlite.fem.zone_refinement import Zone, plane_height, refine_zones
 
 DECK_MESH = Path("/work/shared/aster-corpus-dyna/zzzz402d/zzzz402a.mmed")
 
@@ -181,20 +181,29 @@ def test_a_curved_quadrangle_is_split_about_the_mean_of_its_vertices():
 def test_zone_shapes_as_homard_tests_nodes():
     coords = np.array([(0, 0, 0), (1, 0, 0), (2, 0, 0), (0, 0, 3)], dtype=float)
     disc = Zone("DISQUE_PERCE", {"X_CENTRE": 0, "Y_CENTRE": 0, "RAYON_INT": 1, "RAYON_EXT": 2})
-    assert disc.contains(coords, 2).tolist() == [False, True, True, False]  # bounds included
+    assert disc.contains(coords, 0.0).tolist() == [False, True, True, False]  # bounds included
     box = Zone("BOITE", dict(X_MINI=-1, X_MAXI=1, Y_MINI=-1, Y_MAXI=1, Z_MINI=1, Z_MAXI=4))
-    assert box.contains(coords, 3).tolist() == [False, False, False, True]
-    assert not box.contains(coords, 2).any()  # a plane mesh lies in z = 0
+    assert box.contains(coords, None).tolist() == [False, False, False, True]
+    assert not box.contains(coords, 0.0).any()  # a plane mesh in z = 0
+    assert box.contains(coords, 2.0).tolist() == [True, True, False, True]  # in z = 2
     sphere = Zone("SPHERE", dict(X_CENTRE=0, Y_CENTRE=0, Z_CENTRE=2, RAYON=2.0))
-    assert sphere.contains(coords, 3).tolist() == [True, False, False, True]
-    assert sphere.contains(coords, 2).tolist() == [True, False, False, True]
+    assert sphere.contains(coords, None).tolist() == [True, False, False, True]
+    assert sphere.contains(coords, 0.0).tolist() == [True, False, False, True]
     pipe = dict(X_AXE=0, Y_AXE=0, Z_AXE=2, X_BASE=0, Y_BASE=0, Z_BASE=0, HAUTEUR=2.0)
     cylinder = Zone("CYLINDRE", pipe | {"RAYON": 1.0})
-    assert cylinder.contains(coords, 3).tolist() == [True, True, False, False]
+    assert cylinder.contains(coords, None).tolist() == [True, True, False, False]
     tube = Zone("TUYAU", pipe | {"RAYON_INT": 0.5, "RAYON_EXT": 2.0})
-    assert tube.contains(coords, 3).tolist() == [False, True, True, False]
+    assert tube.contains(coords, None).tolist() == [False, True, True, False]
     with pytest.raises(RefinementError, match="plane mesh"):
-        cylinder.contains(coords, 2)
+        cylinder.contains(coords, 0.0)
+    # a mesh in 3D space with a constant z is plane; a constant x is refused
+    mesh = _grid(1, 1)
+    mesh.dim = 3
+    mesh.coords[:, 2] = 5.0
+    assert plane_height(mesh) == 5.0
+    mesh.coords[:, [0, 2]] = mesh.coords[:, [2, 0]]
+    with pytest.raises(RefinementError, match="X is constant"):
+        plane_height(mesh)
 
 
 def test_refusals_instead_of_a_wrong_mesh():

@@ -4,8 +4,10 @@ quadratic; HOMARD's default, conforming adaptation).
 
 HOMARD's steps, on a mesh that no adaptation has touched yet:
 
-1. A node is in a zone by its coordinates (bounds included). An edge is to
-   be cut when both its end vertices are in the same zone.
+1. A node is in a zone by its coordinates (bounds included; a plane mesh,
+   2D or in 3D space with a constant z, is tested in its plane, where a
+   CYLINDRE or TUYAU zone is refused). An edge is to be cut when both its
+   end vertices are in the same zone.
 2. The rule of the two neighbours, until nothing changes: a face with at
    most one edge left uncut is split in four, and that edge is cut too. A
    triangle with two cut edges, a quadrangle with three, are split in four.
@@ -64,12 +66,14 @@ class Zone:
     kind: str
     values: dict
 
-    def contains(self, coords: np.ndarray, dim: int) -> np.ndarray:
+    def contains(self, coords: np.ndarray, plane_z: float | None) -> np.ndarray:
         """Which nodes are in the zone, as HOMARD tests them (bounds
-        included; a plane mesh lies in z = 0)."""
+        included). ``plane_z``: the z of a plane mesh (HOMARD then tests the
+        zone in the plane), None for a mesh in 3D space."""
         v = self.values
         x, y = coords[:, 0], coords[:, 1]
-        z = coords[:, 2] if dim == 3 else np.zeros(len(coords))
+        dim = 3 if plane_z is None else 2
+        z = coords[:, 2] if dim == 3 else np.full(len(coords), plane_z)
         if self.kind == "RECTANGLE":
             return (x >= v["X_MINI"]) & (x <= v["X_MAXI"]) & (y >= v["Y_MINI"]) & (y <= v["Y_MAXI"])
         if self.kind == "BOITE":
@@ -77,10 +81,10 @@ class Zone:
             inside &= y <= v["Y_MAXI"]
             if dim == 3:
                 return inside & (z >= v["Z_MINI"]) & (z <= v["Z_MAXI"])
-            # a plane mesh is in the box when z = 0 is, within 1e-4 of its extent
+            # a plane mesh is in the box when its z is, within 1e-4 of its extent
             extent = max(np.ptp(x), np.ptp(y)) if len(coords) else 0.0
             tolerance = 1.0e-4 * extent
-            if v["Z_MINI"] > tolerance or v["Z_MAXI"] < -tolerance:
+            if v["Z_MINI"] > plane_z + tolerance or v["Z_MAXI"] < plane_z - tolerance:
                 return np.zeros(len(coords), dtype=bool)
             return inside
         if self.kind in ("DISQUE", "DISQUE_PERCE"):
@@ -142,12 +146,32 @@ class _Edges:
         return found
 
 
+def plane_height(mesh: Mesh) -> float | None:
+    """The z of a plane mesh (a 2D mesh: 0; a mesh in 3D space whose z is
+    constant: that z), None for a mesh in 3D space. HOMARD takes a mesh
+    whose x or y is constant as a plane mesh in that plane: refused."""
+    if mesh.dim == 2:
+        return 0.0
+    spans = np.ptp(mesh.coords, axis=0) if mesh.n_nodes else np.zeros(3)
+    flat = [axis for axis in range(3) if spans[axis] == 0.0]
+    if flat == [2]:
+        return float(mesh.coords[0, 2])
+    if flat:
+        names = ", ".join("XYZ"[axis] for axis in flat)
+        raise RefinementError(
+            f"zone refinement of a mesh whose {names} is constant "
+            "(HOMARD tests the zones in that plane; asterlite in the plane z = constant)"
+        )
+    return None
+
+
 def _cut_edges(mesh: Mesh, edges: _Edges, zones: list[Zone]) -> np.ndarray:
     """Step 1: the edges with both ends in one zone."""
     ends = np.array(edges.ends, dtype=int).reshape(-1, 2)
     cut = np.zeros(len(ends), dtype=bool)
+    height = plane_height(mesh)
     for zone in zones:
-        inside = zone.contains(mesh.coords, mesh.dim)
+        inside = zone.contains(mesh.coords, height)
         cut |= inside[ends[:, 0]] & inside[ends[:, 1]]
     return cut
 
