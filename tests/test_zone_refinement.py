@@ -292,3 +292,41 @@ def test_post_newmark_veri_masse_takes_the_mass_on_the_refined_mesh():
         np.array(values["ACCE_MOY"]) * mass, np.array(plain["ACCE_MOY"]) * coarse, rtol=1e-12
     )
     assert any("VERI_MASSE: refinement 1" in line for line in session.lines)
+
+
+def test_macr_adap_mail_zone_through_its_catalogue():
+    from asterlite.errors import UnsupportedError
+    from asterlite.lang.values import CO, FactorDict
+    from tests.test_fem_support import FakeSession, validated_run
+
+    mesh = _grid(2, 1)
+    session = FakeSession()
+    # Z_CENTRE goes to HOMARD with the rest, which reads a disc's X, Y, RAYON
+    zone = FactorDict(TYPE="DISQUE", X_CENTRE=1.0, Y_CENTRE=0.5, RAYON=0.6, Z_CENTRE=3.0)
+    validated_run(session, "MACR_ADAP_MAIL", MAILLAGE_N=mesh, MAILLAGE_NP1=CO("FINE"),
+                  ADAPTATION="RAFF_DERA_ZONE", ZONE=zone)  # fmt: skip
+    fine = session.bound["FINE"]
+    assert Counter(fine.cell_types) == {"TRIA3": 6} and fine.zone_adapted
+    assert any("zone refinement: 6 -> 7 nodes, 2 -> 6 cells" in line for line in session.lines)
+    with pytest.raises(Exception, match="RAYON"):
+        validated_run(session, "MACR_ADAP_MAIL", MAILLAGE_N=mesh, MAILLAGE_NP1=CO("BAD"),
+                      ADAPTATION="RAFF_DERA_ZONE", ZONE=FactorDict(TYPE="DISQUE", X_CENTRE=1.0,
+                                                             Y_CENTRE=0.5))  # fmt: skip
+    with pytest.raises(UnsupportedError, match="already adapted"):
+        validated_run(session, "MACR_ADAP_MAIL", MAILLAGE_N=fine, MAILLAGE_NP1=CO("AGAIN"),
+                      ADAPTATION="RAFF_DERA_ZONE", ZONE=zone)  # fmt: skip
+
+
+def test_coarsening_zones_are_unsupported_not_invalid(tmp_path):
+    from asterlite.runtime.check_deck import check_deck
+
+    path = tmp_path / "d.comm"
+    path.write_text(
+        "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED')\n"
+        "MACR_ADAP_MAIL(MAILLAGE_N=MA, MAILLAGE_NP1=CO('MB'), ADAPTATION='RAFF_DERA_ZONE',"
+        " ZONE=_F(TYPE='DISQUE', X_CENTRE=0.0, Y_CENTRE=0.0, RAYON=1.0,"
+        " USAGE='DERAFFINEMENT'))\nFIN()\n"
+    )
+    check = check_deck(path)  # (its unit 20 has no file: an invalid finding too)
+    found = [(f.kind, f.keyword) for f in check.findings if f.keyword.startswith("MACR")]
+    assert found == [("unsupported", "MACR_ADAP_MAIL/ZONE[1]/USAGE")]
