@@ -228,6 +228,18 @@ def test_refusals_instead_of_a_wrong_mesh():
     assert kept.counts["cut_edges"] == 0 and kept.mesh.n_cells == fine.n_cells
     deeper = refine_zones(fine, [_rectangle(0.9, 1.1, -0.1, 1.1)], max_level=2)
     assert deeper.counts["cut_edges"] == 2
+    # an edge of no face has no level: HOMARD cuts it whatever NIVE_MAX
+    lone = Mesh(
+        coords=np.array([(0, 0, 0), (1, 0, 0)], dtype=float),
+        node_names=["A", "B"],
+        cell_names=["S"],
+        cell_types=["SEG2"],
+        cell_nodes=[(0, 1)],
+        dim=2,
+        uniform_level=3,
+    )
+    split = refine_zones(lone, [_rectangle(-1, 2, -1, 1)], max_level=1)
+    assert Counter(split.mesh.cell_types) == {"SEG2": 2}
 
 
 @pytest.mark.skipif(not DECK_MESH.exists(), reason="the shared corpus is absent")

@@ -254,7 +254,9 @@ def refine_zones(mesh: Mesh, zones: list[Zone], max_level: int | None = None) ->
     edges = _Edges(mesh)
     cut = _cut_edges(mesh, edges, zones)
     if max_level is not None and mesh.uniform_level >= max_level:
-        cut[:] = False
+        # HOMARD takes an edge's level from a face on it: an edge of no face
+        # (a lone segment) is not filtered
+        cut &= np.array([not faces for faces in edges.faces], dtype=bool)
     zone_cut = int(cut.sum())
     split = _two_neighbours(mesh, edges, cut)
 
