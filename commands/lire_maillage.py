@@ -7,6 +7,7 @@ from asterlite.fem.mesh_check import check_mesh
 from asterlite.io.aster_mesh import AsterMeshError, read_aster_mesh
 from asterlite.io.gmsh_mesh import GmshMeshError, read_gmsh_mesh
 from asterlite.io.ideas_mesh import IdeasMeshError, IdeasMeshUnsupported, read_ideas_mesh
+from asterlite.legacy.version import meshes_keep_names
 
 
 def run(ctx, kw):
@@ -43,6 +44,7 @@ def run(ctx, kw):
         f"mesh {path.name}: {mesh.n_nodes} nodes, {mesh.n_cells} cells, "
         f"{len(mesh.node_groups)} node groups, {len(mesh.cell_groups)} cell groups"
     )
+    mesh.names_kept = meshes_keep_names(ctx.session)
     _check(ctx, kw, mesh)
     return mesh
 

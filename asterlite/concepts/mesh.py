@@ -42,6 +42,17 @@ def _positional(name: str, prefix: str, count: int) -> int | None:
     return None
 
 
+def _lookup(name: str, prefix: str, by_name: dict, count: int, names_kept: bool) -> int | None:
+    if not names_kept:
+        index = _positional(name, prefix, count)
+        if index is not None:
+            return index
+    index = by_name.get(name)
+    if index is None and names_kept:
+        index = _positional(name, prefix, count)
+    return index
+
+
 @dataclass(eq=False)
 class Mesh(Concept):
     """An unstructured mesh as code_aster sees it.
@@ -81,6 +92,9 @@ class Mesh(Concept):
     title: str = ""
     # MODI_MAILLAGE ABSC_CURV's carte: cell -> abscissa of its nodes (ABSC1...)
     curvilinear_abscissa: dict[int, tuple[float, ...]] | None = None
+    # False where code_aster keeps no names for the mesh (a file read by
+    # code_aster 16 and later): there ``N<i>``/``M<i>`` are positions first
+    names_kept: bool = True
     # MACR_ADAP_MAIL's history: how many uniform refinements every cell has
     # had, and whether a zone adaptation left cells of several levels
     uniform_level: int = 0
@@ -105,19 +119,14 @@ class Mesh(Concept):
     # -- lookups used by commands (KeyError names the missing entity) --------
 
     def find_node(self, name: str) -> int | None:
-        """Index of a node by name; code_aster 17 also names nodes ``N<i>`` by
-        their 1-based position (mesh names are not kept), so that is the fallback."""
-        index = self.node_index.get(name)
-        if index is None:
-            index = _positional(name, "N", self.n_nodes)
-        return index
+        """Index of a node by name. code_aster 17 names a node ``N<i>`` by its
+        1-based position where the mesh keeps no names (char8_to_int): there
+        the position wins, elsewhere it is the fallback of a missing name."""
+        return _lookup(name, "N", self.node_index, self.n_nodes, self.names_kept)
 
     def find_cell(self, name: str) -> int | None:
-        """Index of a cell by name, falling back on code_aster 17's ``M<i>``."""
-        index = self.cell_index.get(name)
-        if index is None:
-            index = _positional(name, "M", self.n_cells)
-        return index
+        """Index of a cell by name, with code_aster 17's ``M<i>`` as for nodes."""
+        return _lookup(name, "M", self.cell_index, self.n_cells, self.names_kept)
 
     def node_group(self, name: str) -> np.ndarray:
         return self.node_groups[name]
@@ -162,6 +171,7 @@ class Mesh(Concept):
             curvilinear_abscissa=(
                 None if self.curvilinear_abscissa is None else dict(self.curvilinear_abscissa)
             ),
+            names_kept=self.names_kept,
             uniform_level=self.uniform_level,
             zone_adapted=self.zone_adapted,
         )

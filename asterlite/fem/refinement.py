@@ -162,5 +162,6 @@ def refined_mesh(mesh: Mesh, builder: NodeBuilder, children) -> tuple[Mesh, np.n
         cell_groups=cell_groups,
         dim=mesh.dim,
         title=mesh.title,
+        names_kept=mesh.names_kept,
     )
     return refined, np.asarray(parent, dtype=int)
