@@ -95,6 +95,10 @@ class Mesh(Concept):
     # False where code_aster keeps no names for the mesh (a file read by
     # code_aster 16 and later): there ``N<i>``/``M<i>`` are positions first
     names_kept: bool = True
+    # MACR_ADAP_MAIL's history: how many uniform refinements every cell has
+    # had, and whether a zone adaptation left cells of several levels
+    uniform_level: int = 0
+    zone_adapted: bool = False
 
     def __post_init__(self) -> None:
         self.node_index = {n: i for i, n in enumerate(self.node_names)}
@@ -168,6 +172,8 @@ class Mesh(Concept):
                 None if self.curvilinear_abscissa is None else dict(self.curvilinear_abscissa)
             ),
             names_kept=self.names_kept,
+            uniform_level=self.uniform_level,
+            zone_adapted=self.zone_adapted,
         )
 
     # -- code_aster's object API ----------------------------------------------
