@@ -1,0 +1,202 @@
+"""DEFI_SOL_EQUI: the column of two-node shear cells against the closed-form
+transfer functions of vertical S waves, the strain iteration, and the
+command on a small deck (its files, its refusals)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import asterlite
+from asterlite.concepts.function import Function
+from asterlite.harmonic.soil_column import StrainCurve
+from asterlite.harmonic.sol_equi import ColumnCell, column_response, equivalent_linear_column
+
+RHO, NU = 2000.0, 0.3
+
+
+def _young(vs, rho=RHO, nu=NU):
+    return 2.0 * (1.0 + nu) * rho * vs * vs
+
+
+def _fine_column(layers, substratum, step):
+    """Cells of at most ``step`` m: layers [(thickness, vs, eta)], then a
+    substratum cell (thickness, vs)."""
+    cells, depth = [], 0.0
+    for thickness, vs, eta in layers:
+        n = int(round(thickness / step))
+        for _ in range(n):
+            depth += thickness / n
+            cells.append(ColumnCell(depth, "C", RHO, _young(vs), NU, eta, 1))
+    thickness, vs = substratum
+    cells.append(ColumnCell(depth + thickness, "SUB", RHO, _young(vs), NU, 0.0, 1))
+    return cells
+
+
+def _incident_response(cells, freqs, lysmer=False):
+    """Nodal displacements per unit incident velocity at the base: the
+    ONDE_PLANE load -2 ρ Vs v (asterlite.fem.plane_wave's S wave along +y,
+    polarised along -x)."""
+    base = cells[-1]
+    rho_vs = np.sqrt(base.density * base.young / (2.0 * (1.0 + base.poisson)))
+    load = -2.0 * rho_vs * np.ones(len(freqs))
+    young = [c.young for c in cells[:-1]]
+    loss = [c.loss for c in cells[:-1]]
+    return column_response(cells, young, loss, lysmer, load, freqs)
+
+
+def test_a_uniform_column_lets_the_wave_through_to_a_doubled_surface_motion():
+    # no contrast: the surface moves twice the incident displacement -v/(iω),
+    # delayed by the whole height over Vs
+    vs, height = 300.0, 60.0
+    cells = _fine_column([(59.75, vs, 0.0)], (0.25, vs), 0.25)
+    freqs = np.array([0.5, 2.0, 5.0])
+    surface = _incident_response(cells, freqs)[0]
+    w = 2 * np.pi * freqs
+    exact = 2.0 * (-1.0 / (1j * w)) * np.exp(-1j * w * height / vs)
+    assert np.allclose(surface, exact, rtol=2e-3)
+
+
+@pytest.mark.parametrize("lysmer", [False, True])
+def test_a_damped_layer_on_a_stiff_rock_amplifies_as_its_closed_form(lysmer):
+    # surface / outcrop = 1 / (cos k*H + i α sin k*H), α = √(ρ G*)₁ / (ρ Vs)₂,
+    # the outcrop moving twice the incident wave at the top of the rock
+    vs1, vs2, eta, h_layer, h_rock = 200.0, 1500.0, 0.1, 30.0, 20.0
+    # the rock: undamped cells, the last one the substratum's
+    cells = _fine_column([(h_layer, vs1, eta), (h_rock - 0.1, vs2, 0.0)], (0.1, vs2), 0.1)
+    freqs = np.array([0.8, 1.6, 3.0, 4.5])
+    nodes = _incident_response(cells, freqs, lysmer)
+    w = 2 * np.pi * freqs
+    g = RHO * vs1**2
+    g_star = (
+        g * (1 - eta**2 / 2 + 1j * eta * np.sqrt(1 - eta**2 / 4)) if lysmer else g * (1 + 1j * eta)
+    )
+    k_star = w * np.sqrt(RHO / g_star)
+    alpha = np.sqrt(RHO * g_star) / (RHO * vs2)
+    outcrop = 2.0 * (-1.0 / (1j * w)) * np.exp(-1j * w * h_rock / vs2)
+    exact = 1.0 / (np.cos(k_star * h_layer) + 1j * alpha * np.sin(k_star * h_layer))
+    assert np.allclose(nodes[0] / outcrop, exact, rtol=5e-3)
+    # the first resonance Vs / 4H is where the amplification peaks
+    assert abs(exact[1]) > abs(exact[0]) and abs(exact[1]) > abs(exact[2])
+
+
+def _pulse(dt=0.01, count=300, amplitude=3.0):
+    t = dt * np.arange(count)
+    acc = amplitude * np.sin(2 * np.pi * 2.0 * t) * np.exp(-(((t - 1.0) / 0.3) ** 2))
+    return Function(t, acc, NOM_PARA="INST")
+
+
+def test_the_iteration_takes_the_moduli_of_the_curves_at_the_effective_strain():
+    cells = [
+        ColumnCell(10.0, "C1", RHO, _young(150.0), NU, 0.02, 1),
+        ColumnCell(20.0, "C2", RHO, _young(250.0), NU, 0.02, 1),
+        ColumnCell(30.0, "SUB", RHO, _young(1000.0), NU, 0.0, 1),
+    ]
+    strains = (1e-6, 1e-5, 1e-4, 1e-3, 1e-2)
+    gg = {1: StrainCurve(strains, (1.0, 0.95, 0.7, 0.35, 0.1))}
+    dg = {1: StrainCurve(strains, (0.01, 0.02, 0.05, 0.1, 0.15))}
+    result, grid = equivalent_linear_column(
+        cells, _pulse(), gg, dg, freq_cut=15.0, resi_rela=0.02, nmax_iter=8
+    )
+    assert grid.times.size == 512 and grid.cut_index == int(15.0 / grid.df)
+    assert result.changes[-1] <= 0.02 or len(result.changes) == 8
+    assert all(c > 0.02 for c in result.changes[:-1])
+    # the last analysis's strains give the next moduli, η = 2 D
+    last = result.analysis.gamma_max
+    for k, cell in enumerate(cells[:-1]):
+        assert result.young[-1][k] == pytest.approx(gg[1](0.65 * last[k]) * cell.young)
+        assert result.loss[-1][k] == pytest.approx(2.0 * dg[1](0.65 * last[k]))
+    assert result.young[-1][0] < 0.9 * cells[0].young  # the soft layer softened
+
+
+def test_linear_curves_stop_after_one_analysis_with_the_tables_own_moduli():
+    cells = [
+        ColumnCell(10.0, "C1", RHO, _young(300.0), NU, 0.0, 1),
+        ColumnCell(20.0, "SUB", RHO, _young(300.0), NU, 0.0, 1),
+    ]
+    flat = {1: StrainCurve((1e-6, 1e-2), (1.0, 1.0))}
+    damping = {1: StrainCurve((1e-6, 1e-2), (0.01, 0.01))}
+    result, _ = equivalent_linear_column(cells, _pulse(), flat, damping, freq_cut=20.0)
+    assert result.changes == [0.0]
+    assert result.young[-1] == [cells[0].young] and result.loss[-1] == [0.02]
+
+
+DECK = """DEBUT(CODE="OUI")
+t = [0.01 * k for k in range(300)]
+ACC = DEFI_FONCTION(NOM_PARA="INST", ABSCISSE=t,
+    ORDONNEE=[3.0 * sin(2 * pi * 2.0 * x) * exp(-((x - 1.0) / 0.3) ** 2) for x in t])
+FREQS = DEFI_LIST_REEL(DEBUT=0.5, INTERVALLE=_F(JUSQU_A=20.0, PAS=0.5))
+TAB = DEFI_SOL_EQUI(
+    GROUP_MA_DROITE="DR", GROUP_MA_GAUCHE="GA", GROUP_MA_COL="SURF", GROUP_MA_SUBSTR="BAS",
+    MATERIAU=_F(GAMMA=(1e-6, 1e-4, 1e-2), G_GMAX=(1.0, 0.8, 0.2), D=(0.02, 0.05, 0.15)),
+    COUCHE=(_F(GROUP_MA="C1", EPAIS=10.0, E=1.17e8, NU=0.3, RHO=2000.0, AMOR_HYST=0.04,
+               NUME_MATE=1),
+            _F(GROUP_MA="C2", EPAIS=10.0, E=3.25e8, NU=0.3, RHO=2000.0, AMOR_HYST=0.04,
+               NUME_MATE=1),
+            _F(GROUP_MA="SUB", EPAIS=10.0, E=5.2e9, NU=0.3, RHO=2000.0, AMOR_HYST=0.0,
+               NUME_MATE=1)),
+    CHARGEMENT="ONDE_PLANE", LIEU_SIGNAL="AFFLEURANT", FONC_SIGNAL=ACC, SURF="OUI",
+    FREQ_COUP=15.0, LIST_FREQ_SPEC_OSCI=FREQS, UNITE_TABLE_RESU=39, UNITE_RESU_TRAN=41,
+    UNITE_RESU_SPEC=42, {extra})
+{after}
+FIN()
+"""
+
+
+def _run(tmp_path, extra="", after=""):
+    (tmp_path / "sol.comm").write_text(DECK.format(extra=extra, after=after))
+    (tmp_path / "sol.export").write_text(
+        "P time_limit 300\nP memory_limit 2048\nP ncpus 1\nF comm sol.comm D 1\n"
+    )
+    return asterlite.run(tmp_path / "sol.export", tmp_path / "out")
+
+
+def _blocks(path):
+    from asterlite.commands.lire_fonction import numeric_blocks
+
+    return numeric_blocks(path.read_text())
+
+
+def test_the_command_writes_the_tables_and_the_six_blocks_defi_char_sol_reads(tmp_path):
+    done = _run(tmp_path, after="IMPR_TABLE(TABLE=TAB, UNITE=8)")
+    assert done.status == "DONE", done
+    table = done.concepts.raw["TAB"]
+    assert [row.get("M") for row in table.rows[:3]] == ["C1", "C2", "SUB"]
+    assert {"Efin", "AHfin", "G/Gmax", "gamma_max", "accxmax", "VSfin"} <= set(table.columns)
+    blocks = _blocks(tmp_path / "out" / "fort.41")
+    assert len(blocks) == 6
+    counts = [len(b[0]) for b in blocks]
+    # INST, then CL, RA, 2 layers, BH (three blocks), 2 strains, 2 stresses,
+    # and the forces at the surface, the layers' bases and the substratum's
+    assert counts == [6, 6, 6, 3, 3, 5]
+    times = np.array([row[0] for row in blocks[0]])
+    assert times.size == 512 and times[1] == pytest.approx(0.01)
+    # the stress is 2 G* EPXY with the last analysis's modulus: same sign
+    # and nearly G γ (small damping)
+    table_g = [row["Gfin"] for row in table.rows[:2]]
+    gam = np.array([[row[1] for row in blocks[3]], [row[2] for row in blocks[3]]])
+    tau = np.array([[row[1] for row in blocks[4]], [row[2] for row in blocks[4]]])
+    for k in range(2):
+        peak = np.argmax(np.abs(gam[k]))
+        assert tau[k][peak] == pytest.approx(table_g[k] * gam[k][peak], rel=0.1)
+    spectra = _blocks(tmp_path / "out" / "fort.42")
+    assert len(spectra[0]) == 40 and len(spectra[0][0]) == 1 + 5
+
+
+@pytest.mark.parametrize(
+    "extra, keyword",
+    [
+        ('LIEU_SIGNAL="CHAMP_LIBRE"', "LIEU_SIGNAL"),
+        ('LIAISON="SANS"', "LIAISON"),
+        ('INTEGRATION="FREQUENCE"', "INTEGRATION"),
+    ],
+)
+def test_branches_not_computed_are_refused_by_name(tmp_path, extra, keyword):
+    text = DECK.replace('LIEU_SIGNAL="AFFLEURANT", ', "")
+    (tmp_path / "sol.comm").write_text(text.format(extra=extra, after=""))
+    (tmp_path / "sol.export").write_text(
+        "P time_limit 300\nP memory_limit 2048\nP ncpus 1\nF comm sol.comm D 1\n"
+    )
+    done = asterlite.run(tmp_path / "sol.export", tmp_path / "out")
+    assert done.status == "UNSUPPORTED", done
+    assert f"DEFI_SOL_EQUI/{keyword}" in done.message, done.message
