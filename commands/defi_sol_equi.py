@@ -77,7 +77,7 @@ def run(ctx, kw):
         f"{grid.cut_index} frequencies, {len(result.changes)} analyses, "
         f"largest modulus change {result.changes[-1]:.3e}"
     )
-    table = _result_table(kw, cells, result)
+    table = _layers_table(cells, result)
     title = kw.get("TITRE") or ""
     table_title = (
         f"Resultats du calcul lineaire equivalent avec E={cvar}*E0 "
@@ -92,8 +92,7 @@ def run(ctx, kw):
     write_lines(ctx.session.output_path(int(unit) if unit is not None else 8), lines)
     _write_histories(ctx, kw, cells, result, grid, title, cvar)
     _write_spectra(ctx, kw, result, grid, title)
-    table.title = title
-    return table
+    return _soil_table(cells, result)
 
 
 def _refuse_other_branches(ctx, kw):
@@ -211,10 +210,46 @@ def _check_depths(ctx, kw, cells, keyword):
         ctx.error("the depths Y of the layers' bases must increase from 0", keyword, kw)
 
 
-def _result_table(kw, cells, result) -> Table:
-    """The macro's __TMAT: the layers' data, the iterations' moduli, then the
-    profiles (G/Gmax of the last analysis, γmax, peak acceleration in g) and
-    the final properties."""
+def _soil_table(cells, result) -> Table:
+    """What the macro returns (SURF='OUI'): the strain-compatible layers for
+    a MISS computation, the substratum's cell, then the half-space."""
+    table = Table()
+    types = {"NUME_COUCHE": "I", "NUME_MATE": "I", "RECEPTEUR": "K8", "SOURCE": "K8"}
+    for name in ("NUME_COUCHE", "EPAIS", "RHO", "E", "NU", "AMOR_HYST", "RECEPTEUR", "SOURCE",
+                 "NUME_MATE", "SUBSTRATUM"):  # fmt: skip
+        table.add_column(name, types.get(name, "K8" if name == "SUBSTRATUM" else "R"))
+    last = len(result.changes) - 1
+    top = 0.0
+    for k, cell in enumerate(cells, start=1):
+        layer = k < len(cells)
+        table.add_row(
+            {
+                "NUME_COUCHE": k, "EPAIS": cell.depth - top, "RHO": cell.density,
+                "E": result.young[last][k - 1] if layer else cell.young, "NU": cell.poisson,
+                "AMOR_HYST": result.loss[last][k - 1] if layer else cell.loss,
+                "RECEPTEUR": "OUI" if k == 1 else "NON", "SOURCE": "OUI" if k == 1 else "NON",
+                "NUME_MATE": k,
+            }
+        )  # fmt: skip
+        top = cell.depth
+    base = cells[-1]
+    table.add_row(
+        {
+            "NUME_COUCHE": len(cells) + 1, "EPAIS": 0.0, "RHO": base.density, "E": base.young,
+            "NU": base.poisson, "AMOR_HYST": base.loss, "RECEPTEUR": "NON", "SOURCE": "NON",
+            "NUME_MATE": len(cells), "SUBSTRATUM": "OUI",
+        }
+    )  # fmt: skip
+    return table
+
+
+def _layers_table(cells, result) -> Table:
+    """The macro's table of the column (printed on UNITE_TABLE_RESU): the
+    rows of TABLE_MATER_ELAS, the moduli and loss factors of the analyses
+    before the last (E1, AH1, ...), those of the last (Efin, AHfin), the
+    profiles of the last analysis (G/Gmax, γmax, peak acceleration in g at
+    the base of each layer, the surface on a row Y=0), the Rayleigh
+    coefficients, G and wave speeds of the final moduli."""
     table = Table()
     analysis = result.analysis
     runs = len(result.changes)
@@ -225,10 +260,11 @@ def _result_table(kw, cells, result) -> Table:
             "Y": cell.depth, "M": cell.name, "RHO": cell.density, "Emax": cell.young,
             "NU": cell.poisson, "AH": cell.loss, "GDgam": cell.curves,
         }  # fmt: skip
-        if layer := k < layers:
-            for it in range(1, runs):
-                row[f"E{it}"] = result.young[it][k]
-                row[f"AH{it}"] = result.loss[it][k]
+        layer = k < layers
+        for it in range(1, runs - 1):
+            row[f"E{it}"] = result.young[it][k] if layer else cell.young
+            row[f"AH{it}"] = result.loss[it][k] if layer else cell.loss
+        if layer:
             row["G/Gmax"] = result.ratio[runs - 1][k]
             row["gamma_max"] = float(analysis.gamma_max[k])
             row["accxmax"] = float(peaks[k + 1])
@@ -245,7 +281,10 @@ def _result_table(kw, cells, result) -> Table:
             ),
         )  # fmt: skip
         table.add_row(row, {"GDgam": "I", "M": "K8"})
-    table.add_row({"Y": 0.0, "G/Gmax": 1.0, "gamma_max": 0.0, "accxmax": float(peaks[0])})
+    surface = {"Y": 0.0, "G/Gmax": 1.0, "gamma_max": 0.0, "accxmax": float(peaks[0])}
+    surface.update({f"E{it}": 0.0 for it in range(1, runs - 1)})
+    surface.update({f"AH{it}": 0.0 for it in range(1, runs - 1)})
+    table.add_row(surface)
     return table
 
 
