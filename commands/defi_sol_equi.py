@@ -1,23 +1,28 @@
 """DEFI_SOL_EQUI: the equivalent-linear response of a horizontally layered
 soil column to a vertical S wave (asterlite.harmonic.sol_equi computes it).
 
-Computed: CHARGEMENT='ONDE_PLANE' with LIEU_SIGNAL='AFFLEURANT' and
-FONC_SIGNAL (the accelerogram at the outcropping rock), NOM_CMP='DX', the
-column meshed by the command itself (no MAILLAGE), its sides tied (LIAISON
-absent or 'PERIODIQUE'), SURF='OUI', INTEGRATION='TEMPS'; the soil from
-TABLE_MATER_ELAS + TABLE_GEQUI_GMAX + TABLE_AMOR_EQUI or from COUCHE +
-MATERIAU (LIST_EPSI). As code_aster's macro it returns the table of the
-layers (the iterations' moduli, G/Gmax, γmax and peak accelerations at the
-bases of the layers, the final moduli, Rayleigh coefficients and wave
-speeds), printed on UNITE_TABLE_RESU; UNITE_RESU_TRAN receives the histories
-as IMPR_FONCTION TABLEAU blocks (accelerations; with TOUT_CHAM velocities
-and displacements; with TOUT_ACCE the strains GAM_k and stresses TAU_k;
-with TOUT_CHAM the nodal shear forces FY, the block DEFI_CHAR_SOL reads);
-UNITE_RESU_SPEC the oscillator spectra (5 %, on LIST_FREQ_SPEC_OSCI) and
-the transfer function between the outcrop and the free surface.
+Computed, in 2D (FONC_SIGNAL) on the column the command meshes itself (no
+MAILLAGE) with its sides tied (LIAISON absent or 'PERIODIQUE'), NOM_CMP='DX',
+SURF='OUI', INTEGRATION='TEMPS':
+- CHARGEMENT='ONDE_PLANE' with the accelerogram at the outcropping rock
+  (LIEU_SIGNAL='AFFLEURANT');
+- CHARGEMENT='MONO_APPUI' with the accelerogram at the outcrop or at the free
+  surface (LIEU_SIGNAL='CHAMP_LIBRE', deconvolved);
+the soil from TABLE_MATER_ELAS + TABLE_GEQUI_GMAX + TABLE_AMOR_EQUI or from
+COUCHE + MATERIAU (LIST_EPSI). As code_aster's macro it returns the layers
+for MISS (the strain-compatible moduli and damping, the substratum's cell,
+the half-space) and prints the column's table (the iterations' moduli,
+G/Gmax, γmax and peak accelerations at the bases of the layers, the final
+moduli, Rayleigh coefficients and wave speeds) on UNITE_TABLE_RESU;
+UNITE_RESU_TRAN receives the histories as IMPR_FONCTION TABLEAU blocks
+(accelerations; with TOUT_CHAM velocities and displacements; with
+TOUT_ACCE the strains GAM_k and stresses TAU_k; with TOUT_CHAM the nodal
+shear forces FY, the block DEFI_CHAR_SOL reads); UNITE_RESU_SPEC the
+oscillator spectra (5 %, on LIST_FREQ_SPEC_OSCI) and the transfer function
+between the outcrop and the free surface.
 
-Refused by name: MONO_APPUI (and DSP), CHAMP_LIBRE (the macro draws a random
-white noise there), UNITE_TRAN_INIT, 3D (FONC_SIGNAL_X), MAILLAGE,
+Refused by name: ONDE_PLANE from the free surface (the macro draws a random
+white noise there), DSP, UNITE_TRAN_INIT, 3D (FONC_SIGNAL_X), MAILLAGE,
 LIAISON='SANS', NOM_CMP='DY', SURF='NON', CORRECTION='BYRNE',
 INTEGRATION='FREQUENCE', LIST_FREQ, and spectra without
 LIST_FREQ_SPEC_OSCI (code_aster's default list)."""
@@ -69,6 +74,8 @@ def run(ctx, kw):
             nmax_iter=int(kw.get("NMAX_ITER", 10)),
             lysmer=kw.get("CORR_AMOR", "NON") == "OUI",
             amplitude=float(kw.get("COEF_AMPL_ACCE", 1.0)),
+            loading=kw.get("CHARGEMENT", "MONO_APPUI"),
+            location=kw.get("LIEU_SIGNAL", "AFFLEURANT"),
         )
     except ValueError as exc:
         ctx.error(str(exc), "FONC_SIGNAL", kw)
@@ -96,11 +103,12 @@ def run(ctx, kw):
 
 
 def _refuse_other_branches(ctx, kw):
+    plane = kw.get("CHARGEMENT", "MONO_APPUI") == "ONDE_PLANE"
     refused = (
-        ("CHARGEMENT", kw.get("CHARGEMENT", "MONO_APPUI") != "ONDE_PLANE",
-         "DEFI_SOL_EQUI CHARGEMENT='MONO_APPUI'"),
-        ("LIEU_SIGNAL", kw.get("LIEU_SIGNAL", "AFFLEURANT") != "AFFLEURANT",
-         "DEFI_SOL_EQUI LIEU_SIGNAL='CHAMP_LIBRE' (the macro's random white noise)"),
+        ("LIEU_SIGNAL", plane and kw.get("LIEU_SIGNAL", "AFFLEURANT") != "AFFLEURANT",
+         "DEFI_SOL_EQUI CHARGEMENT='ONDE_PLANE' with LIEU_SIGNAL='CHAMP_LIBRE' (the macro's "
+         "random white noise)"),
+        ("DSP", kw.get("DSP") is not None, "DEFI_SOL_EQUI from a power spectral density (DSP)"),
         ("UNITE_TRAN_INIT", kw.get("UNITE_TRAN_INIT") is not None,
          "DEFI_SOL_EQUI from a file of signals (UNITE_TRAN_INIT)"),
         ("FONC_SIGNAL_X", kw.get("FONC_SIGNAL_X") is not None, "DEFI_SOL_EQUI in 3D"),
@@ -114,7 +122,7 @@ def _refuse_other_branches(ctx, kw):
         ("INTEGRATION", kw.get("INTEGRATION", "TEMPS") != "TEMPS",
          "DEFI_SOL_EQUI INTEGRATION='FREQUENCE'"),
         ("LIST_FREQ", kw.get("LIST_FREQ") is not None,
-         "DEFI_SOL_EQUI LIST_FREQ with CHARGEMENT='ONDE_PLANE'"),
+         "DEFI_SOL_EQUI LIST_FREQ (harmonic frequencies of the user's)"),
         ("LIST_FREQ_SPEC_OSCI", kw.get("LIST_FREQ_SPEC_OSCI") is None,
          "DEFI_SOL_EQUI without LIST_FREQ_SPEC_OSCI (code_aster's default list of spectra)"),
     )  # fmt: skip
@@ -122,7 +130,7 @@ def _refuse_other_branches(ctx, kw):
         if condition:
             ctx.unsupported(what, keyword, kw)
     if kw.get("FONC_SIGNAL") is None:
-        ctx.error("CHARGEMENT='ONDE_PLANE' needs FONC_SIGNAL here", "FONC_SIGNAL", kw)
+        ctx.error("FONC_SIGNAL is needed here", "FONC_SIGNAL", kw)
 
 
 def _curve(ctx, kw, keyword, strains, values, what):
@@ -369,15 +377,14 @@ def _write_spectra(ctx, kw, result, grid, subtitle):
     lines.append(" ".join(["FREQ"] + [name for name, _ in curves]))
     values = np.vstack([freqs] + [v for _, v in curves])
     lines += [" ".join(fortran_real(float(x)) for x in column) for column in values.T]
-    # the transfer function from the outcrop to the free surface (FDT_RACL)
-    # and its modulus
-    transfer = result.input_spectrum / analysis.surface_harmonic
+    # the transfer function between the outcrop and the free surface
+    # (FDT_RACL) and its modulus
     lines += [
         "# Fonctions de Transfert entre CL et RA et Module des FFT",
         "FREQ FDT_R FDT_I MODULE",
     ]
     lines += [
-        " ".join(fortran_real(float(x)) for x in (grid.df * (k + 1), z.real, z.imag, abs(z)))
-        for k, z in enumerate(transfer)
+        " ".join(fortran_real(float(x)) for x in (f, z.real, z.imag, abs(z)))
+        for f, z in zip(*result.transfer, strict=True)
     ]
     write_lines(ctx.session.output_path(int(kw.get("UNITE_RESU_SPEC", 55))), lines)

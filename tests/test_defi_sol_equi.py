@@ -80,6 +80,20 @@ def test_a_damped_layer_on_a_stiff_rock_amplifies_as_its_closed_form(lysmer):
     assert abs(exact[1]) > abs(exact[0]) and abs(exact[1]) > abs(exact[2])
 
 
+def test_mono_appui_relative_motion_on_a_stiff_rock_is_the_rigid_base_amplification():
+    # per unit base acceleration, 1 + the surface's relative acceleration is
+    # 1 / cos(k*H) on a rigid base; a stiff, dense substratum comes close
+    vs1, eta, h_layer = 200.0, 0.1, 30.0
+    cells = _fine_column([(h_layer, vs1, eta)], (0.5, 2.0e6), 0.1)
+    freqs = np.array([0.8, 1.6, 3.0])
+    young = [c.young for c in cells[:-1]]
+    loss = [c.loss for c in cells[:-1]]
+    disp = column_response(cells, young, loss, False, None, freqs)
+    w = 2 * np.pi * freqs
+    k_star = w * np.sqrt(RHO / (RHO * vs1**2 * (1 + 1j * eta)))
+    assert np.allclose(1.0 - w**2 * disp[0], 1.0 / np.cos(k_star * h_layer), rtol=5e-3)
+
+
 def _pulse(dt=0.01, count=300, amplitude=3.0):
     t = dt * np.arange(count)
     acc = amplitude * np.sin(2 * np.pi * 2.0 * t) * np.exp(-(((t - 1.0) / 0.3) ** 2))
@@ -119,6 +133,35 @@ def test_linear_curves_stop_after_one_analysis_with_the_tables_own_moduli():
     result, _ = equivalent_linear_column(cells, _pulse(), flat, damping, freq_cut=20.0)
     assert result.changes == [0.0]
     assert result.young[-1] == [cells[0].young] and result.loss[-1] == [0.02]
+
+
+def test_mono_appui_finds_the_free_field_signal_again_at_the_surface():
+    # CHAMP_LIBRE: the outcrop signal is deconvolved by FILTRE / (1 + H) on
+    # the 0.1 Hz list, then the surface is that signal times (1 + H): the
+    # given signal, filtered, up to the interpolations between the lists
+    cells = [
+        ColumnCell(10.0, "C1", RHO, _young(150.0), NU, 0.05, 1),
+        ColumnCell(20.0, "C2", RHO, _young(250.0), NU, 0.05, 1),
+        ColumnCell(30.0, "SUB", RHO, _young(800.0), NU, 0.0, 1),
+    ]
+    flat = {1: StrainCurve((1e-6, 1e-2), (1.0, 1.0))}
+    damping = {1: StrainCurve((1e-6, 1e-2), (0.025, 0.025))}
+    pulse = _pulse(count=512)
+    common = dict(freq_cut=10.0, loading="MONO_APPUI")
+    free, grid = equivalent_linear_column(
+        cells, pulse, flat, damping, location="CHAMP_LIBRE", **common
+    )
+    assert grid.times.size == 512 and free.changes == [0.0]
+    spectrum = np.fft.rfft(pulse.ordinates)
+    spectrum[grid.cut_index + 1 :] = 0.0
+    spectrum[0] = 0.0
+    filtered = np.fft.irfft(spectrum, 512)
+    surface = free.analysis.acceleration[0]
+    assert np.max(np.abs(surface - filtered)) < 0.03 * np.max(np.abs(filtered))
+    # and AFFLEURANT amplifies the same signal given at the outcrop
+    outcrop, _ = equivalent_linear_column(cells, pulse, flat, damping, **common)
+    assert np.max(np.abs(outcrop.analysis.acceleration[0])) > 1.2 * np.max(np.abs(filtered))
+    assert np.allclose(outcrop.input_acceleration, filtered, atol=1e-9)
 
 
 DECK = """DEBUT(CODE="OUI")
@@ -189,6 +232,24 @@ def test_the_command_writes_the_tables_and_the_six_blocks_defi_char_sol_reads(tm
         assert tau[k][peak] == pytest.approx(table_g[k] * gam[k][peak], rel=0.1)
     spectra = _blocks(tmp_path / "out" / "fort.42")
     assert len(spectra[0]) == 40 and len(spectra[0][0]) == 1 + 5
+
+
+def test_mono_appui_deck_writes_its_blocks_without_the_fields_by_default(tmp_path):
+    text = DECK.replace('CHARGEMENT="ONDE_PLANE", LIEU_SIGNAL="AFFLEURANT", ', "")
+    (tmp_path / "sol.comm").write_text(
+        text.format(extra='CHARGEMENT="MONO_APPUI", LIEU_SIGNAL="CHAMP_LIBRE"', after="")
+    )
+    (tmp_path / "sol.export").write_text(
+        "P time_limit 300\nP memory_limit 2048\nP ncpus 1\nF comm sol.comm D 1\n"
+    )
+    done = asterlite.run(tmp_path / "sol.export", tmp_path / "out")
+    assert done.status == "DONE", done
+    # TOUT_CHAM defaults to 'NON' for MONO_APPUI: accelerations, GAM, TAU;
+    # no padding (300 instants)
+    blocks = _blocks(tmp_path / "out" / "fort.41")
+    assert [len(b[0]) for b in blocks] == [6, 3, 3] and len(blocks[0]) == 300
+    transfer = _blocks(tmp_path / "out" / "fort.42")[1]
+    assert transfer[0][0] == pytest.approx(0.1) and transfer[-1][0] == pytest.approx(15.0)
 
 
 @pytest.mark.parametrize(

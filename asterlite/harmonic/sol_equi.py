@@ -78,7 +78,7 @@ class SolEquiResult:
     times: np.ndarray
     input_acceleration: np.ndarray
     analysis: ColumnAnalysis
-    input_spectrum: np.ndarray  # FFT of the accelerogram at df .. cut
+    transfer: tuple[np.ndarray, np.ndarray] | None = None  # FDT_RACL: frequencies, values
     young: list[list[float]] = field(default_factory=list)
     loss: list[list[float]] = field(default_factory=list)
     ratio: list[list[float]] = field(default_factory=list)
@@ -87,32 +87,37 @@ class SolEquiResult:
 
 @dataclass(frozen=True)
 class SignalGrid:
-    """The signal's instants (padded to a power of two), the frequency step,
-    the highest frequency and the cut frequency rounded down to the grid."""
+    """The signal's instants (padded to a power of two for ONDE_PLANE), the
+    frequency step, the highest frequency, the cut frequency (FREQ_COUP, at
+    most fmax) and its index on the grid, rounded down."""
 
     times: np.ndarray
     dt: float
     df: float
     fmax: float
+    cut: float
     cut_index: int  # the filter keeps the frequencies 1 .. cut_index times df
 
 
-def signal_grid(signal: Function, freq_cut: float | None) -> SignalGrid:
-    """The macro's padding and frequencies for CHARGEMENT='ONDE_PLANE'."""
+def signal_grid(signal: Function, freq_cut: float | None, pad: bool = True) -> SignalGrid:
+    """The macro's instants and frequencies: nbdt samples (the next power of
+    two with ``pad``), df = 1 / (nbdt dt), fmax = 1 / (2 dt) - df."""
     tt = np.asarray(signal.abscissas, dtype=float)
     if tt.size < 2:
         raise ValueError("FONC_SIGNAL needs at least two instants")
     dt = float(tt[1] - tt[0])
-    count = 1
-    while count < tt.size:
-        count *= 2
+    count = tt.size
+    if pad:
+        count = 1
+        while count < tt.size:
+            count *= 2
     df = 1.0 / (count * dt)
     fmax = 0.5 / dt - df
     cut = fmax if freq_cut is None else min(float(freq_cut), fmax)
     cut_index = int((cut + 1.0e-12) / df)
     if cut_index < 1:
         raise ValueError(f"the cut frequency {cut:g} Hz is below the frequency step {df:g} Hz")
-    return SignalGrid(dt * np.arange(count), dt, df, fmax, cut_index)
+    return SignalGrid(dt * np.arange(count), dt, df, fmax, cut, cut_index)
 
 
 def column_response(
@@ -120,13 +125,14 @@ def column_response(
     young: list[float],
     loss: list[float],
     lysmer: bool,
-    base_load: np.ndarray,
+    base_load: np.ndarray | None,
     freqs: np.ndarray,
 ) -> np.ndarray:
     """Nodal displacements (rows: nodes from the surface down; columns:
-    frequencies) under the base load's spectrum ``base_load``. ``young`` and
-    ``loss`` are the layers' current values (the substratum cell keeps its
-    own)."""
+    frequencies) under the base load's spectrum ``base_load`` or, when it is
+    None, relative to a unit base acceleration (CALC_CHAR_SEISME MONO_APPUI:
+    the load -M 1). ``young`` and ``loss`` are the layers' current values
+    (the substratum cell keeps its own)."""
     n = len(cells) + 1
     stiffness = np.zeros((n, n), dtype=complex)
     mass = np.zeros((n, n))
@@ -147,37 +153,58 @@ def column_response(
         w = 2.0 * np.pi * f
         system = stiffness - w * w * mass
         system[-1, -1] += 1j * w * dashpot
-        rhs = np.zeros(n, dtype=complex)
-        rhs[-1] = base_load[j]
+        if base_load is None:
+            rhs = -mass.sum(axis=1).astype(complex)
+        else:
+            rhs = np.zeros(n, dtype=complex)
+            rhs[-1] = base_load[j]
         out[:, j] = np.linalg.solve(system, rhs)
     return out
 
 
 def _to_time(grid: SignalGrid, spectra: np.ndarray) -> np.ndarray:
-    """Histories (rows) from responses at df .. cut (columns): the filter,
-    then CALC_FONCTION FFT SYME='NON' on the grid 0 .. fmax."""
-    half = grid.times.size // 2
-    freqs = grid.df * np.arange(half)
+    """Histories (rows) from spectra on the grid 0, df, ... fmax (columns):
+    CALC_FONCTION FFT SYME='NON', then the instants of the signal (COMB on
+    LIST_PARA, the transform's own instants when the count is a power of
+    two)."""
+    freqs = grid.df * np.arange(spectra.shape[1])
     out = np.empty((spectra.shape[0], grid.times.size))
     for r, row in enumerate(spectra):
-        full = np.zeros(half, dtype=complex)
-        full[1 : grid.cut_index + 1] = row
-        back = fops.inverse_fft(Function(freqs, full, NOM_PARA="FREQ"), "COMPLET", False)
-        out[r] = back.ordinates[: grid.times.size]
+        back = fops.inverse_fft(Function(freqs, row, NOM_PARA="FREQ"), "COMPLET", False)
+        if back.abscissas.size >= grid.times.size and np.allclose(
+            back.abscissas[: grid.times.size], grid.times, rtol=0.0, atol=1e-9 * grid.dt
+        ):
+            out[r] = back.ordinates[: grid.times.size]
+        else:
+            out[r] = back.with_values(
+                back.abscissas, back.ordinates, PROL_DROITE="CONSTANT", PROL_GAUCHE="CONSTANT"
+            ).evaluate(grid.times)
     return out
 
 
-def analyse(
-    cells: list[ColumnCell],
-    young: list[float],
-    loss: list[float],
-    lysmer: bool,
-    grid: SignalGrid,
-    load_spectrum: np.ndarray,
-) -> ColumnAnalysis:
-    """One harmonic analysis and its histories."""
-    freqs = grid.df * np.arange(1, grid.cut_index + 1)
-    disp = column_response(cells, young, loss, lysmer, load_spectrum, freqs)
+def spectrum_grid(grid: SignalGrid) -> np.ndarray:
+    """The frequencies 0, df, ... up to fmax (the macro's __lfreq)."""
+    return grid.df * np.arange(int((grid.fmax + 1.0e-9 * grid.df) / grid.df) + 1)
+
+
+def filter_values(grid: SignalGrid, freqs: np.ndarray) -> np.ndarray:
+    """The macro's FILTRE: 0 at 0 Hz, 1 from df to the cut frequency, down to
+    0 at the next frequency of the grid, linear between."""
+    knots = [0.0, grid.df, grid.cut, (grid.cut_index + 1) * grid.df]
+    return np.interp(freqs, knots, [0.0, 1.0, 1.0, 0.0])
+
+
+def _interp_complex(x, xp, fp) -> np.ndarray:
+    """Linear interpolation of complex values, constant beyond the ends."""
+    fp = np.asarray(fp)
+    return np.interp(x, xp, fp.real) + 1j * np.interp(x, xp, fp.imag)
+
+
+def _harmonic_fields(cells, young, loss, lysmer, freqs, base_load=None):
+    """Per frequency: relative accelerations (nodes), strains γ (cells),
+    FORC_NODA DY at the left nodes, for the ONDE_PLANE base load or, when
+    ``base_load`` is None, the unit base acceleration of MONO_APPUI."""
+    disp = column_response(cells, young, loss, lysmer, base_load, freqs)
     omega = 2.0 * np.pi * freqs
     accel = -(omega**2) * disp
     heights = np.diff(np.concatenate([[0.0], [c.depth for c in cells]]))
@@ -196,20 +223,81 @@ def analyse(
     force = np.zeros_like(disp)
     force[:-1] += share
     force[1:] += share
+    return accel, gamma, force
+
+
+def analyse(
+    cells: list[ColumnCell],
+    young: list[float],
+    loss: list[float],
+    lysmer: bool,
+    grid: SignalGrid,
+    excitation: Excitation,
+) -> ColumnAnalysis:
+    """One harmonic analysis and its histories."""
+    layers = len(cells) - 1
+    accel, gamma, force = _harmonic_fields(
+        cells, young, loss, lysmer, excitation.freqs, excitation.base_load
+    )
+    fine = spectrum_grid(grid)
+    if excitation.base_load is not None:
+        # ONDE_PLANE: the harmonic frequencies are those of the grid
+        def on_grid(values):
+            out = np.zeros((values.shape[0], fine.size), dtype=complex)
+            out[:, 1 : grid.cut_index + 1] = values
+            return out
+    else:
+        # MONO_APPUI: transfer functions per unit base acceleration, on the
+        # 0.1 Hz list, times the outcrop's spectrum and the filter
+        weight = excitation.outcrop * filter_values(grid, fine)
+
+        def on_grid(values):
+            return np.array([_interp_complex(fine, excitation.freqs, v) for v in values]) * weight
+
     tau_modulus = np.array(
         [
             2.0 * complex_shear_modulus(young[k] / (2.0 * (1.0 + c.poisson)), loss[k], lysmer)
             for k, c in enumerate(cells[:-1])
         ]
     )
+    strain = on_grid(gamma[:layers])
     histories = _to_time(
         grid,
-        np.vstack([accel, gamma[:layers], (gamma[:layers] / 2.0) * tau_modulus[:, None], force]),
+        np.vstack([on_grid(accel), strain, (strain / 2.0) * tau_modulus[:, None], on_grid(force)]),
     )
     n = len(cells) + 1
     acc, gam = histories[:n], histories[n : n + layers]
+    if excitation.base_load is None:
+        acc = acc + excitation.outcrop_history  # relative to total accelerations
     tau, forces = histories[n + layers : n + 2 * layers], histories[n + 2 * layers :]
     return ColumnAnalysis(acc, gam, tau, forces, np.max(np.abs(gam), axis=1), accel[0])
+
+
+@dataclass
+class Excitation:
+    """The harmonic frequencies and the base load (ONDE_PLANE) or, for
+    MONO_APPUI (base_load None), the outcrop's filtered spectrum on the grid
+    0 .. fmax and its history."""
+
+    freqs: np.ndarray
+    base_load: np.ndarray | None = None
+    outcrop: np.ndarray | None = None
+    outcrop_history: np.ndarray | None = None
+
+
+def _pas_list(start: float, end: float, step: float) -> np.ndarray:
+    """DEFI_LIST_REEL(DEBUT=start, INTERVALLE=_F(JUSQU_A=end, PAS=step))."""
+    ratio = (end - start) / step
+    count = int(np.floor(ratio + 0.5))
+    if count < 1:
+        return np.array([start])
+    if abs((end - (start + (count - 1) * step) - step) / step) > 1.0e-3:
+        if start + count * step > end:
+            count -= 1
+        return np.append(start + step * np.arange(count + 1), end)
+    points = start + step * np.arange(count + 1)
+    points[-1] = end
+    return points
 
 
 def equivalent_linear_column(
@@ -223,10 +311,17 @@ def equivalent_linear_column(
     nmax_iter: int = 10,
     lysmer: bool = False,
     amplitude: float = 1.0,
+    loading: str = "ONDE_PLANE",
+    location: str = "AFFLEURANT",
 ) -> tuple[SolEquiResult, SignalGrid]:
     """DEFI_SOL_EQUI's iterations on the column (the last row of ``cells``
-    is the substratum's cell)."""
-    grid = signal_grid(accelerogram, freq_cut)
+    is the substratum's cell): ``loading`` 'ONDE_PLANE' (the signal at the
+    outcrop only) or 'MONO_APPUI' (at the outcrop, 'AFFLEURANT', or at the
+    free surface, 'CHAMP_LIBRE', deconvolved by the transfer function of the
+    transfer function of each analysis, as the macro)."""
+    if loading == "ONDE_PLANE" and location != "AFFLEURANT":
+        raise ValueError("ONDE_PLANE from the free surface needs the macro's random draw")
+    grid = signal_grid(accelerogram, freq_cut, pad=loading == "ONDE_PLANE")
     on_grid = Function(
         grid.times,
         amplitude
@@ -240,25 +335,52 @@ def equivalent_linear_column(
         PROL_GAUCHE="CONSTANT",
         PROL_DROITE="CONSTANT",
     )
-    velocity = fops.integrate(on_grid).ordinates
-    base = cells[-1]
-    rho_vs = np.sqrt(base.density * base.young / (2.0 * (1.0 + base.poisson)))
-    load = -2.0 * rho_vs * velocity
-    _, spectrum = time_to_frequency(grid.times, load[:, None], "PROL_ZERO", False, 0)
-    load_spectrum = spectrum[1 : grid.cut_index + 1, 0]
-    # AX_RA: the input accelerogram, filtered
-    forward = fops.fft(on_grid, "COMPLET").ordinates[: grid.times.size // 2]
-    input_acc = _to_time(grid, forward[None, 1 : grid.cut_index + 1])[0]
+    fine = spectrum_grid(grid)
+    forward = fops.fft(on_grid, "COMPLET")
+    signal_spectrum = _interp_complex(fine, forward.abscissas, forward.ordinates)
     layers = cells[:-1]
     young = [c.young for c in layers]
     loss = [c.loss for c in layers]
-    result = SolEquiResult(grid.times, input_acc, None, forward[1 : grid.cut_index + 1])  # type: ignore[arg-type]
+    if loading == "ONDE_PLANE":
+        velocity = fops.integrate(on_grid).ordinates
+        base = cells[-1]
+        rho_vs = np.sqrt(base.density * base.young / (2.0 * (1.0 + base.poisson)))
+        _, spectrum = time_to_frequency(
+            grid.times, (-2.0 * rho_vs * velocity)[:, None], "PROL_ZERO", False, 0
+        )
+        freqs = grid.df * np.arange(1, grid.cut_index + 1)
+        excitation = Excitation(freqs, base_load=spectrum[1 : grid.cut_index + 1, 0])
+    else:
+        excitation = Excitation(_pas_list(0.1, grid.cut, 0.1))
+    filtre = filter_values(grid, fine)
+    input_spectrum = signal_spectrum * filtre
+    result = SolEquiResult(grid.times, None, None)  # type: ignore[arg-type]
     result.young.append(list(young))
     result.loss.append(list(loss))
     result.ratio.append([1.0] * len(layers))
     while True:
-        analysis = analyse(cells, young, loss, lysmer, grid, load_spectrum)
+        if loading == "MONO_APPUI":
+            # FDT_RACL: FILTRE / (1 + the surface's relative acceleration) on
+            # the 0.1 Hz list; the outcrop's spectrum from the surface signal
+            surface = _harmonic_fields(cells, young, loss, lysmer, excitation.freqs)[0][0]
+            transfer = filter_values(grid, excitation.freqs) / (1.0 + surface)
+            result.transfer = (excitation.freqs, transfer)
+            outcrop = signal_spectrum
+            if location == "CHAMP_LIBRE":
+                outcrop = signal_spectrum * _interp_complex(fine, excitation.freqs, transfer)
+            excitation.outcrop = outcrop * filtre
+            excitation.outcrop_history = _to_time(grid, excitation.outcrop[None, :])[0]
+            result.input_acceleration = excitation.outcrop_history
+        else:
+            result.input_acceleration = _to_time(grid, input_spectrum[None, :])[0]
+        analysis = analyse(cells, young, loss, lysmer, grid, excitation)
         result.analysis = analysis
+        if loading == "ONDE_PLANE":
+            # FDT_RACL: the signal's spectrum over the surface's response
+            result.transfer = (
+                excitation.freqs,
+                signal_spectrum[1 : grid.cut_index + 1] / analysis.surface_harmonic,
+            )
         strains = [coef_gamma * g for g in analysis.gamma_max]
         ratio = [gg_curves[c.curves](s) for c, s in zip(layers, strains, strict=True)]
         new_loss = [2.0 * damping_curves[c.curves](s) for c, s in zip(layers, strains, strict=True)]
