@@ -323,8 +323,12 @@ def _write_histories(ctx, kw, cells, result, grid, subtitle, cvar):
         names = {cell.name: k for k, cell in enumerate(cells[:-1], start=1)}
         chosen = []
         for name in kw.get("LIST_COUCHE_ACCE") or ():
+            if name == cells[-1].name:
+                ctx.error(f"{name} is the substratum, not a layer", "LIST_COUCHE_ACCE", kw)
             if name not in names:
-                ctx.error(f"{name} is not a layer of the column", "LIST_COUCHE_ACCE", kw)
+                # as code_aster: a message, and the name is left out
+                ctx.log(f"DEFI_SOL_EQUI: layer {name} is not in the soil table, left out")
+                continue
             chosen.append(names[name])
     acc = analysis.acceleration
     path = ctx.session.output_path(int(kw.get("UNITE_RESU_TRAN", 40)))

@@ -252,6 +252,16 @@ def test_mono_appui_deck_writes_its_blocks_without_the_fields_by_default(tmp_pat
     assert transfer[0][0] == pytest.approx(0.1) and transfer[-1][0] == pytest.approx(15.0)
 
 
+def test_tout_acce_non_keeps_the_listed_layers_and_the_forces(tmp_path):
+    done = _run(tmp_path, extra='TOUT_ACCE="NON", LIST_COUCHE_ACCE=("C2", "C9")')
+    assert done.status == "DONE", done
+    # accelerations at CL, RA, C2's base, BH; no velocities, strains or
+    # stresses; the forces (TOUT_CHAM) still; C9 is left out with a message
+    blocks = _blocks(tmp_path / "out" / "fort.41")
+    assert [len(b[0]) for b in blocks] == [5, 5]
+    assert "layer C9 is not in the soil table" in (tmp_path / "out" / "message.log").read_text()
+
+
 @pytest.mark.parametrize(
     "extra, keyword",
     [
