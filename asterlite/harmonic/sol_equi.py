@@ -1,6 +1,5 @@
-"""DEFI_SOL_EQUI's equivalent-linear soil column under a vertical S wave
-(CHARGEMENT='ONDE_PLANE', signal at the outcropping rock, 2D), following
-code_aster's macro step by step:
+"""DEFI_SOL_EQUI's equivalent-linear soil column under vertical S waves (2D),
+following code_aster's macro step by step:
 
 - the column is its own mesh: one 1 m wide QUAD4 D_PLAN cell per row of
   TABLE_MATER_ELAS (the layers, then the substratum's cell), the two sides
@@ -10,15 +9,24 @@ code_aster's macro step by step:
   G* = G (1 + iη), or Lysmer's G (1 - η²/2 + iη √(1 - η²/4)) with
   CORR_AMOR), consistent mass ρh/6 [[2, 1], [1, 2]], and the absorbing edge
   the dashpot ρ Vs of the substratum;
-- the load is the ONDE_PLANE force on that edge, -2 ρ Vs v(t) along X
-  (asterlite.fem.plane_wave's convention for DIRECTION=(0, 1), the wave's
-  source at the base), v the integral of the accelerogram (INTEGRE), taken
-  to frequency as REST_SPEC_TEMP METHODE='PROL_ZERO' SYMETRIE='NON';
-- the harmonic solution at df, 2 df, ... up to the cut frequency; the
-  responses (accelerations -ω² u, the shear strain EPXY, the nodal forces
-  FORC_NODA DY on the left side, from the cells of the column only) are
-  multiplied by the filter (0 at 0 Hz, 1 from df to FREQ_COUP, 0 beyond) and
-  brought back to time as CALC_FONCTION FFT SYME='NON';
+- CHARGEMENT='ONDE_PLANE' (signal at the outcrop): the signal padded to a
+  power of two; the load is the ONDE_PLANE force on the base edge,
+  -2 ρ Vs v(t) along X (asterlite.fem.plane_wave's convention for
+  DIRECTION=(0, 1), the wave's source at the base), v the integral of the
+  accelerogram (INTEGRE), taken to frequency as REST_SPEC_TEMP
+  METHODE='PROL_ZERO' SYMETRIE='NON'; the harmonic solution at df, 2 df, ...
+  up to the cut frequency;
+- CHARGEMENT='MONO_APPUI': the column relative to a unit base acceleration
+  (load -M 1) at 0.1, 0.2, ... Hz up to the cut frequency; these transfer
+  functions, interpolated onto the signal's grid, multiply the outcrop's
+  spectrum: the signal's (AFFLEURANT) or the free-field signal's times
+  FDT_RACL = FILTRE / (1 + H_surface) (CHAMP_LIBRE); accelerations are then
+  the outcrop's plus the relative ones;
+- the responses (accelerations -ω² u, the shear strain 2 EPXY, the nodal
+  forces FORC_NODA DY on the left side, from the cells of the column only)
+  are multiplied by the filter (0 at 0 Hz, 1 from df to FREQ_COUP, 0 at the
+  next frequency of the grid) and brought back to time as CALC_FONCTION FFT
+  SYME='NON';
 - iteration k+1 takes G/Gmax and D of the curves at COEF_GAMMA · γmax of
   each layer, η = 2 D, until the largest relative change of the layers'
   moduli is at most RESI_RELA or NMAX_ITER analyses ran; the histories are
@@ -66,7 +74,7 @@ class ColumnAnalysis:
     stress: np.ndarray  # TAU_k
     force: np.ndarray  # FORC_NODA DY at the left node
     gamma_max: np.ndarray  # per layer
-    surface_harmonic: np.ndarray  # the free surface's acceleration at df .. cut
+    surface_harmonic: np.ndarray  # the free surface's acceleration, harmonic frequencies
 
 
 @dataclass
@@ -76,8 +84,8 @@ class SolEquiResult:
     G/Gmax and largest changes."""
 
     times: np.ndarray
-    input_acceleration: np.ndarray
-    analysis: ColumnAnalysis
+    input_acceleration: np.ndarray | None = None
+    analysis: ColumnAnalysis | None = None
     transfer: tuple[np.ndarray, np.ndarray] | None = None  # FDT_RACL: frequencies, values
     young: list[list[float]] = field(default_factory=list)
     loss: list[list[float]] = field(default_factory=list)
@@ -354,7 +362,7 @@ def equivalent_linear_column(
         excitation = Excitation(_pas_list(0.1, grid.cut, 0.1))
     filtre = filter_values(grid, fine)
     input_spectrum = signal_spectrum * filtre
-    result = SolEquiResult(grid.times, None, None)  # type: ignore[arg-type]
+    result = SolEquiResult(grid.times)
     result.young.append(list(young))
     result.loss.append(list(loss))
     result.ratio.append([1.0] * len(layers))
