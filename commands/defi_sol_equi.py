@@ -5,7 +5,10 @@ Computed, in 2D (FONC_SIGNAL) on the column the command meshes itself (no
 MAILLAGE) with its sides tied (LIAISON absent or 'PERIODIQUE'), NOM_CMP='DX',
 SURF='OUI', INTEGRATION='TEMPS':
 - CHARGEMENT='ONDE_PLANE' with the accelerogram at the outcropping rock
-  (LIEU_SIGNAL='AFFLEURANT');
+  (LIEU_SIGNAL='AFFLEURANT') or at the free surface ('CHAMP_LIBRE': the
+  column driven by the macro's white noise, drawn from the deck's random
+  stream as GENE_FONC_ALEA, and its responses scaled by the signal over the
+  surface's response);
 - CHARGEMENT='MONO_APPUI' with the accelerogram at the outcrop or at the free
   surface (LIEU_SIGNAL='CHAMP_LIBRE', deconvolved);
 the soil from TABLE_MATER_ELAS + TABLE_GEQUI_GMAX + TABLE_AMOR_EQUI or from
@@ -21,8 +24,8 @@ shear forces FY, the block DEFI_CHAR_SOL reads); UNITE_RESU_SPEC the
 oscillator spectra (5 %, on LIST_FREQ_SPEC_OSCI) and the transfer function
 between the outcrop and the free surface.
 
-Refused by name: ONDE_PLANE from the free surface (the macro draws a random
-white noise there), DSP, UNITE_TRAN_INIT, 3D (FONC_SIGNAL_X), MAILLAGE,
+Every call draws that white noise, as code_aster, so that the deck's later
+draws stay the same. Refused by name: DSP, UNITE_TRAN_INIT, 3D (FONC_SIGNAL_X), MAILLAGE,
 LIAISON='SANS', NOM_CMP='DY', SURF='NON', CORRECTION='BYRNE',
 INTEGRATION='FREQUENCE', LIST_FREQ, and spectra without
 LIST_FREQ_SPEC_OSCI (code_aster's default list)."""
@@ -33,11 +36,13 @@ import math
 
 import numpy as np
 
+from asterlite.concepts.interspectrum import InterSpectrum
 from asterlite.concepts.table import Table
 from asterlite.harmonic.soil_column import StrainCurve
-from asterlite.harmonic.sol_equi import ColumnCell, equivalent_linear_column
+from asterlite.harmonic.sol_equi import ColumnCell, equivalent_linear_column, signal_grid
 from asterlite.io.tables import fortran_real, table_lines, write_lines
 from asterlite.post import functions as fops
+from asterlite.post import spectral
 from asterlite.post.restitution import values_of
 
 _ELAS_COLUMNS = ("Y", "M", "RHO", "Emax", "NU", "AH", "GDgam")
@@ -63,6 +68,10 @@ def run(ctx, kw):
     for key in ("GROUP_MA_DROITE", "GROUP_MA_GAUCHE", "GROUP_MA_SUBSTR", "GROUP_MA_COL"):
         kw.mark_used(key)  # the names of the groups of the macro's own mesh
     try:
+        grid = signal_grid(
+            kw["FONC_SIGNAL"], kw.get("FREQ_COUP"), pad=kw.get("CHARGEMENT") == "ONDE_PLANE"
+        )
+        noise = _white_noise(ctx, kw, grid)
         result, grid = equivalent_linear_column(
             cells,
             kw["FONC_SIGNAL"],
@@ -76,6 +85,7 @@ def run(ctx, kw):
             amplitude=float(kw.get("COEF_AMPL_ACCE", 1.0)),
             loading=kw.get("CHARGEMENT", "MONO_APPUI"),
             location=kw.get("LIEU_SIGNAL", "AFFLEURANT"),
+            noise=noise,
         )
     except ValueError as exc:
         ctx.error(str(exc), "FONC_SIGNAL", kw)
@@ -102,12 +112,29 @@ def run(ctx, kw):
     return _soil_table(cells, result)
 
 
+def _white_noise(ctx, kw, grid):
+    """The macro's draw of a white noise (GENE_FONC_ALEA of a unit spectrum
+    from df to the cut frequency, for tfin + dt seconds up to fmax, from the
+    deck's random stream), scaled by 1 / √(2π fmax): the velocity of the
+    ONDE_PLANE from the free field. Drawn on every call, as code_aster, so
+    that the deck's later draws stay the same."""
+    knots = np.array([0.0, grid.df, grid.cut, grid.cut + grid.df])
+    spectrum = InterSpectrum("FREQ", knots, [(1, 1)], [np.array([1.0, 1.0, 1.0, 0.0])])
+    duration = float(grid.times[-1]) + grid.dt
+    try:
+        frequencies = spectral.generation_grid(knots, True, 0.0, grid.fmax, None, duration)
+        factors = np.array(
+            [spectral.factor(m) for m in spectral.sampled_matrix(spectrum, frequencies, True)]
+        )
+    except ValueError as exc:
+        ctx.error(f"the macro's white noise: {exc}", "FONC_SIGNAL", kw)
+    phases = spectral.deck_phases(ctx.session, None)
+    signals = spectral.generate(factors, frequencies.stored_frequencies(), 1, phases)
+    return signals.times, signals.values[0] / math.sqrt(2.0 * math.pi * grid.fmax)
+
+
 def _refuse_other_branches(ctx, kw):
-    plane = kw.get("CHARGEMENT", "MONO_APPUI") == "ONDE_PLANE"
     refused = (
-        ("LIEU_SIGNAL", plane and kw.get("LIEU_SIGNAL", "AFFLEURANT") != "AFFLEURANT",
-         "DEFI_SOL_EQUI CHARGEMENT='ONDE_PLANE' with LIEU_SIGNAL='CHAMP_LIBRE' (the macro's "
-         "random white noise)"),
         ("DSP", kw.get("DSP") is not None, "DEFI_SOL_EQUI from a power spectral density (DSP)"),
         ("UNITE_TRAN_INIT", kw.get("UNITE_TRAN_INIT") is not None,
          "DEFI_SOL_EQUI from a file of signals (UNITE_TRAN_INIT)"),

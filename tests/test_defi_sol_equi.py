@@ -164,6 +164,35 @@ def test_mono_appui_finds_the_free_field_signal_again_at_the_surface():
     assert np.allclose(outcrop.input_acceleration, filtered, atol=1e-9)
 
 
+def test_onde_plane_from_the_free_field_deconvolves_what_the_outcrop_reconvolves():
+    # CHAMP_LIBRE: a white noise drives the column, FDT_RACL = signal /
+    # surface response scales it: the outcrop motion found, given back at
+    # the outcrop (AFFLEURANT), gives the free-field signal again (up to the
+    # trapezoidal integration of the outcrop's accelerogram)
+    cells = [
+        ColumnCell(10.0, "C1", RHO, _young(150.0), NU, 0.05, 1),
+        ColumnCell(20.0, "C2", RHO, _young(250.0), NU, 0.05, 1),
+        ColumnCell(30.0, "SUB", RHO, _young(800.0), NU, 0.0, 1),
+    ]
+    flat = {1: StrainCurve((1e-6, 1e-2), (1.0, 1.0))}
+    damping = {1: StrainCurve((1e-6, 1e-2), (0.025, 0.025))}
+    pulse = _pulse(count=512)
+    rng = np.random.default_rng(3)
+    noise = (0.005 * np.arange(1024), rng.standard_normal(1024))
+    free, grid = equivalent_linear_column(
+        cells, pulse, flat, damping, freq_cut=10.0, location="CHAMP_LIBRE", noise=noise
+    )
+    spectrum = np.fft.rfft(pulse.ordinates)
+    spectrum[grid.cut_index + 1 :] = 0.0
+    spectrum[0] = 0.0
+    filtered = np.fft.irfft(spectrum, 512)
+    assert np.allclose(free.analysis.acceleration[0], filtered, atol=1e-9 * np.abs(filtered).max())
+    outcrop = Function(grid.times, free.input_acceleration, NOM_PARA="INST")
+    again, _ = equivalent_linear_column(cells, outcrop, flat, damping, freq_cut=10.0)
+    surface = again.analysis.acceleration[0]
+    assert np.max(np.abs(surface - filtered)) < 0.03 * np.max(np.abs(filtered))
+
+
 DECK = """DEBUT(CODE="OUI")
 t = [0.01 * k for k in range(300)]
 ACC = DEFI_FONCTION(NOM_PARA="INST", ABSCISSE=t,
@@ -187,6 +216,7 @@ FIN()
 
 
 def _run(tmp_path, extra="", after=""):
+    tmp_path.mkdir(exist_ok=True)
     (tmp_path / "sol.comm").write_text(DECK.format(extra=extra, after=after))
     (tmp_path / "sol.export").write_text(
         "P time_limit 300\nP memory_limit 2048\nP ncpus 1\nF comm sol.comm D 1\n"
@@ -262,10 +292,45 @@ def test_tout_acce_non_keeps_the_listed_layers_and_the_forces(tmp_path):
     assert "layer C9 is not in the soil table" in (tmp_path / "out" / "message.log").read_text()
 
 
+DRAW = """SP = DEFI_FONCTION(NOM_PARA="FREQ", VALE_C=({vale}), PROL_DROITE="CONSTANT",
+                   PROL_GAUCHE="CONSTANT")
+IS = DEFI_INTE_SPEC(DIMENSION=1, PAR_FONCTION=_F(NUME_ORDRE_I=1, NUME_ORDRE_J=1, FONCTION=SP))
+{name} = GENE_FONC_ALEA(INTE_SPEC=IS, DUREE_TIRAGE={duree}, FREQ_INIT=0.0, FREQ_FIN={fmax},
+                        NB_TIRAGE=1)
+"""
+
+
+def test_the_macro_draws_its_white_noise_from_the_decks_random_stream(tmp_path):
+    # a later GENE_FONC_ALEA gives what it gives after the macro's own draw
+    # (512 instants of 0.01 s: df = 1/5.12, fmax = 50 - df, cut 15 Hz)
+    df = 1.0 / 5.12
+    macro = dict(
+        vale=f"0.0, 1.0, 0.0, {df}, 1.0, 0.0, 15.0, 1.0, 0.0, {15.0 + df}, 0.0, 0.0",
+        duree=5.12,
+        fmax=50.0 - df,
+    )
+    later = DRAW.format(name="LATER", vale="0.0, 1.0, 0.0, 20.0, 1.0, 0.0", duree=2.0, fmax=20.0)
+    after = _run(tmp_path / "a", after=later)
+    assert after.status == "DONE", after
+    head = DECK.split("TAB = DEFI_SOL_EQUI(")[0]
+    (tmp_path / "b").mkdir()
+    (tmp_path / "b" / "sol.comm").write_text(
+        head + DRAW.format(name="FIRST", **macro) + later + "FIN()\n"
+    )
+    (tmp_path / "b" / "sol.export").write_text(
+        "P time_limit 300\nP memory_limit 2048\nP ncpus 1\nF comm sol.comm D 1\n"
+    )
+    twice = asterlite.run(tmp_path / "b" / "sol.export", tmp_path / "b" / "out")
+    assert twice.status == "DONE", twice
+    first = after.concepts.raw["LATER"].values[0]
+    second = twice.concepts.raw["LATER"].values[0]
+    assert np.array_equal(first, second)
+
+
 @pytest.mark.parametrize(
     "extra, keyword",
     [
-        ('LIEU_SIGNAL="CHAMP_LIBRE"', "LIEU_SIGNAL"),
+        ('CORRECTION="BYRNE"', "CORRECTION"),
         ('LIAISON="SANS"', "LIAISON"),
         ('INTEGRATION="FREQUENCE"', "INTEGRATION"),
     ],

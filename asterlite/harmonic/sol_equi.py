@@ -9,13 +9,16 @@ following code_aster's macro step by step:
   G* = G (1 + iη), or Lysmer's G (1 - η²/2 + iη √(1 - η²/4)) with
   CORR_AMOR), consistent mass ρh/6 [[2, 1], [1, 2]], and the absorbing edge
   the dashpot ρ Vs of the substratum;
-- CHARGEMENT='ONDE_PLANE' (signal at the outcrop): the signal padded to a
-  power of two; the load is the ONDE_PLANE force on the base edge,
+- CHARGEMENT='ONDE_PLANE': the signal padded to a power of two; the load
+  is the ONDE_PLANE force on the base edge,
   -2 ρ Vs v(t) along X (asterlite.fem.plane_wave's convention for
   DIRECTION=(0, 1), the wave's source at the base), v the integral of the
   accelerogram (INTEGRE), taken to frequency as REST_SPEC_TEMP
   METHODE='PROL_ZERO' SYMETRIE='NON'; the harmonic solution at df, 2 df, ...
-  up to the cut frequency;
+  up to the cut frequency. From the free field (CHAMP_LIBRE) v is the
+  macro's white noise and the responses are scaled by FDT_RACL, the
+  signal's spectrum over the surface's response; the outcrop is the noise's
+  acceleration iωV times FDT_RACL;
 - CHARGEMENT='MONO_APPUI': the column relative to a unit base acceleration
   (load -M 1) at 0.1, 0.2, ... Hz up to the cut frequency; these transfer
   functions, interpolated onto the signal's grid, multiply the outcrop's
@@ -75,6 +78,7 @@ class ColumnAnalysis:
     force: np.ndarray  # FORC_NODA DY at the left node
     gamma_max: np.ndarray  # per layer
     surface_harmonic: np.ndarray  # the free surface's acceleration, harmonic frequencies
+    input_acceleration: np.ndarray | None = None  # the outcrop's, when found here
 
 
 @dataclass
@@ -248,11 +252,21 @@ def analyse(
         cells, young, loss, lysmer, excitation.freqs, excitation.base_load
     )
     fine = spectrum_grid(grid)
+    outcrop_history = None
     if excitation.base_load is not None:
-        # ONDE_PLANE: the harmonic frequencies are those of the grid
+        # ONDE_PLANE: the harmonic frequencies are those of the grid; from
+        # the free field, the responses to the noise are scaled by FDT_RACL,
+        # the signal's spectrum over the surface's response
+        scale = np.ones(grid.cut_index, dtype=complex)
+        if excitation.signal is not None:
+            scale = excitation.signal[1 : grid.cut_index + 1] / accel[0]
+            outcrop = np.zeros(fine.size, dtype=complex)
+            outcrop[1 : grid.cut_index + 1] = excitation.noise_accel[1 : grid.cut_index + 1] * scale
+            outcrop_history = _to_time(grid, outcrop[None, :])[0]
+
         def on_grid(values):
             out = np.zeros((values.shape[0], fine.size), dtype=complex)
-            out[:, 1 : grid.cut_index + 1] = values
+            out[:, 1 : grid.cut_index + 1] = values * scale
             return out
     else:
         # MONO_APPUI: transfer functions per unit base acceleration, on the
@@ -278,7 +292,9 @@ def analyse(
     if excitation.base_load is None:
         acc = acc + excitation.outcrop_history  # relative to total accelerations
     tau, forces = histories[n + layers : n + 2 * layers], histories[n + 2 * layers :]
-    return ColumnAnalysis(acc, gam, tau, forces, np.max(np.abs(gam), axis=1), accel[0])
+    return ColumnAnalysis(
+        acc, gam, tau, forces, np.max(np.abs(gam), axis=1), accel[0], outcrop_history
+    )
 
 
 @dataclass
@@ -291,6 +307,10 @@ class Excitation:
     base_load: np.ndarray | None = None
     outcrop: np.ndarray | None = None
     outcrop_history: np.ndarray | None = None
+    # ONDE_PLANE from the free field: the signal's spectrum and the white
+    # noise's acceleration spectrum on the grid 0 .. fmax
+    signal: np.ndarray | None = None
+    noise_accel: np.ndarray | None = None
 
 
 def _pas_list(start: float, end: float, step: float) -> np.ndarray:
@@ -321,14 +341,15 @@ def equivalent_linear_column(
     amplitude: float = 1.0,
     loading: str = "ONDE_PLANE",
     location: str = "AFFLEURANT",
+    noise: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> tuple[SolEquiResult, SignalGrid]:
     """DEFI_SOL_EQUI's iterations on the column (the last row of ``cells``
     is the substratum's cell): ``loading`` 'ONDE_PLANE' (the signal at the
     outcrop only) or 'MONO_APPUI' (at the outcrop, 'AFFLEURANT', or at the
     free surface, 'CHAMP_LIBRE', deconvolved by the transfer function of the
     transfer function of each analysis, as the macro)."""
-    if loading == "ONDE_PLANE" and location != "AFFLEURANT":
-        raise ValueError("ONDE_PLANE from the free surface needs the macro's random draw")
+    if loading == "ONDE_PLANE" and location != "AFFLEURANT" and noise is None:
+        raise ValueError("ONDE_PLANE from the free surface needs the macro's white noise")
     grid = signal_grid(accelerogram, freq_cut, pad=loading == "ONDE_PLANE")
     on_grid = Function(
         grid.times,
@@ -350,7 +371,19 @@ def equivalent_linear_column(
     young = [c.young for c in layers]
     loss = [c.loss for c in layers]
     if loading == "ONDE_PLANE":
-        velocity = fops.integrate(on_grid).ordinates
+        if location == "AFFLEURANT":
+            velocity = fops.integrate(on_grid).ordinates
+        else:
+            # the white noise's velocity on the signal's instants, and its
+            # acceleration's spectrum iω V (ACCEX0H)
+            velocity = np.interp(grid.times, noise[0], noise[1])
+            spectrum_v = fops.fft(Function(grid.times, velocity, NOM_PARA="INST"), "COMPLET")
+            noise_accel = (
+                2j
+                * np.pi
+                * fine
+                * _interp_complex(fine, spectrum_v.abscissas, spectrum_v.ordinates)
+            )
         base = cells[-1]
         rho_vs = np.sqrt(base.density * base.young / (2.0 * (1.0 + base.poisson)))
         _, spectrum = time_to_frequency(
@@ -358,6 +391,9 @@ def equivalent_linear_column(
         )
         freqs = grid.df * np.arange(1, grid.cut_index + 1)
         excitation = Excitation(freqs, base_load=spectrum[1 : grid.cut_index + 1, 0])
+        if location != "AFFLEURANT":
+            excitation.signal = signal_spectrum
+            excitation.noise_accel = noise_accel
     else:
         excitation = Excitation(_pas_list(0.1, grid.cut, 0.1))
     filtre = filter_values(grid, fine)
@@ -383,6 +419,8 @@ def equivalent_linear_column(
             result.input_acceleration = _to_time(grid, input_spectrum[None, :])[0]
         analysis = analyse(cells, young, loss, lysmer, grid, excitation)
         result.analysis = analysis
+        if analysis.input_acceleration is not None:
+            result.input_acceleration = analysis.input_acceleration
         if loading == "ONDE_PLANE":
             # FDT_RACL: the signal's spectrum over the surface's response
             result.transfer = (
