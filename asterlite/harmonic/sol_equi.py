@@ -223,14 +223,17 @@ def _harmonic_fields(cells, young, loss, lysmer, freqs, base_load=None):
     # y is upward: the shear strain of a cell is (u_top - u_bottom) / h
     gamma = (disp[:-1] - disp[1:]) / heights[:, None]
     layers = len(cells) - 1
+    # the material's E (Lysmer's layers: E (1 - η²/2)); its AMOR_HYST enters
+    # the hysteretic stiffness only, not the stresses
     elastic = np.array(
         [
-            (young[k] if k < layers else c.young) / (2.0 * (1.0 + c.poisson))
+            (young[k] * (1.0 - loss[k] ** 2 / 2.0 if lysmer else 1.0) if k < layers else c.young)
+            / (2.0 * (1.0 + c.poisson))
             for k, c in enumerate(cells)
         ]
     )
     # FORC_NODA DY at a left node: each adjacent cell gives -σxy h / 2
-    # (the integral of σxy ∂N/∂x), σxy = G γ with the elastic modulus
+    # (the integral of σxy ∂N/∂x), σxy = G γ
     share = -0.5 * elastic[:, None] * gamma * heights[:, None]
     force = np.zeros_like(disp)
     force[:-1] += share
