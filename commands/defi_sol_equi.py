@@ -25,7 +25,8 @@ oscillator spectra (5 %, on LIST_FREQ_SPEC_OSCI) and the transfer function
 between the outcrop and the free surface.
 
 Every call draws that white noise, as code_aster, so that the deck's later
-draws stay the same. Refused by name: DSP, UNITE_TRAN_INIT, 3D (FONC_SIGNAL_X), MAILLAGE,
+draws stay the same. Unsupported by name (catalogues/defi_sol_equi.py
+leaves them out): DSP, UNITE_TRAN_INIT, 3D (FONC_SIGNAL_X), MAILLAGE,
 LIAISON='SANS', NOM_CMP='DY', SURF='NON', CORRECTION='BYRNE',
 INTEGRATION='FREQUENCE', LIST_FREQ, and spectra without
 LIST_FREQ_SPEC_OSCI (code_aster's default list)."""
@@ -55,9 +56,11 @@ _CA = 1.0 / (0.5 + _F1 * _F2 / (_F1 + _F2) * math.log(_F2 / _F1) / (_F2 - _F1))
 
 
 def run(ctx, kw):
-    _refuse_other_branches(ctx, kw)
-    # read by code_aster's macro on branches this one does not take
-    kw.mark_used("MASS_PENA", "LONG_CARA", "FREQ_FILTRE", "INFO", "COEF_KSI")
+    # the catalogue keeps the branches computed here (the others are
+    # unsupported by name there); these three are read by code_aster's macro
+    # on branches it does not take here (UNITE_TRAN_INIT,
+    # INTEGRATION='FREQUENCE'); INFO the listing only
+    kw.mark_used("MASS_PENA", "LONG_CARA", "FREQ_FILTRE", "INFO")
     cvar = float(kw.get("COEF_VARI_MATE", 1.0))
     if kw.get("TABLE_MATER_ELAS") is not None:
         cells, gg, dg = _from_tables(ctx, kw, cvar)
@@ -131,33 +134,6 @@ def _white_noise(ctx, kw, grid):
     phases = spectral.deck_phases(ctx.session, None)
     signals = spectral.generate(factors, frequencies.stored_frequencies(), 1, phases)
     return signals.times, signals.values[0] / math.sqrt(2.0 * math.pi * grid.fmax)
-
-
-def _refuse_other_branches(ctx, kw):
-    refused = (
-        ("DSP", kw.get("DSP") is not None, "DEFI_SOL_EQUI from a power spectral density (DSP)"),
-        ("UNITE_TRAN_INIT", kw.get("UNITE_TRAN_INIT") is not None,
-         "DEFI_SOL_EQUI from a file of signals (UNITE_TRAN_INIT)"),
-        ("FONC_SIGNAL_X", kw.get("FONC_SIGNAL_X") is not None, "DEFI_SOL_EQUI in 3D"),
-        ("MAILLAGE", kw.get("MAILLAGE") is not None,
-         "DEFI_SOL_EQUI on a given mesh (MAILLAGE)"),
-        ("LIAISON", kw.get("LIAISON") == "SANS", "DEFI_SOL_EQUI LIAISON='SANS'"),
-        ("NOM_CMP", kw.get("NOM_CMP", "DX") != "DX", "DEFI_SOL_EQUI NOM_CMP='DY'"),
-        ("SURF", kw.get("SURF", "NON") != "OUI", "DEFI_SOL_EQUI SURF='NON' (buried layers)"),
-        ("CORRECTION", kw.get("CORRECTION", "SANS") != "SANS",
-         "DEFI_SOL_EQUI CORRECTION='BYRNE'"),
-        ("INTEGRATION", kw.get("INTEGRATION", "TEMPS") != "TEMPS",
-         "DEFI_SOL_EQUI INTEGRATION='FREQUENCE'"),
-        ("LIST_FREQ", kw.get("LIST_FREQ") is not None,
-         "DEFI_SOL_EQUI LIST_FREQ (harmonic frequencies of the user's)"),
-        ("LIST_FREQ_SPEC_OSCI", kw.get("LIST_FREQ_SPEC_OSCI") is None,
-         "DEFI_SOL_EQUI without LIST_FREQ_SPEC_OSCI (code_aster's default list of spectra)"),
-    )  # fmt: skip
-    for keyword, condition, what in refused:
-        if condition:
-            ctx.unsupported(what, keyword, kw)
-    if kw.get("FONC_SIGNAL") is None:
-        ctx.error("FONC_SIGNAL is needed here", "FONC_SIGNAL", kw)
 
 
 def _curve(ctx, kw, keyword, strains, values, what):
