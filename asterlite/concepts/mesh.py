@@ -35,8 +35,10 @@ CELL_NODE_COUNTS = {
 
 
 def _positional(name: str, prefix: str, count: int) -> int | None:
-    if len(name) > 1 and name[0] == prefix and name[1:].isdigit() and name[1] != "0":
-        index = int(name[1:]) - 1
+    """The 0-based index code_aster 17 reads in ``N<i>``/``M<i>`` or ``<i>``."""
+    number = name[1:] if name[:1] == prefix else name
+    if number.isdigit() and number[0] != "0":
+        index = int(number) - 1
         if index < count:
             return index
     return None
