@@ -21,6 +21,7 @@ from asterlite.modal.calc import (
     constrained_pencil,
     filter_modes,
     generalized_modes,
+    is_symmetric,
     residuals,
     select_modes,
 )
@@ -43,6 +44,10 @@ def run(ctx, kw):
         ctx.error("MATR_RIGI and MATR_MASS use different numberings", "MATR_MASS", kw)
     if kw.get("MATR_AMOR") is not None or isinstance(stiffness, ComplexAssembledMatrix):
         return _complex(ctx, kw, stiffness, mass, kw.get("MATR_AMOR"))
+    if not (is_symmetric(stiffness.matrix) and is_symmetric(mass.matrix)):
+        # complex eigenvalues (gyroscopic terms in K or M...): code_aster's
+        # non-symmetric solvers give FREQ and AMOR_REDUIT from them
+        return _complex(ctx, kw, stiffness, mass, None)
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))

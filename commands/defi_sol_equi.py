@@ -37,6 +37,7 @@ import math
 
 import numpy as np
 
+from asterlite.concepts.function import Function
 from asterlite.concepts.interspectrum import InterSpectrum
 from asterlite.concepts.table import Table
 from asterlite.harmonic.soil_column import StrainCurve
@@ -364,8 +365,6 @@ def _write_histories(ctx, kw, cells, result, grid, subtitle, cvar):
 
 
 def _history(times, values):
-    from asterlite.concepts.function import Function
-
     return Function(times, values, NOM_PARA="INST", PROL_GAUCHE="CONSTANT", PROL_DROITE="CONSTANT")
 
 

@@ -179,6 +179,40 @@ def test_calc_modes_with_hysteretic_stiffness(axial_chain):
     np.testing.assert_allclose(modes.frequencies, np.abs(nearest) / TWO_PI, rtol=1e-10)
 
 
+def test_calc_modes_of_a_non_symmetric_real_pencil(axial_chain):
+    """A real K that is not symmetric (a skew coupling added) has complex
+    eigenvalues: FREQ = |√σ|/2π and AMOR_REDUIT = Im √σ/|√σ|, as code_aster's
+    non-symmetric solvers (sdll123b), where the symmetric solver would drop
+    the skew part silently."""
+    session, _model, k, m = axial_chain
+    dense = k.matrix.toarray()
+    skew = np.zeros_like(dense)
+    i, j = k.numbering.dof_indices([2, 3], "DX")
+    skew[i, j], skew[j, i] = 3.0 * K, -3.0 * K
+    k_skew = AssembledMatrix(numbering=k.numbering, matrix=sp.csr_matrix(dense + skew))
+    modes = run(session, "CALC_MODES", MATR_RIGI=k_skew, MATR_MASS=m, OPTION="PLUS_PETITE",
+                CALC_FREQ={"NMAX_FREQ": 6})  # fmt: skip
+    # reference: the pencil restricted to the free DX of the chain
+    pencil = complex_pencil_reference(k_skew, m)
+    roots = np.sqrt(pencil.astype(complex))
+    roots = roots[np.argsort(np.abs(roots))][:6]
+    np.testing.assert_allclose(
+        np.sort(modes.frequencies), np.sort(np.abs(roots)) / TWO_PI, rtol=1e-9
+    )
+    assert np.max(np.abs(modes.parameters["AMOR_REDUIT"])) > 1e-3
+
+
+def complex_pencil_reference(k, m) -> np.ndarray:
+    """Eigenvalues σ of K φ = σ M φ on the DOFs left free by the chain's relations."""
+    from scipy.linalg import eigvals
+
+    b, _ = k.numbering.constraint_matrix(rhs_in_time=True, rhs_in_frequency=True)
+    fixed = np.unique(b.nonzero()[1])
+    free = np.setdiff1d(np.arange(k.numbering.n_dofs), fixed)
+    kd, md = k.matrix.toarray()[np.ix_(free, free)], m.matrix.toarray()[np.ix_(free, free)]
+    return eigvals(kd, md)
+
+
 def test_complex_normalisations(axial_chain):
     session, _model, k, m = axial_chain
     c = AssembledMatrix(numbering=k.numbering, matrix=0.3 * m.matrix + 1e-4 * k.matrix)

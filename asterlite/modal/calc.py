@@ -261,10 +261,28 @@ def complex_pencil(stiffness, mass, damping=None) -> quadratic.QuadraticPencil:
     return quadratic.QuadraticPencil(stiffness.matrix, c, mass.matrix, elimination)
 
 
-def _stiffness_only(stiffness, damping) -> bool:
-    """A complex stiffness without damping matrix: code_aster's generalized
-    (not quadratic) problem, whose FREQ is |λ|/2π."""
-    return damping is None and np.issubdtype(stiffness.matrix.dtype, np.complexfloating)
+def _stiffness_only(stiffness, damping, mass) -> bool:
+    """A complex stiffness without damping matrix, or a real pencil that is
+    not symmetric: code_aster's generalized (not quadratic) problem, whose
+    eigenvalues are complex, FREQ = |√σ|/2π."""
+    if damping is not None:
+        return False
+    if np.issubdtype(stiffness.matrix.dtype, np.complexfloating):
+        return True
+    return not (is_symmetric(stiffness.matrix) and is_symmetric(mass.matrix))
+
+
+def is_symmetric(matrix, rtol: float = 1e-12) -> bool:
+    """Whether a (sparse or dense) matrix equals its transpose to ``rtol`` of
+    its largest term."""
+    if sp.issparse(matrix):
+        scale = abs(matrix).max() if matrix.nnz else 0.0
+        gap = abs(matrix - matrix.T).max() if matrix.nnz else 0.0
+    else:
+        dense = np.asarray(matrix)
+        scale = np.abs(dense).max(initial=0.0)
+        gap = np.abs(dense - dense.T).max(initial=0.0)
+    return gap <= rtol * scale
 
 
 def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> ComplexModeResult:
@@ -275,7 +293,7 @@ def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> 
     lam = np.asarray(eigenvalues, dtype=complex)
     c = damping.matrix if damping is not None else None
     params = {"NUME_MODE": np.arange(1, lam.size + 1)}
-    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping)))
+    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping, mass)))
     params.update(quadratic.generalized_parameters(shapes, stiffness.matrix, c, mass.matrix))
     return ComplexModeResult(
         numbering=numbering,
@@ -317,7 +335,7 @@ def build_complex_generalized_result(stiffness, mass, damping, lam, vecs) -> Gen
     vecs = vecs * quadratic.largest_modulus(vecs)[None, :]
     c = None if damping is None else np.asarray(damping.matrix)
     params = {"NUME_MODE": np.arange(1, vecs.shape[1] + 1)}
-    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping)))
+    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping, mass)))
     params.update(
         quadratic.generalized_parameters(
             vecs, np.asarray(stiffness.matrix), c, np.asarray(mass.matrix)
