@@ -1,0 +1,137 @@
+"""DEFI_MAILLAGE: a mesh whose cells are static superelements (op0088).
+
+Each super-cell brings its macro-element's external nodes as new nodes (in
+the macro-element's order, shifted by TRAN), named by DEFI_NOEUD (TOUT with
+INDEX: PREFIXE, then the characters INDEX[0]..INDEX[1] of the super-cell's
+name, then INDEX[2]..INDEX[3] of the node's name; NOEUD_INIT renames one)
+or N<i> by position. DEFI_GROUP_NO copies the groups of the macro-element's
+mesh restricted to its external nodes (named the same way from the group's
+name), or one group (GROUP_NO_INIT -> GROUP_NO_FIN). Super-cells are named
+by SUPER_MAILLE, else after their macro-element. Nodes of several
+superelements are not merged (RECO_GLOBAL, RECO_SUPER_MAILLE refused), and
+ANGL_NAUT (a rotated superelement) is refused.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from asterlite.concepts.static_substructure import StaticMacroElement, SuperCell, SuperMesh
+
+#: code_aster's names are 8 characters at most
+NAME_LENGTH = 8
+
+
+def run(ctx, kw):
+    for keyword in ("RECO_GLOBAL", "RECO_SUPER_MAILLE"):
+        if kw.factor(keyword):
+            ctx.unsupported(f"DEFI_MAILLAGE {keyword} (merging superelements' nodes)", keyword, kw)
+    coords, sources, cells = [], [], {}
+    for occ in kw.factor("DEFI_SUPER_MAILLE"):
+        if occ.get("ANGL_NAUT") is not None:
+            ctx.unsupported("DEFI_MAILLAGE ANGL_NAUT (a rotated superelement)", "ANGL_NAUT", occ)
+        macros = list(np.atleast_1d(occ["MACR_ELEM"]))
+        names = [str(n) for n in np.atleast_1d(occ.get("SUPER_MAILLE") or ())]
+        if names and len(names) != len(macros):
+            ctx.error("give one SUPER_MAILLE name per MACR_ELEM", "SUPER_MAILLE", occ)
+        shift = np.zeros(3)
+        if occ.get("TRAN") is not None:
+            tran = np.atleast_1d(np.asarray(occ["TRAN"], dtype=float))
+            shift[: tran.size] = tran
+        for k, macro in enumerate(macros):
+            if not isinstance(macro, StaticMacroElement):
+                ctx.unsupported(
+                    "DEFI_MAILLAGE of a dynamic macro-element (MACR_ELEM_DYNA)", "MACR_ELEM", occ
+                )
+            if "RIGI" not in macro.matrices:
+                ctx.error(
+                    f"{macro.name}: the superelement has no stiffness (RIGI_MECA)", "MACR_ELEM"
+                )
+            name = names[k] if names else (macro.name or f"SM{len(cells) + 1}")
+            if name in cells:
+                ctx.error(f"two super-cells named {name}", "SUPER_MAILLE", occ)
+            start = len(sources)
+            for node in macro.external_nodes:
+                sources.append((name, macro, int(node)))
+                coords.append(macro.mesh.coords[node] + shift)
+            cells[name] = SuperCell(macro=macro, nodes=np.arange(start, len(sources)))
+    node_names = _node_names(ctx, kw, sources, cells)
+    mesh = SuperMesh(
+        coords=np.asarray(coords, dtype=float).reshape(-1, 3),
+        node_names=node_names,
+        cell_names=[],
+        cell_types=[],
+        cell_nodes=[],
+        super_cells=cells,
+    )
+    mesh.node_groups = _node_groups(ctx, kw, cells)
+    ctx.log(f"DEFI_MAILLAGE: {len(cells)} super-cells, {mesh.n_nodes} nodes")
+    return mesh
+
+
+def _indexed(ctx, occ, prefix: str, cell: str, name: str) -> str:
+    index = [int(i) for i in np.atleast_1d(occ["INDEX"])]
+    if len(index) != 4:
+        ctx.error("INDEX takes 4 integers", "INDEX", occ)
+    out = prefix + cell[index[0] - 1 : index[1]] + name[index[2] - 1 : index[3]]
+    if len(out) > NAME_LENGTH:
+        ctx.error(f"the name {out} is longer than {NAME_LENGTH} characters", "INDEX", occ)
+    return out
+
+
+def _node_names(ctx, kw, sources, cells) -> list[str]:
+    names = [f"N{i + 1}" for i in range(len(sources))]
+    for occ in kw.factor("DEFI_NOEUD"):
+        if occ.get("TOUT") == "OUI":
+            prefix = str(occ.get("PREFIXE") or "")
+            for i, (cell, macro, node) in enumerate(sources):
+                names[i] = _indexed(ctx, occ, prefix, cell, macro.mesh.node_names[node])
+            continue
+        cell = str(occ["SUPER_MAILLE"])
+        if cell not in cells:
+            ctx.error(f"no super-cell {cell}", "SUPER_MAILLE", occ)
+        macro = cells[cell].macro
+        initial = macro.mesh.find_node(str(occ["NOEUD_INIT"]))
+        where = np.flatnonzero(macro.external_nodes == initial) if initial is not None else []
+        if len(where) == 0:
+            ctx.error(f"{occ['NOEUD_INIT']} is not an external node of {cell}", "NOEUD_INIT", occ)
+        names[int(cells[cell].nodes[where[0]])] = str(occ["NOEUD_FIN"])
+    seen: dict[str, int] = {}
+    for name in names:
+        seen[name] = seen.get(name, 0) + 1
+    twice = [n for n, count in seen.items() if count > 1]
+    if twice:
+        ctx.error(f"nodes named twice: {', '.join(twice[:5])}", "DEFI_NOEUD")
+    return names
+
+
+def _node_groups(ctx, kw, cells) -> dict[str, np.ndarray]:
+    groups: dict[str, np.ndarray] = {}
+    for occ in kw.factor("DEFI_GROUP_NO"):
+        chosen = cells if occ.get("TOUT") == "OUI" else None
+        if chosen is None:
+            cell = str(occ["SUPER_MAILLE"])
+            if cell not in cells:
+                ctx.error(f"no super-cell {cell}", "SUPER_MAILLE", occ)
+            chosen = {cell: cells[cell]}
+        initial = occ.get("GROUP_NO_INIT")
+        for cell, placed in chosen.items():
+            macro = placed.macro
+            position = {int(n): k for k, n in enumerate(macro.external_nodes)}
+            wanted = [str(initial)] if initial is not None else list(macro.mesh.node_groups)
+            for group in wanted:
+                if group not in macro.mesh.node_groups:
+                    ctx.error(f"no group {group} in the superelement's mesh", "GROUP_NO_INIT", occ)
+                members = [position[int(n)] for n in macro.mesh.node_groups[group] if n in position]
+                if not members:
+                    if initial is not None:
+                        ctx.log(f"warning: group {group} has no external node of {cell}")
+                    continue
+                if initial is not None:
+                    name = str(occ["GROUP_NO_FIN"])
+                else:
+                    name = _indexed(ctx, occ, str(occ.get("PREFIXE") or ""), cell, group)
+                if name in groups:
+                    ctx.error(f"the group {name} is defined twice", "DEFI_GROUP_NO", occ)
+                groups[name] = placed.nodes[np.asarray(members, dtype=int)]
+    return groups

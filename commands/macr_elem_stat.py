@@ -1,0 +1,210 @@
+"""MACR_ELEM_STAT: a static superelement condensed on its external nodes
+(code_aster's op0086).
+
+DEFINITION names the model, EXTERIEUR the external nodes (their DOFs are
+the components the model gives them). RIGI_MECA, MASS_MECA and AMOR_MECA
+compute the condensed matrices, in the same call or in later ones
+(reuse): from the finite elements by static (Guyan) condensation, the
+interior held by CHAR_MACR_ELEM's blocked DOFs; or, with PROJ_MESU and
+MODE_MESURE, from the measured projection as code_aster's crmeri / crmema /
+crmeam do (:mod:`asterlite.substructure.static_condensation`). Masses and
+damping need the stiffness first, as in code_aster; a finite-element
+superelement has no AMOR_MECA (code_aster refuses it too). CAS_CHARGE
+(condensed load cases) is not computed.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from asterlite.commands.nume_ddl import numbering_for
+
+from asterlite.concepts.modes import ModeResult
+from asterlite.concepts.static_substructure import StaticMacroElement
+from asterlite.fem.assemble import assemble_blocks
+from asterlite.fem.elements import ElementError
+from asterlite.fem.options import option_blocks
+from asterlite.fem.selection import select_nodes
+from asterlite.substructure import static_condensation as sc
+
+
+def run(ctx, kw):
+    if kw.factor("CAS_CHARGE"):
+        ctx.unsupported("MACR_ELEM_STAT CAS_CHARGE (condensed load cases)", "CAS_CHARGE", kw)
+    macro = kw.get("MACR_ELEM") or ctx.reuse
+    if kw.factor("DEFINITION"):
+        if macro is not None:
+            ctx.error("the superelement is already defined (DEFINITION given again)", "DEFINITION")
+        macro = _define(ctx, kw)
+    elif macro is None:
+        ctx.error("give DEFINITION (or the superelement to complete in MACR_ELEM)", "DEFINITION")
+    if kw.factor("RIGI_MECA"):
+        if "RIGI" in macro.matrices:
+            ctx.error("the superelement's stiffness is already computed", "RIGI_MECA")
+        macro.matrices["RIGI"] = _stiffness(ctx, kw, macro)
+    for keyword, kind in (("MASS_MECA", "MASS"), ("AMOR_MECA", "AMOR")):
+        if not kw.factor(keyword):
+            continue
+        if "RIGI" not in macro.matrices:
+            ctx.error(f"{keyword} needs the stiffness first (RIGI_MECA)", keyword)
+        if kind in macro.matrices:
+            ctx.error(f"the superelement's {keyword} is already computed", keyword)
+        macro.matrices[kind] = _other(ctx, kw, macro, kind, keyword)
+    ctx.log(
+        f"MACR_ELEM_STAT: {len(macro.external_nodes)} external nodes, {macro.n_external} "
+        f"external DOFs; matrices {', '.join(sorted(macro.matrices))}"
+    )
+    return macro
+
+
+def _define(ctx, kw) -> StaticMacroElement:
+    definition = kw.factor("DEFINITION")[0]
+    model = definition["MODELE"]
+    mesh = model.mesh
+    exterior = kw.factor("EXTERIEUR")[0]
+    nodes = np.asarray(select_nodes(ctx, exterior, mesh), dtype=int)
+    carried = model.node_components()
+    missing = [mesh.node_names[n] for n in nodes if n not in carried]
+    if missing:
+        ctx.error(f"external nodes outside the model: {', '.join(missing[:5])}", "EXTERIEUR")
+    components = {carried[n] for n in nodes}
+    if len(components) != 1:
+        ctx.unsupported(
+            "MACR_ELEM_STAT with external nodes carrying different components",
+            "EXTERIEUR",
+            kw,
+        )
+    macro = StaticMacroElement(
+        model=model, mesh=mesh, external_nodes=nodes, components=components.pop()
+    )
+    macro.definition = definition
+    characteristics = definition.get("CARA_ELEM")
+    if characteristics is not None and characteristics.model is not model:
+        ctx.error("CARA_ELEM was built on another model", "CARA_ELEM", definition)
+    materials = definition.get("CHAM_MATER")
+    if materials is not None and materials.mesh is not mesh:
+        ctx.error("CHAM_MATER lies on another mesh", "CHAM_MATER", definition)
+    if definition.get("PROJ_MESU") is not None:
+        for keyword in ("CHAR_MACR_ELEM",):
+            if definition.get(keyword) is not None:
+                ctx.unsupported(f"MACR_ELEM_STAT PROJ_MESU with {keyword}", keyword, definition)
+        _measured(ctx, definition, macro)
+    return macro
+
+
+def _measured(ctx, definition, macro: StaticMacroElement) -> None:
+    """The superelement of a measured projection (crmeri's T and V)."""
+    projection = definition["PROJ_MESU"]
+    sensors = getattr(projection, "measurement", None)
+    if sensors is None:
+        ctx.error("PROJ_MESU is not a PROJ_MESU_MODAL result of displacements", "PROJ_MESU")
+    modes = definition["MODE_MESURE"]
+    if not isinstance(modes, ModeResult) or modes.numbering.mesh is not (
+        sensors.measurement_model.mesh
+    ):
+        ctx.error("MODE_MESURE does not lie on the measurement mesh of PROJ_MESU", "MODE_MESURE")
+    basis = sensors.basis
+    if basis.numbering.mesh is not macro.mesh:
+        ctx.error("PROJ_MESU's basis does not lie on the superelement's mesh", "PROJ_MESU")
+    nodes = np.repeat(macro.external_nodes, len(macro.components))
+    components = list(macro.components) * len(macro.external_nodes)
+    rows = basis.numbering.dof_indices(nodes, components)
+    if np.any(rows < 0):
+        ctx.error("PROJ_MESU's basis lacks external DOFs of the superelement", "PROJ_MESU")
+    identified = np.zeros((len(sensors.sensors), modes.n_modes))
+    for k, (node, direction, _) in enumerate(sensors.sensors):
+        for axis, name in enumerate(("DX", "DY", "DZ")):
+            if direction[axis] != 0.0:
+                identified[k] += direction[axis] * modes.shapes_at([node], name)[0]
+    mass = np.asarray(modes.generalized_mass, dtype=float)
+    if not np.all(np.isfinite(mass)):
+        ctx.error("MODE_MESURE has no generalized masses (MASS_GENE)", "MODE_MESURE")
+    damping = modes.parameters.get("AMOR_GENE")
+    try:
+        macro.measured = sc.measured(
+            sensors.observation,
+            basis.shapes[rows, :],
+            identified,
+            modes.omega2,
+            mass,
+            None if damping is None else np.asarray(damping, dtype=float),
+        )
+    except sc.CondensationError as exc:
+        ctx.error(str(exc), "PROJ_MESU")
+    macro.sensors = sensors
+    macro.measured_modes = modes
+
+
+def _external_dofs(ctx, macro, numbering) -> np.ndarray:
+    nodes = np.repeat(macro.external_nodes, len(macro.components))
+    components = list(macro.components) * len(macro.external_nodes)
+    return numbering.dof_indices(nodes, components)
+
+
+def _stiffness(ctx, kw, macro: StaticMacroElement) -> np.ndarray:
+    if macro.measured is not None:
+        return macro.measured.matrix("RIGI")
+    definition = macro.definition
+    loads = [definition["CHAR_MACR_ELEM"]] if definition.get("CHAR_MACR_ELEM") else []
+    numbering = numbering_for(macro.model, loads)
+    blocked = _blocked(ctx, numbering, definition)
+    external = _external_dofs(ctx, macro, numbering)
+    if np.any(np.isin(external, blocked)):
+        ctx.error("CHAR_MACR_ELEM blocks an external DOF", "CHAR_MACR_ELEM", definition)
+    interior = np.setdiff1d(np.arange(numbering.n_dofs), np.concatenate([external, blocked]))
+    stiffness = _assembled(ctx, macro, "RIGI_MECA", numbering)
+    try:
+        macro.guyan = sc.guyan(stiffness, interior, external)
+    except sc.CondensationError as exc:
+        ctx.error(str(exc), "DEFINITION")
+    macro.numbering = numbering
+    macro.blocked = blocked
+    return macro.guyan.stiffness
+
+
+def _other(ctx, kw, macro: StaticMacroElement, kind: str, keyword: str):
+    if macro.measured is not None:
+        if kind == "AMOR" and macro.measured.generalized_damping is None:
+            # as code_aster, computed from MODE_MESURE's AMOR_GENE: refused
+            # where it is used, since the deck may never assemble it
+            return None
+        return macro.measured.matrix(kind)
+    if kind == "AMOR":
+        ctx.unsupported(
+            "MACR_ELEM_STAT AMOR_MECA of a finite-element superelement (code_aster builds it "
+            "only from a measured projection)",
+            keyword,
+            kw,
+        )
+    mass = _assembled(ctx, macro, "MASS_MECA", macro.numbering)
+    return macro.guyan.condense(mass)
+
+
+def _assembled(ctx, macro, option, numbering):
+    definition = macro.definition
+    try:
+        blocks = option_blocks(
+            macro.model,
+            definition.get("CARA_ELEM"),
+            option,
+            materials=definition.get("CHAM_MATER"),
+        )
+    except NotImplementedError as exc:
+        ctx.unsupported(str(exc), "MODELE", definition)
+    except (ElementError, ValueError) as exc:
+        ctx.error(str(exc), "DEFINITION")
+    return assemble_blocks(blocks, numbering)
+
+
+def _blocked(ctx, numbering, definition) -> np.ndarray:
+    """DOFs CHAR_MACR_ELEM blocks (DDL_IMPO to zero); other relations refused."""
+    blocked = []
+    for relation in numbering.relations:
+        if len(relation.terms) != 1 or relation.rhs != 0.0 or relation.rhs_in_time is not None:
+            ctx.unsupported(
+                "MACR_ELEM_STAT CHAR_MACR_ELEM with relations other than blocked DOFs",
+                "CHAR_MACR_ELEM",
+                definition,
+            )
+        node, component, _ = relation.terms[0]
+        blocked.append(numbering.index[(node, component)])
+    return np.unique(np.asarray(blocked, dtype=int))
