@@ -7,9 +7,9 @@ name, then INDEX[2]..INDEX[3] of the node's name; NOEUD_INIT renames one)
 or N<i> by position. DEFI_GROUP_NO copies the groups of the macro-element's
 mesh restricted to its external nodes (named the same way from the group's
 name), or one group (GROUP_NO_INIT -> GROUP_NO_FIN). Super-cells are named
-by SUPER_MAILLE, else after their macro-element. Nodes of several
-superelements are not merged (RECO_GLOBAL, RECO_SUPER_MAILLE refused), and
-ANGL_NAUT (a rotated superelement) is refused.
+by SUPER_MAILLE, else after their macro-element. RECO_GLOBAL merges the
+coincident nodes of several super-cells; RECO_SUPER_MAILLE and ANGL_NAUT
+(a rotated superelement) are refused.
 """
 
 from __future__ import annotations
@@ -23,9 +23,8 @@ NAME_LENGTH = 8
 
 
 def run(ctx, kw):
-    for keyword in ("RECO_GLOBAL", "RECO_SUPER_MAILLE"):
-        if kw.factor(keyword):
-            ctx.unsupported(f"DEFI_MAILLAGE {keyword} (merging superelements' nodes)", keyword, kw)
+    if kw.factor("RECO_SUPER_MAILLE"):
+        ctx.unsupported("DEFI_MAILLAGE RECO_SUPER_MAILLE", "RECO_SUPER_MAILLE", kw)
     coords, sources, cells = [], [], {}
     for occ in kw.factor("DEFI_SUPER_MAILLE"):
         if occ.get("ANGL_NAUT") is not None:
@@ -55,16 +54,31 @@ def run(ctx, kw):
                 sources.append((name, macro, int(node)))
                 coords.append(macro.mesh.coords[node] + shift)
             cells[name] = SuperCell(macro=macro, nodes=np.arange(start, len(sources)))
-    node_names = _node_names(ctx, kw, sources, cells)
+    coords = np.asarray(coords, dtype=float).reshape(-1, 3)
+    kept = _merged(ctx, kw, coords, cells)
+    names = _node_names(ctx, kw, sources, cells)
+    groups = _node_groups(ctx, kw, cells)
+    # the nodes RECO_GLOBAL merges disappear into the first of them
+    survivors = np.unique(kept)
+    position = np.full(len(kept), -1)
+    position[survivors] = np.arange(survivors.size)
+    renumber = position[kept]
+    node_names = [names[i] for i in survivors]
+    _check_unique(ctx, node_names)
+    for cell in cells.values():
+        cell.nodes = renumber[cell.nodes]
     mesh = SuperMesh(
-        coords=np.asarray(coords, dtype=float).reshape(-1, 3),
+        coords=coords[survivors],
         node_names=node_names,
         cell_names=[],
         cell_types=[],
         cell_nodes=[],
         super_cells=cells,
     )
-    mesh.node_groups = _node_groups(ctx, kw, cells)
+    mesh.node_groups = {
+        name: np.asarray(list(dict.fromkeys(renumber[members].tolist())), dtype=int)
+        for name, members in groups.items()
+    }
     ctx.log(f"DEFI_MAILLAGE: {len(cells)} super-cells, {mesh.n_nodes} nodes")
     return mesh
 
@@ -96,13 +110,62 @@ def _node_names(ctx, kw, sources, cells) -> list[str]:
         if len(where) == 0:
             ctx.error(f"{occ['NOEUD_INIT']} is not an external node of {cell}", "NOEUD_INIT", occ)
         names[int(cells[cell].nodes[where[0]])] = str(occ["NOEUD_FIN"])
+    return names
+
+
+def _check_unique(ctx, names) -> None:
     seen: dict[str, int] = {}
     for name in names:
         seen[name] = seen.get(name, 0) + 1
     twice = [n for n, count in seen.items() if count > 1]
     if twice:
         ctx.error(f"nodes named twice: {', '.join(twice[:5])}", "DEFI_NOEUD")
-    return names
+
+
+def _merged(ctx, kw, coords, cells) -> np.ndarray:
+    """RECO_GLOBAL: for each node, the node it becomes. Nodes of two listed
+    super-cells closer than PRECISION (ABSOLU) or PRECISION times the
+    smaller of the two super-cells' shortest distance between their own
+    nodes (RELATIF) are one node, the first of them (code_aster's ssdmrg)."""
+    target = np.arange(len(coords))
+
+    def root(i: int) -> int:
+        while target[i] != i:
+            i = target[i]
+        return i
+
+    shortest = {name: _shortest_distance(coords[cell.nodes]) for name, cell in cells.items()}
+    for occ in kw.factor("RECO_GLOBAL"):
+        if occ.get("TOUT") == "OUI":
+            names = list(cells)
+        else:
+            names = [str(n) for n in np.atleast_1d(occ["SUPER_MAILLE"])]
+            unknown = [n for n in names if n not in cells]
+            if unknown:
+                ctx.error(f"no super-cell {unknown[0]}", "SUPER_MAILLE", occ)
+        precision = float(occ.get("PRECISION", 1.0e-3))
+        relative = occ.get("CRITERE", "RELATIF") == "RELATIF"
+        for a, first in enumerate(names):
+            for second in names[a + 1 :]:
+                limit = precision
+                if relative:
+                    limit *= min(shortest[first], shortest[second])
+                nodes_1, nodes_2 = cells[first].nodes, cells[second].nodes
+                gaps = np.linalg.norm(
+                    coords[nodes_1][:, None, :] - coords[nodes_2][None, :, :], axis=2
+                )
+                for i, j in zip(*np.nonzero(gaps <= limit), strict=True):
+                    low, high = sorted((root(int(nodes_1[i])), root(int(nodes_2[j]))))
+                    target[high] = low
+    return np.array([root(i) for i in range(len(coords))], dtype=int)
+
+
+def _shortest_distance(points: np.ndarray) -> float:
+    """The shortest distance between two of the points (0 for fewer than two)."""
+    if len(points) < 2:
+        return 0.0
+    gaps = np.linalg.norm(points[:, None, :] - points[None, :, :], axis=2)
+    return float(gaps[np.triu_indices(len(points), 1)].min())
 
 
 def _node_groups(ctx, kw, cells) -> dict[str, np.ndarray]:

@@ -5,7 +5,9 @@ DEFINITION names the model, EXTERIEUR the external nodes (their DOFs are
 the components the model gives them). RIGI_MECA, MASS_MECA and AMOR_MECA
 compute the condensed matrices, in the same call or in later ones
 (reuse): from the finite elements by static (Guyan) condensation, the
-interior held by CHAR_MACR_ELEM's blocked DOFs; or, with PROJ_MESU and
+interior held by CHAR_MACR_ELEM's blocked DOFs (external DOFs it blocks
+have no stiffness or mass in the superelement and stay blocked in the
+models using it: NUME_DDL adds those relations); or, with PROJ_MESU and
 MODE_MESURE, from the measured projection as code_aster's crmeri / crmema /
 crmeam do (:mod:`asterlite.substructure.static_condensation`). Masses and
 damping need the stiffness first, as in code_aster; a finite-element
@@ -80,13 +82,17 @@ def _define(ctx, kw) -> StaticMacroElement:
     characteristics = definition.get("CARA_ELEM")
     if characteristics is not None and characteristics.model is not model:
         ctx.error("CARA_ELEM was built on another model", "CARA_ELEM", definition)
+    load = definition.get("CHAR_MACR_ELEM")
+    if load is not None and load.model is not model:
+        ctx.error("CHAR_MACR_ELEM was built on another model", "CHAR_MACR_ELEM", definition)
     materials = definition.get("CHAM_MATER")
     if materials is not None and materials.mesh is not mesh:
         ctx.error("CHAM_MATER lies on another mesh", "CHAM_MATER", definition)
     if definition.get("PROJ_MESU") is not None:
-        for keyword in ("CHAR_MACR_ELEM",):
-            if definition.get(keyword) is not None:
-                ctx.unsupported(f"MACR_ELEM_STAT PROJ_MESU with {keyword}", keyword, definition)
+        if load is not None:
+            ctx.unsupported(
+                "MACR_ELEM_STAT PROJ_MESU with CHAR_MACR_ELEM", "CHAR_MACR_ELEM", definition
+            )
         _measured(ctx, definition, macro)
     return macro
 
@@ -148,17 +154,27 @@ def _stiffness(ctx, kw, macro: StaticMacroElement) -> np.ndarray:
     numbering = numbering_for(macro.model, loads)
     blocked = _blocked(ctx, numbering, definition)
     external = _external_dofs(ctx, macro, numbering)
-    if np.any(np.isin(external, blocked)):
-        ctx.error("CHAR_MACR_ELEM blocks an external DOF", "CHAR_MACR_ELEM", definition)
+    # an external DOF CHAR_MACR_ELEM blocks stays blocked where the
+    # superelement is placed (a relation of the models using it)
+    macro.blocked_external = np.isin(external, blocked)
+    free = external[~macro.blocked_external]
     interior = np.setdiff1d(np.arange(numbering.n_dofs), np.concatenate([external, blocked]))
     stiffness = _assembled(ctx, macro, "RIGI_MECA", numbering)
     try:
-        macro.guyan = sc.guyan(stiffness, interior, external)
+        macro.guyan = sc.guyan(stiffness, interior, free)
     except sc.CondensationError as exc:
         ctx.error(str(exc), "DEFINITION")
     macro.numbering = numbering
     macro.blocked = blocked
-    return macro.guyan.stiffness
+    return _on_external(macro, macro.guyan.stiffness)
+
+
+def _on_external(macro, condensed: np.ndarray) -> np.ndarray:
+    """A matrix of the free external DOFs on all of them (zero on the blocked)."""
+    keep = np.flatnonzero(~macro.blocked_external)
+    out = np.zeros((macro.n_external, macro.n_external))
+    out[np.ix_(keep, keep)] = condensed
+    return out
 
 
 def _other(ctx, kw, macro: StaticMacroElement, kind: str, keyword: str):
@@ -176,7 +192,7 @@ def _other(ctx, kw, macro: StaticMacroElement, kind: str, keyword: str):
             kw,
         )
     mass = _assembled(ctx, macro, "MASS_MECA", macro.numbering)
-    return macro.guyan.condense(mass)
+    return _on_external(macro, macro.guyan.condense(mass))
 
 
 def _assembled(ctx, macro, option, numbering):

@@ -51,6 +51,21 @@ class StaticMacroElement(Concept):
     measured_modes: Any = None  # MODE_MESURE
     definition: Any = None  # the DEFINITION keywords (model, materials, characteristics)
     blocked: Any = None  # DOFs of ``numbering`` CHAR_MACR_ELEM blocks
+    # which external DOFs (node by node, ``components`` within) it blocks
+    blocked_external: Any = None
+
+    def blocked_relations(self, nodes) -> list:
+        """The blocked external DOFs as relations u = 0 on ``nodes`` (the
+        mesh nodes the external nodes became)."""
+        from asterlite.concepts.assembly import LinearRelation
+
+        if self.blocked_external is None:
+            return []
+        width = len(self.components)
+        return [
+            LinearRelation(terms=[(int(nodes[k // width]), self.components[k % width], 1.0)])
+            for k in np.flatnonzero(self.blocked_external)
+        ]
 
     @property
     def n_external(self) -> int:

@@ -53,6 +53,8 @@ NAME_TYPES = {"grma": "cell group", "grno": "node group", "no": "node", "ma": "c
 NOT_MESH_NAMES = {
     "POST_USURE": ("NOEUD", "GROUP_NO"),
     "RECU_FONCTION": ("NOEUD_CHOC", "GROUP_NO_CHOC"),
+    # the super-cells, nodes and groups it names are new
+    "DEFI_MAILLAGE": ("SUPER_MAILLE", "NOEUD_FIN", "GROUP_NO_FIN"),
 }
 
 
