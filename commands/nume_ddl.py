@@ -11,15 +11,16 @@ from asterlite.fem.selection import as_tuple
 def numbering_for(model, loads, characteristics=None, materials=None) -> DofNumbering:
     dofs = build_numbering_dofs(model.node_components())
     relations = []
-    for cell in model.substructures.values():
-        # external DOFs a superelement's CHAR_MACR_ELEM blocks
-        relations.extend(cell.macro.blocked_relations(cell.nodes))
     seen = set()
     for load in loads:
         if id(load) in seen:
             continue
         seen.add(id(load))
         relations.extend(load.relations)
+    for cell in model.substructures.values():
+        # external DOFs a superelement's CHAR_MACR_ELEM blocks (after the
+        # loads' relations: their right-hand sides are zero)
+        relations.extend(cell.macro.blocked_relations(cell.nodes))
     return DofNumbering(
         mesh=model.mesh,
         dofs=dofs,

@@ -1,0 +1,133 @@
+# ruff: noqa: E501 (deck text is kept on one line per command, as in the corpus)
+"""Static substructuring end to end against the cantilever's closed form.
+
+A cantilever (POU_D_E, length L, clamped at A) is cut at mid-span: its left
+half becomes a superelement (MACR_ELEM_STAT, clamped by CHAR_MACR_ELEM,
+external node N5), placed in a mesh (DEFI_MAILLAGE) joined to the whole
+beam mesh (ASSE_MAILLAGE SOUS_STR: N5 of both is one node), whose right
+half carries beam elements. Static condensation is exact for statics: the
+tip deflection under a tip force is F L³ / (3 E I), and DEPL_INTERNE gives
+the left half's interior deflection F x² (3 L - x) / (6 E I).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from asterlite import api
+
+N_ELEMENTS = 10
+LENGTH = 1.0
+YOUNG = 2.0e11
+RADIUS = 0.02
+FORCE = 100.0
+INERTIA = np.pi * RADIUS**4 / 4.0
+
+
+def beam_mesh() -> str:
+    names = ["A"] + [f"N{i}" for i in range(1, N_ELEMENTS + 1)]
+    lines = ["TITRE", "beam", "FINSF", "COOR_3D"]
+    lines += [f"{n} {k * LENGTH / N_ELEMENTS:.15e} 0.0 0.0" for k, n in enumerate(names)]
+    lines += ["FINSF", "SEG2"] + [f"S{k + 1} {names[k]} {names[k + 1]}" for k in range(N_ELEMENTS)]
+    half = N_ELEMENTS // 2
+    lines += ["FINSF", "GROUP_NO", "A", "A", "FINSF", "GROUP_NO", "MID", f"N{half}", "FINSF"]
+    lines += ["GROUP_MA", "LEFT"] + [f"S{k + 1}" for k in range(half)] + ["FINSF"]
+    lines += ["GROUP_MA", "RIGHT"] + [f"S{k + 1}" for k in range(half, N_ELEMENTS)]
+    return "\n".join(lines + ["FINSF", "FIN"]) + "\n"
+
+
+DECK = f"""
+DEBUT()
+MAYA = LIRE_MAILLAGE(FORMAT="ASTER")
+MAT = DEFI_MATERIAU(ELAS=_F(E={YOUNG}, NU=0.3, RHO=7800.0))
+MO_L = AFFE_MODELE(MAILLAGE=MAYA, AFFE=_F(GROUP_MA="LEFT", PHENOMENE="MECANIQUE", MODELISATION="POU_D_E"))
+CM_L = AFFE_MATERIAU(MAILLAGE=MAYA, AFFE=_F(GROUP_MA="LEFT", MATER=MAT))
+CA_L = AFFE_CARA_ELEM(MODELE=MO_L, POUTRE=_F(GROUP_MA="LEFT", SECTION="CERCLE", CARA="R", VALE={RADIUS}))
+CLAMP = AFFE_CHAR_MECA(MODELE=MO_L, DDL_IMPO=_F(GROUP_NO="A", DX=0.0, DY=0.0, DZ=0.0, DRX=0.0, DRY=0.0, DRZ=0.0))
+SUPER = MACR_ELEM_STAT(DEFINITION=_F(MODELE=MO_L, CHAM_MATER=CM_L, CARA_ELEM=CA_L, CHAR_MACR_ELEM=CLAMP),
+    EXTERIEUR=_F(GROUP_NO="MID"), RIGI_MECA=_F())
+SUPER = MACR_ELEM_STAT(reuse=SUPER, MACR_ELEM=SUPER, MASS_MECA=_F())
+MESH_S = DEFI_MAILLAGE(DEFI_SUPER_MAILLE=_F(MACR_ELEM=SUPER, SUPER_MAILLE="LEFTSE"),
+    DEFI_NOEUD=_F(TOUT="OUI", INDEX=(1, 0, 1, 8)), DEFI_GROUP_NO=_F(TOUT="OUI", INDEX=(1, 0, 1, 8)))
+MESH = ASSE_MAILLAGE(MAILLAGE_1=MESH_S, MAILLAGE_2=MAYA, OPERATION="SOUS_STR")
+MODEL = AFFE_MODELE(MAILLAGE=MESH, AFFE=_F(GROUP_MA="RIGHT", PHENOMENE="MECANIQUE", MODELISATION="POU_D_E"),
+    AFFE_SOUS_STRUC=_F(SUPER_MAILLE="LEFTSE"))
+CM = AFFE_MATERIAU(MAILLAGE=MESH, AFFE=_F(GROUP_MA="RIGHT", MATER=MAT))
+CA = AFFE_CARA_ELEM(MODELE=MODEL, POUTRE=_F(GROUP_MA="RIGHT", SECTION="CERCLE", CARA="R", VALE={RADIUS}))
+TIP = AFFE_CHAR_MECA(MODELE=MODEL, FORCE_NODALE=_F(NOEUD="N{N_ELEMENTS}", FY={FORCE}))
+STAT = MECA_STATIQUE(MODELE=MODEL, CHAM_MATER=CM, CARA_ELEM=CA, EXCIT=_F(CHARGE=TIP))
+U = CREA_CHAMP(OPERATION="EXTR", TYPE_CHAM="NOEU_DEPL_R", RESULTAT=STAT, NOM_CHAM="DEPL", NUME_ORDRE=1)
+U_LEFT = DEPL_INTERNE(DEPL_GLOBAL=U, SUPER_MAILLE="LEFTSE")
+K = CALC_MATR_ELEM(MODELE=MODEL, OPTION="RIGI_MECA", CHAM_MATER=CM, CARA_ELEM=CA)
+M = CALC_MATR_ELEM(MODELE=MODEL, OPTION="MASS_MECA", CHAM_MATER=CM, CARA_ELEM=CA)
+NU = NUME_DDL(MATR_RIGI=K)
+KA = ASSE_MATRICE(MATR_ELEM=K, NUME_DDL=NU)
+MA = ASSE_MATRICE(MATR_ELEM=M, NUME_DDL=NU)
+FIN()
+"""
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("static_substructure")
+    (folder / "cut.comm").write_text(DECK)
+    (folder / "cut.mail").write_text(beam_mesh())
+    result = api.run(folder / "cut.comm")
+    assert result.status == "DONE", result.message
+    return result.concepts.raw
+
+
+def deflection(x: float) -> float:
+    return FORCE * x**2 * (3.0 * LENGTH - x) / (6.0 * YOUNG * INERTIA)
+
+
+def test_the_condensed_half_carries_the_cantilever_exactly(run):
+    field = run["U"]
+    tip = field.numbering.dof_index(f"N{N_ELEMENTS}", "DY")
+    assert field.values[tip] == pytest.approx(FORCE * LENGTH**3 / (3 * YOUNG * INERTIA), rel=1e-10)
+    middle = field.numbering.dof_index("N5", "DY")
+    assert field.values[middle] == pytest.approx(deflection(0.5), rel=1e-10)
+
+
+def test_depl_interne_restitutes_the_interior(run):
+    inside = run["U_LEFT"]
+    assert inside.numbering.mesh is run["MAYA"]
+    for node in ("N1", "N3", "N5"):
+        x = float(node[1:]) / N_ELEMENTS
+        value = inside.values[inside.numbering.dof_index(node, "DY")]
+        assert value == pytest.approx(deflection(x), rel=1e-10)
+    assert inside.values[inside.numbering.dof_index("A", "DY")] == 0.0
+
+
+def test_the_super_mesh_joins_the_superelement_to_the_cells(run):
+    mesh = run["MESH"]
+    assert mesh.node_names.count("N5") == 1
+    assert set(mesh.super_cells) == {"LEFTSE"}
+    assert mesh.node_names[int(mesh.super_cells["LEFTSE"].nodes[0])] == "N5"
+    # the superelement's groups restricted to its external node
+    assert list(run["MESH_S"].node_groups) == ["MID"]
+
+
+def test_assembled_matrices_hold_the_condensed_ones(run):
+    stiffness, mass = run["KA"], run["MA"]
+    macro = run["SUPER"]
+    rows = stiffness.numbering.dof_indices(["N5"] * 6, list(macro.components))
+    right = run["MODEL"]
+    assert sorted(right.substructures) == ["LEFTSE"]
+    # the superelement's share at N5: assembled minus the right half's elements
+    alone = right_half_assembled(right, run, stiffness.numbering)
+    share = stiffness.matrix.toarray()[np.ix_(rows, rows)] - alone[np.ix_(rows, rows)]
+    assert np.allclose(share, macro.matrices["RIGI"], rtol=1e-12, atol=1e-6)
+    # the condensed mass of a clamped half holds its static shapes' mass: positive definite
+    assert np.all(np.linalg.eigvalsh(macro.matrices["MASS"]) > 0.0)
+    assert mass.matrix.shape == stiffness.matrix.shape
+
+
+def right_half_assembled(model, run, numbering):
+    """The right half's own elements assembled on the same numbering."""
+    from asterlite.fem.assemble import assemble_blocks
+    from asterlite.fem.elements import element_blocks
+
+    blocks = element_blocks(model, run["CA"], "K", materials=run["CM"])
+    return assemble_blocks(blocks, numbering).toarray()
