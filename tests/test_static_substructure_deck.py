@@ -64,6 +64,10 @@ M = CALC_MATR_ELEM(MODELE=MODEL, OPTION="MASS_MECA", CHAM_MATER=CM, CARA_ELEM=CA
 NU = NUME_DDL(MATR_RIGI=K)
 KA = ASSE_MATRICE(MATR_ELEM=K, NUME_DDL=NU)
 MA = ASSE_MATRICE(MATR_ELEM=M, NUME_DDL=NU)
+MODES = CALC_MODES(MATR_RIGI=KA, MATR_MASS=MA, CALC_FREQ=_F(NMAX_FREQ=4))
+MAC = MAC_MODES(BASE_1=MODES, BASE_2=MODES)
+MAC_M = MAC_MODES(BASE_1=MODES, BASE_2=MODES, MATR_ASSE=MA)
+IERI = MAC_MODES(BASE_1=MODES, BASE_2=MODES, MATR_ASSE=KA, IERI="OUI")
 FIN()
 """
 
@@ -131,3 +135,27 @@ def right_half_assembled(model, run, numbering):
 
     blocks = element_blocks(model, run["CA"], "K", materials=run["CM"])
     return assemble_blocks(blocks, numbering).toarray()
+
+
+def _matrix(table, column: str) -> np.ndarray:
+    out = np.zeros((4, 4))
+    for row in table.rows:
+        out[row["NUME_MODE_1"] - 1, row["NUME_MODE_2"] - 1] = row[column]
+    return out
+
+
+def test_mac_modes_of_a_base_with_itself(run):
+    modes = run["MODES"]
+    mac = _matrix(run["MAC"], "MAC")
+    shapes = modes.shapes
+    expected = (shapes.T @ shapes) ** 2 / np.outer(
+        np.sum(shapes**2, axis=0), np.sum(shapes**2, axis=0)
+    )
+    assert np.allclose(mac, expected, rtol=1e-12)
+    assert np.allclose(np.diag(mac), 1.0, rtol=1e-12)
+    # mass-weighted: the modes are M-orthogonal
+    assert np.allclose(_matrix(run["MAC_M"], "MAC"), np.eye(4), atol=1e-10)
+    weighted = _matrix(run["MAC_M"], "Y1_W_Y2")
+    assert np.allclose(np.diag(weighted), modes.generalized_mass, rtol=1e-10)
+    # IERI of a mode with itself: no energy in the difference
+    assert np.allclose(np.diag(_matrix(run["IERI"], "IERI")), 0.0, atol=1e-20)
