@@ -242,7 +242,9 @@ def hysteretic_blocks(model, characteristics, materials=None, cells=None) -> lis
 
 def option_blocks(model, characteristics, option, materials=None, cells=None) -> list[ElementBlock]:
     """Element matrices of any supported option (see the module docstring)."""
-    if model.substructures and cells is None:
+    if model.substructures and cells is not None:
+        raise NotImplementedError("element matrices of some cells of a model with superelements")
+    if model.substructures:
         # a model with superelements (AFFE_SOUS_STRUC): their condensed matrices too
         if option not in SUPERELEMENT_MATRICES:
             raise NotImplementedError(f"option {option} on a model with superelements")
