@@ -89,3 +89,12 @@ class SuperMesh(Mesh):
     aster_types = ("super_mesh", "maillage_sdaster")
 
     super_cells: dict[str, SuperCell] = field(default_factory=dict)
+
+    def copy(self) -> SuperMesh:
+        base = Mesh.copy(self)
+        fields = {name: getattr(base, name) for name in Mesh.__dataclass_fields__}
+        cells = {
+            name: SuperCell(macro=cell.macro, nodes=cell.nodes.copy())
+            for name, cell in self.super_cells.items()
+        }
+        return SuperMesh(**fields, super_cells=cells)
