@@ -46,7 +46,9 @@ def run(ctx, kw):
         ctx.error(f"super-cells named in both meshes: {', '.join(twice)}", "MAILLAGE_2", kw)
     super_cells = dict(cells_1)
     for name, cell in cells_2.items():
-        super_cells[name] = SuperCell(macro=cell.macro, nodes=renumber[cell.nodes])
+        super_cells[name] = SuperCell(
+            macro=cell.macro, nodes=renumber[cell.nodes], rotation=cell.rotation
+        )
     n_cells_1 = first.n_cells
     mesh = SuperMesh(
         coords=np.vstack(coords),

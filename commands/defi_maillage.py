@@ -4,19 +4,26 @@ Each super-cell brings its macro-element's external nodes as new nodes (in
 the macro-element's order, shifted by TRAN), named by DEFI_NOEUD (TOUT with
 INDEX: PREFIXE, then the characters INDEX[0]..INDEX[1] of the super-cell's
 name, then INDEX[2]..INDEX[3] of the node's name; NOEUD_INIT renames one)
-or N<i> by position. DEFI_GROUP_NO copies the groups of the macro-element's
-mesh restricted to its external nodes (named the same way from the group's
-name), or one group (GROUP_NO_INIT -> GROUP_NO_FIN). Super-cells are named
-by SUPER_MAILLE, else after their macro-element. RECO_GLOBAL merges the
-coincident nodes of several super-cells; RECO_SUPER_MAILLE and ANGL_NAUT
-(a rotated superelement) are refused.
+or N<i> by position. ANGL_NAUT (degrees) turns a super-cell about CENTRE:
+its nodes are placed and its matrices expressed in the global frame.
+DEFI_GROUP_NO copies the groups of the macro-element's mesh restricted to
+its external nodes (named the same way from the group's name), or one
+group (GROUP_NO_INIT -> GROUP_NO_FIN). Super-cells are named by
+SUPER_MAILLE, else after their macro-element. RECO_GLOBAL merges the
+coincident nodes of several super-cells; RECO_SUPER_MAILLE is refused.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from asterlite.concepts.static_substructure import StaticMacroElement, SuperCell, SuperMesh
+from asterlite.concepts.static_substructure import (
+    StaticMacroElement,
+    SuperCell,
+    SuperMesh,
+    node_rotation,
+)
+from asterlite.fem.frames import rotation_from_angles
 
 #: code_aster's names are 8 characters at most
 NAME_LENGTH = 8
@@ -27,16 +34,11 @@ def run(ctx, kw):
         ctx.unsupported("DEFI_MAILLAGE RECO_SUPER_MAILLE", "RECO_SUPER_MAILLE", kw)
     coords, sources, cells = [], [], {}
     for occ in kw.factor("DEFI_SUPER_MAILLE"):
-        if occ.get("ANGL_NAUT") is not None:
-            ctx.unsupported("DEFI_MAILLAGE ANGL_NAUT (a rotated superelement)", "ANGL_NAUT", occ)
         macros = list(np.atleast_1d(occ["MACR_ELEM"]))
         names = [str(n) for n in np.atleast_1d(occ.get("SUPER_MAILLE") or ())]
         if names and len(names) != len(macros):
             ctx.error("give one SUPER_MAILLE name per MACR_ELEM", "SUPER_MAILLE", occ)
-        shift = np.zeros(3)
-        if occ.get("TRAN") is not None:
-            tran = np.atleast_1d(np.asarray(occ["TRAN"], dtype=float))
-            shift[: tran.size] = tran
+        shift, rotation, centre = _placement(occ)
         for k, macro in enumerate(macros):
             if not isinstance(macro, StaticMacroElement):
                 ctx.unsupported(
@@ -49,11 +51,19 @@ def run(ctx, kw):
             name = names[k] if names else (macro.name or f"SM{len(cells) + 1}")
             if name in cells:
                 ctx.error(f"two super-cells named {name}", "SUPER_MAILLE", occ)
+            if rotation is not None:
+                try:
+                    node_rotation(tuple(macro.components), rotation)
+                except ValueError as exc:
+                    ctx.unsupported(f"DEFI_MAILLAGE ANGL_NAUT: {exc}", "ANGL_NAUT", occ)
             start = len(sources)
+            dim = 2 if macro.mesh.dim == 2 else 3
             for node in macro.external_nodes:
                 sources.append((name, macro, int(node)))
-                coords.append(macro.mesh.coords[node] + shift)
-            cells[name] = SuperCell(macro=macro, nodes=np.arange(start, len(sources)))
+                coords.append(_placed(macro.mesh.coords[node], shift, rotation, centre, dim))
+            cells[name] = SuperCell(
+                macro=macro, nodes=np.arange(start, len(sources)), rotation=rotation
+            )
     coords = np.asarray(coords, dtype=float).reshape(-1, 3)
     kept = _merged(ctx, kw, coords, cells)
     names = _node_names(ctx, kw, sources, cells)
@@ -81,6 +91,34 @@ def run(ctx, kw):
     }
     ctx.log(f"DEFI_MAILLAGE: {len(cells)} super-cells, {mesh.n_nodes} nodes")
     return mesh
+
+
+def _placement(occ):
+    """TRAN, the global-to-local rotation of ANGL_NAUT (degrees) or None, CENTRE."""
+    shift, centre = np.zeros(3), np.zeros(3)
+    if occ.get("TRAN") is not None:
+        given = np.atleast_1d(np.asarray(occ["TRAN"], dtype=float))
+        shift[: given.size] = given
+    rotation = None
+    if occ.get("ANGL_NAUT") is not None:
+        angles = np.zeros(3)
+        given = np.atleast_1d(np.asarray(occ["ANGL_NAUT"], dtype=float))
+        angles[: given.size] = np.radians(given)
+        if np.abs(angles).sum() > 1.0e-6:  # code_aster's threshold (ssrone)
+            rotation = rotation_from_angles(angles)
+        if occ.get("CENTRE") is not None:
+            given = np.atleast_1d(np.asarray(occ["CENTRE"], dtype=float))
+            centre[: given.size] = given
+    return shift, rotation, centre
+
+
+def _placed(point, shift, rotation, centre, dim: int) -> np.ndarray:
+    """A node of the superelement where the super-cell puts it: turned about
+    CENTRE (the mesh's own dimensions only, as code_aster's ssdmge), then shifted."""
+    out = np.asarray(point, dtype=float).copy()
+    if rotation is not None:
+        out[:dim] = centre[:dim] + rotation[:dim, :dim].T @ (out[:dim] - centre[:dim])
+    return out + shift
 
 
 def _indexed(ctx, occ, prefix: str, cell: str, name: str) -> str:

@@ -1,7 +1,8 @@
 """DEPL_INTERNE: displacements inside a superelement (code_aster's op0089).
 
 A field (cham_no) on the mesh holding the superelement gives the
-superelement's own field: its external DOFs read at the super-cell's nodes,
+superelement's own field: its external DOFs read at the super-cell's nodes
+(in its own frame when DEFI_MAILLAGE turned it),
 its interior u_i = Φ_ie u_e (the static modes of its Guyan condensation),
 its blocked DOFs zero (ssdein; NOM_CAS, a condensed load case, is not
 computed). A result (mode_meca, dyna_harmo, dyna_trans, evol_elas) needs a
@@ -69,9 +70,13 @@ def _interior(ctx, kw, given, cell) -> NodalField:
             kw,
         )
     external = given.values[_external_rows(ctx, kw, given.numbering, cell)]
+    to_local = cell.to_local()
+    if to_local is not None:  # a turned super-cell: its own frame
+        external = to_local @ external
     values = np.zeros(macro.numbering.n_dofs, dtype=np.asarray(given.values).dtype)
-    values[macro.guyan.external] = external
-    values[macro.guyan.interior] = macro.guyan.interior_values(external)
+    free = ~macro.blocked_external
+    values[macro.guyan.external] = external[free]
+    values[macro.guyan.interior] = macro.guyan.interior_values(external[free])
     return NodalField(numbering=macro.numbering, values=values)
 
 
@@ -90,6 +95,7 @@ def _measured(ctx, kw, given, cell):
         model=macro.sensors.measurement_model,
     )
     transfer = np.zeros((target.n_dofs, len(rows)))
+    to_local = cell.to_local()
     to_sensors = macro.measured.identified_at_sensors @ macro.measured.to_modes
     for k, (node, direction, component) in enumerate(sensors):
         transfer[target.index[(int(node), component)]] += to_sensors[k]
@@ -98,6 +104,9 @@ def _measured(ctx, kw, given, cell):
             axis = np.flatnonzero(np.abs(direction) > 100.0 * np.finfo(float).eps)
             if axis.size == 1:
                 transfer[target.index[(int(node), ("DX", "DY", "DZ")[axis[0]])]] = to_sensors[k]
+
+    if to_local is not None:  # a turned super-cell: its own frame first
+        transfer = transfer @ to_local
 
     def carried(values):
         """(n_states, n_dofs) on DEPL_GLOBAL's DOFs -> on the sensors' DOFs."""

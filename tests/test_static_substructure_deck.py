@@ -159,3 +159,53 @@ def test_mac_modes_of_a_base_with_itself(run):
     assert np.allclose(np.diag(weighted), modes.generalized_mass, rtol=1e-10)
     # IERI of a mode with itself: no energy in the difference
     assert np.allclose(np.diag(_matrix(run["IERI"], "IERI")), 0.0, atol=1e-20)
+
+
+TURNED = f"""
+DEBUT()
+MAYA = LIRE_MAILLAGE(FORMAT="ASTER")
+MAT = DEFI_MATERIAU(ELAS=_F(E={YOUNG}, NU=0.3, RHO=7800.0))
+MO = AFFE_MODELE(MAILLAGE=MAYA, AFFE=_F(TOUT="OUI", PHENOMENE="MECANIQUE", MODELISATION="POU_D_E"))
+CM = AFFE_MATERIAU(MAILLAGE=MAYA, AFFE=_F(TOUT="OUI", MATER=MAT))
+CA = AFFE_CARA_ELEM(MODELE=MO, POUTRE=_F(GROUP_MA=("LEFT", "RIGHT"), SECTION="CERCLE", CARA="R", VALE={RADIUS}))
+CLAMP = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_NO="A", DX=0.0, DY=0.0, DZ=0.0, DRX=0.0, DRY=0.0, DRZ=0.0))
+BEAM = MACR_ELEM_STAT(DEFINITION=_F(MODELE=MO, CHAM_MATER=CM, CARA_ELEM=CA, CHAR_MACR_ELEM=CLAMP),
+    EXTERIEUR=_F(NOEUD=("A", "N{N_ELEMENTS}")), RIGI_MECA=_F())
+MESH = DEFI_MAILLAGE(DEFI_SUPER_MAILLE=_F(MACR_ELEM=BEAM, SUPER_MAILLE="UP", ANGL_NAUT=(90.0, 0.0, 0.0)),
+    DEFI_NOEUD=_F(TOUT="OUI", INDEX=(1, 0, 1, 8)))
+MODEL = AFFE_MODELE(MAILLAGE=MESH, AFFE_SOUS_STRUC=_F(TOUT="OUI"))
+PUSH = AFFE_CHAR_MECA(MODELE=MODEL, FORCE_NODALE=_F(NOEUD="N{N_ELEMENTS}", FX={FORCE}))
+K = CALC_MATR_ELEM(MODELE=MODEL, OPTION="RIGI_MECA")
+NU = NUME_DDL(MATR_RIGI=K)
+KA = ASSE_MATRICE(MATR_ELEM=K, NUME_DDL=NU)
+KA = FACTORISER(reuse=KA, MATR_ASSE=KA)
+VE = CALC_VECT_ELEM(OPTION="CHAR_MECA", CHARGE=PUSH)
+F = ASSE_VECTEUR(VECT_ELEM=VE, NUME_DDL=NU)
+U = RESOUDRE(MATR=KA, CHAM_NO=F)
+U_IN = DEPL_INTERNE(DEPL_GLOBAL=U, SUPER_MAILLE="UP")
+FIN()
+"""
+
+
+def test_a_turned_superelement_bends_in_the_global_frame(tmp_path):
+    """The cantilever turned 90 degrees about Z (ANGL_NAUT) stands along Y: a
+    force FX at its tip bends it by F L³ / (3 E I) along X, its clamped
+    external node A stays fixed, and inside (its own frame) it deflects
+    along -y."""
+    (tmp_path / "turned.comm").write_text(TURNED)
+    (tmp_path / "turned.mail").write_text(beam_mesh())
+    result = api.run(tmp_path / "turned.comm")
+    assert result.status == "DONE", result.message
+    raw = result.concepts.raw
+    mesh = raw["MESH"]
+    tip = mesh.find_node(f"N{N_ELEMENTS}")
+    assert np.allclose(mesh.coords[tip], [0.0, LENGTH, 0.0], atol=1e-14)
+    field = raw["U"]
+    assert field.values[field.numbering.dof_index(tip, "DX")] == pytest.approx(
+        deflection(LENGTH), rel=1e-10
+    )
+    assert abs(field.values[field.numbering.dof_index(tip, "DY")]) < 1e-12 * deflection(LENGTH)
+    assert field.values[field.numbering.dof_index("A", "DX")] == 0.0
+    inside = raw["U_IN"]
+    value = inside.values[inside.numbering.dof_index("N3", "DY")]
+    assert value == pytest.approx(-deflection(0.3), rel=1e-10)

@@ -54,31 +54,82 @@ class StaticMacroElement(Concept):
     # which external DOFs (node by node, ``components`` within) it blocks
     blocked_external: Any = None
 
-    def blocked_relations(self, nodes) -> list:
-        """The blocked external DOFs as relations u = 0 on ``nodes`` (the
-        mesh nodes the external nodes became)."""
-        from asterlite.concepts.assembly import LinearRelation
-
-        if self.blocked_external is None:
-            return []
-        width = len(self.components)
-        return [
-            LinearRelation(terms=[(int(nodes[k // width]), self.components[k % width], 1.0)])
-            for k in np.flatnonzero(self.blocked_external)
-        ]
-
     @property
     def n_external(self) -> int:
         return len(self.external_nodes) * len(self.components)
 
 
+_TRANSLATIONS = ("DX", "DY", "DZ")
+_ROTATIONS = ("DRX", "DRY", "DRZ")
+
+
+def node_rotation(components: tuple[str, ...], rotation: np.ndarray) -> np.ndarray:
+    """The (n_comp, n_comp) global-to-local map of one node's components
+    under a global-to-local ``rotation`` (3, 3): translations and rotations
+    turned, other components kept (code_aster's ssvaro). Components lacking
+    an axis the rotation mixes in are refused (ValueError)."""
+    out = np.eye(len(components))
+    for family in (_TRANSLATIONS, _ROTATIONS):
+        where = [k for k, c in enumerate(components) if c in family]
+        axes = [family.index(components[k]) for k in where]
+        if not axes:
+            continue
+        others = [a for a in range(3) if a not in axes]
+        if others and np.abs(rotation[np.ix_(axes, others)]).max() > 1.0e-12:
+            raise ValueError(
+                f"the rotation mixes {', '.join(family[a] for a in others)} into the "
+                f"superelement's components {', '.join(components)}"
+            )
+        out[np.ix_(where, where)] = rotation[np.ix_(axes, axes)]
+    return out
+
+
 @dataclass(eq=False)
 class SuperCell:
-    """A superelement placed in a mesh: its macro-element and the mesh nodes
-    its external nodes became (in the macro-element's order)."""
+    """A superelement placed in a mesh: its macro-element, the mesh nodes
+    its external nodes became (in the macro-element's order) and, when
+    DEFI_MAILLAGE turned it (ANGL_NAUT), the global-to-local rotation."""
 
     macro: StaticMacroElement
     nodes: np.ndarray
+    rotation: np.ndarray | None = None
+
+    def to_local(self) -> np.ndarray | None:
+        """The (n_external, n_external) map of global external values to the
+        superelement's own frame; None when it is not turned."""
+        if self.rotation is None:
+            return None
+        block = node_rotation(tuple(self.macro.components), self.rotation)
+        return np.kron(np.eye(len(self.nodes)), block)
+
+    def matrix(self, kind: str) -> np.ndarray:
+        """A condensed matrix in the global frame: Tᵀ A T."""
+        matrix = np.asarray(self.macro.matrices[kind], dtype=float)
+        local = self.to_local()
+        return matrix if local is None else local.T @ matrix @ local
+
+    def blocked_relations(self) -> list:
+        """The external DOFs the superelement's CHAR_MACR_ELEM blocks, as
+        relations (its own frame's component = 0) on this cell's nodes."""
+        from asterlite.concepts.assembly import LinearRelation
+
+        macro = self.macro
+        if macro.blocked_external is None:
+            return []
+        width = len(macro.components)
+        block = None
+        if self.rotation is not None:
+            block = node_rotation(tuple(macro.components), self.rotation)
+        relations = []
+        for k in np.flatnonzero(macro.blocked_external):
+            node = int(self.nodes[k // width])
+            row = np.eye(width)[k % width] if block is None else block[k % width]
+            terms = [
+                (node, macro.components[j], float(row[j]))
+                for j in np.flatnonzero(np.abs(row) > 1.0e-14)
+            ]
+            relations.append(LinearRelation(terms=terms))
+        return relations
 
 
 @dataclass(eq=False)
@@ -94,7 +145,7 @@ class SuperMesh(Mesh):
         base = Mesh.copy(self)
         fields = {name: getattr(base, name) for name in Mesh.__dataclass_fields__}
         cells = {
-            name: SuperCell(macro=cell.macro, nodes=cell.nodes.copy())
+            name: SuperCell(macro=cell.macro, nodes=cell.nodes.copy(), rotation=cell.rotation)
             for name, cell in self.super_cells.items()
         }
         return SuperMesh(**fields, super_cells=cells)

@@ -73,7 +73,7 @@ def superelement_blocks(model, kind: str) -> list[ElementBlock]:
             ElementBlock(
                 nodes=np.asarray(cell.nodes, dtype=int).reshape(1, -1),
                 components=tuple(macro.components),
-                matrices=np.asarray(macro.matrices[kind], dtype=float)[None, :, :],
+                matrices=cell.matrix(kind)[None, :, :],
             )
         )
     return blocks
