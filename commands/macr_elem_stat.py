@@ -5,9 +5,11 @@ DEFINITION names the model, EXTERIEUR the external nodes (their DOFs are
 the components the model gives them). RIGI_MECA, MASS_MECA and AMOR_MECA
 compute the condensed matrices, in the same call or in later ones
 (reuse): from the finite elements by static (Guyan) condensation, the
-interior held by CHAR_MACR_ELEM's blocked DOFs (external DOFs it blocks
+interior held by CHAR_MACR_ELEM's relations taken homogeneous (its imposed
+values would only matter to condensed load cases); external DOFs it blocks
 have no stiffness or mass in the superelement and stay blocked in the
-models using it: NUME_DDL adds those relations); or, with PROJ_MESU and
+models using it (NUME_DDL adds those relations), a relation of several DOFs
+binding an external one is refused; or, with PROJ_MESU and
 MODE_MESURE, from the measured projection as code_aster's crmeri / crmema /
 crmeam do (:mod:`asterlite.substructure.static_condensation`). Masses and
 damping need the stiffness first, as in code_aster; a finite-element
@@ -18,11 +20,13 @@ superelement has no AMOR_MECA (code_aster refuses it too). CAS_CHARGE
 from __future__ import annotations
 
 import numpy as np
+import scipy.sparse as sp
 from asterlite.commands.nume_ddl import numbering_for
 
 from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.static_substructure import StaticMacroElement
 from asterlite.fem.assemble import assemble_blocks
+from asterlite.fem.constraints import relation_matrix
 from asterlite.fem.elements import ElementError
 from asterlite.fem.options import option_blocks
 from asterlite.fem.selection import select_nodes
@@ -152,20 +156,30 @@ def _stiffness(ctx, kw, macro: StaticMacroElement) -> np.ndarray:
     definition = macro.definition
     loads = [definition["CHAR_MACR_ELEM"]] if definition.get("CHAR_MACR_ELEM") else []
     numbering = numbering_for(macro.model, loads)
-    blocked = _blocked(ctx, numbering, definition)
     external = _external_dofs(ctx, macro, numbering)
+    b_matrix, _ = relation_matrix(numbering.relations, numbering.index, numbering.n_dofs)
+    b_matrix = sp.csr_matrix(b_matrix)
+    counts = np.diff(b_matrix.indptr)
+    single = b_matrix.indices[b_matrix.indptr[:-1][counts == 1]]
     # an external DOF CHAR_MACR_ELEM blocks stays blocked where the
     # superelement is placed (a relation of the models using it)
-    macro.blocked_external = np.isin(external, blocked)
+    macro.blocked_external = np.isin(external, single)
     free = external[~macro.blocked_external]
-    interior = np.setdiff1d(np.arange(numbering.n_dofs), np.concatenate([external, blocked]))
+    binding = b_matrix[counts > 1][:, free]
+    if binding.nnz:
+        ctx.unsupported(
+            "MACR_ELEM_STAT CHAR_MACR_ELEM with a relation of several DOFs binding an "
+            "external node",
+            "CHAR_MACR_ELEM",
+            definition,
+        )
     stiffness = _assembled(ctx, macro, "RIGI_MECA", numbering)
     try:
-        macro.guyan = sc.guyan(stiffness, interior, free)
+        macro.guyan = sc.constrained_guyan(stiffness, b_matrix, free)
     except sc.CondensationError as exc:
         ctx.error(str(exc), "DEFINITION")
     macro.numbering = numbering
-    macro.blocked = blocked
+    macro.blocked = single
     return _on_external(macro, macro.guyan.stiffness)
 
 
@@ -209,18 +223,3 @@ def _assembled(ctx, macro, option, numbering):
     except (ElementError, ValueError) as exc:
         ctx.error(str(exc), "DEFINITION")
     return assemble_blocks(blocks, numbering)
-
-
-def _blocked(ctx, numbering, definition) -> np.ndarray:
-    """DOFs CHAR_MACR_ELEM blocks (DDL_IMPO to zero); other relations refused."""
-    blocked = []
-    for relation in numbering.relations:
-        if len(relation.terms) != 1 or relation.rhs != 0.0 or relation.rhs_in_time is not None:
-            ctx.unsupported(
-                "MACR_ELEM_STAT CHAR_MACR_ELEM with relations other than blocked DOFs",
-                "CHAR_MACR_ELEM",
-                definition,
-            )
-        node, component, _ = relation.terms[0]
-        blocked.append(numbering.index[(node, component)])
-    return np.unique(np.asarray(blocked, dtype=int))

@@ -80,3 +80,31 @@ def test_too_few_sensors_or_interface_dofs_are_refused():
         sc.measured(np.ones((2, 3)), np.ones((4, 3)), np.ones((2, 2)), [1, 1], [1, 1])
     with pytest.raises(sc.CondensationError, match="external DOFs"):
         sc.measured(np.eye(3), np.ones((1, 3)), np.ones((3, 2)), [1, 1], [1, 1])
+
+
+def test_relations_inside_bind_the_interior():
+    k, m = chain(SPRINGS, MASSES)
+    # u1 = u2 (LIAISON_DDL): spring 2 carries nothing, springs 1 and 3 in series
+    tie = np.array([[0.0, 1.0, -1.0, 0.0]])
+    condensed = sc.constrained_guyan(k, tie, external=np.array([0, 3]))
+    series = 1.0 / (1.0 / SPRINGS[0] + 1.0 / SPRINGS[2])
+    assert np.allclose(condensed.stiffness, series * np.array([[1, -1], [-1, 1]]), rtol=1e-12)
+    # the tied nodes move together, at the compliance share of spring 1
+    share = (1.0 / SPRINGS[0]) / (1.0 / SPRINGS[0] + 1.0 / SPRINGS[2])
+    assert np.allclose(condensed.interior_modes, [[1 - share, share]] * 2, rtol=1e-12)
+    # u2 = 0 (DDL_IMPO): each end held by its own springs
+    held = np.array([[0.0, 0.0, 1.0, 0.0]])
+    condensed = sc.constrained_guyan(k, held, external=np.array([0, 3]))
+    left = 1.0 / (1.0 / SPRINGS[0] + 1.0 / SPRINGS[1])
+    assert np.allclose(condensed.stiffness, np.diag([left, SPRINGS[2]]), rtol=1e-12)
+    mass = condensed.condense(m)
+    shapes = np.zeros((4, 2))
+    shapes[0, 0], shapes[3, 1] = 1.0, 1.0
+    shapes[1, 0] = (1.0 / SPRINGS[1]) / (1.0 / SPRINGS[0] + 1.0 / SPRINGS[1])
+    assert np.allclose(mass, shapes.T @ m @ shapes, rtol=1e-12)
+
+
+def test_a_relation_binding_an_external_dof_is_refused():
+    k, _ = chain(SPRINGS, MASSES)
+    with pytest.raises(sc.CondensationError):
+        sc.constrained_guyan(k, np.array([[1.0, -1.0, 0.0, 0.0]]), external=np.array([0, 3]))

@@ -82,6 +82,33 @@ def guyan(stiffness, interior: np.ndarray, external: np.ndarray) -> GuyanCondens
     return GuyanCondensation(interior, external, phi, 0.5 * (k_c + k_c.T))
 
 
+def constrained_guyan(stiffness, relations, external: np.ndarray) -> GuyanCondensation:
+    """Guyan condensation under homogeneous linear relations B u = 0 (the
+    superelement's CHAR_MACR_ELEM: code_aster keeps their multipliers
+    inside, its matrices do not depend on the imposed values): u = T q on
+    the relations' null space, the condensation done on q, the static shapes
+    brought back to every DOF. ``external`` DOFs must stay free of the
+    relations (a multiplier outside would leave the superelement)."""
+    from asterlite.fem.constraints import eliminate
+
+    k = sp.csr_matrix(stiffness)
+    n = k.shape[0]
+    external = np.asarray(external, dtype=int)
+    b_matrix = sp.csr_matrix(relations)
+    if b_matrix[:, external].nnz:
+        raise CondensationError("a relation of the superelement binds an external DOF")
+    elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), n)
+    position = np.full(n, -1)
+    position[elimination.free] = np.arange(elimination.free.size)
+    kept = position[external]
+    masters = np.setdiff1d(np.arange(elimination.free.size), kept)
+    reduced = guyan(elimination.reduce(k), masters, kept)
+    t = sp.csc_matrix(elimination.T)
+    shapes = t[:, masters] @ reduced.interior_modes + t[:, kept].toarray()
+    interior = np.setdiff1d(np.arange(n), external)
+    return GuyanCondensation(interior, external, np.asarray(shapes)[interior], reduced.stiffness)
+
+
 def pseudo_inverse(matrix: np.ndarray) -> np.ndarray:
     """Moore-Penrose inverse keeping singular values above code_aster's cut."""
     u, s, vt = np.linalg.svd(matrix, full_matrices=False)
