@@ -4,8 +4,8 @@ A field (cham_no) on the mesh holding the superelement gives the
 superelement's own field: its external DOFs read at the super-cell's nodes
 (in its own frame when DEFI_MAILLAGE turned it),
 its interior u_i = Φ_ie u_e (the static modes of its Guyan condensation),
-its blocked DOFs zero (ssdein; NOM_CAS, a condensed load case, is not
-computed). A result (mode_meca, dyna_harmo, dyna_trans, evol_elas) needs a
+its blocked DOFs zero, plus with NOM_CAS the load case's interior response
+(ssdein). A result (mode_meca, dyna_harmo, dyna_trans, evol_elas) needs a
 superelement of a measured projection (PROJ_MESU): every field is carried
 to the measurement mesh, each sensor getting Y V u_e (the identified modes'
 combination the interface motion gives, code_aster's cnsprm), the other
@@ -59,9 +59,10 @@ def _external_rows(ctx, kw, numbering, cell) -> np.ndarray:
 
 
 def _interior(ctx, kw, given, cell) -> NodalField:
-    if str(kw.get("NOM_CAS", " ")).strip():
-        ctx.unsupported("DEPL_INTERNE NOM_CAS (condensed load cases)", "NOM_CAS", kw)
     macro = cell.macro
+    case = str(kw.get("NOM_CAS", " ")).strip()
+    if case and case not in macro.load_cases:
+        ctx.error(f"the superelement has no load case {case}", "NOM_CAS", kw)
     if macro.guyan is None:
         ctx.error(
             "the superelement has no interior static modes (RIGI_MECA of a finite-element "
@@ -77,6 +78,8 @@ def _interior(ctx, kw, given, cell) -> NodalField:
     free = ~macro.blocked_external
     values[macro.guyan.external] = external[free]
     values[macro.guyan.interior] = macro.guyan.interior_values(external[free])
+    if case:  # the case's own interior response, external DOFs held
+        values = values + cell.load_case(case)[1]
     return NodalField(numbering=macro.numbering, values=values)
 
 

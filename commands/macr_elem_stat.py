@@ -8,13 +8,16 @@ compute the condensed matrices, in the same call or in later ones
 interior held by CHAR_MACR_ELEM's relations taken homogeneous (its imposed
 values would only matter to condensed load cases); external DOFs it blocks
 have no stiffness or mass in the superelement and stay blocked in the
-models using it (NUME_DDL adds those relations), a relation of several DOFs
-binding an external one is refused; or, with PROJ_MESU and
+models using it (NUME_DDL adds those relations), as a relation between
+external DOFs only does; one binding external and interior DOFs is refused; or, with PROJ_MESU and
 MODE_MESURE, from the measured projection as code_aster's crmeri / crmema /
 crmeam do (:mod:`asterlite.substructure.static_condensation`). Masses and
 damping need the stiffness first, as in code_aster; a finite-element
 superelement has no AMOR_MECA (code_aster refuses it too). CAS_CHARGE
-(condensed load cases) is not computed.
+condenses load cases of a finite-element superelement (the superelements
+it holds bring their case of the same name): f_c = Uᵀ (f - K u_p) with u_p
+the response, external DOFs held, to the forces and to the imposed values of its loads' relations
+(those of CHAR_MACR_ELEM; other kinematic conditions are refused).
 """
 
 from __future__ import annotations
@@ -24,18 +27,17 @@ import scipy.sparse as sp
 from asterlite.commands.nume_ddl import numbering_for
 
 from asterlite.concepts.modes import ModeResult
-from asterlite.concepts.static_substructure import StaticMacroElement
-from asterlite.fem.assemble import assemble_blocks
+from asterlite.concepts.static_substructure import LoadCase, StaticMacroElement
+from asterlite.fem.assemble import assemble_blocks, assemble_terms
 from asterlite.fem.constraints import relation_matrix
 from asterlite.fem.elements import ElementError
+from asterlite.fem.loads import load_terms
 from asterlite.fem.options import option_blocks
 from asterlite.fem.selection import select_nodes
 from asterlite.substructure import static_condensation as sc
 
 
 def run(ctx, kw):
-    if kw.factor("CAS_CHARGE"):
-        ctx.unsupported("MACR_ELEM_STAT CAS_CHARGE (condensed load cases)", "CAS_CHARGE", kw)
     macro = kw.get("MACR_ELEM") or ctx.reuse
     if kw.factor("DEFINITION"):
         if macro is not None:
@@ -55,6 +57,8 @@ def run(ctx, kw):
         if kind in macro.matrices:
             ctx.error(f"the superelement's {keyword} is already computed", keyword)
         macro.matrices[kind] = _other(ctx, kw, macro, kind, keyword)
+    for occ in kw.factor("CAS_CHARGE"):
+        _load_case(ctx, occ, macro)
     ctx.log(
         f"MACR_ELEM_STAT: {len(macro.external_nodes)} external nodes, {macro.n_external} "
         f"external DOFs; matrices {', '.join(sorted(macro.matrices))}"
@@ -165,20 +169,37 @@ def _stiffness(ctx, kw, macro: StaticMacroElement) -> np.ndarray:
     # superelement is placed (a relation of the models using it)
     macro.blocked_external = np.isin(external, single)
     free = external[~macro.blocked_external]
-    binding = b_matrix[counts > 1][:, free]
-    if binding.nnz:
-        ctx.unsupported(
-            "MACR_ELEM_STAT CHAR_MACR_ELEM with a relation of several DOFs binding an "
-            "external node",
-            "CHAR_MACR_ELEM",
-            definition,
-        )
+    # a relation between external DOFs only goes with them too; one binding
+    # external and interior DOFs is refused
+    is_free_external = np.zeros(numbering.n_dofs, dtype=bool)
+    is_free_external[free] = True
+    position = np.full(numbering.n_dofs, -1)
+    position[external] = np.arange(external.size)
+    inside, macro.external_relations = [], []
+    for row in np.flatnonzero(counts > 1):
+        dofs = b_matrix.indices[b_matrix.indptr[row] : b_matrix.indptr[row + 1]]
+        coefficients = b_matrix.data[b_matrix.indptr[row] : b_matrix.indptr[row + 1]]
+        touching = is_free_external[dofs]
+        if touching.all():
+            macro.external_relations.append((position[dofs], coefficients.copy()))
+        elif touching.any():
+            ctx.unsupported(
+                "MACR_ELEM_STAT CHAR_MACR_ELEM with a relation binding external and interior DOFs",
+                "CHAR_MACR_ELEM",
+                definition,
+            )
+        else:
+            inside.append(row)
+    rows = np.concatenate([np.flatnonzero(counts <= 1), inside]).astype(int)
+    b_matrix = b_matrix[np.sort(rows)]
     stiffness = _assembled(ctx, macro, "RIGI_MECA", numbering)
     try:
         macro.guyan = sc.constrained_guyan(stiffness, b_matrix, free)
     except sc.CondensationError as exc:
         ctx.error(str(exc), "DEFINITION")
     macro.numbering = numbering
+    macro.stiffness = stiffness
+    macro.inside_relations = np.sort(rows)
     macro.blocked = single
     return _on_external(macro, macro.guyan.stiffness)
 
@@ -223,3 +244,66 @@ def _assembled(ctx, macro, option, numbering):
     except (ElementError, ValueError) as exc:
         ctx.error(str(exc), "DEFINITION")
     return assemble_blocks(blocks, numbering)
+
+
+def _load_case(ctx, occ, macro: StaticMacroElement) -> None:
+    """CAS_CHARGE: the condensed load of the case's loads and the interior
+    response that DEPL_INTERNE NOM_CAS adds (code_aster's sschge)."""
+    name = str(occ["NOM_CAS"])
+    if "RIGI" not in macro.matrices or macro.guyan is None:
+        ctx.error("CAS_CHARGE needs the finite-element stiffness first (RIGI_MECA)", "CAS_CHARGE")
+    if name in macro.load_cases:
+        ctx.error(f"the load case {name} is already defined", "NOM_CAS", occ)
+    loads = list(np.atleast_1d(occ.get("CHARGE") or ()))
+    numbering = macro.numbering
+    known = {id(r) for r in numbering.relations}
+    definition = macro.definition
+    forces = np.zeros(numbering.n_dofs)
+    for load in loads:
+        if load.model is not macro.model:
+            ctx.error("a CHARGE of the case was built on another model", "CHARGE", occ)
+        if any(id(r) not in known for r in load.relations):
+            ctx.unsupported(
+                "CAS_CHARGE with kinematic conditions other than CHAR_MACR_ELEM's", "CHARGE", occ
+            )
+        try:
+            terms = load_terms(load, definition.get("CARA_ELEM"), definition.get("CHAM_MATER"))
+            forces += assemble_terms(terms, numbering)
+        except NotImplementedError as exc:
+            ctx.unsupported(str(exc), "CHARGE", occ)
+        except (ElementError, ValueError, KeyError) as exc:
+            ctx.error(f"CAS_CHARGE {name}: {exc}", "CHARGE", occ)
+    for cell in macro.model.substructures.values():
+        # the superelements inside bring their case of the same name (ss2mm2)
+        if name in cell.macro.load_cases:
+            try:
+                forces += assemble_terms(cell.load_terms(name), numbering)
+            except ValueError as exc:
+                ctx.unsupported(str(exc), "CAS_CHARGE", occ)
+    given = {id(r) for load in loads for r in load.relations}
+    values = np.array([r.rhs if id(r) in given else 0.0 for r in numbering.relations])
+    b_matrix, _ = relation_matrix(numbering.relations, numbering.index, numbering.n_dofs)
+    carried = np.setdiff1d(np.arange(len(values)), macro.inside_relations)
+    if np.any(values[carried] != 0.0):
+        ctx.unsupported("CAS_CHARGE imposing a value on a relation of external DOFs", "CHARGE", occ)
+    b_matrix, values = (
+        sp.csr_matrix(b_matrix)[macro.inside_relations],
+        values[macro.inside_relations],
+    )
+    try:
+        condensed, interior = sc.condensed_load(
+            macro.guyan, macro.stiffness, b_matrix, values, forces
+        )
+    except sc.CondensationError as exc:
+        ctx.error(str(exc), "CAS_CHARGE")
+    full = np.zeros(macro.n_external)
+    full[np.flatnonzero(~macro.blocked_external)] = condensed
+    macro.load_cases[name] = LoadCase(
+        vector=full,
+        interior=interior,
+        follows=occ.get("SUIV", "OUI") == "OUI",
+        forces=forces,
+        relations=b_matrix,
+        values=values,
+    )
+    ctx.log(f"CAS_CHARGE {name}: {len(loads)} loads condensed")

@@ -209,3 +209,40 @@ def test_a_turned_superelement_bends_in_the_global_frame(tmp_path):
     inside = raw["U_IN"]
     value = inside.values[inside.numbering.dof_index("N3", "DY")]
     assert value == pytest.approx(-deflection(0.3), rel=1e-10)
+
+
+LOADED = DECK.replace(
+    "SUPER = MACR_ELEM_STAT(reuse=SUPER, MACR_ELEM=SUPER, MASS_MECA=_F())",
+    'PUSH_IN = AFFE_CHAR_MECA(MODELE=MO_L, FORCE_NODALE=_F(NOEUD="N3", FY=' + f"{FORCE}" + "))\n"
+    "SUPER = MACR_ELEM_STAT(reuse=SUPER, MACR_ELEM=SUPER, MASS_MECA=_F(),\n"
+    '    CAS_CHARGE=_F(NOM_CAS="INSIDE", CHARGE=(CLAMP, PUSH_IN)))',
+).replace(
+    "FIN()",
+    'VE = CALC_VECT_ELEM(OPTION="CHAR_MECA", MODELE=MODEL, SOUS_STRUC=_F(CAS_CHARGE="INSIDE", TOUT="OUI"))\n'
+    "F_IN = ASSE_VECTEUR(VECT_ELEM=VE, NUME_DDL=NU)\n"
+    "KF = FACTORISER(MATR_ASSE=KA)\n"
+    "U_CASE = RESOUDRE(MATR=KF, CHAM_NO=F_IN)\n"
+    'U_CASE_IN = DEPL_INTERNE(DEPL_GLOBAL=U_CASE, SUPER_MAILLE="LEFTSE", NOM_CAS="INSIDE")\n'
+    "FIN()",
+)
+
+
+def test_a_condensed_load_case_inside_the_superelement(tmp_path):
+    """CAS_CHARGE: a force P at N3 (x = a) inside the superelement; the tip
+    moves by P a² (3L - a) / (6EI) and, with the case's interior response,
+    the load point by P a³ / (3EI) and N1 by P x² (3a - x) / (6EI)."""
+    (tmp_path / "loaded.comm").write_text(LOADED)
+    (tmp_path / "loaded.mail").write_text(beam_mesh())
+    result = api.run(tmp_path / "loaded.comm")
+    assert result.status == "DONE", result.message
+    raw = result.concepts.raw
+    a, stiffness = 0.3, YOUNG * INERTIA
+    field = raw["U_CASE"]
+    tip = field.values[field.numbering.dof_index(f"N{N_ELEMENTS}", "DY")]
+    assert tip == pytest.approx(FORCE * a**2 * (3 * LENGTH - a) / (6 * stiffness), rel=1e-10)
+    inside = raw["U_CASE_IN"]
+    at_load = inside.values[inside.numbering.dof_index("N3", "DY")]
+    assert at_load == pytest.approx(FORCE * a**3 / (3 * stiffness), rel=1e-10)
+    x = 0.1
+    before = inside.values[inside.numbering.dof_index("N1", "DY")]
+    assert before == pytest.approx(FORCE * x**2 * (3 * a - x) / (6 * stiffness), rel=1e-10)

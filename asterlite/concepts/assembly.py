@@ -446,6 +446,9 @@ class NodalField(Concept):
 
     numbering: DofNumbering
     values: np.ndarray
+    # ASSE_VECTEUR's second member: the imposed values of its loads'
+    # relations (code_aster's Lagrange terms), by id of the relation
+    relation_values: dict[int, float] | None = None
 
     def getValues(self) -> list:  # noqa: N802 - code_aster's name
         """One value per DOF (real or complex). Refused when code_aster's

@@ -28,6 +28,23 @@ class SensorProjection:
 
 
 @dataclass(eq=False)
+class LoadCase:
+    """A condensed load case (CAS_CHARGE): the load on the external DOFs
+    (the superelement's frame), the interior response with the external
+    DOFs held, and whether the load turns with the super-cell (SUIV)."""
+
+    vector: np.ndarray
+    interior: np.ndarray
+    follows: bool = True
+    # what a turned super-cell recondenses a load that does not follow
+    # (SUIV='NON'): the forces on the superelement's DOFs, the inside
+    # relations' matrix and imposed values
+    forces: Any = None
+    relations: Any = None
+    values: Any = None
+
+
+@dataclass(eq=False)
 class StaticMacroElement(Concept):
     """``MACR_ELEM_STAT``: a superelement condensed on its external nodes.
 
@@ -53,6 +70,12 @@ class StaticMacroElement(Concept):
     blocked: Any = None  # DOFs of ``numbering`` CHAR_MACR_ELEM blocks
     # which external DOFs (node by node, ``components`` within) it blocks
     blocked_external: Any = None
+    stiffness: Any = None  # the model's assembled stiffness the condensation used
+    # relations of CHAR_MACR_ELEM between external DOFs only: (positions in
+    # the external DOFs, coefficients), imposed in the models using it
+    external_relations: list = field(default_factory=list)
+    inside_relations: Any = None  # rows of the numbering's relations kept inside
+    load_cases: dict[str, LoadCase] = field(default_factory=dict)
 
     @property
     def n_external(self) -> int:
@@ -84,6 +107,27 @@ def node_rotation(components: tuple[str, ...], rotation: np.ndarray) -> np.ndarr
     return out
 
 
+def dof_rotation(numbering, rotation: np.ndarray):
+    """The sparse global-to-local map of every DOF of a numbering, node by
+    node (:func:`node_rotation`)."""
+    import scipy.sparse as sp
+
+    by_node: dict[int, list[int]] = {}
+    for index, (node, _) in enumerate(numbering.dofs):
+        by_node.setdefault(node, []).append(index)
+    rows, cols, vals = [], [], []
+    for indices in by_node.values():
+        block = node_rotation(tuple(numbering.dofs[i][1] for i in indices), rotation)
+        for a, i in enumerate(indices):
+            for b, j in enumerate(indices):
+                if block[a, b] != 0.0:
+                    rows.append(i)
+                    cols.append(j)
+                    vals.append(block[a, b])
+    n = numbering.n_dofs
+    return sp.csr_matrix((vals, (rows, cols)), shape=(n, n))
+
+
 @dataclass(eq=False)
 class SuperCell:
     """A superelement placed in a mesh: its macro-element, the mesh nodes
@@ -108,25 +152,61 @@ class SuperCell:
         local = self.to_local()
         return matrix if local is None else local.T @ matrix @ local
 
+    def load_case(self, case: str) -> tuple[np.ndarray, np.ndarray]:
+        """(condensed load in the superelement's frame, interior response)
+        of a case placed in this cell. A load that does not follow the
+        turned cell (SUIV='NON') keeps its global directions: turned into
+        the superelement's frame, then condensed again (code_aster's ssvalv)."""
+        from asterlite.substructure.static_condensation import condensed_load
+
+        macro = self.macro
+        load = macro.load_cases[case]
+        if self.rotation is None or load.follows:
+            return load.vector, load.interior
+        turned = dof_rotation(macro.numbering, self.rotation) @ load.forces
+        condensed, interior = condensed_load(
+            macro.guyan, macro.stiffness, load.relations, load.values, turned
+        )
+        full = np.zeros(macro.n_external)
+        full[np.flatnonzero(~macro.blocked_external)] = condensed
+        return full, interior
+
+    def load_terms(self, case: str) -> list[tuple[int, str, float]]:
+        """The condensed load of a case as nodal terms on this cell's nodes,
+        in the global frame (KeyError: no such case)."""
+        vector, _ = self.load_case(case)
+        local = self.to_local()
+        if local is not None:
+            vector = local.T @ vector
+        width = len(self.macro.components)
+        return [
+            (int(self.nodes[k // width]), self.macro.components[k % width], float(v))
+            for k, v in enumerate(vector)
+            if v != 0.0
+        ]
+
     def blocked_relations(self) -> list:
-        """The external DOFs the superelement's CHAR_MACR_ELEM blocks, as
-        relations (its own frame's component = 0) on this cell's nodes."""
+        """The relations CHAR_MACR_ELEM puts on the external DOFs (blocked
+        ones, relations between external DOFs), in the superelement's frame,
+        as relations of this cell's nodes."""
         from asterlite.concepts.assembly import LinearRelation
 
         macro = self.macro
         if macro.blocked_external is None:
             return []
         width = len(macro.components)
-        block = None
-        if self.rotation is not None:
-            block = node_rotation(tuple(macro.components), self.rotation)
+        local = self.to_local()
+        if local is None:
+            local = np.eye(macro.n_external)
+        rows = [(np.array([k]), np.ones(1)) for k in np.flatnonzero(macro.blocked_external)]
+        rows += macro.external_relations
         relations = []
-        for k in np.flatnonzero(macro.blocked_external):
-            node = int(self.nodes[k // width])
-            row = np.eye(width)[k % width] if block is None else block[k % width]
+        for positions, coefficients in rows:
+            # Σ c u_local = 0 with u_local = T u_global
+            combined = coefficients @ local[positions]
             terms = [
-                (node, macro.components[j], float(row[j]))
-                for j in np.flatnonzero(np.abs(row) > 1.0e-14)
+                (int(self.nodes[j // width]), macro.components[j % width], float(combined[j]))
+                for j in np.flatnonzero(np.abs(combined) > 1.0e-14 * np.abs(combined).max())
             ]
             relations.append(LinearRelation(terms=terms))
         return relations

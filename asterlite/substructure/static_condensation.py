@@ -109,6 +109,39 @@ def constrained_guyan(stiffness, relations, external: np.ndarray) -> GuyanConden
     return GuyanCondensation(interior, external, np.asarray(shapes)[interior], reduced.stiffness)
 
 
+def condensed_load(
+    condensation: GuyanCondensation, stiffness, relations, values, forces
+) -> tuple[np.ndarray, np.ndarray]:
+    """A load case of a Guyan superelement (CAS_CHARGE): the response u_p to
+    the forces f and the relations' imposed values with the external DOFs
+    held, and the condensed load f_c = Uᵀ (f - K u_p) on the external DOFs
+    (U the static shapes [Φ; I]): the superelement then moves as U u_e + u_p."""
+    from asterlite.fem.constraints import eliminate
+
+    k = sp.csr_matrix(stiffness)
+    n = k.shape[0]
+    external = condensation.external
+    held = sp.csr_matrix(
+        (np.ones(external.size), (np.arange(external.size), external)), shape=(external.size, n)
+    )
+    b_matrix = sp.vstack([sp.csr_matrix(relations), held]).tocsr()
+    rhs = np.concatenate([np.asarray(values, dtype=float), np.zeros(external.size)])
+    elimination = eliminate(b_matrix, rhs, n)
+    u_p = elimination.particular(rhs)
+    forces = np.asarray(forces, dtype=float)
+    if elimination.n_free:
+        reduced = sp.csc_matrix(elimination.reduce(k))
+        try:
+            q = spla.splu(reduced).solve(np.asarray(elimination.T.T @ (forces - k @ u_p)))
+        except RuntimeError as exc:
+            raise CondensationError("the held superelement is singular") from exc
+        u_p = u_p + elimination.T @ q
+    shapes = np.zeros((n, external.size))
+    shapes[condensation.interior] = condensation.interior_modes
+    shapes[external, np.arange(external.size)] = 1.0
+    return shapes.T @ (forces - k @ u_p), u_p
+
+
 def pseudo_inverse(matrix: np.ndarray) -> np.ndarray:
     """Moore-Penrose inverse keeping singular values above code_aster's cut."""
     u, s, vt = np.linalg.svd(matrix, full_matrices=False)
