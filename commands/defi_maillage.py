@@ -10,7 +10,8 @@ DEFI_GROUP_NO copies the groups of the macro-element's mesh restricted to
 its external nodes (named the same way from the group's name), or one
 group (GROUP_NO_INIT -> GROUP_NO_FIN). Super-cells are named by
 SUPER_MAILLE, else after their macro-element. RECO_GLOBAL merges the
-coincident nodes of several super-cells; RECO_SUPER_MAILLE is refused.
+coincident nodes of several super-cells, RECO_SUPER_MAILLE those of named
+groups (by position, in order or in reverse order).
 """
 
 from __future__ import annotations
@@ -30,8 +31,6 @@ NAME_LENGTH = 8
 
 
 def run(ctx, kw):
-    if kw.factor("RECO_SUPER_MAILLE"):
-        ctx.unsupported("DEFI_MAILLAGE RECO_SUPER_MAILLE", "RECO_SUPER_MAILLE", kw)
     coords, sources, cells = [], [], {}
     for occ in kw.factor("DEFI_SUPER_MAILLE"):
         macros = list(np.atleast_1d(occ["MACR_ELEM"]))
@@ -195,7 +194,71 @@ def _merged(ctx, kw, coords, cells) -> np.ndarray:
                 for i, j in zip(*np.nonzero(gaps <= limit), strict=True):
                     low, high = sorted((root(int(nodes_1[i])), root(int(nodes_2[j]))))
                     target[high] = low
+    for occ in kw.factor("RECO_SUPER_MAILLE"):
+        _paired_groups(ctx, occ, coords, cells, shortest, root, target)
     return np.array([root(i) for i in range(len(coords))], dtype=int)
+
+
+def _paired_groups(ctx, occ, coords, cells, shortest, root, target) -> None:
+    """RECO_SUPER_MAILLE: the external nodes of a group of each listed
+    super-cell merged pairwise (code_aster's ssdmrm): in order
+    (NOEUD_A_NOEUD), the first list reversed (INVERSE), or by position
+    (GEOMETRIQUE, PRECISION as RECO_GLOBAL's)."""
+    names = [str(n) for n in np.atleast_1d(occ["SUPER_MAILLE"])]
+    groups = [str(g) for g in np.atleast_1d(occ["GROUP_NO"])]
+    if len(names) != len(groups):
+        ctx.error("give one GROUP_NO per SUPER_MAILLE", "GROUP_NO", occ)
+    if len(names) < 2:
+        ctx.error("RECO_SUPER_MAILLE joins at least two super-cells", "SUPER_MAILLE", occ)
+    members = []
+    for name, group in zip(names, groups, strict=True):
+        if name not in cells:
+            ctx.error(f"no super-cell {name}", "SUPER_MAILLE", occ)
+        macro = cells[name].macro
+        if group not in macro.mesh.node_groups:
+            ctx.error(f"no group {group} in the mesh of super-cell {name}", "GROUP_NO", occ)
+        position = {int(n): k for k, n in enumerate(macro.external_nodes)}
+        # the group's external nodes, in the group's order
+        members.append(
+            [
+                cells[name].nodes[position[int(n)]]
+                for n in macro.mesh.node_groups[group]
+                if int(n) in position
+            ]
+        )
+    option = occ.get("OPTION", "GEOMETRIQUE")
+    precision = float(occ.get("PRECISION", 1.0e-3))
+    relative = occ.get("CRITERE", "RELATIF") == "RELATIF"
+
+    def merge(a: int, b: int) -> None:
+        low, high = sorted((root(int(a)), root(int(b))))
+        target[high] = low
+
+    for i in range(len(names)):
+        for j in range(i + 1, len(names)):
+            count = min(len(members[i]), len(members[j]))
+            if len(members[i]) != len(members[j]):
+                ctx.log(f"warning: groups {groups[i]} and {groups[j]} differ in size")
+            first, second = members[i][:count], members[j][:count]
+            if option == "NOEUD_A_NOEUD":
+                pairs = list(zip(first, second, strict=True))
+            elif option == "INVERSE":
+                order = first[::-1] if i == 0 else first
+                pairs = list(zip(order, second, strict=True))
+            else:
+                limit = precision
+                if relative:
+                    limit *= min(shortest[names[i]], shortest[names[j]])
+                pairs = []
+                for a in first:
+                    gaps = np.linalg.norm(coords[second] - coords[a], axis=1)
+                    close = np.flatnonzero(gaps <= limit)
+                    if close.size:
+                        pairs.append((a, second[close[0]]))
+                if len(pairs) != count:
+                    ctx.log(f"warning: not every node of {groups[i]} meets one of {groups[j]}")
+            for a, b in pairs:
+                merge(a, b)
 
 
 def _shortest_distance(points: np.ndarray) -> float:
