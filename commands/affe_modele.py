@@ -30,7 +30,9 @@ def run(ctx, kw):
                 # code_aster skips cells the modelisation has no element for
                 if mesh.cell_types[cell] in accepted:
                     model.cell_modelisation[int(cell)] = modelisation
-    if not model.cell_modelisation and not model.node_modelisation:
+    for occ in kw.factor("AFFE_SOUS_STRUC"):
+        _substructures(ctx, occ, mesh, model)
+    if not model.cell_modelisation and not model.node_modelisation and not model.substructures:
         ctx.error("no element was assigned: check the cell types and MODELISATION", "AFFE", kw)
     if any(m == "AXIS" for m in model.cell_modelisation.values()):
         from asterlite.fem.jacobian_check import negative_radius_nodes
@@ -55,4 +57,21 @@ def run(ctx, kw):
     for m in model.cell_modelisation.values():
         counts[m] = counts.get(m, 0) + 1
     ctx.log("model: " + ", ".join(f"{n} {m} elements" for m, n in sorted(counts.items())))
+    if model.substructures:
+        ctx.log(f"model: superelements {', '.join(model.substructures)}")
     return model
+
+
+def _substructures(ctx, occ, mesh, model) -> None:
+    """AFFE_SOUS_STRUC: the mesh's super-cells (DEFI_MAILLAGE) become elements."""
+    if occ.get("PHENOMENE", "MECANIQUE") != "MECANIQUE":
+        ctx.unsupported(f"AFFE_SOUS_STRUC PHENOMENE={occ['PHENOMENE']!r}", "PHENOMENE", occ)
+    cells = getattr(mesh, "super_cells", {})
+    if occ.get("TOUT") == "OUI":
+        names = list(cells)
+    else:
+        names = [str(n) for n in as_tuple(occ["SUPER_MAILLE"])]
+    for name in names:
+        if name not in cells:
+            ctx.error(f"the mesh has no super-cell {name}", "SUPER_MAILLE", occ)
+        model.substructures[name] = cells[name]

@@ -1,5 +1,7 @@
 """CALC_VECT_ELEM OPTION='CHAR_MECA': nodal load terms of mechanical loads
-(nodal forces, gravity, distributed beam forces)."""
+(nodal forces, gravity, distributed beam forces), and with MODELE /
+SOUS_STRUC the condensed load cases (MACR_ELEM_STAT CAS_CHARGE) of its
+superelements."""
 
 from __future__ import annotations
 
@@ -27,4 +29,27 @@ def run(ctx, kw):
             # beams and discrete elements take their masses and sections from CARA_ELEM
             missing = characteristics is None and "AFFE_CARA_ELEM" in str(exc)
             ctx.error(str(exc), "CARA_ELEM" if missing else "CHARGE", kw)
+    for occ in kw.factor("SOUS_STRUC"):
+        terms.extend(_substructure_terms(ctx, occ, model))
     return ElementaryVectors(model=model, option=option, loads=loads, terms=terms)
+
+
+def _substructure_terms(ctx, occ, model) -> list:
+    """SOUS_STRUC: the condensed load case CAS_CHARGE of the model's super-cells."""
+    case = str(occ["CAS_CHARGE"])
+    if occ.get("TOUT") == "OUI":
+        names = list(model.substructures)
+    else:
+        names = [str(n) for n in as_tuple(occ["SUPER_MAILLE"])]
+    terms = []
+    for name in names:
+        cell = model.substructures.get(name)
+        if cell is None:
+            ctx.error(f"the model has no superelement {name}", "SUPER_MAILLE", occ)
+        try:
+            terms.extend(cell.load_terms(case))
+        except KeyError:
+            ctx.error(f"the superelement of {name} has no load case {case}", "CAS_CHARGE", occ)
+        except ValueError as exc:  # a component the rotation would need
+            ctx.unsupported(str(exc), "CAS_CHARGE", occ)
+    return terms

@@ -58,6 +58,8 @@ def _change_degree(ctx, kw, mesh) -> None:
 
 
 def run(ctx, kw):
+    if getattr(kw["MAILLAGE"], "super_cells", None):
+        ctx.unsupported("CREA_MAILLAGE of a mesh with superelements", "MAILLAGE", kw)
     mesh = kw["MAILLAGE"].copy()
     _change_degree(ctx, kw, mesh)
     for occ in kw.factor("CREA_POI1"):

@@ -1,5 +1,6 @@
 """IMPR_FONCTION: print curves (FONCTION, LIST_PARA + LIST_RESU, or ABSCISSE
-+ ORDONNEE) as TABLEAU text or as a Grace project (XMGRACE). With an image
++ ORDONNEE) as TABLEAU text, as AGRAF data and directives files
+(asterlite.io.agraf) or as a Grace project (XMGRACE). With an image
 PILOTE (PNG, SVG, PDF, EPS, POSTSCRIPT, JPEG) the unit receives the picture,
 drawn with matplotlib instead of the xmgrace program; 'INTERACTIF' (a window)
 keeps the project file."""
@@ -10,6 +11,7 @@ import numpy as np
 
 from asterlite.concepts.function import Formula
 from asterlite.extras import MissingExtraError, require
+from asterlite.io import agraf
 from asterlite.io.tables import function_lines, write_lines, xmgrace_lines
 from asterlite.post.restitution import values_of
 
@@ -57,10 +59,64 @@ def run(ctx, kw):
             write_lines(path, xmgrace_lines(drawn, title, xlabel, ylabel), append=False)
             if kw.get("PILOTE"):
                 ctx.log(f"PILOTE={kw['PILOTE']!r}: no window here, Grace project written")
+    elif fmt == "AGRAF":
+        write_agraf(ctx, kw, curves, path)
     else:
         ctx.unsupported(f"FORMAT={fmt!r}", "FORMAT", kw)
     ctx.log(f"{len(curves)} curve(s) written to {path.name}")
     return None
+
+
+def write_agraf(ctx, kw, curves, path) -> None:
+    """FORMAT='AGRAF': the data to UNITE, the directives to UNITE_DIGR (the
+    message file when it is 6); a complex function gives its real and
+    imaginary parts as two columns, or the PARTIE asked."""
+    graph = agraf.AgrafGraph(
+        title=_text(kw.get("TITRE")),
+        subtitle=_text(kw.get("SOUS_TITRE")),
+        x_scale=kw.get("ECHELLE_X", "LIN"),
+        y_scale=kw.get("ECHELLE_Y", "LIN"),
+        x_label=kw.get("LEGENDE_X") or "",
+        y_label=kw.get("LEGENDE_Y") or "",
+    )
+    for axis in ("X", "Y"):
+        given = kw.get(f"BORNE_{axis}")
+        if given is not None:
+            setattr(graph, f"{axis.lower()}_range", tuple(float(v) for v in given))
+        # code_aster takes a grid step only when it is not zero
+        if kw.get(f"GRILLE_{axis}"):
+            setattr(graph, f"{axis.lower()}_grid", float(kw[f"GRILLE_{axis}"]))
+    for occ, (x, y, legend, _, _) in zip(kw.factor("COURBE"), curves, strict=True):
+        y = np.asarray(y)
+        if np.iscomplexobj(y):
+            part = occ.get("PARTIE")
+            columns = {"REEL": [y.real], "IMAG": [y.imag]}.get(part, [y.real, y.imag])
+        else:
+            columns = [y]
+        graph.curves.append(
+            agraf.AgrafCurve(
+                columns=[np.asarray(x, dtype=float), *columns],
+                legend=legend,
+                style=occ.get("STYLE"),
+                colour=occ.get("COULEUR"),
+                marker=occ.get("MARQUEUR"),
+                marker_frequency=occ.get("FREQ_MARQUEUR"),
+                sort=occ.get("TRI", "N"),
+            )
+        )
+    unit = int(kw.get("UNITE_DIGR", 26))
+    if unit == 6:
+        with open(path, "a", encoding="utf-8") as stream:
+            stream.write(agraf.data(graph))
+        ctx.log(agraf.directives(graph))
+    else:
+        agraf.append_graph(path, ctx.session.output_path(unit), graph)
+
+
+def _text(value) -> str:
+    if value is None:
+        return ""
+    return value if isinstance(value, str) else " ".join(str(v) for v in value)
 
 
 def curve_style(occ) -> dict:

@@ -15,8 +15,9 @@ from asterlite.concepts.assembly import AssembledMatrix, DofNumbering
 from asterlite.concepts.modes import MultElasResult
 from asterlite.fem.assemble import assemble_blocks, assemble_terms
 from asterlite.fem.constraints import ConstraintError
-from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.elements import ElementError
 from asterlite.fem.loads import load_terms
+from asterlite.fem.options import option_blocks
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import transfer
 from asterlite.modal.static_modes import StaticModeError, static_solve
@@ -63,7 +64,10 @@ def run(ctx, kw):
         if given is not None:  # NUME_DDL=CO("NAME"): bind the numbering built here
             ctx.bind(given, numbering)
     try:
-        blocks = element_blocks(model, kw.get("CARA_ELEM"), "K", materials=kw.get("CHAM_MATER"))
+        # (superelements' condensed stiffness included)
+        blocks = option_blocks(
+            model, kw.get("CARA_ELEM"), "RIGI_MECA", materials=kw.get("CHAM_MATER")
+        )
         stiffness = assemble_blocks(blocks, numbering)
     except NotImplementedError as exc:
         ctx.unsupported(str(exc), "MODELE", kw)

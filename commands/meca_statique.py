@@ -78,6 +78,8 @@ def run(ctx, kw):
         if id(load) not in seen:  # numbering_for takes each load's relations once
             seen.add(id(load))
             relation_rhs.extend(np.outer([r.rhs for r in load.relations], scale))
+    # the relations of superelements' blocked DOFs come last, imposing zero
+    relation_rhs.extend(np.zeros((len(numbering.relations) - len(relation_rhs), times.size)))
     relation_rhs = np.array(relation_rhs).reshape(len(numbering.relations), times.size)
     try:
         depl = static_solve(stiffness, numbering, forces, relation_rhs)

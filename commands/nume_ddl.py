@@ -17,6 +17,10 @@ def numbering_for(model, loads, characteristics=None, materials=None) -> DofNumb
             continue
         seen.add(id(load))
         relations.extend(load.relations)
+    for cell in model.substructures.values():
+        # external DOFs a superelement's CHAR_MACR_ELEM blocks (after the
+        # loads' relations: their right-hand sides are zero)
+        relations.extend(cell.blocked_relations())
     return DofNumbering(
         mesh=model.mesh,
         dofs=dofs,

@@ -28,6 +28,8 @@ def run(ctx, kw):
     model = kw.get("MODELE")
     if model is None:
         ctx.error("MASS_INER needs MODELE", "MODELE", kw)
+    if model.substructures:
+        ctx.unsupported("POST_ELEM MASS_INER of a model with superelements", "MODELE", kw)
     characteristics = kw.get("CARA_ELEM")
     materials = kw.get("CHAM_MATER")
     mesh = model.mesh

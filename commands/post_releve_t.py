@@ -1,7 +1,8 @@
 """POST_RELEVE_T: field values at nodes into a table (``OPERATION='EXTRACTION'``).
 
-For each ACTION occurrence, on a result (dyna_trans, mode_meca, mult_elas)
-or a nodal field (CHAM_GD): the components NOM_CMP (or every component with
+For each ACTION occurrence, on a result (dyna_trans, dyna_harmo, mode_meca,
+mult_elas) or a nodal field (CHAM_GD; complex values taken as FORMAT_C
+says: modulus, real or imaginary part): the components NOM_CMP (or every component with
 TOUT_CMP) of NOM_CHAM at the nodes of GROUP_NO / NOEUD, at the chosen steps
 (TOUT_ORDRE by default, NUME_ORDRE, NUME_MODE, INST, FREQ, LIST_*, NOM_CAS).
 One row per step and node, with code_aster's columns::
@@ -23,6 +24,7 @@ import numpy as np
 from asterlite.commands.impr_resu import chosen_steps
 
 from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.table import Table
 from asterlite.io.med_writer import dofs_to_nodal
 from asterlite.io.result_store import (
@@ -114,7 +116,7 @@ def mesh_of(ctx, occ):
 
 def result_values(ctx, occ, nodes, comps):
     result = occ["RESULTAT"]
-    if not is_physical_result(result):
+    if not (is_physical_result(result) or isinstance(result, DynaHarmo)):
         ctx.unsupported(f"POST_RELEVE_T on a {result.aster_type}", "RESULTAT", occ)
     name = occ["NOM_CHAM"]
     if name not in nodal_field_names(result):
@@ -129,6 +131,7 @@ def result_values(ctx, occ, nodes, comps):
     steps = result_steps(result)
     indices = chosen_steps(ctx, occ, steps)
     nodes, comps, values = nodal_series(result, name, nodes, comps)
+    values = as_real(occ, values)
     labels = {"INTITULE": occ["INTITULE"], "RESU": result.name or "", "NOM_CHAM": name}
     access = [{"NUME_ORDRE": int(steps.orders[i]), **steps.parameters(i)} for i in indices]
     return labels, access, (nodes, comps, values[indices])
@@ -139,7 +142,20 @@ def field_values(ctx, occ, nodes, comps):
     if not isinstance(field, NodalField):
         ctx.unsupported(f"CHAM_GD of type {field.aster_type}", "CHAM_GD", occ)
     labels = {"INTITULE": occ["INTITULE"], "CHAM_GD": field.name or ""}
-    return labels, [{}], dofs_to_nodal(field.numbering, field.values[None, :], nodes, comps)
+    nodes, comps, values = dofs_to_nodal(field.numbering, field.values[None, :], nodes, comps)
+    return labels, [{}], (nodes, comps, as_real(occ, values))
+
+
+def as_real(occ, values: np.ndarray) -> np.ndarray:
+    """A complex field's values as FORMAT_C asks: MODULE, REEL or IMAG (rvrecu)."""
+    if not np.iscomplexobj(values):
+        return values
+    form = occ.get("FORMAT_C", "MODULE")
+    if form == "REEL":
+        return values.real
+    if form == "IMAG":
+        return values.imag
+    return np.abs(values)
 
 
 def check_components(ctx, occ, comps, values) -> None:

@@ -22,7 +22,9 @@ ACCE give DEPL = VITE / iω or -ACCE / ω²: code_aster's mpinvc multiplies by
 Two more departures from op0193, both where its result is not the least-
 squares solution it means: with fewer sensors than modes and no weight the
 minimum-norm coordinates Hᵀ(HHᵀ)⁺y are taken whole (mpinvr keeps only the
-last sensor's term); complex measured modes (mode_meca_c) are refused.
+last sensor's term). Complex measured modes (mode_meca_c, e.g. DEPL_INTERNE
+of damped modes) give complex generalized coordinates, solved as a
+harmonic measurement is (code_aster's mpinvc).
 """
 
 from __future__ import annotations
@@ -31,11 +33,11 @@ import numpy as np
 
 from asterlite.concepts.harmonic import DynaHarmo, HarmGene
 from asterlite.concepts.modes import (
-    ComplexModeResult,
     GeneralizedModes,
     GeneralizedNumbering,
     ModeResult,
 )
+from asterlite.concepts.static_substructure import SensorProjection
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.modal import measured_projection as mp
 from asterlite.post import field_projection as fp
@@ -55,8 +57,6 @@ def run(ctx, kw):
     mesu = kw.factor("MODELE_MESURE")[0]
     basis, measured = calc["BASE"], mesu["MESURE"]
     names = _field_name(ctx, mesu)
-    if isinstance(measured, ComplexModeResult):
-        ctx.unsupported("PROJ_MESU_MODAL of complex modes (mode_meca_c)", "MESURE", mesu)
     if not hasattr(basis, "shapes"):
         ctx.unsupported(f"PROJ_MESU_MODAL on a {basis.aster_type} basis", "BASE", calc)
     calc_mesh, mesu_mesh = calc["MODELE"].mesh, mesu["MODELE"].mesh
@@ -66,7 +66,7 @@ def run(ctx, kw):
         ctx.error("the measured result does not lie on MODELE_MESURE's mesh", "MESURE", mesu)
 
     abscissas, values = _measured_states(ctx, mesu, measured, names)
-    sensors, data = _sensors(ctx, mesu, measured, values, names[0])
+    sensors, data, components = _sensors(ctx, mesu, measured, values, names[0])
     observation = _observation(ctx, kw, calc, mesu, basis, sensors, names[0])
     resolution = _resolution(ctx, kw, basis.n_modes, abscissas)
     try:
@@ -79,10 +79,20 @@ def run(ctx, kw):
         f"(REGUL={resolution.regul})"
     )
     if isinstance(measured, DynaTrans):
-        return _transient(basis, abscissas, eta, names[0])
-    if isinstance(measured, DynaHarmo):
-        return _harmonic(basis, abscissas, eta, names[0])
-    return _modes(ctx, kw, basis, measured, eta)
+        result = _transient(basis, abscissas, eta, names[0])
+    elif isinstance(measured, DynaHarmo):
+        result = _harmonic(basis, abscissas, eta, names[0])
+    else:
+        result = _modes(ctx, kw, basis, measured, eta)
+    if names[0] not in _GAUGES:
+        # MACR_ELEM_STAT PROJ_MESU builds its superelement from these
+        result.measurement = SensorProjection(
+            measurement_model=mesu["MODELE"],
+            basis=basis,
+            sensors=[(n, d, c) for (n, d), c in zip(sensors, components, strict=True)],
+            observation=observation,
+        )
+    return result
 
 
 def _field_name(ctx, mesu) -> list[str]:
@@ -123,7 +133,7 @@ def _sensors(ctx, mesu, measured, values, name):
         columns = [i for i, (_, c) in enumerate(dofs) if c in _GAUGES[name][1]]
         if not columns:
             ctx.error(f"the measurement has no {name} component", "MESURE", mesu)
-        return [dofs[i] for i in columns], values[:, columns]
+        return [dofs[i] for i in columns], values[:, columns], [dofs[i][1] for i in columns]
     modes = isinstance(measured, ModeResult)
     kinds = _TRANSLATIONS if modes else _TRANSLATIONS + ("D1", "D2", "D3")
     columns = [i for i, (_, c) in enumerate(dofs) if c in kinds]
@@ -153,7 +163,7 @@ def _sensors(ctx, mesu, measured, values, name):
                 ctx.error(f"the sensor {component} at node {name} has no direction", "MESURE", mesu)
             direction = direction / norm
         sensors.append((node, direction))
-    return sensors, values[:, columns]
+    return sensors, values[:, columns], [dofs[i][1] for i in columns]
 
 
 def _observation(ctx, kw, calc, mesu, basis, sensors, name) -> np.ndarray:

@@ -1,9 +1,12 @@
 """RESOUDRE: solve ``A u = f`` with a matrix factorised by FACTORISER.
 
 The kinematic relations of the matrix's numbering hold in the solution (their
-reactions balance the load). RESI_RELA > 0 checks the relative residual of the
-solve and stops when it is larger, as code_aster does with its direct
-solvers; POSTTRAITEMENTS sets the iterative refinement steps.
+reactions balance the load), with the values the second member imposes: a
+field of ASSE_VECTEUR carries its loads' (code_aster's Lagrange terms), any
+other imposes zero; CHAM_CINE gives those of AFFE_CHAR_CINE. RESI_RELA > 0
+checks the relative residual of the solve and stops when it is larger, as
+code_aster does with its direct solvers; POSTTRAITEMENTS sets the iterative
+refinement steps.
 """
 
 from __future__ import annotations
@@ -36,12 +39,15 @@ def run(ctx, kw):
         ctx.error(f"a {kinds[0]} matrix and a {kinds[1]} CHAM_NO", "CHAM_NO", kw)
     loads = transfer(field.values, field.numbering, numbering)
     kinematic = {id(r) for load in numbering.kinematic_loads for r in load.relations}
-    dualised = np.array([r.rhs for r in numbering.relations if id(r) not in kinematic], dtype=float)
-    if np.any(dualised != 0.0):
-        # code_aster takes these imposed values from the second member's
-        # Lagrange terms, which asterlite's assembled vectors do not carry
-        ctx.unsupported("RESOUDRE with non-zero imposed displacements", "MATR", kw)
     imposed = kinematic_values(ctx, kw, numbering, kinematic)
+    # dualised relations: the second member's Lagrange terms, which an
+    # assembled vector keeps (ASSE_VECTEUR: its loads' values), zero otherwise
+    carried = field.relation_values or {}
+    for row, relation in enumerate(numbering.relations):
+        if id(relation) not in kinematic and id(relation) in carried:
+            if relation.rhs_in_time is not None or relation.rhs_in_frequency is not None:
+                ctx.unsupported("RESOUDRE of a load imposing values in time", "CHAM_NO", kw)
+            imposed[row] = carried[id(relation)]
     steps = REFINEMENT_STEPS[kw.get("POSTTRAITEMENTS", "AUTO")]
     values, residual = solve(factors, matrix.matrix, numbering, loads, imposed, steps)
     tolerance = float(kw.get("RESI_RELA", 1.0e-6))

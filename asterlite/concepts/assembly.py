@@ -38,6 +38,8 @@ class Model(Concept):
     mesh: Mesh
     cell_modelisation: dict[int, str] = field(default_factory=dict)  # cell index -> "DIS_T", ...
     node_modelisation: dict[int, str] = field(default_factory=dict)  # node-supported elements
+    # AFFE_SOUS_STRUC: super-cell name -> SuperCell (asterlite.concepts.static_substructure)
+    substructures: dict[str, Any] = field(default_factory=dict)
 
     def node_components(self) -> dict[int, tuple[str, ...]]:
         """Components carried by each node of the model (union over its elements),
@@ -50,6 +52,9 @@ class Model(Concept):
                 found.setdefault(node, set()).update(comps)
         for node, modelisation in self.node_modelisation.items():
             found.setdefault(node, set()).update(MODELISATION_COMPONENTS.get(modelisation, ()))
+        for cell in self.substructures.values():
+            for node in cell.nodes:
+                found.setdefault(int(node), set()).update(cell.macro.components)
         return {n: sort_components(found[n]) for n in sorted(found)}
 
     def getMesh(self) -> Mesh:  # noqa: N802 - code_aster's name
@@ -449,6 +454,9 @@ class NodalField(Concept):
 
     numbering: DofNumbering
     values: np.ndarray
+    # ASSE_VECTEUR's second member: the imposed values of its loads'
+    # relations (code_aster's Lagrange terms), by id of the relation
+    relation_values: dict[int, float] | None = None
 
     def getValues(self) -> list:  # noqa: N802 - code_aster's name
         """One value per DOF (real or complex). Refused when code_aster's

@@ -66,6 +66,7 @@ FAMILIES = {
     "cham_no_sdaster": ("cham_gd_sdaster",),
     "cham_elem": ("cham_gd_sdaster",),
     "carte_sdaster": ("cham_gd_sdaster",),
+    "super_mesh": ("maillage_sdaster",),
 }
 
 

@@ -62,6 +62,31 @@ _WARPING_GYRO_BEAMS = ("POU_D_TG", "POU_D_TGM")
 # solids have code_aster's MECA_GYRO too (te0159): not computed here
 _GYRO_SOLIDS = ("3D", "3D_SI")
 
+#: options a static superelement has a condensed matrix of (MACR_ELEM_STAT)
+SUPERELEMENT_MATRICES = {"RIGI_MECA": "RIGI", "MASS_MECA": "MASS", "AMOR_MECA": "AMOR"}
+
+
+def superelement_blocks(model, kind: str) -> list[ElementBlock]:
+    """One block per super-cell of the model: its condensed matrix on the
+    mesh nodes its external nodes became."""
+    blocks = []
+    for name, cell in model.substructures.items():
+        macro = cell.macro
+        if macro.matrices.get(kind) is None:
+            what = {"RIGI": "RIGI_MECA", "MASS": "MASS_MECA", "AMOR": "AMOR_MECA"}[kind]
+            raise ElementError(
+                f"the superelement {macro.name} of super-cell {name} has no {what} matrix"
+                + (" (its MODE_MESURE has no AMOR_GENE)" if kind == "AMOR" else "")
+            )
+        blocks.append(
+            ElementBlock(
+                nodes=np.asarray(cell.nodes, dtype=int).reshape(1, -1),
+                components=tuple(macro.components),
+                matrices=cell.matrix(kind)[None, :, :],
+            )
+        )
+    return blocks
+
 
 def _model_cells(model, cells) -> dict[str, np.ndarray]:
     wanted = None if cells is None else {int(c) for c in np.asarray(cells).ravel()}
@@ -246,6 +271,15 @@ def hysteretic_blocks(model, characteristics, materials=None, cells=None) -> lis
 
 def option_blocks(model, characteristics, option, materials=None, cells=None) -> list[ElementBlock]:
     """Element matrices of any supported option (see the module docstring)."""
+    if model.substructures and cells is not None:
+        raise NotImplementedError("element matrices of some cells of a model with superelements")
+    if model.substructures:
+        # a model with superelements (AFFE_SOUS_STRUC): their condensed matrices too
+        if option not in SUPERELEMENT_MATRICES:
+            raise NotImplementedError(f"option {option} on a model with superelements")
+        matrix, lumped = STANDARD_OPTIONS[option]
+        elements = element_blocks(model, characteristics, matrix, materials=materials)
+        return elements + superelement_blocks(model, SUPERELEMENT_MATRICES[option])
     if option in STANDARD_OPTIONS:
         matrix, lumped = STANDARD_OPTIONS[option]
         return element_blocks(

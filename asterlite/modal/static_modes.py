@@ -109,7 +109,9 @@ def static_solve(stiffness, numbering: DofNumbering, loads: np.ndarray, relation
     if relation_rhs is None:
         relation_rhs = np.repeat(np.asarray(rhs, dtype=float)[:, None], loads.shape[1], axis=1)
     elimination = eliminate(b_matrix, np.zeros_like(rhs), numbering.n_dofs)
-    u0 = elimination.particular(np.asarray(relation_rhs, dtype=float).reshape(len(rhs), -1))
+    # (a model held by no relation: n_relations = 0, one column per load still)
+    relation_rhs = np.asarray(relation_rhs, dtype=float).reshape(len(rhs), loads.shape[1])
+    u0 = elimination.particular(relation_rhs)
     k_red = elimination.reduce(stiffness)
     if k_red.shape[0] == 0:
         return u0

@@ -62,6 +62,8 @@ NOT_MESH_NAMES = {
         "GROUP_MA",
         "LIST_COUCHE_ACCE",
     ),
+    # the super-cells, nodes and groups it names are new
+    "DEFI_MAILLAGE": ("SUPER_MAILLE", "NOEUD_FIN", "GROUP_NO_FIN"),
 }
 
 
