@@ -25,11 +25,14 @@ def run(ctx, kw):
         ctx.log("warning: the two meshes have different dimensions")
     # MAILLAGE_2's nodes: the node of the same name in MAILLAGE_1, or a new one
     renumber = np.empty(second.n_nodes, dtype=int)
-    names = list(first.node_names)
+    # the names code_aster sees: N<i> of a mesh that keeps none
+    names = [first.node_label(i) for i in range(first.n_nodes)]
+    by_name = {name: i for i, name in enumerate(names)}
     coords = [first.coords]
     fresh = []
-    for k, name in enumerate(second.node_names):
-        found = first.node_index.get(name)
+    for k in range(second.n_nodes):
+        name = second.node_label(k)
+        found = by_name.get(name)
         if found is None:
             found = len(names)
             names.append(name)

@@ -136,7 +136,7 @@ def _node_names(ctx, kw, sources, cells) -> list[str]:
         if occ.get("TOUT") == "OUI":
             prefix = str(occ.get("PREFIXE") or "")
             for i, (cell, macro, node) in enumerate(sources):
-                names[i] = _indexed(ctx, occ, prefix, cell, macro.mesh.node_names[node])
+                names[i] = _indexed(ctx, occ, prefix, cell, macro.mesh.node_label(node))
             continue
         cell = str(occ["SUPER_MAILLE"])
         if cell not in cells:

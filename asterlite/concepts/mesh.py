@@ -126,6 +126,11 @@ class Mesh(Concept):
         the position wins, elsewhere it is the fallback of a missing name."""
         return _lookup(name, "N", self.node_index, self.n_nodes, self.names_kept)
 
+    def node_label(self, index: int) -> str:
+        """The name code_aster gives node ``index``: its own where the mesh
+        keeps names, else ``N<i>`` of its 1-based position (int_to_char8)."""
+        return self.node_names[index] if self.names_kept else f"N{index + 1}"
+
     def find_cell(self, name: str) -> int | None:
         """Index of a cell by name, with code_aster 17's ``M<i>`` as for nodes."""
         return _lookup(name, "M", self.cell_index, self.n_cells, self.names_kept)
@@ -210,6 +215,7 @@ class Mesh(Concept):
         label per node, the names it had replaced)."""
         self.node_names = self._labels(labels, self.n_nodes, "node")
         self.node_index = {n: i for i, n in enumerate(self.node_names)}
+        self.names_kept = True  # code_aster looks labelled nodes up by name
 
     def addCellLabels(self, labels) -> None:  # noqa: N802
         """Rename every cell, in order (code_aster's Mesh.addCellLabels)."""

@@ -272,9 +272,10 @@ def _stiffness_only(stiffness, damping, mass) -> bool:
     return not (is_symmetric(stiffness.matrix) and is_symmetric(mass.matrix))
 
 
-def is_symmetric(matrix, rtol: float = 1e-12) -> bool:
+def is_symmetric(matrix, rtol: float = 1e-8) -> bool:
     """Whether a (sparse or dense) matrix equals its transpose to ``rtol`` of
-    its largest term."""
+    its largest term: products of symmetric matrices (condensed, projected)
+    keep round-off far below it, skew terms (gyroscopic) far above."""
     if sp.issparse(matrix):
         scale = abs(matrix).max() if matrix.nnz else 0.0
         gap = abs(matrix - matrix.T).max() if matrix.nnz else 0.0
