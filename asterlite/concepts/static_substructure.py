@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from asterlite.concepts.assembly import LinearRelation
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
 
@@ -189,8 +190,6 @@ class SuperCell:
         """The relations CHAR_MACR_ELEM puts on the external DOFs (blocked
         ones, relations between external DOFs), in the superelement's frame,
         as relations of this cell's nodes."""
-        from asterlite.concepts.assembly import LinearRelation
-
         macro = self.macro
         if macro.blocked_external is None:
             return []

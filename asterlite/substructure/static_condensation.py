@@ -25,6 +25,8 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from asterlite.fem.constraints import eliminate
+
 #: code_aster's cut of the pseudo-inverses (rslsvd with 100 machine precisions)
 PSEUDO_INVERSE_EPS = 100.0 * np.finfo(float).eps
 
@@ -89,8 +91,6 @@ def constrained_guyan(stiffness, relations, external: np.ndarray) -> GuyanConden
     the relations' null space, the condensation done on q, the static shapes
     brought back to every DOF. ``external`` DOFs must stay free of the
     relations (a multiplier outside would leave the superelement)."""
-    from asterlite.fem.constraints import eliminate
-
     k = sp.csr_matrix(stiffness)
     n = k.shape[0]
     external = np.asarray(external, dtype=int)
@@ -116,8 +116,6 @@ def condensed_load(
     the forces f and the relations' imposed values with the external DOFs
     held, and the condensed load f_c = Uᵀ (f - K u_p) on the external DOFs
     (U the static shapes [Φ; I]): the superelement then moves as U u_e + u_p."""
-    from asterlite.fem.constraints import eliminate
-
     k = sp.csr_matrix(stiffness)
     n = k.shape[0]
     external = condensation.external
