@@ -235,7 +235,7 @@ def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, na
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {plates.size} DKT cells, {values.shape[0]} orders")
 
 
-def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
+def _solid_fields(ctx, kw, result, model, materials, solids, names, characteristics) -> None:
     """Stresses, strains and energies of 3D and plane solid cells
     (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
 
@@ -259,7 +259,15 @@ def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
     element_names = sorted({n.replace("_NOEU", "_ELNO") for n in names})
     try:
         fields = solid_element_fields(
-            model, materials, result.numbering, solids, values, element_names, velocities, omega2
+            model,
+            materials,
+            result.numbering,
+            solids,
+            values,
+            element_names,
+            velocities,
+            omega2,
+            characteristics,
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
@@ -556,7 +564,7 @@ def run(ctx, kw):
             _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names)
             return result
         if solids.size and not beams.size and not bars.size:
-            _solid_fields(ctx, kw, result, model, materials, solids, names)
+            _solid_fields(ctx, kw, result, model, materials, solids, names, characteristics)
             return _cham_utils(ctx, kw, result)
         if bars.size and not beams.size:
             _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
