@@ -689,8 +689,18 @@ def run(ctx, kw):
         _evol_char(ctx, model, load, kw)
     if kw.get("VECT_ASSE") is not None:
         _vect_asse(ctx, load, kw)
+    single_lagrange(kw, load)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load
+
+
+def single_lagrange(kw, load) -> None:
+    """DOUBLE_LAGRANGE='NON': code_aster dualises the load's relations with one
+    multiplier each instead of two; the solution is the same, its numbering
+    and the multipliers' values are not (asterlite.fem.lagrange_layout)."""
+    if kw.get("DOUBLE_LAGRANGE", "OUI") == "NON":
+        for relation in load.relations:
+            relation.double_lagrange = False
 
 
 def _vect_asse(ctx, load, kw) -> None:

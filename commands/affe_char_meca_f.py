@@ -220,5 +220,6 @@ def run(ctx, kw):
         _force_poutre(ctx, model, load, occ)
     for occ in kw.factor("ONDE_PLANE"):
         _onde_plane(ctx, model, load, occ)
+    affe_char_meca.single_lagrange(kw, load)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load

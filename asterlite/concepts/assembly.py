@@ -130,6 +130,9 @@ class LinearRelation:
     # frequency of a harmonic response (``rhs`` is then 0: no other
     # computation evaluates it)
     rhs_in_frequency: ValueInFrequency | None = None
+    # code_aster dualises the relation with two multipliers, or one when its
+    # load says DOUBLE_LAGRANGE='NON' (asterlite.fem.lagrange_layout)
+    double_lagrange: bool = True
 
 
 @dataclass(frozen=True, eq=False)
