@@ -27,6 +27,7 @@ from asterlite.concepts.assembly import ElementField
 from asterlite.fem.assemble import assemble_terms
 from asterlite.fem.beam_elements import section_forces
 from asterlite.fem.element_fields import (
+    BAR_FIELDS,
     BAR_OPTIONS,
     ELGA_OPTIONS,
     ELNO_OPTIONS,
@@ -116,13 +117,13 @@ def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> N
 
 
 def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names) -> None:
-    """EFGE_ELNO / SIEF_ELNO (N) of a model of bars (code_aster's te0185:
+    """EFGE_ELNO / SIEF_ELNO / SIEF_ELGA (N) of a model of bars (code_aster's te0185:
     from the displacements, real or complex)."""
 
-    other = [n for n in names if n not in BAR_OPTIONS]
+    other = [n for n in names if n not in BAR_FIELDS]
     if other:
         keyword = "CONTRAINTE" if other[0] in as_tuple(kw.get("CONTRAINTE")) else None
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of bars (EFGE_ELNO, SIEF_ELNO)", keyword, kw)
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of bars ({', '.join(BAR_FIELDS)})", keyword, kw)
     if kw.factor("CHAM_UTIL"):
         ctx.unsupported("CHAM_UTIL on a model of bars", "CHAM_UTIL", kw)
     values = _nodal_values(ctx, result, kw)
