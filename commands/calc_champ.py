@@ -191,10 +191,12 @@ def _store_fields(ctx, kw, result, model, fields, names) -> None:
 
 def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names) -> None:
     """EFGE_ELNO (and EFGE_NOEU) of a model of pipes (code_aster's te0185:
-    from the displacements' stresses, real or complex; no inertia)."""
+    from the displacements' stresses, real or complex; no inertia) and
+    SIEF_ELGA (those stresses at the sub-points, code_aster's tusief)."""
 
+    known = ("EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA")
     _refuse_other_options(
-        ctx, kw, names, ("EFGE_ELNO", "EFGE_NOEU"), "CALC_CHAMP {} of pipe elements (EFGE_ELNO)"
+        ctx, kw, names, known, f"CALC_CHAMP {{}} of pipe elements ({', '.join(known)})"
     )
     if kw.factor("CHAM_UTIL"):
         ctx.unsupported("CHAM_UTIL on a model of pipes", "CHAM_UTIL", kw)
@@ -202,8 +204,9 @@ def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, name
         ctx.unsupported("CALC_CHAMP EXCIT on pipe elements", "EXCIT", kw)
     values = _nodal_values(ctx, result, kw)
     try:
+        computed = sorted({n.replace("EFGE_NOEU", "EFGE_ELNO") for n in names})
         fields = pipe_element_fields(
-            model, characteristics, materials, result.numbering, pipes, values, ["EFGE_ELNO"]
+            model, characteristics, materials, result.numbering, pipes, values, computed
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
