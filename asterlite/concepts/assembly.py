@@ -462,6 +462,19 @@ class NodalField(Concept):
 
 
 @dataclass(eq=False)
+class NodalFunctionField(Concept):
+    """A field of functions on nodes (``CREA_CHAMP TYPE_CHAM='NOEU_NEUT_F'``):
+    one function (DEFI_FONCTION, FORMULE, DEFI_CONSTANTE) per (node,
+    component) of ``numbering``, evaluated by ``CREA_CHAMP OPERATION='EVAL'``."""
+
+    aster_types = ("cham_no_sdaster",)
+    deck_methods = frozenset({"getName"})
+
+    numbering: DofNumbering
+    functions: list
+
+
+@dataclass(eq=False)
 class Material(Concept):
     """``DEFI_MATERIAU`` result: one material's parameters by behaviour.
 
