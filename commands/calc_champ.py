@@ -635,12 +635,11 @@ def _force_fields(ctx, kw, result) -> None:
     model, characteristics, materials = _context(ctx, kw, result)
     cells = None
     if kw.get("GROUP_MA"):
-        if "REAC_NODA" in options:
-            ctx.unsupported(
-                "CALC_CHAMP REAC_NODA on a part of the model (GROUP_MA)", "GROUP_MA", kw
-            )
         # FORC_NODA of those cells' elements only, as code_aster's restricted ligrel
         cells = select_cells(ctx, kw, model.mesh)
+        left_out = set(model.cell_modelisation) - set(int(c) for c in cells)
+        if "REAC_NODA" in options and left_out:
+            _check_reac_noda_on_a_part(ctx, kw, result, kinds)
     kw.mark_used("TOUT")
     load_values = None
     if "REAC_NODA" in options:
@@ -671,6 +670,32 @@ def _force_fields(ctx, kw, result) -> None:
             values = kept
         result.fields[option] = values
         ctx.log(f"CALC_CHAMP {option}: {values.shape[0]} orders, {values.shape[1]} DOFs")
+
+
+def _check_reac_noda_on_a_part(ctx, kw, result, kinds) -> None:
+    """REAC_NODA on the cells of GROUP_MA only (code_aster's ccfnrn on a
+    restricted ligrel): their internal forces, minus the loads, plus M a with
+    the whole mass. The loads' nodal forces and kinematic relations count
+    whole; loads acting on cells (pressures, distributed forces, gravity)
+    would count on those cells only, which asterlite does not restrict:
+    refused by name. code_aster refuses a dyna_harmo there (PREPOST3_96)."""
+    if "dyna_harmo" in kinds:
+        ctx.error(
+            "REAC_NODA of a dyna_harmo is computed on the whole model (no GROUP_MA)",
+            "GROUP_MA",
+            kw,
+        )
+    loads = [occ["CHARGE"] for occ in kw.factor("EXCIT")] or [
+        load for load, _ in getattr(result, "loads", ())
+    ]
+    on_cells = sorted({key for load in loads for key in getattr(load, "extra", {})})
+    if on_cells:
+        ctx.unsupported(
+            "CALC_CHAMP REAC_NODA on a part of the model (GROUP_MA) with loads acting on "
+            f"cells ({', '.join(on_cells)})",
+            "GROUP_MA",
+            kw,
+        )
 
 
 def _transient_load_values(ctx, kw, result, characteristics, materials):
