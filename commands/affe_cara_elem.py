@@ -331,6 +331,20 @@ def _pipe_frames(ctx, model, result, generators, kw) -> None:
         ctx.error(str(exc), "ORIENTATION" if generators else "POUTRE", kw)
 
 
+def _massif(ctx, model, result, occ) -> None:
+    """MASSIF ANGL_REP: the material frame (L, T, N) of solid cells, the global
+    axes turned by nautical angles in degrees (missing ones 0), read by the
+    orthotropic materials (ELAS_ORTH) of 3D and plane elements."""
+    for keyword in ("ANGL_EULER", "ORIG_AXE", "CHAM_ORIE"):
+        if occ.get(keyword) is not None:
+            ctx.unsupported(f"MASSIF {keyword} (material frame)", keyword, occ)
+    angles = np.zeros(3)
+    given = np.atleast_1d(np.asarray(occ["ANGL_REP"], dtype=float))
+    angles[: given.size] = np.radians(given)
+    for cell in select_cells(ctx, occ, model.mesh, all_cells=list(model.cell_modelisation)):
+        result.material_angles[int(cell)] = angles
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     result = ElementCharacteristics(model=model)
@@ -351,6 +365,8 @@ def run(ctx, kw):
         _barre(ctx, model, result, occ)
     for occ in kw.factor("COQUE"):
         _coque(ctx, model, result, occ)
+    for occ in kw.factor("MASSIF"):
+        _massif(ctx, model, result, occ)
     if kw.get("GEOM_FIBRE") is not None:
         result.geom_fibre = kw["GEOM_FIBRE"]
     for occ in kw.factor("MULTIFIBRE"):

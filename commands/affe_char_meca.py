@@ -559,6 +559,26 @@ def _check_outward(ctx, model, faces, occ) -> None:
         )
 
 
+def pres_rep(ctx, model, load, occ, pressure: float, shear, kw) -> None:
+    """One PRES_REP occurrence of uniform ``pressure`` (and ``shear``,
+    CISA_2D, on edges): faces of 3D models, edges of plane ones."""
+    edges = dict.fromkeys(PLANE_MODELISATIONS, EDGE_CELLS)
+    accepted = {"3D": FACE_CELLS, **edges}
+    cells = _cells_carrying(ctx, model, occ, accepted, "PRES_REP")
+    on_edges = np.array([model.cell_modelisation[c] != "3D" for c in cells], dtype=bool)
+    if shear is not None and not on_edges.all():
+        ctx.error("CISA_2D applies to edges of plane models only", "CISA_2D", occ)
+    if (~on_edges).any():
+        faces = cells[~on_edges]
+        if kw.get("VERI_NORM", "OUI") == "OUI":
+            _check_outward(ctx, model, faces, occ)
+        load.extra.setdefault("PRES_REP", []).append({"CELLS": faces, "PRES": pressure})
+    if on_edges.any():
+        load.extra.setdefault("PRES_REP_2D", []).append(
+            {"CELLS": cells[on_edges], "PRES": pressure, "CISA_2D": float(shear or 0.0)}
+        )
+
+
 def _solid_loads(ctx, model, load, kw) -> None:
     """FORCE_FACE, PRES_REP (faces of 3D models, edges of plane ones),
     FORCE_CONTOUR (edges of plane models) and FORCE_INTERNE (volumes, plane
@@ -572,22 +592,8 @@ def _solid_loads(ctx, model, load, kw) -> None:
         cells = _cells_of_3d_model(ctx, model, occ, FACE_CELLS, "FORCE_FACE")
         load.extra.setdefault("FORCE_FACE", []).append({"CELLS": cells, "FORCE": force})
     for occ in kw.factor("PRES_REP"):
-        pressure = float(occ.get("PRES") or 0.0)
         shear = occ.get("CISA_2D")
-        accepted = {"3D": FACE_CELLS, **edges}
-        cells = _cells_carrying(ctx, model, occ, accepted, "PRES_REP")
-        on_edges = np.array([model.cell_modelisation[c] != "3D" for c in cells], dtype=bool)
-        if shear is not None and not on_edges.all():
-            ctx.error("CISA_2D applies to edges of plane models only", "CISA_2D", occ)
-        if (~on_edges).any():
-            faces = cells[~on_edges]
-            if kw.get("VERI_NORM", "OUI") == "OUI":
-                _check_outward(ctx, model, faces, occ)
-            load.extra.setdefault("PRES_REP", []).append({"CELLS": faces, "PRES": pressure})
-        if on_edges.any():
-            load.extra.setdefault("PRES_REP_2D", []).append(
-                {"CELLS": cells[on_edges], "PRES": pressure, "CISA_2D": float(shear or 0.0)}
-            )
+        pres_rep(ctx, model, load, occ, float(occ.get("PRES") or 0.0), shear, kw)
     for occ in kw.factor("FORCE_CONTOUR"):
         if not plane:
             ctx.error("FORCE_CONTOUR applies to edges of plane models", "GROUP_MA", occ)
@@ -689,8 +695,18 @@ def run(ctx, kw):
         _evol_char(ctx, model, load, kw)
     if kw.get("VECT_ASSE") is not None:
         _vect_asse(ctx, load, kw)
+    single_lagrange(kw, load)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load
+
+
+def single_lagrange(kw, load) -> None:
+    """DOUBLE_LAGRANGE='NON': code_aster dualises the load's relations with one
+    multiplier each instead of two; the solution is the same, its numbering
+    and the multipliers' values are not (asterlite.fem.lagrange_layout)."""
+    if kw.get("DOUBLE_LAGRANGE", "OUI") == "NON":
+        for relation in load.relations:
+            relation.double_lagrange = False
 
 
 def _vect_asse(ctx, load, kw) -> None:

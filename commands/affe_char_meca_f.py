@@ -1,5 +1,8 @@
 """AFFE_CHAR_MECA_F: DDL_IMPO, FORCE_NODALE and FORCE_POUTRE whose values are
-functions (DEFI_FONCTION, FORMULE, DEFI_CONSTANTE) of the geometry, and
+functions (DEFI_FONCTION, FORMULE, DEFI_CONSTANTE) of the geometry, PRES_REP
+whose PRES / CISA_2D are constant functions (DEFI_CONSTANTE: a uniform
+pressure, as AFFE_CHAR_MECA's; functions of X, Y, Z or INST are refused by
+name), and
 ONDE_PLANE (a seismic plane wave on paraxial boundaries, kept as a wave: its
 nodal forces are a history, asterlite.fem.plane_wave).
 
@@ -193,6 +196,35 @@ def _onde_plane(ctx, model, load, occ) -> None:
     )
 
 
+def _uniform_value(ctx, occ, key: str) -> float | None:
+    """The value of a function that depends on nothing (DEFI_CONSTANTE);
+    a pressure varying in space (X, Y, Z: code_aster evaluates it at the Gauss
+    points of the face) or in time (INST) is refused by name."""
+    function = occ.get(key)
+    if function is None:
+        return None
+    names = [p for p in _parameters(function) if p != _CONSTANT]
+    if names:
+        ctx.unsupported(
+            f"PRES_REP {key}={function.name or 'function'} of {', '.join(names)} "
+            "(a pressure varying along the face or in time)",
+            key,
+            occ,
+        )
+    try:
+        return float(function.evaluate(0.0))
+    except (CommandError, TypeError, ValueError) as exc:
+        ctx.error(f"{key}: {exc}", key, occ)
+
+
+def _pres_rep(ctx, model, load, occ, kw) -> None:
+    if occ.get("FISSURE") is not None:
+        ctx.unsupported("PRES_REP FISSURE (X-FEM crack lips)", "FISSURE", occ)
+    pressure = _uniform_value(ctx, occ, "PRES") or 0.0
+    shear = _uniform_value(ctx, occ, "CISA_2D")
+    affe_char_meca.pres_rep(ctx, model, load, occ, pressure, shear, kw)
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
@@ -220,5 +252,8 @@ def run(ctx, kw):
         _force_poutre(ctx, model, load, occ)
     for occ in kw.factor("ONDE_PLANE"):
         _onde_plane(ctx, model, load, occ)
+    for occ in kw.factor("PRES_REP"):
+        _pres_rep(ctx, model, load, occ, kw)
+    affe_char_meca.single_lagrange(kw, load)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load

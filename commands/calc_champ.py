@@ -27,6 +27,7 @@ from asterlite.concepts.assembly import ElementField
 from asterlite.fem.assemble import assemble_terms
 from asterlite.fem.beam_elements import section_forces
 from asterlite.fem.element_fields import (
+    BAR_FIELDS,
     BAR_OPTIONS,
     ELGA_OPTIONS,
     ELNO_OPTIONS,
@@ -116,13 +117,13 @@ def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> N
 
 
 def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names) -> None:
-    """EFGE_ELNO / SIEF_ELNO (N) of a model of bars (code_aster's te0185:
+    """EFGE_ELNO / SIEF_ELNO / SIEF_ELGA (N) of a model of bars (code_aster's te0185:
     from the displacements, real or complex)."""
 
-    other = [n for n in names if n not in BAR_OPTIONS]
+    other = [n for n in names if n not in BAR_FIELDS]
     if other:
         keyword = "CONTRAINTE" if other[0] in as_tuple(kw.get("CONTRAINTE")) else None
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of bars (EFGE_ELNO, SIEF_ELNO)", keyword, kw)
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of bars ({', '.join(BAR_FIELDS)})", keyword, kw)
     if kw.factor("CHAM_UTIL"):
         ctx.unsupported("CHAM_UTIL on a model of bars", "CHAM_UTIL", kw)
     values = _nodal_values(ctx, result, kw)
@@ -190,10 +191,12 @@ def _store_fields(ctx, kw, result, model, fields, names) -> None:
 
 def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names) -> None:
     """EFGE_ELNO (and EFGE_NOEU) of a model of pipes (code_aster's te0185:
-    from the displacements' stresses, real or complex; no inertia)."""
+    from the displacements' stresses, real or complex; no inertia) and
+    SIEF_ELGA (those stresses at the sub-points, code_aster's tusief)."""
 
+    known = ("EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA")
     _refuse_other_options(
-        ctx, kw, names, ("EFGE_ELNO", "EFGE_NOEU"), "CALC_CHAMP {} of pipe elements (EFGE_ELNO)"
+        ctx, kw, names, known, f"CALC_CHAMP {{}} of pipe elements ({', '.join(known)})"
     )
     if kw.factor("CHAM_UTIL"):
         ctx.unsupported("CHAM_UTIL on a model of pipes", "CHAM_UTIL", kw)
@@ -201,8 +204,9 @@ def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, name
         ctx.unsupported("CALC_CHAMP EXCIT on pipe elements", "EXCIT", kw)
     values = _nodal_values(ctx, result, kw)
     try:
+        computed = sorted({n.replace("EFGE_NOEU", "EFGE_ELNO") for n in names})
         fields = pipe_element_fields(
-            model, characteristics, materials, result.numbering, pipes, values, ["EFGE_ELNO"]
+            model, characteristics, materials, result.numbering, pipes, values, computed
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
@@ -235,7 +239,7 @@ def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, na
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {plates.size} DKT cells, {values.shape[0]} orders")
 
 
-def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
+def _solid_fields(ctx, kw, result, model, materials, solids, names, characteristics) -> None:
     """Stresses, strains and energies of 3D and plane solid cells
     (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
 
@@ -259,7 +263,15 @@ def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
     element_names = sorted({n.replace("_NOEU", "_ELNO") for n in names})
     try:
         fields = solid_element_fields(
-            model, materials, result.numbering, solids, values, element_names, velocities, omega2
+            model,
+            materials,
+            result.numbering,
+            solids,
+            values,
+            element_names,
+            velocities,
+            omega2,
+            characteristics,
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
@@ -556,7 +568,7 @@ def run(ctx, kw):
             _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names)
             return result
         if solids.size and not beams.size and not bars.size:
-            _solid_fields(ctx, kw, result, model, materials, solids, names)
+            _solid_fields(ctx, kw, result, model, materials, solids, names, characteristics)
             return _cham_utils(ctx, kw, result)
         if bars.size and not beams.size:
             _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
@@ -623,12 +635,11 @@ def _force_fields(ctx, kw, result) -> None:
     model, characteristics, materials = _context(ctx, kw, result)
     cells = None
     if kw.get("GROUP_MA"):
-        if "REAC_NODA" in options:
-            ctx.unsupported(
-                "CALC_CHAMP REAC_NODA on a part of the model (GROUP_MA)", "GROUP_MA", kw
-            )
         # FORC_NODA of those cells' elements only, as code_aster's restricted ligrel
         cells = select_cells(ctx, kw, model.mesh)
+        left_out = set(model.cell_modelisation) - set(int(c) for c in cells)
+        if "REAC_NODA" in options and left_out:
+            _check_reac_noda_on_a_part(ctx, kw, result, kinds)
     kw.mark_used("TOUT")
     load_values = None
     if "REAC_NODA" in options:
@@ -659,6 +670,32 @@ def _force_fields(ctx, kw, result) -> None:
             values = kept
         result.fields[option] = values
         ctx.log(f"CALC_CHAMP {option}: {values.shape[0]} orders, {values.shape[1]} DOFs")
+
+
+def _check_reac_noda_on_a_part(ctx, kw, result, kinds) -> None:
+    """REAC_NODA on the cells of GROUP_MA only (code_aster's ccfnrn on a
+    restricted ligrel): their internal forces, minus the loads, plus M a with
+    the whole mass. The loads' nodal forces and kinematic relations count
+    whole; loads acting on cells (pressures, distributed forces, gravity)
+    would count on those cells only, which asterlite does not restrict:
+    refused by name. code_aster refuses a dyna_harmo there (PREPOST3_96)."""
+    if "dyna_harmo" in kinds:
+        ctx.error(
+            "REAC_NODA of a dyna_harmo is computed on the whole model (no GROUP_MA)",
+            "GROUP_MA",
+            kw,
+        )
+    loads = [occ["CHARGE"] for occ in kw.factor("EXCIT")] or [
+        load for load, _ in getattr(result, "loads", ())
+    ]
+    on_cells = sorted({key for load in loads for key in getattr(load, "extra", {})})
+    if on_cells:
+        ctx.unsupported(
+            "CALC_CHAMP REAC_NODA on a part of the model (GROUP_MA) with loads acting on "
+            f"cells ({', '.join(on_cells)})",
+            "GROUP_MA",
+            kw,
+        )
 
 
 def _transient_load_values(ctx, kw, result, characteristics, materials):

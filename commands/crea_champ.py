@@ -4,7 +4,10 @@ a result, or its extreme over the stored fields with TYPE_MAXI; also on the
 ELNO/ELGA fields CALC_CHAMP stored on a result, giving a ``cham_elem``, and
 on the curvilinear abscissa carte MODI_MAILLAGE ABSC_CURV stored on a mesh,
 TYPE_CHAM='CART_ABSC_R'), ASSE (pieces of fields, later ones overriding
-earlier ones unless CUMUL='OUI') and COMB (linear combination)."""
+earlier ones unless CUMUL='OUI') and COMB (linear combination). A field of
+functions (TYPE_CHAM='NOEU_NEUT_F', AFFE with VALE_F) is evaluated by EVAL:
+at each of its nodes, each function takes its parameters from the
+components of the CHAM_PARA fields there (X, Y, Z of the geometry, X1...)."""
 
 from __future__ import annotations
 
@@ -12,7 +15,7 @@ import re
 
 import numpy as np
 
-from asterlite.concepts.assembly import DofNumbering, NodalField
+from asterlite.concepts.assembly import DofNumbering, NodalField, NodalFunctionField
 from asterlite.concepts.mesh import CellConstantField
 from asterlite.concepts.modes import FieldOnElements
 from asterlite.fem.abscissa import ABSCISSA_COMPONENTS
@@ -30,6 +33,9 @@ from asterlite.modal.fields import (
 )
 from asterlite.modal.renumber import transfer
 
+#: the components of NEUT_R and NEUT_F fields
+_NEUTRAL = r"X([1-9]|[12]\d|30)"
+
 
 def _template_numbering(ctx, kw):
     for key in ("CHAM_NO", "NUME_DDL"):
@@ -37,7 +43,7 @@ def _template_numbering(ctx, kw):
         if value is not None:
             return value if key == "NUME_DDL" else value.numbering
     model = kw.get("MODELE")
-    neutral = kw.get("TYPE_CHAM") == "NOEU_NEUT_R"
+    neutral = kw.get("TYPE_CHAM") in ("NOEU_NEUT_R", "NOEU_NEUT_F")
     if model is not None and not neutral:
         from asterlite.fem.assemble import build_numbering_dofs
 
@@ -76,12 +82,14 @@ def _prolonged(kw, numbering, values, assigned):
 
 def _affe(ctx, kw):
     type_cham = kw.get("TYPE_CHAM")
-    if type_cham not in ("NOEU_DEPL_R", "NOEU_NEUT_R"):
+    if type_cham not in ("NOEU_DEPL_R", "NOEU_NEUT_R", "NOEU_NEUT_F"):
         ctx.unsupported(f"CREA_CHAMP TYPE_CHAM={type_cham!r}", "TYPE_CHAM", kw)
+    if type_cham == "NOEU_NEUT_F":
+        return _affe_functions(ctx, kw)
     if type_cham == "NOEU_NEUT_R":
         for occ in kw.factor("AFFE"):
             for comp in as_tuple(occ.get("NOM_CMP")):
-                if not re.fullmatch(r"X([1-9]|[12]\d|30)", str(comp)):
+                if not re.fullmatch(_NEUTRAL, str(comp)):
                     ctx.error(f"{comp} is no component of NEUT_R (X1 ... X30)", "NOM_CMP", occ)
     numbering = _template_numbering(ctx, kw)
     _check_meshes(ctx, kw, numbering.mesh)
@@ -108,6 +116,76 @@ def _affe(ctx, kw):
             values[rows[rows >= 0]] = float(val)
             assigned[rows[rows >= 0]] = True
     return _prolonged(kw, numbering, values, assigned)
+
+
+def _affe_functions(ctx, kw) -> NodalFunctionField:
+    """NOEU_NEUT_F: functions (VALE_F) on the X1 ... X30 of the selected
+    nodes, on those (node, component) pairs only."""
+    for occ in kw.factor("AFFE"):
+        if occ.get("VALE_F") is None:
+            ctx.error("a NOEU_NEUT_F field takes functions (VALE_F)", "VALE_F", occ)
+        for comp in as_tuple(occ.get("NOM_CMP")):
+            if not re.fullmatch(_NEUTRAL, str(comp)):
+                ctx.error(f"{comp} is no component of NEUT_F (X1 ... X30)", "NOM_CMP", occ)
+    numbering = _template_numbering(ctx, kw)
+    _check_meshes(ctx, kw, numbering.mesh)
+    functions: list = [None] * numbering.n_dofs
+    for occ in kw.factor("AFFE"):
+        nodes = select_nodes(ctx, occ, numbering.mesh)
+        comps = as_tuple(occ.get("NOM_CMP"))
+        given = as_tuple(occ.get("VALE_F"))
+        if len(comps) != len(given):
+            ctx.error(
+                f"NOM_CMP has {len(comps)} names but VALE_F {len(given)} functions", "VALE_F", occ
+            )
+        for comp, function in zip(comps, given, strict=True):
+            for row in numbering.dof_indices(nodes, comp):
+                functions[int(row)] = function
+    return NodalFunctionField(numbering=numbering, functions=functions)
+
+
+def _eval(ctx, kw) -> NodalField:
+    """EVAL: the NOEU_NEUT_F field CHAM_F evaluated at each of its nodes, the
+    parameters read at that node from the components of the CHAM_PARA
+    fields (a NOEU_NEUT_R field on CHAM_F's nodes and components)."""
+    if kw.get("TYPE_CHAM") != "NOEU_NEUT_R":
+        ctx.error("EVAL of a NOEU_NEUT_F field gives a NOEU_NEUT_R field", "TYPE_CHAM", kw)
+    source = kw["CHAM_F"]
+    if not isinstance(source, NodalFunctionField):
+        ctx.unsupported("CREA_CHAMP EVAL of a field other than NOEU_NEUT_F", "CHAM_F", kw)
+    parameters: dict[tuple[int, str], float] = {}
+    for field in as_tuple(kw["CHAM_PARA"]):
+        if not isinstance(field, NodalField) or field.numbering.mesh is not source.numbering.mesh:
+            ctx.error("CHAM_PARA must be nodal fields on CHAM_F's mesh", "CHAM_PARA", kw)
+        for (node, comp), value in zip(field.numbering.dofs, np.real(field.values), strict=True):
+            parameters[(int(node), str(comp))] = float(value)
+    values = np.empty(source.numbering.n_dofs)
+    for row, ((node, _comp), function) in enumerate(
+        zip(source.numbering.dofs, source.functions, strict=True)
+    ):
+        values[row] = _evaluated(ctx, kw, function, node, parameters, source.numbering.mesh)
+    return NodalField(numbering=source.numbering, values=values)
+
+
+def _evaluated(ctx, kw, function, node: int, parameters, mesh) -> float:
+    names = [p for p in getattr(function, "nom_para", ()) if p != "TOUTPARA"]
+    missing = [p for p in names if (node, p) not in parameters]
+    if missing:
+        ctx.error(
+            f"no CHAM_PARA field gives {', '.join(missing)} at node {mesh.node_names[node]} "
+            f"(the parameters of {function.name or 'a function'} of CHAM_F)",
+            "CHAM_PARA",
+            kw,
+        )
+    if len(names) > 1 and not hasattr(function, "VALE"):
+        ctx.unsupported(
+            f"CREA_CHAMP EVAL of {function.name or 'a function'} of several parameters "
+            "other than a FORMULE",
+            "CHAM_F",
+            kw,
+        )
+    args = [parameters[(node, p)] for p in names] or [0.0]
+    return float(np.asarray(function.evaluate(*args), dtype=float))
 
 
 def _nodal_only(ctx, kw):
@@ -433,6 +511,8 @@ def run(ctx, kw):
         if not str(kw.get("TYPE_CHAM")).endswith(wanted):
             ctx.error(f"{operation} gives a NOEU_*{wanted} field", "TYPE_CHAM", kw)
         return _c2r(ctx, kw) if operation == "C2R" else _r2c(ctx, kw)
+    if operation == "EVAL":
+        return _eval(ctx, kw)
     handlers = {"EXTR": _extr, "ASSE": _asse, "COMB": _comb}
     if operation in handlers:
         _nodal_only(ctx, kw)

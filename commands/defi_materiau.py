@@ -1,5 +1,6 @@
 """DEFI_MATERIAU: material parameters (ELAS, ELAS_FO with constant functions,
-ELAS_VISCO's complex G and NU, other behaviours kept as given)."""
+ELAS_VISCO's complex G and NU, ELAS_ORTH and ELAS_ORTH_FO with constant
+functions, other behaviours kept as given)."""
 
 from __future__ import annotations
 
@@ -8,9 +9,13 @@ import numpy as np
 from asterlite.concepts.assembly import Material
 
 _FUNCTION_PARAMETERS = ("E", "NU", "RHO", "ALPHA", "AMOR_ALPHA", "AMOR_BETA", "AMOR_HYST")
+_ORTHOTROPIC_FUNCTIONS = (
+    *("E_L", "E_T", "E_N", "NU_LT", "NU_LN", "NU_TN", "G_LT", "G_LN", "G_TN"),
+    *("RHO", "ALPHA_L", "ALPHA_T", "ALPHA_N", "AMOR_ALPHA", "AMOR_BETA", "AMOR_HYST"),
+)
 
 
-def _constant_value(ctx, occ, name: str, func) -> float | None:
+def _constant_value(ctx, occ, name: str, func, keyword: str = "ELAS_FO") -> float | None:
     """The value of a function that does not vary (ELAS_FO used with no
     temperature field): its ordinates must all be equal. None when it varies:
     the material is then kept, but has no value of ``name`` for the element
@@ -18,16 +23,34 @@ def _constant_value(ctx, occ, name: str, func) -> float | None:
     ordinates = getattr(func, "ordinates", None)
     if ordinates is None:
         if getattr(func, "NOM_PARA", None) is not None and callable(func):
-            ctx.unsupported(f"ELAS_FO/{name} given by a formula", name, occ)
+            ctx.unsupported(f"{keyword}/{name} given by a formula", name, occ)
         ctx.error(f"{name} must be a function", name, occ)
     values = np.asarray(ordinates, dtype=float)
     if values.size == 0 or not np.allclose(values, values[0], rtol=1e-12, atol=0.0):
         ctx.log(
-            f"ELAS_FO/{name} varies with {getattr(func, 'NOM_PARA', '?')}: no constant value "
+            f"{keyword}/{name} varies with {getattr(func, 'NOM_PARA', '?')}: no constant value "
             "for the element computations (asterlite applies no command variable field)"
         )
         return None
     return float(values[0])
+
+
+def _orthotropic(ctx, occ, keyword: str):
+    """ELAS_ORTH's parameters as floats (ELAS_ORTH_FO: the values of its
+    constant functions) and the parameters that vary, by their variable."""
+    values, varying = {}, {}
+    for name, value in occ.items():
+        if value is None:
+            continue
+        if keyword == "ELAS_ORTH_FO" and name in _ORTHOTROPIC_FUNCTIONS:
+            constant = _constant_value(ctx, occ, name, value, keyword)
+            if constant is None:
+                varying[name] = str(getattr(value, "NOM_PARA", "?"))
+            else:
+                values[name] = constant
+        elif isinstance(value, (int, float)):
+            values[name] = float(value)
+    return values, varying
 
 
 def run(ctx, kw):
@@ -57,6 +80,14 @@ def run(ctx, kw):
         behaviours["ELAS_FO"] = dict(occ)
         # parameters without a constant value: refused where a computation needs them
         behaviours["ELAS_VARYING"] = varying
+    for keyword in ("ELAS_ORTH", "ELAS_ORTH_FO"):
+        for occ in kw.factor(keyword):
+            behaviours["ELAS_ORTH"], varying = _orthotropic(ctx, occ, keyword)
+            behaviours["ELAS_VARYING"] = varying
+            ctx.log(
+                f"material {keyword}: "
+                + ", ".join(f"{k}={v:g}" for k, v in behaviours["ELAS_ORTH"].items())
+            )
     for occ in kw.factor("ELAS_VISCO"):
         # complex moduli at one frequency: the 3D and plane elements build
         # RIGI_MECA from the real part of their Hooke matrix, RIGI_MECA_HYST

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.fem.abscissa import AbscissaError, curvilinear_abscissa
+from asterlite.fem.mesh_degree import QuarterPointError, quarter_points
 from asterlite.fem.selection import (
     as_tuple,
     cell_group_members,
@@ -20,7 +21,7 @@ from asterlite.fem.skin import SkinError, is_plane, orient_edges, orient_skin
 
 _SUPPORTED = (
     *("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU"),
-    *("ORIE_NORM_COQUE", "ABSC_CURV"),
+    *("ORIE_NORM_COQUE", "ABSC_CURV", "MODI_MAILLE"),
 )
 # code_aster 15's name of ORIE_PEAU for 3D skins, and its keywords
 _SKIN_KEYWORDS = {
@@ -187,8 +188,26 @@ def _abscissa(ctx, mesh, occ) -> None:
     ctx.log(f"ABSC_CURV: {len(carte)} cells, line length {length:.6g}")
 
 
+def _noeud_quart(ctx, mesh, occ) -> None:
+    """MODI_MAILLE OPTION='NOEUD_QUART' with a front of nodes (GROUP_NO_FOND,
+    NOEUD_FOND): quarter-point cells around it; a front of cells
+    (GROUP_MA_FOND, MAILLE_FOND) is refused by name."""
+    for keyword in ("GROUP_MA_FOND", "MAILLE_FOND"):
+        if occ.get(keyword) is not None:
+            ctx.unsupported(f"MODI_MAILLE NOEUD_QUART with {keyword}", keyword, occ)
+    front = node_group_members(ctx, occ, mesh, "GROUP_NO_FOND")
+    front += named_nodes(ctx, occ, mesh, "NOEUD_FOND")
+    try:
+        count = quarter_points(mesh, list(dict.fromkeys(front)))
+    except QuarterPointError as exc:
+        ctx.error(str(exc), "GROUP_NO_FOND", occ)
+    ctx.log(f"NOEUD_QUART: middle nodes of {count} cells moved to the quarter points")
+
+
 def run(ctx, kw):
     mesh = kw["MAILLAGE"]
+    for occ in kw.factor("MODI_MAILLE"):
+        _noeud_quart(ctx, mesh, occ)
     # code_aster order: deformation, translation, rotation, symmetry, scale
     for occ in kw.factor("DEFORME"):
         _deforme(ctx, mesh, occ)

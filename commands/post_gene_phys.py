@@ -23,6 +23,11 @@ them (asterlite.legacy.v15.OLD_BEHAVIOURS); their ``*_ABSOLU`` fields have it.
 Element fields (``*_ELNO``, ``*_ELGA``) recombine, with q(t), the fields
 CALC_CHAMP stored on the modes, on the cells of GROUP_MA / MAILLE.
 
+A harmonic result (``harm_gene``) gives the complex DEPL, VITE or ACCE it
+holds at the frequencies chosen by FREQ / LIST_FREQ / NUME_ORDRE / TOUT_ORDRE
+(all by default), in a table whose FREQ and VALE_C replace INST and VALE_R
+(code_aster's pgpcrt); its absolute and element fields are refused by name.
+
 The table follows code_aster: one row per instant, component and node (in
 that nesting: components outer, nodes inner, as code_aster fills it), with
 the parameters NUME_OBSE, INST, NOM_CHAM, NOM_CMP, NOEUD (node number, as
@@ -36,12 +41,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.harmonic import HarmGene
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import TranGene
 from asterlite.errors import missing_name
 from asterlite.fem.dofs import sort_components
 from asterlite.legacy.v15 import computes
 from asterlite.legacy.version import tables_name_nodes
+from asterlite.post.harmonic import selection_from_keywords as frequency_selection
 from asterlite.post.restitution import (
     as_tuple,
     node_indices,
@@ -60,26 +67,76 @@ COLUMNS = {
     "POINT": "K8",
     "VALE_R": "R",
 }
+#: the columns of a harmonic result's table: frequencies and complex values
+HARMONIC_COLUMNS = {
+    **{("FREQ" if k == "INST" else k): v for k, v in COLUMNS.items() if k != "VALE_R"},
+    "VALE_C": "C",
+}
 NODAL_FIELDS = ("DEPL", "VITE", "ACCE", "DEPL_ABSOLU", "VITE_ABSOLU", "ACCE_ABSOLU")
 TRANSLATIONS = ("DX", "DY", "DZ")
 
 
 def run(ctx, kw):
     result = kw["RESU_GENE"]
-    if not isinstance(result, TranGene):
+    harmonic = isinstance(result, HarmGene)
+    if not isinstance(result, TranGene) and not harmonic:
         ctx.unsupported(f"POST_GENE_PHYS of a {result.aster_type}", "RESU_GENE", kw)
     basis = kw.get("MODE_MECA") or result.basis
+    if not hasattr(basis, "shapes"):
+        ctx.error(
+            "the result's basis is not a mode_meca: give MODE_MECA (restored modes)",
+            "MODE_MECA",
+            kw,
+        )
     if basis.n_modes != result.n_modes:
         ctx.error(
             f"MODE_MECA has {basis.n_modes} modes, the result {result.n_modes}", "MODE_MECA", kw
         )
     table = Table(title=kw.get("TITRE") or "")
-    for name, type_code in COLUMNS.items():
+    for name, type_code in (HARMONIC_COLUMNS if harmonic else COLUMNS).items():
         table.add_column(name, type_code)
     for number, occ in enumerate(kw.factor("OBSERVATION"), start=1):
-        for row in observation_rows(ctx, occ, result, basis, number):
+        if harmonic:
+            rows = harmonic_rows(ctx, occ, result, basis, number)
+        else:
+            rows = observation_rows(ctx, occ, result, basis, number)
+        for row in rows:
             table.add_row(row)
     return table
+
+
+def harmonic_rows(ctx, occ, result, basis, number: int) -> list[dict]:
+    """Rows of a nodal field of a harm_gene: u(f) = Φ_rows q(f), complex,
+    at the selected frequencies (components outer, nodes inner)."""
+    field = occ.get("NOM_CHAM", "DEPL")
+    if field not in ("DEPL", "VITE", "ACCE"):
+        ctx.unsupported(f"POST_GENE_PHYS NOM_CHAM={field!r} of a harm_gene", "NOM_CHAM", occ)
+    for keyword in ("INST", "LIST_INST", "TOUT_INST"):
+        if occ.get(keyword) is not None:
+            ctx.error(f"{keyword} applies to transient results: give FREQ", keyword, occ)
+    if field not in result.fields:
+        ctx.error(f"the harm_gene holds no {field} field", "NOM_CHAM", occ)
+    numbering = basis.numbering
+    mesh = numbering.mesh
+    nodes = node_indices(ctx, occ, mesh, allow_all=False)
+    comps = observed_components(ctx, occ, numbering, nodes)
+    pairs = [(c, n) for c in comps for n in nodes if (int(n), c) in numbering.index]
+    rows_of_dofs = np.array([numbering.index[(int(n), c)] for c, n in pairs], dtype=int)
+    selection = frequency_selection(ctx, occ, result.frequencies, result.order)
+    values = selection.apply(result.fields[field]) @ np.asarray(basis.shapes)[rows_of_dofs].T
+    by_name = tables_name_nodes(ctx.session)
+    return [
+        {
+            "NUME_OBSE": number,
+            "FREQ": float(frequency),
+            "NOM_CHAM": field,
+            "NOM_CMP": comp,
+            "NOEUD": node_label(mesh, node, by_name),
+            "VALE_C": complex(values[k, j]),
+        }
+        for k, frequency in enumerate(selection.times)
+        for j, (comp, node) in enumerate(pairs)
+    ]
 
 
 def observation_rows(ctx, occ, result, basis, number: int) -> list[dict]:

@@ -45,6 +45,17 @@ def run(ctx, kw):
     if kw.get("TABLE") is not None:
         x, y = from_table(ctx, kw)
         para, resu = kw["PARA_X"], kw["PARA_Y"]
+        if kw["TABLE"].types.get(resu) == "C":
+            # a complex column (VALE_C) makes a fonction_c, as the catalogue types it
+            return ComplexFunction(
+                x,
+                np.asarray(y, dtype=complex),
+                NOM_PARA=kw.get("NOM_PARA") or para,
+                NOM_RESU=kw.get("NOM_RESU") or resu,
+                INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
+                PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
+                PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),
+            )
     elif kw.get("RESU_GENE") is not None:
         modal = isinstance(kw.peek("RESU_GENE"), GeneralizedModes)  # rfmge1: against FREQ
         para, resu, (x, y) = "FREQ" if modal else "INST", None, from_generalized(ctx, kw)
@@ -189,8 +200,13 @@ def from_physical(ctx, kw):
     selection = instants(ctx, kw, result.times, result.order)
     computed = computed_fields(result)
     if field not in result.fields and field in computed:
-        history = element_value_history(ctx, kw, result, field)
-        return selection.times, selection.apply(history)
+        history = selection.apply(element_value_history(ctx, kw, result, field))
+        if np.any(selection.weight):
+            return selection.times, history
+        # code_aster reads a field at the selected orders that hold it (rsutn2):
+        # those CALC_CHAMP left out are skipped
+        held = orders_holding(result, field)[selection.lower]
+        return selection.times[held], history[held]
     if field not in result.fields:
         known = ", ".join([*result.fields, *computed])
         ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", kw)
@@ -203,6 +219,16 @@ def from_physical(ctx, kw):
         where = f"node {node_name(result, node)}"
         ctx.error(missing_name("DOF", component, present, where), "NOM_CMP", kw)
     return selection.times, selection.apply(result.fields[field][:, row])
+
+
+def orders_holding(result, name: str) -> np.ndarray:
+    """Mask of the orders at which an element or smoothed nodal field of
+    ``result`` is computed (CALC_CHAMP leaves the others NaN)."""
+    field = (getattr(result, "node_fields", None) or {}).get(name)
+    if field is None:
+        field = result.element_fields[name]
+    values = np.asarray(field.values).reshape(field.values.shape[0], -1)
+    return ~np.all(np.isnan(values), axis=1)
 
 
 def node_name(result, node: int) -> str:

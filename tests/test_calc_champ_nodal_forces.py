@@ -187,3 +187,36 @@ H = CALC_CHAMP(reuse=H, RESULTAT=H, FORCE=("FORC_NODA", "REAC_NODA"),
         + '\nH = CALC_CHAMP(reuse=H, RESULTAT=H, FORCE="REAC_NODA")',
     )
     assert refused.status == "UNSUPPORTED"
+
+
+def test_reac_noda_on_a_part_of_the_model(tmp_path):
+    """GROUP_MA naming every cell of the model gives the whole model's
+    REAC_NODA. On the mass cell alone (code_aster's restricted ligrel) the
+    internal forces are those of that cell (none: a point mass), the loads'
+    nodal forces count whole and M a is the whole mass's: REAC_NODA is 0 at
+    NA and M a - F = -k u at NB. A load acting on cells is refused there."""
+    done = run(
+        tmp_path,
+        """V = CALC_CHAMP(RESULTAT=U, FORCE="REAC_NODA", GROUP_MA=("RESSORT", "MASSE"))
+W = CALC_CHAMP(RESULTAT=U, FORCE="REAC_NODA", GROUP_MA="MASSE")
+U = CALC_CHAMP(reuse=U, RESULTAT=U, FORCE="REAC_NODA")""",
+    )
+    assert done.status == "DONE", done
+    whole = done.concepts.raw["U"]
+    np.testing.assert_array_equal(
+        np.asarray(done.concepts.raw["V"].fields["REAC_NODA"]),
+        np.asarray(whole.fields["REAC_NODA"]),
+    )
+    reac_a, reac_b = columns(done.concepts.raw["W"], "REAC_NODA")
+    _, u_b = columns(whole, "DEPL")
+    assert not reac_a.any()
+    np.testing.assert_allclose(reac_b[1:], -K * u_b[1:], rtol=1e-9, atol=1e-9 * F)
+    (tmp_path / "part").mkdir()
+    part = run(
+        tmp_path / "part",
+        """GRAV = AFFE_CHAR_MECA(MODELE=MODELE, PESANTEUR=_F(GRAVITE=9.81, DIRECTION=(0., 0., -1.)))
+V = CALC_CHAMP(RESULTAT=U, FORCE="REAC_NODA", GROUP_MA="MASSE",
+               EXCIT=(_F(CHARGE=BLOCAGE), _F(CHARGE=GRAV)))""",
+    )
+    assert part.status == "UNSUPPORTED"
+    assert "loads acting on cells (PESANTEUR)" in part.message

@@ -124,15 +124,38 @@ def test_cantilever_deflections_and_section_forces(modelisation, n_nodes):
         # axial: exact; bending: Euler-Bernoulli plus shear and ovalisation (< 0.2 %)
         tolerance = 1e-9 if component == "DX" else 2e-3
         assert u[tip[component]] == pytest.approx(exact, rel=tolerance)
-        efge = pipe_element_fields(
-            model, characteristics, field, numbering, np.arange(8), u[None], ["EFGE_ELNO"]
-        )["EFGE_ELNO"].values[0]
+        fields = pipe_element_fields(
+            model, characteristics, field, numbering, np.arange(8), u[None],
+            ["EFGE_ELNO", "SIEF_ELGA"],
+        )  # fmt: skip
+        efge = fields["EFGE_ELNO"].values[0]
         if component == "DX":
             assert np.allclose(efge[:, :2, 0], force, rtol=1e-6)
         else:
             # shear force along the pipe; bending moment P (L - x) at the clamp
             assert np.allclose(efge[:, :2, 1], force, rtol=2e-2)
             assert efge[0, 0, 5] == pytest.approx(force * length, rel=2e-2)
+        _check_sub_point_stresses(fields["SIEF_ELGA"], efge, n_nodes, component, force)
+
+
+def _check_sub_point_stresses(sief, efge, n_nodes, component, force):
+    """SIEF_ELGA at the (2 NCOU + 1) x (2 NSEC + 1) sub-points of each Gauss
+    point (layers outer, sectors inner): its section integral is N, SIZZ and
+    SIYZ are zero, and the axial stress is N / A under a tip tension."""
+    section = pipe.PipeSection(R, EP)
+    _, _, weight, _ = section.points()
+    n_sub = weight.size
+    n_points = pipe.RIGI_POINTS[n_nodes]
+    assert sief.sub_points == n_sub == 7 * 33
+    assert sief.components == ("SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ")
+    values = sief.values[0].reshape(8, n_points, 7, 33, 6)
+    assert not values[..., 2].any() and not values[..., 5].any()
+    normal = np.einsum("ls,epls->ep", weight, values[..., 0])
+    at_nodes = np.einsum("ng,eg->en", pipe.gauss_to_nodes(n_nodes), normal)
+    np.testing.assert_allclose(at_nodes, efge[:, :n_nodes, 0], rtol=1e-10, atol=1e-6 * force)
+    if component == "DX":
+        area, _ = section_area_inertia()
+        np.testing.assert_allclose(values[..., 0], force / area, rtol=1e-6)
 
 
 @pytest.mark.parametrize("modelisation,modes", (("TUYAU_3M", 3), ("TUYAU_6M", 6)))

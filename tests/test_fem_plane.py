@@ -372,3 +372,28 @@ def test_plane_models_are_two_dimensional():
             model.node_modelisation[k] = name
         assert model.dim == 2
     assert Model(mesh=mesh, cell_modelisation={0: "DKT"}).dim == 3
+
+
+def test_affe_char_meca_f_pres_rep_of_a_constant_is_the_uniform_pressure():
+    """AFFE_CHAR_MECA_F PRES_REP with DEFI_CONSTANTE values loads the edges as
+    AFFE_CHAR_MECA's uniform PRES / CISA_2D; a pressure varying with X (or
+    INST) is refused by name."""
+    from asterlite.errors import UnsupportedError
+    from asterlite.fem.plane_loads import plane_load_terms
+    from tests.test_fem_support import FakeSession, run
+
+    session = FakeSession()
+    model = _edge_mesh("SEG3", [(0.0, 0.0), (0.0, 3.0), (0.0, 1.5)])
+    pressure = run(session, "DEFI_CONSTANTE", VALE=2.0, NOM_RESU="PRES")
+    shear = run(session, "DEFI_CONSTANTE", VALE=0.5)
+    by_function = run(session, "AFFE_CHAR_MECA_F", MODELE=model, VERI_NORM="OUI",
+                      PRES_REP={"TOUT": "OUI", "PRES": pressure, "CISA_2D": shear})  # fmt: skip
+    by_value = run(session, "AFFE_CHAR_MECA", MODELE=model, VERI_NORM="OUI",
+                   PRES_REP={"TOUT": "OUI", "PRES": 2.0, "CISA_2D": 0.5})  # fmt: skip
+    f = _sum(plane_load_terms(model, by_function.extra))
+    assert f == pytest.approx(_sum(plane_load_terms(model, by_value.extra)))
+    assert [f[n, "DX"] for n in range(3)] == pytest.approx([-1.0, -1.0, -4.0])
+    assert sum(f[n, "DY"] for n in range(3)) == pytest.approx(0.5 * 3.0)
+    along_x = run(session, "FORMULE", VALE="1.0e5 * X", NOM_PARA=("X",))
+    with pytest.raises(UnsupportedError, match="PRES_REP PRES=.* of X"):
+        run(session, "AFFE_CHAR_MECA_F", MODELE=model, PRES_REP={"TOUT": "OUI", "PRES": along_x})

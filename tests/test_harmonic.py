@@ -374,11 +374,16 @@ def test_bar_axial_force_from_complex_displacements():
     u = np.zeros((2, 6), dtype=complex)
     u[0, 3:5] = (3e-5 + 1e-6j, 4e-5)  # node B moves along the bar
     u[1, 0] = 1e-5j  # node A moves along x
-    fields = bar_element_fields(model, cara, materials, numbering, [0], u, ["EFGE_ELNO"])
+    names = ["EFGE_ELNO", "SIEF_ELGA"]
+    fields = bar_element_fields(model, cara, materials, numbering, [0], u, names)
     n = fields["EFGE_ELNO"].values[:, 0, :, 0]
     stiffness = 2.0e11 * 2.0e-4 / 5.0
     expected = stiffness * np.array([(0.6 * (3e-5 + 1e-6j) + 0.8 * 4e-5), -0.6 * 1e-5j])
     np.testing.assert_allclose(n, np.column_stack([expected, expected]), rtol=1e-13)
+    # SIEF_ELGA: the same N at the bar's one Gauss point (code_aster's FPG1)
+    gauss = fields["SIEF_ELGA"].values
+    assert gauss.shape == (2, 1, 1, 1)
+    np.testing.assert_allclose(gauss[:, 0, 0, 0], expected, rtol=1e-13)
 
 
 def test_physical_sweep_falls_back_to_pivoting(monkeypatch):

@@ -19,10 +19,10 @@ N_EL, LENGTH = 4, 2.0
 COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 
 
-def _clamped_beam():
+def _clamped_beam(double_lagrange="OUI"):
     session = FakeSession()
     model, field, cara = beam_model(session, line_mesh(N_EL, LENGTH))
-    clamp = run(session, "AFFE_CHAR_MECA", MODELE=model,
+    clamp = run(session, "AFFE_CHAR_MECA", MODELE=model, DOUBLE_LAGRANGE=double_lagrange,
                 DDL_IMPO={"GROUP_NO": "A", "LIAISON": "ENCASTRE"})  # fmt: skip
     options = {"MODELE": model, "CHAM_MATER": field, "CARA_ELEM": cara, "CHARGE": clamp}
     rigi = run(session, "CALC_MATR_ELEM", OPTION="RIGI_MECA", **options)
@@ -78,6 +78,36 @@ def test_dualised_stiffness_solves_the_clamped_cantilever():
         assert lam1 == pytest.approx(lam2, rel=1e-10)
         assert 2.0 * beta * lam1 == pytest.approx(reaction[comp], rel=1e-8)
         assert abs(reaction[comp]) == pytest.approx(magnitude, rel=1e-8)  # ... and the moment L
+
+
+def test_single_lagrange_has_one_multiplier_per_relation_and_the_same_solution():
+    """DOUBLE_LAGRANGE='NON': one multiplier before the node's DOFs, the
+    ``beta a`` terms only (zero diagonal); the same tip deflection, and the
+    multiplier holds the whole reaction over beta."""
+    _, k, _ = _clamped_beam("NON")
+    numbering = k.numbering
+    n = numbering.n_dofs
+    assert numbering.getNumberOfDOFs() == n + 6
+    assert numbering.getLagrangeDOFs() == list(range(6))
+    assert numbering.getPhysicalDOFs() == list(range(6, n + 6))
+    layout = lagrange_layout(numbering)
+    assert (layout.second == -1).all()
+    full = k.toNumpy()
+    beta = lagrange_coefficient(k.matrix)
+    lagrange = layout.first
+    assert not full[np.ix_(lagrange, lagrange)].any()
+    for comp in range(6):
+        dof = layout.physical[numbering.index[(0, COMPONENTS[comp])]]
+        assert full[dof, lagrange[comp]] == full[lagrange[comp], dof] == beta
+    force = np.zeros(layout.size)
+    force[layout.physical[numbering.index[(N_EL, "DY")]]] = 1.0
+    solution = np.linalg.solve(full, force)
+    inertia = np.pi * R**4 / 4.0
+    tip = solution[layout.physical[numbering.index[(N_EL, "DY")]]]
+    assert tip == pytest.approx(LENGTH**3 / (3.0 * E * inertia), rel=1e-10)
+    reaction = -(k.matrix @ solution[layout.physical])
+    dy = COMPONENTS.index("DY")
+    assert beta * solution[lagrange[dy]] == pytest.approx(reaction[dy], rel=1e-8)
 
 
 def test_mode_values_satisfy_the_dualised_eigenproblem():

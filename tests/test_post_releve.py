@@ -5,9 +5,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from asterlite.commands import post_gene_phys, post_releve_t, rest_gene_phys
+from asterlite.commands import post_gene_phys, post_releve_t, recu_fonction, rest_gene_phys
 
 from asterlite.concepts.assembly import ElementField, NodalField
+from asterlite.concepts.function import ComplexFunction
+from asterlite.concepts.harmonic import HarmGene
 from asterlite.concepts.lists import ListReal
 from asterlite.errors import CommandError, UnsupportedError
 
@@ -251,5 +253,59 @@ def test_post_gene_phys_errors():
                 OBSERVATION=[
                     observation(GROUP_NO=("ALL",), INST=(0.55,), CRITERE="RELATIF", PRECISION=1e-6)
                 ],
+            ),
+        )
+
+
+def small_harmonic():
+    """The basis of small_transient with q(f) = (1 + i f, 2 - i) at f = 10, 20, 30 Hz."""
+    basis = small_transient().basis
+    freqs = np.array([10.0, 20.0, 30.0])
+    q = np.column_stack([1.0 + 1j * freqs, np.full(3, 2.0 - 1j)])
+    return HarmGene(
+        basis=basis, numbering=None, frequencies=freqs, order=np.arange(1, 4), fields={"DEPL": q}
+    )
+
+
+def test_post_gene_phys_of_a_harm_gene_gives_complex_values_by_frequency():
+    table = post_gene_phys.run(
+        context(),
+        kw(RESU_GENE=small_harmonic(), OBSERVATION=[observation(GROUP_NO=("NO2",), FREQ=20.0)]),
+    )
+    assert table.columns == [
+        "NUME_OBSE", "FREQ", "NOM_CHAM", "NOM_CMP", "NOEUD", "MAILLE", "POINT", "VALE_C",
+    ]  # fmt: skip
+    assert table.types["VALE_C"] == "C"
+    # NO2: DX = 2 q1 + 0.5 q2, DY = -q2 at f = 20
+    q1, q2 = 1.0 + 20j, 2.0 - 1j
+    assert [(r["NOM_CMP"], r["FREQ"]) for r in table.rows] == [("DX", 20.0), ("DY", 20.0)]
+    assert table.rows[0]["VALE_C"] == pytest.approx(2 * q1 + 0.5 * q2)
+    assert table.rows[1]["VALE_C"] == pytest.approx(-q2)
+    # a VALE_C column makes a fonction_c of RECU_FONCTION TABLE
+    every = post_gene_phys.run(
+        context(),
+        kw(
+            RESU_GENE=small_harmonic(),
+            OBSERVATION=[observation(GROUP_NO=("NO1",), NOM_CMP=("DY",))],
+        ),
+    )
+    function = recu_fonction.run(context(), kw(TABLE=every, PARA_X="FREQ", PARA_Y="VALE_C"))
+    assert isinstance(function, ComplexFunction)
+    np.testing.assert_allclose(function.abscissas, [10.0, 20.0, 30.0])
+    np.testing.assert_allclose(function.ordinates, np.full(3, 2.0 - 1j))
+    with pytest.raises(UnsupportedError, match="DEPL_ABSOLU"):
+        post_gene_phys.run(
+            context(),
+            kw(
+                RESU_GENE=small_harmonic(),
+                OBSERVATION=[observation(NOM_CHAM="DEPL_ABSOLU", GROUP_NO=("NO1",))],
+            ),
+        )
+    with pytest.raises(CommandError, match="INST applies to transient"):
+        post_gene_phys.run(
+            context(),
+            kw(
+                RESU_GENE=small_harmonic(),
+                OBSERVATION=[observation(GROUP_NO=("NO1",), INST=(1.0,))],
             ),
         )

@@ -80,6 +80,23 @@ def test_recu_fonction_from_physical_generalized_and_shock():
         recu_fonction.run(context(), kw(RESU_GENE=result, INTITULE="CHOC1", PARA_Y="VT9"))
 
 
+def test_recu_fonction_skips_the_orders_calc_champ_left_out():
+    """code_aster reads an element field at the selected orders that hold it
+    (rsutn2): orders CALC_CHAMP did not compute (NaN here) are left out."""
+    from asterlite.concepts.assembly import ElementField
+
+    phys = rest_gene_phys.run(context(), kw(RESU_GENE=small_transient(), NOM_CHAM=("DEPL",)))
+    values = np.arange(11.0)[:, None, None, None] * np.ones((1, 1, 2, 1))
+    values[:3] = np.nan  # CALC_CHAMP on the last 8 orders only
+    phys.element_fields = {"SIEF_ELGA": ElementField("SIEF_ELGA", np.array([0]), ("N",), values)}
+    f = recu_fonction.run(
+        context(),
+        kw(RESULTAT=phys, NOM_CHAM="SIEF_ELGA", NOM_CMP="N", GROUP_MA="BAR", POINT=2),
+    )
+    np.testing.assert_allclose(f.abscissas, phys.times[3:])
+    np.testing.assert_allclose(f.ordinates, np.arange(3.0, 11.0))
+
+
 def test_recu_gene_one_instant():
     vector = recu_gene.run(context(), kw(RESU_GENE=small_transient(), NOM_CHAM="DEPL", INST=0.5))
     assert vector.values.tolist() == pytest.approx([0.5, 0.25])

@@ -108,6 +108,8 @@ class ElementCharacteristics(Concept):
     shells: dict[int, dict[str, float]] = field(default_factory=dict)
     # multifibre beams (MULTIFIBRE): the fibre groups of each cell, from geom_fibre
     fibre_groups: dict[int, tuple[str, ...]] = field(default_factory=dict)
+    # solids (MASSIF ANGL_REP): nautical angles in radians of the material frame (L, T, N)
+    material_angles: dict[int, np.ndarray] = field(default_factory=dict)
     geom_fibre: Any = None  # asterlite.concepts.fibres.FibreGeometry
     # pipe cells' geometry and node frames (asterlite.fem.pipe_elements.PipeCell),
     # from their lines and GENE_TUYAU
@@ -138,6 +140,9 @@ class LinearRelation:
     # frequency of a harmonic response (``rhs`` is then 0: no other
     # computation evaluates it)
     rhs_in_frequency: ValueInFrequency | None = None
+    # code_aster dualises the relation with two multipliers, or one when its
+    # load says DOUBLE_LAGRANGE='NON' (asterlite.fem.lagrange_layout)
+    double_lagrange: bool = True
 
 
 @dataclass(frozen=True, eq=False)
@@ -473,14 +478,30 @@ class NodalField(Concept):
 
 
 @dataclass(eq=False)
+class NodalFunctionField(Concept):
+    """A field of functions on nodes (``CREA_CHAMP TYPE_CHAM='NOEU_NEUT_F'``):
+    one function (DEFI_FONCTION, FORMULE, DEFI_CONSTANTE) per (node,
+    component) of ``numbering``, evaluated by ``CREA_CHAMP OPERATION='EVAL'``."""
+
+    aster_types = ("cham_no_sdaster",)
+    deck_methods = frozenset({"getName"})
+
+    numbering: DofNumbering
+    functions: list
+
+
+@dataclass(eq=False)
 class Material(Concept):
     """``DEFI_MATERIAU`` result: one material's parameters by behaviour.
 
     ``behaviours["ELAS"]`` maps code_aster names (E, NU, RHO, AMOR_ALPHA,
     AMOR_BETA, AMOR_HYST, ALPHA...) to floats; ELAS_FO values are stored
     there too once evaluated (constant functions); ``behaviours["ELAS_VISCO"]``
-    holds a viscoelastic material's complex G and NU and its RHO.
-    ``get(name, default)`` reads an elastic parameter.
+    holds a viscoelastic material's complex G and NU and its RHO;
+    ``behaviours["ELAS_ORTH"]`` an orthotropic material's E_L ... G_TN in its
+    frame (L, T, N), with RHO and the Rayleigh and hysteretic coefficients.
+    ``get(name, default)`` reads an elastic parameter (an orthotropic
+    material has no E nor NU).
     """
 
     aster_types = ("mater_sdaster",)
@@ -492,7 +513,15 @@ class Material(Concept):
         if elastic is None and name == "RHO":
             # a viscoelastic material's density is its ELAS_VISCO's
             elastic = self.behaviours.get("ELAS_VISCO")
+        if elastic is None:
+            # density and damping of an orthotropic material are its ELAS_ORTH's
+            elastic = self.behaviours.get("ELAS_ORTH")
         return (elastic or {}).get(name, default)
+
+    @property
+    def orthotropic(self) -> dict[str, float] | None:
+        """ELAS_ORTH's parameters, None for other materials."""
+        return self.behaviours.get("ELAS_ORTH")
 
     @property
     def viscoelastic(self) -> dict[str, complex] | None:

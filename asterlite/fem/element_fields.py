@@ -162,6 +162,9 @@ def _warping_beam_fields(
 
 
 BAR_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO")
+#: the fields of bars: BAR_OPTIONS at the nodes, SIEF_ELGA at code_aster's
+#: one Gauss point (MECA_BARRE: RIGI=FPG1)
+BAR_FIELDS = (*BAR_OPTIONS, "SIEF_ELGA")
 DISCRETE_COMPONENTS = {
     "DIS_T": ("N", "VY", "VZ"),
     "DIS_TR": ("N", "VY", "VZ", "MT", "MFY", "MFZ"),
@@ -223,13 +226,13 @@ def discrete_element_fields(
 def bar_element_fields(
     model, characteristics, materials, numbering, cells, values: np.ndarray, options
 ) -> dict[str, ElementField]:
-    """EFGE_ELNO / SIEF_ELNO (component N) of bar cells for nodal values
-    (n_orders, n_dofs), real or complex."""
+    """EFGE_ELNO / SIEF_ELNO / SIEF_ELGA (component N, constant along the
+    bar) of bar cells for nodal values (n_orders, n_dofs), real or complex."""
 
     cells = np.asarray(cells, dtype=int)
-    other = [name for name in options if name not in BAR_OPTIONS]
+    other = [name for name in options if name not in BAR_FIELDS]
     if other:
-        raise ValueError(f"{other[0]} is not computed for bars (EFGE_ELNO, SIEF_ELNO)")
+        raise ValueError(f"{other[0]} is not computed for bars ({', '.join(BAR_FIELDS)})")
     mesh = model.mesh
     sections = characteristics.sections if characteristics is not None else {}
     without = [int(c) for c in cells if int(c) not in sections]
@@ -249,8 +252,11 @@ def bar_element_fields(
             present = row >= 0
             elongation[:, present] += sign * axis[present, d] * values[:, row[present]]
     force = elongation * (young * area / length)[None, :]
-    field = np.repeat(force[:, :, None, None], 2, axis=2)
-    return {name: ElementField(name, cells, ("N",), field.copy()) for name in options}
+    points = {name: 1 if name.endswith("_ELGA") else 2 for name in options}
+    return {
+        name: ElementField(name, cells, ("N",), np.repeat(force[:, :, None, None], n, axis=2))
+        for name, n in points.items()
+    }
 
 
 def nodal_average(field: ElementField, mesh, name: str) -> NodalComponentField:

@@ -30,9 +30,16 @@ def material_parameters(materials, cells, mesh, family: str, defaults) -> dict[s
     return {name: materials.values(cells, name, default) for name, default in defaults}
 
 
-def elastic_values(materials, cells, mesh, family: str, need_density: bool, viscoelastic=False):
+def elastic_values(
+    materials, cells, mesh, family: str, need_density: bool, viscoelastic=False, orthotropic=False
+):
     """E, NU, RHO and the Rayleigh coefficients of isotropic elastic cells;
     RHO is required when a mass is computed (``need_density``).
+
+    ``orthotropic``: the family takes ELAS_ORTH materials (3D and plane
+    solids); their cells have NaN E and NU and are marked in ``out["ORTHO"]``
+    (their Hooke matrix is :func:`asterlite.fem.orthotropic.global_hooke`'s).
+    Other families refuse such a material by name.
 
     ``viscoelastic``: the family takes ELAS_VISCO materials (3D and plane
     solids, as code_aster's te0050/te0230); their cells get the complex
@@ -59,7 +66,19 @@ def elastic_values(materials, cells, mesh, family: str, need_density: bool, visc
         out["NU"] = out["NU"].astype(complex)
         out["E"][rows] = 2.0 * shear * (1.0 + poisson)
         out["NU"][rows] = poisson
-    if np.any(np.isnan(out["E"])) or np.any(np.isnan(out["NU"])):
+    ortho = np.array(
+        [materials.material_of(int(c)).orthotropic is not None for c in np.asarray(cells)],
+        dtype=bool,
+    )
+    if np.any(ortho) and not orthotropic:
+        names = ", ".join(mesh.cell_names[c] for c in np.asarray(cells)[ortho][:5])
+        raise ElementError(
+            f"{family} elements take no orthotropic material (DEFI_MATERIAU ELAS_ORTH, "
+            f"cells {names}): only 3D and plane solids (3D, D_PLAN, C_PLAN, AXIS) do"
+        )
+    out["ORTHO"] = ortho
+    isotropic = ~ortho
+    if np.any(np.isnan(out["E"][isotropic])) or np.any(np.isnan(out["NU"][isotropic])):
         raise ElementError(f"the material of {family} elements needs E and NU (ELAS)")
     if need_density and np.any(np.isnan(out["RHO"])):
         raise ElementError(f"the mass of {family} elements needs RHO in the material (ELAS)")

@@ -10,15 +10,18 @@ arrays a deck reads there:
 
 - placement: a relation's λ1 comes just before the DOFs of the first node it
   involves (in numbering order), its λ2 just after those of the last node;
-  several multipliers at one place keep the relations' order;
+  several multipliers at one place keep the relations' order; a relation of
+  a load with DOUBLE_LAGRANGE='NON' has its λ1 only;
 - the stiffness's terms (double Lagrange): for each relation, ``β a_i`` in
   the (u_i, λ1) and (u_i, λ2) places, ``-β`` on the two diagonal terms and
   ``β`` between λ1 and λ2, with β = (smallest nonzero + largest) absolute
   diagonal term of the physical matrix over 2 (code_aster's assma1/echmat
-  conditioning); the other matrices (mass, damping, gyroscopy) carry no
+  conditioning); a single multiplier has the ``β a_i`` terms only (a zero
+  diagonal); the other matrices (mass, damping, gyroscopy) carry no
   load terms, so their multiplier rows and columns are zero;
 - a field's multiplier values: λ1 = λ2 = r_i / (2 β) for a single-term
-  relation on DOF i with reaction r (the value code_aster's solution holds).
+  relation on DOF i with reaction r (the value code_aster's solution holds),
+  λ1 = r_i / β for a single multiplier.
 
 Relations of several terms (LIAISON_*) are laid out the same way, but their
 multipliers have no single (node, component) to name, nor a reaction to
@@ -59,13 +62,13 @@ class LagrangeLayout:
     size: int
     physical: np.ndarray  # position of each physical DOF (numbering order)
     first: np.ndarray  # position of each relation's λ1
-    second: np.ndarray  # position of each relation's λ2
+    second: np.ndarray  # position of each relation's λ2 (-1: a single multiplier)
     relations: tuple  # the dualised relations, in order
     labels: tuple  # (node, component) of each position; component 'LAGR:DX' for λ
 
     @property
     def lagrange(self) -> np.ndarray:
-        return np.sort(np.concatenate([self.first, self.second]))
+        return np.sort(np.concatenate([self.first, self.second[self.second >= 0]]))
 
 
 def lagrange_layout(numbering) -> LagrangeLayout:
@@ -88,10 +91,11 @@ def _build(numbering, relations) -> LagrangeLayout:
     for k, relation in enumerate(relations):
         nodes = sorted({n for n, _c, _a in relation.terms}, key=lambda n: node_order[n])
         before.setdefault(nodes[0], []).append(k)
-        after.setdefault(nodes[-1], []).append(k)
+        if relation.double_lagrange:
+            after.setdefault(nodes[-1], []).append(k)
     physical = np.empty(numbering.n_dofs, dtype=int)
     first = np.empty(len(relations), dtype=int)
-    second = np.empty(len(relations), dtype=int)
+    second = np.full(len(relations), -1, dtype=int)
     labels: list[tuple[int, str]] = []
     for node in sorted(blocks, key=lambda n: node_order[n]):
         for k in before.get(node, ()):
@@ -135,9 +139,11 @@ def full_matrix(assembled, dense: np.ndarray, with_load_terms: bool) -> np.ndarr
     for relation, one, two in zip(layout.relations, layout.first, layout.second, strict=True):
         for node, comp, coef in relation.terms:
             u = layout.physical[index[(node, comp)]]
-            for lam in (one, two):
+            for lam in (one, two) if two >= 0 else (one,):
                 full[u, lam] += beta * coef
                 full[lam, u] += beta * coef
+        if two < 0:
+            continue
         full[one, one] += -beta
         full[two, two] += -beta
         full[one, two] += beta
@@ -147,8 +153,9 @@ def full_matrix(assembled, dense: np.ndarray, with_load_terms: bool) -> np.ndarr
 
 def full_vector(numbering, values, reactions=None, beta: float = 1.0) -> np.ndarray:
     """A field's values laid out with the multipliers: λ1 = λ2 = r / (2 β) of
-    each single-term relation (``reactions`` per physical DOF); refused
-    without reactions or for a relation of several terms."""
+    each single-term relation (λ1 = r / β under DOUBLE_LAGRANGE='NON';
+    ``reactions`` per physical DOF); refused without reactions or for a
+    relation of several terms."""
     layout = lagrange_layout(numbering)
     values = np.asarray(values)
     full = np.zeros(layout.size, dtype=values.dtype)
@@ -167,6 +174,9 @@ def full_vector(numbering, values, reactions=None, beta: float = 1.0) -> np.ndar
                 "are not computed"
             )
         node, comp, coef = relation.terms[0]
-        value = reactions[numbering.index[(node, comp)]] / (2.0 * beta * coef)
-        full[one] = full[two] = value
+        reaction = reactions[numbering.index[(node, comp)]]
+        if two < 0:
+            full[one] = reaction / (beta * coef)
+        else:
+            full[one] = full[two] = reaction / (2.0 * beta * coef)
     return full

@@ -1,5 +1,6 @@
 """Changing the degree of mesh cells (CREA_MAILLAGE LINE_QUAD, MODI_MAILLE
-OPTION='SEG3_4').
+OPTION='SEG3_4') and the place of their middle nodes (MODI_MAILLAGE
+MODI_MAILLE OPTION='NOEUD_QUART': quarter-point cells at a crack front).
 
 LINE_QUAD turns linear cells into their quadratic serendipity twins with a
 node in the middle of each edge, shared by the cells around the edge, in
@@ -164,3 +165,72 @@ def seg3_to_seg4(mesh, cells) -> int:
         mesh.cell_nodes[cell] = (a, b, m, new.add(second))
     new.commit()
     return len(new.names)
+
+
+#: quadratic cells whose mid-edge nodes NOEUD_QUART moves, and their linear twins
+_QUARTER_CELLS = {
+    **{"TRIA6": "TRIA3", "TRIA7": "TRIA3", "QUAD8": "QUAD4", "QUAD9": "QUAD4"},
+    **{"TETRA10": "TETRA4", "PENTA15": "PENTA6", "PENTA18": "PENTA6"},
+    **{"PYRAM13": "PYRAM5", "HEXA20": "HEXA8", "HEXA27": "HEXA8"},
+}
+
+
+class QuarterPointError(ValueError):
+    """A crack front NOEUD_QUART cannot treat."""
+
+
+def quarter_points(mesh, front) -> int:
+    """MODI_MAILLE OPTION='NOEUD_QUART' with a front of nodes (code_aster's
+    momaba): in every quadratic cell having a front node as a vertex, the
+    middle node of each edge from that vertex moves to the quarter of the
+    edge from it (Barsoum's singular elements). Front nodes that are no
+    vertex of such a cell (the middles of the front's own edges, in 3D) keep
+    their place. A 2D front is one node, a 3D one alternates vertices and
+    middles. Returns the number of cells modified; the mesh's coordinates
+    change in place."""
+    front = [int(n) for n in front]
+    if mesh.dim == 2 and len(front) > 1:
+        raise QuarterPointError("a 2D crack front is one node (GROUP_NO_FOND / NOEUD_FOND)")
+    if mesh.dim == 3 and len(front) < 2:
+        raise QuarterPointError("a 3D crack front needs at least two nodes")
+    original = mesh.coords.copy()
+    cells_of: dict[int, list[int]] = {}
+    for cell, nodes in enumerate(mesh.cell_nodes):
+        if mesh.cell_types[cell] in _QUARTER_CELLS:
+            for node in nodes:
+                cells_of.setdefault(int(node), []).append(cell)
+    modified: set[int] = set()
+    vertices, middles = 0, []
+    for tip in front:
+        at_vertex = False
+        for cell in cells_of.get(tip, ()):
+            linear = _QUARTER_CELLS[mesh.cell_types[cell]]
+            nodes = mesh.cell_nodes[cell]
+            n_vertices = QUADRATIC[linear][2]
+            if tip not in nodes[:n_vertices]:
+                continue
+            at_vertex = True
+            modified.add(cell)
+            for k, (i, j) in enumerate(edge_vertices(linear)):
+                if tip in (nodes[i], nodes[j]):
+                    other = nodes[j] if nodes[i] == tip else nodes[i]
+                    middle = nodes[n_vertices + k]
+                    mesh.coords[middle] = mesh.coords[tip] + 0.25 * (
+                        mesh.coords[other] - mesh.coords[tip]
+                    )
+        if at_vertex:
+            vertices += 1
+        else:
+            middles.append(tip)
+    for tip in middles:
+        mesh.coords[tip] = original[tip]
+    if not modified:
+        mesh.coords[:] = original
+        raise QuarterPointError("no quadratic cell has a front node as a vertex")
+    if len(front) > 1 and len(middles) != vertices - 1:
+        mesh.coords[:] = original
+        raise QuarterPointError(
+            f"the front's {vertices} vertex nodes need {vertices - 1} middle nodes between "
+            f"them, it has {len(middles)}"
+        )
+    return len(modified)

@@ -268,6 +268,28 @@ def mass(modes: int, geometry, section: PipeSection, density: float, n_nodes: in
     return np.einsum("pls,plsik,plsij->kj", weights, n, n)
 
 
+def stresses_at_sub_points(
+    modes: int,
+    geometry,
+    section: PipeSection,
+    young: float,
+    poisson: float,
+    n_nodes: int,
+    u_local: np.ndarray,
+) -> np.ndarray:
+    """(..., npg, n_layer_points * n_sector_points, 6) SIXX SIYY SIZZ SIXY
+    SIXZ SIYZ at the sub-points of the RIGI Gauss points (layers outer,
+    sectors inner), as code_aster's SIEF_ELGA of pipes (tusief): the axial,
+    hoop, in-plane and transverse shear stresses of linear elasticity, SIZZ
+    and SIYZ zero."""
+    n_points = RIGI_POINTS[n_nodes]
+    b = strain_operator(modes, geometry, section, n_nodes, n_points)
+    stress = np.einsum("ij,plsjk,...k->...plsi", elasticity(young, poisson), b, u_local)
+    out = np.zeros(stress.shape[:-1] + (6,), dtype=stress.dtype)
+    out[..., 0], out[..., 1], out[..., 3], out[..., 4] = (stress[..., i] for i in range(4))
+    return out.reshape(out.shape[:-4] + (n_points, -1, 6))
+
+
 def section_forces_at_gauss(
     modes: int,
     geometry,

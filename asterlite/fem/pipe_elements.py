@@ -33,6 +33,9 @@ PIPE_COMPONENTS = {name: pipe.node_components(m) for name, m in FOURIER_MODES.it
 #: The Fourier DOFs DDL_IMPO BLOCAGE='TUYAU_FOURIER' fixes (up to mode 6).
 FOURIER_COMPONENTS = pipe.node_components(6)[6:]
 EFGE_COMPONENTS = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
+SIEF_COMPONENTS = ("SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ")
+#: the CALC_CHAMP fields of pipes
+PIPE_FIELDS = ("EFGE_ELNO", "SIEF_ELGA")
 
 
 @dataclass(frozen=True, eq=False)
@@ -253,28 +256,36 @@ def pipe_blocks(
 def pipe_element_fields(
     model, characteristics, materials, numbering, cells, values: np.ndarray, options
 ) -> dict[str, ElementField]:
-    """EFGE_ELNO of pipe cells for nodal values (n_orders, n_dofs), real or
-    complex: the section integrals of the linear-elastic stresses at the RIGI
-    Gauss points, taken to the nodes as code_aster's (no inertia term: its
-    pipe forces come from the stresses alone)."""
-    other = [name for name in options if name != "EFGE_ELNO"]
+    """EFGE_ELNO and SIEF_ELGA of pipe cells for nodal values (n_orders,
+    n_dofs), real or complex. EFGE_ELNO: the section integrals of the
+    linear-elastic stresses at the RIGI Gauss points, taken to the nodes as
+    code_aster's (no inertia term: its pipe forces come from the stresses
+    alone). SIEF_ELGA: those stresses at the sub-points (layers x sectors)
+    of each Gauss point (code_aster's tusief), NaN past a cell's own
+    sub-points."""
+    other = [name for name in options if name not in PIPE_FIELDS]
     if other:
-        raise ValueError(f"{other[0]} is not computed for pipe elements (EFGE_ELNO)")
+        raise ValueError(f"{other[0]} is not computed for pipe elements ({', '.join(PIPE_FIELDS)})")
     cells = np.asarray(cells, dtype=int)
     mesh = model.mesh
     _, frames = _checked(model, characteristics, cells)
     props = _material_values(materials, cells, "TUYAU", need_density=False)
     values = np.asarray(values)
+    dtype = np.result_type(values, float)
     max_nodes = max(len(mesh.cell_nodes[int(c)]) for c in cells)
-    out = np.full(
-        (values.shape[0], len(cells), max_nodes, 6), np.nan, dtype=np.result_type(values, float)
-    )
-    for (modelisation, n_nodes, geometry, section, mat), rows in _groups(
-        model, characteristics, cells, props
-    ).items():
+    efge = np.full((values.shape[0], len(cells), max_nodes, 6), np.nan, dtype=dtype)
+    groups = _groups(model, characteristics, cells, props)
+    sub_points = max((2 * key[3].layers + 1) * (2 * key[3].sectors + 1) for key in groups)
+    max_points = max(pipe.RIGI_POINTS[key[1]] for key in groups)
+    sief = None
+    if "SIEF_ELGA" in options:
+        shape = (values.shape[0], len(cells), max_points * sub_points, 6)
+        sief = np.full(shape, np.nan, dtype=dtype)
+    for (modelisation, n_nodes, geometry, section, mat), rows in groups.items():
         components = PIPE_COMPONENTS[modelisation]
         per = len(components)
         extrapolation = pipe.gauss_to_nodes(n_nodes)
+        modes = FOURIER_MODES[modelisation]
         for k in rows:
             cell = int(cells[k])
             nodes = list(mesh.cell_nodes[cell])
@@ -283,15 +294,24 @@ def pipe_element_fields(
             u[:, dofs >= 0] = values[:, dofs[dofs >= 0]]
             u_local = u @ _element_rotation(frames[cell].frames, per).T
             parts = [np.real(u_local)] + ([np.imag(u_local)] if np.iscomplexobj(u_local) else [])
-            gauss = [
-                pipe.section_forces_at_gauss(
-                    FOURIER_MODES[modelisation], geometry, section, mat[0], mat[1], n_nodes, p
-                )
-                for p in parts
-            ]
+            args = (modes, geometry, section, mat[0], mat[1], n_nodes)
+            gauss = [pipe.section_forces_at_gauss(*args, p) for p in parts]
             at_gauss = gauss[0] if len(gauss) == 1 else gauss[0] + 1j * gauss[1]
-            out[:, k, :n_nodes, :] = np.einsum("ng,ogc->onc", extrapolation, at_gauss)
-    return {name: ElementField(name, cells, EFGE_COMPONENTS, out.copy()) for name in options}
+            efge[:, k, :n_nodes, :] = np.einsum("ng,ogc->onc", extrapolation, at_gauss)
+            if sief is not None:
+                stress = [pipe.stresses_at_sub_points(*args, p) for p in parts]
+                here = stress[0] if len(stress) == 1 else stress[0] + 1j * stress[1]
+                n_points, n_sub = here.shape[1:3]
+                padded = np.full((values.shape[0], n_points, sub_points, 6), np.nan, dtype=dtype)
+                padded[:, :, :n_sub] = here
+                sief[:, k, : n_points * sub_points] = padded.reshape(values.shape[0], -1, 6)
+    out = {}
+    for name in options:
+        if name == "SIEF_ELGA":
+            out[name] = ElementField(name, cells, SIEF_COMPONENTS, sief, sub_points=sub_points)
+        else:
+            out[name] = ElementField(name, cells, EFGE_COMPONENTS, efge.copy())
+    return out
 
 
 def _cell_inertia(coords, section, cell: PipeCell, density: float):

@@ -16,6 +16,8 @@ plane stress and the hoop strain ``u_r / r`` in axisymmetry.
   mass is refused;
 - damping ``C = AMOR_ALPHA K + AMOR_BETA M`` (Rayleigh, per element).
 
+D is isotropic (E, NU) or orthotropic (ELAS_ORTH: L and T in the plane turned
+by MASSIF's first angle, N out of it; :mod:`asterlite.fem.orthotropic`).
 A viscoelastic material (ELAS_VISCO) gives a complex D: RIGI_MECA takes
 the real part of K, RIGI_MECA_HYST (``complex_stiffness``) the whole of it
 (code_aster's te0230).
@@ -32,6 +34,7 @@ import numpy as np
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.element_materials import elastic_values
+from asterlite.fem.orthotropic import global_hooke, plane_hooke
 from asterlite.fem.solid_elements import jacobians
 from asterlite.fem.solid_reference import CellKind, tabulated
 
@@ -123,9 +126,11 @@ def strain_operator(modelisation: str, coords, kind: CellKind, family: str):
     return b, scale
 
 
-def stiffness(modelisation: str, coords, kind: CellKind, young, poisson) -> np.ndarray:
+def stiffness(modelisation: str, coords, kind: CellKind, young, poisson, hooke=None) -> np.ndarray:
+    """(e, 2n, 2n) stiffness; ``hooke``: (e, 4, 4) Hooke matrices to use
+    instead of the isotropic ones of ``young`` and ``poisson``."""
     b, scale = strain_operator(modelisation, coords, kind, kind.rigi)
-    d = elasticity(modelisation, young, poisson)
+    d = elasticity(modelisation, young, poisson) if hooke is None else hooke
     db = np.einsum("eij,eqjk->eqik", d, b)
     return np.einsum("eq,eqji,eqjk->eik", scale, b, db)
 
@@ -144,7 +149,9 @@ def mass(modelisation: str, coords, kind: CellKind, density) -> np.ndarray:
 
 
 def material_values(materials, cells, mesh, modelisation: str, need_density: bool):
-    return elastic_values(materials, cells, mesh, modelisation, need_density, viscoelastic=True)
+    return elastic_values(
+        materials, cells, mesh, modelisation, need_density, viscoelastic=True, orthotropic=True
+    )
 
 
 def plane_blocks(
@@ -177,9 +184,15 @@ def plane_blocks(
         conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int)
         coords = plane_coordinates(mesh, conn)
         props = material_values(materials, members, mesh, modelisation, matrix != "K")
+        hooke = None
+        if np.any(props["ORTHO"]):
+            d3 = global_hooke(
+                materials, characteristics, members, mesh, modelisation, props["E"], props["NU"]
+            )
+            hooke = plane_hooke(d3, modelisation)
         try:
             if matrix == "K":
-                mats = stiffness(modelisation, coords, kind, props["E"], props["NU"])
+                mats = stiffness(modelisation, coords, kind, props["E"], props["NU"], hooke)
                 if np.iscomplexobj(mats) and not complex_stiffness:
                     mats = mats.real
             elif matrix == "M":
@@ -188,7 +201,7 @@ def plane_blocks(
                 alpha, beta = props["AMOR_ALPHA"], props["AMOR_BETA"]
                 mats = np.zeros((len(members), 2 * conn.shape[1], 2 * conn.shape[1]))
                 if np.any(alpha):
-                    k = stiffness(modelisation, coords, kind, props["E"], props["NU"])
+                    k = stiffness(modelisation, coords, kind, props["E"], props["NU"], hooke)
                     mats += alpha[:, None, None] * k.real
                 if np.any(beta):
                     mats += beta[:, None, None] * mass(

@@ -6,7 +6,9 @@ gradients at the Gauss points of the family code_aster uses
 point in one einsum, then
 
 - stiffness ``K = sum_g w_g |J| B^T D B`` on the ``RIGI`` family, D the
-  isotropic elasticity of the cell's material (E, NU); a viscoelastic
+  isotropic elasticity of the cell's material (E, NU) or its orthotropic one
+  (ELAS_ORTH, in the frame of AFFE_CARA_ELEM MASSIF:
+  :mod:`asterlite.fem.orthotropic`); a viscoelastic
   material (ELAS_VISCO) has a complex D: RIGI_MECA takes its real part,
   RIGI_MECA_HYST (``complex_stiffness``) the whole, as code_aster's te0050;
 - mass ``M = sum_g w_g |J| rho N N^T`` (one block per direction) on the
@@ -27,6 +29,7 @@ import numpy as np
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.element_materials import elastic_values
+from asterlite.fem.orthotropic import global_hooke
 from asterlite.fem.solid_reference import VOLUME_CELLS, tabulated
 
 COMPONENTS = ("DX", "DY", "DZ")
@@ -63,7 +66,31 @@ def jacobians(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
 
 
 def _check_material(materials, cells, mesh, need_density: bool) -> dict[str, np.ndarray]:
-    return elastic_values(materials, cells, mesh, "3D", need_density, viscoelastic=True)
+    return elastic_values(
+        materials, cells, mesh, "3D", need_density, viscoelastic=True, orthotropic=True
+    )
+
+
+def strain_operators(g: np.ndarray) -> np.ndarray:
+    """(e, q, 6, 3n) B of physical gradients ``g`` (e, q, n, 3): Voigt strains
+    (xx, yy, zz, xy, xz, yz), engineering shears, DOFs node by node."""
+    e, q, n, _ = g.shape
+    b = np.zeros((e, q, 6, n, 3), dtype=g.dtype)
+    for row, (i, j) in enumerate(((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))):
+        b[:, :, row, :, i] = g[..., j]
+        if i != j:
+            b[:, :, row, :, j] = g[..., i]
+    return b.reshape(e, q, 6, 3 * n)
+
+
+def hooke_stiffness(coords, reference: str, family: str, hooke, mesh=None, cells=None):
+    """(e, 3n, 3n) stiffness ``sum_g w |J| B^T D B`` for any Hooke matrices
+    ``hooke`` (e, 6, 6) (anisotropic materials)."""
+    _, grads, weights = tabulated(reference, family)
+    g, det = jacobians(coords, grads, mesh, cells)
+    b = strain_operators(g)
+    db = np.einsum("eij,eqjk->eqik", hooke, b)
+    return np.einsum("eq,eqji,eqjk->eik", det * weights[None, :], b, db)
 
 
 def stiffness_matrices(
@@ -142,6 +169,10 @@ def solid_blocks(
         conn = connectivity(mesh, members)
         coords = mesh.coords[conn]
         props = _check_material(materials, members, mesh, need_density=matrix != "K")
+        if np.any(props["ORTHO"]):
+            props["HOOKE"] = global_hooke(
+                materials, characteristics, members, mesh, "3D", props["E"], props["NU"]
+            )
         try:
             mats = _matrices(matrix, spec, coords, props, lumped, (mesh, members))
             if np.iscomplexobj(mats) and not complex_stiffness:
@@ -154,6 +185,8 @@ def solid_blocks(
 
 def _matrices(matrix, spec, coords, props, lumped, where) -> np.ndarray:
     def stiffness():
+        if "HOOKE" in props:
+            return hooke_stiffness(coords, spec.reference, spec.rigi, props["HOOKE"], *where)
         young, poisson = props["E"], props["NU"]
         return stiffness_matrices(coords, spec.reference, spec.rigi, young, poisson, *where)
 

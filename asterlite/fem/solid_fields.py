@@ -6,8 +6,10 @@ At the Gauss points of the ``RIGI`` family (code_aster's ELGA location):
   (tensor shear components, not engineering ones); ``EPZZ`` is 0 in plane
   strain, ``u_r / r`` in axisymmetry and ``-nu/(1-nu) (EPXX + EPYY)`` in plane
   stress;
-- ``SIEF_ELGA``: Hooke's isotropic law, ``SIXX SIYY SIZZ SIXY (SIXZ SIYZ)``
-  (``SIZZ = 0`` in plane stress);
+- ``SIEF_ELGA``: Hooke's law, isotropic or orthotropic (ELAS_ORTH in the
+  frame of AFFE_CARA_ELEM MASSIF, :mod:`asterlite.fem.orthotropic`),
+  ``SIXX SIYY SIZZ SIXY (SIXZ SIYZ)`` (``SIZZ = 0`` in plane stress, where
+  an orthotropic ``EPZZ`` is the one that makes it so);
 - ``ENEL_ELGA``: the elastic energy density ``sigma : eps / 2`` (``TOTALE``).
 
 ELNO fields (``SIGM_ELNO``, ``SIEF_ELNO``, ``EPSI_ELNO``, ``ENEL_ELNO``) are
@@ -34,6 +36,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementField
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.orthotropic import global_hooke, orthotropic_cells, plane_hooke
 from asterlite.fem.plane_elements import PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.solid_elements import jacobians
 from asterlite.fem.solid_reference import (
@@ -123,7 +126,9 @@ def _gather(numbering, conn: np.ndarray, dim: int, values: np.ndarray) -> np.nda
     return out.reshape(values.shape[0], conn.shape[0], conn.shape[1], dim)
 
 
-def _material(materials, cells, mesh):
+def _material(materials, cells, mesh, modelisation, characteristics):
+    """E, NU, RHO of the cells and, when some are orthotropic, the (e, 6, 6)
+    global Hooke matrices of all (else None)."""
     if materials is None:
         raise ElementError("solid element fields need a material field (CHAM_MATER)")
     missing = [int(c) for c in cells if materials.material_of(c) is None]
@@ -132,12 +137,29 @@ def _material(materials, cells, mesh):
         raise ElementError(f"no material is assigned to the cells {names}")
     young = materials.values(cells, "E", np.nan)
     poisson = materials.values(cells, "NU", np.nan)
-    if np.any(np.isnan(young)) or np.any(np.isnan(poisson)):
+    ortho = orthotropic_cells(materials, cells)
+    if np.any(np.isnan(young[~ortho])) or np.any(np.isnan(poisson[~ortho])):
         raise ElementError("solid element fields need E and NU in the material (ELAS)")
-    return young, poisson, materials.values(cells, "RHO", 0.0)
+    hooke = None
+    if np.any(ortho):
+        hooke = global_hooke(materials, characteristics, cells, mesh, modelisation, young, poisson)
+    return young, poisson, materials.values(cells, "RHO", 0.0), hooke
 
 
-def _strains(modelisation, spec, coords, u, poisson):
+def _voigt(eps):
+    """(..., 6) Voigt strains (engineering shears) of (..., 3, 3) tensors."""
+    return np.stack([eps[..., i, j] * (1.0 if i == j else 2.0) for i, j in _ENTRIES], axis=-1)
+
+
+def _tensor(voigt):
+    """(..., 3, 3) symmetric tensors of (..., 6) Voigt stresses."""
+    out = np.zeros(voigt.shape[:-1] + (3, 3), dtype=voigt.dtype)
+    for k, (i, j) in enumerate(_ENTRIES):
+        out[..., i, j] = out[..., j, i] = voigt[..., k]
+    return out
+
+
+def _strains(modelisation, spec, coords, u, poisson, hooke=None):
     """(o, e, q, 3, 3) strain tensors and (e, q) weights w |J| (r)."""
     values, grads, weights = tabulated(spec.reference, spec.rigi)
     g, det = jacobians(coords, grads)
@@ -151,13 +173,28 @@ def _strains(modelisation, spec, coords, u, poisson):
         radius = np.einsum("qa,ea->eq", values, coords[..., 0])
         eps[..., 2, 2] = np.einsum("qa,oea->oeq", values, u[..., 0]) / radius[None]
         scale = scale * radius
+    elif modelisation == "C_PLAN" and hooke is not None:
+        # the out-of-plane strain that leaves sigma_zz = 0 (eps_zz is 0 in eps here)
+        coupling = hooke[:, 2, [0, 1, 3]] / hooke[:, 2, 2, None]
+        in_plane = np.stack([eps[..., 0, 0], eps[..., 1, 1], 2.0 * eps[..., 0, 1]], axis=-1)
+        eps[..., 2, 2] = -np.einsum("ek,oeqk->oeq", coupling, in_plane)
     elif modelisation == "C_PLAN":
         ratio = (poisson / (1.0 - poisson))[None, :, None]
         eps[..., 2, 2] = -ratio * (eps[..., 0, 0] + eps[..., 1, 1])
     return eps, scale
 
 
-def _stresses(modelisation, eps, young, poisson):
+def _stresses(modelisation, eps, young, poisson, hooke=None):
+    if hooke is not None:
+        if modelisation in PLANE_MODELISATIONS:
+            # plane strain and axisymmetry keep the 3D law on (xx, yy, zz, xy);
+            # plane stress condenses sigma_zz out
+            d = np.zeros_like(hooke)
+            d[:, :4, :4] = plane_hooke(hooke, modelisation)
+        else:
+            d = hooke
+        sig = np.einsum("eij,oeqj->oeqi", d, _voigt(eps))
+        return _tensor(sig)
     lam = (young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson)))[None, :, None]
     mu = (young / (2.0 * (1.0 + poisson)))[None, :, None]
     if modelisation == "C_PLAN":
@@ -182,7 +219,15 @@ ORDER_CHUNK = 8
 
 
 def solid_element_fields(
-    model, materials, numbering, cells, values, names, velocities=None, omega2=None
+    model,
+    materials,
+    numbering,
+    cells,
+    values,
+    names,
+    velocities=None,
+    omega2=None,
+    characteristics=None,
 ) -> dict[str, ElementField]:
     """The requested fields (names among SOLID_FIELDS but the _NOEU ones) on
     the solid cells ``cells`` for nodal values (n_orders, n_dofs), real or
@@ -199,7 +244,7 @@ def solid_element_fields(
     values = np.asarray(values)
     if np.iscomplexobj(values) or np.iscomplexobj(velocities):
         return _complex_fields(
-            model, materials, numbering, cells, values, names, velocities, omega2
+            model, materials, numbering, cells, values, names, velocities, omega2, characteristics
         )
     n_orders = values.shape[0]
     groups: dict[tuple, list[int]] = {}
@@ -223,15 +268,17 @@ def solid_element_fields(
         spec = specs[modelisation, kind]
         conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int)
         coords = mesh.coords[conn][..., :dim]
-        young, poisson, density = _material(materials, members, mesh)
+        young, poisson, density, hooke = _material(
+            materials, members, mesh, modelisation, characteristics
+        )
         to_nodes = gauss_to_nodes(spec.reference, spec.rigi)
         # a few orders at a time: the (orders, cells, points, 3, 3) tensors of
         # a long transient would otherwise be held all at once, several times
         for start in range(0, n_orders, ORDER_CHUNK):
             o = slice(start, min(start + ORDER_CHUNK, n_orders))
             u = _gather(numbering, conn, dim, values[o])
-            eps, scale = _strains(modelisation, spec, coords, u, poisson)
-            sig = _stresses(modelisation, eps, young, poisson)
+            eps, scale = _strains(modelisation, spec, coords, u, poisson, hooke)
+            sig = _stresses(modelisation, eps, young, poisson, hooke)
             q = scale.shape[1]
             density_of_energy = 0.5 * np.einsum("oeqij,oeqij->oeq", sig, eps)
             gauss["SIEF_ELGA"][o, rows, :q] = _components(sig, n_cmp)
@@ -281,7 +328,9 @@ def solid_element_fields(
     return out
 
 
-def _complex_fields(model, materials, numbering, cells, values, names, velocities, omega2):
+def _complex_fields(
+    model, materials, numbering, cells, values, names, velocities, omega2, characteristics
+):
     """Fields of complex states (a harmonic result), as code_aster computes
     them: the stresses and strains of the real and imaginary parts make a
     complex field, the energies are the sum of the parts' energies."""
@@ -298,6 +347,7 @@ def _complex_fields(model, materials, numbering, cells, values, names, velocitie
                 names,
                 speeds,
                 omega2,
+                characteristics,
             )
         )
     out = {}
