@@ -83,6 +83,11 @@ def log_run(ctx, problem: TransientProblem, result: RunResult) -> None:
         f"{info['archived']} archived, step {info['min_step']:.3g}"
         f"..{info['max_step']:.3g}, {info['integration_seconds']:.3f} s"
     )
+    if info.get("archive_on_disk"):
+        ctx.log(
+            f"archive of {info['archived']} instants past its memory budget: written to "
+            "disk while the loop ran, read from there (asterlite.dynamics.archive_store)"
+        )
     if problem.implicit:
         ctx.log(
             f"TRAITEMENT_NONL='IMPLICITE': {info['contact_switches']} contact switches, "

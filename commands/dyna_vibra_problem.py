@@ -248,12 +248,14 @@ OPTION_KEYWORDS = {
 
 def scheme_options(ctx, entry: Scheme, schema_kw) -> SchemeOptions:
     """SCHEMA_TEMPS's parameters of the scheme, and the behaviours of the
-    deck's code_aster version (asterlite.legacy.v15.OLD_BEHAVIOURS)."""
-    return options_from_schema(
+    deck's code_aster version (asterlite.legacy.v15.OLD_BEHAVIOURS); an
+    archive past its memory budget goes to the run's folder."""
+    options = options_from_schema(
         schema_kw,
         force_at_step_start=computes(ctx.session, "NEWMARK_FORCE_AT_STEP_START"),
         adapt_v11=entry.legacy_module is not None and computes(ctx.session, "ADAPT_ORDRE2_MDADAP"),
     )
+    return replace(options, archive_folder=getattr(ctx.session, "output_dir", None))
 
 
 def options_from_schema(

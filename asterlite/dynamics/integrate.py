@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import time as wallclock
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 
@@ -14,6 +15,7 @@ from asterlite.dynamics import adapt_control, compile_estimate, diagnosis
 from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics.archive_store import ArchiveStore, memory_budget
 from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.excitation import Excitation
 from asterlite.dynamics.forces import acceleration, total_force
@@ -64,9 +66,13 @@ class SchemeOptions:
     # asterlite.legacy.v15.OLD_BEHAVIOURS["ADAPT_ORDRE2_MDADAP"])
     adapt_v11: bool
     # asterlite's guards (no keyword): steps an adaptive run may take, bytes
-    # the archive may hold; None: StepBudget's own limits
+    # the archive may hold in memory (past them it goes to disk); None:
+    # StepBudget's own limit, archive_store.memory_budget
     max_steps: int | None = None
     max_archive_bytes: int | None = None
+    # where an archive past its memory budget is written (the run's folder;
+    # None: the system's temporary folder)
+    archive_folder: Path | None = None
 
 
 @dataclass
@@ -239,6 +245,11 @@ def run_kernel(
     budget = StepBudget(t0, t_end, dt, adaptive, options)
     row_bytes = 8 * (2 + 3 * n + shocks.count * shocks.vint_width + K.N_INFO)
     row_bytes += 8 * E.N_COLUMNS if energy else 0
+    # past its memory budget the archive is written out by chunks (archive_store)
+    resumable = not (options.adapt_v11 and entry.legacy_module is not None)
+    in_memory = min(memory_budget(options.max_archive_bytes), budget.archive_bytes)
+    store = ArchiveStore(row_bytes, in_memory, options.archive_folder, resumable)
+    capacity = store.first_capacity(capacity, 8 * max(n, shocks.count * shocks.vint_width))
     budget.check_archive(capacity, row_bytes, pas_arch, clock, counters)
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
@@ -263,6 +274,11 @@ def run_kernel(
                 clock, counters, state, memory, model, instants, pas_arch, eps, buffers, balance
             )
             if status == K.STATUS_FULL:
+                count = int(counters[K.K_ARCHIVED])
+                if store.write_out_when_full(buffers, count):
+                    store.write_out(buffers, balance, count)
+                    counters[K.K_ARCHIVED] = 0  # the loop fills the same buffers again
+                    continue
                 budget.check_archive(2 * len(buffers.times), row_bytes, pas_arch, clock, counters)
                 buffers = grow(buffers)
                 balance = E.grown(balance, len(buffers.times))
@@ -285,12 +301,16 @@ def run_kernel(
     if status != K.STATUS_DONE:
         failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
         if failed is None and status == K.STATUS_NOT_FINITE:
-            last = buffers.times[int(counters[K.K_ARCHIVED]) - 1]
+            held = int(counters[K.K_ARCHIVED])
+            last = buffers.times[held - 1] if held else store.last_time
             failed = nonfinite_error(state, clock, counters, last, model_parts, scheme)
         raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
-    count = counters[K.K_ARCHIVED]
-    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = (trimmed(b, count) for b in buffers)
+    count = int(counters[K.K_ARCHIVED])
+    archived, rows = store.finish(buffers, balance, count)
+    out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archived
     info = run_info(clock, counters, t0, dt, elapsed, adaptive)
+    info["archived"] = len(out_t)
+    info["archive_on_disk"] = store.on_disk
     info["compile_seconds"] = notice.seconds
     if implicit_loop is not None:
         ints = memory[EXTRA].ints
@@ -300,7 +320,6 @@ def run_kernel(
     if entry.frequency_control:
         kept = int(memory[SCALARS][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
-    rows = balance.rows[:count].copy() if energy else None
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
 
 
@@ -397,9 +416,11 @@ class StepBudget:
         )
 
     def check_archive(self, capacity: int, row_bytes: int, pas_arch: int, clock, counters):
-        """Refuse an archive of ``capacity`` instants beyond the memory limit:
-        before the run for the instants a fixed step will archive, during it
-        when the buffers of an adaptive run have to grow."""
+        """Refuse an archive of ``capacity`` instants beyond the memory limit
+        when its loop cannot write it out to disk (code_aster 10-12's
+        ADAPT_ORDRE2, the fluid film; the others never reach the limit:
+        archive_store): before the run for the instants a fixed step will
+        archive, during it when the buffers of an adaptive run have to grow."""
         needed = capacity * row_bytes
         if needed <= self.archive_bytes:
             return
@@ -436,16 +457,6 @@ def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | 
         "(PROL_GAUCHE/PROL_DROITE='EXCLU') or the local integration did not converge "
         f"({named('relation.max_iterations')}, {named('relation.tolerance')})"
     )
-
-
-def trimmed(buffer: np.ndarray, count: int) -> np.ndarray:
-    """The first ``count`` rows of an archive buffer: a view when they fill
-    most of it (a fixed step's archive is sized exactly: copying 10^5 rows
-    cost as much as the loop that wrote them), a copy when the buffer is
-    mostly empty (so that a grown buffer's unused half is freed)."""
-    if 2 * count >= len(buffer):
-        return buffer[:count]
-    return buffer[:count].copy()
 
 
 def grow(buffers):

@@ -1,0 +1,119 @@
+"""A modal transient's archive past its memory budget: written out to disk
+by chunks while the compiled loop runs (asterlite.dynamics.archive_store),
+with the numbers of the archive held in memory, bit for bit."""
+
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+import pytest
+
+from asterlite.dynamics import archive_store as AS
+from asterlite.dynamics.excitation import tabulate_excitation
+from asterlite.dynamics.integrate import integrate
+from asterlite.errors import NumericalError
+from tests.test_dynamics_specialised import N_MODES, small_shock_problem
+from tests.validated import scheme_options
+
+ARRAYS = ("times", "order", "depl", "vite", "acce", "vint", "step_info")
+
+
+def shock_run(scheme, max_archive_bytes=None, energy=False, tmp_path=None, t_end=0.1, dt=2.0e-5):
+    """The small CERCLE problem with friction (many impacts), ``scheme`` at
+    step ``dt`` archiving every 3rd step and at two instants."""
+    system, shocks, vectors = small_shock_problem()
+    loads = [(vectors[0], _Harmonic()), (vectors[1], _Harmonic(0.3))]
+    excitation = tabulate_excitation(N_MODES, loads, 0.0, t_end, dt / 2.0)
+    options = scheme_options(scheme, max_archive_bytes=max_archive_bytes, archive_folder=tmp_path)
+    q0, v0 = np.full(N_MODES, 2.0e-4), np.zeros(N_MODES)
+    instants = np.array([0.0123, 0.05001])
+    return integrate(
+        system, shocks, excitation, scheme, q0, v0, 0.0, t_end, dt, instants, 3, options,
+        energy=energy,
+    )  # fmt: skip
+
+
+class _Harmonic:
+    """A multiplier known by ``evaluate`` (sampled by windows)."""
+
+    def __init__(self, phase=0.0):
+        self.phase = phase
+
+    def evaluate(self, t):
+        return 0.5 * np.sin(190.0 * np.asarray(t) + self.phase)
+
+
+def assert_identical(on_disk, in_memory):
+    for name in ARRAYS:
+        np.testing.assert_array_equal(getattr(on_disk, name), getattr(in_memory, name), name)
+        assert getattr(on_disk, name).dtype == getattr(in_memory, name).dtype
+    if in_memory.energy is not None:
+        np.testing.assert_array_equal(on_disk.energy, in_memory.energy)
+    for key in ("steps", "archived", "rejected_steps", "min_step", "max_step"):
+        assert on_disk.info[key] == in_memory.info[key], key
+
+
+def test_a_fixed_step_archive_past_its_budget_is_written_out_bit_for_bit(tmp_path, monkeypatch):
+    """DIFF_CENTRE with the energy balance: the archive of ~1700 instants
+    goes to disk from the start, by chunks of 40 kB (many write-outs)."""
+    in_memory = shock_run("DIFF_CENTRE", energy=True)
+    assert in_memory.info["archive_on_disk"] is False
+    row_bytes = 8 * (2 + 3 * N_MODES + in_memory.vint[0].size + 2 + in_memory.energy.shape[1])
+    budget = 40_000
+    assert in_memory.info["archived"] * row_bytes > 10 * budget
+    written = []
+    write_out = AS.ArchiveStore.write_out
+
+    def counted(store, buffers, balance, count):
+        written.append((len(buffers.times), count))
+        write_out(store, buffers, balance, count)
+
+    monkeypatch.setattr(AS.ArchiveStore, "write_out", counted)
+    on_disk = shock_run("DIFF_CENTRE", budget, energy=True, tmp_path=tmp_path / "run")
+    chunk = budget // row_bytes
+    assert len(written) > 10 and all(size == chunk for size, _ in written)  # never grown
+    assert sum(count for _, count in written) == on_disk.info["archived"]
+    assert on_disk.info["archive_on_disk"] is True
+    assert isinstance(on_disk.depl, np.memmap) and isinstance(on_disk.vint, np.memmap)
+    fn = on_disk.vint[:, 0, 0]
+    assert (fn > 0).any() and (fn == 0).any()  # impacts and flights
+    assert_identical(on_disk, in_memory)
+    assert (tmp_path / "run").is_dir()  # the files are unnamed: nothing left in the folder
+    assert not any((tmp_path / "run").iterdir())
+
+
+def test_an_adaptive_archive_goes_to_disk_when_it_would_pass_its_budget():
+    """RUNGE_KUTTA_32 archives into buffers that double from 4096 rows: past
+    the budget they are written out instead, the run goes on unchanged."""
+    in_memory = shock_run("RUNGE_KUTTA_32", t_end=0.6)
+    assert in_memory.info["archived"] > 4096
+    row_bytes = in_memory.depl[0].nbytes * 3 + in_memory.vint[0].nbytes + 32
+    on_disk = shock_run("RUNGE_KUTTA_32", 4096 * row_bytes + 1, t_end=0.6)
+    assert on_disk.info["archive_on_disk"] is True
+    assert_identical(on_disk, in_memory)
+
+
+def test_an_archive_that_would_not_fit_the_disk_is_refused(monkeypatch):
+    usage = namedtuple("usage", "total used free")
+    monkeypatch.setattr(AS.shutil, "disk_usage", lambda folder: usage(10**6, 10**6, 10_000))
+    with pytest.raises(NumericalError, match="archive disk space.*GB free.*archive less often"):
+        shock_run("DIFF_CENTRE", 40_000)
+
+
+def test_an_archive_file_past_the_runs_output_limit_is_refused(monkeypatch):
+    """A run's files are capped at its output limit (the runner's
+    RLIMIT_FSIZE): an archive whose largest file would pass it is refused
+    before the loop starts, not stopped by the system midway."""
+    infinity = AS.resource.RLIM_INFINITY
+    monkeypatch.setattr(AS.resource, "getrlimit", lambda which: (50_000, infinity))
+    with pytest.raises(NumericalError, match="archive file size.*output limit"):
+        shock_run("DIFF_CENTRE", 40_000)
+
+
+def test_the_memory_budget_is_a_share_of_the_runs_memory_limit(monkeypatch):
+    monkeypatch.setattr(AS.watchdog, "memory_limit_mb", lambda: 1024.0)
+    assert AS.memory_budget(None) == 256 * 1024**2
+    assert AS.memory_budget(1000) == 1000
+    monkeypatch.setattr(AS.watchdog, "memory_limit_mb", lambda: None)
+    assert AS.memory_budget(None) == AS.UNLIMITED_RUN_BYTES
