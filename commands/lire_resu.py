@@ -30,7 +30,12 @@ from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.transient import DynaTrans
 from asterlite.fem.dofs import sort_components
-from asterlite.io.ideas_result import IdeasReadError, read_datasets_55, record_field
+from asterlite.io.ideas_result import (
+    IdeasReadError,
+    fortran_float,
+    read_datasets_55,
+    record_field,
+)
 from asterlite.io.med_result import MedResultError, read_nodal_field
 from asterlite.io.med_writer import med_field_name
 from asterlite.post.restitution import as_tuple
@@ -276,7 +281,7 @@ def _read_ideas(ctx, kw):
                 continue
             try:
                 order = int(record_field(dataset["records"], *occ["POSI_ORDRE"]))
-                value = float(record_field(dataset["records"], *position).replace("D", "E"))
+                value = fortran_float(record_field(dataset["records"], *position))
                 if kind == "MODE_MECA":
                     mode_parameters[order] = _ideas_mode_parameters(occ, dataset["records"])
             except (IdeasReadError, ValueError) as exc:
@@ -331,8 +336,8 @@ def _ideas_mode_parameters(occ, records) -> dict[str, float]:
         ("POSI_AMOR_GENE", "AMOR_REDUIT"),
     ):
         position = occ.get(key)
-        text = record_field(records, *position).replace("D", "E") if position else "0"
-        out[name] = int(float(text)) if name == "NUME_MODE" else float(text)
+        value = fortran_float(record_field(records, *position)) if position else 0.0
+        out[name] = int(value) if name == "NUME_MODE" else value
     return out
 
 

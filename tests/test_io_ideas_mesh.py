@@ -4,6 +4,7 @@ type-sorted cells, group naming rules, colour groups, refusals."""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -16,6 +17,7 @@ from asterlite.io.ideas_mesh import (
     group_name,
     parse_ideas_mesh,
 )
+from asterlite.io.ideas_result import fortran_float
 from tests.test_fem_support import FakeSession, run
 
 WIDER = Path(__file__).resolve().parent.parent.parent / "shared" / "aster-corpus-wider"
@@ -215,3 +217,10 @@ def test_corpus_universal_files(deck, nodes, groups):
         assert [mesh.node_names[i] for i in mesh.node_groups[name]] == members
     # the file's 0.9999999999999962E-01 as the converter writes it (1PE21.14)
     assert mesh.coords[1, 0] == float("9.99999999999996E-02")
+
+
+def test_fortran_reals_without_exponent_letter():
+    assert fortran_float(" 1.5D+02") == 150.0 and fortran_float("-2.5E-03") == -0.0025
+    assert fortran_float("0.12345-102") == 0.12345e-102
+    # code_aster's largest real, written rounded up, is read as the largest real
+    assert fortran_float("0.17977+309") == sys.float_info.max

@@ -23,6 +23,10 @@ position (RECORD_6, POSI_ORDRE, POSI_FREQ...).
 
 from __future__ import annotations
 
+import math
+import re
+import sys
+
 import numpy as np
 
 SLOTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
@@ -141,7 +145,7 @@ def read_datasets_55(path) -> list[dict]:
             while len(values) < count:
                 text = lines[i]
                 values.extend(
-                    float(text[13 * k : 13 * (k + 1)].replace("D", "E"))
+                    fortran_float(text[13 * k : 13 * (k + 1)])
                     for k in range(per_line)
                     if text[13 * k : 13 * (k + 1)].strip()
                 )
@@ -157,6 +161,23 @@ def read_datasets_55(path) -> list[dict]:
             }
         )
     return out
+
+
+_NO_EXPONENT_LETTER = re.compile(r"^([+-]?[0-9.]+)([+-][0-9]+)$")
+
+
+def fortran_float(text: str) -> float:
+    """A real as Fortran writes it: ``1.5D+02``, or ``0.17977+309`` where a
+    three-digit exponent leaves no room for the letter. The largest real,
+    rounded up when written (code_aster's R8MAEM), reads as the largest real."""
+    text = text.strip().replace("D", "E").replace("d", "e")
+    match = _NO_EXPONENT_LETTER.match(text)
+    if match:
+        text = f"{match.group(1)}E{match.group(2)}"
+    value = float(text)
+    if math.isinf(value) and "inf" not in text.lower():
+        return math.copysign(sys.float_info.max, value)
+    return value
 
 
 def record_field(records, record: int, field: int) -> str:
