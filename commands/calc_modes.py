@@ -58,6 +58,13 @@ def run(ctx, kw):
         omega2, vecs = select_modes(pencil, option, freq, nmax or 10, _method(kw))
     except (EigenError, ConstraintError) as exc:
         ctx.error(str(exc), "OPTION", kw)
+    if pencil.last_solve:
+        how = pencil.last_solve
+        detail = f" ({how['solves']} solves, basis of {how['dimension']})" if "solves" in how else ""
+        ctx.log(
+            f"{pencil.n} unknowns: {how['method']} on a {how['backend'].upper()} "
+            f"factorisation of K - σM{detail}"
+        )
     if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
         omega2, vecs = omega2[: calc_freq["NMAX_FREQ"]], vecs[:, : calc_freq["NMAX_FREQ"]]
     check_found(ctx, kw, omega2.size)

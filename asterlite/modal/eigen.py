@@ -6,7 +6,12 @@ and the reduced pencil (Tᵀ K T, Tᵀ M T) is solved:
 - small problems (``n <= DENSE_LIMIT``) densely, through a Cholesky factor
   of K - σM so that a singular mass (massless DOFs) is harmless;
 - larger ones with ARPACK in shift-invert mode (``scipy.sparse.linalg.eigsh``),
-  so only K - σM is factorised and the matrices stay sparse.
+  so only K - σM is factorised (SuperLU) and the matrices stay sparse;
+- large ones (``asterlite.fem.sparse_direct.LARGE_LIMIT`` unknowns and more,
+  when MUMPS is installed: the ``large`` extra) factorise K - σM with MUMPS
+  and iterate with the block Lanczos method (``asterlite.modal.block_lanczos``),
+  which solves blocks of right-hand sides at once; ARPACK on the same factor
+  takes over if the Lanczos basis would grow past its bound.
 
 Selections mirror CALC_MODES: the smallest / largest n, the n nearest a
 frequency (CENTRE), one mode nearest each given frequency (PROCHE), every
@@ -22,7 +27,9 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from asterlite.fem import sparse_direct
 from asterlite.fem.constraints import Elimination
+from asterlite.modal import block_lanczos
 
 DENSE_LIMIT = 400
 TWO_PI = 2.0 * np.pi
@@ -121,6 +128,51 @@ def _shift_invert(k, m, sigma: float, count: int, lu=None):
     return vals, vecs
 
 
+def _large_factor(k, m, sigma: float):
+    """MUMPS factor of K - σM (sparse_direct), or an EigenError."""
+    try:
+        return sparse_direct.factorize_symmetric((k - sigma * m).tocsc(), backend="mumps")
+    except sparse_direct.SingularFactorError as exc:
+        raise EigenError(f"K - σM is singular at σ = {sigma:g} ({exc})") from None
+
+
+def _large_smallest_shift(k, m):
+    """(σ, MUMPS factor of K - σM) for the lowest modes, as ``_smallest_shift``
+    decides: σ = 0 when K factorises without a pivot below 1e-11 of its scale
+    (K itself, not a rounded K - σM: the lowest eigenvalues keep every digit),
+    else a tiny negative shift over the rigid-body modes."""
+    try:
+        factor = sparse_direct.factorize_symmetric(
+            k.tocsc(), backend="mumps", null_pivot_threshold=1e-11
+        )
+        if factor.null_pivots == 0:
+            return 0.0, factor
+        factor.close()
+    except sparse_direct.SingularFactorError:
+        pass
+    sigma = _default_shift(k, m, 1e-8)
+    return sigma, _large_factor(k, m, sigma)
+
+
+def _large_shift_invert(k, m, sigma: float, count: int, factor=None):
+    """``count`` eigenpairs nearest σ: block Lanczos on a MUMPS factor of
+    K - σM, ARPACK on the same factor when the Lanczos basis reaches its
+    bound. Returns (values, vectors, how: a dict for the log)."""
+    n = k.shape[0]
+    count = min(count, n - 1)
+    if count <= 0:
+        return np.zeros(0), np.zeros((n, 0)), {}
+    if factor is None:
+        factor = _large_factor(k, m, sigma)
+    try:
+        vals, vecs, stats = block_lanczos.shift_invert_lanczos(m, factor.solve, sigma, count)
+        return vals, vecs, {"method": "block Lanczos", "backend": factor.backend, **stats}
+    except block_lanczos.LanczosNotConverged:
+        op_inv = spla.LinearOperator((n, n), matvec=factor.solve, dtype=float)
+        vals, vecs = spla.eigsh(k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv)
+        return vals, vecs, {"method": "ARPACK", "backend": factor.backend}
+
+
 def _scale_exponent(matrix) -> int:
     """0, or the exponent e of a power of two 2**e bringing the matrix's
     largest entry near 1 when it is far from it."""
@@ -169,10 +221,18 @@ class ReducedPencil:
         # for a method that decides it (None: the solver's own)
         self.equal_eigenvalue_basis = None
         self._all = None
+        # how the last sparse solve went (method, factorisation back end, ...)
+        self.last_solve: dict = {}
 
     @property
     def dense(self) -> bool:
         return self.n <= DENSE_LIMIT
+
+    @property
+    def large(self) -> bool:
+        """Solved by MUMPS and block Lanczos (sparse_direct decides by size
+        and by what is installed)."""
+        return not self.dense and sparse_direct.choose_backend(self.n) == "mumps"
 
     def all_modes(self):
         if self._all is None:
@@ -208,7 +268,12 @@ class ReducedPencil:
             order = np.argsort(np.abs(vals - sigma), kind="stable")[:count]
             return vals[order], vecs[:, order]
         k, m = self._solver_k, self._solver_m
-        vals, vecs = _shift_invert(k, m, self._solver_shift(sigma), count)
+        if self.large:
+            vals, vecs, self.last_solve = _large_shift_invert(
+                k, m, self._solver_shift(sigma), count
+            )
+        else:
+            vals, vecs = _shift_invert(k, m, self._solver_shift(sigma), count)
         vals = self._omega2(vals)
         order = np.argsort(np.abs(vals - sigma), kind="stable")
         return self._settled(vals[order], vecs[:, order])
@@ -218,8 +283,12 @@ class ReducedPencil:
             vals, vecs = self.all_modes()
             return vals[:count], vecs[:, :count]
         k, m = self._solver_k, self._solver_m
-        sigma, lu = _smallest_shift(k, m)
-        vals, vecs = _shift_invert(k, m, sigma, count, lu)
+        if self.large:
+            sigma, factor = _large_smallest_shift(k, m)
+            vals, vecs, self.last_solve = _large_shift_invert(k, m, sigma, count, factor)
+        else:
+            sigma, lu = _smallest_shift(k, m)
+            vals, vecs = _shift_invert(k, m, sigma, count, lu)
         vals = self._omega2(vals)
         order = np.argsort(vals, kind="stable")
         return self._settled(vals[order], vecs[:, order])
