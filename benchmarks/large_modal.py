@@ -3,8 +3,9 @@
 The clamped HEXA8 bar of ``solid_modal.py`` (10 x 1 x 1, steel), cut into
 NX x NY x NZ cells, to its 50 lowest modes (CALC_MODES PLUS_PETITE). Each
 size runs as its own `asterlite run` process; the table gives its wall time,
-the time of CALC_MODES, its peak resident memory (the child's ru_maxrss, from
-wait4), the eigen solver message.log names, and the first frequency.
+its CPU time (all threads), the time of CALC_MODES, its peak resident memory
+(the child's ru_maxrss, from wait4), the eigen solver message.log names, and
+the first frequency.
 
     python benchmarks/large_modal.py                      # 10k, 25k, 50k, 98k DOFs
     python benchmarks/large_modal.py 100x17x17            # the 98 172-DOF bar only
@@ -80,6 +81,9 @@ def run_one(cells, n_modes: int, solver: str) -> dict:
         "wall": wall,
         "calc_modes": seconds if seconds is not None else (float(calc.group(1)) if calc else None),
         "peak_mb": usage.ru_maxrss / 1024.0,
+        # CPU seconds of the child (every thread): on a machine loaded by
+        # other work, wall time stretches, CPU time much less
+        "cpu": usage.ru_utime + usage.ru_stime,
         "how": how,
         "first": first,
         "tail": "" if child.returncode == 0 else output[-2000:],
@@ -98,13 +102,17 @@ def main() -> None:
         f"{os.cpu_count()} CPUs, Python {platform.python_version()}, "
         f"load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}, solver {args.solver}"
     )
-    print(f"{'cells':>10} {'DOFs':>7} {'wall s':>7} {'CALC_MODES s':>12} {'peak MB':>8}  solver")
+    print(
+        f"{'cells':>10} {'DOFs':>7} {'wall s':>7} {'CPU s':>6} {'CALC_MODES s':>12} "
+        f"{'peak MB':>8}  solver"
+    )
     for size in args.sizes:
         cells = tuple(int(c) for c in size.lower().split("x"))
         row = run_one(cells, args.modes, args.solver)
         calc = f"{row['calc_modes']:.1f}" if row["calc_modes"] is not None else "?"
         print(
-            f"{row['cells']:>10} {row['dofs']:>7} {row['wall']:>7.1f} {calc:>12} "
+            f"{row['cells']:>10} {row['dofs']:>7} {row['wall']:>7.1f} {row['cpu']:>6.1f} "
+            f"{calc:>12} "
             f"{row['peak_mb']:>8.0f}  {row['how'] or '(SuperLU + ARPACK)'}",
             flush=True,
         )

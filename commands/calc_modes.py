@@ -6,6 +6,8 @@ import numpy as np
 
 from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
 from asterlite.concepts.modes import GeneralizedMatrix
+from asterlite.extras import install_hint
+from asterlite.fem import sparse_direct
 from asterlite.fem.constraints import ConstraintError
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.buckling import critical_loads, select_critical
@@ -60,10 +62,16 @@ def run(ctx, kw):
         ctx.error(str(exc), "OPTION", kw)
     if pencil.last_solve:
         how = pencil.last_solve
-        detail = f" ({how['solves']} solves, basis of {how['dimension']})" if "solves" in how else ""
+        detail = f"{how['solves']} solves, basis of {how['dimension']}, " if "solves" in how else ""
         ctx.log(
             f"{pencil.n} unknowns: {how['method']} on a {how['backend'].upper()} "
-            f"factorisation of K - σM{detail}"
+            f"factorisation of K - σM ({detail}factorisation {how['factor_seconds']:.1f} s, "
+            f"iterations {how['iteration_seconds']:.1f} s)"
+        )
+    elif pencil.n >= sparse_direct.LARGE_LIMIT and not sparse_direct.mumps_available():
+        ctx.log(
+            f"{pencil.n} unknowns solved with SuperLU and ARPACK: "
+            f"{install_hint('large')} (MUMPS) is faster and leaner on large models"
         )
     if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
         omega2, vecs = omega2[: calc_freq["NMAX_FREQ"]], vecs[:, : calc_freq["NMAX_FREQ"]]

@@ -47,9 +47,7 @@ def mumps_available() -> bool:
 def requested_backend() -> str:
     name = os.environ.get("ASTERLITE_SPARSE_SOLVER", "auto").strip().lower() or "auto"
     if name not in ("auto",) + BACKENDS:
-        raise ValueError(
-            f"ASTERLITE_SPARSE_SOLVER={name!r}: expected auto, " + ", ".join(BACKENDS)
-        )
+        raise ValueError(f"ASTERLITE_SPARSE_SOLVER={name!r}: expected auto, " + ", ".join(BACKENDS))
     return name
 
 
@@ -81,6 +79,9 @@ class SuperLUFactor:
     @property
     def lu(self):
         return self._lu
+
+    def close(self) -> None:
+        self._lu = None
 
     negative_pivots = None
 
@@ -119,15 +120,13 @@ class MumpsFactor:
         return self._context.solve(b, overwrite_b=True)
 
     def close(self) -> None:
-        context, self._context = self._context, None
-        if context is not None and context.mumps_instance is not None:
-            context.__exit__(None, None, None)
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:  # interpreter shutdown: the module may be gone
-            pass
+        """Free MUMPS's factor now. Only references are dropped: the wrapper's
+        own deallocation terminates the instance (JOB = -2) once.
+        ``mumps.Context.__exit__`` must not be used: in python-mumps 0.0.4 it
+        sets JOB on the Python object, not on the instance, so it repeats the
+        last job, a solve into the right-hand side of the last call, long
+        freed (heap corruption: forma12c crashed or got wrong modes)."""
+        self._context = None
 
 
 def factorize_symmetric(matrix, backend: str | None = None, **options):

@@ -1,0 +1,146 @@
+"""Large modal solves: MUMPS factors (asterlite.fem.sparse_direct) and the
+block shift-invert Lanczos method (asterlite.modal.block_lanczos), checked
+against dense LAPACK and against the SuperLU + ARPACK path on a CALC_MODES
+deck. MUMPS comes with the ``large`` extra (python-mumps, built on Debian's
+libmumps-seq-dev); without it these tests skip, except in CI (``CI=true``),
+where .ci/run installs it."""
+
+from __future__ import annotations
+
+import os
+import re
+
+import numpy as np
+import pytest
+import scipy.linalg as sla
+import scipy.sparse as sp
+
+from asterlite.fem import sparse_direct
+from asterlite.modal import block_lanczos
+from asterlite.runtime.runner import run_deck
+from tests.solid_meshes import aster_mesh_text, box_mesh, with_side_faces
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _needs_mumps():
+    if sparse_direct.mumps_available():
+        return
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail("CI: python-mumps is missing (.ci/run installs the large extra)")
+    pytest.skip("python-mumps is not installed (the large extra)")
+
+
+def _grid_pencil(nx: int, ny: int):
+    """Stiffness and mass of a square membrane grid, fixed edges: a 2D
+    Laplacian, whose eigenvalues on a square grid come in equal pairs."""
+    lap_x = sp.diags([-1.0, 2.0, -1.0], [-1, 0, 1], shape=(nx, nx))
+    lap_y = sp.diags([-1.0, 2.0, -1.0], [-1, 0, 1], shape=(ny, ny))
+    k = sp.kron(lap_x, sp.eye(ny)) + sp.kron(sp.eye(nx), lap_y)
+    rng = np.random.default_rng(3)
+    m = sp.diags(1.0 + 0.0 * rng.random(nx * ny))
+    return sp.csc_matrix(k), sp.csc_matrix(m)
+
+
+def test_mumps_solves_blocks_and_counts_negative_pivots():
+    k, m = _grid_pencil(12, 12)
+    dense = k.toarray()
+    eigenvalues = np.linalg.eigvalsh(dense)
+    assert eigenvalues[10] - eigenvalues[9] > 1e-3  # σ between two distinct values
+    sigma = 0.5 * (eigenvalues[9] + eigenvalues[10])
+    shifted = sp.csc_matrix(k - sigma * m)
+    factor = sparse_direct.factorize_symmetric(shifted, backend="mumps")
+    rhs = np.random.default_rng(0).standard_normal((k.shape[0], 5))
+    x = factor.solve(rhs)
+    np.testing.assert_allclose(shifted @ x, rhs, atol=1e-10)
+    np.testing.assert_allclose(factor.solve(rhs[:, 0]), x[:, 0], atol=1e-12)
+    # the inertia of K - σM: as many negative pivots as eigenvalues below σ
+    assert factor.negative_pivots == int(np.sum(eigenvalues < sigma)) == 10
+
+
+def test_closing_a_mumps_factor_leaves_the_last_solution_alone():
+    # python-mumps 0.0.4's Context.__exit__ repeats the last job (a solve into
+    # the last right-hand side, which is the returned solution): close() must
+    # not call it (it corrupted freed memory: forma12c crashed)
+    k, _ = _grid_pencil(8, 8)
+    factor = sparse_direct.factorize_symmetric(k, backend="mumps")
+    x = factor.solve(np.ones((k.shape[0], 3)))
+    kept = x.copy()
+    factor.close()
+    np.testing.assert_array_equal(x, kept)
+    for _ in range(20):  # factors made and dropped in a loop stay sound
+        other = sparse_direct.factorize_symmetric(k, backend="mumps")
+        np.testing.assert_allclose(k @ other.solve(np.ones(k.shape[0])), 1.0, atol=1e-10)
+        del other
+
+
+def test_a_singular_matrix_is_refused_by_name():
+    k, _ = _grid_pencil(5, 5)
+    singular = sp.csc_matrix(sp.block_diag([k, sp.csc_matrix((2, 2))]))
+    with pytest.raises(sparse_direct.SingularFactorError, match="MUMPS"):
+        sparse_direct.factorize_symmetric(singular, backend="mumps")
+
+
+@pytest.mark.parametrize("sigma_index", [None, 30])
+def test_block_lanczos_matches_lapack_with_double_eigenvalues(sigma_index):
+    k, m = _grid_pencil(20, 20)
+    reference = sla.eigh(k.toarray(), m.toarray(), eigvals_only=True)
+    sigma = 0.0
+    if sigma_index is not None:  # inside the spectrum, midway in a gap (not at a double value)
+        gap = sigma_index + int(np.argmax(np.diff(reference[sigma_index:]) > 1e-3))
+        sigma = 0.5 * (reference[gap] + reference[gap + 1])
+    factor = sparse_direct.factorize_symmetric(sp.csc_matrix(k - sigma * m), backend="mumps")
+    count = 24
+    values, vectors, stats = block_lanczos.shift_invert_lanczos(m, factor.solve, sigma, count)
+    nearest = reference[np.argsort(np.abs(reference - sigma), kind="stable")[:count]]
+    np.testing.assert_allclose(np.sort(values), np.sort(nearest), rtol=1e-11)
+    # M-orthonormal eigenvectors with small residuals
+    np.testing.assert_allclose(vectors.T @ (m @ vectors), np.eye(count), atol=1e-9)
+    residual = k @ vectors - (m @ vectors) * values
+    assert np.linalg.norm(residual, axis=0).max() < 1e-8 * np.abs(values).max()
+    assert stats["block"] >= 2 and stats["solves"] >= count
+
+
+BAR_DECK = """DEBUT()
+mesh = LIRE_MAILLAGE(FORMAT="ASTER", UNITE=20)
+model = AFFE_MODELE(MAILLAGE=mesh, AFFE=_F(TOUT="OUI", PHENOMENE="MECANIQUE", MODELISATION="3D"))
+steel = DEFI_MATERIAU(ELAS=_F(E=2.1e11, NU=0.3, RHO=7800.0))
+chmat = AFFE_MATERIAU(MAILLAGE=mesh, AFFE=_F(TOUT="OUI", MATER=steel))
+clamp = AFFE_CHAR_MECA(MODELE=model, DDL_IMPO=_F(GROUP_MA="CLAMP", DX=0.0, DY=0.0, DZ=0.0))
+ASSEMBLAGE(MODELE=model, CHAM_MATER=chmat, CHARGE=clamp, NUME_DDL=CO("nume"),
+           MATR_ASSE=(_F(MATRICE=CO("rigi"), OPTION="RIGI_MECA"),
+                      _F(MATRICE=CO("mass"), OPTION="MASS_MECA")))
+low = CALC_MODES(MATR_RIGI=rigi, MATR_MASS=mass, OPTION="PLUS_PETITE",
+                 CALC_FREQ=_F(NMAX_FREQ=20))
+centre = CALC_MODES(MATR_RIGI=rigi, MATR_MASS=mass, OPTION="CENTRE",
+                    CALC_FREQ=_F(FREQ=900.0, NMAX_FREQ=6))
+band = CALC_MODES(MATR_RIGI=rigi, MATR_MASS=mass, OPTION="BANDE",
+                  CALC_FREQ=_F(FREQ=(300.0, 1500.0)))
+FIN()
+"""
+
+
+def _bar_frequencies(folder, solver, monkeypatch):
+    folder.mkdir()
+    mesh = with_side_faces(box_mesh("HEXA8", (12, 3, 3), (10.0, 1.0, 1.0)), {"CLAMP": (0, 0.0)})
+    (folder / "bar.mail").write_text(aster_mesh_text(mesh))
+    (folder / "bar.comm").write_text(BAR_DECK)
+    (folder / "bar.export").write_text("F comm bar.comm D 1\nF mail bar.mail D 20\n")
+    monkeypatch.setenv("ASTERLITE_SPARSE_SOLVER", solver)
+    report = run_deck(folder / "bar.export", folder / "out")
+    assert report.status == "DONE", report.message
+    log = (folder / "out" / "message.log").read_text()
+    blocks = re.split(r"\nCALC_MODES", log)[1:]
+    modes = [
+        np.array([float(f) for f in re.findall(r"mode +\d+ +(\S+) Hz", block)]) for block in blocks
+    ]
+    return modes, log
+
+
+def test_calc_modes_on_mumps_equals_superlu_and_arpack(tmp_path, monkeypatch):
+    large, log = _bar_frequencies(tmp_path / "mumps", "mumps", monkeypatch)
+    small, old_log = _bar_frequencies(tmp_path / "superlu", "superlu", monkeypatch)
+    assert log.count("block Lanczos on a MUMPS factorisation") == 3
+    assert "MUMPS" not in old_log
+    assert [len(f) for f in large] == [20, 6, len(small[2])] and len(small[2]) > 6
+    for new, old in zip(large, small, strict=True):
+        np.testing.assert_allclose(new, old, rtol=1e-9)
