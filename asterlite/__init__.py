@@ -22,7 +22,7 @@ From Python (``docs/api.md``): ``asterlite.run(deck, output=None, **variables)``
 (and ``asterlite check``) stays free of numpy and numba.
 """
 
-__version__ = "0.1.0"
+from asterlite.version import __version__
 
 # the Python API, loaded from asterlite.api when first asked for
 _API = ("run", "check", "load", "sample", "RunResult", "CheckResult", "Check", "DeckNotFound")

@@ -50,6 +50,7 @@ def _run(args) -> int:
             output_limit=args.output_limit,
             aster_version=args.aster_version,
             result_paths=args.allow_result_paths,
+            keep_previous=args.keep_previous,
         )
     except stops.RunInterrupted as interrupt:  # came once the result was written
         if interrupt.report is None:
@@ -329,6 +330,17 @@ def _warmup(args) -> int:
     return warmup.main(jobs=args.jobs, verbose=args.verbose)
 
 
+def _count_option(text: str) -> int:
+    """A whole number >= 0 (argparse type)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = -1
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a count (a whole number >= 0)")
+    return value
+
+
 def _limit_option(name: str):
     """An argparse type: a finite number >= 0 up to the limit's maximum
     (``--time-limit inf`` or ``nan`` is a usage error, exit status 2)."""
@@ -399,6 +411,21 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="write the export's R-line results at their own paths, as code_aster does "
         "(default: into the output folder; never over the deck, its inputs or the run's files)",
+    )
+    previous = run.add_mutually_exclusive_group()
+    previous.add_argument(
+        "--keep-previous",
+        type=_count_option,
+        metavar="N",
+        help="earlier results a rerun keeps under OUTDIR/previous-*/, most recent first "
+        "(default 3; older ones asterlite made are deleted)",
+    )
+    previous.add_argument(
+        "--no-previous",
+        dest="keep_previous",
+        action="store_const",
+        const=0,
+        help="keep no earlier result: a rerun deletes what the earlier run wrote",
     )
     run.set_defaults(handler=_run)
 

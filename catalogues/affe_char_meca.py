@@ -6,7 +6,7 @@ AFFE_CHAR_MECA_F, where the values are functions instead of reals.
 
 from asterlite.catalogues.common import OUI_NON, group_ma, group_no, noeud, tout
 
-from asterlite.catalog import AU_MOINS_UN, EXCLUS, FACT, OPER, SIMP, UN_PARMI
+from asterlite.catalog import AU_MOINS_UN, BLOC, EXCLUS, FACT, OPER, SIMP, UN_PARMI, equal_to
 
 # degrees of freedom a mechanical model may carry (the common subset of code_aster's list)
 DDL_MECANIQUE = (
@@ -252,6 +252,68 @@ def mechanical_loads(value_type) -> dict:
     )
 
 
+# the options of code_aster's LIAISON_ELEM, each with its own keywords
+LIAISON_ELEM = FACT(
+    statut="f",
+    max="**",
+    fr="Connect a beam node to a face of a solid, a shell edge or a pipe",
+    OPTION=SIMP(
+        statut="o",
+        typ="TXM",
+        into=(
+            "3D_TUYAU",
+            "COQ_3D",
+            "3D_POU",
+            "3D_POU_ARLEQUIN",
+            "2D_POU",
+            "COQ_POU",
+            "COQ_TUYAU",
+            "PLAQ_POUT_ORTH",
+        ),
+    ),  # fmt: skip
+    b_3d_pou=BLOC(
+        condition=equal_to("OPTION", ("3D_POU", "2D_POU")),
+        regles=(UN_PARMI("GROUP_NO_2", "GROUP_MA_2"),),
+        GROUP_MA_1=group_ma(),
+        GROUP_NO_2=SIMP(statut="f", typ="grno"),
+        GROUP_MA_2=SIMP(statut="f", typ="grma"),
+        ANGL_MAX=SIMP(statut="f", typ="R", defaut=1.0),
+    ),
+    b_coq_3d=BLOC(
+        condition=equal_to("OPTION", "COQ_3D"),
+        GROUP_MA_COQUE=SIMP(statut="o", typ="grma"),
+        GROUP_MA_MASSIF=SIMP(statut="o", typ="grma"),
+        CARA_ELEM=SIMP(statut="o", typ="cara_elem"),
+        COEF_RIGI_DRZ=SIMP(statut="f", typ="R", defaut=1.0e-05),
+    ),
+    b_3d_pou_arlequin=BLOC(
+        condition=equal_to("OPTION", "3D_POU_ARLEQUIN"),
+        GROUP_MA_1=group_ma(),
+        GROUP_MA_2=group_ma(),
+        CARA_ELEM=SIMP(statut="o", typ="cara_elem"),
+        CHAM_MATER=SIMP(statut="o", typ="cham_mater"),
+    ),
+    b_coq_pou_tuy=BLOC(
+        condition=equal_to("OPTION", ("COQ_POU", "COQ_TUYAU", "3D_TUYAU")),
+        GROUP_MA_1=group_ma(),
+        GROUP_NO_2=SIMP(statut="f", typ="grno"),
+        CARA_ELEM=SIMP(statut="o", typ="cara_elem"),
+        AXE_POUTRE=SIMP(statut="o", typ="R", max=3),
+        b_3d_tuyau=BLOC(
+            condition=equal_to("OPTION", "3D_TUYAU"),
+            ANGL_MAX=SIMP(statut="f", typ="R", defaut=1.0),
+        ),
+    ),
+    b_plaq_pout_orth=BLOC(
+        condition=equal_to("OPTION", "PLAQ_POUT_ORTH"),
+        GROUP_MA_1=group_ma(),
+        GROUP_NO_2=SIMP(statut="f", typ="grno"),
+        ANGL_MAX=SIMP(statut="f", typ="R", defaut=1.0),
+        VERIF_EXCENT=SIMP(statut="f", typ="TXM", defaut="OUI", into=OUI_NON),
+    ),
+)
+
+
 AFFE_CHAR_MECA = OPER(
     nom="AFFE_CHAR_MECA",
     sd_prod="char_meca",
@@ -269,6 +331,8 @@ AFFE_CHAR_MECA = OPER(
             "LIAISON_GROUP",
             "LIAISON_SOLIDE",
             "LIAISON_UNIF",
+            "LIAISON_ELEM",
+            "LIAISON_CHAMNO",
             "VECT_ASSE",
             "FORCE_NODALE",
             "FORCE_FACE",
@@ -286,6 +350,14 @@ AFFE_CHAR_MECA = OPER(
     CARA_ELEM=SIMP(statut="f", typ="cara_elem"),
     CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
     DOUBLE_LAGRANGE=SIMP(statut="f", typ="TXM", into=OUI_NON, defaut="OUI"),
+    LIAISON_ELEM=LIAISON_ELEM,
+    LIAISON_CHAMNO=FACT(
+        statut="f",
+        max=1,
+        fr="One relation whose coefficients are the values of a nodal field",
+        CHAM_NO=SIMP(statut="o", typ="cham_no_sdaster"),
+        COEF_IMPO=SIMP(statut="o", typ="R"),
+    ),
     PESANTEUR=FACT(
         statut="f",
         fr="Gravity",

@@ -3,7 +3,7 @@
 from asterlite.catalogues.affe_char_meca import mechanical_loads
 from asterlite.catalogues.common import OUI_NON
 
-from asterlite.catalog import AU_MOINS_UN, OPER, SIMP
+from asterlite.catalog import AU_MOINS_UN, BLOC, FACT, OPER, SIMP, exists
 
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
 
@@ -30,6 +30,7 @@ AFFE_CHAR_MECA_F = OPER(
             "PRES_REP",
             "PRE_EPSI",
             "FORCE_POUTRE",
+            "ONDE_PLANE",
         ),
     ),  # fmt: skip
     VERI_NORM=SIMP(statut="f", typ="TXM", defaut="OUI", into=OUI_NON),
@@ -37,4 +38,19 @@ AFFE_CHAR_MECA_F = OPER(
     DOUBLE_LAGRANGE=SIMP(statut="f", typ="TXM", into=OUI_NON, defaut="OUI"),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
     **mechanical_loads(FONCTION),
+    ONDE_PLANE=FACT(
+        statut="f",
+        max=1,
+        fr="Seismic plane wave on paraxial boundaries (3D_ABSO, D_PLAN_ABSO)",
+        DIRECTION=SIMP(statut="o", typ="R", min=3, max=3),
+        COOR_SOURCE=SIMP(statut="f", typ="R", min=2, max=3),
+        c_reflection=BLOC(
+            condition=exists("COOR_SOURCE"),
+            COOR_REFLECHI=SIMP(statut="f", typ="R", min=2, max=3),
+        ),
+        TYPE_ONDE=SIMP(statut="o", typ="TXM", into=("S", "P", "SV", "SH")),
+        FONC_SIGNAL=SIMP(statut="o", typ=FONCTION),
+        DEPL_IMPO=SIMP(statut="f", typ=FONCTION),
+        GROUP_MA=SIMP(statut="f", typ="grma", max="**"),
+    ),
 )

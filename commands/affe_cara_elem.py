@@ -1,6 +1,6 @@
 """AFFE_CARA_ELEM: discrete element matrices (DISCRET, DISCRET_2D), beam and
-bar sections (POUTRE, BARRE) and orientations; other keywords are kept for
-the rooms that compute them."""
+bar sections (POUTRE, BARRE), plate thicknesses (COQUE) and orientations;
+other keywords are kept for the rooms that compute them."""
 
 from __future__ import annotations
 
@@ -11,7 +11,12 @@ from asterlite.fem.beam import BeamError, seg2_angles
 from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS
 from asterlite.fem.frames import angles_from_x_and_y
-from asterlite.fem.sections import SectionError, cara_dict, section_properties
+from asterlite.fem.sections import (
+    SectionError,
+    cara_dict,
+    section_properties,
+    uniform_varying_section,
+)
 from asterlite.fem.selection import as_scalar, as_tuple, select_cells
 
 _BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
@@ -65,7 +70,10 @@ def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
                 ctx.error(f"cell {name} carries no element of the model", "GROUP_MA", occ)
             if modelisation not in DISCRETE_MODELISATIONS:
                 ctx.error(f"cell {name} is a {modelisation} element, not a discrete", "CARA", occ)
-            if modelisation != wanted:
+            # a point mass (M_T_D_N, M_T_D_L: one value) means the same to 2D and 3D
+            # elements, and code_aster gives it under either keyword (vafcar)
+            same_meaning = cara in ("M_T_D_N", "M_T_D_L") and modelisation.endswith("DIS_T")
+            if modelisation != wanted and not same_meaning:
                 ctx.error(
                     f"{cara} needs {wanted} elements but cell {name} is {modelisation}",
                     "CARA",
@@ -130,14 +138,19 @@ def _poutre(ctx, model, result, occ) -> None:
     if section == "COUDE":
         ctx.unsupported("POUTRE SECTION='COUDE' (elbow elements)", "SECTION", occ)
     vari = occ.get("VARI_SECT", "CONSTANT")
-    if vari != "CONSTANT":
-        ctx.unsupported(f"POUTRE VARI_SECT={vari!r} (tapered beams)", "VARI_SECT", occ)
     if occ.get("TABLE_CARA") is not None:
         ctx.unsupported("POUTRE TABLE_CARA (sections from a table)", "TABLE_CARA", occ)
     if occ.get("FCX") is not None:
         ctx.unsupported("POUTRE FCX (wind load function)", "FCX", occ)
     try:
-        props = section_properties(section, cara_dict(occ["CARA"], occ["VALE"]), vari)
+        cara = cara_dict(occ["CARA"], occ["VALE"])
+        if vari != "CONSTANT":
+            # equal start and end values: the constant section, exactly
+            cara = uniform_varying_section(section, vari, cara)
+            if cara is None:
+                what = f"POUTRE VARI_SECT={vari!r} with different start and end (tapered beams)"
+                ctx.unsupported(what, "VARI_SECT", occ)
+        props = section_properties(section, cara)
     except SectionError as exc:
         ctx.error(str(exc), "CARA", occ)
     cells = select_cells(ctx, occ, model.mesh)
@@ -168,9 +181,62 @@ def _barre(ctx, model, result, occ) -> None:
         result.sections[int(cell)] = dict(props)
 
 
+def _coque(ctx, model, result, occ) -> None:
+    """Plate characteristics of DKT cells: thickness, the DRZ stiffness
+    coefficient, rotary inertia, offset. The stress-output frame (ANGL_REP, VECTEUR),
+    the layer count and the shear coefficient of thick plates (A_CIS) change
+    no matrix of a thin isotropic plate."""
+    if occ.get("EPAIS_FO") is not None:
+        ctx.unsupported("COQUE EPAIS_FO (thickness given by a function)", "EPAIS_FO", occ)
+    if occ.get("EXCENTREMENT_FO") is not None:
+        ctx.unsupported(
+            "COQUE EXCENTREMENT_FO (offset given by a function)", "EXCENTREMENT_FO", occ
+        )
+    offset_given = occ.get("EXCENTREMENT") is not None
+    offset = float(occ.get("EXCENTREMENT") or 0.0)
+    if occ.get("MODI_METRIQUE", "NON") == "OUI":
+        ctx.unsupported("COQUE MODI_METRIQUE='OUI' (COQUE_3D)", "MODI_METRIQUE", occ)
+    thickness = float(occ["EPAIS"])
+    if not thickness > 0.0:
+        ctx.error(f"EPAIS must be > 0, got {thickness}", "EPAIS", occ)
+    for no_effect in ("ANGL_REP", "VECTEUR", "A_CIS", "COQUE_NCOU"):
+        occ.get(no_effect)
+    values = {
+        "EPAIS": thickness,
+        "COEF_RIGI_DRZ": float(occ.get("COEF_RIGI_DRZ", 1.0e-5)),
+        # EXCENTREMENT implies INER_ROTA='OUI' (code_aster's rule)
+        "INER_ROTA": 1.0 if occ.get("INER_ROTA") == "OUI" or offset_given else 0.0,
+        "EXCENTREMENT": offset,
+    }
+    if values["COEF_RIGI_DRZ"] < 0.0:
+        ctx.unsupported("COQUE COEF_RIGI_DRZ < 0 (drilling rotations)", "COEF_RIGI_DRZ", occ)
+    for cell in select_cells(ctx, occ, model.mesh):
+        result.shells[int(cell)] = dict(values)
+
+
+def _verify_cells(ctx, model, kw) -> None:
+    """VERIF='MAILLE': code_aster checks that every cell of an occurrence
+    carries an element of the keyword's family (the checks of DISCRET,
+    DISCRET_2D, POUTRE and BARRE asterlite always makes; ORIENTATION: beams and
+    discretes), and stops when one does not."""
+    if "MAILLE" not in as_tuple(kw.get("VERIF")):
+        return
+    for occ in kw.factor("ORIENTATION"):
+        cells = select_cells(ctx, occ, model.mesh)
+        _check_cells(ctx, model, cells, _BEAMS + DISCRETE_MODELISATIONS, "ORIENTATION", occ)
+    others = [k for k in _OTHER_KEYWORDS if k not in ("POUTRE", "BARRE") and kw.get(k)]
+    if others:
+        ctx.unsupported(
+            f"VERIF='MAILLE' with {', '.join(others)} (cells of those element families)",
+            "VERIF",
+            kw,
+        )
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     result = ElementCharacteristics(model=model)
+    _verify_cells(ctx, model, kw)
     # orientations first: DISCRET ... REPERE='LOCAL' uses them whatever the order
     for occ in kw.factor("ORIENTATION"):
         _orientation(ctx, model, result, occ)
@@ -182,6 +248,8 @@ def run(ctx, kw):
         _poutre(ctx, model, result, occ)
     for occ in kw.factor("BARRE"):
         _barre(ctx, model, result, occ)
+    for occ in kw.factor("COQUE"):
+        _coque(ctx, model, result, occ)
     for keyword in _OTHER_KEYWORDS:
         if kw.get(keyword):
             result.extra[keyword] = kw.factor(keyword)

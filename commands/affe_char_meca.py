@@ -1,6 +1,8 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE) and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE,
-PRES_REP, FORCE_INTERNE on 3D solids) on a model."""
+LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP,
+FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
+FORCE_INTERNE on the surfaces of plane models) on a model."""
 
 from __future__ import annotations
 
@@ -22,11 +24,16 @@ _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 _BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
 
 
-def _ddl_impo(ctx, model, components, load, occ) -> None:
+def constant_value(raw, node: int, key: str) -> float:
+    """A value of AFFE_CHAR_MECA (AFFE_CHAR_MECA_F gives functions of the node)."""
+    return float(raw)
+
+
+def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> None:
     mesh = model.mesh
     everywhere = occ.get("TOUT") == "OUI"
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
-    imposed = {c: float(occ[c]) for c in _DDL_COMPONENTS if occ.get(c) is not None}
+    imposed = {c: occ[c] for c in _DDL_COMPONENTS if occ.get(c) is not None}
     given = {c for c in _DDL_COMPONENTS if occ.get(c) is not None}
     optional: set[str] = set()
     if occ.get("LIAISON") == "ENCASTRE":
@@ -57,7 +64,8 @@ def _ddl_impo(ctx, model, components, load, occ) -> None:
                     comp,
                     occ,
                 )
-            load.relations.append(LinearRelation([(int(node), comp, 1.0)], value))
+            imposed_value = value_at(value, int(node), comp)
+            load.relations.append(LinearRelation([(int(node), comp, 1.0)], imposed_value))
             applied += 1
         if applied == 0 and comp not in optional:
             ctx.error(f"no node of the selection carries {comp}", comp, occ)
@@ -155,44 +163,270 @@ def _liaison_solide(ctx, model, components, load, occ) -> None:
     ctx.unsupported("LIAISON_SOLIDE on nodes without rotation DOFs", "GROUP_NO", occ)
 
 
-def _force_poutre(ctx, model, load, occ) -> None:
+def _face_impo(ctx, model, components, load, occ) -> None:
+    """Components imposed on every node of the faces (edges in 2D), and DNOR
+    (DTAN in 2D): u . n = value with n the mean unit normal at the node, as
+    code_aster's cafaci/canort build them."""
+    from asterlite.fem.elements import ElementError
+    from asterlite.fem.node_normals import node_normals
+    from asterlite.fem.skin import is_plane
+
+    mesh = model.mesh
+    cells = [int(c) for c in cell_group_members(ctx, occ, mesh, "GROUP_MA")]
+    # a plane model's skin is made of edges (its mesh may have a constant Z)
+    edges = all(mesh.cell_types[c] in ("SEG2", "SEG3") for c in cells)
+    dim = 2 if model.dim == 2 or (edges and is_plane(mesh)) else 3
+    excluded_cells = set()
+    if occ.get("SANS_GROUP_MA"):
+        excluded_cells = {int(c) for c in cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")}
+        cells = [c for c in cells if c not in excluded_cells]
+    excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
+    if excluded_cells:
+        excluded |= set(mesh.nodes_of_cells(sorted(excluded_cells)))
+    nodes = [int(n) for n in sorted(set(mesh.nodes_of_cells(cells))) if int(n) not in excluded]
+    if not nodes:
+        ctx.error("FACE_IMPO: no node left on the faces", "GROUP_MA", occ)
+    translations = ("DX", "DY", "DZ")[:dim]
+    for key in ("DNOR", "DTAN"):
+        if occ.get(key) is None:
+            continue
+        if key == "DTAN" and dim == 3:
+            ctx.error("DTAN is defined on edges of plane models only (code_aster)", key, occ)
+        try:
+            vectors = node_normals(mesh, cells, nodes, dim, tangent=key == "DTAN", log=ctx.log)
+        except ElementError as exc:
+            ctx.error(str(exc), key, occ)
+        for node, vector in zip(nodes, vectors, strict=True):
+            carried = components.get(node, ())
+            if not all(c in carried for c in translations):
+                ctx.error(f"node {mesh.node_names[node]} has no {translations} DOFs", key, occ)
+            terms = [(node, c, float(v)) for c, v in zip(translations, vector, strict=True) if v]
+            load.relations.append(LinearRelation(terms, float(occ[key])))
+    for comp in _DDL_COMPONENTS + ("PRES", "PHI", "TEMP"):
+        if occ.get(comp) is None:
+            continue
+        applied = 0
+        for node in nodes:
+            if comp in components.get(node, ()):
+                load.relations.append(LinearRelation([(node, comp, 1.0)], float(occ[comp])))
+                applied += 1
+        if applied == 0:
+            ctx.error(f"no node of the faces carries {comp}", comp, occ)
+
+
+def _group_side(ctx, occ, mesh, side: str) -> list[int]:
+    """The nodes of GROUP_NO_<side> or of the cells of GROUP_MA_<side>, in order."""
+    if occ.get(f"GROUP_NO_{side}"):
+        nodes = node_group_members(ctx, occ, mesh, f"GROUP_NO_{side}")
+    else:
+        cells = cell_group_members(ctx, occ, mesh, f"GROUP_MA_{side}")
+        nodes = mesh.nodes_of_cells(cells).tolist()
+    return [int(n) for n in dict.fromkeys(nodes)]
+
+
+def _paired_nodes(ctx, occ, mesh) -> list[tuple[int, int]]:
+    """code_aster's pairing (pacoap): each node of list 1, moved by ANGL_NAUT
+    about CENTRE then TRAN, takes the nearest node of list 2; the lists have
+    the same length and no node of list 2 may be taken twice."""
+    from asterlite.fem.frames import rotation_from_angles
+
+    first, second = _group_side(ctx, occ, mesh, "1"), _group_side(ctx, occ, mesh, "2")
+    if len(first) != len(second):
+        ctx.error(
+            f"LIAISON_GROUP pairs {len(first)} nodes with {len(second)}: the lists must "
+            "have the same length",
+            "GROUP_NO_2" if occ.get("GROUP_NO_2") else "GROUP_MA_2",
+            occ,
+        )
+    vector = {}
+    for key in ("TRAN", "CENTRE"):
+        given = np.asarray(as_tuple(occ.get(key) or (0.0, 0.0, 0.0)), dtype=float)
+        vector[key] = np.pad(given, (0, 3 - given.size))
+    angles = np.asarray(as_tuple(occ.get("ANGL_NAUT") or (0.0, 0.0, 0.0)), dtype=float)
+    rotation = rotation_from_angles(np.radians(np.pad(angles, (0, 3 - angles.size))))
+    moved = (mesh.coords[first] - vector["CENTRE"]) @ rotation + vector["CENTRE"] + vector["TRAN"]
+    targets = mesh.coords[second]
+    pairs, taken = [], {}
+    for node, x in zip(first, moved, strict=True):
+        nearest = second[int(np.argmin(np.sum((targets - x) ** 2, axis=1)))]
+        if nearest in taken:
+            names = mesh.node_names
+            ctx.error(
+                f"LIAISON_GROUP: nodes {names[taken[nearest]]} and {names[node]} both face "
+                f"node {names[nearest]}",
+                "GROUP_NO_1" if occ.get("GROUP_NO_1") else "GROUP_MA_1",
+                occ,
+            )
+        taken[nearest] = node
+        pairs.append((node, nearest))
+    return pairs
+
+
+def _liaison_group(ctx, model, components, load, occ) -> None:
+    """sum_k COEF_MULT_1[k] u1[DDL_1[k]] + sum_k COEF_MULT_2[k] u2[DDL_2[k]] = COEF_IMPO
+    for each pair of nodes (code_aster's caliag); DNOR refused."""
+    mesh = model.mesh
+    sides = {}
+    for side in ("1", "2"):
+        ddl = as_tuple(occ[f"DDL_{side}"])
+        coefs = as_tuple(occ[f"COEF_MULT_{side}"])
+        if len(ddl) != len(coefs):
+            ctx.error(f"DDL_{side} and COEF_MULT_{side} differ in length", f"DDL_{side}", occ)
+        if "DNOR" in ddl:
+            ctx.unsupported("LIAISON_GROUP DDL_1/DDL_2='DNOR'", f"DDL_{side}", occ)
+        sides[side] = list(zip(ddl, (float(c) for c in coefs), strict=True))
+    excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
+    for node_1, node_2 in _paired_nodes(ctx, occ, mesh):
+        if node_1 in excluded or node_2 in excluded:
+            continue
+        terms = []
+        for node, side in ((node_1, "1"), (node_2, "2")):
+            for comp, coef in sides[side]:
+                if comp not in components.get(node, ()):
+                    ctx.error(
+                        f"node {mesh.node_names[node]} has no {comp} DOF in this model",
+                        f"DDL_{side}",
+                        occ,
+                    )
+                terms.append((node, comp, coef))
+        load.relations.append(LinearRelation(terms, float(occ["COEF_IMPO"])))
+
+
+def _liaison_chamno(ctx, model, components, load, occ) -> None:
+    """sum over the field's non-zero values v_i u_i = COEF_IMPO (code_aster's calich)."""
+    field = occ["CHAM_NO"]
+    numbering = field.numbering
+    values = np.asarray(field.values, dtype=float)
+    terms = []
+    mesh = model.mesh
+    for row in np.flatnonzero(values):
+        node, comp = numbering.dofs[int(row)]
+        if numbering.mesh is not mesh:
+            ctx.error("CHAM_NO is not on the mesh of the model", "CHAM_NO", occ)
+        if comp not in components.get(int(node), ()):
+            ctx.error(
+                f"node {mesh.node_names[node]} has no {comp} DOF in this model", "CHAM_NO", occ
+            )
+        terms.append((int(node), comp, float(values[row])))
+    if not terms:
+        ctx.error("CHAM_NO holds no non-zero value: no relation to write", "CHAM_NO", occ)
+    load.relations.append(LinearRelation(terms, float(occ["COEF_IMPO"])))
+
+
+def _liaison_elem(ctx, model, components, load, occ) -> None:
+    """OPTION='3D_POU': the beam node follows the mean motion of the solid's
+    face (asterlite.fem.solid_beam_link); the other options are refused."""
+    from asterlite.fem.elements import ElementError
+    from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
+
+    option = occ["OPTION"]
+    if option != "3D_POU":
+        ctx.unsupported(f"LIAISON_ELEM OPTION={option!r}", "OPTION", occ)
+    mesh = model.mesh
+    faces = cell_group_members(ctx, occ, mesh, "GROUP_MA_1")
+    if occ.get("GROUP_NO_2"):
+        beam = node_group_members(ctx, occ, mesh, "GROUP_NO_2")
+    else:
+        beam = sorted(set(mesh.nodes_of_cells(cell_group_members(ctx, occ, mesh, "GROUP_MA_2"))))
+    where = "GROUP_NO_2" if occ.get("GROUP_NO_2") else "GROUP_MA_2"
+    if len(beam) != 1:
+        ctx.error(f"LIAISON_ELEM 3D_POU needs one beam node, {len(beam)} given", where, occ)
+    beam_node = int(beam[0])
+    missing = [c for c in _ENCASTRE if c not in components.get(beam_node, ())]
+    if missing:
+        name = mesh.node_names[beam_node]
+        ctx.error(f"beam node {name} carries no {', '.join(missing)} in this model", where, occ)
+    try:
+        section = face_section(mesh, faces)
+    except ElementError as exc:
+        ctx.error(str(exc), "GROUP_MA_1", occ)
+    for node in section.nodes:
+        carried = components.get(int(node), ())
+        if any(r in carried for r in ("DRX", "DRY", "DRZ")):
+            ctx.error(
+                f"face node {mesh.node_names[node]} carries rotations: 3D_POU links the "
+                "faces of a solid (nodes with DX, DY, DZ only)",
+                "GROUP_MA_1",
+                occ,
+            )
+        if not all(c in carried for c in ("DX", "DY", "DZ")):
+            ctx.error(
+                f"face node {mesh.node_names[node]} is not in the 3D model", "GROUP_MA_1", occ
+            )
+    _warn_link_geometry(ctx, mesh, faces, section, beam_node, float(occ["ANGL_MAX"]))
+    for terms, rhs in solid_beam_relations(section, beam_node):
+        load.relations.append(LinearRelation(terms, rhs))
+
+
+def _warn_link_geometry(ctx, mesh, faces, section, beam_node, angle_max) -> None:
+    """code_aster's alarms: faces not plane within ANGL_MAX degrees, beam node
+    farther than 1 % of the equivalent radius from the centroid."""
+    normals = []
+    for cell in faces:
+        x = mesh.coords[list(mesh.cell_nodes[cell][:3])]
+        n = np.cross(x[1] - x[0], x[2] - x[0])
+        normals.append(n / np.linalg.norm(n))
+    cosines = np.clip(np.abs(np.asarray(normals) @ normals[0]), -1.0, 1.0)
+    worst = float(np.degrees(np.arccos(cosines.min())))
+    if worst > angle_max:
+        ctx.log(f"alarm: LIAISON_ELEM faces are not plane: normals {worst:.3g} degrees apart")
+    radius = np.sqrt(section.area / np.pi)
+    offset = float(np.linalg.norm(mesh.coords[beam_node] - section.centroid))
+    if offset > 1.0e-2 * radius:
+        ctx.log(
+            f"alarm: LIAISON_ELEM beam node {mesh.node_names[beam_node]} is {offset:.4g} "
+            f"from the centroid {section.centroid.tolist()} of the faces"
+        )
+
+
+_BEAM_LOAD_GLOBAL = ("FX", "FY", "FZ", "MX", "MY", "MZ")
+_BEAM_LOAD_LOCAL = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
+_BEAM_LOADED = ("POU_D_E", "POU_D_T", "BARRE")
+
+
+def beam_load_cells(ctx, model, occ) -> np.ndarray:
+    """The beam (and bar) cells of a FORCE_POUTRE occurrence; with TOUT='OUI'
+    the other cells of the model are left out, otherwise they are an error."""
     if occ.get("TYPE_CHARGE", "FORCE") != "FORCE":
         ctx.unsupported("FORCE_POUTRE TYPE_CHARGE='VENT'", "TYPE_CHARGE", occ)
-    global_keys = ("FX", "FY", "FZ", "MX", "MY", "MZ")
-    local_keys = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
-    given_global = {k: float(occ[k]) for k in global_keys if occ.get(k) is not None}
-    given_local = {k: float(occ[k]) for k in local_keys if occ.get(k) is not None}
-    if given_global and given_local:
-        ctx.error("FORCE_POUTRE mixes global (FX...) and local (N, VY...) components", None, occ)
     cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    kept = []
     for cell in cells:
-        if model.cell_modelisation.get(int(cell)) not in ("POU_D_E", "POU_D_T", "BARRE"):
-            if occ.get("TOUT") == "OUI":
-                continue
+        if model.cell_modelisation.get(int(cell)) in _BEAM_LOADED:
+            kept.append(int(cell))
+        elif occ.get("TOUT") != "OUI":
             ctx.error(
                 f"FORCE_POUTRE on cell {model.mesh.cell_names[cell]}, which is not a beam",
                 "GROUP_MA",
                 occ,
             )
-    cells = np.array(
-        [
-            c
-            for c in cells
-            if model.cell_modelisation.get(int(c)) in ("POU_D_E", "POU_D_T", "BARRE")
-        ],
-        dtype=int,
-    )
+    return np.array(kept, dtype=int)
+
+
+def beam_load_keys(ctx, occ) -> tuple[tuple[str, ...], bool]:
+    """The component names of the occurrence's frame, and whether it is local."""
+    given_global = [k for k in _BEAM_LOAD_GLOBAL if occ.get(k) is not None]
+    given_local = [k for k in _BEAM_LOAD_LOCAL if occ.get(k) is not None]
+    if given_global and given_local:
+        ctx.error("FORCE_POUTRE mixes global (FX...) and local (N, VY...) components", None, occ)
+    return (_BEAM_LOAD_LOCAL, True) if given_local else (_BEAM_LOAD_GLOBAL, False)
+
+
+def _force_poutre(ctx, model, load, occ) -> None:
+    keys, local = beam_load_keys(ctx, occ)
+    values = {k: float(occ[k]) for k in keys if occ.get(k) is not None}
+    cells = beam_load_cells(ctx, model, occ)
     load.extra.setdefault("FORCE_POUTRE", []).append(
-        {"CELLS": cells, "VALUES": given_local or given_global, "LOCAL": bool(given_local)}
+        {"CELLS": cells, "VALUES": values, "LOCAL": local}
     )
 
 
-def _force_nodale(ctx, model, components, load, occ) -> None:
+def _force_nodale(ctx, model, components, load, occ, value_at=constant_value) -> None:
     mesh = model.mesh
     if occ.get("ANGL_NAUT") is not None:
         ctx.unsupported("FORCE_NODALE with ANGL_NAUT", "ANGL_NAUT", occ)
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
-    given = {k: float(occ[k]) for k in _FORCE_COMPONENTS if occ.get(k) is not None}
+    given = {k: occ[k] for k in _FORCE_COMPONENTS if occ.get(k) is not None}
     if not given:
         ctx.error("no force component is given", None, occ)
     for key, value in given.items():
@@ -200,23 +434,31 @@ def _force_nodale(ctx, model, components, load, occ) -> None:
         for node in nodes:
             if comp not in components.get(int(node), ()):
                 ctx.error(f"node {mesh.node_names[node]} has no {comp} DOF in this model", key, occ)
-            load.nodal_forces.append((int(node), comp, value))
+            load.nodal_forces.append((int(node), comp, value_at(value, int(node), key)))
 
 
 def _cells_of_3d_model(ctx, model, occ, kinds, what: str) -> np.ndarray:
     """Cells of the occurrence that the model carries with MODELISATION='3D'
     and whose type is among ``kinds`` (faces for surface loads, volumes for
     volume loads); TOUT='OUI' takes those of the whole model."""
+    return _cells_carrying(ctx, model, occ, {"3D": kinds}, what)
+
+
+def _cells_carrying(ctx, model, occ, accepted: dict, what: str) -> np.ndarray:
+    """Cells of the occurrence whose modelisation is a key of ``accepted`` and
+    whose type is among its value; TOUT='OUI' takes those of the whole model."""
     mesh = model.mesh
     everywhere = occ.get("TOUT") == "OUI"
     cells = select_cells(ctx, occ, mesh, all_cells=sorted(model.cell_modelisation))
     kept = []
     for cell in cells:
-        carried = model.cell_modelisation.get(int(cell)) == "3D"
-        if carried and mesh.cell_types[cell] in kinds:
+        modelisation = model.cell_modelisation.get(int(cell))
+        if modelisation in accepted and mesh.cell_types[cell] in accepted[modelisation]:
             kept.append(int(cell))
         elif not everywhere:
-            state = "not in the model" if not carried else f"a {mesh.cell_types[cell]} cell"
+            state = (
+                "not in the model" if modelisation is None else f"a {mesh.cell_types[cell]} cell"
+            )
             ctx.error(f"{what} on cell {mesh.cell_names[cell]}, which is {state}", "GROUP_MA", occ)
     if not kept:
         ctx.error(f"{what}: no cell of the model can carry it", "GROUP_MA", occ)
@@ -243,32 +485,67 @@ def _check_outward(ctx, model, faces, occ) -> None:
 
 
 def _solid_loads(ctx, model, load, kw) -> None:
-    """FORCE_FACE, PRES_REP (faces of 3D models) and FORCE_INTERNE (volumes)."""
+    """FORCE_FACE, PRES_REP (faces of 3D models, edges of plane ones),
+    FORCE_CONTOUR (edges of plane models) and FORCE_INTERNE (volumes, plane
+    surfaces)."""
+    from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
     from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
+    edges = dict.fromkeys(PLANE_MODELISATIONS, EDGE_CELLS)
+    surfaces = {name: tuple(surface_cells(name)) for name in PLANE_MODELISATIONS}
+    plane = any(m in PLANE_MODELISATIONS for m in model.cell_modelisation.values())
     for occ in kw.factor("FORCE_FACE"):
         force = [float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")]
         cells = _cells_of_3d_model(ctx, model, occ, FACE_CELLS, "FORCE_FACE")
         load.extra.setdefault("FORCE_FACE", []).append({"CELLS": cells, "FORCE": force})
     for occ in kw.factor("PRES_REP"):
-        if occ.get("CISA_2D") is not None:
-            ctx.unsupported("PRES_REP CISA_2D (edges of plane models)", "CISA_2D", occ)
-        cells = _cells_of_3d_model(ctx, model, occ, FACE_CELLS, "PRES_REP")
-        if kw.get("VERI_NORM", "OUI") == "OUI":
-            _check_outward(ctx, model, cells, occ)
-        load.extra.setdefault("PRES_REP", []).append(
-            {"CELLS": cells, "PRES": float(occ.get("PRES") or 0.0)}
-        )
+        pressure = float(occ.get("PRES") or 0.0)
+        shear = occ.get("CISA_2D")
+        accepted = {"3D": FACE_CELLS, **edges}
+        cells = _cells_carrying(ctx, model, occ, accepted, "PRES_REP")
+        on_edges = np.array([model.cell_modelisation[c] != "3D" for c in cells], dtype=bool)
+        if shear is not None and not on_edges.all():
+            ctx.error("CISA_2D applies to edges of plane models only", "CISA_2D", occ)
+        if (~on_edges).any():
+            faces = cells[~on_edges]
+            if kw.get("VERI_NORM", "OUI") == "OUI":
+                _check_outward(ctx, model, faces, occ)
+            load.extra.setdefault("PRES_REP", []).append({"CELLS": faces, "PRES": pressure})
+        if on_edges.any():
+            load.extra.setdefault("PRES_REP_2D", []).append(
+                {"CELLS": cells[on_edges], "PRES": pressure, "CISA_2D": float(shear or 0.0)}
+            )
+    for occ in kw.factor("FORCE_CONTOUR"):
+        if not plane:
+            ctx.error("FORCE_CONTOUR applies to edges of plane models", "GROUP_MA", occ)
+        if any(occ.get(k) for k in ("FZ", "MX", "MY", "MZ")):
+            ctx.unsupported("FORCE_CONTOUR FZ, MX, MY, MZ (shell contours)", "FZ", occ)
+        force = [float(occ.get(k) or 0.0) for k in ("FX", "FY")]
+        cells = _cells_carrying(ctx, model, occ, edges, "FORCE_CONTOUR")
+        load.extra.setdefault("FORCE_CONTOUR", []).append({"CELLS": cells, "FORCE": force})
     for occ in kw.factor("FORCE_INTERNE"):
         force = [float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")]
-        cells = _cells_of_3d_model(ctx, model, occ, VOLUME_CELLS, "FORCE_INTERNE")
-        load.extra.setdefault("FORCE_INTERNE", []).append({"CELLS": cells, "FORCE": force})
+        accepted = {"3D": VOLUME_CELLS, **surfaces}
+        cells = _cells_carrying(ctx, model, occ, accepted, "FORCE_INTERNE")
+        flat = np.array([model.cell_modelisation[c] != "3D" for c in cells], dtype=bool)
+        if (~flat).any():
+            load.extra.setdefault("FORCE_INTERNE", []).append(
+                {"CELLS": cells[~flat], "FORCE": force}
+            )
+        if flat.any():
+            load.extra.setdefault("FORCE_INTERNE_2D", []).append(
+                {"CELLS": cells[flat], "FORCE": force[:2]}
+            )
 
 
 def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
     load = MechanicalLoad(model=model)
+    if not kw.factor("PRES_REP"):
+        # VERI_NORM checks the faces of loads along their normal (PRES_REP here):
+        # without them code_aster has nothing to check
+        kw.mark_used("VERI_NORM")
     for occ in kw.factor("DDL_IMPO"):
         _ddl_impo(ctx, model, components, load, occ)
     for occ in kw.factor("LIAISON_DDL"):
@@ -281,6 +558,14 @@ def run(ctx, kw):
         _liaison_solide(ctx, model, components, load, occ)
     for occ in kw.factor("FORCE_POUTRE"):
         _force_poutre(ctx, model, load, occ)
+    for occ in kw.factor("LIAISON_ELEM"):
+        _liaison_elem(ctx, model, components, load, occ)
+    for occ in kw.factor("FACE_IMPO"):
+        _face_impo(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_GROUP"):
+        _liaison_group(ctx, model, components, load, occ)
+    for occ in kw.factor("LIAISON_CHAMNO"):
+        _liaison_chamno(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]

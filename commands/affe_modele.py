@@ -32,6 +32,25 @@ def run(ctx, kw):
                     model.cell_modelisation[int(cell)] = modelisation
     if not model.cell_modelisation and not model.node_modelisation:
         ctx.error("no element was assigned: check the cell types and MODELISATION", "AFFE", kw)
+    if any(m == "AXIS" for m in model.cell_modelisation.values()):
+        from asterlite.fem.jacobian_check import negative_radius_nodes
+
+        negative = negative_radius_nodes(model)
+        if negative:
+            node, cell = negative[0]
+            ctx.error(
+                f"AXIS cell {mesh.cell_names[cell]} has node {mesh.node_names[node]} at "
+                f"x = {mesh.coords[node, 0]:g} < 0 (x is the radius): {len(negative)} such nodes",
+                "AFFE",
+                kw,
+            )
+    if kw.get("VERI_JACOBIEN", "OUI") == "OUI":
+        from asterlite.fem.jacobian_check import folded_cells
+
+        folded = folded_cells(model)
+        if folded:
+            names = ", ".join(mesh.cell_names[c] for c in folded[:10])
+            ctx.log(f"warning: the Jacobian changes sign inside {len(folded)} cells ({names})")
     counts: dict[str, int] = {}
     for m in model.cell_modelisation.values():
         counts[m] = counts.get(m, 0) + 1

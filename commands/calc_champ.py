@@ -1,6 +1,8 @@
 """CALC_CHAMP: beam internal forces and stresses of a result (EFGE_ELNO,
-SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing) and user
-fields (CHAM_UTIL).
+SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing), the
+stresses, strains and energies of 3D and plane solids (SIEF_ELGA, SIGM_ELNO,
+EPSI_ELGA/ELNO, ENEL_ELGA/ELNO, EPOT_ELEM, ECIN_ELEM, _NOEU;
+:mod:`asterlite.fem.solid_fields`) and user fields (CHAM_UTIL).
 
 The fields are computed at every order of the result from its DEPL field
 (mode shapes for a mode_meca), plus the element inertia forces M_e a_e from
@@ -28,6 +30,7 @@ from asterlite.fem.element_fields import (
 )
 from asterlite.fem.elements import ElementError
 from asterlite.fem.selection import as_tuple, select_cells
+from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
@@ -40,9 +43,11 @@ _ACCESS = ("NUME_ORDRE", "LIST_ORDRE", "INST", "LIST_INST", "FREQ", "LIST_FREQ")
 
 def _keep_selected_orders(ctx, kw, result, fields) -> None:
     """Fields exist at the orders NUME_ORDRE / INST / FREQ... choose (every
-    order by default): the others are NaN, as code_aster stores no field there."""
+    order by default): the others are NaN, as code_aster stores no field there,
+    unless an earlier CALC_CHAMP on the result computed them (they are kept)."""
     if all(kw.peek(k) is None for k in _ACCESS):
-        kw.mark_used("TOUT_ORDRE")  # every order: the default
+        # every order, the default; CRITERE / PRECISION only tune an INST or FREQ search
+        kw.mark_used("TOUT_ORDRE", "CRITERE", "PRECISION")
         return
     if hasattr(result, "frequencies"):  # a dyna_harmo
         from asterlite.post.harmonic import selection_from_keywords
@@ -50,10 +55,18 @@ def _keep_selected_orders(ctx, kw, result, fields) -> None:
         rows = selection_from_keywords(ctx, kw, result.frequencies, result.order).lower
     else:
         rows = _selected_orders(ctx, kw, result)
-    for field in fields.values():
+    for name, field in fields.items():
         dropped = np.ones(field.values.shape[0], dtype=bool)
         dropped[rows] = False
         field.values[dropped] = np.nan
+        # orders computed by an earlier call on the same result keep their values
+        earlier = getattr(result, "element_fields", {}).get(name)
+        if (
+            earlier is not None
+            and earlier.values.shape == field.values.shape
+            and np.array_equal(np.asarray(earlier.cells), np.asarray(field.cells))
+        ):
+            field.values[dropped] = earlier.values[dropped]
 
 
 def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> None:
@@ -103,6 +116,48 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
 
 
+def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
+    """Stresses, strains and energies of 3D and plane solid cells
+    (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
+    from asterlite.fem.solid_fields import SOLID_FIELDS, solid_element_fields
+
+    other = [n for n in names if n not in SOLID_FIELDS]
+    if other:
+        keyword = next(
+            (
+                k
+                for k in ("CONTRAINTE", "DEFORMATION", "ENERGIE")
+                if other[0] in as_tuple(kw.get(k))
+            ),
+            None,
+        )
+        ctx.unsupported(f"CALC_CHAMP {other[0]} of solid elements", keyword, kw)
+    values = _nodal_values(ctx, result, kw)
+    velocities = omega2 = None
+    if "ECIN_ELEM" in names:
+        fields = getattr(result, "fields", None)
+        if isinstance(fields, dict) and fields.get("VITE") is not None:
+            velocities = np.asarray(fields["VITE"])
+        elif getattr(result, "frequencies", None) is not None and hasattr(result, "shapes"):
+            omega2 = (2.0 * np.pi * np.asarray(result.frequencies, dtype=float)) ** 2
+        else:
+            ctx.error("ECIN_ELEM needs the VITE field of the result", "ENERGIE", kw)
+    element_names = sorted({n.replace("_NOEU", "_ELNO") for n in names})
+    try:
+        fields = solid_element_fields(
+            model, materials, result.numbering, solids, values, element_names, velocities, omega2
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    for name in names:
+        if name.endswith("_NOEU"):
+            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
+            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {solids.size} solid cells, {values.shape[0]} orders")
+
+
 def _nodal_values(ctx, result, kw) -> np.ndarray:
     """(n_orders, n_dofs) displacements of the result."""
     fields = getattr(result, "fields", None)
@@ -136,14 +191,61 @@ def _accelerations(ctx, result, values: np.ndarray) -> np.ndarray | None:
     return acce
 
 
-def _beam_fields(model, characteristics, materials, numbering, beams, values, elno, acce):
+def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders):
+    """(n_orders, n_beams, 2, 6) the distributed loads of EXCIT on the beams,
+    times FONC_MULT at each instant of the result (or COEF_MULT), in the
+    convention of the internal forces; None without EXCIT."""
+    from asterlite.fem.beam_elements import section_forces
+    from asterlite.fem.loads import beam_element_loads
+
+    occurrences = kw.factor("EXCIT")
+    if not occurrences:
+        return None
+    times = getattr(result, "times", None)
+    total = np.zeros((n_orders, len(beams), 2, 6))
+    for occ in occurrences:
+        for key in ("FONC_MULT_C", "COEF_MULT_C", "TYPE_CHARGE", "PHAS_DEG", "PUIS_PULS"):
+            if key == "TYPE_CHARGE" and occ.get(key, "FIXE_CSTE") == "FIXE_CSTE":
+                continue
+            if key in ("PHAS_DEG", "PUIS_PULS") and not occ.get(key):
+                continue
+            if occ.get(key) is not None:
+                ctx.unsupported(f"CALC_CHAMP EXCIT {key} on beams", key, occ)
+        function = occ.get("FONC_MULT")
+        if function is not None:
+            if times is None or len(times) != n_orders:
+                ctx.unsupported(
+                    "CALC_CHAMP EXCIT FONC_MULT on a result without instants", "FONC_MULT", occ
+                )
+            coefficients = np.array([float(function(float(t))) for t in times])
+        else:
+            coefficients = np.full(n_orders, float(occ.get("COEF_MULT", 1.0)))
+        try:
+            local = beam_element_loads(model, characteristics, beams, occ["CHARGE"])
+        except ElementError as exc:
+            ctx.unsupported(str(exc), "CHARGE", occ)
+        total += coefficients[:, None, None, None] * section_forces(local)[None]
+    return total
+
+
+def _beam_fields(model, characteristics, materials, numbering, beams, values, elno, acce, loads):
     """beam_element_fields; complex states (a dyna_harmo) give complex fields,
     computed from their real and imaginary parts (the fields are linear in
     the displacements and accelerations)."""
     if not np.iscomplexobj(values) and not np.iscomplexobj(acce):
         return beam_element_fields(
-            model, characteristics, materials, numbering, beams, values, elno, accelerations=acce
+            model,
+            characteristics,
+            materials,
+            numbering,
+            beams,
+            values,
+            elno,
+            accelerations=acce,
+            load_forces=loads,
         )
+    if loads is not None:
+        raise ValueError("CALC_CHAMP EXCIT on a complex (harmonic) result")
     parts = [
         beam_element_fields(
             model,
@@ -259,15 +361,16 @@ def run(ctx, kw):
     for keyword in ("PROPRIETES", "FORCE"):
         if kw.get(keyword):
             ctx.unsupported(f"CALC_CHAMP {keyword}={as_tuple(kw[keyword])}", keyword, kw)
-    if kw.factor("EXCIT"):
-        ctx.unsupported("CALC_CHAMP EXCIT (distributed loads in the forces)", "EXCIT", kw)
     names = [name for _, name in requested]
-    other = [n for n in names if n not in ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS]
+    known = ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS + SOLID_FIELDS
+    other = [n for n in names if n not in known]
     if other:
         keyword = next(k for k, n in requested if n == other[0])
         ctx.unsupported(f"CALC_CHAMP {keyword}={other[0]!r}", keyword, kw)
     if names:
         model, characteristics, materials = _context(ctx, kw, result)
+        # TOUT='OUI' (its only value) is every cell of the model, as without GROUP_MA
+        kw.mark_used("TOUT")
         cells = select_cells(ctx, kw, model.mesh) if kw.get("GROUP_MA") else None
         candidates = sorted(model.cell_modelisation) if cells is None else cells
         beams = np.array(
@@ -276,6 +379,10 @@ def run(ctx, kw):
         bars = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _BARS], dtype=int
         )
+        solids = solid_cells_of(model, candidates)
+        if solids.size and not beams.size and not bars.size:
+            _solid_fields(ctx, kw, result, model, materials, solids, names)
+            return _cham_utils(ctx, kw, result)
         if bars.size and not beams.size:
             _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
             return result
@@ -292,6 +399,7 @@ def run(ctx, kw):
         elno = sorted({n.replace("_NOEU", "_ELNO") for n in names})
         values = _nodal_values(ctx, result, kw)
         accelerations = _accelerations(ctx, result, values)
+        loads = _excitation_forces(ctx, kw, result, model, characteristics, beams, len(values))
         try:
             fields = _beam_fields(
                 model,
@@ -302,9 +410,11 @@ def run(ctx, kw):
                 values,
                 elno,
                 accelerations,
+                loads,
             )
         except (ElementError, ValueError, KeyError) as exc:
             ctx.error(str(exc), "CONTRAINTE", kw)
+        _keep_selected_orders(ctx, kw, result, fields)
         for name, field in fields.items():
             result.element_fields[name] = field
         for name in names:
@@ -314,6 +424,11 @@ def run(ctx, kw):
         ctx.log(
             f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
         )
+    return _cham_utils(ctx, kw, result)
+
+
+def _cham_utils(ctx, kw, result):
+    """The CHAM_UTIL occurrences of the call, then the result."""
     rows = _selected_orders(ctx, kw, result) if kw.factor("CHAM_UTIL") else None
     mesh = result.numbering.mesh if kw.factor("CHAM_UTIL") else None
     restricted = select_cells(ctx, kw, mesh) if mesh is not None and kw.get("GROUP_MA") else None

@@ -3,7 +3,8 @@
 ``COMB_R`` gives a real matrix: ``sum COEF_R * part(A)`` where ``part`` is
 the matrix itself for a real one, its real or imaginary part (``PARTIE``,
 real by default) for a complex one. ``COMB_C`` gives a complex matrix:
-``sum coef * A`` with ``COEF_C`` (complex) or ``COEF_R``.
+``sum coef * A`` with ``COEF_C`` (complex) or ``COEF_R``. ``SANS_CMP='LAGR'``
+(no Lagrange terms in the result) is what asterlite's matrices are anyway.
 """
 
 from __future__ import annotations
@@ -42,15 +43,11 @@ def run(ctx, kw):
         if matrix.numbering is not first.numbering:
             ctx.error("the matrices use different numberings", "MATR_ASSE", occ)
         total = term if total is None else total + term
-    if kw.get("SANS_CMP") == "LAGR" and isinstance(first, AssembledMatrix):
-        # generalized matrices have no Lagrange multipliers: nothing to leave out;
-        # physical ones keep their constraints in the numbering, shared by all
-        ctx.unsupported(
-            "SANS_CMP='LAGR' on physical matrices (asterlite keeps boundary conditions "
-            "as relations of the numbering, not as Lagrange terms of the matrix)",
-            "SANS_CMP",
-            kw,
-        )
+    # SANS_CMP='LAGR' leaves the Lagrange multiplier terms out of the sum: asterlite's
+    # matrices hold the physical DOFs only (constraints stay relations of the
+    # numbering, applied by whatever solves with the matrix), so the sum above is
+    # the physical block code_aster keeps, with or without the keyword
+    kw.get("SANS_CMP")
     if isinstance(first, AssembledMatrix):
         cls = ComplexAssembledMatrix if keyword == "COMB_C" else AssembledMatrix
         return cls(

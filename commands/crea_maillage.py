@@ -1,14 +1,37 @@
-"""CREA_MAILLAGE: a new mesh from an existing one (CREA_POI1: point cells on nodes)."""
+"""CREA_MAILLAGE: a new mesh from an existing one (CREA_POI1: point cells on
+nodes; LINE_QUAD: linear cells made quadratic; MODI_MAILLE OPTION='SEG3_4')."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.selection import as_scalar, select_nodes
+from asterlite.fem.selection import as_scalar, select_cells, select_nodes
+
+
+def _cells(ctx, occ, mesh) -> np.ndarray:
+    """The cells of an occurrence: TOUT='OUI' (or nothing else given) is every cell."""
+    if occ.get("TOUT") == "OUI" or not (occ.get("GROUP_MA") or occ.get("MAILLE")):
+        return np.arange(mesh.n_cells)
+    return select_cells(ctx, occ, mesh)
+
+
+def _change_degree(ctx, kw, mesh) -> None:
+    from asterlite.fem.mesh_degree import line_quad, seg3_to_seg4
+
+    for occ in kw.factor("LINE_QUAD"):
+        added = line_quad(mesh, _cells(ctx, occ, mesh))
+        ctx.log(f"LINE_QUAD: {added} nodes added")
+    for occ in kw.factor("MODI_MAILLE"):
+        option = occ["OPTION"]
+        if option != "SEG3_4":
+            ctx.unsupported(f"MODI_MAILLE OPTION={option!r}", "OPTION", occ)
+        added = seg3_to_seg4(mesh, _cells(ctx, occ, mesh))
+        ctx.log(f"MODI_MAILLE SEG3_4: {added} nodes added")
 
 
 def run(ctx, kw):
     mesh = kw["MAILLAGE"].copy()
+    _change_degree(ctx, kw, mesh)
     for occ in kw.factor("CREA_POI1"):
         nodes = select_nodes(ctx, occ, mesh)
         cells, new_names, new_nodes = [], [], []

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from asterlite.concepts.lists import ListReal
@@ -14,6 +16,25 @@ def run(ctx, kw):
         # repeat a value); the commands that need increasing instants check them
         return ListReal(values_of(kw["VALE"]))
     return ListReal(build_intervals(ctx, kw, float(kw["DEBUT"]), kw.factor("INTERVALLE"), float))
+
+
+# code_aster's tolerance on the number of PAS steps in an interval
+_STEP_TOLERANCE = 1.0e-3
+
+
+def _steps_then_remainder(ctx, here, end, step, count, occ) -> list[float]:
+    """A PAS that does not divide its interval: code_aster takes the whole
+    steps that stay within it (the last at DEBUT + n PAS, a product) and then
+    one shorter step to JUSQU_A, with an alarm."""
+    if here + count * step > end:
+        count -= 1
+    new = accumulate_steps(here, step, count)
+    new[-1] = here + step * count
+    ctx.log(
+        f"alarm: DEFI_LIST_REEL: PAS={step:g} does not divide [{here:g}, {end:g}]: "
+        f"{count} steps, then one of {end - new[-1]:g}"
+    )
+    return [float(v) for v in new] + [float(end)]
 
 
 def build_intervals(ctx, kw, start, intervals, kind):
@@ -38,14 +59,13 @@ def build_intervals(ctx, kw, start, intervals, kind):
             ratio = (end - here) / step
             if not np.isfinite(ratio):  # a subnormal PAS
                 ctx.error(f"PAS={step:g} is too small for [{here:g}, {end:g}]", "PAS", occ)
-            count = int(round(ratio))
-            # code_aster accepts a step that divides the interval up to round-off
-            if abs(ratio - count) > 1e-3 * max(1.0, abs(ratio)) or count < 1:
-                ctx.error(
-                    f"PAS={step:g} does not divide [{here:g}, {end:g}] into whole steps",
-                    "PAS",
-                    occ,
-                )
+            if ratio <= 1.0 - _STEP_TOLERANCE:
+                ctx.error(f"PAS={step:g} is longer than [{here:g}, {end:g}]", "PAS", occ)
+            count = math.floor(ratio + 0.5)  # Fortran's nint
+            last_step = end - (here + (count - 1) * step)
+            if abs((last_step - step) / step) > _STEP_TOLERANCE:
+                points.extend(_steps_then_remainder(ctx, here, end, step, count, occ))
+                continue
         new = accumulate_steps(here, step, count)
         new[-1] = end  # land exactly on JUSQU_A
         points.extend(kind(v) for v in new)

@@ -312,7 +312,10 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
                 )
             try:
                 terms = load_terms(
-                    load, stiffness_matrix.characteristics, stiffness_matrix.materials
+                    load,
+                    stiffness_matrix.characteristics,
+                    stiffness_matrix.materials,
+                    complex_values=True,
                 )
                 vector = assemble_terms(terms, numbering)
             except KeyError as exc:

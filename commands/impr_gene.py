@@ -6,7 +6,11 @@ For each GENE occurrence:
   default) at the chosen archived instants (TOUT_ORDRE / TOUT_INST by
   default, NUME_ORDRE, LIST_ORDRE, INST, LIST_INST), one line per
   generalized component (NUME_CMP_GENE restricts them);
-- a ``vect_asse_gene``: its components;
+- a ``harm_gene``: the complex generalized fields at the chosen frequencies
+  (NUME_ORDRE, LIST_ORDRE, FREQ, LIST_FREQ; all by default), one line per
+  component with its real and imaginary parts;
+- a ``vect_asse_gene``: its components (one state: TOUT_ORDRE and TOUT_CHAM
+  change nothing);
 - a ``mode_gene``: each mode (NUME_MODE / TOUT_MODE) with its frequency and
   generalized vector.
 
@@ -39,6 +43,11 @@ def run(ctx, kw):
 
 def occurrence_lines(ctx, occ) -> list[str]:
     result = occ["RESU_GENE"]
+    from asterlite.concepts.harmonic import HarmGene
+
+    if isinstance(result, HarmGene):
+        lines = [RULE, f" RESULTAT GENERALISE {result.name or ''} ({result.aster_type})"]
+        return lines + harm_gene_lines(ctx, occ, result)
     if occ.get("FREQ") is not None or occ.get("LIST_FREQ") is not None:
         ctx.unsupported("access by FREQ (harmonic results)", "FREQ", occ)
     if occ.get("NOM_PARA") is not None and not isinstance(result, GeneralizedModes):
@@ -125,7 +134,44 @@ def info_lines(result: TranGene) -> list[str]:
     return text
 
 
+def harm_gene_lines(ctx, occ, result) -> list[str]:
+    """The fields of a harm_gene at the chosen frequencies (code_aster's irgene
+    / irvgen: real and imaginary parts of each generalized component)."""
+    from asterlite.post.harmonic import selection_from_keywords as frequency_selection
+
+    if occ.get("NUME_MODE") is not None or occ.get("TOUT_MODE") is not None:
+        ctx.error("NUME_MODE / TOUT_MODE apply to mode_gene results", "NUME_MODE", occ)
+    fields = tuple(result.fields)
+    if occ.get("NOM_CHAM") is not None and occ.get("TOUT_CHAM") != "OUI":
+        fields = tuple(dict.fromkeys(as_tuple(occ["NOM_CHAM"])))
+        missing = [f for f in fields if f not in result.fields]
+        if missing:
+            ctx.error(f"{result.name or ''} has no field {missing[0]}", "NOM_CHAM", occ)
+    occ.mark_used("TOUT_CHAM")  # 'OUI': every field, the default
+    selection = frequency_selection(ctx, occ, result.frequencies, result.order)
+    rows = np.asarray(selection.lower, dtype=int)
+    components = chosen_components(ctx, occ, int(result.n_modes))
+    lines = []
+    for field in fields:
+        values = np.asarray(result.fields[field])
+        for row in rows:
+            lines.append(" " + "-" * 78)
+            lines.append(f" VECTEUR GENERALISE DE NOM SYMBOLIQUE  {field}")
+            frequency = fortran_real(float(result.frequencies[row]), "E12.5").strip()
+            lines.append(f" NUMERO D'ORDRE: {int(result.order[row]):8d} FREQUENCE: {frequency}")
+            lines.append(" NUME_CMP          VALEUR")
+            for c in components:
+                z = complex(values[row, c])
+                lines.append(
+                    f"   {c + 1:5d}   {fortran_real(z.real + 0.0, 'E12.5')} "
+                    f"{fortran_real(z.imag + 0.0, 'E12.5')}"
+                )
+    return lines
+
+
 def vector_lines(ctx, occ, vector: GeneralizedVector) -> list[str]:
+    # one vector, one state: TOUT_ORDRE / TOUT_CHAM ('OUI') select all there is
+    occ.mark_used("TOUT_ORDRE", "TOUT_CHAM")
     values = np.asarray(vector.values, dtype=float).ravel()
     if getattr(vector.numbering, "model", None) is not None:
         return substructured_vector_lines(occ, vector, values)

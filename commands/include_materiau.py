@@ -50,7 +50,6 @@ def _data_file(ctx, kw):
 
 def _context(ctx, kw) -> dict:
     from asterlite.lang import base_namespace
-    from asterlite.runtime.session import CommandProxy
 
     extraction = kw.factor("EXTRACTION")
     temperature = float(extraction[0]["TEMP_EVAL"]) if extraction else None
@@ -75,7 +74,7 @@ def _context(ctx, kw) -> dict:
         option=kw.get("OPTION"),
     )
     for name in FILE_COMMANDS:
-        namespace[name] = CommandProxy(name, ctx.session)
+        namespace[name] = ctx.session.command(name)
     return namespace
 
 
@@ -132,6 +131,4 @@ def run(ctx, kw):
 
 
 def _context_command(ctx, name: str):
-    from asterlite.runtime.session import CommandProxy
-
-    return CommandProxy(name, ctx.session)
+    return ctx.session.command(name)

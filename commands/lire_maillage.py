@@ -35,7 +35,29 @@ def run(ctx, kw):
         f"mesh {path.name}: {mesh.n_nodes} nodes, {mesh.n_cells} cells, "
         f"{len(mesh.node_groups)} node groups, {len(mesh.cell_groups)} cell groups"
     )
+    _check(ctx, kw, mesh)
     return mesh
+
+
+def _check(ctx, kw, mesh) -> None:
+    """VERI_MAIL (VERIF='OUI' by default): code_aster's mesh check, alarms in
+    the log, errors stop the command (asterlite.fem.mesh_check)."""
+    from asterlite.fem.mesh_check import check_mesh
+
+    occ = (kw.factor("VERI_MAIL") or [{}])[0]
+    if occ.get("VERIF", "OUI") != "OUI":
+        return
+    try:
+        found = check_mesh(mesh, float(occ.get("APLAT", 1.0e-3)))
+    except NotImplementedError as exc:
+        if "VERI_MAIL" in kw.given:
+            ctx.unsupported(f"VERI_MAIL: {exc}", "VERI_MAIL", kw)
+        ctx.log(f"VERI_MAIL: {exc} is not made")
+        return
+    for alarm in found.alarms:
+        ctx.log(f"alarm: VERI_MAIL: {alarm}")
+    if found.errors:
+        ctx.error("VERI_MAIL: " + "; ".join(found.errors), "VERI_MAIL", kw)
 
 
 def _read_ideas(ctx, kw, path):

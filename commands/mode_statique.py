@@ -34,6 +34,8 @@ def _selected(ctx, occurrences, numbering, eligible: np.ndarray) -> np.ndarray:
     nodes, comps = numbering.dof_nodes, numbering.dof_components
     chosen = np.zeros(numbering.n_dofs, dtype=bool)
     for occ in occurrences:
+        # TOUT_CMP='OUI' (its only value): every component, as without AVEC_CMP/SANS_CMP
+        occ.mark_used("TOUT_CMP")
         selected_nodes = select_nodes(ctx, occ, mesh, all_nodes=np.unique(nodes))
         chosen |= selection_mask(
             comps,

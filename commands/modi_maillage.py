@@ -19,21 +19,26 @@ _SKIN_KEYWORDS = {
 def _orient_skin(ctx, mesh, kw) -> None:
     """ORIE_PEAU: skin faces turned to point out of their volume cells."""
     from asterlite.fem.selection import cell_group_members
-    from asterlite.fem.skin import SkinError, orient_skin
+    from asterlite.fem.skin import SkinError, is_plane, orient_edges, orient_skin
 
+    plane = is_plane(mesh)
     for factor, (faces_key, volumes_key) in _SKIN_KEYWORDS.items():
         for occ in kw.factor(factor):
-            if mesh.dim != 3:
-                ctx.unsupported(f"{factor} on a plane mesh (edges of 2D skins)", factor, occ)
+            if plane and factor == "ORIE_PEAU_3D":
+                ctx.error("ORIE_PEAU_3D on a plane mesh", factor, occ)
             faces = cell_group_members(ctx, occ, mesh, faces_key)
             volumes = (
                 cell_group_members(ctx, occ, mesh, volumes_key) if occ.get(volumes_key) else None
             )
             try:
-                count = orient_skin(mesh, faces, volumes)
+                if plane:  # code_aster: a mesh with constant Z has edges as skin
+                    count = orient_edges(mesh, faces, volumes)
+                else:
+                    count = orient_skin(mesh, faces, volumes)
             except SkinError as exc:
                 ctx.error(str(exc), faces_key, occ)
-            ctx.log(f"{factor}: {count} of {len(faces)} faces reversed")
+            what = "edges" if plane else "faces"
+            ctx.log(f"{factor}: {count} of {len(faces)} {what} reversed")
 
 
 def _vector(values, dim: int = 3) -> np.ndarray:

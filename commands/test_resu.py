@@ -126,7 +126,10 @@ def check_result(ctx, occ, where):
         times, order = result.times, result.order
     else:
         ctx.unsupported(f"TEST_RESU of a {result.aster_type}", "RESULTAT", occ)
-    index, state = _state_index(ctx, occ, times, order)
+    if isinstance(result, ModeResult) and occ.get("NUME_MODE") is not None:
+        index, state = _mode_index(ctx, occ, result)
+    else:
+        index, state = _state_index(ctx, occ, times, order)
     if occ.get("PARA") is not None:
         value = result_parameter(ctx, occ, result, index)
         label = f"{where} {name} {occ['PARA']} {state}"
@@ -151,6 +154,15 @@ def check_result(ctx, occ, where):
         value, what = _field_value(ctx, occ, result.numbering, values, f"{name} {field}")
         label = f"{where} {what} {state}"
     record_check(ctx, label, value, occ)
+
+
+def _mode_index(ctx, occ, result) -> tuple[int, str]:
+    """The order whose mode number (the NUME_MODE parameter) is the one asked."""
+    number = int(occ["NUME_MODE"])
+    matches = np.flatnonzero(np.asarray(result.mode_numbers) == number)
+    if matches.size == 0:
+        ctx.error(f"the result has no mode number {number}", "NUME_MODE", occ)
+    return int(matches[0]), f"mode {number}"
 
 
 def _frequency_index(ctx, occ, result) -> tuple[int, str]:

@@ -40,3 +40,25 @@ def test_ramp_derivative_sampled_past_its_kink():
     )
     assert sampled.ordinates[22500] == -0.2
     assert sampled(15.0) == pytest.approx(-0.2 * (15.0 - grid[22499]) / (grid[22500] - grid[22499]))
+
+
+def test_pas_that_does_not_divide_ends_with_a_shorter_step():
+    # code_aster (op0024): the whole steps within [0, 1.9985] (133 of 0.015, the
+    # last at 133 x 0.015), then one step of 0.0035 to JUSQU_A; then 1.9985 -> 2.0
+    occ = [{"JUSQU_A": 1.9985, "PAS": 0.015}, {"JUSQU_A": 2.0, "PAS": 0.0015}]
+    grid = np.asarray(defi_list_reel.run(context(), kw(DEBUT=0.0, INTERVALLE=occ)).Valeurs())
+    assert grid.size == 1 + 133 + 1 + 1
+    assert grid[133] == 133 * 0.015
+    assert grid[134] == 1.9985 and grid[135] == 2.0
+    assert np.diff(grid)[:133] == pytest.approx(0.015)
+    # nint(2.6) = 3 steps of 1.0 would pass 2.6: code_aster keeps 2 and adds 0.6
+    grid = defi_list_reel.run(context(), kw(DEBUT=0.0, INTERVALLE=[{"JUSQU_A": 2.6, "PAS": 1.0}]))
+    assert grid.Valeurs() == pytest.approx([0.0, 1.0, 2.0, 2.6])
+
+
+def test_pas_longer_than_its_interval_is_an_error():
+    from asterlite.errors import CommandError
+
+    occ = [{"JUSQU_A": 1.0, "PAS": 1.5}]
+    with pytest.raises(CommandError, match="longer than"):
+        defi_list_reel.run(context(), kw(DEBUT=0.0, INTERVALLE=occ))

@@ -10,7 +10,7 @@ import pytest
 
 from asterlite.cli import main
 from asterlite.runtime.runner import run_deck
-from asterlite.runtime.watchdog import TimeLimitError
+from asterlite.watchdog import TimeLimitError
 from tests.conftest import CORPUS
 
 
@@ -239,7 +239,7 @@ def test_kernel_compilation_counts_against_neither_limit():
     import numba
     import numpy as np
 
-    from asterlite.runtime import watchdog
+    from asterlite import watchdog
 
     watchdog.preload_engine()
     before = watchdog._compiling.seconds

@@ -133,9 +133,9 @@ def _med_bomb(path: Path, values: int = 300_000_000) -> Path:
 
 
 def test_a_med_file_declaring_gigabytes_is_refused_before_decompressing(tmp_path):
+    from asterlite import watchdog
     from asterlite.io.med_mesh import MedMeshError, read_med_mesh
     from asterlite.io.med_result import MedResultError, read_nodal_field
-    from asterlite.runtime import watchdog
 
     bomb = _med_bomb(tmp_path / "bomb.med")
     assert bomb.stat().st_size < 100_000
@@ -153,9 +153,9 @@ def test_the_med_child_caps_its_own_memory(tmp_path):
     loaded plus twice the run's memory limit (handed down by the parent)."""
     script = (
         "import resource\n"
-        "from asterlite.io import med_check\n"
-        "from asterlite.runtime import watchdog\n"
-        "med_check._cap_own_memory()\n"
+        "from asterlite.io import med_mesh\n"
+        "from asterlite import watchdog\n"
+        "med_mesh._cap_own_memory()\n"
         "print(resource.getrlimit(resource.RLIMIT_AS)[0], watchdog.address_space_size())\n"
     )
     environment = dict(os.environ, ASTERLITE_MED_MEMORY_MB="100")
@@ -303,7 +303,7 @@ def test_compiled_code_that_never_returns_is_ended_soon_after_the_limit(tmp_path
     signal) cannot be stopped from Python: SIGVTALRM ends it two grace periods
     past the limit (2 s each for a 1 s limit), not 30 s later as before."""
     script = (
-        "from asterlite.runtime import watchdog\n"
+        "from asterlite import watchdog\n"
         "with watchdog.limits(1.0, None, compiles=False):\n"
         "    sum(range(10**13))\n"
     )
@@ -318,7 +318,7 @@ def test_a_compilation_lifts_the_cpu_backstops_and_moves_them():
     SIGXCPU nor SIGVTALRM may come, and afterwards both move by what it took."""
     import resource
 
-    from asterlite.runtime import watchdog
+    from asterlite import watchdog
 
     with watchdog.limits(30.0, None, compiles=False):
         soft_before, hard = resource.getrlimit(resource.RLIMIT_CPU)
@@ -381,7 +381,7 @@ def test_a_sigprof_pending_when_the_timer_stops_does_not_restart_it():
     with status 155 = 128 + SIGPROF)."""
     import signal
 
-    from asterlite.runtime import watchdog
+    from asterlite import watchdog
 
     with watchdog._cpu_timer(100.0):
         pass

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from asterlite.io import med_check
+from asterlite.io import med_mesh as med_reader
 from asterlite.io.aster_mesh import AsterMeshError, read_aster_mesh
 from asterlite.io.med_mesh import MedMeshError, read_med_mesh
 from asterlite.runtime.runner import run_deck
@@ -52,7 +52,7 @@ def test_a_crash_of_the_reader_becomes_a_located_error(tmp_path, monkeypatch):
     path.write_bytes(b"not hdf5")
     script = tmp_path / "crash.py"
     script.write_text("import os, signal\nos.kill(os.getpid(), signal.SIGSEGV)\n")
-    monkeypatch.setattr(med_check.sys, "executable", str(_python_running(script)))
+    monkeypatch.setattr(med_reader.sys, "executable", str(_python_running(script)))
     with pytest.raises(MedMeshError, match="crashed reading this file \\(SIGSEGV\\)"):
         read_med_mesh(path)
 
@@ -82,7 +82,7 @@ def test_a_damaged_med_mesh_is_a_located_deck_error(tmp_path):
 
 
 def test_a_mesh_too_large_for_the_memory_limit_is_refused_before_reading(tmp_path, monkeypatch):
-    from asterlite.runtime import watchdog
+    from asterlite import watchdog
 
     path = tmp_path / "big.mail"
     lines = [f"N{i} {i}.0 0.0 0.0" for i in range(60000)]

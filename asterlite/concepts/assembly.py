@@ -15,6 +15,9 @@ import numpy as np
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
 
+#: modelisations of the (x, y) plane besides the ``2D_`` discrete elements and bars
+_PLANE_MODELISATIONS = ("D_PLAN", "C_PLAN", "AXIS", "D_PLAN_ABSO")
+
 
 @dataclass(eq=False)
 class Model(Concept):
@@ -46,9 +49,11 @@ class Model(Concept):
 
     @property
     def dim(self) -> int:
-        """2 when every modelisation is plane (``2D_...``), else 3."""
+        """2 when every modelisation is plane (``2D_...``, plane strain or
+        stress, axisymmetric and their absorbing edges), else 3."""
         names = set(self.cell_modelisation.values()) | set(self.node_modelisation.values())
-        return 2 if names and all(n.startswith("2D_") for n in names) else 3
+        plane = all(n.startswith("2D_") or n in _PLANE_MODELISATIONS for n in names)
+        return 2 if names and plane else 3
 
 
 @dataclass(eq=False)
@@ -81,6 +86,8 @@ class ElementCharacteristics(Concept):
     extra: dict[str, Any] = field(default_factory=dict)
     # beam / bar section properties per cell (asterlite.fem.sections output)
     sections: dict[int, dict[str, Any]] = field(default_factory=dict)
+    # plate characteristics per cell (COQUE: EPAIS, COEF_RIGI_DRZ, INER_ROTA 1/0)
+    shells: dict[int, dict[str, float]] = field(default_factory=dict)
 
 
 @dataclass(eq=False)

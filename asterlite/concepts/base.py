@@ -100,3 +100,13 @@ class Placeholder(Concept, DeckCallable):
     def __init__(self, aster_type: str, produced_by: str = ""):
         self.aster_types = with_families(aster_type)
         self.produced_by = produced_by
+
+
+class AnyPlaceholder(Placeholder):
+    """Stands for a concept of a type ``asterlite check`` cannot tell."""
+
+    def __init__(self, produced_by: str = ""):
+        super().__init__("*", produced_by)
+
+    def satisfies(self, type_name: str) -> bool:
+        return True

@@ -173,30 +173,3 @@ class Mesh(Concept):
 
     def getGroupsOfCells(self, local=False) -> list[str]:  # noqa: N802
         return list(self.cell_groups)
-
-
-class ReadableMesh(Mesh):
-    """``CA.Mesh()`` of code_aster 16-17: empty until ``readMedFile`` reads
-    an input file of the run into it (by name, as the export gives it)."""
-
-    deck_methods = Mesh.deck_methods | {"readMedFile"}
-
-    @classmethod
-    def empty(cls, find_input) -> ReadableMesh:
-        mesh = cls(np.zeros((0, 3)), [], [], [], [])
-        mesh._find_input = find_input  # name -> Path of an input file of the run
-        return mesh
-
-    def readMedFile(self, filename, meshname=None, verbose=0) -> None:  # noqa: N802
-        from asterlite.errors import CommandError
-        from asterlite.io.med_mesh import read_med_mesh
-
-        path = self._find_input(filename)
-        try:
-            read = read_med_mesh(path, meshname or None)
-        except (ValueError, KeyError) as error:
-            raise CommandError(f"readMedFile({filename!r}): {error}") from None
-        name, find_input = self.name, self._find_input
-        self.__dict__.update(read.__dict__)
-        self.name, self._find_input = name, find_input
-        self.refresh_indices()

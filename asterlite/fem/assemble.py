@@ -74,7 +74,8 @@ def assemble_blocks(blocks: list[ElementBlock], numbering: DofNumbering) -> sp.c
 
 def assemble_terms(terms, numbering: DofNumbering) -> np.ndarray:
     """Nodal (node, component, value) terms summed into a vector on the numbering."""
-    vector = np.zeros(numbering.n_dofs)
+    values = np.array([t[2] for t in terms])
+    vector = np.zeros(numbering.n_dofs, dtype=complex if np.iscomplexobj(values) else float)
     if not terms:
         return vector
     nodes = [t[0] for t in terms]
@@ -84,5 +85,5 @@ def assemble_terms(terms, numbering: DofNumbering) -> np.ndarray:
         names = numbering.mesh.node_names
         missing = [f"{names[n]} {c}" for n, c, i in zip(nodes, comps, idx, strict=True) if i < 0]
         raise KeyError(", ".join(missing[:5]))
-    np.add.at(vector, idx, np.array([t[2] for t in terms], dtype=float))
+    np.add.at(vector, idx, values.astype(vector.dtype))
     return vector

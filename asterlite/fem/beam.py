@@ -6,6 +6,9 @@ Elements (code_aster names):
 - ``POU_D_T``: Timoshenko beam, same DOFs, shear flexibility through the
   parameter ``phi = 12 E I AY / (G A L^2)`` (``AY``/``AZ`` are code_aster's
   shear coefficients, >= 1, see :mod:`asterlite.fem.sections`);
+- ``POU_D_TG``: POU_D_T plus the warping DOF ``GRX`` (rate of twist) on
+  each node: torsion with Saint-Venant ``G JX`` and warping ``E JG``
+  stiffness from a cubic twist angle (code_aster's ptka21), no GRX mass;
 - ``BARRE`` / ``2D_BARRE``: axial bars with translations only.
 
 DOF order inside an element is node 1 then node 2, each
@@ -48,6 +51,7 @@ BAR_2D_COMPONENTS = ("DX", "DY")
 COMPONENTS = {
     "POU_D_E": BEAM_COMPONENTS,
     "POU_D_T": BEAM_COMPONENTS,
+    "POU_D_TG": BEAM_COMPONENTS + ("GRX",),
     "BARRE": BAR_COMPONENTS,
     "2D_BARRE": BAR_2D_COMPONENTS,
 }
@@ -334,6 +338,54 @@ def beam_mass_local(
     return m
 
 
+# -- Timoshenko beams with warping (POU_D_TG) ----------------------------------------
+
+#: the 12 DOFs of POU_D_T inside the 14 of POU_D_TG (GRX after DRZ on each node)
+_TG_INDEX = np.array([0, 1, 2, 3, 4, 5, 7, 8, 9, 10, 11, 12])
+_RX1_TG, _GRX1, _RX2_TG, _GRX2 = 3, 6, 10, 13
+
+
+def warping_beam_stiffness_local(
+    length, young, shear, area, iy, iz, jx, jg, ay, az, ey=0.0, ez=0.0
+) -> np.ndarray:
+    """(n, 14, 14) local stiffness of POU_D_TG: POU_D_T's axial and bending
+    terms, and torsion with warping (DRX, GRX = the rate of twist) from the
+    cubic twist angle, ``G J`` (Saint-Venant) and ``E JG`` (warping); the
+    shear-centre offset EY/EZ moves the transverse DOFs as for POU_D_T."""
+    L, E, G, A, Iy, Iz, J, Jg, ay, az, ey, ez = _broadcast(
+        length, young, shear, area, iy, iz, jx, jg, ay, az, ey, ez
+    )
+    k12 = beam_stiffness_local(L, E, G, A, Iy, Iz, J, ay, az)
+    k = np.zeros((len(L), 14, 14))
+    k[:, _TG_INDEX[:, None], _TG_INDEX[None, :]] = k12
+    gj, ej = G * J, E * Jg
+    a = 6.0 * gj / (5.0 * L) + 12.0 * ej / L**3
+    b = gj / 10.0 + 6.0 * ej / L**2
+    c = 2.0 * gj * L / 15.0 + 4.0 * ej / L
+    d = -gj * L / 30.0 + 2.0 * ej / L
+    block = np.zeros((len(L), 4, 4))  # DRX1, GRX1, DRX2, GRX2
+    block[:, 0] = np.stack([a, b, -a, b], axis=1)
+    block[:, 1] = np.stack([b, c, -b, d], axis=1)
+    block[:, 2] = np.stack([-a, -b, a, -b], axis=1)
+    block[:, 3] = np.stack([b, d, -b, c], axis=1)
+    torsion = np.array([_RX1_TG, _GRX1, _RX2_TG, _GRX2])
+    k[:, torsion[:, None], torsion[None, :]] = block
+    if np.any(ey) or np.any(ez):
+        t = np.broadcast_to(np.eye(14), k.shape).copy()
+        t[:, _TG_INDEX[:, None], _TG_INDEX[None, :]] = _offset_transform(ey, ez)
+        k = np.einsum("eji,ejk,ekl->eil", t, k, t)
+    return k
+
+
+def warping_beam_mass_local(length, density, young, shear, area, iy, iz, ay, az, ey, ez):
+    """(n, 14, 14) POU_D_TG mass: POU_D_T's consistent mass, none on GRX
+    (code_aster's)."""
+    m12 = beam_mass_local(length, density, young, shear, area, iy, iz, ay, az, ey, ez)
+    m = np.zeros((len(m12), 14, 14))
+    m[:, _TG_INDEX[:, None], _TG_INDEX[None, :]] = m12
+    return m
+
+
 # -- bars -------------------------------------------------------------------------
 
 
@@ -405,6 +457,15 @@ def local_matrices(
         ez=section.get("EZ", 0.0),
     )
     shear = shear_modulus(young, poisson)
+    if modelisation == "POU_D_TG":
+        if matrix == "K":
+            jg = section.get("JG", 0.0)
+            return warping_beam_stiffness_local(
+                length, young, shear, jx=section["JX"], jg=jg, **common
+            )
+        if lumped:
+            raise BeamError("MASS_MECA_DIAG of POU_D_TG elements is not available")
+        return warping_beam_mass_local(length, density, young, shear, **common)
     if matrix == "K":
         return beam_stiffness_local(length, young, shear, jx=section["JX"], **common)
     return beam_mass_local(length, density, young, shear, lumped=lumped, **common)

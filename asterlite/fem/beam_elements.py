@@ -1,5 +1,5 @@
 """Element computers of straight beams and bars (``POU_D_E``, ``POU_D_T``,
-``BARRE``, ``2D_BARRE``) for :func:`asterlite.fem.elements.element_blocks`.
+``POU_D_TG``, ``BARRE``, ``2D_BARRE``) for :func:`asterlite.fem.elements.element_blocks`.
 
 Each cell needs a section (``AFFE_CARA_ELEM/POUTRE`` or ``BARRE``, kept in
 ``characteristics.sections``) and a material (``CHAM_MATER``: E, NU, RHO,
@@ -19,10 +19,10 @@ import numpy as np
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam
 from asterlite.fem.beam import BeamError, global_matrices, seg2_angles
-from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.sections import SectionError
 
-BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "BARRE", "2D_BARRE")
+BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE", "2D_BARRE")
 
 
 def _section_key(section: dict) -> tuple:
@@ -131,14 +131,6 @@ def beam_blocks(
             names = ", ".join(mesh.cell_names[c] for c in cells[rows][:3])
             raise ElementError(f"{modelisation} cells {names}: {exc}") from None
     return [ElementBlock(nodes=conn, components=components, matrices=out)]
-
-
-def _register() -> None:
-    for name in BEAM_MODELISATIONS:
-        ELEMENT_COMPUTERS.setdefault(name, beam_blocks)
-
-
-_register()
 
 
 # -- internal forces ------------------------------------------------------------------

@@ -21,6 +21,12 @@ MODELISATION_COMPONENTS: dict[str, tuple[str, ...]] = {
     "BARRE": ("DX", "DY", "DZ"),
     "2D_BARRE": ("DX", "DY"),
     "3D": ("DX", "DY", "DZ"),
+    "D_PLAN": ("DX", "DY"),
+    "C_PLAN": ("DX", "DY"),
+    "AXIS": ("DX", "DY"),
+    "DKT": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+    "3D_ABSO": ("DX", "DY", "DZ"),
+    "D_PLAN_ABSO": ("DX", "DY"),
 }
 
 DISCRETE_MODELISATIONS = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
@@ -41,6 +47,16 @@ MODELISATION_CELLS: dict[str, tuple[str, ...]] = {
         *("HEXA8", "HEXA20", "HEXA27", "PENTA6", "PENTA15", "TETRA4", "TETRA10"),
         *("PYRAM5", "PYRAM13", "TRIA3", "TRIA6", "QUAD4", "QUAD8", "QUAD9", "SEG2", "SEG3"),
     ),
+    # surfaces, plus the edges that carry loads (code_aster's MEPLSE2/3, MEAXSE2/3)
+    **{
+        name: ("TRIA3", "TRIA6", "QUAD4", "QUAD8", "QUAD9", "SEG2", "SEG3")
+        for name in ("D_PLAN", "C_PLAN", "AXIS")
+    },
+    # plates, plus the edges that carry loads (code_aster's MEBODKT)
+    "DKT": ("TRIA3", "QUAD4", "SEG2"),
+    # paraxial absorbing boundaries (code_aster's MEAB_FACE*, MEPASE*)
+    "3D_ABSO": ("TRIA3", "TRIA6", "QUAD4", "QUAD8", "QUAD9"),
+    "D_PLAN_ABSO": ("SEG2", "SEG3"),
 }
 
 

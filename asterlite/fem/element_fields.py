@@ -74,12 +74,15 @@ def beam_element_fields(
     options,
     accelerations: np.ndarray | None = None,
     lumped_mass: bool = False,
+    load_forces: np.ndarray | None = None,
 ) -> dict[str, ElementField]:
     """The requested ELNO fields of beam cells for nodal values (n_orders, n_dofs).
 
     ``accelerations`` (n_orders, n_dofs), when given, adds the inertia forces
     ``M_e a_e`` (consistent mass, or lumped with ``lumped_mass``) to
-    EFGE_ELNO and SIPO_ELNO."""
+    EFGE_ELNO and SIPO_ELNO. ``load_forces`` (n_orders, n_cells, 2, 6), the
+    distributed loads of CALC_CHAMP's EXCIT in the same convention, are taken
+    off EFGE_ELNO, SIPO_ELNO and SIPM_ELNO (not SIEF: code_aster's options)."""
     cells = np.asarray(cells, dtype=int)
     u = element_displacements(model.mesh, numbering, cells, values)
     stiffness = beam_local_forces(model, characteristics, materials, cells, u)
@@ -89,6 +92,8 @@ def beam_element_fields(
         dynamic = stiffness + beam_inertia_forces(
             model, characteristics, materials, cells, a, lumped_mass
         )
+    if load_forces is not None:
+        dynamic = dynamic - load_forces
     out = {}
     for name in options:
         if name == "EFGE_ELNO":
@@ -215,14 +220,19 @@ def bar_element_fields(
 def nodal_average(field: ElementField, mesh, name: str) -> NodalComponentField:
     """``*_NOEU`` from an ELNO field: at each node, the mean over the cells
     holding it of their value at that node."""
-    conn = np.array([mesh.cell_nodes[c] for c in field.cells], dtype=int)
-    nodes = np.unique(conn)
-    position = np.searchsorted(nodes, conn)  # (n_cells, n_points)
+    connectivity = [mesh.cell_nodes[c] for c in field.cells]
+    nodes = np.unique(np.concatenate([np.asarray(c, dtype=int) for c in connectivity]))
     n_orders, _, _, n_cmp = field.values.shape
     # complex for a harmonic result's fields
     sums = np.zeros((n_orders, len(nodes), n_cmp), dtype=np.result_type(field.values, float))
     counts = np.zeros(len(nodes))
-    for point in range(conn.shape[1]):
-        np.add.at(sums, (slice(None), position[:, point]), field.values[:, :, point, :])
-        np.add.at(counts, position[:, point], 1.0)
+    # cells of one node count at a time (a field on several cell types is padded)
+    sizes = np.array([len(c) for c in connectivity])
+    for size in np.unique(sizes):
+        rows = np.nonzero(sizes == size)[0]
+        conn = np.array([connectivity[r] for r in rows], dtype=int)
+        position = np.searchsorted(nodes, conn)  # (n_rows, size)
+        for point in range(size):
+            np.add.at(sums, (slice(None), position[:, point]), field.values[:, rows, point, :])
+            np.add.at(counts, position[:, point], 1.0)
     return NodalComponentField(name, nodes, field.components, sums / counts[None, :, None])

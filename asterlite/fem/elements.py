@@ -7,7 +7,8 @@ returns the global-frame :class:`ElementBlock` list for ``matrix`` in ``K``
 called as ``fn(model, characteristics, matrix, cells, materials=..., lumped=...)``.
 Discrete elements (here): cells sharing one characteristic are computed
 together, one local matrix then one batched rotation when the values are
-given in the LOCAL frame. Beams and bars: :mod:`asterlite.fem.beam_elements`.
+given in the LOCAL frame. The other families have a module each
+(:data:`ELEMENT_FAMILIES`).
 """
 
 from __future__ import annotations
@@ -17,13 +18,15 @@ from collections import defaultdict
 import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock, ElementCharacteristics, Model
+from asterlite.fem.absorbing_elements import ABSORBING_MODELISATIONS, absorbing_blocks
+from asterlite.fem.beam_elements import BEAM_MODELISATIONS, beam_blocks
 from asterlite.fem.discrete import local_matrix, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.frames import angles_from_axis, block_rotation, rotation_from_angles
-
-
-class ElementError(ValueError):
-    """A model/characteristics combination that cannot give element matrices."""
+from asterlite.fem.plane_elements import PLANE_MODELISATIONS, plane_blocks
+from asterlite.fem.plate_elements import PLATE_MODELISATIONS, plate_blocks
+from asterlite.fem.solid_elements import SOLID_MODELISATIONS, solid_blocks
 
 
 def cell_frames(model: Model, cells: np.ndarray, characteristics) -> np.ndarray:
@@ -107,10 +110,21 @@ def _rotation_invariant(local: np.ndarray, components, n_nodes: int) -> bool:
     return True
 
 
-#: Element computations by modelisation:
+#: Element computations by modelisation, one row per family (a new family:
+#: its module gives its modelisations and computer, and one row here):
 #: fn(model, characteristics, matrix, cells, materials=None, lumped=False)
-#: -> list[ElementBlock]. Beams and bars register in asterlite.fem.beam_elements.
-ELEMENT_COMPUTERS = {name: _discrete_blocks for name in DISCRETE_MODELISATIONS}
+#: -> list[ElementBlock].
+ELEMENT_FAMILIES = (
+    (DISCRETE_MODELISATIONS, _discrete_blocks),
+    (BEAM_MODELISATIONS, beam_blocks),  # beams and bars
+    (PLANE_MODELISATIONS, plane_blocks),  # plane strain, plane stress, axisymmetric solids
+    (SOLID_MODELISATIONS, solid_blocks),  # 3D solids
+    (PLATE_MODELISATIONS, plate_blocks),  # DKT plates
+    (ABSORBING_MODELISATIONS, absorbing_blocks),  # paraxial (absorbing) boundaries
+)
+ELEMENT_COMPUTERS = {name: compute for names, compute in ELEMENT_FAMILIES for name in names}
+if len(ELEMENT_COMPUTERS) != sum(len(names) for names, _ in ELEMENT_FAMILIES):
+    raise ImportError("a modelisation is given to two element families")
 
 
 def element_blocks(
@@ -127,9 +141,6 @@ def element_blocks(
     asks for MASS_MECA_DIAG, ``cells`` restricts the computation to a subset
     of the model's cells (default: all of them).
     """
-    import asterlite.fem.beam_elements  # noqa: F401 - registers beam computers
-    import asterlite.fem.solid_elements  # noqa: F401 - registers the 3D solid computer
-
     wanted = None if cells is None else {int(c) for c in np.asarray(cells).ravel()}
     by_modelisation: dict[str, list[int]] = defaultdict(list)
     for cell, modelisation in model.cell_modelisation.items():

@@ -8,10 +8,12 @@ Terms are ``(node, component, value)`` triples summed by
   them, or the GROUP_MA of PESANTEUR) for a uniform acceleration ``g d``
   (translations only). For beams this is the consistent load of the weight
   ``rho A g`` per unit length (end forces and moments).
-- FORCE_POUTRE: uniform forces / moments per unit length, in the global frame
-  (FX FY FZ MX MY MZ) or the local one (N VY VZ MT MFY MFZ), turned into the
-  consistent nodal loads of the cubic beam: ``q L / 2`` forces, ``q L^2 / 12``
-  end moments, distributed bending moments ``m`` giving ``-/+ m`` forces.
+- FORCE_POUTRE: forces / moments per unit length, uniform or varying linearly
+  along each cell (AFFE_CHAR_MECA_F: values at its two nodes), in the global
+  frame (FX FY FZ MX MY MZ) or the local one (N VY VZ MT MFY MFZ), turned into
+  the consistent nodal loads of the cubic beam (uniform: ``q L / 2`` forces,
+  ``q L^2 / 12`` end moments, distributed bending moments ``m`` giving ``-/+ m``
+  forces).
 """
 
 from __future__ import annotations
@@ -21,6 +23,8 @@ import numpy as np
 from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
+from asterlite.fem.plate_elements import plate_gravity_terms
 from asterlite.fem.solid_loads import solid_cells, solid_load_terms, volume_force_terms
 
 _TRANSLATIONS = ("DX", "DY", "DZ")
@@ -35,12 +39,18 @@ def gravity_terms(model, characteristics, gravity: float, direction, materials=N
     if norm == 0.0:
         raise ElementError("PESANTEUR DIRECTION is a zero vector")
     d = gravity * d / norm
-    # 3D solids: the weight integrated on the RIGI points, as code_aster does
+    # 3D and plane solids: the weight integrated on the RIGI points, as code_aster does
     solid = solid_cells(model, cells)
     terms = volume_force_terms(model.mesh, solid, d, materials, per_mass=True)
-    if len(solid):
-        pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
-        cells = sorted({int(c) for c in pool} - set(solid.tolist()))
+    plane = plane_cells(model, cells)
+    terms.extend(surface_force_terms(model, plane, d, materials, per_mass=True))
+    # plates: the weight spread on the corners (code_aster's te0032)
+    pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
+    plates = np.array([int(c) for c in pool if model.cell_modelisation.get(int(c)) == "DKT"], int)
+    terms.extend(plate_gravity_terms(model, characteristics, materials, plates, d))
+    if len(solid) or len(plane) or len(plates):
+        handled = set(solid.tolist()) | set(plane.tolist()) | set(plates.tolist())
+        cells = sorted({int(c) for c in pool} - handled)
         if not cells:
             return terms
     for block in element_blocks(model, characteristics, "M", materials=materials, cells=cells):
@@ -55,73 +65,153 @@ def gravity_terms(model, characteristics, gravity: float, direction, materials=N
     return terms
 
 
-def _local_beam_vector(q: np.ndarray, length: np.ndarray) -> np.ndarray:
-    """(n, 12) consistent local nodal loads of uniform loads q (n, 6) = local
-    (fx, fy, fz, mx, my, mz) per unit length on beams of the given lengths."""
+def _local_beam_vector(q1: np.ndarray, q2: np.ndarray, length: np.ndarray) -> np.ndarray:
+    """(n, 12) consistent local nodal loads of loads varying linearly from q1
+    at the first node to q2 at the second, (n, 6) local (fx, fy, fz, mx, my,
+    mz) per unit length, on beams of the given lengths (code_aster's ptfop1
+    for constant sections: the cubic beam's work of the trapezoidal loads)."""
     L = length
     f = np.zeros((len(L), 12))
-    fx, fy, fz, mx, my, mz = q.T
-    f[:, 0] = f[:, 6] = fx * L / 2
-    f[:, 1] = f[:, 7] = fy * L / 2
-    f[:, 2] = f[:, 8] = fz * L / 2
-    f[:, 3] = f[:, 9] = mx * L / 2
-    f[:, 5] = fy * L * L / 12
-    f[:, 11] = -fy * L * L / 12
-    f[:, 4] = -fz * L * L / 12
-    f[:, 10] = fz * L * L / 12
-    # distributed bending moments: work m_z v' and -m_y w'
-    f[:, 1] -= mz
-    f[:, 7] += mz
-    f[:, 2] += my
-    f[:, 8] -= my
+    a, b = q1.T, q2.T  # a[k], b[k]: component k at the first and second node
+    for k in (0, 3):  # axial force, torque: linear shape functions
+        f[:, k] = (a[k] / 3 + b[k] / 6) * L
+        f[:, 6 + k] = (a[k] / 6 + b[k] / 3) * L
+    f[:, 1] = (7 * a[1] + 3 * b[1]) * L / 20 - (a[5] + b[5]) / 2
+    f[:, 7] = (3 * a[1] + 7 * b[1]) * L / 20 + (a[5] + b[5]) / 2
+    f[:, 2] = (7 * a[2] + 3 * b[2]) * L / 20 + (a[4] + b[4]) / 2
+    f[:, 8] = (3 * a[2] + 7 * b[2]) * L / 20 - (a[4] + b[4]) / 2
+    L2 = L * L
+    f[:, 4] = -(a[2] / 20 + b[2] / 30) * L2 - (b[4] - a[4]) * L / 12
+    f[:, 10] = (a[2] / 30 + b[2] / 20) * L2 + (b[4] - a[4]) * L / 12
+    f[:, 5] = (a[1] / 20 + b[1] / 30) * L2 - (b[5] - a[5]) * L / 12
+    f[:, 11] = -(a[1] / 30 + b[1] / 20) * L2 + (b[5] - a[5]) * L / 12
     return f
 
 
-def beam_force_terms(model, characteristics, cells, values: dict, local: bool) -> list:
-    """Consistent nodal terms of FORCE_POUTRE on beam (or bar) cells."""
+def _end_values(cells, values, local: bool, values_2=None):
+    """Components (n_cells, 6) at the first and the second node of each cell."""
+    keys = LOCAL_KEYS if local else GLOBAL_KEYS
+    if values_2 is None:
+        q = np.array([float(values.get(k) or 0.0) for k in keys])
+        return np.broadcast_to(q, (len(cells), 6)), np.broadcast_to(q, (len(cells), 6))
+    return np.asarray(values, float), np.asarray(values_2, float)
+
+
+def _beam_local_vectors(rot, length, q1, q2, local: bool) -> np.ndarray:
+    """(n, 12) local-frame consistent loads of 6-DOF beams (q in the global
+    frame unless ``local``)."""
+    if not local:
+        q1, q2 = (
+            np.concatenate(
+                [np.einsum("eij,ej->ei", rot, q[:, :3]), np.einsum("eij,ej->ei", rot, q[:, 3:])],
+                axis=1,
+            )
+            for q in (q1, q2)
+        )
+    return _local_beam_vector(q1, q2, length)
+
+
+def _geometry(model, characteristics, members):
+    mesh = model.mesh
+    conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int).reshape(-1, 2)
+    x1, x2 = mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]]
+    length = beam.segment_lengths(x1, x2)
+    rot = beam.rotation_from_angles(cell_angles(model, characteristics, members))
+    return conn, x1, x2, length, rot
+
+
+def beam_force_terms(model, characteristics, cells, values, local: bool, values_2=None) -> list:
+    """Consistent nodal terms of FORCE_POUTRE on beam (or bar) cells: ``values``
+    a dict of uniform components, or (with ``values_2``) arrays (n_cells, 6) of
+    the components at the first and the second node of each cell."""
     mesh = model.mesh
     cells = np.asarray(cells, dtype=int)
-    keys = LOCAL_KEYS if local else GLOBAL_KEYS
-    q = np.array([float(values.get(k) or 0.0) for k in keys])
+    at_first, at_second = _end_values(cells, values, local, values_2)
     terms = []
     kinds = np.array([str(model.cell_modelisation.get(int(c))) for c in cells])
     for modelisation in sorted(set(kinds.tolist())):
-        members = cells[kinds == modelisation]
+        chosen = kinds == modelisation
+        members = cells[chosen]
+        q1, q2 = at_first[chosen], at_second[chosen]
         if modelisation not in beam.COMPONENTS:
             names = ", ".join(mesh.cell_names[c] for c in members[:3])
             raise ElementError(f"FORCE_POUTRE applies to beams, not to {modelisation} ({names})")
-        conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int).reshape(-1, 2)
-        x1, x2 = mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]]
-        length = beam.segment_lengths(x1, x2)
-        rot = beam.rotation_from_angles(cell_angles(model, characteristics, members))
+        conn, x1, x2, length, rot = _geometry(model, characteristics, members)
         comps = beam.COMPONENTS[modelisation]
         if len(comps) == 6:
-            if local:
-                q_local = np.broadcast_to(q, (len(members), 6))
-            else:
-                q_local = np.concatenate(
-                    [np.einsum("eij,j->ei", rot, q[:3]), np.einsum("eij,j->ei", rot, q[3:])], axis=1
-                )
-            f_local = _local_beam_vector(q_local, length)
+            f_local = _beam_local_vectors(rot, length, q1, q2, local)
             r = beam.element_rotation(rot, 6)
             f = np.einsum("eji,ej->ei", r, f_local)
         else:
             dim = len(comps)
             if local:
                 axis = (x2 - x1) / length[:, None]
-                force = q[0] * axis
+                force1, force2 = q1[:, :1] * axis, q2[:, :1] * axis
             else:
-                force = np.broadcast_to(q[:3], (len(members), 3))
-            half = force[:, :dim] * length[:, None] / 2
-            f = np.concatenate([half, half], axis=1)
+                force1, force2 = q1[:, :3], q2[:, :3]
+            first = (force1 / 3 + force2 / 6)[:, :dim] * length[:, None]
+            second = (force1 / 6 + force2 / 3)[:, :dim] * length[:, None]
+            f = np.concatenate([first, second], axis=1)
         nodes = np.repeat(conn, len(comps), axis=1).ravel()
         names = list(comps) * (2 * len(members))
         terms.extend(zip(nodes.tolist(), names, f.ravel().tolist(), strict=True))
     return terms
 
 
-def load_terms(load, characteristics=None, materials=None) -> list:
-    """Every nodal term of one AFFE_CHAR_MECA load (constant values)."""
+def beam_element_loads(model, characteristics, cells, load) -> np.ndarray:
+    """(n_cells, 12) local-frame consistent loads of a load's FORCE_POUTRE on
+    6-DOF beam cells (what code_aster's beam elements take off their internal
+    forces when CALC_CHAMP gives the load in EXCIT); nodal forces act on no
+    element. Gravity is refused here (not taken off yet)."""
+    cells = np.asarray(cells, dtype=int)
+    out = np.zeros((len(cells), 12))
+    if load.extra.get("PESANTEUR") is not None:
+        raise ElementError("CALC_CHAMP EXCIT with a PESANTEUR load on beams")
+    position = {int(c): k for k, c in enumerate(cells)}
+    for item in load.extra.get("FORCE_POUTRE", []):
+        item_cells = np.asarray(item["CELLS"], dtype=int)
+        q1, q2 = _end_values(item_cells, item["VALUES"], item["LOCAL"], item.get("VALUES_2"))
+        here = np.array([int(c) in position for c in item_cells], dtype=bool)
+        members = item_cells[here]
+        if not members.size:
+            continue
+        _, _, _, length, rot = _geometry(model, characteristics, members)
+        f_local = _beam_local_vectors(rot, length, q1[here], q2[here], item["LOCAL"])
+        rows = [position[int(c)] for c in members]
+        np.add.at(out, rows, f_local)
+    return out
+
+
+def load_terms(load, characteristics=None, materials=None, complex_values=False) -> list:
+    """Every nodal term of one AFFE_CHAR_MECA load (constant values). A load
+    with complex values (AFFE_CHAR_MECA_C) gives complex terms, for callers
+    that compute on complex values only (``complex_values``)."""
+    imaginary = getattr(load, "imaginary", None)
+    if imaginary is not None:
+        if not complex_values:
+            from asterlite.errors import UnsupportedError
+
+            raise UnsupportedError(
+                f"the complex load {load.name or ''} (AFFE_CHAR_MECA_C) in a computation "
+                "on real values (code_aster uses it in harmonic responses)"
+            )
+        real_terms = _real_load_terms(load, characteristics, materials)
+        imag_terms = _real_load_terms(imaginary, characteristics, materials)
+        return real_terms + [(n, c, 1j * v) for n, c, v in imag_terms]
+    return _real_load_terms(load, characteristics, materials)
+
+
+def _real_load_terms(load, characteristics=None, materials=None) -> list:
+    if load.extra.get("ONDE_PLANE") is not None:
+        from asterlite.errors import UnsupportedError
+
+        # each boundary point sees the wave with its own delay: no vector times f(t)
+        raise UnsupportedError(
+            f"the ONDE_PLANE load {load.name or ''} (AFFE_CHAR_MECA_F) where a fixed "
+            "load vector is taken: its forces are a history of time and space "
+            "(asterlite.fem.plane_wave.plane_wave_history), which this command does not "
+            "take yet"
+        )
     model = load.model
     terms = list(load.nodal_forces)
     gravity = load.extra.get("PESANTEUR")
@@ -138,7 +228,15 @@ def load_terms(load, characteristics=None, materials=None) -> list:
         )
     for item in load.extra.get("FORCE_POUTRE", []):
         terms.extend(
-            beam_force_terms(model, characteristics, item["CELLS"], item["VALUES"], item["LOCAL"])
+            beam_force_terms(
+                model,
+                characteristics,
+                item["CELLS"],
+                item["VALUES"],
+                item["LOCAL"],
+                item.get("VALUES_2"),
+            )
         )
     terms.extend(solid_load_terms(model.mesh, load.extra))
+    terms.extend(plane_load_terms(model, load.extra))
     return terms

@@ -329,6 +329,33 @@ def section_properties(
     return props
 
 
+def uniform_varying_section(section: str, vari_sect: str, cara: Mapping[str, float]):
+    """The constant-section CARA of a ``VARI_SECT`` section whose start and
+    end values are equal (``R_DEBUT``/``R_FIN``, ``HY1``/``HY2``, ``A1``/``A2``
+    ...), or None when the section really varies along the beam."""
+    section, vari_sect = section.upper(), vari_sect.upper()
+    if section == "CERCLE":
+        ends = ("_DEBUT", "_FIN")
+    else:
+        ends = ("1", "2")
+    constant: dict[str, float] = {}
+    pairs: dict[str, list] = {}
+    for name, value in cara.items():
+        for k, end in enumerate(ends):
+            if name.endswith(end):
+                pairs.setdefault(name[: -len(end)], [None, None])[k] = float(value)
+                break
+        else:  # AFFINE rectangles keep HY, EPY constant
+            constant[name] = float(value)
+    for base, (start, finish) in pairs.items():
+        if start is None or finish is None:
+            raise SectionError(f"VARI_SECT='{vari_sect}': {base} needs both its start and end")
+        if start != finish:
+            return None
+        constant[base] = start
+    return constant
+
+
 def cara_dict(cara, vale) -> dict[str, float]:
     """``CARA``/``VALE`` keyword values (scalars or sequences) as a mapping."""
     names = [cara] if isinstance(cara, str) else list(cara)

@@ -1,11 +1,14 @@
-"""Orientation of skin faces of 3D meshes (MODI_MAILLAGE ORIE_PEAU).
+"""Orientation of skin faces of 3D meshes and skin edges of plane meshes
+(MODI_MAILLAGE ORIE_PEAU).
 
 A face's normal follows the order of its nodes (``dx/dxi x dx/deta``,
 right-hand rule); pressure and other face loads act along it. ORIE_PEAU
 turns every face of the skin so that its normal points out of the volume cell
 it bounds: the volume is the one whose vertices include all the face's
 vertices (among GROUP_MA_INTERNE when given), and a face is reversed when its
-normal points towards that volume's centroid.
+normal points towards that volume's centroid. On a plane mesh the skin is
+made of edges, whose normal is their tangent turned clockwise ``(dy, -dx)``,
+turned the same way out of the surface cell they bound.
 """
 
 from __future__ import annotations
@@ -120,6 +123,72 @@ def inward_faces(mesh, faces, volumes) -> list[int]:
         if len(owners) == 1 and _points_inwards(mesh, face, owners[0]):
             out.append(int(face))
     return out
+
+
+# -- skins of plane meshes: edges of surface cells -----------------------------------------
+
+#: node order of a reversed edge (the middle node of a SEG3 stays last)
+REVERSED_EDGE = {"SEG2": (1, 0), "SEG3": (1, 0, 2)}
+_SURFACE_VERTICES = {"TRIA3": 3, "TRIA6": 3, "TRIA7": 3, "QUAD4": 4, "QUAD8": 4, "QUAD9": 4}
+
+
+def is_plane(mesh, tolerance: float = 1.0e-9) -> bool:
+    """A plane mesh: 2D coordinates, or 3D ones with a constant Z (code_aster's
+    test for 2D skins)."""
+    if mesh.dim == 2 or mesh.coords.shape[1] == 2:
+        return True
+    z = mesh.coords[:, 2]
+    scale = max(float(np.ptp(mesh.coords[:, :2])), 1.0e-300)
+    return float(np.ptp(z)) <= tolerance * scale
+
+
+def _edge_normal(mesh, edge: int) -> np.ndarray:
+    """(dy, -dx) of the edge's first and second node: the normal code_aster
+    gives an edge (the tangent turned clockwise)."""
+    a, b = mesh.cell_nodes[edge][:2]
+    t = mesh.coords[b, :2] - mesh.coords[a, :2]
+    return np.array([t[1], -t[0]])
+
+
+def orient_edges(mesh, edges, surfaces=None) -> int:
+    """Reverse the skin edges of a plane mesh whose normal points into the
+    surface cell they bound; returns how many were reversed. ``surfaces``
+    defaults to every surface cell."""
+    if surfaces is None:
+        surfaces = [c for c, t in enumerate(mesh.cell_types) if t in _SURFACE_VERTICES]
+    around: dict[int, list[int]] = defaultdict(list)
+    for cell in surfaces:
+        kind = mesh.cell_types[cell]
+        if kind not in _SURFACE_VERTICES:
+            raise SkinError(f"cell {mesh.cell_names[cell]} ({kind}) is not a surface cell")
+        for node in mesh.cell_nodes[cell][: _SURFACE_VERTICES[kind]]:
+            around[node].append(int(cell))
+    count = 0
+    for edge in edges:
+        kind = mesh.cell_types[edge]
+        if kind not in REVERSED_EDGE:
+            raise SkinError(f"cell {mesh.cell_names[edge]} ({kind}) is not an edge of a plane mesh")
+        a, b = mesh.cell_nodes[edge][:2]
+        owners = [
+            c
+            for c in around.get(a, [])
+            if b in mesh.cell_nodes[c][: _SURFACE_VERTICES[mesh.cell_types[c]]]
+        ]
+        if not owners:
+            raise SkinError(f"edge {mesh.cell_names[edge]} bounds no surface cell")
+        if len(owners) > 1:
+            names = ", ".join(mesh.cell_names[c] for c in owners)
+            raise SkinError(
+                f"edge {mesh.cell_names[edge]} lies between the surface cells {names}: "
+                "give GROUP_MA_INTERNE to say which side is inside"
+            )
+        inside = mesh.coords[list(mesh.cell_nodes[owners[0]]), :2].mean(axis=0)
+        outward = mesh.coords[[a, b], :2].mean(axis=0) - inside
+        if _edge_normal(mesh, edge) @ outward < 0.0:
+            nodes = mesh.cell_nodes[edge]
+            mesh.cell_nodes[edge] = tuple(nodes[i] for i in REVERSED_EDGE[kind])
+            count += 1
+    return count
 
 
 assert set(VOLUME_CELLS) <= set(_VOLUME_VERTICES)

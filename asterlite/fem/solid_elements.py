@@ -23,7 +23,7 @@ from collections import defaultdict
 import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
-from asterlite.fem.elements import ELEMENT_COMPUTERS, ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.solid_reference import VOLUME_CELLS, tabulated
 
 COMPONENTS = ("DX", "DY", "DZ")
@@ -180,11 +180,3 @@ def _matrices(matrix, spec, coords, props, lumped, where) -> np.ndarray:
     if np.any(beta):
         out += beta[:, None, None] * mass()
     return out
-
-
-def _register() -> None:
-    for name in SOLID_MODELISATIONS:
-        ELEMENT_COMPUTERS.setdefault(name, solid_blocks)
-
-
-_register()

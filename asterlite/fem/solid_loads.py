@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.elements import ElementError
+from asterlite.fem.element_errors import ElementError
 from asterlite.fem.solid_elements import cells_by_type, connectivity, jacobians
 from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS, tabulated
 

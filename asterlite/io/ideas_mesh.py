@@ -194,7 +194,14 @@ def _split_datasets(text: str, filename: str) -> list[_Dataset]:
             end += 1
         datasets.append(_Dataset(number, i + 2, lines[i + 2 : end]))
         i = end + 1
+        if i < len(lines) and _bare_number(lines[i]):
+            i = end  # its closing delimiter opens the next dataset (code_aster reads it so)
     return datasets
+
+
+def _bare_number(line: str) -> bool:
+    """A dataset number alone on its line (six columns, nothing after)."""
+    return line[:6].strip().isdigit() and not line[6:].strip()
 
 
 def _ints(line: str, width: int, count: int, where: tuple[int, str]) -> list[int]:

@@ -25,6 +25,7 @@ import stat
 from contextlib import contextmanager
 from pathlib import Path
 
+from asterlite import watchdog
 from asterlite.errors import AsterliteError, Location
 from asterlite.io.text_encoding import TextEncodingError, decode_text
 
@@ -153,8 +154,6 @@ def check_input_size(path: Path, what: str, bytes_per_byte: float) -> int:
 
 
 def _check_size(path: Path, what: str, size: int, bytes_per_byte: float) -> None:
-    from asterlite.runtime import watchdog
-
     if size > MAX_TEXT_INPUT_BYTES:
         raise InputTooLargeError(
             f"{path}: {what} of {size / 1e6:.0f} MB, beyond the "

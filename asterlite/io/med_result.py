@@ -13,6 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.io.med_mesh import check_declared_bytes
+
 
 class MedResultError(ValueError):
     """A MED file or field that cannot be read as asked."""
@@ -52,8 +54,6 @@ def read_nodal_field(path: str | Path, name: str) -> MedNodalField:
 
 def _check_sizes(path: str, shown: str) -> None:
     import h5py
-
-    from asterlite.io.med_check import check_declared_bytes
 
     try:
         with h5py.File(path, "r") as handle:

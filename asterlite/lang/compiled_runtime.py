@@ -15,7 +15,9 @@ import types
 from asterlite.errors import AsterliteError, DeckRuntimeError, did_you_mean
 from asterlite.lang import library
 from asterlite.lang import limits as guards
+from asterlite.lang.deck_function import DeckFunction
 from asterlite.lang.exceptions import python_error
+from asterlite.lang.operators import COMPARISONS, CONVERTED_ERRORS, INPLACE_OPERATORS
 from asterlite.lang.values import Unknown
 
 # Python callables the compiled code calls directly when every argument is a
@@ -51,13 +53,6 @@ class CompiledRuntime:
     """The helpers compiled functions of one evaluator share."""
 
     def __init__(self, evaluator):
-        from asterlite.lang.evaluator import (
-            COMPARISONS,
-            CONVERTED_ERRORS,
-            INPLACE_OPERATORS,
-            DeckFunction,
-        )
-
         self.evaluator = evaluator
         self.limits = evaluator.limits
         self.comparisons = COMPARISONS

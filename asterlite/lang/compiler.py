@@ -67,6 +67,7 @@ from asterlite.lang.compiled_runtime import (
     UNBOUND,
     CompiledRuntime,
 )
+from asterlite.lang.deck_function import Frame
 from asterlite.lang.values import Unknown
 
 INT_OR_FLOAT = frozenset({int, float})
@@ -131,8 +132,6 @@ class FunctionCompiler(ExpressionCompiler):
     """Builds one deck function's Python code."""
 
     def __init__(self, function, evaluator, runtime: CompiledRuntime):
-        from asterlite.lang.evaluator import Frame
-
         self.function = function
         self.evaluator = evaluator
         self.runtime = runtime

@@ -3,8 +3,25 @@ Python (``map(f, values)``) and from FORMULE expressions (``evaluate_many``)."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from asterlite.lang.library import STORE
 from asterlite.lang.values import CallSite, DeckCallable
+
+if TYPE_CHECKING:
+    from asterlite.lang.parser import Module
+
+
+class Frame:
+    """Where names live while running code: a function's locals (None at module
+    level, where names go to the shared namespace) and the enclosing frame."""
+
+    __slots__ = ("locals", "parent", "module")
+
+    def __init__(self, local_names: dict | None, parent: Frame | None, module: Module):
+        self.locals = local_names
+        self.parent = parent
+        self.module = module
 
 
 class DeckFunction(DeckCallable):

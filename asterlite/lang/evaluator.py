@@ -31,65 +31,24 @@ from asterlite.lang import library
 from asterlite.lang import limits as guards
 from asterlite.lang.budget import StepBudget
 from asterlite.lang.calls import bind_arguments, contains_unknown
-from asterlite.lang.deck_function import DeckFunction
+from asterlite.lang.compiler import compile_function
+from asterlite.lang.deck_function import DeckFunction, Frame
 from asterlite.lang.exceptions import python_error
 from asterlite.lang.flow import FlowStatements
 from asterlite.lang.imports import ImportStatements
 from asterlite.lang.library import DEEP, DIRECT, STORE, DeckModule
 from asterlite.lang.limits import Limits
+from asterlite.lang.operators import (
+    BINARY_OPERATORS,
+    COMPARISONS,
+    CONVERTED_ERRORS,
+    INPLACE_OPERATORS,
+    UNARY_OPERATORS,
+)
 from asterlite.lang.parser import Module, node_position
 from asterlite.lang.python2 import DICT_METHODS as PYTHON2_DICT_METHODS
-from asterlite.lang.python2 import classic_divide, classic_divide_inplace, dict_method
+from asterlite.lang.python2 import dict_method
 from asterlite.lang.values import CallSite, DeckCallable, Unknown
-
-# Python exceptions an operation or a whitelisted callable may raise on bad
-# deck input; they become located DeckRuntimeErrors.
-CONVERTED_ERRORS = (
-    ArithmeticError,
-    LookupError,
-    ValueError,
-    TypeError,
-    AttributeError,
-    MemoryError,
-)
-
-BINARY_OPERATORS = {
-    "+": operator.add,
-    "-": operator.sub,
-    "*": operator.mul,
-    "/": operator.truediv,
-    "//": operator.floordiv,
-    "%": operator.mod,
-    "**": operator.pow,
-    "|": operator.or_,
-    "^": operator.xor,
-    "&": operator.and_,
-    "/2": classic_divide,  # Python 2's '/' (the parser marks it so in Python 2 decks)
-}
-INPLACE_OPERATORS = {
-    "+=": ("+", operator.iadd),
-    "-=": ("-", operator.isub),
-    "*=": ("*", operator.imul),
-    "/=": ("/", operator.itruediv),
-    "//=": ("//", operator.ifloordiv),
-    "%=": ("%", operator.imod),
-    "**=": ("**", operator.ipow),
-    "/2=": ("/2", classic_divide_inplace),
-}
-COMPARISONS = {
-    "<": operator.lt,
-    ">": operator.gt,
-    "==": operator.eq,
-    ">=": operator.ge,
-    "<=": operator.le,
-    "!=": operator.ne,
-    "<>": operator.ne,  # Python 2
-    "in": lambda a, b: a in b,
-    "notin": lambda a, b: a not in b,
-    "is": operator.is_,
-    "isnot": operator.is_not,
-}
-UNARY_OPERATORS = {"-": operator.neg, "+": operator.pos, "~": operator.invert}
 
 _DEEP_SCAN_BUDGET = 100_000  # elements inspected when looking for Unknown in arguments
 
@@ -124,18 +83,6 @@ def attach_location(error: BaseException, location: Location | None) -> None:
             error.deck_location = location
         except AttributeError:  # an exception type without a __dict__
             pass
-
-
-class Frame:
-    """Where names live while running code: a function's locals (None at module
-    level, where names go to the shared namespace) and the enclosing frame."""
-
-    __slots__ = ("locals", "parent", "module")
-
-    def __init__(self, local_names: dict | None, parent: Frame | None, module: Module):
-        self.locals = local_names
-        self.parent = parent
-        self.module = module
 
 
 class Evaluator(ImportStatements, FlowStatements):
@@ -252,8 +199,6 @@ class Evaluator(ImportStatements, FlowStatements):
         function.compile_tried = True
         if not self.compile_functions or function.evaluator is not self:
             return
-        from asterlite.lang.compiler import compile_function
-
         direct = compile_function(function, self)
         if direct is not None:
             function.direct = direct

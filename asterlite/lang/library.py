@@ -14,46 +14,16 @@ import sys
 import types
 
 from asterlite.errors import DeckRuntimeError
+from asterlite.lang import exceptions, stdlib
 from asterlite.lang import limits as guards
 from asterlite.lang.limits import Limits
 from asterlite.lang.savetxt import make_savetxt
-from asterlite.lang.values import COBuilder, FactorBuilder
+from asterlite.lang.values import COBuilder, DeckModule, FactorBuilder
 
 # How a plain Python callable treats Unknown arguments (see Evaluator._call_python):
 STORE = "store"  # receives Unknown as any value (print, list.append, concept methods)
 DIRECT = "direct"  # Unknown result when an argument itself is Unknown (len, list, zip...)
 DEEP = "deep"  # Unknown result when Unknown appears anywhere in the arguments (math, numpy)
-
-
-class DeckModule:
-    """A module as a deck sees it: a fixed mapping of member names."""
-
-    __slots__ = ("name", "_members", "_loader")
-
-    def __init__(self, name: str, members: dict | None = None, loader=None):
-        self.name = name
-        self._members = members
-        self._loader = loader  # builds the members on first use (numpy)
-
-    @property
-    def members(self) -> dict:
-        if self._members is None:
-            self._members = self._loader()
-        return self._members
-
-    def attribute(self, name: str):
-        try:
-            return self.members[name]
-        except KeyError:
-            raise DeckRuntimeError(
-                f"module '{self.name}' has no attribute '{name}' available in decks"
-            ) from None
-
-    def public_names(self) -> dict:
-        return {k: v for k, v in self.members.items() if not k.startswith("_") or k == "_F"}
-
-    def __repr__(self) -> str:
-        return f"<module '{self.name}'>"
 
 
 def _policy(policy: str):
@@ -182,8 +152,7 @@ def base_namespace(print_hook=None, limits: Limits | None = None) -> dict:
     namespace["print"] = _make_print(print_hook, limits)
     namespace["_F"] = FactorBuilder()
     namespace["CO"] = COBuilder()
-    from asterlite.lang import exceptions, stdlib  # ValueError..., globals(), open refused
-
+    # ValueError..., globals(), open refused
     namespace.update(exceptions.deck_exception_names())
     namespace.update(stdlib.namespace_builtins(namespace))
     return namespace

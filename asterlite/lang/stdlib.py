@@ -21,8 +21,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 from asterlite.errors import DeckRuntimeError, UnsupportedError
-from asterlite.lang.library import DeckModule
 from asterlite.lang.limits import Limits
+from asterlite.lang.values import DeckModule
 
 # ------------------------------------------------------------------ cmath
 

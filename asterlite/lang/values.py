@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from asterlite.errors import Location
+from asterlite.errors import DeckRuntimeError, Location
 
 
 @dataclass(frozen=True)
@@ -127,3 +127,34 @@ Unknown = _UnknownType()
 
 def is_unknown(value) -> bool:
     return value is Unknown
+
+
+class DeckModule:
+    """A module as a deck sees it: a fixed mapping of member names."""
+
+    __slots__ = ("name", "_members", "_loader")
+
+    def __init__(self, name: str, members: dict | None = None, loader=None):
+        self.name = name
+        self._members = members
+        self._loader = loader  # builds the members on first use (numpy)
+
+    @property
+    def members(self) -> dict:
+        if self._members is None:
+            self._members = self._loader()
+        return self._members
+
+    def attribute(self, name: str):
+        try:
+            return self.members[name]
+        except KeyError:
+            raise DeckRuntimeError(
+                f"module '{self.name}' has no attribute '{name}' available in decks"
+            ) from None
+
+    def public_names(self) -> dict:
+        return {k: v for k, v in self.members.items() if not k.startswith("_") or k == "_F"}
+
+    def __repr__(self) -> str:
+        return f"<module '{self.name}'>"

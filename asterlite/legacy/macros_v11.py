@@ -12,10 +12,13 @@ from __future__ import annotations
 from asterlite.errors import CommandError
 from asterlite.lang.values import CO
 from asterlite.legacy.base import Env, Src, Translation, factor, lit, occurrences
+from asterlite.legacy.language_data import old_default
 
-# MACRO_PROJ_BASE defaults of code_aster 11 that differ from, or are missing in, PROJ_BASE
+# MACRO_PROJ_BASE defaults of code_aster 11 that differ from, or are missing in,
+# PROJ_BASE: PROFIL's 'DIAG' (the catalogue of mid-2011 decks; in the language
+# data, of October 2011, it is already STOCKAGE defaulting to 'PLEIN', and
+# PROFIL only an older name) and VECT_ASSE_GENE/TYPE_VECT's, read from the data
 PROJ_BASE_STORAGE = "DIAG"  # PROFIL
-PROJ_BASE_TYPE_VECT = "FORC"  # VECT_ASSE_GENE/TYPE_VECT
 # the options code_aster 11's MACRO_MATR_ASSE could build a new numbering from
 STIFFNESS = ("RIGI_MECA", "RIGI_MECA_LAGR", "RIGI_THER", "RIGI_ACOU")
 
@@ -49,7 +52,8 @@ def _with_type_vect(level: dict, env: Env) -> dict:
         "TYPE_VECT='FORC'",
         level,
     )
-    return factor({**level, "TYPE_VECT": PROJ_BASE_TYPE_VECT}, level)
+    default = old_default("MACRO_PROJ_BASE", "VECT_ASSE_GENE", "TYPE_VECT")
+    return factor({**level, "TYPE_VECT": default}, level)
 
 
 def _new_output(value) -> bool:

@@ -11,6 +11,7 @@ so it is written out.
 from __future__ import annotations
 
 from asterlite.legacy.base import Env, Translation, factor, lit, single
+from asterlite.legacy.language_data import old_default
 
 TARGET = "CALC_MODES"
 MATRIX_RENAMES = {"MATR_A": "MATR_RIGI", "MATR_B": "MATR_MASS", "MATR_C": "MATR_AMOR"}
@@ -29,7 +30,6 @@ INV_CALC_MODE = {"OPTION": "OPTION_INV", "PREC": "PREC_INV", "NMAX_ITER": "NMAX_
 # buckling windows written as CALC_FREQ in the oldest decks
 BUCKLING_RENAMES = {"NMAX_FREQ": "NMAX_CHAR_CRIT", "SEUIL_FREQ": "SEUIL_CHAR_CRIT"}
 DROPPED = ("NPREC_SOLVEUR",)
-LEGACY_DEFAULT_OPTION = {"MODE_ITER_SIMULT": "PLUS_PETITE", "MODE_ITER_INV": "AJUSTE"}
 
 
 def translate_mode_iter_simult(kwargs: dict, env: Env) -> Translation:
@@ -84,7 +84,7 @@ def _window_option(kw: dict, window_name: str, solver: dict, env: Env, command: 
     """Move CALC_FREQ/OPTION to OPTION and solver keywords to SOLVEUR_MODAL."""
     source = "CALC_CHAR_CRIT" if "CALC_CHAR_CRIT" in kw else "CALC_FREQ"
     occurrence = single(kw.get(source)) if source in kw else None
-    default = LEGACY_DEFAULT_OPTION[command]
+    default = old_default(command, "CALC_FREQ", "OPTION")  # what code_aster 11 gave
     if occurrence is None:
         if command == "MODE_ITER_INV":
             env.note(f"{command} without OPTION (legacy default {default})", f"OPTION={default!r}")

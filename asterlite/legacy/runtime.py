@@ -1,6 +1,6 @@
 """The dispatcher's side of legacy syntax: check as written, translate, log.
 
-:func:`translate_call` is called by :class:`asterlite.runtime.session.CommandProxy`
+:func:`translate_call` is called by the session's command proxy
 for a command whose catalogue has a ``compat_syntax``. A legacy call is
 validated against its legacy catalogue (precise messages for misspellings
 in old decks), translated, and each legacy form is logged once as
@@ -43,13 +43,11 @@ class ModernCall:
 
     def finish(self, result):
         """Run the follow-up calls on ``result`` (each reuses it); return it."""
-        from asterlite.runtime.session import CommandProxy
-
         for call in self.after:
             site = CallSite(location=self.site.location)
             kwargs = {k: result if v is RESULT else v for k, v in call.kwargs.items()}
             kwargs = run_new_calls(kwargs, self.session, site)
-            made = CommandProxy(call.command, self.session).deck_call([], kwargs, site)
+            made = self.session.command(call.command).deck_call([], kwargs, site)
             result = made if kwargs.get("reuse") is result else result
         return result
 
@@ -104,11 +102,9 @@ def _legacy_catalogue(compat, own, kwargs: dict, env: Env):
 
 def run_new_calls(value, session, site: CallSite):
     """``value`` with each :class:`NewCall` replaced by the concept its command makes."""
-    from asterlite.runtime.session import CommandProxy
-
     if isinstance(value, NewCall):
         kwargs = run_new_calls(value.kwargs, session, site)
-        return CommandProxy(value.command, session).deck_call([], kwargs, site)
+        return session.command(value.command).deck_call([], kwargs, site)
     if isinstance(value, FactorDict):
         return FactorDict(
             {k: run_new_calls(v, session, site) for k, v in value.items()},

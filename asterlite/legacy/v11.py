@@ -14,7 +14,8 @@ version is 11 or older:
   tested the value, the second found the instant (code_aster 11's trprec);
 - ``FIXED_STEP_SCHEMES``: DEVOGE stepped at the deck's PAS (it adapts today);
 - ``OLD_DEFAULTS``: keywords whose default code_aster 11 filled in and today's
-  catalogue makes mandatory (PROJ_VECT_BASE TYPE_VECT='FORC');
+  catalogue makes mandatory (PROJ_VECT_BASE TYPE_VECT='FORC'), their values
+  read from code_aster 11's language data (:mod:`asterlite.legacy.language_data`);
 - ``NO_EFFECT``: keywords of code_aster 11 that only tuned the run (renumbering
   of NUME_DDL) or labelled a check (VERSION): dropped with a note;
 - FORMULE read the deck's variables (numbers and strings) as they were when
@@ -47,6 +48,7 @@ from asterlite.errors import CommandError, UnsupportedError
 from asterlite.io.input_files import read_text_or_none
 from asterlite.lang.values import FactorDict
 from asterlite.legacy.base import Note, Src, lit
+from asterlite.legacy.language_data import old_default
 
 LAST_VERSION = 11  # the forms below are those of code_aster 11 and older
 
@@ -81,8 +83,9 @@ MOVED_UP_IN_12 = {"DYNA_TRAN_MODAL": {"EXCIT": ("MODE_STAT",)}}
 # checks at 1e-4 hold at the fixed step and fail by 0.4 % with today's control.
 FIXED_STEP_SCHEMES = ("DEVOGE",)
 
-# command -> {keyword: the default code_aster 11 gave it}
-OLD_DEFAULTS = {"PROJ_VECT_BASE": {"TYPE_VECT": "FORC"}}
+# command -> keywords whose code_aster 11 default (read from its language
+# data) the translation fills in
+OLD_DEFAULTS = {"PROJ_VECT_BASE": ("TYPE_VECT",)}
 
 # command -> factor (None: top level) -> keywords that changed no result, and why
 NO_EFFECT = {
@@ -106,9 +109,17 @@ NODE_ELEMENTS = {"AFFE_MODELE": "AFFE", "AFFE_CARA_ELEM": "DISCRET"}
 MESH_GROUP_PREFIXES = {"GROUP_NO_": "node_groups", "GROUP_MA_": "cell_groups"}
 
 # the fluid film (CHOC/LAME_FLUIDE='OUI'): the top-level keywords of its
-# fixed-point iterations, which code_aster 12 gathered in PARA_LAME_FLUI, with
-# their code_aster 11 defaults (asterlite.dynamics.fluid_film)
-FILM_ITERATIONS = {"NMAX_ITER": 20, "RESI_RELA": 1.0e-3, "LAMBDA": 10.0}
+# fixed-point iterations (asterlite.dynamics.fluid_film), which code_aster 11
+# gathered in PARA_LAME_FLUI in October 2011; their defaults are read there
+# from its language data
+FILM_ITERATIONS = ("NMAX_ITER", "RESI_RELA", "LAMBDA")
+
+
+def film_iteration_defaults() -> dict:
+    """FILM_ITERATIONS' code_aster 11 defaults, from its language data."""
+    return {k: old_default("DYNA_TRAN_MODAL", "PARA_LAME_FLUI", k) for k in FILM_ITERATIONS}
+
+
 # the schemes asterlite integrates a fluid film with: code_aster 11's EULER
 # (mdeul1) and ADAPT_ORDRE2 (mdadap; 'ADAPT' in code_aster 10). code_aster 11
 # also ran ADAPT_ORDRE1 with a film (mdadap again), which asterlite refuses;
@@ -373,7 +384,8 @@ def _reference_values(kwargs: dict, call: _Call) -> dict:
 
 
 def _old_defaults(kwargs: dict, call: _Call) -> dict:
-    missing = {k: v for k, v in OLD_DEFAULTS[call.command].items() if k not in kwargs}
+    names = OLD_DEFAULTS[call.command]
+    missing = {k: old_default(call.command, k) for k in names if k not in kwargs}
     if not missing:
         return kwargs
     given = ", ".join(f"{k}={v!r}" for k, v in missing.items())
@@ -679,7 +691,7 @@ def fluid_film(kwargs: dict, call: _Call) -> dict:
             "LAME_FLUIDE",
             path="CHOC/LAME_FLUIDE",
         )
-    values = {k: kwargs.get(k, default) for k, default in FILM_ITERATIONS.items()}
+    values = {k: kwargs.get(k, default) for k, default in film_iteration_defaults().items()}
     shown = ", ".join(f"{k}={v.text if isinstance(v, Src) else repr(v)}" for k, v in values.items())
     call.note(
         f"{call.command}/NMAX_ITER, RESI_RELA, LAMBDA (code_aster 11: the fluid film's "

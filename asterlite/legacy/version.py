@@ -27,6 +27,8 @@ from collections.abc import Iterator
 from functools import lru_cache
 
 from asterlite.io.input_files import read_text_or_none
+from asterlite.legacy import dyna
+from asterlite.legacy.v15_facts import ENTITY_KEYWORDS, OLD_BEHAVIOURS, REMOVED_AFTER_15
 
 CURRENT = 17
 # the last code_aster version whose decks were Python 2 (code_aster 14 moved
@@ -45,17 +47,15 @@ REMOVED_COMMANDS = {
 
 def _removed_keywords() -> dict[tuple[str, ...], int]:
     """(command, factor..., keyword) -> newest version that had that keyword there."""
-    from asterlite.legacy import dyna, v15
-
     found: dict[tuple[str, ...], int] = {}
     for family in dyna.LEGACY_VIBRA_FAMILIES:  # one factor keyword per nonlinearity
         found[("DYNA_VIBRA", family)] = 14
-    for command, factors in v15.ENTITY_KEYWORDS.items():  # mesh nodes and cells by name
+    for command, factors in ENTITY_KEYWORDS.items():  # mesh nodes and cells by name
         for factor, renames in factors.items():
             for old in renames:
                 path = (command, old) if factor is None else (command, factor, old)
                 found.setdefault(path, 15)
-    for path in v15.REMOVED_AFTER_15:
+    for path in REMOVED_AFTER_15:
         found.setdefault(path, 15)
     return found
 
@@ -224,7 +224,7 @@ def tables_name_nodes(session) -> bool:
 
 # ------------------------------------------------------------ what port cannot write
 
-# behaviours of asterlite.legacy.v15.OLD_BEHAVIOURS that no code_aster 17 keyword
+# behaviours of asterlite.legacy.v15_facts.OLD_BEHAVIOURS that no code_aster 17 keyword
 # expresses (the ported deck keeps them only by stating its version), each with
 # the deck text that makes a deck rely on it
 INEXPRESSIBLE = {
@@ -244,7 +244,6 @@ INEXPRESSIBLE = {
 def pragma_needed(text: str, version: int) -> tuple[bool, str]:
     """Whether the port of ``text`` (a deck of ``version``) must state its
     version to run as that version ran it, and why."""
-    from asterlite.legacy.v15 import OLD_BEHAVIOURS
 
     def differs(name: str) -> bool:
         first, last = OLD_BEHAVIOURS[name]

@@ -23,6 +23,7 @@ import numpy as np
 
 from asterlite.report import svg
 from asterlite.report.data import ReportData
+from asterlite.version import __version__
 
 GENERATOR = "asterlite report"
 MAX_SHOCK_FIGURES = 8  # shocks drawn one by one (the largest forces first)
@@ -162,8 +163,6 @@ def header(data: ReportData) -> str:
 
 
 def _version() -> str:
-    from asterlite import __version__
-
     return __version__
 
 

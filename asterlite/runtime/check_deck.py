@@ -123,7 +123,8 @@ def check_deck(
 ) -> DeckCheck:
     """Check one deck (a .comm, an .export or a deck folder); ``time_limit``
     (CPU seconds) replaces the export's and the default."""
-    from asterlite.runtime import stops, watchdog
+    from asterlite import watchdog
+    from asterlite.runtime import stops
     from asterlite.runtime.export import describe_run
     from asterlite.runtime.runner import internal_error_report, run_limits
     from asterlite.runtime.session import Session

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from asterlite.catalog.model import BLOC, FACT, SIMP
-from asterlite.concepts.base import Placeholder
+from asterlite.concepts.base import AnyPlaceholder, Placeholder
 from asterlite.errors import CommandError, UnsupportedError
 from asterlite.lang.values import CallSite, DeckCallable, Unknown, co_outputs
 
@@ -62,7 +62,20 @@ def code_aster_commands() -> dict[str, str]:
     known = dict.fromkeys(names.CURRENT, "17")
     for name, version in names.OLDER.items():
         known.setdefault(name, version)
+    for name in _legacy_language_commands():  # code_aster 10-12's, gone by 15
+        known.setdefault(name, LEGACY_COMMANDS_VERSION)
     return known
+
+
+LEGACY_COMMANDS_VERSION = "10-12"
+
+
+def _legacy_language_commands() -> frozenset[str]:
+    """The commands of code_aster 10-12's language data (v11.json)."""
+    from asterlite.catalog.language.model import language
+
+    old = language(11)
+    return old.command_names if old is not None else frozenset()
 
 
 class UnsupportedCommand(DeckCallable):
@@ -77,6 +90,13 @@ class UnsupportedCommand(DeckCallable):
         return f"<code_aster command {self.name} (not in asterlite)>"
 
     def deck_call(self, args, kwargs, site: CallSite):
+        if self.version == LEGACY_COMMANDS_VERSION:
+            raise UnsupportedError(
+                f"{self.name} is a code_aster 10-12 command that code_aster 15 and 17 no "
+                "longer have; asterlite does not translate it",
+                site.location,
+                self.name,
+            )
         where = "current" if self.version == "17" else f"version {self.version}"
         raise UnsupportedError(
             f"{self.name} is a code_aster command ({where} catalogue) that asterlite "
@@ -107,15 +127,15 @@ class CheckFacts:
     session: Any = None  # the session checked
     findings: list = field(default_factory=list)
     calls: list = field(default_factory=list)  # the command calls under way (language_check)
+    # (session, error) -> findings: language_check.finding_of_error, given by the session
+    finding_of_error: Any = None
 
     def record(self, error) -> None:
         if self.errors and error in (self.errors[-1], getattr(self.errors[-1], "original", None)):
             return
         self.errors.append(error)
-        if self.session is not None:
-            from asterlite.runtime.language_check import finding_of_error
-
-            self.findings.extend(finding_of_error(self.session, error))
+        if self.session is not None and self.finding_of_error is not None:
+            self.findings.extend(self.finding_of_error(self.session, error))
 
     def note(self, finding) -> None:
         """A finding of the two verdicts that is no error of asterlite's own."""
@@ -372,8 +392,6 @@ def undecidable(catalogue, keywords: Keywords) -> bool:
 
 
 def _untyped_concept(entry: SIMP, value) -> bool:
-    from asterlite.runtime.session import AnyPlaceholder
-
     items = value if isinstance(value, (list, tuple)) else (value,)
     concept_typed = any(t not in VALUE_TYPES for t in entry.types if isinstance(t, str))
     return any(

@@ -327,7 +327,7 @@ def memory_cap(fraction: float = MEMORY_FRACTION):
     instead of being killed by the system. No-op where unsupported."""
     import os
 
-    from asterlite.runtime.watchdog import address_space_cap
+    from asterlite.watchdog import address_space_cap
 
     try:
         total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")

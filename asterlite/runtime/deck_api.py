@@ -287,8 +287,6 @@ class _Init(DeckCallable):
         self.session = session
 
     def deck_call(self, args, kwargs, site: CallSite):
-        from asterlite.runtime.session import CommandProxy
-
         for option in args:
             if not isinstance(option, str) or option not in HARMLESS_OPTIONS:
                 raise UnsupportedError(
@@ -306,7 +304,7 @@ class _Init(DeckCallable):
         keywords = {k: v for k, v in kwargs.items()}
         locations = {k: v for k, v in site.keyword_locations.items() if k in keywords}
         call = CallSite(site.location, locations, site.assigned_name)
-        return CommandProxy(command, self.session).deck_call([], keywords, call)
+        return self.session.command(command).deck_call([], keywords, call)
 
 
 class _Close(DeckCallable):
@@ -316,11 +314,9 @@ class _Close(DeckCallable):
         self.session = session
 
     def deck_call(self, args, kwargs, site: CallSite):
-        from asterlite.runtime.session import CommandProxy
-
         if args:
             raise UnsupportedError("CA.close takes keyword arguments only", site.location)
-        return CommandProxy("FIN", self.session).deck_call([], dict(kwargs), site)
+        return self.session.command("FIN").deck_call([], dict(kwargs), site)
 
 
 class _MeshFactory(DeckCallable):
@@ -330,7 +326,8 @@ class _MeshFactory(DeckCallable):
         self.session = session
 
     def deck_call(self, args, kwargs, site: CallSite):
-        from asterlite.concepts.mesh import ReadableMesh
+        # numpy (~150 ms of start-up) stays out of asterlite check: loaded when a deck calls it
+        from asterlite.io.med_mesh import ReadableMesh
 
         if args or kwargs:
             raise UnsupportedError("CA.Mesh() takes no arguments in asterlite", site.location)

@@ -50,6 +50,7 @@ from asterlite.errors import (
     ValidationError,
 )
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
+from asterlite.runtime.checking import MESH_COMMANDS, READERS, code_aster_commands
 
 
 class InvalidCall(ValidationError):
@@ -106,8 +107,6 @@ def bind_language_commands(session) -> Language | None:
     """Under check: bind the code_aster commands asterlite lacks, those of
     every catalogue asterlite knows (as before) and those of the deck
     version's language (asterlite's own are bound again by the session)."""
-    from asterlite.runtime.checking import code_aster_commands
-
     lang = session_language(session)
     for name, version in code_aster_commands().items():
         session.namespace[name] = LanguageCommand(name, session, version)
@@ -196,8 +195,6 @@ def not_a_command(name: str, lang: Language, version: int) -> str:
 def note_units(session, name: str, keywords: dict) -> None:
     """Logical units a command other than a reader may write (every UNITE*
     value, code_aster's defaults included: IMPR_RESU in MED writes unit 80)."""
-    from asterlite.runtime.checking import READERS
-
     if name in READERS:
         return
     for value in _unit_values(keywords):
@@ -207,8 +204,6 @@ def note_units(session, name: str, keywords: dict) -> None:
 def note_not_computed(session, name: str, kwargs: dict, keywords: dict | None = None) -> None:
     """A valid call asterlite does not compute: what it may have written or
     changed (logical units, a mesh's groups) is no longer judged."""
-    from asterlite.runtime.checking import MESH_COMMANDS
-
     facts = session.check
     for value in _unit_values(kwargs):
         facts.units_open.add(value)
@@ -529,6 +524,10 @@ def classify_deck_error(session, error: AsterliteError) -> AsterliteError | None
         return error
     if not isinstance(error, DeckRuntimeError):
         return error
+    if type(error).__name__ == "DeckRaised":
+        # the deck's own raise, on values check computed without running the
+        # study (a file a tool makes first, a result): no verdict on the language
+        return _unsupported_python(error, "the deck raises here; check cannot tell if a run would")
     kind = getattr(error, "python_type", None)
     if kind is None and type(error) is DeckRuntimeError:
         return _unsupported_python(error, "refused by asterlite's deck evaluator")

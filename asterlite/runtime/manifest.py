@@ -6,16 +6,21 @@ written by hand, by another user, or copied from another folder could list
 ``.git`` or the deck. So the summary also carries a manifest:
 
 - for each entry the run made, its identity when the summary was written
-  (kind, device, inode; size and modification time of a finished file);
+  (kind, device, inode; size and modification time of a finished file; the
+  contents of a finished folder);
+- the ``previous-*`` folders asterlite made in the folder, with what it
+  moved into them (:mod:`asterlite.runtime.previous_results`: what a later
+  run may delete);
 - the identity of the folder itself;
 - an HMAC-SHA256 of the whole summary, keyed by a secret of this user
   (``~/.config/asterlite/manifest.key``, 32 random bytes, mode 0600, in a
   folder only this user may write: :mod:`asterlite.trusted_paths`).
 
-The next run moves aside only the entries of a summary whose HMAC verifies
-with this user's key, in the same folder, and whose identity still matches
-what is there. Anyone who can forge the HMAC can read the user's key, and
-so could already write to the user's files.
+The next run moves aside (and deletes, among older ``previous-*`` folders)
+only the entries of a summary whose HMAC verifies with this user's key, in
+the same folder, and whose identity still matches what is there. Anyone
+who can forge the HMAC can read the user's key, and so could already write
+to the user's files.
 """
 
 from __future__ import annotations
@@ -144,9 +149,14 @@ def _canonical(data: dict) -> bytes:
     return json.dumps(plain, sort_keys=True, separators=(",", ":"), ensure_ascii=True).encode()
 
 
-def sign(data: dict, folder_info: os.stat_result, entries: dict) -> None:
-    """Add the manifest (entries, folder, HMAC) to the summary ``data``."""
+def sign(
+    data: dict, folder_info: os.stat_result, entries: dict, previous: dict | None = None
+) -> None:
+    """Add the manifest (entries, the ``previous-*`` folders asterlite made
+    here, folder, HMAC) to the summary ``data``."""
     data["manifest"] = {"folder": [folder_info.st_dev, folder_info.st_ino], "entries": entries}
+    if previous:
+        data["manifest"]["previous"] = previous
     key = user_key()
     if key is not None:
         data["manifest"]["hmac"] = hmac.new(key, _canonical(data), hashlib.sha256).hexdigest()
@@ -156,6 +166,24 @@ def verified_entries(data: dict, folder_info: os.stat_result) -> dict | None:
     """The manifest's entries when this user's asterlite signed ``data`` for
     this folder; None for any other summary (unsigned, forged, another
     user's, copied from elsewhere, edited)."""
+    manifest = verified_manifest(data, folder_info)
+    if manifest is None:
+        return None
+    entries = manifest.get("entries")
+    return entries if isinstance(entries, dict) else None
+
+
+def verified_previous(data: dict, folder_info: os.stat_result) -> dict:
+    """The ``previous-*`` folders a verified manifest records as made by
+    asterlite in this folder ({} for any summary that does not verify)."""
+    manifest = verified_manifest(data, folder_info)
+    previous = manifest.get("previous") if manifest is not None else None
+    return previous if isinstance(previous, dict) else {}
+
+
+def verified_manifest(data: dict, folder_info: os.stat_result) -> dict | None:
+    """The manifest of ``data`` when this user's asterlite signed it for this
+    folder, else None."""
     manifest = data.get("manifest") if isinstance(data, dict) else None
     if not isinstance(manifest, dict) or not isinstance(manifest.get("hmac"), str):
         return None
@@ -170,5 +198,4 @@ def verified_entries(data: dict, folder_info: os.stat_result) -> dict | None:
         return None
     if manifest.get("folder") != [folder_info.st_dev, folder_info.st_ino]:
         return None
-    entries = manifest.get("entries")
-    return entries if isinstance(entries, dict) else None
+    return manifest

@@ -16,7 +16,10 @@ What a run promises about its ``-o`` folder (docs/safety.md):
   never mix. Only entries a verified manifest lists are moved
   (:mod:`asterlite.runtime.manifest`), or, for a summary that does not
   verify, the regular files and folders with the names asterlite always
-  uses; never the run's inputs, never anything a summary merely claims;
+  uses; never the run's inputs, never anything a summary merely claims.
+  The ``keep`` most recent ``previous-*`` folders stay; older ones are
+  deleted only as far as a verified manifest records them as asterlite's
+  (:mod:`asterlite.runtime.previous_results`);
 - ``message.log`` is written line by line and ``summary.json`` says RUNNING
   as the run goes; the files the deck writes wait in a hidden staging folder
   and appear under their names only when the run completes (else the staging
@@ -35,7 +38,7 @@ import time
 from pathlib import Path
 
 from asterlite.errors import AsterliteError
-from asterlite.runtime import manifest
+from asterlite.runtime import manifest, previous_results
 from asterlite.runtime.write_boundary import (
     _NOFOLLOW,
     OutputFolderError,
@@ -153,12 +156,14 @@ class StreamedLog(list):
 
 
 class EarlierResult:
-    """The summary.json found in the folder: its data, and the manifest's
-    entries when it verifies (None otherwise)."""
+    """The summary.json found in the folder: its data, the manifest's entries
+    when it verifies (None otherwise) and the ``previous-*`` folders it
+    records as asterlite's ({} unless it verifies)."""
 
-    def __init__(self, data: dict, entries: dict | None):
+    def __init__(self, data: dict, entries: dict | None, previous: dict | None = None):
         self.data = data
         self.entries = entries
+        self.previous = previous or {}
 
     @property
     def status(self) -> str:
@@ -186,7 +191,11 @@ def read_earlier_result(boundary: WriteBoundary) -> EarlierResult | None:
         raise refusal from None
     if not isinstance(data, dict) or "status" not in data or not {"deck", "output"} & set(data):
         raise refusal
-    return EarlierResult(data, manifest.verified_entries(data, boundary.info))
+    return EarlierResult(
+        data,
+        manifest.verified_entries(data, boundary.info),
+        manifest.verified_previous(data, boundary.info),
+    )
 
 
 def earlier_result_names(
@@ -242,9 +251,13 @@ class OutputFolder:
         log_cap: int | None = None,
         deck: str = "",
         protected: frozenset = frozenset(),
+        keep_previous: int = previous_results.DEFAULT_KEEP,
     ):
         self.path = Path(path)
         self.deck = deck
+        self.keep_previous = max(0, int(keep_previous))
+        self.previous_records: dict = {}  # the previous-* folders asterlite made here
+        self.previous_notes: list[str] = []  # what became of the older ones
         self.log_cap = log_cap
         self.protected = protected  # (device, inode) of the run's inputs: never moved
         self.created: list[str] = []  # names this run made in the folder
@@ -279,6 +292,8 @@ class OutputFolder:
             self.log = StreamedLog(self._make_own_file(LOG_NAME), self.log_cap)
             if self.moved_aside is not None:  # said first: what this folder held before
                 self.log.append(f"# the earlier result was moved to {self.moved_aside.name}/")
+            for note in self.previous_notes:
+                self.log.append(f"# {note}")
             if self.earlier_note:
                 self.log.append(f"# {self.earlier_note}")
             self.write_summary(
@@ -459,18 +474,30 @@ class OutputFolder:
         data["output"] = {**output, "files": sorted(set(entries) | {SUMMARY_NAME})}
         self._own[SUMMARY_NAME] = self.boundary.lstat(SUMMARY_NAME)  # verified: the dead run's
         try:
-            self._replace_summary(_signed_text(data, self.boundary, entries))
+            self._replace_summary(_signed_text(data, self.boundary, entries, earlier.previous))
         finally:
             self._own.pop(SUMMARY_NAME, None)  # the new run's summary is not written yet
         return read_earlier_result(self.boundary)
 
     def _move_earlier_result(self, earlier: EarlierResult | None) -> Path | None:
-        """Move what an earlier run left here into ``previous-<its start>/``."""
+        """Move what an earlier run left here into ``previous-<its start>/``,
+        then keep the ``keep_previous`` most recent such folders."""
         if earlier is None:
             return None
+        records = previous_results.live_records(self.boundary, earlier.previous)
         names = earlier_result_names(self.boundary, earlier, self.protected)
-        if not names:
-            return None
+        moved = self._move_into_previous(earlier, names) if names else None
+        if moved is not None:
+            records[moved[0]] = moved[1]
+        kept, deleted, left = previous_results.prune(self.boundary, records, self.keep_previous)
+        self.previous_records = kept
+        made = moved[0] if moved is not None else None
+        self.previous_notes = previous_results.notes(self.keep_previous, made, deleted, left)
+        return self.path / made if made is not None and made not in deleted else None
+
+    def _move_into_previous(self, earlier: EarlierResult, names: list[str]) -> tuple[str, dict]:
+        """Move ``names`` into a new ``previous-<time>/``: its name and its
+        manifest record (what was moved that asterlite can tell as its own)."""
         mtime = self.boundary.lstat(SUMMARY_NAME).st_mtime
         stamp = time.strftime("%Y%m%d-%H%M%S", time.localtime(mtime))
         name, number = f"{PREVIOUS_PREFIX}{stamp}", 1
@@ -481,13 +508,18 @@ class OutputFolder:
             except FileExistsError:
                 number += 1
                 name = f"{PREVIOUS_PREFIX}{stamp}-{number}"
+        made = time.time()
         target = self.boundary.folder(name)
+        trusted = {}
         try:
             for entry in names:
+                record = previous_results.trusted_record(self.boundary, earlier, entry)
                 self.boundary.move(entry, target)
+                if record is not None:
+                    trusted[entry] = record
         finally:
             target.close()
-        return self.path / name
+        return name, previous_results.folder_record(self.boundary, name, trusted, made)
 
     # ------------------------------------------------------------ deck files
     def check_name(self, name: str) -> None:
@@ -613,7 +645,7 @@ class OutputFolder:
             "moved_aside": self.moved_aside.name if self.moved_aside else None,
         }
         entries = self._entries(finished=not running)
-        text = _signed_text(data, self.boundary, entries)
+        text = _signed_text(data, self.boundary, entries, self.previous_records)
         if running:
             text = text.ljust(SUMMARY_RESERVE - 1) + "\n"
         self._own[SUMMARY_NAME] = self._replace_summary(text)
@@ -630,7 +662,7 @@ class OutputFolder:
         files = sorted(set(self.created) | {SUMMARY_NAME})
         short = {key: data.get(key) for key in ("deck", "status", "message")}
         short["output"] = {"files": files, "started": _clock(self.started), "pid": os.getpid()}
-        text = _signed_text(short, self.boundary, self._entries(True))
+        text = _signed_text(short, self.boundary, self._entries(True), self.previous_records)
         if len(text.encode()) >= own.st_size:
             short.pop("output")
             text = json.dumps(short)
@@ -649,7 +681,7 @@ class OutputFolder:
                 continue
             info = self.boundary.lstat(name)
             if info is not None and same_unshared(info, self._own.get(name)):
-                entries[name] = manifest.identity(info, finished)
+                entries[name] = previous_results.entry_record(self.boundary, name, finished)
         return entries
 
     def _replace_summary(self, text: str) -> os.stat_result:
@@ -670,10 +702,12 @@ class OutputFolder:
         return self.boundary.lstat(SUMMARY_NAME)
 
 
-def _signed_text(data: dict, boundary: WriteBoundary, entries: dict) -> str:
+def _signed_text(
+    data: dict, boundary: WriteBoundary, entries: dict, previous: dict | None = None
+) -> str:
     """The summary as written: indented JSON with its signed manifest."""
     data = dict(data)
-    manifest.sign(data, boundary.info, entries)
+    manifest.sign(data, boundary.info, entries, previous)
     return json.dumps(data, indent=1)
 
 
@@ -753,7 +787,7 @@ def list_in_summary(path: Path, name: str) -> bool:
         files = sorted(set(data.get("output", {}).get("files", [])) | {name})
         data["output"] = {**data.get("output", {}), "files": files}
         folder._own[SUMMARY_NAME] = folder.boundary.lstat(SUMMARY_NAME)
-        folder._replace_summary(_signed_text(data, folder.boundary, entries))
+        folder._replace_summary(_signed_text(data, folder.boundary, entries, earlier.previous))
         return True
     except (OSError, OutputFolderError):
         return False

@@ -25,9 +25,10 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from asterlite import watchdog
 from asterlite.errors import AsterliteError, UnsupportedError
 from asterlite.report.fields import summary_fields, summary_lines
-from asterlite.runtime import stops, watchdog
+from asterlite.runtime import stops
 from asterlite.runtime.context import TestRecord
 from asterlite.runtime.export import NOT_PRODUCED, describe_run, limit_refusal
 from asterlite.runtime.outdir import (
@@ -35,6 +36,8 @@ from asterlite.runtime.outdir import (
     OutputFolderError,
     OutputLimitError,
 )
+from asterlite.runtime.previous_results import DEFAULT_KEEP
+from asterlite.runtime.verdicts import check_comparisons, plain_value
 from asterlite.runtime.write_boundary import replace_outside
 
 EXIT_OK, EXIT_NOOK, EXIT_ERROR = 0, 1, 2
@@ -96,7 +99,7 @@ class RunReport:
             "seconds": round(self.seconds, 3),
             "message": self.message,
             "errors": self.errors,
-            "overrides": {k: _plain(v) for k, v in self.overrides.items()},
+            "overrides": {k: plain_value(v) for k, v in self.overrides.items()},
             "overrides_used": self.overrides_used,
             "transients": self.transients,
             "shocks": self.shocks,
@@ -105,11 +108,11 @@ class RunReport:
                 {
                     "command": t.command,
                     "label": t.label,
-                    "value": _plain(t.value),
-                    "expected": _plain(t.expected),
+                    "value": plain_value(t.value),
+                    "expected": plain_value(t.expected),
                     "reference": t.reference,
-                    "error": _plain(t.error),
-                    "tolerance": _plain(t.tolerance),
+                    "error": plain_value(t.error),
+                    "tolerance": plain_value(t.tolerance),
                     "ok": bool(t.ok),
                     "strict": bool(t.strict),
                     **check_comparisons(t),
@@ -128,45 +131,6 @@ class RunReport:
         }
 
 
-def check_comparisons(test: TestRecord) -> dict:
-    """Each value a check compared with, VALE_REFE (with its reference kind)
-    and VALE_CALC, with error, tolerance and verdict; ``failed`` names the
-    comparisons that did not hold (``expected`` alone shows only one)."""
-    shown = {
-        "expected": _plain(test.expected),
-        "error": _plain(test.error),
-        "tolerance": _plain(test.tolerance),
-    }
-    calc = test.calc_comparison
-    comparisons = {}
-    if test.expected is not None and test.reference != "NON_REGRESSION":
-        holds = bool(test.error <= test.tolerance)  # the reference check shown in ``expected``
-        comparisons["VALE_REFE"] = {**shown, "reference": test.reference, "ok": holds}
-    if calc is not None:
-        comparisons["VALE_CALC"] = {
-            "expected": _plain(calc.expected),
-            "error": _plain(calc.error),
-            "tolerance": _plain(calc.tolerance),
-            "ok": bool(calc.holds),
-        }
-    failed = [kind for kind, comparison in comparisons.items() if not comparison["ok"]]
-    return {"comparisons": comparisons, "failed": failed}
-
-
-def _plain(value):
-    """JSON-friendly version of a test value (numpy scalars, complex...)."""
-    if isinstance(value, complex):
-        return [value.real, value.imag]
-    if hasattr(value, "item"):
-        try:
-            return value.item()
-        except (ValueError, AttributeError):
-            return str(value)
-    if isinstance(value, (int, float, str, bool)) or value is None:
-        return value
-    return str(value)
-
-
 def run_deck(
     deck: Path,
     output_dir: Path | None = None,
@@ -182,6 +146,7 @@ def run_deck(
     aster_version: int | None = None,
     report_page: bool = False,
     result_paths: bool = False,
+    keep_previous: int | None = None,
 ) -> RunReport:
     """Run or check the deck at ``deck`` (an .export or a .comm).
 
@@ -197,6 +162,9 @@ def run_deck(
     one that cannot be taken makes an ERROR report with nothing written.
     The export's ``R`` lines are kept in the output folder, or at their own
     paths with ``result_paths`` (``asterlite run --allow-result-paths``).
+    An earlier result in the folder is moved into ``previous-<time>/``; the
+    ``keep_previous`` most recent of those stay (None: 3, 0: none), see
+    :mod:`asterlite.runtime.previous_results`.
 
     A stop signal ends the run INTERRUPTED; one that comes once the result
     is written is raised after it (RunInterrupted, with ``report`` set).
@@ -205,6 +173,10 @@ def run_deck(
     refusal = limits_refusal(
         time_limit=time_limit, memory_limit=memory_limit, output_limit=output_limit
     )
+    if keep_previous is not None and (
+        isinstance(keep_previous, bool) or not isinstance(keep_previous, int) or keep_previous < 0
+    ):
+        refusal = f"keep_previous={keep_previous!r}: earlier results kept must be a count >= 0"
     if refusal:
         return RunReport(deck.stem, "ERROR", refusal)
     output_bytes = output_cap_bytes(output_limit)
@@ -216,7 +188,11 @@ def run_deck(
             try:
                 cap = log_cap_bytes(output_bytes)
                 folder = OutputFolder(
-                    output_dir, log_cap=cap, deck=deck.stem, protected=input_identities(deck)
+                    output_dir,
+                    log_cap=cap,
+                    deck=deck.stem,
+                    protected=input_identities(deck),
+                    keep_previous=DEFAULT_KEEP if keep_previous is None else keep_previous,
                 ).open()
             except OutputFolderError as error:
                 report = RunReport(deck.stem, "ERROR", str(error))
@@ -564,7 +540,7 @@ def one_row_table_values(namespace: dict) -> dict:
     for name, value in namespace.items():
         if isinstance(value, Table) and len(value.rows) == 1:
             for para, cell in value.rows[0].items():
-                values[f"{name}.{para}"] = _plain(cell)
+                values[f"{name}.{para}"] = plain_value(cell)
     return values
 
 
@@ -592,8 +568,8 @@ def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
                 "t_end": float(concept.times[-1]) if len(concept.times) else None,
                 "steps": int(info.get("steps", 0)),
                 "rejected_steps": int(info.get("rejected_steps", 0)),
-                "min_step": _plain(info.get("min_step")),
-                "max_step": _plain(info.get("max_step")),
+                "min_step": plain_value(info.get("min_step")),
+                "max_step": plain_value(info.get("max_step")),
                 # the steps that led to the archived instants (PTEM): their median
                 # (numpy's: the (a + b) / 2 of the former statistics.median, no list)
                 "median_step": float(np.median(concept.step_sizes[1:]))
@@ -601,14 +577,14 @@ def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
                 else None,
                 "integration_seconds": float(info.get("integration_seconds", 0.0)),
                 # SCHEMA_TEMPS's PAS_MINI / PAS_MAXI as the deck gave them (None: default)
-                "pas_mini": _plain(info.get("pas_mini")),
-                "pas_maxi": _plain(info.get("pas_maxi")),
+                "pas_mini": plain_value(info.get("pas_mini")),
+                "pas_maxi": plain_value(info.get("pas_maxi")),
             }
         )
         if "energy_residual" in info:  # ENERGIE=_F(): the final balance residual
-            transients[-1]["energy_residual"] = _plain(info["energy_residual"])
-            transients[-1]["energy_residual_ratio"] = _plain(info["energy_residual_ratio"])
-            transients[-1]["energy_residual_flow_ratio"] = _plain(
+            transients[-1]["energy_residual"] = plain_value(info["energy_residual"])
+            transients[-1]["energy_residual_ratio"] = plain_value(info["energy_residual_ratio"])
+            transients[-1]["energy_residual_flow_ratio"] = plain_value(
                 info.get("energy_residual_flow_ratio")
             )
         shocks += [shock_summary(name, concept.times, shock) for shock in concept.shocks]
@@ -827,12 +803,12 @@ def format_test_line(test: TestRecord) -> str:
     flag = "OK  " if test.ok else "NOOK"
     strict = "" if test.strict or not test.ok else " (not strict)"
     text = (
-        f"  {flag} {test.command} {test.label}: value={_plain(test.value)!r} "
-        f"expected={_plain(test.expected)!r} error={_plain(test.error)!r}"
+        f"  {flag} {test.command} {test.label}: value={plain_value(test.value)!r} "
+        f"expected={plain_value(test.expected)!r} error={plain_value(test.error)!r}"
     )
     calc = test.calc_comparison
     if calc is not None and test.reference != "NON_REGRESSION":
-        text += f" | VALE_CALC={_plain(calc.expected)!r} error={_plain(calc.error)!r}"
+        text += f" | VALE_CALC={plain_value(calc.expected)!r} error={plain_value(calc.error)!r}"
     return text + strict
 
 

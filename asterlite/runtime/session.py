@@ -19,9 +19,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from asterlite import watchdog
 from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
-from asterlite.concepts.base import Concept, Placeholder
+from asterlite.concepts.base import AnyPlaceholder, Concept, Placeholder
 from asterlite.errors import (
     AsterliteError,
     CommandError,
@@ -33,9 +34,27 @@ from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
-from asterlite.runtime import console, watchdog
+from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
+from asterlite.legacy.runtime import translate_call
+from asterlite.legacy.version import PYTHON2_LAST, session_version
+from asterlite.runtime import checking, console
+from asterlite.runtime.checking import (
+    UnsupportedCommand,
+    check_call,
+    command_failed,
+    note_unit_mapping,
+    statement_failed,
+    undecidable,
+)
 from asterlite.runtime.context import CommandContext, TestRecord
 from asterlite.runtime.export import RunDescription
+from asterlite.runtime.language_check import (
+    bind_language_commands,
+    bind_unparsed_names,
+    checked_call,
+    finding_of_error,
+    module_commands,
+)
 from asterlite.runtime.v15_names import GeneratedNames, record_call
 
 
@@ -49,16 +68,6 @@ class UnknownOverrideError(AsterliteError):
     """A ``--set NAME=...`` override names a variable the deck never assigns."""
 
     kind = "unknown variable"
-
-
-class AnyPlaceholder(Placeholder):
-    """Stands for a concept of a type ``asterlite check`` cannot tell."""
-
-    def __init__(self, produced_by: str = ""):
-        super().__init__("*", produced_by)
-
-    def satisfies(self, type_name: str) -> bool:
-        return True
 
 
 @dataclass
@@ -123,16 +132,13 @@ class Session:
 
     def __post_init__(self) -> None:
         from asterlite.lang import base_namespace
-        from asterlite.runtime import checking
 
         self.namespace.update(base_namespace(print_hook=self._print))
         from asterlite.lang import stdlib
 
         self.namespace.update(stdlib.namespace_builtins(self.namespace))  # globals(): these names
         if self.check_only:
-            from asterlite.runtime.language_check import bind_language_commands
-
-            self.check = checking.CheckFacts(session=self)
+            self.check = checking.CheckFacts(session=self, finding_of_error=finding_of_error)
             # refused by name as before, and validated in the deck version's language
             bind_language_commands(self)
         else:
@@ -165,6 +171,11 @@ class Session:
 
     def record_test(self, record: TestRecord) -> None:
         self.tests.append(record)
+
+    def command(self, name: str) -> CommandProxy:
+        """The deck command ``name`` run in this session (what a deck calling
+        it gets; legacy translations and the code_aster object API call it)."""
+        return CommandProxy(name, self)
 
     def input_path(self, unit: int) -> Path:
         """The input file the run maps to logical ``unit``."""
@@ -203,8 +214,6 @@ class Session:
     # ----------------------------------------------------------- running
     def load_module(self, name: str) -> dict | None:
         """Modules a deck may import besides math and numpy."""
-        from asterlite.runtime.checking import UnsupportedCommand
-
         if name in COMMAND_MODULES:  # the commands, which the namespace already holds
             commands = (CommandProxy, UnsupportedCommand)
             return {n: v for n, v in self.namespace.items() if isinstance(v, commands)}
@@ -213,8 +222,6 @@ class Session:
 
             return code_aster_ca_module(self)
         if name.startswith("code_aster.") and self.check is not None:
-            from asterlite.runtime.language_check import module_commands
-
             found = module_commands(self, name)  # user macros: code_aster.MacroCommands...
             if found:
                 return found
@@ -268,8 +275,6 @@ class Session:
             if self.check is None:
                 raise
             self.check.record(error)  # check goes on with the next deck file
-            from asterlite.runtime.language_check import bind_unparsed_names
-
             bind_unparsed_names(self, path)  # its names are unknown, not undefined
             return
         evaluator = Evaluator(
@@ -303,8 +308,6 @@ class Session:
     def _python2_allowed(self, module, path: Path) -> None:
         """A Python 2 deck runs as one of code_aster 13 or older; in a run read
         as a later version, its Python 3 syntax error stands."""
-        from asterlite.legacy.version import PYTHON2_LAST, session_version
-
         version = session_version(self)
         if version > PYTHON2_LAST:
             error = module.python3_error
@@ -323,7 +326,6 @@ class Session:
         text also reads as Python 3: its '/' of integers, map/zip/range...
         meant Python 2's (asterlite.lang.python2)."""
         from asterlite.lang import parse_deck
-        from asterlite.legacy.version import PYTHON2_LAST, session_version
 
         version = session_version(self)
         if version > PYTHON2_LAST:
@@ -349,8 +351,6 @@ class Session:
 
     def _statement_failed(self, error, statement) -> None:
         """Under check: record the error of a top-level statement and go on."""
-        from asterlite.runtime.checking import statement_failed
-
         if isinstance(error, DeckFinished):
             raise error
         statement_failed(self, statement, error)
@@ -491,8 +491,6 @@ class CommandProxy(DeckCallable):
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
         if self.session.check is None:
             return self._deck_call(args, kwargs, site)
-        from asterlite.runtime.language_check import checked_call
-
         # check: valid code_aster N (the deck's version), then what asterlite computes
         return checked_call(self, args, kwargs, site)
 
@@ -506,8 +504,6 @@ class CommandProxy(DeckCallable):
         except DeckFinished:
             raise
         except AsterliteError as error:  # check: record, the outputs become Unknown
-            from asterlite.runtime.checking import command_failed
-
             if error.location is None:
                 error.location = site.location
             command_failed(self.session, self.name, kwargs, error)
@@ -531,12 +527,8 @@ class CommandProxy(DeckCallable):
             raise UnsupportedError(f"command {self.name} is not supported", site.location)
         kwargs = dict(kwargs)
         reuse = kwargs.pop("reuse", None)
-        from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
-
         kwargs = v11.before_call(self.name, kwargs, site, session)
         if catalogue.compat_syntax is not None:  # legacy syntax: check as written, translate
-            from asterlite.legacy.runtime import translate_call
-
             modern = translate_call(catalogue, kwargs, site, session, reuse=reuse)
             if modern is not None:
                 name, catalogue, kwargs = modern
@@ -564,15 +556,11 @@ class CommandProxy(DeckCallable):
         if self.name in SESSION_COMMANDS:
             return self._session_command(keywords, site)
         if session.check_only:
-            from asterlite.runtime.checking import check_call
-
             return check_call(self, catalogue, keywords, site, reuse)
         return self._execute(keywords, site, reuse)
 
     # ---------------------------------------------------------------- check
     def _placeholder(self, catalogue, keywords: Keywords):
-        from asterlite.runtime.checking import undecidable
-
         try:
             # sd_prod also types the CO outputs (CO.produced_type), as code_aster's does
             produced = result_type(catalogue, keywords)
@@ -631,8 +619,6 @@ class CommandProxy(DeckCallable):
                 error.path = self.name
             raise
         refuse_unread(keywords)
-        from asterlite.legacy import v11
-
         concept = v11.after_run(self.name, concept, session)
         seconds = time.perf_counter() - start
         session.timings.append(CommandTiming(self.name, site.location, site.assigned_name, seconds))
@@ -688,8 +674,6 @@ class CommandProxy(DeckCallable):
             if unit is not None and name and session.output_dir is not None:
                 session.output_units[int(unit)] = session.output_path(str(name))
             if session.check is not None:
-                from asterlite.runtime.checking import note_unit_mapping
-
                 note_unit_mapping(session, keywords)
             return None
         return None

@@ -21,14 +21,15 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from asterlite.io.input_files import read_text_or_none
+from asterlite.runtime.context import TestRecord
+
 REFE, CALC = "VALE_REFE", "VALE_CALC"
 
 
 def verdicts(tests) -> dict[str, dict[str, int]]:
     """``{"VALE_REFE": {"ok": n, "total": m}, "VALE_CALC": {...}}`` over the
     comparisons the checks made (a check may make both)."""
-    from asterlite.runtime.runner import check_comparisons
-
     counts = {REFE: {"ok": 0, "total": 0}, CALC: {"ok": 0, "total": 0}}
     for test in tests:
         for kind, comparison in check_comparisons(test)["comparisons"].items():
@@ -50,11 +51,12 @@ def deck_assignments(deck_files, names) -> dict[str, dict]:
     found: dict[str, dict] = {}
     wanted = set(names)
     for path in deck_files or ():
-        try:
-            lines = Path(path).read_text(encoding="utf-8", errors="replace").splitlines()
-        except OSError:
+        # the run's own reader: regular files only (a FIFO would block), the
+        # deck's encoding (UTF-8, declared, Windows-1252), never a byte replaced
+        text = read_text_or_none(Path(path))
+        if text is None:
             continue
-        for number, line in enumerate(lines, 1):
+        for number, line in enumerate(text.splitlines(), 1):
             match = re.match(r"([A-Za-z_]\w*)\s*=(?!=)\s*(.*?)\s*(#.*)?$", line)
             if match and match.group(1) in wanted and match.group(1) not in found:
                 name, value = match.group(1), match.group(2)
@@ -94,3 +96,42 @@ def variant_note(tests, overrides: dict, assignments: dict) -> str:
         "variant's result departs from the deck's references (or is outside the range "
         "where they apply)"
     )
+
+
+def check_comparisons(test: TestRecord) -> dict:
+    """Each value a check compared with, VALE_REFE (with its reference kind)
+    and VALE_CALC, with error, tolerance and verdict; ``failed`` names the
+    comparisons that did not hold (``expected`` alone shows only one)."""
+    shown = {
+        "expected": plain_value(test.expected),
+        "error": plain_value(test.error),
+        "tolerance": plain_value(test.tolerance),
+    }
+    calc = test.calc_comparison
+    comparisons = {}
+    if test.expected is not None and test.reference != "NON_REGRESSION":
+        holds = bool(test.error <= test.tolerance)  # the reference check shown in ``expected``
+        comparisons["VALE_REFE"] = {**shown, "reference": test.reference, "ok": holds}
+    if calc is not None:
+        comparisons["VALE_CALC"] = {
+            "expected": plain_value(calc.expected),
+            "error": plain_value(calc.error),
+            "tolerance": plain_value(calc.tolerance),
+            "ok": bool(calc.holds),
+        }
+    failed = [kind for kind, comparison in comparisons.items() if not comparison["ok"]]
+    return {"comparisons": comparisons, "failed": failed}
+
+
+def plain_value(value):
+    """JSON-friendly version of a test value (numpy scalars, complex...)."""
+    if isinstance(value, complex):
+        return [value.real, value.imag]
+    if hasattr(value, "item"):
+        try:
+            return value.item()
+        except (ValueError, AttributeError):
+            return str(value)
+    if isinstance(value, (int, float, str, bool)) or value is None:
+        return value
+    return str(value)

@@ -65,6 +65,7 @@ RULE_NAMES = {
     "NotEmpty": "NON_VIDE",
 }
 ROOT_TYPE = "DataStructure"  # code_aster's ASSD: any concept ("assd" in the data)
+LEGACY_LAST = 12  # the last version whose catalogue was one cata.py (catapy/)
 
 
 # ------------------------------------------------------------------- sources
@@ -701,9 +702,39 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--version", type=int, required=True, help="code_aster major version")
     parser.add_argument("--commit", help="commit to read (git directories; default HEAD)")
     parser.add_argument("--output", help="file to write (default: the installed data)")
+    parser.add_argument(
+        "--catalogue",
+        help="versions 10-12: path of an assembled cata.py in the tree (default: catapy/, "
+        "else Aster/Cata/cataSTA<version>/cata.py)",
+    )
+    parser.add_argument(
+        "--older",
+        metavar="VERSION:COMMIT:PATH",
+        action="append",
+        help="versions 10-12: an older catalogue of the same tree whose keyword names and "
+        "commands the data keeps as legacy (decks of that version read with this data); "
+        "repeated, newest first",
+    )
     args = parser.parse_args(argv)
-    source = open_source(Path(args.tree), args.commit)
-    data, problems = generate(source, args.version)
+    if args.version <= LEGACY_LAST:  # one cata.py of Python 2 (legacy_layout)
+        from asterlite.catalog.language.legacy_layout import generate_legacy, read_catalogue
+
+        text, where, types = read_catalogue(
+            Path(args.tree), args.version, args.commit, args.catalogue
+        )
+        data, problems = generate_legacy(text, args.version, where, types)
+        from asterlite.catalog.language.legacy_layout import merge_older
+
+        for given in args.older or ():  # newest first
+            label, commit, path = given.split(":", 2)  # label: "11.0", "10"
+            major = int(label.split(".")[0])
+            text, where, types = read_catalogue(Path(args.tree), major, commit, path)
+            older, older_problems = generate_legacy(text, major, where, types)
+            problems += [f"older {label}: {p}" for p in older_problems]
+            data = merge_older(data, older, label)
+    else:
+        source = open_source(Path(args.tree), args.commit)
+        data, problems = generate(source, args.version)
     output = Path(args.output) if args.output else default_output(args.version)
     output.write_text(dumps(data), encoding="utf-8")
     print(f"{output}: {len(data['commands'])} commands, {len(data['header']['types'])} types")

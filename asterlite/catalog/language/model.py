@@ -27,6 +27,8 @@ from functools import cache
 from pathlib import Path
 
 DATA_PACKAGE = "asterlite.catalogues.language"
+LEGACY_LAST = 12  # the last version whose catalogue was one cata.py (catapy/)
+OLD_LAYOUT_DATA = {10: 11}  # old-layout versions read with another's data
 
 
 def _data_folder() -> Path:
@@ -47,12 +49,20 @@ def available_versions() -> tuple[int, ...]:
 
 def data_version(version: int) -> int | None:
     """The data a deck of code_aster ``version`` is validated with: its own,
-    else that of the nearest version from 13 on (13-14 read as 15, 16 as
-    17); None for versions older than any data (10-12 today)."""
+    else 11's for 10 (one data set of the old layout: the 11 catalogue with
+    the keyword names of 10 it dropped), else that of the nearest version
+    from 13 on (13-14 read as 15, 16 as 17). None for 12: decks detected as
+    12 (DYNA_TRAN_MODAL with VALE_CALC, 2012-2013) mix spellings no single
+    catalogue of the snapshot has (MODE_ITER_SIMULT's MATR_A of 2011 beside
+    the VALE_CALC and ASSEMBLAGE of 2013); they are checked against
+    asterlite's catalogues only."""
     versions = available_versions()
     if version in versions:
         return version
-    if not versions or version < 13:
+    if version <= LEGACY_LAST:
+        return OLD_LAYOUT_DATA.get(version) if OLD_LAYOUT_DATA.get(version) in versions else None
+    versions = [v for v in versions if v > LEGACY_LAST]
+    if not versions:
         return None
     return min(versions, key=lambda v: (abs(v - version), -v))
 

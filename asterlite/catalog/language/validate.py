@@ -159,6 +159,9 @@ class _Checker:
         # keyword names code_aster's compat_syntax hook of the command reads or
         # sets (old spellings it converts before checking)
         self.compat = frozenset((command or {}).get("legacy", ()))
+        # code_aster 13-15's checker reads a keyword's max as given (none: no
+        # limit on a sequence's length); from 16 on it defaults to 1
+        self.count_max_default = None if 13 <= language.version <= 15 else 1
 
     # ------------------------------------------------------------ findings
     def fail(self, level: _Level, message: str, keyword: str | None = None) -> None:
@@ -210,8 +213,8 @@ class _Checker:
                 value = user.get(key, _default(entry))
                 if value is None:
                     continue
-                if _is_list(entry) and not _is_sequence(value):
-                    value = [value]
+                if _is_list(entry) and not _is_sequence(value) and value is not Unknown:
+                    value = [value]  # (an uncomputed value may be a whole list)
                 user[key] = value
                 context[key] = value
             elif kind == "F":
@@ -255,7 +258,7 @@ class _Checker:
     def _walk_blocks(self, spec: dict, context: dict):
         """(entries of the level and of its open blocks, undetermined blocks'
         entries, closed blocks' entries with their conditions)."""
-        open_entries: dict = {}
+        open_entries: dict = {}  # key -> every definition (several blocks may define it)
         tolerated: dict = {}
         closed: dict = {}
         rules: list = list(spec.get("rules", ()))
@@ -264,9 +267,9 @@ class _Checker:
             for key, entry in level.get("entries", {}).items():
                 if entry["k"] != "B":
                     if state == "open":
-                        open_entries.setdefault(key, entry)
+                        open_entries.setdefault(key, []).append(entry)
                     elif state == "maybe":
-                        tolerated.setdefault(key, entry)
+                        tolerated.setdefault(key, []).append(entry)
                     else:
                         closed.setdefault(key, []).append(conditions)
                     continue
@@ -312,18 +315,35 @@ class _Checker:
             conditions = ", or with ".join(dict.fromkeys(texts))
             self.fail(level, f"not allowed here: only with {conditions}", key)
         for key in list(level.user):
-            entry = open_entries.get(key) or tolerated.get(key)
-            if entry is None:
+            definitions = open_entries.get(key, []) + tolerated.get(key, [])
+            if not definitions:
                 continue
             value = level.user[key]
-            if entry["k"] == "S":
-                self._check_simple(level, key, entry, value)
-            else:
-                self._check_factor(level, key, entry, value, context)
+            if definitions[0].get("statut") == "c" and key not in level.given:
+                continue  # a hidden keyword's default: the supervisor's, not the deck's
+            self._check_definitions(level, key, definitions, value, context)
         if any(key in legacy and key not in vocabulary for key in level.given):
             return  # an old spelling code_aster's compat_syntax converts: not judged further
         self._check_rules(level, [r for r in rules if not legacy.intersection(_names(r))], unknown)
         self._check_mandatory(level, level.spec, scope_values, "")
+
+    def _check_definitions(self, level, key, definitions, value, context) -> None:
+        """A keyword that blocks open or undetermined define more than once:
+        the value is valid when one definition takes it (else the first
+        definition's findings)."""
+        start = len(self.findings)
+        first = None
+        for entry in {id(e): e for e in definitions}.values():
+            if entry["k"] == "S":
+                self._check_simple(level, key, entry, value)
+            else:
+                self._check_factor(level, key, entry, value, context)
+            if len(self.findings) == start:
+                return
+            if first is None:
+                first = self.findings[start:]
+            del self.findings[start:]
+        self.findings.extend(first or ())
 
     def _check_rules(self, level: _Level, rules: list, unknown: list) -> None:
         for rule in rules:
@@ -398,6 +418,10 @@ class _Checker:
         types = entry.get("typ", ())
         complex_allowed = "C" in types
         high = entry.get("max", 1)
+        # code_aster counts the values of a sequence only (a lone value is
+        # never too few); up to 15 a keyword without max= takes any number
+        counted = _is_sequence(value)
+        count_max = entry.get("max", self.count_max_default)
         if high == 1 and _is_sequence(value) and len(value) == 1:
             value = value[0]
         elif high != 1 and not _is_sequence(value):
@@ -408,9 +432,11 @@ class _Checker:
             value = _old_complex(value)
         if _is_sequence(value):
             low = entry.get("min")
-            if high != MANY and len(value) > high:
-                self.fail(level, f"expects at most {_count(high, 'value')}, got {len(value)}", key)
-            if low is not None and len(value) < low:
+            if counted and count_max not in (MANY, None) and len(value) > count_max:
+                self.fail(
+                    level, f"expects at most {_count(count_max, 'value')}, got {len(value)}", key
+                )
+            if counted and low is not None and len(value) < low:
                 self.fail(level, f"expects at least {_count(low, 'value')}, got {len(value)}", key)
             items = list(value)
         else:
@@ -547,6 +573,10 @@ class _Checker:
             return value.name
         if value is None:
             return None
+        if value is UNDETERMINED or value is Unknown:
+            # AsType of a value check did not compute: some concrete type the
+            # request's list (abstract parents, resultat_sdaster) stands for
+            return "assd"
         return set(sd_prod.get("types", ())) or None
 
     def _type_outputs(self, outputs, scope: Scope, result: CallCheck) -> None:

@@ -1,0 +1,120 @@
+"""Changing the degree of mesh cells (CREA_MAILLAGE LINE_QUAD, MODI_MAILLE
+OPTION='SEG3_4').
+
+LINE_QUAD turns linear cells into their quadratic serendipity twins with a
+node in the middle of each edge, shared by the cells around the edge, in
+code_aster's node order (vertices, then the edge midpoints in the order of
+its reference element). SEG3_4 turns a SEG3 into a SEG4 with nodes at the
+thirds of its (quadratic) curve, as the pipe elements want. New nodes take
+code_aster 17's positional names ``N<i>``; node groups keep their nodes.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+
+from asterlite.fem.solid_reference import REFERENCE_ELEMENTS
+
+#: linear cell -> (quadratic cell, its reference element, number of vertices)
+QUADRATIC = {
+    "SEG2": ("SEG3", None, 2),
+    "TRIA3": ("TRIA6", "TR6", 3),
+    "QUAD4": ("QUAD8", "QU8", 4),
+    "TETRA4": ("TETRA10", "T10", 4),
+    "HEXA8": ("HEXA20", "H20", 8),
+    "PENTA6": ("PENTA15", "P15", 6),
+    "PYRAM5": ("PYRAM13", "P13", 5),
+}
+
+
+@cache
+def edge_vertices(linear: str) -> tuple[tuple[int, int], ...]:
+    """The vertex pair of each mid-edge node of the quadratic twin, in order:
+    the pair whose midpoint is the node on the reference element."""
+    quadratic, reference, n_vertices = QUADRATIC[linear]
+    if reference is None:
+        return ((0, 1),)
+    nodes = REFERENCE_ELEMENTS[reference].nodes
+    pairs = []
+    for middle in nodes[n_vertices:]:
+        found = [
+            (i, j)
+            for i in range(n_vertices)
+            for j in range(i + 1, n_vertices)
+            if np.allclose((nodes[i] + nodes[j]) / 2.0, middle)
+        ]
+        if len(found) != 1:
+            raise AssertionError(f"{quadratic}: no single edge for the node at {middle}")
+        pairs.append(found[0])
+    return tuple(pairs)
+
+
+class _NewNodes:
+    """Nodes appended to a mesh, with code_aster 17's positional names."""
+
+    def __init__(self, mesh):
+        self.mesh = mesh
+        self.coords: list[np.ndarray] = []
+        self.names: list[str] = []
+        self.taken = set(mesh.node_names)
+
+    def add(self, point) -> int:
+        index = self.mesh.n_nodes + len(self.coords)
+        name, k = f"N{index + 1}", 1
+        while name in self.taken:
+            name, k = f"NS{index + 1}_{k}", k + 1
+        self.taken.add(name)
+        self.coords.append(np.asarray(point, dtype=float))
+        self.names.append(name)
+        return index
+
+    def commit(self) -> None:
+        if self.coords:
+            self.mesh.coords = np.vstack([self.mesh.coords, np.array(self.coords)])
+            self.mesh.node_names.extend(self.names)
+            self.mesh.refresh_indices()
+
+
+def line_quad(mesh, cells) -> int:
+    """Make the linear ``cells`` of ``mesh`` (changed in place) quadratic;
+    POI1 and quadratic cells stay. Returns the number of nodes added."""
+    new = _NewNodes(mesh)
+    middles: dict[tuple[int, int], int] = {}
+    for cell in np.asarray(cells, dtype=int):
+        kind = mesh.cell_types[cell]
+        if kind not in QUADRATIC:
+            continue
+        quadratic, _, n_vertices = QUADRATIC[kind]
+        vertices = list(mesh.cell_nodes[cell][:n_vertices])
+        extra = []
+        for i, j in edge_vertices(kind):
+            a, b = vertices[i], vertices[j]
+            key = (min(a, b), max(a, b))
+            if key not in middles:
+                middles[key] = new.add((mesh.coords[a] + mesh.coords[b]) / 2.0)
+            extra.append(middles[key])
+        mesh.cell_types[cell] = quadratic
+        mesh.cell_nodes[cell] = tuple(vertices + extra)
+    new.commit()
+    return len(new.names)
+
+
+def seg3_to_seg4(mesh, cells) -> int:
+    """SEG3 cells (ends, middle) -> SEG4 (ends, then the points at xi = -1/3
+    and +1/3 of the SEG3's parabola). Returns the number of nodes added."""
+    new = _NewNodes(mesh)
+    for cell in np.asarray(cells, dtype=int):
+        if mesh.cell_types[cell] != "SEG3":
+            continue
+        a, b, m = mesh.cell_nodes[cell][:3]
+        xa, xb, xm = mesh.coords[a], mesh.coords[b], mesh.coords[m]
+        thirds = []
+        for xi in (-1.0 / 3.0, 1.0 / 3.0):
+            point = xi * (xi - 1) / 2 * xa + xi * (xi + 1) / 2 * xb + (1 - xi * xi) * xm
+            thirds.append(new.add(point))
+        mesh.cell_types[cell] = "SEG4"
+        mesh.cell_nodes[cell] = (a, b, *thirds)
+    new.commit()
+    return len(new.names)

@@ -1,0 +1,200 @@
+"""MODI_REPERE: the fields of a result expressed in another frame.
+
+Each AFFE occurrence gives a frame and where it applies (its cells, or nodes);
+each MODI_CHAM a field and how its components transform: TENS_3D (six
+components xx yy zz xy xz yz: ``S' = R S R^T``) or VECT_3D (DX DY DZ:
+``v' = R v``), ``R`` the rows of the new axes in the global frame.
+
+- REPERE='UTILISATEUR': one frame, from ANGL_NAUT (degrees) or VECT_X/VECT_Y;
+- REPERE='CYLINDRIQUE': at each point (the cell's node for *_ELNO, the node
+  for *_NOEU and nodal vectors) the axes (e_r, e_z, e_theta) about the axis
+  through ORIGINE along AXE_Z, as code_aster's cylrep builds them (e_r from
+  the point's distance to the axis, e_theta = e_z x e_r; on the axis, e_r is
+  chosen normal to AXE_Z).
+
+Values outside the AFFE selections keep their global components. The new
+result holds every order of the input (TOUT_ORDRE); the other frames, 2D
+fields, shell/beam generalised forces and CHAM_GD are refused by name.
+"""
+
+from __future__ import annotations
+
+import copy
+
+import numpy as np
+
+from asterlite.fem.frames import angles_from_x_and_y, rotation_from_angles
+from asterlite.fem.selection import as_tuple, select_cells, select_nodes
+
+_TENSOR = ("XX", "YY", "ZZ", "XY", "XZ", "YZ")
+_PAIRS = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
+_VECTOR = ("DX", "DY", "DZ")
+
+
+def cylindrical_axes(points: np.ndarray, origin, axis) -> np.ndarray:
+    """(n, 3, 3) rows e_r, e_z, e_theta at ``points`` (n, 3) (code_aster's cylrep)."""
+    z = np.asarray(axis, dtype=float)
+    z = z / np.linalg.norm(z)
+    r = np.asarray(points, dtype=float) - np.asarray(origin, dtype=float)
+    r = r - np.outer(r @ z, z)
+    length = np.linalg.norm(r, axis=1)
+    on_axis = length < np.finfo(float).eps
+    fallback = np.array([z[1], -z[0], 0.0]) if (z[0] or z[1]) else np.array([1.0, 0.0, 0.0])
+    r[on_axis] = fallback / np.linalg.norm(fallback)
+    r[~on_axis] /= length[~on_axis, None]
+    theta = np.cross(z, r)
+    theta /= np.linalg.norm(theta, axis=1)[:, None]
+    return np.stack([r, np.broadcast_to(z, r.shape), theta], axis=1)
+
+
+def _user_axes(ctx, occ) -> np.ndarray:
+    if occ.get("ANGL_NAUT") is not None:
+        angles = np.zeros(3)
+        given = np.radians(np.asarray(as_tuple(occ["ANGL_NAUT"]), dtype=float))
+        angles[: given.size] = given
+    else:
+        angles = angles_from_x_and_y(occ["VECT_X"], occ["VECT_Y"])
+    return rotation_from_angles(angles)
+
+
+def _frames(ctx, kw, mesh):
+    """[(cells, nodes, axes_at(points) -> (n, 3, 3))] for each AFFE occurrence."""
+    repere = kw["REPERE"]
+    if repere not in ("UTILISATEUR", "CYLINDRIQUE"):
+        ctx.unsupported(f"MODI_REPERE REPERE={repere!r}", "REPERE", kw)
+    out = []
+    for occ in kw.factor("AFFE"):
+        cells = (
+            select_cells(ctx, occ, mesh) if not (occ.get("GROUP_NO") or occ.get("NOEUD")) else []
+        )
+        nodes = select_nodes(ctx, occ, mesh)
+        if repere == "UTILISATEUR":
+            rotation = _user_axes(ctx, occ)
+
+            def axes_at(points, rotation=rotation):
+                return np.broadcast_to(rotation, (len(points), 3, 3))
+        else:
+            origin = np.zeros(3)
+            given = np.asarray(as_tuple(occ.get("ORIGINE") or (0.0, 0.0, 0.0)), dtype=float)
+            origin[: given.size] = given
+            if occ.get("AXE_Z") is None:
+                ctx.error("REPERE='CYLINDRIQUE' needs AXE_Z", "AXE_Z", occ)
+            axis = np.asarray(as_tuple(occ["AXE_Z"]), dtype=float)
+
+            def axes_at(points, origin=origin, axis=axis):
+                return cylindrical_axes(points, origin, axis)
+
+        out.append((np.asarray(cells, dtype=int), np.asarray(nodes, dtype=int), axes_at))
+    return out
+
+
+def _tensor_columns(ctx, components, occ) -> list[int]:
+    names = as_tuple(occ.get("NOM_CMP"))
+    if names:
+        if len(names) != 6:
+            ctx.error("TENS_3D: NOM_CMP gives the six components xx yy zz xy xz yz", "NOM_CMP", occ)
+    else:
+        names = tuple(
+            next((c for c in components if c.endswith(s) and len(c) == 4), "") for s in _TENSOR
+        )
+    missing = [n for n in names if n not in components]
+    if missing or not names:
+        ctx.error(
+            f"{occ['NOM_CHAM']} has no tensor components {', '.join(missing) or '(xx..yz)'}",
+            "NOM_CMP",
+            occ,
+        )
+    return [components.index(n) for n in names]
+
+
+def _rotate_tensors(values: np.ndarray, columns: list[int], axes: np.ndarray) -> None:
+    """values (..., n_points, n_comp) in place, axes (n_points, 3, 3)."""
+    t = np.zeros(values.shape[:-1] + (3, 3), dtype=values.dtype)
+    for k, (i, j) in enumerate(_PAIRS):
+        t[..., i, j] = t[..., j, i] = values[..., columns[k]]
+    rotated = np.einsum("pai,...pij,pbj->...pab", axes, t, axes)
+    for k, (i, j) in enumerate(_PAIRS):
+        values[..., columns[k]] = rotated[..., i, j]
+
+
+def _element_field(ctx, field, occ, frames, mesh, kind) -> None:
+    if field.name.endswith("_ELGA"):
+        ctx.unsupported(f"MODI_REPERE of {field.name} (Gauss-point fields)", "NOM_CHAM", occ)
+    columns = _tensor_columns(ctx, field.components, occ)
+    cells = np.asarray(field.cells, dtype=int)
+    for chosen, _, axes_at in frames:
+        rows = np.nonzero(np.isin(cells, chosen))[0]
+        for row in rows:
+            # a field on cells of several types is padded to the largest node count
+            nodes = list(mesh.cell_nodes[int(cells[row])])[: field.values.shape[2]]
+            axes = axes_at(mesh.coords[nodes])
+            _rotate_tensors(field.values[:, row, : len(nodes)], columns, axes)
+
+
+def _node_field(ctx, field, occ, frames, mesh) -> None:
+    columns = _tensor_columns(ctx, field.components, occ)
+    nodes = np.asarray(field.nodes, dtype=int)
+    for _, chosen, axes_at in frames:
+        rows = np.nonzero(np.isin(nodes, chosen))[0]
+        if rows.size:
+            block = field.values[:, rows]
+            _rotate_tensors(block, columns, axes_at(mesh.coords[nodes[rows]]))
+            field.values[:, rows] = block
+
+
+def _dof_vectors(ctx, values, numbering, occ, frames, mesh) -> np.ndarray:
+    """Nodal vectors (n_orders, n_dofs): DX DY DZ of each selected node."""
+    values = np.array(values, copy=True)
+    for _, chosen, axes_at in frames:
+        index = numbering.dof_indices(np.repeat(chosen, 3), list(_VECTOR) * len(chosen))
+        index = index.reshape(-1, 3)
+        whole = np.all(index >= 0, axis=1)
+        if not np.all(whole):
+            missing = mesh.node_names[int(chosen[np.nonzero(~whole)[0][0]])]
+            ctx.error(f"node {missing} has not the DX, DY, DZ of a VECT_3D", "TYPE_CHAM", occ)
+        axes = axes_at(mesh.coords[chosen])  # (n, 3, 3)
+        vectors = values[:, index]  # (o, n, 3)
+        values[:, index] = np.einsum("nij,onj->oni", axes, vectors)
+    return values
+
+
+def run(ctx, kw):
+    if kw.get("CHAM_GD") is not None:
+        ctx.unsupported("MODI_REPERE CHAM_GD (fields outside a result)", "CHAM_GD", kw)
+    source = kw["RESULTAT"]
+    # every order: the default, and the only value of TOUT_ORDRE
+    kw.mark_used("TOUT_ORDRE", "CRITERE")
+    result = source if ctx.reuse is source else copy.copy(source)
+    if result is not source:
+        for attribute in ("fields", "element_fields", "node_fields"):
+            if isinstance(getattr(source, attribute, None), dict):
+                setattr(result, attribute, dict(getattr(source, attribute)))
+    numbering = result.numbering
+    mesh = numbering.mesh
+    frames = _frames(ctx, kw, mesh)
+    for occ in kw.factor("MODI_CHAM"):
+        kind, name = occ["TYPE_CHAM"], occ["NOM_CHAM"]
+        if kind not in ("TENS_3D", "VECT_3D"):
+            ctx.unsupported(f"MODI_REPERE TYPE_CHAM={kind!r}", "TYPE_CHAM", occ)
+        if occ.get("TOUT") is None and occ.get("GROUP_MA") is not None:
+            ctx.unsupported("MODI_CHAM GROUP_MA (AFFE says where)", "GROUP_MA", occ)
+        element = getattr(result, "element_fields", {}).get(name)
+        nodal = getattr(result, "node_fields", {}).get(name)
+        if kind == "TENS_3D" and element is not None:
+            field = copy.copy(element)
+            field.values = np.array(element.values, copy=True)
+            _element_field(ctx, field, occ, frames, mesh, kind)
+            result.element_fields[name] = field
+        elif kind == "TENS_3D" and nodal is not None:
+            field = copy.copy(nodal)
+            field.values = np.array(nodal.values, copy=True)
+            _node_field(ctx, field, occ, frames, mesh)
+            result.node_fields[name] = field
+        elif kind == "VECT_3D" and name in getattr(result, "fields", {}):
+            result.fields[name] = _dof_vectors(
+                ctx, result.fields[name], numbering, occ, frames, mesh
+            )
+        else:
+            ctx.error(f"the result has no {name} field of type {kind}", "NOM_CHAM", occ)
+        ctx.log(f"MODI_REPERE {name} ({kind}) to REPERE={kw['REPERE']}")
+    return result

@@ -1,0 +1,87 @@
+"""POU_D_TG (Timoshenko beams with warping) and VARI_SECT sections whose
+start and end are equal: non-uniform torsion of a cantilever against
+Vlasov's solution, the POU_D_T part unchanged, and the constant section
+recovered from R_DEBUT/R_FIN or A1/A2 data."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from asterlite.fem.beam import (
+    beam_mass_local,
+    beam_stiffness_local,
+    local_matrices,
+    warping_beam_stiffness_local,
+)
+from asterlite.fem.sections import section_properties, uniform_varying_section
+
+E, NU = 2.1e11, 0.3
+G = E / (2 * (1 + NU))
+SECTION = {"A": 1e-2, "IY": 2e-5, "IZ": 5e-6, "JX": 1e-7, "JG": 4e-9, "AY": 1.2, "AZ": 1.3}
+
+
+def _cantilever_twist(n, length, torque, jx, jg, restrained=True):
+    """Tip twist and twist rate of a cantilever of n POU_D_TG elements under
+    an end torque, the root's warping (GRX) held when ``restrained``."""
+    size = 7 * (n + 1)
+    k = np.zeros((size, size))
+    section = dict(SECTION, JX=jx, JG=jg)
+    element = local_matrices("POU_D_TG", "K", length / n, section, E, NU)[0]
+    for e in range(n):
+        rows = np.arange(7 * e, 7 * e + 14)
+        k[np.ix_(rows, rows)] += element
+    free = np.arange(7 if restrained else 6, size)
+    f = np.zeros(size)
+    f[7 * n + 3] = torque
+    u = np.zeros(size)
+    u[free] = np.linalg.solve(k[np.ix_(free, free)], f[free])
+    return u[7 * n + 3], u[7 * n + 6]
+
+
+def test_non_uniform_torsion_against_vlasov():
+    """phi(L) = T / (G J) (L - tanh(k L) / k), k^2 = G J / (E JG): the
+    cubic-twist elements converge to it; without warping, T L / (G J) exactly."""
+    length, torque = 2.0, 1.0e3
+    k = np.sqrt(G * SECTION["JX"] / (E * SECTION["JG"]))
+    exact = torque / (G * SECTION["JX"]) * (length - np.tanh(k * length) / k)
+    errors = [
+        abs(_cantilever_twist(n, length, torque, SECTION["JX"], SECTION["JG"])[0] / exact - 1)
+        for n in (2, 4, 8, 16)
+    ]
+    assert all(a > b for a, b in zip(errors, errors[1:], strict=False))
+    assert errors[-1] < 1e-4
+    free_warping = _cantilever_twist(1, length, torque, SECTION["JX"], 0.0, restrained=False)
+    assert free_warping[0] == pytest.approx(torque * length / (G * SECTION["JX"]), rel=1e-12)
+    assert free_warping[1] == pytest.approx(torque / (G * SECTION["JX"]), rel=1e-12)
+
+
+def test_pou_d_t_terms_are_kept():
+    """Without the torsion rows, POU_D_TG is POU_D_T; GRX has no mass."""
+    tg = warping_beam_stiffness_local(0.7, E, G, 1e-2, 2e-5, 5e-6, 1e-7, 4e-9, 1.2, 1.3)[0]
+    t = beam_stiffness_local(0.7, E, G, 1e-2, 2e-5, 5e-6, 1e-7, ay=1.2, az=1.3)[0]
+    keep = [0, 1, 2, 4, 5, 7, 8, 9, 11, 12]
+    same = [0, 1, 2, 4, 5, 6, 7, 8, 10, 11]
+    assert np.allclose(tg[np.ix_(keep, keep)], t[np.ix_(same, same)], rtol=1e-14)
+    m = local_matrices("POU_D_TG", "M", 0.7, SECTION, E, NU, 7800.0)[0]
+    mt = beam_mass_local(0.7, 7800.0, E, G, 1e-2, 2e-5, 5e-6, 1.2, 1.3)[0]
+    assert np.allclose(m[np.ix_(keep, keep)], mt[np.ix_(same, same)], rtol=1e-14)
+    assert not m[[6, 13]].any()
+    assert np.allclose(tg, tg.T)
+
+
+def test_vari_sect_with_equal_ends_is_the_constant_section():
+    cara = {"R_DEBUT": 0.02, "R_FIN": 0.02, "EP_DEBUT": 0.005, "EP_FIN": 0.005}
+    uniform = uniform_varying_section("CERCLE", "HOMOTHETIQUE", cara)
+    assert uniform == {"R": 0.02, "EP": 0.005}
+    assert section_properties("CERCLE", uniform)["A"] == pytest.approx(np.pi * (4e-4 - 2.25e-4))
+    general = {"A1": 1.0, "A2": 1.0, "IY1": 2.0, "IY2": 2.0}
+    assert uniform_varying_section("GENERALE", "HOMOTHETIQUE", general) == {"A": 1.0, "IY": 2.0}
+    affine = {"HY": 0.1, "EPY": 0.01, "HZ1": 0.2, "HZ2": 0.2}
+    assert uniform_varying_section("RECTANGLE", "AFFINE", affine) == {
+        "HY": 0.1,
+        "EPY": 0.01,
+        "HZ": 0.2,
+    }
+    tapered = dict(cara, R_FIN=0.03)
+    assert uniform_varying_section("CERCLE", "HOMOTHETIQUE", tapered) is None
