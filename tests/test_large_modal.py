@@ -144,3 +144,19 @@ def test_calc_modes_on_mumps_equals_superlu_and_arpack(tmp_path, monkeypatch):
     assert [len(f) for f in large] == [20, 6, len(small[2])] and len(small[2]) > 6
     for new, old in zip(large, small, strict=True):
         np.testing.assert_allclose(new, old, rtol=1e-9)
+
+
+def test_arpack_takes_over_when_the_lanczos_basis_reaches_its_bound(monkeypatch):
+    from asterlite.modal import eigen
+
+    k, m = _grid_pencil(20, 20)
+    reference = sla.eigh(k.toarray(), m.toarray(), eigvals_only=True)[:12]
+    real_lanczos = block_lanczos.shift_invert_lanczos
+
+    def bounded(*args, **kwargs):
+        return real_lanczos(*args, **{**kwargs, "max_dim": 16})
+
+    monkeypatch.setattr(block_lanczos, "shift_invert_lanczos", bounded)
+    values, vectors, how = eigen._large_shift_invert(k, m, 0.0, 12)
+    assert how["method"] == "ARPACK" and how["backend"] == "mumps"
+    np.testing.assert_allclose(np.sort(values), reference, rtol=1e-11)
