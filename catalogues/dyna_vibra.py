@@ -32,6 +32,7 @@ from asterlite.catalog import (
     equal_to,
     exists,
 )
+from asterlite.dynamics.schemes import SCHEMES
 from asterlite.legacy import forms
 
 
@@ -52,7 +53,24 @@ TRAN_PHYS = equal_to("TYPE_CALCUL", "TRAN") & equal_to("BASE_CALCUL", "PHYS")
 HARM_GENE = equal_to("TYPE_CALCUL", "HARM") & equal_to("BASE_CALCUL", "GENE")
 HARM_PHYS = equal_to("TYPE_CALCUL", "HARM") & equal_to("BASE_CALCUL", "PHYS")
 
+# SCHEMA_TEMPS/SCHEMA when the deck gives none (code_aster 17's GENE default)
+GENE_DEFAULT_SCHEME = "RUNGE_KUTTA_32"
 ADAPTIVE = ("RUNGE_KUTTA_54", "RUNGE_KUTTA_32", "DEVOGE", "ADAPT_ORDRE1", "ADAPT_ORDRE2")
+# code_aster 17's GENE schemes (the language; ITMI is refused by name), then the
+# schemes asterlite adds (asterlite.dynamics.schemes: EULER, for code_aster 10's
+# METHODE='EULER' in legacy decks)
+GENE_SCHEMES = (
+    "NEWMARK",
+    "DIFF_CENTRE",
+    "DEVOGE",
+    "ADAPT_ORDRE1",
+    "ADAPT_ORDRE2",
+    "RUNGE_KUTTA_32",
+    "RUNGE_KUTTA_54",
+    "ITMI",
+    "TRBDF2",
+)
+GENE_SCHEMES += tuple(name for name in SCHEMES if name not in GENE_SCHEMES)
 
 
 def schema_temps(default: str, schemes: tuple[str, ...]) -> FACT:
@@ -248,23 +266,7 @@ DYNA_VIBRA = OPER(
     # ---------------------------------------------------------------- transient parameters
     b_schema_gene=BLOC(
         condition=TRAN_GENE,
-        SCHEMA_TEMPS=schema_temps(
-            "RUNGE_KUTTA_32",
-            (
-                "NEWMARK",
-                "DIFF_CENTRE",
-                "DEVOGE",
-                "ADAPT_ORDRE1",
-                "ADAPT_ORDRE2",
-                "RUNGE_KUTTA_32",
-                "RUNGE_KUTTA_54",
-                "ITMI",
-                "TRBDF2",
-                # asterlite extension, not in code_aster 17: kept for legacy decks
-                # (code_aster 10's METHODE='EULER', its default scheme)
-                "EULER",
-            ),
-        ),
+        SCHEMA_TEMPS=schema_temps(GENE_DEFAULT_SCHEME, GENE_SCHEMES),
     ),
     b_schema_phys=BLOC(
         condition=TRAN_PHYS,

@@ -5,13 +5,9 @@ dispatches here; the keyword readers both paths share stay there."""
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.dyna_vibra import (
-    as_tuple,
-    first_value,
-    list_values,
-    refuse_too_many_steps,
-    support_shape,
-)
+from asterlite.commands.dyna_vibra_keywords import as_tuple, first_value, list_values
+from asterlite.commands.dyna_vibra_loads import support_shape
+from asterlite.commands.dyna_vibra_time import refuse_too_many_steps
 
 from asterlite.concepts.table import TableNotComputed
 from asterlite.errors import NumericalError

@@ -1,12 +1,23 @@
-"""`asterlite check` against `asterlite run` on every deck of the four corpus
-folders: the run outcomes are recorded in ``corpus_run_outcomes.json``
-(status, and where a failed run stopped), made from ``asterlite corpus DIR
---json`` with ``python -m tests.test_check_corpus_agreement DIR...``.
+"""`asterlite check` against `asterlite run` on every deck of the five corpus
+folders of ../shared: the run outcomes are recorded in
+``corpus_run_outcomes.json`` (status, and where a failed run stopped), made
+from ``asterlite corpus DIR --json`` with ``python -m
+tests.test_check_corpus_agreement run_FOLDER.json...``.
+
+asterlite's own verdict (``run_deck(check_only=True)``, what run meets):
 
 - where check reports an error, the run stopped there or earlier (on
   something only computing shows);
 - where the run failed on validation (or a syntax error), check reports an
   error at that very place.
+
+``asterlite check``'s two verdicts (:func:`check_deck`):
+
+- every deck is valid code_aster of its version: never INVALID (nor ERROR);
+- a deck the run carried to its end (PASS, NOOK, DONE) has no invalid and
+  no unsupported finding: valid code_aster, all of it computed;
+- where the run stopped on validation or a syntax error, check has a
+  finding (invalid or unsupported) at that place.
 """
 
 from __future__ import annotations
@@ -18,12 +29,20 @@ from pathlib import Path
 
 import pytest
 
+from asterlite.runtime.check_deck import check_deck
 from asterlite.runtime.corpus import find_decks
 from asterlite.runtime.runner import run_deck
 from tests.conftest import CORPUS
 
 OUTCOMES = Path(__file__).with_name("corpus_run_outcomes.json")
-FOLDERS = ("aster-corpus", "aster-corpus-v15", "aster-corpus-v11", "aster-corpus-wider")
+FOLDERS = (
+    "aster-corpus",
+    "aster-corpus-v15",
+    "aster-corpus-v11",
+    "aster-corpus-wider",
+    "aster-corpus-dyna",
+)
+RAN = ("PASS", "NOOK", "DONE")
 # run failures check must see: they come before anything is computed
 SEEN_BY_CHECK = ("invalid keywords", "syntax error")
 POSITION = re.compile(r"(?P<file>[^\s:]+\.com[m0-9]):(?P<line>\d+)(?::\d+)?: (?P<kind>[a-z ]+):")
@@ -78,6 +97,33 @@ def test_check_agrees_with_the_recorded_run(folder, deck):
     if run_failure is not None and run_failure["kind"] in SEEN_BY_CHECK:
         positions = [failure_of(error) for error in check.errors]
         assert run_failure in positions, f"check misses the run's error {run}:\n{check.message}"
+
+
+@pytest.mark.slow
+@pytest.mark.corpus
+@pytest.mark.parametrize("folder, deck", cases(), ids=[f"{f}/{d}" for f, d in cases()])
+def test_two_verdicts_agree_with_the_recorded_run(folder, deck):
+    root = CORPUS.parent / folder
+    if not root.is_dir():
+        pytest.skip(f"../shared/{folder} is not available")
+    export = next(e for e in find_decks(root) if e.parent.name == deck)
+    run = recorded()[folder][deck]
+    check = check_deck(export)
+    shown = "\n".join(f.text() for f in check.findings)
+    # every deck of ../shared is valid code_aster of its version (acceptance)
+    assert check.status not in ("ERROR", "INVALID"), f"{check.message}\n{shown}"
+    if run["status"] in RAN:
+        refused = [f for f in check.findings if f.kind in ("invalid", "unsupported")]
+        assert not refused, f"the run went to its end ({run['status']}), check says:\n{shown}"
+    failure = run.get("failure")
+    if failure is not None and failure["kind"] in SEEN_BY_CHECK:
+        places = [
+            {"file": Path(f.file).name, "line": f.line}
+            for f in check.findings
+            if f.file and f.kind in ("invalid", "unsupported")
+        ]
+        where = {"file": failure["file"], "line": failure["line"]}
+        assert where in places, f"check has no finding where the run stopped {run}:\n{shown}"
 
 
 def record(json_files: list[str]) -> dict:

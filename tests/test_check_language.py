@@ -172,3 +172,64 @@ def test_asterlites_own_verdict_is_kept_apart(tmp_path):
     report = run_deck(path, check_only=True)
     assert report.status == "ERROR" and "FLUIDE" in report.message
     assert check_deck(path).status == "UNSUPPORTED"
+
+
+def test_choice_in_a_table_filter_is_checked(tmp_path):
+    path = deck(
+        tmp_path,
+        'T = CREA_TABLE(LISTE=_F(PARA="A", LISTE_R=(1.0, 2.0)))\n'
+        'TEST_TABLE(TABLE=T, NOM_PARA="A", VALE_CALC=1.0, TYPE_TEST="MAX",\n'
+        '           FILTRE=_F(NOM_PARA="A", VALE=1.0, CRITERE="ABSOLUZ"))\n',
+    )
+    check = check_deck(path)
+    assert kinds(check) == [("invalid", "TEST_TABLE/FILTRE[1]/CRITERE")]
+    assert "did you mean 'ABSOLU'" in check.findings[0].message
+    assert check.findings[0].line == 4
+
+
+def test_component_of_a_displacement_field_is_checked(tmp_path):
+    body = (
+        "TRAN = DYNA_VIBRA(TYPE_CALCUL='TRAN', BASE_CALCUL='GENE', MATR_MASS=M, MATR_RIGI=K,"
+        " INCREMENT=_F(INST_FIN=1.0, PAS=0.1), SCHEMA_TEMPS=_F(SCHEMA='NEWMARK'))\n"
+        "F = RECU_FONCTION(RESU_GENE=TRAN, NOM_CHAM='DEPL', GROUP_NO='N1',\n"
+        "                  NOM_CMP='{}')\n"
+    )
+    for component, expected in (("DQ", [("invalid", "RECU_FONCTION/NOM_CMP")]), ("DX", [])):
+        path = deck(tmp_path, body.format(component), name=f"{component}.comm")
+        found = [
+            (f.kind, f.keyword)
+            for f in check_deck(path).findings
+            if f.keyword.startswith("RECU_FONCTION")
+        ]
+        assert found == expected, component
+
+
+def test_uncomputed_list_given_to_a_keyword_with_min_is_not_counted(tmp_path):
+    # ACIER's items come from a command asterlite does not compute: the list
+    # itself is unknown, never a one-item list ("at least 2 values, got 1")
+    path = deck(
+        tmp_path,
+        "ACIER = [None] * 2\n"
+        "ACIER[0] = DEFI_MATERIAU(ELAS=_F(E=1.0, NU=0.3), PRAGER=_F(C=1.0))\n"
+        "T = TEST_COMPOR(OPTION='MECA', COMPORTEMENT=_F(RELATION='VMIS_ECMI_LINE'),"
+        " LIST_MATER=ACIER, YOUNG=1.0, POISSON=0.3, VARI_TEST=('V1',))\n",
+    )
+    check = check_deck(path)
+    assert not [f for f in check.findings if f.kind == "invalid"], [
+        f.text() for f in check.findings
+    ]
+
+
+def test_keyword_of_several_undetermined_blocks_takes_any_definition(tmp_path):
+    # the result is not computed: CALC_CHAMP's blocks on its type are all
+    # undetermined, and VARI_ELNO is valid in the non-linear one only
+    path = deck(
+        tmp_path,
+        "U = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH),"
+        " INCREMENT=_F(LIST_INST=L))\n"
+        "U = CALC_CHAMP(reuse=U, RESULTAT=U, VARI_INTERNE='VARI_ELNO')\n",
+    )
+    check = check_deck(path)
+    assert not [f for f in check.findings if f.keyword.startswith("CALC_CHAMP")], [
+        f.text() for f in check.findings
+    ]

@@ -60,7 +60,7 @@ def test_implicit_refuses_a_varying_rotation_speed():
 
 
 def test_implicit_refuses_support_motions_seen_by_the_shocks():
-    from commands.dyna_vibra import refuse_moving_gaps
+    from commands.dyna_vibra_shocks import refuse_moving_gaps
 
     class Context:
         def unsupported(self, what, keyword=None, kw=None):

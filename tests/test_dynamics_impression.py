@@ -151,7 +151,7 @@ def impression_call(tmp_path, occurrence: dict):
     occ = Keywords(occurrence, path="DYNA_VIBRA/IMPRESSION[1]")
     basis = SimpleNamespace(stiffness=None)
     kw = Keywords({"IMPRESSION": [occ], "MATR_MASS": SimpleNamespace(basis=basis)})
-    from asterlite.commands.dyna_vibra import impression
+    from asterlite.commands.dyna_vibra_result import impression
 
     system = SimpleNamespace(stiffness=np.eye(1))
     impression(ctx, kw, choc_result(), "R", [], system)

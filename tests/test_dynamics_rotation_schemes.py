@@ -8,8 +8,12 @@ from scipy.integrate import solve_ivp
 
 from asterlite.dynamics.integrate import SchemeOptions, integrate
 from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
-from asterlite.dynamics.rotation import SCHEMES, Rotation
+from asterlite.dynamics.rotation import Rotation
+from asterlite.dynamics.schemes import TABLE
 from tests.test_dynamics_rotation_energy import Table, rotor
+
+# every scheme the loop shared by all runs with VITESSE_VARIABLE
+SCHEMES = [entry.name for entry in TABLE if entry.shared_loops]
 
 T_END = 0.4
 LOAD = np.array([1.0, 0.5])

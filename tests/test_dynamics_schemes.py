@@ -8,7 +8,7 @@ import sys
 import numpy as np
 import pytest
 
-from asterlite.dynamics.integrate import SCHEMES
+from asterlite.dynamics.schemes import SCHEMES
 from tests.test_dynamics_vibra import kws, obstacle, one_mode, run_vibra, vector
 
 OMEGA = 2.0 * math.pi
@@ -153,12 +153,13 @@ def test_compiled_loops_are_cached_across_processes():
     oscillator_error("DIFF_CENTRE", 0.01)  # make sure the cache is written
     code = (
         "import numpy as np\n"
-        "from asterlite.dynamics.integrate import SCHEMES, integrate\n"
+        "from asterlite.dynamics.integrate import integrate\n"
+        "from asterlite.dynamics.schemes import SCHEMES\n"
         "from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation\n"
         "s = LinearSystem(np.eye(1), np.eye(1), np.zeros((1, 1)))\n"
         "integrate(s, build_shocks([], s), tabulate_excitation(1, [], 0, 1, 0.1),\n"
         "          'DIFF_CENTRE', np.ones(1), np.zeros(1), 0.0, 1.0, 0.01, np.array([1.0]), 1)\n"
-        "loop = SCHEMES['DIFF_CENTRE'].run_loop\n"
+        "loop = SCHEMES['DIFF_CENTRE'].implementation().run_loop\n"
         "print(sum(loop.stats.cache_hits.values()), sum(loop.stats.cache_misses.values()))\n"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)

@@ -77,10 +77,9 @@ def test_warmup_prunes_only_older_in_tree_folders(tmp_path):
 def test_every_warmed_kernel_has_a_compile_estimate():
     """compile_seconds.json names every kernel the warmup compiles and every
     loop a run can take, so each compile notice says about how long it takes."""
-    from asterlite.dynamics import integrate, warmup
+    from asterlite.dynamics import schemes, warmup
 
-    names = set(warmup.KERNELS) | set(integrate.LOCAL_FRAME_LOOPS)
-    names |= set(integrate.SPECIALISED_LOOPS)
+    names = set(warmup.KERNELS) | set(schemes.kernels())
     missing = sorted(name for name in names if not (D.compile_estimate(name) or 0.0) > 0.0)
     assert not missing
     assert D.compile_estimate("no such kernel") is None

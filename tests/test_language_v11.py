@@ -266,9 +266,7 @@ def test_old_defaults_read_from_the_data():
 def test_command_removed_after_12_refused_by_name(tmp_path):
     from asterlite.runtime.runner import run_deck
 
-    (tmp_path / "d.comm").write_text("DEBUT()\nT = DYNA_LINE_TRAN(MODELE=None)\nFIN()\n")
+    (tmp_path / "d.comm").write_text("DEBUT()\nT = CALC_NO(RESULTAT=None)\nFIN()\n")
     report = run_deck(tmp_path / "d.comm", tmp_path / "out")
     assert report.status == "UNSUPPORTED"
-    assert "DYNA_LINE_TRAN is a code_aster 10-12 command that code_aster 15 and 17" in (
-        report.message
-    )
+    assert "CALC_NO is a code_aster 10-12 command that code_aster 15 and 17" in (report.message)

@@ -65,9 +65,16 @@ def test_defi_list_reel_intervals_with_pas_and_nombre():
     assert values == pytest.approx([0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0])
 
 
-def test_defi_list_reel_rejects_a_step_that_does_not_divide():
+def test_defi_list_reel_step_that_does_not_divide_ends_on_jusqu_a():
+    # code_aster's op0024: the whole steps, then one shorter step to JUSQU_A
+    occ = [{"JUSQU_A": 1.0, "PAS": 0.3}]
+    values = defi_list_reel.run(context(), kw(DEBUT=0.0, INTERVALLE=occ)).Valeurs()
+    assert np.allclose(values, [0.0, 0.3, 0.6, 0.9, 1.0])
+
+
+def test_defi_list_reel_rejects_a_step_longer_than_its_interval():
     with pytest.raises(CommandError, match="PAS"):
-        defi_list_reel.run(context(), kw(DEBUT=0.0, INTERVALLE=[{"JUSQU_A": 1.0, "PAS": 0.3}]))
+        defi_list_reel.run(context(), kw(DEBUT=0.0, INTERVALLE=[{"JUSQU_A": 1.0, "PAS": 1.5}]))
 
 
 def test_defi_list_enti():

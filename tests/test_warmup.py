@@ -14,7 +14,8 @@ from numba import njit
 
 from asterlite import progress
 from asterlite.dynamics import warmup
-from asterlite.dynamics.integrate import SCHEMES, loop_kernel
+from asterlite.dynamics.integrate import loop_kernel
+from asterlite.dynamics.schemes import SCHEMES
 
 
 @pytest.fixture

@@ -22,7 +22,6 @@ from __future__ import annotations
 from numba import njit
 
 from asterlite.dynamics import implicit as I
-from asterlite.dynamics import kernel as K
 from asterlite.dynamics import scheme_adapt_ordre1 as A1
 from asterlite.dynamics import scheme_adapt_ordre2 as A2
 from asterlite.dynamics import scheme_devoge as DV
@@ -30,30 +29,35 @@ from asterlite.dynamics import scheme_diff_centre as DC
 from asterlite.dynamics import scheme_newmark as N
 from asterlite.dynamics import scheme_runge_kutta as RK
 from asterlite.dynamics import scheme_trbdf2 as TR
-from asterlite.dynamics.forces import loads_ready
+from asterlite.dynamics.schemes import (
+    ADAPT_ORDRE1,
+    DEVOGE,
+    DIFF_CENTRE,
+    NEWMARK,
+    RUNGE_KUTTA,
+    SCHEMES,
+    TRBDF2,
+)
 
-NEWMARK, TRBDF2, DEVOGE, DIFF_CENTRE, RUNGE_KUTTA, ADAPT_ORDRE1, ADAPT_ORDRE2 = range(7)
-CODES = {
-    "NEWMARK": NEWMARK,
-    "TRBDF2": TRBDF2,
-    "DEVOGE": DEVOGE,
-    "DIFF_CENTRE": DIFF_CENTRE,
-    "EULER": DIFF_CENTRE,
-    "RUNGE_KUTTA_32": RUNGE_KUTTA,  # the tableau is in the memory
-    "RUNGE_KUTTA_54": RUNGE_KUTTA,
-    "ADAPT_ORDRE1": ADAPT_ORDRE1,
-    "ADAPT_ORDRE2": ADAPT_ORDRE2,
-}
+
+def code(scheme: str) -> int:
+    """The branch of ``scheme`` in the loops shared by every scheme
+    (``Scheme.code``; the RUNGE_KUTTA pairs share one: the tableau is in
+    the memory)."""
+    entry = SCHEMES[scheme]
+    if not entry.shared_loops:
+        raise ValueError(f"{scheme} does not run in the loops shared by every scheme")
+    return entry.code
 
 
 def full_matrices(scheme: str, memory):
     """The memory of a scheme whose K and C will stop being diagonal: the
-    implicit schemes drop their diagonal fast path."""
+    schemes with a diagonal fast path (``Scheme.diagonal_fast_path``, a
+    ``S_DIAGONAL`` scalar in their memory) drop it."""
     rows, scalars, table = memory[:3]
-    if scheme == "NEWMARK":
-        scalars[N.S_DIAGONAL] = 0.0
-    elif scheme == "TRBDF2":
-        scalars[TR.S_DIAGONAL] = 0.0
+    entry = SCHEMES[scheme]
+    if entry.diagonal_fast_path:
+        scalars[entry.implementation().S_DIAGONAL] = 0.0
     return rows, scalars, table
 
 
@@ -72,7 +76,7 @@ def scheme_step(code, t, dt, index, state, memory, model):
         return RK.step(t, dt, index, state, memory, model)
     if code == ADAPT_ORDRE1:
         return A1.step(t, dt, index, state, memory, model)
-    return A2.step(t, dt, index, state, memory, model)
+    return A2.step(t, dt, index, state, memory, model)  # ADAPT_ORDRE2
 
 
 @njit(cache=True)
@@ -118,15 +122,3 @@ def devoge_operators(mem, smem, lin, n):
     DV.fill_diagonal_rows(mem, minv, n)
     if smem[DV.S_READY] == 1.0:  # a singular H1 or H2 makes the step non-finite: reported
         DV.update_implicit_operators(mem, invm_c, h1, h2, smem[DV.S_HDT], False)
-
-
-@njit(cache=True, inline="always")
-def before_step(clock, counters, model, archive):
-    """The checks a loop makes before each step: 0 to go on, else the
-    status to return (archive full, pause, next load window)."""
-    paused = K.pause_status(counters, archive[0])
-    if paused:
-        return paused
-    if not loads_ready(clock, model[2]):
-        return K.STATUS_LOADS
-    return 0

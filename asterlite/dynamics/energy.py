@@ -147,16 +147,16 @@ N_ACC = 17
 L_GAP, L_VN, L_FN, L_DCHOC, L_FROT, L_DRIVE = range(6)
 N_LOCAL = 6
 
-# the schemes whose velocity lags half a step (see the module docstring)
-STAGGERED_SCHEMES = ("DIFF_CENTRE", "EULER", "ADAPT_ORDRE1")
 # rows of the vector scratch: synchronous velocity, external force, law force
 R_VELOCITY, R_EXTERNAL, R_LAW = 0, 1, 2
 
 
-def new_energy(system, shocks, capacity: int, scheme: str, enabled: bool):
+def new_energy(system, shocks, capacity: int, staggered: bool, enabled: bool):
     """The bundle the time loops receive: ``(acc, matrices, vectors,
-    vint_copy, work, out, local)``. Disabled, every array is empty (same types,
-    so the loops compile once for both)."""
+    vint_copy, work, out, local)``; ``staggered``: the scheme's velocity lags
+    half a step (see the module docstring; ``Scheme.staggered_velocity``).
+    Disabled, every array is empty (same types, so the loops compile once
+    for both)."""
     if not enabled:
         return (
             np.zeros(N_ACC),
@@ -170,7 +170,7 @@ def new_energy(system, shocks, capacity: int, scheme: str, enabled: bool):
     n = system.n_modes
     acc = np.zeros(N_ACC)
     acc[A_ON] = 1.0
-    acc[A_STAGGERED] = 1.0 if scheme in STAGGERED_SCHEMES else 0.0
+    acc[A_STAGGERED] = 1.0 if staggered else 0.0
     acc[A_DIAGONAL] = 1.0 if system.diagonal else 0.0
     matrices = np.zeros((3, n, n))
     matrices[0], matrices[1], matrices[2] = system.mass, system.stiffness, system.damping

@@ -51,7 +51,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from asterlite import progress
+from asterlite import progress, watchdog
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics import scheme_adapt_ordre2_v11 as V11
@@ -76,7 +76,6 @@ from asterlite.dynamics.contact import (
 )
 from asterlite.dynamics.forces import add_external_force, copy_into, loads_ready
 from asterlite.errors import NumericalError
-from asterlite.runtime import watchdog
 
 # columns of the per-shock film rows: film present, the law's coefficients,
 # in the boundary layer (0/1), the frozen thickness of that layer

@@ -68,6 +68,7 @@ from asterlite.dynamics import contact as C
 from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import add_generalized_force, local_state, obstacle_gap
 
 EPS = np.finfo(np.float64).eps
@@ -115,7 +116,7 @@ def prepare(scheme: str, memory, system, shocks):
         np.zeros(ns, dtype=np.int64),  # in contact at the start of the step
         np.zeros(1),  # the step as planned before any cut
     )
-    code = D.CODES[scheme]
+    code = D.code(scheme)
 
     def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
         return implicit_loop(
@@ -342,7 +343,7 @@ def implicit_loop(
     n = state[0].shape[0]
     balance = E.is_active(energy)
     while K.unfinished(clock, counters, eps):
-        paused = D.before_step(clock, counters, model, archive)
+        paused = L.before_step(clock, counters, model, archive)
         if paused:
             return paused
         save(clock, counters, state, base, treatment, clock_copy, counters_copy)

@@ -9,47 +9,22 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from asterlite import progress
-from asterlite.dynamics import (
-    adapt_control,
-    compile_estimate,
-    diagnosis,
-    scheme_adapt_ordre1,
-    scheme_adapt_ordre2,
-    scheme_adapt_ordre2_v11,
-    scheme_devoge,
-    scheme_diff_centre,
-    scheme_newmark,
-    scheme_rk32,
-    scheme_rk54,
-    scheme_trbdf2,
-)
+from asterlite import progress, watchdog
+from asterlite.dynamics import adapt_control, compile_estimate, diagnosis
 from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
 from asterlite.dynamics.forces import acceleration, total_force
 from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet, local_bundle
+from asterlite.dynamics.schemes import (
+    GENERAL_PATH,
+    IMPLICIT_LOOP,
+    ROTATING_LOOP,
+    SCHEMES,
+    Scheme,
+)
 from asterlite.errors import NumericalError
-from asterlite.runtime import watchdog
-
-# Each scheme module offers prepare(system, dt, options) -> (memory, adaptive)
-# and a compiled run_loop calling its own step function.
-SCHEMES = {
-    "DIFF_CENTRE": scheme_diff_centre,
-    "DEVOGE": scheme_devoge,
-    "NEWMARK": scheme_newmark,
-    "RUNGE_KUTTA_32": scheme_rk32,
-    "RUNGE_KUTTA_54": scheme_rk54,
-    "ADAPT_ORDRE1": scheme_adapt_ordre1,
-    "ADAPT_ORDRE2": scheme_adapt_ordre2,
-    "TRBDF2": scheme_trbdf2,
-    # asterlite extension for legacy decks: code_aster 10's EULER (mdeul1,
-    # v += dt a_n then q += dt v) is the arithmetic code_aster 14+ runs as the
-    # GENE DIFF_CENTRE (dtmprep maps it to its Euler routine), so one module serves
-    "EULER": scheme_diff_centre,
-}
-ADAPTIVE_FAMILY = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54", "ADAPT_ORDRE1", "ADAPT_ORDRE2", "DEVOGE")
 
 
 @dataclass
@@ -138,49 +113,44 @@ def integrate(
         )  # fmt: skip
 
 
-# code_aster 10-12's ADAPT_ORDRE2 (SchemeOptions.adapt_v11): a loop of its own
-LEGACY_ADAPT_LOOP = "ADAPT_ORDRE2 (code_aster 10-12)"
-
-
 def loop_kernel(
     scheme, system, shocks, specialised=True, rotation=None, implicit=False, legacy_adapt=False
 ) -> str:
-    """The name of the compiled loop a run takes: its scheme, or the path
+    """The name of the compiled loop a run takes: its scheme's, or the loop
     shared by every scheme (variable rotation speed, implicit shocks), and
-    DIFF_CENTRE's variants (specialised loop on diagonal or full matrices,
-    general path for the relations of laws/); ``legacy_adapt``: code_aster
-    10-12's ADAPT_ORDRE2 asked (``SchemeOptions.adapt_v11``)."""
+    the variants its description lists (:meth:`schemes.Scheme.loop_names`:
+    DIFF_CENTRE's specialised loop on diagonal or full matrices, the general
+    path for the relations of laws/); ``legacy_adapt``: code_aster 10-12's
+    variant asked (``SchemeOptions.adapt_v11``)."""
     if rotation is not None:
-        return "VITESSE_VARIABLE"
+        return ROTATING_LOOP
     if implicit and shocks.count:
-        return "TRAITEMENT_NONL='IMPLICITE'"
-    if legacy_adapt and scheme == "ADAPT_ORDRE2":
-        return LEGACY_ADAPT_LOOP
-    if SCHEMES[scheme] is scheme_diff_centre:
-        if not specialised or shocks.has_laws:
-            return "DIFF_CENTRE (general path)"
-        return "DIFF_CENTRE" if system.diagonal else "DIFF_CENTRE (full matrices)"
-    kernel = "RUNGE_KUTTA" if scheme.startswith("RUNGE_KUTTA") else scheme
-    if kernel in LOCAL_FRAME_LOOPS and (not specialised or shocks.has_laws):
-        return f"{kernel} (general path)"
-    return kernel
+        return IMPLICIT_LOOP
+    entry = SCHEMES[scheme]
+    if legacy_adapt and entry.legacy_kernel is not None:
+        return entry.legacy_kernel
+    general = not specialised or shocks.has_laws
+    if entry.loops == "specialised":
+        if general:
+            return GENERAL_PATH.format(entry.kernel)
+        return entry.kernel if system.diagonal else entry.loop_names()[1]
+    if entry.loops == "local_frame" and general:
+        return GENERAL_PATH.format(entry.kernel)
+    return entry.kernel
 
 
-# the kernels of DIFF_CENTRE's specialised run_loop (the model's 4th bundle)
-SPECIALISED_LOOPS = ("DIFF_CENTRE", "DIFF_CENTRE (full matrices)")
-# kernels whose run_loop takes the shocks in their local frames (the model's
-# 4th bundle: shapes, rest positions, support-motion scratch; the same types
-# for diagonal and full matrices) and keeps a general path: NEWMARK's
-# general_loop; for the others the same run_loop and step compiled for the
-# 3-bundle model (asterlite.dynamics.local_frame)
-LOCAL_FRAME_LOOPS = (
-    "NEWMARK",
-    "DEVOGE",
-    "TRBDF2",
-    "RUNGE_KUTTA",
-    "ADAPT_ORDRE1",
-    "ADAPT_ORDRE2",
-)
+def local_frame_bundle(entry: Scheme, loop: str, system, shocks) -> tuple:
+    """The 4th bundle of the model for the loops that take the shocks in
+    their local frames (:mod:`asterlite.dynamics.local_frame`), else ():
+    the whole ``local_bundle`` for DIFF_CENTRE's specialised loops; its
+    shapes, rest positions and support-motion scratch for a scheme's own
+    loop (the same types on diagonal and full matrices). The general paths
+    and the loops shared by every scheme compile once for the 3-bundle model."""
+    if entry.loops == "specialised" and loop in entry.loop_names()[:2]:
+        return (local_bundle(system, shocks),)
+    if entry.loops == "local_frame" and loop == entry.kernel:
+        return (local_bundle(system, shocks)[3:],)
+    return ()
 
 
 def run_kernel(
@@ -207,14 +177,13 @@ def run_kernel(
     """:func:`integrate` inside its kernel block (``notice``: what was compiled)."""
     options = options or SchemeOptions()
     n = system.n_modes
-    module = SCHEMES[scheme]
-    if options.adapt_v11 and scheme == "ADAPT_ORDRE2":
-        module = legacy_adapt_module(rotation, implicit_shocks and shocks.count, energy)
+    entry = SCHEMES[scheme]
+    module = entry.implementation()
     model = (system.bundle(), shocks.bundle(), excitation.bundle())
-    if notice.name in SPECIALISED_LOOPS:  # its local arrays (only there: every other
-        model = model + (local_bundle(system, shocks),)  # loop compiles once for any model)
-    elif notice.name in LOCAL_FRAME_LOOPS and module is not scheme_adapt_ordre2_v11:
-        model = model + (local_bundle(system, shocks)[3:],)
+    if options.adapt_v11 and entry.legacy_module is not None:
+        module = legacy_adapt_module(entry, rotation, implicit_shocks and shocks.count, energy)
+    else:
+        model = model + local_frame_bundle(entry, notice.name, system, shocks)
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
     f, a = np.zeros(n), np.zeros(n)
     vint = shocks.initial_vint(t0)
@@ -243,7 +212,7 @@ def run_kernel(
         model = ((lin[0], lin[1].copy(), lin[2].copy(), lin[3].copy()), model[1], model[2])
         memory, implicit_loop = IS.prepare(scheme, memory, system, shocks)
         IS.start(memory, model, q, v, t0)
-    adaptive = loop_adapts(scheme, dt, options)
+    adaptive = loop_adapts(entry, dt, options)
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
     n_steps = K.grid_step_count(t0, t_end, dt)
@@ -267,7 +236,7 @@ def run_kernel(
         run_loop = implicit_loop
     if energy and rotating_loop is not None:
         raise NumericalError("the energy balance (ENERGIE) with VITESSE_VARIABLE='OUI'")
-    balance = E.new_energy(system, shocks, capacity, scheme, energy)
+    balance = E.new_energy(system, shocks, capacity, entry.staggered_velocity, energy)
     if energy:
         E.start(balance, t0, q, v, a, vint, model[1], model[2])
     bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
@@ -316,28 +285,28 @@ def run_kernel(
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
         info["reintegrated_steps"] = int(ints[IS.I_CUTS])
         info["relinearisations"] = int(ints[IS.I_TURNS])
-    if scheme in ("ADAPT_ORDRE1", "ADAPT_ORDRE2"):
+    if entry.frequency_control:
         kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
     rows = balance[5][:count].copy() if energy else None
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
 
 
-def legacy_adapt_module(rotation, implicit, energy):
-    """code_aster 10-12's ADAPT_ORDRE2, which had no varying rotation speed,
-    no implicit shocks and no energy balance."""
+def legacy_adapt_module(entry: Scheme, rotation, implicit, energy):
+    """code_aster 10-12's variant of the scheme (its ADAPT_ORDRE2), which had
+    no varying rotation speed, no implicit shocks and no energy balance."""
     for asked, what in ((rotation, "VITESSE_VARIABLE='OUI'"), (implicit, "implicit shocks"),
                         (energy, "ENERGIE")):  # fmt: skip
         if asked:
             raise NumericalError(f"{what} with code_aster 10-12's ADAPT_ORDRE2")
-    return scheme_adapt_ordre2_v11
+    return entry.legacy_implementation()
 
 
-def loop_adapts(scheme: str, dt: float, options: SchemeOptions) -> bool:
+def loop_adapts(entry: Scheme, dt: float, options: SchemeOptions) -> bool:
     """Whether the time loop follows the step proposed by the scheme
     (code_aster's dtmprep: adaptive families with PAS_MINI != PAS_MAXI,
     defaults 1e-6 and 1e6 times PAS)."""
-    if scheme not in ADAPTIVE_FAMILY:
+    if not entry.adaptive:
         return False
     dt_min = options.dt_min if options.dt_min is not None else 1.0e-6 * dt
     dt_max = options.dt_max if options.dt_max is not None else 1.0e6 * dt
@@ -536,12 +505,12 @@ def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) 
 
 
 def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
-    """The largest step code_aster's VERI_PAS accepts for ``scheme``: 1/20 of
-    the shortest period with the shock stiffness (1/10 for DEVOGE, NEWMARK)."""
+    """The largest step code_aster's VERI_PAS accepts for ``scheme``: the
+    fraction of its description (:mod:`asterlite.dynamics.schemes`) of the
+    shortest period with the shock stiffness."""
     from asterlite.dynamics.model import stability_period
 
-    fraction = 10.0 if scheme in ("DEVOGE", "NEWMARK") else 20.0
-    return stability_period(system, shocks) / fraction
+    return stability_period(system, shocks) / SCHEMES[scheme].step_fraction
 
 
-__all__ = ["integrate", "RunResult", "SchemeOptions", "SCHEMES", "step_limit", "math"]
+__all__ = ["integrate", "RunResult", "SchemeOptions", "step_limit", "math"]

@@ -13,7 +13,7 @@ follows from the model tuple's type, when numba compiles the step:
   scheme's general path, and the loops shared by every scheme (rotation,
   implicit shocks);
 - ``(lin, shk, exc, (shapes, rest, drive))``: the model of the kernels of
-  ``integrate.LOCAL_FRAME_LOOPS`` (``model.local_bundle``'s last three
+  ``integrate.local_frame_bundle`` (``model.local_bundle``'s last three
   arrays): the mode shapes already rotated into each shock's frame, as
   NEWMARK's and DIFF_CENTRE's specialised loops evaluate them
   (:func:`contact.local_shock_forces` inlined in :func:`local_evaluate`,

@@ -254,25 +254,6 @@ class ShockSet:
                 rest[s, node] = rotate_rows(rot, (coord - origin)[:, None])[:, 0]
         return shapes, rest
 
-    def parameters(self, s: int) -> dict:
-        p = self.params[s]
-        return {
-            "OBSTACLE": self.specs[s].obstacle_type,
-            "JEU": p[C.P_GAP],
-            "DIST_1": p[C.P_DIST1],
-            "DIST_2": p[C.P_DIST2],
-            "RIGI_NOR": p[C.P_KN],
-            "AMOR_NOR": p[C.P_CN],
-            "RIGI_TAN": p[C.P_KT],
-            "AMOR_TAN": p[C.P_CT],
-            "COULOMB_DYNA": p[C.P_MU_DYN],
-            "COULOMB_STAT": p[C.P_MU_STAT],
-            "ORIG_OBST": p[C.P_ORIGIN : C.P_ORIGIN + 3].copy(),
-            "NORM_OBST": self.specs[s].norm_obst.copy(),
-            "LOCAL_FRAME": self.rots[s].copy(),
-            "UNIDIRECTIONNEL": bool(self.flags[s, C.F_UNIDIR]),
-        }
-
 
 def build_shocks(specs: list[ShockSpec], system: LinearSystem) -> ShockSet:
     n_modes = system.n_modes

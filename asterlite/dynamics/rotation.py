@@ -32,6 +32,7 @@ from numba import njit
 
 from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics import loop as L
 from asterlite.dynamics.forces import multiplier_at
 from asterlite.dynamics.formula import run_program
 from asterlite.dynamics.model import (
@@ -40,20 +41,6 @@ from asterlite.dynamics.model import (
     kernel_program,
     multiplier_points,
     tabulate_excitation,
-)
-
-# every GENE scheme of asterlite (code_aster accepts VITESSE_VARIABLE with all
-# of its own; ITMI is not implemented here)
-SCHEMES = (
-    "NEWMARK",
-    "TRBDF2",
-    "DEVOGE",
-    "DIFF_CENTRE",
-    "EULER",
-    "RUNGE_KUTTA_32",
-    "RUNGE_KUTTA_54",
-    "ADAPT_ORDRE1",
-    "ADAPT_ORDRE2",
 )
 
 
@@ -162,7 +149,7 @@ def rotating_loop(code, clock, counters, state, memory, model, instants, pas_arc
     base, rot = (memory[0], memory[1], memory[2]), memory[3]
     n = state[0].shape[0]
     while K.unfinished(clock, counters, eps):
-        paused = D.before_step(clock, counters, model, archive)
+        paused = L.before_step(clock, counters, model, archive)
         if paused:
             return paused
         t, dt = K.plan_step(clock, counters, instants, eps)
@@ -180,9 +167,7 @@ def rotating_loop(code, clock, counters, state, memory, model, instants, pas_arc
 
 def prepare(scheme: str, memory, rotation: Rotation):
     """(memory, run_loop) of a scheme run with variable rotation speed."""
-    if scheme not in SCHEMES:
-        raise ValueError(scheme)
-    code = D.CODES[scheme]
+    code = D.code(scheme)
     memory = D.full_matrices(scheme, memory) + (rotation.bundle(),)
 
     def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):

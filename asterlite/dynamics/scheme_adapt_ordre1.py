@@ -11,7 +11,8 @@ from numba import njit
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics.forces import all_finite, copy_into, loads_ready
+from asterlite.dynamics import loop as L
+from asterlite.dynamics.forces import all_finite, copy_into
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, RESIDUAL = range(5)
@@ -85,16 +86,14 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     nothing here allocates), calling :func:`step` (one compiled copy of the
     step for every loop that takes it: numba's inlining copies a callee's IR
     at each site, and the step is large; the call costs ~2 % of a step).
-    With the model's 4th bundle (``integrate.LOCAL_FRAME_LOOPS``) the step
+    With the model's 4th bundle (``integrate.local_frame_bundle``) the step
     takes the shocks in their local frames (:mod:`local_frame`); with three
     bundles this is the general path."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
-        paused = K.pause_status(counters, archive[0])
+        paused = L.before_step(clock, counters, model, archive)
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
-            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model
@@ -102,8 +101,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
-        archived = counters[K.K_ARCHIVED]
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-        if balance:
-            E.hook(energy, archived, counters, clock, dt_used, state, model)
+        L.after_step(
+            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
+        )
     return K.STATUS_DONE

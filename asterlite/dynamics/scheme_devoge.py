@@ -32,8 +32,9 @@ from numba import njit
 
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics import loop as L
 from asterlite.dynamics.adapt_control import shock_damping_step
-from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, matvec_row
+from asterlite.dynamics.forces import all_finite, copy_into, matvec_row
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
     STATUS_NOT_FINITE,
@@ -408,11 +409,9 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     (no reference counting; local frames with the model's 4th bundle)."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
-        paused = K.pause_status(counters, archive[0])
+        paused = L.before_step(clock, counters, model, archive)
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
-            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model
@@ -420,8 +419,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
-        archived = counters[K.K_ARCHIVED]
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-        if balance:
-            E.hook(energy, archived, counters, clock, dt_used, state, model)
+        L.after_step(
+            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
+        )
     return K.STATUS_DONE

@@ -25,13 +25,13 @@ from numba import njit
 
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import local_shock_forces
 from asterlite.dynamics.forces import (
     all_finite,
     diagonal_acceleration,
     full_acceleration,
     loads_cover,
-    loads_ready,
     local_support_motion,
     multiplier_at,
     state_acceleration,
@@ -66,11 +66,9 @@ def step(t, dt, index, state, memory, model):
 def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
-        paused = K.pause_status(counters, archive[0])
+        paused = L.before_step(clock, counters, model, archive)
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
-            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model
@@ -78,10 +76,9 @@ def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps,
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
-        archived = counters[K.K_ARCHIVED]
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-        if balance:
-            E.hook(energy, archived, counters, clock, dt_used, state, model)
+        L.after_step(
+            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
+        )
     return K.STATUS_DONE
 
 

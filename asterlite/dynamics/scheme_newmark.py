@@ -31,12 +31,12 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import local_shock_forces
 from asterlite.dynamics.forces import (
     add_external_force,
     all_finite,
     loads_cover,
-    loads_ready,
     local_support_motion,
     total_force_at,
 )
@@ -130,11 +130,9 @@ def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps,
     laws/, ``integrate(..., specialised=False)``."""
     balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
     while K.unfinished(clock, counters, eps):
-        paused = K.pause_status(counters, archive[0])
+        paused = L.before_step(clock, counters, model, archive)
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
-            return K.STATUS_LOADS
         t, dt = K.plan_step(clock, counters, instants, eps)
         status, shock, dt_used, dt_next, rejected = step(
             t, dt, counters[K.K_STEP], state, memory, model
@@ -142,10 +140,9 @@ def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps,
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt_used)
         result = (dt_used, dt_next, rejected)
-        archived = counters[K.K_ARCHIVED]
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-        if balance:
-            E.hook(energy, archived, counters, clock, dt_used, state, model)
+        L.after_step(
+            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
+        )
     return K.STATUS_DONE
 
 
@@ -160,7 +157,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
     otherwise)."""
     exc = model[2]
     flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
-    shapes, rest, drive = model[3]  # integrate.LOCAL_FRAME_LOOPS
+    shapes, rest, drive = model[3]  # integrate.local_frame_bundle
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
     return specialised_loop(
         clock, counters, instants, pas_arch, eps,

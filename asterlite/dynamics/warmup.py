@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from asterlite.dynamics import compile_estimate
+from asterlite.dynamics import compile_estimate, schemes
 
 # the kernels, in three stages: the force functions every loop calls (and
 # the film loop, which needs none of them); each scheme's own loop; the two
@@ -40,38 +40,22 @@ from asterlite.dynamics import compile_estimate
 # 15 min each on a busy machine instead of 1.5), and the film's ADAPT_ORDRE2
 # loop, which needs both the film functions and the legacy ADAPT step control
 SHARED = "shared force functions"
-LEGACY_ADAPT = "ADAPT_ORDRE2 (code_aster 10-12)"  # integrate.LEGACY_ADAPT_LOOP
+LEGACY_ADAPT = schemes.LEGACY_ADAPT_LOOP
 FILM = "LAME_FLUIDE"
 # the film under code_aster 10-12's ADAPT_ORDRE2: calls the film functions and
 # the legacy ADAPT loop's step control, so it comes after both
 FILM_ADAPT = "LAME_FLUIDE, ADAPT_ORDRE2 (code_aster 10-12)"
-# each scheme's loops, longest compile first (compile_seconds.json) so that
-# the two workers finish the stage together; ADAPT_ORDRE1, among the first,
-# compiles the local-frame evaluation the later schemes call
+# each scheme's loops (as asterlite.dynamics.schemes describes them),
+# longest compile first (compile_seconds.json) so that the two workers finish
+# the stage together; ADAPT_ORDRE1, among the first, compiles the local-frame
+# evaluation the later schemes call
 SCHEME_LOOPS = tuple(
     sorted(
-        (
-            "ADAPT_ORDRE1",
-            "NEWMARK",
-            "DEVOGE",
-            "DIFF_CENTRE",
-            LEGACY_ADAPT,
-            "DEVOGE (general path)",
-            "DIFF_CENTRE (general path)",
-            "ADAPT_ORDRE1 (general path)",
-            "DIFF_CENTRE (full matrices)",
-            "NEWMARK (general path)",
-            "TRBDF2",
-            "TRBDF2 (general path)",
-            "RUNGE_KUTTA",
-            "RUNGE_KUTTA (general path)",
-            "ADAPT_ORDRE2",
-            "ADAPT_ORDRE2 (general path)",
-        ),
+        schemes.kernels(),
         key=lambda name: -(compile_estimate(name) or 0.0),
     )
 )
-EVERY_SCHEME_LOOPS = ("VITESSE_VARIABLE", "TRAITEMENT_NONL='IMPLICITE'")
+EVERY_SCHEME_LOOPS = (schemes.ROTATING_LOOP, schemes.IMPLICIT_LOOP)
 LOOPS = SCHEME_LOOPS + EVERY_SCHEME_LOOPS
 STAGES = ((SHARED, FILM), SCHEME_LOOPS, EVERY_SCHEME_LOOPS + (FILM_ADAPT,))
 KERNELS = tuple(name for stage in STAGES for name in stage)
@@ -156,21 +140,15 @@ def run_loop_kernel(name: str) -> None:
     problem, with and without ENERGIE where the loop offers it."""
     from asterlite.dynamics.integrate import SchemeOptions, integrate
 
-    scheme = {
-        "DIFF_CENTRE": "DIFF_CENTRE",
-        "DIFF_CENTRE (full matrices)": "DIFF_CENTRE",
-        "DIFF_CENTRE (general path)": "DIFF_CENTRE",
-        "NEWMARK (general path)": "NEWMARK",
-        "VITESSE_VARIABLE": "NEWMARK",
-        "TRAITEMENT_NONL='IMPLICITE'": "NEWMARK",
-        "RUNGE_KUTTA": "RUNGE_KUTTA_32",
-        "RUNGE_KUTTA (general path)": "RUNGE_KUTTA_32",
-        LEGACY_ADAPT: "ADAPT_ORDRE2",
-    }.get(name, name.removesuffix(" (general path)"))
-    system = tiny_system(diagonal=name != "DIFF_CENTRE (full matrices)")
+    runs = {loop: entry.name for loop, entry in schemes.kernels().items()}
+    # the shared loops run NEWMARK's step (every step compiles with them)
+    runs.update({loop: "NEWMARK" for loop in EVERY_SCHEME_LOOPS})
+    scheme = runs[name]
+    full = schemes.FULL_MATRICES.format(schemes.SCHEMES[scheme].kernel)
+    system = tiny_system(diagonal=name != full)
     shocks = tiny_shocks(system)
     t_end, dt = 0.01, 1.0e-4
-    rotation = tiny_rotation(system, t_end, dt) if name == "VITESSE_VARIABLE" else None
+    rotation = tiny_rotation(system, t_end, dt) if name == schemes.ROTATING_LOOP else None
     options = SchemeOptions()
     if name == LEGACY_ADAPT:  # mdadap: no energy balance, PAS_MAXI given
         options = SchemeOptions(adapt_v11=True, dt_max=dt)
@@ -189,10 +167,10 @@ def run_loop_kernel(name: str) -> None:
             np.zeros(0),
             5,
             options,
-            specialised=not name.endswith("(general path)"),
+            specialised=name != schemes.GENERAL_PATH.format(schemes.SCHEMES[scheme].kernel),
             rotation=rotation,
             energy=energy,
-            implicit_shocks=name == "TRAITEMENT_NONL='IMPLICITE'",
+            implicit_shocks=name == schemes.IMPLICIT_LOOP,
             label=f"warmup {name}",
         )
 

@@ -26,6 +26,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.element_materials import material_parameters
 from asterlite.fem.plane_elements import plane_coordinates
 from asterlite.fem.plane_loads import segment_basis
 from asterlite.fem.solid_reference import tabulated
@@ -78,23 +79,19 @@ def boundary_matrices(values, scale, normal, normal_coef, tangential_coef) -> np
     return out.reshape(e, n * dim, n * dim)
 
 
+#: parameters of a paraxial boundary's material (COEF_AMOR scales its damping;
+#: LONG_CARA gives the optional springs)
+ABSORBING = (
+    ("E", np.nan),
+    ("NU", np.nan),
+    ("RHO", np.nan),
+    ("COEF_AMOR", 1.0),
+    ("LONG_CARA", np.nan),
+)
+
+
 def _material(materials, cells, mesh, modelisation):
-    if materials is None:
-        raise ElementError(f"{modelisation} elements need a material field (CHAM_MATER)")
-    missing = [int(c) for c in cells if materials.material_of(c) is None]
-    if missing:
-        names = ", ".join(mesh.cell_names[c] for c in missing[:5])
-        raise ElementError(f"no material is assigned to the {modelisation} cells {names}")
-    props = {
-        name: materials.values(cells, name, default)
-        for name, default in (
-            ("E", np.nan),
-            ("NU", np.nan),
-            ("RHO", np.nan),
-            ("COEF_AMOR", 1.0),
-            ("LONG_CARA", np.nan),
-        )
-    }
+    props = material_parameters(materials, cells, mesh, modelisation, ABSORBING)
     if any(np.any(np.isnan(props[k])) for k in ("E", "NU", "RHO")):
         raise ElementError(f"the material of {modelisation} elements needs E, NU and RHO (ELAS)")
     return props

@@ -27,6 +27,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.element_materials import elastic_values
 from asterlite.fem.solid_elements import jacobians
 from asterlite.fem.solid_reference import CellKind, tabulated
 
@@ -138,27 +139,7 @@ def mass(modelisation: str, coords, kind: CellKind, density) -> np.ndarray:
 
 
 def material_values(materials, cells, mesh, modelisation: str, need_density: bool):
-    if materials is None:
-        raise ElementError(f"{modelisation} elements need a material field (CHAM_MATER)")
-    missing = [int(c) for c in cells if materials.material_of(c) is None]
-    if missing:
-        names = ", ".join(mesh.cell_names[c] for c in missing[:5])
-        raise ElementError(f"no material is assigned to the {modelisation} cells {names}")
-    out = {
-        name: materials.values(cells, name, default)
-        for name, default in (
-            ("E", np.nan),
-            ("NU", np.nan),
-            ("RHO", np.nan),
-            ("AMOR_ALPHA", 0.0),
-            ("AMOR_BETA", 0.0),
-        )
-    }
-    if np.any(np.isnan(out["E"])) or np.any(np.isnan(out["NU"])):
-        raise ElementError(f"the material of {modelisation} elements needs E and NU (ELAS)")
-    if need_density and np.any(np.isnan(out["RHO"])):
-        raise ElementError(f"the mass of {modelisation} elements needs RHO in the material (ELAS)")
-    return out
+    return elastic_values(materials, cells, mesh, modelisation, need_density)
 
 
 def plane_blocks(

@@ -13,15 +13,19 @@ reflected back along -n by the plane n.x = n.x1. ``FONC_SIGNAL`` is the
 incident velocity ``v``; the displacement ``DEPL_IMPO`` is used only with
 ``LONG_CARA`` springs.
 
-On a boundary cell of unit normal n_b (the cell's orientation), the nodal
-forces are ``int N t dS`` with code_aster's traction
+On a boundary cell of unit normal n_b (the cell's orientation, outward once
+ORIE_PEAU has turned the skin), the structure takes the nodal forces
+``int N t dS`` with
 
-    t = -COEF_AMOR (rho c_p v_n + rho c_s v_t) - ((lambda + 2 mu) u_n + mu u_t) / L
-        - sigma n_b
+    t = COEF_AMOR (rho c_p v_n + rho c_s v_t) + ((lambda + 2 mu) u_n + mu u_t) / L
+        + sigma n_b
 
 (``v_n``, ``v_t`` the normal and tangential parts of the free-field velocity,
 the springs only with ``LONG_CARA`` = L, ``sigma`` the free-field stress
-``-(v / c) p (x) n`` symmetrised through Hooke's law).
+``-(v / c) p (x) n`` symmetrised through Hooke's law): the dashpots' force
+on the free-field motion plus its stress vector, which code_aster's te0498
+computes with the opposite sign and DYNA_VIBRA subtracts (dlnew0). A vertical
+wave reaching a horizontal base thus pushes with 2 rho c_p v.
 
 ``plane_wave_history`` gives these forces at every instant of a list at
 once (they are not a fixed vector times a function of time: each point of
@@ -206,8 +210,8 @@ def free_field(waves, points: np.ndarray, times: np.ndarray, signal, displacemen
 
 
 def plane_wave_history(model, materials, cells, wave: PlaneWave, times):
-    """Nodal forces of the plane wave on absorbing cells at every instant:
-    (nodes (m,), components (m,), values (n_times, m))."""
+    """Nodal forces the plane wave applies to the structure through absorbing
+    cells at every instant: (nodes (m,), components (m,), values (n_times, m))."""
     mesh = model.mesh
     times = np.atleast_1d(np.asarray(times, dtype=float))
     cells = np.asarray(cells, dtype=int)
@@ -265,7 +269,8 @@ def plane_wave_history(model, materials, cells, wave: PlaneWave, times):
                 along_u = np.einsum("teqi,eqi->teq", moved, n)[..., None] * n
                 traction -= ((lam + 2 * mu) * along_u + mu * (moved - along_u)) / length
             traction -= np.einsum("teqij,eqj->teqi", stress, n)
-            forces[:, rows] = np.einsum("eq,qa,teqi->teai", scale[rows], values, traction)
+            # te0498's vector, which DYNA_VIBRA subtracts: the applied force is its opposite
+            forces[:, rows] = -np.einsum("eq,qa,teqi->teai", scale[rows], values, traction)
         comps = ("DX", "DY", "DZ")[:dim]
         nodes_out.append(np.repeat(conn.ravel(), dim))
         comps_out.extend(list(comps) * conn.size)

@@ -41,6 +41,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.element_materials import elastic_values
 from asterlite.fem.solid_reference import REFERENCE_ELEMENTS, gauss_family
 
 COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
@@ -336,27 +337,7 @@ def shell_values(characteristics, cells, mesh) -> dict[str, np.ndarray]:
 
 
 def _material(materials, cells, mesh, need_density):
-    if materials is None:
-        raise ElementError("DKT elements need a material field (CHAM_MATER)")
-    missing = [int(c) for c in cells if materials.material_of(c) is None]
-    if missing:
-        names = ", ".join(mesh.cell_names[c] for c in missing[:5])
-        raise ElementError(f"no material is assigned to the DKT cells {names}")
-    out = {
-        name: materials.values(cells, name, default)
-        for name, default in (
-            ("E", np.nan),
-            ("NU", np.nan),
-            ("RHO", np.nan),
-            ("AMOR_ALPHA", 0.0),
-            ("AMOR_BETA", 0.0),
-        )
-    }
-    if np.any(np.isnan(out["E"])) or np.any(np.isnan(out["NU"])):
-        raise ElementError("the material of DKT elements needs E and NU (ELAS)")
-    if need_density and np.any(np.isnan(out["RHO"])):
-        raise ElementError("the mass of DKT elements needs RHO in the material (ELAS)")
-    return out
+    return elastic_values(materials, cells, mesh, "DKT", need_density)
 
 
 def plate_matrices(matrix, coords, kind, props, shell) -> np.ndarray:

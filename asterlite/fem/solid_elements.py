@@ -24,6 +24,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.element_materials import elastic_values
 from asterlite.fem.solid_reference import VOLUME_CELLS, tabulated
 
 COMPONENTS = ("DX", "DY", "DZ")
@@ -60,27 +61,7 @@ def jacobians(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
 
 
 def _check_material(materials, cells, mesh, need_density: bool) -> dict[str, np.ndarray]:
-    if materials is None:
-        raise ElementError("3D elements need a material field (CHAM_MATER)")
-    missing = [int(c) for c in cells if materials.material_of(c) is None]
-    if missing:
-        names = ", ".join(mesh.cell_names[c] for c in missing[:5])
-        raise ElementError(f"no material is assigned to the 3D cells {names}")
-    out = {
-        name: materials.values(cells, name, default)
-        for name, default in (
-            ("E", np.nan),
-            ("NU", np.nan),
-            ("RHO", np.nan),
-            ("AMOR_ALPHA", 0.0),
-            ("AMOR_BETA", 0.0),
-        )
-    }
-    if np.any(np.isnan(out["E"])) or np.any(np.isnan(out["NU"])):
-        raise ElementError("the material of 3D elements needs E and NU (ELAS)")
-    if need_density and np.any(np.isnan(out["RHO"])):
-        raise ElementError("the mass of 3D elements needs RHO in the material (ELAS)")
-    return out
+    return elastic_values(materials, cells, mesh, "3D", need_density)
 
 
 def stiffness_matrices(

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from asterlite.legacy import dyna, macros_v11, misc, modes, v15
+from asterlite.legacy import dyna, dyna_line_v11, macros_v11, misc, modes, v15
 from asterlite.legacy.base import Env, Translation
 
 OWN = "own"  # the legacy command's own catalogue checks the call as written
@@ -97,3 +97,7 @@ START = LegacyForm(misc.translate_start, detect=misc.is_legacy_start)
 # code_aster 10-11 macro-commands, renamed in code_aster 12 (asterlite.legacy.macros_v11)
 MACRO_PROJ_BASE = LegacyForm(macros_v11.translate_macro_proj_base, legacy_catalogue=OWN)
 MACRO_MATR_ASSE = LegacyForm(macros_v11.translate_macro_matr_asse, legacy_catalogue=OWN)
+# code_aster 10-12 commands that code_aster 11's DYNA_VIBRA ran with its own keywords
+# (asterlite.legacy.dyna_line_v11); today's DYNA_VIBRA catalogue checks the translation
+DYNA_LINE_TRAN = LegacyForm(dyna_line_v11.translate_dyna_line_tran)
+DYNA_LINE_HARM = LegacyForm(dyna_line_v11.translate_dyna_line_harm)

@@ -15,9 +15,11 @@ already today's syntax and meaning, so the rest of the run follows the
 markers (reading it all as version N would translate it a second time).
 
 Markers come from code_aster's own catalogues: code_aster 15 is the
-``ehmoussi/code_aster`` tree (2020), code_aster 17 today's; the older ones
-from the legacy translations (:mod:`asterlite.legacy.dyna`,
-:mod:`~asterlite.legacy.modes`, :mod:`~asterlite.legacy.v11`).
+``ehmoussi/code_aster`` tree (2020), code_aster 17 today's; the commands of
+code_aster 10-12 that 15 and 17 no longer have from their language data
+(:func:`removed_commands`); the older keywords from the legacy translations
+(:mod:`asterlite.legacy.dyna`, :mod:`~asterlite.legacy.modes`,
+:mod:`~asterlite.legacy.v11`).
 """
 
 from __future__ import annotations
@@ -35,14 +37,26 @@ CURRENT = 17
 # to Python 3): Python 2 syntax in a deck is a marker of this version
 PYTHON2_LAST = 13
 
-# command -> newest version that had it
-REMOVED_COMMANDS = {
-    "DYNA_TRAN_MODAL": 12,
-    "MODE_ITER_SIMULT": 12,
-    "MODE_ITER_INV": 12,
-    "MACRO_PROJ_BASE": 11,
-    "MACRO_MATR_ASSE": 11,
-}
+# commands code_aster 11 had and its catalogue of January 2013 (11.3) no longer
+# had: newest version 11; every other command of code_aster 10-12's language
+# data that 15's and 17's lack is taken as of 12 (the data cannot tell 11 from 12)
+REMOVED_BY_2013 = {"MACRO_PROJ_BASE": 11, "MACRO_MATR_ASSE": 11}
+OLD_LAYOUT_LAST = 12
+
+
+@lru_cache(maxsize=1)
+def removed_commands() -> dict[str, int]:
+    """command -> newest version that had it, for the commands of code_aster
+    10-12 (its language data) that code_aster 15 and 17 no longer have."""
+    from asterlite.catalog.language.model import language
+    from asterlite.legacy.language_data import old_language
+
+    newer = [found for found in (language(15), language(17)) if found is not None]
+    found = {}
+    for name in sorted(old_language().command_names):
+        if all(lang.command(name) is None for lang in newer):
+            found[name] = REMOVED_BY_2013.get(name, OLD_LAYOUT_LAST)
+    return found
 
 
 def _removed_keywords() -> dict[tuple[str, ...], int]:
@@ -143,12 +157,13 @@ def deck_version(text: str) -> int:
     if own is not None:
         found.append(own)
     keywords = _removed_keywords()
+    removed = removed_commands()
     try:
         if _is_python2(text):
             found.append(PYTHON2_LAST)
         for command, path in calls(text):
-            if not path and command in REMOVED_COMMANDS:
-                found.append(REMOVED_COMMANDS[command])
+            if not path and command in removed:
+                found.append(removed[command])
             elif (command, *path) in keywords:
                 found.append(keywords[(command, *path)])
     except AsterliteError:  # not a deck asterlite parses: nothing to decide from

@@ -161,6 +161,18 @@ def check_call(proxy, catalogue, keywords: Keywords, site: CallSite, reuse):
                 error.asterlite_limit = True
                 facts.close_names()
                 raise
+            except (ArithmeticError, ValueError, IndexError, KeyError, TypeError) as error:
+                # a bug of asterlite's mesh command: the deck's validity is not in
+                # question; what the command would make is unknown
+                facts.close_names()
+                failure = CommandError(
+                    f"asterlite's {name} stopped on an internal error (please report): "
+                    f"{type(error).__name__}: {error}",
+                    site.location,
+                    name,
+                )
+                failure.asterlite_limit = True
+                raise failure from error
             facts.meshes.append(concept)
             _note_written_units(name, keywords, facts)
             return concept
@@ -356,8 +368,14 @@ def _mesh_has(mesh, kind: str, name: str) -> bool:
     if kind == "grno":
         return name in mesh.node_groups
     if kind == "no":
-        return mesh.find_node(name) is not None
-    return mesh.find_cell(name) is not None
+        return mesh.find_node(name) is not None or _position_in(name, mesh.n_nodes)
+    return mesh.find_cell(name) is not None or _position_in(name, getattr(mesh, "n_cells", 0))
+
+
+def _position_in(name: str, count: int) -> bool:
+    """code_aster 17 also reads a node or cell name made of digits as its
+    1-based number (char8_to_int): NOEUD='1' is the first node."""
+    return name.strip().isdigit() and 1 <= int(name) <= count
 
 
 # ------------------------------------------------------------------ helpers
@@ -412,4 +430,9 @@ def _simple_values(level_catalogue, keywords):
 
 
 def _may_be_mesh(result: Any) -> bool:
-    return isinstance(result, Placeholder) and result.satisfies("maillage_sdaster")
+    """A placeholder of a mesh, a skeleton included (code_aster's squelette
+    derives from maillage_sdaster: DEFI_SQUELETTE's nodes have names of their own)."""
+    if not isinstance(result, Placeholder):
+        return False
+    types = getattr(result, "aster_types", None) or ()
+    return result.satisfies("maillage_sdaster") or any("squelette" in str(t) for t in types)

@@ -150,10 +150,61 @@ def check_language(session, name: str, kwargs: dict, site: CallSite, *, record: 
     else:
         check = language_validate.check_call(lang, name, kwargs, site, reuse=reuse)
         check.findings[:] = [InvalidCall(f.message, f.location, f.path) for f in check.findings]
+        if not check.findings:
+            check.findings += component_findings(name, kwargs, site)
     if record:
         for finding in check.findings:
             session.check.record(finding)
     return check
+
+
+def component_findings(name: str, kwargs: dict, site: CallSite) -> list:
+    """``NOM_CMP`` beside ``NOM_CHAM='DEPL'`` (``VITE``, ``ACCE``...) of a
+    result: each component must be one of code_aster's DEPL_R (a field given
+    with CHAM_GD may carry another quantity under that name: not judged)."""
+    from asterlite.catalog.language.components import (
+        DISPLACEMENT_FIELDS,
+        displacement_components,
+    )
+
+    found = []
+
+    def visit(level: dict, path: str, locations: dict, where) -> None:
+        field, components = level.get("NOM_CHAM"), level.get("NOM_CMP")
+        if (
+            isinstance(field, str)
+            and field in DISPLACEMENT_FIELDS
+            and components is not None
+            and level.get("CHAM_GD") is None
+        ):
+            names = components if isinstance(components, (list, tuple)) else [components]
+            for component in names:
+                if isinstance(component, str) and component not in displacement_components():
+                    close = difflib.get_close_matches(
+                        component, sorted(displacement_components()), n=1, cutoff=0.6
+                    )
+                    hint = f", did you mean {close[0]}?" if close else ""
+                    found.append(
+                        InvalidCall(
+                            f"{component!r} is not a component of {field} (quantity DEPL_R){hint}",
+                            locations.get("NOM_CMP", where),
+                            f"{path}/NOM_CMP",
+                        )
+                    )
+        for key, value in level.items():
+            occurrences = value if isinstance(value, (list, tuple)) else [value]
+            for index, occurrence in enumerate(occurrences, start=1):
+                if isinstance(occurrence, dict):
+                    visit(
+                        occurrence,
+                        f"{path}/{key}[{index}]",
+                        getattr(occurrence, "keyword_locations", {}) or {},
+                        getattr(occurrence, "location", None) or locations.get(key, where),
+                    )
+
+    if kwargs.get("CHAM_GD") is None:
+        visit(kwargs, name, dict(site.keyword_locations), site.location)
+    return found
 
 
 def blur_empty_sequences(value):
@@ -563,6 +614,9 @@ def _name_error(session, error: DeckRuntimeError) -> AsterliteError:
         # the deck binds it somewhere check could not follow (a branch or loop
         # on uncomputed values, a statement asterlite refused)
         return _unsupported_python(error, "check could not follow where the deck binds it")
+    opaque = [n[1:] for n in deck_bound_names(session) if n.startswith("*")]
+    if match is not None and opaque:
+        return _unsupported_python(error, f"it may come from 'from {opaque[0]} import *'")
     lang = session_language(session)
     if match is None or lang is None or not match.group(1).isupper():
         return error
@@ -573,6 +627,10 @@ def _name_error(session, error: DeckRuntimeError) -> AsterliteError:
     found = InvalidCall(text, error.location, error.path)
     found.original = error
     return found
+
+
+# modules whose every name asterlite binds on ``from M import *``
+FULLY_PROVIDED = frozenset({"code_aster.Commands", "code_aster", "math", "cmath"})
 
 
 def deck_bound_names(session) -> frozenset[str]:
@@ -646,6 +704,9 @@ def _bound_names(tree) -> set[str]:
             for alias in node.names:
                 if alias.name != "*":
                     names.add(alias.asname or alias.name.split(".")[0])
+                elif getattr(node, "module", None) not in FULLY_PROVIDED:
+                    # what a module asterlite does not give in full binds is unknown
+                    names.add(f"*{node.module}")
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
             if node.func.id == "CO" and node.args and isinstance(node.args[0], ast.Constant):
                 if isinstance(node.args[0].value, str):

@@ -443,8 +443,20 @@ def _key_texts(tree) -> set[str]:
             return node.value
         return None
 
+    # keys = ("A", "B") then for key in keys: the texts of the named tuple
+    named: dict[str, list] = {}
+    for node in ast.walk(tree):
+        if (
+            isinstance(node, ast.Assign)
+            and len(node.targets) == 1
+            and isinstance(node.targets[0], ast.Name)
+            and isinstance(node.value, (ast.Tuple, ast.List))
+        ):
+            named[node.targets[0].id] = node.value.elts
     found: set[str] = set()
     for node in ast.walk(tree):
+        if isinstance(node, ast.For) and isinstance(node.iter, ast.Name):
+            found.update(text(item) for item in named.get(node.iter.id, ()))
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
             if node.func.attr in ("pop", "get", "setdefault") and node.args:
                 found.add(text(node.args[0]))
