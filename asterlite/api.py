@@ -20,6 +20,7 @@ numpy arrays in plain dicts otherwise. Importing this module stays light
 
 from __future__ import annotations
 
+import importlib.resources
 import tempfile
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
@@ -235,7 +236,6 @@ def sample(name: str) -> Path:
     """The folder of a sample shipped with asterlite (``friction_oscillator``,
     ``tube_supports``): ``asterlite.run(asterlite.sample("friction_oscillator"))``
     runs it from any working directory."""
-    import importlib.resources
 
     root = Path(str(importlib.resources.files("asterlite.samples")))
     folder = root / name

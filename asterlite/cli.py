@@ -17,6 +17,7 @@ import sys
 from pathlib import Path
 
 from asterlite import __version__, progress
+from asterlite.errors import AsterliteError
 from asterlite.extras import MissingExtraError
 
 
@@ -190,7 +191,6 @@ def _sweep(args) -> int:
 
 
 def _plot(args) -> int:
-    from asterlite.errors import AsterliteError
     from asterlite.post import plots
 
     try:
@@ -291,7 +291,6 @@ def _sensitivity(args) -> int:
 
 
 def _port(args) -> int:
-    from asterlite.errors import AsterliteError
     from asterlite.legacy.port import describe_changes, port_file
 
     deck = Path(args.deck)
@@ -348,7 +347,7 @@ def _limit_option(name: str):
     (``--time-limit inf`` or ``nan`` is a usage error, exit status 2)."""
 
     def parse(text: str) -> float:
-        from asterlite.runtime.export import limit_refusal
+        from asterlite.io.export import limit_refusal
 
         refusal = limit_refusal(name, text)
         if refusal:

@@ -6,6 +6,9 @@ prints ``str(error)`` and exits with status 2. Nothing here imports numpy.
 
 from __future__ import annotations
 
+import difflib
+import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 
@@ -72,10 +75,18 @@ class AsterliteError(Exception):
     def message(self, text: str) -> None:
         self._message = text
 
+    def worded(self, vocabulary: Mapping[str, str]) -> AsterliteError:
+        """This error with its message and path in the words of the command
+        whose input they name (:func:`worded`), of the same class."""
+        error = type(self)(worded(self._message, vocabulary), self.location)
+        error.path = worded(self.path, vocabulary, whole_path=True)
+        return error
+
     def __str__(self) -> str:
         where = f"{self.location}: " if self.location else ""
-        path = f"{self.path}: " if self.path else ""
-        text = f"{where}{self.kind}: {path}{self.message}"
+        path = f"{worded(self.path, {})}: " if self.path else ""
+        # a field a command did not word reads as the field's name
+        text = f"{where}{self.kind}: {path}{worded(self.message, {})}"
         if self.location is not None and self.location.excerpt():
             text += "\n" + self.location.excerpt()
         return text
@@ -117,6 +128,36 @@ class NumericalError(AsterliteError):
     kind = "numerical error"
 
 
+# --- messages of a domain room, worded by the command ----------------------
+# A domain room that receives typed problems (dynamics) never names the
+# keyword a quantity came from: its messages name the problem's field,
+# ``field("grid.step")``, and the command that read the keywords words them
+# with its vocabulary {field: keyword path} (``worded``), in messages as
+# the keyword's name and in an error's keyword path as the whole path.
+# Without a vocabulary entry the field's own name stands.
+
+FIELD_MARK = re.compile(r"\u27e8([A-Za-z_][\w.]*)\u27e9")
+
+
+def field(name: str) -> str:
+    """The mark standing for the problem field ``name`` in a message."""
+    return f"\u27e8{name}\u27e9"
+
+
+def worded(text: str, vocabulary: Mapping[str, str], whole_path: bool = False) -> str:
+    """``text`` with each field mark replaced by its keyword in
+    ``vocabulary``: the keyword's name (last part of its path), or its whole
+    path when ``whole_path`` (an error's ``path``)."""
+
+    def keyword(mark: re.Match) -> str:
+        path = vocabulary.get(mark[1])
+        if path is None:
+            return mark[1]
+        return path if whole_path else path.rsplit("/", 1)[-1]
+
+    return FIELD_MARK.sub(keyword, text)
+
+
 # --- suggestions for a name that is not there -------------------------------
 # One place for every "did you mean" of a run or a check: deck names
 # (commands, concepts, variables), mesh groups, components, files...
@@ -125,7 +166,6 @@ class NumericalError(AsterliteError):
 def close_names(word: str, candidates, n: int = 3, cutoff: float = 0.6) -> list[str]:
     """The candidates nearest to ``word``, best first (difflib's ratio,
     compared without case: code_aster names are upper case, a deck may not be)."""
-    import difflib
 
     by_key: dict[str, str] = {}
     for candidate in candidates:

@@ -44,7 +44,10 @@ raised again, and an API user's process outlives the run).
 
 from __future__ import annotations
 
+import ctypes
+import gc
 import os
+import resource
 import signal
 import threading
 import time
@@ -110,7 +113,6 @@ def _released_size() -> int | None:
     """The resident size once the C allocator has returned its free pages to
     the system (glibc) and, at most once a CPU second (a full collection of
     a large heap takes long), unreachable objects are collected."""
-    import gc
 
     _trim_allocator()
     now = time.process_time()
@@ -126,8 +128,6 @@ GC_INTERVAL_SECONDS = 1.0
 
 def _trim_allocator() -> None:
     try:
-        import ctypes
-
         ctypes.CDLL("libc.so.6").malloc_trim(0)
     except (OSError, AttributeError):
         pass
@@ -258,7 +258,6 @@ def _compile_ended() -> None:
         _compiling.resident += max(0, after - before)
     if _compiling.cap is None:
         return
-    import resource
 
     soft, hard = _compiling.cap
     grown = max(0, (address_space_size() or 0) - (_compiling.size_before or 0))

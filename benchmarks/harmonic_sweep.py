@@ -160,7 +160,7 @@ FIN()
 
 
 def assembled_model(grid: bool):
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     folder = Path(tempfile.mkdtemp(prefix="harmonic_sweep_"))

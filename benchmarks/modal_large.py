@@ -66,7 +66,7 @@ def analytic_frequencies(n_nodes: int, count: int = 50) -> np.ndarray:
 
 
 def main(n_nodes: int = 50_000) -> None:
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     with tempfile.TemporaryDirectory() as tmp:

@@ -28,8 +28,9 @@ import numpy as np  # noqa: E402
 import tube_floor  # noqa: E402
 import tube_model as T
 
+from asterlite.dynamics.excitation import Excitation
 from asterlite.dynamics.integrate import integrate
-from asterlite.dynamics.model import Excitation, ShockSet
+from asterlite.dynamics.model import ShockSet
 
 
 def best_of(function, repeats=5) -> float:

@@ -140,7 +140,7 @@ def tube_problem() -> TubeProblem:
 class Harmonic:
     """A multiplier known only through ``evaluate(times)`` (what a FORMULE
     calling a deck function is to DYNA_VIBRA): the engine samples it every
-    half step, one window at a time (model.tabulate_excitation)."""
+    half step, one window at a time (excitation.tabulate_excitation)."""
 
     def __init__(self, amplitude: float, omega: float, phase: float) -> None:
         self.amplitude, self.omega, self.phase = amplitude, omega, phase
@@ -182,13 +182,8 @@ def engine_inputs(problem: TubeProblem, t_end: float, dt: float, multiplier: str
     FORMULE, evaluated exactly at each instant by the kernel), 'sampled'
     (a function known only by ``evaluate``, sampled every half step by
     windows) or 'table' (a DEFI_FONCTION with 64 points per period)."""
-    from asterlite.dynamics.model import (
-        LinearSystem,
-        ShockSpec,
-        build_shocks,
-        modal_damping,
-        tabulate_excitation,
-    )
+    from asterlite.dynamics.excitation import tabulate_excitation
+    from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, modal_damping
 
     mass = np.diag(problem.mass)
     stiffness = np.diag(problem.stiffness)

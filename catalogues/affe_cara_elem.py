@@ -16,7 +16,6 @@ from asterlite.catalog import (
     equal_to,
     exists,
 )
-from asterlite.legacy import forms
 
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
 
@@ -372,7 +371,6 @@ ORIENTATION = FACT(
 
 AFFE_CARA_ELEM = OPER(
     nom="AFFE_CARA_ELEM",
-    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod="cara_elem",
     reentrant="n",
     fr="Assign properties to structural elements",

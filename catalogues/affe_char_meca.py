@@ -342,6 +342,7 @@ AFFE_CHAR_MECA = OPER(
             "PRES_REP",
             "PRE_EPSI",
             "FORCE_POUTRE",
+            "EVOL_CHAR",
         ),
     ),  # fmt: skip
     VERI_AFFE=SIMP(statut="f", typ="TXM", defaut="OUI", into=OUI_NON),
@@ -350,6 +351,9 @@ AFFE_CHAR_MECA = OPER(
     CARA_ELEM=SIMP(statut="f", typ="cara_elem"),
     CHAM_MATER=SIMP(statut="f", typ="cham_mater"),
     DOUBLE_LAGRANGE=SIMP(statut="f", typ="TXM", into=OUI_NON, defaut="OUI"),
+    EVOL_CHAR=SIMP(
+        statut="f", typ="evol_char", fr="A load history: its nodal forces, linear in time"
+    ),
     LIAISON_ELEM=LIAISON_ELEM,
     LIAISON_CHAMNO=FACT(
         statut="f",

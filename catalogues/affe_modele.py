@@ -3,7 +3,6 @@
 from asterlite.catalogues.common import OUI_NON, group_ma, tout
 
 from asterlite.catalog import AU_MOINS_UN, BLOC, FACT, OPER, SIMP, UN_PARMI, equal_to, is_in
-from asterlite.legacy import forms
 
 # Mechanical modellings of code_aster 17 (the coupled THM/HM family is left out).
 MODELISATION_MECANIQUE = (
@@ -36,7 +35,6 @@ FLUID_MODELISATIONS = (
 
 AFFE_MODELE = OPER(
     nom="AFFE_MODELE",
-    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod="modele_sdaster",
     reentrant="n",
     fr="Assign the phenomenon and the finite elements on a mesh",

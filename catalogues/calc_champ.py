@@ -7,7 +7,6 @@ non-linear); asterlite accepts the union of the linear/dynamic options.
 from asterlite.catalogues.common import critere_precision, group_ma
 
 from asterlite.catalog import AU_MOINS_UN, EXCLUS, FACT, OPER, PRESENT_ABSENT, SIMP, UN_PARMI
-from asterlite.legacy import forms
 
 
 def _family(prefix_list, locations=("ELGA", "ELNO", "NOEU")) -> tuple:
@@ -46,7 +45,6 @@ def _options(into: tuple, fr: str) -> SIMP:
 
 CALC_CHAMP = OPER(
     nom="CALC_CHAMP",
-    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod=_sdprod,
     reentrant="f",
     fr="Compute element or nodal fields and add them to a result",

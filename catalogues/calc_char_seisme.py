@@ -1,11 +1,9 @@
 """CALC_CHAR_SEISME: seismic load vector (mass times drive direction)."""
 
 from asterlite.catalog import BLOC, OPER, SIMP, UN_PARMI, exists
-from asterlite.legacy import forms
 
 CALC_CHAR_SEISME = OPER(
     nom="CALC_CHAR_SEISME",
-    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod="cham_no_sdaster",
     reentrant="n",
     fr="Seismic load for a support motion",

@@ -11,7 +11,19 @@ from __future__ import annotations
 
 from asterlite.catalogues.common import NO_EFFECT_SOLVER
 
-from asterlite.catalog import BLOC, FACT, SIMP, UN_PARMI, Condition, absent, equal_to, exists
+from asterlite.catalog import (
+    BLOC,
+    EXCLUS,
+    FACT,
+    PRESENT_ABSENT,
+    PRESENT_PRESENT,
+    SIMP,
+    UN_PARMI,
+    Condition,
+    absent,
+    equal_to,
+    exists,
+)
 from asterlite.lang.values import Unknown
 
 # --------------------------------------------------------------------------
@@ -358,6 +370,17 @@ RELATIONS_DYNA = (
     "RELA_EFFO_DEPL",
     "RELA_EFFO_VITE",
 )
+# relations added from outside this package (docs/architecture.md, "Adding a
+# relation"): RELATION value -> the keywords of its block; read when a
+# catalogue holding COMPORTEMENT is built, so register before loading it
+ADDED_RELATIONS: dict[str, dict] = {}
+
+
+def register_relation(name: str, **keywords) -> None:
+    """Add a COMPORTEMENT relation and its keywords (``SIMP``, ``FACT``, ``BLOC``)."""
+    if name in RELATIONS_DYNA or name in ADDED_RELATIONS:
+        raise ValueError(f"relation {name!r} is already catalogued")
+    ADDED_RELATIONS[name] = dict(keywords)
 
 
 def _two_nodes() -> dict:
@@ -385,14 +408,13 @@ def para_lame_flui() -> FACT:
 
 def comportement_dyna() -> FACT:
     """COMPORTEMENT: one occurrence per localized nonlinearity, chosen by RELATION."""
-    from asterlite.catalog import EXCLUS, PRESENT_ABSENT, PRESENT_PRESENT
 
     one_of_each_end = (UN_PARMI("NOEUD_1", "GROUP_NO_1"), UN_PARMI("NOEUD_2", "GROUP_NO_2"))
     return FACT(
         statut="f",
         max="**",
         fr="Localized nonlinearities (shocks, buckling, dampers, cracked rotor...)",
-        RELATION=SIMP(statut="o", typ="TXM", into=RELATIONS_DYNA),
+        RELATION=SIMP(statut="o", typ="TXM", into=RELATIONS_DYNA + tuple(ADDED_RELATIONS)),
         # -- shock with an obstacle, penalised normal force and Coulomb friction
         b_choc=BLOC(
             condition=equal_to("RELATION", "DIS_CHOC"),
@@ -579,6 +601,10 @@ def comportement_dyna() -> FACT:
             NOM_CMP=SIMP(statut="f", typ="TXM"),
             FONCTION=SIMP(statut="o", typ=FONCTION_OU_FORMULE),
         ),
+        **{
+            f"b_added_{name.lower()}": BLOC(condition=equal_to("RELATION", name), **keywords)
+            for name, keywords in ADDED_RELATIONS.items()
+        },
     )
 
 

@@ -106,7 +106,17 @@ CREA_MAILLAGE = OPER(
         GROUP_NO_1=SIMP(statut="o", typ="grno"),
         GROUP_NO_2=SIMP(statut="o", typ="grno"),
     ),
-    LINE_QUAD=_all_or_groups("Linear to quadratic cells"),
+    LINE_QUAD=FACT(
+        statut="f",
+        fr="Linear to quadratic cells",
+        regles=(UN_PARMI("TOUT", "GROUP_MA"),),
+        TOUT=tout(),
+        GROUP_MA=group_ma(),
+        # code_aster 15 and older named the new nodes PREF_NOEUD + number from
+        # PREF_NUME (defaults NS, 1); 17 numbers them: hidden, for those decks
+        PREF_NOEUD=SIMP(statut="c", typ="TXM"),
+        PREF_NUME=SIMP(statut="c", typ="I"),
+    ),
     HEXA20_27=_all_or_groups("HEXA20 to HEXA27"),
     PENTA15_18=_all_or_groups("PENTA15 to PENTA18"),
     QUAD_LINE=_all_or_groups("Quadratic to linear cells"),

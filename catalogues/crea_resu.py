@@ -1,7 +1,7 @@
 """CREA_RESU: create or enrich a result from fields.
 
-Supported operations: AFFE (all result types), ASSE, PERM_CHAM, KUCV and
-CONV_CHAR. PROL_RTZ, PREP_VARC and CONV_RESU are code_aster choices whose
+Supported operations: AFFE (all result types), ASSE, PERM_CHAM, KUCV,
+CONV_CHAR and CONV_RESU. PROL_RTZ and PREP_VARC are code_aster choices whose
 keywords asterlite does not describe yet.
 """
 
@@ -13,8 +13,17 @@ from asterlite.catalogues.common import (
     group_no,
 )
 
-from asterlite.catalog import BLOC, FACT, OPER, SIMP, UN_PARMI, equal_to, is_in
-from asterlite.legacy import forms
+from asterlite.catalog import (
+    BLOC,
+    FACT,
+    OPER,
+    PRESENT_ABSENT,
+    SIMP,
+    UN_PARMI,
+    equal_to,
+    exists,
+    is_in,
+)
 
 CHAM_GD = ("cham_no_sdaster", "cham_elem", "carte_sdaster", "cham_gd_sdaster")
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
@@ -76,7 +85,6 @@ def _excit(charges, **extra) -> FACT:
 
 CREA_RESU = OPER(
     nom="CREA_RESU",
-    compat_syntax=forms.CREA_RESU,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod=_sdprod,
     reentrant="f",
     fr="Create or enrich a result from fields",
@@ -258,6 +266,45 @@ CREA_RESU = OPER(
             LIST_INST=SIMP(statut="f", typ="listr8_sdaster"),
             PRECISION=SIMP(statut="f", typ="R", defaut=1.0e-6),
             CRITERE=SIMP(statut="f", typ="TXM", defaut="RELATIF", into=("RELATIF", "ABSOLU")),
+        ),
+    ),
+    b_conv_resu=BLOC(
+        condition=equal_to("OPERATION", "CONV_RESU")
+        & is_in("TYPE_RESU", ("EVOL_CHAR", "DYNA_TRANS")),
+        CONV_RESU=FACT(
+            statut="o",
+            regles=(
+                UN_PARMI("MATR_RIGI", "NUME_DDL"),
+                UN_PARMI("INST", "LIST_INST"),
+                PRESENT_ABSENT("GROUP_NO_INTERF", "FONC_DX"),
+            ),
+            RESU_INIT=SIMP(statut="o", typ=("dyna_trans", "evol_char", "evol_noli")),
+            NOM_CHAM_INIT=SIMP(
+                statut="f", typ="TXM", into=("DEPL", "ACCE", "FORC_NODA", "REAC_NODA")
+            ),
+            DDL_EXCLUS=SIMP(statut="f", typ="TXM", into=("DX", "DY", "DZ", "DRX", "DRY", "DRZ")),
+            MATR_RIGI=SIMP(statut="f", typ="matr_asse_depl_r"),
+            NUME_DDL=SIMP(statut="f", typ="nume_ddl_sdaster"),
+            INST=SIMP(statut="f", typ="R", max="**"),
+            LIST_INST=SIMP(statut="f", typ="listr8_sdaster"),
+            PRECISION=SIMP(statut="f", typ="R", defaut=1.0e-6),
+            COEF=SIMP(statut="f", typ="R", defaut=1.0),
+            CRITERE=SIMP(statut="f", typ="TXM", defaut="RELATIF", into=("RELATIF", "ABSOLU")),
+            GROUP_NO_INTERF=SIMP(statut="f", typ="grno"),
+            b_group_no=BLOC(
+                condition=exists("GROUP_NO_INTERF"),
+                DIRECTION=SIMP(statut="o", typ="R", min=3, max=3),
+                VITE_ONDE=SIMP(statut="o", typ="R", val_min=0.0),
+                COOR_REFE=SIMP(statut="o", typ="R", min=3, max=3),
+            ),
+            FONC_DX=SIMP(statut="f", typ=("nappe_sdaster", "formule")),
+            b_fonc_dx=BLOC(
+                condition=exists("FONC_DX"),
+                **{
+                    f"FONC_{c}": SIMP(statut="f", typ=("nappe_sdaster", "formule"))
+                    for c in ("DY", "DZ", "DRX", "DRY", "DRZ")
+                },
+            ),
         ),
     ),
     b_char_evol_char=BLOC(

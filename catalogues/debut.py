@@ -3,7 +3,6 @@
 from asterlite.catalogues.common import NO_EFFECT_DATABASE, NO_EFFECT_LOG, OUI_NON
 
 from asterlite.catalog import EXCLUS, FACT, MACRO, SIMP
-from asterlite.legacy import forms
 
 
 def starting_keywords(poursuite: bool = False) -> dict:
@@ -111,7 +110,6 @@ def starting_keywords(poursuite: bool = False) -> dict:
 
 DEBUT = MACRO(
     nom="DEBUT",
-    compat_syntax=forms.START,  # CODE=_F(NOM=...) of older versions
     fr="Start a study: resources and error behaviour",
     MODE=SIMP(statut="f", typ="TXM", defaut="AUTO", into=("AUTO", "DEBUT", "POURSUITE")),
     **starting_keywords(),

@@ -26,7 +26,6 @@ from asterlite.catalog import (
     is_in,
 )
 from asterlite.lang.values import CO
-from asterlite.legacy import forms
 
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
 TRAN = equal_to("TYPE_CALCUL", "TRAN")
@@ -99,7 +98,6 @@ def _rayleigh_vnor(**extra) -> BLOC:
 
 DYNA_LINE = MACRO(
     nom="DYNA_LINE",
-    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod=_sdprod,
     reentrant="n",
     fr="Linear transient or harmonic dynamic response",

@@ -4,20 +4,18 @@ Legacy command, replaced by ``DYNA_VIBRA(TYPE_CALCUL='TRAN', BASE_CALCUL='GENE')
 This catalogue accepts both of its historical forms as written: code_aster 10
 (``METHODE``, ``MASS_GENE``, ``RIGI_GENE``, ``AMOR_GENE``, ``AMOR_REDUIT``)
 and code_aster 11-12 (``SCHEMA_TEMPS``, ``MATR_MASS``, ``MATR_RIGI``,
-``AMOR_MODAL``); ``compat_syntax`` translates the call (see
+``AMOR_MODAL``); its legacy form translates the call (see
 ``asterlite.legacy.dyna``), which the modern DYNA_VIBRA then runs.
 """
 
 from asterlite.catalogues.common_legacy import LEGACY_SCHEMES, gene_transient_legacy
 
 from asterlite.catalog import EXCLUS, OPER, PRESENT_ABSENT, SIMP, UN_PARMI
-from asterlite.legacy import forms
 
 DYNA_TRAN_MODAL = OPER(
     nom="DYNA_TRAN_MODAL",
     sd_prod="tran_gene",
     reentrant="f",
-    compat_syntax=forms.DYNA_TRAN_MODAL,
     fr="Transient response on a modal basis (legacy: DYNA_VIBRA TRAN/GENE)",
     regles=(
         UN_PARMI("MATR_MASS", "MASS_GENE"),

@@ -33,7 +33,6 @@ from asterlite.catalog import (
     exists,
 )
 from asterlite.dynamics.schemes import SCHEMES
-from asterlite.legacy import forms
 
 
 def dyna_vibra_type(kw) -> str:
@@ -182,7 +181,6 @@ DYNA_VIBRA = OPER(
     nom="DYNA_VIBRA",
     sd_prod=dyna_vibra_type,
     reentrant="f",
-    compat_syntax=forms.DYNA_VIBRA,  # CHOC=_F(...) and other pre-COMPORTEMENT keywords
     fr="Transient or harmonic dynamic response on a physical or modal (generalized) basis",
     BASE_CALCUL=SIMP(statut="o", typ="TXM", into=("PHYS", "GENE")),
     TYPE_CALCUL=SIMP(statut="o", typ="TXM", into=("HARM", "TRAN")),

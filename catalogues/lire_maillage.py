@@ -3,13 +3,11 @@
 from asterlite.catalogues.common import OUI_NON
 
 from asterlite.catalog import BLOC, FACT, OPER, SIMP, equal_to
-from asterlite.legacy import forms
 
 LIRE_MAILLAGE = OPER(
     nom="LIRE_MAILLAGE",
     sd_prod="maillage_sdaster",
     reentrant="n",
-    compat_syntax=forms.LIRE_MAILLAGE,  # no FORMAT on a text mesh: legacy default 'ASTER'
     fr="Read a mesh from a file",
     FORMAT=SIMP(
         statut="f", typ="TXM", defaut="MED", into=("ASTER", "GIBI", "GMSH", "IDEAS", "MED")

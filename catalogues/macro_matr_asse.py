@@ -1,7 +1,7 @@
 """MACRO_MATR_ASSE (code_aster 10 to 11): numbering and assembled matrices in
 one command.
 
-Legacy command, replaced by ``ASSEMBLAGE``, which runs it (its ``compat_syntax``,
+Legacy command, replaced by ``ASSEMBLAGE``, which runs it (its legacy form,
 asterlite.legacy.macros_v11). As in code_aster 11, the
 stiffness occurrence comes first and, when NUME_DDL is a CO("NAME"), the
 numbering is built from it and the loads; each MATR_ASSE occurrence is a
@@ -13,7 +13,6 @@ from asterlite.catalogues.common import NO_EFFECT_SOLVER
 
 from asterlite.catalog import BLOC, FACT, MACRO, SIMP, equal_to
 from asterlite.lang.values import CO
-from asterlite.legacy import forms
 
 MATRIX_OPTIONS = (
     "RIGI_MECA", "MASS_MECA", "MASS_MECA_DIAG", "AMOR_MECA", "RIGI_MECA_HYST", "IMPE_MECA",
@@ -54,7 +53,6 @@ def _renum(into, default) -> SIMP:
 
 MACRO_MATR_ASSE = MACRO(
     nom="MACRO_MATR_ASSE",
-    compat_syntax=forms.MACRO_MATR_ASSE,  # today's ASSEMBLAGE (asterlite.legacy.macros_v11)
     sd_prod=_sdprod,
     fr="Compute assembled matrices (legacy: ASSEMBLAGE)",
     MODELE=SIMP(statut="o", typ="modele_sdaster"),

@@ -1,7 +1,7 @@
 """MACRO_PROJ_BASE (code_aster 10 to 11): project assembled matrices and vectors
 on a modal basis at once.
 
-Legacy command, replaced by ``PROJ_BASE``, which runs it (its ``compat_syntax``,
+Legacy command, replaced by ``PROJ_BASE``, which runs it (its legacy form,
 asterlite.legacy.macros_v11). As in code_aster 11, one
 generalized numbering is built on ``BASE`` (its first ``NB_VECT`` vectors,
 storage ``PROFIL``, which defaulted to 'DIAG': projected matrices keep only
@@ -12,7 +12,6 @@ each VECT_ASSE_GENE occurrence a PROJ_VECT_BASE (TYPE_VECT defaulted to
 
 from asterlite.catalog import FACT, MACRO, SIMP, UN_PARMI
 from asterlite.lang.values import CO
-from asterlite.legacy import forms
 
 
 def _type_output(value, type_name: str) -> None:
@@ -32,7 +31,6 @@ def _sdprod(kw) -> None:
 
 MACRO_PROJ_BASE = MACRO(
     nom="MACRO_PROJ_BASE",
-    compat_syntax=forms.MACRO_PROJ_BASE,  # today's PROJ_BASE (asterlite.legacy.macros_v11)
     sd_prod=_sdprod,
     fr="Project assembled matrices and vectors on a modal basis (legacy: PROJ_BASE)",
     BASE=SIMP(statut="o", typ=("mode_meca", "mode_stat", "base_modale", "mode_gene")),

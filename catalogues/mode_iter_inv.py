@@ -1,7 +1,7 @@
 """MODE_ITER_INV (code_aster up to 12): eigenmodes by inverse iterations.
 
 Legacy command, replaced by CALC_MODES (OPTION 'SEPARE', 'AJUSTE' or
-'PROCHE'; the legacy default was 'AJUSTE'). ``compat_syntax`` translates
+'PROCHE'; the legacy default was 'AJUSTE'). Its legacy form translates
 the call (see ``asterlite.legacy.modes``).
 """
 
@@ -9,7 +9,6 @@ from asterlite.catalogues.common import C_SOLVEUR
 from asterlite.catalogues.mode_iter_simult import MATRIX_RULES, matrices, veri_mode
 
 from asterlite.catalog import BLOC, FACT, OPER, SIMP, equal_to
-from asterlite.legacy import forms
 
 MATRIX_TYPES = ("matr_asse_depl_r", "matr_asse_gene_r", "matr_asse_pres_r")
 INVERSE = ("SEPARE", "AJUSTE", "PROCHE")
@@ -37,7 +36,6 @@ MODE_ITER_INV = OPER(
     nom="MODE_ITER_INV",
     sd_prod=lambda kw: None,
     reentrant="n",
-    compat_syntax=forms.MODE_ITER_INV,
     fr="Eigenmodes by inverse iterations (legacy: CALC_MODES)",
     regles=MATRIX_RULES,
     **matrices(MATRIX_TYPES),

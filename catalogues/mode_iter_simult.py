@@ -3,13 +3,12 @@
 Legacy command, replaced by CALC_MODES (OPTION 'PLUS_PETITE', 'BANDE',
 'CENTRE', 'TOUT'). Both historical spellings are accepted as written
 (``MATR_A``/``MATR_B``/``MATR_C`` and ``MATR_RIGI``/``MATR_MASS``/``MATR_AMOR``);
-``compat_syntax`` translates the call (see ``asterlite.legacy.modes``).
+its legacy form translates the call (see ``asterlite.legacy.modes``).
 """
 
 from asterlite.catalogues.common import C_SOLVEUR, OUI_NON
 
 from asterlite.catalog import BLOC, EXCLUS, FACT, OPER, SIMP, UN_PARMI, equal_to
-from asterlite.legacy import forms
 
 MATRIX_TYPES = (
     "matr_asse_depl_r", "matr_asse_depl_c", "matr_asse_gene_r", "matr_asse_gene_c",
@@ -65,7 +64,6 @@ MODE_ITER_SIMULT = OPER(
     nom="MODE_ITER_SIMULT",
     sd_prod=lambda kw: None,
     reentrant="n",
-    compat_syntax=forms.MODE_ITER_SIMULT,
     fr="Eigenmodes by simultaneous iterations (legacy: CALC_MODES)",
     regles=MATRIX_RULES,
     **matrices(MATRIX_TYPES),

@@ -189,6 +189,8 @@ PROJ_CHAMP = OPER(
         PROL_VALE=SIMP(statut="f", typ="R"),
         b_resultat=_result_selection(),
     ),
+    # deprecated by code_aster 17, whose compat_syntax turns 'OUI' into PROL_VALE=0.0
+    PROL_ZERO=SIMP(statut="f", typ="TXM", into=("OUI", "NON")),
     TITRE=SIMP(statut="f", typ="TXM"),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )

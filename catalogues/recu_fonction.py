@@ -31,7 +31,6 @@ from asterlite.catalog import (
     equal_to,
     exists,
 )
-from asterlite.legacy import forms
 
 SHOCK_PARAMETERS = (
     "INST", "FN", "FT1", "FT2", "VN", "VT1", "VT2", "DXLOC", "DYLOC", "DZLOC",
@@ -75,7 +74,6 @@ _LOCATION_RULES = (
 
 RECU_FONCTION = OPER(
     nom="RECU_FONCTION",
-    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     sd_prod=recu_fonction_type,
     reentrant="n",
     fr="Extract the evolution of a quantity as a function",

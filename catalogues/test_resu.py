@@ -18,11 +18,9 @@ from asterlite.catalog import (
     SIMP,
     UN_PARMI,
 )
-from asterlite.legacy import forms
 
 TEST_RESU = PROC(
     nom="TEST_RESU",
-    compat_syntax=forms.V15_ENTITIES,  # code_aster 15 forms (asterlite.legacy.v15)
     fr="Extract a value from a data structure and compare it with a reference",
     regles=(
         AU_MOINS_UN(

@@ -9,6 +9,10 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
+from asterlite.fem.elements import ElementError
+from asterlite.fem.frames import rotation_from_angles
+from asterlite.fem.node_normals import node_normals
+from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.selection import (
     as_tuple,
     cell_group_members,
@@ -17,6 +21,9 @@ from asterlite.fem.selection import (
     select_cells,
     select_nodes,
 )
+from asterlite.fem.skin import inward_faces, is_plane
+from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
+from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
 _DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
 _FORCE_COMPONENTS = {"FX": "DX", "FY": "DY", "FZ": "DZ", "MX": "DRX", "MY": "DRY", "MZ": "DRZ"}
@@ -167,9 +174,6 @@ def _face_impo(ctx, model, components, load, occ) -> None:
     """Components imposed on every node of the faces (edges in 2D), and DNOR
     (DTAN in 2D): u . n = value with n the mean unit normal at the node, as
     code_aster's cafaci/canort build them."""
-    from asterlite.fem.elements import ElementError
-    from asterlite.fem.node_normals import node_normals
-    from asterlite.fem.skin import is_plane
 
     mesh = model.mesh
     cells = [int(c) for c in cell_group_members(ctx, occ, mesh, "GROUP_MA")]
@@ -228,7 +232,6 @@ def _paired_nodes(ctx, occ, mesh) -> list[tuple[int, int]]:
     """code_aster's pairing (pacoap): each node of list 1, moved by ANGL_NAUT
     about CENTRE then TRAN, takes the nearest node of list 2; the lists have
     the same length and no node of list 2 may be taken twice."""
-    from asterlite.fem.frames import rotation_from_angles
 
     first, second = _group_side(ctx, occ, mesh, "1"), _group_side(ctx, occ, mesh, "2")
     if len(first) != len(second):
@@ -316,8 +319,6 @@ def _liaison_chamno(ctx, model, components, load, occ) -> None:
 def _liaison_elem(ctx, model, components, load, occ) -> None:
     """OPTION='3D_POU': the beam node follows the mean motion of the solid's
     face (asterlite.fem.solid_beam_link); the other options are refused."""
-    from asterlite.fem.elements import ElementError
-    from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
 
     option = occ["OPTION"]
     if option != "3D_POU":
@@ -381,7 +382,7 @@ def _warn_link_geometry(ctx, mesh, faces, section, beam_node, angle_max) -> None
 
 _BEAM_LOAD_GLOBAL = ("FX", "FY", "FZ", "MX", "MY", "MZ")
 _BEAM_LOAD_LOCAL = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
-_BEAM_LOADED = ("POU_D_E", "POU_D_T", "BARRE")
+_BEAM_LOADED = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE")
 
 
 def beam_load_cells(ctx, model, occ) -> np.ndarray:
@@ -456,6 +457,10 @@ def _cells_carrying(ctx, model, occ, accepted: dict, what: str) -> np.ndarray:
         if modelisation in accepted and mesh.cell_types[cell] in accepted[modelisation]:
             kept.append(int(cell))
         elif not everywhere:
+            if modelisation is not None and modelisation not in accepted:
+                # the element may carry the load in code_aster (shells, 2D...):
+                # asterlite has not implemented it there, which says nothing of the deck
+                ctx.unsupported(f"{what} on {modelisation} cells", "GROUP_MA", occ)
             state = (
                 "not in the model" if modelisation is None else f"a {mesh.cell_types[cell]} cell"
             )
@@ -468,8 +473,6 @@ def _cells_carrying(ctx, model, occ, accepted: dict, what: str) -> np.ndarray:
 def _check_outward(ctx, model, faces, occ) -> None:
     """VERI_NORM='OUI': pressure faces on the skin of the model's volumes must
     point outwards (code_aster stops otherwise)."""
-    from asterlite.fem.skin import inward_faces
-    from asterlite.fem.solid_reference import VOLUME_CELLS
 
     mesh = model.mesh
     volumes = [c for c in model.cell_modelisation if mesh.cell_types[c] in VOLUME_CELLS]
@@ -488,8 +491,6 @@ def _solid_loads(ctx, model, load, kw) -> None:
     """FORCE_FACE, PRES_REP (faces of 3D models, edges of plane ones),
     FORCE_CONTOUR (edges of plane models) and FORCE_INTERNE (volumes, plane
     surfaces)."""
-    from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
-    from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
     edges = dict.fromkeys(PLANE_MODELISATIONS, EDGE_CELLS)
     surfaces = {name: tuple(surface_cells(name)) for name in PLANE_MODELISATIONS}
@@ -538,6 +539,25 @@ def _solid_loads(ctx, model, load, kw) -> None:
             )
 
 
+#: the factor keywords read one occurrence at a time, in the order their terms
+#: are added to the load
+_OCCURRENCE_READERS = (
+    ("DDL_IMPO", _ddl_impo),
+    ("LIAISON_DDL", _liaison_ddl),
+    ("FORCE_NODALE", _force_nodale),
+    ("LIAISON_UNIF", _liaison_unif),
+    ("LIAISON_SOLIDE", _liaison_solide),
+    (
+        "FORCE_POUTRE",
+        lambda ctx, model, _components, load, occ: _force_poutre(ctx, model, load, occ),
+    ),
+    ("LIAISON_ELEM", _liaison_elem),
+    ("FACE_IMPO", _face_impo),
+    ("LIAISON_GROUP", _liaison_group),
+    ("LIAISON_CHAMNO", _liaison_chamno),
+)
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
@@ -546,26 +566,9 @@ def run(ctx, kw):
         # VERI_NORM checks the faces of loads along their normal (PRES_REP here):
         # without them code_aster has nothing to check
         kw.mark_used("VERI_NORM")
-    for occ in kw.factor("DDL_IMPO"):
-        _ddl_impo(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_DDL"):
-        _liaison_ddl(ctx, model, components, load, occ)
-    for occ in kw.factor("FORCE_NODALE"):
-        _force_nodale(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_UNIF"):
-        _liaison_unif(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_SOLIDE"):
-        _liaison_solide(ctx, model, components, load, occ)
-    for occ in kw.factor("FORCE_POUTRE"):
-        _force_poutre(ctx, model, load, occ)
-    for occ in kw.factor("LIAISON_ELEM"):
-        _liaison_elem(ctx, model, components, load, occ)
-    for occ in kw.factor("FACE_IMPO"):
-        _face_impo(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_GROUP"):
-        _liaison_group(ctx, model, components, load, occ)
-    for occ in kw.factor("LIAISON_CHAMNO"):
-        _liaison_chamno(ctx, model, components, load, occ)
+    for keyword, reader in _OCCURRENCE_READERS:
+        for occ in kw.factor(keyword):
+            reader(ctx, model, components, load, occ)
     _solid_loads(ctx, model, load, kw)
     if kw.get("PESANTEUR"):
         occ = kw.factor("PESANTEUR")[0]
@@ -574,5 +577,23 @@ def run(ctx, kw):
             "DIRECTION": tuple(float(x) for x in as_tuple(occ["DIRECTION"])),
             "CELLS": select_cells(ctx, occ, model.mesh) if occ.get("GROUP_MA") else None,
         }
+    if kw.get("EVOL_CHAR") is not None:
+        _evol_char(ctx, model, load, kw)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load
+
+
+def _evol_char(ctx, model, load, kw) -> None:
+    """EVOL_CHAR: a history of nodal forces (FORC_NODA), applied by the
+    commands that take load histories (asterlite.fem.loads.load_history)."""
+    history = kw["EVOL_CHAR"]
+    if history.numbering.mesh is not model.mesh:
+        ctx.error("EVOL_CHAR is on another mesh than MODELE", "EVOL_CHAR", kw)
+    other = [name for name in history.fields if name != "FORC_NODA"]
+    if other or "FORC_NODA" not in history.fields:
+        ctx.unsupported(
+            f"EVOL_CHAR with the fields {', '.join(history.fields)} (FORC_NODA only)",
+            "EVOL_CHAR",
+            kw,
+        )
+    load.extra["EVOL_CHAR"] = history

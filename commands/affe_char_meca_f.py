@@ -17,8 +17,10 @@ from __future__ import annotations
 import numpy as np
 from asterlite.commands import affe_char_meca
 
-from asterlite.concepts.assembly import MechanicalLoad
+from asterlite.concepts.assembly import MechanicalLoad, ValueInTime
 from asterlite.errors import CommandError
+from asterlite.fem.plane_wave import PlaneWave
+from asterlite.fem.selection import select_cells
 
 # the parameters code_aster gives these functions, and their value at a node
 _GEOMETRY = ("X", "Y", "Z")
@@ -32,14 +34,35 @@ def _parameters(function) -> tuple[str, ...]:
     return tuple(names)
 
 
-def _evaluator(ctx, model, occ):
-    """value_at(function, node, key): the function at the node's coordinates."""
+def _evaluator(ctx, model, occ, in_time=None):
+    """value_at(function, node, key): the function at the node's coordinates.
+    ``in_time`` (a dict): a function of INST is accepted, its value at
+    INST=0 returned and its ``ValueInTime`` kept in ``in_time[(node, key)]``;
+    without it, such a function is refused."""
+
     coords = model.mesh.coords
 
     def value_at(function, node: int, key: str) -> float:
         if isinstance(function, (int, float)):
             return float(function)
         names = _parameters(function)
+        if "INST" in names and in_time is not None:
+            unknown = [p for p in names if p not in _GEOMETRY and p not in ("INST", _CONSTANT)]
+            if unknown:
+                ctx.error(
+                    f"{key}: the function {function.name or ''} depends on "
+                    f"{', '.join(unknown)}; a load function takes X, Y, Z and INST",
+                    key,
+                    occ,
+                )
+            point = tuple(float(x) for x in np.pad(coords[node], (0, 3 - len(coords[node]))))
+            value = ValueInTime(function, point)
+            try:
+                initial = float(value.evaluate([0.0])[0])
+            except CommandError as exc:
+                ctx.error(str(exc), key, occ)
+            in_time[(node, key)] = value
+            return initial
         if "INST" in names:
             ctx.unsupported(
                 f"AFFE_CHAR_MECA_F {key}={function.name or 'function'} depends on INST (a load "
@@ -88,8 +111,6 @@ def _force_poutre(ctx, model, load, occ) -> None:
 def _onde_plane(ctx, model, load, occ) -> None:
     """The wave and the absorbing cells it loads (3D_ABSO faces, D_PLAN_ABSO
     edges); the forces at each instant come from plane_wave_history."""
-    from asterlite.fem.plane_wave import PlaneWave
-    from asterlite.fem.selection import select_cells
 
     def point(key):
         given = occ.get(key)
@@ -119,7 +140,9 @@ def _onde_plane(ctx, model, load, occ) -> None:
         reflection=point("COOR_REFLECHI"),
         displacement=occ.get("DEPL_IMPO"),
     )
-    load.extra["ONDE_PLANE"] = {"CELLS": np.asarray(cells, dtype=int), "WAVE": wave}
+    load.extra.setdefault("ONDE_PLANE", []).append(
+        {"CELLS": np.asarray(cells, dtype=int), "WAVE": wave}
+    )
 
 
 def run(ctx, kw):
@@ -127,8 +150,14 @@ def run(ctx, kw):
     components = model.node_components()
     load = MechanicalLoad(model=model)
     for occ in kw.factor("DDL_IMPO"):
-        value_at = _evaluator(ctx, model, occ)
+        in_time = {}
+        first = len(load.relations)
+        value_at = _evaluator(ctx, model, occ, in_time)
         affe_char_meca._ddl_impo(ctx, model, components, load, occ, value_at=value_at)
+        for relation in load.relations[first:]:
+            if len(relation.terms) == 1:
+                node, component, _ = relation.terms[0]
+                relation.rhs_in_time = in_time.get((node, component))
     for occ in kw.factor("FORCE_NODALE"):
         value_at = _evaluator(ctx, model, occ)
         affe_char_meca._force_nodale(ctx, model, components, load, occ, value_at=value_at)

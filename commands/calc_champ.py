@@ -2,7 +2,9 @@
 SIEF_ELNO, SIPO_ELNO, EFGE_ELGA, SIEF_ELGA and the _NOEU smoothing), the
 stresses, strains and energies of 3D and plane solids (SIEF_ELGA, SIGM_ELNO,
 EPSI_ELGA/ELNO, ENEL_ELGA/ELNO, EPOT_ELEM, ECIN_ELEM, _NOEU;
-:mod:`asterlite.fem.solid_fields`) and user fields (CHAM_UTIL).
+:mod:`asterlite.fem.solid_fields`), user fields (CHAM_UTIL) and the nodal
+forces FORC_NODA / REAC_NODA of a dyna_trans or a dyna_harmo
+(:mod:`asterlite.post.nodal_forces`, stored in ``result.fields``).
 
 The fields are computed at every order of the result from its DEPL field
 (mode shapes for a mode_meca), plus the element inertia forces M_e a_e from
@@ -19,18 +21,32 @@ from __future__ import annotations
 import copy
 
 import numpy as np
+from asterlite.commands.dyna_vibra_harm import harmonic_load
 
 from asterlite.concepts.assembly import ElementField
+from asterlite.fem.assemble import assemble_terms
+from asterlite.fem.beam_elements import section_forces
 from asterlite.fem.element_fields import (
+    BAR_OPTIONS,
     ELGA_OPTIONS,
     ELNO_OPTIONS,
     NOEU_OPTIONS,
+    bar_element_fields,
     beam_element_fields,
+    discrete_element_fields,
     nodal_average,
 )
 from asterlite.fem.elements import ElementError
+from asterlite.fem.loads import beam_element_loads, load_terms
 from asterlite.fem.selection import as_tuple, select_cells
-from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of
+from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
+from asterlite.harmonic.loads import load_matrix
+from asterlite.post.nodal_forces import (
+    FORCE_OPTIONS,
+    NodalForceError,
+    load_forces,
+    nodal_forces,
+)
 from asterlite.post.restitution import selection_from_keywords
 
 _BEAMS = ("POU_D_E", "POU_D_T")
@@ -72,7 +88,6 @@ def _keep_selected_orders(ctx, kw, result, fields) -> None:
 def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> None:
     """EFGE_ELNO / SIEF_ELNO of a model of discrete elements (code_aster's
     ef0042: the stiffness forces in the element frame, real or complex)."""
-    from asterlite.fem.element_fields import BAR_OPTIONS, discrete_element_fields
 
     other = [n for n in names if n not in BAR_OPTIONS]
     if other:
@@ -96,7 +111,6 @@ def _discrete_fields(ctx, kw, result, model, characteristics, cells, names) -> N
 def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names) -> None:
     """EFGE_ELNO / SIEF_ELNO (N) of a model of bars (code_aster's te0185:
     from the displacements, real or complex)."""
-    from asterlite.fem.element_fields import BAR_OPTIONS, bar_element_fields
 
     other = [n for n in names if n not in BAR_OPTIONS]
     if other:
@@ -119,7 +133,6 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
 def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
     """Stresses, strains and energies of 3D and plane solid cells
     (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
-    from asterlite.fem.solid_fields import SOLID_FIELDS, solid_element_fields
 
     other = [n for n in names if n not in SOLID_FIELDS]
     if other:
@@ -195,8 +208,6 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
     """(n_orders, n_beams, 2, 6) the distributed loads of EXCIT on the beams,
     times FONC_MULT at each instant of the result (or COEF_MULT), in the
     convention of the internal forces; None without EXCIT."""
-    from asterlite.fem.beam_elements import section_forces
-    from asterlite.fem.loads import beam_element_loads
 
     occurrences = kw.factor("EXCIT")
     if not occurrences:
@@ -358,9 +369,10 @@ def run(ctx, kw):
     requested = []
     for keyword in ("CONTRAINTE", "DEFORMATION", "ENERGIE", "CRITERES", "VARI_INTERNE"):
         requested.extend((keyword, name) for name in as_tuple(kw.get(keyword)))
-    for keyword in ("PROPRIETES", "FORCE"):
-        if kw.get(keyword):
-            ctx.unsupported(f"CALC_CHAMP {keyword}={as_tuple(kw[keyword])}", keyword, kw)
+    if kw.get("PROPRIETES"):
+        ctx.unsupported(f"CALC_CHAMP PROPRIETES={as_tuple(kw['PROPRIETES'])}", "PROPRIETES", kw)
+    if kw.get("FORCE"):
+        _force_fields(ctx, kw, result)
     names = [name for _, name in requested]
     known = ELNO_OPTIONS + ELGA_OPTIONS + NOEU_OPTIONS + SOLID_FIELDS
     other = [n for n in names if n not in known]
@@ -414,6 +426,10 @@ def run(ctx, kw):
             )
         except (ElementError, ValueError, KeyError) as exc:
             ctx.error(str(exc), "CONTRAINTE", kw)
+        if discrete.size:
+            fields = _with_discrete_cells(
+                ctx, kw, model, characteristics, result, discrete, values, fields
+            )
         _keep_selected_orders(ctx, kw, result, fields)
         for name, field in fields.items():
             result.element_fields[name] = field
@@ -422,9 +438,148 @@ def run(ctx, kw):
                 elno_field = result.element_fields[name.replace("_NOEU", "_ELNO")]
                 result.node_fields[name] = nodal_average(elno_field, model.mesh, name)
         ctx.log(
-            f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells, {values.shape[0]} orders"
+            f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells"
+            + (f" and {discrete.size} discrete cells" if discrete.size else "")
+            + f", {values.shape[0]} orders"
         )
     return _cham_utils(ctx, kw, result)
+
+
+def _force_fields(ctx, kw, result) -> None:
+    """FORCE=FORC_NODA / REAC_NODA of a dyna_trans or a dyna_harmo, stored
+    as nodal fields of the result (NaN at the orders not selected, as
+    code_aster stores none there)."""
+    options = as_tuple(kw["FORCE"])
+    other = [name for name in options if name not in FORCE_OPTIONS]
+    if other:
+        ctx.unsupported(f"CALC_CHAMP FORCE={other[0]!r}", "FORCE", kw)
+    kinds = getattr(result, "aster_types", ())
+    if "dyna_trans" not in kinds and "dyna_harmo" not in kinds:
+        ctx.unsupported(
+            f"CALC_CHAMP FORCE on a {getattr(result, 'aster_type', type(result).__name__)} "
+            "(asterlite computes it on a dyna_trans or a dyna_harmo)",
+            "FORCE",
+            kw,
+        )
+    model, characteristics, materials = _context(ctx, kw, result)
+    cells = None
+    if kw.get("GROUP_MA"):
+        if "REAC_NODA" in options:
+            ctx.unsupported(
+                "CALC_CHAMP REAC_NODA on a part of the model (GROUP_MA)", "GROUP_MA", kw
+            )
+        # FORC_NODA of those cells' elements only, as code_aster's restricted ligrel
+        cells = select_cells(ctx, kw, model.mesh)
+    kw.mark_used("TOUT")
+    load_values = None
+    if "REAC_NODA" in options:
+        if "dyna_harmo" in kinds:
+            load_values = _harmonic_load_values(ctx, kw, result, characteristics, materials)
+        else:
+            load_values = _transient_load_values(ctx, kw, result, characteristics, materials)
+    rows = _selected_orders(ctx, kw, result)
+    if rows is None:
+        kw.mark_used("TOUT_ORDRE")  # every order, the default
+    result.fields = dict(result.fields)
+    for option in options:
+        try:
+            values = nodal_forces(
+                result, option, model, characteristics, materials, load_values, ctx.log, cells
+            )
+        except (NodalForceError, ElementError, KeyError) as exc:
+            ctx.error(str(exc), "FORCE", kw)
+        except NotImplementedError as exc:
+            ctx.unsupported(str(exc), "FORCE", kw)
+        if rows is not None:
+            kept = np.full(values.shape, np.nan, dtype=values.dtype)
+            kept[rows] = values[rows]
+            previous = result.fields.get(option)
+            if previous is not None and previous.shape == values.shape:
+                # what an earlier CALC_CHAMP computed at the other orders stays
+                kept = np.where(np.isnan(kept), previous, kept)
+            values = kept
+        result.fields[option] = values
+        ctx.log(f"CALC_CHAMP {option}: {values.shape[0]} orders, {values.shape[1]} DOFs")
+
+
+def _transient_load_values(ctx, kw, result, characteristics, materials):
+    """F(t) of REAC_NODA on a dyna_trans: the CALC_CHAMP EXCIT loads, else the
+    result's own (each times its FONC_MULT or COEF_MULT)."""
+    occurrences = kw.factor("EXCIT")
+    loads = result.loads
+    if occurrences:
+        for occ in occurrences:
+            for key in ("FONC_MULT_C", "COEF_MULT_C", "PHAS_DEG", "PUIS_PULS"):
+                if occ.get(key):
+                    ctx.unsupported(f"CALC_CHAMP EXCIT {key} on a dyna_trans", key, occ)
+            if occ.get("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE":
+                ctx.unsupported("CALC_CHAMP EXCIT TYPE_CHARGE with FORCE", "TYPE_CHARGE", occ)
+        loads = tuple(
+            (occ["CHARGE"], occ.get("FONC_MULT") or float(occ.get("COEF_MULT", 1.0)))
+            for occ in occurrences
+        )
+    try:
+        return load_forces(loads, characteristics, materials, result.numbering, result.times)
+    except KeyError as exc:
+        ctx.error(f"load on DOFs the result's numbering does not have: {exc}", "EXCIT", kw)
+
+
+def _harmonic_load_values(ctx, kw, result, characteristics, materials):
+    """F(f) of REAC_NODA on a dyna_harmo: Σ c(f) F of CALC_CHAMP's EXCIT
+    (code_aster reads the harmonic loads from the command's EXCIT)."""
+
+    occurrences = kw.factor("EXCIT")
+    if not occurrences:
+        ctx.unsupported("REAC_NODA of a dyna_harmo without CALC_CHAMP EXCIT", "FORCE", kw)
+    loads = []
+    for occ in occurrences:
+        if occ.get("TYPE_CHARGE", "FIXE_CSTE") != "FIXE_CSTE":
+            ctx.unsupported("CALC_CHAMP EXCIT TYPE_CHARGE with FORCE", "TYPE_CHARGE", occ)
+        load = occ["CHARGE"]
+        try:
+            terms = load_terms(load, characteristics, materials, complex_values=True)
+            vector = assemble_terms(terms, result.numbering)
+        except KeyError as exc:
+            ctx.error(f"load on DOFs the result's numbering does not have: {exc}", "CHARGE", occ)
+        loads.append(harmonic_load(ctx, occ, vector, load.name or ""))
+    return load_matrix(loads, result.frequencies, result.numbering.n_dofs)
+
+
+def _with_discrete_cells(ctx, kw, model, characteristics, result, cells, values, fields):
+    """The beam fields extended to the discrete cells of the model, as code_aster
+    computes EFGE_ELNO / SIEF_ELNO on every cell that has the option: the
+    discrete elements' stiffness forces (ef0042), one modelisation at a time."""
+    names = [name for name in fields if name in BAR_OPTIONS]
+    if not names:
+        return fields
+    merged = dict(fields)
+    by_kind: dict[str, list[int]] = {}
+    for cell in cells:
+        by_kind.setdefault(model.cell_modelisation[int(cell)], []).append(int(cell))
+    for kind, members in sorted(by_kind.items()):
+        try:
+            extra = discrete_element_fields(
+                model, characteristics, result.numbering, members, values, names
+            )
+        except (ElementError, ValueError, KeyError) as exc:
+            ctx.error(str(exc), "CONTRAINTE", kw)
+        for name in names:
+            field, added = merged[name], extra[name]
+            if added.components != field.components:
+                ctx.unsupported(
+                    f"CALC_CHAMP {name} on beams and {kind} cells at once (components "
+                    f"{', '.join(field.components)} and {', '.join(added.components)}): "
+                    "give GROUP_MA",
+                    "CONTRAINTE",
+                    kw,
+                )
+            merged[name] = ElementField(
+                name,
+                np.concatenate([np.asarray(field.cells), np.asarray(added.cells)]),
+                field.components,
+                np.concatenate([field.values, added.values.astype(field.values.dtype)], axis=1),
+            )
+    return merged
 
 
 def _cham_utils(ctx, kw, result):

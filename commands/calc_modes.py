@@ -78,6 +78,10 @@ def run(ctx, kw):
     check_found(ctx, kw, omega2.size)
     res = residuals(pencil, omega2, vecs)
     modes = build_mode_result(stiffness, mass, omega2, pencil.expand(vecs))
+    numbers = _mode_numbers(pencil, option, freq, omega2)
+    if numbers is not None:
+        modes.parameters["NUME_MODE"] = numbers
+        ctx.log(f"NUME_MODE from the Sturm count: the first mode found is mode {numbers[0]}")
     modes.parameters["ERREUR"] = res
     veri = (kw.factor("VERI_MODE") or [{}])[0]
     tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
@@ -91,6 +95,7 @@ def run(ctx, kw):
             f"{res[worst]:.3g} above {tolerance:g}",
             "VERI_MODE",
             kw,
+            "SolverError",  # code_aster's ALGELINE2_74
         )
     norm = kw.factor("NORM_MODE")
     if norm:
@@ -102,9 +107,46 @@ def run(ctx, kw):
         )
         modes = modes.select(keep)
         modes.parameters["NUME_MODE"] = np.arange(1, modes.n_modes + 1)
-    for k, f in enumerate(modes.frequencies, start=1):
-        ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
+    for k, (number, f) in enumerate(zip(modes.mode_numbers, modes.frequencies, strict=True)):
+        ctx.log(f"mode {number:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k]:12.5e}")
     return modes
+
+
+def _mode_numbers(pencil, option: str, freq, omega2) -> np.ndarray | None:
+    """NUME_MODE as code_aster gives it, a mode's rank in the whole spectrum
+    (the Sturm count of its shift plus its place from the shift): a band
+    above rigid-body or lower modes starts past 1. None where that is 1, 2...
+    (the selections from the lowest mode) or the count cannot be read.
+
+    The count is taken just below the highest mode found, where the shifted
+    matrix is regular, not at the band's lower bound: a band from 0 Hz of a
+    free structure puts that bound among its rigid-body modes, whose computed
+    ω² (±1e-8) fall either side of 0 as round-off has it."""
+    if option in ("PLUS_PETITE", "TOUT", "PLUS_GRANDE") or not omega2.size:
+        return None
+    contiguous = option in ("BANDE", "CENTRE") or (
+        option in ("AJUSTE", "SEPARE") and len(freq) >= 2
+    )
+    if not contiguous:  # PROCHE's modes need not follow one another: each its own count
+        counts = [pencil.count_below(_just_below(w)) for w in omega2]
+        if any(c is None for c in counts) or not any(counts):
+            return None
+        return np.asarray(counts) + 1
+    top = float(omega2.max())
+    if top <= 0.0:
+        return None
+    count = pencil.count_below(_just_below(top))
+    if count is None:
+        return None
+    # the first mode of the top's cluster of equal eigenvalues has rank count + 1
+    anchor = int(np.flatnonzero(omega2 >= _just_below(top))[0])
+    numbers = count + 1 + np.arange(omega2.size) - anchor
+    return None if numbers[0] < 1 or numbers[0] == 1 else numbers
+
+
+def _just_below(omega2: float) -> float:
+    """A shift below ω² and its equal eigenvalues, above any distinct one."""
+    return omega2 - 1e-6 * max(abs(omega2), 1e-300)
 
 
 def _method(kw) -> str | None:
@@ -136,8 +178,8 @@ def check_found(ctx, kw, count: int, what="eigenmode", keyword="CALC_FREQ") -> N
     stop = kw.get("STOP_BANDE_VIDE", "OUI") == "OUI"
     if count:
         return
-    if stop:
-        ctx.error(f"no {what} found for this selection", keyword, kw)
+    if stop:  # code_aster's MODAL_1, a SolverError
+        ctx.error(f"no {what} found for this selection", keyword, kw, "SolverError")
     ctx.unsupported("an empty selection with STOP_BANDE_VIDE='NON'", "STOP_BANDE_VIDE", kw)
 
 
@@ -202,8 +244,8 @@ def _generalized(ctx, kw, stiffness, mass):
         ctx.error(str(exc), "OPTION", kw)
     check_found(ctx, kw, omega2.size)
     modes = build_generalized_result(stiffness, mass, omega2, vecs)
-    for k, f in enumerate(modes.frequencies, start=1):
-        ctx.log(f"mode {k:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k - 1]:12.5e}")
+    for k, (number, f) in enumerate(zip(modes.mode_numbers, modes.frequencies, strict=True)):
+        ctx.log(f"mode {number:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k]:12.5e}")
     return modes
 
 
@@ -245,6 +287,7 @@ def _complex(ctx, kw, stiffness, mass, damping):
             f"{res[worst]:.3g} above {tolerance:g}",
             "VERI_MODE",
             kw,
+            "SolverError",  # code_aster's ALGELINE2_74
         )
     norm = kw.factor("NORM_MODE")
     if norm:

@@ -5,10 +5,8 @@ from __future__ import annotations
 
 from asterlite.concepts.assembly import ElementaryVectors
 from asterlite.fem.elements import ElementError
-from asterlite.fem.loads import gravity_terms, load_terms
+from asterlite.fem.loads import load_terms
 from asterlite.fem.selection import as_tuple
-
-__all__ = ["gravity_terms", "run"]
 
 
 def run(ctx, kw):
@@ -21,13 +19,12 @@ def run(ctx, kw):
     materials = kw.get("CHAM_MATER")
     terms = []
     for load in loads:
-        needs_cara = any(m != "3D" for m in load.model.cell_modelisation.values())
-        if load.extra.get("PESANTEUR") is not None and characteristics is None and needs_cara:
-            ctx.error("PESANTEUR needs CARA_ELEM to know the masses", "CARA_ELEM", kw)
         try:
             terms.extend(load_terms(load, characteristics, materials))
         except NotImplementedError as exc:
             ctx.unsupported(str(exc), "CHARGE", kw)
         except (ElementError, ValueError) as exc:
-            ctx.error(str(exc), "CHARGE", kw)
+            # beams and discrete elements take their masses and sections from CARA_ELEM
+            missing = characteristics is None and "AFFE_CARA_ELEM" in str(exc)
+            ctx.error(str(exc), "CARA_ELEM" if missing else "CHARGE", kw)
     return ElementaryVectors(model=model, option=option, loads=loads, terms=terms)

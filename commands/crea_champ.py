@@ -9,7 +9,20 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering, NodalField
+from asterlite.concepts.modes import FieldOnElements
+from asterlite.fem.dofs import sort_components
 from asterlite.fem.selection import as_tuple, select_nodes
+from asterlite.modal.fields import (
+    FieldError,
+    element_extreme,
+    element_field_stack,
+    extreme_over,
+    field_stack,
+    interpolate,
+    match_real,
+    norm_tran_extreme,
+)
+from asterlite.modal.renumber import transfer
 
 
 def _template_numbering(ctx, kw):
@@ -19,14 +32,10 @@ def _template_numbering(ctx, kw):
             return value if key == "NUME_DDL" else value.numbering
     model = kw.get("MODELE")
     if model is not None:
-        from asterlite.concepts.assembly import DofNumbering
         from asterlite.fem.assemble import build_numbering_dofs
 
         return DofNumbering(mesh=model.mesh, dofs=build_numbering_dofs(model.node_components()))
     # MAILLAGE only: a field on exactly the (node, component) pairs affected
-    from asterlite.concepts.assembly import DofNumbering
-    from asterlite.fem.dofs import sort_components
-
     mesh = kw["MAILLAGE"]
     pairs: dict[int, set[str]] = {}
     for occ in kw.factor("AFFE"):
@@ -106,7 +115,6 @@ def _extr(ctx, kw):
     """One stored field, chosen by order / instant / mode, or its extreme over
     the stored fields (TYPE_MAXI), nodal or by element (ELNO/ELGA fields
     CALC_CHAMP stored on the result)."""
-    from asterlite.modal.fields import FieldError, element_field_stack, field_stack
 
     if kw.get("RESULTAT") is None:
         ctx.unsupported("CREA_CHAMP EXTR from something else than RESULTAT", "OPERATION", kw)
@@ -133,7 +141,6 @@ def _extr(ctx, kw):
         )
     if not element:
         return NodalField(numbering=numbering, values=selected)
-    from asterlite.concepts.modes import FieldOnElements
 
     return FieldOnElements(
         mesh=_result_mesh(ctx, kw, result),
@@ -168,7 +175,6 @@ def _extreme_params(kw, access, rows) -> np.ndarray:
 
 def _norm_tran(ctx, kw, access, values, numbering) -> np.ndarray:
     """TYPE_MAXI='NORM_TRAN': by node, the field of largest translation norm."""
-    from asterlite.modal.fields import norm_tran_extreme
 
     if numbering is None:
         ctx.error("TYPE_MAXI='NORM_TRAN' applies to nodal fields", "TYPE_MAXI", kw)
@@ -182,7 +188,6 @@ def _norm_tran(ctx, kw, access, values, numbering) -> np.ndarray:
 def _selected_state(ctx, kw, access, values) -> np.ndarray:
     """The field (values[k]) the keywords select in a stack (first axis: the
     stored states), or the entry-wise extreme for TYPE_MAXI."""
-    from asterlite.modal.fields import element_extreme, extreme_over, interpolate, match_real
 
     if kw.get("TYPE_MAXI") is not None:
         if np.iscomplexobj(values):
@@ -242,7 +247,6 @@ def _extr_rows(ctx, kw, access, count) -> np.ndarray:
 
 def _union_numbering(mesh, fields):
     from asterlite.fem.assemble import build_numbering_dofs
-    from asterlite.fem.dofs import sort_components
 
     pairs: dict[int, set[str]] = {}
     for f in fields:
@@ -298,8 +302,6 @@ def _asse(ctx, kw):
 
 
 def _comb(ctx, kw):
-    from asterlite.modal.renumber import transfer
-
     occs = kw.factor("COMB")
     numbering = occs[0]["CHAM_GD"].numbering
     values = np.zeros(numbering.n_dofs)

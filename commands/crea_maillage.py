@@ -5,7 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.errors import CommandError, ValidationError
+from asterlite.fem.mesh_degree import DuplicateNodeName, line_quad, seg3_to_seg4
 from asterlite.fem.selection import as_scalar, select_cells, select_nodes
+from asterlite.legacy.v15 import computes
 
 
 def _cells(ctx, occ, mesh) -> np.ndarray:
@@ -15,11 +18,28 @@ def _cells(ctx, occ, mesh) -> np.ndarray:
     return select_cells(ctx, occ, mesh)
 
 
-def _change_degree(ctx, kw, mesh) -> None:
-    from asterlite.fem.mesh_degree import line_quad, seg3_to_seg4
+def _new_node_names(ctx, occ) -> tuple[str, int] | None:
+    """How LINE_QUAD names its nodes: code_aster 15 and older by a prefix
+    (PREF_NOEUD, PREF_NUME), 17 by number (and takes no prefix)."""
+    if computes(ctx.session, "LINE_QUAD_NODES_NAMED_BY_PREFIX"):
+        return occ.get("PREF_NOEUD", "NS"), occ.get("PREF_NUME", 1)
+    for key in ("PREF_NOEUD", "PREF_NUME"):
+        if key in occ:
+            path, location = occ.where(key)
+            raise ValidationError(
+                "a keyword of code_aster 15 and older: code_aster 17 numbers the new nodes",
+                location,
+                path,
+            )
+    return None
 
+
+def _change_degree(ctx, kw, mesh) -> None:
     for occ in kw.factor("LINE_QUAD"):
-        added = line_quad(mesh, _cells(ctx, occ, mesh))
+        try:
+            added = line_quad(mesh, _cells(ctx, occ, mesh), _new_node_names(ctx, occ))
+        except DuplicateNodeName as error:
+            raise CommandError(str(error), None, "CREA_MAILLAGE/LINE_QUAD") from None
         ctx.log(f"LINE_QUAD: {added} nodes added")
     for occ in kw.factor("MODI_MAILLE"):
         option = occ["OPTION"]

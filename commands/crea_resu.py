@@ -6,9 +6,10 @@ by NUME_MODE)."""
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands.crea_resu_conv import conv_resu, kucv
 
 from asterlite.concepts.assembly import NodalField
-from asterlite.concepts.modes import MultElasResult
+from asterlite.concepts.modes import ModeResult, MultElasResult
 from asterlite.concepts.transient import DynaTrans
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import transfer
@@ -114,7 +115,6 @@ def _mode_meca(ctx, kw):
     """MODE_MECA: one DEPL field per AFFE occurrence, numbered NUME_MODE, at
     FREQ (0 when not given); MATR_RIGI / MATR_MASS, kept with the modes,
     give their generalized stiffnesses and masses."""
-    from asterlite.concepts.modes import ModeResult
 
     if kw.get("RESULTAT") is not None:
         ctx.unsupported("CREA_RESU MODE_MECA enriching a result", "RESULTAT", kw)
@@ -157,6 +157,10 @@ def _mode_meca(ctx, kw):
 
 
 def run(ctx, kw):
+    if kw["OPERATION"] == "CONV_RESU":
+        return conv_resu(ctx, kw)
+    if kw["OPERATION"] == "KUCV":
+        return kucv(ctx, kw.factor("KUCV")[0], kw["TYPE_RESU"])
     if kw["OPERATION"] != "AFFE":
         ctx.unsupported(f"CREA_RESU OPERATION={kw['OPERATION']!r}", "OPERATION", kw)
     type_resu = kw["TYPE_RESU"]

@@ -1,6 +1,6 @@
 """CREA_TABLE: a table from lists (LISTE: PARA + LISTE_R / LISTE_I / LISTE_K
 / LISTE_CO), from a function (FONCTION: its abscissas and ordinates) or from
-a result's computed field (RESU: element fields and ``*_NOEU`` fields, with
+a result's field (RESU: fields on the DOFs, element fields and ``*_NOEU`` fields, with
 code_aster's columns RESULTAT NOM_CHAM [INST] NUME_ORDRE MAILLE NOEUD|POINT
 SOUS_POINT COOR_X COOR_Y COOR_Z <components>)."""
 
@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.assembly import NodalComponentField
 from asterlite.concepts.table import Table
 from asterlite.fem.selection import select_cells, select_nodes
+from asterlite.io.result_store import nodal_field_names, nodal_series
 from asterlite.post import table_ops
 from asterlite.post.restitution import as_tuple, computed_fields, selection_from_keywords
 
@@ -60,17 +62,36 @@ def run(ctx, kw):
     ctx.unsupported(f"CREA_TABLE from {which}", which, kw)
 
 
+def dof_field_by_node(result, name: str) -> NodalComponentField:
+    """A field of the result on its DOFs (DEPL, VITE, ACCE, REAC_NODA...) as
+    values per node and component, NaN where a node has no such DOF (code_aster
+    leaves that cell of the table empty)."""
+    nodes, components, values = nodal_series(result, name)
+    present = np.zeros((len(nodes), len(components)), dtype=bool)
+    row = {int(n): k for k, n in enumerate(nodes)}
+    for node, component in result.numbering.dofs:
+        if int(node) in row and component in components:
+            present[row[int(node)], components.index(component)] = True
+    values = np.where(present[None], values, np.nan)
+    return NodalComponentField(name, nodes, tuple(components), values)
+
+
 def from_result(ctx, occ):
-    """RESU: the values of an element field (``*_ELNO``, ``*_ELGA``) or a
-    smoothed nodal field (``*_NOEU``) that CALC_CHAMP stored on RESULTAT."""
+    """RESU: the values of an element field (``*_ELNO``, ``*_ELGA``), a
+    smoothed nodal field (``*_NOEU``) that CALC_CHAMP stored on RESULTAT, or
+    a field on the result's DOFs (DEPL, VITE, ACCE...)."""
     if occ.get("RESULTAT") is None:
         ctx.unsupported("CREA_TABLE RESU/CHAM_GD (RESULTAT only)", "CHAM_GD", occ)
     result, name = occ["RESULTAT"], occ["NOM_CHAM"]
     field = computed_fields(result).get(name)
+    if field is None and name in nodal_field_names(result):
+        field = dof_field_by_node(result, name)
     if field is None:
-        ctx.unsupported(
-            f"CREA_TABLE RESU on {name} (element or *_NOEU fields only)", "NOM_CHAM", occ
-        )
+        known = ", ".join([*nodal_field_names(result), *computed_fields(result)]) or "none"
+        # code_aster stores some fields on its own (MECA_STATIQUE's SIEF_ELGA)
+        ctx.unsupported(f"CREA_TABLE RESU on {name}: the result holds {known}", "NOM_CHAM", occ)
+    # TOUT_CMP='OUI' (its only value): every component, as without NOM_CMP
+    occ.mark_used("TOUT_CMP")
     components = tuple(as_tuple(occ.get("NOM_CMP"))) or tuple(field.components)
     absent = [c for c in components if c not in field.components]
     if absent:

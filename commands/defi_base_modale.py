@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.modes import ModeResult, MultElasResult
+from asterlite.concepts.substructure import ReductionBasis
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import lost_rows, transfer
 from asterlite.modal.ritz import orthonormalise
@@ -202,7 +203,6 @@ def _classical(ctx, occ_kw, occ):
 def classical_basis(ctx, occ, interfaces, bases, caps):
     """The classical basis of ``interfaces`` from the modes ``bases`` (the
     first ``caps[k]`` of each); also CREA_ELEM_SSD's."""
-    from asterlite.concepts.substructure import ReductionBasis
     from asterlite.substructure.interfaces import InterfaceError, static_modes
 
     numbering = interfaces.numbering
@@ -231,9 +231,10 @@ def classical_basis(ctx, occ, interfaces, bases, caps):
         except InterfaceError as exc:
             ctx.error(f"interface {interface.name}: {exc}", "INTERF_DYNA", occ)
         blocks.append(shapes)
-        free = interface.dofs.size - owners.size
-        if free:
-            ctx.log(f"interface {interface.name}: {free} DOF(s) not blocked, no static mode")
+        left = interface.dofs.size - owners.size
+        if left:
+            state = "blocked" if interface.kind == "MNEAL" else "not blocked"
+            ctx.log(f"interface {interface.name}: {left} DOF(s) {state}, no static mode")
         labels.extend(numbering.label(int(d)) for d in owners)
         kind = "FORC_IMPO" if interface.kind == "MNEAL" else "DEPL_IMPO"
         defo.extend([kind] * shapes.shape[1])

@@ -117,9 +117,10 @@ def structure(ctx, kw) -> Structure:
     )
     damping = damping_keywords(kw)
     if damping.get("TYPE_AMOR") == "RAYLEIGH":
-        amor = call(
-            ctx, "CALC_MATR_ELEM", OPTION="AMOR_MECA", RIGI_MECA=rigi, MASS_MECA=mass, **common
-        )
+        # as code_aster's macro: the element matrices go along with a material
+        # field only; without one the damping is the discrete elements' (CARA_ELEM)
+        elements = {"RIGI_MECA": rigi, "MASS_MECA": mass} if kw.get("CHAM_MATER") else {}
+        amor = call(ctx, "CALC_MATR_ELEM", OPTION="AMOR_MECA", **elements, **common)
         built.damping = call(ctx, "ASSE_MATRICE", MATR_ELEM=amor, NUME_DDL=numbering)
     return built
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from asterlite.commands.dyna_vibra_problem import TransientProblem, build_problem
 from asterlite.commands.dyna_vibra_result import appended, impression, shock_histories
 from asterlite.commands.dyna_vibra_shocks import refuse_with_film
+from asterlite.commands.dyna_vibra_words import TRANSIENT
 
 from asterlite.concepts.transient import TranGene
 from asterlite.dynamics.fluid_film import integrate_film
@@ -68,7 +69,8 @@ def integrated(ctx, problem: TransientProblem) -> RunResult:
             label=f"DYNA_VIBRA {ctx.result_name or ''} {scheme}".replace("  ", " "),
             energy=p.energy, implicit_shocks=p.implicit, load_labels=list(p.load_labels),
         )  # fmt: skip
-    except NumericalError as error:
+    except NumericalError as error:  # worded with the deck's keywords
+        error = error.worded(TRANSIENT)
         path = f"{ctx.command}/{error.path}" if error.path else ctx.command
         raise NumericalError(error.message, ctx.location, path) from None
 

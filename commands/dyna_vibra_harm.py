@@ -25,8 +25,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.assembly import ComplexAssembledMatrix, MechanicalLoad
 from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
 from asterlite.errors import NumericalError
+from asterlite.fem.loads import load_terms
 from asterlite.harmonic import HarmonicLoad, derived_fields
 from asterlite.harmonic import modal as modal_solver
 from asterlite.harmonic.loads import SweepLoads
@@ -93,8 +95,8 @@ def harmonic_load(ctx, occ, vector, label) -> HarmonicLoad:
     return HarmonicLoad(
         vector=vector,
         multiplier=value,
-        phase_deg=float(occ.get("PHAS_DEG", 0.0)),
-        power=int(occ.get("PUIS_PULS", 0)),
+        phase_deg=float(occ["PHAS_DEG"]),
+        power=int(occ["PUIS_PULS"]),
         label=label,
     )
 
@@ -222,7 +224,6 @@ def modal_damping(ctx, kw, mass, stiffness) -> np.ndarray | None:
 
 
 def physical(ctx, kw, frequencies, names):
-    from asterlite.concepts.assembly import ComplexAssembledMatrix
     from asterlite.fem.constraints import eliminate
     from asterlite.harmonic import physical as physical_solver
 
@@ -240,7 +241,7 @@ def physical(ctx, kw, frequencies, names):
         if matrix is not None and matrix.numbering is not numbering:
             ctx.error(f"{key} is not on the numbering of MATR_RIGI", key, kw)
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
-    b_matrix, _ = numbering.constraint_matrix()
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)
     # the relations' values are not those of the harmonic problem: code_aster's
     # Lagrange right-hand side is zero unless an EXCIT CHARGE imposes values
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
@@ -279,13 +280,12 @@ def physical(ctx, kw, frequencies, names):
         model=kw.get("MODELE") or getattr(stiffness_matrix, "model", None),
         materials=kw.get("CHAM_MATER") or getattr(stiffness_matrix, "materials", None),
         characteristics=kw.get("CARA_ELEM") or getattr(stiffness_matrix, "characteristics", None),
+        mass_matrix=mass_matrix,
     )
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
-    from asterlite.concepts.assembly import MechanicalLoad
     from asterlite.fem.assemble import assemble_terms
-    from asterlite.fem.loads import load_terms
 
     loads = []
     for i, occ in enumerate(kw.factor("EXCIT"), start=1):
@@ -304,7 +304,10 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
                     "CHARGE",
                     occ,
                 )
-            if any(abs(relation.rhs) > 0.0 for relation in load.relations):
+            if any(
+                abs(relation.rhs) > 0.0 or relation.rhs_in_time is not None
+                for relation in load.relations
+            ):
                 ctx.unsupported(
                     "EXCIT CHARGE imposing non-zero displacements in a harmonic response",
                     "CHARGE",

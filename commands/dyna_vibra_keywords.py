@@ -19,11 +19,3 @@ def first_value(value):
     if isinstance(value, (list, tuple)):
         return value[0] if value else None
     return value
-
-
-def as_tuple(value) -> tuple:
-    if value is None:
-        return ()
-    if isinstance(value, (list, tuple)):
-        return tuple(value)
-    return (value,)

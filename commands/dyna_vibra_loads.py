@@ -7,15 +7,19 @@ multipliers, support motions (MULT_APPUI) and static corrections
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.dyna_vibra_keywords import as_tuple, list_values
+from asterlite.commands.dyna_vibra_keywords import list_values
 
+from asterlite.concepts.function import Function
 from asterlite.dynamics.model import (
     COMPONENTS,
     LinearSystem,
     diagonal_damping_rates,
     modal_damping_rates,
 )
+from asterlite.dynamics.rotation import Rotation
 from asterlite.errors import missing_name
+from asterlite.fem.selection import as_tuple
+from asterlite.modal.renumber import transfer
 from asterlite.modal.seismic import SeismicError, combined_static_shape
 
 
@@ -88,13 +92,12 @@ def result_excitations(ctx, kw, n_modes):
     EXCIT NUME_ORDRE=j) whose multiplier is the function of INST through
     the result's archived instants and values COEF_MULT DEPL_j, linear
     interpolation, PROL_GAUCHE/PROL_DROITE='EXCLU'."""
-    from asterlite.concepts.function import Function
 
     basis = kw["MATR_MASS"].basis
     loads = []
     for number, occ in enumerate(kw.factor("EXCIT_RESU"), start=1):
         result = occ["RESULTAT"]
-        alpha = float(occ.get("COEF_MULT", 1.0))
+        alpha = float(occ["COEF_MULT"])
         same_basis = result.basis is basis or (
             result.basis.name is not None and result.basis.name == basis.name
         )
@@ -145,7 +148,6 @@ def static_corrections(ctx, kw, basis, system) -> list[dict]:
     D_FONC_DT and D_FONC_DT2 for the DEPL / VITE / ACCE fields that
     REST_GENE_PHYS and RECU_FONCTION add. The generalized load itself is
     not modified (the shocks see ψ_i FONC_MULT as a support motion)."""
-    from asterlite.modal.renumber import transfer
 
     corrections = []
     occs = kw.factor("EXCIT")
@@ -250,7 +252,6 @@ def rotating_matrices(ctx, kw, system, t0, t_end, dt):
     """VITESSE_VARIABLE='OUI': C + Ω(t) G and K + Ω'(t) K_gy (or None)."""
     if kw.get("VITESSE_VARIABLE") != "OUI":
         return None
-    from asterlite.dynamics.rotation import Rotation
 
     n = system.n_modes
     gyro = np.array(kw["MATR_GYRO"].matrix, dtype=float)

@@ -5,12 +5,20 @@ dispatches here; the keyword readers both paths share stay there."""
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.dyna_vibra_keywords import as_tuple, first_value, list_values
+from asterlite.commands.dyna_vibra_keywords import first_value, list_values
 from asterlite.commands.dyna_vibra_loads import support_shape
-from asterlite.commands.dyna_vibra_time import refuse_too_many_steps
+from asterlite.commands.dyna_vibra_time import archived_index, refuse_too_many_steps
+from asterlite.commands.dyna_vibra_words import TRANSIENT
 
 from asterlite.concepts.table import TableNotComputed
-from asterlite.errors import NumericalError
+from asterlite.concepts.transient import DynaTrans
+from asterlite.dynamics.physical.archive import Archive, archived_steps
+from asterlite.dynamics.physical.imposed import ScaledInTime
+from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
+from asterlite.errors import NumericalError, worded
+from asterlite.fem.loads import load_history, load_terms
+from asterlite.fem.selection import as_tuple
+from asterlite.modal.renumber import transfer
 
 PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
 
@@ -18,13 +26,12 @@ PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
 def run_physical(ctx, kw):
     """TYPE_CALCUL='TRAN', BASE_CALCUL='PHYS' (code_aster's DYNA_LINE_TRAN):
     linear, on the assembled matrices; a ``DynaTrans`` on the numbering's DOFs."""
-    from asterlite.concepts.transient import DynaTrans
     from asterlite.dynamics.physical import adapt_ordre2, diff_centre, newmark, wilson
-    from asterlite.dynamics.physical.archive import Archive
     from asterlite.dynamics.physical.system import build_system
 
-    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
-    scheme = schema_kw.get("SCHEMA", "NEWMARK")
+    # SCHEMA_TEMPS is a defaulted factor keyword: always one occurrence, defaults filled
+    schema_kw = kw.factor("SCHEMA_TEMPS")[0]
+    scheme = schema_kw["SCHEMA"]
     if scheme not in PHYSICAL_SCHEMES:
         ctx.unsupported(
             f"SCHEMA={scheme!r} on a physical basis (code_aster's PHYS transient offers "
@@ -38,7 +45,10 @@ def run_physical(ctx, kw):
     numbering = stiffness_matrix.numbering
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
     loads = physical_loads(ctx, kw, numbering, stiffness_matrix)
-    system = build_system(numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads)
+    imposed = physical_imposed_motion(ctx, kw, numbering, scheme)
+    system = build_system(
+        numbering, mass_matrix.matrix, stiffness_matrix.matrix, damping, loads, imposed
+    )
     modal = physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
 
     reused = ctx.reuse if isinstance(getattr(ctx, "reuse", None), DynaTrans) else None
@@ -50,8 +60,9 @@ def run_physical(ctx, kw):
             if initial_acceleration_computed(kw)
             else np.zeros(system.n_free)
         )
-    archive = Archive(system.n_free)
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
+    mask = None if scheme == "ADAPT_ORDRE2" else physical_archive_mask(kw, times)
+    archive = Archive(system.n_free, 64 if mask is None else int(np.count_nonzero(mask)))
     excluded = as_tuple(archiving.get("CHAM_EXCLU"))
     if excluded:
         # code_aster stores excluded fields at the last instant only; asterlite keeps
@@ -77,14 +88,14 @@ def run_physical(ctx, kw):
             if system.elimination.multi_rows is not None and system.elimination.multi_rows.size:
                 ctx.error("ADAPT_ORDRE2 on a physical basis does not accept LIAISON_DDL relations")
             options = {
-                "vite_min": first_value(schema_kw.get("VITE_MIN", "NORM")),
-                "coef_mult_pas": schema_kw.get("COEF_MULT_PAS", 1.1),
-                "coef_divi_pas": schema_kw.get("COEF_DIVI_PAS", 1.3333334),
+                "vite_min": first_value(schema_kw["VITE_MIN"]),
+                "coef_mult_pas": schema_kw["COEF_MULT_PAS"],
+                "coef_divi_pas": schema_kw["COEF_DIVI_PAS"],
                 "dt_min": schema_kw.get("PAS_MINI")
                 if schema_kw.get("PAS_MINI") is not None
-                else dt * schema_kw.get("PAS_LIMI_RELA", 1.0e-6),
-                "nb_poin_periode": int(schema_kw.get("NB_POIN_PERIODE", 50)),
-                "nmax_iter_pas": int(schema_kw.get("NMAX_ITER_PAS", 16)),
+                else dt * schema_kw["PAS_LIMI_RELA"],
+                "nb_poin_periode": int(schema_kw["NB_POIN_PERIODE"]),
+                "nmax_iter_pas": int(schema_kw["NMAX_ITER_PAS"]),
                 "pas_arch": int(archiving.get("PAS_ARCH") or 1),
             }
             neighbours = adapt_ordre2.same_component_neighbours(numbering, system.elimination.free)
@@ -100,10 +111,9 @@ def run_physical(ctx, kw):
                 inverse,
                 options,
                 neighbours,
-                ctx.log,
+                lambda text: ctx.log(worded(text, TRANSIENT)),
             )
         else:
-            mask = physical_archive_mask(kw, times)
             if scheme == "NEWMARK":
                 newmark.integrate(
                     system,
@@ -113,8 +123,8 @@ def run_physical(ctx, kw):
                     a,
                     mask,
                     archive,
-                    beta=schema_kw.get("BETA", 0.25),
-                    gamma=schema_kw.get("GAMMA", 0.5),
+                    beta=schema_kw["BETA"],
+                    gamma=schema_kw["GAMMA"],
                     monitor=energy,
                     modal=modal,
                 )
@@ -127,7 +137,7 @@ def run_physical(ctx, kw):
                     a,
                     mask,
                     archive,
-                    theta=schema_kw.get("THETA", 1.4),
+                    theta=schema_kw["THETA"],
                     modal=modal,
                 )
             else:
@@ -148,9 +158,14 @@ def run_physical(ctx, kw):
                     # the last instant, VITE being then the half-step velocity v_{N-1/2}
                     last_velocity = half_velocity
             stats = {"steps": times.size - 1}
-    except FloatingPointError as error:
-        path = f"{ctx.command}/{error.path}" if getattr(error, "path", "") else ctx.command
-        raise NumericalError(f"{scheme}: {error}", ctx.location, path) from None
+    except FloatingPointError as error:  # worded with the deck's keywords
+        path = worded(getattr(error, "path", ""), TRANSIENT, whole_path=True)
+        path = f"{ctx.command}/{path}" if path else ctx.command
+        message = worded(str(error), TRANSIENT)
+        raise NumericalError(f"{scheme}: {message}", ctx.location, path) from None
+    except NumericalError as error:
+        error = error.worded(TRANSIENT)
+        raise NumericalError(error.message, ctx.location, ctx.command) from None
     elapsed = __import__("time").perf_counter() - started
     out_t, out_q, out_v, out_a = archive.arrays()
     if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
@@ -164,6 +179,15 @@ def run_physical(ctx, kw):
         "VITE": system.expand_rate(out_v),
         "ACCE": system.expand_rate(out_a),
     }
+    out_t = out_t.copy()
+    del out_q, out_v, out_a, archive  # the reduced states, views of the archive
+    if system.imposed is not None:
+        # the archived instants are step instants: their motion is the scheme's
+        steps = np.clip(np.searchsorted(times, out_t), 0, times.size - 1)
+        for name, values in zip(
+            ("DEPL", "VITE", "ACCE"), system.imposed_fields(steps), strict=True
+        ):
+            fields[name] = fields[name] + values
     supports = physical_supports(ctx, kw, numbering)
     if supports:
         # code_aster (dlnew0): the fields are the relative motion; the absolute
@@ -186,7 +210,17 @@ def run_physical(ctx, kw):
             for name, values in fields.items()
             if name in reused.fields
         }
-    produced = DynaTrans(numbering=numbering, times=out_t, order=order, fields=fields)
+    produced = DynaTrans(
+        numbering=numbering,
+        times=out_t,
+        order=order,
+        fields=fields,
+        model=kw.get("MODELE") or numbering.model,
+        materials=kw.get("CHAM_MATER") or stiffness_matrix.materials,
+        characteristics=kw.get("CARA_ELEM") or stiffness_matrix.characteristics,
+        mass_matrix=mass_matrix,
+        loads=result_loads(kw),
+    )
     if energy is not None:
         produced.tables["PARA_CALC"] = energy.table()
     if kw.factor("OBSERVATION"):
@@ -206,8 +240,6 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
     """AMOR_MODAL of a physical transient (code_aster's nmmoam): a
     ``ModalDamping`` applied explicitly by NEWMARK and WILSON (dlnew0);
     DIFF_CENTRE and ADAPT_ORDRE2 do not read the keyword in code_aster."""
-    from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
-    from asterlite.modal.renumber import transfer
 
     occs = kw.factor("AMOR_MODAL")
     if not occs:
@@ -257,10 +289,73 @@ def physical_modal_damping(ctx, kw, numbering, stiffness_matrix, system, scheme)
     return modal
 
 
+def physical_imposed_motion(ctx, kw, numbering, scheme):
+    """(rhs over the numbering's relations, multiplier in time) of the
+    imposed motions of the EXCIT loads: their relations times FONC_MULT, and
+    the relations AFFE_CHAR_MECA_F gives as functions of INST times FONC_MULT
+    or COEF_MULT (see ``asterlite.dynamics.physical.imposed``)."""
+
+    position = {id(relation): r for r, relation in enumerate(numbering.relations)}
+    imposed = []
+    for occ in kw.factor("EXCIT"):
+        load, function = occ.get("CHARGE"), occ.get("FONC_MULT")
+        if load is None or occ.get("MULT_APPUI") == "OUI":
+            continue
+        constant = np.zeros(len(numbering.relations))
+        in_time = {}
+        for relation in getattr(load, "relations", ()):
+            row = position.get(id(relation))
+            if row is None:
+                continue
+            value = getattr(relation, "rhs_in_time", None)
+            if value is None:
+                constant[row] = relation.rhs
+            else:
+                in_time.setdefault(value.key, (value, []))[1].append(row)
+        columns = []
+        if function is not None and np.any(constant):
+            columns.append((constant, function))
+        scale = function if function is not None else float(occ.get("COEF_MULT", 1.0))
+        for value, rows in in_time.values():
+            rhs = np.zeros(len(numbering.relations))
+            rhs[rows] = 1.0  # DDL_IMPO: the relation u = g(t), coefficient 1
+            columns.append((rhs, ScaledInTime(scale, value)))
+        if not columns:
+            continue
+        where = "FONC_MULT" if function is not None else "CHARGE"
+        if scheme != "NEWMARK":
+            ctx.unsupported(
+                "an imposed motion (DDL_IMPO times FONC_MULT, or AFFE_CHAR_MECA_F DDL_IMPO "
+                f"of INST) with SCHEMA={scheme!r} on a physical basis (NEWMARK only)",
+                where,
+                occ,
+            )
+        for name in ("ENERGIE", "AMOR_MODAL"):
+            if kw.factor(name):
+                ctx.unsupported(
+                    f"{name} with an imposed motion (DDL_IMPO times FONC_MULT, or "
+                    "AFFE_CHAR_MECA_F DDL_IMPO of INST) on a physical basis",
+                    name,
+                    kw,
+                )
+        imposed.extend(columns)
+    return imposed
+
+
+def result_loads(kw) -> tuple:
+    """The list of loads code_aster keeps with the result: the EXCIT
+    occurrences that give a CHARGE, with their FONC_MULT (or COEF_MULT);
+    a VECT_ASSE is no load of the result."""
+    return tuple(
+        (occ["CHARGE"], occ.get("FONC_MULT") or float(occ.get("COEF_MULT", 1.0)))
+        for occ in kw.factor("EXCIT")
+        if occ.get("CHARGE") is not None
+    )
+
+
 def physical_loads(ctx, kw, numbering, stiffness_matrix):
     from asterlite.dynamics.physical.system import Load
     from asterlite.fem.assemble import assemble_terms
-    from asterlite.fem.loads import load_terms
 
     loads = []
     for occ in kw.factor("EXCIT"):
@@ -270,29 +365,51 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix):
             vector = np.asarray(occ["VECT_ASSE"].values, dtype=float)
             if vector.size != numbering.n_dofs:
                 ctx.error("VECT_ASSE is not on the numbering of the matrices", "VECT_ASSE", occ)
-        else:
+        history = None
+        if occ.get("VECT_ASSE") is None:
             load = occ["CHARGE"]
+            materials = stiffness_matrix.materials
             try:
                 terms = load_terms(
-                    load, stiffness_matrix.characteristics, stiffness_matrix.materials
+                    load, stiffness_matrix.characteristics, materials, history_apart=True
                 )
                 vector = assemble_terms(terms, numbering)
             except KeyError as exc:
                 ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
+            history = load_history(load, materials)
         mult = occ.get("FONC_MULT")
         if occ.get("ACCE") is not None:
             mult = occ["ACCE"]  # relative motion: the vector is -M ψ (CALC_CHAR_SEISME)
         elif mult is None:
             mult = float(occ.get("COEF_MULT", 1.0))
-        loads.append(Load(vector, mult))
+        loads.append(Load(vector, mult, _numbered_history(ctx, history, numbering, occ)))
     return loads
+
+
+def _numbered_history(ctx, history, numbering, occ):
+    """A load history ``times -> (nodes, components, values)`` as a
+    :class:`LoadHistory` on the numbering's DOFs (their rows found once)."""
+    from asterlite.dynamics.physical.system import LoadHistory
+
+    if history is None:
+        return None
+    nodes, components, _ = history(np.zeros(1))
+    rows = numbering.dof_indices(nodes, components)
+    if np.any(rows < 0):
+        k = int(np.flatnonzero(rows < 0)[0])
+        ctx.error(
+            f"load on DOFs the numbering does not have: {components[k]} of node "
+            f"{numbering.mesh.node_names[nodes[k]]}",
+            "CHARGE",
+            occ,
+        )
+    return LoadHistory(rows, lambda times: history(times)[2])
 
 
 def physical_supports(ctx, kw, numbering) -> list[dict]:
     """MULT_APPUI='OUI' supports of a physical transient: ψ_k (the static
     modes of MODE_STAT at the support nodes along DIRECTION) on the
     numbering, with the support's DEPL / VITE / ACCE functions."""
-    from asterlite.modal.renumber import transfer
 
     supports = []
     for occ in kw.factor("EXCIT"):
@@ -330,21 +447,7 @@ def physical_initial_state(ctx, kw, system):
     occ = occs[0]
     previous = occ.get("RESULTAT")
     if previous is not None:
-        if occ.get("NUME_ORDRE") is not None:
-            hits = np.nonzero(np.asarray(previous.order) == occ["NUME_ORDRE"])[0]
-            if not hits.size:
-                ctx.error(f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived", "NUME_ORDRE", occ)
-            k = int(hits[0])
-        elif occ.get("INST_INIT") is not None:
-            t = occ["INST_INIT"]
-            k = int(np.argmin(np.abs(previous.times - t)))
-            tol = occ.get("PRECISION", 1.0e-6) * (
-                abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
-            )
-            if abs(previous.times[k] - t) > max(tol, 1e-300):
-                ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
-        else:
-            k = len(previous.times) - 1
+        k = archived_index(ctx, occ, previous)
         fields = previous.fields
         q = system.restrict(fields["DEPL"][k])
         v = system.restrict(fields["VITE"][k]) if "VITE" in fields else v
@@ -389,8 +492,6 @@ def physical_instants(ctx, kw, t_state):
 
 
 def physical_archive_mask(kw, times):
-    from asterlite.dynamics.physical.archive import archived_steps
-
     occs = kw.factor("ARCHIVAGE")
     if not occs:
         return archived_steps(times, 1, (), 0.0, True)
@@ -403,8 +504,10 @@ def physical_archive_mask(kw, times):
     pas_arch = occ.get("PAS_ARCH")
     if pas_arch is None:
         pas_arch = 0 if len(instants) else 1
-    relative = occ.get("CRITERE", "RELATIF") == "RELATIF"
-    return archived_steps(times, int(pas_arch), instants, occ.get("PRECISION", 1.0e-6), relative)
+    if not len(instants):  # no instants: no precision to compare them with
+        return archived_steps(times, int(pas_arch), instants, 0.0, True)
+    relative = occ["CRITERE"] == "RELATIF"  # filled by the catalogue when instants are given
+    return archived_steps(times, int(pas_arch), instants, occ["PRECISION"], relative)
 
 
 def checked_diagonal_mass(ctx, system, scheme):

@@ -25,13 +25,13 @@ from asterlite.commands.dyna_vibra_loads import (
     static_corrections,
     support_motions,
 )
+from asterlite.commands.dyna_vibra_relations import nonlinearity_spec
 from asterlite.commands.dyna_vibra_shocks import (
     check_basis_for_shocks,
     continue_law_states,
     fluid_film,
     implicit_shocks,
     legacy_tangential_damping,
-    nonlinearity_spec,
     refuse_moving_gaps,
     shock_specs,
     warn_lagged_shocks,
@@ -46,15 +46,10 @@ from asterlite.commands.dyna_vibra_time import (
 )
 
 from asterlite.concepts.titles import unique_titles
+from asterlite.dynamics.excitation import Excitation, tabulate_excitation
 from asterlite.dynamics.fluid_film import FluidFilm
 from asterlite.dynamics.integrate import SchemeOptions
-from asterlite.dynamics.model import (
-    Excitation,
-    LinearSystem,
-    ShockSet,
-    build_shocks,
-    tabulate_excitation,
-)
+from asterlite.dynamics.model import LinearSystem, ShockSet, build_shocks
 from asterlite.dynamics.schemes import SCHEMES, Scheme
 from asterlite.legacy.v15 import computes
 
@@ -215,12 +210,13 @@ def relations(ctx, kw, basis, system):
     each (``asterlite.dynamics.laws``); each gets a name of its own."""
     specs = []
     occurrences = []  # the COMPORTEMENT occurrence of each shock (fluid films)
-    for occ in kw.factor("COMPORTEMENT"):
+    for rank, occ in enumerate(kw.factor("COMPORTEMENT"), start=1):
         if occ.get("RELATION") != "DIS_CHOC":  # a relation of asterlite.dynamics.laws
-            specs.append(nonlinearity_spec(ctx, kw, occ, basis, system.n_modes, len(specs) + 1))
-            occurrences.append(occ)
-            continue
-        found = shock_specs(ctx, occ, basis, system.n_modes, first=len(specs) + 1)
+            found = [nonlinearity_spec(ctx, kw, occ, basis, system.n_modes, len(specs) + 1)]
+        else:
+            found = shock_specs(ctx, occ, basis, system.n_modes, first=len(specs) + 1)
+        for spec in found:
+            spec.source = f"COMPORTEMENT[{rank}]"  # where a failure message points
         specs.extend(found)
         occurrences.extend([occ] * len(found))
     for spec, title in zip(specs, unique_titles([s.name for s in specs]), strict=True):

@@ -8,8 +8,10 @@ import numpy as np
 
 from asterlite.concepts.transient import ShockHistory, TranGene
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.basis_check import node_checks
 from asterlite.dynamics.shock_fields import ArchivedFields, column_difference
 from asterlite.dynamics.shock_fields import column as archived_column
+from asterlite.io import relation_history, shock_listing
 
 
 def shock_parameters(shocks, s: int) -> dict:
@@ -141,7 +143,6 @@ def impression(ctx, kw, result, name, specs, system) -> None:
     """IMPRESSION: the DIS_VISC / DIS_ECRO_TRAC histories on their logical
     units (asterlite.io.relation_history), the shocks' local quantities in
     the message log (asterlite.io.shock_listing)."""
-    from asterlite.io import relation_history, shock_listing
 
     occs = kw.factor("IMPRESSION")
     if not occs:
@@ -163,7 +164,6 @@ def impression(ctx, kw, result, name, specs, system) -> None:
 
 def restitution_rates(ctx, kw, occ, specs, system) -> dict:
     """{(shock, node): static restitution rate of the basis} (VERI_CHOC's)."""
-    from asterlite.dynamics.basis_check import node_checks
 
     basis = kw["MATR_MASS"].basis
     if getattr(basis, "stiffness", None) is None:  # also a mode_gene

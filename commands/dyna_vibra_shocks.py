@@ -9,20 +9,31 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from asterlite.commands.dyna_vibra_keywords import as_tuple
 
 from asterlite.concepts.titles import default_title
+from asterlite.dynamics.basis_check import node_checks
 from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row
 from asterlite.dynamics.model import (
     COMPONENTS,
+    MODAL,
+    NORMAL,
+    TANGENTIAL,
     ShockSpec,
     optimal_tangential_damping_v15,
 )
 from asterlite.dynamics.schemes import SCHEMES
+from asterlite.dynamics.step_limits import contact_limit
 from asterlite.errors import missing_name
+from asterlite.fem.selection import as_tuple
 from asterlite.legacy.v15 import computes
+from asterlite.substructure.shocks import SubstructureError, in_global_frame
+from asterlite.substructure.shocks import substructure_view as view
 
 FRICTION_KEYWORDS = ("COULOMB", "COULOMB_DYNA", "COULOMB_STAT")
+# the keywords of the stiffness or damping that sets a stability limit (model.StabilityLimit,
+# model.DampedLimit), as the messages name them
+STIFFNESS_KEYWORDS = {NORMAL: "RIGI_NOR", TANGENTIAL: "RIGI_TAN"}
+DAMPING_KEYWORDS = {NORMAL: "AMOR_NOR", TANGENTIAL: "AMOR_TAN", MODAL: "AMOR_REDUIT"}
 
 
 def shock_specs(ctx, occ, basis, n_modes, first: int = 1) -> list[ShockSpec]:
@@ -75,12 +86,12 @@ def shock_specs(ctx, occ, basis, n_modes, first: int = 1) -> list[ShockSpec]:
             norm_obst=norm_obst,
             angl_vril=occ.get("ANGL_VRIL"),
             orig_obst=np.asarray(orig, dtype=float) if orig is not None else None,
-            gap=float(occ.get("JEU", 1.0)),
+            gap=float(occ["JEU"]),
             dist_1=float(occ.get("DIST_1") or 0.0),
             dist_2=float(occ.get("DIST_2") or 0.0),
             k_n=float(occ["RIGI_NOR"]),
-            c_n=float(occ.get("AMOR_NOR", 0.0)),
-            k_t=float(occ.get("RIGI_TAN", 0.0)),
+            c_n=float(occ["AMOR_NOR"]),
+            k_t=float(occ["RIGI_TAN"]),
             c_t=float(occ["AMOR_TAN"]) if occ.get("AMOR_TAN") is not None else None,
             mu_dyn=mu_dyn,
             mu_stat=mu_stat,
@@ -98,13 +109,11 @@ def substructured_views(ctx, occ, basis):
     SOUS_STRUC_1/2 the modes seen on those substructures in the global
     frame, and the obstacle's frame REPERE turned into the global one
     (asterlite.substructure.shocks); otherwise ``basis`` twice."""
-    from asterlite.substructure.shocks import SubstructureError, in_global_frame
-    from asterlite.substructure.shocks import substructure_view as view
 
     norm, orig = np.asarray(occ["NORM_OBST"], dtype=float), occ.get("ORIG_OBST")
     orig = np.asarray(orig, dtype=float) if orig is not None else None
     names = (occ.get("SOUS_STRUC_1"), occ.get("SOUS_STRUC_2"))
-    repere = occ.get("REPERE", "GLOBAL")
+    repere = occ["REPERE"]
     if names[0] is None and not hasattr(basis.numbering, "mesh"):  # modes of a mode_gene
         ctx.error("the basis is a mode_gene: name the node's substructure", "SOUS_STRUC_1", occ)
     if names == (None, None) and repere == "GLOBAL":
@@ -167,32 +176,6 @@ def single_node(ctx, occ, mesh, node_kw, group_kw) -> int | None:
 
 def node_shape(basis, node: int, n_modes: int) -> np.ndarray:
     return np.array([basis.shape_at(node, c)[:n_modes] for c in COMPONENTS], dtype=float)
-
-
-def nonlinearity_spec(ctx, kw, occ, basis, n_modes, number) -> ShockSpec:
-    """A COMPORTEMENT occurrence of a relation other than DIS_CHOC
-    (``asterlite.dynamics.laws``)."""
-    from asterlite.dynamics.laws.connections import ConnectionError_, law_spec
-    from asterlite.dynamics.laws.tabulated import LawError
-
-    if occ.get("SOUS_STRUC_1") or occ.get("SOUS_STRUC_2"):
-        ctx.unsupported("two-node nonlinearities on substructures", "SOUS_STRUC_1", occ)
-    if not occ.get("SOUS_STRUC") and not hasattr(basis.numbering, "mesh"):
-        ctx.error("the basis is a mode_gene: name the node's substructure", "SOUS_STRUC", occ)
-    if occ.get("SOUS_STRUC"):  # the node's modes seen on its substructure
-        from asterlite.substructure.shocks import SubstructureError, substructure_view
-
-        try:
-            basis = substructure_view(basis, occ["SOUS_STRUC"], "SOUS_STRUC")
-        except SubstructureError as exc:
-            ctx.error(str(exc), exc.keyword, occ)
-    options = {k: kw.get(k) for k in ("INFO", "VITE_ROTA", "VITESSE_VARIABLE")}
-    try:
-        return law_spec(occ, basis, n_modes, number, options)
-    except ConnectionError_ as error:
-        ctx.error(str(error), error.keyword, occ)
-    except LawError as error:
-        ctx.error(str(error), "RELATION", occ)
 
 
 def continue_law_states(kw, specs) -> None:
@@ -354,7 +337,6 @@ def warn_lagged_shocks(ctx, scheme, system, shocks, dt) -> None:
     factor = SCHEMES[scheme].lagged_impact_gain
     if factor is None or not shocks.count:
         return
-    from asterlite.dynamics.model import contact_limit
 
     limit = contact_limit(system, shocks)
     if limit.shock is None:
@@ -368,7 +350,8 @@ def warn_lagged_shocks(ctx, scheme, system, shocks, dt) -> None:
         f"warning: {scheme} with TRAITEMENT_NONL='EXPLICITE' applies the shock forces of "
         f"the previous state: each elastic impact gains about {100.0 * gain:.3g} % of its "
         f"energy at PAS={dt:.6g} ({factor:g}·ω·dt, ω = {omega:.6g} rad/s set by "
-        f"{limit.cause()}); use TRAITEMENT_NONL='IMPLICITE' (energy-consistent impacts) or "
+        f"{limit.cause(STIFFNESS_KEYWORDS)}); use TRAITEMENT_NONL='IMPLICITE' "
+        "(energy-consistent impacts) or "
         f"PAS <= {step:.3g} for less than 1 %"
     )
 
@@ -376,7 +359,6 @@ def warn_lagged_shocks(ctx, scheme, system, shocks, dt) -> None:
 def check_basis_for_shocks(ctx, kw, specs, basis, system) -> None:
     """VERI_CHOC: warn, or stop with STOP_CRITERE='OUI', when the basis misses
     too much of a shock node's static compliance (asterlite.dynamics.basis_check)."""
-    from asterlite.dynamics.basis_check import node_checks
 
     occ = kw.factor("VERI_CHOC")[0]
     stop = occ["STOP_CRITERE"] == "OUI"

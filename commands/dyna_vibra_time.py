@@ -8,13 +8,16 @@ import math
 
 import numpy as np
 from asterlite.commands.dyna_vibra_keywords import list_values
+from asterlite.commands.dyna_vibra_shocks import DAMPING_KEYWORDS, STIFFNESS_KEYWORDS
 
-from asterlite.dynamics.model import (
+from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
+from asterlite.dynamics.schemes import SCHEMES
+from asterlite.dynamics.step_limits import (
     damped_step_limit,
+    shock_damping_limit,
     stability_limit,
     suggested_step,
 )
-from asterlite.dynamics.schemes import SCHEMES
 from asterlite.errors import NumericalError
 
 
@@ -27,25 +30,7 @@ def initial_state(ctx, kw, n_modes):
     occ = occs[0]
     previous = occ.get("RESULTAT")
     if previous is not None:
-        if occ.get("NUME_ORDRE") is not None:
-            hits = np.nonzero(previous.order == occ["NUME_ORDRE"])[0]
-            if not hits.size:
-                ctx.error(
-                    f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived in the result",
-                    "NUME_ORDRE",
-                    occ,
-                )
-            k = int(hits[0])
-        elif occ.get("INST_INIT") is not None:
-            t = occ["INST_INIT"]
-            k = int(np.argmin(np.abs(previous.times - t)))
-            tol = occ.get("PRECISION", 1.0e-6) * (
-                abs(t) if occ.get("CRITERE", "RELATIF") == "RELATIF" else 1.0
-            )
-            if abs(previous.times[k] - t) > max(tol, 1e-300):
-                ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
-        else:
-            k = len(previous.times) - 1
+        k = archived_index(ctx, occ, previous)
         return previous.depl[k].copy(), previous.vite[k].copy(), float(previous.times[k])
     if occ.get("DEPL") is not None:
         q0 = np.asarray(occ["DEPL"].values, dtype=float)[:n_modes].copy()
@@ -95,6 +80,29 @@ def time_span(ctx, kw, t_state):
 MAX_TRANSIENT_STEPS = 1_000_000_000
 
 
+def archived_index(ctx, occ, previous) -> int:
+    """The archive row ETAT_INIT continues from in a previous result: its
+    NUME_ORDRE, else the archived instant at INST_INIT (within PRECISION and
+    CRITERE), else the last one."""
+    if occ.get("NUME_ORDRE") is not None:
+        hits = np.nonzero(np.asarray(previous.order) == occ["NUME_ORDRE"])[0]
+        if not hits.size:
+            ctx.error(
+                f"NUME_ORDRE {occ['NUME_ORDRE']} is not archived in the result",
+                "NUME_ORDRE",
+                occ,
+            )
+        return int(hits[0])
+    if occ.get("INST_INIT") is not None:
+        t = occ["INST_INIT"]
+        k = int(np.argmin(np.abs(previous.times - t)))
+        tol = occ["PRECISION"] * (abs(t) if occ["CRITERE"] == "RELATIF" else 1.0)
+        if abs(previous.times[k] - t) > max(tol, 1e-300):
+            ctx.error(f"instant {t} is not archived in the result", "INST_INIT", occ)
+        return k
+    return len(previous.times) - 1
+
+
 def refuse_too_many_steps(ctx, occ, t0: float, t_end: float, dt: float) -> None:
     """A located error when (INST_FIN - INST_INIT) / PAS passes the bound."""
     steps = (t_end - t0) / dt if dt > 0.0 else float("inf")
@@ -122,7 +130,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     (shock forces explicit in their stages) are refused when PAS exceeds the
     stability limit of a shock's AMOR_NOR/AMOR_TAN (c·dt inside the stages'
     real stability interval), and their adaptive step never grows above it
-    (:func:`asterlite.dynamics.model.shock_damping_limit`)."""
+    (:func:`asterlite.dynamics.step_limits.shock_damping_limit`)."""
     schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
     dt_max = schema_kw.get("PAS_MAXI")
     if dt_max is not None and dt_max < dt_user:
@@ -133,17 +141,17 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
         )
     entry = SCHEMES[scheme]
     if entry.explicit_stages:
-        from asterlite.dynamics.model import shock_damping_limit
-
         # a Runge-Kutta module's tableau, or the stages' radius of DEVOGE's
         module = entry.implementation()
         tableau = getattr(module, "TABLEAU", None)
         radius = tableau.radius if tableau is not None else module.STAGE_RADIUS
         damped = shock_damping_limit(system, shocks, radius, modal=tableau is not None)
         if dt_user > damped.step:
+            keyword = DAMPING_KEYWORDS[damped.damping]
             why = (
-                f"{damped.cause()} gives a damping per unit mass of {damped.per_mass:.6g} 1/s, "
-                f"{damped.damping}*dt/M = {damped.per_mass * dt_user:.6g} beyond the {radius:.4g} "
+                f"{damped.cause(DAMPING_KEYWORDS)} gives a damping per unit mass of "
+                f"{damped.per_mass:.6g} 1/s, {keyword}*dt/M = {damped.per_mass * dt_user:.6g} "
+                f"beyond the {radius:.4g} "
                 f"the explicit stages of {scheme} bear (the critical step is "
                 f"{damped.step:.6g} s)"
             )
@@ -159,7 +167,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
         elif math.isfinite(damped.step) and (dt_max is None or dt_max > damped.step):
             ctx.log(
                 f"{scheme}: the adaptive step stays below {damped.step:.6g} s, the stability "
-                f"limit of its explicit stages set by {damped.cause()}"
+                f"limit of its explicit stages set by {damped.cause(DAMPING_KEYWORDS)}"
             )
     if not entry.step_checked:
         return dt_user
@@ -172,7 +180,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
             if dt_user > damped.step:
                 why = (
                     f"its explicit velocity update is unstable above {damped.step:.6g} s, "
-                    f"set by {damped.cause()}"
+                    f"set by {damped.cause(DAMPING_KEYWORDS)}"
                 )
                 if veri_pas:
                     raise NumericalError(
@@ -188,7 +196,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     why = (
         f"the critical step is {limit:.6g} s, 1/{fraction:g} of the shortest period "
         f"{shortest.period:.6g} s ({shortest.frequency:.6g} Hz, shock stiffness included), "
-        f"set by {shortest.cause()}"
+        f"set by {shortest.cause(STIFFNESS_KEYWORDS)}"
     )
     if veri_pas and entry.step_refused:
         raise NumericalError(
@@ -207,13 +215,13 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
 def legacy_adapt_step_max(ctx, system, shocks) -> float:
     """PAS_MAXI of code_aster 10-12's ADAPT_ORDRE2 when the deck gives none
     (mdptem): a twentieth of the shortest period, shock stiffness included."""
-    from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
 
     shortest = stability_limit(system, shocks)
     dt_max = default_step_max(shortest.period)
     ctx.log(
         f"ADAPT_ORDRE2 (code_aster 10-12): PAS_MAXI={dt_max:.6g}, a twentieth of the shortest "
-        f"period {shortest.period:.6g} s (that version's default), set by {shortest.cause()}"
+        f"period {shortest.period:.6g} s (that version's default), set by "
+        f"{shortest.cause(STIFFNESS_KEYWORDS)}"
     )
     return dt_max
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.function import Formula
+from asterlite.extras import MissingExtraError, require
 from asterlite.io.tables import function_lines, write_lines, xmgrace_lines
 from asterlite.post.restitution import values_of
 
@@ -95,7 +96,6 @@ def curve(ctx, occ):
 
 def require_matplotlib(ctx, kw) -> None:
     """Images need matplotlib (the plot extra): say so at the PILOTE keyword."""
-    from asterlite.extras import MissingExtraError, require
 
     try:
         require("matplotlib.figure", f"PILOTE={kw['PILOTE']!r} (an image)")

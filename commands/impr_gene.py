@@ -23,9 +23,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.harmonic import HarmGene
 from asterlite.concepts.modes import GeneralizedModes, GeneralizedVector
 from asterlite.concepts.transient import TranGene
 from asterlite.io.tables import fortran_real, write_lines
+from asterlite.post.harmonic import selection_from_keywords as frequency_selection
 from asterlite.post.restitution import FIELDS, as_tuple, selection_from_keywords
 
 RULE = " " + "=" * 78
@@ -43,7 +45,6 @@ def run(ctx, kw):
 
 def occurrence_lines(ctx, occ) -> list[str]:
     result = occ["RESU_GENE"]
-    from asterlite.concepts.harmonic import HarmGene
 
     if isinstance(result, HarmGene):
         lines = [RULE, f" RESULTAT GENERALISE {result.name or ''} ({result.aster_type})"]
@@ -137,7 +138,6 @@ def info_lines(result: TranGene) -> list[str]:
 def harm_gene_lines(ctx, occ, result) -> list[str]:
     """The fields of a harm_gene at the chosen frequencies (code_aster's irgene
     / irvgen: real and imaginary parts of each generalized component)."""
-    from asterlite.post.harmonic import selection_from_keywords as frequency_selection
 
     if occ.get("NUME_MODE") is not None or occ.get("TOUT_MODE") is not None:
         ctx.error("NUME_MODE / TOUT_MODE apply to mode_gene results", "NUME_MODE", occ)

@@ -29,10 +29,13 @@ from pathlib import Path
 import numpy as np
 
 from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.modes import FieldOnElements, ModeResult
 from asterlite.concepts.table import Table
+from asterlite.concepts.transient import DynaTrans
 from asterlite.errors import CommandError, missing_name
+from asterlite.io.ideas_result import field_lines
 from asterlite.io.med_writer import (
     ElementSeries,
     MedWriteError,
@@ -74,8 +77,6 @@ def write_ideas_format(ctx, kw) -> None:
     datasets 55 (asterlite.io.ideas_result), every order (or those chosen)
     and field (or NOM_CHAM), on the nodes of GROUP_NO / GROUP_MA; PARTIE
     writes the real or imaginary part of a complex field."""
-    from asterlite.concepts.harmonic import DynaHarmo
-    from asterlite.concepts.transient import DynaTrans
 
     # VERSION changes the mesh datasets only (2411/2412 or 781/780), not 55
     kw.mark_used("VERSION")
@@ -97,9 +98,6 @@ def write_ideas_format(ctx, kw) -> None:
 
 
 def _ideas_occurrence(ctx, occ, result) -> list[str]:
-    from asterlite.concepts.harmonic import DynaHarmo
-    from asterlite.io.ideas_result import field_lines
-
     if isinstance(result, ModeResult):
         fields = {"DEPL": np.asarray(result.shapes).T}
     else:

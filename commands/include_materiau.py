@@ -19,6 +19,8 @@ code_aster and not shipped with asterlite: refused.
 
 from __future__ import annotations
 
+from asterlite.io.input_files import read_deck_text
+from asterlite.lang import Evaluator, base_namespace, parse_deck
 from asterlite.lang.values import CallSite
 
 #: commands a material file may call (code_aster's list)
@@ -49,8 +51,6 @@ def _data_file(ctx, kw):
 
 
 def _context(ctx, kw) -> dict:
-    from asterlite.lang import base_namespace
-
     extraction = kw.factor("EXTRACTION")
     temperature = float(extraction[0]["TEMP_EVAL"]) if extraction else None
     millimetres = kw.get("UNITE_LONGUEUR", "M") == "MM"
@@ -79,9 +79,6 @@ def _context(ctx, kw) -> dict:
 
 
 def _evaluate(ctx, path, namespace) -> dict:
-    from asterlite.io.input_files import read_deck_text
-    from asterlite.lang import Evaluator, parse_deck
-
     text = read_deck_text(path, "material file")
     module = parse_deck(text, str(path), private_names=True, study_file=True)
     Evaluator(namespace, module_loader=ctx.session.load_module).run(module)

@@ -17,6 +17,7 @@ import numpy as np
 from asterlite.commands.defi_fonction import check_abscissas
 
 from asterlite.concepts.function import ComplexFunction, Function
+from asterlite.io.input_files import InputFileError, read_bounded_text
 from asterlite.io.non_finite import NonFiniteNumber, finite_float, is_number_token
 
 
@@ -105,7 +106,6 @@ def run(ctx, kw):
         ctx.error(f"file {path} (unit {kw['UNITE']}) does not exist", "UNITE", kw)
     separator = kw.get("SEPARATEUR")
     separator = None if separator in (None, "None", " ", "") else separator
-    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     try:  # rows of Python floats: about 30 bytes of memory per byte of text
         text = read_bounded_text(path, "function file", 30)

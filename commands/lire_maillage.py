@@ -3,7 +3,9 @@ universal files through pyuff)."""
 
 from __future__ import annotations
 
+from asterlite.fem.mesh_check import check_mesh
 from asterlite.io.aster_mesh import AsterMeshError, read_aster_mesh
+from asterlite.io.ideas_mesh import IdeasMeshError, IdeasMeshUnsupported, read_ideas_mesh
 
 
 def run(ctx, kw):
@@ -42,7 +44,6 @@ def run(ctx, kw):
 def _check(ctx, kw, mesh) -> None:
     """VERI_MAIL (VERIF='OUI' by default): code_aster's mesh check, alarms in
     the log, errors stop the command (asterlite.fem.mesh_check)."""
-    from asterlite.fem.mesh_check import check_mesh
 
     occ = (kw.factor("VERI_MAIL") or [{}])[0]
     if occ.get("VERIF", "OUI") != "OUI":
@@ -61,8 +62,6 @@ def _check(ctx, kw, mesh) -> None:
 
 
 def _read_ideas(ctx, kw, path):
-    from asterlite.io.ideas_mesh import IdeasMeshError, IdeasMeshUnsupported, read_ideas_mesh
-
     try:
         mesh = read_ideas_mesh(path, color_groups=kw.get("CREA_GROUP_COUL") == "OUI")
     except IdeasMeshUnsupported as exc:

@@ -24,9 +24,11 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.transient import DynaTrans
 from asterlite.fem.dofs import sort_components
+from asterlite.io.ideas_result import IdeasReadError, read_datasets_55, record_field
 from asterlite.io.med_result import MedResultError, read_nodal_field
 from asterlite.io.med_writer import med_field_name
 from asterlite.post.restitution import as_tuple
@@ -236,8 +238,6 @@ def _read_ideas(ctx, kw):
     field) and the frequency or instant (POSI_FREQ / POSI_INST) are, and the
     components of the value slots (NOM_CMP); nodes are found by the name
     N<label>, else by number. The orders stored are the file's."""
-    from asterlite.concepts.harmonic import DynaHarmo
-    from asterlite.io.ideas_result import IdeasReadError, read_datasets_55, record_field
 
     kind = kw["TYPE_RESU"]
     if kind not in ("DYNA_HARMO", "DYNA_TRANS"):

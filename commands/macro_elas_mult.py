@@ -3,12 +3,12 @@
 The stiffness of MODELE/CARA_ELEM is assembled on a numbering that carries
 the kinematic relations of CHAR_MECA_GLOBAL and of the cases' loads (bound to
 NUME_DDL=CO(...) when asked); each case solves K u = f_case with its own
-imposed values. The result is a mult_elas (``MultElasResult``)."""
+imposed values, f_case taking the loads of CHAR_MECA_GLOBAL as well as its
+own (as code_aster's macro does). The result is a mult_elas (``MultElasResult``)."""
 
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.calc_vect_elem import gravity_terms
 from asterlite.commands.nume_ddl import numbering_for
 
 from asterlite.concepts.assembly import AssembledMatrix, DofNumbering
@@ -16,25 +16,22 @@ from asterlite.concepts.modes import MultElasResult
 from asterlite.fem.assemble import assemble_blocks, assemble_terms
 from asterlite.fem.constraints import ConstraintError
 from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.loads import load_terms
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import transfer
 from asterlite.modal.static_modes import StaticModeError, static_solve
 
 
 def _case_terms(ctx, occ, kw, loads):
+    """Every nodal term of a case's loads, as CALC_VECT_ELEM computes them."""
     terms = []
     for load in loads:
-        terms.extend(load.nodal_forces)
-        gravity = load.extra.get("PESANTEUR")
-        if gravity is not None:
-            if kw.get("CARA_ELEM") is None:
-                ctx.error("PESANTEUR needs CARA_ELEM to know the masses", "CARA_ELEM", kw)
-            terms.extend(
-                gravity_terms(load.model, kw["CARA_ELEM"], gravity["GRAVITE"], gravity["DIRECTION"])
-            )
-        other = sorted(set(load.extra) - {"PESANTEUR"})
-        if other:
-            ctx.unsupported(f"MACRO_ELAS_MULT load kind {', '.join(other)}", "CHAR_MECA", occ)
+        try:
+            terms.extend(load_terms(load, kw.get("CARA_ELEM"), kw.get("CHAM_MATER")))
+        except NotImplementedError as exc:
+            ctx.unsupported(str(exc), "CHAR_MECA", occ)
+        except (ElementError, ValueError) as exc:
+            ctx.error(str(exc), "CHAR_MECA", occ)
     return terms
 
 
@@ -79,7 +76,9 @@ def run(ctx, kw):
             forces.append(transfer(field.values, field.numbering, numbering))
         else:
             try:
-                forces.append(assemble_terms(_case_terms(ctx, occ, kw, loads), numbering))
+                # code_aster's case vector takes CHAR_MECA_GLOBAL's loads too
+                terms = _case_terms(ctx, occ, kw, loads + global_loads)
+                forces.append(assemble_terms(terms, numbering))
             except KeyError as exc:
                 ctx.error(f"load on a DOF the numbering lacks: {exc.args[0]}", "CHAR_MECA", occ)
         rhs.append(_relation_rhs(numbering, global_loads + loads))
@@ -97,4 +96,7 @@ def run(ctx, kw):
         case_names=names,
         loads=f,
         stiffness=AssembledMatrix(numbering=numbering, matrix=stiffness, kind="RIGI"),
+        model=model,
+        materials=kw.get("CHAM_MATER"),
+        characteristics=kw.get("CARA_ELEM"),
     )

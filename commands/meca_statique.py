@@ -17,6 +17,7 @@ from asterlite.fem.assemble import assemble_blocks, assemble_terms
 from asterlite.fem.elements import ElementError
 from asterlite.fem.loads import load_terms
 from asterlite.fem.options import option_blocks
+from asterlite.modal.static_modes import StaticModeError, static_solve
 from asterlite.post.restitution import values_of
 
 
@@ -44,8 +45,6 @@ def _multipliers(occ, times) -> np.ndarray:
 
 
 def run(ctx, kw):
-    from asterlite.modal.static_modes import StaticModeError, static_solve
-
     if ctx.reuse is not None or kw.get("RESULTAT") is not None:
         ctx.unsupported("MECA_STATIQUE reuse (instants added to a result)", "RESULTAT", kw)
     if kw.get("OPTION", "SIEF_ELGA") == "SIEF_ELGA" and "OPTION" in kw.given:

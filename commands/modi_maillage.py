@@ -6,7 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.selection import as_tuple
+from asterlite.fem.selection import as_tuple, cell_group_members
+from asterlite.fem.skin import SkinError, is_plane, orient_edges, orient_skin
 
 _SUPPORTED = ("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU")
 # code_aster 15's name of ORIE_PEAU for 3D skins, and its keywords
@@ -18,8 +19,6 @@ _SKIN_KEYWORDS = {
 
 def _orient_skin(ctx, mesh, kw) -> None:
     """ORIE_PEAU: skin faces turned to point out of their volume cells."""
-    from asterlite.fem.selection import cell_group_members
-    from asterlite.fem.skin import SkinError, is_plane, orient_edges, orient_skin
 
     plane = is_plane(mesh)
     for factor, (faces_key, volumes_key) in _SKIN_KEYWORDS.items():

@@ -4,7 +4,10 @@ relations, asterlite.concepts.substructure)."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from asterlite.concepts.modes import GeneralizedNumbering
+from asterlite.concepts.substructure import SubstructuredNumbering
 
 
 def run(ctx, kw):
@@ -22,9 +25,7 @@ def _on_model(ctx, kw):
 
 def numbering_of_model(ctx, kw, model, method, storage):
     """The generalized numbering of a model (also ASSE_ELEM_SSD's)."""
-    import numpy as np
 
-    from asterlite.concepts.substructure import SubstructuredNumbering
     from asterlite.substructure.coupling import CouplingError, constraint_rows
 
     if method == "INITIAL":

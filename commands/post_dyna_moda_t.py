@@ -26,6 +26,7 @@ from asterlite.dynamics.shock_fields import ArchivedFields
 from asterlite.legacy.v15 import computes
 from asterlite.legacy.version import tables_name_nodes
 from asterlite.post import shocks as stats
+from asterlite.post.restitution import single_node
 from asterlite.post.wear import history_wear_power
 
 from .recu_fonction import shock_quantity
@@ -73,9 +74,9 @@ def run(ctx, kw):
     columns = IMPACT_COLUMNS if option == "IMPACT" else USURE_COLUMNS
     for name, type_code in columns.items():
         table.add_column(name, type_code)
-    mesh = result.basis.numbering.mesh
     by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: nodes by name
     for number, shock in enumerate(result.shocks, start=1):
+        mesh = shock_mesh(result, shock)
         labels = {"INTITULE": shock.name, "NOEUD": node_number(mesh, shock.node_1, by_name)}
         t = result.times[window]
         fields = windowed(shock.fields, window)
@@ -92,7 +93,6 @@ def run(ctx, kw):
 def relation_table(ctx, kw, result: TranGene) -> Table:
     """RELA_EFFO_DEPL: the nonlinear phases of the relation at one node
     component (code_aster fails when no RELA_EFFO_DEPL matches)."""
-    from asterlite.post.restitution import single_node
 
     by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: nodes by name
 
@@ -168,12 +168,29 @@ def relation_function(shock, number: str, component: str) -> str:
     return ""
 
 
+def shock_mesh(result, shock):
+    """The mesh numbering a nonlinearity's nodes: the basis's, or on a model of
+    substructures a substructure mesh holding its first node, when all that
+    hold it give it the same number (None otherwise: it is written by name)."""
+    numbering = result.basis.numbering
+    mesh = getattr(numbering, "mesh", None)
+    if mesh is not None or getattr(numbering, "model", None) is None:
+        return mesh
+    holders = [
+        sub.macro.mesh
+        for sub in numbering.model.substructures
+        if shock.node_1 in sub.macro.mesh.node_index
+    ]
+    numbers = {h.node_index[shock.node_1] for h in holders}
+    return holders[0] if len(numbers) == 1 else None
+
+
 def node_number(mesh, name: str | None, by_name: bool = False) -> str:
     """code_aster 17 writes nodes by number (1-based index) in tables; code_aster
     15 and older by name (``by_name``: the deck's version, see asterlite.legacy.version)."""
     if name is None:
         return ""
-    if by_name:
+    if by_name or mesh is None:
         return str(name)
     index = mesh.node_index.get(name)
     return str(index + 1) if index is not None else str(name)

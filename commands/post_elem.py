@@ -5,11 +5,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.table import Table
 from asterlite.errors import missing_name
 from asterlite.fem.elements import ElementError
 from asterlite.fem.mass_properties import mass_properties
 from asterlite.fem.selection import as_tuple
+from asterlite.post.kinetic_energy import kinetic_energy
+from asterlite.post.restitution import selection_from_keywords
 
 _COLUMNS = (
     "MASSE", "CDG_X", "CDG_Y", "CDG_Z", "IX_G", "IY_G", "IZ_G", "IXY_G", "IXZ_G", "IYZ_G",
@@ -61,9 +64,6 @@ def kinetic_energy_table(ctx, kw):
     """ENER_CIN of a transient result (VITE) or of modes (½ ω² φᵀ M φ with
     DEPL): per order and group, TOTALE and its share of the whole model
     (POUR_CENT), as code_aster's table."""
-    from asterlite.concepts.modes import ModeResult
-    from asterlite.post.kinetic_energy import kinetic_energy
-    from asterlite.post.restitution import selection_from_keywords
 
     result = kw.get("RESULTAT")
     if result is None:

@@ -7,16 +7,16 @@ import numpy as np
 from asterlite.commands import proj_matr_base, proj_vect_base
 
 from asterlite.concepts.modes import GeneralizedNumbering
+from asterlite.concepts.transient import TranGene
+from asterlite.modal.fields import FieldError, field_stack
+from asterlite.modal.projection import ProjectionError, fit_coordinates, project_force
+from asterlite.modal.renumber import transfer
 
 
 def _resu_gene(ctx, occ, basis):
     """A tran_gene holding the generalized coordinates of a physical result's
     fields DEPL, VITE and ACCE at each instant: a least-squares fit for
     kinematic fields, or the generalized force (TYPE_VECT='FORC')."""
-    from asterlite.concepts.transient import TranGene
-    from asterlite.modal.fields import FieldError, field_stack
-    from asterlite.modal.projection import ProjectionError, fit_coordinates, project_force
-    from asterlite.modal.renumber import transfer
 
     result = occ["RESU"]
     as_force = occ["TYPE_VECT"] == "FORC"

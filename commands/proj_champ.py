@@ -21,9 +21,11 @@ from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.transient import DynaTrans
 from asterlite.fem.dofs import sort_components
 from asterlite.post import field_projection as fp
+from asterlite.post.harmonic import frequency_indices
 from asterlite.post.restitution import as_tuple, nearest_archived
 
-_NODAL = ("DEPL", "VITE", "ACCE")
+# fields on the DOFs; nodal forces are interpolated as any nodal field, as code_aster does
+_NODAL = ("DEPL", "VITE", "ACCE", "FORC_NODA", "REAC_NODA")
 _REFUSED = (
     ("TRANSF_GEOM_1", "a geometric transformation of mesh 1"),
     ("TRANSF_GEOM_2", "a geometric transformation of mesh 2"),
@@ -43,8 +45,8 @@ def run(ctx, kw):
     distance_max = kw.get("DISTANCE_MAX")
     placement = fp.Placement({}, [], 0.0)
     try:
-        for cells, nodes in pairs:
-            part = fp.place_nodes(mesh_1, cells, mesh_2, nodes, distance_max)
+        for cells, nodes, points in pairs:
+            part = fp.place_nodes(mesh_1, cells, mesh_2, nodes, distance_max, points)
             placement.nodes.update(part.nodes)
             placement.unplaced.extend(n for n in part.unplaced if n not in placement.nodes)
             placement.farthest = max(placement.farthest, part.farthest)
@@ -54,6 +56,10 @@ def run(ctx, kw):
     if kw.get("CHAM_GD") is not None:
         return _project_field(ctx, kw, placement, mesh_1, mesh_2, model_2)
     return _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2)
+
+
+# the dimension of the source cells each projection case uses
+_CASE_DIMENSION = {"3D": 3, "2D": 2, "2.5D": 2, "1.5D": 1}
 
 
 def _refuse(ctx, kw) -> None:
@@ -70,11 +76,28 @@ def _refuse(ctx, kw) -> None:
         if kw.get(keyword) is not None:
             ctx.unsupported(f"PROJ_CHAMP with {what}", keyword, kw)
     for occ in kw.factor("VIS_A_VIS"):
-        for keyword, what in _REFUSED[:3] + (("GROUP_NO_1", "cells chosen by GROUP_NO_1"),):
+        refused = (
+            ("TRANSF_GEOM_1", "a geometric transformation of mesh 1"),
+            ("GROUP_NO_1", "cells chosen by GROUP_NO_1"),
+        )
+        for keyword, what in refused:
             if occ.get(keyword) is not None:
                 ctx.unsupported(f"PROJ_CHAMP VIS_A_VIS with {what}", keyword, occ)
+        if occ.get("CAS_FIGURE") not in (None, *_CASE_DIMENSION):
+            ctx.unsupported(
+                f"PROJ_CHAMP VIS_A_VIS CAS_FIGURE={occ['CAS_FIGURE']!r}", "CAS_FIGURE", occ
+            )
     # messages only: what a node's distance to its cell prints in code_aster
     kw.mark_used("ALARME", "TYPE_CHAM", "TITRE", "INFO")
+
+
+def _prolongation(kw) -> float:
+    """The value of the DOFs the projection does not reach: PROL_VALE, or 0
+    with PROL_ZERO='OUI' (code_aster 17 turns PROL_ZERO='OUI' into
+    PROL_VALE=0.0, over a PROL_VALE given too)."""
+    if kw.get("PROL_ZERO") == "OUI":
+        return 0.0
+    return kw.get("PROL_VALE") or 0.0
 
 
 def _pairs(ctx, kw, mesh_1, mesh_2, model_2):
@@ -85,6 +108,7 @@ def _pairs(ctx, kw, mesh_1, mesh_2, model_2):
             (
                 fp.source_cells(mesh_1, _model_cells(kw.get("MODELE_1"))),
                 _all_targets(mesh_2, model_2),
+                None,
             )
         ]
     pairs = []
@@ -95,8 +119,49 @@ def _pairs(ctx, kw, mesh_1, mesh_2, model_2):
             if occ.get("TOUT_2") == "OUI"
             else _nodes(ctx, occ, mesh_2)
         )
-        pairs.append((fp.source_cells(mesh_1, cells), nodes))
+        dimension = _CASE_DIMENSION.get(occ.get("CAS_FIGURE"))
+        chosen = fp.source_cells(mesh_1, cells, dimension)
+        if dimension is not None and chosen.size == 0:
+            ctx.error(
+                f"CAS_FIGURE={occ['CAS_FIGURE']!r}: no cell of dimension {dimension} among "
+                "the cells of mesh 1",
+                "CAS_FIGURE",
+                occ,
+            )
+        pairs.append((chosen, nodes, _transformed(ctx, occ, mesh_2, nodes)))
     return pairs
+
+
+def _transformed(ctx, occ, mesh_2, nodes):
+    """TRANSF_GEOM_2: the points where mesh 2's nodes are looked for in
+    mesh 1, (f_x, f_y[, f_z]) of each node's (X, Y, Z); None without it."""
+    functions = as_tuple(occ.get("TRANSF_GEOM_2"))
+    if not functions:
+        return None
+    coords = np.asarray(mesh_2.coords, dtype=float)[nodes]
+    if len(functions) > coords.shape[1]:
+        ctx.error(
+            f"TRANSF_GEOM_2 gives {len(functions)} functions for {coords.shape[1]} coordinates",
+            "TRANSF_GEOM_2",
+            occ,
+        )
+    at = {name: coords[:, k] for k, name in enumerate(("X", "Y", "Z")[: coords.shape[1]])}
+    # two functions (a plane mesh): the third coordinate is kept
+    points = coords.copy()
+    for k, function in enumerate(functions):
+        names = tuple(getattr(function, "nom_para", ()) or ())
+        unknown = [p for p in names if p not in at and p != "TOUTPARA"]
+        if unknown:
+            ctx.error(
+                f"TRANSF_GEOM_2: the function {function.name or ''} depends on "
+                f"{', '.join(unknown)} (X, Y, Z expected)",
+                "TRANSF_GEOM_2",
+                occ,
+            )
+        # DEFI_CONSTANTE's TOUTPARA takes any value: the first coordinate
+        values = function.evaluate_many(*[at.get(p, coords[:, 0]) for p in names])
+        points[:, k] = np.broadcast_to(np.real(np.asarray(values, dtype=complex)), len(nodes))
+    return points
 
 
 def _model_cells(model):
@@ -186,7 +251,7 @@ def _project_field(ctx, kw, placement, mesh_1, mesh_2, model_2) -> NodalField:
         field.numbering.index,
         np.asarray(field.values)[None, :],
         target.dofs,
-        kw.get("PROL_VALE") or 0.0,
+        _prolongation(kw),
     )
     return NodalField(numbering=target, values=values[0])
 
@@ -199,7 +264,7 @@ def _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2):
         ctx.unsupported(f"PROJ_CHAMP of a {result.aster_type}", "RESULTAT", kw)
     _check_source_mesh(ctx, kw, result.numbering, mesh_1, "result")
     target = _target_numbering(ctx, kw, mesh_2, model_2, result.numbering)
-    default = kw.get("PROL_VALE") or 0.0
+    default = _prolongation(kw)
     if isinstance(result, ModeResult):
         return _project_modes(ctx, kw, result, placement, target, default)
     names = _field_names(ctx, kw, list(result.fields))
@@ -222,7 +287,6 @@ def _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2):
 def _project_harmonic(ctx, kw, result, placement, mesh_1, mesh_2, model_2) -> DynaHarmo:
     """A dyna_harmo: its complex nodal fields at the chosen frequencies (FREQ,
     LIST_FREQ within PRECISION / CRITERE, NUME_ORDRE, LIST_ORDRE or all)."""
-    from asterlite.post.harmonic import frequency_indices
 
     _check_source_mesh(ctx, kw, result.numbering, mesh_1, "result")
     target = _target_numbering(ctx, kw, mesh_2, model_2, result.numbering)
@@ -246,7 +310,7 @@ def _project_harmonic(ctx, kw, result, placement, mesh_1, mesh_2, model_2) -> Dy
             result.numbering.index,
             result.fields[name][picked],
             target.dofs,
-            kw.get("PROL_VALE") or 0.0,
+            _prolongation(kw),
         )
     ctx.log(f"{len(names)} fields at {len(picked)} frequencies projected on {target.n_dofs} DOFs")
     return DynaHarmo(

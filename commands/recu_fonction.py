@@ -23,18 +23,20 @@ from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.errors import missing_name
 from asterlite.legacy.v15 import relation_title
+from asterlite.legacy.v15_names import GENERATED_NAME
+from asterlite.post.harmonic import selection_from_keywords
 from asterlite.post.restitution import (
     added_motions,
     as_tuple,
     computed_fields,
     element_value_history,
+    field_component_value,
     recombine,
     select_instants,
     single_node,
     support_motion,
     values_of,
 )
-from asterlite.runtime.v15_names import GENERATED_NAME
 
 
 def run(ctx, kw):
@@ -77,7 +79,6 @@ def from_harmonic(ctx, kw) -> ComplexFunction:
     from a dyna_harmo (NOM_CHAM at a node component) or a harm_gene (a
     generalized component NUME_CMP_GENE, or a node component recombined on
     the modal basis)."""
-    from asterlite.post.harmonic import selection_from_keywords
 
     generalized = kw.get("RESU_GENE") is not None
     result = kw["RESU_GENE"] if generalized else kw["RESULTAT"]
@@ -126,7 +127,6 @@ def from_harmonic(ctx, kw) -> ComplexFunction:
 
 def constant_from_field(ctx, kw) -> Function:
     """CHAM_GD: the constant function of one field value (code_aster's focste)."""
-    from asterlite.post.restitution import field_component_value
 
     value = field_component_value(ctx, kw, kw["CHAM_GD"])
     component = str(kw["NOM_CMP"])
@@ -300,7 +300,6 @@ def added_part(ctx, kw, result, node, field, times, keyword) -> np.ndarray:
 
 def find_shock(ctx, kw, result):
     """The ShockHistory named by INTITULE, NOEUD_CHOC or GROUP_NO_CHOC."""
-    mesh = result.basis.numbering.mesh
     if kw.get("INTITULE") is not None:
         wanted = str(kw["INTITULE"]).strip()
         matches = [s for s in result.shocks if s.name.strip() == wanted]
@@ -310,9 +309,12 @@ def find_shock(ctx, kw, result):
             if matches and kw.get("NOEUD_CHOC") is not None:
                 matches = [first_titled_on_node(ctx, kw, matches[0])]
         if not matches:  # code_aster 15's form of a relation's title
-            matches = shocks_titled_as_v15(ctx, kw, result, mesh)
+            matches = shocks_titled_as_v15(ctx, kw, result, shock_mesh(ctx, kw, result))
+        if matches and kw.get("SOUS_STRUC") is not None:
+            _check_titled_node(ctx, kw, result, matches[0])
     else:
         if kw.get("GROUP_NO_CHOC") is not None:
+            mesh = shock_mesh(ctx, kw, result)
             key = "GROUP_NO_CHOC"
             group = kw[key]
             if group not in mesh.node_groups:
@@ -402,15 +404,44 @@ def on_second_node(ctx, kw, shock) -> bool:
     if kw.get("NOEUD_CHOC") is not None:
         names = {str(kw["NOEUD_CHOC"])}
     elif kw.get("GROUP_NO_CHOC") is not None:
-        mesh = result_mesh(kw)
+        mesh = shock_mesh(ctx, kw, kw["RESU_GENE"])
         names = {mesh.node_names[int(i)] for i in mesh.node_groups.get(kw["GROUP_NO_CHOC"], ())}
     else:
         return False
     return shock.node_1 not in names and shock.node_2 in names
 
 
-def result_mesh(kw):
-    return kw["RESU_GENE"].basis.numbering.mesh
+def _check_titled_node(ctx, kw, result, shock) -> None:
+    """With INTITULE, code_aster only checks NOEUD_CHOC and SOUS_STRUC against
+    the relation it names (focrch's alarms): the substructure must exist, and
+    the node be the relation's and the substructure's."""
+    mesh = shock_mesh(ctx, kw, result)
+    node = kw.get("NOEUD_CHOC")
+    if node is None:
+        return
+    node = str(node)
+    if node not in (shock.node_1, shock.node_2) or node not in mesh.node_index:
+        ctx.log(
+            f"alarm: NOEUD_CHOC {node} of SOUS_STRUC {kw['SOUS_STRUC']} is not a node of "
+            f"the nonlinearity {shock.name.strip()}"
+        )
+
+
+def shock_mesh(ctx, kw, result):
+    """The mesh that names a nonlinearity's nodes: the basis's, or on a model
+    of substructures (a mode_gene basis) that of the substructure SOUS_STRUC."""
+    numbering = result.basis.numbering
+    mesh = getattr(numbering, "mesh", None)
+    if mesh is not None:
+        return mesh
+    name = kw.get("SOUS_STRUC")
+    if name is None:
+        ctx.error("the basis is a model of substructures: name the node's SOUS_STRUC", None, kw)
+    for sub in numbering.model.substructures:
+        if sub.name == name:
+            return sub.macro.mesh
+    known = ", ".join(sub.name for sub in numbering.model.substructures)
+    ctx.error(f"no substructure {name!r} in the generalized model ({known})", "SOUS_STRUC", kw)
 
 
 def from_shock(ctx, kw, result):

@@ -23,6 +23,7 @@ from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.harmonic import DynaHarmo, HarmGene
 from asterlite.concepts.modes import GeneralizedModes
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.post.harmonic import selection_from_keywords as frequency_selection
 from asterlite.post.restitution import (
     FIELDS,
     InstantSelection,
@@ -133,7 +134,6 @@ def restore_harmonic(ctx, kw, result, basis) -> DynaHarmo:
     by default), numbered 1..n; TOUT_CHAM gives DEPL, VITE and ACCE, NOM_CHAM
     (ACCE by default) some of them, which the harm_gene must hold. Also used
     by REST_SOUS_STRUC with the substructure's or skeleton's restored modes."""
-    from asterlite.post.harmonic import selection_from_keywords as frequency_selection
 
     if basis.n_modes != result.n_modes:
         ctx.error(

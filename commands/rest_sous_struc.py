@@ -9,6 +9,7 @@ machinery with the restored basis."""
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands.rest_gene_phys import chosen_modes, restore_harmonic, restore_transient
 
 from asterlite.concepts.harmonic import HarmGene
 from asterlite.concepts.modes import GeneralizedModes
@@ -46,8 +47,6 @@ def _restored(ctx, kw, modes, indices):
 
 
 def _modes(ctx, kw, modes):
-    from asterlite.commands.rest_gene_phys import chosen_modes
-
     names = [n for n in _names(kw.get("NOM_CHAM")) if n != "DEPL"]
     if names and kw.get("TOUT_CHAM") != "OUI":
         ctx.unsupported(f"NOM_CHAM={names[0]!r} of a mode_gene (DEPL only)", "NOM_CHAM", kw)
@@ -60,8 +59,6 @@ def _modes(ctx, kw, modes):
 
 
 def _transient(ctx, kw, result):
-    from asterlite.commands.rest_gene_phys import restore_transient
-
     basis = result.basis
     if kw.get("MODE_MECA") is not None:
         basis = kw["MODE_MECA"]  # already restored on the skeleton / substructure
@@ -83,7 +80,6 @@ def _harmonic(ctx, kw, result):
     SOUS_STRUC or, rotated, on the SQUELETTE; computed on a mode_gene, the
     modes restored by REST_SOUS_STRUC given as MODE_MECA. NOM_CHAM defaults
     to ACCE when TOUT_CHAM is absent, as in code_aster's catalogue."""
-    from asterlite.commands.rest_gene_phys import restore_harmonic
 
     if kw.peek("TOUT_CHAM") is None and kw.peek("NOM_CHAM") is None:
         dict.__setitem__(kw, "NOM_CHAM", ("ACCE",))

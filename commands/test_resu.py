@@ -23,6 +23,7 @@ from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.errors import missing_name
 from asterlite.legacy.v15 import computes
 from asterlite.post.checks import record_check, reduce_values
+from asterlite.post.harmonic import frequency_indices
 from asterlite.post.restitution import (
     as_tuple,
     computed_fields,
@@ -169,7 +170,6 @@ def _frequency_index(ctx, occ, result) -> tuple[int, str]:
     """Index of the tested state of a harmonic result (NUME_ORDRE or FREQ,
     the frequency searched with the occurrence's PRECISION and CRITERE as
     for INST)."""
-    from asterlite.post.harmonic import frequency_indices
 
     if occ.get("FREQ") is None:
         return _state_index(ctx, occ, result.frequencies, result.order)

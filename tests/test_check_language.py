@@ -5,6 +5,7 @@ a kind; a deck is VALID (0), UNSUPPORTED (3) or INVALID (2)."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -233,3 +234,123 @@ def test_keyword_of_several_undetermined_blocks_takes_any_definition(tmp_path):
     assert not [f for f in check.findings if f.keyword.startswith("CALC_CHAMP")], [
         f.text() for f in check.findings
     ]
+
+
+def test_run_refuses_the_component_check_reports(tmp_path):
+    # run stops at the call with check's finding, before computing it
+    # (RECU_FONCTION would otherwise give an all-zero function for 'DQ')
+    from asterlite.runtime.runner import run_deck
+
+    sample = Path(__file__).parents[1] / "samples" / "friction_oscillator"
+    text = (sample / "friction_oscillator.comm").read_text()
+    text = text[: text.index("DEPLPHYS = ")]
+    text += (
+        "F = RECU_FONCTION(RESULTAT=MODES, NOM_CHAM='DEPL', GROUP_NO='N1',\n"
+        "                  NOM_CMP='DQ', TOUT_ORDRE='OUI')\nFIN()\n"
+    )
+    (tmp_path / "m.comm").write_text(text)
+    (tmp_path / "m.mail").write_text((sample / "friction_oscillator.mail").read_text())
+    (tmp_path / "m.export").write_text("F comm m.comm D 1\nF mail m.mail D 20\n")
+    report = run_deck(tmp_path / "m.export", tmp_path / "out")
+    assert report.exit_code == 2
+    assert "'DQ' is not a component of DEPL" in report.message
+    line = text.count("\n", 0, text.index("NOM_CMP='DQ'")) + 1
+    assert f"m.comm:{line}" in report.message, report.message
+
+
+def test_a_file_associated_without_a_unit_gets_a_free_one(tmp_path):
+    # code_aster's ulnume: the highest free unit of 99..70, returned by DEFI_FICHIER
+    from asterlite.runtime.runner import run_deck
+
+    path = deck(
+        tmp_path,
+        "T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0, 2.0)))\n"
+        "U = DEFI_FICHIER(ACTION='ASSOCIER', FICHIER='t.txt')\n"
+        "V = DEFI_FICHIER(ACTION='ASSOCIER', FICHIER='v.txt')\n"
+        "IMPR_TABLE(UNITE=U, TABLE=T)\n"
+        "DEFI_FICHIER(ACTION='LIBERER', UNITE=U)\n"
+        "W = CREA_TABLE(LISTE=_F(PARA='U', LISTE_I=(U, V)))\n"
+        "TEST_TABLE(TABLE=W, NOM_PARA='U', TYPE_TEST='SOMM', VALE_CALC_I=197,\n"
+        "           REFERENCE='ANALYTIQUE', VALE_REFE_I=197)\n",
+    )
+    assert kinds(check_deck(path)) == []
+    report = run_deck(path, tmp_path / "out")
+    assert report.status == "PASS", report.message
+    assert "X" in (tmp_path / "out" / "t.txt").read_text()
+
+
+def test_a_unit_the_decks_own_python_may_have_written_is_not_judged(tmp_path):
+    # open() is refused (UNSUPPORTED); what it wrote (fort.86) check cannot know
+    read = "F = LIRE_FONCTION(UNITE=86, NOM_PARA='INST', INDIC_PARA=(1, 1), INDIC_RESU=(1, 2))\n"
+    writes = "def write(unit):\n    open('fort.%d' % unit, 'w').write('0 1')\n\nwrite(86)\n"
+    invalid = [f.keyword for f in check_deck(deck(tmp_path, read, "r.comm")).findings]
+    assert invalid == ["LIRE_FONCTION"]
+    found = kinds(check_deck(deck(tmp_path, writes + read, "w.comm")))
+    assert found == [("unsupported", "")], found
+
+
+@pytest.mark.parametrize(
+    ("version", "call", "expected"),
+    [
+        (17, "FIN(exit=True)", []),
+        (17, "FIN(atexit=True)", []),
+        (15, "FIN(exit=True)", []),
+        (15, "FIN(atexit=True)", [("invalid", "FIN/atexit")]),  # 15's wrapper takes exit only
+        (11, "FIN(exit=True)", [("invalid", "FIN/exit")]),
+    ],
+)
+def test_arguments_fin_takes_before_its_syntax_is_checked(tmp_path, version, call, expected):
+    from asterlite.runtime.runner import run_deck
+
+    path = tmp_path / "f.comm"
+    path.write_text(f"DEBUT()\n{call}\nraise RuntimeError('after FIN')\n")
+    assert kinds(check_deck(path, aster_version=version)) == expected
+    if version == 17:  # asterlite's FIN ends the deck: what follows is never run
+        assert run_deck(path, tmp_path / "out").status == "DONE"
+
+
+def test_a_list_filled_by_a_statement_check_could_not_finish_is_unknown(tmp_path):
+    # the loop stops at eval (not provided): MODELS[i] was maybe assigned, so
+    # MODELS is unknown, not the [None] it was made as
+    path = deck(
+        tmp_path,
+        "MODELS = [None] * 2\n"
+        "for i in range(2):\n"
+        "    x = eval('1.0')\n"
+        "    MODELS[i] = i\n"
+        "T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=MODELS[0]))\n",
+    )
+    assert ("invalid", "CREA_TABLE/LISTE[1]/LISTE_R") not in kinds(check_deck(path))
+    assert [kind for kind, _ in kinds(check_deck(path))] == ["unsupported-python"]
+
+
+@pytest.mark.parametrize(("version", "expected"), [(15, []), (17, [("invalid", "IMPR_TABLE/TRI")])])
+def test_a_factor_keyword_without_max_takes_one_occurrence_from_16_on(tmp_path, version, expected):
+    # code_aster 15's SyntaxChecker: no max means any number; 17's: one
+    path = deck(
+        tmp_path,
+        "T = CREA_TABLE(LISTE=(_F(PARA='A', LISTE_R=(1.0, 2.0)),\n"
+        "                      _F(PARA='B', LISTE_R=(3.0, 4.0))))\n"
+        "IMPR_TABLE(TABLE=T, TRI=(_F(NOM_PARA='A'), _F(NOM_PARA='B')))\n",
+    )
+    found = [k for k in kinds(check_deck(path, aster_version=version)) if k[0] == "invalid"]
+    assert found == expected
+
+
+@pytest.mark.parametrize(
+    "flow",
+    [
+        "if x == 0:\n    V = 1.0\nelif x == 1:\n    V = 2.0\n",
+        "while x < 3:\n    V = 1.0\n    x = x + 1\n",
+    ],
+)
+def test_names_bound_under_a_condition_check_cannot_compute_are_unknown(tmp_path, flow):
+    # x is not computed (eval is not provided): either branch may run, so V may
+    # be bound; check runs neither and judges nothing that uses V
+    path = deck(
+        tmp_path,
+        "x = eval('1')\nV = None\n"
+        + flow
+        + "T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=V))\nraise ValueError('not reached?')\n",
+    )
+    assert [kind for kind, _ in kinds(check_deck(path))] == ["unsupported-python"] * 2

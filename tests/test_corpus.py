@@ -9,9 +9,13 @@ from pathlib import Path
 
 import pytest
 
-from asterlite.runtime.corpus import find_decks, run_corpus
+from asterlite.runtime.corpus import find_decks
 from asterlite.runtime.runner import run_deck
-from tests.conftest import CORPUS, corpus_decks
+from tests.conftest import CORPUS, corpus_decks, corpus_rows
+
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
 
 BASELINE = Path(__file__).with_name("corpus_baseline.json")
 
@@ -42,7 +46,7 @@ def test_baseline_is_sorted_and_unique():
 @pytest.mark.corpus
 def test_corpus_ratchet(corpus_dir, tmp_path):
     """Run the whole corpus; each baseline deck must still PASS."""
-    rows = run_corpus(corpus_dir, jobs=2, timeout=900)
+    rows = corpus_rows("aster-corpus")
     (tmp_path / "corpus.json").write_text(json.dumps({"decks": rows}, indent=1))
     status = {row["deck"]: row for row in rows}
     assert len(rows) == 54

@@ -12,6 +12,10 @@ import pytest
 from asterlite.runtime.corpus import find_decks
 from tests.conftest import ROOT, corpus_rows
 
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
+
 NAME = "aster-corpus-dyna"
 BASELINE = Path(__file__).with_name("corpus_baseline_dyna.json")
 

@@ -4,12 +4,13 @@ SOLVEUR/NB_RHS) pass unmodified, every check at code_aster's tolerance."""
 
 from __future__ import annotations
 
-import json
-
 import pytest
 
-from asterlite.runtime.runner import run_deck
-from tests.conftest import ROOT
+from tests.conftest import ROOT, corpus_rows
+
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
 
 WIDER = ROOT.parent / "shared" / "aster-corpus-wider"
 
@@ -23,11 +24,10 @@ DECKS = {
 
 @pytest.mark.slow
 @pytest.mark.parametrize("deck", sorted(DECKS))
-def test_solid_deck_passes(deck, tmp_path):
-    export = WIDER / deck / f"{deck}.export"
-    if not export.is_file():
+def test_solid_deck_passes(deck):
+    # the folder's run of this session (tests/test_corpus_v15.py's ratchet shares it)
+    if not (WIDER / deck / f"{deck}.export").is_file():
         pytest.skip(f"../shared/aster-corpus-wider/{deck} is not available")
-    report = run_deck(export, tmp_path / deck)
-    summary = json.loads((tmp_path / deck / "summary.json").read_text())
-    assert report.status == "PASS", report.message
-    assert summary["checks_ok"] == summary["strict_ok"] == DECKS[deck]
+    row = {row["deck"]: row for row in corpus_rows("aster-corpus-wider")}[deck]
+    assert row["status"] == "PASS", row["message"]
+    assert row["checks_ok"] == row["strict_ok"] == DECKS[deck]

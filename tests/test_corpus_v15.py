@@ -17,6 +17,10 @@ from asterlite.runtime.corpus import find_decks
 from asterlite.runtime.runner import run_deck
 from tests.conftest import ROOT, corpus_rows
 
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
+
 CORPUS_V15 = ROOT.parent / "shared" / "aster-corpus-v15"
 BASELINE = Path(__file__).with_name("corpus_baseline_v15.json")
 
@@ -64,15 +68,16 @@ def test_ported_deck_is_accepted_by_check(deck, corpus_v15, tmp_path):
 def test_ported_deck_runs_to_the_same_values(deck, corpus_v15, tmp_path):
     """The ported deck (with its version line where it relies on a code_aster 15
     behaviour no keyword expresses) gives the same TEST_* values as the deck as
-    written (issue 15: port and run share one translation)."""
+    written (issue 15: port and run share one translation). The deck as written
+    is the run of the folder's ratchet (one run of the folder per session)."""
     from tests.test_legacy_v11_port import _ported_copy
 
     export, _ = _ported_copy(deck, tmp_path / "ported", corpus=corpus_v15)
-    legacy = run_deck(corpus_v15 / deck / f"{deck}.export", tmp_path / "legacy_run")
-    assert legacy.status == "PASS", legacy.message
+    legacy = {row["deck"]: row for row in corpus_rows("aster-corpus-v15")}[deck]
+    assert legacy["status"] == "PASS", legacy["message"]
     ported = run_deck(export, tmp_path / "ported_run")
     assert ported.status == "PASS", ported.message
-    old = [(t.command, t.value) for t in legacy.tests]
+    old = [(command, value) for command, _label, value in legacy["tests"]]
     new = [(t.command, t.value) for t in ported.tests]
     assert [c for c, _ in old] == [c for c, _ in new]
     for (_, a), (_, b) in zip(old, new, strict=True):

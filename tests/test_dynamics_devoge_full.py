@@ -10,8 +10,9 @@ import math
 import numpy as np
 from scipy.linalg import expm
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import SchemeOptions, integrate
-from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, build_shocks
 
 MASS = np.diag([1.0, 2.0])
 STIFFNESS = np.array([[100.0, -20.0], [-20.0, 1800.0]])

@@ -22,15 +22,20 @@ step sequence, on which the first-order quantities DEPL and FORCE depend.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_dis_visc
 from scipy.linalg import expm
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.forces import acceleration, state_acceleration, total_force
 from asterlite.dynamics.integrate import SchemeOptions, integrate
 from asterlite.dynamics.laws import dis_visc, rk54
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.laws import kernel as LK
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+from tests.validated import relation
 
 M, KS, X0 = 1.0, 100.0, 0.01  # the mass on its spring, released from X0
 K1, K2, K3, C = 120.0, 10.0, 60.0, 1.7  # sdnd107e's Zener, with a linear dashpot
@@ -38,13 +43,17 @@ INSTANTS = np.linspace(0.05, 1.0, 20)
 
 
 def model(t_end=1.0, dt=1.0e-3):
-    params = dis_visc.prepare_dis_visc({"K1": K1, "K2": K2, "K3": K3, "C": C, "PUIS_ALPHA": 1.0})
+    params = dis_visc.prepare_dis_visc(
+        read_dis_visc(
+            relation("DIS_VISC", {"K1": K1, "K2": K2, "K3": K3, "C": C, "PUIS_ALPHA": 1.0})
+        )
+    )
     phi = np.array([[1.0], [0.0], [0.0]])
     spec = ShockSpec(
         name="V", obstacle_type="BI_PLAN_Y", node_1="N1", node_2="N2",
         coord_1=np.zeros(3), coord_2=np.array([1.0, 0.0, 0.0]), phi_1=phi,
         phi_2=np.zeros((3, 1)), norm_obst=np.array([1.0, 0.0, 0.0]), relation="DIS_VISC",
-        law=params, frame=np.eye(3),
+        law_code=LK.DIS_VISC, law=params, frame=np.eye(3),
     )  # fmt: skip
     system = LinearSystem(M * np.eye(1), KS * np.eye(1), np.zeros((1, 1)))
     return system, build_shocks([spec], system), tabulate_excitation(1, [], 0.0, t_end, dt / 2)
@@ -203,8 +212,10 @@ def test_relation_integration_ends_within_1e8_s_of_the_step_end():
     """rk5adp: a converged sub-step that ends within 1e-8 s of the end ends the
     integration, even short of it. A 5e-9 s step whose first try fails is
     integrated over its first converged sub-step only."""
-    zener = {"K1": 1.0, "K2": 1.0, "K3": 1.0, "C": 1.0e-9, "PUIS_ALPHA": 1.0}
-    params = dis_visc.prepare_dis_visc(zener)
+    zener = {"K1": 1.0, "K2": 1.0, "K3": 1.0, "C": 1.0, "PUIS_ALPHA": 1.0}
+    # a dashpot below the catalogue's smallest C (1e-8), given to the law directly
+    record = replace(read_dis_visc(relation("DIS_VISC", zener)), viscosity=1.0e-9)
+    params = dis_visc.prepare_dis_visc(record)
     model_params = params[dis_visc.P_MODEL : dis_visc.P_MODEL + 5]
     y0 = np.array([1.0, 0.0, 0.0, 0.0])
     rate = np.array([1.0e3, 0.0, 0.0])

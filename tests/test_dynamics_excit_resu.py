@@ -13,6 +13,7 @@ from asterlite.concepts.modes import GeneralizedMatrix, GeneralizedNumbering, Ge
 from asterlite.concepts.transient import TranGene
 from asterlite.errors import CommandError
 from tests.test_dynamics_vibra import kws, one_mode, run_vibra, vector
+from tests.validated import occurrence
 
 
 def two_modes(k1=400.0, k2=2500.0):
@@ -59,7 +60,8 @@ def history(basis, times, values):
 
 
 def resu(result, **extra):
-    return [kws("DYNA_VIBRA/EXCIT_RESU", RESULTAT=result, **extra)]
+    # the GENE transient's EXCIT_RESU, validated (COEF_MULT's default filled)
+    return [occurrence("EXCIT_RESU", dict(RESULTAT=result, **extra), block="b_excit_tran_mod")]
 
 
 @pytest.mark.parametrize("scheme", ["NEWMARK", "DIFF_CENTRE", "RUNGE_KUTTA_54", "DEVOGE"])

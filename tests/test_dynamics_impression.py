@@ -16,8 +16,8 @@ from asterlite.concepts.transient import ShockHistory
 from asterlite.errors import UnsupportedError
 from asterlite.io import relation_history as RH
 from asterlite.io import shock_listing as SL
+from asterlite.io.export import RunDescription, describe_run
 from asterlite.runtime.context import CommandContext
-from asterlite.runtime.export import RunDescription, describe_run
 from asterlite.runtime.runner import run_deck
 from asterlite.runtime.session import Session
 

@@ -4,13 +4,17 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_dis_visc
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.laws import dis_visc, rela_effo_depl
+from asterlite.dynamics.laws import kernel as LK
 from asterlite.dynamics.laws.kernel import V_TIME
 from asterlite.dynamics.laws.tabulated import pack
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
+from tests.validated import relation
 
 
 def one_mode(k=100.0):
@@ -25,8 +29,8 @@ def spring_spec(k_extra, left="LINEAIRE", right="LINEAIRE", points=(-1.0, 1.0)):
     return ShockSpec(
         name="R", obstacle_type="PLAN_Y", node_1="N1", node_2=None,
         coord_1=np.zeros(3), coord_2=None, phi_1=phi, phi_2=None,
-        norm_obst=np.array([1.0, 0.0, 0.0]), relation="RELA_EFFO_DEPL", law=law,
-        rphi_1=np.zeros((3, 1)),
+        norm_obst=np.array([1.0, 0.0, 0.0]), relation="RELA_EFFO_DEPL",
+        law_code=LK.RELA_EFFO_DEPL, law=law, rphi_1=np.zeros((3, 1)),
     )  # fmt: skip
 
 
@@ -58,13 +62,15 @@ def test_exclu_domain_stops_the_run_naming_the_law():
 def test_dis_visc_state_follows_the_steps():
     """DIS_VISC between the mode's node and a fixed node: the stored state is
     the one of the last evaluation instant (V_TIME)."""
-    params = dis_visc.prepare_dis_visc({"K1": 120.0, "K2": 10.0, "K3": 60.0, "C": 1.7})
+    params = dis_visc.prepare_dis_visc(
+        read_dis_visc(relation("DIS_VISC", {"K1": 120.0, "K2": 10.0, "K3": 60.0, "C": 1.7}))
+    )
     phi = np.array([[1.0], [0.0], [0.0]])
     spec = ShockSpec(
         name="V", obstacle_type="BI_PLAN_Y", node_1="N1", node_2="N2",
         coord_1=np.zeros(3), coord_2=np.array([1.0, 0.0, 0.0]), phi_1=phi,
         phi_2=np.zeros((3, 1)), norm_obst=np.array([1.0, 0.0, 0.0]), relation="DIS_VISC",
-        law=params, frame=np.eye(3),
+        law_code=LK.DIS_VISC, law=params, frame=np.eye(3),
     )  # fmt: skip
     result = run(one_mode(100.0), [spec], "DIFF_CENTRE", t_end=0.1)
     assert result.vint.shape[2] > V_TIME

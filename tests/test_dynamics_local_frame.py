@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from asterlite.concepts.function import Formula
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import SchemeOptions, integrate, loop_kernel
-from asterlite.dynamics.model import tabulate_excitation
 
 from .test_dynamics_specialised import N_MODES, Table, assert_same_run, small_shock_problem
 

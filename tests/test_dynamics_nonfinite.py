@@ -142,14 +142,14 @@ def test_a_shock_force_is_named():
         specs = [
             ShockSpec(name="STOP", obstacle_type="PLAN_Y", node_1="N7", node_2=None,
                       coord_1=np.zeros(3), coord_2=None, phi_1=np.zeros((3, 1)), phi_2=None,
-                      norm_obst=np.array([1.0, 0.0, 0.0]))
+                      norm_obst=np.array([1.0, 0.0, 0.0]), source="COMPORTEMENT[2]")
         ]  # fmt: skip
 
     vint = np.zeros((1, 20))
     assert diagnosis.shock_culprit(Shocks(), vint) is None
     vint[0, 0] = np.nan
     culprit = diagnosis.shock_culprit(Shocks(), vint)
-    assert culprit.path == "COMPORTEMENT" and "'STOP' (node N7)" in culprit.text
+    assert culprit.path == "COMPORTEMENT[2]" and "'STOP' (node N7)" in culprit.text
     assert "FN=nan" in culprit.text
 
 
@@ -167,8 +167,9 @@ def test_state_text_lists_the_modes():
 def test_the_rotating_loop_stops_likewise(scheme):
     """VITESSE_VARIABLE='OUI' runs its own loop: a load jumping to 1e305 at
     0.1 s stops it at the first step past 0.1 s, naming the load."""
+    from asterlite.dynamics.excitation import tabulate_excitation
     from asterlite.dynamics.integrate import SchemeOptions, integrate
-    from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
+    from asterlite.dynamics.model import LinearSystem, build_shocks
     from asterlite.dynamics.rotation import Rotation
     from asterlite.errors import NumericalError
     from tests.test_dynamics_rotation_energy import Table, rotor

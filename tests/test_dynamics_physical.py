@@ -8,8 +8,9 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.dynamics.physical import diff_centre, newmark
 from asterlite.dynamics.physical.archive import Archive, archived_steps
 from asterlite.dynamics.physical.system import Load, PhysicalSystem
@@ -187,3 +188,16 @@ def test_mult_appui_support_motion_reaches_the_shock_node():
     rot = shocks.rots[0]
     expected = [(rot @ np.array([0.0, t, 0.0]))[1] for t in run.times]
     np.testing.assert_allclose(local_y, expected, atol=1e-12)
+
+
+def test_archive_of_known_size_never_grows_and_gives_views():
+    archive = Archive(2, capacity=3)
+    storage = archive.states
+    for k in range(3):
+        archive.add(float(k), np.full(2, k), np.full(2, -k), np.zeros(2))
+    assert archive.states is storage  # no reallocation: the capacity was exact
+    times, q, v, a = archive.arrays()
+    assert np.shares_memory(q, storage) and np.shares_memory(v, storage)
+    np.testing.assert_array_equal(q[:, 0], [0.0, 1.0, 2.0])
+    archive.add(3.0, np.ones(2), np.ones(2), np.ones(2))  # beyond it: grows, keeps the states
+    np.testing.assert_array_equal(archive.arrays()[1][:, 1], [0.0, 1.0, 2.0, 1.0])

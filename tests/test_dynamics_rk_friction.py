@@ -21,9 +21,10 @@ import pytest
 from asterlite.concepts.function import Formula
 from asterlite.dynamics import contact as C
 from asterlite.dynamics import scheme_runge_kutta as RK
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.forces import acceleration, state_acceleration, total_force
 from asterlite.dynamics.integrate import SchemeOptions, integrate
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 
 # the friction sample's oscillator: 2 kg on 8000 N/m, pressed on a PLAN_Y floor by
 # RIGI_NOR * 0.1 = M G, Coulomb 0.15, stick spring 4e5 N/m; forced at 0.8 W0

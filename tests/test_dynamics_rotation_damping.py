@@ -49,7 +49,7 @@ def runs(tmp_path_factory):
     M and K), without its crack, under the constant load MY = -1 at PAL_D."""
     if not SDNL133A.is_dir():
         pytest.skip("../shared/aster-corpus is not available")
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     folder = tmp_path_factory.mktemp("rotor_damping")

@@ -7,8 +7,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
-from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, build_shocks
 from asterlite.dynamics.physical import newmark
 from asterlite.dynamics.physical.archive import Archive
 from asterlite.dynamics.physical.energy import EnergyBalance

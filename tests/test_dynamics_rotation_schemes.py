@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import SchemeOptions, integrate
-from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, build_shocks
 from asterlite.dynamics.rotation import Rotation
 from asterlite.dynamics.schemes import TABLE
 from tests.test_dynamics_rotation_energy import Table, rotor

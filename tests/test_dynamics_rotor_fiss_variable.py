@@ -9,11 +9,13 @@ import math
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_rotor_fiss
 
 from asterlite.dynamics.laws import rotor_fiss as RF
 from asterlite.dynamics.laws.connections import rotor_frame
 from asterlite.dynamics.laws.tabulated import Curve
 from tests.conftest import CORPUS
+from tests.validated import relation
 
 FLAT = Curve([0.0, 2.0 * math.pi], [1.0, 1.0], "CONSTANT", "CONSTANT")
 ACCELERATION = 2000.0  # rad/s², the ramp Ω = ACC t, γ = ACC t² / 2
@@ -23,7 +25,17 @@ def test_angl_rota_function_gives_the_angle_and_the_speed_is_not_needed():
     """A DEFI_FONCTION ANGL_ROTA: γ(t) read on it (here 2 t, linear), the
     constant-speed parameters ignored."""
     law = RF.prepare_rotor_fiss(
-        dict(K_PHI=FLAT, DK_DPHI=FLAT, ANGL_INIT=45.0, ANGL_ROTA=Curve([0.0, 1.0], [0.0, 2.0])),
+        read_rotor_fiss(
+            relation(
+                "ROTOR_FISS",
+                dict(
+                    K_PHI=FLAT,
+                    DK_DPHI=FLAT,
+                    ANGL_INIT=45.0,
+                    ANGL_ROTA=Curve([0.0, 1.0], [0.0, 2.0]),
+                ),
+            )
+        ),
         variable_speed=True,
     )
     for t in (0.0, 0.25, 0.7):
@@ -71,7 +83,7 @@ def rotor_runs(tmp_path_factory):
     speed, and with a speed ramp."""
     if not SDNL133A.is_dir():
         pytest.skip("../shared/aster-corpus is not available")
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     folder = tmp_path_factory.mktemp("rotor")

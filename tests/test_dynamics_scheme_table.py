@@ -10,6 +10,8 @@ from pathlib import Path
 from asterlite.catalogues.dyna_vibra import GENE_DEFAULT_SCHEME, GENE_SCHEMES
 
 from asterlite.dynamics import schemes, warmup
+from asterlite.dynamics.integrate import scheme_run_loop
+from asterlite.dynamics.loop import scheme_loop
 
 ROOT = Path(__file__).resolve().parent.parent
 # where a scheme's name may still be written: its description, the tableaux of
@@ -28,9 +30,25 @@ ALLOWED = {
 def test_every_described_scheme_has_its_module_and_is_in_the_catalogue():
     for entry in schemes.TABLE:
         module = entry.implementation()
-        assert callable(module.prepare) and hasattr(module.run_loop, "py_func"), entry.name
+        assert callable(module.prepare) and hasattr(module.step, "py_func"), entry.name
         assert entry.name in GENE_SCHEMES
     assert GENE_DEFAULT_SCHEME in schemes.SCHEMES
+
+
+def test_each_loop_of_a_scheme_is_the_one_time_loop_or_its_fast_loop():
+    """A scheme's own loop is its module's fast_loop when it has one
+    (DIFF_CENTRE on diagonal and full matrices, NEWMARK), else the one time
+    loop around its step; its general path is always that time loop."""
+    fast = {"DIFF_CENTRE", "EULER", "NEWMARK"}
+    for entry in schemes.TABLE:
+        module = entry.implementation()
+        for loop in entry.loop_names():
+            run_loop = scheme_run_loop(entry, module, loop)
+            if entry.name in fast and loop != schemes.GENERAL_PATH.format(entry.kernel):
+                assert run_loop is module.fast_loop, (entry.name, loop)
+            else:
+                assert run_loop is scheme_loop(module.step), (entry.name, loop)
+    assert {e.name for e in schemes.TABLE if hasattr(e.implementation(), "fast_loop")} == fast
 
 
 def test_the_warmup_compiles_every_loop_of_the_table():

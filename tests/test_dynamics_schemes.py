@@ -155,13 +155,40 @@ def test_compiled_loops_are_cached_across_processes():
         "import numpy as np\n"
         "from asterlite.dynamics.integrate import integrate\n"
         "from asterlite.dynamics.schemes import SCHEMES\n"
-        "from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation\n"
+        "from asterlite.dynamics.excitation import tabulate_excitation\n"
+        "from asterlite.dynamics.model import LinearSystem, build_shocks\n"
         "s = LinearSystem(np.eye(1), np.eye(1), np.zeros((1, 1)))\n"
         "integrate(s, build_shocks([], s), tabulate_excitation(1, [], 0, 1, 0.1),\n"
         "          'DIFF_CENTRE', np.ones(1), np.zeros(1), 0.0, 1.0, 0.01, np.array([1.0]), 1)\n"
-        "loop = SCHEMES['DIFF_CENTRE'].implementation().run_loop\n"
+        "loop = SCHEMES['DIFF_CENTRE'].implementation().fast_loop\n"
         "print(sum(loop.stats.cache_hits.values()), sum(loop.stats.cache_misses.values()))\n"
     )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    hits, misses = (int(x) for x in out.stdout.split())
+    assert hits == 1 and misses == 0
+
+
+@pytest.mark.parametrize("scheme", ["ADAPT_ORDRE1", "NEWMARK"])
+def test_the_one_time_loop_is_cached_per_step_across_processes(scheme):
+    """loop.scheme_loop's loop around a scheme's step (its own loop, its
+    general path: here the general one, no 4th bundle) is cached like a
+    function of the step's module: a fresh process loads it (a loop taking
+    the step as an argument would be compiled again in every process)."""
+    code = (
+        "import numpy as np\n"
+        "from asterlite.dynamics.integrate import integrate\n"
+        "from asterlite.dynamics.loop import scheme_loop\n"
+        "from asterlite.dynamics.schemes import SCHEMES\n"
+        "from asterlite.dynamics.excitation import tabulate_excitation\n"
+        "from asterlite.dynamics.model import LinearSystem, build_shocks\n"
+        "s = LinearSystem(np.eye(1), np.eye(1), np.zeros((1, 1)))\n"
+        "integrate(s, build_shocks([], s), tabulate_excitation(1, [], 0, 1, 0.1),\n"
+        f"          {scheme!r}, np.ones(1), np.zeros(1), 0.0, 1.0, 0.01, np.array([1.0]), 1,\n"
+        "          specialised=False)\n"
+        f"loop = scheme_loop(SCHEMES[{scheme!r}].implementation().step)\n"
+        "print(sum(loop.stats.cache_hits.values()), sum(loop.stats.cache_misses.values()))\n"
+    )
+    subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     hits, misses = (int(x) for x in out.stdout.split())
     assert hits == 1 and misses == 0
@@ -189,16 +216,12 @@ def test_stage_stability_radius_of_the_tableaux():
 
 def test_kernel_damping_cap_matches_the_named_limit():
     """The step cap the RUNGE_KUTTA_* and DEVOGE kernels compute from their
-    model equals model.shock_damping_limit (the number checked_step names):
+    model equals step_limits.shock_damping_limit (the number checked_step names):
     modal damping counted for the Runge-Kutta stages, not for DEVOGE
     (implicit there); no cap without shock damping."""
     from asterlite.dynamics.adapt_control import shock_damping_step
-    from asterlite.dynamics.model import (
-        LinearSystem,
-        ShockSpec,
-        build_shocks,
-        shock_damping_limit,
-    )
+    from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+    from asterlite.dynamics.step_limits import shock_damping_limit
 
     mass = np.diag([2.0, 0.5])
     stiffness = np.diag([4.0e4, 9.0e6])

@@ -8,10 +8,11 @@ import numpy as np
 import pytest
 
 from asterlite.concepts.function import Formula
-from asterlite.dynamics import model as M
+from asterlite.dynamics import excitation as EX
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.formula import formula_program, program_tables, run_program
 from asterlite.dynamics.integrate import integrate
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 
 N_MODES = 4
 
@@ -136,7 +137,7 @@ def test_sampled_multiplier_windows_give_the_same_run(monkeypatch):
     the driver tabulates the next one) gives exactly the run of one window."""
     system, shocks, vectors = small_shock_problem()
     whole = run(system, shocks, vectors, specialised=True, t_end=0.05, sampled=True)
-    monkeypatch.setattr(M, "SAMPLES_PER_WINDOW", 64)
+    monkeypatch.setattr(EX, "SAMPLES_PER_WINDOW", 64)
     windows = run(system, shocks, vectors, specialised=True, t_end=0.05, sampled=True)
     general = run(system, shocks, vectors, specialised=False, t_end=0.05, sampled=True)
     assert_same_run(windows, whole, rtol=0.0)
@@ -145,7 +146,7 @@ def test_sampled_multiplier_windows_give_the_same_run(monkeypatch):
 
 def test_sampled_multiplier_memory_does_not_grow_with_the_run():
     excitation = tabulate_excitation(2, [(np.ones(2), Sampled())], 0.0, 100.0, 1.0e-5)
-    assert excitation.abscissas.size <= M.SAMPLES_PER_WINDOW
+    assert excitation.abscissas.size <= EX.SAMPLES_PER_WINDOW
     assert excitation.pending[0] == 1
 
 

@@ -18,6 +18,7 @@ from asterlite.concepts.transient import Obstacle
 from asterlite.errors import NumericalError, UnsupportedError
 from asterlite.runtime.context import CommandContext
 from commands import defi_obstacle, dyna_vibra
+from tests.validated import occurrence
 
 ANG = math.cos(math.pi / 4.0)
 
@@ -81,7 +82,7 @@ def run_vibra(m, k, scheme, pas, t_end, etat=None, comportement=(), **extra):
             kws("DYNA_VIBRA/INCREMENT", PAS=pas, INST_FIN=t_end, VERI_PAS=extra.pop("veri", "OUI"))
         ],
         ETAT_INIT=[kws("DYNA_VIBRA/ETAT_INIT", **(etat or {}))] if etat else [],
-        COMPORTEMENT=[kws("DYNA_VIBRA/COMPORTEMENT", **c) for c in comportement],
+        COMPORTEMENT=[occurrence("COMPORTEMENT", c) for c in comportement],
         **extra,
     )
     return dyna_vibra.run(ctx(), kw)

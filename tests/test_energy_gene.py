@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 from asterlite.dynamics import energy as E
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import SchemeOptions, integrate
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from tests.conftest import SAMPLES
 
 ALL_SCHEMES = (
@@ -174,7 +175,7 @@ def test_elastic_impact_dissipates_nothing_and_the_oracle_flags_lagged_shock_for
 
 def friction_session(tmp_path, extra=""):
     """The friction sample with ENERGIE=_F() (and ``extra`` DYNA_VIBRA keywords)."""
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     folder = SAMPLES / "friction_oscillator"

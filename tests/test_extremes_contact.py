@@ -491,13 +491,8 @@ def test_step_refusal_names_the_tangential_stiffness(tmp_path):
 
 
 def test_stability_limit_matches_the_period_and_rounds_steps():
-    from asterlite.dynamics.model import (
-        LinearSystem,
-        build_shocks,
-        stability_limit,
-        stability_period,
-        suggested_step,
-    )
+    from asterlite.dynamics.model import LinearSystem, build_shocks
+    from asterlite.dynamics.step_limits import stability_limit, stability_period, suggested_step
 
     system = LinearSystem(np.diag([1.0, 2.0]), np.diag([1.0e4, 8.0e4]), np.zeros((2, 2)))
     assert stability_limit(system, build_shocks([], system)).mode == 2

@@ -192,11 +192,12 @@ def test_shear_centre_offset_is_a_change_of_reference_point():
     k0 = beam.local_matrices("POU_D_T", "K", 1.0, sec, E, NU)[0]
     k1 = beam.local_matrices("POU_D_T", "K", 1.0, off, E, NU)[0]
     assert np.allclose(k1, k1.T)
-    # twisting about the shear centre (EY, EZ from the centroid nodes) strains
-    # torsion only: the centroid moves by (v, w) = (EZ, -EY) rx
+    # code_aster's EY, EZ place the centroid (the nodes) relative to the shear
+    # centre: twisting about the shear centre strains torsion only, the
+    # centroid moving by (v, w) = (-EZ, EY) rx
     theta = 1e-3
     u = np.zeros(12)
-    u[[9, 7, 8]] = [theta, -0.02 * theta, -0.01 * theta]
+    u[[9, 7, 8]] = [theta, 0.02 * theta, 0.01 * theta]
     assert u @ k1 @ u == pytest.approx(G * sec["JX"] * theta**2, rel=1e-9)
     assert u @ k0 @ u > G * sec["JX"] * theta**2 * (1 + 1e-6)  # without offset: bending too
     m1 = beam.local_matrices("POU_D_T", "M", 1.0, off, E, NU, RHO)[0]
@@ -411,3 +412,38 @@ def test_zero_length_and_unknown_inputs():
         beam.global_matrices("POU_D_E", "K", [[0, 0, 0]], [[0, 0, 0]], sec, E, NU)
     with pytest.raises(beam.BeamError, match="not a straight beam"):
         beam.local_matrices("DIS_T", "K", 1.0, sec, E)
+
+
+def test_channel_with_shear_centre_offset_matches_code_aster():
+    """sdll400a of code_aster 17: a 7.5 m POU_D_E channel (EZ = -0.2215 m)
+    in 15 elements, its lateral displacement held at the shear centre at
+    both ends (DY - 0.2215 DRX = 0), DZ and DRY held: the coupled
+    bending-torsion frequencies of code_aster (VALE_CALC), to 1e-9."""
+    young, poisson, density, n, length = 2.07e11, 0.3, 7850.0, 15, 7.5
+    section = {"A": 6.117e-3, "IY": 5.022e-5, "IZ": 5.022e-5, "JX": 1.28e-7, "EY": 0.0}
+    section["EZ"] = -0.2215
+    x = np.linspace(0.0, length, n + 1)
+    ends = np.zeros((n, 3))
+    x1, x2 = ends.copy(), ends.copy()
+    x1[:, 0], x2[:, 0] = x[:-1], x[1:]
+    size = 6 * (n + 1)
+    k, m = np.zeros((size, size)), np.zeros((size, size))
+    for matrix, name in ((k, "K"), (m, "M")):
+        blocks = beam.global_matrices("POU_D_E", name, x1, x2, section, young, poisson, density)
+        for e, block in enumerate(blocks):
+            rows = np.arange(6 * e, 6 * e + 12)
+            matrix[np.ix_(rows, rows)] += block
+    relations = []
+    for node in range(n + 1):
+        for dof in (2, 4):  # DZ, DRY
+            relations.append(np.eye(size)[6 * node + dof])
+    for node in (0, n):
+        relations.append(np.eye(size)[6 * node])  # DX
+        support = np.zeros(size)
+        support[6 * node + 1], support[6 * node + 3] = 1.0, -0.2215  # DY - 0.2215 DRX
+        relations.append(support)
+    basis = scipy.linalg.null_space(np.array(relations))
+    omega2 = scipy.linalg.eigh(basis.T @ k @ basis, basis.T @ m @ basis, eigvals_only=True)
+    frequencies = np.sqrt(np.abs(omega2[1:6])) / (2 * np.pi)
+    code_aster = [3.7966934137, 7.451391005, 11.510857283, 15.502793726, 19.806054061]
+    np.testing.assert_allclose(frequencies, code_aster, rtol=1e-9)

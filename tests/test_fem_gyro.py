@@ -355,7 +355,7 @@ def test_rigi_meca_hyst_beam_material():
 
 def _front_end_of(corpus_dir, tmp_path, deck: str, mesh: str, stop: str) -> dict:
     """Run a corpus deck up to (not including) the line starting with ``stop``."""
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     text = (corpus_dir / deck / f"{deck}.comm").read_text()

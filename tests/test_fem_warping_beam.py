@@ -85,3 +85,65 @@ def test_vari_sect_with_equal_ends_is_the_constant_section():
     }
     tapered = dict(cara, R_FIN=0.03)
     assert uniform_varying_section("CERCLE", "HOMOTHETIQUE", tapered) is None
+
+
+def test_inclined_element_in_the_global_frame():
+    """An inclined POU_D_TG element turns its two vector triples per node with
+    the element's rotation and keeps GRX: its global stiffness has the local
+    one's eigenvalues, and on the 12 DOFs of POU_D_T (with JG = 0 and the
+    twist rows left out) it is POU_D_T's global stiffness."""
+    from asterlite.fem.beam import element_rotation, global_matrices, rotation_from_angles
+
+    x1, x2 = np.array([[0.0, 0.0, 0.0]]), np.array([[0.3, -0.4, 0.5]])
+    tg = global_matrices("POU_D_TG", "K", x1, x2, SECTION, E, NU)[0]
+    length = float(np.linalg.norm(x2 - x1))
+    local = local_matrices("POU_D_TG", "K", length, SECTION, E, NU)[0]
+    assert np.allclose(np.linalg.eigvalsh(tg), np.linalg.eigvalsh(local), rtol=1e-10, atol=1e-3)
+    r = element_rotation(rotation_from_angles(np.array([[0.2, -0.7, 0.4]])), 7)[0]
+    assert np.allclose(r @ r.T, np.eye(14), atol=1e-14)
+    assert r[6, 6] == r[13, 13] == 1.0 and np.count_nonzero(r[[6, 13]]) == 2
+    t = global_matrices("POU_D_T", "K", x1, x2, SECTION, E, NU)[0]
+    keep = [0, 1, 2, 7, 8, 9]  # translations: no torsion term reaches them
+    same = [0, 1, 2, 6, 7, 8]
+    assert np.allclose(tg[np.ix_(keep, keep)], t[np.ix_(same, same)], rtol=1e-12)
+
+
+def test_line_load_on_an_inclined_cantilever():
+    """FORCE_POUTRE on POU_D_TG cells: the consistent load of POU_D_T on the
+    translations and rotations, none on GRX; an inclined cantilever under a
+    uniform transverse load q deflects q L^4 / (8 E I) + q L^2 / (2 G A / AY)
+    at its tip (Timoshenko), as with POU_D_T."""
+    from types import SimpleNamespace
+
+    from asterlite.fem import loads
+    from asterlite.fem.beam import global_matrices
+
+    n, length, q = 8, 2.0, -1.0e3
+    direction = np.array([1.0, 1.0, 0.0]) / np.sqrt(2.0)
+    coords = np.outer(np.linspace(0.0, length, n + 1), direction)
+    mesh = SimpleNamespace(
+        coords=coords,
+        cell_nodes=[[e, e + 1] for e in range(n)],
+        cell_names=[f"E{e}" for e in range(n)],
+        cell_types=["SEG2"] * n,
+    )
+    model = SimpleNamespace(mesh=mesh, cell_modelisation={e: "POU_D_TG" for e in range(n)})
+    terms = loads.beam_force_terms(model, None, np.arange(n), {"FZ": q}, local=False)
+    names = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
+    size = 7 * (n + 1)
+    f = np.zeros(size)
+    for node, name, value in terms:
+        f[7 * node + names.index(name)] += value
+    assert not f[6::7].any()
+    assert f[2::7].sum() == pytest.approx(q * length, rel=1e-12)
+    k = np.zeros((size, size))
+    elements = global_matrices("POU_D_TG", "K", coords[:-1], coords[1:], SECTION, E, NU)
+    for e in range(n):
+        rows = np.arange(7 * e, 7 * e + 14)
+        k[np.ix_(rows, rows)] += elements[e]
+    free = np.arange(7, size)
+    u = np.linalg.solve(k[np.ix_(free, free)], f[free])
+    # an element in the horizontal plane bends about its local y axis under FZ
+    shear = G * SECTION["A"] / SECTION["AZ"]
+    exact = q * length**4 / (8 * E * SECTION["IY"]) + q * length**2 / (2 * shear)
+    assert u[7 * n + 2 - 7] == pytest.approx(exact, rel=1e-9)

@@ -11,7 +11,7 @@ import scipy.sparse as sp
 
 from asterlite.fem.constraints import eliminate
 from asterlite.harmonic import HarmonicLoad, derived_fields, load_matrix, modal, physical
-from asterlite.runtime.export import describe_run
+from asterlite.io.export import describe_run
 from asterlite.runtime.session import Session
 
 TWO_PI = 2.0 * np.pi

@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_words import transient_words
 from scipy.integrate import solve_ivp
 
+from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks, tabulate_excitation
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
 from asterlite.legacy import v11
 
@@ -80,7 +82,7 @@ def test_relaxation_does_not_change_the_converged_motion():
 
 
 def test_no_convergence_is_an_error():
-    with pytest.raises(NumericalError, match="NMAX_ITER=1"):
+    with pytest.raises(NumericalError, match="NMAX_ITER=1"), transient_words():
         film_run(max_iterations=1)
 
 

@@ -4,7 +4,13 @@ from __future__ import annotations
 
 import pytest
 
-from asterlite.errors import AsterliteError, CommandError, DeckRuntimeError, DeckSyntaxError
+from asterlite.errors import (
+    AsterliteError,
+    CommandError,
+    DeckRuntimeError,
+    DeckSyntaxError,
+    UnsupportedError,
+)
 from asterlite.lang import (
     CO,
     CallSite,
@@ -546,7 +552,10 @@ def test_concept_attributes_follow_deck_methods_and_deck_attributes():
     namespace["MODES"] = Concept()
     ns = run("n = MODES.getName()\nk = MODES.nbmodes\n", namespace)
     assert (ns["n"], ns["k"]) == ("MODES", 4)
-    assert "no attribute 'secret'" in deck_error("MODES.secret()", namespace=namespace).message
+    # a Python method outside deck_methods stays out of reach; on one of
+    # code_aster's objects that is asterlite's limit, said so (UNSUPPORTED)
+    with pytest.raises(UnsupportedError, match="does not provide code_aster's 'secret'"):
+        run("MODES.secret()", namespace)
 
 
 # -------------------------------------------------------------------- Unknown
@@ -625,7 +634,8 @@ def test_unknown_is_falsy_and_iterates_as_empty():
         "n += U\n",
         namespace=unknown_namespace(),
     )
-    assert ns["went"] == ["else"] and ns["a"] is Unknown and ns["b"] is Unknown
+    # if/while on Unknown: no branch runs, what they may change is Unknown
+    assert ns["went"] is Unknown and ns["a"] is Unknown and ns["b"] is Unknown
     assert ns["c"] == [] and len(ns["l"]) == 3 and ns["d"] == {"k": Unknown}
     assert ns["x"] == 2 and ns["n"] is Unknown
 

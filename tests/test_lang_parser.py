@@ -6,7 +6,7 @@ import pytest
 
 from asterlite.errors import DeckSyntaxError
 from asterlite.lang import Module, parse_deck, parse_expression
-from asterlite.lang.parser import decode_string_literal, node_position
+from asterlite.lang.tree_checks import decode_string_literal, node_position
 
 
 def statements(text: str) -> list:

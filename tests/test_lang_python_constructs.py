@@ -178,13 +178,26 @@ def test_code_aster_errors_of_commands_are_caught_as_aster_error():
     )
     assert found["message"] == "no file is mapped to logical unit 99"
     assert "MESH" not in found  # the failed call bound nothing
-    # asterlite does not tell code_aster's subclasses apart: the error goes on
+    # an error code_aster raises as AsterError only is not a SolverError: it goes on
     error = error_of(
         "try:\n    MESH = LIRE_MAILLAGE(UNITE=99)\nexcept CA_SolverError:\n    pass\n",
         CommandError,
         namespace=namespace,
     )
     assert "logical unit 99" in error.message
+
+    class EmptyBand(DeckCallable):
+        def deck_call(self, args, kwargs, site):
+            error = CommandError("no eigenmode found for this selection")
+            error.aster_exception = "SolverError"  # as CALC_MODES names it
+            raise error
+
+    namespace["CALC_MODES"] = EmptyBand()
+    found = run(
+        "try:\n    MODES = CALC_MODES()\nexcept CA_SolverError:\n    caught = 'solver'\n",
+        namespace,
+    )
+    assert found["caught"] == "solver"
     # code_aster's message identifiers are refused by name, not guessed
     error = error_of(
         "try:\n    LIRE_MAILLAGE(UNITE=99)\nexcept CA_AsterError as err:\n    i = err.id_message\n",

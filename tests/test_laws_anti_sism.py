@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_anti_sism, relation_words
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -14,12 +15,13 @@ from asterlite.dynamics.laws.anti_sism import (
     reference_distance,
 )
 from asterlite.dynamics.laws.tabulated import LawError
+from tests.validated import relation
 
 KW = dict(RIGI_K1=6.0e6, RIGI_K2=0.53e6, SEUIL_FX=1200.0, C=7.0e3, PUIS_ALPHA=0.2, DX_MAX=0.03)
 
 
 def elastic(kw):
-    return prepare_anti_sism(dict(kw, C=0.0))
+    return prepare_anti_sism(read_anti_sism(relation("ANTI_SISM", dict(kw, C=0.0))))
 
 
 def test_initial_stiffness_is_k1():
@@ -53,7 +55,7 @@ def test_force_is_odd_and_conservative_without_viscosity():
 def test_coulomb_like_damper_loop_area():
     """PUIS_ALPHA = 0: the viscous term is C sign(v); a cycle of amplitude A
     dissipates 4 A C, the elastic part gives back what it took."""
-    p = prepare_anti_sism(dict(KW, PUIS_ALPHA=0.0))
+    p = prepare_anti_sism(read_anti_sism(relation("ANTI_SISM", dict(KW, PUIS_ALPHA=0.0))))
     amplitude, c = 0.004, KW["C"]
     t = np.linspace(0.0, 2.0 * math.pi, 40001)
     d, v = amplitude * np.sin(t), amplitude * np.cos(t)
@@ -63,10 +65,10 @@ def test_coulomb_like_damper_loop_area():
 
 
 def test_prepare_errors_and_reference_distance():
-    with pytest.raises(LawError, match="DX_MAX"):
-        prepare_anti_sism(dict(KW, DX_MAX=0.0))
-    with pytest.raises(LawError, match="RIGI_K1"):
-        prepare_anti_sism(dict(KW, RIGI_K1=-1.0))
+    with pytest.raises(LawError, match="DX_MAX"), relation_words("ANTI_SISM"):
+        prepare_anti_sism(read_anti_sism(relation("ANTI_SISM", dict(KW, DX_MAX=0.0))))
+    with pytest.raises(LawError, match="RIGI_K1"), relation_words("ANTI_SISM"):
+        prepare_anti_sism(read_anti_sism(relation("ANTI_SISM", dict(KW, RIGI_K1=-1.0))))
     assert reference_distance([0, 0, 0], [0.0, 3.0, 4.0], info=2) == pytest.approx(5.0)
     assert reference_distance([0, 0, 0], [0.0, 3.0, 4.0], info=1) == pytest.approx(25.0)
 
@@ -79,7 +81,7 @@ def test_prepare_errors_and_reference_distance():
     st.floats(0.0, 1e4),
 )
 def test_finite_and_viscous_power_dissipative(d, v, alpha, c):
-    p = prepare_anti_sism(dict(KW, PUIS_ALPHA=alpha, C=c))
+    p = prepare_anti_sism(read_anti_sism(relation("ANTI_SISM", dict(KW, PUIS_ALPHA=alpha, C=c))))
     f = antiseismic_force(p, d, v)
     assert math.isfinite(f)
     viscous = f - antiseismic_force(p, d, 0.0)

@@ -4,9 +4,11 @@ import math
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_dis_ecro_trac
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from asterlite.concepts.function import Function
 from asterlite.dynamics.laws.dis_ecro_trac import (
     N_VINT,
     N_WORK,
@@ -19,15 +21,25 @@ from asterlite.dynamics.laws.dis_ecro_trac import (
     prepare_dis_ecro_trac,
 )
 from asterlite.dynamics.laws.discrete_hardening import N_Y
-from asterlite.dynamics.laws.tabulated import Curve, LawError
+from asterlite.dynamics.laws.tabulated import LawError
+from tests.validated import relation
 
 X = np.array([0.0, 0.01, 0.03, 0.08])
 F = np.array([0.0, 100.0, 140.0, 170.0])  # k = 1e4, hardening slopes decreasing
 K = 1.0e4
 
 
+def curve(parameter, x, y, left="EXCLU", right="EXCLU"):
+    """A DEFI_FONCTION of ``parameter`` (the relation wants DX for FX, DTAN for FTAN)."""
+    return Function(
+        abscissas=x, ordinates=y, NOM_PARA=parameter, PROL_GAUCHE=left, PROL_DROITE=right
+    )
+
+
 def axial(**kw):
-    return prepare_dis_ecro_trac(dict(FX=Curve(X, F), **kw))
+    return prepare_dis_ecro_trac(
+        read_dis_ecro_trac(relation("DIS_ECRO_TRAC", dict(FX=curve("DX", X, F), **kw)))
+    )
 
 
 def drive(params, path, component=0, dt=1.0e-3, strict=True):
@@ -75,7 +87,14 @@ def test_loop_energy_balance_transverse(hardening):
     """Work = ½|F|²/k (+ ½|X|²/H kinematic) + dissipated energy, along a
     closed in-plane loop; the loop area is the dissipation."""
     xs, fs = (X[:3], F[:3]) if hardening == "CINEMATIQUE" else (X, F)
-    p = prepare_dis_ecro_trac(dict(FTAN=Curve(xs, fs), ECROUISSAGE=hardening, RESI_INTE=1e-8))
+    p = prepare_dis_ecro_trac(
+        read_dis_ecro_trac(
+            relation(
+                "DIS_ECRO_TRAC",
+                dict(FTAN=curve("DTAN", xs, fs), ECROUISSAGE=hardening, RESI_INTE=1e-8),
+            )
+        )
+    )
     h = (fs[2] - fs[1]) / ((xs[2] - fs[2] / K) - (xs[1] - fs[1] / K))
     theta = np.linspace(0.0, 4.0 * math.pi, 4001)
     radius = 0.02
@@ -102,13 +121,27 @@ def test_loop_energy_balance_transverse(hardening):
 
 def test_curve_checks():
     with pytest.raises(LawError, match="slopes must decrease"):
-        prepare_dis_ecro_trac(dict(FX=Curve(X, [0.0, 100.0, 110.0, 200.0])))
+        prepare_dis_ecro_trac(
+            read_dis_ecro_trac(
+                relation("DIS_ECRO_TRAC", dict(FX=curve("DX", X, [0.0, 100.0, 110.0, 200.0])))
+            )
+        )
     with pytest.raises(LawError, match=r"first point must be \(0, 0\)"):
-        prepare_dis_ecro_trac(dict(FX=Curve(X + 0.01, F)))
+        prepare_dis_ecro_trac(
+            read_dis_ecro_trac(relation("DIS_ECRO_TRAC", dict(FX=curve("DX", X + 0.01, F))))
+        )
     with pytest.raises(LawError, match="exactly 3 points"):
-        prepare_dis_ecro_trac(dict(FTAN=Curve(X, F), ECROUISSAGE="CINEMATIQUE"))
+        prepare_dis_ecro_trac(
+            read_dis_ecro_trac(
+                relation("DIS_ECRO_TRAC", dict(FTAN=curve("DTAN", X, F), ECROUISSAGE="CINEMATIQUE"))
+            )
+        )
     with pytest.raises(LawError, match="EXCLU"):
-        prepare_dis_ecro_trac(dict(FX=Curve(X, F, "CONSTANT", "EXCLU")))
+        prepare_dis_ecro_trac(
+            read_dis_ecro_trac(
+                relation("DIS_ECRO_TRAC", dict(FX=curve("DX", X, F, "CONSTANT", "EXCLU")))
+            )
+        )
 
 
 def test_beyond_the_last_point_is_reported():

@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_flambage
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -18,6 +19,8 @@ from asterlite.dynamics.laws.flambage import (
     prepare_flambage,
 )
 from asterlite.dynamics.laws.tabulated import LawError
+from asterlite.errors import ValidationError
+from tests.validated import relation
 
 # sdnd105a's support: K = 1, buckling at 1, post-buckling force 0.5, reached
 # crushing 1 with stiffness 0.5
@@ -34,7 +37,11 @@ LEGACY = dict(
 
 def support(criterion="INCLUS", **changes):
     fx, rigi, amor = legacy_buckling_curves(**dict(LEGACY, **changes))
-    return prepare_flambage(dict(FX=fx, RIGI_NOR=rigi, AMOR_NOR=amor, CRIT_AMOR=criterion))
+    return prepare_flambage(
+        read_flambage(
+            relation("FLAMBAGE", dict(FX=fx, RIGI_NOR=rigi, AMOR_NOR=amor, CRIT_AMOR=criterion))
+        )
+    )
 
 
 def drive(params, penetrations, velocities=None):
@@ -81,11 +88,11 @@ def test_plateau_width_before_the_drop():
 def test_damping_included_or_excluded_from_the_threshold():
     fx, rigi, amor = legacy_buckling_curves(**LEGACY, amor_nor=0.2, amor_fl=0.2)
     kw = dict(FX=fx, RIGI_NOR=rigi, AMOR_NOR=amor)
-    state = initial_state(prepare_flambage(dict(kw, CRIT_AMOR="INCLUS")))
-    included = buckling_force(prepare_flambage(dict(kw, CRIT_AMOR="INCLUS")), -0.9, -1.0, state,
-                              state.copy())  # fmt: skip
-    excluded = buckling_force(prepare_flambage(dict(kw, CRIT_AMOR="EXCLUS")), -0.9, -1.0, state,
-                              state.copy())  # fmt: skip
+    inclusive = prepare_flambage(read_flambage(relation("FLAMBAGE", dict(kw, CRIT_AMOR="INCLUS"))))
+    exclusive = prepare_flambage(read_flambage(relation("FLAMBAGE", dict(kw, CRIT_AMOR="EXCLUS"))))
+    state = initial_state(inclusive)
+    included = buckling_force(inclusive, -0.9, -1.0, state, state.copy())
+    excluded = buckling_force(exclusive, -0.9, -1.0, state, state.copy())
     assert included == pytest.approx(1.0)  # 0.9 + 0.2 capped at the threshold
     assert excluded == pytest.approx(1.1)  # elastic part below the threshold, damping on top
 
@@ -114,11 +121,14 @@ def test_dynamic_buckling_of_a_unit_mass():
 
 def test_prepare_errors():
     fx, rigi, amor = legacy_buckling_curves(**LEGACY)
-    with pytest.raises(LawError, match="RIGI_NOR"):
-        prepare_flambage(dict(FX=fx, AMOR_NOR=amor))
+    # a missing stiffness function: the catalogue's refusal, named
+    with pytest.raises(ValidationError, match="RIGI_NOR: missing mandatory keyword"):
+        relation("FLAMBAGE", dict(FX=fx, AMOR_NOR=amor))
     bad = type(rigi)(rigi.abscissas, -rigi.ordinates, "CONSTANT", "CONSTANT")
     with pytest.raises(LawError, match="stiffness"):
-        prepare_flambage(dict(FX=fx, RIGI_NOR=bad, AMOR_NOR=amor))
+        prepare_flambage(
+            read_flambage(relation("FLAMBAGE", dict(FX=fx, RIGI_NOR=bad, AMOR_NOR=amor)))
+        )
     with pytest.raises(LawError, match="increase"):
         legacy_buckling_curves(**dict(LEGACY, depl_post_fl=[0.5, 0.2], rigi_post_fl=[0.5, 0.5]))
 

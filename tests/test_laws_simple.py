@@ -4,18 +4,29 @@ import math
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import (
+    read_choc_elas_trac,
+    read_nodal_relation,
+    read_rotor_fiss,
+    relation_words,
+)
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from asterlite.concepts.mesh import Mesh
-from asterlite.dynamics.laws import RELATIONS, internal_variable_names
 from asterlite.dynamics.laws.choc_elas_trac import (
     V_FORCE,
     V_LENGTH,
     elastic_shock_force,
     prepare_choc_elas_trac,
 )
-from asterlite.dynamics.laws.connections import ConnectionError_, neighbour_of, rotor_frame
+from asterlite.dynamics.laws.connections import (
+    RELATIONS,
+    ConnectionError_,
+    internal_variable_names,
+    neighbour_of,
+    rotor_frame,
+)
 from asterlite.dynamics.laws.rela_effo_depl import (
     P_COMPONENT,
     prepare_rela_effo_depl,
@@ -28,6 +39,7 @@ from asterlite.dynamics.laws.rotor_fiss import (
     prepare_rotor_fiss,
 )
 from asterlite.dynamics.laws.tabulated import Curve, LawError
+from tests.validated import relation
 
 GALET = Curve(
     np.array([0.0, 2.0, 5.0, 7.0, 9.5, 10.0]) / 10.0,
@@ -38,7 +50,10 @@ GALET = Curve(
 
 
 def test_elastic_shock_only_in_compression():
-    p = prepare_choc_elas_trac(dict(FX=GALET, DIST_1=0.01, DIST_2=0.02), rest_distance=0.1)
+    p = prepare_choc_elas_trac(
+        read_choc_elas_trac(relation("CHOC_ELAS_TRAC", dict(FX=GALET, DIST_1=0.01, DIST_2=0.02))),
+        rest_distance=0.1,
+    )
     state = np.zeros(8)
     assert elastic_shock_force(p, 0.05, state) == 0.0
     assert state[V_LENGTH] == pytest.approx(0.12)
@@ -53,7 +68,9 @@ def test_elastic_shock_only_in_compression():
 @settings(max_examples=50, deadline=None)
 @given(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0))
 def test_elastic_shock_conservative_and_finite(a, b):
-    p = prepare_choc_elas_trac(dict(FX=GALET), rest_distance=0.0)
+    p = prepare_choc_elas_trac(
+        read_choc_elas_trac(relation("CHOC_ELAS_TRAC", dict(FX=GALET))), rest_distance=0.0
+    )
     state = np.zeros(8)
     grid = np.linspace(a, b, 2001)
     forces = np.array([elastic_shock_force(p, x, state) for x in grid])
@@ -63,23 +80,40 @@ def test_elastic_shock_conservative_and_finite(a, b):
 
 
 def test_relations_of_displacement_and_velocity():
-    p = prepare_rela_effo_depl(dict(NOM_CMP="DY", FONCTION=Curve([-1.0, 1.0], [2.0, -2.0])))
+    p = prepare_rela_effo_depl(
+        read_nodal_relation(
+            relation("RELA_EFFO_DEPL", dict(NOM_CMP="DY", FONCTION=Curve([-1.0, 1.0], [2.0, -2.0])))
+        )
+    )
     assert p[P_COMPONENT] == 1.0
     state = np.zeros(3)
     assert relation_force(p, 0.25, state) == pytest.approx(-0.5)
     assert tuple(state) == pytest.approx((0.25, -0.5, 1.0))
     assert math.isnan(relation_force(p, 2.0, state))  # EXCLU
     assert relation_force(p, 0.0, state) == 0.0 and state[2] == 0.0
-    p = prepare_rela_effo_vite(dict(NOM_CMP="DRZ", FONCTION=Curve([0.0, 1.0], [0.0, 3.0])))
+    p = prepare_rela_effo_vite(
+        read_nodal_relation(
+            relation("RELA_EFFO_VITE", dict(NOM_CMP="DRZ", FONCTION=Curve([0.0, 1.0], [0.0, 3.0])))
+        )
+    )
     assert p[P_COMPONENT] == 5.0
-    with pytest.raises(LawError, match="NOM_CMP"):
-        prepare_rela_effo_vite(dict(NOM_CMP="TEMP", FONCTION=Curve([0.0, 1.0], [0.0, 3.0])))
+    with pytest.raises(LawError, match="NOM_CMP"), relation_words("RELA_EFFO_VITE"):
+        prepare_rela_effo_vite(
+            read_nodal_relation(
+                relation(
+                    "RELA_EFFO_VITE", dict(NOM_CMP="TEMP", FONCTION=Curve([0.0, 1.0], [0.0, 3.0]))
+                )
+            )
+        )
 
 
 def rotor(k=2.0, dk=0.0, **kw):
     k_phi = Curve([0.0, 2.0 * math.pi], [k, k], "CONSTANT", "CONSTANT")
     dk_dphi = Curve([0.0, 2.0 * math.pi], [dk, dk], "CONSTANT", "CONSTANT")
-    return prepare_rotor_fiss(dict(K_PHI=k_phi, DK_DPHI=dk_dphi, **kw), rotation_speed=3.0)
+    return prepare_rotor_fiss(
+        read_rotor_fiss(relation("ROTOR_FISS", dict(K_PHI=k_phi, DK_DPHI=dk_dphi, **kw))),
+        rotation_speed=3.0,
+    )
 
 
 def test_uncracked_rotor_is_a_rotational_spring_orthogonal_to_the_axis():
@@ -142,8 +176,8 @@ def test_rotor_axis_runs_from_the_neighbour_of_g_to_the_neighbour_of_d(direction
 
 def test_rotor_axis_neighbour_rule_and_missing_neighbour():
     mesh = rotor_mesh((0.0, 1.0, 0.0))
-    assert neighbour_of(mesh, 3, 2, "GROUP_NO_D") == 4  # first node of M3: its second node
-    assert neighbour_of(mesh, 2, 3, "GROUP_NO_G") == 1  # second node of M2: its first node
+    assert neighbour_of(mesh, 3, 2, 0) == 4  # first node of M3: its second node
+    assert neighbour_of(mesh, 2, 3, 1) == 1  # second node of M2: its first node
     lone = Mesh(
         coords=np.zeros((2, 3)), node_names=["N1", "N2"], cell_names=["M1"],
         cell_types=["SEG2"], cell_nodes=[(0, 1)],
@@ -153,8 +187,12 @@ def test_rotor_axis_neighbour_rule_and_missing_neighbour():
 
 
 def test_registry():
-    for name, module in RELATIONS.items():
-        assert len(internal_variable_names(name)) == module.N_VINT
-    with pytest.raises(LawError, match="ANGL_ROTA"):
-        prepare_rotor_fiss(dict(K_PHI=Curve([0.0, 1.0], [1.0, 1.0]), DK_DPHI=Curve([0.0, 1.0],
-                           [0.0, 0.0])), variable_speed=True)  # fmt: skip
+    for name, entry in RELATIONS.items():
+        assert len(internal_variable_names(name)) == entry.module.N_VINT
+    with pytest.raises(LawError, match="ANGL_ROTA"), relation_words("ROTOR_FISS"):
+        flat = Curve([0.0, 1.0], [1.0, 1.0])
+        slope = Curve([0.0, 1.0], [0.0, 0.0])
+        prepare_rotor_fiss(
+            read_rotor_fiss(relation("ROTOR_FISS", dict(K_PHI=flat, DK_DPHI=slope))),
+            variable_speed=True,
+        )

@@ -20,6 +20,7 @@ from pathlib import Path
 import pytest
 
 from asterlite.runtime.runner import run_deck
+from tests.conftest import corpus_rows
 from tests.test_legacy_decks import node_blind
 
 DECKS = Path(__file__).parent / "legacy_decks"
@@ -33,10 +34,13 @@ TWINS = {  # legacy twin -> corpus deck it translates
     "sdnd103a_v10": "sdnd103a",
     "sdld29a_v10": "sdld29a",
 }
-SLOW = {"sdnd100a_v10", "sdnd125c_v11"}  # over ~10 s for the two runs
 RELATIVE = 1.0e-9  # rounding only: the same arithmetic after translation
 
-pytestmark = pytest.mark.skipif(not CORPUS.is_dir(), reason="aster-corpus is absent")
+# xdist_group: see tests/test_corpus.py
+pytestmark = [
+    pytest.mark.skipif(not CORPUS.is_dir(), reason="aster-corpus is absent"),
+    pytest.mark.xdist_group("shared-corpus"),
+]
 
 
 def _run(export: Path, folder: Path):
@@ -49,20 +53,26 @@ def _checked(report) -> list[tuple[str, str, float]]:
     return [(t.command, node_blind(t.label), t.value) for t in report.tests]
 
 
+def _corpus_run(deck: str) -> list[tuple[str, str, float]]:
+    """The corpus deck's TEST_* values from the folder's run of the session
+    (tests/test_corpus.py's ratchet): the deck is not run again."""
+    row = {row["deck"]: row for row in corpus_rows("aster-corpus")}[deck]
+    assert row["status"] == "PASS", f"{deck}: {row['message']}"
+    return [(command, node_blind(label), value) for command, label, value in row["tests"]]
+
+
 def test_every_twin_is_listed():
     """A legacy deck named after a corpus deck is compared here (or said not to be)."""
     named = {p.stem for p in DECKS.glob("*.export") if (CORPUS / p.stem.split("_v")[0]).is_dir()}
     assert named == set(TWINS) | {"sdnd105a_v10"}
 
 
-@pytest.mark.parametrize(
-    "twin",
-    [pytest.param(t, marks=pytest.mark.slow) if t in SLOW else t for t in TWINS],
-)
+@pytest.mark.slow  # compared with the corpus folder's run (all 54 decks, once a session)
+@pytest.mark.parametrize("twin", list(TWINS))
 def test_legacy_twin_matches_its_corpus_deck(twin, tmp_path):
     corpus = TWINS[twin]
     legacy = _checked(_run(DECKS / f"{twin}.export", tmp_path / "legacy"))
-    modern = _checked(_run(CORPUS / corpus / f"{corpus}.export", tmp_path / "corpus"))
+    modern = _corpus_run(corpus)
     assert modern, f"{corpus} records no TEST_* value"
     assert [(c, label) for c, label, _ in legacy] == [(c, label) for c, label, _ in modern]
     for (_, label, old), (_, _, new) in zip(legacy, modern, strict=True):
@@ -72,8 +82,7 @@ def test_legacy_twin_matches_its_corpus_deck(twin, tmp_path):
 @pytest.mark.slow
 def test_sdnd105a_v10_scalar_buckling_law_agrees_with_the_corpus_deck(tmp_path):
     legacy = _run(DECKS / "sdnd105a_v10.export", tmp_path / "legacy")
-    modern = _run(CORPUS / "sdnd105a" / "sdnd105a.export", tmp_path / "corpus")
-    values = {node_blind(t.label): t.value for t in modern.tests}
+    values = {label: value for _command, label, value in _corpus_run("sdnd105a")}
     compared = 0
     for test in legacy.tests:
         label = node_blind(test.label)

@@ -18,11 +18,11 @@ from asterlite.concepts.transient import ShockHistory, TranGene
 from asterlite.errors import CommandError, UnsupportedError
 from asterlite.lang import Evaluator, parse_deck
 from asterlite.lang.values import CO, Unknown
+from asterlite.legacy.v15_names import GeneratedNames
 from asterlite.post import deck_api
 from asterlite.runtime.deck_api import aster_module
 from asterlite.runtime.jeveux import getvectjev, split_name
 from asterlite.runtime.runner import run_deck
-from asterlite.runtime.v15_names import GeneratedNames
 
 from .test_post_support import small_transient
 

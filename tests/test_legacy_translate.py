@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_flambage
 
 from asterlite.catalog import load_catalogue, validate
 from asterlite.errors import ValidationError
@@ -10,6 +11,7 @@ from asterlite.lang.values import FactorDict, Unknown
 from asterlite.legacy import forms
 from asterlite.legacy.base import Env
 from asterlite.legacy.port import port_text
+from tests.validated import relation
 
 
 def translate(form, kwargs, command):
@@ -273,7 +275,11 @@ def test_flambage_curves_reproduce_the_legacy_scalar_law():
         return Curve(values[0::2], values[1::2], "CONSTANT", "CONSTANT")
 
     params = flambage.prepare_flambage(
-        {key: curve(behaviour[key]) for key in ("FX", "RIGI_NOR", "AMOR_NOR")}
+        read_flambage(
+            relation(
+                "FLAMBAGE", {key: curve(behaviour[key]) for key in ("FX", "RIGI_NOR", "AMOR_NOR")}
+            )
+        )
     )
     state = flambage.initial_state(params)
     x, v, dt, t, buckled_at = 0.0, 2.0, 2.0e-4, 0.0, None

@@ -18,7 +18,11 @@ from asterlite.legacy.version import (
     pragma_version,
 )
 from asterlite.runtime.runner import run_deck
-from tests.conftest import ROOT
+from tests.conftest import ROOT, corpus_rows
+
+# one pytest-xdist worker runs every test that reads a corpus folder's run
+# (tests.conftest.corpus_rows): each folder is run once a session, not once a worker
+pytestmark = pytest.mark.xdist_group("shared-corpus")
 
 CORPUS_V11 = ROOT.parent / "shared" / "aster-corpus-v11"
 
@@ -166,20 +170,21 @@ def test_ported_v11_deck_checks_and_runs_to_the_same_values(deck, tmp_path):
     numbers). Whether a deck passes is the ratchet's (tests/test_corpus_v15.py);
     a call port leaves as written is one the run refuses too."""
     export, result = _ported_copy(deck, tmp_path / "ported")
-    legacy = run_deck(CORPUS_V11 / deck / f"{deck}.export", tmp_path / "legacy_run")
+    # the deck as written: the folder's run of the session (the ratchet's)
+    legacy = {row["deck"]: row for row in corpus_rows("aster-corpus-v11")}[deck]
     if result.skipped:
-        assert legacy.status in ("UNSUPPORTED", "ERROR"), result.skipped
+        assert legacy["status"] in ("UNSUPPORTED", "ERROR"), result.skipped
         pytest.skip(f"{deck}: {result.skipped[0]}")
     ported_text = (tmp_path / "ported" / f"{deck}.comm").read_text()
     stated = pragma_version(ported_text)  # a behaviour only its version line keeps
     assert stated in (None, 11) and deck_version(ported_text) == CURRENT
     assert run_deck(export, check_only=True).status == "CHECKED"
-    if legacy.status != "PASS":
-        why = (legacy.message or "").splitlines()[:1] or [f"{legacy.checks_ok} checks OK"]
-        pytest.skip(f"{deck} does not pass as written: {legacy.status}, {why[0]}")
+    if legacy["status"] != "PASS":
+        why = legacy["message"] or f"{legacy['checks_ok']} checks OK"
+        pytest.skip(f"{deck} does not pass as written: {legacy['status']}, {why}")
     ported = run_deck(export, tmp_path / "ported_run")
     assert ported.status == "PASS", ported.message
-    old = [(t.command, t.value) for t in legacy.tests]
+    old = [(command, value) for command, _label, value in legacy["tests"]]
     new = [(t.command, t.value) for t in ported.tests]
     assert [c for c, _ in old] == [c for c, _ in new]
     for (_, a), (_, b) in zip(old, new, strict=True):

@@ -10,13 +10,15 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from asterlite.commands.dyna_vibra_relations import read_flambage, relation_words
 
 from asterlite.errors import AsterliteError
 from asterlite.lang import Evaluator, parse_deck, savetxt
 from asterlite.legacy.v15 import OLD_BEHAVIOURS, computes, relation_title
-from asterlite.runtime.v15_names import GeneratedNames, names_consumed
+from asterlite.legacy.v15_names import GeneratedNames, names_consumed
 from commands.post_dyna_moda_t import summed_times, truncated_window
 from commands.test_resu import _gene_state_index
+from tests.validated import relation
 
 # ------------------------------------------------------------------ versions
 
@@ -39,7 +41,7 @@ def scalar_law(**extra):
     from asterlite.dynamics.laws import flambage as FL
 
     kw = {"RIGI_NOR": 1.0, "FNOR_CRIT": 1.0, "FNOR_POST_FL": 0.5, **extra}
-    params = FL.prepare_scalar_flambage(kw)
+    params = FL.prepare_scalar_flambage(read_flambage(relation("FLAMBAGE", kw)))
     return FL, params, FL.initial_state(params)
 
 
@@ -74,7 +76,7 @@ def test_scalar_buckling_law_checks_its_data():
 
     with pytest.raises(LawError, match="same length"):
         scalar_law(DEPL_POST_FL=(2.0,))
-    with pytest.raises(LawError, match="RIGI_NOR"):
+    with pytest.raises(LawError, match="RIGI_NOR"), relation_words("FLAMBAGE"):
         scalar_law(RIGI_NOR=0.0)
 
 
@@ -82,8 +84,9 @@ def test_scalar_buckling_law_checks_its_data():
 
 
 def test_newmark_of_code_aster_15_takes_the_forces_of_the_steps_start():
+    from asterlite.dynamics.excitation import tabulate_excitation
     from asterlite.dynamics.integrate import SchemeOptions, integrate
-    from asterlite.dynamics.model import LinearSystem, build_shocks, tabulate_excitation
+    from asterlite.dynamics.model import LinearSystem, build_shocks
 
     class Ramp:  # F(t) = t on the single mode
         def evaluate(self, t):

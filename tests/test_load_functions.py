@@ -139,8 +139,56 @@ def test_onde_plane_is_kept_as_a_wave_and_refused_as_a_vector():
             "GROUP_MA": "BASE",
         },
     )
-    item = load.extra["ONDE_PLANE"]
+    (item,) = load.extra["ONDE_PLANE"]
     assert item["CELLS"].tolist() == mesh.cell_groups["BASE"].tolist()
     assert item["WAVE"].kind == "P" and item["WAVE"].source.tolist() == [0.0, 0.0, -1.0]
     with pytest.raises(UnsupportedError, match="ONDE_PLANE"):
         load_terms(load)
+
+
+def test_two_onde_plane_occurrences_add_their_histories():
+    from asterlite.concepts.assembly import Material, MaterialField, Model
+    from asterlite.fem.loads import load_history
+    from asterlite.fem.plane_wave import plane_wave_history
+    from tests.solid_meshes import box_mesh, with_side_faces
+
+    mesh = with_side_faces(box_mesh("HEXA8", n=(1, 1, 1)), {"BASE": (2, 0.0)})
+    modelisation = {c: "3D" for c in range(mesh.n_cells)}
+    modelisation.update({int(c): "3D_ABSO" for c in mesh.cell_groups["BASE"]})
+    model = Model(mesh=mesh, cell_modelisation=modelisation)
+    field = MaterialField(
+        mesh=mesh,
+        cell_material={
+            c: Material(behaviours={"ELAS": {"E": 3.0e10, "NU": 0.25, "RHO": 2450.0}})
+            for c in range(mesh.n_cells)
+        },
+    )
+    signal = Formula(VALE="sin(40*INST)", NOM_PARA=("INST",))
+    waves = [
+        {
+            "DIRECTION": (0.0, 0.0, 1.0),
+            "TYPE_ONDE": kind,
+            "FONC_SIGNAL": signal,
+            "COOR_SOURCE": (0.0, 0.0, -1.0),
+            "GROUP_MA": "BASE",
+        }
+        for kind in ("P", "SH")
+    ]
+    load = run(FakeSession(), "AFFE_CHAR_MECA_F", MODELE=model, ONDE_PLANE=waves)
+    times = np.linspace(0.0, 0.1, 11)
+    nodes, comps, values = load_history(load, field)(times)
+    total = {}
+    for item in load.extra["ONDE_PLANE"]:
+        n, c, v = plane_wave_history(model, field, item["CELLS"], item["WAVE"], times)
+        for k, key in enumerate(zip(n.tolist(), c, strict=True)):
+            total[key] = total.get(key, 0.0) + v[:, k]
+    summed = {}
+    for k, key in enumerate(zip(nodes.tolist(), comps, strict=True)):
+        summed[key] = summed.get(key, 0.0) + values[:, k]
+    assert len(load.extra["ONDE_PLANE"]) == 2
+    assert summed.keys() == total.keys()
+    assert all(np.allclose(summed[key], total[key]) for key in total)
+    # the SH wave moves the base sideways, the P wave up: both are there
+    horizontal = sum(np.abs(v).max() for (n, c), v in summed.items() if c != "DZ")
+    vertical = sum(np.abs(v).max() for (n, c), v in summed.items() if c == "DZ")
+    assert horizontal > 0.0 and vertical > 0.0

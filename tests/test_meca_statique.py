@@ -67,3 +67,28 @@ def test_reuse_is_refused():
     with pytest.raises(UnsupportedError, match="reuse"):
         run(session, "MECA_STATIQUE", MODELE=model, CHAM_MATER=field, CARA_ELEM=cara,
             RESULTAT=object(), EXCIT=[{"CHARGE": clamp}])  # fmt: skip
+
+
+def test_the_stress_field_code_aster_stores_unasked_is_unsupported_not_missing():
+    """code_aster's MECA_STATIQUE stores SIEF_ELGA by default; asterlite
+    computes it through CALC_CHAMP only: CREA_CHAMP of it is asterlite's
+    limit, said by name, not the deck's mistake."""
+    session, model, field, cara, clamp, tip = _setup()
+    result = run(
+        session,
+        "MECA_STATIQUE",
+        MODELE=model,
+        CHAM_MATER=field,
+        CARA_ELEM=cara,
+        EXCIT=[{"CHARGE": clamp}, {"CHARGE": tip}],
+    )
+    with pytest.raises(UnsupportedError, match="SIEF_ELGA of an evol_elas result"):
+        run(
+            session,
+            "CREA_CHAMP",
+            OPERATION="EXTR",
+            TYPE_CHAM="ELGA_SIEF_R",
+            RESULTAT=result,
+            NOM_CHAM="SIEF_ELGA",
+            NUME_ORDRE=1,
+        )

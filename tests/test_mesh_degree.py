@@ -80,3 +80,34 @@ def test_crea_maillage_keeps_the_original_mesh():
     assert mesh.cell_types[:2] == ["QUAD4", "QUAD4"] and mesh.n_nodes == 6
     assert quadratic.cell_types == ["QUAD8", "QUAD8", "SEG2", "POI1"]
     assert quadratic.n_nodes == 6 + 7
+
+
+def test_line_quad_names_nodes_as_code_aster_15_did():
+    # cmlqnd: PREF_NOEUD + PREF_NUME, PREF_NUME + 1... in the order the edges are met
+    mesh = _strip()
+    line_quad(mesh, range(4), prefix=("NS", 1))
+    assert mesh.node_names[6:] == [f"NS{i}" for i in range(1, 8)]
+    q1 = mesh.cell_nodes[0]
+    assert [mesh.node_names[n] for n in q1[4:]] == ["NS1", "NS2", "NS3", "NS4"]
+    with pytest.raises(ValueError, match="already has a node named 'N6'"):
+        line_quad(_strip(), range(4), prefix=("N", 6))
+
+
+def test_a_code_aster_15_deck_reads_the_prefixed_names(tmp_path):
+    from asterlite.runtime.check_deck import check_deck
+
+    (tmp_path / "m.mail").write_text(
+        "COOR_3D\nN1 0 0 0\nN2 1 0 0\nN3 1 1 0\nN4 0 1 0\nFINSF\n"
+        "QUAD4\nQ1 N1 N2 N3 N4\nFINSF\nFIN\n"
+    )
+    deck = tmp_path / "m.comm"
+    uses = "G = DEFI_GROUP(MAILLAGE=MA, CREA_GROUP_NO=_F(NOM='M', NOEUD='{}'))\n"
+    body = (
+        "DEBUT()\nMA0 = LIRE_MAILLAGE(FORMAT='ASTER')\n"
+        "MA = CREA_MAILLAGE(MAILLAGE=MA0, LINE_QUAD=_F(TOUT='OUI'))\n"
+    )
+    (tmp_path / "m.export").write_text("F comm m.comm D 1\nF mail m.mail D 20\n")
+    for name, known in (("NS4", True), ("NS5", False)):
+        deck.write_text(body + uses.format(name) + "FIN()\n")
+        found = [f.text() for f in check_deck(tmp_path / "m.export", aster_version=15).findings]
+        assert (not any(f"no node '{name}'" in text for text in found)) == known, found

@@ -112,6 +112,15 @@ def test_modal_line_with_every_mode_matches_the_physical_one(clamped_chain):
     )
 
 
+def test_rayleigh_damping_without_a_material_field_is_the_discrete_elements(clamped_chain):
+    """Without CHAM_MATER, code_aster's macro asks CALC_MATR_ELEM for the
+    damping of CARA_ELEM alone (its RIGI_MECA/MASS_MECA go with a material
+    field only): here the springs carry none, so the response is undamped."""
+    damped = _line(clamped_chain, "PHYS", AMORTISSEMENT={"TYPE_AMOR": "RAYLEIGH"})
+    undamped = _line(clamped_chain, "PHYS")
+    np.testing.assert_array_equal(damped.fields["DEPL"], undamped.fields["DEPL"])
+
+
 def test_static_enrichment_spans_the_static_response(clamped_chain):
     chain = clamped_chain
     for ortho in ("NON", "OUI"):

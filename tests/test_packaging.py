@@ -181,7 +181,9 @@ def test_readme_commands_use_a_virtual_environment():
         )
     sample = "samples/friction_oscillator/friction_oscillator.export"
     assert install.endswith(f"asterlite run {sample} -o out/friction_oscillator")
-    assert tests.endswith('pip install -e ".[test]" && asterlite warmup && python3 -m pytest -q')
+    assert tests.endswith(
+        'pip install -e ".[test]" && asterlite warmup && python3 -m pytest -q -n 2 --dist loadgroup'
+    )
     assert "pip install -e . && asterlite warmup && " in install  # no compile wait after
 
 

@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from asterlite.cli import main
+from asterlite.io.export import describe_run
 from asterlite.io.result_store import load_tran_gene, save_tran_gene
 from asterlite.post import plots
-from asterlite.runtime.export import describe_run
 from asterlite.runtime.session import Session
 
 SAMPLE = Path(__file__).resolve().parent.parent / "samples" / "friction_oscillator"

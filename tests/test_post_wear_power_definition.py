@@ -48,7 +48,7 @@ FIN()
 def friction_session(tmp_path_factory):
     """The friction oscillator sample (a mass sliding with Coulomb friction
     under a constant normal force) followed by POST_DYNA_MODA_T."""
-    from asterlite.runtime.export import describe_run
+    from asterlite.io.export import describe_run
     from asterlite.runtime.session import Session
 
     folder = tmp_path_factory.mktemp("friction")

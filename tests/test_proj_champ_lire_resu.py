@@ -238,3 +238,62 @@ def test_sdll113a_passes(tmp_path):
 
     result = run_deck(export, tmp_path / "out")
     assert result.status == "PASS"
+
+
+class Shift:
+    """A deck function of X, Y, Z: one coordinate plus an offset."""
+
+    nom_para = ("X", "Y", "Z")
+
+    def __init__(self, axis, offset=0.0):
+        self.name, self.axis, self.offset = f"F{axis}", axis, offset
+
+    def evaluate_many(self, x, y, z):
+        return (x, y, z)[self.axis] + self.offset
+
+
+class Constant:
+    """DEFI_CONSTANTE: a function of TOUTPARA."""
+
+    nom_para = ("TOUTPARA",)
+    name = "ZERO"
+
+    def evaluate_many(self, anything):
+        return np.zeros_like(anything)
+
+
+def test_vis_a_vis_transf_geom_2_cas_figure_and_prol_zero():
+    # mesh 2 lies one unit beyond mesh 1: TRANSF_GEOM_2 (X-1, Y, Z) brings its
+    # nodes back onto mesh 1, where DX = x (1 + t) is interpolated exactly
+    source = line([0.0, 0.5, 1.0])
+    target = line([1.25, 1.9, 3.5])
+    projected = run(
+        FakeSession(),
+        "PROJ_CHAMP",
+        PROJECTION="OUI",
+        METHODE="COLLOCATION",
+        RESULTAT=transient(source),
+        MAILLAGE_1=source,
+        MAILLAGE_2=target,
+        NOM_CHAM="DEPL",
+        INST=1.0,
+        CRITERE="RELATIF",
+        PRECISION=1e-6,
+        DISTANCE_MAX=0.1,
+        PROL_VALE=7.0,
+        PROL_ZERO="OUI",
+        VIS_A_VIS={
+            "GROUP_MA_1": "LINE",
+            "TOUT_2": "OUI",
+            "CAS_FIGURE": "1.5D",
+            "TRANSF_GEOM_2": (Shift(0, -1.0), Shift(1), Constant()),
+        },
+    )
+    values = projected.fields["DEPL"][0].reshape(-1, 2)
+    assert values[0, 0] == pytest.approx(2.0 * 0.25) and values[1, 0] == pytest.approx(1.8)
+    assert np.all(values[2] == 0.0)  # 1.5 beyond DISTANCE_MAX: PROL_ZERO wins over PROL_VALE
+    with pytest.raises(CommandError, match="no cell of dimension 2"):
+        run(FakeSession(), "PROJ_CHAMP", PROJECTION="OUI", METHODE="COLLOCATION",
+            RESULTAT=transient(source), MAILLAGE_1=source, MAILLAGE_2=target,
+            NOM_CHAM="DEPL", VIS_A_VIS={"GROUP_MA_1": "LINE", "TOUT_2": "OUI",
+                                        "CAS_FIGURE": "2D"})  # fmt: skip

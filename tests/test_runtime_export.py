@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from asterlite.runtime.export import ExportError, describe_run, read_export
+from asterlite.io.export import ExportError, describe_run, read_export
 
 
 def write(path: Path, text: str) -> Path:
@@ -56,3 +56,20 @@ def test_bare_deck_finds_sibling_mesh(tmp_path):
 def test_missing_deck(tmp_path):
     with pytest.raises(ExportError, match="no such file"):
         describe_run(tmp_path / "nothing.comm")
+
+
+def test_a_lines_carry_code_asters_arguments(tmp_path):
+    # astest's exports: code_aster's command-line settings (base size, echo, checks)
+    write(tmp_path / "a.comm", "DEBUT()\nFIN()\n")
+    export = write(
+        tmp_path / "a.export",
+        "A args --max_print=5000 --max_check=5000\nF comm a.comm D 1\n",
+    )
+    run = read_export(export)
+    assert run.arguments == {"args": "--max_print=5000 --max_check=5000"}
+    write(export, "F comm a.comm D 1\nA\n")
+    with pytest.raises(ExportError, match="expected 'A <name> <value>'"):
+        read_export(export)
+    write(export, "F comm a.comm D 1\nQ x y\n")
+    with pytest.raises(ExportError, match="expected F, R, P or A"):
+        read_export(export)

@@ -171,7 +171,7 @@ def test_r_line_is_not_copied_when_the_run_fails(tmp_path):
 
 
 def test_export_limits_are_read_and_checked(tmp_path):
-    from asterlite.runtime.export import ExportError, read_export
+    from asterlite.io.export import ExportError, read_export
 
     write(tmp_path, "a.comm", "DEBUT()\nFIN()\n")
     export = write(tmp_path, "a.export", "P time_limit 60\nP memory_limit 512\nF comm a.comm D 1\n")

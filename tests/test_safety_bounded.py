@@ -58,11 +58,11 @@ def fifo(tmp_path):
 
 def _readers():
     from asterlite.io.aster_mesh import read_aster_mesh
+    from asterlite.io.export import read_export
     from asterlite.io.ideas_mesh import read_ideas_mesh
     from asterlite.io.input_files import read_bounded_text, read_deck_text
     from asterlite.io.med_mesh import read_med_mesh
     from asterlite.io.med_result import read_nodal_field
-    from asterlite.runtime.export import read_export
 
     return {
         "ASTER mesh": read_aster_mesh,

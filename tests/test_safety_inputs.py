@@ -53,8 +53,35 @@ def test_a_crash_of_the_reader_becomes_a_located_error(tmp_path, monkeypatch):
     script = tmp_path / "crash.py"
     script.write_text("import os, signal\nos.kill(os.getpid(), signal.SIGSEGV)\n")
     monkeypatch.setattr(med_reader.sys, "executable", str(_python_running(script)))
-    with pytest.raises(MedMeshError, match="crashed reading this file \\(SIGSEGV\\)"):
-        read_med_mesh(path)
+    # a reading server that dies at once is started again, then given up for
+    # one new Python per file, which dies too
+    med_reader._ReadingServer.stop()
+    try:
+        with pytest.raises(MedMeshError, match="crashed reading this file \\(SIGSEGV\\)"):
+            read_med_mesh(path)
+    finally:
+        med_reader._ReadingServer.stop()
+
+
+def test_the_reading_server_reports_its_child_killed_or_late():
+    """What the server answers for a forked child (the reader) that a signal
+    ends, and for one still running at its deadline (killed)."""
+    import os
+    import signal
+    import time
+
+    crashed = os.fork()
+    if crashed == 0:
+        os.kill(os.getpid(), signal.SIGSEGV)
+        os._exit(0)
+    assert med_reader._wait_child(crashed, 30.0) == {"status": -signal.SIGSEGV}
+    late = os.fork()
+    if late == 0:
+        time.sleep(60)
+        os._exit(0)
+    start = time.monotonic()
+    assert med_reader._wait_child(late, 0.2) == {"timeout": True}
+    assert time.monotonic() - start < 10
 
 
 def _python_running(script: Path) -> Path:

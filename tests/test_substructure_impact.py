@@ -98,9 +98,13 @@ TRAN = DYNA_VIBRA(TYPE_CALCUL="TRAN", BASE_CALCUL="GENE", SCHEMA_TEMPS=_F(SCHEMA
     MATR_MASS=MGEN, MATR_RIGI=KGEN, EXCIT=_F(VECT_ASSE_GENE=FGEN, COEF_MULT=1.0),
     INCREMENT=_F(INST_INIT=0.0, INST_FIN={END}, PAS=2.0e-7),
     COMPORTEMENT=_F(RELATION="DIS_CHOC", GROUP_NO_1="B", SOUS_STRUC_1="COTE2", OBSTACLE=OBST,
-        NORM_OBST=(1.0, 0.0, 0.0), JEU={GAP}, RIGI_NOR=1.0e7),
+        NORM_OBST=(1.0, 0.0, 0.0), JEU={GAP}, RIGI_NOR=1.0e7, INTITULE="TIP"),
     ARCHIVAGE=_F(PAS_ARCH=100))
 TIP = REST_SOUS_STRUC(RESU_GENE=TRAN, SOUS_STRUC="COTE2", NOM_CHAM="DEPL")
+FN = RECU_FONCTION(RESU_GENE=TRAN, INTITULE="TIP", NOEUD_CHOC="N{N_HALF}", SOUS_STRUC="COTE2",
+    PARA_X="INST", PARA_Y="FN")
+STAT = POST_DYNA_MODA_T(RESU_GENE=TRAN, CHOC=_F(INST_INIT=0.0, INST_FIN={END}, NB_BLOC=1,
+    SEUIL_FORCE=0.0, DUREE_REPOS=0.0))
 FIN()
 """
         return deck
@@ -141,6 +145,12 @@ def test_impact_on_a_substructure_matches_the_one_piece_model(tmp_path):
     # the transient on the assembled generalized matrices: the same response
     direct = run_case(tmp_path / "direct", "cut", coupled(full, n_modes, direct=True), mesh)
     np.testing.assert_allclose(tip_history(direct), reference, atol=1e-7 * scale)
+    # its post-processing names the shock's node in its substructure's mesh
+    fn = direct.concepts.raw["FN"]
+    np.testing.assert_array_equal(fn.ordinates, normal_force(direct))
+    stat = direct.concepts.raw["STAT"]
+    node_b = N_HALF + 1  # B, the last node of the half beam's mesh, by number
+    assert str(node_b) in [str(v).strip() for v in stat.column("NOEUD")]
     # truncated bases: the same impact, approached as modes are added
     errors = []
     for nmax, count in (({"L": 1, "R": 2}, 8), ({"L": 2, "R": 4}, 10), ({"L": 3, "R": 5}, 12)):

@@ -1,6 +1,7 @@
 """A toy GENE scheme added through the documented places only
 (docs/architecture.md, "Adding a scheme"): this module (``prepare``,
-``step``, ``run_loop``) and its description registered in
+``step``: the engine's one time loop runs the step) and its description
+registered in
 :mod:`asterlite.dynamics.schemes`. Importing it makes SCHEMA='TOY_EULER'
 available to a deck run in the same process.
 
@@ -15,9 +16,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.forces import all_finite, state_acceleration
 from asterlite.dynamics.schemes import SCHEMES, Scheme, register
 
@@ -42,26 +41,6 @@ def step(t, dt, index, state, memory, model):
     if not (all_finite(a) and all_finite(v)):
         return K.STATUS_NOT_FINITE, -1, dt, dt, 0
     return K.STATUS_DONE, -1, dt, dt, 0
-
-
-@njit(cache=True)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    balance = E.is_active(energy)
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE
 
 
 if NAME not in SCHEMES:

@@ -243,15 +243,9 @@ class Command(Level):
         regles=(),
         op=None,
         extra_keywords: bool = False,
-        compat_syntax=None,
         **entries,
     ):
         super().__init__(nom, regles, entries)
-        # code_aster's hook for older syntax: a callable the dispatcher gives the
-        # raw keywords before validating (see asterlite.legacy); None if no legacy form
-        if compat_syntax is not None and not callable(compat_syntax):
-            raise TypeError(f"{nom}: compat_syntax must be callable, got {compat_syntax!r}")
-        self.compat_syntax = compat_syntax
         # FORMULE-like commands take arbitrary extra keywords (names their
         # expression refers to); the dispatcher sets those apart before validating.
         self.extra_keywords = extra_keywords

@@ -14,6 +14,9 @@ import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
+from asterlite.concepts.numpy_api import assembled_to_numpy
+from asterlite.errors import UnsupportedError
+from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
 
 #: modelisations of the (x, y) plane besides the ``2D_`` discrete elements and bars
 _PLANE_MODELISATIONS = ("D_PLAN", "C_PLAN", "AXIS", "D_PLAN_ABSO")
@@ -24,7 +27,7 @@ class Model(Concept):
     """``AFFE_MODELE`` result: which modelisation each cell carries."""
 
     aster_types = ("modele_sdaster",)
-    deck_methods = frozenset({"getName", "getMesh"})
+    deck_methods = frozenset({"getName", "getMesh", "getFiniteElementDescriptor"})
 
     mesh: Mesh
     cell_modelisation: dict[int, str] = field(default_factory=dict)  # cell index -> "DIS_T", ...
@@ -33,7 +36,6 @@ class Model(Concept):
     def node_components(self) -> dict[int, tuple[str, ...]]:
         """Components carried by each node of the model (union over its elements),
         in code_aster's order; nodes without elements are absent."""
-        from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
 
         found: dict[int, set[str]] = {}
         for cell, modelisation in self.cell_modelisation.items():
@@ -46,6 +48,11 @@ class Model(Concept):
 
     def getMesh(self) -> Mesh:  # noqa: N802 - code_aster's name
         return self.mesh
+
+    def getFiniteElementDescriptor(self) -> Model:  # noqa: N802
+        # code_aster's descriptor of the model's elements: the model itself here,
+        # which is all that the commands taking it (toFieldOnCells) need
+        return self
 
     @property
     def dim(self) -> int:
@@ -107,6 +114,34 @@ class LinearRelation:
 
     terms: list[tuple[int, str, float]]  # (node index, component "DX", coefficient)
     rhs: float = 0.0
+    # AFFE_CHAR_MECA_F of INST: the right-hand side in time (``rhs`` is its
+    # value at INST=0, code_aster's instant for a computation that gives none)
+    rhs_in_time: ValueInTime | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class ValueInTime:
+    """A load function of INST (and X, Y, Z, fixed at ``point``) as a
+    function of time: ``evaluate(times)``. ``key`` is the same for values
+    equal at every instant (one function, one point or none used)."""
+
+    function: Any
+    point: tuple[float, float, float]
+
+    @property
+    def key(self) -> tuple:
+        names = tuple(self.function.nom_para)
+        uses_point = any(p in ("X", "Y", "Z") for p in names)
+        return (id(self.function), self.point if uses_point else None)
+
+    def evaluate(self, times) -> np.ndarray:
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        at = dict(zip(("X", "Y", "Z"), self.point, strict=True))
+        args = [
+            times if p in ("INST", "TOUTPARA") else at.get(p, 0.0) for p in self.function.nom_para
+        ]
+        values = np.real(np.asarray(self.function.evaluate_many(*args), dtype=complex))
+        return np.broadcast_to(values, times.shape).astype(float)
 
 
 @dataclass(eq=False)
@@ -244,9 +279,20 @@ class DofNumbering(Concept):
     def dof_components(self) -> list[str]:
         return [c for _, c in self.dofs]
 
-    def constraint_matrix(self):
-        """(B, b): the relations as a sparse (n_relations, n_dofs) matrix and rhs."""
+    def constraint_matrix(self, rhs_in_time: bool = False):
+        """(B, b): the relations as a sparse (n_relations, n_dofs) matrix and rhs.
+
+        A right-hand side given in time (AFFE_CHAR_MECA_F DDL_IMPO of INST)
+        is refused unless the caller evaluates it in time itself or does not
+        use b (``rhs_in_time=True``)."""
         from asterlite.fem.constraints import relation_matrix
+
+        if not rhs_in_time and any(r.rhs_in_time is not None for r in self.relations):
+            raise UnsupportedError(
+                "AFFE_CHAR_MECA_F DDL_IMPO of INST (an imposed value varying in time): only "
+                "DYNA_VIBRA TYPE_CALCUL='TRAN' BASE_CALCUL='PHYS' (NEWMARK) evaluates it in "
+                f"time; the numbering {self.name or ''} holds such a relation"
+            )
 
         return relation_matrix(self.relations, self.index, self.n_dofs)
 
@@ -274,7 +320,6 @@ class AssembledMatrix(Concept):
     def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
         """The values as a dense array (refused when code_aster's would hold
         Lagrange multipliers: see asterlite.concepts.numpy_api)."""
-        from asterlite.concepts.numpy_api import assembled_to_numpy
 
         return assembled_to_numpy(self)
 

@@ -16,7 +16,9 @@ import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.errors import CommandError
+from asterlite.lang.numeric import CONSTANTS, FUNCTIONS
 from asterlite.lang.values import DeckCallable
+from asterlite.post.expression import CompiledExpression
 
 PROLONGATIONS = ("CONSTANT", "LINEAIRE", "EXCLU")
 
@@ -244,8 +246,9 @@ class ComplexFunction(Function):
 class Formula(Concept, DeckCallable):
     """``FORMULE``: an expression of NOM_PARA names and the deck's extra values.
 
-    The expression is compiled once by :mod:`asterlite.post.expression` (a
-    whitelisted ``ast`` walk, never ``eval``) and evaluated on arrays.
+    The expression is parsed and checked once by the formula front end
+    (:mod:`asterlite.lang.formula`: the deck's parser, one whitelist, never
+    ``eval``) and evaluated on arrays by :mod:`asterlite.post.expression`.
     ``extra`` holds the constants and functions passed as extra keywords.
     """
 
@@ -258,8 +261,6 @@ class Formula(Concept, DeckCallable):
     complex_result: bool = False
 
     def __post_init__(self) -> None:
-        from asterlite.post.expression import CompiledExpression
-
         if isinstance(self.NOM_PARA, str):
             self.NOM_PARA = (self.NOM_PARA,)
         self.NOM_PARA = tuple(self.NOM_PARA)
@@ -340,9 +341,7 @@ class Formula(Concept, DeckCallable):
 
 
 def _is_builtin_name(name: str) -> bool:
-    from asterlite.post.expression import MATH_CONSTANTS, MATH_FUNCTIONS
-
-    return name in MATH_CONSTANTS or name in MATH_FUNCTIONS
+    return name in CONSTANTS or name in FUNCTIONS
 
 
 def as_callable_values(func: Function | Formula, x) -> np.ndarray:
@@ -385,6 +384,26 @@ class Nappe(Concept, DeckCallable):
     def evaluate_many(self, p, x) -> np.ndarray:
         """Values at (p, x): each function at x, then interpolated in p."""
         p, x = np.broadcast_arrays(np.asarray(p, dtype=float), np.asarray(x, dtype=float))
+        if self.INTERPOL[1] == "LIN":
+            # linear in the ordinates (prolongations included): the value is
+            # Σ_k w_k(p) f_k(x), w_k interpolating the k-th unit vector, on whole arrays
+            columns = np.array([f.evaluate(x) for f in self.functions], dtype=float)
+            unit = np.eye(self.parameters.size)
+            weights = np.array(
+                [
+                    interpolate(
+                        p,
+                        self.parameters,
+                        unit[k],
+                        self.INTERPOL,
+                        self.PROL_GAUCHE,
+                        self.PROL_DROITE,
+                        self.name or "",
+                    )  # fmt: skip
+                    for k in range(self.parameters.size)
+                ]
+            )
+            return np.sum(weights * columns, axis=0)
         out = np.empty(p.shape)
         for index in np.ndindex(p.shape):
             column = np.array([f.evaluate(x[index]) for f in self.functions], dtype=float)

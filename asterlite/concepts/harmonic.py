@@ -78,6 +78,9 @@ class DynaHarmo(Concept):
     materials: Any = None
     characteristics: Any = None
     element_fields: dict = field(default_factory=dict)
+    # the MATR_MASS of the computation (code_aster's REF_MASS_PREM): the
+    # inertia M a of CALC_CHAMP REAC_NODA; None when unknown
+    mass_matrix: Any = None
 
     @property
     def n_freq(self) -> int:

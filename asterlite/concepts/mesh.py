@@ -58,6 +58,7 @@ class Mesh(Concept):
             "getName",
             "getNumberOfNodes",
             "getNumberOfCells",
+            "getCells",
             "getDimension",
             "hasGroupOfNodes",
             "hasGroupOfCells",
@@ -158,6 +159,10 @@ class Mesh(Concept):
 
     def getNumberOfCells(self) -> int:  # noqa: N802
         return self.n_cells
+
+    def getCells(self) -> list[int]:  # noqa: N802
+        """The cells' indices (code_aster 17 numbers them from 0)."""
+        return list(range(self.n_cells))
 
     def getDimension(self) -> int:  # noqa: N802
         return self.dim

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -9,6 +10,9 @@ import numpy as np
 
 from asterlite.concepts.assembly import AssembledMatrix, DofNumbering
 from asterlite.concepts.base import Concept
+from asterlite.concepts.numpy_api import dense_copy, replaced_values
+from asterlite.errors import DeckRuntimeError
+from asterlite.post.deck_api import mode_field, set_result_mesh
 
 
 @dataclass(eq=False)
@@ -56,7 +60,6 @@ class ModeResult(Concept):
 
     # deck API (code_aster's ModeResult), see asterlite.post.deck_api
     def getField(self, name, value=1, para="NUME_ORDRE"):  # noqa: N802
-        from asterlite.post.deck_api import mode_field
 
         return mode_field(self, name, value, para)
 
@@ -67,7 +70,6 @@ class ModeResult(Concept):
         return int(self.n_modes)
 
     def setMesh(self, mesh) -> None:  # noqa: N802
-        from asterlite.post.deck_api import set_result_mesh
 
         set_result_mesh(self, mesh)
 
@@ -172,7 +174,6 @@ class GeneralizedMatrix(Concept):
 
     def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
         """The values as a dense array (a copy)."""
-        from asterlite.concepts.numpy_api import dense_copy
 
         return dense_copy(self.matrix, self.name or "matrix")
 
@@ -180,8 +181,6 @@ class GeneralizedMatrix(Concept):
         """Replace the values by a deck's array of the same shape (code_aster's
         EXTR_MATR_GENE/RECU_MATR_GENE of older decks). With ``STOCKAGE='DIAG'``
         only a diagonal array is taken: code_aster stores no other term."""
-        from asterlite.concepts.numpy_api import replaced_values
-        from asterlite.errors import DeckRuntimeError
 
         what = self.name or "matrix"
         values = replaced_values(self.matrix, values, what)
@@ -281,8 +280,6 @@ class ComplexModeResult(ModeResult):
             self.norm = norm
 
     def select(self, indices) -> ComplexModeResult:
-        import dataclasses
-
         indices = np.asarray(indices, dtype=int)
         params = {}
         for key, value in self.parameters.items():

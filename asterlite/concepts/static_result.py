@@ -4,7 +4,6 @@ instants of the computation, laid out as a physical transient's."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from asterlite.concepts.transient import DynaTrans
 
@@ -16,6 +15,11 @@ class EvolElas(DynaTrans):
 
     aster_types = ("evol_elas", "resultat_sdaster")
 
-    model: Any = None
-    materials: Any = None
-    characteristics: Any = None
+
+@dataclass(eq=False)
+class EvolChar(DynaTrans):
+    """A load history (``evol_char``, CREA_RESU CONV_RESU): ``fields["FORC_NODA"]``
+    is (n_instants, n_dofs) nodal forces on ``numbering``, which AFFE_CHAR_MECA
+    EVOL_CHAR applies interpolated linearly in time."""
+
+    aster_types = ("evol_char", "resultat_sdaster")

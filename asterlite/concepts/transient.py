@@ -11,6 +11,18 @@ import numpy as np
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.base import Concept
 from asterlite.concepts.modes import ModeResult
+from asterlite.post.deck_api import (
+    archived_instants,
+    axial_force,
+    generalized_values,
+    info_nonl,
+    normal_force,
+    relation_force,
+    set_generalized_values,
+    set_result_mesh,
+    transient_field,
+    vari_interne,
+)
 
 
 @dataclass(eq=False)
@@ -99,6 +111,15 @@ class TranGene(Concept):
     rejections: np.ndarray | None = None
     # tables kept with the result (RECU_TABLE NOM_TABLE): ENERGIE's PARA_CALC
     tables: dict = field(default_factory=dict)
+    # what the computation was made with, for CALC_CHAMP (None when unknown):
+    # the model, fields of materials and characteristics, the mass matrix
+    # (code_aster's REF_MASS_PREM, for the inertia of REAC_NODA) and the list
+    # of loads, (AFFE_CHAR_MECA load, FONC_MULT function or COEF_MULT) pairs
+    model: Any = None
+    materials: Any = None
+    characteristics: Any = None
+    mass_matrix: Any = None
+    loads: tuple = ()
 
     @property
     def n_modes(self) -> int:
@@ -115,63 +136,51 @@ class TranGene(Concept):
         return [float(t) for t in self.times]
 
     def getDisplacementValues(self, idx=None):  # noqa: N802
-        from asterlite.post.deck_api import generalized_values
 
         return generalized_values(self.depl, idx)
 
     def getVelocityValues(self, idx=None):  # noqa: N802
-        from asterlite.post.deck_api import generalized_values
 
         return generalized_values(self.vite, idx)
 
     def getAccelerationValues(self, idx=None):  # noqa: N802
-        from asterlite.post.deck_api import generalized_values
 
         return generalized_values(self.acce, idx)
 
     def setDisplacementValues(self, idx, val) -> None:  # noqa: N802
-        from asterlite.post.deck_api import set_generalized_values
 
         set_generalized_values(self.depl, idx, val)
 
     def setVelocityValues(self, idx, val) -> None:  # noqa: N802
-        from asterlite.post.deck_api import set_generalized_values
 
         set_generalized_values(self.vite, idx, val)
 
     def setAccelerationValues(self, idx, val) -> None:  # noqa: N802
-        from asterlite.post.deck_api import set_generalized_values
 
         set_generalized_values(self.acce, idx, val)
 
     def INFO_NONL(self):  # noqa: N802
-        from asterlite.post.deck_api import info_nonl
 
         return info_nonl(self.shocks)
 
     # code_aster 15's nonlinearity accessors (inoli counts from 1, -1: the first)
     def LIST_ARCH(self):  # noqa: N802
-        from asterlite.post.deck_api import archived_instants
 
         return archived_instants(self.times)
 
     def VARI_INTERNE(self, inoli=-1, describe=True):  # noqa: N802
-        from asterlite.post.deck_api import vari_interne
 
         return vari_interne(self.shocks, inoli, describe)
 
     def FORCE_NORMALE(self, inoli=-1):  # noqa: N802
-        from asterlite.post.deck_api import normal_force
 
         return normal_force(self.shocks, inoli)
 
     def FORCE_AXIALE(self, inoli=-1):  # noqa: N802
-        from asterlite.post.deck_api import axial_force
 
         return axial_force(self.shocks, inoli)
 
     def FORCE_RELATION(self, inoli=-1):  # noqa: N802
-        from asterlite.post.deck_api import relation_force
 
         return relation_force(self.shocks, inoli)
 
@@ -193,10 +202,18 @@ class DynaTrans(Concept):
     fields: dict[str, np.ndarray] = field(default_factory=dict)
     # tables kept with the result (RECU_TABLE NOM_TABLE): ENERGIE's PARA_CALC
     tables: dict = field(default_factory=dict)
+    # what the computation was made with, for CALC_CHAMP (None when unknown):
+    # the model, fields of materials and characteristics, the mass matrix
+    # (code_aster's REF_MASS_PREM, for the inertia of REAC_NODA) and the list
+    # of loads, (AFFE_CHAR_MECA load, FONC_MULT function or COEF_MULT) pairs
+    model: Any = None
+    materials: Any = None
+    characteristics: Any = None
+    mass_matrix: Any = None
+    loads: tuple = ()
 
     # deck API (code_aster's TransientResult), see asterlite.post.deck_api
     def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802
-        from asterlite.post.deck_api import transient_field
 
         return transient_field(self, name, value, para)
 
@@ -207,6 +224,5 @@ class DynaTrans(Concept):
         return [float(t) for t in self.times]
 
     def setMesh(self, mesh) -> None:  # noqa: N802
-        from asterlite.post.deck_api import set_result_mesh
 
         set_result_mesh(self, mesh)

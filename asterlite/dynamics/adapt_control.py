@@ -1,16 +1,16 @@
 """Step control shared by ADAPT_ORDRE1 and ADAPT_ORDRE2 (code_aster's
 intadapt1 / intadapt2): the step follows an apparent frequency of the
-motion so that a period holds about NB_POIN_PERIODE steps.
+motion so that a period holds about N steps (the points per period).
 
 Apparent frequency of a trial step (frqapp): for each mode,
 ω_i² = |a_{n+1} - a_n| / max(v_min,i dt, |q_{n+1} - q_n|), and
-f = sqrt(max(ε, max_i ω_i²)) / 2π. The error is err = NB_POIN_PERIODE f dt.
+f = sqrt(max(ε, max_i ω_i²)) / 2π. The error is err = N f dt.
 
-err >= 1 divides the step by COEF_DIVI_PAS and retries (up to
-NMAX_ITER_PAS trials, then the step is kept with a warning); a step is
-multiplied by COEF_MULT_PAS only after more than four calm steps in a row
+err >= 1 divides the step by the division factor and retries (up to the
+largest number of trials, then the step is kept with a warning); a step is
+multiplied by the growth factor only after more than four calm steps in a row
 with err < 0.75. After each step the reference velocities v_min are 1 % of
-the velocity norm (VITE_MIN='NORM') or the running maximum of 1 % of each
+the velocity norm ('NORM') or the running maximum of 1 % of each
 modal velocity ('MAXI').
 """
 
@@ -32,7 +32,8 @@ MACHINE_EPS = np.finfo(np.float64).eps
 
 
 def control_scalars(dt, options) -> tuple[np.ndarray, bool]:
-    """PAS_MAXI defaults to 1e6 PAS, PAS_MINI to PAS_LIMI_RELA PAS."""
+    """The step's upper bound defaults to 1e6 dt, its lower bound to the
+    relative limit (``pas_limi_rela``) times dt."""
     dt_max = options.dt_max if options.dt_max is not None else 1.0e6 * dt
     dt_min = options.dt_min if options.dt_min is not None else options.pas_limi_rela * dt
     adaptive = abs(dt_max / dt_min - 1.0) >= EPS
@@ -66,7 +67,7 @@ def apparent_frequency(dt, q1, q2, a1, a2, vmin):
 
 @njit(cache=True)
 def frequency_error(dt, q1, q2, a1, a2, vmin, scalars):
-    """NB_POIN_PERIODE times the apparent frequency times the step (>= ε)."""
+    """The points per period times the apparent frequency times the step (>= ε)."""
     return max(scalars[S_POINTS] * apparent_frequency(dt, q1, q2, a1, a2, vmin) * dt, EPS)
 
 
@@ -102,7 +103,7 @@ def update_reference_velocities(velocity, vmin, scalars):
 
 # --------------------------------------------------------------------------- damping cap
 # RUNGE_KUTTA_* and DEVOGE evaluate the shock forces explicitly: with a stiff
-# AMOR_NOR / AMOR_TAN the stages are stable only while c·dt stays inside the
+# normal or tangential shock damping the stages are stable only while c·dt stays inside the
 # scheme's real stability interval. Their controllers never take a step above
 # shock_damping_step (asterlite.dynamics.model.shock_damping_limit names it).
 
@@ -118,8 +119,8 @@ def shock_damping_step(lin, shk, modal, radius):
     """radius/2 times the explicit step of every mode stiffened and damped by
     each damped shock on each shape component (inf without shock damping);
     ``modal``: count the modal damping (explicit in the stages)."""
-    minv, stiffness, damping = lin[0], lin[1], lin[2]
-    flags, params, phis = shk[0], shk[1], shk[3]
+    minv, stiffness, damping = lin.minv, lin.stiffness, lin.damping
+    flags, params, phis = shk.flags, shk.params, shk.phis
     tiny = MACHINE_EPS * 1.0e5
     best = np.inf
     for s in range(flags.shape[0]):

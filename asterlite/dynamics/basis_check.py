@@ -1,4 +1,4 @@
-"""VERI_CHOC: can the modal basis represent the static deflection of each
+"""The shock check of the basis: can the modal basis represent the static deflection of each
 shock node under its own contact force?
 
 For a unit force along the obstacle direction n at a shock node, the exact
@@ -6,8 +6,8 @@ static flexibility is s = nᵀ K⁻¹ n (K: the basis's assembled stiffness,
 constraints included) and the modal one Σ_j (φ_jᵀ n)² / k_j. Their ratio r
 (the "restitution rate") tends to 1 for a rich basis. code_aster's
 criterion is s·K_N·(1 − r): the share of the shock's compliance the basis
-misses, scaled by the shock stiffness; above SEUIL it warns, or stops the
-run when STOP_CRITERE='OUI'.
+misses, scaled by the shock stiffness; above the threshold it warns, or
+stops the run when asked to.
 """
 
 from __future__ import annotations

@@ -3,9 +3,9 @@
 Conventions (the same as code_aster's, so archived quantities compare):
 
 - Local frame: row vectors of ``rot`` (global -> local); local x is
-  NORM_OBST, the contact plane is (y_loc, z_loc).
+  the obstacle's normal, the contact plane is (y_loc, z_loc).
 - A node's local coordinates are ``rot @ (X0 + Φ q - origin)``: mesh
-  coordinates plus modal displacement, relative to ORIG_OBST.
+  coordinates plus modal displacement, relative to the obstacle's origin.
 - ``gap`` (d_N) is negative when penetrating; the unit normal ``n``
   = (0, cos_n, sin_n) in the local frame is the direction of the force the
   obstacle (or node 2) exerts on node 1.
@@ -32,11 +32,11 @@ P_SIGN_Y, P_SIGN_Z = 9, 10
 P_ORIGIN = 11  # 3 values
 P_COORD1 = 14  # 3 values
 P_COORD2 = 17  # 3 values
-# support motion (MULT_APPUI) of node 1 / node 2 at the current instant:
+# support motion (multiple supports) of node 1 / node 2 at the current instant:
 # global displacement then velocity (6 values each), refreshed by the kernel
 P_DRIVE1 = 20
 P_DRIVE2 = 26
-# TRAITEMENT_NONL='IMPLICITE' (implicit_shocks.py): the normal force of a
+# implicit shock treatment (implicit_shocks.py): the normal force of a
 # linearised shock is -k_n (d_0 + g.q) - c_n g.v along the normal frozen at
 # the switch; K and C take the terms in q and v, the force keeps -k_n d_0 n
 P_LIN_GAP = 32  # d_0, the gap extrapolated to q = 0
@@ -45,8 +45,8 @@ N_PARAMS = 35
 
 # Columns of the per-shock integer rows (``flags``).
 F_GEOMETRY, F_TWO_NODES, F_UNIDIR, F_NPOLAR = range(4)
-F_LAW = 4  # relation (laws.kernel.LAW_CODES): 0 DIS_CHOC, else a law of laws/
-# TRAITEMENT_NONL='IMPLICITE': how the normal force enters the equations
+F_LAW = 4  # 0 DIS_CHOC, else the branch of laws.kernel of a relation of laws/
+# implicit shock treatment: how the normal force enters the equations
 # (implicit_shocks.py): explicit, linearised in K and C, or left out (a
 # shock out of contact while others are linearised: code_aster applies no
 # explicit normal force then; a new contact is caught at the step's end)
@@ -107,7 +107,7 @@ def gap_and_normal(geometry, loc1, loc2, gap0, dist1, dist2, sign_y, sign_z, pol
 def obstacle_gap(geometry, y1, z1, y2, z2, gap0, dist1, dist2, sign_y, sign_z, polars, s, npolar):
     """:func:`gap_and_normal` on the local (y, z) coordinates of both nodes
     (``polars[s]``: the facets of a DISCRET obstacle)."""
-    if geometry == CERCLE:  # eq. 19-20: concave circle of radius JEU
+    if geometry == CERCLE:  # eq. 19-20: concave circle of radius the gap
         r = math.sqrt(y1 * y1 + z1 * z1)
         if r != 0.0:
             return gap0 - r, -y1 / r, -z1 / r
@@ -174,7 +174,7 @@ def tangential_force(fn, rel_loc, rel_vel, cos_n, sin_n, mu_dyn, mu_stat, k_t, c
     VT1, VT2). Sliding continues while the tangential velocity keeps its
     direction; otherwise a stick predictor F = F_ref - K_T (x - x_ref) - C_T v
     is tried and capped by mu_stat * F_N (slip at mu_dyn * F_N against v).
-    With ``unidir`` the axis NORM_OBST (FT2) carries no friction.
+    With ``unidir`` the obstacle's normal axis (FT2) carries no friction.
     """
     return friction_force(
         fn,
@@ -311,7 +311,7 @@ def contact_law(params, unidir, vint, s, gap, cos_n, sin_n, rx, ry, rz, vx, vy, 
 
 @njit(cache=True, inline="always")
 def local_state(rot, phi, coord, drive, origin, q, v, loc, vel):
-    """Local position (with rest coordinates, from ORIG_OBST) and velocity of
+    """Local position (with rest coordinates, from the obstacle's origin) and velocity of
     a node; ``drive`` adds the support motion (displacement, velocity)."""
     for i in range(3):
         xg = coord[i] - origin[i] + drive[i]

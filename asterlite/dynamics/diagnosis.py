@@ -6,7 +6,7 @@ fails, leaving the values of that step in the state arrays (the schemes
 that integrate on trial rows copy them into the state before returning).
 Nothing here runs in the loop: once a run has stopped, these functions read
 what it left and say which quantity went wrong (the external load of an
-EXCIT occurrence, the force of a nonlinearity, or the generalized
+load of the excitation, the force of a nonlinearity, or the generalized
 displacement / velocity / acceleration themselves), at which instant, and
 which instant was the last one computed with a finite state.
 """
@@ -18,6 +18,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.forces import multiplier_at
+from asterlite.dynamics.formula import run_program
+from asterlite.errors import field as named
 
 # the loops' test (forces.all_finite): beyond this magnitude a value counts
 # as non-finite, so that it is caught before it overflows
@@ -67,9 +70,9 @@ def value_text(x: float) -> str:
 
 @dataclass
 class Culprit:
-    """What a failed run points at: a sentence, the keyword path below the
-    command (``EXCIT[2]``, ``COMPORTEMENT``...) and whether the step size is
-    the likely cause (then the advice is a smaller step)."""
+    """What a failed run points at: a sentence, what is at fault (the
+    load's label, or a field mark the command words as its keyword path) and
+    whether the step size is the likely cause (then the advice is a smaller step)."""
 
     text: str
     path: str
@@ -79,8 +82,6 @@ class Culprit:
 def load_multipliers(excitation, t: float) -> np.ndarray:
     """The multiplier of each excitation row at t, evaluated as the loops
     evaluate them (formula programs, tables, sampled functions)."""
-    from asterlite.dynamics.forces import multiplier_at
-    from asterlite.dynamics.formula import run_program
 
     rows = excitation.vectors.shape[0]
     values = np.zeros(rows)
@@ -143,7 +144,7 @@ def shock_culprit(shocks, vint) -> Culprit | None:
             return Culprit(
                 f"the force of the DIS_CHOC {spec.name.strip()!r} (node {spec.node_1}) "
                 f"became non-finite ({', '.join(names)}: {values})",
-                "COMPORTEMENT",
+                spec.source,
                 True,
             )
     return None
@@ -163,7 +164,7 @@ def nonfinite_culprit(state, shocks, excitation, t_fail: float, labels=None) -> 
             described = f"the generalized force ({modes_text(bad(f))})"
         return Culprit(
             (described or "the generalized state") + " diverged",
-            "INCREMENT/PAS",
+            named("grid.step"),
             True,
         )
     if described:

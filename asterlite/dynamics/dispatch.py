@@ -3,10 +3,10 @@ linear operators change during a run (variable rotation speed in
 :mod:`asterlite.dynamics.rotation`, implicit shocks in
 :mod:`asterlite.dynamics.implicit_shocks`).
 
-A scheme's own ``run_loop`` calls its ``step`` directly; these loops are
-written once for all schemes and branch on the code instead (numba caches
-them like any other function, which first-class function arguments would
-prevent). Every scheme's memory is ``(rows, scalars, table)`` with the same
+A scheme's loop (:func:`asterlite.dynamics.loop.scheme_loop`) calls its
+``step`` directly; these loops serve every scheme and branch on the code
+instead (numba caches them like any other function, which first-class
+function arguments would prevent). Every scheme's memory is ``(rows, scalars, table)`` with the same
 array types, so one compiled loop serves them all.
 
 After the generalized K and C of the model's ``(M⁻¹, K, C, flag)`` bundle
@@ -29,6 +29,7 @@ from asterlite.dynamics import scheme_diff_centre as DC
 from asterlite.dynamics import scheme_newmark as N
 from asterlite.dynamics import scheme_runge_kutta as RK
 from asterlite.dynamics import scheme_trbdf2 as TR
+from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.schemes import (
     ADAPT_ORDRE1,
     DEVOGE,
@@ -83,13 +84,13 @@ def scheme_step(code, t, dt, index, state, memory, model):
 def refresh_operators(code, memory, lin, n):
     """Make the scheme use the K and C now in ``lin`` from its next step."""
     if code == NEWMARK:
-        copy_blocks(memory[0], N.VECTOR_ROWS, lin, n)
-        memory[1][N.S_DT_BUILT] = -1.0
+        copy_blocks(memory[ROWS], N.VECTOR_ROWS, lin, n)
+        memory[SCALARS][N.S_DT_BUILT] = -1.0
     elif code == TRBDF2:
-        copy_blocks(memory[0], TR.VECTOR_ROWS, lin, n)
-        memory[1][TR.S_DT_BUILT] = -1.0
+        copy_blocks(memory[ROWS], TR.VECTOR_ROWS, lin, n)
+        memory[SCALARS][TR.S_DT_BUILT] = -1.0
     elif code == DEVOGE:
-        devoge_operators(memory[0], memory[1], lin, n)
+        devoge_operators(memory[ROWS], memory[SCALARS], lin, n)
 
 
 @njit(cache=True)
@@ -100,15 +101,15 @@ def copy_blocks(rows, vector_rows, lin, n):
     damping = I.block(rows, vector_rows, I.B_DAMP, n)
     for i in range(n):
         for j in range(n):
-            stiffness[i, j] = lin[1][i, j]
-            damping[i, j] = lin[2][i, j]
+            stiffness[i, j] = lin.stiffness[i, j]
+            damping[i, j] = lin.damping[i, j]
 
 
 @njit(cache=True)
 def devoge_operators(mem, smem, lin, n):
     """M⁻¹C, M⁻¹K and, once the scheme has started, H1 = 4I + dt M⁻¹C,
     H2 = 6I + dt M⁻¹C for the step it stands at (intdevo on MAT_UPDT)."""
-    minv, stiffness, damping = lin[0], lin[1], lin[2]
+    minv, stiffness, damping = lin.minv, lin.stiffness, lin.damping
     invm_c, invm_k, h1, h2 = DV.operators(mem, n)
     for i in range(n):
         for j in range(n):

@@ -1,5 +1,5 @@
 """Energy balance of a generalized transient (DYNA_VIBRA TRAN/GENE with
-``ENERGIE=_F()``, an asterlite extension), accumulated in the compiled time
+asked by the deck, an asterlite extension), accumulated in the compiled time
 loops: one :func:`accumulate` call per accepted step, one :func:`record`
 per archived instant, nothing at all when the keyword is absent.
 
@@ -20,10 +20,11 @@ never from the generalized force the scheme applied):
   the penetration, F_el the force held by the tangential spring (stick:
   F_T + C_T v_T, the force without its viscous part; slip: the sliding force,
   which the spring carries and a new stick phase starts from (eq. 13);
-  nothing when RIGI_TAN = 0).
+  nothing without tangential stiffness).
 - ``TRAV_EXT`` = ∫ vᵀ F_ext dt - ∫ Σ F_loc · v_drive dt: the work of the
-  generalized loads (EXCIT, also the -Φᵀ M ψ γ(t) loads of relative-motion
-  seismic decks and EXCIT_RESU) and, with MULT_APPUI or CORR_STAT, the work
+  generalized loads (the excitation's, also the -Φᵀ M ψ γ(t) loads of relative-motion
+  seismic decks and loads given as results) and, with support motions
+(multiple supports or static corrections), the work
   the moving supports do through the contacts (the shocks see the node's
   absolute motion Φ q + ψ d(t), the modal equations only Φ q).
 - ``DISS_AMOR`` = ∫ vᵀ C v dt (modal or full damping matrix).
@@ -68,6 +69,7 @@ import math
 import numpy as np
 from numba import njit
 
+from asterlite.concepts.table import Table
 from asterlite.dynamics.contact import (
     EPS,
     F_GEOMETRY,
@@ -105,6 +107,7 @@ from asterlite.dynamics.contact import (
 from asterlite.dynamics.forces import external_force, support_motion
 from asterlite.dynamics.kernel import C_TIME, K_ARCHIVED
 from asterlite.dynamics.laws.kernel import law_forces
+from asterlite.dynamics.layouts import LOADS, SHOCKS, Balance
 
 # columns of an archived row (the PARA_CALC table), in this order
 COLUMNS = (
@@ -158,7 +161,7 @@ def new_energy(system, shocks, capacity: int, staggered: bool, enabled: bool):
     Disabled, every array is empty (same types, so the loops compile once
     for both)."""
     if not enabled:
-        return (
+        return Balance(
             np.zeros(N_ACC),
             np.zeros((3, 0, 0)),
             np.zeros((3, 0)),
@@ -174,7 +177,7 @@ def new_energy(system, shocks, capacity: int, staggered: bool, enabled: bool):
     acc[A_DIAGONAL] = 1.0 if system.diagonal else 0.0
     matrices = np.zeros((3, n, n))
     matrices[0], matrices[1], matrices[2] = system.mass, system.stiffness, system.damping
-    return (
+    return Balance(
         acc,
         matrices,
         np.zeros((3, n)),
@@ -186,18 +189,18 @@ def new_energy(system, shocks, capacity: int, staggered: bool, enabled: bool):
 
 
 def enabled(energy) -> bool:
-    return energy[0][A_ON] == 1.0
+    return energy.acc[A_ON] == 1.0
 
 
 def grown(energy, capacity: int):
     """The bundle with room for ``capacity`` archived rows (the driver grows
     it with the archive buffers)."""
-    out = energy[5]
+    out = energy.rows
     if not enabled(energy) or out.shape[0] >= capacity:
         return energy
     bigger = np.zeros((capacity, N_COLUMNS))
     bigger[: out.shape[0]] = out
-    return energy[:5] + (bigger,) + energy[6:]
+    return energy._replace(rows=bigger)
 
 
 @njit(cache=True, inline="always")
@@ -290,7 +293,7 @@ def shock_powers(q, v, vint, flags, params, rots, phis, polars, copy, work, loca
                 if not unidir:
                     el2 += params[s, P_CT] * vt2
             e_tan += 0.5 * (el1 * el1 + el2 * el2) / k_t
-        # the support motion seen by the contact (MULT_APPUI, CORR_STAT), local frame
+        # the support motion seen by the contact (supports, static corrections), local frame
         w1, w2, w3 = 0.0, 0.0, 0.0
         for i in range(3):
             g = drive1[3 + i]
@@ -345,8 +348,14 @@ def evaluate(energy, t, q, v, a, dt, vint, shk, exc):
     """Powers and energies at the state (t, q, v); ``dt`` the step that led
     to it (0 at the start). Writes the A_P_* and A_E_* slots and the
     shocks' row ``local[1]``."""
-    acc, matrices, vectors, copy, work = energy[0], energy[1], energy[2], energy[3], energy[4]
-    local = energy[6]
+    acc, matrices, vectors, copy, work = (
+        energy.acc,
+        energy.matrices,
+        energy.vectors,
+        energy.vint_copy,
+        energy.work,
+    )
+    local = energy.local
     n = q.shape[0]
     diagonal = acc[A_DIAGONAL] == 1.0
     w = vectors[R_VELOCITY]
@@ -363,17 +372,31 @@ def evaluate(energy, t, q, v, a, dt, vint, shk, exc):
     for i in range(n):
         p_ext += f[i] * w[i]
     acc[A_P_EXT] = p_ext
-    flags, params, rots, phis, polars = shk[0], shk[1], shk[2], shk[3], shk[4]
+    flags, params, rots, phis, polars = shk.flags, shk.params, shk.rots, shk.phis, shk.polars
     support_motion(t, exc, params)
     e_n, e_tan = shock_powers(q, w, vint, flags, params, rots, phis, polars, copy, work, local[1])
     acc[A_E_N] = e_n
     acc[A_E_TAN] = e_tan
     p_nl = 0.0
-    if shk[5].shape[1] > 0:  # relations of laws/, on a copy of their states
+    if shk.laws.shape[1] > 0:  # relations of laws/, on a copy of their states
         copy_rows(vint, copy)
         g = vectors[R_LAW]
         g[:] = 0.0
-        law_forces(t, q, w, flags, params, rots, phis, polars, shk[5], shk[6], copy, shk[7], g)
+        law_forces(
+            t,
+            q,
+            w,
+            flags,
+            params,
+            rots,
+            phis,
+            polars,
+            shk.laws,
+            shk.rphis,
+            copy,
+            shk.law_scratch,
+            g,
+        )
         for i in range(n):
             p_nl += g[i] * w[i]
     acc[A_P_NL] = p_nl
@@ -382,11 +405,11 @@ def evaluate(energy, t, q, v, a, dt, vint, shk, exc):
 @njit(cache=True)
 def start(energy, t, q, v, a, vint, shk, exc):
     """The balance at the initial state (row 0 of the archive)."""
-    acc = energy[0]
+    acc = energy.acc
     for k in range(A_EXT, A_NL + 1):
         acc[k] = 0.0
     evaluate(energy, t, q, v, a, 0.0, vint, shk, exc)
-    copy_rows(energy[6][1], energy[6][0])
+    copy_rows(energy.local[1], energy.local[0])
     acc[A_E0] = acc[A_E_CIN] + acc[A_E_POT] + acc[A_E_N] + acc[A_E_TAN]
     acc[A_E_TAN0] = acc[A_E_TAN]
     record(energy, 0, t)
@@ -396,11 +419,11 @@ def start(energy, t, q, v, a, vint, shk, exc):
 def accumulate(energy, t, dt, q, v, a, vint, shk, exc):
     """After an accepted step of length dt ending at t: the powers at the new
     state, trapezoidal rule over the step."""
-    acc = energy[0]
-    local = energy[6]
+    acc = energy.acc
+    local = energy.local
     p_ext, p_amor, p_nl = acc[A_P_EXT], acc[A_P_AMOR], acc[A_P_NL]
     evaluate(energy, t, q, v, a, dt, vint, shk, exc)
-    d_choc, w_frot, w_drive = contact_integrals(local[0], local[1], shk[1], dt)
+    d_choc, w_frot, w_drive = contact_integrals(local[0], local[1], shk.params, dt)
     copy_rows(local[1], local[0])
     h = 0.5 * dt
     acc[A_EXT] += h * (p_ext + acc[A_P_EXT]) - w_drive
@@ -413,7 +436,7 @@ def accumulate(energy, t, dt, q, v, a, vint, shk, exc):
 @njit(cache=True)
 def record(energy, row, t):
     """Row ``row`` of the archived balance, at instant t."""
-    acc, out = energy[0], energy[5]
+    acc, out = energy.acc, energy.rows
     e_choc = acc[A_E_N] + acc[A_E_TAN]
     diss_frot = -acc[A_WFROT] - (acc[A_E_TAN] - acc[A_E_TAN0])
     out[row, C_INST] = t
@@ -440,12 +463,12 @@ def record(energy, row, t):
 
 def active(energy) -> bool:
     """Whether the balance is computed (read once, before a time loop)."""
-    return energy[0][A_ON] == 1.0
+    return energy.acc[A_ON] == 1.0
 
 
 @njit(cache=True, inline="always")
 def is_active(energy):
-    return energy[0][A_ON] == 1.0
+    return energy.acc[A_ON] == 1.0
 
 
 @njit(cache=True)
@@ -463,7 +486,7 @@ def hook(energy, archived_before, counters, clock, dt, state, model):
     """:func:`after_step` on the general loops' bundles."""
     after_step(
         energy, archived_before, counters[K_ARCHIVED], clock[C_TIME], dt,
-        state[0], state[1], state[2], state[4], model[1], model[2],
+        state.q, state.v, state.a, state.vint, model[SHOCKS], model[LOADS],
     )  # fmt: skip
 
 
@@ -471,7 +494,6 @@ def table(rows: np.ndarray, previous=None, t0: float | None = None):
     """The PARA_CALC table of the archived rows; with ``previous`` (the
     table of a reused result) its rows before t0 come first (each run's
     balance starts from its own initial state, as the PHYS balance)."""
-    from asterlite.concepts.table import Table
 
     out = Table(title="PARA_CALC")
     for name in COLUMNS:

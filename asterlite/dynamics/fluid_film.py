@@ -1,27 +1,27 @@
-"""Fluid-film shocks (CHOC/LAME_FLUIDE='OUI' of code_aster 10-12) and the
+"""Fluid-film shocks (the film option of the shocks of code_aster 10-12) and the
 two loops that integrate them: code_aster 11's EULER, and its ADAPT_ORDRE2.
 
 The model (code_aster 11: mdeul1, mdfcho, mdfflu, mdmasf, ponder):
 
 - While the gap d (the DIS_CHOC normal distance, > 0 apart) is open, a
   fluid film pushes node 1 along the obstacle normal with
-  F = ALPHA a_n / d + BETA (v_n / d)^2 + CHI v_n / d^3 + DELTA v_n |v_n| / d^2,
+  F = α a_n / d + β (v_n / d)^2 + χ v_n / d^3 + δ v_n |v_n| / d^2,
   v_n, a_n the relative normal velocity and acceleration (node 1 - node 2;
-  v_n < 0 closing). ALPHA < 0 is an added mass, CHI < 0 a viscous
-  squeeze film, BETA and DELTA pressure losses.
-- A boundary layer of thickness e = F / RIGI_NOR blends the film into the
+  v_n < 0 closing). α < 0 is an added mass, χ < 0 a viscous
+  squeeze film, β and δ pressure losses.
+- A boundary layer of thickness e = F / k_n (k_n the normal stiffness) blends the film into the
   dry shock: it is entered when d <= e (e is then frozen) and left when
   d >= e. Inside, the film force is weighted by p(d) (0 below e/2, 1 above
-  e, linear between) and the dry force -RIGI_NOR (d - e) - AMOR_NOR v_n
+  e, linear between) and the dry force -k_n (d - e) - c_n v_n
   (positive part) by 1 - p(d).
 - The film force depends on the acceleration, so each step solves for it by
   fixed-point iterations: the film's added mass is moved to the left-hand
-  side with a diagonal stand-in, M'_ii = M_ii - LAMBDA p ALPHA / d Σ_k φ_ki²
+  side with a diagonal stand-in, M'_ii = M_ii - λ p α / d Σ_k φ_ki²
   (φ: the relative mode shape of the shock's nodes, three components), and
   the same term times the previous iterate is added to the force, so that it
-  cancels at convergence (LAMBDA only makes the iterations contract). The
-  iterations stop when |a_new - a_old|² <= RESI_RELA |a_new|² (squared norms,
-  as code_aster tests them) and fail after NMAX_ITER.
+  cancels at convergence (the relaxation λ only makes the iterations contract). The
+  iterations stop when |a_new - a_old|² <= tol |a_new|² (squared norms,
+  as code_aster tests them) and fail after the largest number of iterations.
 
 The scheme is code_aster 11's EULER (v += dt a, q += dt v, then a at the new
 state: asterlite's DIFF_CENTRE arithmetic) on diagonal generalized matrices;
@@ -38,7 +38,7 @@ step's start, and the apparent frequency judges the converged one. As in
 mdadap, a trial whose iterations do not converge stops the run (no smaller
 step is tried), and the boundary-layer state a rejected trial changed is kept.
 The iterations stop on a relative change, not on the fixed point: with
-RESI_RELA loose, the diagonal added-mass stand-in leaves a lag that depends
+a loose tolerance, the diagonal added-mass stand-in leaves a lag that depends
 on the modal basis (poor when a shock's relative motion spreads over several modes).
 """
 
@@ -75,14 +75,25 @@ from asterlite.dynamics.contact import (
     obstacle_gap,
 )
 from asterlite.dynamics.forces import add_external_force, copy_into, loads_ready
+from asterlite.dynamics.integrate import (
+    RunResult,
+    SchemeOptions,
+    StepBudget,
+    divergence_error,
+    grow,
+    new_buffers,
+    run_info,
+)
+from asterlite.dynamics.layouts import ROWS, SCALARS, State
 from asterlite.errors import NumericalError
+from asterlite.errors import field as named
 
 # columns of the per-shock film rows: film present, the law's coefficients,
 # in the boundary layer (0/1), the frozen thickness of that layer
 FL_ON, FL_ALPHA, FL_BETA, FL_CHI, FL_DELTA, FL_LAYER, FL_THICKNESS = range(7)
 N_FILM = 7
 
-# code_aster 11 catalogue defaults of NMAX_ITER, RESI_RELA, LAMBDA
+# code_aster 11's defaults of the iterations: their number, tolerance, relaxation
 DEFAULT_MAX_ITERATIONS = 20
 DEFAULT_TOLERANCE = 1.0e-3
 DEFAULT_RELAXATION = 10.0
@@ -120,7 +131,7 @@ def film_row(alpha: float, beta: float, chi: float, delta: float) -> np.ndarray:
 
 
 def mass_weights(shapes: np.ndarray, flags: np.ndarray, film: FluidFilm) -> np.ndarray:
-    """LAMBDA Σ_k φ_ki² per film shock and mode (φ: node 1's shape, minus node
+    """λ Σ_k φ_ki² per film shock and mode (φ: node 1's shape, minus node
     2's for a two-node obstacle; the sum over the three components is the
     same in any frame). Zero rows for shocks without film."""
     n_shocks, n_modes = shapes.shape[0], shapes.shape[3]
@@ -312,7 +323,8 @@ def external_force(t, exc, out):
     for m in range(out.shape[0]):
         out[m] = 0.0
     add_external_force(
-        t, exc[0], exc[1], exc[2], exc[3], exc[9], exc[12], exc[13], exc[14], out
+        t, exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes,
+        exc.constants, exc.stack, out,
     )  # fmt: skip
 
 
@@ -392,16 +404,16 @@ def film_trial(t, dt, state, rows, scalars, linear, model, exc, controls, counts
     prediction, then the acceleration at its end by the fixed-point
     iterations, started from the acceleration of the step's start (as
     mdadap starts each trial). -1 when converged, a shock index (>= 0) whose
-    velocity diverged, -2 for a non-finite acceleration, -3 when NMAX_ITER
+    velocity diverged, -2 for a non-finite acceleration, -3 when the largest number of iterations
     iterations did not converge."""
     mass, stiffness, damping = linear
     flags, params, shapes, rest, polars, film = model[:6]
     base, f, mass_mod, kin = work[0], work[1], work[2], work[3]
-    vint, vint_save = state[4], state[5]
+    vint, vint_save = state.vint, state.vint_save
     q2, v2, a2 = rows[V11.Q_TRIAL], rows[V11.V_TRIAL], rows[V11.A_TRIAL]
     V11.predict(dt, state, rows, scalars)
     copy_into(vint, vint_save)  # the dry shocks' states of the step's start
-    copy_into(a2, state[2])
+    copy_into(a2, state.a)
     external_force(t + dt, exc, base)
     shock = dry_shock_forces(q2, v2, a2, flags, params, shapes, rest, polars, film, vint, kin, base)
     if shock >= 0:
@@ -431,7 +443,7 @@ def adapt_step(clock, counters, state, rows, scalars, linear, model, exc, contro
     max_trials = int(round(scalars[A.S_MAX_TRIALS]))
     err = 100.0
     trials = 0
-    copy_into(state[5], state[4])
+    copy_into(state.vint_save, state.vint)
     while err > 1.0 and trials < max_trials:
         tried = dt
         failed = film_trial(t, tried, state, rows, scalars, linear, model, exc, controls, counts,
@@ -439,7 +451,7 @@ def adapt_step(clock, counters, state, rows, scalars, linear, model, exc, contro
         if failed >= 0:
             return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
         if failed == -2:
-            K.expose_trial(state[0], state[1], state[2], rows[V11.Q_TRIAL], rows[V11.V_TRIAL],
+            K.expose_trial(state.q, state.v, state.a, rows[V11.Q_TRIAL], rows[V11.V_TRIAL],
                            rows[V11.A_TRIAL])  # fmt: skip
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
         if failed == -3:  # mdadap stops the run (ALGORITH15_99)
@@ -458,11 +470,11 @@ def run_adapt_loop(clock, counters, state, memory, linear, model, exc, controls,
     """code_aster 10-12's ADAPT_ORDRE2 (mdadap) with fluid films: its step
     control and archive grid (:mod:`scheme_adapt_ordre2_v11`), the film's
     iterations in each trial; resumable after any pause."""
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     if scalars[A.S_FIRST_CALL] == 1.0:
         V11.start(clock, state, rows, scalars, pas_arch)
     while clock[K.C_TIME] < clock[K.C_END]:
-        paused = K.pause_status(counters, archive[0])
+        paused = K.pause_status(counters, archive.times)
         if paused:
             return paused
         if not loads_ready(clock, exc):
@@ -480,20 +492,13 @@ def run_adapt_loop(clock, counters, state, memory, linear, model, exc, controls,
 def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_end, dt, instants,
                    pas_arch, label=None, adapt=None):  # fmt: skip
     """Integrate from t0 to t_end with fluid films: code_aster 11's EULER, or
-    with ``adapt`` (the :class:`integrate.SchemeOptions` of the run, PAS_MAXI
+    with ``adapt`` (the :class:`integrate.SchemeOptions` of the run, the step's upper bound
     given) its ADAPT_ORDRE2 (mdadap); returns an :class:`integrate.RunResult`."""
-    from asterlite.dynamics.integrate import (
-        RunResult,
-        SchemeOptions,
-        StepBudget,
-        divergence_error,
-        grow,
-        new_buffers,
-        run_info,
-    )
 
     if not system.diagonal:
-        raise NumericalError("LAME_FLUIDE needs diagonal generalized matrices (a modal basis)")
+        raise NumericalError(
+            f"the fluid film ({named('film')}) needs diagonal generalized matrices (a modal basis)"
+        )
     scheme = "EULER" if adapt is None else "ADAPT_ORDRE2"
     n = system.n_modes
     linear = tuple(
@@ -511,7 +516,9 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     work = (np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(N_KIN))
     shock, finite = start(t0, q, v, a, linear, model, exc, vint, work)
     if shock >= 0 or not finite:
-        raise NumericalError(f"non-finite initial acceleration at t={t0:.9g} (LAME_FLUIDE)")
+        raise NumericalError(
+            f"non-finite initial acceleration at t={t0:.9g} (fluid film, {named('film')})"
+        )
     controls = np.array([film.max_iterations, film.tolerance])
     scalars = np.zeros(3)
     eps = 10.0 * np.finfo(float).eps
@@ -520,7 +527,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     adaptive = adapt is not None
     if adaptive:  # mdadap's state (the scheme's rows and scalars) in the generic layout
         memory, _ = V11.prepare(system, dt, adapt)
-        state = (q, v, a, np.zeros(n), vint, np.zeros_like(vint), np.zeros((5, 3)))
+        state = State(q, v, a, np.zeros(n), vint, np.zeros_like(vint), np.zeros((5, 3)))
         capacity = min(capacity, 4096)
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
     budget = StepBudget(t0, t_end, dt, adaptive, adapt or SchemeOptions())
@@ -529,7 +536,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
     counters[K.K_ARCHIVED] = 1
-    bar = progress.time_bar(label or f"DYNA_VIBRA {scheme} (LAME_FLUIDE)", t0, t_end)
+    bar = progress.time_bar(label or f"{scheme} with fluid films", t0, t_end)
     started = wallclock.perf_counter()
     try:
         while True:
@@ -546,7 +553,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
                     buffers, instants, pas_arch, eps,
                 )  # fmt: skip
             if status == K.STATUS_FULL:
-                budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
+                budget.check_archive(2 * len(buffers.times), row_bytes, pas_arch, clock, counters)
                 buffers = grow(buffers)
             elif status == K.STATUS_LOADS:
                 excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
@@ -564,10 +571,12 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     if status == STATUS_FILM_NOT_CONVERGED:
         t = clock[K.C_TIME] + clock[K.C_STEP]
         raise NumericalError(
-            f"LAME_FLUIDE: the acceleration did not converge in NMAX_ITER={film.max_iterations} "
-            f"iterations at t={t:.6g} (residual {math.sqrt(scalars[S_RATIO]):.3g} of the "
-            f"acceleration, RESI_RELA={film.tolerance:g} on its square): raise NMAX_ITER or "
-            "LAMBDA, or reduce PAS"
+            f"{named('film')}: the acceleration did not converge in "
+            f"{named('film.max_iterations')}={film.max_iterations} iterations at t={t:.6g} "
+            f"(residual {math.sqrt(scalars[S_RATIO]):.3g} of the acceleration, "
+            f"{named('film.tolerance')}={film.tolerance:g} on its square): raise "
+            f"{named('film.max_iterations')} or {named('film.relaxation')}, or reduce "
+            f"{named('grid.step')}"
         )
     if status != K.STATUS_DONE:
         raise divergence_error(status, clock, counters, shocks, system, scheme)
@@ -577,5 +586,5 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     info["film_iterations"] = int(scalars[S_TOTAL])
     info["film_worst_iterations"] = int(scalars[S_WORST])
     if adaptive:
-        info["steps_kept_at_nmax_iter_pas"] = int(memory[1][A.S_KEPT_AT_MAX_TRIALS])
+        info["steps_kept_at_nmax_iter_pas"] = int(memory[SCALARS][A.S_KEPT_AT_MAX_TRIALS])
     return RunResult(*out, info=info)

@@ -12,7 +12,7 @@ Bundles passed to the kernels (tuples of arrays, built by ``model.py``):
   relations, rotation mode shapes, scratch);
 - ``exc = (vectors, abscissas, ordinates, layout)``: excitation e's
   generalized vector ``vectors[e]`` times its piecewise-linear multiplier
-  (``layout[e] = (count, left, right)``, see ``model.Excitation``).
+  (``layout[e] = (count, left, right)``, see ``excitation.Excitation``).
 """
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ from asterlite.dynamics.contact import P_DRIVE1, P_DRIVE2, shock_forces
 from asterlite.dynamics.formula import run_program
 from asterlite.dynamics.kernel import C_STEP, C_TIME
 from asterlite.dynamics.laws.kernel import law_forces
+from asterlite.dynamics.layouts import LINEAR, LOADS, SHOCKS
 
 
 @njit(cache=True)
@@ -115,15 +116,21 @@ def loads_ready(clock, exc):
     steps ahead of the current time); otherwise the loop pauses with
     STATUS_LOADS and the driver tabulates the next window."""
     t_next = clock[C_TIME] + 2.0 * clock[C_STEP]
-    return loads_cover(t_next, exc[1], exc[3], exc[8]) and loads_cover(
-        t_next, exc[5], exc[7], exc[10]
+    return loads_cover(t_next, exc.abscissas, exc.layout, exc.pending) and loads_cover(
+        t_next, exc.drive_abscissas, exc.drive_layout, exc.drive_pending
     )
 
 
 @njit(cache=True, inline="always")
 def external_force(t, exc, out):
-    vectors, abscissas, ordinates, layout, cursors = exc[0], exc[1], exc[2], exc[3], exc[9]
-    codes, constants, stack = exc[12], exc[13], exc[14]
+    vectors, abscissas, ordinates, layout, cursors = (
+        exc.vectors,
+        exc.abscissas,
+        exc.ordinates,
+        exc.layout,
+        exc.cursors,
+    )
+    codes, constants, stack = exc.codes, exc.constants, exc.stack
     add_external_force(
         t, vectors, abscissas, ordinates, layout, cursors, codes, constants, stack, out
     )
@@ -148,9 +155,15 @@ def add_external_force(
 
 @njit(cache=True, inline="always")
 def support_motion(t, exc, params):
-    """MULT_APPUI: write each shock node's support displacement and velocity
+    """Multiple supports: write each shock node's support displacement and velocity
     Σ_k ψ_k(node) (d_k(t), v_k(t)) into its drive slots (global frame)."""
-    shapes, abscissas, ordinates, layout, cursors = exc[4], exc[5], exc[6], exc[7], exc[11]
+    shapes, abscissas, ordinates, layout, cursors = (
+        exc.drive_shapes,
+        exc.drive_abscissas,
+        exc.drive_ordinates,
+        exc.drive_layout,
+        exc.drive_cursors,
+    )
     n_supports = shapes.shape[3]
     if n_supports == 0:
         return
@@ -178,7 +191,7 @@ def support_values(t, k, abscissas, ordinates, layout, cursors):
 
 @njit(cache=True, inline="always")
 def local_support_motion(t, rots, shapes, abscissas, ordinates, layout, cursors, drive):
-    """MULT_APPUI for :func:`contact.local_shock_forces`: ``drive[s, node]``
+    """Multiple supports for :func:`contact.local_shock_forces`: ``drive[s, node]``
     = rot Σ_k ψ_k(node) (d_k(t), v_k(t)), summed in the global frame as
     :func:`support_motion` does, then rotated. Nothing to do without supports."""
     n_supports = shapes.shape[3]
@@ -205,11 +218,25 @@ def total_force(t, q, v, shk, vint, exc, work, out):
     """out = F_ext(t) + Φᵀ F_shock; returns a diverging shock's index or -1."""
     out[:] = 0.0
     external_force(t, exc, out)
-    flags, params, rots, phis, polars = shk[0], shk[1], shk[2], shk[3], shk[4]
+    flags, params, rots, phis, polars = shk.flags, shk.params, shk.rots, shk.phis, shk.polars
     support_motion(t, exc, params)
     shock = shock_forces(q, v, flags, params, rots, phis, polars, vint, work, out)
-    if shock < 0 and shk[5].shape[1] > 0:  # other relations (laws/): rows with a law
-        law_forces(t, q, v, flags, params, rots, phis, polars, shk[5], shk[6], vint, shk[7], out)
+    if shock < 0 and shk.laws.shape[1] > 0:  # other relations (laws/): rows with a law
+        law_forces(
+            t,
+            q,
+            v,
+            flags,
+            params,
+            rots,
+            phis,
+            polars,
+            shk.laws,
+            shk.rphis,
+            vint,
+            shk.law_scratch,
+            out,
+        )
     return shock
 
 
@@ -288,7 +315,7 @@ def state_acceleration(t, q, v, out, f, residual, vint, work, model):
     """out = M⁻¹ (F_ext(t) + F_shock(q, v) - K q - C v), the shock states
     ``vint`` updated (code_aster's dtmacce). Returns a diverging shock's
     index or -1; ``f`` receives the total force."""
-    lin, shk, exc = model[0], model[1], model[2]
+    lin, shk, exc = model[LINEAR], model[SHOCKS], model[LOADS]
     shock = total_force(t, q, v, shk, vint, exc, work, f)
     acceleration(f, q, v, lin, residual, out)
     return shock

@@ -1,9 +1,10 @@
-"""FORMULE load multipliers evaluated inside the compiled time loops.
+"""Formula load multipliers evaluated inside the compiled time loops: the
+postfix back end of :mod:`asterlite.lang.formula`.
 
-A ``FORMULE`` of one parameter (``NOM_PARA='INST'``) whose expression uses
-only numbers, the parameter, numeric extra values, arithmetic, comparisons,
-conditional expressions and the math functions of
-:mod:`asterlite.post.expression` is translated once into a small postfix
+A deck formula of one parameter, the time (``NOM_PARA='INST'``), whose checked tree
+uses only numbers, the parameter, numeric extra values, arithmetic,
+comparisons, conditional expressions and the functions with a kernel code
+in :mod:`asterlite.lang.numeric` is translated once into a small postfix
 program (operation codes and constants, plain arrays), which the kernels
 run at the exact instants the scheme needs: no tabulation, no
 interpolation, nothing that grows with the run. Anything else (a formula
@@ -24,8 +25,6 @@ which reports it.
 
 from __future__ import annotations
 
-import ast
-import copy
 import math
 import numbers
 
@@ -33,39 +32,69 @@ import numpy as np
 from numba import njit
 
 from asterlite.errors import CommandError
-
-# Operation codes. PUSH_CONSTANT takes its value from the constants row at
-# the same position; every other code pops its operands and pushes one value.
-PUSH_CONSTANT, PUSH_TIME = 0, 1
-ADD, SUB, MUL, DIV, POW, MOD, FLOOR_DIV, NEG = 2, 3, 4, 5, 6, 7, 8, 9
-SIN, COS, TAN, ASIN, ACOS, ATAN, SINH, COSH, TANH = 10, 11, 12, 13, 14, 15, 16, 17, 18
-ASINH, ACOSH, ATANH, EXP, LOG, LOG10, SQRT, ABS = 19, 20, 21, 22, 23, 24, 25, 26
-FLOOR, CEIL, TRUNC, DEGREES, RADIANS, SIGN = 27, 28, 29, 30, 31, 32
-ATAN2, HYPOT, MINIMUM, MAXIMUM, COPYSIGN = 33, 34, 35, 36, 37
-LESS, LESS_EQUAL, GREATER, GREATER_EQUAL, EQUAL, NOT_EQUAL = 38, 39, 40, 41, 42, 43
-AND, OR, NOT, SELECT, IDENTITY = 44, 45, 46, 47, 48
+from asterlite.lang import numeric
+from asterlite.lang.formula import (
+    ARITHMETIC,
+    Binary,
+    Call,
+    Compare,
+    Conditional,
+    Logical,
+    Name,
+    Number,
+    Unary,
+    walk,
+)
+from asterlite.lang.numeric import (  # the operation codes the kernels below run
+    ABS,
+    ACOS,
+    ACOSH,
+    ADD,
+    AND,
+    ASIN,
+    ASINH,
+    ATAN,
+    ATAN2,
+    ATANH,
+    CEIL,
+    COPYSIGN,
+    COS,
+    COSH,
+    DEGREES,
+    DIV,
+    EQUAL,
+    EXP,
+    FLOOR,
+    GREATER,
+    GREATER_EQUAL,
+    HYPOT,
+    IDENTITY,
+    LESS,
+    LESS_EQUAL,
+    LOG,
+    LOG10,
+    MAXIMUM,
+    MINIMUM,
+    MOD,
+    MUL,
+    NEG,
+    NOT,
+    NOT_EQUAL,
+    POW,
+    PUSH_CONSTANT,
+    PUSH_TIME,
+    RADIANS,
+    SELECT,
+    SIN,
+    SINH,
+    SQRT,
+    SUB,
+    TAN,
+    TANH,
+    TRUNC,
+)
 
 STACK_DEPTH = 32  # deepest expression accepted (operands pending at once)
-
-UNARY_FUNCTIONS = {
-    "sin": SIN, "cos": COS, "tan": TAN, "asin": ASIN, "acos": ACOS, "atan": ATAN,
-    "sinh": SINH, "cosh": COSH, "tanh": TANH, "asinh": ASINH, "acosh": ACOSH,
-    "atanh": ATANH, "exp": EXP, "log": LOG, "log10": LOG10, "sqrt": SQRT,
-    "abs": ABS, "fabs": ABS, "floor": FLOOR, "ceil": CEIL, "int": TRUNC,
-    "degrees": DEGREES, "radians": RADIANS, "sign": SIGN, "float": IDENTITY,
-}  # fmt: skip
-BINARY_FUNCTIONS = {
-    "atan2": ATAN2, "hypot": HYPOT, "pow": POW, "min": MINIMUM, "max": MAXIMUM,
-    "sign": COPYSIGN,
-}  # fmt: skip
-BINARY_OPERATORS = {
-    ast.Add: ADD, ast.Sub: SUB, ast.Mult: MUL, ast.Div: DIV, ast.Pow: POW,
-    ast.Mod: MOD, ast.FloorDiv: FLOOR_DIV,
-}  # fmt: skip
-COMPARISONS = {
-    ast.Lt: LESS, ast.LtE: LESS_EQUAL, ast.Gt: GREATER, ast.GtE: GREATER_EQUAL,
-    ast.Eq: EQUAL, ast.NotEq: NOT_EQUAL,
-}  # fmt: skip
 
 
 class NotCompilable(Exception):
@@ -73,15 +102,13 @@ class NotCompilable(Exception):
 
 
 def formula_program(mult) -> tuple[list[int], list[float]] | None:
-    """(codes, constants) of a one-parameter real FORMULE, or None when it
+    """(codes, constants) of a one-parameter real formula, or None when it
     cannot run in the kernels (then it is sampled)."""
     compiled = getattr(mult, "compiled", None)
     parameters = tuple(getattr(mult, "NOM_PARA", ()) or ())
     if compiled is None or len(parameters) != 1 or getattr(mult, "complex_result", False):
         return None
-    from asterlite.post.expression import MATH_CONSTANTS
-
-    constants = dict(MATH_CONSTANTS)
+    constants = dict(numeric.CONSTANTS)
     extra = getattr(mult, "extra", None) or {}
     for name in extra:
         constants.pop(name, None)  # an extra value shadows a math constant
@@ -92,41 +119,14 @@ def formula_program(mult) -> tuple[list[int], list[float]] | None:
             constants[name] = float(value)
         elif isinstance(value, np.ndarray) and value.ndim == 0 and np.isrealobj(value):
             constants[name] = float(value)
-    codes: list[int] = []
-    values: list[float] = []
+    emitter = _Emitter(compiled, parameters[0], constants, set(extra) | {parameters[0]})
     try:
-        shadowed = set(extra) | {parameters[0]}
-        body = fold_constants(compiled, parameters[0], constants)
-        depth = emit(body, parameters[0], constants, shadowed, codes, values, 0)
+        depth = emitter.emit(compiled.tree.body, 0)
     except (NotCompilable, RecursionError):
         return None
     if depth > STACK_DEPTH:
         return None
-    return codes, values
-
-
-_FOLDABLE = (ast.BinOp, ast.UnaryOp, ast.Constant, ast.Name, ast.operator, ast.unaryop, ast.Load)
-
-
-def fold_constants(compiled, parameter: str, constants: dict):
-    """The expression tree with each largest arithmetic subtree free of the
-    parameter (numbers, numeric extra values, math constants, + - * / ** %
-    //) replaced by its value, computed by the formula's own evaluator."""
-
-    def foldable(node) -> bool:
-        return all(
-            isinstance(n, _FOLDABLE)
-            and not (isinstance(n, ast.Name) and (n.id == parameter or n.id not in constants))
-            for n in ast.walk(node)
-        )
-
-    class Folder(ast.NodeTransformer):
-        def visit(self, node):
-            if isinstance(node, (ast.BinOp, ast.UnaryOp)) and foldable(node):
-                return ast.Constant(value=folded_value(compiled, node, constants))
-            return super().visit(node)
-
-    return Folder().visit(copy.deepcopy(compiled.tree.body))
+    return emitter.codes, emitter.values
 
 
 def folded_value(compiled, node, constants: dict) -> float:
@@ -155,94 +155,111 @@ def kernel_float(value) -> float:
         raise NotCompilable(f"integer of {value.bit_length()} bits") from None
 
 
-def exact_operand(node, constants: dict) -> None:
-    """Python compares an integer with a float exactly: refuse an integer
-    operand that no float holds (beyond 2**53), which the kernels would round."""
-    value = None
-    if isinstance(node, ast.Constant):
-        value = node.value
-    elif isinstance(node, ast.Name):
-        value = constants.get(node.id)
-    if isinstance(value, int) and not isinstance(value, bool):
-        if kernel_float(value) != value:
-            raise NotCompilable(f"integer {value.bit_length()} bits wide in a comparison")
+class _Emitter:
+    """Postfix code of a checked formula tree. Each largest arithmetic
+    subtree free of the parameter (numbers, numeric extra values, math
+    constants, + - * / ** % //, unary - + not) is folded to its value,
+    computed by the formula's own evaluator; ``shadowed``: names that are
+    not the table's functions (extra values, the parameter)."""
 
+    def __init__(self, compiled, parameter: str, constants: dict, shadowed: set):
+        self.compiled, self.parameter = compiled, parameter
+        self.constants, self.shadowed = constants, shadowed
+        self.codes: list[int] = []
+        self.values: list[float] = []
 
-def emit(node, parameter, constants, shadowed, codes, values, depth: int) -> int:
-    """Append the postfix code of ``node``; returns the deepest stack use.
-    ``shadowed``: names that are not the math functions (extra values)."""
+    def op(self, code: int, value: float = 0.0) -> None:
+        self.codes.append(code)
+        self.values.append(value)
 
-    def op(code: int, value: float = 0.0) -> None:
-        codes.append(code)
-        values.append(value)
+    def foldable(self, node) -> bool:
+        if not isinstance(node, ARITHMETIC):
+            return False
+        for item in walk(node):
+            if isinstance(item, Name):
+                if item.id == self.parameter or item.id not in self.constants:
+                    return False
+            elif not isinstance(item, (Number, *ARITHMETIC)):
+                return False
+        return True
 
-    def sub(child, extra_depth: int) -> int:
-        return emit(child, parameter, constants, shadowed, codes, values, depth + extra_depth)
+    def operand(self, node):
+        """A leaf as the kernels see it: a folded subtree becomes its value."""
+        if self.foldable(node):
+            return Number(folded_value(self.compiled, node, self.constants))
+        return node
 
-    match node:
-        case ast.Constant(value=value) if isinstance(value, int | float) and not isinstance(
-            value, bool
-        ):
-            op(PUSH_CONSTANT, kernel_float(value))
-            return depth + 1
-        case ast.Name(id=name):
-            if name == parameter:
-                op(PUSH_TIME)
-            elif name in constants:
-                op(PUSH_CONSTANT, kernel_float(constants[name]))
-            else:
-                raise NotCompilable(name)
-            return depth + 1
-        case ast.BinOp(left=left, op=operator, right=right) if type(operator) in BINARY_OPERATORS:
-            deepest = max(sub(left, 0), sub(right, 1))
-            op(BINARY_OPERATORS[type(operator)])
-            return deepest
-        case ast.UnaryOp(op=ast.USub(), operand=operand):
-            deepest = sub(operand, 0)
-            op(NEG)
-            return deepest
-        case ast.UnaryOp(op=ast.UAdd(), operand=operand):
-            return sub(operand, 0)
-        case ast.UnaryOp(op=ast.Not(), operand=operand):
-            deepest = sub(operand, 0)
-            op(NOT)
-            return deepest
-        case ast.Compare(left=left, ops=[comparison], comparators=[right]) if (
-            type(comparison) in COMPARISONS
-        ):
-            exact_operand(left, constants)
-            exact_operand(right, constants)
-            deepest = max(sub(left, 0), sub(right, 1))
-            op(COMPARISONS[type(comparison)])
-            return deepest
-        case ast.BoolOp(op=operator, values=operands):
-            code = AND if isinstance(operator, ast.And) else OR
-            deepest = sub(operands[0], 0)
-            for operand in operands[1:]:
-                deepest = max(deepest, sub(operand, 1))
-                op(code)
-            return deepest
-        case ast.IfExp(test=test, body=body, orelse=orelse):
-            deepest = max(sub(test, 0), sub(body, 1), sub(orelse, 2))
-            op(SELECT)
-            return deepest
-        case ast.Call(func=ast.Name(id=name), args=args, keywords=[]) if name not in shadowed:
-            if len(args) == 1 and name in UNARY_FUNCTIONS:
-                deepest = sub(args[0], 0)
-                op(UNARY_FUNCTIONS[name])
+    def exact_operand(self, node) -> None:
+        """Python compares an integer with a float exactly: refuse an integer
+        operand that no float holds (beyond 2**53), which the kernels would round."""
+        value = None
+        if isinstance(node, Number):
+            value = node.value
+        elif isinstance(node, Name):
+            value = self.constants.get(node.id)
+        if isinstance(value, int) and not isinstance(value, bool):
+            if kernel_float(value) != value:
+                raise NotCompilable(f"integer {value.bit_length()} bits wide in a comparison")
+
+    def emit(self, node, depth: int) -> int:
+        """Append the postfix code of ``node``; returns the deepest stack use."""
+        node = self.operand(node)
+        match node:
+            case Number(value=value) if isinstance(value, int | float) and not isinstance(
+                value, bool
+            ):
+                self.op(PUSH_CONSTANT, kernel_float(value))
+                return depth + 1
+            case Name(id=name):
+                if name == self.parameter:
+                    self.op(PUSH_TIME)
+                elif name in self.constants:
+                    self.op(PUSH_CONSTANT, kernel_float(self.constants[name]))
+                else:
+                    raise NotCompilable(name)
+                return depth + 1
+            case Binary(op=symbol, left=left, right=right):
+                deepest = max(self.emit(left, depth), self.emit(right, depth + 1))
+                self.op(numeric.BINARY_OPERATORS[symbol][1])
                 return deepest
-            if len(args) == 2 and name in BINARY_FUNCTIONS:
-                deepest = max(sub(args[0], 0), sub(args[1], 1))
-                op(BINARY_FUNCTIONS[name])
+            case Unary(op="+", operand=operand):
+                return self.emit(operand, depth)
+            case Unary(op=symbol, operand=operand):
+                deepest = self.emit(operand, depth)
+                self.op(numeric.UNARY_OPERATORS[symbol][1])
                 return deepest
-            if len(args) > 2 and name in ("min", "max"):  # reduce left to right
-                code = MINIMUM if name == "min" else MAXIMUM
-                deepest = sub(args[0], 0)
-                for arg in args[1:]:
-                    deepest = max(deepest, sub(arg, 1))
-                    op(code)
+            case Compare(left=left, ops=[symbol], comparators=[right]):
+                left, right = self.operand(left), self.operand(right)
+                self.exact_operand(left)
+                self.exact_operand(right)
+                deepest = max(self.emit(left, depth), self.emit(right, depth + 1))
+                self.op(numeric.COMPARISONS[symbol][1])
                 return deepest
-    raise NotCompilable(ast.dump(node))
+            case Logical(op=symbol, operands=operands):
+                code = numeric.LOGICAL[symbol][1]
+                deepest = self.emit(operands[0], depth)
+                for operand in operands[1:]:
+                    deepest = max(deepest, self.emit(operand, depth + 1))
+                    self.op(code)
+                return deepest
+            case Conditional(test=test, body=body, orelse=orelse):
+                deepest = max(
+                    self.emit(test, depth), self.emit(body, depth + 1), self.emit(orelse, depth + 2)
+                )
+                self.op(SELECT)
+                return deepest
+            case Call(name=name, args=args) if name not in self.shadowed:
+                row = numeric.FUNCTIONS.get(name)
+                code = None if row is None else row.kernel_code(len(args))
+                if code is not None:
+                    deepest = self.emit(args[0], depth)
+                    for arg in args[1:]:  # min/max of more: reduced left to right
+                        deepest = max(deepest, self.emit(arg, depth + 1))
+                        self.op(code)
+                    if len(args) == 1:
+                        self.op(code)
+                    return deepest
+        raise NotCompilable(repr(node))
 
 
 def program_tables(programs) -> tuple[np.ndarray, np.ndarray]:
@@ -329,7 +346,7 @@ def program_value(codes, constants, row, t, stack):
     load formula is made of (numbers, the parameter, ``*``, ``+``, ``sin``,
     ``cos``) tested first: the same operations on the same operands in the
     same order, so the same value to the last bit, with fewer loads and
-    stores per code (the specialised DIFF_CENTRE loop runs each FORMULE
+    stores per code (the specialised DIFF_CENTRE loop runs each formula
     load at every step)."""
     top = -1  # stack depth - 1; the value at that depth is ``x``
     x = 0.0

@@ -1,12 +1,12 @@
 """Local frame of a shock connection (R5.06.03 §6.2), set up once in numpy.
 
-The local x axis is NORM_OBST; two nautical angles (alpha about Z, beta
+The local x axis is the obstacle's normal; two nautical angles (alpha about Z, beta
 about the new Y) bring the global X onto it, and a third angle gamma (about
 the local x) fixes y_loc and z_loc. code_aster's choice of gamma:
 
-- ANGL_VRIL given: gamma = ANGL_VRIL (degrees);
+- a twist angle given: gamma = that angle (degrees);
 - otherwise, BI_PLAN_Y: y_loc follows the projection of node1 -> node2;
-  BI_PLAN_Z: z_loc follows node1 -> node2 (y_loc = z_dir x NORM_OBST);
+  BI_PLAN_Z: z_loc follows node1 -> node2 (y_loc = z_dir x normal);
   every other type: gamma = 0.
 """
 
@@ -71,8 +71,8 @@ def local_frame(obstacle_type: str, norm_obst, angl_vril_deg, coord1, coord2=Non
 
 
 def default_origin(coord1, coord2=None) -> np.ndarray:
-    """ORIG_OBST when absent: mid-point of the two nodes (BI_*); for a single
-    node code_aster takes half of the node's coordinates (its own rule,
+    """The obstacle's origin when the deck gives none: mid-point of the two
+    nodes (BI_*); for a single node code_aster takes half of the node's coordinates (its own rule,
     reproduced as is so decks relying on it behave the same)."""
     c1 = np.asarray(coord1, dtype=float)
     if coord2 is None:

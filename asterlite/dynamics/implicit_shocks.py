@@ -1,4 +1,4 @@
-"""Shocks treated implicitly (DYNA_VIBRA TRAITEMENT_NONL='IMPLICITE').
+"""Shocks treated implicitly (DYNA_VIBRA's implicit treatment of the nonlinearities).
 
 A DIS_CHOC normal force is piecewise linear in the modal coordinates: zero
 while the gap is open, -k_n d - c_n v_n in contact. code_aster
@@ -52,7 +52,7 @@ asterlite follows that algorithm with these choices:
   the next step runs whole with the contact spring in tension. At most
   MAX_TRIES integrations of one step; the step after a cut one is the
   user's step again (the time grid shifts, as in code_aster).
-- Not with support motion (MULT_APPUI, CORR_STAT): the gap then moves with
+- Not with support motion (multiple supports, static corrections): the gap then moves with
   the supports and a constant force cannot carry it (refused upstream).
 
 Everything runs in the compiled loop; the state of a step (scheme memory
@@ -70,6 +70,7 @@ from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import add_generalized_force, local_state, obstacle_gap
+from asterlite.dynamics.layouts import EXTRA, LINEAR, ROWS, SCALARS, SHOCKS, TABLE, Treatment
 
 EPS = np.finfo(np.float64).eps
 CONTACT_FORCE = EPS  # code_aster's r8prem: a shock is in contact above this force
@@ -100,17 +101,17 @@ def prepare(scheme: str, memory, system, shocks):
     n, ns = system.n_modes, shocks.count
     base = D.full_matrices(scheme, memory)
     lin = system.bundle()
-    treatment = (
+    treatment = Treatment(
         np.array(system.stiffness, dtype=float),  # K0
         np.array(system.damping, dtype=float),  # C0
-        lin[3].copy(),  # the diagonal flag of K0, C0
+        lin.diagonal.copy(),  # the diagonal flag of K0, C0
         np.zeros(ns, dtype=np.int64),  # in contact (linearised) now
         np.zeros(ns, dtype=np.int64),  # in contact at the end of the step
         np.zeros(N_INTS, dtype=np.int64),
         np.zeros((N_KINEMATICS, ns)),  # kinematics
         np.zeros((2, n)),  # gradient, scratch
         np.zeros((5, 3)),  # local positions and velocities
-        (base[0].copy(), base[1].copy()),  # the scheme's rows and scalars
+        (base[ROWS].copy(), base[SCALARS].copy()),  # the scheme's rows and scalars
         np.zeros((4, n)),  # q, v, a, f
         np.zeros((2, ns, shocks.vint_width)),  # internal variables and their save
         np.zeros(ns, dtype=np.int64),  # in contact at the start of the step
@@ -128,10 +129,10 @@ def prepare(scheme: str, memory, system, shocks):
 
 def start(memory, model, q, v, t0):
     """Linearise the shocks already in contact at the initial state."""
-    treatment = memory[3]
-    shk, lin = model[1], model[0]
-    active, trial, kin = treatment[3], treatment[4], treatment[6]
-    indicators(q, v, shk, kin, R_GAP1, trial, treatment[8])
+    treatment = memory[EXTRA]
+    shk, lin = model[SHOCKS], model[LINEAR]
+    active, trial, kin = treatment.active, treatment.trial, treatment.kinematics
+    indicators(q, v, shk, kin, R_GAP1, trial, treatment.work)
     if np.any(trial != active):
         switch(q, shk, lin, treatment)
 
@@ -139,7 +140,7 @@ def start(memory, model, q, v, t0):
 @njit(cache=True)
 def shock_kinematics(s, q, v, shk, work):
     """(gap, cos_n, sin_n, normal velocity) of DIS_CHOC ``s`` at (q, v)."""
-    flags, params, rots, phis, polars = shk[0], shk[1], shk[2], shk[3], shk[4]
+    flags, params, rots, phis, polars = shk.flags, shk.params, shk.rots, shk.phis, shk.polars
     p = params[s]
     loc1, vel1, loc2, vel2 = work[0], work[1], work[2], work[3]
     origin = p[C.P_ORIGIN : C.P_ORIGIN + 3]
@@ -173,7 +174,7 @@ def indicators(q, v, shk, kinematics, first_row, in_contact, work):
     """Gap, normal velocity, unclipped normal force and normal of every
     DIS_CHOC at (q, v) into ``kinematics[first_row:first_row + 5]``, and whether
     each is in contact (clipped force above :data:`CONTACT_FORCE`)."""
-    flags, params = shk[0], shk[1]
+    flags, params = shk.flags, shk.params
     for s in range(flags.shape[0]):
         in_contact[s] = 0
         if flags[s, C.F_LAW] != 0:
@@ -230,20 +231,20 @@ def normal_turned(active, params, kinematics):
 
 @njit(cache=True)
 def switch(q, shk, lin, treatment):
-    """Linearise the shocks in contact at ``q`` (``treatment[4]``): K = K0 +
+    """Linearise the shocks in contact at ``q`` (``treatment.trial``): K = K0 +
     Σ k_n g gᵀ, C = C0 + Σ c_n g gᵀ into the model's bundle, the gap term
     and normal into each shock's parameters, every DIS_CHOC's treatment
     flag set; they become the active set."""
     stiffness0, damping0, diagonal0, active, trial = (
-        treatment[0],
-        treatment[1],
-        treatment[2],
-        treatment[3],
-        treatment[4],
+        treatment.stiffness0,
+        treatment.damping0,
+        treatment.diagonal0,
+        treatment.active,
+        treatment.trial,
     )
-    ints, vectors, work = treatment[5], treatment[7], treatment[8]
-    flags, params, rots, phis = shk[0], shk[1], shk[2], shk[3]
-    stiffness, damping, flag = lin[1], lin[2], lin[3]
+    ints, vectors, work = treatment.ints, treatment.gradient, treatment.work
+    flags, params, rots, phis = shk.flags, shk.params, shk.rots, shk.phis
+    stiffness, damping, flag = lin.stiffness, lin.damping, lin.diagonal
     n = q.shape[0]
     stiffness[:, :] = stiffness0
     damping[:, :] = damping0
@@ -286,37 +287,37 @@ def switch(q, shk, lin, treatment):
 
 @njit(cache=True)
 def save(clock, counters, state, memory, treatment, clock_copy, counters_copy):
-    backup_rows, backup_scalars = treatment[9]
-    backup_rows[:, :] = memory[0]
-    backup_scalars[:] = memory[1]
+    backup_rows, backup_scalars = treatment.backup
+    backup_rows[:, :] = memory[ROWS]
+    backup_scalars[:] = memory[SCALARS]
     clock_copy[:] = clock
     counters_copy[:] = counters
     # q, v, a, f then the internal variables (and their save) in the state rows
-    keep = treatment[10]
-    keep[0, :] = state[0]
-    keep[1, :] = state[1]
-    keep[2, :] = state[2]
-    keep[3, :] = state[3]
-    vint_keep = treatment[11]
-    vint_keep[0, :, :] = state[4]
-    vint_keep[1, :, :] = state[5]
+    keep = treatment.keep
+    keep[0, :] = state.q
+    keep[1, :] = state.v
+    keep[2, :] = state.a
+    keep[3, :] = state.f
+    vint_keep = treatment.vint_keep
+    vint_keep[0, :, :] = state.vint
+    vint_keep[1, :, :] = state.vint_save
 
 
 @njit(cache=True)
 def restore(clock, counters, state, memory, treatment, clock_copy, counters_copy):
-    backup_rows, backup_scalars = treatment[9]
-    memory[0][:, :] = backup_rows
-    memory[1][:] = backup_scalars
+    backup_rows, backup_scalars = treatment.backup
+    memory[ROWS][:, :] = backup_rows
+    memory[SCALARS][:] = backup_scalars
     clock[:] = clock_copy
     counters[:] = counters_copy
-    keep = treatment[10]
-    state[0][:] = keep[0]
-    state[1][:] = keep[1]
-    state[2][:] = keep[2]
-    state[3][:] = keep[3]
-    vint_keep = treatment[11]
-    state[4][:, :] = vint_keep[0]
-    state[5][:, :] = vint_keep[1]
+    keep = treatment.keep
+    state.q[:] = keep[0]
+    state.v[:] = keep[1]
+    state.a[:] = keep[2]
+    state.f[:] = keep[3]
+    vint_keep = treatment.vint_keep
+    state.vint[:, :] = vint_keep[0]
+    state.vint_save[:, :] = vint_keep[1]
 
 
 @njit(cache=True)
@@ -327,20 +328,20 @@ def implicit_loop(
     each step is saved, integrated, checked for a change of contact
     configuration and, when the switch lies inside it, integrated again up
     to the switch; an accepted switch linearises the new configuration."""
-    base = (memory[0], memory[1], memory[2])
-    treatment = memory[3]
+    base = (memory[ROWS], memory[SCALARS], memory[TABLE])
+    treatment = memory[EXTRA]
     active, trial, ints, kinematics, work = (
-        treatment[3],
-        treatment[4],
-        treatment[5],
-        treatment[6],
-        treatment[8],
+        treatment.active,
+        treatment.trial,
+        treatment.ints,
+        treatment.kinematics,
+        treatment.work,
     )
     clock_copy = np.empty_like(clock)
     counters_copy = np.empty_like(counters)
-    keep = treatment[10]
-    reference = treatment[13]
-    n = state[0].shape[0]
+    keep = treatment.keep
+    reference = treatment.planned
+    n = state.q.shape[0]
     balance = E.is_active(energy)
     while K.unfinished(clock, counters, eps):
         paused = L.before_step(clock, counters, model, archive)
@@ -353,8 +354,8 @@ def implicit_loop(
         )
         if status != K.STATUS_DONE:
             return K.record_failure(clock, counters, status, shock, dt_used)
-        q, v = state[0], state[1]
-        indicators(q, v, model[1], kinematics, R_GAP1, trial, work)
+        q, v = state.q, state.v
+        indicators(q, v, model[SHOCKS], kinematics, R_GAP1, trial, work)
         changed = False
         for s in range(trial.shape[0]):
             if trial[s] != active[s]:
@@ -362,7 +363,9 @@ def implicit_loop(
         if changed:
             if ints[I_TRIES] == 0:
                 reference[0] = dt_used  # the step as planned, before any cut
-            indicators(keep[0], keep[1], model[1], kinematics, R_GAP0, treatment[12], work)
+            indicators(
+                keep[0], keep[1], model[SHOCKS], kinematics, R_GAP0, treatment.active_at_start, work
+            )
             ratio = switch_fraction(active, trial, kinematics)
             early, late = ratio * dt_used, (1.0 - ratio) * dt_used
             if late > CUT_TOLERANCE * reference[0]:  # not at the end of the step
@@ -374,15 +377,15 @@ def implicit_loop(
                 if early > CUT_TOLERANCE * reference[0] and early > SHORTEST_CUT:
                     clock[K.C_STEP] = early  # integrate up to the switch
                 else:  # the switch is at the start: the whole step in the new configuration
-                    switch(state[0], model[1], model[0], treatment)
-                    D.refresh_operators(code, base, model[0], n)
+                    switch(state.q, model[SHOCKS], model[LINEAR], treatment)
+                    D.refresh_operators(code, base, model[LINEAR], n)
                 continue
         result = (dt_used, dt_next, rejected)
         archived = counters[K.K_ARCHIVED]
         K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-        if changed or normal_turned(active, model[1][1], kinematics):
-            switch(q, model[1], model[0], treatment)
-            D.refresh_operators(code, base, model[0], n)
+        if changed or normal_turned(active, model[SHOCKS].params, kinematics):
+            switch(q, model[SHOCKS], model[LINEAR], treatment)
+            D.refresh_operators(code, base, model[LINEAR], n)
             if not changed:
                 ints[I_SWITCHES] -= 1
                 ints[I_TURNS] += 1

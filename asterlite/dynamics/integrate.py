@@ -15,8 +15,12 @@ from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.contact import N_VINT
+from asterlite.dynamics.excitation import Excitation
 from asterlite.dynamics.forces import acceleration, total_force
-from asterlite.dynamics.model import Excitation, LinearSystem, ShockSet, local_bundle
+from asterlite.dynamics.laws.kernel import failed_law
+from asterlite.dynamics.layouts import EXTRA, LINEAR, LOADS, SCALARS, SHOCKS, Archive, State
+from asterlite.dynamics.loop import scheme_loop
+from asterlite.dynamics.model import LinearSystem, ShockSet, local_bundle
 from asterlite.dynamics.schemes import (
     GENERAL_PATH,
     IMPLICIT_LOOP,
@@ -24,12 +28,19 @@ from asterlite.dynamics.schemes import (
     SCHEMES,
     Scheme,
 )
+from asterlite.dynamics.step_limits import (
+    damped_step_limit,
+    stability_limit,
+    stability_period,
+    suggested_step,
+)
 from asterlite.errors import NumericalError
+from asterlite.errors import field as named
 
 
 @dataclass
 class SchemeOptions:
-    """SCHEMA_TEMPS parameters (code_aster 17 defaults)."""
+    """The scheme's parameters (code_aster 17 defaults)."""
 
     tolerance: float = 1.0e-5
     alpha: float = 0.0
@@ -67,7 +78,7 @@ class RunResult:
     # instant and the steps rejected so far (code_aster's PTEM and more)
     step_info: np.ndarray = field(default_factory=lambda: np.zeros((0, K.N_INFO)))
     info: dict = field(default_factory=dict)
-    # (n_archived, energy.N_COLUMNS): the energy balance (ENERGIE), or None
+    # (n_archived, energy.N_COLUMNS): the energy balance, or None
     energy: np.ndarray | None = None
 
 
@@ -92,13 +103,13 @@ def integrate(
     load_labels: list[str] | None = None,
 ) -> RunResult:
     """Integrate from t0 to t_end. ``specialised=False`` runs a scheme's
-    ``general_loop`` when it has one (DIFF_CENTRE: the general path, same
-    results as its specialised ``run_loop``; kept for comparison).
+    general path (the time loop around its step on the three bundles, shocks
+    in the global frame), as the relations of laws/ do; kept for comparison.
     ``label`` names the run on the progress bar. ``energy``: accumulate the
     energy balance in the loop (:mod:`asterlite.dynamics.energy`), returned
-    as ``RunResult.energy``. ``implicit_shocks``: TRAITEMENT_NONL='IMPLICITE'
+    as ``RunResult.energy``. ``implicit_shocks``: the implicit shock treatment
     (:mod:`asterlite.dynamics.implicit_shocks`). ``load_labels``: how the
-    deck names each excitation row (``EXCIT[2]``...), for the message of a
+    deck names each excitation row (the command's label of a load), for the message of a
     load that becomes non-finite; the error's ``path`` then names it.
 
     A kernel numba has not compiled yet (``asterlite warmup`` compiles them
@@ -188,17 +199,17 @@ def run_kernel(
     f, a = np.zeros(n), np.zeros(n)
     vint = shocks.initial_vint(t0)
     work = np.zeros((5, 3))
-    shock = total_force(t0, q, v, model[1], vint, model[2], work, f)
-    acceleration(f, q, v, model[0], np.zeros(n), a)
+    shock = total_force(t0, q, v, model[SHOCKS], vint, model[LOADS], work, f)
+    acceleration(f, q, v, model[LINEAR], np.zeros(n), a)
     if shock >= 0 or diagnosis.bad(a).any():
         raise law_error(shocks, vint, t0) or initial_error(
             (q, v, a, f, vint), shocks, excitation, t0, load_labels
         )
-    state = (q, v, a, f, vint, np.zeros_like(vint), work)
+    state = State(q, v, a, f, vint, np.zeros_like(vint), work)
 
     memory, _ = module.prepare(system, dt, options)
     rotating_loop = None
-    if rotation is not None:  # VITESSE_VARIABLE='OUI': matrices updated every step
+    if rotation is not None:  # variable rotation speed: matrices updated every step
         from asterlite.dynamics import rotation as R
 
         memory, rotating_loop = R.prepare(scheme, memory, rotation)
@@ -209,7 +220,10 @@ def run_kernel(
         from asterlite.dynamics import implicit_shocks as IS
 
         lin = system.bundle()
-        model = ((lin[0], lin[1].copy(), lin[2].copy(), lin[3].copy()), model[1], model[2])
+        lin = lin._replace(
+            stiffness=lin.stiffness.copy(), damping=lin.damping.copy(), diagonal=lin.diagonal.copy()
+        )
+        model = (lin, model[SHOCKS], model[LOADS])
         memory, implicit_loop = IS.prepare(scheme, memory, system, shocks)
         IS.start(memory, model, q, v, t0)
     adaptive = loop_adapts(entry, dt, options)
@@ -227,18 +241,15 @@ def run_kernel(
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
     K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
     counters[K.K_ARCHIVED] = 1
-    run_loop = module.run_loop
-    if not specialised or shocks.has_laws:  # other relations: the general path
-        run_loop = getattr(module, "general_loop", module.run_loop)
-    if rotating_loop is not None:
-        run_loop = rotating_loop
-    if implicit_loop is not None:
-        run_loop = implicit_loop
+    run_loop = implicit_loop or rotating_loop or scheme_run_loop(entry, module, notice.name)
     if energy and rotating_loop is not None:
-        raise NumericalError("the energy balance (ENERGIE) with VITESSE_VARIABLE='OUI'")
+        raise NumericalError(
+            f"the energy balance ({named('energy')}) at variable rotation speed "
+            f"({named('rotation.variable')}='OUI')"
+        )
     balance = E.new_energy(system, shocks, capacity, entry.staggered_velocity, energy)
     if energy:
-        E.start(balance, t0, q, v, a, vint, model[1], model[2])
+        E.start(balance, t0, q, v, a, vint, model[SHOCKS], model[LOADS])
     bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
     model_parts = (system, shocks, excitation, load_labels)
     started, compiled_before = wallclock.perf_counter(), notice.seconds
@@ -246,17 +257,16 @@ def run_kernel(
         while True:
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
             chunk_started = wallclock.perf_counter()
-            extra = (balance,) if rotating_loop is None else ()  # rotation.py: no ENERGIE
             status = run_loop(
-                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, *extra
+                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, balance
             )
             if status == K.STATUS_FULL:
-                budget.check_archive(2 * len(buffers[0]), row_bytes, pas_arch, clock, counters)
+                budget.check_archive(2 * len(buffers.times), row_bytes, pas_arch, clock, counters)
                 buffers = grow(buffers)
-                balance = E.grown(balance, len(buffers[0]))
+                balance = E.grown(balance, len(buffers.times))
             elif status == K.STATUS_LOADS:  # next window of the sampled multipliers
                 excitation.refill(clock[K.C_TIME], clock[K.C_STEP])
-                model = (model[0], model[1], excitation.bundle()) + model[3:]
+                model = (model[LINEAR], model[SHOCKS], excitation.bundle()) + model[3:]
             elif status == K.STATUS_PAUSE:
                 budget.check_steps(clock, counters, scheme)
                 watchdog.check_limits()  # the run's time and memory limits (export P lines)
@@ -273,7 +283,7 @@ def run_kernel(
     if status != K.STATUS_DONE:
         failed = law_error(shocks, vint, clock[K.C_TIME] + clock[K.C_STEP])
         if failed is None and status == K.STATUS_NOT_FINITE:
-            last = buffers[0][int(counters[K.K_ARCHIVED]) - 1]
+            last = buffers.times[int(counters[K.K_ARCHIVED]) - 1]
             failed = nonfinite_error(state, clock, counters, last, model_parts, scheme)
         raise failed or divergence_error(status, clock, counters, shocks, system, scheme)
     count = counters[K.K_ARCHIVED]
@@ -281,22 +291,36 @@ def run_kernel(
     info = run_info(clock, counters, t0, dt, elapsed, adaptive)
     info["compile_seconds"] = notice.seconds
     if implicit_loop is not None:
-        ints = memory[3][5]
+        ints = memory[EXTRA].ints
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
         info["reintegrated_steps"] = int(ints[IS.I_CUTS])
         info["relinearisations"] = int(ints[IS.I_TURNS])
     if entry.frequency_control:
-        kept = int(memory[1][adapt_control.S_KEPT_AT_MAX_TRIALS])
+        kept = int(memory[SCALARS][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
-    rows = balance[5][:count].copy() if energy else None
+    rows = balance.rows[:count].copy() if energy else None
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
+
+
+def scheme_run_loop(entry: Scheme, module, loop: str):
+    """The compiled loop named ``loop`` (:func:`loop_kernel`) of the scheme
+    ``entry`` whose implementation is ``module``: code_aster 10-12's own
+    loop for the legacy variant; the module's ``fast_loop``, when it has one
+    (DIFF_CENTRE, NEWMARK), for any loop but the general path; else the one
+    time loop around the scheme's step (:func:`asterlite.dynamics.loop.scheme_loop`)."""
+    if loop == entry.legacy_kernel:
+        return module.run_loop
+    fast = getattr(module, "fast_loop", None)
+    if fast is not None and loop != GENERAL_PATH.format(entry.kernel):
+        return fast
+    return scheme_loop(module.step)
 
 
 def legacy_adapt_module(entry: Scheme, rotation, implicit, energy):
     """code_aster 10-12's variant of the scheme (its ADAPT_ORDRE2), which had
     no varying rotation speed, no implicit shocks and no energy balance."""
-    for asked, what in ((rotation, "VITESSE_VARIABLE='OUI'"), (implicit, "implicit shocks"),
-                        (energy, "ENERGIE")):  # fmt: skip
+    for asked, what in ((rotation, "a varying rotation speed"), (implicit, "implicit shocks"),
+                        (energy, "an energy balance")):  # fmt: skip
         if asked:
             raise NumericalError(f"{what} with code_aster 10-12's ADAPT_ORDRE2")
     return entry.legacy_implementation()
@@ -304,8 +328,8 @@ def legacy_adapt_module(entry: Scheme, rotation, implicit, energy):
 
 def loop_adapts(entry: Scheme, dt: float, options: SchemeOptions) -> bool:
     """Whether the time loop follows the step proposed by the scheme
-    (code_aster's dtmprep: adaptive families with PAS_MINI != PAS_MAXI,
-    defaults 1e-6 and 1e6 times PAS)."""
+    (code_aster's dtmprep: adaptive families whose step bounds differ,
+    defaults 1e-6 and 1e6 times dt)."""
     if not entry.adaptive:
         return False
     dt_min = options.dt_min if options.dt_min is not None else 1.0e-6 * dt
@@ -314,7 +338,7 @@ def loop_adapts(entry: Scheme, dt: float, options: SchemeOptions) -> bool:
 
 
 def new_buffers(capacity: int, n_modes: int, n_shocks: int, width: int = N_VINT):
-    return (
+    return Archive(
         np.zeros(capacity),
         np.zeros(capacity, dtype=np.int64),
         np.zeros((capacity, n_modes)),
@@ -364,9 +388,10 @@ class StepBudget:
             f"{scheme}: step budget exhausted: {steps} steps taken and t={clock[K.C_TIME]:.6g} "
             f"of {clock[K.C_END]:.6g} reached ({int(counters[K.K_REJECTED])} rejected, "
             f"smallest step {clock[K.C_MIN_STEP]:.3g}); the adaptive step collapsed, as "
-            "it does on stick-slip or stiff contact switches: raise PAS_MINI, loosen "
-            "TOLERANCE, give ALPHA (a floor under the error scale of modes nearly at rest), "
-            "or use a fixed-step scheme (DIFF_CENTRE, NEWMARK)"
+            f"it does on stick-slip or stiff contact switches: raise {named('options.dt_min')}, "
+            f"loosen {named('options.tolerance')}, give {named('options.alpha')} (a floor under "
+            "the error scale of modes nearly at rest), or use a fixed-step scheme "
+            "(DIFF_CENTRE, NEWMARK)"
         )
 
     def check_archive(self, capacity: int, row_bytes: int, pas_arch: int, clock, counters):
@@ -383,25 +408,31 @@ class StepBudget:
         raise NumericalError(
             f"archive memory limit: {capacity} archived instants would take "
             f"{needed / 1024**3:.2f} GB (limit {self.archive_bytes / 1024**3:.2f} GB; "
-            f"{where}, PAS_ARCH={pas_arch}): archive less often (ARCHIVAGE PAS_ARCH or "
-            "LIST_INST)"
+            f"{where}, {named('archive.period')}={pas_arch}): archive less often "
+            f"({named('archive')} {named('archive.period')} or {named('archive.instants')})"
         )
+
+
+# what to check when a load is not finite (its multiplier: function, coefficient)
+LOAD_ADVICE = (
+    f"check the function that defines it ({named('excitation.function')}, "
+    f"{named('excitation.coefficient')}, the formula)"
+)
 
 
 def law_error(shocks: ShockSet, vint: np.ndarray, t: float) -> NumericalError | None:
     """The error naming a nonlinearity of laws/ whose evaluation failed
     (NaN in its internal variables), or None."""
-    from asterlite.dynamics.laws.kernel import failed_law
 
     s = failed_law(shocks.flags, vint)
     if s < 0:
         return None
     spec = shocks.specs[s]
     return NumericalError(
-        f"COMPORTEMENT {spec.relation} {spec.name.strip()!r} (node {spec.node_1}) could not be "
-        f"evaluated at t={t:.6g}: a function was evaluated outside its domain "
+        f"{named('relations')} {spec.relation} {spec.name.strip()!r} (node {spec.node_1}) "
+        f"could not be evaluated at t={t:.6g}: a function was evaluated outside its domain "
         "(PROL_GAUCHE/PROL_DROITE='EXCLU') or the local integration did not converge "
-        "(ITER_INTE_MAXI, RESI_INTE)"
+        f"({named('relation.max_iterations')}, {named('relation.tolerance')})"
     )
 
 
@@ -416,7 +447,7 @@ def trimmed(buffer: np.ndarray, count: int) -> np.ndarray:
 
 
 def grow(buffers):
-    return tuple(np.concatenate([b, np.zeros_like(b)]) for b in buffers)
+    return Archive(*(np.concatenate([b, np.zeros_like(b)]) for b in buffers))
 
 
 def run_info(clock, counters, t0: float, dt: float, elapsed: float, adaptive: bool) -> dict:
@@ -447,7 +478,7 @@ def initial_error(state, shocks, excitation, t0: float, labels) -> NumericalErro
 
 def nonfinite_error(state, clock, counters, last_archived, model_parts, scheme: str):
     """The error of a run whose state became non-finite: which quantity
-    (the load of an EXCIT occurrence, the force of a shock, the generalized
+    (a load of the excitation, the force of a shock, the generalized
     displacement / velocity / acceleration), at which instant, the last
     finite and the last archived instants, and what to change; its
     ``path`` names the keyword at fault below DYNA_VIBRA."""
@@ -458,7 +489,7 @@ def nonfinite_error(state, clock, counters, last_archived, model_parts, scheme: 
     if culprit.step_related:
         advice = step_advice(system, shocks, scheme, dt)
     else:
-        advice = "check the function that defines it (FONC_MULT, COEF_MULT, the FORMULE)"
+        advice = LOAD_ADVICE
     return NumericalError(f"{scheme}: {when}: {culprit.text}; {advice}", path=culprit.path)
 
 
@@ -477,9 +508,9 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
     what = {
         K.STATUS_NOT_FINITE: "the solution became non-finite",
         K.STATUS_SHOCK_DIVERGED: "relative velocity at a shock diverged",
-        K.STATUS_STEP_UNDERFLOW: "the adaptive step fell below PAS_MINI",
+        K.STATUS_STEP_UNDERFLOW: f"the adaptive step fell below {named('options.dt_min')}",
         K.STATUS_SWITCH_NOT_LOCATED: "a step was integrated again 100 times without "
-        "locating its contact switch (TRAITEMENT_NONL='IMPLICITE')",
+        f"locating its contact switch ({named('implicit')}='IMPLICITE')",
     }.get(status, f"integration failed (status {status})")
     advice = step_advice(system, shocks, scheme, dt)
     return NumericalError(f"{scheme}: {what} at t={t:.6g}{where} with step {dt:.3g}; {advice}")
@@ -487,7 +518,6 @@ def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSy
 
 def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) -> str:
     """A smaller step to try, with what sets the stability limit."""
-    from asterlite.dynamics.model import damped_step_limit, stability_limit, suggested_step
 
     period = stability_limit(system, shocks)
     limit, cause = step_limit(system, shocks, scheme), period.cause()
@@ -497,18 +527,19 @@ def step_advice(system: LinearSystem, shocks: ShockSet, scheme: str, dt: float) 
     if limit >= dt:  # the step already resolves the model: halving is all one can say
         advice = (
             f"the step is already below the stability estimate {limit:.3g} s ({cause}); "
-            f"try PAS={suggested_step(dt / 2.0):.3g} and check the stiffness, damping and loads"
+            f"try {named('grid.step')}={suggested_step(dt / 2.0):.3g} and check the "
+            "stiffness, damping and loads"
         )
     else:
-        advice = f"try PAS <= {limit:.3g} (e.g. PAS={suggested_step(limit):.3g}; {cause})"
+        step = named("grid.step")
+        advice = f"try {step} <= {limit:.3g} (e.g. {step}={suggested_step(limit):.3g}; {cause})"
     return advice
 
 
 def step_limit(system: LinearSystem, shocks: ShockSet, scheme: str) -> float:
-    """The largest step code_aster's VERI_PAS accepts for ``scheme``: the
+    """The largest step code_aster's step check accepts for ``scheme``: the
     fraction of its description (:mod:`asterlite.dynamics.schemes`) of the
     shortest period with the shock stiffness."""
-    from asterlite.dynamics.model import stability_period
 
     return stability_period(system, shocks) / SCHEMES[scheme].step_fraction
 

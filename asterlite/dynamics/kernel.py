@@ -1,12 +1,12 @@
 """Pieces of the compiled time loop shared by every scheme: step planning,
 archiving, status codes.
 
-Each scheme module owns a small ``run_loop`` (an njit function calling its
-own ``step`` directly, so that everything is cached across processes) built
-from the helpers here::
+The time loop (:mod:`asterlite.dynamics.loop`, written once and compiled
+around each scheme's ``step``, so that everything is cached across
+processes) is built from the helpers here::
 
     while unfinished(clock, counters, eps):
-        paused = pause_status(counters, archive[0])
+        paused = pause_status(counters, archive.times)
         if paused: return paused            # STATUS_FULL or STATUS_PAUSE
         if not loads_ready(clock, exc): return STATUS_LOADS
         t, dt = plan_step(clock, counters, instants, eps)
@@ -19,24 +19,26 @@ A step function has the signature
     step(t, dt, index, state, memory, model)
         -> (status, shock, dt_used, dt_next, n_rejected)
 
-with ``index`` the number of steps already taken, ``state = (q, v, a, f,
-vint, vint_save, work)`` advanced in place from t to t + dt_used,
-``memory = (rows, scalars, table)`` the scheme's own persistent arrays
-(rows of length n, scalars, and a coefficient table such as a Butcher
-tableau) and ``model = (lin, shk, exc)`` the bundles of ``model.py``.
+with ``index`` the number of steps already taken, ``state`` a
+``layouts.State`` (q, v, a, f, vint, vint_save, work) advanced in place
+from t to t + dt_used, ``memory = (rows, scalars, table)`` the scheme's own
+persistent arrays (rows of length n, scalars, and a coefficient table such
+as a Butcher tableau; ``layouts.ROWS``...) and ``model = (linear, shocks,
+loads)`` the bundles of ``model.py`` (``layouts.LINEAR``...; each a named
+tuple of :mod:`asterlite.dynamics.layouts`).
 
 The loop follows code_aster's archiving rules (dtmcalc): the step is
-shortened to land exactly on each requested instant (and on INST_FIN), the
+shortened to land exactly on each requested instant (and on the final instant), the
 remainder of the shortened step is taken next, and otherwise every
 ``pas_arch``-th step is archived. A fixed-step loop stands on the grid
-t0 + n PAS (code_aster's list of instants, mdptem): the instant of a step
+t0 + n dt (code_aster's list of instants, mdptem): the instant of a step
 that completes grid interval n is computed from n, never summed step after
 step, so that 2e8 steps of 1e-5 s end at 2000 s exactly (a running sum
 drifts by 4e-6 s there and takes one more, tiny, step). Adaptive loops
 accumulate their steps. It stops with STATUS_FULL when the archive
 buffers are full so that the driver can grow them and resume: memory
 follows the archived instants, never the number of steps. Likewise it
-stops with STATUS_LOADS when a multiplier sampled by windows (a FORMULE)
+stops with STATUS_LOADS when a multiplier sampled by windows (a formula)
 needs its next window, and with STATUS_PAUSE when it has taken the steps
 the driver granted (``counters[K_PAUSE_AT]``): the driver reports progress,
 checks the step budget and resumes, so that a long run stays responsive
@@ -66,7 +68,7 @@ STATUS_STEP_UNDERFLOW = 3
 STATUS_REJECTED = 4
 STATUS_SWITCH_NOT_LOCATED = 5  # implicit shocks: a contact switch not located in 100 tries
 STATUS_FULL = 10
-STATUS_LOADS = 11  # a windowed multiplier needs its next window (model.Excitation.refill)
+STATUS_LOADS = 11  # a windowed multiplier needs its next window (excitation.Excitation.refill)
 STATUS_PAUSE = 12  # the granted steps are taken: the driver reports progress and resumes
 
 # clock[]: time, stored step, nominal step, end time, shortened step,
@@ -89,7 +91,7 @@ N_CLOCK = 8
     K_GRID,
 ) = range(10)
 N_COUNTERS = 10
-# a fixed step ending this close (relative to PAS) to the next grid instant
+# a fixed step ending this close (relative to dt) to the next grid instant
 # completes the grid interval: far above the round-off of a sum of two
 # instants, far below any step cut short (implicit shocks cut at >= 1 %)
 GRID_TOLERANCE = 1.0e-6
@@ -199,10 +201,10 @@ def complete_step(clock, counters, state, instants, pas_arch, eps, archive_buffe
     advance_clock(
         clock,
         counters,
-        state[0],
-        state[1],
-        state[2],
-        state[4],
+        state.q,
+        state.v,
+        state.a,
+        state.vint,
         instants,
         pas_arch,
         eps,
@@ -294,7 +296,7 @@ def advance_clock(
 
 @njit(cache=True, inline="always")
 def grid_instant(clock, counters, t):
-    """The end ``t`` of a fixed step, replaced by t0 + n PAS when the step
+    """The end ``t`` of a fixed step, replaced by t0 + n dt when the step
     completes grid interval n; a step ending elsewhere (cut short at a
     contact switch: code_aster's grid shifts there) starts a new grid."""
     n = counters[K_GRID] + 1

@@ -17,7 +17,7 @@ follows from the model tuple's type, when numba compiles the step:
   arrays): the mode shapes already rotated into each shock's frame, as
   NEWMARK's and DIFF_CENTRE's specialised loops evaluate them
   (:func:`contact.local_shock_forces` inlined in :func:`local_evaluate`,
-  the external force as DIFF_CENTRE's loop computes it, FORMULE programs
+  the external force as DIFF_CENTRE's loop computes it, formula programs
   through :func:`formula.program_value`).
 
 So one source per step and two compiled copies of it (the scheme's loop
@@ -33,6 +33,7 @@ from numba.extending import overload
 
 from asterlite.dynamics import forces as F
 from asterlite.dynamics.contact import local_shock_forces
+from asterlite.dynamics.layouts import LINEAR, LOADS, LOCAL, SHOCKS
 from asterlite.dynamics.scheme_diff_centre import external_force_into
 
 
@@ -45,15 +46,25 @@ def takes_local_frames(model) -> bool:
 def local_total_force(t, q, v, vint, f, model):
     """f = F_ext(t) + the shock forces at (q, v) in the shocks' local frames
     (:func:`forces.total_force`'s sums, without relations of laws/)."""
-    shk, exc = model[1], model[2]
-    shapes, rest, drive = model[3]
+    shk, exc = model[SHOCKS], model[LOADS]
+    shapes, rest, drive = model[LOCAL]
     # f[:] = 0 then forces.external_force, as DIFF_CENTRE's loop writes them
-    # (FORMULE programs through formula.program_value): the same value
+    # (formula programs through formula.program_value): the same value
     external_force_into(
-        t, exc[0], exc[1], exc[2], exc[3], exc[9], exc[12], exc[13], exc[14], f
+        t, exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes,
+        exc.constants, exc.stack, f,
     )  # fmt: skip
-    F.local_support_motion(t, shk[2], exc[4], exc[5], exc[6], exc[7], exc[11], drive)
-    return local_shock_forces(q, v, shk[0], shk[1], shapes, rest, shk[4], drive, vint, f)
+    F.local_support_motion(
+        t,
+        shk.rots,
+        exc.drive_shapes,
+        exc.drive_abscissas,
+        exc.drive_ordinates,
+        exc.drive_layout,
+        exc.drive_cursors,
+        drive,
+    )
+    return local_shock_forces(q, v, shk.flags, shk.params, shapes, rest, shk.polars, drive, vint, f)
 
 
 @njit(cache=True, _nrt=False)
@@ -69,9 +80,9 @@ def local_state_acceleration(t, q, v, out, f, residual, vint, model):
     forces in each shock's local frame (no relation of laws/: those runs
     take the general path)."""
     shock = local_total_force(t, q, v, vint, f, model)
-    lin = model[0]
-    if lin[3][0] == 1:
-        diagonal_acceleration(f, q, v, lin[0], lin[1], lin[2], residual, out)
+    lin = model[LINEAR]
+    if lin.diagonal[0] == 1:
+        diagonal_acceleration(f, q, v, lin.minv, lin.stiffness, lin.damping, residual, out)
     else:
         F.acceleration(f, q, v, lin, residual, out)
     return shock
@@ -135,7 +146,7 @@ def _total_force_at(t, q, v, vint, work, f, model):
         return local
 
     def general(t, q, v, vint, work, f, model):
-        return F.total_force_at(t, q, v, model[1], vint, model[2], work, f)
+        return F.total_force_at(t, q, v, model[SHOCKS], vint, model[LOADS], work, f)
 
     return general
 

@@ -1,10 +1,10 @@
-"""Rotating machinery at variable speed (DYNA_VIBRA VITESSE_VARIABLE='OUI').
+"""Rotating machinery at variable speed.
 
 The generalized damping and stiffness depend on the rotation speed Ω(t)
 and acceleration Ω'(t) (code_aster's dtmupmat)::
 
-    C(t) = C + Ω(t) G          (MATR_AMOR or modal damping, MATR_GYRO)
-    K(t) = K + Ω'(t) K_gy      (MATR_RIGI, MATR_RIGY; no MATR_RIGY: K)
+    C(t) = C + Ω(t) G          (damping matrix or modal damping, gyroscopic matrix G)
+    K(t) = K + Ω'(t) K_gy      (stiffness, gyroscopic stiffness K_gy; none: K)
 
 code_aster (dtmcalc) updates the matrices at the start of every step, the
 instant t_i of the state the step leaves, whatever the scheme (dtmintg
@@ -14,13 +14,13 @@ their integrators do on MAT_UPDT: the accelerations use C(t_i), K(t_i);
 NEWMARK and TRBDF2 rebuild their effective operators, DEVOGE its M⁻¹C,
 M⁻¹K and H1, H2 (intdevo_oper). The initial acceleration uses the
 matrices at the initial instant. Ω and Ω' are multipliers of the
-excitation machinery (tables, FORMULE programs), evaluated in the loop.
+excitation machinery (tables, formula programs), evaluated in the loop.
 
-One loop serves every scheme (:func:`rotating_loop`, branching on the
-scheme code of :mod:`asterlite.dynamics.dispatch`): the scheme's step with
-the update before it. The generalized matrices are written in place in
-the (M⁻¹, K, C, diagonal flag) bundle of the model (the flag set to full:
-G couples the modes).
+One loop serves every scheme: :mod:`asterlite.dynamics.loop`'s around
+:func:`rotating_step`, the scheme's step (branching on its code, see
+:mod:`asterlite.dynamics.dispatch`) with the update before it. The
+generalized matrices are written in place in the (M⁻¹, K, C, diagonal
+flag) bundle of the model (the flag set to full: G couples the modes).
 """
 
 from __future__ import annotations
@@ -31,17 +31,17 @@ import numpy as np
 from numba import njit
 
 from asterlite.dynamics import dispatch as D
-from asterlite.dynamics import kernel as K
 from asterlite.dynamics import loop as L
-from asterlite.dynamics.forces import multiplier_at
-from asterlite.dynamics.formula import run_program
-from asterlite.dynamics.model import (
+from asterlite.dynamics.excitation import (
     PROL_CONSTANT,
     SampledMultiplier,
     kernel_program,
     multiplier_points,
     tabulate_excitation,
 )
+from asterlite.dynamics.forces import multiplier_at
+from asterlite.dynamics.formula import run_program
+from asterlite.dynamics.layouts import EXTRA, LINEAR, ROTATION_CODE, ROWS, SCALARS, TABLE
 
 
 @dataclass
@@ -52,12 +52,12 @@ class Rotation:
     stiffness: np.ndarray
     gyro: np.ndarray
     rigy: np.ndarray
-    speed: object  # function of INST
-    acceleration: object | None = None  # function of INST, or None (0)
+    speed: object  # function of time
+    acceleration: object | None = None  # function of time, or None (0)
 
     def __post_init__(self) -> None:
         self.excitation = None
-        # ETAT_INIT RESULTAT: code_aster (dtminit) restarts from the archived
+        # a run continuing a result: code_aster (dtminit) restarts from the archived
         # acceleration instead of solving the equilibrium at the new start
         self.initial_acceleration = None
 
@@ -114,11 +114,13 @@ class Rotation:
 
 @njit(cache=True)
 def multiplier_value(exc, e, t):
-    codes, constants, stack = exc[12], exc[13], exc[14]
+    codes, constants, stack = exc.codes, exc.constants, exc.stack
     if codes[e, 0] > 0:
         return run_program(codes, constants, e, t, stack)
-    layout = exc[3]
-    return multiplier_at(exc[1], exc[2], e, layout[e, 0], layout[e, 1], layout[e, 2], t, exc[9])
+    layout = exc.layout
+    return multiplier_at(
+        exc.abscissas, exc.ordinates, e, layout[e, 0], layout[e, 1], layout[e, 2], t, exc.cursors
+    )
 
 
 @njit(cache=True)
@@ -130,7 +132,7 @@ def speed_and_acceleration(exc, t):
 def update_linear(lin, rot, t):
     """C(t), K(t) into the model's (M⁻¹, K, C, flag) bundle, the flag set to
     full matrices."""
-    stiffness, damping, flag = lin[1], lin[2], lin[3]
+    stiffness, damping, flag = lin.stiffness, lin.damping, lin.diagonal
     damping0, stiffness0, gyro, rigy, exc = rot
     speed, accel = speed_and_acceleration(exc, t)
     n = damping.shape[0]
@@ -142,37 +144,25 @@ def update_linear(lin, rot, t):
 
 
 @njit(cache=True)
-def rotating_loop(code, clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-    """The time loop of the scheme ``code`` (:mod:`asterlite.dynamics.dispatch`)
-    with C(t), K(t) written into the model and the scheme's operators
-    refreshed before each step; ``memory[3]`` is :meth:`Rotation.bundle`."""
-    base, rot = (memory[0], memory[1], memory[2]), memory[3]
-    n = state[0].shape[0]
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        update_linear(model[0], rot, t)
-        D.refresh_operators(code, base, model[0], n)
-        status, shock, dt_used, dt_next, rejected = D.scheme_step(
-            code, t, dt, counters[K.K_STEP], state, base, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        K.complete_step(clock, counters, state, instants, pas_arch, eps, archive, result)
-    return K.STATUS_DONE
+def rotating_step(t, dt, index, state, memory, model):
+    """The step of the scheme whose code (:mod:`asterlite.dynamics.dispatch`)
+    ends ``memory``, with C(t), K(t) written into the model and the
+    scheme's operators refreshed before it; ``memory[EXTRA]`` is
+    :meth:`Rotation.bundle`. :func:`asterlite.dynamics.loop.scheme_loop`
+    runs it."""
+    base, rot, code = (
+        (memory[ROWS], memory[SCALARS], memory[TABLE]),
+        memory[EXTRA],
+        memory[ROTATION_CODE][0],
+    )
+    update_linear(model[LINEAR], rot, t)
+    D.refresh_operators(code, base, model[LINEAR], state.q.shape[0])
+    return D.scheme_step(code, t, dt, index, state, base, model)
 
 
 def prepare(scheme: str, memory, rotation: Rotation):
-    """(memory, run_loop) of a scheme run with variable rotation speed."""
-    code = D.code(scheme)
-    memory = D.full_matrices(scheme, memory) + (rotation.bundle(),)
-
-    def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive):
-        return rotating_loop(
-            code, clock, counters, state, memory, model, instants, pas_arch, eps, archive
-        )
-
-    return memory, run_loop
+    """(memory, run_loop) of a scheme run with variable rotation speed: the
+    time loop around :func:`rotating_step`."""
+    code = np.array([D.code(scheme)], dtype=np.int64)
+    memory = D.full_matrices(scheme, memory) + (rotation.bundle(), code)
+    return memory, L.scheme_loop(rotating_step)

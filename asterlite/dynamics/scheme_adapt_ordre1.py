@@ -9,10 +9,9 @@ import numpy as np
 from numba import njit
 
 from asterlite.dynamics import adapt_control as A
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, RESIDUAL = range(5)
@@ -29,10 +28,10 @@ def prepare(system, dt, options):
 @njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
     """One step, compiled once without reference counting (nothing in it
-    allocates): the scheme's run_loop and the loops shared by every scheme
+    allocates): the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     n = q.shape[0]
     q2, v2, a2, vmin = rows[Q_TRIAL], rows[V_TRIAL], rows[A_TRIAL], rows[V_MIN]
     adaptive = scalars[A.S_ADAPTIVE] == 1.0
@@ -78,30 +77,3 @@ def step(t, dt, index, state, memory, model):
     copy_vector(v, v2)
     copy_vector(a, a2)
     return K.STATUS_DONE, -1, dt_trial, dt_next, trials - 1
-
-
-@njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The loop, compiled without reference counting (``_nrt=False``:
-    nothing here allocates), calling :func:`step` (one compiled copy of the
-    step for every loop that takes it: numba's inlining copies a callee's IR
-    at each site, and the step is large; the call costs ~2 % of a step).
-    With the model's 4th bundle (``integrate.local_frame_bundle``) the step
-    takes the shocks in their local frames (:mod:`local_frame`); with three
-    bundles this is the general path."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE

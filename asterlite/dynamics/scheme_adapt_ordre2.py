@@ -17,10 +17,9 @@ import numpy as np
 from numba import njit
 
 from asterlite.dynamics import adapt_control as A
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, V_MID, V_MID_TRIAL, RESIDUAL = range(7)
@@ -37,10 +36,10 @@ def prepare(system, dt, options):
 @njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
     """One step, compiled once without reference counting (nothing in it
-    allocates): the scheme's run_loop and the loops shared by every scheme
+    allocates): the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     n = q.shape[0]
     q2, v2, a2, vmin = rows[Q_TRIAL], rows[V_TRIAL], rows[A_TRIAL], rows[V_MIN]
     v_mid, v_mid_trial = rows[V_MID], rows[V_MID_TRIAL]
@@ -91,25 +90,3 @@ def step(t, dt, index, state, memory, model):
     copy_vector(a, a2)
     copy_vector(v_mid, v_mid_trial)
     return K.STATUS_DONE, -1, dt_trial, dt_next, trials - 1
-
-
-@njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
-    (no reference counting; local frames with the model's 4th bundle)."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE

@@ -11,18 +11,19 @@ The step itself is the same leapfrog: with dt' the previous accepted step
 
 What differs from code_aster 17 is the control around it:
 
-- err = NB_POIN_PERIODE f dt (f: the apparent frequency of the trial,
+- err = N f dt (N points per period, f: the apparent frequency of the trial,
   :func:`adapt_control.apparent_frequency`); while err > 1, the step is
-  divided by COEF_DIVI_PAS and retried, at most NMAX_ITER_PAS trials. When
+  divided by the division factor and retried, at most the largest number
+  of trials. When
   the last trial still fails the step is divided once more after it was
   computed: the state is that of the trial, the clock moves by the divided
   step (as code_aster did).
 - calm steps (err < 0.75) are counted; the sixth calm step in a row and
-  every calm step after it multiplies the next step by COEF_MULT_PAS (at
-  most PAS_MAXI); any other step resets the count.
-- PAS_MAXI defaults to a twentieth of the shortest period, shock stiffness
-  included (mdptem; :func:`default_step_max`), even below PAS.
-- archiving: the archive times are t0 + k PAS_MAXI PAS_ARCH; a step that
+  every calm step after it multiplies the next step by the growth factor (at
+  most the upper bound); any other step resets the count.
+- the step's upper bound defaults to a twentieth of the shortest period, shock stiffness
+  included (mdptem; :func:`default_step_max`), even below dt.
+- archiving: the archive times are t0 + k dt_max period; a step that
   brackets one archives whichever of its two ends is nearer (the step is
   never shortened to land on it). At the end, the slots left of the
   int((t_end - t0)/spacing) + 1 (+1 if a remainder) planned are filled with
@@ -41,7 +42,9 @@ from numba import njit
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
+from asterlite.dynamics.layouts import LOADS, ROWS, SCALARS
 from asterlite.errors import NumericalError
+from asterlite.errors import field as named
 
 Q_TRIAL, V_TRIAL, A_TRIAL, V_MIN, V_MID, V_MID_TRIAL, RESIDUAL = range(7)
 VECTOR_ROWS = 7
@@ -54,12 +57,13 @@ MACHINE_EPS = np.finfo(np.float64).eps
 
 
 def prepare(system, dt, options):
-    """PAS_MAXI is required here: the driver gives code_aster 10-12's default
+    """The step's upper bound is required here: the command gives code_aster 10-12's default
     when the deck has none (:func:`default_step_max`)."""
     if options.dt_max is None:
         raise NumericalError(
-            "ADAPT_ORDRE2 of code_aster 10-12 without PAS_MAXI (DYNA_VIBRA fills in "
-            "that version's default, a twentieth of the shortest period: default_step_max)"
+            f"ADAPT_ORDRE2 of code_aster 10-12 without an upper step bound "
+            f"({named('options.dt_max')}; the command fills in that version's default, a "
+            "twentieth of the shortest period: default_step_max)"
         )
     base, _ = A.control_scalars(dt, options)
     scalars = np.zeros(N_SCALARS)
@@ -70,10 +74,10 @@ def prepare(system, dt, options):
 
 
 def default_step_max(shortest_period: float) -> float:
-    """code_aster 10-12's PAS_MAXI when the deck gives none (mdptem): a
+    """code_aster 10-12's upper bound of the step when the deck gives none (mdptem): a
     twentieth of the shortest period among the modes, each stiffened by every
-    shock's RIGI_NOR and RIGI_TAN on each shape component
-    (:func:`asterlite.dynamics.model.stability_limit`; 1e10 s without any)."""
+    shock's normal and tangential stiffness on each shape component
+    (:func:`asterlite.dynamics.step_limits.stability_limit`; 1e10 s without any)."""
     return shortest_period / 20.0
 
 
@@ -90,7 +94,7 @@ def planned_slots(t0, t_end, spacing):
 @njit(cache=True)
 def start(clock, state, rows, scalars, pas_arch):
     scalars[A.S_FIRST_CALL] = 0.0
-    copy_into(rows[V_MID], state[1])
+    copy_into(rows[V_MID], state.v)
     scalars[S_PREVIOUS_STEP] = 0.0
     scalars[S_CALM] = 0.0
     spacing = scalars[A.S_DTMAX] * max(pas_arch, 1)
@@ -104,7 +108,7 @@ def predict(dt, state, rows, scalars):
     """The leapfrog prediction of the step ``dt`` into the trial rows: the
     mid-step velocity, the displacement and the end velocity (without the
     acceleration at the end, which the caller computes)."""
-    q, a = state[0], state[2]
+    q, a = state.q, state.a
     q2, v2 = rows[Q_TRIAL], rows[V_TRIAL]
     v_mid, v_mid2 = rows[V_MID], rows[V_MID_TRIAL]
     p = 0.5 * (scalars[S_PREVIOUS_STEP] + dt)
@@ -118,7 +122,7 @@ def predict(dt, state, rows, scalars):
 def trial(t, dt, state, rows, scalars, model):
     """One trial of the step ``dt`` from ``t`` into the trial rows: the index
     of a shock that diverged (>= 0), -2 for a non-finite acceleration, else -1."""
-    f, vint, vint_save, work = state[3], state[4], state[5], state[6]
+    f, vint, vint_save, work = state.f, state.vint, state.vint_save, state.work
     predict(dt, state, rows, scalars)
     copy_into(vint, vint_save)
     a2 = rows[A_TRIAL]
@@ -154,16 +158,16 @@ def archive_nearest(clock, counters, state, rows, scalars, archive, t_new, dt_ne
     step = counters[K.K_STEP]
     if t_new - target <= target - t:
         store(clock, counters, archive, t_new, step, rows[Q_TRIAL], rows[V_TRIAL],
-              rows[A_TRIAL], state[4], dt_next)  # fmt: skip
+              rows[A_TRIAL], state.vint, dt_next)  # fmt: skip
     else:
-        store(clock, counters, archive, t, step - 1, state[0], state[1], state[2],
-              state[5], dt_next)  # fmt: skip
+        store(clock, counters, archive, t, step - 1, state.q, state.v, state.a,
+              state.vint_save, dt_next)  # fmt: skip
     scalars[S_NEXT_ARCHIVE] = target + scalars[S_SPACING]
 
 
 @njit(cache=True)
 def update_reference_velocities(rows, scalars):
-    """VITE_MIN from the mid-step velocity of the accepted step."""
+    """The reference velocities from the mid-step velocity of the accepted step."""
     A.update_reference_velocities(rows[V_MID_TRIAL], rows[V_MIN], scalars)
 
 
@@ -179,10 +183,10 @@ def first_trial_step(clock):
 @njit(cache=True)
 def judge(clock, tried, state, rows, scalars):
     """(error, step, underflow): the error of the trial of step ``tried``
-    just computed, the step of the next trial (divided by COEF_DIVI_PAS when
-    the error exceeds 1), and whether that step fell to PAS_MINI before the end."""
+    just computed, the step of the next trial (divided by the division factor when
+    the error exceeds 1), and whether that step fell to the lower bound before the end."""
     t, t_end = clock[K.C_TIME], clock[K.C_END]
-    freq = A.apparent_frequency(tried, state[0], rows[Q_TRIAL], state[2], rows[A_TRIAL],
+    freq = A.apparent_frequency(tried, state.q, rows[Q_TRIAL], state.a, rows[A_TRIAL],
                                 rows[V_MIN])  # fmt: skip
     err = scalars[A.S_POINTS] * freq * tried
     dt = tried
@@ -220,9 +224,9 @@ def accept(clock, counters, state, rows, scalars, archive, dt, err, trials):
     clock[K.C_STEP] = dt
     clock[K.C_MIN_STEP] = min(clock[K.C_MIN_STEP], dt_used)
     clock[K.C_MAX_STEP] = max(clock[K.C_MAX_STEP], dt_used)
-    copy_into(state[0], rows[Q_TRIAL])
-    copy_into(state[1], rows[V_TRIAL])
-    copy_into(state[2], rows[A_TRIAL])
+    copy_into(state.q, rows[Q_TRIAL])
+    copy_into(state.v, rows[V_TRIAL])
+    copy_into(state.a, rows[A_TRIAL])
     copy_into(rows[V_MID], rows[V_MID_TRIAL])
 
 
@@ -234,14 +238,14 @@ def take_step(clock, counters, state, rows, scalars, model, archive):
     max_trials = int(round(scalars[A.S_MAX_TRIALS]))
     err = 100.0
     trials = 0
-    copy_into(state[5], state[4])  # the shock states of the step's start
+    copy_into(state.vint_save, state.vint)  # the shock states of the step's start
     while err > 1.0 and trials < max_trials:
         tried = dt
         failed = trial(t, tried, state, rows, scalars, model)
         if failed >= 0:
             return K.record_failure(clock, counters, K.STATUS_SHOCK_DIVERGED, failed, tried)
         if failed == -2:
-            K.expose_trial(state[0], state[1], state[2], rows[Q_TRIAL], rows[V_TRIAL],
+            K.expose_trial(state.q, state.v, state.a, rows[Q_TRIAL], rows[V_TRIAL],
                            rows[A_TRIAL])  # fmt: skip
             return K.record_failure(clock, counters, K.STATUS_NOT_FINITE, -1, tried)
         err, dt, underflow = judge(clock, tried, state, rows, scalars)
@@ -257,26 +261,26 @@ def fill_slots(clock, counters, state, scalars, archive):
     """At the end, the archive slots code_aster allocated and left unused hold
     the final state; STATUS_FULL when the buffers must grow first."""
     while scalars[S_SLOTS] > counters[K.K_ARCHIVED]:
-        if counters[K.K_ARCHIVED] >= archive[0].shape[0]:
+        if counters[K.K_ARCHIVED] >= archive.times.shape[0]:
             return K.STATUS_FULL
-        store(clock, counters, archive, clock[K.C_TIME], counters[K.K_STEP], state[0],
-              state[1], state[2], state[4], clock[K.C_STEP])  # fmt: skip
+        store(clock, counters, archive, clock[K.C_TIME], counters[K.K_STEP], state.q,
+              state.v, state.a, state.vint, clock[K.C_STEP])  # fmt: skip
     return K.STATUS_DONE
 
 
 @njit(cache=True)
 def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The whole time loop (ARCHIVAGE/LIST_INST and INST are not read: code_aster
+    """The whole time loop (the archiving instants are not read: code_aster
     10-12's ADAPT archived on its own grid); resumable after any pause."""
-    rows, scalars = memory[0], memory[1]
-    out_t = archive[0]
+    rows, scalars = memory[ROWS], memory[SCALARS]
+    out_t = archive.times
     if scalars[A.S_FIRST_CALL] == 1.0:
         start(clock, state, rows, scalars, pas_arch)
     while clock[K.C_TIME] < clock[K.C_END]:
         paused = K.pause_status(counters, out_t)
         if paused:
             return paused
-        if not loads_ready(clock, model[2]):
+        if not loads_ready(clock, model[LOADS]):
             return K.STATUS_LOADS
         status = take_step(clock, counters, state, rows, scalars, model, archive)
         if status != K.STATUS_DONE:

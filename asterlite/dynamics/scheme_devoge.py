@@ -9,18 +9,18 @@ t - dt/2). With r = M⁻¹F - M⁻¹K q (the "reduced" force) and C' = M⁻¹C:
     v4 = v1 + dt/6 (r1 + 4 r3 + r4 - C'(v1 + 4 v3 + v4))         Simpson
 
 Shock forces at 3 and 4 use the finite-difference velocities
-(q3 - q1)/(dt/2) and (q4 - q3)/(dt/2), as code_aster does. Unless PAS_MINI
-equals PAS_MAXI the step adapts: a local error estimate on q3, compared
-with TOLERANCE * (|q| + ALPHA), rescales dt by 0.5..1.5 (up to 24 retries).
+(q3 - q1)/(dt/2) and (q4 - q3)/(dt/2), as code_aster does. Unless the step's
+bounds are equal the step adapts: a local error estimate on q3, compared
+with tol * (|q| + alpha), rescales dt by 0.5..1.5 (up to 24 retries).
 
 asterlite's guard (not in code_aster): the shock forces, with their
 finite-difference velocities, are explicit, so the adaptive step never
-exceeds the stability limit of the stiffest damped shock (AMOR_NOR·dt/M
+exceeds the stability limit of the stiffest damped shock (c_n·dt/M
 <= 2 for a heavy damping: :func:`asterlite.dynamics.adapt_control.
 shock_damping_step` with radius 2, the modal damping being implicit; inf
-without AMOR_NOR / AMOR_TAN). The error estimate on q3 does not see that
+without normal or tangential shock damping). The error estimate on q3 does not see that
 instability: entering a stiffly damped contact after a long free flight it
-accepts steps with AMOR_NOR·dt/M ~ 15 that double the energy.
+accepts steps with c_n·dt/M ~ 15 that double the energy.
 """
 
 from __future__ import annotations
@@ -30,9 +30,7 @@ import math
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.adapt_control import shock_damping_step
 from asterlite.dynamics.forces import all_finite, copy_into, matvec_row
 from asterlite.dynamics.kernel import (
@@ -41,6 +39,7 @@ from asterlite.dynamics.kernel import (
     STATUS_SHOCK_DIVERGED,
     STATUS_STEP_UNDERFLOW,
 )
+from asterlite.dynamics.layouts import LINEAR, ROWS, SCALARS, SHOCKS
 from asterlite.dynamics.linalg import lu_factor, lu_solve
 from asterlite.dynamics.local_frame import copy_vector, total_force_at
 
@@ -65,7 +64,7 @@ def memory_rows(n: int) -> int:
 
 def prepare(system, dt, options):
     """(memory, adaptive): operators and control parameters. The step adapts
-    unless PAS_MINI equals PAS_MAXI (defaults 1e-10 and 1e10 times PAS)."""
+    unless its bounds are equal (defaults 1e-10 and 1e10 times dt)."""
     n = system.n_modes
     dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt
     dt_max = options.dt_max if options.dt_max is not None else 1.0e10 * dt
@@ -215,14 +214,14 @@ def start(dt, q, v, f, mem, smem, minv, invm_c, invm_k, h1, h2, diagonal):
 
 @njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
-    """One step: the scheme's run_loop and the loops shared by every scheme
+    """One step: the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     call it. The forces through :func:`local_frame.total_force_at` (local
     frames with the model's 4th bundle). Compiled without reference
     counting: nothing in it or its callees allocates (the implicit
     operators are LU-factored in place, in the memory ``prepare`` made)."""
     q, v, a, f, vint, vint_save, work = state
-    mem, smem = memory[0], memory[1]
-    lin, shk = model[0], model[1]
+    mem, smem = memory[ROWS], memory[SCALARS]
+    lin, shk = model[LINEAR], model[SHOCKS]
     minv, stiffness, damping, is_diagonal = lin
     diagonal = is_diagonal[0] == 1
     n = q.shape[0]
@@ -401,25 +400,3 @@ def relative_error(dt, q, v, mem, smem, attempts, n):
     if scale <= EPS:
         return 0.9**4
     return err_displacement / scale
-
-
-@njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
-    (no reference counting; local frames with the model's 4th bundle)."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE

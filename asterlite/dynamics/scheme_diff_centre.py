@@ -4,18 +4,23 @@ equations of motion at the new state). Order 2, conditionally stable.
 
 Two loops share the arithmetic:
 
-- :func:`general_loop`, the general path every scheme has (``step`` on the
-  ``(lin, shk, exc)`` bundles), kept for comparison;
-- :func:`run_loop` (:func:`specialised_loop`), what
-  :func:`integrate.integrate` runs: one compiled loop on plain arrays with
+- the general path every scheme has (:func:`loop.scheme_loop` around
+  :func:`step`, on the ``(lin, shk, exc)`` bundles): the relations of
+  laws/, and kept for comparison;
+- :func:`fast_loop` (:func:`specialised_loop`), what
+  :func:`integrate.integrate` runs otherwise: the loop of :mod:`loop` with
+  the step written into it, one compiled loop on plain arrays with
   every helper inlined and no reference counting, the shock
   kinematics in each shock's local frame (:func:`contact.local_shock_forces`),
   the acceleration in one pass (diagonal matrices as 1-D arrays, the
   finiteness test folded in), multipliers searched from their last
-  interval, FORMULE loads run by :func:`formula.program_value` and written
+  interval, formula loads run by :func:`formula.program_value` and written
   into the force in one pass per load (:func:`external_force_into`). The
   diagonal and full cases are two compiled specialisations of the same
-  source (``mass_inverse.ndim`` is a compile-time constant).
+  source (``mass_inverse.ndim`` is a compile-time constant). It stays a
+loop of its own because it is faster than the general path (tube, 20
+modes, three CERCLE supports: docs/performance.md) and numba can neither
+inline a step into a loop that receives it nor cache such a loop.
 """
 
 from __future__ import annotations
@@ -25,7 +30,6 @@ from numba import njit
 
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import local_shock_forces
 from asterlite.dynamics.forces import (
     all_finite,
@@ -37,6 +41,7 @@ from asterlite.dynamics.forces import (
     state_acceleration,
 )
 from asterlite.dynamics.formula import program_value
+from asterlite.dynamics.layouts import LOADS, LOCAL, ROWS, SHOCKS
 
 RESIDUAL = 0  # memory row: residual scratch
 
@@ -50,7 +55,7 @@ def prepare(system, dt, options):
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
-    rows = memory[0]
+    rows = memory[ROWS]
     for i in range(q.shape[0]):
         v[i] += dt * a[i]
         q[i] += dt * v[i]
@@ -62,35 +67,20 @@ def step(t, dt, index, state, memory, model):
     return K.STATUS_DONE, -1, dt, dt, 0
 
 
-@njit(cache=True)
-def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE
-
-
 @njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
     """The specialised DIFF_CENTRE loop on the engine's bundles. Compiled
     without reference counting (``_nrt=False``: nothing here allocates),
     so that the arrays handed to the inlined helpers cost nothing.
-    ``energy``: the ENERGIE bundle (:mod:`energy`), inactive without it."""
-    exc = model[2]
-    flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
-    mass_inverse, stiffness, damping, shapes, rest, drive = model[3]
+    ``energy``: the energy balance's bundle (:mod:`energy`), inactive without it."""
+    exc = model[LOADS]
+    flags, params, rots, polars = (
+        model[SHOCKS].flags,
+        model[SHOCKS].params,
+        model[SHOCKS].rots,
+        model[SHOCKS].polars,
+    )
+    mass_inverse, stiffness, damping, shapes, rest, drive = model[LOCAL]
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
     return specialised_loop(
         clock,
@@ -98,12 +88,12 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         instants,
         pas_arch,
         eps,
-        state[0],
-        state[1],
-        state[2],
-        state[3],
-        state[4],
-        memory[0][RESIDUAL],
+        state.q,
+        state.v,
+        state.a,
+        state.f,
+        state.vint,
+        memory[ROWS][RESIDUAL],
         mass_inverse,
         stiffness,
         damping,
@@ -114,21 +104,21 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         rest,
         polars,
         drive,
-        exc[0],
-        exc[1],
-        exc[2],
-        exc[3],
-        exc[8],
-        exc[9],
-        exc[12],
-        exc[13],
-        exc[14],
-        exc[4],
-        exc[5],
-        exc[6],
-        exc[7],
-        exc[10],
-        exc[11],
+        exc.vectors,
+        exc.abscissas,
+        exc.ordinates,
+        exc.layout,
+        exc.pending,
+        exc.cursors,
+        exc.codes,
+        exc.constants,
+        exc.stack,
+        exc.drive_shapes,
+        exc.drive_abscissas,
+        exc.drive_ordinates,
+        exc.drive_layout,
+        exc.drive_pending,
+        exc.drive_cursors,
         out_t,
         out_order,
         out_q,
@@ -137,7 +127,7 @@ def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, arc
         out_vint,
         out_info,
         energy,
-        model[1],
+        model[SHOCKS],
         exc,
     )
 
@@ -148,7 +138,7 @@ def external_force_into(
 ):
     """out = Σ_e f_e(t) vector_e: :func:`forces.add_external_force` on a
     zeroed ``out``, the zeroing folded into the first load's pass (0.0 + x
-    as there) and the FORMULE programs run by :func:`formula.program_value`.
+    as there) and the formula programs run by :func:`formula.program_value`.
     Same operations in the same order: the same force to the last bit."""
     for e in range(vectors.shape[0]):
         if codes[e, 0] > 0:
@@ -218,7 +208,7 @@ def specialised_loop(
     exc,
 ):
     """The DIFF_CENTRE loop on plain arrays (see the module docstring);
-    same status codes and archiving rules as :func:`run_loop`.
+    same status codes and archiving rules as :func:`loop.time_loop`.
 
     ``mass_inverse``, ``stiffness``, ``damping``: 1-D diagonals or (n, n)
     matrices (:meth:`model.LinearSystem.kernel_matrices`); ``shock_shapes``,
@@ -226,7 +216,7 @@ def specialised_loop(
     (n_shocks, 2, 6) scratch for the support motion in the local frames.
     """
     n = q.shape[0]
-    balance = E.is_active(energy)  # ENERGIE: energy.after_step on the bundles
+    balance = E.is_active(energy)  # energy balance: energy.after_step on the bundles
     while K.unfinished(clock, counters, eps):
         paused = K.pause_status(counters, out_t)
         if paused:

@@ -31,7 +31,6 @@ from numba import njit
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import local_shock_forces
 from asterlite.dynamics.forces import (
     add_external_force,
@@ -40,6 +39,7 @@ from asterlite.dynamics.forces import (
     local_support_motion,
     total_force_at,
 )
+from asterlite.dynamics.layouts import LOADS, LOCAL, ROWS, SCALARS, SHOCKS
 
 # vector rows: index-2 displacement and velocity, right-hand side, pivots
 Q_INDEX2, V_INDEX2, RHS, PIVOTS = range(4)
@@ -88,8 +88,8 @@ def build_operators(rows, scalars, dt, n):
 @njit(cache=True)
 def step(t, dt, index, state, memory, model):
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
-    shk, exc = model[1], model[2]
+    rows, scalars = memory[ROWS], memory[SCALARS]
+    shk, exc = model[SHOCKS], model[LOADS]
     n = q.shape[0]
     diagonal = scalars[S_DIAGONAL] == 1.0
     built = scalars[S_DT_BUILT]
@@ -124,49 +124,36 @@ def step(t, dt, index, state, memory, model):
     return K.STATUS_DONE, -1, dt, dt, 0
 
 
-@njit(cache=True)
-def general_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """The general path (``step`` on the bundles): shocks with a relation of
-    laws/, ``integrate(..., specialised=False)``."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE
-
-
 @njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+def fast_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
     """The NEWMARK loop :func:`integrate.integrate` runs: ``step``'s
     arithmetic on plain arrays with the helpers inlined, no reference
     counting (``_nrt=False``: nothing here allocates) and the shock
     kinematics in each shock's local frame, as DIFF_CENTRE's
-    :func:`scheme_diff_centre.specialised_loop` (same results as
-    :func:`general_loop` when the shock frames are the global one, rounding
-    otherwise)."""
-    exc = model[2]
-    flags, params, rots, polars = model[1][0], model[1][1], model[1][2], model[1][4]
-    shapes, rest, drive = model[3]  # integrate.local_frame_bundle
+    :func:`scheme_diff_centre.specialised_loop` (same results as the
+    general path, :func:`loop.scheme_loop` around :func:`step`, when the
+    shock frames are the global one, rounding otherwise). A loop of its own
+    for speed, as DIFF_CENTRE's (docs/performance.md: about 5x faster than
+    the general path on the tube)."""
+    exc = model[LOADS]
+    flags, params, rots, polars = (
+        model[SHOCKS].flags,
+        model[SHOCKS].params,
+        model[SHOCKS].rots,
+        model[SHOCKS].polars,
+    )
+    shapes, rest, drive = model[LOCAL]  # integrate.local_frame_bundle
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info = archive
     return specialised_loop(
         clock, counters, instants, pas_arch, eps,
-        state[0], state[1], state[2], state[3], state[4], memory[0], memory[1],
+        state.q, state.v, state.a, state.f, state.vint, memory[ROWS], memory[SCALARS],
         flags, params, rots, shapes, rest, polars, drive,
-        exc[0], exc[1], exc[2], exc[3], exc[8], exc[9], exc[12], exc[13], exc[14],
-        exc[4], exc[5], exc[6], exc[7], exc[10], exc[11],
+        exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.pending, exc.cursors,
+        exc.codes, exc.constants, exc.stack,
+        exc.drive_shapes, exc.drive_abscissas, exc.drive_ordinates, exc.drive_layout,
+        exc.drive_pending, exc.drive_cursors,
         out_t, out_order, out_q, out_v, out_a, out_vint, out_info,
-        energy, model[1], exc,
+        energy, model[SHOCKS], exc,
     )  # fmt: skip
 
 
@@ -255,8 +242,8 @@ def specialised_loop(
     support_cursors,
     out_t, out_order, out_q, out_v, out_a, out_vint, out_info, energy, shk, exc,
 ):  # fmt: skip
-    """The NEWMARK loop on plain arrays (see :func:`run_loop`); the status
-    codes, archiving rules and operator rebuilds of :func:`general_loop`."""
+    """The NEWMARK loop on plain arrays (see :func:`fast_loop`); the status
+    codes, archiving rules and operator rebuilds of the general path."""
     n = q.shape[0]
     balance = E.is_active(energy)
     q2, v2 = rows[Q_INDEX2], rows[V_INDEX2]

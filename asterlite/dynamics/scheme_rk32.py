@@ -1,7 +1,7 @@
 """RUNGE_KUTTA_32 (code_aster 17's default for a GENE transient): the
 Bogacki-Shampine 3(2) pair driving the Runge-Kutta kernel."""
 
-from asterlite.dynamics.scheme_runge_kutta import BOGACKI_SHAMPINE_32, prepare_with, run_loop
+from asterlite.dynamics.scheme_runge_kutta import BOGACKI_SHAMPINE_32, prepare_with, step
 
 TABLEAU = BOGACKI_SHAMPINE_32
 
@@ -10,4 +10,4 @@ def prepare(system, dt, options):
     return prepare_with(TABLEAU, system, dt, options)
 
 
-__all__ = ["TABLEAU", "prepare", "run_loop"]
+__all__ = ["TABLEAU", "prepare", "step"]

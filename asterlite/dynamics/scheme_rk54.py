@@ -1,6 +1,6 @@
 """RUNGE_KUTTA_54: the Dormand-Prince 5(4) pair driving the Runge-Kutta kernel."""
 
-from asterlite.dynamics.scheme_runge_kutta import DORMAND_PRINCE_54, prepare_with, run_loop
+from asterlite.dynamics.scheme_runge_kutta import DORMAND_PRINCE_54, prepare_with, step
 
 TABLEAU = DORMAND_PRINCE_54
 
@@ -9,4 +9,4 @@ def prepare(system, dt, options):
     return prepare_with(TABLEAU, system, dt, options)
 
 
-__all__ = ["TABLEAU", "prepare", "run_loop"]
+__all__ = ["TABLEAU", "prepare", "step"]

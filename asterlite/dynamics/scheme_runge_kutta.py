@@ -18,18 +18,18 @@ s_q = max(tol |q_n + α|, tol (|Δq| + α), ε), s_v likewise,
 accepts the step (err = 0.99). The factor 0.9 err^(-1/p) is bounded to
 [0.2, 5] (p = 4 for the 3(2) pair, 6 for the 5(4) pair, code_aster's
 exponents); the step is retried while err >= 1 and the new step stays
-above PAS_MINI (falling below PAS_MINI stops the run), and the next step
-is min(PAS_MAXI, factor dt). PAS_MINI == PAS_MAXI gives a fixed step.
+above its lower bound (falling below it stops the run), and the next step
+is min(upper bound, factor dt). Equal bounds give a fixed step.
 
 asterlite's guard (not in code_aster): the stages evaluate the shock
 forces explicitly, so an adaptive step never exceeds the stability limit
 of the stiffest damped shock (c·dt inside the tableau's real stability
 interval [-radius, 0], :func:`asterlite.dynamics.adapt_control.
-shock_damping_step`, inf without AMOR_NOR / AMOR_TAN). Without it a long
+shock_damping_step`, inf without normal or tangential shock damping). Without it a long
 free flight grows the step far beyond that limit; entering the contact,
 the first retries amplify the stages so much that the error grows as the
 step shrinks, and the rule above accepts a step that multiplies the energy
-(AMOR_NOR·dt/M ~ 70 at the contact entry: 20 times the initial energy).
+(c_n·dt/M ~ 70 at the contact entry: 20 times the initial energy).
 """
 
 from __future__ import annotations
@@ -39,11 +39,10 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.adapt_control import shock_damping_step
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.layouts import LINEAR, ROWS, SHOCKS, TABLE
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
 
@@ -145,7 +144,7 @@ HUGE = np.finfo(np.float64).max
 
 
 def prepare_with(tableau: Tableau, system, dt, options):
-    """(memory, adaptive); PAS_MINI/PAS_MAXI default to 1e-10/1e10 times PAS."""
+    """(memory, adaptive); the step's bounds default to 1e-10/1e10 times dt."""
     n = system.n_modes
     s = tableau.stages
     dt_min = options.dt_min if options.dt_min is not None else 1.0e-10 * dt
@@ -167,7 +166,7 @@ def attempt(t, dt, state, memory, model, s):
     """One trial step of length dt from (q, v, a): stage values in rows,
     the solution in the stage rows. Returns a diverging shock or -1."""
     q, v, a, f, vint, vint_save, work = state
-    rows, table = memory[0], memory[2]
+    rows, table = memory[ROWS], memory[TABLE]
     n = q.shape[0]
     qs, vs, acc = rows[Q_STAGE], rows[V_STAGE], rows[A_STAGE]
     copy_vector(vs, v)
@@ -216,7 +215,7 @@ def scaled_error(dt, q, v, memory, s):
 @njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
     """One step, compiled once without reference counting (nothing in it
-    allocates): the scheme's run_loop and the loops shared by every scheme
+    allocates): the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
     rows, scalars, table = memory
@@ -224,7 +223,7 @@ def step(t, dt, index, state, memory, model):
     adaptive = scalars[S_ADAPTIVE] == 1.0
     p = scalars[S_EXPONENT]
     if scalars[S_CAP] < 0.0:
-        scalars[S_CAP] = shock_damping_step(model[0], model[1], True, scalars[S_RADIUS])
+        scalars[S_CAP] = shock_damping_step(model[LINEAR], model[SHOCKS], True, scalars[S_RADIUS])
     dt_max = min(scalars[S_DTMAX], scalars[S_CAP])
     if adaptive and dt > dt_max:
         dt = dt_max
@@ -266,25 +265,3 @@ def step(t, dt, index, state, memory, model):
     copy_vector(v, rows[V_STAGE])
     copy_vector(a, rows[A_STAGE])
     return K.STATUS_DONE, -1, dt, dt_next, rejected
-
-
-@njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
-    (no reference counting; local frames with the model's 4th bundle)."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE

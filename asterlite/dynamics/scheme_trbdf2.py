@@ -26,7 +26,7 @@ the linear system, modal damping included (substituting ã = M⁻¹(F - K q_n
 - C v_n) makes the TR stage the trapezoidal rule on (q, v) and the BDF2
 stage the BDF2 rule, C v taken at the stage's own velocity): order 2 with
 or without damping. The first step is not: code_aster allocates
-DEPL/VITE/ACCE at index 2 on the first call of inttrbdf2 (intinivec fills
+displacement/velocity/acceleration at index 2 on the first call of inttrbdf2 (intinivec fills
 them with zeros), and both dtmacce(index 2) calls of that step evaluate
 the accelerations at q = 0, v = 0 instead of (q_0, v_0). Asterlite keeps
 that parity (rows Q_INDEX2/V_INDEX2 start at zero). With e = M⁻¹(K q_0 +
@@ -54,21 +54,20 @@ import math
 import numpy as np
 from numba import njit
 
-from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
-from asterlite.dynamics import loop as L
 from asterlite.dynamics.forces import all_finite
+from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 
-Q_INDEX2, V_INDEX2, A_INDEX2, DELTA, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
+Q_INDEX2, V_INDEX2, A_INDEX2, DELTA_ROW, R_Q, R_V, RESIDUAL, PIVOTS = range(8)
 VECTOR_ROWS = 8
 S_DT_BUILT, S_DIAGONAL, S_A1, S_A2 = range(4)
 N_SCALARS = 4
-GAMMA = 2.0 - math.sqrt(2.0)
-G1 = 1.0 / GAMMA / (2.0 - GAMMA)
-G2 = -((1.0 - GAMMA) ** 2) / GAMMA / (2.0 - GAMMA)
-G3 = (1.0 - GAMMA) / (2.0 - GAMMA)
+STAGE_FRACTION = 2.0 - math.sqrt(2.0)  # TR-BDF2's γ: the trapezoidal stage ends at t + γ dt
+G1 = 1.0 / STAGE_FRACTION / (2.0 - STAGE_FRACTION)
+G2 = -((1.0 - STAGE_FRACTION) ** 2) / STAGE_FRACTION / (2.0 - STAGE_FRACTION)
+G3 = (1.0 - STAGE_FRACTION) / (2.0 - STAGE_FRACTION)
 EPS = np.finfo(np.float64).eps
 
 
@@ -82,7 +81,7 @@ def prepare(system, dt, options):
 
 @njit(cache=True)
 def build_operators(rows, scalars, dt, n):
-    h = GAMMA * dt
+    h = STAGE_FRACTION * dt
     a1, a2 = 4.0 / (h * h), 2.0 / h
     scalars[S_A1], scalars[S_A2] = a1, a2
     mass = I.block(rows, VECTOR_ROWS, I.B_MASS, n)
@@ -99,10 +98,10 @@ def build_operators(rows, scalars, dt, n):
 @njit(cache=True, _nrt=False)
 def step(t, dt, index, state, memory, model):
     """One step, compiled once without reference counting (nothing in it
-    allocates): the scheme's run_loop and the loops shared by every scheme
+    allocates): the scheme's loop (:func:`loop.scheme_loop`) and the loops shared by every scheme
     (rotation, implicit shocks) call this same machine code."""
     q, v, a, f, vint, vint_save, work = state
-    rows, scalars = memory[0], memory[1]
+    rows, scalars = memory[ROWS], memory[SCALARS]
     n = q.shape[0]
     diagonal = scalars[S_DIAGONAL] == 1.0
     built = scalars[S_DT_BUILT]
@@ -113,8 +112,8 @@ def step(t, dt, index, state, memory, model):
     f1 = I.block(rows, VECTOR_ROWS, I.B_F1, n)
     f2 = I.block(rows, VECTOR_ROWS, I.B_F2, n)
     q2, v2, a2 = rows[Q_INDEX2], rows[V_INDEX2], rows[A_INDEX2]
-    delta, r_q, r_v, residual = rows[DELTA], rows[R_Q], rows[R_V], rows[RESIDUAL]
-    h = GAMMA * dt
+    delta, r_q, r_v, residual = rows[DELTA_ROW], rows[R_Q], rows[R_V], rows[RESIDUAL]
+    h = STAGE_FRACTION * dt
     # --- trapezoidal stage to t + h
     shock = evaluate(t + h, q2, v2, a2, f, residual, vint, work, model)
     if shock >= 0:
@@ -151,25 +150,3 @@ def step(t, dt, index, state, memory, model):
     if not (all_finite(q) and all_finite(v) and all_finite(a)):
         return K.STATUS_NOT_FINITE, -1, dt, dt, 0
     return K.STATUS_DONE, -1, dt, dt, 0
-
-
-@njit(cache=True, _nrt=False)
-def run_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
-    """:func:`scheme_adapt_ordre1.run_loop` around this scheme's :func:`step`
-    (no reference counting; local frames with the model's 4th bundle)."""
-    balance = E.is_active(energy)  # ENERGIE: asterlite.dynamics.energy
-    while K.unfinished(clock, counters, eps):
-        paused = L.before_step(clock, counters, model, archive)
-        if paused:
-            return paused
-        t, dt = K.plan_step(clock, counters, instants, eps)
-        status, shock, dt_used, dt_next, rejected = step(
-            t, dt, counters[K.K_STEP], state, memory, model
-        )
-        if status != K.STATUS_DONE:
-            return K.record_failure(clock, counters, status, shock, dt_used)
-        result = (dt_used, dt_next, rejected)
-        L.after_step(
-            clock, counters, state, model, instants, pas_arch, eps, archive, result, balance, energy
-        )
-    return K.STATUS_DONE

@@ -1,17 +1,18 @@
 """The GENE schemes of DYNA_VIBRA, each described once.
 
-One :class:`Scheme` per ``SCHEMA_TEMPS/SCHEMA`` value asterlite integrates:
+One :class:`Scheme` per scheme name asterlite integrates:
 the module that implements it (``prepare(system, dt, options) -> (memory,
-adaptive)``, a compiled ``run_loop`` and ``step``, optionally a
-``general_loop``), the name of its compiled loop, and its properties as
-data. Every reader of a scheme name asks this table: the command (which
-schemes exist, VERI_PAS, the fluid film, the warnings), the driver
+adaptive)`` and a compiled ``step``, which :mod:`asterlite.dynamics.loop`'s
+one time loop runs; DIFF_CENTRE and NEWMARK add a ``fast_loop``), the name
+of its compiled loop, and its properties as data. Every reader of a
+scheme name asks this table: the command (which schemes exist, the step check,
+the fluid film, the warnings), the driver
 (:mod:`asterlite.dynamics.integrate`: module, loop, adaptivity), the loops
 shared by every scheme (:mod:`asterlite.dynamics.dispatch`: the integer
 code each branches on), the energy balance and the warmup (which loops to
 compile). This module imports no numba: the catalogue reads the names.
 
-Adding a scheme: write its module (``prepare``, ``step``, ``run_loop``),
+Adding a scheme: write its module (``prepare``, ``step``),
 add its :class:`Scheme` to :data:`TABLE`, and, for the loops shared by every
 scheme (variable rotation speed, implicit shocks), a branch on its code in
 :mod:`asterlite.dynamics.dispatch` (a scheme without one says
@@ -21,10 +22,10 @@ scheme (variable rotation speed, implicit shocks), a branch on its code in
 from __future__ import annotations
 
 import importlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import ModuleType
 
-# code_aster's VERI_PAS: the step may not exceed this fraction of the shortest
+# code_aster's step check: the step may not exceed this fraction of the shortest
 # period (shock stiffness included), 1/10 for the schemes that say so
 VERI_PAS_FRACTION = 20.0
 VERI_PAS_FRACTION_IMPLICIT = 10.0
@@ -38,36 +39,39 @@ FULL_MATRICES = "{} (full matrices)"
 class Scheme:
     """One GENE scheme: where it lives and what it supports."""
 
-    name: str  # the SCHEMA value
+    name: str  # the scheme's name in the deck
     module: str  # the dotted name of its module
     kernel: str  # the name of its compiled loop (shared by schemes of one module)
     code: int  # its branch in the loops shared by every scheme (dispatch)
-    # VERI_PAS: PAS <= shortest period / step_fraction (the step advice of a
-    # failed run uses it too); step_checked False: VERI_PAS does not check it
+    # the step check: dt <= shortest period / step_fraction (the step advice of
+    # a failed run uses it too); step_checked False: the check skips it
     step_fraction: float = VERI_PAS_FRACTION
     step_checked: bool = True
     step_refused: bool = True  # above that limit: refused (else a warning only)
-    # PAS above the damped limit of its explicit velocity update is refused
+    # a step above the damped limit of its explicit velocity update is refused
     # (DIFF_CENTRE: about 1/(ξ ω), which the undamped period ignores)
     explicit_velocity: bool = False
-    # shock forces explicit in its stages: PAS above the stability limit of
+    # shock forces explicit in its stages: a step above the stability limit of
     # a shock's damping refused, the adaptive step kept below it
     explicit_stages: bool = False
-    adaptive: bool = False  # adapts its step when PAS_MINI != PAS_MAXI
-    # the apparent-frequency step control of ADAPT_ORDRE1/2 (steps kept at NMAX_ITER_PAS)
+    adaptive: bool = False  # adapts its step when its bounds differ
+    # the apparent-frequency step control of ADAPT_ORDRE1/2 (steps kept after
+    # the largest number of trials)
     frequency_control: bool = False
     # its velocity lags half a step (asterlite.dynamics.energy)
     staggered_velocity: bool = False
-    # LAME_FLUIDE: integrates fluid films; film_legacy: only as code_aster 10-12 ran it
+    # film: integrates fluid films; film_legacy: only as code_aster 10-12 ran it
     film: bool = False
     film_legacy: bool = False
     # code_aster 10-12's variant (asterlite.legacy.v15 ADAPT_ORDRE2_MDADAP):
     # its module and the name of its compiled loop
     legacy_module: str | None = None
     legacy_kernel: str | None = None
-    # its run_loop takes the shocks in their local frames, and a general path
-    # serves the relations of laws/ ("specialised": DIFF_CENTRE's loops on
-    # diagonal or full matrices)
+    # "local_frame": its loop takes the shocks in their local frames (the
+    # time loop around its step, or its module's fast_loop: NEWMARK), and a
+    # general path serves the relations of laws/; "specialised": the same
+    # with the fast_loop compiled for diagonal or full matrices (DIFF_CENTRE);
+    # "own": one loop
     loops: str = "local_frame"
     # NEWMARK, TRBDF2: a diagonal fast path dropped when K, C stop being diagonal
     diagonal_fast_path: bool = False
@@ -173,19 +177,16 @@ TABLE: tuple[Scheme, ...] = (
         diagonal_fast_path=True,
         lagged_impact_gain=1.1,
     ),
-    # asterlite extension for legacy decks: code_aster 10's EULER (mdeul1,
-    # v += dt a_n then q += dt v) is the arithmetic code_aster 14+ runs as the
-    # GENE DIFF_CENTRE (dtmprep maps it to its Euler routine): DIFF_CENTRE's module
-    Scheme(
-        "EULER",
-        "asterlite.dynamics.scheme_diff_centre",
-        "DIFF_CENTRE",
-        DIFF_CENTRE,
-        explicit_velocity=True,
-        staggered_velocity=True,
-        film=True,
-        loops="specialised",
-    ),
+)
+
+# other names of a scheme: asterlite extension for legacy decks, code_aster 10's
+# EULER (mdeul1: v += dt a_n, then q += dt v) is the arithmetic code_aster 17
+# runs for the GENE DIFF_CENTRE (dtmprep's first method, which dtmintg sends
+# to its Euler integrator inteuler); code_aster 17 has no EULER value
+ALIASES = {"EULER": "DIFF_CENTRE"}
+TABLE += tuple(
+    replace(next(e for e in TABLE if e.name == target), name=alias)
+    for alias, target in ALIASES.items()
 )
 
 SCHEMES: dict[str, Scheme] = {scheme.name: scheme for scheme in TABLE}
@@ -204,8 +205,8 @@ def register(entry: Scheme) -> None:
 # the loop of code_aster 10-12's ADAPT_ORDRE2 (Scheme.legacy_kernel)
 LEGACY_ADAPT_LOOP = SCHEMES["ADAPT_ORDRE2"].legacy_kernel
 # the loops shared by every scheme: variable rotation speed, implicit shocks
-ROTATING_LOOP = "VITESSE_VARIABLE"
-IMPLICIT_LOOP = "TRAITEMENT_NONL='IMPLICITE'"
+ROTATING_LOOP = "variable rotation speed"
+IMPLICIT_LOOP = "implicit shocks"
 
 
 def scheme(name: str) -> Scheme:

@@ -7,7 +7,7 @@ in the folder :func:`asterlite.dynamics.kernel_cache_folder` names after
 the sources; the folders of older sources are deleted here); later
 processes load it in milliseconds. The engine keeps those combinations few
 and independent of the deck: one loop per scheme whatever its features
-(shocks, laws, loads, ENERGIE are runtime data of the same types), plus
+(shocks, laws, loads, energy balance are runtime data of the same types), plus
 DIFF_CENTRE's specialised loop on diagonal or full matrices, its general
 path, and the loops shared by every scheme (variable rotation speed,
 implicit shocks, fluid films). Running each of them once on a tiny problem
@@ -21,6 +21,8 @@ The kernels are compiled by ``jobs`` worker processes, in the stages of
 
 from __future__ import annotations
 
+import compileall
+import importlib
 import os
 import re
 import shutil
@@ -31,6 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite import dynamics, progress
 from asterlite.dynamics import compile_estimate, schemes
 
 # the kernels, in three stages: the force functions every loop calls (and
@@ -41,10 +44,10 @@ from asterlite.dynamics import compile_estimate, schemes
 # loop, which needs both the film functions and the legacy ADAPT step control
 SHARED = "shared force functions"
 LEGACY_ADAPT = schemes.LEGACY_ADAPT_LOOP
-FILM = "LAME_FLUIDE"
+FILM = "fluid film"
 # the film under code_aster 10-12's ADAPT_ORDRE2: calls the film functions and
 # the legacy ADAPT loop's step control, so it comes after both
-FILM_ADAPT = "LAME_FLUIDE, ADAPT_ORDRE2 (code_aster 10-12)"
+FILM_ADAPT = "fluid film, ADAPT_ORDRE2 (code_aster 10-12)"
 # each scheme's loops (as asterlite.dynamics.schemes describes them),
 # longest compile first (compile_seconds.json) so that the two workers finish
 # the stage together; ADAPT_ORDRE1, among the first, compiles the local-frame
@@ -119,7 +122,7 @@ def tiny_shocks(system, obstacle: str = "PLAN_Y"):
 
 def tiny_loads(system, t_end: float, dt: float):
     """A constant load and a tabulated multiplier (the loops' two kinds of rows)."""
-    from asterlite.dynamics.model import tabulate_excitation
+    from asterlite.dynamics.excitation import tabulate_excitation
 
     class Table:  # a DEFI_FONCTION with linear interpolation
         INTERPOL = ("LIN", "LIN")
@@ -137,7 +140,7 @@ def tiny_loads(system, t_end: float, dt: float):
 def run_loop_kernel(name: str) -> None:
     """Run the loop ``name`` (a :data:`LOOPS` entry, as
     :func:`asterlite.dynamics.integrate.loop_kernel` names them) on a tiny
-    problem, with and without ENERGIE where the loop offers it."""
+    problem, with and without the energy balance where the loop offers it."""
     from asterlite.dynamics.integrate import SchemeOptions, integrate
 
     runs = {loop: entry.name for loop, entry in schemes.kernels().items()}
@@ -150,7 +153,7 @@ def run_loop_kernel(name: str) -> None:
     t_end, dt = 0.01, 1.0e-4
     rotation = tiny_rotation(system, t_end, dt) if name == schemes.ROTATING_LOOP else None
     options = SchemeOptions()
-    if name == LEGACY_ADAPT:  # mdadap: no energy balance, PAS_MAXI given
+    if name == LEGACY_ADAPT:  # mdadap: no energy balance, the step's upper bound given
         options = SchemeOptions(adapt_v11=True, dt_max=dt)
     energies = (False, True) if rotation is None and name != LEGACY_ADAPT else (False,)
     for energy in energies:
@@ -189,7 +192,6 @@ def warm_shared() -> None:
     """The functions every loop calls, compiled once before the loops (so
     that parallel workers do not each compile them): the forces and the
     acceleration of the initial state, the archiving, the law diagnosis."""
-    from asterlite import progress
     from asterlite.dynamics import kernel as K
     from asterlite.dynamics.forces import acceleration, total_force
     from asterlite.dynamics.integrate import law_error, new_buffers
@@ -207,9 +209,8 @@ def warm_shared() -> None:
 
 
 def warm_film(adapt: bool = False) -> None:
-    """code_aster 10-14's LAME_FLUIDE loop (its own kernel), or with ``adapt``
+    """code_aster 10-14's fluid film loop (its own kernel), or with ``adapt``
     the film under code_aster 10-12's ADAPT_ORDRE2 (another one)."""
-    from asterlite import progress
     from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
     from asterlite.dynamics.integrate import SchemeOptions
 
@@ -232,7 +233,6 @@ def warm_film(adapt: bool = False) -> None:
 def warm_one(name: str) -> Warmed:
     """Make the kernel ``name`` ready in this process (compiled, or loaded
     from the cache)."""
-    from asterlite import progress
 
     progress.enable(False)  # no progress bars for the tiny runs
     progress.listen_to_compiles()
@@ -282,8 +282,6 @@ def compile_bytecode() -> int:
     PYTHONDONTWRITEBYTECODE is set): every run then imports them without
     parsing them again. Returns the number of folders that failed (a
     read-only install, say: runs just parse the sources)."""
-    import compileall
-    import importlib
 
     failed = 0
     for package in ("asterlite", "asterlite.catalogues", "asterlite.commands"):
@@ -322,7 +320,6 @@ def main(jobs: int | None = None, stream=None, verbose: bool = False) -> int:
     (``verbose``: each kernel's wall and compile CPU seconds)."""
     stream = stream or sys.stderr
     started = time.perf_counter()
-    from asterlite import dynamics
 
     folder = dynamics.kernel_cache_folder()
     prune_stale_kernels(folder, in_tree=folder.parent == dynamics.PACKAGE / "__pycache__")

@@ -150,17 +150,24 @@ def element_rotation(rotations: np.ndarray, per_node: int, n_nodes: int = 2) -> 
     """(n, 3, 3) global-to-local rotations -> (n, d, d) block-diagonal operator.
 
     Each vector triple of each node (translations, then rotations when
-    ``per_node`` is 6) turns with the same 3x3 block; ``per_node`` 2 is the
-    plane case (DX, DY) using the in-plane 2x2 block.
+    ``per_node`` is 6 or 7) turns with the same 3x3 block; ``per_node`` 2 is
+    the plane case (DX, DY) using the in-plane 2x2 block. The seventh DOF of
+    POU_D_TG's nodes (GRX, the rate of twist about the beam's own axis) is a
+    scalar of the element's frame: it keeps its value.
     """
     p = np.asarray(rotations, dtype=float)
     if per_node == 2:
         p = p[:, :2, :2]
     size = p.shape[-1]
-    blocks = per_node // size
-    eye = np.eye(blocks * n_nodes)
-    # kron(I, P) for each element
-    return np.einsum("ab,eij->eaibj", eye, p).reshape(len(p), per_node * n_nodes, -1)
+    vectors, scalars = divmod(per_node, size)
+    node = np.zeros((len(p), per_node, per_node))
+    for k in range(vectors):
+        node[:, k * size : (k + 1) * size, k * size : (k + 1) * size] = p
+    for k in range(vectors * size, per_node):
+        node[:, k, k] = 1.0
+    # kron(I, node block) for each element
+    eye = np.eye(n_nodes)
+    return np.einsum("ab,eij->eaibj", eye, node).reshape(len(p), per_node * n_nodes, -1)
 
 
 def to_global(local: np.ndarray, rotations: np.ndarray, per_node: int) -> np.ndarray:
@@ -453,8 +460,12 @@ def local_matrices(
         iz=section["IZ"],
         ay=ay,
         az=az,
-        ey=section.get("EY", 0.0),
-        ez=section.get("EZ", 0.0),
+        # code_aster's EY, EZ place the centroid relative to the shear centre
+        # (sdll400a's deck supports its channel at the shear centre with
+        # DY - 0.2215 DRX = 0 for EZ = -0.2215); ey, ez here are the shear
+        # centre relative to the centroid
+        ey=-section.get("EY", 0.0),
+        ez=-section.get("EZ", 0.0),
     )
     shear = shear_modulus(young, poisson)
     if modelisation == "POU_D_TG":

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
+from scipy.sparse.csgraph import connected_components
 
 
 class ConstraintError(ValueError):
@@ -80,7 +81,12 @@ class Elimination:
         return self.T.shape[1]
 
     def reduce(self, matrix) -> sp.csr_matrix:
-        """Tᵀ A T."""
+        """Tᵀ A T (a copy of A when nothing is eliminated: T is the identity,
+        and the products would hold two more copies of A at once)."""
+        if self.constrained.size == 0 and self.T.shape[0] == self.T.shape[1]:
+            reduced = sp.csr_matrix(matrix, copy=True)
+            reduced.sum_duplicates()
+            return reduced
         return sp.csr_matrix(self.T.T @ (matrix @ self.T))
 
     def expand(self, q: np.ndarray) -> np.ndarray:
@@ -124,37 +130,20 @@ def eliminate(
 
     multi = np.flatnonzero(counts > 1)
     slaves = np.array([], dtype=int)
-    slave_solve = np.zeros((0, multi.size))
-    slave_rows = None  # dense (n_slaves, n_masters_touched)
-    touched_masters = np.array([], dtype=int)
+    slave_solve = sp.csr_matrix((0, multi.size))
+    slave_terms = (np.array([], dtype=int), np.array([], dtype=int), np.array([]))
     if multi.size:
         sub = b_matrix[multi]
         # move fixed DOFs to the right-hand side
         rhs_multi = rhs[multi] - sub @ u0
         touched = np.unique(sub.indices)
         touched = touched[~is_fixed[touched]]
-        dense = sub[:, touched].toarray()
-        if touched.size:
-            _, r_factor, perm = sla.qr(dense, mode="economic", pivoting=True)
-            diag = np.abs(np.diag(r_factor))
-            rank = int(np.sum(diag > tol * max(diag.max(initial=0.0), 1e-300)))
-        else:
-            rank, perm = 0, np.array([], dtype=int)
-        slave_cols, master_cols = perm[:rank], perm[rank:]
-        if rank:
-            bs, bm = dense[:, slave_cols], dense[:, master_cols]
-            # least squares is exact for consistent (possibly redundant) relations
-            coef, *_ = np.linalg.lstsq(bs, np.column_stack([rhs_multi, -bm]), rcond=None)
-            residual = bs @ coef[:, 0] - rhs_multi
-            if np.linalg.norm(residual) > 1e-8 * (1 + np.linalg.norm(rhs_multi)):
-                raise ConstraintError("the linear relations are incompatible")
-            slaves = touched[slave_cols]
-            touched_masters = touched[master_cols]
-            slave_solve = np.linalg.pinv(bs)
-            u0[slaves] = coef[:, 0]
-            slave_rows = coef[:, 1:]
-        elif np.linalg.norm(rhs_multi) > 1e-8:
-            raise ConstraintError("the linear relations are incompatible")
+        slaves, values, slave_terms, slave_solve = _eliminate_relations(
+            sp.csr_matrix(sub[:, touched]), rhs_multi, tol
+        )
+        slaves = touched[slaves]
+        u0[slaves] = values
+        slave_terms = (slave_terms[0], touched[slave_terms[1]], slave_terms[2])
 
     removed = np.zeros(n_dofs, dtype=bool)
     removed[fixed] = True
@@ -165,11 +154,11 @@ def eliminate(
     rows = [free]
     cols = [np.arange(free.size)]
     vals = [np.ones(free.size)]
-    if slaves.size and touched_masters.size:
-        nz_r, nz_c = np.nonzero(np.abs(slave_rows) > 0)
-        rows.append(slaves[nz_r])
-        cols.append(column_of[touched_masters[nz_c]])
-        vals.append(slave_rows[nz_r, nz_c])
+    slave_of, master_of, coefficient = slave_terms
+    kept = coefficient != 0.0
+    rows.append(slaves[slave_of[kept]])
+    cols.append(column_of[master_of[kept]])
+    vals.append(coefficient[kept])
     t_matrix = sp.coo_matrix(
         (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
         shape=(n_dofs, free.size),
@@ -185,3 +174,92 @@ def eliminate(
         slaves=slaves,
         slave_solve=slave_solve,
     )
+
+
+def _eliminate_relations(sub: sp.csr_matrix, rhs: np.ndarray, tol: float):
+    """Slaves of the relations ``sub x = rhs`` (no DOF of x is fixed), by a
+    column-pivoted QR of each group of relations that share DOFs: relations
+    are mostly small and independent (LIAISON_GROUP pairs nodes one by one),
+    so one dense QR of them all would cost O(n³) time and O(n²) memory for
+    what is a block-diagonal problem. Pivoting inside a block picks the
+    columns the global QR would, and ranks use the global largest pivot.
+
+    Returns (slave columns, their particular values, the triplets (slave
+    position, master column, coefficient) of x_slave = value + sum coef
+    x_master, the sparse pseudo-inverse of the slave columns (n_slaves,
+    n_relations))."""
+
+    n_rows, n_cols = sub.shape
+    sub = sp.csr_matrix(sub)
+    sub.sort_indices()
+    coo = sub.tocoo()
+    graph = sp.coo_matrix(
+        (np.ones(coo.nnz), (coo.row, n_rows + coo.col)), shape=(n_rows + n_cols,) * 2
+    )
+    _, labels = connected_components(graph, directed=False)
+    row_labels, col_labels = labels[:n_rows], labels[n_rows:]
+    row_order = np.argsort(row_labels, kind="stable")
+    col_order = np.argsort(col_labels, kind="stable")
+    row_bounds = _group_bounds(row_labels[row_order], labels.max() + 1)
+    col_bounds = _group_bounds(col_labels[col_order], labels.max() + 1)
+    blocks = []  # (rows, cols, dense, pivots, |diag of R|)
+    for label in np.flatnonzero(np.diff(row_bounds) > 0):
+        rows = row_order[row_bounds[label] : row_bounds[label + 1]]
+        cols = col_order[col_bounds[label] : col_bounds[label + 1]]
+        if not cols.size:
+            blocks.append((rows, cols, None, np.array([], dtype=int), np.array([])))
+        elif rows.size == 1:  # one relation: the pivot is its largest coefficient
+            dense = sub[rows].toarray()[:, cols]
+            pivot = int(np.argmax(np.abs(dense[0])))
+            perm = np.concatenate([[pivot], np.delete(np.arange(cols.size), pivot)])
+            blocks.append((rows, cols, dense, perm, np.abs(dense[0, [pivot]])))
+        else:
+            dense = sub[rows][:, cols].toarray()
+            _, r_factor, perm = sla.qr(dense, mode="economic", pivoting=True)
+            blocks.append((rows, cols, dense, perm, np.abs(np.diag(r_factor))))
+    largest = max((d.max(initial=0.0) for *_, d in blocks), default=0.0)
+    threshold = tol * max(largest, 1e-300)
+    slave_cols, slave_values = [], []
+    term_slave, term_master, term_coef = [], [], []
+    solve_rows, solve_cols, solve_vals = [], [], []
+    residual2 = 0.0
+    n_slaves = 0
+    for rows, cols, dense, perm, diag in blocks:
+        rank = int(np.sum(diag > threshold))
+        if not rank:
+            residual2 += float(rhs[rows] @ rhs[rows])
+            continue
+        bs, bm = dense[:, perm[:rank]], dense[:, perm[rank:]]
+        # least squares is exact for consistent (possibly redundant) relations
+        coef, *_ = np.linalg.lstsq(bs, np.column_stack([rhs[rows], -bm]), rcond=None)
+        residual = bs @ coef[:, 0] - rhs[rows]
+        residual2 += float(residual @ residual)
+        positions = n_slaves + np.arange(rank)
+        slave_cols.append(cols[perm[:rank]])
+        slave_values.append(coef[:, 0])
+        masters = cols[perm[rank:]]
+        term_slave.append(np.repeat(positions, masters.size))
+        term_master.append(np.tile(masters, rank))
+        term_coef.append(coef[:, 1:].ravel())
+        inverse = np.linalg.pinv(bs)  # (rank, rows)
+        solve_rows.append(np.repeat(positions, rows.size))
+        solve_cols.append(np.tile(rows, rank))
+        solve_vals.append(inverse.ravel())
+        n_slaves += rank
+    if np.sqrt(residual2) > 1e-8 * (1 + np.linalg.norm(rhs)):
+        raise ConstraintError("the linear relations are incompatible")
+
+    def joined(parts, dtype=float):
+        return np.concatenate(parts).astype(dtype) if parts else np.array([], dtype=dtype)
+
+    slave_solve = sp.coo_matrix(
+        (joined(solve_vals), (joined(solve_rows, int), joined(solve_cols, int))),
+        shape=(n_slaves, n_rows),
+    ).tocsr()
+    terms = (joined(term_slave, int), joined(term_master, int), joined(term_coef))
+    return joined(slave_cols, int), joined(slave_values), terms, slave_solve
+
+
+def _group_bounds(sorted_labels: np.ndarray, n_labels: int) -> np.ndarray:
+    """Start of each label's run in ``sorted_labels`` (n_labels + 1 bounds)."""
+    return np.searchsorted(sorted_labels, np.arange(n_labels + 1))

@@ -32,15 +32,21 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.assembly import ElementField, NodalComponentField
+from asterlite.errors import UnsupportedError
 from asterlite.fem.beam_elements import (
     EFGE_COMPONENTS,
     SIPM_COMPONENTS,
     SIPO_COMPONENTS,
+    _material_values,
     beam_extreme_stresses,
     beam_inertia_forces,
     beam_local_forces,
     beam_stresses,
 )
+from asterlite.fem.discrete import local_matrix
+from asterlite.fem.dofs import MODELISATION_COMPONENTS
+from asterlite.fem.elements import ElementError, cell_frames
+from asterlite.fem.frames import block_rotation
 
 BEAM_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 ELNO_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO", "SIPO_ELNO", "SIPM_ELNO")
@@ -114,8 +120,8 @@ def beam_element_fields(
             sections = [characteristics.sections[int(c)] for c in cells]
             extremes = beam_extreme_stresses(dynamic, sections)
             out[name] = ElementField(name, cells, SIPM_COMPONENTS, extremes)
-        else:
-            raise ValueError(f"unknown element field {name}")
+        else:  # a field code_aster computes on beams too (ECIN_ELEM, EPSI_ELNO...)
+            raise UnsupportedError(f"{name} of beam cells")
     return out
 
 
@@ -136,10 +142,6 @@ def discrete_element_fields(
     element frame (ORIENTATION, else x along the segment), the first node's
     sign reversed on segments; zero where a cell has no stiffness (code_aster
     warns). Points: the cell's nodes (a point cell's second is NaN)."""
-    from asterlite.fem.discrete import local_matrix
-    from asterlite.fem.dofs import MODELISATION_COMPONENTS
-    from asterlite.fem.elements import cell_frames
-    from asterlite.fem.frames import block_rotation
 
     cells = np.asarray(cells, dtype=int)
     other = [name for name in options if name not in BAR_OPTIONS]
@@ -187,8 +189,6 @@ def bar_element_fields(
 ) -> dict[str, ElementField]:
     """EFGE_ELNO / SIEF_ELNO (component N) of bar cells for nodal values
     (n_orders, n_dofs), real or complex."""
-    from asterlite.fem.beam_elements import _material_values
-    from asterlite.fem.elements import ElementError
 
     cells = np.asarray(cells, dtype=int)
     other = [name for name in options if name not in BAR_OPTIONS]

@@ -20,10 +20,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.errors import CommandError
 from asterlite.fem import beam
 from asterlite.fem.beam_elements import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
+from asterlite.fem.plane_wave import plane_wave_history
 from asterlite.fem.plate_elements import plate_gravity_terms
 from asterlite.fem.solid_loads import solid_cells, solid_load_terms, volume_force_terms
 
@@ -138,10 +140,12 @@ def beam_force_terms(model, characteristics, cells, values, local: bool, values_
             raise ElementError(f"FORCE_POUTRE applies to beams, not to {modelisation} ({names})")
         conn, x1, x2, length, rot = _geometry(model, characteristics, members)
         comps = beam.COMPONENTS[modelisation]
-        if len(comps) == 6:
+        if len(comps) >= 6:
             f_local = _beam_local_vectors(rot, length, q1, q2, local)
             r = beam.element_rotation(rot, 6)
             f = np.einsum("eji,ej->ei", r, f_local)
+            if len(comps) == 7:  # POU_D_TG: the line load does no work on GRX
+                f = np.insert(f.reshape(-1, 2, 6), 6, 0.0, axis=2).reshape(-1, 14)
         else:
             dim = len(comps)
             if local:
@@ -182,10 +186,15 @@ def beam_element_loads(model, characteristics, cells, load) -> np.ndarray:
     return out
 
 
-def load_terms(load, characteristics=None, materials=None, complex_values=False) -> list:
+def load_terms(
+    load, characteristics=None, materials=None, complex_values=False, history_apart=False
+) -> list:
     """Every nodal term of one AFFE_CHAR_MECA load (constant values). A load
     with complex values (AFFE_CHAR_MECA_C) gives complex terms, for callers
-    that compute on complex values only (``complex_values``)."""
+    that compute on complex values only (``complex_values``). A caller that
+    takes the load's history of time and space apart (``history_apart``:
+    :func:`load_history`) gets the constant terms only; any other caller
+    is refused such a load by name."""
     imaginary = getattr(load, "imaginary", None)
     if imaginary is not None:
         if not complex_values:
@@ -198,11 +207,105 @@ def load_terms(load, characteristics=None, materials=None, complex_values=False)
         real_terms = _real_load_terms(load, characteristics, materials)
         imag_terms = _real_load_terms(imaginary, characteristics, materials)
         return real_terms + [(n, c, 1j * v) for n, c, v in imag_terms]
-    return _real_load_terms(load, characteristics, materials)
+    return _real_load_terms(load, characteristics, materials, history_apart)
 
 
-def _real_load_terms(load, characteristics=None, materials=None) -> list:
-    if load.extra.get("ONDE_PLANE") is not None:
+#: instants of a load history computed at once (bounds its work arrays)
+HISTORY_CHUNK = 8
+
+
+def load_history(load, materials):
+    """The part of a load that is a history of time and space, as a function
+    ``times -> (nodes, components, values (n_times, m))``; None when the load
+    has none. Such parts are an ``AFFE_CHAR_MECA_F/ONDE_PLANE`` wave (each
+    boundary point sees the wave with its own delay, so it is no vector times
+    f(t)) and an ``EVOL_CHAR`` (nodal forces given at instants)."""
+    parts = []
+    waves = load.extra.get("ONDE_PLANE")
+    if waves:
+        parts.append(_plane_wave_history(load, materials, waves))
+    evolution = load.extra.get("EVOL_CHAR")
+    if evolution is not None:
+        parts.append(evol_char_history(evolution, load.name or ""))
+    if len(parts) < 2:
+        return parts[0] if parts else None
+
+    def history(times):
+        found = [part(times) for part in parts]
+        nodes = np.concatenate([p[0] for p in found])
+        components = [c for p in found for c in p[1]]
+        return nodes, components, np.concatenate([p[2] for p in found], axis=1)
+
+    return history
+
+
+def _plane_wave_history(load, materials, waves):
+    def at(times):
+        # each ONDE_PLANE occurrence adds its own terms
+        parts = [
+            plane_wave_history(load.model, materials, wave["CELLS"], wave["WAVE"], times)
+            for wave in waves
+        ]
+        nodes = np.concatenate([p[0] for p in parts])
+        components = [c for p in parts for c in p[1]]
+        return nodes, components, np.concatenate([p[2] for p in parts], axis=1)
+
+    def history(times):
+        # by a few instants at a time: the free field's gradients and stresses
+        # at every boundary point would otherwise be held for every instant at once
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        nodes, components, first = at(times[:HISTORY_CHUNK])
+        starts = range(HISTORY_CHUNK, times.size, HISTORY_CHUNK)
+        values = [first] + [at(times[k : k + HISTORY_CHUNK])[2] for k in starts]
+        return nodes, components, np.concatenate(values, axis=0)
+
+    return history
+
+
+def evol_char_history(evolution, name: str = ""):
+    """The FORC_NODA of an evol_char at any instants, linear between its
+    stored instants; an instant outside them is an error, as in code_aster
+    (its rsinch without extrapolation: CHARGES8_2). Only the DOFs that carry
+    a force at some instant are listed."""
+    stored = np.asarray(evolution.times, dtype=float)
+    forces = np.asarray(evolution.fields["FORC_NODA"], dtype=float)
+    loaded = np.flatnonzero(np.any(forces != 0.0, axis=0))
+    forces = forces[:, loaded]
+    nodes = np.array([evolution.numbering.dofs[i][0] for i in loaded], dtype=int)
+    components = [evolution.numbering.dofs[i][1] for i in loaded]
+    span = max(abs(stored[0]), abs(stored[-1]), 1.0)
+    tolerance = 1.0e-10 * span
+
+    def history(times):
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        outside = (times < stored[0] - tolerance) | (times > stored[-1] + tolerance)
+        if np.any(outside):
+            t = float(times[np.flatnonzero(outside)[0]])
+            raise CommandError(
+                f"the EVOL_CHAR of the load {name} has no forces at INST={t:g}: it holds "
+                f"[{stored[0]:g}, {stored[-1]:g}] (code_aster does not extrapolate it either)",
+                path="EXCIT",
+            )
+        right = np.clip(np.searchsorted(stored, times, side="right"), 1, stored.size - 1)
+        left = right - 1
+        width = stored[right] - stored[left]
+        weight = np.clip((times - stored[left]) / np.where(width > 0, width, 1.0), 0.0, 1.0)
+        values = (1.0 - weight)[:, None] * forces[left] + weight[:, None] * forces[right]
+        return nodes, components, values
+
+    return history
+
+
+def _real_load_terms(load, characteristics=None, materials=None, history_apart=False) -> list:
+    if load.extra.get("EVOL_CHAR") is not None and not history_apart:
+        from asterlite.errors import UnsupportedError
+
+        raise UnsupportedError(
+            f"the EVOL_CHAR load {load.name or ''} where a fixed load vector is taken: "
+            "its forces are a history of instants (asterlite.fem.loads.load_history), "
+            "which this command does not take yet"
+        )
+    if load.extra.get("ONDE_PLANE") is not None and not history_apart:
         from asterlite.errors import UnsupportedError
 
         # each boundary point sees the wave with its own delay: no vector times f(t)

@@ -6,7 +6,8 @@ node in the middle of each edge, shared by the cells around the edge, in
 code_aster's node order (vertices, then the edge midpoints in the order of
 its reference element). SEG3_4 turns a SEG3 into a SEG4 with nodes at the
 thirds of its (quadratic) curve, as the pipe elements want. New nodes take
-code_aster 17's positional names ``N<i>``; node groups keep their nodes.
+code_aster 17's positional names ``N<i>`` (LINE_QUAD of a code_aster 15 deck:
+that version's ``NS1``, ``NS2``...); node groups keep their nodes.
 """
 
 from __future__ import annotations
@@ -51,20 +52,32 @@ def edge_vertices(linear: str) -> tuple[tuple[int, int], ...]:
     return tuple(pairs)
 
 
-class _NewNodes:
-    """Nodes appended to a mesh, with code_aster 17's positional names."""
+class DuplicateNodeName(ValueError):
+    """A new node would take the name of a node the mesh has."""
 
-    def __init__(self, mesh):
+
+class _NewNodes:
+    """Nodes appended to a mesh, with code_aster 17's positional names, or
+    (``prefix``: (text, first number)) code_aster 15's prefixed ones."""
+
+    def __init__(self, mesh, prefix: tuple[str, int] | None = None):
         self.mesh = mesh
         self.coords: list[np.ndarray] = []
         self.names: list[str] = []
         self.taken = set(mesh.node_names)
+        self.prefix = prefix
 
     def add(self, point) -> int:
         index = self.mesh.n_nodes + len(self.coords)
-        name, k = f"N{index + 1}", 1
-        while name in self.taken:
-            name, k = f"NS{index + 1}_{k}", k + 1
+        if self.prefix is not None:
+            text, first = self.prefix
+            name = f"{text}{first + len(self.coords)}"
+            if name in self.taken:  # code_aster stops there too
+                raise DuplicateNodeName(f"the mesh already has a node named {name!r}")
+        else:
+            name, k = f"N{index + 1}", 1
+            while name in self.taken:
+                name, k = f"NS{index + 1}_{k}", k + 1
         self.taken.add(name)
         self.coords.append(np.asarray(point, dtype=float))
         self.names.append(name)
@@ -77,10 +90,11 @@ class _NewNodes:
             self.mesh.refresh_indices()
 
 
-def line_quad(mesh, cells) -> int:
+def line_quad(mesh, cells, prefix: tuple[str, int] | None = None) -> int:
     """Make the linear ``cells`` of ``mesh`` (changed in place) quadratic;
-    POI1 and quadratic cells stay. Returns the number of nodes added."""
-    new = _NewNodes(mesh)
+    POI1 and quadratic cells stay. Returns the number of nodes added
+    (``prefix``: see :class:`_NewNodes`)."""
+    new = _NewNodes(mesh, prefix)
     middles: dict[tuple[int, int], int] = {}
     for cell in np.asarray(cells, dtype=int):
         kind = mesh.cell_types[cell]

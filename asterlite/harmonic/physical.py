@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
+from scipy.sparse.csgraph import reverse_cuthill_mckee
 from scipy.sparse.linalg import splu
 
 from asterlite.fem.constraints import Elimination
@@ -162,7 +163,6 @@ def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
     lines), SuperLU's minimum degree on AᵀA + A or its COLAMD column order
     (two- and three-dimensional meshes), these read from factorisations at
     the first frequency (the COLAMD one timed against LDLᵀ)."""
-    from scipy.sparse.csgraph import reverse_cuthill_mckee
 
     pencil = sweep.pencil
     pattern = sp.csr_matrix(

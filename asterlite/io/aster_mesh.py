@@ -9,6 +9,8 @@ by ``FINSF``; ``FIN`` ends the file and ``%`` starts a comment. Sections:
 - ``GROUP_NO`` / ``GROUP_MA``: the group name (first token, or ``NOM=name``
   on the keyword line) followed by member names.
 
+A keyword line's ``KEY=VALUE`` options may go on over the lines after it.
+
 Entries may wrap over several lines: only the token count matters.
 
 Errors quote the file's tokens only once its first line has been read as a
@@ -24,6 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from asterlite.concepts.mesh import CELL_NODE_COUNTS, Mesh
+from asterlite.io.input_files import InputFileError, read_bounded_text
 from asterlite.io.non_finite import NonFiniteNumber, finite_float
 
 
@@ -71,6 +74,13 @@ def _header_options(tokens: list[str]) -> tuple[dict[str, str], list[str]]:
     return options, rest
 
 
+def _all_options(tokens: list[str]) -> bool:
+    """Whether a line holds only ``KEY=VALUE`` options (a section's header
+    going on), never names or numbers."""
+    options, rest = _header_options(tokens)
+    return bool(options) and not rest
+
+
 def _to_float(token: str, node: str, line: int, filename: str) -> float:
     """A coordinate: a finite number, NaN and infinities refused however spelt."""
     try:
@@ -106,6 +116,12 @@ def parse_aster_mesh(text: str, filename: str = "") -> Mesh:
             break
         if keyword == "FINSF":
             continue
+        # the keyword line's options may go on over the next lines (NUMIN=1
+        # NUMAX=148, AUTEUR=..., DATE=...): lines whose every token is an option
+        header = list(tokens[1:])
+        while i < len(lines) and keyword != "TITRE" and _all_options(lines[i][1]):
+            header.extend(lines[i][1])
+            i += 1
         # collect the section body (every token up to FINSF), keeping line numbers
         body: list[tuple[str, int]] = []
         while i < len(lines) and lines[i][1][0].upper() != "FINSF":
@@ -121,7 +137,7 @@ def parse_aster_mesh(text: str, filename: str = "") -> Mesh:
             last = body[-1][1] if body else number
             title.extend(raw_lines[k - 1].rstrip() for k in range(first, last + 1))
             continue
-        options, extra = _header_options(tokens[1:])
+        options, extra = _header_options(header)
         if keyword in _COORD_SECTIONS:
             ndim = _COORD_SECTIONS[keyword]
             dim = max(dim, ndim)
@@ -213,7 +229,6 @@ PARSE_BYTES_PER_BYTE = 40
 def read_aster_mesh(path: str | Path) -> Mesh:
     """Read an ASTER-format mesh file (refused before reading when parsing it
     would pass the run's memory limit)."""
-    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     path = Path(path)
     try:

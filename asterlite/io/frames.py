@@ -27,6 +27,8 @@ from asterlite.concepts.function import Function, Nappe
 from asterlite.concepts.modes import ModeResult, MultElasResult
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
+from asterlite.fem.dofs import sort_components
+from asterlite.io.result_store import nodal_field_names, nodal_series, result_steps
 
 TRANSIENT_FIELDS = ("depl", "vite", "acce")  # the names of the HDF5 store (docs/results.md)
 
@@ -165,7 +167,6 @@ def transient_data(tran: TranGene):
 
 def _step_coords(result) -> tuple[str, dict]:
     """The name of the steps' dimension and its coordinates."""
-    from asterlite.io.result_store import result_steps
 
     steps = result_steps(result)
     if steps.times is not None:
@@ -189,8 +190,6 @@ def physical_data(result):
     nodal field as (step, node, component) over the nodes and components of
     all its fields, NaN where a field has no value; the step dimension is
     named time, mode or case after the result."""
-    from asterlite.fem.dofs import sort_components
-    from asterlite.io.result_store import nodal_field_names, nodal_series
 
     dim, coords = _step_coords(result)
     series = {name: nodal_series(result, name) for name in nodal_field_names(result)}

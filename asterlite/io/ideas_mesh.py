@@ -39,6 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from asterlite.concepts.mesh import Mesh
+from asterlite.io.input_files import InputFileError, read_bounded_text
 from asterlite.io.non_finite import NonFiniteNumber, finite_float
 
 # bytes of memory taken per byte of universal file text (pyuff's float lists, our records)
@@ -643,7 +644,6 @@ def parse_ideas_mesh(text: str, filename: str = "", color_groups: bool = False) 
 def read_ideas_mesh(path: str | Path, color_groups: bool = False) -> Mesh:
     """Read an I-DEAS universal file mesh (refused before reading when parsing it
     would pass the run's memory limit)."""
-    from asterlite.io.input_files import InputFileError, read_bounded_text
 
     path = Path(path)
     try:

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.io.input_files import InputFileError, open_input
 from asterlite.io.med_mesh import check_declared_bytes
 
 
@@ -41,7 +42,6 @@ def read_nodal_field(path: str | Path, name: str) -> MedNodalField:
     """Field ``name`` of a MED file: a regular file (read through one
     descriptor, so a FIFO swapped in meanwhile is never opened) whose
     datasets fit the run's memory limit once decompressed."""
-    from asterlite.io.input_files import InputFileError, open_input
 
     path = Path(path)
     try:

@@ -36,6 +36,7 @@ from pathlib import Path
 import numpy as np
 
 from asterlite.concepts.mesh import Mesh
+from asterlite.fem.dofs import sort_components
 from asterlite.io.med_mesh import _TYPES as _MED_TYPES
 
 #: MED short names (entity names) and field/mesh names have fixed sizes.
@@ -117,7 +118,6 @@ def dofs_to_nodal(numbering, values, nodes=None, components=()) -> tuple:
     ``components`` when given, in the given order; else code_aster's
     order), and zero where a node lacks a component.
     """
-    from asterlite.fem.dofs import sort_components
 
     values = np.atleast_2d(np.asarray(values, dtype=float))
     dof_nodes = np.array([n for n, _ in numbering.dofs], dtype=int)

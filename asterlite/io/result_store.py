@@ -59,6 +59,7 @@ from asterlite.concepts.modes import ModeResult, MultElasResult
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, ShockHistory, TranGene
 from asterlite.errors import CommandError
+from asterlite.io.med_writer import dofs_to_nodal
 
 LAYOUT_VERSION = 2  # 2: tables/ (files of version 1 read back with no tables)
 NODAL_DOF_FIELDS = ("DEPL", "VITE", "ACCE")
@@ -219,7 +220,6 @@ def nodal_series(result, name: str, nodes=None, components=()) -> tuple:
     step: values (n_steps, n_nodes, n_components), zero where a node lacks a
     component. ``nodes`` / ``components`` restrict (and order) the output;
     a node that carries no value is left out. KeyError if absent."""
-    from asterlite.io.med_writer import dofs_to_nodal
 
     dof_fields = _dof_fields(result)
     if name in dof_fields:

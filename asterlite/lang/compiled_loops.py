@@ -46,6 +46,7 @@ from asterlite.lang.compiled_ast import (
     Refused,
     _all,
     _name,
+    _stamp,
     _type_is,
     if_branches,
 )
@@ -641,8 +642,6 @@ class FastLoop:
         return Typed(inlined.expression, FLOAT, inlined.raises, 1)
 
     def _stamp(self, statement):
-        from asterlite.lang.compiled_ast import _stamp
-
         return _stamp(statement, self.line)
 
 

@@ -68,6 +68,7 @@ from asterlite.lang.compiled_runtime import (
     CompiledRuntime,
 )
 from asterlite.lang.deck_function import Frame
+from asterlite.lang.python2 import DICT_METHODS
 from asterlite.lang.values import Unknown
 
 INT_OR_FLOAT = frozenset({int, float})
@@ -105,7 +106,6 @@ def compile_function(function, evaluator):
 def _python2_meaning(body) -> bool:
     """A Python 2 body using what the compiled code would read as Python 3:
     '/' (classic division) and the dict methods that gave lists."""
-    from asterlite.lang.python2 import DICT_METHODS
 
     pending = [body]
     while pending:

@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from asterlite.lang.library import STORE
-from asterlite.lang.values import CallSite, DeckCallable
+from asterlite.lang.values import CallSite, DeckCallable, Unknown
 
 if TYPE_CHECKING:
     from asterlite.lang.parser import Module
@@ -49,12 +49,12 @@ class DeckFunction(DeckCallable):
         self.compile_tried = False
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
-        if self.arity == len(args) and not kwargs:
+        if self.arity == len(args) and not kwargs and all(a is not Unknown for a in args):
             return self.direct(*args)
         return self.evaluator.call_function(self, args, kwargs)
 
     def __call__(self, *args, **kwargs):
-        if self.arity == len(args) and not kwargs:
+        if self.arity == len(args) and not kwargs and all(a is not Unknown for a in args):
             return self.direct(*args)
         return self.evaluator.call_function(self, list(args), kwargs)
 

@@ -18,74 +18,49 @@ call a command whose side effects later statements rely on), then the
 override value is bound instead. Tuple unpacking, augmented assignment,
 ``for`` targets and names local to deck functions are left alone.
 ``overrides_used`` records the names that were replaced.
+
+This module runs statements; expressions and calls are computed by
+:mod:`asterlite.lang.expressions`, ``try``/``raise``/``with`` by
+:mod:`asterlite.lang.flow`, imports by :mod:`asterlite.lang.imports`
+(mixins of :class:`Evaluator`).
 """
 
 from __future__ import annotations
 
 import itertools
-import operator
 from collections.abc import Callable, Mapping
 
 from asterlite.errors import AsterliteError, DeckRuntimeError, Location, did_you_mean
-from asterlite.lang import library
+from asterlite.lang import library, python2
 from asterlite.lang import limits as guards
+from asterlite.lang.bindings import method_receivers, statement_outputs
 from asterlite.lang.budget import StepBudget
-from asterlite.lang.calls import bind_arguments, contains_unknown
+from asterlite.lang.calls import bind_arguments
 from asterlite.lang.compiler import compile_function
 from asterlite.lang.deck_function import DeckFunction, Frame
 from asterlite.lang.exceptions import python_error
+from asterlite.lang.expressions import (
+    BreakSignal,
+    ContinueSignal,
+    Escaped,
+    ExpressionEvaluation,
+    ReturnSignal,
+    attach_location,
+)
 from asterlite.lang.flow import FlowStatements
 from asterlite.lang.imports import ImportStatements
-from asterlite.lang.library import DEEP, DIRECT, STORE, DeckModule
+from asterlite.lang.library import DeckModule
 from asterlite.lang.limits import Limits
 from asterlite.lang.operators import (
-    BINARY_OPERATORS,
-    COMPARISONS,
     CONVERTED_ERRORS,
     INPLACE_OPERATORS,
-    UNARY_OPERATORS,
 )
-from asterlite.lang.parser import Module, node_position
-from asterlite.lang.python2 import DICT_METHODS as PYTHON2_DICT_METHODS
-from asterlite.lang.python2 import dict_method
-from asterlite.lang.values import CallSite, DeckCallable, Unknown
-
-_DEEP_SCAN_BUDGET = 100_000  # elements inspected when looking for Unknown in arguments
+from asterlite.lang.parser import Module
+from asterlite.lang.tree_checks import node_position
+from asterlite.lang.values import Unknown
 
 
-class _Break(Exception):
-    pass
-
-
-class _Continue(Exception):
-    pass
-
-
-class _Return(Exception):
-    def __init__(self, value):
-        self.value = value
-
-
-class _Escaped(Exception):
-    """A non-deck exception from a DeckCallable (a bug in a command, a full
-    disk): re-raised by Evaluator.run rather than disguised as a deck error,
-    with the call's location as its ``deck_location`` attribute."""
-
-    def __init__(self, original: BaseException, location: Location | None = None):
-        self.original = original
-        attach_location(original, location)
-
-
-def attach_location(error: BaseException, location: Location | None) -> None:
-    """Note where in the deck a non-deck exception arose (``deck_location``)."""
-    if location is not None and getattr(error, "deck_location", None) is None:
-        try:
-            error.deck_location = location
-        except AttributeError:  # an exception type without a __dict__
-            pass
-
-
-class Evaluator(ImportStatements, FlowStatements):
+class Evaluator(ExpressionEvaluation, ImportStatements, FlowStatements):
     """Runs parsed modules in a shared namespace.
 
     ``module_loader(name) -> dict | None`` provides importable modules beyond
@@ -93,7 +68,7 @@ class Evaluator(ImportStatements, FlowStatements):
     modules are cached per evaluator.
     """
 
-    _FLOW = (_Break, _Continue, _Return)  # control flow, which try/with let through
+    _FLOW = (BreakSignal, ContinueSignal, ReturnSignal)  # control flow, which try/with let through
 
     def __init__(
         self,
@@ -157,7 +132,6 @@ class Evaluator(ImportStatements, FlowStatements):
 
     def _python2_builtins(self) -> None:
         """A Python 2 deck's namespace: map, zip, range... give lists (once)."""
-        from asterlite.lang import python2
 
         if not self.namespace.get("__python2__"):
             self.namespace.update(python2.builtins(self.namespace, self.limits))
@@ -175,8 +149,11 @@ class Evaluator(ImportStatements, FlowStatements):
         local_names = bind_arguments(function, args, kwargs)
         if not function.compile_tried:
             self._compile(function)
-        if function.direct is not None:  # its prologue takes the step and the depth
-            return function.direct(*[local_names[name] for name in function.parameters])
+        values = [local_names[name] for name in function.parameters]
+        # its prologue takes the step and the depth; an Unknown argument (check)
+        # runs interpreted, where a test on it leaves every branch undecided
+        if function.direct is not None and all(value is not Unknown for value in values):
+            return function.direct(*values)
         self._step()
         budget = self.budget
         if budget.depth >= budget.max_depth:
@@ -187,7 +164,7 @@ class Evaluator(ImportStatements, FlowStatements):
             if function.is_lambda:
                 return self.ev(function.body, frame)
             self._exec_suite(function.body, frame)
-        except _Return as result:
+        except ReturnSignal as result:
             return result.value
         finally:
             budget.depth -= 1
@@ -225,7 +202,7 @@ class Evaluator(ImportStatements, FlowStatements):
         """Run one top-level statement: unwrap command bugs, locate stack overflows."""
         try:
             return action()
-        except _Escaped as escaped:
+        except Escaped as escaped:
             raise escaped.original from None
         except RecursionError:
             raise DeckRuntimeError(
@@ -349,14 +326,14 @@ class Evaluator(ImportStatements, FlowStatements):
         return None
 
     def _break_stmt(self, node, frame):
-        raise _Break
+        raise BreakSignal
 
     def _continue_stmt(self, node, frame):
-        raise _Continue
+        raise ContinueSignal
 
     def _return_stmt(self, node, frame):
         value_node = node.children[-1]
-        raise _Return(None if value_node is None else self.ev(value_node, frame))
+        raise ReturnSignal(None if value_node is None else self.ev(value_node, frame))
 
     def _assert_stmt(self, node, frame):
         condition_node, message_node = node.children
@@ -368,29 +345,45 @@ class Evaluator(ImportStatements, FlowStatements):
 
     def _if_stmt(self, node, frame):
         condition, suite, *clauses = node.children
-        if self._truth(self.ev(condition, frame)):
-            self._exec_suite(suite, frame)
-            return
+        branches = [(condition, suite)]
         for clause in clauses:
-            if clause is None:
-                continue
-            if clause.data == "elif_clause":
-                if self._truth(self.ev(clause.children[0], frame)):
-                    self._exec_suite(clause.children[1], frame)
-                    return
-            else:
-                self._exec_suite(clause.children[0], frame)
+            if clause is not None:
+                if clause.data == "elif_clause":
+                    branches.append((clause.children[0], clause.children[1]))
+                else:
+                    branches.append((None, clause.children[0]))
+        for index, (test, body) in enumerate(branches):
+            value = True if test is None else self.ev(test, frame)
+            if value is Unknown:  # check: any branch from here on may run
+                self._undecided([b for _, b in branches[index:]], frame)
+                return
+            if self._truth(value):
+                self._exec_suite(body, frame)
+                return
+
+    def _undecided(self, bodies, frame) -> None:
+        """Under check, blocks that may or may not run (their condition is not
+        computed): none is run, and every name they may bind, or whose object
+        a method of theirs may change, becomes Unknown."""
+        for body in bodies:
+            for name in statement_outputs(body) + method_receivers(body):
+                self._store(name, Unknown, frame)
 
     def _while_stmt(self, node, frame):
         condition, suite, else_clause = node.children
-        while self._truth(self.ev(condition, frame)):
+        value = self.ev(condition, frame)
+        if value is Unknown:
+            self._undecided([suite] + ([else_clause] if else_clause is not None else []), frame)
+            return
+        while self._truth(value):
             self._step()
             try:
                 self._exec_suite(suite, frame)
-            except _Break:
+            except BreakSignal:
                 return
-            except _Continue:
-                continue
+            except ContinueSignal:
+                pass
+            value = self.ev(condition, frame)
         if else_clause is not None:
             self._exec_suite(else_clause.children[0], frame)
 
@@ -402,9 +395,9 @@ class Evaluator(ImportStatements, FlowStatements):
             self._assign_target(target, item, frame)
             try:
                 self._exec_suite(suite, frame)
-            except _Break:
+            except BreakSignal:
                 return
-            except _Continue:
+            except ContinueSignal:
                 continue
         if else_clause is not None:
             self._exec_suite(else_clause.children[0], frame)
@@ -487,283 +480,6 @@ class Evaluator(ImportStatements, FlowStatements):
             return _EXPRESSIONS[node.data](self, node, frame)
         except (AsterliteError, *CONVERTED_ERRORS) as error:
             self._fail(error, node, frame)
-
-    def _const(self, node, frame):
-        return node.children[0]
-
-    def _const_none(self, node, frame):
-        return None
-
-    def _const_true(self, node, frame):
-        return True
-
-    def _const_false(self, node, frame):
-        return False
-
-    def _var(self, node, frame):
-        return self._lookup(node, frame)
-
-    def _tuple(self, node, frame):
-        return tuple(self.ev(child, frame) for child in node.children)
-
-    def _list(self, node, frame):
-        return [self.ev(child, frame) for child in node.children]
-
-    def _set(self, node, frame):
-        return {self._key(self.ev(child, frame)) for child in node.children}
-
-    def _dict(self, node, frame):
-        result = {}
-        for pair in node.children:
-            key = self._key(self.ev(pair.children[0], frame))
-            result[key] = self.ev(pair.children[1], frame)
-        return result
-
-    def _key(self, value):
-        """A value about to be hashed (set item, dict key, index): its nesting checked."""
-        guards.check_hash_depth(value, self.limits)
-        return value
-
-    def _listcomp(self, node, frame):
-        comprehension = node.children[0]
-        element, *loops = comprehension.children
-        result = []
-        inner = Frame({}, frame, frame.module)
-        self._comprehend(loops, inner, lambda f: result.append(self.ev(element, f)), outer=True)
-        return result
-
-    def _dictcomp(self, node, frame):
-        pair, *loops = node.children
-        result = {}
-
-        def add(inner):
-            key = self._key(self.ev(pair.children[0], inner))
-            result[key] = self.ev(pair.children[1], inner)
-
-        self._comprehend(loops, Frame({}, frame, frame.module), add, outer=True)
-        return result
-
-    def _comprehend(self, loops, frame: Frame, emit, outer=False) -> None:
-        """Run nested comprehension loops in their own frame; the outermost
-        iterable is evaluated in the enclosing frame, as Python does."""
-        loop, *rest = loops
-        target, iterable_node, *conditions = loop.children
-        for item in self.ev(iterable_node, frame.parent if outer else frame):
-            self._step()
-            self._assign_target(target, item, frame)
-            if all(self._truth(self.ev(c.children[0], frame)) for c in conditions):
-                if rest:
-                    self._comprehend(rest, frame, emit)
-                else:
-                    emit(frame)
-
-    def _lambdef(self, node, frame):
-        parameters, body = node.children
-        return self._make_function("<lambda>", parameters, body, frame, is_lambda=True)
-
-    def _ternary(self, node, frame):
-        if_true, condition, if_false = node.children
-        test = self.ev(condition, frame)
-        if test is Unknown:
-            return Unknown
-        return self.ev(if_true if self._truth(test) else if_false, frame)
-
-    def _or_test(self, node, frame):
-        value = None
-        for child in node.children:
-            value = self.ev(child, frame)
-            if self._truth(value):
-                return value
-        return value
-
-    def _and_test(self, node, frame):
-        value = None
-        for child in node.children:
-            value = self.ev(child, frame)
-            if not self._truth(value):
-                return value
-        return value
-
-    def _not(self, node, frame):
-        value = self.ev(node.children[0], frame)
-        return Unknown if value is Unknown else not self._truth(value)
-
-    def _comparison(self, node, frame):
-        left = self.ev(node.children[0], frame)
-        result = True
-        for position in range(1, len(node.children), 2):
-            op = "".join(token.value for token in node.children[position].children)
-            right = self.ev(node.children[position + 1], frame)
-            if left is Unknown or right is Unknown:
-                return Unknown
-            guards.check_binary("==", left, right, self.limits)
-            if op in ("in", "notin"):
-                self._key(left)
-            result = COMPARISONS[op](left, right)
-            if position + 2 < len(node.children) and not self._truth(result):
-                return result
-            left = right
-        return result
-
-    def _chain(self, node, frame):
-        """arith_expr / term: operand (op operand)*, left to right."""
-        children = node.children
-        value = self.ev(children[0], frame)
-        for position in range(1, len(children), 2):
-            right = self.ev(children[position + 1], frame)
-            value = self._binary(children[position].value, value, right)
-        return value
-
-    def _bitwise(self, op):
-        def evaluate(node, frame):
-            value = self.ev(node.children[0], frame)
-            for child in node.children[1:]:
-                value = self._binary(op, value, self.ev(child, frame))
-            return value
-
-        return evaluate
-
-    def _power(self, node, frame):
-        base = self.ev(node.children[0], frame)
-        exponent = self.ev(node.children[1], frame)
-        return self._binary("**", base, exponent)
-
-    def _unary(self, node, frame):
-        op, operand_node = node.children
-        operand = self.ev(operand_node, frame)
-        if operand is Unknown:
-            return Unknown
-        return UNARY_OPERATORS[op.value](operand)
-
-    def _binary(self, op: str, left, right, function=None):
-        if left is Unknown or right is Unknown:
-            return Unknown
-        if function is operator.iadd and type(left) is list and type(right) is not list:
-            # list += any iterable extends the list: read the iterable within the limit
-            room = self.limits.max_sequence_length - len(left)
-            right = guards.bounded_items(right, room, self.limits)
-        arrays = guards.check_binary(op, left, right, self.limits)
-        if op == "%" and isinstance(left, str):  # engine objects print neutrally
-            right = guards.deck_text_value(right)
-        result = (function or BINARY_OPERATORS[op])(left, right)
-        if arrays:
-            guards.check_array_result(result)
-        return result
-
-    def _truth(self, value) -> bool:
-        return bool(value)
-
-    def _getattr(self, node, frame):
-        value = self.ev(node.children[0], frame)
-        if value is Unknown:
-            return Unknown
-        name = node.children[1].value
-        if type(value) is dict and frame.module.python2 and name in PYTHON2_DICT_METHODS:
-            return dict_method(value, name, self.limits)
-        return library.get_attribute(value, name, self.limits)
-
-    def _getitem(self, node, frame):
-        container = self.ev(node.children[0], frame)
-        index = self._index(node.children[1], frame)
-        if container is Unknown or index is Unknown:
-            return Unknown
-        return container[index]
-
-    def _index(self, node, frame):
-        if node.data == "slice":
-            bounds = [None if part is None else self.ev(part, frame) for part in node.children]
-            return Unknown if Unknown in bounds else slice(*bounds)
-        if node.data == "subscript_tuple":
-            parts = tuple(self._index(child, frame) for child in node.children)
-            return Unknown if any(part is Unknown for part in parts) else self._key(parts)
-        return self._key(self.ev(node, frame))
-
-    # ------------------------------------------------------------------ calls
-
-    def _funccall(self, node, frame, assigned_name=None):
-        callee_node, arguments = node.children
-        callee = self.ev(callee_node, frame)
-        args, kwargs, keyword_locations, spread_unknown = self._arguments(arguments, frame)
-        if spread_unknown:
-            return Unknown
-        return self.invoke(callee, args, kwargs, keyword_locations, node, frame, assigned_name)
-
-    def invoke(self, callee, args, kwargs, keyword_locations, node, frame, assigned_name=None):
-        """Call an evaluated callee with evaluated arguments (``node``, the call,
-        locates it for commands)."""
-        if callee is Unknown:
-            return Unknown
-        if isinstance(callee, DeckCallable):
-            location = self.location(node, frame.module)
-            site = CallSite(location, keyword_locations, assigned_name)
-            if not isinstance(callee, DeckFunction):  # commands may hash or recurse on it
-                guards.check_nesting((args, kwargs), self.limits)
-            try:
-                return callee.deck_call(args, kwargs, site)
-            except (AsterliteError, _Escaped, _Return, RecursionError):
-                raise
-            except Exception as error:  # a bug in a command, not a deck error
-                raise _Escaped(error, location) from error
-        if not callable(callee):
-            raise python_error(TypeError, f"'{type(callee).__name__}' object is not callable")
-        return self._call_python(callee, args, kwargs)
-
-    def _call_python(self, callee, args: list, kwargs: dict):
-        if hasattr(type(getattr(callee, "__self__", None)), "deck_methods"):
-            guards.check_nesting((args, kwargs), self.limits)  # a concept's method
-        policy = self._unknown_policy(callee)
-        if policy != STORE:
-            values = (*args, *kwargs.values())
-            if any(value is Unknown for value in values):
-                return Unknown
-            if policy == DEEP and contains_unknown(values, _DEEP_SCAN_BUDGET):
-                return Unknown
-        return callee(*args, **kwargs)
-
-    def _unknown_policy(self, callee) -> str:
-        policy = getattr(callee, "deck_unknown_policy", None)
-        if policy is not None:
-            return policy
-        owner = getattr(callee, "__self__", None)
-        if isinstance(owner, (list, dict, set)) or hasattr(type(owner), "deck_methods"):
-            return STORE
-        return DIRECT if id(callee) in self._structural else DEEP
-
-    def _arguments(self, arguments, frame: Frame):
-        args, kwargs, keyword_locations, spread_unknown = [], {}, {}, False
-        if arguments is None:
-            return args, kwargs, keyword_locations, spread_unknown
-        if arguments.data == "generator_argument":
-            return [self._listcomp(arguments, frame)], kwargs, keyword_locations, False
-        for argument in arguments.children:
-            kind = argument.data
-            if kind == "kwarg":
-                key_node, value_node = argument.children
-                name = key_node.children[0].value
-                kwargs[name] = self.ev(value_node, frame)
-                keyword_locations[name] = self.location(key_node, frame.module)
-            elif kind == "star_arg":
-                value = self.ev(argument.children[0], frame)
-                if value is Unknown:
-                    spread_unknown = True
-                else:
-                    args.extend(value)
-            elif kind == "double_star_arg":
-                value = self.ev(argument.children[0], frame)
-                if value is Unknown:
-                    spread_unknown = True
-                    continue
-                location = self.location(argument, frame.module)
-                for name in value:
-                    if not isinstance(name, str):
-                        raise DeckRuntimeError("keywords must be strings")
-                    if name in kwargs:
-                        raise DeckRuntimeError(f"got multiple values for keyword argument '{name}'")
-                    kwargs[name] = value[name]
-                    keyword_locations[name] = location
-            else:
-                args.append(self.ev(argument, frame))
-        return args, kwargs, keyword_locations, spread_unknown
 
 
 _STATEMENTS = {

@@ -11,10 +11,10 @@ same place, and nothing else:
   ``ArithmeticError``...);
 - a command that fails with valid keywords, invalid keywords or a
   numerical failure: code_aster raises its ``AsterError`` there (asterlite's
-  ``CommandError``, ``ValidationError``, ``NumericalError``). code_aster's
-  subclasses (``ConvergenceError``, ``SolverError``...) are not told apart
-  by asterlite: an ``except CA.SolverError`` lets such an error through, and
-  the run stops with it;
+  ``CommandError``, ``ValidationError``, ``NumericalError``); where code_aster
+  raises one of its subclasses (``SolverError`` for an empty band of
+  CALC_MODES...), the command names it (``aster_exception``), elsewhere an
+  ``except CA.SolverError`` lets the error through and the run stops with it;
 - what the deck raises itself (``raise CA.AsterError("...")``).
 
 Never: the run's limits (time, memory, steps, sizes), interruptions,
@@ -36,6 +36,7 @@ from asterlite.errors import (
     UnsupportedError,
     ValidationError,
 )
+from asterlite.lang import limits as guards
 from asterlite.lang.values import CallSite, DeckCallable
 
 
@@ -57,8 +58,6 @@ class ExceptionClass(DeckCallable):
         return False
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite):
-        from asterlite.lang import limits as guards
-
         if kwargs:
             raise DeckRuntimeError(f"{self.name}() takes no keyword arguments")
         guards.check_nested_size(args, guards.Limits())  # its message is their text
@@ -74,8 +73,6 @@ class RaisedException:
     deck_attributes = frozenset({"args"})
 
     def __init__(self, cls: ExceptionClass, args: tuple):
-        from asterlite.lang import limits as guards
-
         self.cls = cls
         self.args = args
         shown = guards.deck_text_value(args)  # engine objects neutrally, as print does
@@ -171,7 +168,7 @@ def classify(error: BaseException) -> ExceptionClass | None:
     if isinstance(error, DeckRaised):
         return error.deck_class
     if isinstance(error, (CommandError, ValidationError, NumericalError)):
-        return ASTER_ERROR
+        return ASTER_CLASSES.get(getattr(error, "aster_exception", None), ASTER_ERROR)
     if type(error) is DeckRuntimeError:
         kind = getattr(error, "python_type", None)
         if kind is None:  # one of asterlite's refusals

@@ -13,11 +13,12 @@ import math
 import sys
 import types
 
-from asterlite.errors import DeckRuntimeError
+from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.lang import exceptions, stdlib
 from asterlite.lang import limits as guards
 from asterlite.lang.limits import Limits
 from asterlite.lang.savetxt import make_savetxt
+from asterlite.lang.stdlib import cmath_module
 from asterlite.lang.values import COBuilder, DeckModule, FactorBuilder
 
 # How a plain Python callable treats Unknown arguments (see Evaluator._call_python):
@@ -206,6 +207,7 @@ sum prod cumsum cumprod diff gradient dot vdot outer cross inner matmul
 allclose isclose array_equal nonzero flatnonzero argwhere count_nonzero where
 sort argsort unique searchsorted concatenate hstack vstack stack column_stack
 insert append delete tile repeat max min amax amin maximum minimum argmax argmin
+nanmax nanmin nanargmax nanargmin nansum nanmean
 mean average std var median percentile interp reshape transpose ravel flip fliplr flipud roll
 squeeze expand_dims atleast_1d atleast_2d clip any all isnan isinf isfinite nan_to_num
 radians degrees deg2rad rad2deg polyfit polyval trapezoid trapz copy take shape size ndim
@@ -553,8 +555,6 @@ def builtin_modules(limits: Limits) -> dict:
 
 
 def _cmath_module() -> DeckModule:
-    from asterlite.lang.stdlib import cmath_module
-
     return cmath_module()
 
 
@@ -591,6 +591,12 @@ def get_attribute(value, name: str, limits: Limits):
     found = _builtin_attribute(value, name, limits)
     if found is not _MISSING:
         return found
+    if methods is not None or attributes is not None:
+        # one of code_aster's objects (a mesh, a result...): code_aster's has
+        # far more methods than asterlite provides, so this is asterlite's limit
+        raise UnsupportedError(
+            f"'{cls.__name__}' object: asterlite does not provide code_aster's '{name}'"
+        )
     raise DeckRuntimeError(f"'{cls.__name__}' object has no attribute '{name}' usable in decks")
 
 

@@ -8,10 +8,12 @@ location; the evaluator attaches the location of the expression.
 
 from __future__ import annotations
 
+import _string
 import functools
 import itertools
 import math
 import re
+import string
 import sys
 import types
 from dataclasses import dataclass
@@ -29,6 +31,7 @@ class Limits:
     max_string_length: int = 10_000_000  # characters of a string
     max_call_depth: int = 64  # nested calls of deck functions
     max_nesting: int = 100  # levels of containers inside containers (tuples in tuples...)
+    max_tree_depth: int = 200  # levels of a syntax tree: deck code, a FORMULE's expression
     max_work: int = 10_000_000_000  # arithmetic of one numpy call (matrix products, solvers)
     max_seconds: float | None = None  # wall-clock bound on deck-level steps (None: no bound)
 
@@ -136,7 +139,6 @@ def check_format_template(template: str, limits: Limits, args=(), kwargs=None) -
     tuples, dicts and strings: on an engine object, '{0[0].x}' would reach
     any public attribute), and the result's length bounded before formatting
     (each field's width and precision plus its value's text)."""
-    import string
 
     try:
         fields = list(string.Formatter().parse(template))
@@ -164,7 +166,6 @@ def check_format_template(template: str, limits: Limits, args=(), kwargs=None) -
 def _format_field_value(field_name: str, automatic: int, args, kwargs):
     """The value a format field shows, each accessor of its chain checked
     the way a deck may use it (None when the chain fails: format reports it)."""
-    import _string
 
     first, accessors = _string.formatter_field_name_split(field_name)
     root = automatic if first == "" else first

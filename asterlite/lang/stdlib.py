@@ -148,12 +148,15 @@ class _RefusedBuiltin:
 
     deck_unknown_policy = "store"
 
-    def __init__(self, name: str, reason: str):
+    def __init__(self, name: str, reason: str, touches_files: bool = False):
         self.name = name
         self.reason = reason
+        self.touches_files = touches_files  # the deck meant to read or write a file
 
     def __call__(self, *args, **kwargs):
-        raise UnsupportedError(f"{self.name}(): {self.reason}")
+        error = UnsupportedError(f"{self.name}(): {self.reason}")
+        error.touches_files = self.touches_files
+        raise error
 
     def __repr__(self) -> str:
         return f"<function {self.name}>"
@@ -213,4 +216,4 @@ def namespace_builtins(namespace: dict) -> dict:
 
     deck_globals.__name__ = "globals"
     deck_globals.deck_unknown_policy = "store"
-    return {"open": _RefusedBuiltin("open", reason), "globals": deck_globals}
+    return {"open": _RefusedBuiltin("open", reason, touches_files=True), "globals": deck_globals}

@@ -41,8 +41,6 @@ class FactorBuilder(DeckCallable):
     """The ``_F`` builtin: keyword arguments only."""
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite) -> FactorDict:
-        from asterlite.errors import DeckRuntimeError
-
         if args:
             raise DeckRuntimeError("_F takes keyword arguments only", site.location)
         return FactorDict(kwargs, location=site.location, keyword_locations=site.keyword_locations)
@@ -73,8 +71,6 @@ class COBuilder(DeckCallable):
     """The ``CO`` builtin."""
 
     def deck_call(self, args: list, kwargs: dict, site: CallSite) -> CO:
-        from asterlite.errors import DeckRuntimeError
-
         if len(args) != 1 or kwargs or not isinstance(args[0], str) or not args[0].isidentifier():
             raise DeckRuntimeError('CO takes one name, as in CO("MATR")', site.location)
         return CO(args[0])

@@ -70,8 +70,6 @@ def _call_end(text: str, open_pos: int) -> int:
 
 
 def _tokens(node):
-    from lark import Token
-
     pending = [node]
     while pending:
         item = pending.pop()

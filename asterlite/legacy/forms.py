@@ -1,10 +1,14 @@
-"""The ``compat_syntax`` objects catalogues hang on their commands.
+"""The legacy forms of commands (code_aster's ``compat_syntax``), by command name.
 
 A :class:`LegacyForm` says when a call is written in a legacy form
 (``detect``), which catalogue checks it as written (``legacy_catalogue``:
 the command's own for a renamed command, a legacy catalogue for a command
 whose keywords changed, or none when the modern catalogue checks it after
 translation) and how it becomes a modern call (``translate``).
+
+:func:`legacy_form` looks a command's form up in :data:`FORMS`: the run, the
+porter and ``asterlite check`` ask it; the catalogues do not know the
+version layer.
 """
 
 from __future__ import annotations
@@ -73,6 +77,9 @@ def _v15(command_translate=v15.translate_call, detect=v15.is_v15_call) -> Legacy
 
 
 def _legacy_dyna_vibra():
+    # deferred: the legacy catalogue builds on today's DYNA_VIBRA catalogue,
+    # ~20 ms of start-up (python -X importtime) that decks without a
+    # pre-COMPORTEMENT DYNA_VIBRA never need
     from asterlite.catalogues.common_legacy import DYNA_VIBRA_V13
 
     return DYNA_VIBRA_V13
@@ -101,3 +108,31 @@ MACRO_MATR_ASSE = LegacyForm(macros_v11.translate_macro_matr_asse, legacy_catalo
 # (asterlite.legacy.dyna_line_v11); today's DYNA_VIBRA catalogue checks the translation
 DYNA_LINE_TRAN = LegacyForm(dyna_line_v11.translate_dyna_line_tran)
 DYNA_LINE_HARM = LegacyForm(dyna_line_v11.translate_dyna_line_harm)
+
+# command -> its legacy form
+FORMS: dict[str, LegacyForm] = {
+    "AFFE_CARA_ELEM": V15_ENTITIES,
+    "AFFE_MODELE": V15_ENTITIES,
+    "CALC_CHAMP": V15_ENTITIES,
+    "CALC_CHAR_SEISME": V15_ENTITIES,
+    "CREA_RESU": CREA_RESU,
+    "DEBUT": START,  # CODE=_F(NOM=...) of older versions
+    "DYNA_LINE": V15_ENTITIES,
+    "DYNA_LINE_HARM": DYNA_LINE_HARM,
+    "DYNA_LINE_TRAN": DYNA_LINE_TRAN,
+    "DYNA_TRAN_MODAL": DYNA_TRAN_MODAL,
+    "DYNA_VIBRA": DYNA_VIBRA,  # CHOC=_F(...) and other pre-COMPORTEMENT keywords
+    "LIRE_MAILLAGE": LIRE_MAILLAGE,  # no FORMAT on a text mesh: legacy default 'ASTER'
+    "MACRO_MATR_ASSE": MACRO_MATR_ASSE,
+    "MACRO_PROJ_BASE": MACRO_PROJ_BASE,
+    "MODE_ITER_INV": MODE_ITER_INV,
+    "MODE_ITER_SIMULT": MODE_ITER_SIMULT,
+    "POURSUITE": START,
+    "RECU_FONCTION": V15_ENTITIES,
+    "TEST_RESU": V15_ENTITIES,
+}
+
+
+def legacy_form(command: str) -> LegacyForm | None:
+    """The legacy form of ``command``, or None when it has none."""
+    return FORMS.get(command)

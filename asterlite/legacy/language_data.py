@@ -13,6 +13,7 @@ from __future__ import annotations
 from functools import cache
 
 from asterlite.catalog.language.model import language
+from asterlite.catalog.language.value_checks import decode
 
 OLD_VERSION = 11  # the data decks of code_aster 10-12 are read with
 
@@ -40,7 +41,6 @@ def old_default(command: str, *path: str):
     defaults = {repr(entry.get("defaut")) for entry in levels}
     if len(defaults) != 1 or levels[0].get("defaut") is None:
         raise LookupError(f"code_aster {OLD_VERSION}'s {command}/{'/'.join(path)}: no one default")
-    from asterlite.catalog.language.validate import decode
 
     return decode(levels[0]["defaut"])
 

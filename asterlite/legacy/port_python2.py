@@ -22,6 +22,7 @@ from lark import Token, Tree
 
 from asterlite.errors import AsterliteError, Location
 from asterlite.lang import parse_deck
+from asterlite.lang.parser import _parser
 from asterlite.legacy.base import Note
 
 
@@ -30,7 +31,6 @@ def to_python3(text: str, filename: str) -> tuple[str, list[Note], list[str]]:
     module = parse_deck(text, filename)
     if not module.python2:
         return text, [], []
-    from asterlite.lang.parser import _parser
 
     tokens = list(_parser().lex(text if text.endswith("\n") else text + "\n"))
     edits: list[tuple[int, int, str]] = []

@@ -18,9 +18,12 @@ and the two forms that need the run are done from the deck and its meshes:
 
 from __future__ import annotations
 
+import re
+
 from asterlite.errors import CommandError, UnsupportedError
 from asterlite.legacy import v11
 from asterlite.legacy.base import RESULT, Env, NewCall, NotPortable, Src, factor, lit
+from asterlite.legacy.nodes import _read_mesh, _stamp
 
 
 class PortCall:
@@ -245,7 +248,6 @@ def scan_point_groups(calls, reader, mesh_groups: MeshGroups) -> None:
     """Point cell groups the AFFE_CARA_ELEM calls of a deck need, by the mesh of
     their model (a name the deck assigns an AFFE_MODELE of that mesh), made with
     that AFFE_MODELE (``mesh_groups.pending``)."""
-    import re
 
     meshes: dict[str, str] = {}  # model name -> mesh name
     for name, _, node in calls:
@@ -273,7 +275,6 @@ def scan_point_groups(calls, reader, mesh_groups: MeshGroups) -> None:
 def unprefixed_groups_call(path) -> NewCall | None:
     """The DEFI_GROUP naming ``X`` the mesh groups written ``GROUP_NO_X`` / ``GROUP_MA_X``
     in the ASTER mesh at ``path`` (None: none)."""
-    from asterlite.legacy.nodes import _read_mesh, _stamp
 
     mesh = _read_mesh(str(path), _stamp(path)) if path is not None else None
     if mesh is None:

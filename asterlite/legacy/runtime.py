@@ -1,7 +1,7 @@
 """The dispatcher's side of legacy syntax: check as written, translate, log.
 
 :func:`translate_call` is called by the session's command proxy
-for a command whose catalogue has a ``compat_syntax``. A legacy call is
+for a command that has a legacy form (:mod:`asterlite.legacy.forms`). A legacy call is
 validated against its legacy catalogue (precise messages for misspellings
 in old decks), translated, and each legacy form is logged once as
 ``deprecated: <old form> (file:line); modern form: <new form>``. The
@@ -15,6 +15,7 @@ from asterlite.errors import UnsupportedError
 from asterlite.io.input_files import read_text_or_none
 from asterlite.lang.values import CallSite, FactorDict
 from asterlite.legacy.base import RESULT, Env, NewCall, Translation
+from asterlite.legacy.forms import legacy_form
 from asterlite.legacy.nodes import LegacyGroups
 from asterlite.legacy.v15 import named_entities
 from asterlite.legacy.version import session_version
@@ -68,7 +69,9 @@ def _text(path) -> str:
 
 def translate_call(catalogue, kwargs: dict, site: CallSite, session, reuse=None):
     """The :class:`ModernCall` of a call, or None if it is not legacy."""
-    compat = catalogue.compat_syntax
+    compat = legacy_form(catalogue.nom)
+    if compat is None:
+        return None
     env = Env(
         catalogue.nom,
         site.location,

@@ -31,6 +31,8 @@ Tables read from code_aster 15's catalogues (``ehmoussi/code_aster``,
 
 from __future__ import annotations
 
+from asterlite.errors import AsterliteError
+from asterlite.lang import parse_deck
 from asterlite.legacy.base import (
     NOT_LITERAL,
     RESULT,
@@ -43,10 +45,12 @@ from asterlite.legacy.base import (
     single,
 )
 from asterlite.legacy.deck_calls import CallReader, callee_name, deck_constants
+from asterlite.legacy.dyna import node_groups
 from asterlite.legacy.v15_facts import (
     ENTITY_KEYWORDS,
     OLD_BEHAVIOURS,
 )
+from asterlite.legacy.v15_names import GENERATED_NAME
 from asterlite.legacy.version import behaviour_version
 
 VERSION = 15
@@ -86,7 +90,6 @@ def has_entities(kwargs: dict, env: Env) -> bool:
 
 def entity_groups(level: dict, renames: dict, env: Env, path: str) -> dict:
     """``level`` with its NOEUD/MAILLE keywords given as the groups of those entities."""
-    from asterlite.legacy.dyna import node_groups
 
     return node_groups(level, renames, env, path, required=True)
 
@@ -264,8 +267,6 @@ def _named_keywords() -> dict:
 def named_entities(texts) -> set:
     """(kind, name) of every mesh node and cell the deck texts name, as literals,
     where today's syntax takes groups."""
-    from asterlite.errors import AsterliteError
-    from asterlite.lang import parse_deck
 
     table = _named_keywords()
     commands = {command for command, _ in table}
@@ -324,9 +325,7 @@ def relation_title(title: str, node_index: dict, generated) -> tuple[str | None,
     """Today's title of the nonlinearity a code_aster 15 INTITULE names, or
     (None, why) when it is not in that form or names what cannot be followed.
     ``node_index``: mesh node name -> 0-based index; ``generated``: the session's
-    :class:`asterlite.runtime.v15_names.GeneratedNames`."""
-    from asterlite.runtime.v15_names import GENERATED_NAME
-
+    :class:`asterlite.legacy.v15_names.GeneratedNames`."""
     node_width, component_width = TITLE_FIELDS
     node = title[:node_width].strip()
     component = title[node_width : node_width + component_width].strip()

@@ -42,6 +42,10 @@ REMOVED_AFTER_15 = (
 # (first, last) version that computed it. The commands ask
 # :func:`asterlite.legacy.v15.computes`.
 OLD_BEHAVIOURS = {
+    # CREA_MAILLAGE/LINE_QUAD (cmlqnd): the new mid-edge nodes were named PREF_NOEUD
+    # followed by PREF_NUME, PREF_NUME + 1... (defaults 'NS' and 1) in the order they
+    # were made; code_aster 17 gives every node its number only
+    "LINE_QUAD_NODES_NAMED_BY_PREFIX": (0, 15),
     # DYNA_VIBRA GENE NEWMARK (intnewm, since 13.0): the right-hand side of the step
     # t_n -> t_n+1 took the forces of t_n, evaluated after the previous step's update;
     # code_aster 17 evaluates the external force at t_n+1

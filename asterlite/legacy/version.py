@@ -28,8 +28,12 @@ import re
 from collections.abc import Iterator
 from functools import lru_cache
 
+from asterlite.catalog.language.model import language
+from asterlite.errors import AsterliteError
 from asterlite.io.input_files import read_text_or_none
+from asterlite.lang import parse_deck
 from asterlite.legacy import dyna
+from asterlite.legacy.language_data import old_language
 from asterlite.legacy.v15_facts import ENTITY_KEYWORDS, OLD_BEHAVIOURS, REMOVED_AFTER_15
 
 CURRENT = 17
@@ -48,8 +52,6 @@ OLD_LAYOUT_LAST = 12
 def removed_commands() -> dict[str, int]:
     """command -> newest version that had it, for the commands of code_aster
     10-12 (its language data) that code_aster 15 and 17 no longer have."""
-    from asterlite.catalog.language.model import language
-    from asterlite.legacy.language_data import old_language
 
     newer = [found for found in (language(15), language(17)) if found is not None]
     found = {}
@@ -77,7 +79,6 @@ def _removed_keywords() -> dict[tuple[str, ...], int]:
 def calls(text: str, filename: str = "deck.comm") -> Iterator[tuple[str, tuple[str, ...]]]:
     """(command, keyword path) of every keyword of every command call in ``text``
     (a call without keywords yields its command with an empty path)."""
-    from asterlite.lang import parse_deck
 
     module = parse_deck(text, filename)
     for node in module.tree.iter_subtrees():
@@ -115,7 +116,6 @@ def _paths(call, prefix: tuple[str, ...]) -> Iterator[tuple[str, ...]]:
 
 def _is_python2(text: str) -> bool:
     """The deck's text is Python 2 (it reads as Python 2 only)."""
-    from asterlite.lang import parse_deck
 
     return parse_deck(text, "deck.comm").python2
 
@@ -150,7 +150,6 @@ def with_pragma(text: str, version: int | None) -> str:
 def deck_version(text: str) -> int:
     """The code_aster major version the deck ``text`` was written for (its
     markers; a version line speaks for some behaviours only, :func:`behaviour_version`)."""
-    from asterlite.errors import AsterliteError
 
     found = [CURRENT]
     own = _text_version(text)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import scipy.sparse as sp
 
 from asterlite.concepts.assembly import AssembledMatrix
 from asterlite.concepts.modes import (
@@ -11,7 +12,7 @@ from asterlite.concepts.modes import (
     GeneralizedModes,
     ModeResult,
 )
-from asterlite.fem.constraints import eliminate
+from asterlite.fem.constraints import Elimination, eliminate
 from asterlite.modal import normalize, quadratic
 from asterlite.modal.eigen import (
     EigenError,
@@ -28,7 +29,7 @@ def constrained_pencil(stiffness: AssembledMatrix, mass: AssembledMatrix) -> Red
     """Eliminate the numbering's relations (homogeneous: imposed values do
     not enter an eigenproblem) and reduce K and M."""
     numbering = stiffness.numbering
-    b_matrix, _ = numbering.constraint_matrix()
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)  # b unused: eigenproblem
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
     return ReducedPencil(stiffness.matrix, mass.matrix, elimination)
 
@@ -191,9 +192,6 @@ def build_buckling_result(a: AssembledMatrix, b: AssembledMatrix, loads, shapes)
 
 def generalized_modes(k_gene, m_gene, option: str, freq=(), nmax: int = 10, method=None):
     """(ω², vectors) of a projected pencil (dense, unconstrained)."""
-    import scipy.sparse as sp
-
-    from asterlite.fem.constraints import Elimination
 
     n = k_gene.shape[0]
     identity = Elimination(
@@ -257,7 +255,7 @@ def apply_complex_norm(modes: ComplexModeResult, norme: str, stiffness=None, mas
 def complex_pencil(stiffness, mass, damping=None) -> quadratic.QuadraticPencil:
     """The quadratic problem reduced on the numbering's relations."""
     numbering = stiffness.numbering
-    b_matrix, _ = numbering.constraint_matrix()
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)  # b unused: eigenproblem
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
     c = damping.matrix if damping is not None else None
     return quadratic.QuadraticPencil(stiffness.matrix, c, mass.matrix, elimination)
@@ -291,9 +289,6 @@ def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> 
 
 def complex_generalized_modes(k_gene, m_gene, c_gene, option: str, freq=(), nmax=10, amor=0.0):
     """(λ, vectors, residuals) of a projected quadratic problem (dense, unconstrained)."""
-    import scipy.sparse as sp
-
-    from asterlite.fem.constraints import Elimination
 
     n = np.asarray(k_gene).shape[0]
     identity = Elimination(

@@ -113,6 +113,14 @@ def _dense_pencil(k, m, sigma):
     return sigma + 1.0 / mu, phi
 
 
+def start_vector(n: int) -> np.ndarray:
+    """ARPACK's starting vector, the same on every run: without one, scipy
+    draws it from fresh entropy and the modes differ from run to run within
+    the solver's tolerance (code_aster's ARPACK seeds its generator with
+    fixed values too)."""
+    return np.random.default_rng(0).uniform(-1.0, 1.0, n)
+
+
 def _shift_invert(k, m, sigma: float, count: int, lu=None):
     """``count`` eigenpairs nearest σ with ARPACK shift-invert."""
     n = k.shape[0]
@@ -125,7 +133,9 @@ def _shift_invert(k, m, sigma: float, count: int, lu=None):
         except RuntimeError as exc:
             raise EigenError(f"K - σM is singular at σ = {sigma:g} ({exc})") from None
     op_inv = spla.LinearOperator((n, n), matvec=lu.solve, dtype=float)
-    vals, vecs = spla.eigsh(k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv)
+    vals, vecs = spla.eigsh(
+        k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv, v0=start_vector(n)
+    )
     return vals, vecs
 
 
@@ -319,7 +329,7 @@ class ReducedPencil:
         except RuntimeError:
             raise EigenError("PLUS_GRANDE on a large model needs a non-singular mass") from None
         minv = spla.LinearOperator(m.shape, matvec=lu.solve, dtype=float)
-        vals, vecs = spla.eigsh(k, k=count, M=m, Minv=minv, which="LA")
+        vals, vecs = spla.eigsh(k, k=count, M=m, Minv=minv, which="LA", v0=start_vector(self.n))
         return self._settled(self._omega2(vals), vecs)
 
     def band(self, lower: float, upper: float, limit: int | None = None):
@@ -340,6 +350,27 @@ class ReducedPencil:
             count = min(2 * count, self.n - 1)
         keep = (vals >= lower) & (vals <= upper)
         return vals[keep], vecs[:, keep]
+
+    def count_below(self, omega2: float) -> int | None:
+        """How many eigenvalues lie below ω² (the Sturm count code_aster
+        numbers modes with), or None when it cannot be read: the inertia of
+        K - ω² M (Sylvester's law) from a factorisation that pivots on the
+        diagonal only, so that its U is D Lᵀ."""
+        if self.dense:
+            return int(np.count_nonzero(self.all_modes()[0] < omega2))
+        shifted = self._solver_k - self._solver_shift(omega2) * self._solver_m
+        try:
+            lu = spla.splu(
+                shifted.tocsc(),
+                permc_spec="MMD_AT_PLUS_A",
+                diag_pivot_thresh=0.0,
+                options={"SymmetricMode": True},
+            )
+        except RuntimeError:  # singular: ω² is an eigenvalue
+            return None
+        if not np.array_equal(lu.perm_r, lu.perm_c):  # an off-diagonal pivot was taken
+            return None
+        return int(np.count_nonzero(lu.U.diagonal() < 0.0))
 
     def expand(self, vecs: np.ndarray) -> np.ndarray:
         return np.asarray(self.elimination.T @ vecs)

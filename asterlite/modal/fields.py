@@ -10,6 +10,11 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.modes import ModeResult, MultElasResult
+from asterlite.errors import UnsupportedError
+
+# element fields code_aster's command stores in its result unasked
+# (MECA_STATIQUE: OPTION='SIEF_ELGA' by default), by result class
+_STORED_BY_CODE_ASTER = {"evol_elas": ("SIEF_ELGA",)}
 
 
 class FieldError(ValueError):
@@ -106,6 +111,12 @@ def element_field_stack(result, name: str):
     result (``result.element_fields[name]``, values (n_orders, n_cells,
     n_points, n_components)); ``access`` as :func:`field_stack`'s."""
     fields = getattr(result, "element_fields", None) or {}
+    kind = (getattr(result, "aster_types", None) or ("",))[0]
+    if name not in fields and name in _STORED_BY_CODE_ASTER.get(kind, ()):
+        raise UnsupportedError(
+            f"{name} of an {kind} result: code_aster stores it there by "
+            "default; asterlite computes it only through CALC_CHAMP"
+        )
     if name not in fields:
         known = ", ".join(fields) or "none"
         raise FieldError(

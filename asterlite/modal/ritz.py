@@ -17,6 +17,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.modes import MultElasResult
+from asterlite.modal.renumber import transfer
+
 KAHAN_PARLETT_ALPHA = 0.717
 DEPENDENT_RATIO = 1e-10  # asterlite's guard: relative norm left by a dependent vector
 _TINY = np.finfo(float).tiny ** (2.0 / 3.0)
@@ -88,8 +91,6 @@ def stacked_fields(families, numbering):
     """One ``MultElasResult`` holding the vectors of several static families
     (mode_meca or mult_elas) on ``numbering``, named CHAMP_1, CHAMP_2... (as
     DYNA_LINE gathers its interface modes before DEFI_BASE_MODALE)."""
-    from asterlite.concepts.modes import MultElasResult
-    from asterlite.modal.renumber import transfer
 
     blocks = [transfer(np.asarray(f.shapes, dtype=float), f.numbering, numbering) for f in families]
     fields = np.hstack(blocks) if blocks else np.zeros((numbering.n_dofs, 0))

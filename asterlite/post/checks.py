@@ -23,16 +23,17 @@ is at most ``PRECISION`` (default 1e-3, as code_aster).
 and the strict non-regression check. Several ``VALE_CALC`` values (code_aster
 accepts any of them) keep the closest. Integers and texts compare exactly
 (integers also accept the reference PRECISION as an absolute tolerance);
-``VALE_ABS='OUI'`` compares absolute values.
+``VALE_ABS='OUI'`` compares the absolute values of the value and of the
+references (the modulus of a complex one).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from asterlite.runtime.context import TestRecord
+from asterlite.post.check_record import TestRecord
 
 LOOSE_TOLERANCE = 1e-3
 DEFAULT_TOLE_MACHINE = 1e-6
@@ -154,7 +155,12 @@ def compare_calc(value, exp: Expectation) -> tuple[Comparison, bool] | None:
 def make_record(command: str, label: str, value, exp: Expectation, location=None) -> TestRecord:
     """Compare ``value`` with an expectation and build the record."""
     if exp.absolute_value and exp.kind != "K":
+        # code_aster's tresu_print takes the modulus of the value and of every
+        # reference alike (a complex VALE_REFE_C is compared by its modulus)
         value = abs(value)
+        exp = replace(
+            exp, calc=tuple(abs(c) for c in exp.calc), refe=tuple(abs(r) for r in exp.refe)
+        )
     if exp.kind == "I":
         value = int(value)
     ref = compare_reference(value, exp)

@@ -21,7 +21,9 @@ from typing import ClassVar
 import numpy as np
 
 from asterlite.concepts.assembly import NodalField
+from asterlite.concepts.mesh import Mesh
 from asterlite.errors import CommandError
+from asterlite.post.cell_fields import result_cell_field
 
 # Where INFO_NONL and other printing methods write: the session's message log
 # once the session registers it (``set_sink``), standard output until then.
@@ -163,19 +165,25 @@ def instant_position(times, instant, what: str) -> int:
 def transient_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> FieldValues:
     """``dyna_trans.getField(name, value, para)``: ``value`` is a NUME_ORDRE
     (``para='NUME_ORDRE'``, the last stored one when omitted) or an instant
-    (``para='INST'``)."""
+    (``para='INST'``); an element field CALC_CHAMP stored comes as a
+    :class:`~asterlite.post.cell_fields.FieldOnCells`."""
     name = str(name).strip().upper()
+    if name not in result.fields and name in (getattr(result, "element_fields", None) or {}):
+        return result_cell_field(result, name, _position(result, name, value, para))
     if name not in result.fields:
         raise CommandError(
             f"result {result.name or ''} has no field {name} (it has {', '.join(result.fields)})"
         )
-    if value is None:
-        position = len(result.order) - 1
-    elif str(para).upper() == "INST":
-        position = instant_position(result.times, value, f"field {name}")
-    else:
-        position = order_position(result.order, value, f"field {name}")
+    position = _position(result, name, value, para)
     return FieldValues(result.numbering, np.array(result.fields[name][position], dtype=float))
+
+
+def _position(result, name: str, value, para: str) -> int:
+    if value is None:
+        return len(result.order) - 1
+    if str(para).upper() == "INST":
+        return instant_position(result.times, value, f"field {name}")
+    return order_position(result.order, value, f"field {name}")
 
 
 def mode_field(basis, name: str, nume_ordre=1, para: str = "NUME_ORDRE") -> FieldValues:
@@ -356,7 +364,6 @@ def set_result_mesh(result, mesh) -> None:
     """``result.setMesh(mesh)``: code_aster attaches the mesh to a result that
     has none and refuses another mesh than the one it has; asterlite's
     physical results always know theirs (from their DOF numbering)."""
-    from asterlite.concepts.mesh import Mesh
 
     if not isinstance(mesh, Mesh):
         raise CommandError(f"setMesh expects a mesh, got {type(mesh).__name__}")

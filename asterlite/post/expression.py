@@ -1,15 +1,12 @@
-"""A small, safe, vectorised compiler for FORMULE expressions.
+"""FORMULE expressions evaluated on arrays: the vectorised back end of
+:mod:`asterlite.lang.formula`.
 
-``FORMULE(VALE="...")`` holds a Python-looking arithmetic expression. It is
-parsed once with :mod:`ast` and checked against a whitelist (numbers, names,
-arithmetic, comparisons, conditional expressions, calls of whitelisted math
-functions and of functions the deck handed over); nothing is ever passed to
-``eval``. Evaluation walks the tree with numpy arrays, so a whole list of
-abscissas is computed in one pass.
-
-This compiler is independent of the deck evaluator (``asterlite.lang``): a
-formula's text is a tiny language of its own, and vectorising it matters for
-CALC_FONC_INTERP over long instant lists.
+``FORMULE(VALE="...")`` is parsed and checked once by the formula front end
+(the deck's parser, one whitelist, one checked tree; nothing is ever passed
+to ``eval``). This back end walks that tree with numpy arrays, so a whole
+list of abscissas is computed in one pass (CALC_FONC_INTERP over long
+instant lists); the names a formula may call and what they compute here are
+the ``vector`` column of :mod:`asterlite.lang.numeric`.
 
 code_aster evaluates formulas as Python on Python numbers, so integers keep
 Python's semantics here: arithmetic between two Python integers is exact
@@ -22,80 +19,34 @@ taken, as Python does.
 
 from __future__ import annotations
 
-import ast
-import math
 import operator
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-from asterlite.errors import CommandError, DeckRuntimeError
+from asterlite.errors import DeckRuntimeError
 from asterlite.lang import limits as guards
+from asterlite.lang import numeric
+from asterlite.lang.formula import (
+    Binary,
+    Call,
+    Compare,
+    Conditional,
+    ExpressionError,
+    Logical,
+    Name,
+    Number,
+    Unary,
+    parse_formula,
+)
 
+__all__ = ["CompiledExpression", "ExpressionError", "MATH_CONSTANTS", "MATH_FUNCTIONS"]
 
-class ExpressionError(CommandError):
-    """A formula uses a construct outside the whitelist or an unknown name."""
+MATH_FUNCTIONS = numeric.VECTOR_FUNCTIONS
+MATH_CONSTANTS = numeric.CONSTANTS
 
-
-def _elementwise_reduce(func):
-    def reduce_args(*args):
-        if len(args) == 1:
-            return func.reduce(np.asarray(args[0]))
-        out = args[0]
-        for arg in args[1:]:
-            out = func(out, arg)
-        return out
-
-    return reduce_args
-
-
-def _sign(a, b=None):
-    # Fortran SIGN(a, b) when two arguments are given, numpy sign otherwise
-    if b is None:
-        return np.sign(a)
-    return np.copysign(np.abs(a), b)
-
-
-MATH_FUNCTIONS: dict[str, Callable] = {
-    "sin": np.sin, "cos": np.cos, "tan": np.tan,
-    "asin": np.arcsin, "acos": np.arccos, "atan": np.arctan, "atan2": np.arctan2,
-    "sinh": np.sinh, "cosh": np.cosh, "tanh": np.tanh,
-    "asinh": np.arcsinh, "acosh": np.arccosh, "atanh": np.arctanh,
-    "exp": np.exp, "log": np.log, "log10": np.log10, "sqrt": np.sqrt,
-    "abs": np.abs, "fabs": np.abs, "floor": np.floor, "ceil": np.ceil,
-    "pow": np.power, "hypot": np.hypot, "degrees": np.degrees, "radians": np.radians,
-    "min": _elementwise_reduce(np.minimum), "max": _elementwise_reduce(np.maximum),
-    "sign": _sign, "heaviside": lambda x, h0=1.0: np.heaviside(x, h0),
-    "float": lambda x: np.asarray(x, dtype=float), "int": np.trunc,
-}  # fmt: skip
-
-MATH_CONSTANTS = {"pi": math.pi, "e": math.e, "inf": math.inf}
-
-_BINARY = {
-    ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-    ast.Div: np.true_divide, ast.Pow: np.power, ast.Mod: np.mod,
-    ast.FloorDiv: np.floor_divide,
-}  # fmt: skip
-_UNARY = {ast.USub: operator.neg, ast.UAdd: operator.pos, ast.Not: np.logical_not}
-_COMPARE = {
-    ast.Lt: np.less, ast.LtE: np.less_equal, ast.Gt: np.greater,
-    ast.GtE: np.greater_equal, ast.Eq: np.equal, ast.NotEq: np.not_equal,
-}  # fmt: skip
-# the same operators on two Python integers, as Python computes them
-_PYTHON_BINARY = {
-    ast.Add: ("+", operator.add), ast.Sub: ("-", operator.sub), ast.Mult: ("*", operator.mul),
-    ast.Div: ("/", operator.truediv), ast.Pow: ("**", operator.pow),
-    ast.Mod: ("%", operator.mod), ast.FloorDiv: ("//", operator.floordiv),
-}  # fmt: skip
 _INTEGER_LIMITS = guards.Limits()  # the deck language's bound on integer sizes
-# builtins that keep Python integers integers (the math functions take floats)
-_PYTHON_INTEGER_FUNCTIONS = {"abs": abs, "min": min, "max": max, "pow": pow}
-_ALLOWED = (
-    ast.Expression, ast.BinOp, ast.UnaryOp, ast.Compare, ast.BoolOp, ast.IfExp,
-    ast.Call, ast.Name, ast.Constant, ast.Load, ast.And, ast.Or,
-    *_BINARY, *_UNARY, *_COMPARE,
-)  # fmt: skip
+_VECTOR_FUNCTION_IDS = frozenset(id(f) for f in MATH_FUNCTIONS.values())
 
 
 class CompiledExpression:
@@ -103,39 +54,13 @@ class CompiledExpression:
 
     def __init__(self, text: str):
         self.text = text
-        source = " ".join(line.strip() for line in text.strip().splitlines())
-        try:
-            self.tree = ast.parse(source, mode="eval")
-        except SyntaxError as exc:
-            raise ExpressionError(f"formula {text!r} does not parse: {exc.msg}") from None
-        except (MemoryError, RecursionError):  # Python's parser on very deep nesting
-            shown = text if len(text) <= 80 else text[:77] + "..."
-            raise ExpressionError(f"formula {shown!r} is nested too deeply to parse") from None
-        for node in ast.walk(self.tree):
-            if not isinstance(node, _ALLOWED):
-                raise ExpressionError(
-                    f"formula {text!r}: {type(node).__name__} is not allowed in a FORMULE"
-                )
-            if isinstance(node, ast.Call):
-                if not isinstance(node.func, ast.Name) or node.keywords:
-                    raise ExpressionError(
-                        f"formula {text!r}: only calls like f(x, y) of named functions are allowed"
-                    )
-            if isinstance(node, ast.Constant) and not isinstance(node.value, int | float | complex):
-                raise ExpressionError(f"formula {text!r}: constant {node.value!r} is not a number")
-        self.names = sorted(
-            {n.id for n in ast.walk(self.tree) if isinstance(n, ast.Name)}
-            - {
-                n.func.id
-                for n in ast.walk(self.tree)
-                if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
-            }
-        )
+        self.tree = parse_formula(text)
+        self.names = list(self.tree.names)
 
     def evaluate(self, namespace: dict[str, Any]) -> Any:
         return self.as_float(self._eval(self.tree.body, namespace))
 
-    def evaluate_node(self, node: ast.AST, namespace: dict[str, Any]) -> Any:
+    def evaluate_node(self, node, namespace: dict[str, Any]) -> Any:
         """One sub-expression with Python's number semantics (integers stay exact)."""
         return self._eval(node, namespace)
 
@@ -151,25 +76,25 @@ class CompiledExpression:
                 f"({value.bit_length()} bits)"
             ) from None
 
-    def _integer_binary(self, op: ast.operator, left: int, right: int) -> Any:
-        symbol, function = _PYTHON_BINARY[type(op)]
+    def _integer_binary(self, symbol: str, left: int, right: int) -> Any:
         try:
             guards.check_binary(symbol, left, right, _INTEGER_LIMITS)
-            return function(left, right)
+            return PYTHON_BINARY[symbol](left, right)
         except DeckRuntimeError as exc:
             raise ExpressionError(f"formula {self.text!r}: {exc.message}") from None
         except (ZeroDivisionError, OverflowError) as exc:
             raise ExpressionError(f"formula {self.text!r}: integer {symbol}: {exc}") from None
 
-    def _binary(self, op: ast.operator, left: Any, right: Any) -> Any:
+    def _binary(self, symbol: str, left: Any, right: Any) -> Any:
         if _is_python_int(left) and _is_python_int(right):
-            return self._integer_binary(op, left, right)
-        return _BINARY[type(op)](self.as_float(left), self.as_float(right))
+            return self._integer_binary(symbol, left, right)
+        function = numeric.BINARY_OPERATORS[symbol][0]
+        return function(self.as_float(left), self.as_float(right))
 
-    def _unary(self, op: ast.unaryop, operand: Any) -> Any:
-        if _is_python_int(operand) and not isinstance(op, ast.Not):
-            return -operand if isinstance(op, ast.USub) else +operand
-        return _UNARY[type(op)](self.as_float(operand))
+    def _unary(self, symbol: str, operand: Any) -> Any:
+        if _is_python_int(operand) and symbol != "not":
+            return -operand if symbol == "-" else +operand
+        return numeric.UNARY_OPERATORS[symbol][0](self.as_float(operand))
 
     def _conditional(self, test, body, orelse, ns: dict[str, Any]) -> Any:
         cond = self._eval(test, ns)
@@ -186,16 +111,16 @@ class CompiledExpression:
                 branches.append(0.0)
         return np.where(cond, *branches)
 
-    def _call(self, name: str, args: list, ns: dict[str, Any]) -> Any:
+    def _call(self, name: str, args: tuple, ns: dict[str, Any]) -> Any:
         func = self._lookup(name, ns)
         values = [self._eval(arg, ns) for arg in args]
-        integer_function = _PYTHON_INTEGER_FUNCTIONS.get(name)
-        if func is MATH_FUNCTIONS.get(name) and integer_function and values:
+        row = numeric.FUNCTIONS.get(name)
+        if row is not None and row.integer is not None and func is row.vector and values:
             if all(_is_python_int(v) for v in values):
                 if name == "pow" and len(values) == 2:
-                    return self._integer_binary(ast.Pow(), *values)
+                    return self._integer_binary("**", *values)
                 if name != "pow":
-                    return integer_function(*values)
+                    return row.integer(*values)
         return call_vectorised(func, [self.as_float(v) for v in values], self.text)
 
     def _lookup(self, name: str, namespace: dict[str, Any]) -> Any:
@@ -207,35 +132,43 @@ class CompiledExpression:
             return MATH_FUNCTIONS[name]
         raise ExpressionError(f"formula {self.text!r}: unknown name {name!r}")
 
-    def _eval(self, node: ast.AST, ns: dict[str, Any]) -> Any:
+    def _eval(self, node, ns: dict[str, Any]) -> Any:
         match node:
-            case ast.Constant(value=value):
+            case Number(value=value):
                 return value
-            case ast.Name(id=name):
+            case Name(id=name):
                 return self._lookup(name, ns)
-            case ast.BinOp(left=left, op=op, right=right):
+            case Binary(op=op, left=left, right=right):
                 return self._binary(op, self._eval(left, ns), self._eval(right, ns))
-            case ast.UnaryOp(op=op, operand=operand):
+            case Unary(op=op, operand=operand):
                 return self._unary(op, self._eval(operand, ns))
-            case ast.Compare(left=left, ops=ops, comparators=comparators):
+            case Compare(left=left, ops=ops, comparators=comparators):
                 result, current = True, self._eval(left, ns)
                 for op, comp in zip(ops, comparators, strict=True):
                     nxt = self.as_float(self._eval(comp, ns))
                     current = self.as_float(current)
-                    result = np.logical_and(result, _COMPARE[type(op)](current, nxt))
+                    compare = numeric.COMPARISONS[op][0]
+                    result = np.logical_and(result, compare(current, nxt))
                     current = nxt
                 return result
-            case ast.BoolOp(op=op, values=values):
-                combine = np.logical_and if isinstance(op, ast.And) else np.logical_or
-                result = self._eval(values[0], ns)
-                for value in values[1:]:
+            case Logical(op=op, operands=operands):
+                combine = numeric.LOGICAL[op][0]
+                result = self._eval(operands[0], ns)
+                for value in operands[1:]:
                     result = combine(result, self._eval(value, ns))
                 return result
-            case ast.IfExp(test=test, body=body, orelse=orelse):
+            case Conditional(test=test, body=body, orelse=orelse):
                 return self._conditional(test, body, orelse, ns)
-            case ast.Call(func=ast.Name(id=name), args=args):
+            case Call(name=name, args=args):
                 return self._call(name, args, ns)
         raise ExpressionError(f"formula {self.text!r}: unsupported construct")  # pragma: no cover
+
+
+# the operators on two Python integers, as Python computes them
+PYTHON_BINARY = {
+    "+": operator.add, "-": operator.sub, "*": operator.mul, "/": operator.truediv,
+    "**": operator.pow, "%": operator.mod, "//": operator.floordiv,
+}  # fmt: skip
 
 
 def _is_python_int(value: Any) -> bool:
@@ -249,7 +182,7 @@ def call_vectorised(func: Any, args: list, text: str = "") -> Any:
     evaluate = getattr(func, "evaluate_many", None)
     if evaluate is not None:
         return evaluate(*args)
-    if func in MATH_FUNCTIONS.values():
+    if id(func) in _VECTOR_FUNCTION_IDS:
         return func(*args)
     deck_call = getattr(func, "deck_call", None)
     if deck_call is None and not callable(func):

@@ -59,15 +59,16 @@ def cell_dimension(cell_type: str) -> int:
     return _DIMENSION.get(cell_type, 3)
 
 
-def source_cells(mesh: Mesh, cells: np.ndarray | None) -> np.ndarray:
-    """The cells used: those of the highest dimension among ``cells`` (all by default)."""
+def source_cells(mesh: Mesh, cells: np.ndarray | None, dimension: int | None = None) -> np.ndarray:
+    """The cells used: those of the highest dimension among ``cells`` (all by
+    default), or of ``dimension`` when the deck forces it (CAS_FIGURE)."""
     if cells is None:
         cells = np.arange(mesh.n_cells)
     cells = np.asarray(cells, dtype=int)
     if cells.size == 0:
         return cells
     dims = np.array([cell_dimension(mesh.cell_types[c]) for c in cells])
-    return cells[dims == dims.max()]
+    return cells[dims == (dims.max() if dimension is None else dimension)]
 
 
 def _segment_weights(cell_type: str, t: float) -> np.ndarray:
@@ -96,8 +97,11 @@ def place_nodes(
     target: Mesh,
     nodes: np.ndarray,
     distance_max: float | None = None,
+    points: np.ndarray | None = None,
 ) -> Placement:
-    """Where each target node falls among the source cells, and its weights."""
+    """Where each target node falls among the source cells, and its weights;
+    ``points`` (one row per node of ``nodes``): where to look for them
+    instead of their coordinates (a transformation of mesh 2)."""
     placed: dict[int, tuple[np.ndarray, np.ndarray]] = {}
     unplaced: list[int] = []
     farthest = 0.0
@@ -105,8 +109,8 @@ def place_nodes(
     cell_nodes = [np.asarray(source.cell_nodes[c], dtype=int) for c in cells]
     sizes = [_cell_size(coords[conn]) for conn in cell_nodes]
     nearby = _neighbourhoods(coords, cell_nodes, sizes)
-    for node in nodes:
-        point = target.coords[node]
+    for position, node in enumerate(nodes):
+        point = target.coords[node] if points is None else points[position]
         best = None  # (distance, inside?, position)
         for k in nearby(point):
             conn = cell_nodes[k]

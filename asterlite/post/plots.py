@@ -19,6 +19,10 @@ import numpy as np
 
 from asterlite.concepts.titles import compact, same_title, unique_titles
 from asterlite.concepts.transient import ShockHistory, TranGene
+from asterlite.extras import require
+from asterlite.io.result_store import _shock_group_names as shock_group_names
+from asterlite.io.result_store import load_tran_gene
+from asterlite.post.wear import history_wear_power
 
 IMAGE_FORMATS = (".png", ".svg")
 NODAL_FIELDS = {"DEPL": "depl", "VITE": "vite", "ACCE": "acce"}
@@ -70,7 +74,6 @@ def find_shock(tran: TranGene, name: str) -> ShockHistory:
     """The shock ``name`` designates: its title (blanks ignored: code_aster's
     ``DIS_CHOC        00000002`` is also ``DIS_CHOC00000002``) or the name
     of its group in results.h5."""
-    from asterlite.io.result_store import _shock_group_names as shock_group_names
 
     names = shock_names(tran)
     for candidates in (names, shock_group_names(tran.shocks)):
@@ -105,7 +108,6 @@ def wear_work_rates(tran: TranGene) -> dict[str, float]:
     """The Archard wear power (W, code_aster's PUIS_USURE: mean FN·|VT| over
     the sliding intervals, :func:`asterlite.post.wear.wear_power`) of each
     shock over the run."""
-    from asterlite.post.wear import history_wear_power
 
     return {
         name: history_wear_power(tran.times, shock.fields)
@@ -192,7 +194,6 @@ def _gap_arrow(name: str, size: float, end: tuple[float, float] | None = None) -
 
 def _new_figure(size=(7.0, 4.5)):
     """A pyplot-free Figure (Agg canvas): no display, no global state."""
-    from asterlite.extras import require
 
     Figure = require("matplotlib.figure", "drawing a figure").Figure
     return Figure(figsize=size, layout="constrained")
@@ -428,7 +429,6 @@ def plot_from_store(
     """Load a tran_gene from an HDF5 store, draw what ``request`` asks for
     (see :func:`figure_for`) and save it; default file: next to the store,
     ``<store>_<what>.png``."""
-    from asterlite.io.result_store import load_tran_gene
 
     store = Path(store)
     try:

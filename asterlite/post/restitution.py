@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from asterlite.concepts.assembly import ElementField
 from asterlite.errors import CommandError, missing_name
 
 FIELDS = ("DEPL", "VITE", "ACCE")
@@ -271,7 +272,6 @@ def recombine_element_field(field, generalized):
     """An element field of the modes (values (n_modes, n_cells, n_points,
     n_components), as CALC_CHAMP stores it on a modal basis) recombined with
     generalized coordinates (n_instants, n_modes): Σ_j q_j(t) σ_j."""
-    from asterlite.concepts.assembly import ElementField
 
     generalized = np.asarray(generalized, dtype=float)
     modal = np.asarray(field.values, dtype=float)

@@ -224,6 +224,9 @@ def field_value_table(
         access = {"INST": time, "NUME_ORDRE": int(order)}
         for j, support in enumerate(supports):
             row = {**head, **access, **support}
-            row.update(zip(components, map(float, values[k, j]), strict=True))
+            # a support without the component (NaN) leaves its cell empty
+            row.update(
+                (c, float(v)) for c, v in zip(components, values[k, j], strict=True) if v == v
+            )
             table.add_row(row)
     return table

@@ -27,6 +27,11 @@ from typing import Any
 
 import numpy as np
 
+from asterlite.concepts.base import Concept
+from asterlite.concepts.function import Function
+from asterlite.concepts.transient import TranGene
+from asterlite.report.svg import envelope
+
 CURVES_NAME = "curves.json"
 LOG_TAIL_LINES = 400
 MAX_POINTS = 4000  # per stored series (min/max envelope beyond)
@@ -49,7 +54,6 @@ class ReportData:
 
 def from_run(report, session, folder: Path | None = None) -> ReportData:
     """The data of a run that just ended (its session still in memory)."""
-    from asterlite.concepts.transient import TranGene
 
     summary = report.as_dict()
     results = []
@@ -64,7 +68,6 @@ def from_run(report, session, folder: Path | None = None) -> ReportData:
 
 def collect_curves(namespace: dict) -> list[dict]:
     """Curve sets of the deck's concepts, in the deck's order."""
-    from asterlite.concepts.base import Concept
 
     sets: list[dict] = []
     seen: set[int] = set()
@@ -83,7 +86,6 @@ def collect_curves(namespace: dict) -> list[dict]:
 
 def curves_of(name: str, concept) -> list[dict]:
     """The curve sets one concept gives (none for most)."""
-    from asterlite.concepts.function import Function
 
     offered = getattr(type(concept), "report_curves", None)
     if callable(offered):
@@ -178,7 +180,6 @@ def _spans_decades(series: list[dict]) -> bool:
 def thinned(curve: dict) -> dict:
     """A curve set whose series hold plain lists, at most MAX_POINTS points
     each (a min/max envelope beyond: peaks kept)."""
-    from asterlite.report.svg import envelope
 
     out = dict(curve)
     out["series"] = []

@@ -18,10 +18,11 @@ It must never stop a run: anything it cannot work out is left out.
 
 from __future__ import annotations
 
+from asterlite.runtime import verdicts as V
+from asterlite.runtime.verdicts import CALC, REFE, verdict_text
+
 
 def summary_fields(report, session) -> dict:
-    from asterlite.runtime import verdicts as V
-
     fields: dict = {}
     try:
         overrides = dict(getattr(report, "overrides", None) or {})
@@ -84,7 +85,6 @@ def _plain(value):
 def summary_lines(report) -> list[str]:
     """The lines message.log's summary gets (after the checks): the two
     kinds of comparison counted apart, and the note of a variant."""
-    from asterlite.runtime.verdicts import CALC, REFE, verdict_text
 
     extras = getattr(report, "extras", None) or {}
     if not report.tests or "verdicts" not in extras:

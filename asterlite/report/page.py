@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.post.plots import ORBIT_AXIS_FLOOR, is_two_node, obstacle_outline
 from asterlite.report import svg
 from asterlite.report.data import ReportData
 from asterlite.version import __version__
@@ -338,7 +339,6 @@ def shocks_section(data: ReportData) -> str:
 def orbit_chart(tran_name: str, shock) -> tuple[svg.Chart, str, np.ndarray] | None:
     """The orbit's chart, the field prefix (LOC, or REL for two nodes) and
     the archived instants drawn."""
-    from asterlite.post.plots import ORBIT_AXIS_FLOOR, is_two_node, obstacle_outline
 
     prefix = "REL" if is_two_node(shock) else "LOC"
     fields = shock.fields

@@ -30,6 +30,12 @@ import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
+from asterlite import watchdog
+from asterlite.errors import AsterliteError
+from asterlite.io.export import describe_run
+from asterlite.runtime import stops
+from asterlite.runtime.runner import internal_error_report, run_limits
+
 EXIT_CODES = {"VALID": 0, "INVALID": 2, "UNSUPPORTED": 3, "ERROR": 4}
 SEVERITY = ("VALID", "UNSUPPORTED", "INVALID", "ERROR")  # worst last
 KINDS = ("invalid", "unsupported", "unsupported-python")
@@ -123,10 +129,6 @@ def check_deck(
 ) -> DeckCheck:
     """Check one deck (a .comm, an .export or a deck folder); ``time_limit``
     (CPU seconds) replaces the export's and the default."""
-    from asterlite import watchdog
-    from asterlite.runtime import stops
-    from asterlite.runtime.export import describe_run
-    from asterlite.runtime.runner import internal_error_report, run_limits
     from asterlite.runtime.session import Session
 
     start = time.perf_counter()
@@ -152,8 +154,6 @@ def check_deck(
     except OSError as error:
         result.message = f"cannot read a file: {error.strerror or error}"
     except Exception as error:
-        from asterlite.errors import AsterliteError
-
         if isinstance(error, AsterliteError):
             result.message = str(error)
         else:  # an asterlite bug: said, never a crash of the caller

@@ -21,9 +21,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from asterlite.catalog import load_catalogue
+from asterlite.catalog.language.model import language
 from asterlite.catalog.model import BLOC, FACT, SIMP
+from asterlite.catalogues import _code_aster_commands as names
 from asterlite.concepts.base import AnyPlaceholder, Placeholder
 from asterlite.errors import CommandError, UnsupportedError
+from asterlite.lang.bindings import statement_outputs
 from asterlite.lang.values import CallSite, DeckCallable, Unknown, co_outputs
 
 if TYPE_CHECKING:
@@ -57,7 +61,6 @@ NOT_MESH_NAMES = {
 
 def code_aster_commands() -> dict[str, str]:
     """Every code_aster command name -> the version whose catalogue lists it."""
-    from asterlite.catalogues import _code_aster_commands as names
 
     known = dict.fromkeys(names.CURRENT, "17")
     for name, version in names.OLDER.items():
@@ -72,7 +75,6 @@ LEGACY_COMMANDS_VERSION = "10-12"
 
 def _legacy_language_commands() -> frozenset[str]:
     """The commands of code_aster 10-12's language data (v11.json)."""
-    from asterlite.catalog.language.model import language
 
     old = language(11)
     return old.command_names if old is not None else frozenset()
@@ -124,6 +126,8 @@ class CheckFacts:
     meshes: list = field(default_factory=list)  # every real Mesh read or made
     names_open: bool = False  # a mesh check cannot see may exist
     units_open: set[int] = field(default_factory=set)  # units written or mapped by the deck
+    # the deck's Python wrote files check did not follow (open()): any unit may be mapped
+    units_unknown: bool = False
     session: Any = None  # the session checked
     findings: list = field(default_factory=list)
     calls: list = field(default_factory=list)  # the command calls under way (language_check)
@@ -134,6 +138,8 @@ class CheckFacts:
         if self.errors and error in (self.errors[-1], getattr(self.errors[-1], "original", None)):
             return
         self.errors.append(error)
+        if getattr(error, "touches_files", False):
+            self.units_unknown = True
         if self.session is not None and self.finding_of_error is not None:
             self.findings.extend(self.finding_of_error(self.session, error))
 
@@ -190,7 +196,6 @@ def check_call(proxy, catalogue, keywords: Keywords, site: CallSite, reuse):
 def command_failed(session, name: str, kwargs: dict, error) -> None:
     """After a failed call: record the error; CO outputs become Unknown, and a
     failed command that may make a mesh stops the judging of names."""
-    from asterlite.catalog import load_catalogue
 
     facts: CheckFacts = session.check
     facts.record(error)
@@ -216,58 +221,6 @@ def statement_failed(session, statement, error) -> None:
     facts.close_names()
 
 
-def statement_outputs(statement) -> list[str]:
-    """Names a deck statement binds: assignment and loop targets, imported
-    names, functions, ``with ... as`` names and CO("NAME") outputs."""
-    names = []
-    for node in statement.iter_subtrees_topdown():
-        data = node.data
-        if data == "assign":
-            for target in node.children[:-1]:
-                names += _target_names(target)
-        elif data in ("augassign", "for_stmt", "comp_for"):
-            names += _target_names(node.children[0])
-        elif data == "with_item" and len(node.children) > 1 and node.children[1] is not None:
-            names += _target_names(node.children[1])
-        elif data == "funcdef":
-            names.append(str(node.children[0]))
-        elif data == "import_as_name":
-            bound = node.children[1] if len(node.children) > 1 else None
-            names.append(str(bound if bound is not None else node.children[0]))
-        elif data == "dotted_as_name":
-            bound = node.children[1] if len(node.children) > 1 else None
-            if bound is not None:
-                names.append(str(bound))
-            else:
-                dotted = node.children[0]
-                first = dotted.children[0] if hasattr(dotted, "children") else dotted
-                names.append(str(first))
-        elif data == "funccall" and _is_co_call(node):
-            names.append(node.children[1].children[0].children[0])
-    return names
-
-
-def _target_names(target) -> list[str]:
-    data = getattr(target, "data", None)
-    if data == "var":
-        return [target.children[0].value]
-    if data in ("tuple", "list", "exprlist", "testlist"):
-        return [n for child in target.children for n in _target_names(child)]
-    return []
-
-
-def _is_co_call(node) -> bool:
-    callee, arguments = node.children
-    if callee.data != "var" or callee.children[0].value != "CO" or arguments is None:
-        return False
-    first = arguments.children[0] if arguments.children else None
-    return (
-        getattr(first, "data", None) == "const"
-        and isinstance(first.children[0], str)
-        and first.children[0].isidentifier()
-    )
-
-
 # ------------------------------------------------------------------ units
 
 
@@ -278,7 +231,9 @@ def _unit_of(keywords: Keywords):
 def _unit_readable(session, keywords: Keywords) -> bool:
     """False when the unit holds a file the deck writes (not written under check)."""
     unit = _unit_of(keywords)
-    return not (unit in session.check.units_open and unit not in session.run.units)
+    if unit in session.run.units:
+        return True
+    return not (unit in session.check.units_open or session.check.units_unknown)
 
 
 def _check_read_unit(session, keywords: Keywords, site: CallSite, name: str) -> None:
@@ -286,6 +241,8 @@ def _check_read_unit(session, keywords: Keywords, site: CallSite, name: str) -> 
     if not isinstance(unit, int) or isinstance(unit, bool):
         return
     if unit in session.run.units or unit in session.check.units_open:
+        return
+    if session.check.units_unknown:  # written by the deck's own Python, maybe
         return
     known = ", ".join(str(u) for u in sorted(session.run.units)) or "none"
     raise CommandError(
@@ -302,9 +259,11 @@ def _note_written_units(name: str, keywords: Keywords, facts: CheckFacts) -> Non
             facts.units_open.add(value)
 
 
-def note_unit_mapping(session, keywords: Keywords) -> None:
-    """DEFI_FICHIER: the unit it associates may be read or written from now on."""
-    unit = dict.get(keywords, "UNITE")
+def note_unit_mapping(session, keywords: Keywords, unit=None) -> None:
+    """DEFI_FICHIER: the unit it associates (given, or chosen for a file
+    named without one) may be read or written from now on."""
+    if unit is None:
+        unit = dict.get(keywords, "UNITE")
     if isinstance(unit, int):
         session.check.units_open.add(unit)
 

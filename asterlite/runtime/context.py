@@ -23,35 +23,6 @@ if TYPE_CHECKING:
 
 
 @dataclass
-class TestRecord:
-    """One ``TEST_*`` check: what was compared and whether it held.
-
-    ``ok`` is the verdict asterlite uses (reference checks at the deck's
-    PRECISION, VALE_CALC checks within 1e-3 relative unless the deck sets
-    a tighter/looser criterion); ``strict`` says whether it also holds at
-    code_aster's own tolerance (TOLE_MACHINE, 1e-6 by default).
-    """
-
-    command: str  # TEST_RESU, TEST_TABLE, TEST_FONCTION
-    label: str  # what was tested, e.g. "RESU[1] DYNATRA1 DEPL NO1 DY ordre 1"
-    value: Any
-    expected: Any
-    reference: str  # "ANALYTIQUE", "SOURCE_EXTERNE", "NON_REGRESSION", "AUTRE_ASTER", ...
-    error: float
-    tolerance: float
-    criterion: str  # RELATIF / ABSOLU
-    ok: bool
-    strict: bool = True
-    location: Location | None = None
-    # the VALE_CALC comparison when a reference check is shown in ``expected``
-    calc_comparison: Any = None
-
-    @property
-    def verdict(self) -> str:
-        return "OK" if self.ok else "NOOK"
-
-
-@dataclass
 class CommandContext:
     """The call site and session a command runs in."""
 
@@ -62,15 +33,25 @@ class CommandContext:
     reuse: Any = None  # the concept passed as reuse=, if any
     notes: list[str] = field(default_factory=list)
 
-    def error(self, message: str, keyword: str | None = None, kw: Keywords | None = None):
-        """Raise a CommandError located at the call (and keyword, when given)."""
+    def error(
+        self,
+        message: str,
+        keyword: str | None = None,
+        kw: Keywords | None = None,
+        aster_exception: str | None = None,
+    ):
+        """Raise a CommandError located at the call (and keyword, when given);
+        ``aster_exception`` names the subclass of code_aster's AsterError that
+        code_aster raises there (``SolverError``...), for a deck's ``except``."""
         path, location = self.command, self.location
         if kw is not None:
             path, location = kw.where(keyword)
             location = location or self.location
         elif keyword:
             path = f"{self.command}/{keyword}"
-        raise CommandError(message, location, path)
+        error = CommandError(message, location, path)
+        error.aster_exception = aster_exception
+        raise error
 
     def unsupported(self, what: str, keyword: str | None = None, kw: Keywords | None = None):
         """Raise an UnsupportedError for a keyword value not implemented yet."""

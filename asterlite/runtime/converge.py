@@ -25,13 +25,18 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 import re
+import tempfile
 from collections.abc import Callable
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from asterlite.extras import MissingExtraError, require
+from asterlite.runtime.runner import run_deck
 from asterlite.runtime.session import KeywordOverride
+from asterlite.watchdog import address_space_cap
 
 # the knob that buys accuracy, per scheme as named on the command line
 FIXED_STEP = ("DIFF_CENTRE", "NEWMARK", "DEVOGE", "TRBDF2")
@@ -325,9 +330,6 @@ def memory_cap(fraction: float = MEMORY_FRACTION):
     while the study runs, so that a rung whose adaptive step collapses (and
     archives millions of steps) fails with a MemoryError — an ``error`` row —
     instead of being killed by the system. No-op where unsupported."""
-    import os
-
-    from asterlite.watchdog import address_space_cap
 
     try:
         total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
@@ -341,9 +343,6 @@ def memory_cap(fraction: float = MEMORY_FRACTION):
 def run_in_scratch(deck: Path, overrides: list | None = None):
     """run_deck with an output folder (decks that print tables or results
     need one) that is thrown away afterwards."""
-    import tempfile
-
-    from asterlite.runtime.runner import run_deck
 
     with tempfile.TemporaryDirectory(prefix="asterlite-converge-") as scratch:
         return run_deck(deck, Path(scratch), keyword_overrides=overrides)
@@ -724,7 +723,6 @@ def _cell(value) -> str:
 def plot(study: Study, path: Path) -> Path:
     """Error against integration time and against steps (log–log), one curve
     per scheme; the target as a horizontal line."""
-    from asterlite.extras import require
 
     FigureCanvasAgg = require("matplotlib.backends.backend_agg", PLOT_PURPOSE).FigureCanvasAgg
     Figure = require("matplotlib.figure", PLOT_PURPOSE).Figure
@@ -765,7 +763,6 @@ def write_outputs(study: Study, directory: Path) -> list[Path]:
     and ``converge.md`` (the same in Markdown) in ``directory``. Without
     matplotlib (the plot extra) the picture is skipped and a note in
     ``study.notes`` (printed with the table) says how to get it."""
-    from asterlite.extras import MissingExtraError
 
     directory.mkdir(parents=True, exist_ok=True)
     csv_path = write_csv(study, directory / "converge.csv")

@@ -55,6 +55,10 @@ def run_one(export: Path, timeout: float) -> dict:
         "strict_ok": data["strict_ok"],
         "seconds": round(time.perf_counter() - start, 2),
         "message": _first_line(data.get("message", "")),
+        # each TEST_* value as the run computed it (JSON keeps a float's every bit)
+        "tests": [
+            [test["command"], test["label"], test["value"]] for test in data.get("tests", [])
+        ],
     }
 
 
@@ -72,6 +76,7 @@ def _row(export: Path, status: str, message: str, start: float) -> dict:
         "strict_ok": 0,
         "seconds": round(time.perf_counter() - start, 2),
         "message": message,
+        "tests": [],
     }
 
 

@@ -23,7 +23,7 @@ from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.lang.exceptions import ASTER_CLASSES, ExceptionClass, classify, matches
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CallSite, DeckCallable
-from asterlite.runtime.context import TestRecord
+from asterlite.post.check_record import TestRecord
 
 if TYPE_CHECKING:
     from asterlite.runtime.session import Session
@@ -351,10 +351,55 @@ def named_input(session: Session, name: str):
     raise DeckRuntimeError(f"the run has no input file named {name!r} (see the .export's F lines)")
 
 
+class PhysicalProblem:
+    """``CA.PhysicalProblem(model, materials, characteristics)``: what a
+    post-processing is computed with."""
+
+    deck_methods = frozenset({"getModel"})
+
+    def __init__(self, model, materials=None, characteristics=None):
+        self.model, self.materials, self.characteristics = model, materials, characteristics
+
+    def getModel(self):  # noqa: N802 - code_aster's name
+        return self.model
+
+
+class PostProcessing:
+    """``CA.PostProcessing(problem)``: computeMaxResultantForPipe only."""
+
+    deck_methods = frozenset({"computeMaxResultantForPipe"})
+
+    def __init__(self, problem: PhysicalProblem):
+        self.problem = problem
+
+    def computeMaxResultantForPipe(self, result, field_name):  # noqa: N802
+        from asterlite.post.cell_fields import max_resultant_for_pipe
+
+        return max_resultant_for_pipe(result, field_name)
+
+
+class _PhysicalProblemFactory(DeckCallable):
+    def deck_call(self, args, kwargs, site: CallSite):
+        if kwargs or not 1 <= len(args) <= 3:
+            raise UnsupportedError(
+                "CA.PhysicalProblem takes (model, materials, characteristics)", site.location
+            )
+        return PhysicalProblem(*args)
+
+
+class _PostProcessingFactory(DeckCallable):
+    def deck_call(self, args, kwargs, site: CallSite):
+        if kwargs or len(args) != 1 or not isinstance(args[0], PhysicalProblem):
+            raise UnsupportedError("CA.PostProcessing takes a CA.PhysicalProblem", site.location)
+        return PostProcessing(args[0])
+
+
 class CodeAsterModule:
     """The ``CA`` object: only what decks use (see the module's docstring)."""
 
-    deck_methods = frozenset({"TestCase", "init", "close", "disable_fpe", "Mesh"})
+    deck_methods = frozenset(
+        {"TestCase", "init", "close", "disable_fpe", "Mesh", "PhysicalProblem", "PostProcessing"}
+    )
 
     def __init__(self, session: Session):
         self.TestCase = _TestCaseFactory(session)
@@ -362,6 +407,8 @@ class CodeAsterModule:
         self.close = _Close(session)
         self.disable_fpe = _DisableFpe()
         self.Mesh = _MeshFactory(session)
+        self.PhysicalProblem = _PhysicalProblemFactory()
+        self.PostProcessing = _PostProcessingFactory()
 
     def deck_getattr(self, name: str):
         """code_aster's exception classes; anything else of CA is refused by name."""
@@ -369,7 +416,8 @@ class CodeAsterModule:
             return ASTER_CLASSES[name]
         raise UnsupportedError(
             f"code_aster.CA.{name}: of code_aster's CA object, asterlite provides init, close, "
-            "TestCase, disable_fpe, Mesh and the exception classes (AsterError...)"
+            "TestCase, disable_fpe, Mesh, PhysicalProblem, PostProcessing "
+            "(computeMaxResultantForPipe) and the exception classes (AsterError...)"
         )
 
     def members(self) -> dict:
@@ -396,7 +444,8 @@ class CodeAsterCAModule(DeckModule):
             return self.members[name]
         raise UnsupportedError(
             f"code_aster.CA.{name}: of code_aster's CA object, asterlite provides init, close, "
-            "TestCase, disable_fpe, Mesh and the exception classes (AsterError...)"
+            "TestCase, disable_fpe, Mesh, PhysicalProblem, PostProcessing "
+            "(computeMaxResultantForPipe) and the exception classes (AsterError...)"
         )
 
 
@@ -410,7 +459,6 @@ class _GetVectJev(DeckCallable):
         self.session = session
 
     def deck_call(self, args, kwargs, site: CallSite):
-        from asterlite.errors import UnsupportedError
         from asterlite.runtime.jeveux import getvectjev
 
         if len(args) != 1 or kwargs:

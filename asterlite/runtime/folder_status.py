@@ -12,6 +12,7 @@ this user may not write is only read: its status is told, nothing settled.
 from __future__ import annotations
 
 import errno
+import fcntl
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -122,7 +123,6 @@ def _read_only(path: Path) -> FolderStatus:
 
 def _held_lock_record(boundary: WriteBoundary) -> dict | None:
     """The record of the lock a live run holds, None when none is held."""
-    import fcntl
 
     flags = os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC
     try:

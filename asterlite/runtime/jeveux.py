@@ -4,7 +4,7 @@ code_aster stores each data structure as named vectors: the structure's
 name padded to 19 characters, then the vector's suffix (``.VALE``...).
 Decks name the structure by the deck variable (code_aster up to 14) or by
 the name code_aster 15 generated for it ("0000001b", see
-:mod:`asterlite.runtime.v15_names`). The vectors asterlite can rebuild are
+:mod:`asterlite.legacy.v15_names`). The vectors asterlite can rebuild are
 laid out as code_aster lays them out:
 
 - a function's ``.VALE``: the abscissas, then the ordinates (complex
@@ -25,8 +25,12 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.concepts.base import Concept
+from asterlite.concepts.function import Function
+from asterlite.concepts.lists import ListInt, ListReal
+from asterlite.concepts.transient import TranGene
 from asterlite.errors import UnsupportedError
-from asterlite.runtime.v15_names import GENERATED_NAME
+from asterlite.legacy.v15_names import GENERATED_NAME
+from asterlite.post.deck_api import NONLINEARITY_CODES, internal_variables
 
 STRUCTURE_WIDTH = 19  # characters of a structure's name before the vector's suffix
 SUBSTRUCTURE_WIDTH = 16  # a tran_gene's nonlinearities live in "<16 chars>.NL"
@@ -85,10 +89,6 @@ def getvectjev(session, name: str) -> tuple:
 
 
 def readable_vectors(concept) -> str:
-    from asterlite.concepts.function import Function
-    from asterlite.concepts.lists import ListInt, ListReal
-    from asterlite.concepts.transient import TranGene
-
     if isinstance(concept, (Function, ListReal, ListInt)):
         return "it reads .VALE"
     if isinstance(concept, TranGene):
@@ -98,9 +98,6 @@ def readable_vectors(concept) -> str:
 
 def concept_vector(concept, sub: str, suffix: str):
     """The values of one vector of ``concept``, or None if not rebuilt."""
-    from asterlite.concepts.function import Function
-    from asterlite.concepts.lists import ListInt, ListReal
-    from asterlite.concepts.transient import TranGene
 
     if isinstance(concept, Function) and not sub and suffix == ".VALE":
         return concept.getValues()
@@ -129,8 +126,6 @@ def tran_gene_vector(result, suffix: str):
 
 
 def nonlinear_vector(result, suffix: str):
-    from asterlite.post.deck_api import NONLINEARITY_CODES, internal_variables
-
     shocks = result.shocks
     if not shocks:
         return None

@@ -37,9 +37,12 @@ import builtins
 import difflib
 import re
 
+from asterlite.catalog import load_catalogue
 from asterlite.catalog.language import validate as language_validate
-from asterlite.catalog.language.model import Language, language
-from asterlite.catalog.model import FACT
+from asterlite.catalog.language import value_checks as language_value_checks
+from asterlite.catalog.language.components import DISPLACEMENT_FIELDS, displacement_components
+from asterlite.catalog.language.model import Language, available_versions, language
+from asterlite.catalog.model import BLOC, FACT
 from asterlite.concepts.base import Placeholder
 from asterlite.errors import (
     AsterliteError,
@@ -49,7 +52,9 @@ from asterlite.errors import (
     UnsupportedError,
     ValidationError,
 )
+from asterlite.io.input_files import read_text_or_none
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
+from asterlite.legacy.forms import legacy_form
 from asterlite.runtime.checking import MESH_COMMANDS, READERS, code_aster_commands
 
 
@@ -162,10 +167,6 @@ def component_findings(name: str, kwargs: dict, site: CallSite) -> list:
     """``NOM_CMP`` beside ``NOM_CHAM='DEPL'`` (``VITE``, ``ACCE``...) of a
     result: each component must be one of code_aster's DEPL_R (a field given
     with CHAM_GD may carry another quantity under that name: not judged)."""
-    from asterlite.catalog.language.components import (
-        DISPLACEMENT_FIELDS,
-        displacement_components,
-    )
 
     found = []
 
@@ -183,7 +184,7 @@ def component_findings(name: str, kwargs: dict, site: CallSite) -> list:
                     close = difflib.get_close_matches(
                         component, sorted(displacement_components()), n=1, cutoff=0.6
                     )
-                    hint = f", did you mean {close[0]}?" if close else ""
+                    hint = f", did you mean {close[0]!r}?" if close else ""
                     found.append(
                         InvalidCall(
                             f"{component!r} is not a component of {field} (quantity DEPL_R){hint}",
@@ -227,7 +228,6 @@ def blur_empty_sequences(value):
 
 def not_a_command(name: str, lang: Language, version: int) -> str:
     """Why ``name`` is no command of the deck's version (and which has it)."""
-    from asterlite.catalog.language.model import available_versions
 
     others = []
     for other in available_versions():
@@ -475,17 +475,16 @@ class LanguageCommand(DeckCallable):
 def unsupported_keywords(name: str, kwargs: dict, site: CallSite) -> list[NotComputed]:
     """Keywords of a language-valid call that asterlite's catalogue does not
     have, at every level (each one found, not only the first)."""
-    from asterlite.catalog import load_catalogue
 
     catalogue = load_catalogue(name)
     found: list[NotComputed] = []
-    if catalogue is None or catalogue.extra_keywords or catalogue.compat_syntax is not None:
+    if catalogue is None or catalogue.extra_keywords or legacy_form(name) is not None:
         return found  # a legacy spelling asterlite translates first: its refusal says
 
     def visit(levels: list, given: dict, path: str, locations: dict, where) -> None:
         vocabulary = _asterlite_vocabulary(levels)
         for key, value in given.items():
-            if key == "reuse" or language_validate.is_undefined(value):
+            if key == "reuse" or language_value_checks.is_undefined(value):
                 continue
             entries = vocabulary.get(key)
             if not entries:
@@ -515,10 +514,26 @@ def unsupported_keywords(name: str, kwargs: dict, site: CallSite) -> list[NotCom
     return found
 
 
+def refusal_of_valid_call(
+    session, name: str, kwargs: dict, site: CallSite, error: ValidationError
+) -> UnsupportedError | None:
+    """``run``: asterlite's catalogue refused a call (``error``); when the
+    deck version's language accepts it, the refusal is asterlite's limit,
+    not the deck's error: the first keyword asterlite lacks (or the
+    catalogue's message), as unsupported. None when code_aster would
+    refuse the call too, or when there is no language data to tell."""
+    check = check_language(session, name, kwargs, site, record=False)
+    if check is None or check.findings:
+        return None
+    missing = unsupported_keywords(name, kwargs, site)
+    if missing:
+        return missing[0]
+    return as_unsupported(error, deck_version(session))
+
+
 def _asterlite_vocabulary(levels: list) -> dict[str, list]:
     """Every keyword of ``levels`` (blocks included) -> its definitions: a
     factor keyword defined in several blocks allows the keywords of each."""
-    from asterlite.catalog.model import BLOC
 
     found: dict[str, list] = {}
 
@@ -567,9 +582,10 @@ def classify_deck_error(session, error: AsterliteError) -> AsterliteError | None
         return error
     if type(error).__name__ == "DeckStartError" and _file_had_unsupported(session, error):
         return None  # the file's study may start in what check could not follow
+    refusal = python_refusal(error, _file_of(error, session))
+    if refusal is not None:
+        return refusal
     if isinstance(error, DeckSyntaxError):
-        if _python_accepts(_file_of(error, session)):
-            return _unsupported_python(error, "a construct asterlite's deck parser does not take")
         if deck_version(session) < 13:  # Python 2 decks: asterlite reads a part of it
             return _unsupported_python(error, "Python 2 that asterlite does not read")
         return error
@@ -582,13 +598,27 @@ def classify_deck_error(session, error: AsterliteError) -> AsterliteError | None
     kind = getattr(error, "python_type", None)
     if kind is None and type(error) is DeckRuntimeError:
         return _unsupported_python(error, "refused by asterlite's deck evaluator")
-    if kind is not None and issubclass(kind, ImportError):
-        return _unsupported_python(error, "a module asterlite does not provide")
     if kind is NameError:
         return _name_error(session, error)
     if kind is not None:
         return _unsupported_python(error, "check could not evaluate this statement")
     return error
+
+
+def python_refusal(error: AsterliteError, file: str) -> UnsupportedPython | None:
+    """The error as the refusal it is when the deck is valid Python that
+    asterlite does not take (a run and a check say UNSUPPORTED, not that the
+    deck is wrong), else None: a construct Python parses but asterlite's deck
+    parser refuses (``class``, ``global``...), an import of a module it does
+    not provide. Its safety limits (a string too long...) stay errors."""
+    if isinstance(error, DeckSyntaxError):
+        if _python_accepts(file):
+            return _unsupported_python(error, "a construct asterlite's deck parser does not take")
+        return None
+    kind = getattr(error, "python_type", None)
+    if type(error) is DeckRuntimeError and kind is not None and issubclass(kind, ImportError):
+        return _unsupported_python(error, "a module asterlite does not provide")
+    return None
 
 
 def _file_had_unsupported(session, error: AsterliteError) -> bool:
@@ -660,7 +690,6 @@ def _file_of(error: AsterliteError, session) -> str:
 def _python_tree(path: str):
     """Python 3's syntax tree of a deck file (parsed only, never compiled to
     code or run), or None when Python does not parse it."""
-    from asterlite.io.input_files import read_text_or_none
 
     text = read_text_or_none(path) if path else None
     if text is None:

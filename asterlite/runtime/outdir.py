@@ -30,6 +30,7 @@ What a run promises about its ``-o`` folder (docs/safety.md):
 from __future__ import annotations
 
 import errno
+import fcntl
 import json
 import os
 import re
@@ -359,7 +360,6 @@ class OutputFolder:
         """Open the folder's descriptor and take its lock (OutputFolderBusy
         if a live run holds it). A lock file nobody holds is a run that died:
         its record is kept in ``stale_record`` and the lock taken over."""
-        import fcntl
 
         if self.boundary is None:
             self.boundary = WriteBoundary.open(self.path)

@@ -27,10 +27,10 @@ from pathlib import Path
 
 from asterlite import watchdog
 from asterlite.errors import AsterliteError, UnsupportedError
+from asterlite.io.export import NOT_PRODUCED, describe_run, limit_refusal
+from asterlite.post.check_record import TestRecord
 from asterlite.report.fields import summary_fields, summary_lines
 from asterlite.runtime import stops
-from asterlite.runtime.context import TestRecord
-from asterlite.runtime.export import NOT_PRODUCED, describe_run, limit_refusal
 from asterlite.runtime.outdir import (
     OutputFolder,
     OutputFolderError,
@@ -277,6 +277,7 @@ def _run_session(
     aster_version=None,
 ):
     """Run the deck's session; (report, session) whatever happens in it."""
+    from asterlite.runtime.language_check import python_refusal
     from asterlite.runtime.session import Session, UnknownOverrideError
 
     time_limit, memory_limit, output_bytes = limits
@@ -310,7 +311,11 @@ def _run_session(
     except UnsupportedError as error:
         report = RunReport(name, "UNSUPPORTED", str(error))
     except AsterliteError as error:
-        report = RunReport(name, "ERROR", str(error))
+        refusal = python_refusal(error, getattr(error.location, "file", None) or str(deck))
+        if refusal is not None:
+            report = RunReport(name, "UNSUPPORTED", str(refusal))
+        else:
+            report = RunReport(name, "ERROR", str(error))
     except RecursionError as error:
         report = RunReport(name, "ERROR", f"{_where(error)}deck error: nested too deeply")
     except MemoryError as error:  # outside any command (the session locates those)

@@ -15,13 +15,16 @@ import importlib
 import pkgutil
 import re
 import time
+from collections import ChainMap
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import asterlite.catalogues as package
 from asterlite import watchdog
 from asterlite.catalog import load_catalogue, result_type, validate
 from asterlite.catalog.keywords import Keywords, unread_keywords
+from asterlite.catalog.model import BLOC, FACT, SIMP
 from asterlite.concepts.base import AnyPlaceholder, Concept, Placeholder
 from asterlite.errors import (
     AsterliteError,
@@ -29,14 +32,20 @@ from asterlite.errors import (
     DeckSyntaxError,
     Location,
     UnsupportedError,
+    ValidationError,
 )
+from asterlite.io.export import RunDescription
 from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
+from asterlite.lang import Evaluator, base_namespace, parse_deck, savetxt, stdlib
 from asterlite.lang.library import DeckModule
 from asterlite.lang.values import CO, CallSite, DeckCallable, FactorDict, Unknown, co_outputs
 from asterlite.legacy import v11  # what code_aster 11 decks meant (values, defaults)
+from asterlite.legacy.forms import legacy_form
 from asterlite.legacy.runtime import translate_call
+from asterlite.legacy.v15_names import GeneratedNames, record_call
 from asterlite.legacy.version import PYTHON2_LAST, session_version
+from asterlite.post.check_record import TestRecord
 from asterlite.runtime import checking, console
 from asterlite.runtime.checking import (
     UnsupportedCommand,
@@ -46,16 +55,18 @@ from asterlite.runtime.checking import (
     statement_failed,
     undecidable,
 )
-from asterlite.runtime.context import CommandContext, TestRecord
-from asterlite.runtime.export import RunDescription
+from asterlite.runtime.context import CommandContext
+from asterlite.runtime.deck_api import code_aster_module
 from asterlite.runtime.language_check import (
     bind_language_commands,
     bind_unparsed_names,
     checked_call,
+    component_findings,
     finding_of_error,
     module_commands,
+    refusal_of_valid_call,
 )
-from asterlite.runtime.v15_names import GeneratedNames, record_call
+from asterlite.runtime.outdir import create_file
 
 
 class DeckFinished(AsterliteError):
@@ -80,7 +91,6 @@ class CommandTiming:
 
 def catalogue_command_names() -> list[str]:
     """Names of every command that has a catalogue (no module is imported)."""
-    import asterlite.catalogues as package
 
     return sorted(
         info.name.upper()
@@ -131,10 +141,7 @@ class Session:
     command_hook: Any = None
 
     def __post_init__(self) -> None:
-        from asterlite.lang import base_namespace
-
         self.namespace.update(base_namespace(print_hook=self._print))
-        from asterlite.lang import stdlib
 
         self.namespace.update(stdlib.namespace_builtins(self.namespace))  # globals(): these names
         if self.check_only:
@@ -185,6 +192,17 @@ class Session:
             return self.run.units[unit]
         except KeyError:
             raise CommandError(unmapped_unit_text(self.run, unit, self.output_units)) from None
+
+    def free_unit(self, location=None) -> int:
+        """The logical unit code_aster gives a file named without one
+        (``ulnume``): the highest of 99 down to 70 not in use."""
+        used = set(self.run.units) | set(self.output_units)
+        if self.check is not None:
+            used |= self.check.units_open
+        for unit in range(99, 69, -1):
+            if unit not in used:
+                return unit
+        raise CommandError("no free logical unit is left among 70 to 99", location)
 
     def output_path(self, unit_or_name: int | str) -> Path:
         """A path in the output folder for a logical unit or a file name."""
@@ -257,7 +275,6 @@ class Session:
 
     def run_file(self, path: Path) -> None:
         """Parse and evaluate one deck file in the session namespace."""
-        from asterlite.lang import Evaluator, parse_deck
 
         self.current_file = str(path)
         self.started = False
@@ -299,7 +316,6 @@ class Session:
         (the commands are in every namespace already)."""
         if CODE_ASTER_IMPORTED.search(text) or not STARTS_STUDY.search(text):
             return
-        from asterlite.runtime.deck_api import code_aster_module
 
         members = code_aster_module(self)
         self.namespace.setdefault("CA", members["CA"])
@@ -325,7 +341,6 @@ class Session:
         """A deck of code_aster 13 or older ran under Python 2 even when its
         text also reads as Python 3: its '/' of integers, map/zip/range...
         meant Python 2's (asterlite.lang.python2)."""
-        from asterlite.lang import parse_deck
 
         version = session_version(self)
         if version > PYTHON2_LAST:
@@ -365,7 +380,6 @@ class Session:
     def open_deck_file(self, name: str):
         """A new text stream for a file the deck writes itself (numpy.savetxt) in
         the output folder (one it wrote before is replaced); None under check."""
-        from asterlite.runtime.outdir import create_file
 
         if self.check_only:
             return None
@@ -378,8 +392,6 @@ class Session:
         return stream
 
     def run_all(self) -> None:
-        from asterlite.lang import savetxt
-
         token = savetxt.set_writer(self.open_deck_file)
         try:
             self._run_all()
@@ -445,7 +457,6 @@ def unmapped_unit_text(run, unit: int, written: dict) -> str:
 
 def deck_variables(namespace: dict) -> list[str]:
     """Names the deck bound to plain numbers or strings: what --set can vary."""
-    from asterlite.lang import base_namespace
 
     builtins = base_namespace()
     return sorted(
@@ -528,7 +539,7 @@ class CommandProxy(DeckCallable):
         kwargs = dict(kwargs)
         reuse = kwargs.pop("reuse", None)
         kwargs = v11.before_call(self.name, kwargs, site, session)
-        if catalogue.compat_syntax is not None:  # legacy syntax: check as written, translate
+        if legacy_form(self.name) is not None:  # legacy syntax: check as written, translate
             modern = translate_call(catalogue, kwargs, site, session, reuse=reuse)
             if modern is not None:
                 name, catalogue, kwargs = modern
@@ -550,13 +561,29 @@ class CommandProxy(DeckCallable):
             kwargs = {k: v for k, v in kwargs.items() if k in known}
         if session.check_only:
             kwargs = _blur_empty_sequences(kwargs)
-        keywords = validate(catalogue, kwargs, site, reuse=reuse)
+        try:
+            keywords = validate(catalogue, kwargs, site, reuse=reuse)
+        except ValidationError as error:
+            # a keyword code_aster has and asterlite lacks is unsupported, never invalid
+            given = dict(kwargs, reuse=reuse) if reuse is not None else kwargs
+            refusal = (
+                None
+                if session.check_only
+                else refusal_of_valid_call(session, self.name, given, site, error)
+            )
+            if refusal is None:
+                raise
+            raise refusal from None
         if extra:
             keywords["_extra"] = extra
         if self.name in SESSION_COMMANDS:
             return self._session_command(keywords, site)
         if session.check_only:
             return check_call(self, catalogue, keywords, site, reuse)
+        # what the language closes beyond the catalogue (NOM_CMP of a displacement
+        # field): refused before computing, as check reports it
+        for finding in component_findings(self.name, kwargs, site):
+            raise finding
         return self._execute(keywords, site, reuse)
 
     # ---------------------------------------------------------------- check
@@ -670,12 +697,21 @@ class CommandProxy(DeckCallable):
                 # the unit is closed: what is written to it later goes to fort.<unit>
                 if isinstance(unit, int):  # under check, a unit may be unknown
                     session.output_units.pop(int(unit), None)
+                elif unit is None and isinstance(name, str):
+                    for number, path in list(session.output_units.items()):
+                        if path.name == Path(name).name:
+                            del session.output_units[number]
                 return None
+            # a file named without a unit: code_aster chooses a free one and
+            # returns it (DEFI_FICHIER's result is then an integer)
+            chosen = unit is None and isinstance(name, str)
+            if chosen:
+                unit = session.free_unit(site.location)
             if unit is not None and name and session.output_dir is not None:
                 session.output_units[int(unit)] = session.output_path(str(name))
             if session.check is not None:
-                note_unit_mapping(session, keywords)
-            return None
+                note_unit_mapping(session, keywords, unit)
+            return int(unit) if chosen else None
         return None
 
 
@@ -751,7 +787,6 @@ def override_keywords(name: str, count: int, catalogue, kwargs: dict, session: S
 def apply_keyword_values(catalogue, kwargs: dict, values: dict, log=None) -> dict:
     """A copy of a call's raw keywords with ``values`` (path -> value) put in;
     the levels edited lose the catalogue keywords their new values close."""
-    from asterlite.catalog.model import FACT
 
     kwargs = dict(kwargs)
     edited: dict[str, set] = {}  # factor -> occurrence numbers edited ("" = top level)
@@ -816,7 +851,6 @@ def _copied_occurrences(value) -> list[FactorDict]:
 
 def _all_entries(level) -> dict:
     """Every SIMP and FACT of a level, blocks included."""
-    from asterlite.catalog.model import BLOC
 
     found = {}
     for name, entry in level.entries.items():
@@ -830,9 +864,6 @@ def _all_entries(level) -> dict:
 def _active_names(level, given: dict, context: dict) -> set[str]:
     """Keywords allowed at ``level`` with the given values (blocks opened as
     the validator opens them: on given values and defaults)."""
-    from collections import ChainMap
-
-    from asterlite.catalog.model import BLOC, SIMP
 
     active, values, pending = set(), dict(given), [level]
     opened = True

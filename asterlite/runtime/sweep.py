@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import csv
 import itertools
+import logging
 import re
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -27,6 +28,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from asterlite.extras import require
+from asterlite.isolation import protect_spawned_workers
+from asterlite.runtime.runner import run_deck
+from asterlite.runtime.verdicts import CALC, REFE, variant_note, verdict_text, verdicts
 
 PURPOSE = "asterlite sweep"
 STATUSES_THAT_RAN = ("PASS", "NOOK", "DONE")
@@ -118,7 +122,6 @@ def unique_folders(all_variants: list[dict]) -> list[str]:
 
 def run_variant(deck: str, output_dir: str, variant: dict[str, object]) -> dict:
     """Run one variant (a Dask task: plain arguments in, a plain row out)."""
-    from asterlite.runtime.runner import run_deck
 
     report = run_deck(Path(deck), Path(output_dir), overrides=variant)
     return report_row(variant, report)
@@ -145,7 +148,6 @@ def report_row(variant: dict[str, object], report) -> dict:
 
 def verdict_cells(report) -> dict[str, object]:
     """The VALE_REFE and VALE_CALC columns ("3/4", "-" when none) and the note."""
-    from asterlite.runtime.verdicts import CALC, REFE, variant_note, verdict_text, verdicts
 
     counts = verdicts(report.tests)
     extras = getattr(report, "extras", None) or {}
@@ -190,7 +192,6 @@ def failed_row(variant: dict[str, object], message: str) -> dict:
 def unknown_names(deck: Path, settings: list[Setting]) -> list[str]:
     """Names of ``settings`` the deck never assigns, found by a quick check run
     (no computation) before any worker starts."""
-    from asterlite.runtime.runner import run_deck
 
     first_values = {s.name: s.values[0] for s in settings}
     report = run_deck(deck, check_only=True, overrides=first_values)
@@ -209,9 +210,6 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator:
     """A client of an existing scheduler, or of a LocalCluster of processes
     (one thread each: a deck run is single-threaded numerics) closed on exit.
     Checks first that the sweep extra is installed (the tables need pyarrow)."""
-    import logging
-
-    from asterlite.isolation import protect_spawned_workers
 
     distributed = require_extras()
     Client, LocalCluster = distributed.Client, distributed.LocalCluster

@@ -22,7 +22,7 @@ import re
 from pathlib import Path
 
 from asterlite.io.input_files import read_text_or_none
-from asterlite.runtime.context import TestRecord
+from asterlite.post.check_record import TestRecord
 
 REFE, CALC = "VALE_REFE", "VALE_CALC"
 

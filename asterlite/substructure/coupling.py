@@ -14,8 +14,11 @@ import numpy as np
 import scipy.linalg as la
 import scipy.sparse as sp
 
+from asterlite.fem.constraints import Elimination
 from asterlite.fem.dofs import ROTATIONS, TRANSLATIONS
 from asterlite.fem.frames import rotation_from_angles
+from asterlite.modal.calc import select_modes
+from asterlite.modal.eigen import ReducedPencil
 
 
 class CouplingError(ValueError):
@@ -139,9 +142,6 @@ def null_space_basis(constraints: np.ndarray, n: int) -> np.ndarray:
 
 def coupled_modes(stiffness, mass, constraints, option, freq, nmax):
     """(ω², vectors on the full generalized unknowns) of the constrained pencil."""
-    from asterlite.fem.constraints import Elimination
-    from asterlite.modal.calc import select_modes
-    from asterlite.modal.eigen import ReducedPencil
 
     n = stiffness.shape[0]
     basis = null_space_basis(np.asarray(constraints, dtype=float), n)

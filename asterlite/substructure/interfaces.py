@@ -63,12 +63,10 @@ def static_modes(kind: str, dofs, numbering, stiffness, mass=None, frequency=1.0
             matrix = stiffness - (2.0 * np.pi * frequency) ** 2 * mass
         return constrained_modes(matrix, numbering, held), held
     if kind == "MNEAL":
-        held = [numbering.label(d) for d in dofs if int(d) in blocked]
-        if held:
-            raise InterfaceError(
-                f"MNEAL interface DOF {held[0]} is blocked: attachment modes need free"
-                " interface DOFs (leave the component out with MASQUE)"
-            )
+        # a DOF the matrices block (DDL_IMPO) carries no attachment mode: a
+        # unit force there would move nothing (code_aster leaves it out of
+        # the interface's deformations too)
+        dofs = np.array([d for d in dofs if int(d) not in blocked], dtype=int)
         loads = np.zeros((numbering.n_dofs, dofs.size))
         loads[dofs, np.arange(dofs.size)] = 1.0
         return response_modes(stiffness, numbering, loads), dofs

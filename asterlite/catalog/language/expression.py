@@ -36,7 +36,10 @@ decide without it.
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Mapping
+
+from asterlite.lang.values import Unknown
 
 UNDETERMINED = type("Undetermined", (), {"__repr__": lambda self: "UNDETERMINED"})()
 
@@ -81,8 +84,6 @@ PY_TYPES = {"list": list, "tuple": tuple, "float": float, "int": int, "str": str
 
 
 def _is_unknown(value) -> bool:
-    from asterlite.lang.values import Unknown
-
     return value is Unknown or value is UNDETERMINED
 
 
@@ -548,7 +549,6 @@ _BIN_OPS = {"Add": "+", "Sub": "-", "Mult": "*", "Div": "/", "BitAnd": "&", "Bit
 
 def from_source(text: str, type_names) -> list:
     """A code_aster condition string as an expression tree."""
-    import ast
 
     tree = ast.parse(" ".join(text.split()), mode="eval")
     return from_ast(tree.body, type_names)
@@ -558,7 +558,6 @@ def from_ast(node, type_names, names=None) -> list:
     """An expression tree from a Python syntax tree: names are keyword values
     (``["k", NAME]``), those in ``type_names`` code_aster types. ``names``
     maps some names to trees already made (sd_prod's local variables)."""
-    import ast
 
     def convert(n):
         if isinstance(n, ast.Constant):

@@ -19,7 +19,8 @@ parse) and walked by :class:`~asterlite.catalog.language.reader.CatalogueReader`
 in one namespace, as Python ran the module; nothing is executed. Concept types
 are the classes whose bases lead to ``ASSD`` or ``GEOM`` (read from the
 syntax trees, their methods never run). The result has the layout of
-:mod:`asterlite.catalog.language.generate`'s data, made by its ``Converter``.
+:mod:`asterlite.catalog.language.generate`'s data, made by its converter
+(:class:`~asterlite.catalog.language.convert.Converter`).
 """
 
 from __future__ import annotations
@@ -31,19 +32,18 @@ import subprocess
 import tokenize
 from pathlib import Path
 
-from asterlite.catalog.language.generate import FORMAT, ROOT_TYPE, Converter
-from asterlite.catalog.language.reader import (
-    CatalogueReader,
+from asterlite.catalog.language.cata_objects import (
     CataObject,
     CommandDef,
     Keyword,
     Opaque,
     ReadError,
     Scope,
-    Source,
     TypeRef,
-    _builtin,
 )
+from asterlite.catalog.language.convert import FORMAT, ROOT_TYPE, Converter
+from asterlite.catalog.language.reader import CatalogueReader, Source
+from asterlite.catalog.language.subset_values import _builtin
 
 PIECE = re.compile(r"(?m)^(?=#& MODIF )")
 # Accas's rule classes under the names old catalogues write -> the reader's kinds

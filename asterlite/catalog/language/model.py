@@ -11,7 +11,10 @@ A command is a dict::
     {"kind": "OPER"|"MACRO"|"PROC"|"FORM"|"FUNCTION",
      "reentrant": "n"|"o"|"f"[":KEYWORD"], "sd_prod": {...},
      "rules": [[RULE, names...], ...], "legacy": [names...],
-     "entries": {NAME: entry}}
+     "supervisor": [names...], "entries": {NAME: entry}}
+
+(``supervisor``: arguments the command's Python wrapper takes out before
+the syntax is checked, ``FIN(exit=True)``)
 
 and an entry ``{"k": "S"|"F"|"B", ...}``: a simple keyword (``typ``,
 ``statut``, ``defaut``, ``into``, ``min``, ``max``, ``val_min``,
@@ -26,14 +29,14 @@ import json
 from functools import cache
 from pathlib import Path
 
+import asterlite.catalogues.language as package
+
 DATA_PACKAGE = "asterlite.catalogues.language"
 LEGACY_LAST = 12  # the last version whose catalogue was one cata.py (catapy/)
 OLD_LAYOUT_DATA = {10: 11}  # old-layout versions read with another's data
 
 
 def _data_folder() -> Path:
-    import asterlite.catalogues.language as package
-
     return Path(package.__path__[0])
 
 

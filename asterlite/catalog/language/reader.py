@@ -25,166 +25,54 @@ stay :class:`Function` objects whose syntax tree the generator analyses
 from __future__ import annotations
 
 import ast
-import math
-import string
-from collections.abc import Callable
-from dataclasses import dataclass, field
+
+from asterlite.catalog.language.cata_objects import (
+    ClassObj,
+    CommandDef,
+    EnumMember,
+    Function,
+    Instance,
+    Opaque,
+    OrderedSet,
+    ReadError,
+    RuleDef,
+    Scope,
+    TypeRef,
+    UnitRef,
+    ValidatorDef,
+    _user_macro,
+)
+from asterlite.catalog.language.subset_values import (
+    METHODS,
+    STUB_MODULES,
+    BoundBuiltin,
+    BoundMethod,
+    Builtin,
+    Method,
+    _as_load,
+    _as_mapping,
+    _binary,
+    _bind,
+    _builtin,
+    _command_maker,
+    _compare,
+    _force_list,
+    _isinstance,
+    _iterate,
+    _keyword_maker,
+    _make_dict,
+    _maker,
+    _number,
+    _plain,
+    _range,
+    _repr,
+    _sorted,
+    _str,
+    _truth,
+)
 
 MAX_STEPS = 5_000_000  # expression and statement evaluations per module read
 MAX_DEPTH = 60  # nested calls of catalogue functions
-MAX_SEQUENCE = 1_000_000  # items a range or a repetition may make
-
-
-class ReadError(Exception):
-    """A construct the reader does not evaluate, or a catalogue error."""
-
-
-# ----------------------------------------------------------------- data objects
-
-
-class CataObject:
-    """Something a catalogue call built (``SIMP(...)``, a rule, a type...)."""
-
-
-@dataclass(eq=False)
-class Keyword(CataObject):
-    """``SIMP``, ``FACT`` or ``BLOC`` with its keyword arguments, in order."""
-
-    kind: str  # "SIMP", "FACT", "BLOC"
-    options: dict
-
-
-@dataclass(eq=False)
-class CommandDef(CataObject):
-    """``OPER``, ``MACRO``, ``PROC``, ``FORM`` with its keyword arguments."""
-
-    kind: str
-    options: dict
-
-    # attributes code_aster's catalogues read from another command
-    def attribute(self, name: str):
-        if name in ("entites", "entities"):
-            return {k: v for k, v in self.options.items() if isinstance(v, Keyword)}
-        if name in ("regles", "rules"):
-            return self.options.get("regles", ())
-        if name in ("nom", "name"):
-            return self.options.get("nom")
-        raise ReadError(f"attribute {name} of a command")
-
-
-@dataclass(eq=False)
-class UserMacroDef(CataObject):
-    """``UserMacro(name, catalogue, ops)``: a command whose catalogue is
-    defined beside its Python implementation (code_aster 15-17)."""
-
-    name: str
-    catalogue: object
-
-
-def _user_macro(name, catalogue, ops=None):
-    return UserMacroDef(name, catalogue)
-
-
-@dataclass(eq=False)
-class RuleDef(CataObject):
-    kind: str  # code_aster's class name: AtLeastOne, ExactlyOne...
-    args: tuple
-    kwargs: dict
-
-
-@dataclass(eq=False)
-class ValidatorDef(CataObject):
-    kind: str  # NoRepeat, LongStr, OrdList...
-    args: tuple
-    kwargs: dict
-
-
-@dataclass(eq=False)
-class TypeRef(CataObject):
-    """A class of ``DataStructure.py``: a concept type, or a mesh entity."""
-
-    name: str
-    bases: tuple[str, ...]
-
-    def __repr__(self) -> str:
-        return self.name
-
-
-@dataclass(eq=False)
-class UnitRef(CataObject):
-    """``UnitType(filter)``: a logical unit number (or ``{unit: file}``)."""
-
-    filter: str | None
-
-
-@dataclass(eq=False)
-class Opaque(CataObject):
-    """A name the reader knows exists but never evaluates (a stub module,
-    ``tr``'s translator...): using it is a :class:`ReadError`."""
-
-    name: str
-
-
-@dataclass(eq=False)
-class Function(CataObject):
-    """A ``def`` of a catalogue module: run by the reader when the catalogue
-    calls it at module level, kept as a syntax tree otherwise."""
-
-    node: ast.FunctionDef
-    scope: Scope
-    module: str
-    bound: object = None  # the class or instance of a method
-
-    @property
-    def name(self) -> str:
-        return self.node.name
-
-
-@dataclass(eq=False)
-class ClassObj(CataObject):
-    name: str
-    attrs: dict
-    bases: tuple
-    enum: bool = False
-    members: list = field(default_factory=list)
-
-
-@dataclass(eq=False)
-class Instance(CataObject):
-    cls: ClassObj
-    attrs: dict = field(default_factory=dict)
-
-
-@dataclass(eq=False)
-class EnumMember(CataObject):
-    cls: ClassObj
-    name: str
-    value: object
-
-    def __repr__(self) -> str:
-        return f"{self.cls.name}.{self.name}"
-
-
-class OrderedSet:
-    """``set`` with a deterministic order: insertion order (Python's own set
-    of strings is ordered by a per-process hash)."""
-
-    def __init__(self, items=()):
-        self.items = dict.fromkeys(items)
-
-    def __iter__(self):
-        return iter(list(self.items))
-
-    def __len__(self):
-        return len(self.items)
-
-    def __contains__(self, item):
-        return item in self.items
-
-    def __eq__(self, other):
-        return isinstance(other, OrderedSet) and set(self.items) == set(other.items)
-
-    __hash__ = None
 
 
 # ------------------------------------------------------------------- sources
@@ -199,25 +87,6 @@ class Source:
 
     def listing(self, folder: str) -> list[str]:
         raise NotImplementedError
-
-
-# ------------------------------------------------------------------- scopes
-
-
-class Scope:
-    """Names of a module, a function call, a class body or a comprehension."""
-
-    def __init__(self, names: dict | None = None, parent: Scope | None = None):
-        self.names = names if names is not None else {}
-        self.parent = parent
-
-    def lookup(self, name: str):
-        scope = self
-        while scope is not None:
-            if name in scope.names:
-                return scope.names[name]
-            scope = scope.parent
-        raise ReadError(f"name {name!r} is not defined")
 
 
 class _Return(Exception):
@@ -901,343 +770,3 @@ class CatalogueReader:
 
     def _e_Lambda(self, node, scope, module):
         raise ReadError(f"lambda (line {node.lineno})")
-
-
-# ------------------------------------------------------------------ callables
-
-
-@dataclass(eq=False)
-class Builtin(CataObject):
-    fn: Callable
-    name: str = "builtin"
-    pytype: type | None = None  # the Python type it stands for in isinstance()
-
-
-def _builtin(fn: Callable) -> Builtin:
-    return Builtin(fn, getattr(fn, "__name__", "builtin"))
-
-
-@dataclass(eq=False)
-class Method(CataObject):
-    """A ``@classmethod`` / ``@staticmethod`` in a class body."""
-
-    function: Function
-    kind: str  # "classmethod" or "staticmethod"
-
-    @property
-    def name(self) -> str:
-        return self.function.name
-
-
-@dataclass(eq=False)
-class BoundMethod(CataObject):
-    function: Function
-    owner: object
-    kind: str  # "class" or "instance"
-
-
-def _bind(value, cls: ClassObj):
-    if isinstance(value, Method):
-        if value.kind == "classmethod":
-            return BoundMethod(value.function, cls, "class")
-        return Method(value.function, "static")
-    return value
-
-
-def _maker(cls, kind: str):
-    def make(*args, **kwargs):
-        return cls(kind, tuple(args), dict(kwargs))
-
-    return make
-
-
-def _keyword_maker(kind: str):
-    def make(**options):
-        return Keyword(kind, dict(options))
-
-    return make
-
-
-def _command_maker(kind: str):
-    def make(**options):
-        return CommandDef(kind, dict(options))
-
-    return make
-
-
-@dataclass(eq=False)
-class BoundBuiltin(CataObject):
-    owner: object
-    method: str
-
-    def call(self, args: list, kwargs: dict):
-        owner, method = self.owner, self.method
-        if isinstance(owner, str) and method == "format":
-            return _format(owner, args, kwargs)
-        if isinstance(owner, OrderedSet):
-            return _set_method(owner, method, args)
-        if isinstance(owner, str) and method == "join":
-            return owner.join(_iterate(args[0]))
-        if method == "sort" and (args or set(kwargs) - {"reverse"}):
-            raise ReadError("list.sort with a key")
-        if isinstance(owner, (list, dict)) and method in ("extend", "update"):
-            args = [list(_iterate(args[0])) if method == "extend" else _as_mapping(args[0])]
-        try:
-            return getattr(owner, method)(*args, **kwargs)
-        except (TypeError, ValueError, KeyError, IndexError, AttributeError) as error:
-            raise ReadError(f"{type(owner).__name__}.{method}: {error}") from None
-
-
-METHODS = {
-    str: frozenset(
-        "startswith endswith upper lower split rsplit join replace strip lstrip rstrip "
-        "format zfill capitalize title find count isdigit isupper islower splitlines".split()
-    ),
-    list: frozenset("append extend insert pop remove index count copy reverse sort".split()),
-    tuple: frozenset(("index", "count")),
-    dict: frozenset("get keys values items copy update pop setdefault".split()),
-    OrderedSet: frozenset(
-        "add update union difference intersection isdisjoint issubset copy discard remove".split()
-    ),
-}
-
-
-def _set_method(owner: OrderedSet, method: str, args: list):
-    if method == "add":
-        owner.items[args[0]] = None
-        return None
-    if method == "update":
-        for arg in args:
-            owner.items.update(dict.fromkeys(_iterate(arg)))
-        return None
-    if method in ("discard", "remove"):
-        owner.items.pop(args[0], None)
-        return None
-    if method == "copy":
-        return OrderedSet(owner)
-    other = [list(_iterate(a)) for a in args]
-    if method == "union":
-        return OrderedSet([*owner, *(i for o in other for i in o)])
-    if method == "difference":
-        return OrderedSet(i for i in owner if not any(i in o for o in other))
-    if method == "intersection":
-        return OrderedSet(i for i in owner if all(i in o for o in other))
-    if method == "isdisjoint":
-        return not any(i in other[0] for i in owner)
-    if method == "issubset":
-        return all(i in other[0] for i in owner)
-    raise ReadError(f"set.{method}")
-
-
-# ------------------------------------------------------------------ helpers
-
-
-def _iterate(value):
-    if isinstance(value, (list, tuple, str, OrderedSet)):
-        return iter(value)
-    if isinstance(value, dict):
-        return iter(list(value))
-    if isinstance(value, ClassObj) and value.enum:
-        return iter(value.members)
-    if isinstance(value, type({}.items())) or isinstance(value, type({}.keys())):
-        return iter(list(value))
-    if isinstance(value, type({}.values())):
-        return iter(list(value))
-    raise ReadError(f"iterating over {type(value).__name__}")
-
-
-def _as_mapping(value) -> dict:
-    if isinstance(value, dict):
-        return value
-    raise ReadError(f"** of a {type(value).__name__}")
-
-
-def _make_dict(*args, **kwargs):
-    result = {}
-    if args:
-        source = args[0]
-        if isinstance(source, dict):
-            result.update(source)
-        else:
-            result.update(list(_iterate(source)))
-    result.update(kwargs)
-    return result
-
-
-def _sorted(items, reverse=False):
-    return sorted(_iterate(items), reverse=reverse)
-
-
-def _range(*args):
-    result = range(*args)
-    if len(result) > MAX_SEQUENCE:
-        raise ReadError("range too long")
-    return list(result)
-
-
-def _force_list(values):
-    if isinstance(values, (list, tuple)):
-        return list(values)
-    return [values]
-
-
-def _isinstance(value, kinds) -> bool:
-    kinds = kinds if isinstance(kinds, tuple) else (kinds,)
-    for kind in kinds:
-        if isinstance(kind, ClassObj):
-            if isinstance(value, EnumMember) and value.cls is kind:
-                return True
-            if isinstance(value, Instance) and value.cls is kind:
-                return True
-        elif isinstance(kind, Builtin) and kind.pytype is not None:
-            if isinstance(value, kind.pytype) and not isinstance(value, bool):
-                return True
-        elif isinstance(kind, Opaque) and kind.name == "object":
-            return True
-    return False
-
-
-def _str(value=""):
-    return str(_plain(value))
-
-
-def _plain(value):
-    if isinstance(value, (str, int, float, bool, complex)) or value is None:
-        return value
-    if isinstance(value, EnumMember):
-        return f"{value.cls.name}.{value.name}"
-    if isinstance(value, (list, tuple)):
-        return type(value)(_plain(v) for v in value)
-    raise ReadError(f"text of a {type(value).__name__}")
-
-
-def _repr(value) -> str:
-    return repr(_plain(value))
-
-
-def _format(text: str, args: list, kwargs: dict) -> str:
-    for _, field_name, spec, _ in string.Formatter().parse(text):
-        if field_name is None:
-            continue
-        if any(c in field_name for c in ".[") or (spec and "{" in spec):
-            raise ReadError("format field with an attribute or an index")
-    return text.format(*map(_plain, args), **{k: _plain(v) for k, v in kwargs.items()})
-
-
-def _truth(value) -> bool:
-    if isinstance(value, (CataObject,)) and not isinstance(value, OrderedSet):
-        return True
-    if isinstance(value, OrderedSet):
-        return len(value) > 0
-    return bool(value)
-
-
-def _number(value):
-    if isinstance(value, (int, float, complex)):
-        return value
-    raise ReadError(f"arithmetic on a {type(value).__name__}")
-
-
-def _binary(op: ast.operator, left, right):
-    if isinstance(left, OrderedSet) or isinstance(right, OrderedSet):
-        if isinstance(op, ast.BitOr):
-            return OrderedSet([*left, *right])
-        if isinstance(op, ast.Sub):
-            return OrderedSet(i for i in left if i not in right)
-        if isinstance(op, ast.BitAnd):
-            return OrderedSet(i for i in left if i in right)
-        raise ReadError("set operator")
-    if isinstance(op, ast.Add):
-        if isinstance(left, (list, tuple, str)) and type(left) is type(right):
-            if len(left) + len(right) > MAX_SEQUENCE:
-                raise ReadError("sequence too long")
-            return left + right
-        if isinstance(left, dict) or isinstance(right, dict):
-            raise ReadError("+ of dicts")
-        return _number(left) + _number(right)
-    if isinstance(op, ast.Mult):
-        if isinstance(left, (list, tuple, str)) and isinstance(right, int):
-            left, right = right, left
-        if isinstance(right, (list, tuple, str)) and isinstance(left, int):
-            if left * len(right) > MAX_SEQUENCE:
-                raise ReadError("sequence too long")
-            return left * right
-        return _number(left) * _number(right)
-    if isinstance(op, ast.Mod) and isinstance(left, str):
-        if any(c in left for c in "*"):
-            raise ReadError("% with a star width")
-        values = right if isinstance(right, tuple) else (right,)
-        return left % tuple(map(_plain, values))
-    operators = {
-        ast.Sub: lambda a, b: a - b,
-        ast.Div: lambda a, b: a / b,
-        ast.FloorDiv: lambda a, b: a // b,
-        ast.Mod: lambda a, b: a % b,
-        ast.Pow: _power,
-    }
-    for kind, function in operators.items():
-        if isinstance(op, kind):
-            try:
-                return function(_number(left), _number(right))
-            except (ZeroDivisionError, OverflowError) as error:
-                raise ReadError(str(error)) from None
-    if isinstance(op, ast.BitOr) and isinstance(left, dict) and isinstance(right, dict):
-        return {**left, **right}
-    raise ReadError(f"operator {type(op).__name__}")
-
-
-def _power(a, b):
-    if isinstance(b, int) and abs(b) > 1000:
-        raise ReadError("exponent too large")
-    return a**b
-
-
-def _compare(op: ast.cmpop, left, right) -> bool:
-    if isinstance(op, (ast.In, ast.NotIn)):
-        if isinstance(right, ClassObj) and right.enum:
-            found = left in right.members
-        elif isinstance(right, (list, tuple, dict, str, OrderedSet)):
-            if isinstance(right, str) and not isinstance(left, str):
-                raise ReadError("'in' a text of something else than a text")
-            found = left in right
-        else:
-            found = left in list(_iterate(right))
-        return found if isinstance(op, ast.In) else not found
-    if isinstance(op, ast.Is):
-        return left is right
-    if isinstance(op, ast.IsNot):
-        return left is not right
-    if isinstance(op, ast.Eq):
-        return _equal(left, right)
-    if isinstance(op, ast.NotEq):
-        return not _equal(left, right)
-    functions = {
-        ast.Lt: lambda a, b: a < b,
-        ast.LtE: lambda a, b: a <= b,
-        ast.Gt: lambda a, b: a > b,
-        ast.GtE: lambda a, b: a >= b,
-    }
-    try:
-        return functions[type(op)](left, right)
-    except TypeError as error:
-        raise ReadError(str(error)) from None
-
-
-def _equal(left, right) -> bool:
-    if isinstance(left, CataObject) or isinstance(right, CataObject):
-        return left is right
-    return left == right
-
-
-def _as_load(target: ast.expr) -> ast.expr:
-    """An assignment target read as a value (``x += 1``)."""
-    node = ast.parse(ast.unparse(target), mode="eval").body
-    return ast.copy_location(node, target)
-
-
-# modules catalogues import besides their own: names that exist, never evaluated
-STUB_MODULES = {
-    "math": {"pi": math.pi},
-    "enum": {"Enum": Opaque("Enum")},
-    "typing": {},
-}

@@ -27,7 +27,6 @@ undetermined: its keywords are accepted, neither required nor defaulted.
 
 from __future__ import annotations
 
-import cmath
 import difflib
 import math
 from dataclasses import dataclass, field
@@ -35,6 +34,22 @@ from dataclasses import dataclass, field
 from asterlite.catalog.language import expression
 from asterlite.catalog.language.expression import UNDETERMINED, Scope, holds
 from asterlite.catalog.language.model import Language
+from asterlite.catalog.language.value_checks import (
+    _bounds_problem,
+    _in_choices,
+    _into_message,
+    _is_int,
+    _is_output,
+    _is_real,
+    _names,
+    _plain,
+    _rule_message,
+    _unit_number,
+    _validator_problem,
+    decode,
+    is_undefined,
+)
+from asterlite.catalog.values import describe_types, describe_value
 from asterlite.errors import Location, ValidationError
 from asterlite.lang.values import CO, CallSite, Unknown
 
@@ -63,23 +78,6 @@ def _is_sequence(value) -> bool:
     return isinstance(value, (list, tuple)) or (
         type(value).__module__ == "numpy" and type(value).__name__ == "ndarray"
     )
-
-
-def _plain(value):
-    """numpy scalars and arrays as Python values; other values unchanged."""
-    if type(value).__module__ == "numpy" and hasattr(value, "tolist"):
-        return value.tolist()
-    return value
-
-
-def is_undefined(value) -> bool:
-    """code_aster's "keyword not given": None, an empty list, ``[None]``."""
-    value = _plain(value)
-    if value is None:
-        return True
-    if isinstance(value, (list, tuple)):
-        return len(value) == 0 or (len(value) == 1 and value[0] is None)
-    return False
 
 
 def _force_list(value) -> list:
@@ -114,8 +112,6 @@ def concept_types(value):
 
 
 def describe(value) -> str:
-    from asterlite.catalog.values import describe_value
-
     return describe_value(value)
 
 
@@ -162,6 +158,9 @@ class _Checker:
         # code_aster 13-15's checker reads a keyword's max as given (none: no
         # limit on a sequence's length); from 16 on it defaults to 1
         self.count_max_default = None if 13 <= language.version <= 15 else 1
+        # and a factor keyword without max= any number of occurrences (15's
+        # SyntaxChecker: 1e9); from 16 on one
+        self.factor_max_default = MANY if 13 <= language.version <= 15 else 1
 
     # ------------------------------------------------------------ findings
     def fail(self, level: _Level, message: str, keyword: str | None = None) -> None:
@@ -172,7 +171,9 @@ class _Checker:
     # ---------------------------------------------------------------- run
     def run(self, kwargs: dict, reuse) -> CallCheck:
         result = CallCheck(findings=self.findings)
-        kwargs = {k: v for k, v in kwargs.items() if k != "reuse"}
+        # reuse, and what the command's wrapper takes out before checking
+        taken = {"reuse", *(self.command or {}).get("supervisor", ())}
+        kwargs = {k: v for k, v in kwargs.items() if k not in taken}
         top = _Level(
             self.command,
             {},
@@ -383,7 +384,7 @@ class _Checker:
                 level, f"expected one or more _F(...) occurrences, got {describe(value)}", key
             )
             return
-        low, high = entry.get("min", 0), entry.get("max", 1)
+        low, high = entry.get("min", 0), entry.get("max", self.factor_max_default)
         if len(occurrences) < low:
             self.fail(
                 level, f"expects at least {_count(low, 'occurrence')}, got {len(occurrences)}", key
@@ -512,8 +513,6 @@ class _Checker:
         return self.language.is_type(name) and self.language.is_subtype(name, "GEOM")
 
     def _describe_types(self, types) -> str:
-        from asterlite.catalog.values import describe_types
-
         names = tuple("TXM" if self._is_entity(t) else t for t in types)
         return describe_types(names)
 
@@ -636,23 +635,6 @@ def _default(entry: dict):
     return decode(value) if value is not None else None
 
 
-def decode(value):
-    """A value of the data as Python (tagged complex, non-finite floats, dicts)."""
-    if isinstance(value, dict):
-        if "complex" in value:
-            real, imag = (decode(v) for v in value["complex"])
-            return complex(real, imag)
-        if "float" in value:
-            return float(value["float"])
-        if "dict" in value:
-            return {decode(k): decode(v) for k, v in value["dict"]}
-        if "type" in value:
-            return value
-    if isinstance(value, list):
-        return [decode(v) for v in value]
-    return value
-
-
 def _fact_default(entry: dict):
     if entry.get("statut", "f") not in ("c", "d"):
         return None
@@ -696,209 +678,3 @@ def _unknown_message(key: str, vocabulary: list[str], language: Language) -> str
 
 def _count(number: int, noun: str) -> str:
     return f"{number} {noun}" if number == 1 else f"{number} {noun}s"
-
-
-def _is_int(item) -> bool:
-    if isinstance(item, int):  # bool too, as code_aster (issubclass(bool, int))
-        return True
-    return isinstance(item, float) and math.isfinite(item) and int(item) == item
-
-
-def _is_real(item) -> bool:
-    return isinstance(item, (int, float))
-
-
-def _unit_number(item):
-    if isinstance(item, int) and not isinstance(item, bool):
-        return item
-    if isinstance(item, bool):
-        return int(item)
-    if (
-        isinstance(item, dict)
-        and len(item) == 1
-        and isinstance(next(iter(item)), int)
-        and isinstance(next(iter(item.values())), str)
-    ):
-        return next(iter(item))
-    return None
-
-
-def _in_choices(item, into) -> bool:
-    choices = [decode(c) for c in into]
-    try:
-        return item in choices
-    except TypeError:
-        return False
-
-
-def _into_message(item, into) -> str:
-    choices = [decode(c) for c in into]
-    shown = ", ".join(map(repr, choices[:30])) + (", ..." if len(choices) > 30 else "")
-    message = f"{item!r} is not one of: {shown}"
-    texts = [c for c in choices if isinstance(c, str)]
-    if isinstance(item, str):
-        close = difflib.get_close_matches(item, texts, n=1, cutoff=0.6)
-        if not close:
-            close = [c for c in texts if c.upper() == item.upper()]
-        if close:
-            message += f", did you mean {close[0]!r}?"
-    return message
-
-
-def _bounds_problem(entry: dict, item) -> str | None:
-    low, high = entry.get("val_min"), entry.get("val_max")
-    if low is None and high is None:
-        return None
-    low, high = decode(low), decode(high)
-    if isinstance(item, bool) or not isinstance(item, (int, float, complex)):
-        return None
-    if isinstance(item, complex) or isinstance(low, complex) or isinstance(high, complex):
-        return _complex_bounds(entry, item, low, high)
-    if high is not None:
-        included = entry.get("val_max_included", True)
-        if item > high or (item == high and not included):
-            sign = "<=" if included else "<"
-            return f"expected a value {sign} {high!r}, got {item!r}"
-    if low is not None:
-        included = entry.get("val_min_included", True)
-        if item < low or (item == low and not included):
-            sign = ">=" if included else ">"
-            return f"expected a value {sign} {low!r}, got {item!r}"
-    return None
-
-
-def _complex_bounds(entry, item, low, high) -> str | None:
-    item = complex(item)
-    if high is not None:
-        high = complex(high)
-        included = entry.get("val_max_included", True)
-        for part, bound in ((item.real, high.real), (item.imag, high.imag)):
-            if part > bound or (part == bound and not included):
-                return f"real and imaginary parts must be at most those of {high!r}, got {item!r}"
-    if low is not None:
-        low = complex(low)
-        included = entry.get("val_min_included", True)
-        for part, bound in ((item.real, low.real), (item.imag, low.imag)):
-            if part < bound or (part == bound and not included):
-                return f"real and imaginary parts must be at least those of {low!r}, got {item!r}"
-    return None
-
-
-def _finite(item) -> bool:
-    if isinstance(item, complex):
-        return cmath.isfinite(item)
-    return not isinstance(item, float) or math.isfinite(item)
-
-
-def _validator_problem(validator: list, items: list) -> str | None:
-    """code_aster's validators (Language/Validators.py) over the values given."""
-    kind, args = validator[0], validator[1:]
-    values = [v for v in items if v is not Unknown]
-    if len(values) != len(items) and kind in ("Compulsory", "Together", "OrdList", "NoRepeat"):
-        return None
-    try:
-        if kind == "NoRepeat":
-            if len(set(values)) != len(values):
-                return f"all the values must be different, got {values!r}"
-        elif kind == "LongStr":
-            for text in values:
-                if isinstance(text, str) and not args[0] <= len(text) <= args[1]:
-                    return f"text length must be in [{args[0]}, {args[1]}]: {text!r}"
-        elif kind == "OrdList":
-            reverse = args and args[0] == "decreasing"
-            for a, b in zip(values, values[1:], strict=False):
-                if a is not None and b is not None and (a < b if reverse else a > b):
-                    order = "decreasing" if reverse else "increasing"
-                    return f"the values must be in {order} order: {a!r} followed by {b!r}"
-        elif kind == "Compulsory":
-            missing = [v for v in decode(args[0]) if v not in values]
-            if missing:
-                return f"values required: {', '.join(map(str, missing))}"
-        elif kind == "Together":
-            expected = decode(args[0])
-            missing = [v for v in expected if v not in values]
-            if missing and len(missing) != len(expected):
-                return f"values that go together are missing: {', '.join(map(str, missing))}"
-        elif kind == "Absent":
-            present = [v for v in decode(args[0]) if v in values]
-            if present:
-                return f"values not allowed: {', '.join(map(str, present))}"
-        elif kind == "NotEqualTo":
-            if any(v == decode(args[0]) for v in values):
-                return f"value {decode(args[0])!r} is not allowed"
-        elif kind == "AtMostOneStartsWith":
-            found = {v for v in values if isinstance(v, str) and v.startswith(args[0])}
-            if len(found) > 1:
-                return f"at most one value may start with {args[0]!r}, got {sorted(found)}"
-        elif kind == "AndVal":
-            for inner in args:
-                message = _validator_problem(inner, items)
-                if message:
-                    return message
-        elif kind == "OrVal":
-            messages = [_validator_problem(inner, items) for inner in args]
-            if all(messages):
-                return " or ".join(messages)
-    except TypeError:  # values code_aster's validator could not compare either
-        return f"values cannot be checked by {kind}"
-    return None
-
-
-RULE_TEXT = {
-    "UN_PARMI": "exactly one of {names} must be given",
-    "AU_MOINS_UN": "at least one of {names} must be given",
-    "EXCLUS": "at most one of {names} may be given",
-    "PRESENT_PRESENT": "{first} requires {others}",
-    "PRESENT_ABSENT": "{first} excludes {others}",
-    "ENSEMBLE": "{names} go together: all or none",
-    "NON_VIDE": "at least one keyword must be given",
-}
-
-
-def _rule_message(rule: list, user: dict) -> str | None:
-    """None when ``rule`` holds on ``user`` (code_aster's Rules.py), else a message.
-    UN_PARMI and AU_MOINS_UN with defaults insert them when none is given."""
-    kind = rule[0]
-    names = [n for n in rule[1:] if isinstance(n, str)]
-    defaults = next((r["defaults"] for r in rule[1:] if isinstance(r, dict)), None)
-    given = [n for n in names if not is_undefined(user.get(n))]
-    count = len(given)
-    if kind in ("UN_PARMI", "AU_MOINS_UN") and count == 0 and defaults:
-        for key, value in defaults.items():
-            user[key] = decode(value)
-        given = [n for n in names if not is_undefined(user.get(n))]
-        count = len(given)
-    if kind == "UN_PARMI":
-        holds_ = count == 1
-    elif kind == "AU_MOINS_UN":
-        holds_ = count >= 1
-    elif kind == "EXCLUS":
-        holds_ = count <= 1
-    elif kind == "PRESENT_PRESENT":
-        holds_ = not names or names[0] not in user or count == len(names)
-    elif kind == "PRESENT_ABSENT":
-        holds_ = not names or names[0] not in user or count == 1
-    elif kind == "ENSEMBLE":
-        holds_ = count in (0, len(names))
-    elif kind == "NON_VIDE":
-        holds_ = bool(user)
-    else:
-        holds_ = True
-    if holds_:
-        return None
-    text = RULE_TEXT.get(kind, kind + " {names}").format(
-        names=", ".join(names), first=names[0] if names else "", others=", ".join(names[1:])
-    )
-    if given and kind in ("UN_PARMI", "EXCLUS", "ENSEMBLE", "PRESENT_ABSENT"):
-        text += f", got {', '.join(given)}"
-    elif kind == "PRESENT_PRESENT":
-        text += f", missing {', '.join(n for n in names[1:] if n not in given)}"
-    return f"{text} ({kind})"
-
-
-def _is_output(value) -> bool:
-    return isinstance(value, CO)
-
-
-def _names(rule: list) -> list[str]:
-    return [n for n in rule[1:] if isinstance(n, str)]

@@ -5,12 +5,13 @@ whose normal is that axis). With ``d`` the signed normal distance (the
 elongation of the device, > 0 when the nodes move apart) and ``v`` its
 rate, the force on node 1 along the normal n is::
 
-    F = -K2 d - (K1 - K2) d / sqrt(1 + (K1 d / SEUIL_FX)^2)
-        - C sign(v) |v d / DX_MAX|^PUIS_ALPHA
+    F = -k2 d - (k1 - k2) d / sqrt(1 + (k1 d / f_s)^2)
+        - c sign(v) |v d / d_max|^a
 
 (node 2 receives -F n). The first two terms are an elastic law with
-initial stiffness K1 that saturates towards the threshold SEUIL_FX and then
-stiffens again with K2; the last is a viscous term that code_aster writes
+initial stiffness k1 that saturates towards the threshold f_s and then
+stiffens again with the final stiffness k2; the last is a viscous term of
+coefficient c, exponent a and reference stroke d_max that code_aster writes
 with the product |v d| (not |v|), kept as is. Below machine precision in
 |v| the viscous term is dropped, as code_aster does.
 
@@ -20,11 +21,13 @@ Stateless: no internal memory, only archived quantities.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
 from asterlite.dynamics.laws.tabulated import LawError
+from asterlite.errors import field as named
 
 # Parameters
 P_K1, P_K2, P_SEUIL_FX, P_C, P_ALPHA, P_DX_MAX = range(6)
@@ -47,7 +50,7 @@ def antiseismic_force(params, d, v):
     distance relative to rest, ``v`` its rate (relative normal velocity)."""
     k1, k2 = params[P_K1], params[P_K2]
     seuil = params[P_SEUIL_FX]
-    # saturating elastic part; a zero threshold is its limit (no K1 - K2 part)
+    # saturating elastic part; a zero threshold is its limit (no k1 - k2 part)
     if seuil != 0.0:
         f = -k2 * d - (k1 - k2) * d / math.sqrt(1.0 + (k1 * d / seuil) ** 2)
     else:
@@ -72,26 +75,39 @@ def elastic_energy(params, d):
     return energy
 
 
-def prepare_anti_sism(kw) -> np.ndarray:
-    """Parameter array from a validated ANTI_SISM occurrence (defaults filled)."""
+@dataclass(frozen=True)
+class AntiSismParameters:
+    """The device's data (N, m, s): initial and final stiffnesses, the force
+    threshold between them, the viscous coefficient and exponent, and the
+    stroke that scales the viscous term."""
+
+    initial_stiffness: float
+    final_stiffness: float
+    threshold: float
+    viscosity: float
+    exponent: float
+    stroke: float
+
+
+def prepare_anti_sism(data: AntiSismParameters) -> np.ndarray:
+    """Parameter array of the device, after code_aster's checks."""
     p = np.zeros(N_PARAMS)
-    for index, key in (
-        (P_K1, "RIGI_K1"),
-        (P_K2, "RIGI_K2"),
-        (P_SEUIL_FX, "SEUIL_FX"),
-        (P_C, "C"),
-        (P_ALPHA, "PUIS_ALPHA"),
-        (P_DX_MAX, "DX_MAX"),
-    ):
-        p[index] = float(kw.get(key, 0.0 if key != "DX_MAX" else 1.0))
+    p[P_K1] = float(data.initial_stiffness)
+    p[P_K2] = float(data.final_stiffness)
+    p[P_SEUIL_FX] = float(data.threshold)
+    p[P_C] = float(data.viscosity)
+    p[P_ALPHA] = float(data.exponent)
+    p[P_DX_MAX] = float(data.stroke)
     if p[P_K1] < 0.0 or p[P_K2] < 0.0:
-        raise LawError("ANTI_SISM: RIGI_K1 and RIGI_K2 must be >= 0")
+        raise LawError(
+            f"ANTI_SISM: {named('initial_stiffness')} and {named('final_stiffness')} must be >= 0"
+        )
     if p[P_SEUIL_FX] < 0.0:
-        raise LawError("ANTI_SISM: SEUIL_FX must be >= 0")
+        raise LawError(f"ANTI_SISM: {named('threshold')} must be >= 0")
     if p[P_C] < 0.0 or p[P_ALPHA] < 0.0:
-        raise LawError("ANTI_SISM: C and PUIS_ALPHA must be >= 0")
+        raise LawError(f"ANTI_SISM: {named('viscosity')} and {named('exponent')} must be >= 0")
     if p[P_DX_MAX] <= 0.0:
-        raise LawError("ANTI_SISM: DX_MAX must be > 0 (it divides the viscous term)")
+        raise LawError(f"ANTI_SISM: {named('stroke')} must be > 0 (it divides the viscous term)")
     return p
 
 
@@ -99,9 +115,10 @@ def reference_distance(coord1, coord2, info: int = 1) -> float:
     """The 'gap' code_aster subtracts from the node distance along the axis.
 
     code_aster stores the squared node distance and takes its square root
-    only when INFO=2 (a quirk of its preparation routine); the distance is
-    then split as DIST_1 = DIST_2 = gap/2 of a BI_PLAN_Y connection with JEU=0.
-    Reproduced so that decks give code_aster's numbers; with INFO=2 (or unit
+    only when its information level is 2 (a quirk of its preparation
+    routine); the distance is then split in two equal halves of gap/2 on each
+    node of a BI_PLAN_Y connection with no play. Reproduced so that decks
+    give code_aster's numbers; with ``info=2`` (or unit
     distance) ``d`` is the true elongation.
     """
     squared = float(np.sum((np.asarray(coord2, float) - np.asarray(coord1, float)) ** 2))

@@ -1,9 +1,11 @@
 """CHOC_ELAS_TRAC: nonlinear elastic shock along the axis of two nodes.
 
-The 'length' of the discrete element is ld = L0 - DIST_1 - DIST_2 + (u2 - u1)·x
-with L0 the rest distance of the nodes along the axis x (node 1 -> node 2).
+The 'length' of the discrete element is ld = L0 - d1 - d2 + (u2 - u1)·x
+with L0 the rest distance of the nodes along the axis x (node 1 -> node 2)
+and d1, d2 the distances of the nodes to the contact surface (the shock's
+thicknesses).
 In contact (ld <= 0) the element pushes the nodes apart with the force
-F = FX(-ld) read on the user curve (with its own prolongations); otherwise
+F = f(-ld) read on the user's force curve (with its own prolongations); otherwise
 there is no force. Node 1 receives -F along x, node 2 +F. Elastic: no memory.
 
 Internal variables (VINT1, VINT2 as code_aster archives them; the rest is
@@ -13,13 +15,18 @@ coordinates of both nodes.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
 from asterlite.dynamics.laws.tabulated import LawError, function_table, unpack, value
+from asterlite.errors import field as named
 
-P_REST = 0  # L0 - DIST_1 - DIST_2
-P_FX = 1  # packed FX(DX)
+FORCE_CURVE = named("force_curve")
+
+P_REST = 0  # L0 - d1 - d2
+P_FX = 1  # packed force curve f(crushing)
 
 V_FORCE, V_LENGTH = 0, 1
 V_LOC1, V_LOC2 = 2, 5
@@ -30,7 +37,7 @@ VINT_NAMES = ("FORCE", "LONGUEUR", "DXLOC_1", "DYLOC_1", "DZLOC_1", "DXLOC_2", "
 @njit(cache=True)
 def elastic_shock_force(params, axial_elongation, state_out):
     """Axial force on node 1 (-F when in contact); ``axial_elongation``
-    = (u2 - u1)·x. NaN when FX is evaluated outside an EXCLU side."""
+    = (u2 - u1)·x. NaN when the force curve is evaluated outside an EXCLU side."""
     length = params[P_REST] + axial_elongation
     force = 0.0
     if length <= 0.0:
@@ -40,14 +47,27 @@ def elastic_shock_force(params, axial_elongation, state_out):
     return -force
 
 
-def prepare_choc_elas_trac(kw, rest_distance: float = 0.0) -> np.ndarray:
-    """Parameter array from a validated CHOC_ELAS_TRAC occurrence;
-    ``rest_distance``: the distance of the two nodes in the mesh."""
-    dist = float(kw.get("DIST_1") or 0.0) + float(kw.get("DIST_2") or 0.0)
-    if kw.get("FX") is None:
-        raise LawError("CHOC_ELAS_TRAC: FX (force vs crushing DX) is missing")
-    block = function_table(kw["FX"], "CHOC_ELAS_TRAC/FX")
+@dataclass(frozen=True)
+class ChocElasTracParameters:
+    """The shock's data: the force as a function of the crushing, and the
+    distances taken off the nodes' rest distance on each side (0 when not
+    given)."""
+
+    force_curve: object
+    distance_1: float
+    distance_2: float
+
+
+def prepare_choc_elas_trac(data: ChocElasTracParameters, rest_distance: float = 0.0) -> np.ndarray:
+    """Parameter array of the shock; ``rest_distance``: the distance of the
+    two nodes in the mesh."""
+    dist = float(data.distance_1) + float(data.distance_2)
+    if data.force_curve is None:
+        raise LawError(f"CHOC_ELAS_TRAC: {FORCE_CURVE} (force vs crushing DX) is missing")
+    block = function_table(data.force_curve, f"CHOC_ELAS_TRAC/{FORCE_CURVE}")
     x, y, _, _ = unpack(block)
     if np.any(y < 0.0):
-        raise LawError("CHOC_ELAS_TRAC/FX: the force must be >= 0 (a shock only pushes)")
+        raise LawError(
+            f"CHOC_ELAS_TRAC/{FORCE_CURVE}: the force must be >= 0 (a shock only pushes)"
+        )
     return np.concatenate([[float(rest_distance) - dist], block])

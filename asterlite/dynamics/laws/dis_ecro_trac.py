@@ -1,9 +1,10 @@
 """DIS_ECRO_TRAC: discrete element with a hardening force–displacement curve.
 
-FX = f(DX): axial law along the local x axis node 1 -> node 2 (isotropic
-hardening). FTAN = f(DTAN): the same law in the plane (y, z) orthogonal to
-the axis, with ECROUISSAGE='ISOTROPE' or 'CINEMATIQUE' (linear kinematic
-with the first hardening slope; the curve then has exactly 3 points).
+Axial force = f(axial elongation): the law along the local x axis node 1 ->
+node 2 (isotropic hardening). Tangential force = f(tangential displacement):
+the same law in the plane (y, z) orthogonal to the axis, with isotropic or
+linear kinematic hardening (linear kinematic with the first hardening
+slope; the curve then has exactly 3 points).
 
 The curve starts at (0, 0); its second point (dx0, fx0) is the elastic
 limit; slopes must decrease (code_aster's checks, EXCLU prolongations).
@@ -20,15 +21,18 @@ force (3).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
 from asterlite.dynamics.laws import rk54
 from asterlite.dynamics.laws.discrete_hardening import C_DX0, C_FX0, C_KINEMATIC, C_N, N_Y
 from asterlite.dynamics.laws.tabulated import LawError
+from asterlite.errors import field as named
 
 # Parameters: law, controls, then the curve block read by discrete_hardening
-P_AXIAL = 0  # 1.0: FX (axial), 0.0: FTAN (transverse)
+P_AXIAL = 0  # 1.0: axial law, 0.0: transverse law
 P_ITER_MAX, P_RESI = 1, 2
 P_SCALES = 3  # error scales of the 14 unknowns (code_aster's choice)
 P_CURVE = P_SCALES + N_Y  # curve block: kinematic flag, fx0, dx0, n, x..., y...
@@ -78,27 +82,35 @@ def hardening_force(params, relative_velocity, dt, state_in, state_out, rate, wo
     return 0.0, f[1], f[2], converged
 
 
-def prepare_dis_ecro_trac(kw) -> np.ndarray:
-    """Parameter array from a validated DIS_ECRO_TRAC occurrence (defaults filled)."""
-    axial = kw.get("FX") is not None
-    func = kw.get("FX") if axial else kw.get("FTAN")
-    key = "FX" if axial else "FTAN"
-    if func is None:
-        raise LawError("DIS_ECRO_TRAC: give FX or FTAN")
-    kinematic = False
-    if not axial:
-        hardening = kw.get("ECROUISSAGE")
-        if hardening not in ("ISOTROPE", "CINEMATIQUE"):
-            raise LawError("DIS_ECRO_TRAC: FTAN needs ECROUISSAGE='ISOTROPE' or 'CINEMATIQUE'")
-        kinematic = hardening == "CINEMATIQUE"
-    x, y = check_curve(func, key, kinematic)
+@dataclass(frozen=True)
+class DisEcroTracParameters:
+    """The element's data: its force-displacement curve (a DEFI_FONCTION or
+    a ``Curve``), axial (along x) or transverse (in the plane y, z), the
+    transverse curve's hardening (kinematic or isotropic), the local
+    integration's controls, and the name the messages give the curve."""
+
+    curve: object
+    axial: bool
+    kinematic: bool
+    max_iterations: int
+    tolerance: float
+    curve_label: str
+
+
+def prepare_dis_ecro_trac(data: DisEcroTracParameters) -> np.ndarray:
+    """Parameter array of the element, after code_aster's checks on its curve."""
+    axial = bool(data.axial)
+    kinematic = bool(data.kinematic) and not axial
+    x, y = check_curve(data.curve, axial, kinematic, data.curve_label)
     n = x.size
     p = np.zeros(P_CURVE + C_N + 1 + 2 * n)
     p[P_AXIAL] = 1.0 if axial else 0.0
-    p[P_ITER_MAX] = int(kw.get("ITER_INTE_MAXI", 20))
-    p[P_RESI] = float(kw.get("RESI_INTE", 1.0e-6))
+    p[P_ITER_MAX] = int(data.max_iterations)
+    p[P_RESI] = float(data.tolerance)
     if p[P_ITER_MAX] < 1 or p[P_RESI] <= 0.0:
-        raise LawError("DIS_ECRO_TRAC: ITER_INTE_MAXI must be >= 1 and RESI_INTE > 0")
+        raise LawError(
+            f"DIS_ECRO_TRAC: {named('max_iterations')} must be >= 1 and {named('tolerance')} > 0"
+        )
     fx0, dx0 = y[1], x[1]
     scales = np.empty(N_Y)
     scales[0:3] = fx0 / 10.0
@@ -116,16 +128,16 @@ def prepare_dis_ecro_trac(kw) -> np.ndarray:
     return p
 
 
-def check_curve(func, key, kinematic, precision=1.0e-10):
-    """(x, y) of the curve after code_aster's checks on DIS_ECRO_TRAC curves."""
-    label = f"DIS_ECRO_TRAC/{key}"
+def check_curve(func, axial, kinematic, label, precision=1.0e-10):
+    """(x, y) of the curve after code_aster's checks on DIS_ECRO_TRAC curves
+    (an axial curve is of DX, a transverse one of DTAN)."""
     x = np.asarray(getattr(func, "abscissas", None if not isinstance(func, tuple) else func[0]))
     y = np.asarray(getattr(func, "ordinates", None if not isinstance(func, tuple) else func[1]))
     if x.dtype == object or y.dtype == object:
         raise LawError(f"{label}: a function (DEFI_FONCTION) is expected")
     x, y = x.astype(float), y.astype(float)
-    para = getattr(func, "NOM_PARA", "DX" if key == "FX" else "DTAN")
-    expected = "DX" if key == "FX" else "DTAN"
+    expected = "DX" if axial else "DTAN"
+    para = getattr(func, "NOM_PARA", expected)
     problems = []
     if para != expected:
         problems.append(f"NOM_PARA must be {expected}, not {para}")

@@ -3,8 +3,8 @@
 Acts along the local x axis node 1 -> node 2. Over a time step the
 relative axial velocity is held constant; the total deformation rate of
 the element is ε̇ = -(v1 - v2)·x (elongation rate) and the Zener rates of
-``zener`` are integrated by ``rk54`` (local sub-steps, RESI_INTE,
-ITER_INTE_MAXI). The force σ (> 0 in tension) acts on node 1 along +x
+``zener`` are integrated by ``rk54`` (local sub-steps, the local
+integration's tolerance and iteration bound). The force σ (> 0 in tension) acts on node 1 along +x
 (towards node 2) and on node 2 along -x.
 
 Internal variables (code_aster's 11-value layout, VINT1..VINT11): local
@@ -14,14 +14,19 @@ the dissipated energy (VINT8..VINT11).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
 from asterlite.dynamics.laws import rk54
 from asterlite.dynamics.laws.tabulated import LawError
 from asterlite.dynamics.laws.zener import M_ALPHA, M_C, M_K2, M_S1, M_S3
+from asterlite.errors import field as named
 
-# Parameters: the Zener model (s1, K2, s3, C, alpha) then the local integration controls
+SERIES, BRANCH = named("series_flexibility"), named("branch_flexibility")
+
+# Parameters: the Zener model (s1, k2, s3, c, alpha) then the local integration controls
 P_MODEL = 0
 P_ITER_MAX, P_RESI = 5, 6
 N_PARAMS = 7
@@ -66,58 +71,57 @@ def zener_force(params, relative_axial_velocity, dt, state_in, state_out, rate, 
     return state_out[V_FORCE], converged
 
 
-def flexibility(kw, stiffness_key: str, flexibility_key: str) -> float:
-    if kw.get(stiffness_key) is not None:
-        k = float(kw[stiffness_key])
-        if k <= 0.0:
-            raise LawError(f"DIS_VISC: {stiffness_key} must be > 0")
-        return 1.0 / k
-    if kw.get(flexibility_key) is not None:
-        s = float(kw[flexibility_key])
-        if s < 0.0:
-            raise LawError(f"DIS_VISC: {flexibility_key} must be >= 0")
-        return s
-    raise LawError(f"DIS_VISC: give {stiffness_key} or {flexibility_key}")
+@dataclass(frozen=True)
+class DisViscParameters:
+    """The Zener element's data: the flexibilities of the spring in series
+    (1/k1) and of the viscous branch's spring (1/k3), 0 for a rigid one,
+    the stiffness parallel to the dashpot (k2), the dashpot's coefficient c
+    and exponent α (σ = C ε̇^α), and the local integration's controls."""
+
+    series_flexibility: float
+    parallel_stiffness: float
+    branch_flexibility: float
+    viscosity: float
+    exponent: float
+    max_iterations: int
+    tolerance: float
 
 
-def prepare_dis_visc(kw) -> np.ndarray:
-    """Parameter array from a validated DIS_VISC occurrence (defaults filled)."""
+def prepare_dis_visc(data: DisViscParameters) -> np.ndarray:
+    """Parameter array of the element, after code_aster's checks."""
     p = np.zeros(N_PARAMS)
-    p[P_MODEL + M_S1] = flexibility(kw, "K1", "UNSUR_K1")
-    p[P_MODEL + M_S3] = flexibility(kw, "K3", "UNSUR_K3")
-    if kw.get("K2") is not None:
-        p[P_MODEL + M_K2] = float(kw["K2"])
-    elif kw.get("UNSUR_K2") is not None:
-        if float(kw["UNSUR_K2"]) <= 0.0:
-            raise LawError("DIS_VISC: UNSUR_K2 must be > 0")
-        p[P_MODEL + M_K2] = 1.0 / float(kw["UNSUR_K2"])
-    else:
-        raise LawError("DIS_VISC: give K2 or UNSUR_K2")
+    p[P_MODEL + M_S1] = float(data.series_flexibility)
+    p[P_MODEL + M_S3] = float(data.branch_flexibility)
+    p[P_MODEL + M_K2] = float(data.parallel_stiffness)
+    if p[P_MODEL + M_S1] < 0.0 or p[P_MODEL + M_S3] < 0.0:
+        raise LawError(f"DIS_VISC: the flexibilities {SERIES} and {BRANCH} must be >= 0")
     if p[P_MODEL + M_K2] < 0.0:
-        raise LawError("DIS_VISC: K2 must be >= 0")
+        raise LawError(f"DIS_VISC: {named('parallel_stiffness')} must be >= 0")
     s1, k2, s3 = p[P_MODEL + M_S1], p[P_MODEL + M_K2], p[P_MODEL + M_S3]
     if s1 + s3 + k2 * s1 * s3 <= 0.0:
-        raise LawError("DIS_VISC: UNSUR_K1 and UNSUR_K3 cannot both be zero (rigid element)")
-    p[P_MODEL + M_C] = float(kw["C"])
-    p[P_MODEL + M_ALPHA] = float(kw.get("PUIS_ALPHA", 0.5))
+        raise LawError(f"DIS_VISC: {SERIES} and {BRANCH} cannot both be zero (rigid element)")
+    p[P_MODEL + M_C] = float(data.viscosity)
+    p[P_MODEL + M_ALPHA] = float(data.exponent)
     if p[P_MODEL + M_C] <= 0.0:
-        raise LawError("DIS_VISC: C must be > 0")
+        raise LawError(f"DIS_VISC: {named('viscosity')} must be > 0")
     if not 0.0 < p[P_MODEL + M_ALPHA] <= 1.0:
-        raise LawError("DIS_VISC: PUIS_ALPHA must be in ]0, 1]")
-    p[P_ITER_MAX] = int(kw.get("ITER_INTE_MAXI", 20))
-    p[P_RESI] = float(kw.get("RESI_INTE", 1.0e-6))
+        raise LawError(f"DIS_VISC: {named('exponent')} must be in ]0, 1]")
+    p[P_ITER_MAX] = int(data.max_iterations)
+    p[P_RESI] = float(data.tolerance)
     if p[P_ITER_MAX] < 1 or p[P_RESI] <= 0.0:
-        raise LawError("DIS_VISC: ITER_INTE_MAXI must be >= 1 and RESI_INTE > 0")
+        raise LawError(
+            f"DIS_VISC: {named('max_iterations')} must be >= 1 and {named('tolerance')} > 0"
+        )
     return p
 
 
 def relaxation(params, strain, t):
     """Closed-form force under a strain step held from t = 0, for a linear
-    dashpot (PUIS_ALPHA = 1), starting from the instantaneous elastic
+    dashpot (exponent 1), starting from the instantaneous elastic
     response (dashpot locked). Returns σ(t) (array)."""
     s1, k2, s3, c, alpha = params[P_MODEL : P_MODEL + 5]
     if alpha != 1.0:
-        raise ValueError("closed form only for PUIS_ALPHA = 1")
+        raise ValueError("closed form only for a linear dashpot (exponent 1)")
     k3 = np.inf if s3 == 0.0 else 1.0 / s3
     instant = strain / (s1 + 1.0 / (k2 + k3)) if np.isfinite(k3) else strain / s1
     relaxed = k2 * strain / (1.0 + k2 * s1)

@@ -15,7 +15,8 @@ back force X (3).
     kinematic:  threshold fx0,  H = slope of the first hardening segment,
                 Ẋ = H u̇p
 
-Only the components the law drives are non-zero (x for FX, y and z for FTAN).
+Only the components the law drives are non-zero (x for the axial law, y and
+z for the transverse one).
 """
 
 from __future__ import annotations

@@ -1,34 +1,34 @@
 """FLAMBAGE: shock on a support that buckles (plastic crushing with memory).
 
 code_aster 17 describes the support by three functions of the crushing
-(DX, the penetration into the obstacle): FX the force threshold, RIGI_NOR
-the stiffness and AMOR_NOR the damping. With d_N < 0 the normal distance
+(DX, the penetration into the obstacle): the force threshold Fc, the
+stiffness K and the damping C. With d_N < 0 the normal distance
 (penetration -d_N), v_N the normal velocity and u_max the largest
 penetration reached so far, the force is elastic from the plastic
 crushing ``defpla`` on:
 
-    F = K (-d_N - defpla) - C v_N,   K, C, Fc = RIGI_NOR, AMOR_NOR, FX at u_max
+    F = K (-d_N - defpla) - C v_N,   K, C, Fc read at u_max
 
 capped by Fc; when the cap is reached the crushing grows so that the force
-stays on the threshold (defpla = -d_N - Fc/K). With CRIT_AMOR='EXCLUS' the
+stays on the threshold (defpla = -d_N - Fc/K). When the damping is left out
+of the buckling criterion the
 damping is added after the cap (it is not bounded by Fc). No force while
 the penetration is below the crushing (a gap has opened) or out of contact.
 
 The functions are evaluated at the maximum penetration, so unloading is
 linear with the stiffness reached (a crushed support does not recover):
-code_aster's buckling curves (e.g. those built from the historical
-FNOR_CRIT/FNOR_POST_FL/LARG_PLAT/ENFO_FL/DEPL_POST_FL/RIGI_POST_FL
+code_aster's buckling curves (e.g. those built from the historical scalar
 parameters, see ``legacy_buckling_curves``) are designed for that reading.
 
-Decks of code_aster 15 give the support by scalars instead (FNOR_CRIT,
-FNOR_POST_FL, RIGI_NOR, AMOR_NOR, ENFO_FL, LARG_PLAT, DEPL_POST_FL,
-RIGI_POST_FL, AMOR_POST_FL, AMOR_FL: hidden keywords of today's catalogue,
-see asterlite.legacy.v15), which code_aster 15 ran with its own scalar law
-(``scalar_buckling_force``): elastic up to FNOR_CRIT, a plateau up to the
-penetration FNOR_CRIT/RIGI_NOR + LARG_PLAT, a linear drop to FNOR_POST_FL over
-ENFO_FL, then branches at FNOR_POST_FL whose crushing and damping are
-interpolated between the DEPL_POST_FL points (reached at the penetrations
-DEPL_POST_FL + FNOR_POST_FL/RIGI_POST_FL); unloading and reloading below the
+Decks of code_aster 15 give the support by scalars instead
+(``ScalarFlambageParameters``: stiffness K, damping, critical force Fcr,
+post-buckling force Fp, drop e, plateau width l, post-buckling crushings
+u_i, stiffnesses K_i and dampings, buckling damping; see
+asterlite.legacy.v15), which code_aster 15 ran with its own scalar law
+(``scalar_buckling_force``): elastic up to Fcr, a plateau up to the
+penetration Fcr/K + l, a linear drop to Fp over e, then branches at Fp
+whose crushing and damping are interpolated between the crushings u_i
+(reached at the penetrations u_i + Fp/K_i); unloading and reloading below the
 largest penetration are elastic with the stiffness and crushing reached.
 code_aster 17's functions of the crushing do not give the same history.
 
@@ -40,13 +40,18 @@ maximum penetration and the damping in use.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
 from asterlite.dynamics.laws.tabulated import Curve, LawError, function_table, unpack, value
+from asterlite.errors import field as named
+
+CRUSHINGS, POST_STIFFNESSES = named("crushings"), named("post_stiffnesses")
 
 # Parameters: flags, then where each packed function starts in the same array
-P_DAMPING_IN_CRITERION = 0  # 1: CRIT_AMOR='INCLUS', 0: 'EXCLUS'
+P_DAMPING_IN_CRITERION = 0  # 1: the damping counts in the buckling criterion, 0: not
 P_AT_FX, P_AT_RIGI, P_AT_AMOR = 1, 2, 3
 P_SCALAR = 4  # 1: code_aster 15's scalar law, its parameters from S_KNORM on
 HEADER = 5
@@ -205,66 +210,100 @@ def _scalar_law(params, u, vn, included, defpla, rigi, umax, amor):
     return fn, defpla, rigi, amor
 
 
-def prepare_scalar_flambage(kw) -> np.ndarray:
-    """Parameter array of code_aster 15's scalar law from a FLAMBAGE occurrence
-    with FNOR_CRIT (the defaults and checks of its catalogue and dtmprep_noli_flam)."""
-    knorm = float(kw["RIGI_NOR"])
+@dataclass(frozen=True)
+class ScalarFlambageParameters:
+    """code_aster 15's scalar buckling law: the elastic stiffness and its
+    damping, the critical and post-buckling forces, the width of the drop
+    between them and of the plateau before it, the post-buckling branches
+    (crushings, stiffnesses, dampings; empty when not given), the damping
+    right after buckling (None: the elastic one) and whether the damping
+    force counts in the buckling criterion."""
+
+    stiffness: float
+    damping: float
+    critical_force: float
+    post_buckling_force: float
+    drop: float
+    plateau: float
+    crushings: tuple[float, ...]
+    post_stiffnesses: tuple[float, ...]
+    post_dampings: tuple[float, ...]
+    buckling_damping: float | None
+    damping_in_criterion: bool
+
+
+def prepare_scalar_flambage(data: ScalarFlambageParameters) -> np.ndarray:
+    """Parameter array of code_aster 15's scalar law (the checks of its
+    dtmprep_noli_flam)."""
+    knorm = float(data.stiffness)
     if knorm <= 0.0:
-        raise LawError("FLAMBAGE/RIGI_NOR: the stiffness must be > 0")
-    cnorm = float(kw.get("AMOR_NOR") or 0.0)
-    flim, fpost = float(kw["FNOR_CRIT"]), float(kw["FNOR_POST_FL"])
-    enfo = float(kw.get("ENFO_FL", 1.0e-20))
-    plateau = float(kw.get("LARG_PLAT") or 0.0)
+        raise LawError(f"FLAMBAGE/{named('stiffness')}: the stiffness must be > 0")
+    cnorm = float(data.damping)
+    flim, fpost = float(data.critical_force), float(data.post_buckling_force)
+    enfo = float(data.drop)
+    plateau = float(data.plateau)
     deft0 = flim / knorm + plateau
-    crush = np.array([plateau, *_reals(kw.get("DEPL_POST_FL"))])
-    stiff = np.array([fpost / (deft0 + enfo - plateau), *_reals(kw.get("RIGI_POST_FL"))])
-    damped = _reals(kw.get("AMOR_POST_FL"))
+    crush = np.array([plateau, *_reals(data.crushings)])
+    stiff = np.array([fpost / (deft0 + enfo - plateau), *_reals(data.post_stiffnesses)])
+    damped = _reals(data.post_dampings)
     if np.any(np.diff(crush) < 0.0):
-        raise LawError("FLAMBAGE/DEPL_POST_FL: the crushings must increase")
+        raise LawError(f"FLAMBAGE/{CRUSHINGS}: the crushings must increase")
     if stiff.size != crush.size or (damped and len(damped) != crush.size - 1):
-        raise LawError("FLAMBAGE: DEPL_POST_FL, RIGI_POST_FL and AMOR_POST_FL: same length")
+        raise LawError(
+            f"FLAMBAGE: {CRUSHINGS}, {POST_STIFFNESSES} and {named('post_dampings')}: same length"
+        )
     if np.any(crush < 0.0):
-        raise LawError("FLAMBAGE/DEPL_POST_FL: the crushings must be >= 0")
+        raise LawError(f"FLAMBAGE/{CRUSHINGS}: the crushings must be >= 0")
     total = crush + fpost / stiff
     if np.any(np.diff(total) < 0.0):
         raise LawError(
-            "FLAMBAGE: the penetrations DEPL_POST_FL + FNOR_POST_FL/RIGI_POST_FL must increase"
+            f"FLAMBAGE: the penetrations {CRUSHINGS} + {named('post_buckling_force')}/"
+            f"{POST_STIFFNESSES} must increase"
         )
-    first = float(kw["AMOR_FL"]) if kw.get("AMOR_FL") is not None else cnorm
+    first = float(data.buckling_damping) if data.buckling_damping is not None else cnorm
     damps = np.array([first, *(damped or [first] * (crush.size - 1))])
-    criterion = kw.get("CRIT_AMOR", "INCLUS")
     header = np.zeros(HEADER)
-    header[P_DAMPING_IN_CRITERION] = 1.0 if criterion == "INCLUS" else 0.0
+    header[P_DAMPING_IN_CRITERION] = 1.0 if data.damping_in_criterion else 0.0
     header[P_SCALAR] = 1.0
     scalars = [knorm, cnorm, flim, fpost, enfo, deft0, float(crush.size)]
     return np.concatenate([header, scalars, crush, total, damps])
 
 
-def _reals(value) -> list:
-    if value is None:
-        return []
-    return [float(v) for v in (value if isinstance(value, (list, tuple)) else (value,))]
+def _reals(values) -> list:
+    return [float(v) for v in values]
 
 
-def prepare_flambage(kw, sample=None) -> np.ndarray:
-    """Parameter array from a validated FLAMBAGE occurrence: FX, RIGI_NOR
-    and AMOR_NOR functions of the crushing, CRIT_AMOR ('INCLUS' default)."""
+@dataclass(frozen=True)
+class FlambageParameters:
+    """The buckling law as three functions of the crushing: the force
+    threshold, the stiffness and the damping; and whether the damping force
+    counts in the buckling criterion."""
+
+    force_threshold: object
+    stiffness: object
+    damping: object
+    damping_in_criterion: bool
+
+
+def prepare_flambage(data: FlambageParameters, sample=None) -> np.ndarray:
+    """Parameter array of the buckling law (functions checked as code_aster does)."""
     blocks = []
-    for key in ("FX", "RIGI_NOR", "AMOR_NOR"):
-        if kw.get(key) is None:
-            raise LawError(f"FLAMBAGE: {key} (a function of the crushing DX) is missing")
-        blocks.append(function_table(kw[key], f"FLAMBAGE/{key}", sample=sample))
+    for label, function in (
+        (f"FLAMBAGE/{named('force_threshold')}", data.force_threshold),
+        (f"FLAMBAGE/{named('stiffness')}", data.stiffness),
+        (f"FLAMBAGE/{named('damping')}", data.damping),
+    ):
+        if function is None:
+            raise LawError(f"{label}: a function of the crushing DX is missing")
+        blocks.append(function_table(function, label, sample=sample))
     x, y, _, _ = unpack(blocks[1])
     if np.any(y <= 0.0):
-        raise LawError("FLAMBAGE/RIGI_NOR: the stiffness must be > 0 everywhere")
+        raise LawError(f"FLAMBAGE/{named('stiffness')}: the stiffness must be > 0 everywhere")
     x, y, _, _ = unpack(blocks[0])
     if np.any(y < 0.0):
-        raise LawError("FLAMBAGE/FX: the force threshold must be >= 0")
-    criterion = kw.get("CRIT_AMOR", "INCLUS")
-    if criterion not in ("INCLUS", "EXCLUS"):
-        raise LawError(f"FLAMBAGE/CRIT_AMOR: INCLUS or EXCLUS expected, not {criterion!r}")
+        raise LawError(f"FLAMBAGE/{named('force_threshold')}: the force threshold must be >= 0")
     header = np.zeros(HEADER)
-    header[P_DAMPING_IN_CRITERION] = 1.0 if criterion == "INCLUS" else 0.0
+    header[P_DAMPING_IN_CRITERION] = 1.0 if data.damping_in_criterion else 0.0
     at = HEADER
     for slot, block in zip((P_AT_FX, P_AT_RIGI, P_AT_AMOR), blocks, strict=True):
         header[slot] = at
@@ -296,17 +335,23 @@ def legacy_buckling_curves(
     amor_post_fl=None,
     points_per_segment=200,
 ):
-    """The FX, RIGI_NOR, AMOR_NOR curves (``Curve``, CONSTANT both sides)
+    """The force threshold, stiffness and damping curves (``Curve``, CONSTANT both sides)
     equivalent to the historical scalar description of a buckling support:
-    elastic up to FNOR_CRIT, a plateau of width LARG_PLAT, a drop to
-    FNOR_POST_FL over ENFO_FL, then post-buckling branches of stiffness
-    RIGI_POST_FL reached at crushings DEPL_POST_FL (increasing)."""
+    elastic up to the critical force ``fnor_crit``, a plateau of width
+    ``larg_plat``, a drop to the post-buckling force ``fnor_post_fl`` over
+    ``enfo_fl``, then post-buckling branches of stiffness ``rigi_post_fl``
+    reached at the crushings ``depl_post_fl`` (increasing)."""
     if rigi_nor <= 0.0 or fnor_crit <= 0.0 or fnor_post_fl <= 0.0 or enfo_fl <= 0.0:
-        raise LawError("FLAMBAGE: RIGI_NOR, FNOR_CRIT, FNOR_POST_FL, ENFO_FL must be > 0")
+        raise LawError(
+            "FLAMBAGE: the stiffness, the critical force, the post-buckling force and the "
+            "drop must be > 0"
+        )
     depl = np.asarray(depl_post_fl, float)
     rigi = np.asarray(rigi_post_fl, float)
     if depl.size == 0 or depl.size != rigi.size or np.any(rigi <= 0.0):
-        raise LawError("FLAMBAGE: DEPL_POST_FL and RIGI_POST_FL: same length, stiffness > 0")
+        raise LawError(
+            "FLAMBAGE: crushings and post-buckling stiffnesses: same length, stiffness > 0"
+        )
     amor_fl = amor_nor if amor_fl is None else amor_fl
     amor_post = np.full(depl.size, amor_fl) if amor_post_fl is None else np.asarray(amor_post_fl)
     total = depl + fnor_post_fl / rigi  # total penetration reached on each branch
@@ -318,12 +363,12 @@ def legacy_buckling_curves(
     rows = [(0.0, fnor_crit, rigi_nor, amor_nor), (u_plateau, fnor_crit, rigi_nor, amor_nor)]
     if larg_plat > 0.0:
         rows.append((u_drop, fnor_crit, rigi_nor, amor_nor))
-    # the drop: threshold linear in the penetration, crushing frozen at LARG_PLAT
+    # the drop: threshold linear in the penetration, crushing frozen at the plateau width
     for u in np.linspace(u_drop, u_buckled, points_per_segment + 1)[1:]:
         w = (u - u_drop) / enfo_fl
         f = fnor_crit + w * (fnor_post_fl - fnor_crit)
         rows.append((u, f, f / (u - larg_plat), amor_nor + w * (amor_fl - amor_nor)))
-    # post-buckling: crushing interpolated between the branches, force FNOR_POST_FL
+    # post-buckling: crushing interpolated between the branches, force the post-buckling one
     starts = np.concatenate([[u_buckled], total])
     crush = np.concatenate([[larg_plat], depl])
     damps = np.concatenate([[amor_fl], amor_post])

@@ -1,9 +1,10 @@
 """The laws of this package in the time loop (general path), compiled.
 
 A localized nonlinearity other than DIS_CHOC is a row of the shock arrays
-(``model.build_shocks``) whose ``flags[s, F_LAW]`` holds its relation code
-(:data:`LAW_CODES`); its law parameters are row ``laws[s]`` (packed as the
-law's ``prepare_*`` returns them), its internal variables are ``vint[s]``
+(``model.build_shocks``) whose ``flags[s, F_LAW]`` holds the code of its
+branch below (the ``code`` of its entry in ``connections.RELATIONS``;
+relations may share a branch); its law parameters are row ``laws[s]``
+(packed as the law's ``prepare_*`` returns them), its internal variables are ``vint[s]``
 in the law's own layout (code_aster's VINT1.. order), and column
 :data:`V_TIME` of ``vint`` holds the instant of the stored state.
 
@@ -55,17 +56,6 @@ from asterlite.dynamics.laws import (
 
 DIS_CHOC, FLAMBAGE, ANTI_SISM, DIS_VISC, DIS_ECRO_TRAC = 0, 1, 2, 3, 4
 CHOC_ELAS_TRAC, RELA_EFFO_DEPL, RELA_EFFO_VITE, ROTOR_FISS = 5, 6, 7, 8
-LAW_CODES = {
-    "DIS_CHOC": DIS_CHOC,
-    "FLAMBAGE": FLAMBAGE,
-    "ANTI_SISM": ANTI_SISM,
-    "DIS_VISC": DIS_VISC,
-    "DIS_ECRO_TRAC": DIS_ECRO_TRAC,
-    "CHOC_ELAS_TRAC": CHOC_ELAS_TRAC,
-    "RELA_EFFO_DEPL": RELA_EFFO_DEPL,
-    "RELA_EFFO_VITE": RELA_EFFO_VITE,
-    "ROTOR_FISS": ROTOR_FISS,
-}
 V_TIME = 20  # instant of the stored state (after code_aster's 20 archived values)
 VINT_WIDTH = 21
 # (SCRATCH_ROWS, 14): rk54 work rows, the rates, the kinematics (6 rows), a global vector
@@ -112,7 +102,7 @@ def kinematics(s, q, v, params, rots, phis, two_nodes, out):
             d, w = node_motion(phis[s, node], q, v, i)
             gu[i] = d + params[s, drive + i]
             gx[i] = params[s, coord + i] - params[s, P_ORIGIN + i] + gu[i]
-            gu[i] -= params[s, P_ORIGIN + i]  # code_aster's gloloc(u, ORIG_OBST)
+            gu[i] -= params[s, P_ORIGIN + i]  # code_aster's gloloc(u, obstacle origin)
             gv[i] = w + params[s, drive + 3 + i]
         for i in range(3):
             out[node, i] = rots[s, i, 0] * gx[0] + rots[s, i, 1] * gx[1] + rots[s, i, 2] * gx[2]
@@ -159,7 +149,7 @@ def law_forces(t, q, v, flags, params, rots, phis, polars, laws, rphis, vint, wo
             for m in range(out.shape[0]):
                 out[m] += f * shape[c % 3, m]
             continue
-        if code == ROTOR_FISS:  # node 1 = NOEUD_D, node 2 = NOEUD_G
+        if code == ROTOR_FISS:  # node 1: the crack's right node, node 2: its left node
             dtx = node_motion(rphis[s, 1], q, v, 0)[0] - node_motion(rphis[s, 0], q, v, 0)[0]
             dty = node_motion(rphis[s, 1], q, v, 1)[0] - node_motion(rphis[s, 0], q, v, 1)[0]
             dtz = node_motion(rphis[s, 1], q, v, 2)[0] - node_motion(rphis[s, 0], q, v, 2)[0]

@@ -1,17 +1,20 @@
 """RELA_EFFO_DEPL: a nodal force that is a function of a displacement component.
 
-With u the displacement of NOM_CMP at the node (global frame, from the
-modal basis alone: no mesh coordinates), the force F = FONCTION(u) is
+With u the displacement of the chosen component at the node (global frame, from the
+modal basis alone: no mesh coordinates), the force F = f(u) (the user's function) is
 applied on the same component. Internal variables (code_aster's order,
 VINT1..VINT3): u, F, and 1 when F is non-zero (0 otherwise).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
 from asterlite.dynamics.laws.tabulated import LawError, function_table, value
+from asterlite.errors import field as named
 
 COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
 P_COMPONENT = 0  # index in COMPONENTS
@@ -33,20 +36,31 @@ def relation_force(params, component_value, state_out):
     return force
 
 
-def prepare_relation(kw, relation: str, sample=None) -> np.ndarray:
+@dataclass(frozen=True)
+class RelationParameters:
+    """The data of RELA_EFFO_DEPL / RELA_EFFO_VITE: the node's component
+    (one of :data:`COMPONENTS`, or None to take the function's parameter
+    when it names one) and the force as a function of that component's
+    displacement or velocity."""
+
+    component: str | None
+    function: object
+
+
+def prepare_relation(data: RelationParameters, relation: str, sample=None) -> np.ndarray:
     """Parameter array of RELA_EFFO_DEPL / RELA_EFFO_VITE (``relation``)."""
-    func = kw.get("FONCTION")
+    func = data.function
     if func is None:
-        raise LawError(f"{relation}: FONCTION is missing")
-    component = kw.get("NOM_CMP")
+        raise LawError(f"{relation}: {named('function')} is missing")
+    component = data.component
     if component is None:
         names = getattr(func, "nom_para", None) or (getattr(func, "NOM_PARA", None),)
         component = names[0] if names and names[0] in COMPONENTS else None
     if component not in COMPONENTS:
-        raise LawError(f"{relation}: NOM_CMP must be one of {', '.join(COMPONENTS)}")
-    block = function_table(func, f"{relation}/FONCTION", sample=sample)
+        raise LawError(f"{relation}: {named('component')} must be one of {', '.join(COMPONENTS)}")
+    block = function_table(func, f"{relation}/{named('function')}", sample=sample)
     return np.concatenate([[float(COMPONENTS.index(component))], block])
 
 
-def prepare_rela_effo_depl(kw, sample=None) -> np.ndarray:
-    return prepare_relation(kw, "RELA_EFFO_DEPL", sample)
+def prepare_rela_effo_depl(data: RelationParameters, sample=None) -> np.ndarray:
+    return prepare_relation(data, "RELA_EFFO_DEPL", sample)

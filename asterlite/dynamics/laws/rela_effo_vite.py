@@ -1,7 +1,7 @@
 """RELA_EFFO_VITE: a nodal force that is a function of a velocity component.
 
-Same as RELA_EFFO_DEPL with the velocity v of NOM_CMP (global frame, from
-the modal basis): F = FONCTION(v) on that component. Internal variables
+Same as RELA_EFFO_DEPL with the velocity v of the chosen component (global frame, from
+the modal basis): F = f(v) on that component. Internal variables
 (VINT1..VINT3): v, F, and 1 when F is non-zero.
 """
 
@@ -15,6 +15,7 @@ from asterlite.dynamics.laws.rela_effo_depl import (
     V_ACTIVE,
     V_FORCE,
     V_VALUE,
+    RelationParameters,
     prepare_relation,
     relation_force,
 )
@@ -22,9 +23,9 @@ from asterlite.dynamics.laws.rela_effo_depl import (
 VINT_NAMES = ("VITE", "FORCE", "IND_NONZERO")
 __all__ = [
     "COMPONENTS", "N_VINT", "P_COMPONENT", "P_FUNCTION", "V_ACTIVE", "V_FORCE", "V_VALUE",
-    "VINT_NAMES", "prepare_rela_effo_vite", "relation_force",
+    "VINT_NAMES", "RelationParameters", "prepare_rela_effo_vite", "relation_force",
 ]  # fmt: skip
 
 
-def prepare_rela_effo_vite(kw, sample=None):
-    return prepare_relation(kw, "RELA_EFFO_VITE", sample)
+def prepare_rela_effo_vite(data: RelationParameters, sample=None):
+    return prepare_relation(data, "RELA_EFFO_VITE", sample)

@@ -3,8 +3,8 @@
 DIS_VISC and DIS_ECRO_TRAC integrate their constitutive rates over each
 time step of the transient, for a relative velocity held constant over
 the step (code_aster's rk5adp): sub-steps are adapted to the tolerance
-RESI_INTE on the embedded error, normalised per unknown (by given scales,
-or by |y| with 1 below 1e-8), and ITER_INTE_MAXI bounds the consecutive
+the tolerance on the embedded error, normalised per unknown (by given scales,
+or by |y| with 1 below 1e-8), and an iteration bound limits the consecutive
 attempts of one sub-step. Step control constants are code_aster's.
 
 Systems are dispatched by an integer so every function stays cacheable.

@@ -25,7 +25,7 @@ HEADER = 3  # n, prol_left, prol_right
 
 
 class LawError(ValueError):
-    """A COMPORTEMENT occurrence whose data cannot define the law."""
+    """A relation's data that cannot define its law."""
 
 
 # ----------------------------------------------------------------------------
@@ -71,9 +71,9 @@ def function_table(func, label: str, sample=None, para: str | None = None) -> np
 
     ``func`` is a ``Function`` concept (abscissas, ordinates, INTERPOL,
     PROL_GAUCHE, PROL_DROITE), a pair ``(x, y)`` (EXCLU both sides), or a
-    one-parameter ``FORMULE``, which is tabulated on ``sample`` (an array of
+    one-parameter formula, which is tabulated on ``sample`` (an array of
     abscissas the caller chooses; CONSTANT outside). ``para``: when given,
-    the parameter name a FORMULE must have.
+    the parameter name a formula must have.
     """
     if hasattr(func, "abscissas") and hasattr(func, "ordinates"):
         ordinates = np.asarray(func.ordinates)
@@ -91,7 +91,7 @@ def function_table(func, label: str, sample=None, para: str | None = None) -> np
             getattr(func, "PROL_DROITE", "EXCLU"),
             label,
         )
-    if hasattr(func, "VALE") and hasattr(func, "evaluate"):  # FORMULE
+    if hasattr(func, "VALE") and hasattr(func, "evaluate"):  # a formula
         names = tuple(getattr(func, "NOM_PARA", ()))
         if len(names) != 1:
             raise LawError(f"{label}: a formula of one parameter is expected, not {names}")
@@ -99,7 +99,7 @@ def function_table(func, label: str, sample=None, para: str | None = None) -> np
             raise LawError(f"{label}: the formula's parameter must be {para}, not {names[0]}")
         if sample is None:
             raise LawError(
-                f"{label}: a FORMULE needs a sampling grid here; give a DEFI_FONCTION instead"
+                f"{label}: a formula needs a sampling grid here; give a DEFI_FONCTION instead"
             )
         xs = np.asarray(sample, dtype=float)
         return pack(xs, func.evaluate(xs), "CONSTANT", "CONSTANT", label)

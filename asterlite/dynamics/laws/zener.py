@@ -1,14 +1,14 @@
 """Generalized Zener model of DIS_VISC (rates only; integrated by ``rk54``).
 
-A spring K1 in series with [a spring K2 in parallel with (a spring K3 in
+A spring k1 in series with [a spring k2 in parallel with (a spring k3 in
 series with a power-law dashpot σ3 = C sign(ε̇v) |ε̇v|^α)]. Unknowns, in
 code_aster's order: the force σ, the dashpot deformation εv, the total
 deformation ε and the dissipated energy W. Parameters are flexibilities
-s1 = 1/K1, s3 = 1/K3 (either may be 0: rigid spring) and the stiffness K2.
+s1 = 1/k1, s3 = 1/k3 (either may be 0: rigid spring) and the stiffness k2.
 
-    σ3   = σ (1 + K2 s1) - K2 ε          force carried by the viscous branch
+    σ3   = σ (1 + k2 s1) - k2 ε          force carried by the viscous branch
     ε̇v   = sign(σ3) |σ3 / C|^(1/α)
-    σ̇    = ((1 + K2 s3) ε̇ - ε̇v) / (s1 + s3 + K2 s1 s3)
+    σ̇    = ((1 + k2 s3) ε̇ - ε̇v) / (s1 + s3 + k2 s1 s3)
     Ẇ    = σ3 ε̇v >= 0
 """
 

@@ -1,4 +1,4 @@
-"""DYNA_VIBRA TYPE_CALCUL='TRAN', BASE_CALCUL='PHYS': linear transient
+"""DYNA_VIBRA's transient on the physical basis: linear transient
 analysis on assembled (sparse) physical matrices.
 
 The kinematic relations of the numbering are eliminated once,

@@ -4,19 +4,19 @@ diagonal (lumped) mass.
 
 Each trial step dt2 from t (previous step dt1, 0 on the first one):
 
-    v_mid = v_{n-1/2} + (dt1 + dt2)/2 a_n        (v_{-1/2} = v_0 - PAS/2 a_0)
+    v_mid = v_{n-1/2} + (dt1 + dt2)/2 a_n        (v_{-1/2} = v_0 - dt/2 a_0)
     q'    = q_n + dt2 v_mid
     a'    = M⁻¹ (F(t + dt2) - K q' - C v_mid)
     v'    = v_mid + dt2/2 a'                     (the archived velocity)
 
-The error err = NB_POIN_PERIODE · f · dt2 uses the apparent frequency
+The error err = N · f · dt2 (N points per period) uses the apparent frequency
 f = sqrt(max_i |a'_i - a_i| / max(v_min,i dt2, |q'_i - q_i|)) / 2π; while
-err > 1 the step is divided by COEF_DIVI_PAS (at most NMAX_ITER_PAS
-trials). After five calm steps (err < 0.75) it is multiplied by
-COEF_MULT_PAS, never beyond PAS. Reference velocities: VITE_MIN='MAXI'
+err > 1 the step is divided by the division factor (at most the largest
+number of trials). After five calm steps (err < 0.75) it is multiplied by
+the growth factor, never beyond dt. Reference velocities: 'MAXI'
 keeps the running maximum of 1 % of |v_{n-1/2}| per DOF, 'NORM' takes 1 %
 of the mid-step velocity of the neighbouring equations carrying the same
-component. An archive instant (every PAS_ARCH · PAS from the start) stores
+component. An archive instant (every archiving period · dt from the start) stores
 whichever end of the step that brackets it is closer, plus the last one.
 """
 
@@ -28,6 +28,7 @@ import numpy as np
 
 from asterlite.dynamics.physical.stepping import finite, non_finite_state
 from asterlite.errors import NumericalError
+from asterlite.errors import field as named
 
 EPS = np.finfo(float).eps
 TINY = np.finfo(float).tiny
@@ -84,7 +85,7 @@ def integrate(system, t0, t_end, dt_max, q, v, a, archive, inverse_mass, options
     vip1 = v.copy()
     archive.add(t0, depl, vip1, acce)
     temps, dt1, dt2, calm = t0, 0.0, dt_max, 0
-    archived_periods = 1  # the archiving instants are t0 + k PAS PAS_ARCH, never a running sum
+    archived_periods = 1  # the archiving instants are t0 + k dt period, never a running sum
     t_archive = t0 + dt_archive
     steps = trials_total = warned = 0
     while temps < t_end:
@@ -112,7 +113,8 @@ def integrate(system, t0, t_end, dt_max, q, v, a, archive, inverse_mass, options
                 dt2 = dt2 / divi
             if dt2 <= dt_min and abs(t_end - (temps + dt2)) > EPS:
                 raise NumericalError(
-                    f"ADAPT_ORDRE2: the step fell below PAS_MINI={dt_min:.6g} at t={temps:.6g}"
+                    f"ADAPT_ORDRE2: the step fell below {named('options.dt_min')}={dt_min:.6g} "
+                    f"at t={temps:.6g}"
                 )
             trials += 1
         if err > 1.0:
@@ -141,7 +143,7 @@ def integrate(system, t0, t_end, dt_max, q, v, a, archive, inverse_mass, options
         depl, vite, vip1, acce = dep2, vit2, vip2, acc2
     if warned:
         log(
-            f"warning: {warned} steps kept after NMAX_ITER_PAS trials above the "
+            f"warning: {warned} steps kept after {named('options.nmax_iter_pas')} trials above the "
             "apparent-frequency criterion (code_aster's ALGORITH3_16)"
         )
     return {"steps": steps, "trials": trials_total}

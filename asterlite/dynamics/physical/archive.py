@@ -6,9 +6,12 @@ import numpy as np
 
 
 class Archive:
-    """Times and reduced (q, v, a) at the archived instants."""
+    """Times and reduced (q, v, a) at the archived instants. ``capacity``:
+    the number of states to hold, exact when the scheme knows it (fixed
+    steps): the storage then never grows by copies."""
 
     def __init__(self, n_free: int, capacity: int = 64):
+        capacity = max(int(capacity), 1)
         self.count = 0
         self.times = np.zeros(capacity)
         self.states = np.zeros((3, capacity, n_free))
@@ -24,19 +27,16 @@ class Archive:
         self.count += 1
 
     def arrays(self):
+        """Times and (q, v, a) of the archived states: views of the archive's
+        own storage, not copies (a transient's archive is its largest array)."""
         n = self.count
-        return (
-            self.times[:n].copy(),
-            self.states[0, :n].copy(),
-            self.states[1, :n].copy(),
-            (self.states[2, :n].copy()),
-        )
+        return self.times[:n], self.states[0, :n], self.states[1, :n], self.states[2, :n]
 
 
 def archived_steps(times: np.ndarray, pas_arch: int, instants, precision: float, relative: bool):
     """Boolean mask over the step instants ``times`` (index 0 is the initial
     state): every ``pas_arch``-th step, the requested instants (within
-    PRECISION), the first and the last instant."""
+    precision), the first and the last instant."""
     n = times.size
     mask = np.zeros(n, dtype=bool)
     mask[0] = mask[-1] = True

@@ -43,4 +43,4 @@ def integrate(system, times, q, v, a, mask, archive, inverse_mass, monitor=None)
         return q_new, v_half + 0.5 * dt * a_new, a_new
 
     fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor)
-    return half["v"]  # v_{N-1/2}: what code_aster archives last for an excluded VITE
+    return half["v"]  # v_{N-1/2}: what code_aster archives last for an excluded velocity field

@@ -1,4 +1,4 @@
-"""Energy balance of a physical transient (DYNA_VIBRA PHYS ENERGIE=_F()),
+"""Energy balance of a physical transient (DYNA_VIBRA PHYS, when asked),
 as code_aster's enerca accumulates it after each step (op0048)::
 
     TRAV_EXT  += Δu · (F_n + F_{n+1}) / 2      work of the external loads
@@ -15,6 +15,8 @@ the result's PARA_CALC table.
 from __future__ import annotations
 
 import numpy as np
+
+from asterlite.concepts.table import Table
 
 COLUMNS = ("TRAV_EXT", "ENER_CIN", "ENER_TOT", "TRAV_AMOR", "TRAV_LIAI", "DISS_SCH")
 
@@ -52,8 +54,6 @@ class EnergyBalance:
         self.rows = kept + self.rows
 
     def table(self):
-        from asterlite.concepts.table import Table
-
         table = Table(title="PARA_CALC")
         table.add_column("INST", "R")
         for name in COLUMNS:

@@ -1,8 +1,8 @@
-"""AMOR_MODAL of a physical transient (DYNA_VIBRA PHYS TRAN, NEWMARK and
+"""Modal damping of a physical transient (DYNA_VIBRA PHYS TRAN, NEWMARK and
 WILSON): an equivalent modal damping applied as an explicit force.
 
 code_aster (nmmoam / fmodam, used by dlnew0) keeps, for each mode i of
-MODE_MECA (the first NB_MODE), b_i = K φ_i with K the stiffness the modes
+the given modes (the first k of them), b_i = K φ_i with K the stiffness the modes
 were computed with (REF_RIGI_PREM), its MASS_GENE m_i, ω_i = 2π FREQ_i and
 the reduced damping ξ_i, and applies
 
@@ -11,11 +11,12 @@ the reduced damping ξ_i, and applies
 (= Σ_i 2 ξ_i ω_i / m_i · (M φ_i)(M φ_i)ᵀ v for exact modes). The force is
 not put in the effective matrix: each step subtracts f_am(v_n), v_n the
 velocity at the start of the step (plus the support velocities at t_{n+1}
-for MULT_APPUI), from the load F(t_{n+1}); MATR_AMOR, when also given,
+with multiple supports), from the load F(t_{n+1}); a damping matrix, when
+also given,
 keeps its implicit treatment. The initial acceleration ignores it.
 
 B is n × k (k modes), so a step costs two thin products; no n × n matrix
-is formed. AMOR_REDUIT / LIST_AMOR shorter than the modes repeat their last
+is formed. Reduced damping ratios shorter than the modes repeat their last
 value, longer ones are cut to the modes.
 """
 
@@ -29,8 +30,8 @@ import numpy as np
 @dataclass
 class ModalDamping:
     """``basis``: (n_free, k) reduced b_i = Tᵀ K φ_i; ``coefficients``:
-    2 ξ_i / (m_i ω_i³). ``supports``: (b_iᵀ ψ_s over the modes, VITE
-    function) pairs of MULT_APPUI: the support velocity ψ_s v_s(t) (on all
+    2 ξ_i / (m_i ω_i³). ``supports``: (b_iᵀ ψ_s over the modes, velocity
+    function) pairs of the multiple supports: the support velocity ψ_s v_s(t) (on all
     DOFs, the support ones included) is added to the relative one."""
 
     basis: np.ndarray
@@ -71,7 +72,7 @@ def build_modal_damping(
 ) -> ModalDamping:
     """``stiffness_shapes``: (n_dofs, k) K φ_i on the numbering of the
     transient (all DOFs); ``frequencies`` in Hz, ``masses`` MASS_GENE;
-    ``supports``: (ψ_s on all DOFs, VITE function) of MULT_APPUI."""
+    ``supports``: (ψ_s on all DOFs, velocity function) of the multiple supports."""
     frequencies = np.asarray(frequencies, dtype=float)
     masses = np.asarray(masses, dtype=float)
     omega = 2.0 * np.pi * frequencies

@@ -12,6 +12,7 @@ from __future__ import annotations
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 
+from asterlite.dynamics.physical.imposed import newmark_states
 from asterlite.dynamics.physical.stepping import fixed_step_loop
 
 
@@ -19,6 +20,8 @@ def integrate(
     system, times, q, v, a, mask, archive, beta=0.25, gamma=0.5, monitor=None, modal=None
 ):
     factors = {}
+    if system.imposed is not None:
+        system.follow_imposed(newmark_states(system.imposed.values(times), times, beta, gamma))
 
     def operator(dt):
         key = round(dt, 15)

@@ -15,14 +15,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.dynamics import diagnosis as D
 from asterlite.dynamics.diagnosis import LIMIT
+from asterlite.dynamics.integrate import LOAD_ADVICE
+from asterlite.errors import field as named
 
 BLOCK = 512
 
 
 class NonFiniteState(FloatingPointError):
     """The state of a physical transient became non-finite; ``path``: the
-    keyword at fault below the command (``EXCIT[2]``, ``INCREMENT/PAS``)."""
+    problem field at fault, a mark the command words (:func:`asterlite.errors.field`)."""
 
     def __init__(self, message: str, path: str = ""):
         super().__init__(message)
@@ -32,7 +35,7 @@ class NonFiniteState(FloatingPointError):
 def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, modal=None) -> None:
     """``step(dt, F_{n+1}, q, v, a) -> (q, v, a)`` advanced over ``times``;
     ``monitor(t, F_{n+1}, q_n, v_n, q_{n+1}, v_{n+1})`` after each step
-    (the energy balance) when given. ``modal`` (AMOR_MODAL, a
+    (the energy balance) when given. ``modal`` (modal damping, a
     ``ModalDamping``): the step receives F_{n+1} - f_am(v_n), explicit in
     the velocity at the start of the step as code_aster's dlnew0."""
     if mask[0]:
@@ -41,6 +44,8 @@ def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, m
     for start in range(1, n_steps + 1, BLOCK):
         stop = min(start + BLOCK, n_steps + 1)
         forces = system.forces(times[start:stop])
+        if system.imposed is not None:
+            forces = forces + system.imposed_forces(start, stop)
         bad_load = first_bad_row(forces)
         for k in range(start, stop):
             if k - start == bad_load:  # the state at times[k - 1] is the last finite one
@@ -72,7 +77,6 @@ def non_finite_state(system, t, t_good, step, q, v, a, archive) -> NonFiniteStat
     """The error of a state found non-finite at ``t``: a load first (the
     state at ``t_good`` was finite), else the displacement, velocity and
     acceleration themselves (an unstable step)."""
-    from asterlite.dynamics import diagnosis as D
 
     multipliers = []
     for load in system.loads:
@@ -80,17 +84,18 @@ def non_finite_state(system, t, t_good, step, q, v, a, archive) -> NonFiniteStat
             multipliers.append(float(load.coefficients([t])[0]))
         except Exception:  # a function refusing to be evaluated there: not finite
             multipliers.append(np.nan)
-    vectors = [system.reduce_vector(load.vector) for load in system.loads]
-    labels = [f"EXCIT[{e}]" for e in range(1, len(vectors) + 1)]
+    vectors = [system.load_vector(load, t) for load in system.loads]
+    labels = [f"{named('excitation')}[{e}]" for e in range(1, len(vectors) + 1)]
     culprit = D.first_bad_load(multipliers, vectors, labels, t)
     described = D.state_text(q, v, a, unit="free DOF", qualifier="")
     if culprit is None:
-        culprit = D.Culprit((described or "the state") + " diverged", "INCREMENT/PAS", True)
-        advice = "try a smaller PAS, and check the stiffness, damping and loads"
+        step = named("grid.step")
+        culprit = D.Culprit((described or "the state") + " diverged", step, True)
+        advice = f"try a smaller {step}, and check the stiffness, damping and loads"
     else:
         if described:
             culprit.text += f", and then {described}"
-        advice = "check the function that defines it (FONC_MULT, COEF_MULT, the FORMULE)"
+        advice = LOAD_ADVICE
     last = archive.times[archive.count - 1] if archive.count else None
     when = D.when_text(t, t_good, step, last)
     return NonFiniteState(f"{when}: {culprit.text}; {advice}", culprit.path)

@@ -6,18 +6,34 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
+from scipy.sparse.linalg import splu
 
+from asterlite.dynamics.physical.imposed import ImposedMotion
 from asterlite.fem.constraints import Elimination, eliminate
+
+
+@dataclass
+class LoadHistory:
+    """Forces that are a history of time and space (a seismic plane wave:
+    each boundary point sees the wave with its own delay, so they are no
+    vector times f(t)): ``values(times)`` gives them, ``(n_times, m)``, on
+    the numbering's DOFs ``rows`` (m,), a DOF appearing as often as it
+    takes a term."""
+
+    rows: np.ndarray
+    values: object
 
 
 @dataclass
 class Load:
     """A physical load vector (on every DOF of the numbering) times a
     multiplier: a float, or a function / one-parameter formula of time
-    evaluated exactly at each instant the scheme asks for."""
+    evaluated exactly at each instant the scheme asks for. ``history``: a
+    part that is a :class:`LoadHistory`, times the same multiplier."""
 
     vector: np.ndarray
     multiplier: object = 1.0
+    history: LoadHistory | None = None
 
     def coefficients(self, times: np.ndarray) -> np.ndarray:
         times = np.atleast_1d(np.asarray(times, dtype=float))
@@ -35,7 +51,17 @@ class PhysicalSystem:
     stiffness: sp.csr_matrix
     damping: sp.csr_matrix | None
     full_stiffness: sp.csr_matrix
+    full_mass: sp.csr_matrix | None = None
+    full_damping: sp.csr_matrix | None = None
     loads: list[Load] = field(default_factory=list)
+    # relations whose right-hand side a function of time multiplies
+    imposed: ImposedMotion | None = None
+    # the scheme's state of the imposed multipliers at every step instant,
+    # and the reduced forces Tᵀ K w, Tᵀ C w, Tᵀ M w it drives (follow_imposed)
+    _imposed_state: tuple | None = field(default=None, repr=False)
+    _imposed_operators: tuple | None = field(default=None, repr=False)
+    # Tᵀ S of each load history (S gathers its terms onto the DOFs), made once
+    _history_maps: dict = field(default_factory=dict, repr=False)
 
     @property
     def n_free(self) -> int:
@@ -70,8 +96,60 @@ class PhysicalSystem:
         offset = self.reduce_vector(self.full_stiffness @ self.elimination.u0)
         out = np.tile(-offset, (times.size, 1))
         for load in self.loads:
-            out += np.outer(load.coefficients(times), self.reduce_vector(load.vector))
+            coefficients = load.coefficients(times)
+            out += np.outer(coefficients, self.reduce_vector(load.vector))
+            if load.history is not None:
+                out += coefficients[:, None] * self.reduced_history(load.history, times)
         return out
+
+    def follow_imposed(self, states) -> None:
+        """Sets the scheme's (c, ċ, c̈) of the imposed multipliers, each
+        (n_times, k) over the step instants (see ``imposed``)."""
+        self._imposed_state = states
+        if self._imposed_operators is None:
+            shapes = self.imposed.shapes
+            damping = self.full_damping
+            self._imposed_operators = (
+                np.asarray(self.elimination.T.T @ (self.full_stiffness @ shapes)),
+                None if damping is None else np.asarray(self.elimination.T.T @ (damping @ shapes)),
+                np.asarray(self.elimination.T.T @ (self.full_mass @ shapes)),
+            )
+
+    def imposed_forces(self, start: int, stop: int) -> np.ndarray:
+        """-Tᵀ (K w c + C w ċ + M w c̈) at step instants start..stop-1: the
+        reduced forces of the imposed motion, (stop - start, n_free)."""
+        c, c_dot, c_ddot = (values[start:stop] for values in self._imposed_state)
+        stiffness, damping, mass = self._imposed_operators
+        out = -(c @ stiffness.T) - c_ddot @ mass.T
+        if damping is not None:
+            out -= c_dot @ damping.T
+        return out
+
+    def imposed_fields(self, steps: np.ndarray):
+        """Full displacement, velocity and acceleration of the imposed
+        motion at the step indices ``steps``: three (len(steps), n_dofs)."""
+        shapes = self.imposed.shapes
+        return tuple(values[steps] @ shapes.T for values in self._imposed_state)
+
+    def reduced_history(self, history: LoadHistory, times: np.ndarray) -> np.ndarray:
+        """A load history's reduced forces Tᵀ F(t), (n_times, n_free): its
+        terms go through one sparse map, with no full vector per instant."""
+        key = id(history)
+        if key not in self._history_maps:
+            rows = np.asarray(history.rows, dtype=int)
+            gather = sp.csr_matrix(
+                (np.ones(rows.size), (rows, np.arange(rows.size))), shape=(self.n_dofs, rows.size)
+            )
+            self._history_maps[key] = sp.csr_matrix(self.elimination.T.T @ gather)
+        values = np.asarray(history.values(times), dtype=float)
+        return np.asarray((self._history_maps[key] @ values.T).T)
+
+    def load_vector(self, load: Load, t: float) -> np.ndarray:
+        """The reduced vector a load multiplies by its coefficient at ``t``."""
+        vector = self.reduce_vector(load.vector)
+        if load.history is not None:
+            vector = vector + self.reduced_history(load.history, np.array([t]))[0]
+        return vector
 
     def diagonal_mass_inverse(self) -> np.ndarray | None:
         """1/m_ii when the reduced mass is diagonal (0 for massless DOFs),
@@ -87,7 +165,6 @@ class PhysicalSystem:
 
     def initial_acceleration(self, t0: float, q0, v0) -> np.ndarray:
         """M a0 = F(t0) - K q0 - C v0 (massless DOFs get a zero acceleration)."""
-        from scipy.sparse.linalg import splu
 
         rhs = self.forces([t0])[0] - self.stiffness @ q0
         if self.damping is not None:
@@ -98,15 +175,30 @@ class PhysicalSystem:
         return splu(sp.csc_matrix(self.mass)).solve(rhs)
 
 
-def build_system(numbering, mass, stiffness, damping, loads) -> PhysicalSystem:
-    b_matrix, rhs = numbering.constraint_matrix()
+def build_system(numbering, mass, stiffness, damping, loads, imposed=()) -> PhysicalSystem:
+    """``imposed``: (rhs, multiplier) pairs, rhs over the numbering's
+    relations, for the relations a function of time multiplies; those
+    relations get no constant right-hand side."""
+    b_matrix, rhs = numbering.constraint_matrix(rhs_in_time=True)
+    rhs = np.array(rhs, dtype=float)
+    for varying, _ in imposed:
+        rhs[np.asarray(varying) != 0.0] = 0.0
     elimination = eliminate(b_matrix, rhs, numbering.n_dofs)
     stiffness = sp.csr_matrix(stiffness)
+    mass = sp.csr_matrix(mass)
+    damping = sp.csr_matrix(damping) if damping is not None else None
+    motion = None
+    if imposed:
+        shapes = elimination.particular(np.stack([np.asarray(r, float) for r, _ in imposed], 1))
+        motion = ImposedMotion(shapes, [m for _, m in imposed])
     return PhysicalSystem(
         elimination=elimination,
-        mass=elimination.reduce(sp.csr_matrix(mass)),
+        mass=elimination.reduce(mass),
         stiffness=elimination.reduce(stiffness),
-        damping=elimination.reduce(sp.csr_matrix(damping)) if damping is not None else None,
+        damping=elimination.reduce(damping) if damping is not None else None,
         full_stiffness=stiffness,
+        full_mass=mass,
+        full_damping=damping,
         loads=list(loads),
+        imposed=motion,
     )

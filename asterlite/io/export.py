@@ -46,6 +46,9 @@ class RunDescription:
     units: dict[int, Path] = field(default_factory=dict)
     helper_modules: dict[str, Path] = field(default_factory=dict)  # module name -> .py file
     parameters: dict[str, str] = field(default_factory=dict)
+    # A lines: code_aster's own command-line arguments (``A args --max_base=100``):
+    # its database, echo and syntax-check settings, which do not change results
+    arguments: dict[str, str] = field(default_factory=dict)
     source: Path | None = None
     results: list[ResultFile] = field(default_factory=list)  # R lines, in order
     time_limit: float | None = None  # seconds (P time_limit)
@@ -70,7 +73,7 @@ def read_export(path: Path) -> RunDescription:
         if not line or line.startswith("#"):
             continue
         fields = line.split()
-        if not recognised and fields[0] not in ("F", "R", "P"):
+        if not recognised and fields[0] not in ("F", "R", "P", "A"):
             # not an export (a private file linked as one?): where, never what
             where = UnquotedLocation(str(path), number, 1, reason=NOT_AN_EXPORT)
             raise ExportError(NOT_AN_EXPORT, where)
@@ -83,8 +86,15 @@ def read_export(path: Path) -> RunDescription:
             if fields[1] in LIMITS:
                 setattr(run, fields[1], _limit(fields, where))
             continue
+        if fields[0] == "A":
+            if len(fields) < 2:
+                raise ExportError("expected 'A <name> <value>'", where)
+            run.arguments[fields[1]] = " ".join(fields[2:])
+            continue
         if fields[0] not in ("F", "R"):
-            raise ExportError(f"unrecognised line kind {fields[0]!r} (expected F, R or P)", where)
+            raise ExportError(
+                f"unrecognised line kind {fields[0]!r} (expected F, R, P or A)", where
+            )
         if len(fields) < 5:
             raise ExportError("expected 'F <type> <path> D|R <unit>'", where)
         kind, file_type, name, direction, unit_text = fields[:5]
@@ -118,7 +128,7 @@ def read_export(path: Path) -> RunDescription:
     return run
 
 
-NOT_AN_EXPORT = "not an export file: F, R or P lines were expected; the line is not shown"
+NOT_AN_EXPORT = "not an export file: F, R, P or A lines were expected; the line is not shown"
 # P lines asterlite enforces, both positive numbers (seconds, megabytes)
 LIMITS = ("time_limit", "memory_limit")
 # the largest limits taken (time: CPU seconds, about 31 years; memory and

@@ -3,7 +3,7 @@ of the language data and of ``asterlite check``'s verdicts.
 
 Usage::
 
-    python3 -m asterlite.catalog.language.astest_check GIT_DIR --version 17 \\
+    python3 -m asterlite.tools.astest_check GIT_DIR --version 17 \\
         [--sample 400 --seed 27 | --decks sdnd100a ...] [--jobs 2] \\
         [--markdown docs/language-astest-17.md] [--json FILE] [--work DIR]
 
@@ -42,6 +42,8 @@ import tempfile
 import time
 from collections import Counter
 from pathlib import Path
+
+from asterlite.runtime.check_deck import check_deck
 
 # ------------------------------------------------------------- the snapshot
 
@@ -176,7 +178,6 @@ def all_invalid_expected(result: dict) -> bool:
 
 def _check_one(task: tuple) -> dict:
     deck, export, version, time_limit = task
-    from asterlite.runtime.check_deck import check_deck
 
     start = time.perf_counter()
     try:
@@ -197,7 +198,7 @@ def _check_one(task: tuple) -> dict:
 
 def run_checks(tasks: list, jobs: int, progress=None, wall_limit: float = 600.0) -> list[dict]:
     """Check the decks in ``jobs`` worker processes (each ``python3 -m
-    asterlite.catalog.language.astest_check --worker``, one deck at a time).
+    asterlite.tools.astest_check --worker``, one deck at a time).
     A worker that dies (a backstop signal of the check's limits kills the
     process) or takes longer than ``wall_limit`` seconds on a deck gives
     that deck an ERROR and is replaced."""
@@ -258,7 +259,7 @@ def run_checks(tasks: list, jobs: int, progress=None, wall_limit: float = 600.0)
 class _Worker:
     def __init__(self):
         self.process = subprocess.Popen(
-            [sys.executable, "-m", "asterlite.catalog.language.astest_check", "--worker"],
+            [sys.executable, "-m", "asterlite.tools.astest_check", "--worker"],
             stdin=subprocess.PIPE,
             stdout=subprocess.PIPE,
             text=True,
@@ -324,7 +325,7 @@ def markdown(results: list[dict], version: int, commit: str, seconds: float, job
         "",
         f"Snapshot commit `{commit}`, {len(results)} decks, checked as code_aster {version} "
         f"in {seconds:.0f} s with {jobs} worker process(es) "
-        f"(`python3 -m asterlite.catalog.language.astest_check`).",
+        f"(`python3 -m asterlite.tools.astest_check`).",
         "",
         "| status | decks |",
         "|---|---|",
@@ -365,7 +366,7 @@ def main(argv: list[str] | None = None) -> int:
     if argv == ["--worker"]:
         return worker_loop()
     parser = argparse.ArgumentParser(
-        prog="python3 -m asterlite.catalog.language.astest_check",
+        prog="python3 -m asterlite.tools.astest_check",
         description="asterlite check on every astest deck of a code_aster snapshot",
     )
     parser.add_argument("git_dir", help="a (bare) git directory of code_aster")
