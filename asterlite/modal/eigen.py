@@ -184,7 +184,9 @@ def _large_shift_invert(k, m, sigma: float, count: int, factor=None, factor_seco
         how = {"method": "block Lanczos", **stats}
     except block_lanczos.LanczosNotConverged:
         op_inv = spla.LinearOperator((n, n), matvec=factor.solve, dtype=float)
-        vals, vecs = spla.eigsh(k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv)
+        vals, vecs = spla.eigsh(
+            k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv, v0=start_vector(n)
+        )
         how = {"method": "ARPACK"}
     how.update(
         backend=factor.backend,
