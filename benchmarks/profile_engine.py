@@ -27,6 +27,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np  # noqa: E402
 import tube_floor  # noqa: E402
 import tube_model as T
+from asterlite.commands.dyna_vibra_problem import catalogue_options
 
 from asterlite.dynamics.excitation import Excitation
 from asterlite.dynamics.integrate import integrate
@@ -58,6 +59,7 @@ def integrate_with(system, shocks, excitation, n_steps, dt, pas_arch, q0=None, s
         dt,
         np.array([t_end]),
         pas_arch,
+        catalogue_options("DIFF_CENTRE"),
         specialised=specialised,
     )
 

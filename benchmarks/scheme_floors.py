@@ -34,6 +34,7 @@ from __future__ import annotations
 import argparse
 import math
 import time
+from dataclasses import replace
 
 import numpy as np
 import tube_model as T
@@ -392,11 +393,13 @@ def engine_cpu_seconds(
     point) for ``scheme`` on the tube, fixed step (PAS_MINI = PAS_MAXI);
     ``specialised=False``: the scheme's general path (shocks in the global
     frame, as for the relations of laws/)."""
-    from asterlite.dynamics.integrate import SchemeOptions, integrate
+    from asterlite.commands.dyna_vibra_problem import catalogue_options
+
+    from asterlite.dynamics.integrate import integrate
 
     t_end = n_steps * dt
     zeros = np.zeros(T.N_MODES)
-    options = SchemeOptions(dt_min=dt, dt_max=dt)
+    options = replace(catalogue_options(scheme), dt_min=dt, dt_max=dt)
     best = float("inf")
     for _ in range(repeats + 1):  # the first run loads (or compiles) the kernel
         system, shocks, excitation = T.engine_inputs(problem, t_end, dt)

@@ -245,6 +245,8 @@ def run_engine(
 ):
     """asterlite's DYNA_VIBRA entry point (dynamics.integrate.integrate),
     DIFF_CENTRE, from rest. Returns its RunResult."""
+    from asterlite.commands.dyna_vibra_problem import catalogue_options
+
     from asterlite.dynamics.integrate import integrate
 
     t_end = n_steps * dt
@@ -262,4 +264,5 @@ def run_engine(
         dt,
         np.array([t_end]),
         pas_arch,
+        catalogue_options("DIFF_CENTRE"),
     )

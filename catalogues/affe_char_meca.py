@@ -6,7 +6,18 @@ AFFE_CHAR_MECA_F, where the values are functions instead of reals.
 
 from asterlite.catalogues.common import OUI_NON, group_ma, group_no, noeud, tout
 
-from asterlite.catalog import AU_MOINS_UN, BLOC, EXCLUS, FACT, OPER, SIMP, UN_PARMI, equal_to
+from asterlite.catalog import (
+    AU_MOINS_UN,
+    BLOC,
+    EXCLUS,
+    FACT,
+    OPER,
+    SIMP,
+    UN_PARMI,
+    absent,
+    equal_to,
+    exists,
+)
 
 # degrees of freedom a mechanical model may carry (the common subset of code_aster's list)
 DDL_MECANIQUE = (
@@ -314,6 +325,37 @@ LIAISON_ELEM = FACT(
 )
 
 
+# Laplace force per unit length on beam conductors; its intensity in time
+# (mu0 i1 i2 / 2 pi) comes from a FONC_MULT such as DEFI_FONC_ELEC's
+FORCE_ELEC = FACT(
+    statut="f",
+    max="**",
+    fr="Laplace force on beam conductors from a second, straight conductor",
+    regles=(UN_PARMI("TOUT", "GROUP_MA"),),
+    TOUT=tout(),
+    GROUP_MA=group_ma(),
+    POSITION=SIMP(statut="f", typ="TXM", into=("PARA", "INFI", "FINI")),
+    b_force=BLOC(
+        condition=absent("POSITION"),
+        FX=SIMP(statut="f", typ="R", defaut=0.0),
+        FY=SIMP(statut="f", typ="R", defaut=0.0),
+        FZ=SIMP(statut="f", typ="R", defaut=0.0),
+    ),
+    b_parallel=BLOC(
+        condition=equal_to("POSITION", "PARA"),
+        regles=(UN_PARMI("TRANS", "DIST"),),
+        TRANS=SIMP(statut="f", typ="R", max=3),
+        DIST=SIMP(statut="f", typ="R"),
+        b_point2=BLOC(condition=exists("DIST"), POINT2=SIMP(statut="o", typ="R", max=3)),
+    ),
+    b_line=BLOC(
+        condition=equal_to("POSITION", ("FINI", "INFI")),
+        POINT1=SIMP(statut="o", typ="R", max=3),
+        POINT2=SIMP(statut="o", typ="R", max=3),
+    ),
+)
+
+
 AFFE_CHAR_MECA = OPER(
     nom="AFFE_CHAR_MECA",
     sd_prod="char_meca",
@@ -342,6 +384,8 @@ AFFE_CHAR_MECA = OPER(
             "PRES_REP",
             "PRE_EPSI",
             "FORCE_POUTRE",
+            "FORCE_ELEC",
+            "FORCE_TUYAU",
             "EVOL_CHAR",
         ),
     ),  # fmt: skip
@@ -355,6 +399,7 @@ AFFE_CHAR_MECA = OPER(
         statut="f", typ="evol_char", fr="A load history: its nodal forces, linear in time"
     ),
     LIAISON_ELEM=LIAISON_ELEM,
+    FORCE_ELEC=FORCE_ELEC,
     LIAISON_CHAMNO=FACT(
         statut="f",
         max=1,
@@ -379,6 +424,15 @@ AFFE_CHAR_MECA = OPER(
         CENTRE=SIMP(statut="f", typ="R", min=2, max=3),
     ),
     VECT_ASSE=SIMP(statut="f", typ="cham_no_sdaster"),
+    FORCE_TUYAU=FACT(
+        statut="f",
+        max="**",
+        fr="Pressure inside pipe elements (TUYAU_3M, TUYAU_6M)",
+        regles=(AU_MOINS_UN("TOUT", "GROUP_MA"),),
+        TOUT=tout(),
+        GROUP_MA=group_ma(),
+        PRES=SIMP(statut="f", typ="R"),
+    ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
     **mechanical_loads("R"),
 )

@@ -127,5 +127,12 @@ CALC_CHAMP = OPER(
         NORME=SIMP(statut="f", typ="TXM", into=("L2", "FROBENIUS")),
         NUME_CHAM_RESU=SIMP(statut="o", typ="I", val_min=1, val_max=20),
     ),
+    PARALLELISME_TEMPS=SIMP(
+        no_effect="parallel computing over the instants",
+        statut="f",
+        typ="TXM",
+        defaut="NON",
+        into=("OUI", "NON"),
+    ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )

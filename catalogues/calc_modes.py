@@ -50,8 +50,9 @@ def _shift(**keywords) -> dict:
     """Keywords common to every search window."""
     return dict(
         **keywords,
-        NMAX_ITER_SHIFT=SIMP(statut="f", typ="I", defaut=3, val_min=0),
-        PREC_SHIFT=SIMP(statut="f", typ="R", defaut=5.0e-2, val_min=0.0),
+        # how the solver moves a shift that falls on an eigenvalue: its cost, not the modes
+        NMAX_ITER_SHIFT=SIMP(no_effect=EIGEN_TUNING, statut="f", typ="I", defaut=3, val_min=0),
+        PREC_SHIFT=SIMP(no_effect=EIGEN_TUNING, statut="f", typ="R", defaut=5.0e-2, val_min=0.0),
     )
 
 

@@ -2,6 +2,7 @@
 
 from asterlite.catalog import (
     AU_MOINS_UN,
+    BLOC,
     ENSEMBLE,
     EXCLUS,
     FACT,
@@ -10,6 +11,7 @@ from asterlite.catalog import (
     PRESENT_PRESENT,
     SIMP,
     UN_PARMI,
+    equal_to,
 )
 
 FONCTION = ("fonction_sdaster", "nappe_sdaster", "formule")
@@ -20,11 +22,11 @@ DEFI_MATERIAU = MACRO(
     reentrant="f",
     fr="Define the parameters of a material",
     regles=(
-        EXCLUS("ELAS", "ELAS_FO"),
+        EXCLUS("ELAS", "ELAS_FO", "ELAS_VISCO"),
         EXCLUS("ECRO_LINE", "ECRO_LINE_FO"),
         AU_MOINS_UN(
-            *("ELAS", "ELAS_FO", "ECRO_LINE", "ECRO_LINE_FO", "TRACTION"),
-            *("THER", "THER_FO", "THER_NL", "FATIGUE"),
+            *("ELAS", "ELAS_FO", "ELAS_VISCO", "ECRO_LINE", "ECRO_LINE_FO", "TRACTION"),
+            *("THER", "THER_FO", "THER_NL", "FATIGUE", "DIS_CONTACT"),
         ),
     ),
     MATER=SIMP(statut="f", typ="mater_sdaster"),
@@ -72,6 +74,13 @@ DEFI_MATERIAU = MACRO(
         LONG_CARA=SIMP(statut="f", typ="R", val_min=0.0),
         COEF_AMOR=SIMP(statut="f", typ="R", defaut=1.0),
     ),
+    ELAS_VISCO=FACT(
+        statut="f",
+        fr="Isotropic viscoelasticity at one frequency: complex shear modulus and Poisson ratio",
+        G=SIMP(statut="o", typ="C"),
+        NU=SIMP(statut="o", typ="C"),
+        RHO=SIMP(statut="f", typ="R"),
+    ),
     ECRO_LINE=FACT(
         statut="f",
         fr="Linear isotropic hardening",
@@ -86,6 +95,24 @@ DEFI_MATERIAU = MACRO(
         SY=SIMP(statut="o", typ=FONCTION),
     ),
     TRACTION=FACT(statut="f", fr="Tensile curve", SIGM=SIMP(statut="o", typ=FONCTION)),
+    # parameters of the MFront Iwan behaviour (soils): kept with the material,
+    # read by no command of asterlite (the linear ones use ELAS)
+    Iwan=FACT(
+        statut="f",
+        fr="Iwan soil behaviour: elasticity, hyperbolic distortion and exponent",
+        YoungModulus=SIMP(statut="o", typ="R"),
+        PoissonRatio=SIMP(statut="o", typ="R"),
+        HypDistortion=SIMP(statut="o", typ="R"),
+        HypExponent=SIMP(statut="o", typ="R"),
+    ),
+    Iwan_FO=FACT(
+        statut="f",
+        fr="Iwan soil behaviour given by functions",
+        YoungModulus=SIMP(statut="o", typ="fonction_sdaster"),
+        PoissonRatio=SIMP(statut="o", typ="fonction_sdaster"),
+        HypDistortion=SIMP(statut="o", typ="fonction_sdaster"),
+        HypExponent=SIMP(statut="o", typ="fonction_sdaster"),
+    ),
     # thermal and fatigue data: kept with the material (no command of asterlite uses them)
     THER=FACT(
         statut="f",
@@ -131,6 +158,32 @@ DEFI_MATERIAU = MACRO(
         E_REFE=SIMP(statut="f", typ="R"),
         D0=SIMP(statut="f", typ="R"),
         TAU0=SIMP(statut="f", typ="R"),
+    ),
+    # the contact law of a discrete element (relation DIS_CHOC of a non-linear
+    # computation): kept with the material; linear assemblies take the
+    # element's stiffness from AFFE_CARA_ELEM, as code_aster does
+    DIS_CONTACT=FACT(
+        statut="f",
+        fr="Contact law of a discrete element (normal stiffness, gaps, friction)",
+        regles=(PRESENT_ABSENT("DIST_2", "JEU"),),
+        RIGI_NOR=SIMP(statut="f", typ="R"),
+        RIGI_TAN=SIMP(statut="f", typ="R"),
+        AMOR_NOR=SIMP(statut="f", typ="R"),
+        AMOR_TAN=SIMP(statut="f", typ="R"),
+        KP=SIMP(statut="f", typ="R", defaut=0.0),
+        KT=SIMP(statut="f", typ="R", defaut=0.0),
+        KT1=SIMP(statut="f", typ="R", defaut=0.0),
+        KT2=SIMP(statut="f", typ="R", defaut=0.0),
+        COULOMB=SIMP(statut="f", typ="R", val_min=0.0),
+        DIST_1=SIMP(statut="f", typ="R", val_min=0.0),
+        DIST_2=SIMP(statut="f", typ="R", val_min=0.0),
+        JEU=SIMP(statut="f", typ="R", val_min=0.0),
+        INST_COMP_INIT=SIMP(statut="f", typ="R", max=2, min=2),
+        CONTACT=SIMP(statut="f", typ="TXM", into=("1D", "COIN_2D"), defaut="1D"),
+        b_coin_2d=BLOC(
+            condition=equal_to("CONTACT", "COIN_2D"),
+            PRECISION=SIMP(statut="o", typ="R", min=3, max=3),
+        ),
     ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),
 )

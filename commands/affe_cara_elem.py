@@ -5,21 +5,26 @@ other keywords are kept for the rooms that compute them."""
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands.affe_cara_elem_parasol import rigi_parasol
 
 from asterlite.concepts.assembly import DiscreteAssignment, ElementCharacteristics
 from asterlite.fem.beam import BeamError, seg2_angles
 from asterlite.fem.discrete import DiscreteError, expected_count, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS
+from asterlite.fem.fibres import section_integrals
 from asterlite.fem.frames import angles_from_x_and_y
+from asterlite.fem.pipe import PipeError
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_frames
 from asterlite.fem.sections import (
     SectionError,
     cara_dict,
     section_properties,
     uniform_varying_section,
 )
-from asterlite.fem.selection import as_scalar, as_tuple, select_cells
+from asterlite.fem.selection import as_scalar, as_tuple, node_group_members, select_cells
 
-_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG", "POU_D_EM", "POU_D_TGM")
+_MULTIFIBRE_BEAMS = ("POU_D_EM", "POU_D_TGM")
 _BARS = ("BARRE", "2D_BARRE")
 
 _OTHER_KEYWORDS = (
@@ -31,10 +36,8 @@ _OTHER_KEYWORDS = (
     "GRILLE",
     "MEMBRANE",
     "MASS_REP",
-    "RIGI_PARASOL",
     "MASS_AJOU",
     "GENE_TUYAU",
-    "MULTIFIBRE",
     "POUTRE_FLUI",
 )
 
@@ -94,11 +97,18 @@ def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
         ctx.error(f"VALE has {values.size} values, CARA uses {start}", "VALE", occ)
 
 
-def _orientation(ctx, model, result, occ) -> None:
+def _orientation(ctx, model, result, occ, generators: list) -> None:
     mesh = model.mesh
-    cells = select_cells(ctx, occ, mesh)
     cara = as_scalar(occ.get("CARA"))
     vale = np.atleast_1d(np.asarray(as_tuple(occ.get("VALE")), dtype=float))
+    if cara == "GENE_TUYAU":
+        nodes = node_group_members(ctx, occ, mesh)
+        if len(nodes) != 1:
+            ctx.error("GENE_TUYAU needs a GROUP_NO of one node", "GROUP_NO", occ)
+        precision = float(occ.get("PRECISION", 1.0e-4))
+        generators.append((int(nodes[0]), vale[:3], precision, occ.get("CRITERE", "RELATIF")))
+        return
+    cells = select_cells(ctx, occ, mesh)
     for cell in cells:
         cell = int(cell)
         conn = mesh.cell_nodes[cell]
@@ -154,10 +164,28 @@ def _poutre(ctx, model, result, occ) -> None:
     except SectionError as exc:
         ctx.error(str(exc), "CARA", occ)
     cells = select_cells(ctx, occ, model.mesh)
-    _check_cells(ctx, model, cells, _BEAMS, "POUTRE", occ)
+    _check_cells(ctx, model, cells, _BEAMS + PIPE_MODELISATIONS, "POUTRE", occ)
+    pipes = [c for c in cells if model.cell_modelisation.get(int(c)) in PIPE_MODELISATIONS]
+    if pipes:
+        props = _pipe_section(ctx, occ, section, vari, props)
     for cell in cells:
         # a later occurrence completes or overrides the section of a cell
         result.sections[int(cell)] = dict(props)
+
+
+def _pipe_section(ctx, occ, section, vari, props) -> dict:
+    """A pipe's section: a tube (CERCLE with R and EP) and its integration
+    (TUYAU_NSEC sectors, TUYAU_NCOU layers, MODI_METRIQUE)."""
+    if section != "CERCLE" or "EP" not in as_tuple(occ.get("CARA")):
+        ctx.error("pipe elements need SECTION='CERCLE' with R and EP", "SECTION", occ)
+    if vari != "CONSTANT":
+        ctx.unsupported(f"POUTRE VARI_SECT={vari!r} on pipe elements", "VARI_SECT", occ)
+    return {
+        **props,
+        "TUYAU_NSEC": int(occ.get("TUYAU_NSEC", 16)),
+        "TUYAU_NCOU": int(occ.get("TUYAU_NCOU", 3)),
+        "MODI_METRIQUE": 1.0 if occ.get("MODI_METRIQUE", "NON") == "OUI" else 0.0,
+    }
 
 
 def _barre(ctx, model, result, occ) -> None:
@@ -183,9 +211,10 @@ def _barre(ctx, model, result, occ) -> None:
 
 def _coque(ctx, model, result, occ) -> None:
     """Plate characteristics of DKT cells: thickness, the DRZ stiffness
-    coefficient, rotary inertia, offset. The stress-output frame (ANGL_REP, VECTEUR),
-    the layer count and the shear coefficient of thick plates (A_CIS) change
-    no matrix of a thin isotropic plate."""
+    coefficient, rotary inertia, offset, and the output frame of its forces
+    (ANGL_REP, degrees; VECTEUR is kept so that the fields refuse it), the
+    layer count of its stress sub-points (COQUE_NCOU). The shear coefficient
+    of thick plates (A_CIS) changes no matrix of a thin isotropic plate."""
     if occ.get("EPAIS_FO") is not None:
         ctx.unsupported("COQUE EPAIS_FO (thickness given by a function)", "EPAIS_FO", occ)
     if occ.get("EXCENTREMENT_FO") is not None:
@@ -199,19 +228,69 @@ def _coque(ctx, model, result, occ) -> None:
     thickness = float(occ["EPAIS"])
     if not thickness > 0.0:
         ctx.error(f"EPAIS must be > 0, got {thickness}", "EPAIS", occ)
-    for no_effect in ("ANGL_REP", "VECTEUR", "A_CIS", "COQUE_NCOU"):
+    for no_effect in ("A_CIS",):
         occ.get(no_effect)
+    angles = tuple(float(a) for a in (occ.get("ANGL_REP") or (0.0, 0.0)))
     values = {
         "EPAIS": thickness,
         "COEF_RIGI_DRZ": float(occ.get("COEF_RIGI_DRZ", 1.0e-5)),
         # EXCENTREMENT implies INER_ROTA='OUI' (code_aster's rule)
         "INER_ROTA": 1.0 if occ.get("INER_ROTA") == "OUI" or offset_given else 0.0,
         "EXCENTREMENT": offset,
+        "ANGL_REP": angles,
+        # layers of the stress sub-points (SIEF_ELGA, SIGM_ELNO)
+        "COQUE_NCOU": int(occ.get("COQUE_NCOU", 1)),
+        "VECTEUR": occ.get("VECTEUR"),
     }
     if values["COEF_RIGI_DRZ"] < 0.0:
         ctx.unsupported("COQUE COEF_RIGI_DRZ < 0 (drilling rotations)", "COEF_RIGI_DRZ", occ)
     for cell in select_cells(ctx, occ, model.mesh):
         result.shells[int(cell)] = dict(values)
+
+
+def _multifibre(ctx, model, result, occ, geometry) -> None:
+    """Fibre groups of POU_D_EM cells, checked as code_aster does against the
+    cell's POUTRE section: |A - Σ A_f| / A <= PREC_AIRE and the same for IY
+    (Σ z² A_f) and IZ (Σ y² A_f) with PREC_INERTIE."""
+    mesh = model.mesh
+    names = as_tuple(occ["GROUP_FIBRE"])
+    missing = [n for n in names if n not in geometry.groups]
+    if missing:
+        ctx.error(f"GEOM_FIBRE has no fibre group {missing[0]!r}", "GROUP_FIBRE", occ)
+    integrals = sum(
+        section_integrals(g.y, g.z, g.area) for g in (geometry.groups[n] for n in names)
+    )
+    cells = select_cells(ctx, occ, mesh)
+    _check_cells(ctx, model, cells, _MULTIFIBRE_BEAMS, "MULTIFIBRE", occ)
+    checks = (
+        ("A", integrals[0], "PREC_AIRE", 0.01),
+        ("IY", integrals[4], "PREC_INERTIE", 0.1),
+        ("IZ", integrals[3], "PREC_INERTIE", 0.1),
+    )
+    for cell in cells:
+        section = result.sections.get(int(cell))
+        name = mesh.cell_names[cell]
+        if section is None:
+            ctx.error(
+                f"multifibre cell {name} has no POUTRE section (its A, IY, IZ are checked "
+                "against the fibres and its JX gives the torsion)",
+                "GROUP_MA",
+                occ,
+            )
+        for cara, fibres, keyword, default in checks:
+            given = float(section[cara])
+            if not given > 0.0:
+                ctx.error(f"the POUTRE section of cell {name} has {cara} <= 0", "GROUP_MA", occ)
+            precision = float(occ.get(keyword, default))
+            error = abs(given - fibres) / given
+            if error > precision:
+                ctx.error(
+                    f"cell {name}: {cara} of the POUTRE section is {given:.6g}, the fibres "
+                    f"give {fibres:.6g}, relative difference {error:.3g} > {keyword}={precision:g}",
+                    keyword,
+                    occ,
+                )
+        result.fibre_groups[int(cell)] = tuple(names)
 
 
 def _verify_cells(ctx, model, kw) -> None:
@@ -222,6 +301,8 @@ def _verify_cells(ctx, model, kw) -> None:
     if "MAILLE" not in as_tuple(kw.get("VERIF")):
         return
     for occ in kw.factor("ORIENTATION"):
+        if occ.get("CARA") == "GENE_TUYAU":
+            continue  # a node of a pipe line, checked with the pipe frames
         cells = select_cells(ctx, occ, model.mesh)
         _check_cells(ctx, model, cells, _BEAMS + DISCRETE_MODELISATIONS, "ORIENTATION", occ)
     others = [k for k in _OTHER_KEYWORDS if k not in ("POUTRE", "BARRE") and kw.get(k)]
@@ -233,23 +314,56 @@ def _verify_cells(ctx, model, kw) -> None:
         )
 
 
+def _pipe_frames(ctx, model, result, generators, kw) -> None:
+    """Frames of every pipe cell of the model, from the pipe lines and
+    ORIENTATION GENE_TUYAU (code_aster's aceatu)."""
+    pipes = [c for c, m in model.cell_modelisation.items() if m in PIPE_MODELISATIONS]
+    if generators and not pipes:
+        # code_aster reads GENE_TUYAU only to orient pipe elements
+        ctx.log("warning: ORIENTATION GENE_TUYAU on a model without pipe elements: no effect")
+    if not pipes:
+        return
+    try:
+        result.pipe_frames = pipe_frames(model.mesh, sorted(pipes), generators)
+    except PipeError as exc:
+        if "elbow" in str(exc):
+            ctx.unsupported(str(exc), "ORIENTATION" if generators else "POUTRE", kw)
+        ctx.error(str(exc), "ORIENTATION" if generators else "POUTRE", kw)
+
+
 def run(ctx, kw):
     model = kw["MODELE"]
     result = ElementCharacteristics(model=model)
     _verify_cells(ctx, model, kw)
     # orientations first: DISCRET ... REPERE='LOCAL' uses them whatever the order
+    generators: list = []
     for occ in kw.factor("ORIENTATION"):
-        _orientation(ctx, model, result, occ)
+        _orientation(ctx, model, result, occ, generators)
     for occ in kw.factor("DISCRET"):
         _discrete(ctx, model, result, occ, 3, "DISCRET")
     for occ in kw.factor("DISCRET_2D"):
         _discrete(ctx, model, result, occ, 2, "DISCRET_2D")
+    for occ in kw.factor("RIGI_PARASOL"):
+        rigi_parasol(ctx, model, result, occ)
     for occ in kw.factor("POUTRE"):
         _poutre(ctx, model, result, occ)
     for occ in kw.factor("BARRE"):
         _barre(ctx, model, result, occ)
     for occ in kw.factor("COQUE"):
         _coque(ctx, model, result, occ)
+    if kw.get("GEOM_FIBRE") is not None:
+        result.geom_fibre = kw["GEOM_FIBRE"]
+    for occ in kw.factor("MULTIFIBRE"):
+        _multifibre(ctx, model, result, occ, result.geom_fibre)
+    without = [
+        c
+        for c, m in model.cell_modelisation.items()
+        if m in _MULTIFIBRE_BEAMS and c not in result.fibre_groups
+    ]
+    if kw.factor("MULTIFIBRE") and without:
+        names = ", ".join(model.mesh.cell_names[c] for c in without[:5])
+        ctx.error(f"multifibre beam cells {names} have no fibres (MULTIFIBRE)", "MULTIFIBRE", kw)
+    _pipe_frames(ctx, model, result, generators, kw)
     for keyword in _OTHER_KEYWORDS:
         if kw.get(keyword):
             result.extra[keyword] = kw.factor(keyword)

@@ -1,17 +1,21 @@
 """AFFE_CHAR_MECA: kinematic relations (DDL_IMPO, LIAISON_DDL, LIAISON_UNIF,
-LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU, FACE_IMPO)
-and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE; FORCE_FACE, PRES_REP,
+LIAISON_SOLIDE, LIAISON_GROUP, LIAISON_CHAMNO, LIAISON_ELEM 3D_POU and 3D_POU_ARLEQUIN, FACE_IMPO)
+and loads (FORCE_NODALE, PESANTEUR, FORCE_POUTRE, FORCE_ELEC, FORCE_TUYAU, FORCE_ARETE
+on the edges of DKT plates; FORCE_FACE, PRES_REP,
 FORCE_INTERNE on 3D solids; PRES_REP, FORCE_CONTOUR on the edges and
 FORCE_INTERNE on the surfaces of plane models) on a model."""
 
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands.liaison_arlequin import arlequin_link
 
 from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
 from asterlite.fem.elements import ElementError
 from asterlite.fem.frames import rotation_from_angles
+from asterlite.fem.laplace_force import DIRECT, DIST, FINITE, INFINITE, TRANS, SecondConductor
 from asterlite.fem.node_normals import node_normals
+from asterlite.fem.pipe_elements import FOURIER_COMPONENTS, PIPE_MODELISATIONS
 from asterlite.fem.plane_elements import EDGE_CELLS, PLANE_MODELISATIONS, surface_cells
 from asterlite.fem.selection import (
     as_tuple,
@@ -25,10 +29,15 @@ from asterlite.fem.skin import inward_faces, is_plane
 from asterlite.fem.solid_beam_link import face_section, solid_beam_relations
 from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS
 
-_DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
+_DDL_COMPONENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX", *FOURIER_COMPONENTS)
 _FORCE_COMPONENTS = {"FX": "DX", "FY": "DY", "FZ": "DZ", "MX": "DRX", "MY": "DRY", "MZ": "DRZ"}
 _ENCASTRE = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
-_BLOCAGE = {"DEPLACEMENT": ("DX", "DY", "DZ"), "ROTATION": ("DRX", "DRY", "DRZ")}
+_BLOCAGE = {
+    "DEPLACEMENT": ("DX", "DY", "DZ"),
+    "ROTATION": ("DRX", "DRY", "DRZ"),
+    # the ovalisation terms of pipe elements
+    "TUYAU_FOURIER": FOURIER_COMPONENTS,
+}
 
 
 def constant_value(raw, node: int, key: str) -> float:
@@ -36,9 +45,13 @@ def constant_value(raw, node: int, key: str) -> float:
     return float(raw)
 
 
-def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> None:
+def _ddl_impo(
+    ctx, model, components, load, occ, value_at=constant_value, skip_absent=False
+) -> None:
+    """``skip_absent``: a component a node does not carry is passed over
+    (AFFE_CHAR_CINE builds its field on the components that exist)."""
     mesh = model.mesh
-    everywhere = occ.get("TOUT") == "OUI"
+    everywhere = occ.get("TOUT") == "OUI" or skip_absent
     nodes = select_nodes(ctx, occ, mesh, all_nodes=list(components))
     imposed = {c: occ[c] for c in _DDL_COMPONENTS if occ.get(c) is not None}
     given = {c for c in _DDL_COMPONENTS if occ.get(c) is not None}
@@ -49,7 +62,8 @@ def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> Non
     for kind in as_tuple(occ.get("BLOCAGE")):
         if kind not in _BLOCAGE:
             ctx.unsupported(f"DDL_IMPO BLOCAGE={kind!r}", "BLOCAGE", occ)
-        # BLOCAGE fixes the components the nodes carry (none is required)
+        # BLOCAGE fixes the components the nodes carry (none is required,
+        # but TUYAU_FOURIER needs Fourier DOFs on each node, as code_aster)
         imposed.update({c: 0.0 for c in _BLOCAGE[kind] if c not in given})
         optional |= set(_BLOCAGE[kind]) - given
     excluded = set(node_group_members(ctx, occ, mesh, "SANS_GROUP_NO"))
@@ -57,6 +71,15 @@ def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> Non
         excluded |= set(mesh.nodes_of_cells(cell_group_members(ctx, occ, mesh, "SANS_GROUP_MA")))
     if excluded:
         nodes = np.array([n for n in nodes if int(n) not in excluded], dtype=int)
+    if "TUYAU_FOURIER" in as_tuple(occ.get("BLOCAGE")):
+        for node in nodes:
+            if not set(FOURIER_COMPONENTS) & set(components.get(int(node), ())):
+                ctx.error(
+                    f"BLOCAGE='TUYAU_FOURIER': node {mesh.node_names[node]} carries no "
+                    "Fourier DOF of a pipe element",
+                    "BLOCAGE",
+                    occ,
+                )
     if not imposed:
         ctx.error("no component is imposed", None, occ)
     for comp, value in imposed.items():
@@ -74,7 +97,7 @@ def _ddl_impo(ctx, model, components, load, occ, value_at=constant_value) -> Non
             imposed_value = value_at(value, int(node), comp)
             load.relations.append(LinearRelation([(int(node), comp, 1.0)], imposed_value))
             applied += 1
-        if applied == 0 and comp not in optional:
+        if applied == 0 and comp not in optional and not skip_absent:
             ctx.error(f"no node of the selection carries {comp}", comp, occ)
 
 
@@ -318,9 +341,14 @@ def _liaison_chamno(ctx, model, components, load, occ) -> None:
 
 def _liaison_elem(ctx, model, components, load, occ) -> None:
     """OPTION='3D_POU': the beam node follows the mean motion of the solid's
-    face (asterlite.fem.solid_beam_link); the other options are refused."""
+    face (asterlite.fem.solid_beam_link); '3D_POU_ARLEQUIN': the beam is tied
+    to the solid it runs in (commands.liaison_arlequin); the other options
+    are refused."""
 
     option = occ["OPTION"]
+    if option == "3D_POU_ARLEQUIN":
+        arlequin_link(ctx, model, components, load, occ)
+        return
     if option != "3D_POU":
         ctx.unsupported(f"LIAISON_ELEM OPTION={option!r}", "OPTION", occ)
     mesh = model.mesh
@@ -382,7 +410,7 @@ def _warn_link_geometry(ctx, mesh, faces, section, beam_node, angle_max) -> None
 
 _BEAM_LOAD_GLOBAL = ("FX", "FY", "FZ", "MX", "MY", "MZ")
 _BEAM_LOAD_LOCAL = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
-_BEAM_LOADED = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE")
+_BEAM_LOADED = ("POU_D_E", "POU_D_T", "POU_D_TG", "POU_D_EM", "POU_D_TGM", "BARRE")
 
 
 def beam_load_cells(ctx, model, occ) -> np.ndarray:
@@ -395,6 +423,9 @@ def beam_load_cells(ctx, model, occ) -> np.ndarray:
     for cell in cells:
         if model.cell_modelisation.get(int(cell)) in _BEAM_LOADED:
             kept.append(int(cell))
+        elif model.cell_modelisation.get(int(cell)) in PIPE_MODELISATIONS:
+            # code_aster loads pipes too (te0583), asterlite not yet
+            ctx.unsupported("FORCE_POUTRE on pipe elements (TUYAU_3M, TUYAU_6M)", "GROUP_MA", occ)
         elif occ.get("TOUT") != "OUI":
             ctx.error(
                 f"FORCE_POUTRE on cell {model.mesh.cell_names[cell]}, which is not a beam",
@@ -420,6 +451,47 @@ def _force_poutre(ctx, model, load, occ) -> None:
     load.extra.setdefault("FORCE_POUTRE", []).append(
         {"CELLS": cells, "VALUES": values, "LOCAL": local}
     )
+
+
+#: the modelisations whose elements compute the Laplace force (code_aster's
+#: CHAR_MECA_FRELEC; its POU_D_EM and POU_D_TGM are not asterlite's)
+_CONDUCTORS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+
+
+def _point(occ, key) -> tuple[float, float, float]:
+    values = [float(v) for v in as_tuple(occ.get(key))]
+    # code_aster reads three values; fewer leave the others at zero
+    return tuple(values + [0.0] * (3 - len(values)))[:3]
+
+
+def _second_conductor(occ) -> SecondConductor:
+    position = occ.get("POSITION")
+    if position is None:
+        return SecondConductor(DIRECT, tuple(float(occ.get(k) or 0.0) for k in ("FX", "FY", "FZ")))
+    if position == "PARA":
+        if occ.get("DIST") is not None:
+            return SecondConductor(DIST, (float(occ["DIST"]), 0.0, 0.0), _point(occ, "POINT2"))
+        return SecondConductor(TRANS, _point(occ, "TRANS"))
+    kind = INFINITE if position == "INFI" else FINITE
+    return SecondConductor(kind, _point(occ, "POINT1"), _point(occ, "POINT2"))
+
+
+def _force_elec(ctx, model, load, occ) -> None:
+    """The second conductor of each beam cell; a later occurrence replaces an
+    earlier one on the cells they share (code_aster fills one map of values
+    per cell). Cells of other elements carry no Laplace force, as in
+    code_aster, whose other elements do not compute it."""
+    cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    conductor = _second_conductor(occ)
+    on_cells = load.extra.setdefault("FORCE_ELEC", {})
+    skipped = 0
+    for cell in cells:
+        if model.cell_modelisation.get(int(cell)) in _CONDUCTORS:
+            on_cells[int(cell)] = conductor
+        else:
+            skipped += 1
+    if skipped:
+        ctx.log(f"FORCE_ELEC: {skipped} cells are not beams and carry no Laplace force")
 
 
 def _force_nodale(ctx, model, components, load, occ, value_at=constant_value) -> None:
@@ -539,18 +611,54 @@ def _solid_loads(ctx, model, load, kw) -> None:
             )
 
 
+def _force_tuyau(ctx, model, load, occ) -> None:
+    """FORCE_TUYAU: a pressure inside the pipe cells of the selection (the
+    other cells have no such load, as in code_aster), assembled with the
+    cells' frames (asterlite.fem.pipe_elements.pipe_pressure_terms)."""
+    cells = select_cells(ctx, occ, model.mesh, all_cells=sorted(model.cell_modelisation))
+    pipes = [int(c) for c in cells if model.cell_modelisation.get(int(c)) in PIPE_MODELISATIONS]
+    if not pipes:
+        ctx.error("FORCE_TUYAU: no pipe element (TUYAU_3M, TUYAU_6M) among the cells", None, occ)
+    pressure = occ.get("PRES")
+    if pressure is not None:
+        load.extra.setdefault("FORCE_TUYAU", []).append(
+            {"CELLS": np.array(pipes, dtype=int), "PRES": float(pressure)}
+        )
+
+
+def _force_arete(ctx, model, components, load, occ) -> None:
+    """FORCE_ARETE on the edges (SEG2) of DKT plates: forces and moments per
+    unit length in the global frame, half of each times the edge's length at
+    each of its nodes (code_aster's te0034); on other elements refused by name."""
+    mesh = model.mesh
+    given = {k: float(occ[k]) for k in _FORCE_COMPONENTS if occ.get(k) is not None}
+    cells = _cells_carrying(ctx, model, occ, {"DKT": ("SEG2",)}, "FORCE_ARETE")
+    for cell in cells:
+        nodes = [int(n) for n in mesh.cell_nodes[int(cell)]]
+        half = 0.5 * float(np.linalg.norm(mesh.coords[nodes[1]] - mesh.coords[nodes[0]]))
+        for key, value in given.items():
+            comp = _FORCE_COMPONENTS[key]
+            for node in nodes:
+                if comp not in components.get(node, ()):
+                    ctx.error(f"node {mesh.node_names[node]} has no {comp} DOF", key, occ)
+                load.nodal_forces.append((node, comp, value * half))
+
+
 #: the factor keywords read one occurrence at a time, in the order their terms
 #: are added to the load
 _OCCURRENCE_READERS = (
     ("DDL_IMPO", _ddl_impo),
     ("LIAISON_DDL", _liaison_ddl),
     ("FORCE_NODALE", _force_nodale),
+    ("FORCE_ARETE", _force_arete),
     ("LIAISON_UNIF", _liaison_unif),
     ("LIAISON_SOLIDE", _liaison_solide),
     (
         "FORCE_POUTRE",
         lambda ctx, model, _components, load, occ: _force_poutre(ctx, model, load, occ),
     ),
+    ("FORCE_ELEC", lambda ctx, model, _components, load, occ: _force_elec(ctx, model, load, occ)),
+    ("FORCE_TUYAU", lambda ctx, model, _components, load, occ: _force_tuyau(ctx, model, load, occ)),
     ("LIAISON_ELEM", _liaison_elem),
     ("FACE_IMPO", _face_impo),
     ("LIAISON_GROUP", _liaison_group),
@@ -579,8 +687,27 @@ def run(ctx, kw):
         }
     if kw.get("EVOL_CHAR") is not None:
         _evol_char(ctx, model, load, kw)
+    if kw.get("VECT_ASSE") is not None:
+        _vect_asse(ctx, load, kw)
     ctx.log(f"load: {len(load.relations)} relations, {len(load.nodal_forces)} nodal forces")
     return load
+
+
+def _vect_asse(ctx, load, kw) -> None:
+    """VECT_ASSE: an assembled vector taken as the load's nodal forces, DOF by
+    DOF (code_aster adds it to the load vectors as it is)."""
+    vector = kw["VECT_ASSE"]
+    values = np.asarray(getattr(vector, "values", None))
+    numbering = getattr(vector, "numbering", None)
+    if numbering is None or values.ndim != 1 or len(values) != numbering.n_dofs:
+        ctx.error("VECT_ASSE must be an assembled vector (cham_no)", "VECT_ASSE", kw)
+    if np.iscomplexobj(values):
+        ctx.unsupported("AFFE_CHAR_MECA/VECT_ASSE of a complex vector", "VECT_ASSE", kw)
+    load.extra["VECT_ASSE"] = [
+        (int(node), str(component), float(value))
+        for (node, component), value in zip(numbering.dofs, values, strict=True)
+        if value != 0.0
+    ]
 
 
 def _evol_char(ctx, model, load, kw) -> None:

@@ -7,9 +7,13 @@ code_aster evaluates such a function where the load acts: at the node for
 DDL_IMPO and FORCE_NODALE, at both nodes of each beam cell for FORCE_POUTRE
 (the load then varies linearly along the cell, ptforp/ptfop1), with the
 parameters X, Y, Z of the point (and INST, the current time, in time
-stepping). asterlite evaluates them once, when the load is built: a function
-of INST (a load varying in time) is refused, as are the other keywords of the
-catalogue (not read, hence refused by name).
+stepping, or FREQ, in a harmonic response). asterlite evaluates them once,
+when the load is built, except DDL_IMPO values of INST (evaluated in time by
+a physical-basis transient) or FREQ (evaluated at each frequency by
+DYNA_VIBRA HARM) and FORCE_NODALE values of INST (a history of nodal forces,
+evaluated at its instants by a physical-basis transient, refused by the
+commands that take a fixed load vector); forces of FREQ are refused, as are
+the other keywords of the catalogue (not read, hence refused by name).
 """
 
 from __future__ import annotations
@@ -17,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 from asterlite.commands import affe_char_meca
 
-from asterlite.concepts.assembly import MechanicalLoad, ValueInTime
+from asterlite.concepts.assembly import MechanicalLoad, ValueInFrequency, ValueInTime
 from asterlite.errors import CommandError
 from asterlite.fem.plane_wave import PlaneWave
 from asterlite.fem.selection import select_cells
@@ -34,11 +38,13 @@ def _parameters(function) -> tuple[str, ...]:
     return tuple(names)
 
 
-def _evaluator(ctx, model, occ, in_time=None):
+def _evaluator(ctx, model, occ, in_time=None, in_frequency=None):
     """value_at(function, node, key): the function at the node's coordinates.
     ``in_time`` (a dict): a function of INST is accepted, its value at
     INST=0 returned and its ``ValueInTime`` kept in ``in_time[(node, key)]``;
-    without it, such a function is refused."""
+    ``in_frequency`` likewise for a function of FREQ (evaluated at each
+    frequency of a harmonic response: 0 is returned); without them, such
+    functions are refused."""
 
     coords = model.mesh.coords
 
@@ -46,6 +52,26 @@ def _evaluator(ctx, model, occ, in_time=None):
         if isinstance(function, (int, float)):
             return float(function)
         names = _parameters(function)
+        if "FREQ" in names and in_frequency is not None:
+            # code_aster evaluates it at each frequency of a harmonic response
+            unknown = [p for p in names if p not in _GEOMETRY and p not in ("FREQ", _CONSTANT)]
+            if unknown:
+                ctx.error(
+                    f"{key}: the function {function.name or ''} depends on "
+                    f"{', '.join(unknown)}; an imposed value takes X, Y, Z and FREQ",
+                    key,
+                    occ,
+                )
+            point = tuple(float(x) for x in np.pad(coords[node], (0, 3 - len(coords[node]))))
+            in_frequency[(node, key)] = ValueInFrequency(function, point)
+            return 0.0
+        if "FREQ" in names:
+            ctx.unsupported(
+                f"{ctx.command} {key}={function.name or 'function'} depends on FREQ (a value "
+                "varying with the frequency of a harmonic response)",
+                key,
+                occ,
+            )
         if "INST" in names and in_time is not None:
             unknown = [p for p in names if p not in _GEOMETRY and p not in ("INST", _CONSTANT)]
             if unknown:
@@ -87,6 +113,28 @@ def _evaluator(ctx, model, occ, in_time=None):
         return float(np.real(value))
 
     return value_at
+
+
+def _forces_in_time(load, first: int, in_time: dict) -> None:
+    """The nodal forces of one FORCE_NODALE occurrence that are functions of
+    INST leave the constant terms for the load's history
+    (``extra['FORCE_NODALE_INST']``: node, component, ValueInTime), which a
+    physical-basis transient evaluates at its instants
+    (asterlite.fem.loads.load_history)."""
+    if not in_time:
+        return
+    timed = {
+        (node, affe_char_meca._FORCE_COMPONENTS[key]): value
+        for (node, key), value in in_time.items()
+    }
+    added = load.nodal_forces[first:]
+    del load.nodal_forces[first:]
+    history = load.extra.setdefault("FORCE_NODALE_INST", [])
+    for node, component, value in added:
+        if (node, component) in timed:
+            history.append((node, component, timed[(node, component)]))
+        else:
+            load.nodal_forces.append((node, component, value))
 
 
 def _force_poutre(ctx, model, load, occ) -> None:
@@ -149,18 +197,25 @@ def run(ctx, kw):
     model = kw["MODELE"]
     components = model.node_components()
     load = MechanicalLoad(model=model)
+    if not any(kw.factor(k) for k in ("FACE_IMPO", "PRES_REP", "FORCE_COQUE", "EFFE_FOND")):
+        # code_aster's VERI_NORM checks the faces of these keywords only
+        kw.mark_used("VERI_NORM")
     for occ in kw.factor("DDL_IMPO"):
-        in_time = {}
+        in_time, in_frequency = {}, {}
         first = len(load.relations)
-        value_at = _evaluator(ctx, model, occ, in_time)
+        value_at = _evaluator(ctx, model, occ, in_time, in_frequency)
         affe_char_meca._ddl_impo(ctx, model, components, load, occ, value_at=value_at)
         for relation in load.relations[first:]:
             if len(relation.terms) == 1:
                 node, component, _ = relation.terms[0]
                 relation.rhs_in_time = in_time.get((node, component))
+                relation.rhs_in_frequency = in_frequency.get((node, component))
     for occ in kw.factor("FORCE_NODALE"):
-        value_at = _evaluator(ctx, model, occ)
+        in_time = {}
+        first = len(load.nodal_forces)
+        value_at = _evaluator(ctx, model, occ, in_time)
         affe_char_meca._force_nodale(ctx, model, components, load, occ, value_at=value_at)
+        _forces_in_time(load, first, in_time)
     for occ in kw.factor("FORCE_POUTRE"):
         _force_poutre(ctx, model, load, occ)
     for occ in kw.factor("ONDE_PLANE"):

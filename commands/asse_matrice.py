@@ -10,10 +10,12 @@ from asterlite.fem.selection import as_tuple
 
 
 def run(ctx, kw):
-    if kw.get("CHAR_CINE") is not None:
-        ctx.unsupported("ASSE_MATRICE CHAR_CINE", "CHAR_CINE", kw)
     elementary = as_tuple(kw["MATR_ELEM"])
     numbering = kw["NUME_DDL"]
+    # kinematic loads: their DOFs are eliminated with the numbering's relations
+    kinematic = as_tuple(kw.get("CHAR_CINE"))
+    if kinematic:
+        numbering = numbering.with_kinematic(kinematic)
     blocks = [b for m in elementary for b in m.blocks]
     try:
         matrix = assemble_blocks(blocks, numbering)

@@ -37,7 +37,11 @@ from asterlite.fem.element_fields import (
     nodal_average,
 )
 from asterlite.fem.elements import ElementError
+from asterlite.fem.fibre_fields import multifibre_stresses
 from asterlite.fem.loads import beam_element_loads, load_terms
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_element_fields
+from asterlite.fem.plate_elements import PLATE_MODELISATIONS
+from asterlite.fem.plate_fields import plate_element_fields
 from asterlite.fem.selection import as_tuple, select_cells
 from asterlite.fem.solid_fields import SOLID_FIELDS, solid_cells_of, solid_element_fields
 from asterlite.harmonic.loads import load_matrix
@@ -49,8 +53,11 @@ from asterlite.post.nodal_forces import (
 )
 from asterlite.post.restitution import selection_from_keywords
 
-_BEAMS = ("POU_D_E", "POU_D_T")
+_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+#: what CALC_CHAMP computes on multifibre beams (POU_D_EM)
+_MULTIFIBRE_OPTIONS = ("SIEF_ELGA", "EFGE_ELNO", "EFGE_NOEU")
 _BARS = ("BARRE", "2D_BARRE")
+_PIPES = PIPE_MODELISATIONS
 
 
 _DISCRETE = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
@@ -130,11 +137,34 @@ def _bar_fields(ctx, kw, result, model, characteristics, materials, bars, names)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {bars.size} bar cells, {values.shape[0]} orders")
 
 
-def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
-    """Stresses, strains and energies of 3D and plane solid cells
-    (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
+def _multifibre_fields(ctx, kw, result, model, characteristics, materials, cells) -> None:
+    """SIEF_ELGA (fibre stresses SIXX) of POU_D_EM cells; a model where they
+    are mixed with other element families is refused."""
+    mixed = sorted({m for c, m in model.cell_modelisation.items() if m != "POU_D_EM"})
+    if mixed:
+        ctx.unsupported(
+            f"CALC_CHAMP on POU_D_EM cells mixed with {', '.join(mixed)} cells", "CONTRAINTE", kw
+        )
+    values = _nodal_values(ctx, result, kw)
+    try:
+        field = multifibre_stresses(
+            model, characteristics, materials, result.numbering, cells, values
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    fields = {"SIEF_ELGA": field}
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    ctx.log(
+        f"CALC_CHAMP SIEF_ELGA on {cells.size} multifibre cells "
+        f"({field.sub_points} fibres at most), {values.shape[0]} orders"
+    )
 
-    other = [n for n in names if n not in SOLID_FIELDS]
+
+def _refuse_other_options(ctx, kw, names, known, message: str) -> None:
+    """Refuse by name the first requested option not in ``known``
+    (``message`` formats it), located at the keyword that asked for it."""
+    other = [n for n in names if n not in known]
     if other:
         keyword = next(
             (
@@ -144,7 +174,78 @@ def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
             ),
             None,
         )
-        ctx.unsupported(f"CALC_CHAMP {other[0]} of solid elements", keyword, kw)
+        ctx.unsupported(message.format(other[0]), keyword, kw)
+
+
+def _store_fields(ctx, kw, result, model, fields, names) -> None:
+    """Store element ``fields`` at the selected orders, and the nodal
+    averages of their ELNO fields for the _NOEU ``names``."""
+    _keep_selected_orders(ctx, kw, result, fields)
+    result.element_fields.update(fields)
+    for name in names:
+        if name.endswith("_NOEU"):
+            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
+            result.node_fields[name] = nodal_average(source, model.mesh, name)
+
+
+def _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names) -> None:
+    """EFGE_ELNO (and EFGE_NOEU) of a model of pipes (code_aster's te0185:
+    from the displacements' stresses, real or complex; no inertia)."""
+
+    _refuse_other_options(
+        ctx, kw, names, ("EFGE_ELNO", "EFGE_NOEU"), "CALC_CHAMP {} of pipe elements (EFGE_ELNO)"
+    )
+    if kw.factor("CHAM_UTIL"):
+        ctx.unsupported("CHAM_UTIL on a model of pipes", "CHAM_UTIL", kw)
+    if kw.factor("EXCIT"):
+        ctx.unsupported("CALC_CHAMP EXCIT on pipe elements", "EXCIT", kw)
+    values = _nodal_values(ctx, result, kw)
+    try:
+        fields = pipe_element_fields(
+            model, characteristics, materials, result.numbering, pipes, values, ["EFGE_ELNO"]
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _store_fields(ctx, kw, result, model, fields, names)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {pipes.size} pipe cells, {values.shape[0]} orders")
+
+
+def _plate_fields(ctx, kw, result, model, characteristics, materials, plates, names) -> None:
+    """EFGE_ELNO (and EFGE_NOEU), EFGE_ELGA, SIEF_ELGA and SIGM_ELNO of DKT plates
+    (code_aster's ef0033 / te0033: from the displacements, real or complex;
+    no inertia)."""
+
+    known = ("EFGE_ELNO", "EFGE_NOEU", "EFGE_ELGA", "SIEF_ELGA", "SIGM_ELNO")
+    _refuse_other_options(
+        ctx, kw, names, known, f"CALC_CHAMP {{}} of DKT plates ({', '.join(known)})"
+    )
+    if kw.factor("CHAM_UTIL"):
+        ctx.unsupported("CHAM_UTIL on a model of DKT plates", "CHAM_UTIL", kw)
+    if kw.factor("EXCIT"):
+        ctx.unsupported("CALC_CHAMP EXCIT on DKT plates", "EXCIT", kw)
+    values = _nodal_values(ctx, result, kw)
+    try:
+        computed = sorted({n.replace("EFGE_NOEU", "EFGE_ELNO") for n in names})
+        fields = plate_element_fields(
+            model, characteristics, materials, result.numbering, plates, values, computed
+        )
+    except (ElementError, ValueError, KeyError) as exc:
+        ctx.error(str(exc), "CONTRAINTE", kw)
+    _store_fields(ctx, kw, result, model, fields, names)
+    ctx.log(f"CALC_CHAMP {', '.join(names)} on {plates.size} DKT cells, {values.shape[0]} orders")
+
+
+def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
+    """Stresses, strains and energies of 3D and plane solid cells
+    (:mod:`asterlite.fem.solid_fields`), their nodal averages for _NOEU."""
+
+    _refuse_other_options(ctx, kw, names, SOLID_FIELDS, "CALC_CHAMP {} of solid elements")
+    # the loads asterlite builds hold no initial strain or stress (EPSI_INIT,
+    # SIGM_INTERNE are refused by AFFE_CHAR_MECA): the elastic stresses,
+    # strains and energies of solids then depend on the displacements only
+    kw.mark_used("EXCIT")
+    for occ in kw.factor("EXCIT"):
+        occ.mark_used(*(k for k, v in dict.items(occ) if v is not None))
     values = _nodal_values(ctx, result, kw)
     velocities = omega2 = None
     if "ECIN_ELEM" in names:
@@ -162,12 +263,7 @@ def _solid_fields(ctx, kw, result, model, materials, solids, names) -> None:
         )
     except (ElementError, ValueError, KeyError) as exc:
         ctx.error(str(exc), "CONTRAINTE", kw)
-    _keep_selected_orders(ctx, kw, result, fields)
-    result.element_fields.update(fields)
-    for name in names:
-        if name.endswith("_NOEU"):
-            source = result.element_fields[name.replace("_NOEU", "_ELNO")]
-            result.node_fields[name] = nodal_average(source, model.mesh, name)
+    _store_fields(ctx, kw, result, model, fields, names)
     ctx.log(f"CALC_CHAMP {', '.join(names)} on {solids.size} solid cells, {values.shape[0]} orders")
 
 
@@ -210,6 +306,8 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
     convention of the internal forces; None without EXCIT."""
 
     occurrences = kw.factor("EXCIT")
+    if not occurrences and "evol_elas" in getattr(result, "aster_types", ()):
+        return _static_result_loads(ctx, kw, result, model, characteristics, beams, n_orders)
     if not occurrences:
         return None
     times = getattr(result, "times", None)
@@ -236,6 +334,26 @@ def _excitation_forces(ctx, kw, result, model, characteristics, beams, n_orders)
         except ElementError as exc:
             ctx.unsupported(str(exc), "CHARGE", occ)
         total += coefficients[:, None, None, None] * section_forces(local)[None]
+    return total
+
+
+def _static_result_loads(ctx, kw, result, model, characteristics, beams, n_orders):
+    """Without EXCIT, code_aster takes the loads of a MECA_STATIQUE result off
+    the beams' internal forces: its FORCE_POUTRE loads here (None if none)."""
+    total = None
+    for load, mult in getattr(result, "loads", ()):
+        if not load.extra.get("FORCE_POUTRE"):
+            continue
+        if callable(mult):
+            coefficients = np.array([float(mult(float(t))) for t in result.times])
+        else:
+            coefficients = np.full(n_orders, float(mult))
+        try:
+            local = beam_element_loads(model, characteristics, beams, load)
+        except ElementError as exc:
+            ctx.unsupported(f"{exc} (the loads of the static result)", "RESULTAT", kw)
+        term = coefficients[:, None, None, None] * section_forces(local)[None]
+        total = term if total is None else total + term
     return total
 
 
@@ -391,7 +509,52 @@ def run(ctx, kw):
         bars = np.array(
             [c for c in candidates if model.cell_modelisation.get(int(c)) in _BARS], dtype=int
         )
+        multifibre = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) == "POU_D_EM"],
+            dtype=int,
+        )
+        if multifibre.size:
+            other = [n for n in names if n not in _MULTIFIBRE_OPTIONS]
+            if other:
+                keyword = next(k for k, n in requested if n == other[0])
+                ctx.unsupported(
+                    f"CALC_CHAMP {other[0]} of multifibre beams ({', '.join(_MULTIFIBRE_OPTIONS)})",
+                    keyword,
+                    kw,
+                )
+            if "SIEF_ELGA" in names:
+                _multifibre_fields(ctx, kw, result, model, characteristics, materials, multifibre)
+            names = [n for n in names if n != "SIEF_ELGA"]
+            if not names:
+                return _cham_utils(ctx, kw, result)
+            # their generalised forces: K u (+ M a) of the fibre-integrated element
+            beams = np.union1d(beams, multifibre).astype(int)
         solids = solid_cells_of(model, candidates)
+        pipes = np.array(
+            [c for c in candidates if model.cell_modelisation.get(int(c)) in _PIPES], dtype=int
+        )
+        on_plates = [
+            c for c in candidates if model.cell_modelisation.get(int(c)) in PLATE_MODELISATIONS
+        ]
+        # the edges (SEG2) a DKT modelisation also covers carry no plate field
+        plates = np.array(
+            [c for c in on_plates if model.mesh.cell_types[int(c)] in ("TRIA3", "QUAD4")],
+            dtype=int,
+        )
+        if plates.size:
+            if len(on_plates) != len(candidates):
+                ctx.unsupported(
+                    "CALC_CHAMP on DKT plates and other elements at once", "GROUP_MA", kw
+                )
+            _plate_fields(ctx, kw, result, model, characteristics, materials, plates, names)
+            return result
+        if pipes.size:
+            if pipes.size != len(candidates):
+                ctx.unsupported(
+                    "CALC_CHAMP on pipe elements and other elements at once", "GROUP_MA", kw
+                )
+            _pipe_fields(ctx, kw, result, model, characteristics, materials, pipes, names)
+            return result
         if solids.size and not beams.size and not bars.size:
             _solid_fields(ctx, kw, result, model, materials, solids, names)
             return _cham_utils(ctx, kw, result)
@@ -405,7 +568,9 @@ def run(ctx, kw):
             _discrete_fields(ctx, kw, result, model, characteristics, discrete, names)
             return result
         if not beams.size:
-            ctx.unsupported("CALC_CHAMP on a model without POU_D_E / POU_D_T cells", None, kw)
+            ctx.unsupported(
+                "CALC_CHAMP on a model without POU_D_E / POU_D_T / POU_D_TG cells", None, kw
+            )
         if characteristics is None:
             ctx.error("beam fields need CARA_ELEM", "CARA_ELEM", kw)
         elno = sorted({n.replace("_NOEU", "_ELNO") for n in names})
@@ -430,13 +595,7 @@ def run(ctx, kw):
             fields = _with_discrete_cells(
                 ctx, kw, model, characteristics, result, discrete, values, fields
             )
-        _keep_selected_orders(ctx, kw, result, fields)
-        for name, field in fields.items():
-            result.element_fields[name] = field
-        for name in names:
-            if name.endswith("_NOEU"):
-                elno_field = result.element_fields[name.replace("_NOEU", "_ELNO")]
-                result.node_fields[name] = nodal_average(elno_field, model.mesh, name)
+        _store_fields(ctx, kw, result, model, fields, names)
         ctx.log(
             f"CALC_CHAMP {', '.join(names)} on {beams.size} beam cells"
             + (f" and {discrete.size} discrete cells" if discrete.size else "")

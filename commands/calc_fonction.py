@@ -2,8 +2,9 @@
 
 Supported: COMB, COMB_C, MULT (optionally re-tabulated on LIST_PARA), ABS,
 ASSE, COMPOSE, DERIVE, INTEGRE, ENVELOPPE, EXTRACTION, FFT (real to
-complex), INVERSE, PUISSANCE, SPEC_OSCI (NIGAM). NOM_PARA, NOM_RESU,
-INTERPOL, PROL_* override the attributes of the result.
+complex and back), INVERSE, PUISSANCE, SPEC_OSCI (NIGAM), CORR_ACCE
+(FILTRAGE, POLYNOME). NOM_PARA, NOM_RESU, INTERPOL, PROL_* override the
+attributes of the result.
 """
 
 from __future__ import annotations
@@ -19,7 +20,8 @@ from asterlite.post.restitution import as_tuple, values_of
 def run(ctx, kw):
     operation = next(
         (k for k in ("COMB", "COMB_C", "MULT", "ABS", "ASSE", "COMPOSE", "DERIVE", "INTEGRE",
-                     "ENVELOPPE", "EXTRACTION", "FFT", "INVERSE", "PUISSANCE", "SPEC_OSCI")
+                     "ENVELOPPE", "EXTRACTION", "FFT", "INVERSE", "PUISSANCE", "SPEC_OSCI",
+                     "CORR_ACCE")
          if kw.get(k) is not None),
         None,
     )  # fmt: skip
@@ -95,6 +97,12 @@ OPERATIONS = {
     ),
     "EXTRACTION": lambda ctx, occ, kw: fops.extract(single(occ)["FONCTION"], single(occ)["PARTIE"]),
     "INVERSE": lambda ctx, occ, kw: fops.inverse(single(occ)["FONCTION"]),
+    "CORR_ACCE": lambda ctx, occ, kw: fops.corrected_accelerogram(
+        single(occ)["FONCTION"],
+        single(occ)["METHODE"],
+        float(single(occ).get("FREQ_FILTRE", 0.05)),
+        single(occ).get("CORR_DEPL", "NON") == "OUI",
+    ),
     "PUISSANCE": lambda ctx, occ, kw: fops.power(
         single(occ)["FONCTION"], int(single(occ).get("EXPOSANT", 1))
     ),
@@ -104,9 +112,10 @@ OPERATIONS = {
 def fft(ctx, occurrences, kw):
     occ = single(occurrences)
     func = occ["FONCTION"]
+    method = occ.get("METHODE", "PROL_ZERO")
     if func.is_complex:
-        ctx.unsupported("FFT of a complex function (inverse transform)", "FFT", kw)
-    return fops.fft(func, occ.get("METHODE", "PROL_ZERO"))
+        return fops.inverse_fft(func, method, symmetric=occ.get("SYME", "OUI") == "OUI")
+    return fops.fft(func, method)
 
 
 def spec_osci(ctx, occurrences, kw):
@@ -135,7 +144,7 @@ def spec_osci(ctx, occurrences, kw):
             NOM_PARA="FREQ",
             NOM_RESU=nature,
             INTERPOL=("LOG", "LOG"),
-            PROL_GAUCHE="CONSTANT",
+            PROL_GAUCHE="EXCLU",  # code_aster's spectra (15 and 17) stop below the first frequency
             PROL_DROITE="CONSTANT",
         )  # fmt: skip
         for xi in dampings

@@ -83,20 +83,7 @@ def run(ctx, kw):
         modes.parameters["NUME_MODE"] = numbers
         ctx.log(f"NUME_MODE from the Sturm count: the first mode found is mode {numbers[0]}")
     modes.parameters["ERREUR"] = res
-    veri = (kw.factor("VERI_MODE") or [{}])[0]
-    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
-    # rigid-body modes (below SEUIL_FREQ) have K φ ≈ 0: their relative residual means nothing
-    elastic = np.abs(modes.frequencies) >= float(calc_freq.get("SEUIL_FREQ", 1e-2) or 1e-2)
-    checked = np.where(elastic, res, 0.0)
-    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(checked > max(tolerance, 1e-6)):
-        worst = int(np.argmax(checked))
-        ctx.error(
-            f"mode {worst + 1} ({modes.frequencies[worst]:.6g} Hz) has a residual "
-            f"{res[worst]:.3g} above {tolerance:g}",
-            "VERI_MODE",
-            kw,
-            "SolverError",  # code_aster's ALGELINE2_74
-        )
+    _check_residuals(ctx, kw, modes.frequencies, res)
     norm = kw.factor("NORM_MODE")
     if norm:
         apply_norm(modes, norm[0].get("NORME", "TRAN_ROTA"))
@@ -220,8 +207,8 @@ def _generalized(ctx, kw, stiffness, mass):
     """Modes of projected matrices (a mode_gene): a dense pencil, no relations."""
     if stiffness.matrix.shape != mass.matrix.shape:
         ctx.error("MATR_RIGI and MATR_MASS differ in size", "MATR_MASS", kw)
-    if kw.get("MATR_AMOR") is not None:
-        return _generalized_complex(ctx, kw, stiffness, mass, kw["MATR_AMOR"])
+    if kw.get("MATR_AMOR") is not None or np.iscomplexobj(stiffness.matrix):
+        return _generalized_complex(ctx, kw, stiffness, mass, kw.get("MATR_AMOR"))
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
     freq = as_tuple(calc_freq.get("FREQ"))
@@ -244,9 +231,46 @@ def _generalized(ctx, kw, stiffness, mass):
         ctx.error(str(exc), "OPTION", kw)
     check_found(ctx, kw, omega2.size)
     modes = build_generalized_result(stiffness, mass, omega2, vecs)
+    if constraints is None:  # a coupled model's modes satisfy its interface relations too
+        _check_generalized_residuals(ctx, kw, stiffness, mass, modes)
     for k, (number, f) in enumerate(zip(modes.mode_numbers, modes.frequencies, strict=True)):
         ctx.log(f"mode {number:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k]:12.5e}")
     return modes
+
+
+def _check_residuals(ctx, kw, frequencies, res) -> None:
+    """VERI_MODE: stop (STOP_ERREUR='OUI') when a mode's relative residual
+    ``res`` exceeds SEUIL; rigid-body modes (below CALC_FREQ's SEUIL_FREQ)
+    have K φ ≈ 0, so their relative residual means nothing."""
+    calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
+    veri = (kw.factor("VERI_MODE") or [{}])[0]
+    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
+    elastic = np.abs(frequencies) >= float(calc_freq.get("SEUIL_FREQ", 1e-2) or 1e-2)
+    checked = np.where(elastic, res, 0.0)
+    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(checked > max(tolerance, 1e-6)):
+        worst = int(np.argmax(checked))
+        ctx.error(
+            f"mode {worst + 1} ({frequencies[worst]:.6g} Hz) has a residual "
+            f"{res[worst]:.3g} above {tolerance:g}",
+            "VERI_MODE",
+            kw,
+            "SolverError",  # code_aster's ALGELINE2_74
+        )
+
+
+def _check_generalized_residuals(ctx, kw, stiffness, mass, modes) -> None:
+    """VERI_MODE on generalized modes, as on physical ones: the relative
+    residual |K v - ω² M v| / |K v| of each mode above SEUIL_FREQ (a
+    rigid-body mode's relative residual means nothing) against SEUIL."""
+    k, m = np.asarray(stiffness.matrix), np.asarray(mass.matrix)
+    vectors = np.asarray(modes.vectors)
+    omega2 = (2.0 * np.pi * np.asarray(modes.frequencies)) ** 2
+    k_v = k @ vectors
+    residual = np.linalg.norm(k_v - (m @ vectors) * omega2, axis=0)
+    scale = np.linalg.norm(k_v, axis=0)
+    res = np.where(scale > 0.0, residual / np.where(scale > 0.0, scale, 1.0), residual)
+    modes.parameters["ERREUR"] = res
+    _check_residuals(ctx, kw, modes.frequencies, res)
 
 
 def _complex(ctx, kw, stiffness, mass, damping):
@@ -278,17 +302,7 @@ def _complex(ctx, kw, stiffness, mass, damping):
     res = pencil.residuals(lam, vecs)
     modes = build_complex_mode_result(stiffness, mass, damping, lam, pencil.expand(vecs))
     modes.parameters["ERREUR"] = res
-    veri = (kw.factor("VERI_MODE") or [{}])[0]
-    tolerance = float(veri.get("SEUIL", 1e-6) or 1e-6)
-    if veri.get("STOP_ERREUR", "OUI") == "OUI" and np.any(res > max(tolerance, 1e-6)):
-        worst = int(np.argmax(res))
-        ctx.error(
-            f"mode {worst + 1} ({modes.frequencies[worst]:.6g} Hz) has a residual "
-            f"{res[worst]:.3g} above {tolerance:g}",
-            "VERI_MODE",
-            kw,
-            "SolverError",  # code_aster's ALGELINE2_74
-        )
+    _check_residuals(ctx, kw, modes.frequencies, res)
     norm = kw.factor("NORM_MODE")
     if norm:
         apply_norm(modes, norm[0].get("NORME", "TRAN_ROTA"))
@@ -299,10 +313,11 @@ def _complex(ctx, kw, stiffness, mass, damping):
 
 
 def _generalized_complex(ctx, kw, stiffness, mass, damping):
-    """Damped modes of projected matrices: a mode_gene with complex vectors."""
-    if not isinstance(damping, GeneralizedMatrix):
+    """Modes of projected matrices with damping or a complex (hysteretic)
+    stiffness: a mode_gene with complex vectors."""
+    if damping is not None and not isinstance(damping, GeneralizedMatrix):
         ctx.error("MATR_AMOR must be generalized like MATR_RIGI", "MATR_AMOR", kw)
-    if damping.matrix.shape != stiffness.matrix.shape:
+    if damping is not None and damping.matrix.shape != stiffness.matrix.shape:
         ctx.error("MATR_AMOR and MATR_RIGI differ in size", "MATR_AMOR", kw)
     option = kw.get("OPTION", "PLUS_PETITE")
     calc_freq = (kw.factor("CALC_FREQ") or [{}])[0]
@@ -316,7 +331,7 @@ def _generalized_complex(ctx, kw, stiffness, mass, damping):
         lam, vecs, _res = complex_generalized_modes(
             stiffness.matrix,
             mass.matrix,
-            damping.matrix,
+            None if damping is None else damping.matrix,
             option,
             freq,
             int(nmax),

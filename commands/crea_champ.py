@@ -1,15 +1,21 @@
-"""CREA_CHAMP on nodal fields (TYPE_CHAM 'NOEU_*_R'): AFFE (values by node and
-component), EXTR (one field of a result, or its extreme over the stored
-fields with TYPE_MAXI; also on the ELNO/ELGA fields CALC_CHAMP stored on a
-result, giving a ``cham_elem``), ASSE (pieces of fields, later ones overriding earlier
-ones unless CUMUL='OUI') and COMB (linear combination)."""
+"""CREA_CHAMP on nodal fields (TYPE_CHAM 'NOEU_*_R', and 'NOEU_*_C' for EXTR,
+ASSE, R2C and C2R): AFFE (values by node and component), EXTR (one field of
+a result, or its extreme over the stored fields with TYPE_MAXI; also on the
+ELNO/ELGA fields CALC_CHAMP stored on a result, giving a ``cham_elem``, and
+on the curvilinear abscissa carte MODI_MAILLAGE ABSC_CURV stored on a mesh,
+TYPE_CHAM='CART_ABSC_R'), ASSE (pieces of fields, later ones overriding
+earlier ones unless CUMUL='OUI') and COMB (linear combination)."""
 
 from __future__ import annotations
+
+import re
 
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering, NodalField
+from asterlite.concepts.mesh import CellConstantField
 from asterlite.concepts.modes import FieldOnElements
+from asterlite.fem.abscissa import ABSCISSA_COMPONENTS
 from asterlite.fem.dofs import sort_components
 from asterlite.fem.selection import as_tuple, select_nodes
 from asterlite.modal.fields import (
@@ -31,12 +37,14 @@ def _template_numbering(ctx, kw):
         if value is not None:
             return value if key == "NUME_DDL" else value.numbering
     model = kw.get("MODELE")
-    if model is not None:
+    neutral = kw.get("TYPE_CHAM") == "NOEU_NEUT_R"
+    if model is not None and not neutral:
         from asterlite.fem.assemble import build_numbering_dofs
 
         return DofNumbering(mesh=model.mesh, dofs=build_numbering_dofs(model.node_components()))
-    # MAILLAGE only: a field on exactly the (node, component) pairs affected
-    mesh = kw["MAILLAGE"]
+    # MAILLAGE only, or a NEUT field (its components X1... are no DOFs of the
+    # model): a field on exactly the (node, component) pairs affected
+    mesh = kw["MAILLAGE"] if model is None else model.mesh
     pairs: dict[int, set[str]] = {}
     for occ in kw.factor("AFFE"):
         for node in select_nodes(ctx, occ, mesh):
@@ -68,8 +76,13 @@ def _prolonged(kw, numbering, values, assigned):
 
 def _affe(ctx, kw):
     type_cham = kw.get("TYPE_CHAM")
-    if type_cham not in ("NOEU_DEPL_R",):
+    if type_cham not in ("NOEU_DEPL_R", "NOEU_NEUT_R"):
         ctx.unsupported(f"CREA_CHAMP TYPE_CHAM={type_cham!r}", "TYPE_CHAM", kw)
+    if type_cham == "NOEU_NEUT_R":
+        for occ in kw.factor("AFFE"):
+            for comp in as_tuple(occ.get("NOM_CMP")):
+                if not re.fullmatch(r"X([1-9]|[12]\d|30)", str(comp)):
+                    ctx.error(f"{comp} is no component of NEUT_R (X1 ... X30)", "NOM_CMP", occ)
     numbering = _template_numbering(ctx, kw)
     _check_meshes(ctx, kw, numbering.mesh)
     mesh = numbering.mesh
@@ -99,10 +112,13 @@ def _affe(ctx, kw):
 
 def _nodal_only(ctx, kw):
     type_cham = str(kw.get("TYPE_CHAM") or "")
+    if kw.get("OPERATION") == "EXTR" and kw.get("MAILLAGE") is not None:
+        return  # the mesh's own fields (_mesh_field)
     if kw.get("OPERATION") == "EXTR" and _is_element_type(type_cham) and type_cham.endswith("_R"):
         return  # element fields a result stores (CALC_CHAMP)
-    if kw.get("OPERATION") == "EXTR" and type_cham.startswith("NOEU_") and type_cham.endswith("_C"):
-        return  # complex nodal fields of a dyna_harmo or a mode_meca_c
+    if kw.get("OPERATION") in ("EXTR", "ASSE") and type_cham.startswith("NOEU_"):
+        if type_cham.endswith("_C"):
+            return  # complex nodal fields (a dyna_harmo's, a mode_meca_c's, R2C's)
     if not (type_cham.startswith("NOEU_") and type_cham.endswith("_R")):
         ctx.unsupported(
             f"CREA_CHAMP {kw.get('OPERATION')} on TYPE_CHAM={type_cham!r} (nodal real fields only)",
@@ -116,6 +132,8 @@ def _extr(ctx, kw):
     the stored fields (TYPE_MAXI), nodal or by element (ELNO/ELGA fields
     CALC_CHAMP stored on the result)."""
 
+    if kw.get("MAILLAGE") is not None:
+        return _mesh_field(ctx, kw)
     if kw.get("RESULTAT") is None:
         ctx.unsupported("CREA_CHAMP EXTR from something else than RESULTAT", "OPERATION", kw)
     result = kw["RESULTAT"]
@@ -140,6 +158,14 @@ def _extr(ctx, kw):
             f"the {kw['NOM_CHAM']} field is {kind}: TYPE_CHAM does not match", "TYPE_CHAM", kw
         )
     if not element:
+        target = kw.get("NUME_DDL")
+        if target is not None and target is not numbering:
+            # code_aster copies the field onto the given numbering (vtcopy):
+            # DOFs it lacks are dropped, DOFs the result lacks are zero
+            from asterlite.modal.renumber import transfer
+
+            selected = transfer(selected, numbering, target)
+            numbering = target
         return NodalField(numbering=numbering, values=selected)
 
     return FieldOnElements(
@@ -150,6 +176,44 @@ def _extr(ctx, kw):
         components=tuple(field.components),
         values=selected,
     )
+
+
+def _mesh_field(ctx, kw):
+    """EXTR of a mesh's field: its curvilinear abscissa (NOM_CHAM='ABSC_CURV')
+    or its node coordinates (NOM_CHAM='GEOMETRIE')."""
+    mesh, name = kw["MAILLAGE"], kw["NOM_CHAM"]
+    if name == "GEOMETRIE":
+        return _geometry(ctx, kw, mesh)
+    if kw.get("TYPE_CHAM") != "CART_ABSC_R":
+        ctx.error(
+            f"the mesh's ABSC_CURV is a CART_ABSC_R field, not {kw.get('TYPE_CHAM')}",
+            "TYPE_CHAM",
+            kw,
+        )
+    if mesh.curvilinear_abscissa is None:
+        ctx.error(
+            "the mesh has no curvilinear abscissa (MODI_MAILLAGE ABSC_CURV first)", "NOM_CHAM", kw
+        )
+    return CellConstantField(
+        mesh=mesh,
+        field_type="CART_ABSC_R",
+        components=ABSCISSA_COMPONENTS,
+        values=dict(mesh.curvilinear_abscissa),
+    )
+
+
+def _geometry(ctx, kw, mesh):
+    """The coordinates X, Y, Z of every node (code_aster keeps three, also
+    for a plane mesh), as a NOEU_GEOM_R field."""
+    if kw.get("TYPE_CHAM") != "NOEU_GEOM_R":
+        ctx.error(
+            f"the mesh's GEOMETRIE is a NOEU_GEOM_R field, not {kw.get('TYPE_CHAM')}",
+            "TYPE_CHAM",
+            kw,
+        )
+    dofs = [(node, axis) for node in range(mesh.n_nodes) for axis in ("X", "Y", "Z")]
+    values = np.asarray(mesh.coords, dtype=float)[:, :3].reshape(-1).copy()
+    return NodalField(numbering=DofNumbering(mesh=mesh, dofs=dofs), values=values)
 
 
 def _is_element_type(type_cham) -> bool:
@@ -270,13 +334,26 @@ def _output_numbering(ctx, kw, fields):
 
 
 def _asse(ctx, kw):
+    """Pieces of nodal fields on one numbering. As code_aster's chpass, each
+    piece has the scalar type TYPE_CHAM names; COEF_C needs a complex piece;
+    a later piece overrides earlier ones on the DOFs it covers unless
+    CUMUL='OUI'."""
     occs = kw.factor("ASSE")
     numbering = _output_numbering(ctx, kw, [occ["CHAM_GD"] for occ in occs])
     mesh = numbering.mesh
+    complex_type = str(kw.get("TYPE_CHAM")).endswith("_C")
     for occ in occs:
-        if occ["CHAM_GD"].numbering.mesh is not mesh:
+        source = occ["CHAM_GD"]
+        if not isinstance(source, NodalField):
+            ctx.unsupported("CREA_CHAMP ASSE of a field by element", "CHAM_GD", occ)
+        if source.numbering.mesh is not mesh:
             ctx.error("CHAM_GD is on another mesh", "CHAM_GD", occ)
-    values = np.zeros(numbering.n_dofs)
+        if np.iscomplexobj(source.values) != complex_type:
+            kind = "complex" if np.iscomplexobj(source.values) else "real"
+            ctx.error(f"CHAM_GD is a {kind} field: TYPE_CHAM does not match", "CHAM_GD", occ)
+        if occ.get("COEF_C") is not None and not complex_type:
+            ctx.error("COEF_C needs complex fields (TYPE_CHAM NOEU_*_C)", "COEF_C", occ)
+    values = np.zeros(numbering.n_dofs, dtype=complex if complex_type else float)
     assigned = np.zeros(numbering.n_dofs, dtype=bool)
     for occ in occs:
         source = occ["CHAM_GD"]
@@ -286,7 +363,8 @@ def _asse(ctx, kw):
         if len(renamed) != len(comps):
             ctx.error("NOM_CMP and NOM_CMP_RESU differ in length", "NOM_CMP_RESU", occ)
         rename = dict(zip(comps, renamed, strict=True))
-        coef = float(occ.get("COEF_R", 1.0))
+        coef = occ.get("COEF_C")
+        coef = complex(coef) if coef is not None else float(occ.get("COEF_R", 1.0))
         for (node, comp), value in zip(source.numbering.dofs, source.values, strict=True):
             if node not in nodes or (comps and comp not in rename):
                 continue
@@ -320,19 +398,17 @@ def _c2r(ctx, kw):
     if not isinstance(field, NodalField):
         ctx.unsupported("CREA_CHAMP C2R of a field by element", "CHAM_GD", kw)
     values = np.asarray(field.values)
+    if not np.iscomplexobj(values):
+        ctx.error("C2R needs a complex field: CHAM_GD is real", "CHAM_GD", kw)
     part = kw["PARTIE"]
     if part == "REEL":
         out = values.real
     elif part == "IMAG":
-        out = values.imag if np.iscomplexobj(values) else np.zeros(values.shape)
+        out = values.imag
     elif part == "MODULE":
         out = np.abs(values)
     else:
-        out = (
-            np.degrees(np.arctan2(values.imag, values.real))
-            if np.iscomplexobj(values)
-            else (np.degrees(np.arctan2(0.0, values)))
-        )
+        out = np.degrees(np.arctan2(values.imag, values.real))
     return NodalField(numbering=field.numbering, values=np.array(out, dtype=float))
 
 
@@ -341,6 +417,8 @@ def _r2c(ctx, kw):
     field = kw["CHAM_GD"]
     if not isinstance(field, NodalField):
         ctx.unsupported("CREA_CHAMP R2C of a field by element", "CHAM_GD", kw)
+    if np.iscomplexobj(field.values):
+        ctx.error("R2C needs a real field: CHAM_GD is complex", "CHAM_GD", kw)
     return NodalField(numbering=field.numbering, values=np.asarray(field.values).astype(complex))
 
 
@@ -349,7 +427,11 @@ def run(ctx, kw):
     if operation == "AFFE":
         return _affe(ctx, kw)
     if operation in ("C2R", "R2C"):
-        kw.mark_used("TYPE_CHAM")  # the output type follows from the operation
+        # code_aster derives the output quantity from CHAM_GD's (DEPL_R <-> DEPL_C);
+        # a TYPE_CHAM of the other scalar type is a deck error
+        wanted = "_C" if operation == "R2C" else "_R"
+        if not str(kw.get("TYPE_CHAM")).endswith(wanted):
+            ctx.error(f"{operation} gives a NOEU_*{wanted} field", "TYPE_CHAM", kw)
         return _c2r(ctx, kw) if operation == "C2R" else _r2c(ctx, kw)
     handlers = {"EXTR": _extr, "ASSE": _asse, "COMB": _comb}
     if operation in handlers:

@@ -6,7 +6,12 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.errors import CommandError, ValidationError
-from asterlite.fem.mesh_degree import DuplicateNodeName, line_quad, seg3_to_seg4
+from asterlite.fem.mesh_degree import (
+    DuplicateNodeName,
+    MeshDegreeError,
+    line_quad,
+    seg3_to_seg4,
+)
 from asterlite.fem.selection import as_scalar, select_cells, select_nodes
 from asterlite.legacy.v15 import computes
 
@@ -45,7 +50,10 @@ def _change_degree(ctx, kw, mesh) -> None:
         option = occ["OPTION"]
         if option != "SEG3_4":
             ctx.unsupported(f"MODI_MAILLE OPTION={option!r}", "OPTION", occ)
-        added = seg3_to_seg4(mesh, _cells(ctx, occ, mesh))
+        try:
+            added = seg3_to_seg4(mesh, _cells(ctx, occ, mesh))
+        except MeshDegreeError as error:
+            ctx.error(str(error), "OPTION", occ)
         ctx.log(f"MODI_MAILLE SEG3_4: {added} nodes added")
 
 

@@ -6,7 +6,7 @@ by NUME_MODE)."""
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.crea_resu_conv import conv_resu, kucv
+from asterlite.commands.crea_resu_conv import conv_char, conv_resu, kucv
 
 from asterlite.concepts.assembly import NodalField
 from asterlite.concepts.modes import ModeResult, MultElasResult
@@ -159,6 +159,8 @@ def _mode_meca(ctx, kw):
 def run(ctx, kw):
     if kw["OPERATION"] == "CONV_RESU":
         return conv_resu(ctx, kw)
+    if kw["OPERATION"] == "CONV_CHAR":
+        return conv_char(ctx, kw)
     if kw["OPERATION"] == "KUCV":
         return kucv(ctx, kw.factor("KUCV")[0], kw["TYPE_RESU"])
     if kw["OPERATION"] != "AFFE":

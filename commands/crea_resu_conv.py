@@ -24,6 +24,7 @@ import numpy as np
 
 from asterlite.concepts.static_result import EvolChar
 from asterlite.concepts.transient import DynaTrans
+from asterlite.fem.loads import load_history, load_terms
 from asterlite.fem.selection import as_tuple, node_group_members
 from asterlite.modal.renumber import transfer
 
@@ -219,3 +220,47 @@ def _of_functions(numbering, functions, instants, values):
             result = _formula_values(formula, parameters)
             out[k, columns[component][present]] = result[present]
     return out
+
+
+def conv_char(ctx, kw):
+    """CREA_RESU CONV_CHAR (code_aster's crcoch): at each instant the nodal
+    forces of the loads CHARGE (their Neumann terms and the plane waves of
+    AFFE_CHAR_MECA_F/ONDE_PLANE at that instant; imposed displacements are
+    no force) assembled on MATR_RIGI's numbering, stored as DEPL in a
+    dyna_trans or FORC_NODA in an evol_char."""
+    from asterlite.commands.dyna_vibra_phys import history_rows
+
+    from asterlite.fem.assemble import assemble_terms
+
+    occ = kw.factor("CONV_CHAR")[0]
+    if ctx.reuse is not None:
+        ctx.unsupported("CREA_RESU CONV_CHAR with reuse", "reuse", kw)
+    # PRECISION / CRITERE find the instants already stored in the result: a
+    # new result has none
+    occ.mark_used("PRECISION", "CRITERE")
+    stiffness = occ["MATR_RIGI"]
+    numbering = stiffness.numbering
+    materials = occ["CHAM_MATER"]
+    characteristics = occ.get("CARA_ELEM")
+    instants = _instants(occ)
+    if instants.size == 0 or np.any(np.diff(instants) <= 0.0):
+        ctx.error("the instants must be strictly increasing", "LIST_INST", occ)
+    values = np.zeros((instants.size, numbering.n_dofs))
+    for load in as_tuple(occ["CHARGE"]):
+        if load.model.mesh is not numbering.mesh:
+            ctx.error(f"the load {load.name or ''} is on another mesh", "CHARGE", occ)
+        try:
+            terms = load_terms(load, characteristics, materials, history_apart=True)
+            values += assemble_terms(terms, numbering)[None, :]
+        except KeyError as exc:
+            ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
+        history = load_history(load, materials)
+        if history is None:
+            continue
+        nodes, components, forces = history(instants)
+        rows = history_rows(ctx, numbering, nodes, components, occ)
+        for k in range(instants.size):
+            np.add.at(values[k], rows, forces[k])
+    count = len(as_tuple(occ["CHARGE"]))
+    ctx.log(f"CONV_CHAR: forces of {count} loads at {instants.size} instants")
+    return _result(kw["TYPE_RESU"], numbering, instants, values)

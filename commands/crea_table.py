@@ -2,13 +2,16 @@
 / LISTE_CO), from a function (FONCTION: its abscissas and ordinates) or from
 a result's field (RESU: fields on the DOFs, element fields and ``*_NOEU`` fields, with
 code_aster's columns RESULTAT NOM_CHAM [INST] NUME_ORDRE MAILLE NOEUD|POINT
-SOUS_POINT COOR_X COOR_Y COOR_Z <components>)."""
+SOUS_POINT COOR_X COOR_Y COOR_Z <components>) or from a field given alone
+(RESU/CHAM_GD: an element field or a carte, columns CHAM_GD MAILLE ...)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from asterlite.concepts.assembly import NodalComponentField
+from asterlite.concepts.mesh import CellConstantField
+from asterlite.concepts.modes import FieldOnElements
 from asterlite.concepts.table import Table
 from asterlite.fem.selection import select_cells, select_nodes
 from asterlite.io.result_store import nodal_field_names, nodal_series
@@ -30,6 +33,12 @@ def run(ctx, kw):
                 ctx.unsupported("LISTE without LISTE_R, LISTE_I or LISTE_K", None, occ)
             key, code = given[0]
             values = list(as_tuple(occ[key]))
+            if key == "LISTE_K":
+                # code_aster reads the texts into strings of TYPE_K's length
+                # (K8 by default), cutting longer ones
+                code = occ.get("TYPE_K", "K8")
+                width = int(code[1:])
+                values = [str(v)[:width] for v in values]
             if occ.get("NUME_LIGN") is not None:
                 lines = [int(n) - 1 for n in as_tuple(occ["NUME_LIGN"])]
                 if len(lines) != len(values):
@@ -81,7 +90,7 @@ def from_result(ctx, occ):
     smoothed nodal field (``*_NOEU``) that CALC_CHAMP stored on RESULTAT, or
     a field on the result's DOFs (DEPL, VITE, ACCE...)."""
     if occ.get("RESULTAT") is None:
-        ctx.unsupported("CREA_TABLE RESU/CHAM_GD (RESULTAT only)", "CHAM_GD", occ)
+        return from_field(ctx, occ)
     result, name = occ["RESULTAT"], occ["NOM_CHAM"]
     field = computed_fields(result).get(name)
     if field is None and name in nodal_field_names(result):
@@ -131,3 +140,60 @@ def from_result(ctx, occ):
     values = field.values[picked][:, [position[int(n)] for n in nodes]][..., cmp_index]
     supports = table_ops.node_support_labels(mesh, nodes)
     return table_ops.field_value_table(head, steps, supports, values, components, "NOEU")
+
+
+def _field_components(ctx, occ, available) -> tuple[str, ...]:
+    """NOM_CMP's components (each checked), or all of them (TOUT_CMP='OUI')."""
+    occ.mark_used("TOUT_CMP")
+    components = tuple(as_tuple(occ.get("NOM_CMP"))) or tuple(available)
+    absent = [c for c in components if c not in available]
+    if absent:
+        ctx.error(
+            f"the field has no component {absent[0]!r} (it has {', '.join(available)})",
+            "NOM_CMP",
+            occ,
+        )
+    return components
+
+
+def from_field(ctx, occ):
+    """RESU/CHAM_GD: the values of an element field (CREA_CHAMP EXTR of an
+    ELNO/ELGA field) or of a carte (a value set per cell, MAILLE then its
+    components), on the cells of TOUT / GROUP_MA / MAILLE."""
+    field = occ["CHAM_GD"]
+    if not isinstance(field, (FieldOnElements, CellConstantField)):
+        ctx.unsupported(
+            f"CREA_TABLE RESU/CHAM_GD on a {field.aster_type} (element fields and cartes only)",
+            "CHAM_GD",
+            occ,
+        )
+    if occ.get("TOUT") != "OUI" and not (occ.get("GROUP_MA") or occ.get("MAILLE")):
+        ctx.unsupported("CREA_TABLE RESU/CHAM_GD by GROUP_NO / NOEUD", "GROUP_NO", occ)
+    mesh = field.mesh
+    head = {"CHAM_GD": field.name or ""}
+    if isinstance(field, CellConstantField):
+        carried = sorted(field.values)
+        width = max((len(v) for v in field.values.values()), default=0)
+        components = _field_components(ctx, occ, field.components[:width])
+        cells = np.intersect1d(select_cells(ctx, occ, mesh, all_cells=carried), carried)
+        values = np.full((1, len(cells), len(components)), np.nan)
+        for row, cell in enumerate(cells):
+            given = dict(zip(field.components, field.values[int(cell)], strict=False))
+            values[0, row] = [given.get(c, np.nan) for c in components]
+        present = ~np.all(np.isnan(values[0]), axis=1)  # a cell without them has no row
+        supports = [{"MAILLE": str(int(c) + 1)} for c in cells[present]]
+        return table_ops.field_value_table(
+            head, [(None, None)], supports, values[:, present], components, "CART"
+        )
+    components = _field_components(ctx, occ, field.components)
+    chosen = select_cells(ctx, occ, mesh, all_cells=field.cells)
+    cells = np.intersect1d(np.asarray(chosen, dtype=int), np.asarray(field.cells, dtype=int))
+    position = {int(c): i for i, c in enumerate(field.cells)}
+    cmp_index = [field.components.index(c) for c in components]
+    values = np.asarray(field.values)[[position[int(c)] for c in cells]][..., cmp_index]
+    by_node = field.field_type.startswith("ELNO")
+    n_points = values.shape[1]
+    supports = table_ops.field_support_labels(mesh, cells, n_points, by_node)
+    flat = values.reshape(1, len(cells) * n_points, len(components))
+    kind = "ELNO" if by_node else "ELGA"
+    return table_ops.field_value_table(head, [(None, None)], supports, flat, components, kind)

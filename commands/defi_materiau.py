@@ -1,5 +1,5 @@
 """DEFI_MATERIAU: material parameters (ELAS, ELAS_FO with constant functions,
-other behaviours kept as given)."""
+ELAS_VISCO's complex G and NU, other behaviours kept as given)."""
 
 from __future__ import annotations
 
@@ -57,7 +57,19 @@ def run(ctx, kw):
         behaviours["ELAS_FO"] = dict(occ)
         # parameters without a constant value: refused where a computation needs them
         behaviours["ELAS_VARYING"] = varying
-    for keyword in ("ECRO_LINE", "ECRO_LINE_FO", "TRACTION", "THER", "THER_FO", "THER_NL"):
+    for occ in kw.factor("ELAS_VISCO"):
+        # complex moduli at one frequency: the 3D and plane elements build
+        # RIGI_MECA from the real part of their Hooke matrix, RIGI_MECA_HYST
+        # from the whole of it
+        visco = {"G": complex(occ["G"]), "NU": complex(occ["NU"])}
+        if occ.get("RHO") is not None:
+            visco["RHO"] = float(occ["RHO"])
+        behaviours["ELAS_VISCO"] = visco
+        ctx.log("material ELAS_VISCO: " + ", ".join(f"{k}={v:g}" for k, v in visco.items()))
+    for keyword in (
+        *("ECRO_LINE", "ECRO_LINE_FO", "TRACTION", "THER", "THER_FO", "THER_NL"),
+        *("Iwan", "Iwan_FO", "DIS_CONTACT"),
+    ):
         for occ in kw.factor(keyword):
             behaviours[keyword] = dict(occ)
     for occ in kw.factor("FATIGUE"):

@@ -58,9 +58,8 @@ def integrated(ctx, problem: TransientProblem) -> RunResult:
             return integrate_film(
                 p.system, p.shocks, p.film, p.excitation, p.initial.displacement,
                 p.initial.velocity, grid.start, grid.end, grid.step, archive.instants,
-                archive.period,
+                archive.period, options,
                 label=f"DYNA_VIBRA {ctx.result_name or ''} {film_scheme} (LAME_FLUIDE)",
-                adapt=options if options.adapt_v11 else None,
             )  # fmt: skip
         return integrate(
             p.system, p.shocks, p.excitation, scheme, p.initial.displacement,

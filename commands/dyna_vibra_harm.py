@@ -17,6 +17,9 @@ sparse factorisation per frequency).
   missing ratios repeat the last one, extra ones are ignored).
 - EXCIT: VECT_ASSE / CHARGE (physical) or VECT_ASSE_GENE times
   COEF_MULT[_C] or FONC_MULT[_C](f), times e^{i PHAS_DEG π/180} and ω^PUIS_PULS.
+  A CHARGE's imposed values (AFFE_CHAR_CINE[_F], DDL_IMPO), constant or
+  functions of FREQ evaluated at each frequency, are scaled likewise and
+  lifted into the right-hand side.
 - EXCIT_RESU: COEF_MULT_C times the DEPL field of a previous harmonic result
   at the same frequency (relative precision 1e-6, dyexre).
 """
@@ -27,10 +30,12 @@ import numpy as np
 
 from asterlite.concepts.assembly import ComplexAssembledMatrix, MechanicalLoad
 from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
-from asterlite.errors import NumericalError
+from asterlite.errors import CommandError, NumericalError
+from asterlite.fem.lagrange_layout import constrained_rows, lagrange_coefficient
 from asterlite.fem.loads import load_terms
 from asterlite.harmonic import HarmonicLoad, derived_fields
 from asterlite.harmonic import modal as modal_solver
+from asterlite.harmonic.fields import TWO_PI
 from asterlite.harmonic.loads import SweepLoads
 from asterlite.harmonic.modal import SingularSystem
 
@@ -241,7 +246,7 @@ def physical(ctx, kw, frequencies, names):
         if matrix is not None and matrix.numbering is not numbering:
             ctx.error(f"{key} is not on the numbering of MATR_RIGI", key, kw)
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
-    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True, rhs_in_frequency=True)
     # the relations' values are not those of the harmonic problem: code_aster's
     # Lagrange right-hand side is zero unless an EXCIT CHARGE imposes values
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
@@ -257,14 +262,32 @@ def physical(ctx, kw, frequencies, names):
         if loads
         else np.zeros((frequencies.size, 0), dtype=complex)
     )
+    # the applied loads (the lifting of imposed motion aside) on the DOFs the
+    # dualised relations hold: the reactions there give code_aster's multipliers
+    rows = constrained_rows(numbering)
+    forces = coefficients @ vectors[:, rows] if loads else np.zeros((frequencies.size, rows.size))
+    imposed = imposed_motion(ctx, kw, numbering, elimination, frequencies)
+    if imposed is not None:
+        # u = u_imposed + T q: the imposed part moves to the right-hand side
+        lift_vectors, lift_coefficients = lifting_loads(
+            *imposed, frequencies, stiffness_matrix, mass_matrix, kw.get("MATR_AMOR")
+        )
+        vectors = np.vstack([vectors.astype(complex), lift_vectors])
+        coefficients = np.hstack([coefficients, lift_coefficients])
     extra = result_excitations(ctx, kw, frequencies, numbering, numbering.n_dofs)
-    if extra is not None:
-        vectors = np.vstack([vectors, extra])
-        coefficients = np.hstack([coefficients, np.eye(frequencies.size, dtype=complex)])
+    if extra is not None:  # one load vector per frequency, solved as such
+        forces = forces + extra[:, rows]
     try:
-        depl, info = physical_solver.solve(sweep, frequencies, vectors, coefficients)
+        depl, info = physical_solver.solve(
+            sweep, frequencies, vectors, coefficients, per_frequency=extra
+        )
     except SingularSystem as error:
         numerical_error(ctx, error)
+    if imposed is not None:
+        depl = depl + imposed[1] @ imposed[0].T
+    reactions = physical_solver.constraint_reactions(
+        rows, depl, forces, frequencies, stiffness_matrix.matrix, mass_matrix.matrix, damping
+    )
     hysteretic = isinstance(stiffness_matrix, ComplexAssembledMatrix)
     ctx.log(
         f"DYNA_VIBRA HARM PHYS: {frequencies.size} frequencies "
@@ -281,7 +304,76 @@ def physical(ctx, kw, frequencies, names):
         materials=kw.get("CHAM_MATER") or getattr(stiffness_matrix, "materials", None),
         characteristics=kw.get("CARA_ELEM") or getattr(stiffness_matrix, "characteristics", None),
         mass_matrix=mass_matrix,
+        reactions=(rows, reactions),
+        lagrange_beta=lagrange_coefficient(stiffness_matrix.matrix),
     )
+
+
+def imposed_motion(ctx, kw, numbering, elimination, frequencies):
+    """The displacements EXCIT CHARGE imposes (AFFE_CHAR_CINE[_F], or
+    DDL_IMPO of a dualised load), each scaled by its occurrence's
+    coefficient, as code_aster scales the imposed values (ascavc): (U
+    (n_dofs, n_k), C (n_freq, n_k)), the motion being C @ U.T; None when no
+    occurrence imposes a value. Constant values make one column; values
+    given as a function of FREQ one column per function (and point, for a
+    function of X, Y, Z too), its value at each frequency in C."""
+    row_of = {id(relation): row for row, relation in enumerate(numbering.relations)}
+    particulars, motions = [], []
+    for i, occ in enumerate(kw.factor("EXCIT")):
+        charge = occ.get("CHARGE")
+        if charge is None or not any(
+            relation.rhs != 0.0 or relation.rhs_in_frequency is not None
+            for relation in charge.relations
+        ):
+            continue
+        constant = np.zeros(len(numbering.relations))
+        in_frequency: dict = {}
+        for relation in charge.relations:
+            row = row_of.get(id(relation))
+            if row is None:
+                ctx.error(
+                    "the values this load imposes are not among the constraints of the "
+                    "matrices: assemble them with it (ASSE_MATRICE CHAR_CINE, or the load "
+                    "in CALC_MATR_ELEM CHARGE)",
+                    "CHARGE",
+                    occ,
+                )
+            value = relation.rhs_in_frequency
+            if value is None:
+                constant[row] = relation.rhs
+            else:
+                # u = g(f) with the relation's coefficient: the rhs is coefficient g(f)
+                coefficient = relation.terms[0][2]
+                in_frequency.setdefault(value.key, (value, []))[1].append((row, coefficient))
+        scale = harmonic_load(ctx, occ, None, f"EXCIT[{i + 1}]").coefficients(frequencies)
+        if np.any(constant):
+            particulars.append(elimination.particular(constant))
+            motions.append(scale)
+        for value, rows in in_frequency.values():
+            rhs = np.zeros(len(numbering.relations))
+            for row, coefficient in rows:
+                rhs[row] = coefficient
+            try:
+                values = value.evaluate(frequencies)
+            except CommandError as exc:
+                ctx.error(str(exc), "CHARGE", occ)
+            particulars.append(elimination.particular(rhs))
+            motions.append(scale * values)
+    if not particulars:
+        return None
+    return np.column_stack(particulars), np.column_stack(motions)
+
+
+def lifting_loads(particular, motion, frequencies, stiffness, mass, damping):
+    """-(K + i w C - w^2 M) U c(f) as load vectors and their coefficients:
+    -K U with c, -C U with i w c, M U with w^2 c."""
+    omega = TWO_PI * np.asarray(frequencies, dtype=float)[:, None]
+    vectors = [-(stiffness.matrix @ particular).T, (mass.matrix @ particular).T]
+    coefficients = [motion, omega**2 * motion]
+    if damping is not None:
+        vectors.append(-(damping.matrix @ particular).T)
+        coefficients.append(1j * omega * motion)
+    return np.vstack(vectors).astype(complex), np.hstack(coefficients)
 
 
 def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
@@ -304,12 +396,10 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
                     "CHARGE",
                     occ,
                 )
-            if any(
-                abs(relation.rhs) > 0.0 or relation.rhs_in_time is not None
-                for relation in load.relations
-            ):
+            if any(relation.rhs_in_time is not None for relation in load.relations):
                 ctx.unsupported(
-                    "EXCIT CHARGE imposing non-zero displacements in a harmonic response",
+                    "EXCIT CHARGE imposing displacements given in time (INST) in a "
+                    "harmonic response",
                     "CHARGE",
                     occ,
                 )

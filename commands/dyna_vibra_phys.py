@@ -12,12 +12,13 @@ from asterlite.commands.dyna_vibra_words import TRANSIENT
 
 from asterlite.concepts.table import TableNotComputed
 from asterlite.concepts.transient import DynaTrans
-from asterlite.dynamics.physical.archive import Archive, archived_steps
-from asterlite.dynamics.physical.imposed import ScaledInTime
+from asterlite.dynamics.physical.archive import Archive, archive_on_disk, archived_steps
+from asterlite.dynamics.physical.imposed import ConstantInTime, ScaledInTime
 from asterlite.dynamics.physical.modal_damping import build_modal_damping, damping_ratios
 from asterlite.errors import NumericalError, worded
 from asterlite.fem.loads import load_history, load_terms
 from asterlite.fem.selection import as_tuple
+from asterlite.io.disk_rows import DiskRows
 from asterlite.modal.renumber import transfer
 
 PHYSICAL_SCHEMES = ("NEWMARK", "WILSON", "DIFF_CENTRE", "ADAPT_ORDRE2")
@@ -39,8 +40,6 @@ def run_physical(ctx, kw):
             "SCHEMA",
             schema_kw,
         )
-    if kw.get("EXCIT_RESU"):
-        ctx.unsupported("EXCIT_RESU on a physical basis", "EXCIT_RESU", kw)
     mass_matrix, stiffness_matrix = kw["MATR_MASS"], kw["MATR_RIGI"]
     numbering = stiffness_matrix.numbering
     damping = kw["MATR_AMOR"].matrix if kw.get("MATR_AMOR") is not None else None
@@ -62,7 +61,14 @@ def run_physical(ctx, kw):
         )
     archiving = (kw.factor("ARCHIVAGE") or [{}])[0]
     mask = None if scheme == "ADAPT_ORDRE2" else physical_archive_mask(kw, times)
-    archive = Archive(system.n_free, 64 if mask is None else int(np.count_nonzero(mask)))
+    capacity = 64 if mask is None else int(np.count_nonzero(mask))
+    # past its share of the memory limit the archive lives on disk
+    disk = (
+        ctx.session.output_dir
+        if mask is not None and archive_on_disk(capacity, system.n_free, system.n_dofs)
+        else False
+    )
+    archive = Archive(system.n_free, capacity, disk)
     excluded = as_tuple(archiving.get("CHAM_EXCLU"))
     if excluded:
         # code_aster stores excluded fields at the last instant only; asterlite keeps
@@ -167,20 +173,27 @@ def run_physical(ctx, kw):
         error = error.worded(TRANSIENT)
         raise NumericalError(error.message, ctx.location, ctx.command) from None
     elapsed = __import__("time").perf_counter() - started
-    out_t, out_q, out_v, out_a = archive.arrays()
-    if last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
-        out_v[-1] = last_velocity
+    out_t = archive.times[: archive.count].copy()
     ctx.log(
         f"DYNA_VIBRA PHYS {scheme}: {stats['steps']} steps, {out_t.size} archived, "
         f"{system.n_free} free DOFs of {system.n_dofs}, {elapsed:.3f} s"
     )
-    fields = {
-        "DEPL": system.expand(out_q),
-        "VITE": system.expand_rate(out_v),
-        "ACCE": system.expand_rate(out_a),
-    }
-    out_t = out_t.copy()
-    del out_q, out_v, out_a, archive  # the reduced states, views of the archive
+    fields = {}
+    # one quantity at a time, its reduced states let go of once expanded: the
+    # archive and the fields are never both whole in memory
+    for k, (name, expand) in enumerate(
+        (("DEPL", system.expand), ("VITE", system.expand_rate), ("ACCE", system.expand_rate))
+    ):
+        states = archive.take(k)
+        if name == "VITE" and last_velocity is not None and out_t.size and out_t[-1] == times[-1]:
+            states[-1] = last_velocity
+        fields[name] = expand(
+            states, DiskRows(system.n_dofs, disk or None) if archive.on_disk else None
+        )
+        del states
+    if archive.on_disk:
+        ctx.log(f"archive of {out_t.size} states kept on disk (over its share of the memory limit)")
+    del archive
     if system.imposed is not None:
         # the archived instants are step instants: their motion is the scheme's
         steps = np.clip(np.searchsorted(times, out_t), 0, times.size - 1)
@@ -315,6 +328,9 @@ def physical_imposed_motion(ctx, kw, numbering, scheme):
         columns = []
         if function is not None and np.any(constant):
             columns.append((constant, function))
+        elif float(occ.get("COEF_MULT", 1.0)) != 1.0 and np.any(constant):
+            # code_aster scales the imposed values by COEF_MULT too
+            columns.append((constant, ConstantInTime(float(occ["COEF_MULT"]))))
         scale = function if function is not None else float(occ.get("COEF_MULT", 1.0))
         for value, rows in in_time.values():
             rhs = np.zeros(len(numbering.relations))
@@ -383,7 +399,63 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix):
         elif mult is None:
             mult = float(occ.get("COEF_MULT", 1.0))
         loads.append(Load(vector, mult, _numbered_history(ctx, history, numbering, occ)))
+    for occ in kw.factor("EXCIT_RESU"):
+        loads.append(_result_load(ctx, occ, numbering))
     return loads
+
+
+def _result_load(ctx, occ, numbering):
+    """EXCIT_RESU: the DEPL field of a dyna_trans as forces, times COEF_MULT,
+    read as code_aster's dlnew0 reads it: the stored field at an instant the
+    result holds (1e-9 relative, 1e-12 absolute at 0), else linear between the
+    fields of orders i and i+1 that bracket the instant; before the instant
+    of order 1, the field of order 1; after the last, the last field (orders
+    0, 1, 2... as a physical transient archives them, or 1, 2...)."""
+    from asterlite.dynamics.physical.system import Load, LoadHistory
+
+    result = occ["RESULTAT"]
+    depl = result.fields.get("DEPL")
+    if depl is None:
+        ctx.error("the result holds no DEPL field", "RESULTAT", occ)
+    if list(result.numbering.dofs) != list(numbering.dofs):
+        ctx.error("the result is not on the numbering of the matrices", "RESULTAT", occ)
+    stored = np.asarray(result.times, dtype=float)
+    position = {int(o): k for k, o in enumerate(result.order)}
+    count = len(stored)
+    by_order = [position.get(i) for i in range(1, count + 1)]
+    values = np.asarray(depl, dtype=float)
+
+    def field_at(t: float) -> np.ndarray:
+        tolerance = 1e-9 * abs(t) if abs(t) > 1e-12 else 1e-12
+        hits = np.flatnonzero(np.abs(stored - t) <= tolerance)
+        if hits.size:
+            return values[hits[0]]
+        for i in range(1, count):
+            left, right = by_order[i - 1], by_order[i]
+            if right is None and i == count - 1:
+                # orders 0..n-1: code_aster's last order i+1 is the last field
+                right = count - 1
+            if left is None or right is None:
+                ctx.error(
+                    f"the result's orders are not 0, 1, 2...: order {i if left is None else i + 1} "
+                    "is missing where code_aster interpolates",
+                    "RESULTAT",
+                    occ,
+                )
+            if i == 1 and t < stored[left]:
+                return values[left]
+            if stored[left] <= t < stored[right]:
+                alpha = (t - stored[left]) / (stored[right] - stored[left])
+                return (1.0 - alpha) * values[left] + alpha * values[right]
+            if i == count - 1 and t >= stored[right]:
+                return values[right]
+        ctx.error(f"the result has no field near INST={t:g}", "RESULTAT", occ)
+
+    def history(times) -> np.ndarray:
+        return np.array([field_at(float(t)) for t in np.atleast_1d(times)])
+
+    rows = np.arange(numbering.n_dofs)
+    return Load(np.zeros(numbering.n_dofs), float(occ["COEF_MULT"]), LoadHistory(rows, history))
 
 
 def _numbered_history(ctx, history, numbering, occ):
@@ -394,6 +466,14 @@ def _numbered_history(ctx, history, numbering, occ):
     if history is None:
         return None
     nodes, components, _ = history(np.zeros(1))
+    return LoadHistory(
+        history_rows(ctx, numbering, nodes, components, occ), lambda times: history(times)[2]
+    )
+
+
+def history_rows(ctx, numbering, nodes, components, occ) -> np.ndarray:
+    """The numbering's rows of a load history's (node, component) terms; an
+    error at the occurrence's CHARGE for a term the numbering lacks."""
     rows = numbering.dof_indices(nodes, components)
     if np.any(rows < 0):
         k = int(np.flatnonzero(rows < 0)[0])
@@ -403,7 +483,7 @@ def _numbered_history(ctx, history, numbering, occ):
             "CHARGE",
             occ,
         )
-    return LoadHistory(rows, lambda times: history(times)[2])
+    return rows
 
 
 def physical_supports(ctx, kw, numbering) -> list[dict]:

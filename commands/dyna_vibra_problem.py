@@ -11,10 +11,10 @@ integrates it and binds the result.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
-from asterlite.catalogues.dyna_vibra import GENE_DEFAULT_SCHEME
+from asterlite.catalogues.dyna_vibra import DYNA_VIBRA
 from asterlite.commands.dyna_vibra_keywords import first_value
 from asterlite.commands.dyna_vibra_loads import (
     excitations,
@@ -45,6 +45,8 @@ from asterlite.commands.dyna_vibra_time import (
     time_span,
 )
 
+from asterlite.catalog.keywords import Keywords
+from asterlite.catalog.validator import validate_factor
 from asterlite.concepts.titles import unique_titles
 from asterlite.dynamics.excitation import Excitation, tabulate_excitation
 from asterlite.dynamics.fluid_film import FluidFilm
@@ -110,8 +112,8 @@ def build_problem(ctx, kw) -> TransientProblem:
     by name what asterlite does not integrate."""
     if kw.get("BASE_ELAS_FLUI"):
         ctx.unsupported("BASE_ELAS_FLUI is not implemented", "BASE_ELAS_FLUI", kw)
-    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
-    scheme = schema_kw.get("SCHEMA") or GENE_DEFAULT_SCHEME
+    [schema_kw] = kw.factor("SCHEMA_TEMPS")  # statut 'd': always there, defaults filled
+    scheme = schema_kw["SCHEMA"]
     if scheme not in SCHEMES:
         ctx.unsupported(
             f"SCHEMA={scheme!r} (implemented: {', '.join(SCHEMES)})", "SCHEMA", schema_kw
@@ -182,7 +184,7 @@ def build_problem(ctx, kw) -> TransientProblem:
         )
     options = scheme_options(ctx, entry, schema_kw)
     if options.adapt_v11 and options.dt_max is None:
-        options.dt_max = legacy_adapt_step_max(ctx, system, shocks)
+        options = replace(options, dt_max=legacy_adapt_step_max(ctx, system, shocks))
     return TransientProblem(
         scheme=entry,
         options=options,
@@ -226,8 +228,8 @@ def relations(ctx, kw, basis, system):
 
 # SCHEMA_TEMPS keywords -> SchemeOptions fields, and how the value is read
 # (None: as validated). The catalogue fills the defaults of the scheme's BLOC;
-# a keyword of another scheme's BLOC is absent and its field keeps
-# SchemeOptions' value, which the scheme does not read.
+# a keyword of another scheme's BLOC is absent and its field is None, which
+# the scheme does not read.
 OPTION_KEYWORDS = {
     "TOLERANCE": ("tolerance", None),
     "ALPHA": ("alpha", None),
@@ -247,13 +249,32 @@ OPTION_KEYWORDS = {
 def scheme_options(ctx, entry: Scheme, schema_kw) -> SchemeOptions:
     """SCHEMA_TEMPS's parameters of the scheme, and the behaviours of the
     deck's code_aster version (asterlite.legacy.v15.OLD_BEHAVIOURS)."""
-    values = {}
-    for keyword, (field, read) in OPTION_KEYWORDS.items():
-        value = schema_kw.get(keyword)
-        if value is not None:
-            values[field] = value if read is None else read(value)
-    return SchemeOptions(
-        **values,
+    return options_from_schema(
+        schema_kw,
         force_at_step_start=computes(ctx.session, "NEWMARK_FORCE_AT_STEP_START"),
         adapt_v11=entry.legacy_module is not None and computes(ctx.session, "ADAPT_ORDRE2_MDADAP"),
     )
+
+
+def options_from_schema(
+    schema_kw, force_at_step_start: bool = False, adapt_v11: bool = False
+) -> SchemeOptions:
+    """The :class:`SchemeOptions` of a validated SCHEMA_TEMPS occurrence
+    (today's behaviours unless the flags say otherwise)."""
+    values = {}
+    for keyword, (field, read) in OPTION_KEYWORDS.items():
+        value = schema_kw.get(keyword)
+        values[field] = value if value is None or read is None else read(value)
+    return SchemeOptions(**values, force_at_step_start=force_at_step_start, adapt_v11=adapt_v11)
+
+
+def catalogue_options(scheme: str, **given) -> SchemeOptions:
+    """The options of ``SCHEMA_TEMPS=_F(SCHEMA=scheme, **given)`` on the
+    generalized basis, validated by DYNA_VIBRA's catalogue (its defaults
+    filled): for the callers of the engine that have no deck (benchmarks,
+    tests)."""
+    fact = DYNA_VIBRA.entries["b_schema_gene"].entries["SCHEMA_TEMPS"]
+    [occurrence] = validate_factor(
+        fact, [{"SCHEMA": scheme, **given}], Keywords(path="DYNA_VIBRA"), "SCHEMA_TEMPS", {}
+    )
+    return options_from_schema(occurrence)

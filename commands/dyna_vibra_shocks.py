@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 
+from asterlite.catalog.validator import default_occurrence
 from asterlite.concepts.titles import default_title
 from asterlite.dynamics.basis_check import node_checks
 from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row
@@ -265,12 +266,14 @@ def fluid_film(ctx, kw, scheme, system, occurrences) -> FluidFilm | None:
     for s, occ in enumerate(occurrences):
         if occ.get("LAME_FLUIDE") == "OUI":
             rows[s] = film_row(occ["ALPHA"], occ["BETA"], occ["CHI"], occ["DELTA"])
-    controls = (kw.factor("PARA_LAME_FLUI") or [{}])[0]
+    # the iterations' controls: the deck's, or the defaults of an empty
+    # occurrence where it gives none
+    [controls] = kw.factor("PARA_LAME_FLUI") or default_occurrence(kw, "PARA_LAME_FLUI")
     return FluidFilm(
         rows,
-        max_iterations=int(controls.get("NMAX_ITER", 20)),
-        tolerance=float(controls.get("RESI_RELA", 1.0e-3)),
-        relaxation=float(controls.get("LAMBDA", 10.0)),
+        max_iterations=int(controls["NMAX_ITER"]),
+        tolerance=float(controls["RESI_RELA"]),
+        relaxation=float(controls["LAMBDA"]),
     )
 
 

@@ -131,7 +131,7 @@ def checked_step(ctx, scheme, system, shocks, dt_user, veri_pas, kw) -> float:
     stability limit of a shock's AMOR_NOR/AMOR_TAN (c·dt inside the stages'
     real stability interval), and their adaptive step never grows above it
     (:func:`asterlite.dynamics.step_limits.shock_damping_limit`)."""
-    schema_kw = (kw.factor("SCHEMA_TEMPS") or [{}])[0]
+    [schema_kw] = kw.factor("SCHEMA_TEMPS")
     dt_max = schema_kw.get("PAS_MAXI")
     if dt_max is not None and dt_max < dt_user:
         raise NumericalError(

@@ -1,4 +1,5 @@
-"""FACTORISER: factorise an assembled matrix under its kinematic relations.
+"""FACTORISER: factorise an assembled matrix (real or complex) under its
+kinematic relations.
 
 The direct methods (MUMPS, MULT_FRONT, LDLT) give the same factors up to
 rounding: asterlite factorises the reduced matrix with SuperLU whichever is
@@ -10,7 +11,7 @@ NPREC digits stops (STOP_SINGULIER='OUI') or is reported (``'NON'``).
 
 from __future__ import annotations
 
-from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
+from asterlite.concepts.assembly import AssembledMatrix
 from asterlite.fem.factorization import FactorizationError, factorize
 
 DIRECT_METHODS = ("MUMPS", "MULT_FRONT", "LDLT")
@@ -32,8 +33,8 @@ def run(ctx, kw):
     method = kw.get("METHODE", "MUMPS")
     if method not in DIRECT_METHODS:
         ctx.unsupported(f"FACTORISER METHODE={method!r} (preconditioners)", "METHODE", kw)
-    if isinstance(matrix, ComplexAssembledMatrix) or not isinstance(matrix, AssembledMatrix):
-        ctx.unsupported("FACTORISER of a complex matrix", "MATR_ASSE", kw)
+    if not isinstance(matrix, AssembledMatrix):
+        ctx.unsupported(f"FACTORISER of a {matrix.aster_type}", "MATR_ASSE", kw)
     for name in ("BLOC_DEBUT", "DDL_DEBUT", "BLOC_FIN", "DDL_FIN"):
         if kw.get(name) is not None:
             ctx.unsupported(f"FACTORISER {name} (partial factorisation)", name, kw)
@@ -64,7 +65,8 @@ def run(ctx, kw):
 
 
 def _copy(matrix: AssembledMatrix) -> AssembledMatrix:
-    return AssembledMatrix(
+    # ComplexAssembledMatrix stays complex
+    return type(matrix)(
         numbering=matrix.numbering,
         matrix=matrix.matrix,
         kind=matrix.kind,

@@ -40,6 +40,7 @@ from asterlite.io.med_writer import (
     ElementSeries,
     MedWriteError,
     NodalSeries,
+    complex_part,
     dofs_to_nodal,
     med_field_name,
     write_med,
@@ -290,6 +291,8 @@ def element_block(ctx, kw, result, name: str):
     """(cells, components, values (n_selected_steps, n_cells, n_points,
     n_comp), step indices) of an element field of a result."""
     field = result.element_fields[name]
+    if field.sub_points > 1:
+        ctx.unsupported(f"IMPR_RESU of {name} on sub-points (multifibre beams)", "NOM_CHAM", kw)
     indices = chosen_steps(ctx, kw, result_steps(result))
     rows = chosen_cells(ctx, kw, result_mesh(result), field.cells)
     cmp_idx = element_components(ctx, kw, name, field.components)
@@ -374,13 +377,26 @@ def write_med_format(ctx, kw) -> None:
 
 
 def med_occurrence(ctx, occ):
-    """(mesh, mesh name, [NodalSeries]) of one RESU occurrence."""
+    """(mesh, mesh name, [NodalSeries]) of one RESU occurrence; PARTIE
+    writes a part of the values (asterlite.io.med_writer.complex_part)."""
+    mesh, name, series = _med_series(ctx, occ)
+    part = occ.get("PARTIE")
+    if part is not None:
+        for one in series:
+            one.values = complex_part(one.values, part)
+    return mesh, name, series
+
+
+def _med_series(ctx, occ):
     if occ.get("NOM_PARA") is not None:
         ctx.unsupported("NOM_PARA (MED scalar variables)", "NOM_PARA", occ)
     result, field = occ.get("RESULTAT"), occ.get("CHAM_GD")
     mesh = occ.get("MAILLAGE")
     if result is not None:
-        if not is_physical_result(result):
+        if isinstance(result, DynaHarmo) and occ.get("PARTIE") is None:
+            # MED holds real values: code_aster stops too (ircmva, RESULT3_69)
+            ctx.error("a complex field is written to MED one PARTIE at a time", "PARTIE", occ)
+        if not (is_physical_result(result) or isinstance(result, DynaHarmo)):
             ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
         mesh = mesh or result_mesh(result)
         return mesh, mesh_label(mesh), result_series(ctx, occ, result)
@@ -509,7 +525,7 @@ def text_occurrence(ctx, occ) -> list[str]:
         lines.append(f" {occ['SOUS_TITRE']}")
     result, field = occ.get("RESULTAT"), occ.get("CHAM_GD")
     if result is not None:
-        if not is_physical_result(result):
+        if not (is_physical_result(result) or isinstance(result, DynaHarmo)):
             ctx.unsupported(f"IMPR_RESU of a {result.aster_type}", "RESULTAT", occ)
         return lines + result_text(ctx, occ, result, real_format)
     if isinstance(field, FieldOnElements):
@@ -551,6 +567,13 @@ def result_text(ctx, occ, result, real_format: str) -> list[str]:
     if params and occ.get("FORM_TABL", "NON") != "NON":
         lines.extend(parameter_table(result, steps, indices, params))
         params = []
+    part = occ.get("PARTIE")
+    for field, (nodes, comps, values, chosen) in list(blocks.items()):
+        if part is not None:
+            blocks[field] = (nodes, comps, complex_part(values, part), chosen)
+        elif np.iscomplexobj(values) and "OUI" in (occ.get("VALE_MAX"), occ.get("VALE_MIN")):
+            key = "VALE_MAX" if occ.get("VALE_MAX") == "OUI" else "VALE_MIN"
+            ctx.unsupported(f"{key} of a complex field (give PARTIE)", key, occ)
     mesh = result_mesh(result)
     for k, step in enumerate(indices):
         for field, (nodes, comps, values, _) in blocks.items():
@@ -593,12 +616,20 @@ def element_lines(mesh: Mesh, cells, location: str, comps, values, real_format: 
         lines.append(header)
         connectivity = mesh.cell_nodes[int(cell)]
         for point in range(values.shape[1]):
-            label = mesh.node_names[int(connectivity[point])] if location == "ELNO" else point + 1
-            numbers = "".join(
-                f" {fortran_real(float(v) + 0.0, real_format)}" for v in values[k, point]
-            )
-            lines.append(f"  {label!s:<8}" + numbers)
+            name = mesh.node_names[int(connectivity[point])] if location == "ELNO" else point + 1
+            for label, row in _value_rows(str(name), values[k, point]):
+                numbers = "".join(f" {fortran_real(float(v) + 0.0, real_format)}" for v in row)
+                lines.append(f"  {label!s:<8}" + numbers)
     return lines
+
+
+def _value_rows(label: str, values) -> list:
+    """The printed rows of one point: its values, or for complex values the
+    real parts then, on an unlabelled row, the imaginary parts (ircnc8)."""
+    values = np.asarray(values)
+    if np.iscomplexobj(values):
+        return [(label, values.real), ("", values.imag)]
+    return [(label, values)]
 
 
 def step_header(steps, step: int) -> str:
@@ -661,11 +692,12 @@ def node_lines(occ, mesh: Mesh, nodes, comps, values, real_format: str) -> list[
     header = " NOEUD   " + "".join(f" {c:>{width}}" for c in (*(axes if coords else ()), *comps))
     lines = [header]
     for k, node in enumerate(nodes):
-        cells = [fortran_real(float(x), real_format) for x in mesh.coords[node, : len(axes)]]
-        cells = (cells if coords else []) + [
-            fortran_real(float(v) + 0.0, real_format) for v in values[k]
-        ]
-        lines.append(f" {mesh.node_names[node]:<8}" + "".join(f" {c}" for c in cells))
+        place = [fortran_real(float(x), real_format) for x in mesh.coords[node, : len(axes)]]
+        for label, row in _value_rows(mesh.node_names[node], values[k]):
+            cells = (place if coords else []) + [
+                fortran_real(float(v) + 0.0, real_format) for v in row
+            ]
+            lines.append(f" {label:<8}" + "".join(f" {c}" for c in cells))
     for key, pick in (("VALE_MAX", np.argmax), ("VALE_MIN", np.argmin)):
         if occ.get(key) == "OUI" and len(nodes):
             lines.append("")

@@ -1,11 +1,13 @@
 """LIRE_MAILLAGE: read a mesh (ASTER text format; MED through medcoupling; I-DEAS
-universal files through pyuff)."""
+universal files through pyuff; gmsh formats 1 and 2 as code_aster's PRE_GMSH)."""
 
 from __future__ import annotations
 
 from asterlite.fem.mesh_check import check_mesh
 from asterlite.io.aster_mesh import AsterMeshError, read_aster_mesh
+from asterlite.io.gmsh_mesh import GmshMeshError, read_gmsh_mesh
 from asterlite.io.ideas_mesh import IdeasMeshError, IdeasMeshUnsupported, read_ideas_mesh
+from asterlite.legacy.version import meshes_keep_names
 
 
 def run(ctx, kw):
@@ -31,12 +33,18 @@ def run(ctx, kw):
             ctx.error(str(exc), "UNITE", kw)
     elif fmt == "IDEAS":
         mesh = _read_ideas(ctx, kw, path)
+    elif fmt == "GMSH":
+        try:
+            mesh = read_gmsh_mesh(path)
+        except GmshMeshError as exc:
+            ctx.error(str(exc), "UNITE", kw)
     else:
         ctx.unsupported(f"LIRE_MAILLAGE FORMAT={fmt!r}", "FORMAT", kw)
     ctx.log(
         f"mesh {path.name}: {mesh.n_nodes} nodes, {mesh.n_cells} cells, "
         f"{len(mesh.node_groups)} node groups, {len(mesh.cell_groups)} cell groups"
     )
+    mesh.names_kept = meshes_keep_names(ctx.session)
     _check(ctx, kw, mesh)
     return mesh
 

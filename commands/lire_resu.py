@@ -1,4 +1,5 @@
-"""LIRE_RESU: a result built from fields of a MED file.
+"""LIRE_RESU: a result built from fields of a MED file (universal files:
+datasets 55 below, datasets 58 in lire_resu_ds58).
 
 FORMAT='MED', TYPE_RESU 'MODE_MECA' or 'DYNA_TRANS', nodal fields (DEPL,
 VITE, ACCE) named by NOM_CHAM_MED or by the prefix NOM_RESU (code_aster's
@@ -22,6 +23,7 @@ masses and stiffnesses are computed from them (zero without them).
 from __future__ import annotations
 
 import numpy as np
+from asterlite.commands import lire_resu_ds58
 
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.harmonic import DynaHarmo
@@ -39,6 +41,8 @@ _NODAL = ("DEPL", "VITE", "ACCE")
 def run(ctx, kw):
     if kw["FORMAT"] == "IDEAS":
         return _read_ideas(ctx, kw)
+    if kw["FORMAT"] == "IDEAS_DS58":
+        return lire_resu_ds58.read(ctx, kw, _input(ctx, kw))
     if kw["FORMAT"] != "MED":
         ctx.unsupported(f"LIRE_RESU FORMAT={kw['FORMAT']!r}", "FORMAT", kw)
     kind = kw["TYPE_RESU"]
@@ -240,27 +244,24 @@ def _read_ideas(ctx, kw):
     N<label>, else by number. The orders stored are the file's."""
 
     kind = kw["TYPE_RESU"]
-    if kind not in ("DYNA_HARMO", "DYNA_TRANS"):
+    if kind not in ("DYNA_HARMO", "DYNA_TRANS", "MODE_MECA"):
         ctx.unsupported(f"LIRE_RESU FORMAT='IDEAS' TYPE_RESU={kind!r}", "TYPE_RESU", kw)
     if kw.get("RESULTAT") is not None:
         ctx.unsupported("LIRE_RESU into an existing result (reuse)", "RESULTAT", kw)
     kw.mark_used("INFO", "TITRE", "CHAM_MATER", "CARA_ELEM")  # recorded by code_aster only
-    access = "FREQ" if kind == "DYNA_HARMO" else "INST"
+    access = "INST" if kind == "DYNA_TRANS" else "FREQ"
     mesh = kw["MAILLAGE"] if kw.get("MAILLAGE") is not None else kw["MODELE"].mesh
     wanted = list(as_tuple(kw["NOM_CHAM"]))
     occurrences = {occ["NOM_CHAM"]: occ for occ in kw.factor("FORMAT_IDEAS")}
-    missing = [n for n in wanted if n not in occurrences]
-    if missing:
-        ctx.unsupported(
-            f"LIRE_RESU IDEAS of {missing[0]} without FORMAT_IDEAS (code_aster's defaults)",
-            "FORMAT_IDEAS",
-            kw,
-        )
+    for name in wanted:
+        if name not in occurrences:
+            occurrences[name] = _ideas_default_format(ctx, kw, name)
     try:
         datasets = read_datasets_55(_input(ctx, kw))
     except (IdeasReadError, ValueError, IndexError) as exc:
         ctx.error(f"the file is not a readable universal file: {exc}", "UNITE", kw)
     read: dict[str, dict[int, tuple[float, dict]]] = {}
+    mode_parameters: dict[int, dict[str, float]] = {}
     for name in wanted:
         occ = occurrences[name]
         if occ.get("NUME_DATASET", 55) != 55:
@@ -276,6 +277,8 @@ def _read_ideas(ctx, kw):
             try:
                 order = int(record_field(dataset["records"], *occ["POSI_ORDRE"]))
                 value = float(record_field(dataset["records"], *position).replace("D", "E"))
+                if kind == "MODE_MECA":
+                    mode_parameters[order] = _ideas_mode_parameters(occ, dataset["records"])
             except (IdeasReadError, ValueError) as exc:
                 ctx.error(str(exc), "POSI_ORDRE", occ)
             by_node = {}
@@ -307,10 +310,75 @@ def _read_ideas(ctx, kw):
         fields[name] = values
     parameters = np.array([next(iter(read.values()))[o][0] for o in picked], dtype=float)
     orders = np.asarray(picked, dtype=int)
+    if kind == "MODE_MECA":
+        return _ideas_modes(
+            ctx, kw, numbering, fields, parameters, [mode_parameters[o] for o in picked]
+        )
     ctx.log(f"{len(fields)} fields at {len(picked)} orders read on {numbering.n_dofs} DOFs")
     if complex_values:
         return DynaHarmo(numbering=numbering, frequencies=parameters, order=orders, fields=fields)
     return DynaTrans(numbering=numbering, times=parameters, order=orders, fields=fields)
+
+
+def _ideas_mode_parameters(occ, records) -> dict[str, float]:
+    """NUME_MODE, MASS_GENE and the damping of a mode's dataset (POSI_*),
+    zero where the occurrence does not place them, as code_aster's lridea;
+    code_aster stores the damping read at POSI_AMOR_GENE as AMOR_REDUIT."""
+    out = {}
+    for key, name in (
+        ("POSI_NUME_MODE", "NUME_MODE"),
+        ("POSI_MASS_GENE", "MASS_GENE"),
+        ("POSI_AMOR_GENE", "AMOR_REDUIT"),
+    ):
+        position = occ.get(key)
+        text = record_field(records, *position).replace("D", "E") if position else "0"
+        out[name] = int(float(text)) if name == "NUME_MODE" else float(text)
+    return out
+
+
+def _ideas_modes(ctx, kw, numbering, fields, frequencies, parameters) -> ModeResult:
+    """A MODE_MECA read from datasets 55: the DEPL shapes, FREQ, and the
+    file's NUME_MODE, MASS_GENE and AMOR_REDUIT; MATR_RIGI / MATR_MASS are
+    the matrices the modes refer to (RIGI_GENE from them, as for MED)."""
+    if "DEPL" not in fields:
+        ctx.error("a MODE_MECA needs the DEPL field", "NOM_CHAM", kw)
+    modes = _modes(ctx, kw, numbering, fields, np.zeros(len(parameters), dtype=int), frequencies)
+    modes.generalized_mass = np.array([p["MASS_GENE"] for p in parameters], dtype=float)
+    modes.parameters["NUME_MODE"] = np.array([p["NUME_MODE"] for p in parameters], dtype=int)
+    modes.parameters["AMOR_REDUIT"] = np.array([p["AMOR_REDUIT"] for p in parameters], dtype=float)
+    return modes
+
+
+def _ideas_default_format(ctx, kw, name: str) -> dict:
+    """code_aster's format of a field that FORMAT_IDEAS does not describe
+    (its crsdfi): nodal datasets 55 for the fields asterlite reads."""
+    for prefix, (record_6, components) in _IDEAS_DEFAULT_FORMATS.items():
+        if name.startswith(prefix):
+            return {
+                "NOM_CHAM": name,
+                "NUME_DATASET": 55,
+                "RECORD_6": record_6,
+                "POSI_ORDRE": (7, 4),
+                "POSI_INST": (8, 1),
+                "POSI_FREQ": (8, 1),
+                "NOM_CMP": components,
+            }
+    ctx.unsupported(
+        f"LIRE_RESU IDEAS of {name} without FORMAT_IDEAS: code_aster's default format of "
+        "this field is an element dataset (57), which asterlite does not read",
+        "FORMAT_IDEAS",
+        kw,
+    )
+
+
+# code_aster's default record 6 (None: any value) and components per field
+_TRANSLATIONS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+_IDEAS_DEFAULT_FORMATS = {
+    "DEPL": ((1, None, 3, 8, 2, 6), _TRANSLATIONS),
+    "VITE": ((1, None, 3, 11, 2, 6), _TRANSLATIONS),
+    "ACCE": ((1, None, 3, 12, 2, 6), _TRANSLATIONS),
+    "TEMP": ((2, 4, 1, 5, 2, 1), ("TEMP",)),
+}
 
 
 def _ideas_matches(occ, dataset, name) -> bool:
@@ -323,6 +391,8 @@ def _ideas_matches(occ, dataset, name) -> bool:
         given = True
         tokens = records[record - 1].split()
         for k, value in enumerate(as_tuple(values)):
+            if value is None:
+                continue
             if k >= len(tokens) or int(float(tokens[k])) != int(value):
                 return False
     if given:

@@ -95,4 +95,6 @@ def run(ctx, kw):
         model=model,
         materials=materials,
         characteristics=characteristics,
+        # CALC_CHAMP without EXCIT takes the beams' distributed loads off with these
+        loads=tuple((occ["CHARGE"], occ.get("FONC_MULT") or 1.0) for occ in occurrences),
     )

@@ -1,15 +1,27 @@
 """MODI_MAILLAGE: change node coordinates in place (ECHELLE, TRANSLATION,
-ROTATION, SYMETRIE, DEFORME) or the orientation of skin faces (ORIE_PEAU);
-the mesh is returned (reuse)."""
+ROTATION, SYMETRIE, DEFORME), the orientation of skin faces (ORIE_PEAU) and
+of shells (ORIE_NORM_COQUE), or store the curvilinear abscissa of a line of
+segments (ABSC_CURV); the mesh is returned (reuse)."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from asterlite.fem.selection import as_tuple, cell_group_members
+from asterlite.fem.abscissa import AbscissaError, curvilinear_abscissa
+from asterlite.fem.selection import (
+    as_tuple,
+    cell_group_members,
+    named_nodes,
+    node_group_members,
+    select_cells,
+)
+from asterlite.fem.shell_orientation import ShellOrientationError, orient_shells
 from asterlite.fem.skin import SkinError, is_plane, orient_edges, orient_skin
 
-_SUPPORTED = ("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU")
+_SUPPORTED = (
+    *("ECHELLE", "TRANSLATION", "ROTATION", "SYMETRIE", "DEFORME", "ORIE_PEAU"),
+    *("ORIE_NORM_COQUE", "ABSC_CURV"),
+)
 # code_aster 15's name of ORIE_PEAU for 3D skins, and its keywords
 _SKIN_KEYWORDS = {
     "ORIE_PEAU": ("GROUP_MA_PEAU", "GROUP_MA_INTERNE"),
@@ -38,6 +50,32 @@ def _orient_skin(ctx, mesh, kw) -> None:
                 ctx.error(str(exc), faces_key, occ)
             what = "edges" if plane else "faces"
             ctx.log(f"{factor}: {count} of {len(faces)} {what} reversed")
+
+
+def _orient_shells(ctx, mesh, kw) -> None:
+    """ORIE_NORM_COQUE: each GROUP_MA's shell cells turned to one normal,
+    along VECT_NORM at the node given (the first of GROUP_NO; without it the
+    first node of the first cell), else as the group's first cell."""
+    for occ in kw.factor("ORIE_NORM_COQUE"):
+        groups = as_tuple(occ["GROUP_MA"])
+        vector = occ.get("VECT_NORM")
+        node = None
+        if vector is not None:
+            vector = _vector(vector)
+            if occ.get("GROUP_NO") is not None:
+                node = node_group_members(ctx, occ, mesh)[0]
+            elif occ.get("NOEUD") is not None:
+                node = mesh.find_node(as_tuple(occ["NOEUD"])[0])
+                if node is None:
+                    ctx.error(f"the mesh has no node {occ['NOEUD']!r}", "NOEUD", occ)
+        for group in groups:
+            cells = cell_group_members(ctx, {"GROUP_MA": group}, mesh)
+            start = node if node is not None or not cells else mesh.cell_nodes[cells[0]][0]
+            try:
+                count = orient_shells(mesh, cells, vector, start)
+            except ShellOrientationError as exc:
+                ctx.error(f"group {group}: {exc}", "GROUP_MA", occ)
+            ctx.log(f"ORIE_NORM_COQUE: {count} of {len(cells)} cells of {group} reversed")
 
 
 def _vector(values, dim: int = 3) -> np.ndarray:
@@ -89,14 +127,34 @@ def _mirror(ctx, mesh, occ) -> None:
     mesh.coords[:] = mesh.coords - 2.0 * distance[:, None] * n
 
 
+def lehmer_uniform(count: int, seed: int = 24331) -> np.ndarray:
+    """``count`` numbers in (0, 1) of the minimal-standard Lehmer generator
+    (multiplier 16807, modulus 2**31 - 1) that code_aster's ggubs draws,
+    starting from its seed; each is the new state over 2**31."""
+    out = np.empty(count)
+    state = seed
+    for i in range(count):
+        state = state * 16807 % 2147483647
+        out[i] = state / 2147483648.0
+    return out
+
+
+def _random_shift(mesh, alea: float) -> None:
+    """DEFORME ALEA as code_aster's modi_alea: node by node, x, y and z move by
+    (2 r - 1) * ALEA * (the mesh's extent along that axis), r drawn in turn
+    from one generator seeded 24331 (three draws per node whatever the
+    dimension, so a 2D mesh moves as code_aster moves it)."""
+    coords = mesh.coords
+    extent = np.zeros(3)
+    extent[: coords.shape[1]] = coords.max(axis=0) - coords.min(axis=0)
+    draws = lehmer_uniform(3 * mesh.n_nodes).reshape(mesh.n_nodes, 3)
+    shift = 2.0 * (draws - 0.5) * (alea * extent)
+    coords[:] = coords + shift[:, : coords.shape[1]]
+
+
 def _deforme(ctx, mesh, occ) -> None:
     if occ.get("ALEA") is not None:
-        # a small reproducible perturbation of every coordinate in [-ALEA, ALEA]
-        amplitude = float(occ["ALEA"])
-        rng = np.random.default_rng(0)
-        shift = rng.uniform(-amplitude, amplitude, size=mesh.coords.shape)
-        shift[:, mesh.dim :] = 0.0
-        mesh.coords[:] = mesh.coords + shift
+        _random_shift(mesh, float(occ["ALEA"]))
         return
     field = occ["DEPL"]
     numbering = field.numbering
@@ -106,6 +164,27 @@ def _deforme(ctx, mesh, occ) -> None:
         rows = numbering.dof_indices(np.arange(mesh.n_nodes), comp)
         present = rows >= 0
         mesh.coords[present, axis] += field.values[rows[present]]
+
+
+def _abscissa(ctx, mesh, occ) -> None:
+    """ABSC_CURV: the abscissa carte of the chosen cells from the origin node."""
+    origin_key = "GROUP_NO_ORIG" if occ.get("GROUP_NO_ORIG") is not None else "NOEUD_ORIG"
+    if origin_key == "GROUP_NO_ORIG":
+        origin = node_group_members(ctx, occ, mesh, origin_key)
+    else:
+        origin = named_nodes(ctx, occ, mesh, origin_key)
+    if len(origin) != 1:
+        ctx.error(f"{origin_key} must name exactly one node ({len(origin)} given)", origin_key, occ)
+    cells = select_cells(ctx, occ, mesh)
+    try:
+        carte = curvilinear_abscissa(mesh, cells, origin[0])
+    except AbscissaError as exc:
+        ctx.error(str(exc), "GROUP_MA" if occ.get("GROUP_MA") else "TOUT", occ)
+    if mesh.curvilinear_abscissa is not None:
+        ctx.log("ABSC_CURV: the mesh's former curvilinear abscissa is replaced")
+    mesh.curvilinear_abscissa = carte
+    length = max((max(v) for v in carte.values()), default=0.0)
+    ctx.log(f"ABSC_CURV: {len(carte)} cells, line length {length:.6g}")
 
 
 def run(ctx, kw):
@@ -122,6 +201,9 @@ def run(ctx, kw):
     if kw.get("ECHELLE") is not None:
         mesh.coords[:] = mesh.coords * float(kw["ECHELLE"])
     _orient_skin(ctx, mesh, kw)
+    _orient_shells(ctx, mesh, kw)
+    for occ in kw.factor("ABSC_CURV"):
+        _abscissa(ctx, mesh, occ)
     done = [k for k in _SUPPORTED if kw.get(k)]
     ctx.log(f"mesh modified: {', '.join(done)}")
     return mesh

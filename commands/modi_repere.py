@@ -11,10 +11,17 @@ components xx yy zz xy xz yz: ``S' = R S R^T``) or VECT_3D (DX DY DZ:
   through ORIGINE along AXE_Z, as code_aster's cylrep builds them (e_r from
   the point's distance to the axis, e_theta = e_z x e_r; on the axis, e_r is
   chosen normal to AXE_Z).
+- REPERE='COQUE', 'COQUE_INTR_UTIL', 'COQUE_UTIL_INTR': element fields of
+  DKT plates (TYPE_CHAM COQUE_GENE: EFGE/DEGE/EGRU/SIEF; TENS_3D:
+  SIGM/EPSI) turned in each cell's plane (asterlite.fem.shell_frames): from
+  the CARA_ELEM frame to the one of the single AFFE occurrence (ANGL_REP or
+  VECTEUR; (0, 0) on the other cells), to the cell's intrinsic frame, or
+  from it. Every cell of the field is turned, as code_aster's calcul does.
 
 Values outside the AFFE selections keep their global components. The new
-result holds every order of the input (TOUT_ORDRE); the other frames, 2D
-fields, shell/beam generalised forces and CHAM_GD are refused by name.
+result holds every order of the input (TOUT_ORDRE); the other frames
+(COQUE_UTIL_CYL, GLOBAL_UTIL), 2D fields, beam generalised forces, NOM_CMP
+with a shell frame and CHAM_GD are refused by name.
 """
 
 from __future__ import annotations
@@ -24,7 +31,15 @@ import copy
 import numpy as np
 
 from asterlite.fem.frames import angles_from_x_and_y, rotation_from_angles
+from asterlite.fem.plate_elements import PLATE_MODELISATIONS
 from asterlite.fem.selection import as_tuple, select_cells, select_nodes
+from asterlite.fem.shell_frames import (
+    GENERALISED,
+    TENSOR,
+    angles_from_vector,
+    change_shell_frame,
+    frame_axes,
+)
 
 _TENSOR = ("XX", "YY", "ZZ", "XY", "XZ", "YZ")
 _PAIRS = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
@@ -158,12 +173,112 @@ def _dof_vectors(ctx, values, numbering, occ, frames, mesh) -> np.ndarray:
     return values
 
 
+# REPERE='COQUE*': the fields code_aster turns for each TYPE_CHAM (chrpel)
+# and their components (asterlite.fem.shell_frames layouts)
+_SHELL_REPERES = ("COQUE", "COQUE_INTR_UTIL", "COQUE_UTIL_INTR")
+_SHELL_FIELDS = {
+    "COQUE_GENE": ("EFGE_ELGA", "EFGE_ELNO", "EGRU_ELNO", "DEGE_ELGA", "DEGE_ELNO", "SIEF_ELGA"),
+    "TENS_3D": ("SIGM_ELGA", "SIGM_ELNO", "EPSI_ELGA", "EPSI_ELNO"),
+}
+_SHELL_COMPONENTS = {
+    "COQUE_GENE": (
+        ("NXX", "NYY", "NXY", "MXX", "MYY", "MXY", "QX", "QY"),
+        ("EXX", "EYY", "EXY", "KXX", "KYY", "KXY", "GAX", "GAY"),
+    ),
+    "TENS_3D": (
+        ("SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"),
+        ("EPXX", "EPYY", "EPZZ", "EPXY", "EPXZ", "EPYZ"),
+    ),
+}
+
+
+def _shell_angles(occ) -> tuple[float, float]:
+    if occ.get("VECTEUR") is not None:
+        return angles_from_vector(as_tuple(occ["VECTEUR"]))
+    alpha, beta = (float(v) for v in as_tuple(occ["ANGL_REP"]))
+    return alpha, beta
+
+
+def _shell_field(ctx, kw, occ, result, characteristics, mesh):
+    """The element field MODI_CHAM names, in the frame REPERE='COQUE*' asks."""
+    repere, kind, name = kw["REPERE"], occ["TYPE_CHAM"], occ["NOM_CHAM"]
+    if kind not in _SHELL_FIELDS:
+        ctx.unsupported(f"MODI_REPERE REPERE={repere!r} of TYPE_CHAM={kind!r}", "TYPE_CHAM", occ)
+    if name not in _SHELL_FIELDS[kind]:
+        ctx.error(
+            f"REPERE={repere!r} with TYPE_CHAM={kind!r} turns {', '.join(_SHELL_FIELDS[kind])}, "
+            f"not {name}",
+            "NOM_CHAM",
+            occ,
+        )
+    if occ.get("NOM_CMP") is not None:
+        ctx.unsupported(f"NOM_CMP with REPERE={repere!r}", "NOM_CMP", occ)
+    source = (getattr(result, "element_fields", None) or {}).get(name)
+    if source is None:
+        ctx.error(f"the result has no {name} field", "NOM_CHAM", occ)
+    layout_names = next(
+        (names for names in _SHELL_COMPONENTS[kind] if set(names) <= set(source.components)), None
+    )
+    if layout_names is None:
+        ctx.error(f"{name} has not the components of a {kind} field", "TYPE_CHAM", occ)
+    cells = np.asarray(source.cells, dtype=int)
+    model = getattr(result, "model", None)
+    modelisations = getattr(model, "cell_modelisation", {})
+    other = [int(c) for c in cells if modelisations.get(int(c)) not in PLATE_MODELISATIONS]
+    if other:
+        ctx.unsupported(
+            f"REPERE={repere!r} of {name} on cells that are not DKT plates "
+            f"({mesh.cell_names[other[0]]})",
+            "NOM_CHAM",
+            occ,
+        )
+    if characteristics is None:
+        ctx.error(f"REPERE={repere!r} needs the plates' CARA_ELEM", "CARA_ELEM", kw)
+    shells = characteristics.shells
+    user = frame_axes(mesh, cells, [_shell_angles(shells.get(int(c), {})) for c in cells])
+    target = None
+    if repere == "COQUE":
+        (where,) = kw.factor("AFFE")
+        chosen = set(select_cells(ctx, where, mesh).tolist())
+        given = _shell_angles(where)
+        angles = [given if int(c) in chosen else (0.0, 0.0) for c in cells]
+        target = frame_axes(mesh, cells, angles)
+    columns = [source.components.index(c) for c in layout_names]
+    layout = GENERALISED if kind == "COQUE_GENE" else TENSOR
+    field = copy.copy(source)
+    values = np.array(source.values, copy=True)
+    values[..., columns] = change_shell_frame(values[..., columns], layout, repere, user, target)
+    field.values = values
+    return field
+
+
+def _shell_frames(ctx, kw, result):
+    """The checks REPERE='COQUE*' makes before turning fields (one AFFE
+    occurrence naming cells); the CARA_ELEM of the plates' frames, or None."""
+    repere = kw["REPERE"]
+    occurrences = kw.factor("AFFE")
+    if len(occurrences) != 1:
+        ctx.error(
+            f"REPERE={repere!r} takes one AFFE occurrence, not {len(occurrences)}", "AFFE", kw
+        )
+    (occ,) = occurrences
+    if occ.get("GROUP_NO") is not None or occ.get("NOEUD") is not None:
+        key = "GROUP_NO" if occ.get("GROUP_NO") is not None else "NOEUD"
+        ctx.error(f"REPERE={repere!r} turns element fields: AFFE names cells, not nodes", key, occ)
+    if repere != "COQUE":
+        # code_aster turns every cell of the field between its own frames: the
+        # cells AFFE names only choose ANGL_REP for REPERE='COQUE' (chrpel)
+        occ.mark_used("TOUT", "GROUP_MA", "MAILLE")
+    return kw.get("CARA_ELEM") or getattr(result, "characteristics", None)
+
+
 def run(ctx, kw):
     if kw.get("CHAM_GD") is not None:
         ctx.unsupported("MODI_REPERE CHAM_GD (fields outside a result)", "CHAM_GD", kw)
     source = kw["RESULTAT"]
-    # every order: the default, and the only value of TOUT_ORDRE
-    kw.mark_used("TOUT_ORDRE", "CRITERE")
+    # every order: the default, and the only value of TOUT_ORDRE; CRITERE and
+    # PRECISION only qualify an INST / FREQ choice (refused, unread, if given)
+    kw.mark_used("TOUT_ORDRE", "CRITERE", "PRECISION")
     result = source if ctx.reuse is source else copy.copy(source)
     if result is not source:
         for attribute in ("fields", "element_fields", "node_fields"):
@@ -171,6 +286,20 @@ def run(ctx, kw):
                 setattr(result, attribute, dict(getattr(source, attribute)))
     numbering = result.numbering
     mesh = numbering.mesh
+    if kw["REPERE"] in _SHELL_REPERES:
+        characteristics = _shell_frames(ctx, kw, result)
+        for occ in kw.factor("MODI_CHAM"):
+            if occ.get("TOUT") is None and occ.get("GROUP_MA") is not None:
+                ctx.unsupported("MODI_CHAM GROUP_MA (AFFE says where)", "GROUP_MA", occ)
+            field = _shell_field(ctx, kw, occ, result, characteristics, mesh)
+            # NOM_CHAM_RESU (EGRU_ELNO): the turned field beside the input one
+            stored = occ.get("NOM_CHAM_RESU")
+            if stored is not None and (stored, occ["NOM_CHAM"]) != ("EGRU_ELNO", "EFGE_ELNO"):
+                ctx.error("NOM_CHAM_RESU is EGRU_ELNO, of an EFGE_ELNO", "NOM_CHAM_RESU", occ)
+            field.name = stored or occ["NOM_CHAM"]
+            result.element_fields[field.name] = field
+            ctx.log(f"MODI_REPERE {occ['NOM_CHAM']} ({occ['TYPE_CHAM']}) to REPERE={kw['REPERE']}")
+        return result
     frames = _frames(ctx, kw, mesh)
     for occ in kw.factor("MODI_CHAM"):
         kind, name = occ["TYPE_CHAM"], occ["NOM_CHAM"]
@@ -180,6 +309,10 @@ def run(ctx, kw):
             ctx.unsupported("MODI_CHAM GROUP_MA (AFFE says where)", "GROUP_MA", occ)
         element = getattr(result, "element_fields", {}).get(name)
         nodal = getattr(result, "node_fields", {}).get(name)
+        if element is not None and element.sub_points > 1:
+            ctx.unsupported(
+                f"MODI_REPERE of {name} on sub-points (multifibre beams)", "NOM_CHAM", occ
+            )
         if kind == "TENS_3D" and element is not None:
             field = copy.copy(element)
             field.values = np.array(element.values, copy=True)

@@ -147,6 +147,10 @@ def element_rows(ctx, occ, result, basis, number: int, name: str) -> list[dict]:
             "NOM_CHAM",
             occ,
         )
+    if modal.sub_points > 1:
+        ctx.unsupported(
+            f"POST_GENE_PHYS of {name} on sub-points (multifibre beams)", "NOM_CHAM", occ
+        )
     mesh = basis.numbering.mesh
     cells = observed_cells(ctx, occ, mesh, modal)
     comps = tuple(as_tuple(occ.get("NOM_CMP"))) or modal.components

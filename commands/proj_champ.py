@@ -41,6 +41,16 @@ def run(ctx, kw):
     mesh_1 = kw["MAILLAGE_1"] if kw.get("MAILLAGE_1") is not None else kw["MODELE_1"].mesh
     model_2 = kw.get("MODELE_2")
     mesh_2 = kw["MAILLAGE_2"] if kw.get("MAILLAGE_2") is not None else model_2.mesh
+    placement, _ = place(ctx, kw, mesh_1, mesh_2, model_2)
+    if kw.get("CHAM_GD") is not None:
+        return _project_field(ctx, kw, placement, mesh_1, mesh_2, model_2)
+    return _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2)
+
+
+def place(ctx, kw, mesh_1, mesh_2, model_2) -> tuple[fp.Placement, np.ndarray]:
+    """Where each target node of mesh 2 lies in the source cells of mesh 1
+    (VIS_A_VIS pairs, or the whole meshes; DISTANCE_MAX), reported in the
+    log; also the target nodes, in the order the pairs name them."""
     pairs = _pairs(ctx, kw, mesh_1, mesh_2, model_2)
     distance_max = kw.get("DISTANCE_MAX")
     placement = fp.Placement({}, [], 0.0)
@@ -51,11 +61,10 @@ def run(ctx, kw):
             placement.unplaced.extend(n for n in part.unplaced if n not in placement.nodes)
             placement.farthest = max(placement.farthest, part.farthest)
     except fp.ProjectionUnsupported as exc:
-        ctx.unsupported(f"PROJ_CHAMP: {exc}", "METHODE", kw)
+        ctx.unsupported(f"{ctx.command}: {exc}", "METHODE" if "METHODE" in kw else None, kw)
     _report(ctx, kw, placement, mesh_2)
-    if kw.get("CHAM_GD") is not None:
-        return _project_field(ctx, kw, placement, mesh_1, mesh_2, model_2)
-    return _project_result(ctx, kw, placement, mesh_1, mesh_2, model_2)
+    targets = list(dict.fromkeys(int(n) for _, nodes, _ in pairs for n in nodes))
+    return placement, np.asarray(targets, dtype=int)
 
 
 # the dimension of the source cells each projection case uses
@@ -360,7 +369,9 @@ def _project_modes(ctx, kw, modes, placement, target, default) -> ModeResult:
     names = _field_names(ctx, kw, ["DEPL"])
     if names != ["DEPL"]:
         ctx.unsupported("PROJ_CHAMP of modes: DEPL only", "NOM_CHAM", kw)
-    picked = _instants(ctx, kw, modes.frequencies, modes.mode_numbers())
+    # NUME_ORDRE counts the stored modes from 1 (NUME_MODE is a parameter)
+    orders = np.arange(1, modes.n_modes + 1)
+    picked = _instants(ctx, kw, modes.frequencies, orders)
     shapes, _ = fp.project_values(
         placement, modes.numbering.index, modes.shapes[:, picked].T, target.dofs, default
     )

@@ -50,7 +50,9 @@ def run(ctx, kw):
         para, resu, (x, y) = "FREQ" if modal else "INST", None, from_generalized(ctx, kw)
         resu = kw.peek("NOM_PARA_RESU") if modal else None
     elif kw.get("RESULTAT") is not None:
-        para, resu, (x, y) = "INST", None, from_physical(ctx, kw)
+        # a physical result's function is named after its component (focrr0),
+        # a generalized one's after its field (rfrgen)
+        para, resu, (x, y) = "INST", kw.peek("NOM_CMP"), from_physical(ctx, kw)
     elif kw.get("CHAM_GD") is not None:
         return constant_from_field(ctx, kw)
     elif kw.get("INTE_SPEC") is not None:
@@ -61,7 +63,7 @@ def run(ctx, kw):
         which = next((k for k in ("CHAM_GD", "BASE_ELAS_FLUI", "NAPPE") if k in kw), "source")
         ctx.unsupported(f"RECU_FONCTION from {which}", which, kw)
     if resu is None:
-        # code_aster names the ordinate after the field (DEPL), not the component
+        # code_aster names a generalized ordinate after the field (DEPL)
         resu = kw.get("PARA_Y") or kw.get("NOM_CHAM") or kw.get("NOM_CMP") or "TOUTRESU"
     return Function(
         x,
@@ -83,10 +85,14 @@ def from_harmonic(ctx, kw) -> ComplexFunction:
     generalized = kw.get("RESU_GENE") is not None
     result = kw["RESU_GENE"] if generalized else kw["RESULTAT"]
     field = kw.get("NOM_CHAM") or "DEPL"  # rfhge2: DEPL when a harm_gene is read without it
-    if field not in result.fields:
-        known = ", ".join(result.fields)
-        ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", kw)
     selection = selection_from_keywords(ctx, kw, result.frequencies, result.order)
+    if not generalized and field not in result.fields and field in computed_fields(result):
+        # a component of an element field CALC_CHAMP computed (complex values)
+        values = selection.apply(element_value_history(ctx, kw, result, field))
+        return _complex_function(kw, selection, values, kw.get("NOM_CMP") or field)
+    if field not in result.fields:
+        known = ", ".join([*result.fields, *computed_fields(result)])
+        ctx.error(f"result has no field {field!r} (it has {known})", "NOM_CHAM", kw)
     states = selection.apply(result.fields[field])
     if generalized and kw.get("NUME_CMP_GENE") is not None:
         mode = int(kw["NUME_CMP_GENE"])
@@ -114,11 +120,18 @@ def from_harmonic(ctx, kw) -> ComplexFunction:
             name = numbering.mesh.node_names[node]
             ctx.error(f"no DOF {component} on node {name}", "NOM_CMP", kw)
         values = states[:, row]
+    # named after the component on a physical result (focrr0), the field on a harm_gene
+    return _complex_function(
+        kw, selection, values, field if generalized else kw.get("NOM_CMP") or field
+    )
+
+
+def _complex_function(kw, selection, values, name: str) -> ComplexFunction:
     return ComplexFunction(
         np.asarray(selection.times, dtype=float),
         np.asarray(values, dtype=complex),
         NOM_PARA=kw.get("NOM_PARA") or "FREQ",
-        NOM_RESU=kw.get("NOM_RESU") or field,
+        NOM_RESU=kw.get("NOM_RESU") or name,
         INTERPOL=kw.get("INTERPOL", ("LIN", "LIN")),
         PROL_GAUCHE=kw.get("PROL_GAUCHE", "EXCLU"),
         PROL_DROITE=kw.get("PROL_DROITE", "EXCLU"),

@@ -115,6 +115,19 @@ def restore_transient(ctx, kw, result, basis):
     else:  # archived states, also chosen by instant (tran75 from code_aster 10 to 17)
         order = sequence_numbers(selection.times, result.times)
     restored = DynaTrans(sub, selection.times, order, out)
+    if sub is numbering:
+        # each field recombined on the whole basis, as code_aster does over all
+        # its equations: the multipliers of a field are those of the modes
+        # recombined (asterlite.post.deck_api.transient_field)
+        added = {"ACCE_ABSOLU"} | {
+            name for keyword in ("MULT_APPUI", "CORR_STAT") if kw.get(keyword) == "OUI"
+            for name in out
+        }  # fmt: skip
+        restored.modal_source = (
+            basis,
+            {name: selection.apply(getattr(result, name[:4].lower())) for name in out
+             if name not in added},
+        )  # fmt: skip
     if element_names:
         for keyword in ("MULT_APPUI", "CORR_STAT"):
             if kw.get(keyword) == "OUI":
@@ -166,7 +179,7 @@ def restore_harmonic(ctx, kw, result, basis) -> DynaHarmo:
         sub = numbering
     else:
         sub = DofNumbering(numbering.mesh, [numbering.dofs[i] for i in rows])
-    return DynaHarmo(
+    restored = DynaHarmo(
         numbering=sub,
         frequencies=selection.times,
         order=np.arange(1, selection.times.size + 1),
@@ -175,6 +188,14 @@ def restore_harmonic(ctx, kw, result, basis) -> DynaHarmo:
         materials=getattr(numbering, "materials", None),
         characteristics=getattr(numbering, "characteristics", None),
     )
+    if sub is numbering:
+        # recombined over all of code_aster's equations: a field's multipliers
+        # are the modes' (asterlite.post.deck_api.harmonic_field)
+        restored.modal_source = (
+            basis,
+            {name: selection.apply(result.fields[name]) for name in names},
+        )
+    return restored
 
 
 def requested_fields(ctx, kw, basis) -> tuple[tuple[str, ...], tuple[str, ...]]:

@@ -3,7 +3,8 @@
 RESU (RESULTAT + NOM_CHAM + node + NOM_CMP at NUME_ORDRE / INST, or PARA of a
 state, or TYPE_TEST over a field), GENE (RESU_GENE + NUME_CMP_GENE, or
 VECT_GENE), CHAM_NO (CHAM_GD + node + NOM_CMP, or TYPE_TEST), CHAM_ELEM
-(a cham_elem at a cell node or Gauss point, or TYPE_TEST). Verdicts:
+(a cham_elem at a cell node or Gauss point, or TYPE_TEST), CARTE (a
+carte's component on the one cell of GROUP_MA). Verdicts:
 ``asterlite.post.checks``.
 """
 
@@ -13,8 +14,10 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementField, NodalField
 from asterlite.concepts.harmonic import DynaHarmo, HarmGene
+from asterlite.concepts.mesh import CellConstantField
 from asterlite.concepts.modes import (
     FieldOnElements,
+    GeneralizedModes,
     GeneralizedVector,
     ModeResult,
     MultElasResult,
@@ -40,6 +43,8 @@ def run(ctx, kw):
         ("GENE", check_gene),
         ("CHAM_NO", check_field),
         ("CHAM_ELEM", check_element_field),
+        ("CARTE", check_carte),
+        ("OBJET", check_object),
     )
     for key, check in checks:
         for i, occ in enumerate(kw.factor(key), start=1):
@@ -120,14 +125,17 @@ def check_result(ctx, occ, where):
     if isinstance(result, DynaHarmo):
         _check_harmonic(ctx, occ, where, result)
         return
-    if isinstance(result, ModeResult):
+    if isinstance(result, GeneralizedModes) and occ.get("PARA") is None:
+        # code_aster tests a mode_gene's vectors through GENE (RESU_GENE)
+        ctx.unsupported("TEST_RESU/RESU of a mode_gene's field (use GENE)", "NOM_CHAM", occ)
+    if isinstance(result, (ModeResult, GeneralizedModes)):
         times = np.arange(1, result.n_modes + 1, dtype=float)
         order = np.arange(1, result.n_modes + 1)
     elif isinstance(result, DynaTrans):
         times, order = result.times, result.order
     else:
         ctx.unsupported(f"TEST_RESU of a {result.aster_type}", "RESULTAT", occ)
-    if isinstance(result, ModeResult) and occ.get("NUME_MODE") is not None:
+    if isinstance(result, (ModeResult, GeneralizedModes)) and occ.get("NUME_MODE") is not None:
         index, state = _mode_index(ctx, occ, result)
     else:
         index, state = _state_index(ctx, occ, times, order)
@@ -261,6 +269,47 @@ def check_gene(ctx, occ, where):
     record_check(ctx, f"{label} cmp {mode}", values[mode - 1], occ)
 
 
+_GENERALIZED_FIELDS = (".DEPL", ".VITE", ".ACCE")
+
+
+def check_object(ctx, occ, where):
+    """OBJET: code_aster's check sum of a stored array (its tstvec without
+    weights: the sum of the finite values, real and imaginary parts alike).
+    The arrays asterlite keeps under code_aster's names: the generalized
+    DEPL/VITE/ACCE of a harm_gene or a tran_gene ('<name> .DEPL')."""
+    text = str(occ["NOM"])
+    name, suffix = text[:-5].strip(), text[-5:]
+    concept = next(
+        (
+            value
+            for value in ctx.session.namespace.values()
+            if getattr(value, "name", None) == name and isinstance(value, (HarmGene, TranGene))
+        ),
+        None,
+    )
+    if concept is None or suffix not in _GENERALIZED_FIELDS:
+        ctx.unsupported(
+            f"OBJET {text.strip()!r}: asterlite keeps only the generalized "
+            f"{'/'.join(_GENERALIZED_FIELDS)} arrays of harm_gene and tran_gene results",
+            "NOM",
+            occ,
+        )
+    field = suffix[1:]
+    if isinstance(concept, HarmGene):
+        if field not in concept.fields:
+            ctx.error(f"the harm_gene {name} holds no {field} field", "NOM", occ)
+        values = np.asarray(concept.fields[field])
+    else:
+        values = np.asarray(getattr(concept, field.lower()))
+    parts = (
+        np.concatenate([values.real.ravel(), values.imag.ravel()])
+        if np.iscomplexobj(values)
+        else values.ravel()
+    )
+    kept = parts[np.isfinite(parts) & (np.abs(parts) < 1e300)]
+    record_check(ctx, f"{where} {name}{suffix} sum", float(kept.sum()), occ)
+
+
 def _gene_state_index(ctx, occ, result) -> tuple[int, str]:
     """_state_index, except that code_aster 15 and older read NUME_ORDRE on a
     tran_gene as the position of the archived instant (asterlite.legacy.v15)."""
@@ -286,6 +335,30 @@ def check_field(ctx, occ, where):
         ctx, occ, field.numbering, np.asarray(field.values), field.name or "?"
     )
     record_check(ctx, f"{where} {what}", value, occ)
+
+
+def check_carte(ctx, occ, where):
+    """CARTE: the value of NOM_CMP a carte holds on the cell of GROUP_MA
+    (a group of exactly one cell, as code_aster requires)."""
+    carte = occ.get("CHAM_GD")
+    if not isinstance(carte, CellConstantField):
+        kind = getattr(carte, "aster_type", type(carte).__name__)
+        ctx.unsupported(f"TEST_RESU/CARTE of a {kind}", "CHAM_GD", occ)
+    mesh, group = carte.mesh, occ.get("GROUP_MA")
+    if group is None:
+        ctx.error("GROUP_MA names the cell to test", "GROUP_MA", occ)
+    if group not in mesh.cell_groups:
+        ctx.error(missing_name("cell group", group, mesh.cell_groups), "GROUP_MA", occ)
+    cells = mesh.cell_groups[group]
+    if len(cells) != 1:
+        ctx.error(
+            f"group {group} has {len(cells)} cells, TEST_RESU/CARTE needs one", "GROUP_MA", occ
+        )
+    component = occ["NOM_CMP"]
+    given = dict(zip(carte.components, carte.values.get(int(cells[0]), ()), strict=False))
+    if component not in given:
+        ctx.error(f"the carte has no {component} on the cell of {group}", "NOM_CMP", occ)
+    record_check(ctx, f"{where} {carte.name or '?'} {group} {component}", given[component], occ)
 
 
 def cell_point_label(occ) -> str:

@@ -10,7 +10,7 @@ import pytest
 
 from asterlite.errors import UnsupportedError
 from tests.test_fem_structures import INERTIA, E, beam_model, line_mesh
-from tests.test_fem_support import CO, FakeSession, run
+from tests.test_fem_support import CO, FakeSession, run, validated_run
 
 LENGTH, N_EL = 2.0, 8
 Q = 300.0 - 450.0j
@@ -45,7 +45,7 @@ def test_complex_line_load_gives_the_static_deflection_at_low_frequency():
         ],
     )
     k, m = session.bound["K"], session.bound["M"]
-    result = run(
+    result = validated_run(
         session,
         "DYNA_VIBRA",
         TYPE_CALCUL="HARM",

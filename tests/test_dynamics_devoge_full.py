@@ -11,8 +11,9 @@ import numpy as np
 from scipy.linalg import expm
 
 from asterlite.dynamics.excitation import tabulate_excitation
-from asterlite.dynamics.integrate import SchemeOptions, integrate
+from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, build_shocks
+from tests.validated import scheme_options
 
 MASS = np.diag([1.0, 2.0])
 STIFFNESS = np.array([[100.0, -20.0], [-20.0, 1800.0]])
@@ -38,7 +39,7 @@ def devoge_error(dt):
     excitation = tabulate_excitation(system.n_modes, [], 0.0, T_END, dt / 2.0)
     result = integrate(
         system, shocks, excitation, "DEVOGE", Q0, V0, 0.0, T_END, dt, np.array([T_END]), 1,
-        SchemeOptions(dt_min=dt, dt_max=dt),
+        scheme_options("DEVOGE", dt_min=dt, dt_max=dt),
     )  # fmt: skip
     q, v = exact_state(result.times)
     return max(

@@ -31,11 +31,11 @@ from scipy.linalg import expm
 
 from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.forces import acceleration, state_acceleration, total_force
-from asterlite.dynamics.integrate import SchemeOptions, integrate
+from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.laws import dis_visc, rk54
 from asterlite.dynamics.laws import kernel as LK
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
-from tests.validated import relation
+from tests.validated import relation, scheme_options
 
 M, KS, X0 = 1.0, 100.0, 0.01  # the mass on its spring, released from X0
 K1, K2, K3, C = 120.0, 10.0, 60.0, 1.7  # sdnd107e's Zener, with a linear dashpot
@@ -63,7 +63,7 @@ def engine_run(tol, t_end=1.0, dt=1.0e-3):
     system, shocks, excitation = model(t_end, dt)
     return integrate(
         system, shocks, excitation, "RUNGE_KUTTA_32", np.array([X0]), np.zeros(1), 0.0, t_end,
-        dt, INSTANTS, 10**8, SchemeOptions(tolerance=tol),
+        dt, INSTANTS, 10**8, scheme_options("RUNGE_KUTTA_32", tolerance=tol),
     )  # fmt: skip
 
 

@@ -14,7 +14,7 @@ from asterlite.dynamics.laws.kernel import V_TIME
 from asterlite.dynamics.laws.tabulated import pack
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
-from tests.validated import relation
+from tests.validated import relation, scheme_options
 
 
 def one_mode(k=100.0):
@@ -39,7 +39,7 @@ def run(system, specs, scheme, t_end=1.0, dt=1.0e-3):
     exc = tabulate_excitation(1, [], 0.0, t_end, dt / 2)
     return integrate(
         system, shocks, exc, scheme, np.array([0.01]), np.zeros(1), 0.0, t_end, dt,
-        np.array([t_end]), 1,
+        np.array([t_end]), 1, scheme_options(scheme),
     )  # fmt: skip
 
 

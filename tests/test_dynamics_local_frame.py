@@ -11,7 +11,8 @@ import pytest
 
 from asterlite.concepts.function import Formula
 from asterlite.dynamics.excitation import tabulate_excitation
-from asterlite.dynamics.integrate import SchemeOptions, integrate, loop_kernel
+from asterlite.dynamics.integrate import integrate, loop_kernel
+from tests.validated import scheme_options
 
 from .test_dynamics_specialised import N_MODES, Table, assert_same_run, small_shock_problem
 
@@ -25,7 +26,11 @@ def run_scheme(scheme, system, shocks, vectors, specialised, fixed=True, t_end=0
     loads = [(vectors[0], formula), (vectors[1], Table(times, np.sin(60.0 * times) ** 2))]
     excitation = tabulate_excitation(N_MODES, loads, 0.0, t_end, dt / 2.0)
     q0 = np.full(N_MODES, 2.0e-4)  # released from a displaced state: impacts at once
-    options = SchemeOptions(dt_min=dt, dt_max=dt) if fixed else SchemeOptions(dt_max=4.0 * dt)
+    options = (
+        scheme_options(scheme, dt_min=dt, dt_max=dt)
+        if fixed
+        else scheme_options(scheme, dt_max=4.0 * dt)
+    )
     return integrate(
         system, shocks, excitation, scheme, q0, np.zeros(N_MODES), 0.0, t_end, dt,
         np.array([0.0123, t_end]), 7, options, specialised=specialised,

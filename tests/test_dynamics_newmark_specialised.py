@@ -11,7 +11,8 @@ import pytest
 
 from asterlite.concepts.function import Formula
 from asterlite.dynamics.excitation import tabulate_excitation
-from asterlite.dynamics.integrate import SchemeOptions, integrate, loop_kernel
+from asterlite.dynamics.integrate import integrate, loop_kernel
+from tests.validated import scheme_options
 
 from .test_dynamics_specialised import N_MODES, Sampled, Table, assert_same_run, small_shock_problem
 
@@ -23,7 +24,7 @@ def run_newmark(system, shocks, vectors, specialised, t_end=0.05, dt=2.0e-5, **k
     loads = [(vectors[0], formula), (vectors[1], second)]
     excitation = tabulate_excitation(N_MODES, loads, 0.0, t_end, dt / 2.0)
     q0 = np.full(N_MODES, 2.0e-4)  # released from a displaced state: impacts at once
-    options = SchemeOptions(force_at_step_start=kw.pop("at_start", False))
+    options = scheme_options("NEWMARK", force_at_step_start=kw.pop("at_start", False))
     return integrate(
         system, shocks, excitation, "NEWMARK", q0, np.zeros(N_MODES), 0.0, t_end, dt,
         np.array([0.0123, t_end]), 7, options, specialised=specialised, **kw,

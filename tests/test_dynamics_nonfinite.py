@@ -168,11 +168,12 @@ def test_the_rotating_loop_stops_likewise(scheme):
     """VITESSE_VARIABLE='OUI' runs its own loop: a load jumping to 1e305 at
     0.1 s stops it at the first step past 0.1 s, naming the load."""
     from asterlite.dynamics.excitation import tabulate_excitation
-    from asterlite.dynamics.integrate import SchemeOptions, integrate
+    from asterlite.dynamics.integrate import integrate
     from asterlite.dynamics.model import LinearSystem, build_shocks
     from asterlite.dynamics.rotation import Rotation
     from asterlite.errors import NumericalError
     from tests.test_dynamics_rotation_energy import Table, rotor
+    from tests.validated import scheme_options
 
     mass, stiffness, damping, gyro, rigy = rotor()
     dt, t_end = 1.0e-3, 0.3
@@ -182,7 +183,7 @@ def test_the_rotating_loop_stops_likewise(scheme):
     system = LinearSystem(mass, k0, c0)
     jump = Table([0.0, 0.1, 0.1001, 1.0], [0.0, 0.0, 1.0e305, 1.0e305])
     excitation = tabulate_excitation(2, [(np.array([1.0, 0.5]), jump)], 0.0, t_end, dt / 2)
-    options = SchemeOptions(dt_min=dt, dt_max=dt)  # fixed steps for RUNGE_KUTTA_32 too
+    options = scheme_options(scheme, dt_min=dt, dt_max=dt)  # fixed steps for RUNGE_KUTTA_32 too
     with pytest.raises(NumericalError) as raised:
         integrate(
             system, build_shocks([], system), excitation, scheme, np.array([1e-3, 0.0]),

@@ -15,6 +15,7 @@ from asterlite.dynamics.physical import diff_centre, newmark
 from asterlite.dynamics.physical.archive import Archive, archived_steps
 from asterlite.dynamics.physical.system import Load, PhysicalSystem
 from asterlite.fem.constraints import eliminate
+from tests.validated import scheme_options
 
 
 def chain(n=3, k=1.0e4, m=2.0):
@@ -72,6 +73,7 @@ def test_phys_newmark_equals_gene_newmark_with_all_modes():
         dt,
         np.array([times[-1]]),
         1,
+        scheme_options("NEWMARK"),
     )
     # code_aster's GENE NEWMARK takes the first step's shock forces at zero,
     # without shocks the two schemes are the same linear recurrence
@@ -183,6 +185,7 @@ def test_mult_appui_support_motion_reaches_the_shock_node():
         1e-3,
         np.array([0.25, 0.5]),
         10**6,
+        scheme_options("DIFF_CENTRE"),
     )
     local_y = run.vint[:, 0, C.V_LOC1 + 1]
     rot = shocks.rots[0]
@@ -192,12 +195,57 @@ def test_mult_appui_support_motion_reaches_the_shock_node():
 
 def test_archive_of_known_size_never_grows_and_gives_views():
     archive = Archive(2, capacity=3)
-    storage = archive.states
+    storage = list(archive.states)
     for k in range(3):
         archive.add(float(k), np.full(2, k), np.full(2, -k), np.zeros(2))
-    assert archive.states is storage  # no reallocation: the capacity was exact
+    assert all(a is b for a, b in zip(archive.states, storage, strict=True))  # no regrowth
     times, q, v, a = archive.arrays()
-    assert np.shares_memory(q, storage) and np.shares_memory(v, storage)
+    assert np.shares_memory(q, storage[0]) and np.shares_memory(v, storage[1])
     np.testing.assert_array_equal(q[:, 0], [0.0, 1.0, 2.0])
     archive.add(3.0, np.ones(2), np.ones(2), np.ones(2))  # beyond it: grows, keeps the states
     np.testing.assert_array_equal(archive.arrays()[1][:, 1], [0.0, 1.0, 2.0, 1.0])
+    velocities = archive.take(1)  # the archive lets go of them
+    np.testing.assert_array_equal(velocities[:, 0], [0.0, -1.0, -2.0, 1.0])
+    assert archive.states[1] is None
+
+
+def test_expansion_by_blocks_equals_the_whole_product():
+    from asterlite.dynamics.physical import system as physical_system
+
+    rng = np.random.default_rng(3)
+    transform = sp.random(7, 4, density=0.6, random_state=rng, format="csr")
+    offset = rng.normal(size=7)
+
+    class Elimination:
+        T, u0 = transform, offset
+
+    model = physical_system.PhysicalSystem.__new__(physical_system.PhysicalSystem)
+    model.elimination = Elimination()
+    reduced = rng.normal(size=(physical_system.EXPAND_ROWS * 2 + 5, 4))
+    np.testing.assert_allclose(model.expand(reduced), reduced @ transform.T.toarray() + offset)
+    np.testing.assert_allclose(model.expand_rate(reduced), reduced @ transform.T.toarray())
+
+
+def test_an_archive_on_disk_gives_the_states_an_archive_in_memory_gives(tmp_path):
+    in_memory, on_disk = Archive(2, capacity=2), Archive(2, capacity=2, disk=tmp_path)
+    for archive in (in_memory, on_disk):
+        for k in range(5):  # beyond the capacity: the memory archive grows
+            archive.add(0.1 * k, np.full(2, k), np.full(2, -k), np.array([k, 2.0 * k]))
+    for expected, stored in zip(in_memory.arrays(), on_disk.arrays(), strict=True):
+        np.testing.assert_array_equal(stored, expected)
+    accelerations = on_disk.take(2)
+    assert isinstance(accelerations, np.memmap) and on_disk.states[2] is None
+    accelerations[0, 0] = 99.0  # copy-on-write: the caller's copy only
+    assert list(tmp_path.iterdir()) == []  # unnamed files: nothing left in the folder
+
+
+def test_archive_goes_to_disk_past_its_share_of_the_memory_limit():
+    from asterlite import watchdog
+    from asterlite.dynamics.physical.archive import ARCHIVE_MEMORY_SHARE, archive_on_disk
+
+    assert not archive_on_disk(10**6, 10**3, 10**3)  # no limit: memory
+    with watchdog.limits(None, 100.0):
+        share = ARCHIVE_MEMORY_SHARE * 100.0 * watchdog.MEGABYTE
+        rows = int(share / (3 * 2 * 1000 * 8))
+        assert not archive_on_disk(rows, 1000, 1000)
+        assert archive_on_disk(rows + 1, 1000, 1000)

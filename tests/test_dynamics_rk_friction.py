@@ -23,8 +23,9 @@ from asterlite.dynamics import contact as C
 from asterlite.dynamics import scheme_runge_kutta as RK
 from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.forces import acceleration, state_acceleration, total_force
-from asterlite.dynamics.integrate import SchemeOptions, integrate
+from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+from tests.validated import scheme_options
 
 # the friction sample's oscillator: 2 kg on 8000 N/m, pressed on a PLAN_Y floor by
 # RIGI_NOR * 0.1 = M G, Coulomb 0.15, stick spring 4e5 N/m; forced at 0.8 W0
@@ -67,7 +68,7 @@ def engine_run(scheme, force, c_t, t_end, dt, tol, alpha=0.0, instants=None):
     system, shocks, excitation = oscillator(force, c_t, t_end, dt / 2.0)
     q0, v0 = np.array([U0]), np.zeros(1)
     instants = np.array([t_end]) if instants is None else instants
-    options = SchemeOptions(tolerance=tol, alpha=alpha)
+    options = scheme_options(scheme, tolerance=tol, alpha=alpha)
     return integrate(
         system, shocks, excitation, scheme, q0, v0, 0.0, t_end, dt, instants, 1, options
     )
@@ -198,7 +199,9 @@ def step_inputs(scheme, dt, q0, v0, force=6.0):
     total_force(0.0, q, v, model[1], vint, model[2], work, f)
     acceleration(f, q, v, model[0], np.zeros(1), a)
     state = (q, v, a, f, vint, np.zeros_like(vint), work)
-    memory, _ = RK.prepare_with(RK.TABLEAUX[scheme], system, dt, SchemeOptions(tolerance=1e-6))
+    memory, _ = RK.prepare_with(
+        RK.TABLEAUX[scheme], system, dt, scheme_options(scheme, tolerance=1e-6)
+    )
     return state, memory, model, shocks
 
 
@@ -257,7 +260,7 @@ def test_error_norm_is_code_aster_s():
     for scheme in ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54"):
         tableau = RK.TABLEAUX[scheme]
         s, n = tableau.stages, 4
-        options = SchemeOptions(tolerance=1.0e-4, alpha=2.0e-3)
+        options = scheme_options(scheme, tolerance=1.0e-4, alpha=2.0e-3)
         system = LinearSystem(np.eye(n), np.eye(n), np.zeros((n, n)))
         memory, _ = RK.prepare_with(tableau, system, 1.0e-3, options)
         rows = memory[0]

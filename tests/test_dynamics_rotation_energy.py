@@ -15,6 +15,7 @@ from asterlite.dynamics.physical.archive import Archive
 from asterlite.dynamics.physical.energy import EnergyBalance
 from asterlite.dynamics.rotation import Rotation
 from tests.test_dynamics_physical import chain, physical_system
+from tests.validated import scheme_options
 
 
 class Table:
@@ -78,7 +79,7 @@ def test_variable_speed_newmark_matches_a_reference_with_updated_matrices():
     q0, v0 = np.array([1e-3, 0.0]), np.zeros(2)
     result = integrate(
         system, build_shocks([], system), excitation, "NEWMARK", q0, v0, 0.0, t_end, dt,
-        np.array([t_end]), 1, rotation=rotation,
+        np.array([t_end]), 1, scheme_options("NEWMARK"), rotation=rotation,
     )  # fmt: skip
     expected = reference_newmark(
         mass, stiffness, damping, gyro, rigy, speed.evaluate, accel.evaluate,
@@ -112,6 +113,7 @@ def test_zero_speed_rotation_is_plain_newmark():
                 dt,
                 np.array([t_end]),
                 1,
+                scheme_options("NEWMARK"),
                 rotation=rot,
             ).depl  # fmt: skip
         )

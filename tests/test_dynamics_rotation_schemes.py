@@ -7,11 +7,12 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from asterlite.dynamics.excitation import tabulate_excitation
-from asterlite.dynamics.integrate import SchemeOptions, integrate
+from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, build_shocks
 from asterlite.dynamics.rotation import Rotation
 from asterlite.dynamics.schemes import TABLE
 from tests.test_dynamics_rotation_energy import Table, rotor
+from tests.validated import scheme_options
 
 # every scheme the loop shared by all runs with VITESSE_VARIABLE
 SCHEMES = [entry.name for entry in TABLE if entry.shared_loops]
@@ -29,7 +30,7 @@ def run(scheme, dt, rotation=None, system=None, t_end=T_END, options=None):
     excitation = tabulate_excitation(2, [(LOAD, 1.0)], 0.0, t_end, dt / 2)
     return integrate(
         system, build_shocks([], system), excitation, scheme, np.array([1e-3, 0.0]), np.zeros(2),
-        0.0, t_end, dt, np.array([t_end]), 1, options or SchemeOptions(), rotation=rotation,
+        0.0, t_end, dt, np.array([t_end]), 1, options or scheme_options(scheme), rotation=rotation,
     )  # fmt: skip
 
 
@@ -81,7 +82,7 @@ def test_ramped_speed_converges_to_the_continuous_equations(scheme):
     errors = []
     for dt in (4.0e-4, 2.0e-4, 1.0e-4):
         fixed = scheme in ADAPTIVE
-        options = SchemeOptions(dt_min=dt, dt_max=dt) if fixed else SchemeOptions()
+        options = scheme_options(scheme, dt_min=dt, dt_max=dt) if fixed else scheme_options(scheme)
         rotation = Rotation(damping, stiffness, gyro, rigy, speed, accel)
         result = run(scheme, dt, rotation=rotation, options=options)
         errors.append(np.linalg.norm(result.depl[-1] - exact))
@@ -100,7 +101,7 @@ def test_adaptive_steps_follow_the_ramped_speed(scheme):
     accel = Table([0.0, T_END], [5000.0, 5000.0])
     exact = reference(speed.evaluate, accel.evaluate, T_END)
     rotation = Rotation(damping, stiffness, gyro, rigy, speed, accel)
-    options = SchemeOptions(tolerance=1e-7, dt_max=5.0e-4)
+    options = scheme_options(scheme, tolerance=1e-7, dt_max=5.0e-4)
     result = run(scheme, 1.0e-4, rotation=rotation, options=options)
     assert np.linalg.norm(result.depl[-1] - exact) < 0.03 * np.linalg.norm(exact)
 

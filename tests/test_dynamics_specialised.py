@@ -13,6 +13,7 @@ from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.formula import formula_program, program_tables, run_program
 from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+from tests.validated import scheme_options
 
 N_MODES = 4
 
@@ -90,7 +91,7 @@ def run(system, shocks, vectors, specialised, t_end=0.2, dt=2.0e-5, pas_arch=7, 
     instants = np.array([0.0123, t_end])
     return integrate(
         system, shocks, excitation, "DIFF_CENTRE", q0, v0, 0.0, t_end, dt, instants, pas_arch,
-        specialised=specialised,
+        scheme_options("DIFF_CENTRE"), specialised=specialised,
     )  # fmt: skip
 
 

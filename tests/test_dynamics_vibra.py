@@ -71,7 +71,7 @@ def obstacle(kind):
 
 
 def run_vibra(m, k, scheme, pas, t_end, etat=None, comportement=(), **extra):
-    schema = kws("DYNA_VIBRA/SCHEMA_TEMPS", SCHEMA=scheme, **extra.pop("schema", {}))
+    schema = occurrence("SCHEMA_TEMPS", {"SCHEMA": scheme, **extra.pop("schema", {})})
     kw = kws(
         TYPE_CALCUL="TRAN",
         BASE_CALCUL="GENE",

@@ -9,9 +9,10 @@ import pytest
 
 from asterlite.dynamics import energy as E
 from asterlite.dynamics.excitation import tabulate_excitation
-from asterlite.dynamics.integrate import SchemeOptions, integrate
+from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from tests.conftest import SAMPLES
+from tests.validated import scheme_options
 
 ALL_SCHEMES = (
     "DIFF_CENTRE",
@@ -36,7 +37,11 @@ def balance(system, scheme, dt, t_end, q0=0.0, v0=1.0, shocks=None, loads=(), fi
     """(archived rows of the balance, run result), archiving every step."""
     shocks = shocks if shocks is not None else build_shocks([], system)
     excitation = tabulate_excitation(system.n_modes, list(loads), 0.0, t_end, dt / 2.0)
-    options = SchemeOptions(dt_min=dt, dt_max=dt) if fixed else SchemeOptions(tolerance=1.0e-7)
+    options = (
+        scheme_options(scheme, dt_min=dt, dt_max=dt)
+        if fixed
+        else scheme_options(scheme, tolerance=1.0e-7)
+    )
     result = integrate(
         system, shocks, excitation, scheme, initial(q0, system), initial(v0, system),
         0.0, t_end, dt, np.array([]), 1, options, energy=True,
@@ -223,10 +228,8 @@ def test_friction_dissipation_follows_the_coulomb_decay(tmp_path):
 
 
 def test_the_run_summary_reports_the_residual(tmp_path):
-    from asterlite.runtime.runner import transient_summaries
-
     session = friction_session(tmp_path)
-    transients, _ = transient_summaries(session.produced)
+    transients, _ = session.summaries.results()
     (run,) = transients
     assert abs(run["energy_residual"]) < 1.0e-4
     assert 0.0 <= run["energy_residual_ratio"] < 1.0e-3
@@ -320,7 +323,7 @@ def test_energy_off_computes_nothing():
     excitation = tabulate_excitation(1, [], 0.0, 0.1, 1.0e-3)
     result = integrate(
         system, build_shocks([], system), excitation, "DIFF_CENTRE", np.zeros(1), np.ones(1),
-        0.0, 0.1, 1.0e-3, np.array([]), 1,
+        0.0, 0.1, 1.0e-3, np.array([]), 1, scheme_options("DIFF_CENTRE"),
     )  # fmt: skip
     assert result.energy is None
 

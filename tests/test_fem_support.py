@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.catalog import load_catalogue, validate
 from asterlite.catalog.keywords import Keywords
 from asterlite.concepts.mesh import Mesh
 from asterlite.runtime.context import CommandContext
@@ -54,6 +55,15 @@ def run(session: FakeSession, command: str, **values):
     module = importlib.import_module(f"asterlite.commands.{command.lower()}")
     ctx = CommandContext(session=session, command=command)
     return module.run(ctx, keywords(command, values))
+
+
+def validated_run(session: FakeSession, command: str, **values):
+    """``run`` through the command's catalogue, as a deck's call: the
+    keywords checked and the catalogue's defaults filled (the commands that
+    restate none, DYNA_VIBRA's wing, need them)."""
+    module = importlib.import_module(f"asterlite.commands.{command.lower()}")
+    ctx = CommandContext(session=session, command=command)
+    return module.run(ctx, validate(load_catalogue(command), values))
 
 
 def chain_mesh(n_nodes: int, length: float = 1.0, dim: int = 3) -> Mesh:

@@ -147,3 +147,48 @@ def test_line_load_on_an_inclined_cantilever():
     shear = G * SECTION["A"] / SECTION["AZ"]
     exact = q * length**4 / (8 * E * SECTION["IY"]) + q * length**2 / (2 * shear)
     assert u[7 * n + 2 - 7] == pytest.approx(exact, rel=1e-9)
+
+
+def _efge_of_tip_loads(modelisation, n, length, tip_loads, restrained_warping=True):
+    """EFGE_ELNO of a cantilever of n cells (CALC_CHAMP on a static state
+    stored as a dyna_trans: the POU_D_TG element adds no inertia anyway)."""
+    from asterlite.concepts.transient import DynaTrans
+    from tests.test_fem_structures import _static, beam_model, line_mesh
+    from tests.test_fem_support import FakeSession, run
+
+    session = FakeSession()
+    names = ("A", "IY", "IZ", "JX", "JG", "AY", "AZ")
+    section = ("GENERALE", names, tuple(SECTION[k] for k in names))
+    model, field, cara = beam_model(session, line_mesh(n, length), modelisation, section)
+    clamp = [{"GROUP_NO": ("A",), "LIAISON": "ENCASTRE"}]
+    if restrained_warping and modelisation == "POU_D_TG":
+        clamp.append({"GROUP_NO": ("A",), "GRX": 0.0})
+    numbering, u, _ = _static(
+        session, model, field, cara, clamp, [{"FORCE_NODALE": {"GROUP_NO": ("B",), **tip_loads}}]
+    )
+    result = DynaTrans(numbering, np.array([1.0]), np.array([1]), {"DEPL": u[None, :]})
+    out = run(session, "CALC_CHAMP", RESULTAT=result, CONTRAINTE=("EFGE_ELNO",))
+    return out.element_fields["EFGE_ELNO"]
+
+
+def test_efge_elno_bending_is_pou_d_t_and_torsion_carries_the_bimoment():
+    """POU_D_TG's EFGE_ELNO (N VY VZ MT MFY MFZ BX): bending and axial forces
+    as POU_D_T's; under an end torque T, MT = T everywhere and the root's
+    bimoment tends to Vlasov's T tanh(k L) / k (k^2 = G J / (E JG)), which
+    vanishes at the free end."""
+    length, force = 2.0, {"FY": 1.0e3, "FZ": -400.0, "FX": 50.0}
+    tg = _efge_of_tip_loads("POU_D_TG", 4, length, force)
+    t = _efge_of_tip_loads("POU_D_T", 4, length, force)
+    assert tg.components == ("N", "VY", "VZ", "MT", "MFY", "MFZ", "BX")
+    np.testing.assert_allclose(tg.values[..., :6], t.values, rtol=1e-9, atol=1e-6)
+    assert tg.values[0, 0, 0, 5] == pytest.approx(1.0e3 * length, rel=1e-9)
+    torque = 1.0e3
+    k = np.sqrt(G * SECTION["JX"] / (E * SECTION["JG"]))
+    vlasov = torque * np.tanh(k * length) / k
+    errors = []
+    for n in (4, 8, 16):
+        field = _efge_of_tip_loads("POU_D_TG", n, length, {"MX": torque})
+        np.testing.assert_allclose(field.values[0, :, :, 3], torque, rtol=1e-9)
+        errors.append(abs(abs(field.values[0, 0, 0, 6]) / vlasov - 1.0))
+        assert abs(field.values[0, -1, 1, 6]) < 1e-3 * vlasov
+    assert errors[0] > errors[1] > errors[2] and errors[2] < 1e-4

@@ -14,13 +14,14 @@ from asterlite import progress
 from asterlite.dynamics import warmup
 from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
-from asterlite.dynamics.integrate import SchemeOptions, integrate
+from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.dynamics.scheme_adapt_ordre2_v11 import default_step_max
 from asterlite.dynamics.step_limits import stability_limit
 from asterlite.errors import NumericalError
 from asterlite.legacy import v11
 from tests.test_lame_fluide import _Call
+from tests.validated import film_controls, scheme_options
 
 # sdnd112a: two 25 kg masses on 98696 N/m springs (10 Hz), 1 mm apart across
 # a fluid film (BI_PLAN_Z between NO2 at x = 0.1 and NO12 at x = 1.0); NO12
@@ -67,7 +68,7 @@ def film_adapt_run(angle, coefficients=(ALPHA, BETA, CHI, DELTA), tolerance=1.0e
     excitation = tabulate_excitation(2, [], 0.0, t_end, PAS / 2)
     result = integrate_film(
         system, shocks, film, excitation, modes.T @ [0.0, x0], [0.0, 0.0], 0.0, t_end, PAS,
-        np.zeros(0), 100, adapt=SchemeOptions(adapt_v11=True, dt_max=dt_max),
+        np.zeros(0), 100, scheme_options("ADAPT_ORDRE2", adapt_v11=True, dt_max=dt_max),
     )  # fmt: skip
     return result, result.depl @ modes.T
 
@@ -101,13 +102,13 @@ def test_without_film_forces_the_loop_is_the_legacy_adapt_loop():
     the dry DIS_CHOC law of the normal stiffness): the run is that of the
     film-less code_aster 10-12 ADAPT_ORDRE2, step for step."""
     modes, system, shocks = two_masses(0.0, damping=5.0, k_n=1.0e8)
-    options = SchemeOptions(adapt_v11=True, dt_max=2.0e-5)
+    options = scheme_options("ADAPT_ORDRE2", adapt_v11=True, dt_max=2.0e-5)
     args = (modes.T @ [0.0, 2.0 * X0], [0.0, 0.0], 0.0, 0.3, PAS, np.zeros(0), 10)
     plain = integrate(system, shocks, tabulate_excitation(2, [], 0.0, 0.3, PAS / 2),
                       "ADAPT_ORDRE2", *args, options)  # fmt: skip
-    film = FluidFilm(np.array([film_row(0.0, 0.0, 0.0, 0.0)]))
+    film = FluidFilm(np.array([film_row(0.0, 0.0, 0.0, 0.0)]), *film_controls())
     filmed = integrate_film(system, shocks, film, tabulate_excitation(2, [], 0.0, 0.3, PAS / 2),
-                            *args, adapt=options)  # fmt: skip
+                            *args, options)  # fmt: skip
     assert np.max(plain.vint[:, 0, 0]) > 100.0  # the masses hit each other
     assert filmed.info["steps"] == plain.info["steps"]
     assert filmed.info["rejected_steps"] == plain.info["rejected_steps"] > 0
@@ -137,6 +138,7 @@ def test_adapt_agrees_with_euler_under_the_decks_iterations():
     euler = integrate_film(
         system, shocks, film, tabulate_excitation(2, [], 0.0, 0.1, PAS / 2),
         modes.T @ [0.0, X0], [0.0, 0.0], 0.0, 0.1, PAS, np.array([0.05, 0.1]), 10**9,
+        scheme_options("DIFF_CENTRE"),
     )  # fmt: skip
     x_euler = euler.depl @ modes.T
     for t in (0.05, 0.1):

@@ -14,6 +14,7 @@ from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
 from asterlite.legacy import v11
+from tests.validated import scheme_options
 
 # sdnd110a's first case: a 1000 kg mass released at 0.1 m/s towards a fixed
 # node across a 6 mm gap filled with a Poiseuille film
@@ -58,7 +59,7 @@ def film_run(tolerance=1.0e-8, relaxation=10.0, max_iterations=2000):
     )
     excitation = tabulate_excitation(1, [], 0.0, T_END, DT / 2)
     return integrate_film(system, shocks, film, excitation, [0.0], [V0], 0.0, T_END, DT,
-                          np.zeros(0), 40)  # fmt: skip
+                          np.zeros(0), 40, scheme_options("DIFF_CENTRE"))  # fmt: skip
 
 
 def test_squeeze_film_follows_the_exact_equation():

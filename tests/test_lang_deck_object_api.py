@@ -99,7 +99,7 @@ def test_a_code_aster_17_study_runs_with_the_object_api(study):
     assert (study / "run" / "omega.txt").is_file()
 
 
-def test_toNumpy_of_a_constrained_assembled_matrix_is_refused_by_name(study):
+def test_lagrange_values_of_a_constrained_field_are_refused_by_name(study):
     (study / "study.comm").write_text(
         "DEBUT()\nMAIL = LIRE_MAILLAGE(FORMAT='ASTER')\n"
         "MODELE = AFFE_MODELE(MAILLAGE=MAIL, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', "
@@ -109,11 +109,17 @@ def test_toNumpy_of_a_constrained_assembled_matrix_is_refused_by_name(study):
         "BLOC = AFFE_CHAR_MECA(MODELE=MODELE, DDL_IMPO=_F(TOUT='OUI', DY=0.0, DZ=0.0))\n"
         "RE = CALC_MATR_ELEM(MODELE=MODELE, CHARGE=BLOC, CARA_ELEM=CARA, OPTION='RIGI_MECA')\n"
         "NU = NUME_DDL(MATR_RIGI=RE)\nK = ASSE_MATRICE(MATR_ELEM=RE, NUME_DDL=NU)\n"
-        "try:\n    k = K.toNumpy()\nexcept:\n    k = None\nFIN()\n"
+        "k = K.toNumpy()\nprint('size', k.shape[0], len(NU.getLagrangeDOFs()))\n"
+        "U = CREA_CHAMP(OPERATION='AFFE', TYPE_CHAM='NOEU_DEPL_R', NUME_DDL=NU, MODELE=MODELE,"
+        " AFFE=_F(TOUT='OUI', NOM_CMP='DX', VALE=1.0), PROL_ZERO='OUI')\n"
+        "try:\n    u = U.getValues()\nexcept:\n    u = None\nFIN()\n"
     )
     result = asterlite.run(study / "study.export", study / "run")
+    log = (study / "run" / "message.log").read_text()
+    # one DIS_T node: DX, DY, DZ and two multipliers for each of DY = 0, DZ = 0
+    assert "size 7 4" in log
     assert result.status == "UNSUPPORTED"  # never caught: code_aster would have given it
-    assert "Lagrange multiplier" in result.message and "study.comm:10" in result.message
+    assert "Lagrange multiplier" in result.message and "study.comm:13" in result.message
 
 
 def test_a_python2_deck_runs_as_code_aster_13_and_is_refused_as_17(study):

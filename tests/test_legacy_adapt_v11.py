@@ -19,6 +19,7 @@ from asterlite.legacy.version import (
 )
 from commands import dyna_vibra
 from tests.test_dynamics_vibra import ctx, kws, one_mode, vector
+from tests.validated import occurrence
 
 OMEGA = 2.0 * math.pi
 V11_ADAPT = (
@@ -106,7 +107,7 @@ def v11_oscillator(schema, pas=1.0e-3, t_end=1.0):
         BASE_CALCUL="GENE",
         MATR_MASS=m,
         MATR_RIGI=kk,
-        SCHEMA_TEMPS=[kws("DYNA_VIBRA/SCHEMA_TEMPS", SCHEMA="ADAPT_ORDRE2", **schema)],
+        SCHEMA_TEMPS=[occurrence("SCHEMA_TEMPS", {"SCHEMA": "ADAPT_ORDRE2", **schema})],
         INCREMENT=[kws("DYNA_VIBRA/INCREMENT", PAS=pas, INST_FIN=t_end)],
         ETAT_INIT=[kws("DYNA_VIBRA/ETAT_INIT", VITE=vector(gnum, OMEGA, "VITE"))],
         ARCHIVAGE=[kws("DYNA_VIBRA/ARCHIVAGE", PAS_ARCH=5)],

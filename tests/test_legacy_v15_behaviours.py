@@ -85,8 +85,9 @@ def test_scalar_buckling_law_checks_its_data():
 
 def test_newmark_of_code_aster_15_takes_the_forces_of_the_steps_start():
     from asterlite.dynamics.excitation import tabulate_excitation
-    from asterlite.dynamics.integrate import SchemeOptions, integrate
+    from asterlite.dynamics.integrate import integrate
     from asterlite.dynamics.model import LinearSystem, build_shocks
+    from tests.validated import scheme_options
 
     class Ramp:  # F(t) = t on the single mode
         def evaluate(self, t):
@@ -99,7 +100,7 @@ def test_newmark_of_code_aster_15_takes_the_forces_of_the_steps_start():
     def run(at_start):
         return integrate(
             system, build_shocks([], system), excitation, "NEWMARK", np.zeros(1), np.zeros(1), 0.0,
-            t_end, dt, np.array([]), 1, SchemeOptions(force_at_step_start=at_start),
+            t_end, dt, np.array([]), 1, scheme_options("NEWMARK", force_at_step_start=at_start),
         )  # fmt: skip
 
     # the trapezoidal rule by hand, with F(t_n) (code_aster 15) or F(t_n+1) (17)

@@ -12,7 +12,7 @@ from asterlite.concepts.function import Formula
 from asterlite.concepts.transient import DynaTrans
 from asterlite.errors import UnsupportedError
 from asterlite.fem.constraints import eliminate
-from asterlite.fem.loads import load_terms
+from asterlite.fem.loads import load_history, load_terms
 from tests.test_fem_structures import INERTIA, E, beam_model, line_mesh
 from tests.test_fem_support import FakeSession, run
 
@@ -67,14 +67,19 @@ def test_linear_line_load_resultants_and_deflection():
         assert u[dy] == pytest.approx(_exact_triangular_deflection(x[node]), rel=1e-9)
 
 
-def test_functions_of_time_are_refused_and_nodal_values_are_evaluated():
+def test_forces_of_time_are_a_history_and_nodal_values_are_evaluated():
     session = FakeSession()
     model, _, _ = beam_model(session, line_mesh(4, 1.0))
     of_time = Formula(VALE="2 * INST", NOM_PARA=("INST",))
+    timed = run(
+        session, "AFFE_CHAR_MECA_F", MODELE=model, FORCE_NODALE={"GROUP_NO": "B", "FX": of_time}
+    )
+    assert timed.nodal_forces == []
+    nodes, components, values = load_history(timed, None)(np.array([0.0, 0.5, 2.0]))
+    assert nodes.tolist() == [4] and components == ["DX"]
+    assert values[:, 0] == pytest.approx([0.0, 1.0, 4.0])
     with pytest.raises(UnsupportedError, match="INST"):
-        run(
-            session, "AFFE_CHAR_MECA_F", MODELE=model, FORCE_NODALE={"GROUP_NO": "B", "FX": of_time}
-        )
+        load_terms(timed)  # where a fixed vector is taken
     of_x = Formula(VALE="3 * X + 1", NOM_PARA=("X",))
     load = run(
         session,

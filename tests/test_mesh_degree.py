@@ -56,21 +56,28 @@ def test_shared_edges_get_one_node_and_groups_keep_theirs():
     assert mesh.node_names[6] == "N7" and mesh.find_node("N13") == 12
 
 
-def test_seg3_to_seg4_on_a_parabola():
-    coords = np.array([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, 0.5, 0.0]])
+def test_seg3_to_seg4_on_an_arc_and_a_chord():
+    """code_aster's SEG3_4: the middle node moves to the first third of the
+    arc through the three nodes, one node is added at the second third."""
+    # S: a quarter of the unit circle; T: a straight segment along x
+    coords = [[1.0, 0, 0], [0, 1.0, 0], [0.5**0.5, 0.5**0.5, 0], [2.0, 0, 0], [3.0, 0, 0]]
     mesh = Mesh(
-        coords=coords,
-        node_names=["A", "B", "C"],
-        cell_names=["S"],
-        cell_types=["SEG3"],
-        cell_nodes=[(0, 1, 2)],
+        coords=np.array([*coords, [2.5, 0, 0]]),
+        node_names=["A", "B", "C", "D", "E", "F"],
+        cell_names=["S", "T"],
+        cell_types=["SEG3", "SEG3"],
+        cell_nodes=[(0, 1, 2), (3, 4, 5)],
     )
-    assert seg3_to_seg4(mesh, [0]) == 2
-    assert mesh.cell_types == ["SEG4"]
-    a, b, t1, t2 = mesh.cell_nodes[0]
-    # x(xi) = 1 + xi, y = 0.5 (1 - xi^2): at xi = -1/3 and +1/3
-    assert mesh.coords[t1] == pytest.approx([2.0 / 3.0, 0.5 * 8.0 / 9.0, 0.0])
-    assert mesh.coords[t2] == pytest.approx([4.0 / 3.0, 0.5 * 8.0 / 9.0, 0.0])
+    assert seg3_to_seg4(mesh, [0, 1]) == 2
+    assert mesh.cell_types == ["SEG4", "SEG4"]
+    a, b, third, two_thirds = mesh.cell_nodes[0]
+    assert third == 2
+    angle = np.pi / 6.0
+    assert mesh.coords[third] == pytest.approx([np.cos(angle), np.sin(angle), 0.0])
+    assert mesh.coords[two_thirds] == pytest.approx([np.cos(2 * angle), np.sin(2 * angle), 0.0])
+    _, _, third, two_thirds = mesh.cell_nodes[1]
+    assert mesh.coords[third] == pytest.approx([2.0 + 1.0 / 3.0, 0.0, 0.0])
+    assert mesh.coords[two_thirds] == pytest.approx([2.0 + 2.0 / 3.0, 0.0, 0.0])
 
 
 def test_crea_maillage_keeps_the_original_mesh():

@@ -114,14 +114,18 @@ def test_nodal_vectors_turned_by_nautical_angles_on_a_group():
     assert kept == 1.0 and result.fields["DEPL"][0, numbering.dof_indices([2], "DX")[0]] == 1.0
 
 
-def test_other_frames_are_refused():
+@pytest.mark.parametrize("repere", ["COQUE", "COQUE_UTIL_CYL"])
+def test_other_frames_are_refused(repere):
+    """A shell frame of a solid's field; the cylindrical frame of shells."""
     _, result = _result()
     with pytest.raises(UnsupportedError, match="COQUE"):
         run(
             FakeSession(),
             "MODI_REPERE",
             RESULTAT=result,
-            REPERE="COQUE",
+            REPERE=repere,
             MODI_CHAM={"TYPE_CHAM": "TENS_3D", "NOM_CHAM": "SIGM_ELNO"},
-            AFFE={"TOUT": "OUI", "ANGL_REP": (0.0, 0.0)},
+            AFFE={"TOUT": "OUI", "ANGL_REP": (0.0, 0.0)}
+            if repere == "COQUE"
+            else {"TOUT": "OUI", "ORIGINE": (0.0, 0.0, 0.0), "AXE_Z": (0.0, 0.0, 1.0)},
         )

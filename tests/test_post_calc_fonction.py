@@ -160,3 +160,30 @@ def test_exclu_accepts_round_off_at_the_ends():
     assert f(1.0 - 1e-9) == 10.0 and f(2.0 + 1e-9) == 20.0
     with pytest.raises(FunctionDomainError):
         f(0.99)
+
+
+def test_corr_acce_filtrage_is_the_clough_penzien_high_pass():
+    # a constant offset plus a sine on an FFT bin: the offset goes (H(0) = 0),
+    # the sine comes out as Re(H(w0) e^{i w0 t})
+    n, dt, fc = 400, 0.01, 0.5
+    t = dt * np.arange(n)
+    f0 = 10.0 / (n * dt)
+    w0, wc = 2 * np.pi * f0, 2 * np.pi * fc
+    gain = -(w0**2) / (wc**2 - w0**2 + 2j * wc * w0)
+    f = line(t, 3.0 + np.sin(w0 * t), NOM_PARA="INST", NOM_RESU="ACCE")
+    g = calc_fonction.run(
+        context(), kw(CORR_ACCE=[{"FONCTION": f, "METHODE": "FILTRAGE", "FREQ_FILTRE": fc}])
+    )
+    expected = np.real(gain * np.exp(1j * w0 * t) / 1j)
+    np.testing.assert_allclose(g.ordinates, expected, atol=1e-12)
+    assert g.NOM_RESU == "ACCE"
+
+
+def test_corr_acce_polynome_removes_the_trends_of_acceleration_and_velocity():
+    t = np.linspace(0.0, 2.0, 201)
+    f = line(t, 0.5 - 2.0 * t, NOM_PARA="INST", NOM_RESU="ACCE")
+    for depl in ("NON", "OUI"):
+        g = calc_fonction.run(
+            context(), kw(CORR_ACCE=[{"FONCTION": f, "METHODE": "POLYNOME", "CORR_DEPL": depl}])
+        )
+        np.testing.assert_allclose(g.ordinates, 0.0, atol=1e-12)

@@ -53,3 +53,20 @@ def test_max_resultant_for_pipe_is_code_aster_rule():
                 assert out.getValue(cell, k, point, 0) == abs(history[best, k])
     with pytest.raises(CommandError):
         max_resultant_for_pipe(result, "SIEF_ELNO")
+
+
+def test_indexes_for_field_name_are_the_orders_storing_it():
+    """``getIndexesForFieldName``: every order for a nodal field, the orders
+    CALC_CHAMP computed for an element field, none for an absent field."""
+    from asterlite.post.deck_api import field_indexes
+
+    result, _ = result_with_field()
+    result.getIndexes = lambda: [10, 20, 30, 40]
+    result.fields = {"DEPL": np.zeros((4, 3)), "VITE": np.zeros((4, 3))}
+    assert field_indexes(result, "EFGE_ELNO") == [10, 20, 40]
+    assert field_indexes(result, " vite ") == [10, 20, 30, 40]
+    assert field_indexes(result, "SIEF_ELNO") == []
+    # a modal basis: its shapes are the DEPL of every mode
+    modes = SimpleNamespace(getIndexes=lambda: [1, 2], element_fields={})
+    assert field_indexes(modes, "DEPL") == [1, 2]
+    assert field_indexes(modes, "VITE") == []

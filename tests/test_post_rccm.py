@@ -46,16 +46,17 @@ def test_equivalent_moment_and_maxima():
     moments = np.array([[3.0, -4.0, 12.0], [-6.0, 0.0, 1.0]])
     out = equivalent_moment(moments)
     assert out[:, 3] == pytest.approx([13.0, np.sqrt(37.0)])
-    assert max_magnitude(out) == pytest.approx([6.0, 4.0, 12.0, 13.0])
+    # the value of largest magnitude keeps its sign (code_aster's MAXI_ABS of values)
+    assert max_magnitude(out) == pytest.approx([-6.0, -4.0, 12.0, 13.0])
 
 
 def test_moment_equivalent_values_component_by_component():
     field = beam_result().element_fields["EFGE_ELNO"]
     out = moment_equivalent_values(field.values, EFGE, [0, 1, 2])
     assert out.shape == (2, 2, 4)
-    assert out[1, 1] == pytest.approx([6.0, 5.0, 12.0, 13.0])
+    assert out[1, 1] == pytest.approx([-6.0, 5.0, 12.0, 13.0])
     only_second = moment_equivalent_values(field.values, EFGE, [1])
-    assert only_second[1, 1] == pytest.approx([6.0, 0.0, 1.0, np.sqrt(37.0)])
+    assert only_second[1, 1] == pytest.approx([-6.0, 0.0, 1.0, np.sqrt(37.0)])
     with pytest.raises(ValueError, match="MT"):
         moment_equivalent_values(field.values[..., :3], ("N", "VY", "VZ"), [0])
 
@@ -79,7 +80,7 @@ def test_post_rccm_table():
     assert table.column("MAILLE") == ["1", "1", "2", "2"]
     assert table.column("NOEUD") == ["1", "2", "2", "3"]
     row = table.filtered("MAILLE", "EQ", "2").filtered("NOEUD", "EQ", "3").rows[0]
-    assert [row[c] for c in ("MT", "MFY", "MFZ", "MEQ")] == pytest.approx([6.0, 5.0, 12.0, 13.0])
+    assert [row[c] for c in ("MT", "MFY", "MFZ", "MEQ")] == pytest.approx([-6.0, 5.0, 12.0, 13.0])
     # cell 1 node 1: MT = MFY = MFZ = 200 at the last order
     assert table.rows[0]["MEQ"] == pytest.approx(200.0 * np.sqrt(3.0))
 

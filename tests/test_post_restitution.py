@@ -52,12 +52,14 @@ def test_recu_fonction_from_physical_generalized_and_shock():
     f = recu_fonction.run(
         context(), kw(RESULTAT=phys, NOM_CHAM="DEPL", GROUP_NO="NO1", NOM_CMP="DY")
     )
-    # NOM_RESU is the field, as code_aster names it (sdnd120a tests INFO_FONCTION
-    # MAX of such a function on the column DEPL)
-    assert f.NOM_PARA == "INST" and f.NOM_RESU == "DEPL"
+    # NOM_RESU is the component on a physical result (code_aster's focrr0:
+    # sdls113a reads INFO_FONCTION MAX of such a function on the column DX) ...
+    assert f.NOM_PARA == "INST" and f.NOM_RESU == "DY"
     assert np.allclose(f.ordinates, result.times**2)
     gene = recu_fonction.run(context(), kw(RESU_GENE=result, NOM_CHAM="VITE", NUME_CMP_GENE=2))
     assert np.allclose(gene.ordinates, 2 * result.times)
+    # ... and the field on a generalized one (rfrgen: sdnd120a's column DEPL)
+    assert gene.NOM_RESU == "VITE"
     node = recu_fonction.run(
         context(),
         kw(

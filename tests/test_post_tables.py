@@ -112,3 +112,19 @@ def test_impr_fonction_formats(tmp_path):
 def test_fortran_format():
     assert fortran_real(0.0155) == " 1.55000E-02"
     assert fortran_real(-np.pi, "E14.7") == "-3.1415927E+00"
+
+
+def test_crea_table_liste_k_is_read_at_type_k_length():
+    # code_aster reads the texts into K8 (default), K16 or K24 strings
+    table = crea_table.run(
+        context(),
+        kw(
+            LISTE=[
+                {"PARA": "A", "LISTE_K": ("VALEUR  ", "TRES_LONG_NOM")},
+                {"PARA": "B", "LISTE_K": ("TRES_LONG_NOM_DE_PARAMETRE",), "TYPE_K": "K16"},
+            ]
+        ),
+    )
+    assert table.types["A"] == "K8" and table.types["B"] == "K16"
+    assert [row["A"] for row in table.rows] == ["VALEUR  ", "TRES_LON"]
+    assert table.rows[0]["B"] == "TRES_LONG_NOM_DE"

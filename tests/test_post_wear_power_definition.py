@@ -12,7 +12,6 @@ import pytest
 
 from asterlite.post import plots
 from asterlite.post.wear import history_wear_power, wear_power
-from asterlite.runtime.runner import transient_summaries
 from tests.conftest import SAMPLES
 
 
@@ -88,7 +87,7 @@ def test_friction_oscillator_wear_power_is_the_hand_integrated_sliding(friction_
     tran = ns["RESUGENE"]
     from_table = puis_usure(ns["USURE"])
     assert from_table == pytest.approx(expected, rel=5e-3)
-    _, shocks = transient_summaries(friction_session.produced)
+    _, shocks = friction_session.summaries.results()
     (summary,) = [s for s in shocks if s["result"] == "RESUGENE"]
     assert summary["wear_power"] == pytest.approx(from_table, rel=1e-12)
     assert plots.wear_work_rates(tran)["FLOOR"] == pytest.approx(from_table, rel=1e-12)

@@ -159,10 +159,11 @@ def test_refusals():
         cell_nodes=[(0, 1, 2, 3)],
     )
     inside = line([0.5])
-    field = NodalField(numbering=numbering(quad), values=np.zeros(8))
-    with pytest.raises(UnsupportedError, match="inside a QUAD4"):
-        run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="AUTO", CHAM_GD=field,
-            MAILLAGE_1=quad, MAILLAGE_2=inside)  # fmt: skip
+    # inside a QUAD4 now: interpolated (tests/test_field_projection_cells.py)
+    field = NodalField(numbering=numbering(quad), values=np.arange(8.0))
+    out = run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="AUTO", CHAM_GD=field,
+              MAILLAGE_1=quad, MAILLAGE_2=inside)  # fmt: skip
+    np.testing.assert_allclose(out.values, [1.0, 2.0])  # halfway between A and B
     field = NodalField(numbering=numbering(source), values=np.zeros(6))
     with pytest.raises(UnsupportedError, match="NUAGE_DEG_0"):
         run(session, "PROJ_CHAMP", PROJECTION="OUI", METHODE="NUAGE_DEG_0", CHAM_GD=field,
@@ -225,9 +226,9 @@ def test_lire_resu_dyna_trans_selection_and_errors(tmp_path):
     with pytest.raises(CommandError, match="no step"):
         run(session, "LIRE_RESU", FORMAT_MED=fmt, INST=0.15, CRITERE="RELATIF",
             PRECISION=1e-6, **common)  # fmt: skip
-    with pytest.raises(UnsupportedError, match="IDEAS"):
+    with pytest.raises(UnsupportedError, match="IDEAS"):  # element datasets (57)
         run(session, "LIRE_RESU", FORMAT="IDEAS", UNITE=19, TYPE_RESU="DYNA_TRANS",
-            MAILLAGE=mesh, TOUT_ORDRE="OUI", NOM_CHAM="DEPL")  # fmt: skip
+            MAILLAGE=mesh, TOUT_ORDRE="OUI", NOM_CHAM="VARI_ELNO")  # fmt: skip
 
 
 def test_sdll113a_passes(tmp_path):
@@ -297,3 +298,96 @@ def test_vis_a_vis_transf_geom_2_cas_figure_and_prol_zero():
             RESULTAT=transient(source), MAILLAGE_1=source, MAILLAGE_2=target,
             NOM_CHAM="DEPL", VIS_A_VIS={"GROUP_MA_1": "LINE", "TOUT_2": "OUI",
                                         "CAS_FIGURE": "2D"})  # fmt: skip
+
+
+def test_lire_resu_ideas_mode_meca_reads_the_modes_parameters(tmp_path):
+    # datasets 55 of two modes (record 7: 2 4 order mode; record 8: FREQ
+    # MASS_GENE damping 0), read back as code_aster's lridea stores them
+    from asterlite.io.ideas_result import field_lines
+
+    mesh = line([0.0, 0.5, 1.0])
+    num = numbering(mesh)
+    shapes = np.array([[0.0, 0.0, 1.0, 0.5, 2.0, 1.0], [0.0, 0.0, 1.0, -2.0, 0.0, 1.0]])
+    lines = []
+    for k, (freq, mass, damping) in enumerate([(3.5, 0.25, 0.01), (7.25, 0.5, 0.02)]):
+        lines += field_lines(num, shapes[k], "DEPL", 2, (2, 4, k + 1, k + 3),
+                             (freq, mass, damping, 0.0), "T", "S")  # fmt: skip
+    path = tmp_path / "modes.unv"
+    path.write_text("\n".join(lines) + "\n")
+    modes = run(
+        FakeSession({21: path}),
+        "LIRE_RESU",
+        FORMAT="IDEAS",
+        UNITE=21,
+        TYPE_RESU="MODE_MECA",
+        MAILLAGE=mesh,
+        NOM_CHAM="DEPL",
+        TOUT_ORDRE="OUI",
+        FORMAT_IDEAS={
+            "NOM_CHAM": "DEPL",
+            "NUME_DATASET": 55,
+            "RECORD_6": (1, 2, 3, 8, 2, 6),
+            "POSI_ORDRE": (7, 3),
+            "POSI_NUME_MODE": (7, 4),
+            "POSI_FREQ": (8, 1),
+            "POSI_MASS_GENE": (8, 2),
+            "POSI_AMOR_GENE": (8, 3),
+            "NOM_CMP": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+        },
+    )
+    assert list(modes.frequencies) == [3.5, 7.25]
+    assert list(modes.parameters["NUME_MODE"]) == [3, 4]
+    assert list(modes.generalized_mass) == [0.25, 0.5]
+    assert list(modes.parameters["AMOR_REDUIT"]) == [0.01, 0.02]
+    rows = [modes.numbering.index[dof] for dof in num.dofs]  # the file's six slots were read
+    np.testing.assert_allclose(modes.shapes[rows].T, shapes, rtol=1e-6)
+
+
+def test_mesh_labels_rename_every_node_and_cell():
+    mesh = line([0.0, 0.5, 1.0])
+    mesh.addNodeLabels(["A", "B", "C"])
+    assert mesh.node_names == ["A", "B", "C"] and mesh.find_node("B") == 1
+    mesh.addCellLabels([f"E{k}" for k in range(mesh.n_cells)])
+    assert mesh.find_cell("E0") == 0
+    from asterlite.errors import DeckRuntimeError
+
+    with pytest.raises(DeckRuntimeError, match="Bad label size"):
+        mesh.addNodeLabels(["A", "B"])
+    with pytest.raises(DeckRuntimeError, match="repeat"):
+        mesh.addNodeLabels(["A", "A", "C"])
+
+
+def test_lire_resu_ideas_reads_fields_without_format_ideas_in_code_asters_default_format(
+    tmp_path,
+):
+    # code_aster's crsdfi defaults: dataset 55, record 6 data type 8 (DEPL) or
+    # 11 (VITE), order at record 7 field 4, instant at record 8 field 1
+    from asterlite.io.ideas_result import field_lines
+
+    mesh = line([0.0, 0.5, 1.0])
+    num = numbering(mesh)
+    depl = np.array([0.0, 0.0, 1.0, 0.5, 2.0, 1.0])
+    lines = []
+    for order, time in ((1, 0.5), (2, 1.0)):
+        lines += field_lines(num, order * depl, "DEPL", 4, (2, 4, 1, order), (time,), "T", "S")
+        lines += field_lines(num, -order * depl, "VITE", 4, (2, 4, 1, order), (time,), "T", "S")
+    path = tmp_path / "resu.unv"
+    path.write_text("\n".join(lines) + "\n")
+    result = run(
+        FakeSession({38: path}),
+        "LIRE_RESU",
+        FORMAT="IDEAS",
+        UNITE=38,
+        TYPE_RESU="DYNA_TRANS",
+        MAILLAGE=mesh,
+        NOM_CHAM=("DEPL", "VITE"),
+        TOUT_ORDRE="OUI",
+    )
+    assert list(result.times) == [0.5, 1.0]
+    rows = [result.numbering.index[dof] for dof in num.dofs]
+    np.testing.assert_allclose(result.fields["DEPL"][1][rows], 2 * depl, rtol=1e-6)
+    np.testing.assert_allclose(result.fields["VITE"][0][rows], -depl, rtol=1e-6)
+    with pytest.raises(UnsupportedError, match="element dataset"):
+        run(FakeSession({38: path}), "LIRE_RESU", FORMAT="IDEAS", UNITE=38,
+            TYPE_RESU="DYNA_TRANS", MAILLAGE=mesh, NOM_CHAM="SIEF_ELNO",
+            TOUT_ORDRE="OUI")  # fmt: skip

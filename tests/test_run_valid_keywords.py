@@ -12,8 +12,8 @@ from pathlib import Path
 
 from asterlite.runtime.runner import run_deck
 
-# DIS_CONTACT is a material of code_aster 17 (discrete contact) that asterlite
-# does not read; DIS_CONTAKT is no keyword at all
+# ECRO_PUIS is a material of code_aster 17 (power-law hardening) that asterlite
+# does not read; ECRO_PUIZ is no keyword at all
 DECK = """DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET'))
 ACIER = DEFI_MATERIAU(ELAS=_F(E=2.0e11, NU=0.3, RHO=7800.0), {extra})
 FIN()
@@ -27,23 +27,23 @@ def _run(tmp_path: Path, extra: str):
 
 
 def test_a_keyword_code_aster_has_is_unsupported(tmp_path):
-    report = _run(tmp_path, "DIS_CONTACT=_F(RIGI_NOR=1.0e6)")
+    report = _run(tmp_path, "ECRO_PUIS=_F(SY=2.0e8, A_PUIS=0.5, N_PUIS=3.0)")
     assert report.status == "UNSUPPORTED", report.message
     assert "material.comm:2:" in report.message
-    assert "DEFI_MATERIAU/DIS_CONTACT" in report.message
+    assert "DEFI_MATERIAU/ECRO_PUIS" in report.message
     assert "valid code_aster keyword that asterlite does not implement" in report.message
 
 
 def test_a_keyword_code_aster_lacks_stays_invalid(tmp_path):
-    report = _run(tmp_path, "DIS_CONTAKT=_F(RIGI_NOR=1.0e6)")
+    report = _run(tmp_path, "ECRO_PUIZ=_F(SY=2.0e8, A_PUIS=0.5, N_PUIS=3.0)")
     assert report.status == "ERROR", report.message
-    assert "invalid keywords" in report.message and "DIS_CONTAKT" in report.message
+    assert "invalid keywords" in report.message and "ECRO_PUIZ" in report.message
 
 
 def test_a_value_code_aster_refuses_stays_invalid(tmp_path):
     """The language check must accept the whole call: a bad value beside the
     missing keyword keeps the call invalid."""
-    report = _run(tmp_path, "DIS_CONTACT=_F(RIGI_NOR='stiff')")
+    report = _run(tmp_path, "ECRO_PUIS=_F(SY='stiff', A_PUIS=0.5, N_PUIS=3.0)")
     assert report.status == "ERROR", report.message
 
 

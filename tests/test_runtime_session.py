@@ -123,3 +123,15 @@ def test_impr_fonction_draws_an_image_with_an_image_pilote(tmp_path):
     out = tmp_path / "out"
     assert run_deck(deck(tmp_path, text), out).status == "PASS"
     assert (out / "fort.29").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_detruire_nom_unbinds_the_concept(tmp_path):
+    # code_aster 13+ spells DETRUIRE(NOM=...); the name is gone afterwards
+    text = (
+        "DEBUT()\nF = DEFI_CONSTANTE(VALE=1.0)\nG = F\nDETRUIRE(NOM=(F,))\n"
+        "try:\n    x = G\nexcept NameError:\n    x = 'destroyed'\nprint('after', x)\nFIN()\n"
+    )
+    out = tmp_path / "out"
+    report = run_deck(deck(tmp_path, text), out)
+    assert report.status in ("DONE", "PASS"), report.message
+    assert "after destroyed" in (out / "message.log").read_text()

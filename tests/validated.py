@@ -95,3 +95,21 @@ def as_concept(value):
         PROL_GAUCHE=value.PROL_GAUCHE,
         PROL_DROITE=value.PROL_DROITE,
     )
+
+
+def scheme_options(scheme: str, **fields):
+    """The engine's options of ``scheme`` as a call with no SCHEMA_TEMPS
+    parameter gets them from the catalogue, then ``fields`` (SchemeOptions'
+    names) set as a test needs them."""
+    from dataclasses import replace
+
+    from asterlite.commands.dyna_vibra_problem import catalogue_options
+
+    return replace(catalogue_options(scheme), **fields)
+
+
+def film_controls() -> tuple[int, float, float]:
+    """The fluid film's iteration controls of an empty PARA_LAME_FLUI:
+    at most, tolerance, relaxation."""
+    controls = occurrence("PARA_LAME_FLUI")
+    return controls["NMAX_ITER"], controls["RESI_RELA"], controls["LAMBDA"]

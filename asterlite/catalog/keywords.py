@@ -37,6 +37,9 @@ class Keywords(dict):
         self.given: frozenset[str] = frozenset()  # keywords written in the deck
         self.read: set[str] = set()  # keywords the command has looked at
         self.no_effect: frozenset[str] = frozenset()  # catalogue: changes no result
+        # factor keywords of the open blocks the call left out: name -> (its
+        # catalogue entry, the level's values), for validator.default_occurrence
+        self.absent_factors: dict[str, tuple] = {}
 
     # --- reads are recorded so that an ignored keyword can be refused -------------------
     def __getitem__(self, name):
@@ -80,6 +83,7 @@ class Keywords(dict):
         twin.locations = dict(self.locations)
         twin.given = self.given
         twin.no_effect = self.no_effect
+        twin.absent_factors = self.absent_factors
         twin.read = self.read  # shared on purpose
         return twin
 

@@ -242,11 +242,13 @@ def _check_mandatory(state: _LevelState) -> None:
 def _fill(state: _LevelState) -> None:
     """Store the values in catalogue order, validating factor occurrences."""
     result = state.result
+    parent = ChainMap(state.values, state.context)
     for name, entry in state.entries.items():
         if name not in state.values:
+            if isinstance(entry, FACT):
+                result.absent_factors[name] = (entry, parent)
             continue
         if isinstance(entry, FACT):
-            parent = ChainMap(state.values, state.context)
             result[name] = validate_factor(entry, state.values[name], result, name, parent)
         else:
             result[name] = state.values[name]
@@ -285,6 +287,15 @@ def validate_factor(
         child.locations.update(getattr(occurrence, "keyword_locations", {}))
         validated.append(_validate_level(fact, occurrence, child, context))
     return validated
+
+
+def default_occurrence(keywords: Keywords, name: str) -> list[Keywords]:
+    """The one occurrence an empty ``_F()`` of the factor keyword ``name``
+    would give (its defaults filled), for a factor keyword the call left out
+    whose defaults still apply. ``name`` must be a keyword of the call's
+    open blocks that the call did not give."""
+    fact, parent = keywords.absent_factors[name]
+    return validate_factor(fact, [{}], keywords, name, parent)
 
 
 # --- simple keywords ---------------------------------------------------------------------

@@ -8,15 +8,16 @@ attributes documented here; add fields, do not rename them.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
 from asterlite.concepts.base import Concept
 from asterlite.concepts.mesh import Mesh
-from asterlite.concepts.numpy_api import assembled_to_numpy
-from asterlite.errors import UnsupportedError
+from asterlite.concepts.numpy_api import assembled_to_numpy, assembled_triplets
+from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.fem.dofs import MODELISATION_COMPONENTS, sort_components
+from asterlite.fem.lagrange_layout import dualised_relations, lagrange_layout
 
 #: modelisations of the (x, y) plane besides the ``2D_`` discrete elements and bars
 _PLANE_MODELISATIONS = ("D_PLAN", "C_PLAN", "AXIS", "D_PLAN_ABSO")
@@ -95,6 +96,12 @@ class ElementCharacteristics(Concept):
     sections: dict[int, dict[str, Any]] = field(default_factory=dict)
     # plate characteristics per cell (COQUE: EPAIS, COEF_RIGI_DRZ, INER_ROTA 1/0)
     shells: dict[int, dict[str, float]] = field(default_factory=dict)
+    # multifibre beams (MULTIFIBRE): the fibre groups of each cell, from geom_fibre
+    fibre_groups: dict[int, tuple[str, ...]] = field(default_factory=dict)
+    geom_fibre: Any = None  # asterlite.concepts.fibres.FibreGeometry
+    # pipe cells' geometry and node frames (asterlite.fem.pipe_elements.PipeCell),
+    # from their lines and GENE_TUYAU
+    pipe_frames: dict[int, Any] = field(default_factory=dict)
 
 
 @dataclass(eq=False)
@@ -117,6 +124,10 @@ class LinearRelation:
     # AFFE_CHAR_MECA_F of INST: the right-hand side in time (``rhs`` is its
     # value at INST=0, code_aster's instant for a computation that gives none)
     rhs_in_time: ValueInTime | None = None
+    # AFFE_CHAR_CINE_F / AFFE_CHAR_MECA_F of FREQ: the right-hand side at each
+    # frequency of a harmonic response (``rhs`` is then 0: no other
+    # computation evaluates it)
+    rhs_in_frequency: ValueInFrequency | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -127,6 +138,8 @@ class ValueInTime:
 
     function: Any
     point: tuple[float, float, float]
+    #: the names the function's varying parameter may have
+    parameters: ClassVar[tuple[str, ...]] = ("INST", "TOUTPARA")
 
     @property
     def key(self) -> tuple:
@@ -137,11 +150,17 @@ class ValueInTime:
     def evaluate(self, times) -> np.ndarray:
         times = np.atleast_1d(np.asarray(times, dtype=float))
         at = dict(zip(("X", "Y", "Z"), self.point, strict=True))
-        args = [
-            times if p in ("INST", "TOUTPARA") else at.get(p, 0.0) for p in self.function.nom_para
-        ]
+        args = [times if p in self.parameters else at.get(p, 0.0) for p in self.function.nom_para]
         values = np.real(np.asarray(self.function.evaluate_many(*args), dtype=complex))
         return np.broadcast_to(values, times.shape).astype(float)
+
+
+@dataclass(frozen=True, eq=False)
+class ValueInFrequency(ValueInTime):
+    """A load function of FREQ (and X, Y, Z, fixed at ``point``):
+    ``evaluate(frequencies)``, real as code_aster's kinematic values."""
+
+    parameters: ClassVar[tuple[str, ...]] = ("FREQ", "TOUTPARA")
 
 
 @dataclass(eq=False)
@@ -154,6 +173,16 @@ class MechanicalLoad(Concept):
     relations: list[LinearRelation] = field(default_factory=list)
     nodal_forces: list[tuple[int, str, float]] = field(default_factory=list)
     extra: dict[str, Any] = field(default_factory=dict)  # other load kinds, keyed by keyword
+
+
+@dataclass(eq=False)
+class KinematicLoad(MechanicalLoad):
+    """``AFFE_CHAR_CINE``/``_F`` result: imposed values of DOFs (relations
+    with one term). code_aster eliminates these DOFs from the assembled
+    system instead of dualising them; asterlite applies them through the same
+    elimination as DDL_IMPO, which gives the same solution."""
+
+    aster_types = ("char_cine_meca",)
 
 
 @dataclass(eq=False)
@@ -204,7 +233,16 @@ class DofNumbering(Concept):
 
     aster_types = ("nume_ddl_sdaster",)
     deck_methods = frozenset(
-        {"getName", "getPhysicalDOFs", "getNumberOfDOFs", "getLagrangeDOFs", "getMesh"}
+        {
+            "getName",
+            "getPhysicalDOFs",
+            "getNumberOfDOFs",
+            "getLagrangeDOFs",
+            "getMesh",
+            "getNodeAndComponentFromDOF",
+            "getComponentFromDOF",
+            "getNodeFromDOF",
+        }
     )
 
     mesh: Mesh
@@ -218,31 +256,43 @@ class DofNumbering(Concept):
 
     def __post_init__(self) -> None:
         self.index = {dof: i for i, dof in enumerate(self.dofs)}
+        # the kinematic loads (AFFE_CHAR_CINE) whose values are in ``relations``
+        self.kinematic_loads: tuple = ()
 
     @property
     def n_dofs(self) -> int:
         return len(self.dofs)
 
-    # deck API: code_aster's numbering mixes physical DOFs and Lagrange
-    # multipliers; here every DOF is physical, so all indices are returned
+    # deck API: code_aster's numbering of these DOFs, with two Lagrange
+    # multipliers per dualised constraint (asterlite.fem.lagrange_layout)
     def getPhysicalDOFs(self, local=False) -> list[int]:  # noqa: N802
-        return list(range(self.n_dofs))
+        return lagrange_layout(self).physical.tolist()
 
     def getNumberOfDOFs(self, local=False) -> int:  # noqa: N802
-        return self.n_dofs
+        return lagrange_layout(self).size
 
     def getLagrangeDOFs(self, local=False) -> list[int]:  # noqa: N802
-        """None here; with constraints, code_aster's numbering has some and
-        asterlite's has not: refused by name rather than an empty list."""
-        if self.relations:
-            from asterlite.errors import UnsupportedError
+        return lagrange_layout(self).lagrange.tolist()
 
+    def getNodeAndComponentFromDOF(self, dof: int, local=False) -> tuple[int, str]:  # noqa: N802
+        """(0-based node, component) of a DOF of code_aster's numbering: the
+        constrained node and 'LAGR:<component>' for a DDL_IMPO multiplier."""
+        layout = lagrange_layout(self)
+        if not 0 <= int(dof) < layout.size:
+            raise DeckRuntimeError(f"DOF {dof} is outside the numbering (0..{layout.size - 1})")
+        node, component = layout.labels[int(dof)]
+        if not component:
             raise UnsupportedError(
-                f"{self.name or 'numbering'}.getLagrangeDOFs(): code_aster numbers Lagrange "
-                f"multipliers for the {len(self.relations)} constraints of this numbering, "
-                "which asterlite keeps as relations"
+                f"DOF {dof} is a multiplier of a relation of several terms, which has no "
+                "single node and component here"
             )
-        return []
+        return int(node), component
+
+    def getComponentFromDOF(self, dof: int, local=False) -> str:  # noqa: N802
+        return self.getNodeAndComponentFromDOF(dof)[1]
+
+    def getNodeFromDOF(self, dof: int, local=False) -> int:  # noqa: N802
+        return self.getNodeAndComponentFromDOF(dof)[0]
 
     def getMesh(self) -> Mesh:  # noqa: N802
         return self.mesh
@@ -279,14 +329,21 @@ class DofNumbering(Concept):
     def dof_components(self) -> list[str]:
         return [c for _, c in self.dofs]
 
-    def constraint_matrix(self, rhs_in_time: bool = False):
+    def constraint_matrix(self, rhs_in_time: bool = False, rhs_in_frequency: bool = False):
         """(B, b): the relations as a sparse (n_relations, n_dofs) matrix and rhs.
 
         A right-hand side given in time (AFFE_CHAR_MECA_F DDL_IMPO of INST)
         is refused unless the caller evaluates it in time itself or does not
-        use b (``rhs_in_time=True``)."""
+        use b (``rhs_in_time=True``); one given in frequency likewise
+        (``rhs_in_frequency=True``)."""
         from asterlite.fem.constraints import relation_matrix
 
+        if not rhs_in_frequency and any(r.rhs_in_frequency is not None for r in self.relations):
+            raise UnsupportedError(
+                "an imposed value given as a function of FREQ (AFFE_CHAR_CINE_F, "
+                "AFFE_CHAR_MECA_F DDL_IMPO): only DYNA_VIBRA TYPE_CALCUL='HARM' evaluates it; "
+                f"the numbering {self.name or ''} holds such a relation"
+            )
         if not rhs_in_time and any(r.rhs_in_time is not None for r in self.relations):
             raise UnsupportedError(
                 "AFFE_CHAR_MECA_F DDL_IMPO of INST (an imposed value varying in time): only "
@@ -295,6 +352,32 @@ class DofNumbering(Concept):
             )
 
         return relation_matrix(self.relations, self.index, self.n_dofs)
+
+    def with_kinematic(self, loads) -> DofNumbering:
+        """This numbering with the imposed values of kinematic loads
+        (ASSE_MATRICE CHAR_CINE) added to its relations; the same loads give
+        the same numbering object, so the matrices assembled with them share it."""
+        fresh = [load for load in loads if not any(load is r for r in self.kinematic_loads)]
+        if not fresh:
+            return self
+        key = tuple(id(load) for load in fresh)
+        cache = self.__dict__.setdefault("_with_kinematic", {})
+        if key not in cache:
+            relations = list(self.relations)
+            for load in fresh:
+                relations.extend(load.relations)
+            derived = DofNumbering(
+                mesh=self.mesh,
+                dofs=self.dofs,
+                relations=relations,
+                model=self.model,
+                characteristics=self.characteristics,
+                materials=self.materials,
+            )
+            derived.name = self.name
+            derived.kinematic_loads = (*self.kinematic_loads, *fresh)
+            cache[key] = derived
+        return cache[key]
 
     def label(self, i: int) -> str:
         node, comp = self.dofs[i]
@@ -306,7 +389,9 @@ class AssembledMatrix(Concept):
     """``ASSE_MATRICE`` result on the physical DOFs (scipy sparse CSR)."""
 
     aster_types = ("matr_asse_depl_r", "matr_asse")
-    deck_methods = frozenset({"getName", "toNumpy", "getDOFNumbering"})
+    deck_methods = frozenset(
+        {"getName", "toNumpy", "getDOFNumbering", "EXTR_MATR", "getValuesWithDescription"}
+    )
 
     numbering: DofNumbering
     matrix: Any  # scipy.sparse.csr_matrix (n_dofs, n_dofs)
@@ -318,10 +403,22 @@ class AssembledMatrix(Concept):
     materials: Any = None
 
     def toNumpy(self) -> np.ndarray:  # noqa: N802 - code_aster's name
-        """The values as a dense array (refused when code_aster's would hold
-        Lagrange multipliers: see asterlite.concepts.numpy_api)."""
+        """The values as a dense array, as code_aster's: on its numbering with
+        Lagrange multipliers, kinematically imposed DOFs eliminated
+        (asterlite.concepts.numpy_api)."""
 
         return assembled_to_numpy(self)
+
+    def getValuesWithDescription(self, epsilon=None):  # noqa: N802
+        """(values, rows, columns, size) of the stored terms (numpy_api)."""
+
+        return assembled_triplets(self, epsilon)
+
+    def EXTR_MATR(self, sparse=False, epsilon=None):  # noqa: N802
+        """code_aster's older name: toNumpy(), or getValuesWithDescription()
+        with ``sparse=True``."""
+
+        return assembled_triplets(self, epsilon) if sparse else assembled_to_numpy(self)
 
     def getDOFNumbering(self) -> DofNumbering:  # noqa: N802
         return self.numbering
@@ -340,9 +437,23 @@ class NodalField(Concept):
     """A field on nodes (``cham_no_sdaster``): one value per DOF of a numbering."""
 
     aster_types = ("cham_no_sdaster",)
+    deck_methods = frozenset({"getName", "getValues"})
 
     numbering: DofNumbering
     values: np.ndarray
+
+    def getValues(self) -> list:  # noqa: N802 - code_aster's name
+        """One value per DOF (real or complex). Refused when code_aster's
+        numbering would also hold Lagrange multipliers (dualised constraints),
+        whose values asterlite does not compute."""
+        dualised = len(dualised_relations(self.numbering))
+        if dualised:
+            raise UnsupportedError(
+                f"{self.name or 'field'}.getValues(): code_aster's field holds Lagrange "
+                f"multiplier values for the {dualised} constraints of its numbering, which "
+                "asterlite keeps as relations"
+            )
+        return np.asarray(self.values).tolist()
 
 
 @dataclass(eq=False)
@@ -351,8 +462,9 @@ class Material(Concept):
 
     ``behaviours["ELAS"]`` maps code_aster names (E, NU, RHO, AMOR_ALPHA,
     AMOR_BETA, AMOR_HYST, ALPHA...) to floats; ELAS_FO values are stored
-    there too once evaluated (constant functions). ``get(name, default)``
-    reads an elastic parameter.
+    there too once evaluated (constant functions); ``behaviours["ELAS_VISCO"]``
+    holds a viscoelastic material's complex G and NU and its RHO.
+    ``get(name, default)`` reads an elastic parameter.
     """
 
     aster_types = ("mater_sdaster",)
@@ -360,7 +472,16 @@ class Material(Concept):
     behaviours: dict[str, dict[str, Any]] = field(default_factory=dict)
 
     def get(self, name: str, default: float | None = None) -> float | None:
-        return self.behaviours.get("ELAS", {}).get(name, default)
+        elastic = self.behaviours.get("ELAS")
+        if elastic is None and name == "RHO":
+            # a viscoelastic material's density is its ELAS_VISCO's
+            elastic = self.behaviours.get("ELAS_VISCO")
+        return (elastic or {}).get(name, default)
+
+    @property
+    def viscoelastic(self) -> dict[str, complex] | None:
+        """ELAS_VISCO's complex G and NU (and RHO), None for other materials."""
+        return self.behaviours.get("ELAS_VISCO")
 
     @property
     def young(self) -> float:
@@ -383,6 +504,10 @@ class MaterialField(Concept):
 
     mesh: Mesh
     cell_material: dict[int, Material] = field(default_factory=dict)
+    # every material AFFE gave a cell (the fibre groups of multifibre beams take theirs there)
+    cell_materials: dict[int, tuple[Material, ...]] = field(default_factory=dict)
+    # AFFE_COMPOR: the multifibre behaviour of a cell (asterlite.concepts.fibres)
+    cell_behaviour: dict[int, Any] = field(default_factory=dict)
 
     def material_of(self, cell: int) -> Material | None:
         return self.cell_material.get(int(cell))
@@ -413,13 +538,17 @@ class ElementField:
     ``values`` is (n_orders, n_cells, n_points, n_components) for the cells
     ``cells`` (mesh cell indices), ``components`` their names (``N``,
     ``VY``... for EFGE_ELNO); points are the cell's nodes for ELNO (in
-    connectivity order) or its Gauss points for ELGA.
+    connectivity order) or its Gauss points for ELGA. A field on sub-points
+    (the fibres of multifibre beams) has ``sub_points`` > 1: point index
+    ``p * sub_points + s`` for Gauss point p and sub-point s (NaN past a
+    cell's own sub-points).
     """
 
     name: str
     cells: np.ndarray
     components: tuple[str, ...]
     values: np.ndarray
+    sub_points: int = 1
 
     def at(self, cell: int, point: int, component: str) -> np.ndarray:
         """Values along the orders of one cell, point (0-based) and component."""
@@ -430,13 +559,24 @@ class ElementField:
 @dataclass(eq=False)
 class NodalComponentField:
     """A nodal field with named components (``*_NOEU`` such as SIPO_NOEU):
-    ``values`` is (n_orders, n_nodes_listed, n_components) on ``nodes``."""
+    ``values`` is (n_orders, n_nodes_listed, n_components) on ``nodes``.
+    ``defined`` (n_nodes_listed, n_components) marks the components each node
+    holds when they differ from node to node (OBSERVATION's FILTRE); None
+    when every listed node holds every component."""
 
     name: str
     nodes: np.ndarray
     components: tuple[str, ...]
     values: np.ndarray
+    defined: np.ndarray | None = None
 
     def at(self, node: int, component: str) -> np.ndarray:
         row = int(np.flatnonzero(self.nodes == node)[0])
         return self.values[:, row, self.components.index(component)]
+
+    def holds(self, node: int, component: str) -> bool:
+        """Whether the listed ``node`` holds ``component``."""
+        if self.defined is None:
+            return True
+        row = int(np.flatnonzero(self.nodes == node)[0])
+        return bool(self.defined[row, self.components.index(component)])

@@ -15,6 +15,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.base import Concept
+from asterlite.post.deck_api import field_indexes, harmonic_field
 
 HARMONIC_FIELDS = ("DEPL", "VITE", "ACCE")
 
@@ -67,7 +68,9 @@ class DynaHarmo(Concept):
     """
 
     aster_types = ("dyna_harmo", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getIndexes", "getFrequencies"})
+    deck_methods = frozenset(
+        {"getName", "getField", "getIndexes", "getIndexesForFieldName", "getFrequencies"}
+    )
 
     numbering: DofNumbering
     frequencies: np.ndarray
@@ -81,6 +84,15 @@ class DynaHarmo(Concept):
     # the MATR_MASS of the computation (code_aster's REF_MASS_PREM): the
     # inertia M a of CALC_CHAMP REAC_NODA; None when unknown
     mass_matrix: Any = None
+    # (rows, F - (K + iωC - ω²M) u on those rows (n_freq, n_rows)): the reactions
+    # of the dualised constraints, whose multipliers code_aster's fields hold,
+    # and the stiffness's Lagrange coefficient (asterlite.fem.lagrange_layout);
+    # None when unknown (a result read or built otherwise)
+    reactions: tuple | None = None
+    lagrange_beta: float = 1.0
+    # (modal basis, {field: generalized coordinates (n_freq, n_modes)}) of a
+    # recombined harm_gene (REST_GENE_PHYS): its multipliers are the modes'
+    modal_source: tuple | None = None
 
     @property
     def n_freq(self) -> int:
@@ -91,3 +103,9 @@ class DynaHarmo(Concept):
 
     def getFrequencies(self) -> list[float]:  # noqa: N802
         return [float(f) for f in self.frequencies]
+
+    def getIndexesForFieldName(self, name) -> list[int]:  # noqa: N802
+        return field_indexes(self, name)
+
+    def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802
+        return harmonic_field(self, name, value, para)

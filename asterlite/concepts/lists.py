@@ -54,3 +54,22 @@ class ListInt(Concept):
 
     def getValues(self):  # noqa: N802
         return self.values.tolist()
+
+
+@dataclass(eq=False)
+class TimeStepping(Concept):
+    """The instants of a nonlinear computation and its failure policy
+    (``list_inst``, DEFI_LIST_INST): each failure event with its action and
+    step subdivision, as given."""
+
+    aster_types = ("list_inst",)
+    deck_methods = frozenset({"getName", "getValues"})
+
+    values: np.ndarray
+    failures: list
+
+    def __post_init__(self) -> None:
+        self.values = np.asarray(self.values, dtype=float).ravel()
+
+    def getValues(self):  # noqa: N802
+        return self.values.tolist()

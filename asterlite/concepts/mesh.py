@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from asterlite.concepts.base import Concept
+from asterlite.errors import DeckRuntimeError
 
 #: Number of nodes of each code_aster cell type asterlite knows.
 CELL_NODE_COUNTS = {
@@ -41,6 +42,17 @@ def _positional(name: str, prefix: str, count: int) -> int | None:
     return None
 
 
+def _lookup(name: str, prefix: str, by_name: dict, count: int, names_kept: bool) -> int | None:
+    if not names_kept:
+        index = _positional(name, prefix, count)
+        if index is not None:
+            return index
+    index = by_name.get(name)
+    if index is None and names_kept:
+        index = _positional(name, prefix, count)
+    return index
+
+
 @dataclass(eq=False)
 class Mesh(Concept):
     """An unstructured mesh as code_aster sees it.
@@ -64,6 +76,8 @@ class Mesh(Concept):
             "hasGroupOfCells",
             "getGroupsOfNodes",
             "getGroupsOfCells",
+            "addNodeLabels",
+            "addCellLabels",
         }
     )
 
@@ -76,6 +90,11 @@ class Mesh(Concept):
     cell_groups: dict[str, np.ndarray] = field(default_factory=dict)
     dim: int = 3
     title: str = ""
+    # MODI_MAILLAGE ABSC_CURV's carte: cell -> abscissa of its nodes (ABSC1...)
+    curvilinear_abscissa: dict[int, tuple[float, ...]] | None = None
+    # False where code_aster keeps no names for the mesh (a file read by
+    # code_aster 16 and later): there ``N<i>``/``M<i>`` are positions first
+    names_kept: bool = True
 
     def __post_init__(self) -> None:
         self.node_index = {n: i for i, n in enumerate(self.node_names)}
@@ -96,19 +115,14 @@ class Mesh(Concept):
     # -- lookups used by commands (KeyError names the missing entity) --------
 
     def find_node(self, name: str) -> int | None:
-        """Index of a node by name; code_aster 17 also names nodes ``N<i>`` by
-        their 1-based position (mesh names are not kept), so that is the fallback."""
-        index = self.node_index.get(name)
-        if index is None:
-            index = _positional(name, "N", self.n_nodes)
-        return index
+        """Index of a node by name. code_aster 17 names a node ``N<i>`` by its
+        1-based position where the mesh keeps no names (char8_to_int): there
+        the position wins, elsewhere it is the fallback of a missing name."""
+        return _lookup(name, "N", self.node_index, self.n_nodes, self.names_kept)
 
     def find_cell(self, name: str) -> int | None:
-        """Index of a cell by name, falling back on code_aster 17's ``M<i>``."""
-        index = self.cell_index.get(name)
-        if index is None:
-            index = _positional(name, "M", self.n_cells)
-        return index
+        """Index of a cell by name, with code_aster 17's ``M<i>`` as for nodes."""
+        return _lookup(name, "M", self.cell_index, self.n_cells, self.names_kept)
 
     def node_group(self, name: str) -> np.ndarray:
         return self.node_groups[name]
@@ -150,6 +164,10 @@ class Mesh(Concept):
             cell_groups={k: v.copy() for k, v in self.cell_groups.items()},
             dim=self.dim,
             title=self.title,
+            curvilinear_abscissa=(
+                None if self.curvilinear_abscissa is None else dict(self.curvilinear_abscissa)
+            ),
+            names_kept=self.names_kept,
         )
 
     # -- code_aster's object API ----------------------------------------------
@@ -178,3 +196,41 @@ class Mesh(Concept):
 
     def getGroupsOfCells(self, local=False) -> list[str]:  # noqa: N802
         return list(self.cell_groups)
+
+    def addNodeLabels(self, labels) -> None:  # noqa: N802
+        """Rename every node, in order (code_aster's Mesh.addNodeLabels: one
+        label per node, the names it had replaced)."""
+        self.node_names = self._labels(labels, self.n_nodes, "node")
+        self.node_index = {n: i for i, n in enumerate(self.node_names)}
+
+    def addCellLabels(self, labels) -> None:  # noqa: N802
+        """Rename every cell, in order (code_aster's Mesh.addCellLabels)."""
+        self.cell_names = self._labels(labels, self.n_cells, "cell")
+        self.cell_index = {n: i for i, n in enumerate(self.cell_names)}
+
+    @staticmethod
+    def _labels(labels, count: int, what: str) -> list[str]:
+        if isinstance(labels, str) or not all(isinstance(x, str) for x in labels):
+            raise DeckRuntimeError(f"add{what.title()}Labels takes a list of names")
+        names = [str(x).strip() for x in labels]
+        if len(names) != count:
+            raise DeckRuntimeError(f"Bad label size: {len(names)} labels for {count} {what}s")
+        if len(set(names)) != count:
+            raise DeckRuntimeError(f"add{what.title()}Labels: the {what} labels repeat a name")
+        return names
+
+
+@dataclass(eq=False)
+class CellConstantField(Concept):
+    """A field constant by cell (code_aster's ``carte``), as CREA_CHAMP EXTR
+    takes it from a mesh (``CART_ABSC_R``: MODI_MAILLAGE ABSC_CURV's abscissa).
+
+    ``values`` maps a mesh cell to its components' values, the first
+    ``len(values[cell])`` of ``components`` (a SEG2 carries ABSC1, ABSC2)."""
+
+    aster_types = ("carte_sdaster", "cham_gd_sdaster")
+
+    mesh: Mesh
+    field_type: str
+    components: tuple[str, ...]
+    values: dict[int, tuple[float, ...]]

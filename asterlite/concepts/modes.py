@@ -12,7 +12,7 @@ from asterlite.concepts.assembly import AssembledMatrix, DofNumbering
 from asterlite.concepts.base import Concept
 from asterlite.concepts.numpy_api import dense_copy, replaced_values
 from asterlite.errors import DeckRuntimeError
-from asterlite.post.deck_api import mode_field, set_result_mesh
+from asterlite.post.deck_api import field_indexes, mode_field, set_result_mesh
 
 
 @dataclass(eq=False)
@@ -39,7 +39,17 @@ class ModeResult(Concept):
     """
 
     aster_types = ("mode_meca", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getField", "getIndexes", "getNumberOfModes", "setMesh"})
+    deck_methods = frozenset(
+        {
+            "getName",
+            "getField",
+            "getIndexes",
+            "getIndexesForFieldName",
+            "getNumberOfModes",
+            "setMesh",
+            "LIST_VARI_ACCES",
+        }
+    )
 
     numbering: DofNumbering
     shapes: np.ndarray
@@ -66,8 +76,23 @@ class ModeResult(Concept):
     def getIndexes(self) -> list[int]:  # noqa: N802
         return list(range(1, self.n_modes + 1))
 
+    def getIndexesForFieldName(self, name) -> list[int]:  # noqa: N802
+        return field_indexes(self, name)
+
     def getNumberOfModes(self) -> int:  # noqa: N802
         return int(self.n_modes)
+
+    def LIST_VARI_ACCES(self) -> dict:  # noqa: N802 - code_aster's name
+        """The access variables of a mode_meca, one value per mode:
+        NUME_ORDRE, NUME_MODE, FREQ and NOEUD_CMP (a static mode's label,
+        None for a dynamic mode)."""
+        labels = list(self.mode_labels) or [None] * self.n_modes
+        return {
+            "NUME_ORDRE": list(range(1, self.n_modes + 1)),
+            "NUME_MODE": [int(n) for n in self.mode_numbers],
+            "FREQ": [float(f) for f in self.frequencies],
+            "NOEUD_CMP": labels,
+        }
 
     def setMesh(self, mesh) -> None:  # noqa: N802
 
@@ -209,6 +234,7 @@ class GeneralizedVector(Concept):
     u lies in the span of the basis)."""
 
     aster_types = ("vect_asse_gene",)
+    deck_methods = frozenset({"getName", "EXTR_VECT_GENE", "RECU_VECT_GENE"})
 
     numbering: GeneralizedNumbering
     values: np.ndarray
@@ -218,6 +244,31 @@ class GeneralizedVector(Concept):
     @property
     def basis(self) -> ModeResult:
         return self.numbering.basis
+
+    def EXTR_VECT_GENE(self) -> np.ndarray:  # noqa: N802 - code_aster's name
+        """The generalized values as a numpy array (a copy)."""
+
+        return np.array(self.values, copy=True)
+
+    def RECU_VECT_GENE(self, values) -> None:  # noqa: N802
+        """Replace the values by a deck's sequence of the same length; a real
+        vector takes real values only, as code_aster's setValues."""
+
+        what = f"{self.name or 'vector'}.RECU_VECT_GENE"
+        current = np.asarray(self.values)
+        try:
+            array = np.asarray(values)
+        except (TypeError, ValueError):
+            raise DeckRuntimeError(f"{what} takes a sequence of numbers") from None
+        if array.shape != current.shape:
+            raise DeckRuntimeError(f"{what}: {array.size} values for a vector of {current.size}")
+        if array.dtype.kind not in "biufc" or (
+            array.dtype.kind == "c" and current.dtype.kind != "c"
+        ):
+            raise DeckRuntimeError(f"{what}: {array.dtype} values for a real vector")
+        if not np.all(np.isfinite(array)):
+            raise DeckRuntimeError(f"{what}: the values hold non-finite numbers")
+        self.values = np.array(array, dtype=current.dtype, copy=True)
 
 
 @dataclass(eq=False)

@@ -233,6 +233,20 @@ def select_rows(rows, name, type_code, crit_comp, value, precision, criterion):
     return [r for r in present if compare(r[name], values[0])]
 
 
+class TableColumn(list):
+    """``tab.PARA`` of an extracted table: the column's values, None where a
+    row lacks the parameter, with code_aster's Colonne methods ``values()``
+    and ``not_none_values()``."""
+
+    deck_methods = frozenset({"values", "not_none_values"})
+
+    def values(self) -> list:
+        return list(self)
+
+    def not_none_values(self) -> list:
+        return [value for value in self if value is not None]
+
+
 class TableView:
     """What ``EXTR_TABLE()`` returns: code_aster's Python table object.
 
@@ -258,11 +272,28 @@ class TableView:
     def __iter__(self):
         return iter(self.rows)
 
+    def Array(self, para: str, champ: str) -> np.ndarray:  # noqa: N802 - code_aster's name
+        """code_aster's Table.Array: the rows' (para, champ) values as an
+        (n_rows, 2) float array, in row order."""
+        for name in (para, champ):
+            if name not in self.para:
+                raise CommandError(
+                    f"the extracted table has no parameter {name!r} (it has {', '.join(self.para)})"
+                )
+        return np.array([[r.get(para), r.get(champ)] for r in self.rows], dtype=float).reshape(
+            -1, 2
+        )
+
     def deck_getattr(self, name: str):
         """``tab.PARA``: the column of a parameter (code_aster's Colonne, here
-        the list of its values: len(), iteration and indexing)."""
+        the list of its values: len(), iteration, indexing, ``values()``); ``tab.Array``
+        and ``tab.values`` are code_aster's methods of those names."""
+        if name == "Array":
+            return self.Array
+        if name == "values" and name not in self.para:
+            return self.values
         if name in self.para:
-            return self._table.column(name)
+            return TableColumn(self._table.column(name))
         raise CommandError(
             f"the extracted table has no parameter {name!r} (it has {', '.join(self.para)})"
         )

@@ -14,6 +14,7 @@ from asterlite.concepts.modes import ModeResult
 from asterlite.post.deck_api import (
     archived_instants,
     axial_force,
+    field_indexes,
     generalized_values,
     info_nonl,
     normal_force,
@@ -194,7 +195,9 @@ class DynaTrans(Concept):
     """
 
     aster_types = ("dyna_trans", "resultat_sdaster")
-    deck_methods = frozenset({"getName", "getField", "getIndexes", "getTimes", "setMesh"})
+    deck_methods = frozenset(
+        {"getName", "getField", "getIndexes", "getIndexesForFieldName", "getTimes", "setMesh"}
+    )
 
     numbering: DofNumbering
     times: np.ndarray
@@ -211,6 +214,9 @@ class DynaTrans(Concept):
     characteristics: Any = None
     mass_matrix: Any = None
     loads: tuple = ()
+    # (modal basis, {field: generalized values per stored instant}) of a
+    # result restituted on a whole modal basis (REST_GENE_PHYS), else None
+    modal_source: Any = None
 
     # deck API (code_aster's TransientResult), see asterlite.post.deck_api
     def getField(self, name, value=None, para="NUME_ORDRE"):  # noqa: N802
@@ -219,6 +225,9 @@ class DynaTrans(Concept):
 
     def getIndexes(self) -> list[int]:  # noqa: N802
         return [int(o) for o in self.order]
+
+    def getIndexesForFieldName(self, name) -> list[int]:  # noqa: N802
+        return field_indexes(self, name)
 
     def getTimes(self) -> list[float]:  # noqa: N802
         return [float(t) for t in self.times]

@@ -46,7 +46,7 @@ from __future__ import annotations
 
 import math
 import time as wallclock
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numba import njit
@@ -93,11 +93,6 @@ from asterlite.errors import field as named
 FL_ON, FL_ALPHA, FL_BETA, FL_CHI, FL_DELTA, FL_LAYER, FL_THICKNESS = range(7)
 N_FILM = 7
 
-# code_aster 11's defaults of the iterations: their number, tolerance, relaxation
-DEFAULT_MAX_ITERATIONS = 20
-DEFAULT_TOLERANCE = 1.0e-3
-DEFAULT_RELAXATION = 10.0
-
 # status of a step whose fixed-point iterations did not converge
 STATUS_FILM_NOT_CONVERGED = 20
 # scalars[]: last residual ratio, iterations of the worst step, total iterations
@@ -111,12 +106,13 @@ N_KIN = 13
 @dataclass
 class FluidFilm:
     """The film parameters of a run: one row per shock (``FL_*`` columns;
-    FL_ON = 0 for a shock without film) and the iteration controls."""
+    FL_ON = 0 for a shock without film) and the iteration controls, as the
+    command read them (the catalogue gives their defaults)."""
 
     rows: np.ndarray
-    max_iterations: int = DEFAULT_MAX_ITERATIONS
-    tolerance: float = DEFAULT_TOLERANCE
-    relaxation: float = DEFAULT_RELAXATION
+    max_iterations: int
+    tolerance: float
+    relaxation: float
 
     @property
     def active(self) -> bool:
@@ -490,16 +486,16 @@ def run_adapt_loop(clock, counters, state, memory, linear, model, exc, controls,
 
 
 def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_end, dt, instants,
-                   pas_arch, label=None, adapt=None):  # fmt: skip
-    """Integrate from t0 to t_end with fluid films: code_aster 11's EULER, or
-    with ``adapt`` (the :class:`integrate.SchemeOptions` of the run, the step's upper bound
-    given) its ADAPT_ORDRE2 (mdadap); returns an :class:`integrate.RunResult`."""
+                   pas_arch, options: SchemeOptions, label=None):  # fmt: skip
+    """Integrate from t0 to t_end with fluid films: code_aster 11's EULER, or,
+    where ``options.adapt_v11`` (the step's upper bound given), its
+    ADAPT_ORDRE2 (mdadap); returns an :class:`integrate.RunResult`."""
 
     if not system.diagonal:
         raise NumericalError(
             f"the fluid film ({named('film')}) needs diagonal generalized matrices (a modal basis)"
         )
-    scheme = "EULER" if adapt is None else "ADAPT_ORDRE2"
+    scheme = "ADAPT_ORDRE2" if options.adapt_v11 else "EULER"
     n = system.n_modes
     linear = tuple(
         np.ascontiguousarray(np.diag(m), dtype=float)
@@ -507,7 +503,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     )
     shapes, rest = shocks.local_arrays()
     rows = np.ascontiguousarray(film.rows, dtype=float).copy()
-    weights = mass_weights(shapes, shocks.flags, FluidFilm(rows, relaxation=film.relaxation))
+    weights = mass_weights(shapes, shocks.flags, replace(film, rows=rows))
     model = (shocks.flags, shocks.params, shapes, rest, shocks.polars, rows, weights)
     exc = excitation.bundle()
     q, v = np.array(q0, dtype=float), np.array(v0, dtype=float)
@@ -524,13 +520,13 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
     capacity = 2 + len(instants) + K.grid_step_count(t0, t_end, dt) // max(pas_arch, 1)
-    adaptive = adapt is not None
+    adaptive = options.adapt_v11
     if adaptive:  # mdadap's state (the scheme's rows and scalars) in the generic layout
-        memory, _ = V11.prepare(system, dt, adapt)
+        memory, _ = V11.prepare(system, dt, options)
         state = State(q, v, a, np.zeros(n), vint, np.zeros_like(vint), np.zeros((5, 3)))
         capacity = min(capacity, 4096)
     clock, counters = K.new_clock(t0, dt, t_end), K.new_counters(adaptive)
-    budget = StepBudget(t0, t_end, dt, adaptive, adapt or SchemeOptions())
+    budget = StepBudget(t0, t_end, dt, adaptive, options)
     row_bytes = 8 * (2 + 3 * n + shocks.count * shocks.vint_width + K.N_INFO)
     budget.check_archive(capacity, row_bytes, pas_arch, clock, counters)
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)

@@ -38,30 +38,33 @@ from asterlite.errors import NumericalError
 from asterlite.errors import field as named
 
 
-@dataclass
+@dataclass(frozen=True)
 class SchemeOptions:
-    """The scheme's parameters (code_aster 17 defaults)."""
+    """The scheme's parameters as the command read them from the validated
+    call (the catalogue fills their defaults; none is restated here). A
+    parameter of another family of schemes is None and never read; the step
+    bounds are None where the deck leaves them to the scheme."""
 
-    tolerance: float = 1.0e-5
-    alpha: float = 0.0
-    dt_min: float | None = None
-    dt_max: float | None = None
-    beta: float = 0.25
-    gamma: float = 0.5
-    nmax_iter_pas: int = 16
-    vite_min: str = "NORM"
-    coef_mult_pas: float = 1.1
-    coef_divi_pas: float = 1.3333334
-    pas_limi_rela: float = 1.0e-6
-    nb_poin_periode: int = 50
+    tolerance: float | None
+    alpha: float | None
+    dt_min: float | None
+    dt_max: float | None
+    beta: float | None
+    gamma: float | None
+    nmax_iter_pas: int | None
+    vite_min: str | None
+    coef_mult_pas: float | None
+    coef_divi_pas: float | None
+    pas_limi_rela: float | None
+    nb_poin_periode: int | None
     # NEWMARK with the forces of the step's start (code_aster 13-15 decks:
     # asterlite.legacy.v15.OLD_BEHAVIOURS)
-    force_at_step_start: bool = False
+    force_at_step_start: bool
     # ADAPT_ORDRE2 as code_aster 10-12 ran it (mdadap: scheme_adapt_ordre2_v11;
     # asterlite.legacy.v15.OLD_BEHAVIOURS["ADAPT_ORDRE2_MDADAP"])
-    adapt_v11: bool = False
+    adapt_v11: bool
     # asterlite's guards (no keyword): steps an adaptive run may take, bytes
-    # the archive may hold; None: StepBudget's defaults
+    # the archive may hold; None: StepBudget's own limits
     max_steps: int | None = None
     max_archive_bytes: int | None = None
 
@@ -94,7 +97,7 @@ def integrate(
     dt: float,
     instants: np.ndarray,
     pas_arch: int,
-    options: SchemeOptions | None = None,
+    options: SchemeOptions,
     specialised: bool = True,
     rotation=None,
     label: str | None = None,
@@ -115,7 +118,7 @@ def integrate(
     A kernel numba has not compiled yet (``asterlite warmup`` compiles them
     all) is announced on standard error; ``info['compile_seconds']`` is the
     time compiling took, left out of ``info['integration_seconds']``."""
-    legacy = options is not None and options.adapt_v11
+    legacy = options.adapt_v11
     name = loop_kernel(scheme, system, shocks, specialised, rotation, implicit_shocks, legacy)
     with progress.kernel(name, compile_estimate(name)) as notice:
         return run_kernel(
@@ -177,7 +180,7 @@ def run_kernel(
     dt: float,
     instants: np.ndarray,
     pas_arch: int,
-    options: SchemeOptions | None,
+    options: SchemeOptions,
     specialised: bool,
     rotation,
     label: str | None,
@@ -186,7 +189,6 @@ def run_kernel(
     load_labels: list[str] | None,
 ) -> RunResult:
     """:func:`integrate` inside its kernel block (``notice``: what was compiled)."""
-    options = options or SchemeOptions()
     n = system.n_modes
     entry = SCHEMES[scheme]
     module = entry.implementation()

@@ -141,7 +141,7 @@ def run_loop_kernel(name: str) -> None:
     """Run the loop ``name`` (a :data:`LOOPS` entry, as
     :func:`asterlite.dynamics.integrate.loop_kernel` names them) on a tiny
     problem, with and without the energy balance where the loop offers it."""
-    from asterlite.dynamics.integrate import SchemeOptions, integrate
+    from asterlite.dynamics.integrate import integrate
 
     runs = {loop: entry.name for loop, entry in schemes.kernels().items()}
     # the shared loops run NEWMARK's step (every step compiles with them)
@@ -152,9 +152,9 @@ def run_loop_kernel(name: str) -> None:
     shocks = tiny_shocks(system)
     t_end, dt = 0.01, 1.0e-4
     rotation = tiny_rotation(system, t_end, dt) if name == schemes.ROTATING_LOOP else None
-    options = SchemeOptions()
+    options = warmup_options()
     if name == LEGACY_ADAPT:  # mdadap: no energy balance, the step's upper bound given
-        options = SchemeOptions(adapt_v11=True, dt_max=dt)
+        options = warmup_options(adapt_v11=True, dt_max=dt)
     energies = (False, True) if rotation is None and name != LEGACY_ADAPT else (False,)
     for energy in energies:
         integrate(
@@ -176,6 +176,24 @@ def run_loop_kernel(name: str) -> None:
             implicit_shocks=name == schemes.IMPLICIT_LOOP,
             label=f"warmup {name}",
         )
+
+
+# the film's iterations on the tiny problem: at most, tolerance, relaxation
+FILM_CONTROLS = (10, 1.0e-2, 5.0)
+
+
+def warmup_options(**given):
+    """Options of every scheme for the tiny problem. The kernels are
+    compiled for the types, so these are values of the warm-up's own, not
+    the catalogue's defaults, which only a deck's validated call gives."""
+    from asterlite.dynamics.integrate import SchemeOptions
+
+    values = dict(
+        tolerance=1.0e-4, alpha=0.0, dt_min=None, dt_max=None, beta=0.25, gamma=0.5,
+        nmax_iter_pas=10, vite_min="NORM", coef_mult_pas=1.2, coef_divi_pas=1.5,
+        pas_limi_rela=1.0e-5, nb_poin_periode=20, force_at_step_start=False, adapt_v11=False,
+    )  # fmt: skip
+    return SchemeOptions(**{**values, **given})
 
 
 def tiny_rotation(system, t_end: float, dt: float):
@@ -212,21 +230,19 @@ def warm_film(adapt: bool = False) -> None:
     """code_aster 10-14's fluid film loop (its own kernel), or with ``adapt``
     the film under code_aster 10-12's ADAPT_ORDRE2 (another one)."""
     from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
-    from asterlite.dynamics.integrate import SchemeOptions
 
     system = tiny_system()
     shocks = tiny_shocks(system)
-    film = FluidFilm(np.array([film_row(1.0, 1.0, 0.1, 1.0)]))
-    options = None
+    film = FluidFilm(np.array([film_row(1.0, 1.0, 0.1, 1.0)]), *FILM_CONTROLS)
+    options = warmup_options()
     if adapt:  # a physical film (added mass, squeeze): the adaptive step does not collapse
-        film = FluidFilm(np.array([film_row(-0.01, 0.01, -1.0e-6, 0.0)]))
-        options = SchemeOptions(adapt_v11=True, dt_max=1.0e-4)
+        film = FluidFilm(np.array([film_row(-0.01, 0.01, -1.0e-6, 0.0)]), *FILM_CONTROLS)
+        options = warmup_options(adapt_v11=True, dt_max=1.0e-4)
     name = FILM_ADAPT if adapt else FILM
     with progress.kernel(name, compile_estimate(name)):
         integrate_film(
             system, shocks, film, tiny_loads(system, 0.01, 1.0e-4), np.zeros(2),
-            np.array([0.0, 0.1]), 0.0, 0.01, 1.0e-4, np.zeros(0), 5, label="warmup",
-            adapt=options,
+            np.array([0.0, 0.1]), 0.0, 0.01, 1.0e-4, np.zeros(0), 5, options, label="warmup",
         )  # fmt: skip
 
 

@@ -46,10 +46,16 @@ def block_dof_indices(block: ElementBlock, numbering: DofNumbering) -> np.ndarra
     return table[block.nodes[:, :, None], cols[None, None, :]].reshape(n_el, -1)
 
 
+#: raw element terms summed at once: the assembled matrix is built chunk by
+#: chunk so that the coordinate arrays of a large solid model (tens of
+#: millions of terms, complex for RIGI_MECA_HYST) never exist whole
+CHUNK_TERMS = 2_000_000
+
+
 def assemble_blocks(blocks: list[ElementBlock], numbering: DofNumbering) -> sp.csr_matrix:
     """Sum the element matrices into an (n_dofs, n_dofs) CSR matrix."""
     n = numbering.n_dofs
-    rows, cols, vals = [], [], []
+    matrix = None
     for block in blocks:
         if not len(block.matrices):
             continue
@@ -57,16 +63,19 @@ def assemble_blocks(blocks: list[ElementBlock], numbering: DofNumbering) -> sp.c
         if np.any(idx < 0):
             raise KeyError("element DOF missing from the numbering")
         d = idx.shape[1]
-        # 32-bit indices halve the memory of large solid models (tens of millions of terms)
+        # 32-bit indices halve the memory of large solid models
         idx = idx.astype(np.int32 if n < 2**31 - 1 else np.int64)
-        rows.append(np.repeat(idx, d, axis=1).ravel())
-        cols.append(np.tile(idx, (1, d)).ravel())
-        vals.append(block.matrices.reshape(len(idx), -1).ravel())
-    if not rows:
+        step = max(1, CHUNK_TERMS // (d * d))
+        for start in range(0, len(idx), step):
+            part = idx[start : start + step]
+            rows = np.repeat(part, d, axis=1).ravel()
+            cols = np.tile(part, (1, d)).ravel()
+            vals = block.matrices[start : start + step].reshape(len(part), -1).ravel()
+            chunk = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
+            matrix = chunk if matrix is None else matrix + chunk
+    if matrix is None:
         return sp.csr_matrix((n, n))
-    matrix = sp.coo_matrix(
-        (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(n, n)
-    ).tocsr()
+    matrix = sp.csr_matrix(matrix)
     matrix.sum_duplicates()
     matrix.eliminate_zeros()
     return matrix

@@ -80,6 +80,12 @@ def segment_lengths(x1, x2) -> np.ndarray:
     return np.linalg.norm(np.asarray(x2, float) - np.asarray(x1, float), axis=-1)
 
 
+def segment_cells(mesh, cells) -> tuple[np.ndarray, np.ndarray]:
+    """(n, 2) nodes and (n,) lengths of the two-node cells ``cells``."""
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    return conn, segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+
+
 def axis_angles(direction) -> np.ndarray:
     """(n, 2) nautical angles (alpha, beta) turning global X onto ``direction``.
 
@@ -511,3 +517,17 @@ def global_matrices(
     local = np.broadcast_to(local, (len(x1),) + local.shape[1:])
     per_node = len(COMPONENTS[modelisation.upper()])
     return to_global(local, rotation_from_angles(np.asarray(angles, dtype=float)), per_node)
+
+
+def cell_angles(model, characteristics, cells) -> np.ndarray:
+    """(n, 3) nautical angles of SEG2 cells: ORIENTATION when given, else the
+    segment direction with no twist (code_aster's default)."""
+    mesh = model.mesh
+    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
+    angles = seg2_angles(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    if characteristics is not None:
+        for k, cell in enumerate(cells):
+            given = characteristics.orientation.get(int(cell))
+            if given is not None:
+                angles[k] = given
+    return angles

@@ -18,8 +18,9 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam
-from asterlite.fem.beam import BeamError, global_matrices, seg2_angles
+from asterlite.fem.beam import BeamError, cell_angles, global_matrices
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.multifibre_elements import local_matrix
 from asterlite.fem.sections import SectionError
 
 BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE", "2D_BARRE")
@@ -27,20 +28,6 @@ BEAM_MODELISATIONS = ("POU_D_E", "POU_D_T", "POU_D_TG", "BARRE", "2D_BARRE")
 
 def _section_key(section: dict) -> tuple:
     return tuple(sorted((k, v) for k, v in section.items() if not isinstance(v, str)))
-
-
-def cell_angles(model, characteristics, cells) -> np.ndarray:
-    """(n, 3) nautical angles of SEG2 cells: ORIENTATION when given, else the
-    segment direction with no twist (code_aster's default)."""
-    mesh = model.mesh
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    angles = seg2_angles(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
-    if characteristics is not None:
-        for k, cell in enumerate(cells):
-            given = characteristics.orientation.get(int(cell))
-            if given is not None:
-                angles[k] = given
-    return angles
 
 
 def _material_values(materials, cells, modelisation: str, need_density: bool):
@@ -141,6 +128,15 @@ EFGE_COMPONENTS = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
 SIPO_COMPONENTS = ("SN", "SVY", "SVZ", "SMT", "SMFY", "SMFZ")
 
 
+def _in_local_frames(model, characteristics, cells, values, dofs_per_node):
+    """(lengths, ``values`` in the cells' local frames) of two-node beam
+    cells; ``values`` (n_orders, n_cells, 2 dofs_per_node) global-frame DOFs."""
+    angles = cell_angles(model, characteristics, cells)
+    _, lengths = beam.segment_cells(model.mesh, cells)
+    rot = beam.element_rotation(beam.rotation_from_angles(angles), dofs_per_node)
+    return lengths, np.einsum("eij,oej->oei", rot, values)
+
+
 def _local_products(
     model, characteristics, materials, cells, values, matrix: str, lumped: bool = False
 ) -> np.ndarray:
@@ -148,19 +144,21 @@ def _local_products(
     of POU_D_E / POU_D_T cells, ``A`` the stiffness ('K') or the mass ('M',
     lumped as MASS_MECA_DIAG with ``lumped``), ``values`` (n_orders, n_cells, 12)
     global-frame element DOFs."""
-    mesh = model.mesh
     cells = np.asarray(cells, dtype=int)
     sections = characteristics.sections if characteristics is not None else {}
     # no RHO: no inertia (code_aster takes 0)
     props = _material_values(materials, cells, "beam", need_density=False)
-    angles = cell_angles(model, characteristics, cells)
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
-    rot = beam.element_rotation(beam.rotation_from_angles(angles), 6)
-    v_local = np.einsum("eij,oej->oei", rot, values)
+    lengths, v_local = _in_local_frames(model, characteristics, cells, values, 6)
     out = np.zeros_like(v_local)
     for k, cell in enumerate(cells):
         modelisation = model.cell_modelisation[int(cell)]
+        if modelisation == "POU_D_EM":
+            # the fibre-integrated element (code_aster's ef0142 / poefgr use pmfrig, pmfmas)
+            a_local = local_matrix(
+                model, characteristics, materials, int(cell), lengths[k], matrix, lumped
+            )
+            out[:, k, :] = v_local[:, k, :] @ a_local.T
+            continue
         if modelisation not in ("POU_D_E", "POU_D_T"):
             raise ElementError(f"internal forces of {modelisation} cells are not available")
         a_local = beam.local_matrices(
@@ -223,6 +221,31 @@ def beam_inertia_forces(
     return section_forces(
         _local_products(model, characteristics, materials, cells, accelerations, "M", lumped)
     )
+
+
+#: Components of POU_D_TG's EFGE_ELNO: the bimoment BX after the six others.
+WARPING_EFGE_COMPONENTS = EFGE_COMPONENTS + ("BX",)
+
+
+def warping_beam_forces(model, characteristics, materials, cells, displacements) -> np.ndarray:
+    """(n_orders, n_cells, 2, 7) EFGE_ELNO of POU_D_TG cells from their
+    (n_orders, n_cells, 14) global-frame DOFs (DX..DRZ, GRX of each node):
+    ``K_local u_local`` with node 1's sign reversed, components N VY VZ MT
+    MFY MFZ BX. code_aster's element (ef0344) adds no inertia, whatever the
+    result."""
+    cells = np.asarray(cells, dtype=int)
+    sections = characteristics.sections if characteristics is not None else {}
+    props = _material_values(materials, cells, "POU_D_TG", need_density=False)
+    lengths, u_local = _in_local_frames(model, characteristics, cells, displacements, 7)
+    f = np.zeros_like(u_local)
+    for k, cell in enumerate(cells):
+        k_local = beam.local_matrices(
+            "POU_D_TG", "K", lengths[k], sections[int(cell)], props["E"][k], props["NU"][k]
+        )[0]
+        f[:, k, :] = u_local[:, k, :] @ k_local.T
+    out = f.reshape(f.shape[:-1] + (2, 7)).copy()
+    out[..., 0, :] *= -1.0
+    return out
 
 
 #: Components of SIPM_ELNO.

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+from asterlite.fem.pipe import node_components
+
 #: Component order inside a node (code_aster's DEPL_R order).
-COMPONENT_ORDER = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX")
+COMPONENT_ORDER = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX", *node_components(6)[6:])
 COMPONENT_RANK = {c: i for i, c in enumerate(COMPONENT_ORDER)}
 
 TRANSLATIONS = ("DX", "DY", "DZ")
@@ -18,6 +20,8 @@ MODELISATION_COMPONENTS: dict[str, tuple[str, ...]] = {
     "POU_D_E": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
     "POU_D_T": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
     "POU_D_TG": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX"),
+    "POU_D_EM": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
+    "POU_D_TGM": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ", "GRX"),
     "BARRE": ("DX", "DY", "DZ"),
     "2D_BARRE": ("DX", "DY"),
     "3D": ("DX", "DY", "DZ"),
@@ -27,6 +31,9 @@ MODELISATION_COMPONENTS: dict[str, tuple[str, ...]] = {
     "DKT": ("DX", "DY", "DZ", "DRX", "DRY", "DRZ"),
     "3D_ABSO": ("DX", "DY", "DZ"),
     "D_PLAN_ABSO": ("DX", "DY"),
+    # pipes: beam DOFs plus the Fourier terms of the ovalisation (code_aster's MET3SEG3...)
+    "TUYAU_3M": node_components(3),
+    "TUYAU_6M": node_components(6),
 }
 
 DISCRETE_MODELISATIONS = ("DIS_T", "DIS_TR", "2D_DIS_T", "2D_DIS_TR")
@@ -40,6 +47,8 @@ MODELISATION_CELLS: dict[str, tuple[str, ...]] = {
     "POU_D_E": ("SEG2",),
     "POU_D_T": ("SEG2",),
     "POU_D_TG": ("SEG2",),
+    "POU_D_EM": ("SEG2",),
+    "POU_D_TGM": ("SEG2",),
     "BARRE": ("SEG2",),
     "2D_BARRE": ("SEG2",),
     # volumes, plus the faces and edges that carry loads (code_aster's MECA_FACE*, MECA_ARETE*)
@@ -57,6 +66,8 @@ MODELISATION_CELLS: dict[str, tuple[str, ...]] = {
     # paraxial absorbing boundaries (code_aster's MEAB_FACE*, MEPASE*)
     "3D_ABSO": ("TRIA3", "TRIA6", "QUAD4", "QUAD8", "QUAD9"),
     "D_PLAN_ABSO": ("SEG2", "SEG3"),
+    "TUYAU_3M": ("SEG3", "SEG4"),
+    "TUYAU_6M": ("SEG3",),
 }
 
 

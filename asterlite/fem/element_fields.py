@@ -14,6 +14,9 @@
   results (the forces then balance the inertia distribution along each beam,
   so SN differs between its two nodes); SIEF_ELGA / EFGE_ELGA / SIEF_ELNO
   stay ``K_e u_e`` (code_aster computes them from the displacement alone);
+- ``POU_D_TG``: EFGE_ELNO only, N VY VZ MT MFY MFZ and the bimoment BX,
+  ``K_e u_e`` less EXCIT's line loads, never with inertia (code_aster's
+  ef0344);
 - ``*_NOEU``: the arithmetic mean, at each node, of the ELNO values of the
   cells sharing it (code_aster's nodal smoothing);
 - discrete elements (``DIS_T``, ``DIS_TR``, ``2D_DIS_T``, ``2D_DIS_TR``):
@@ -37,11 +40,13 @@ from asterlite.fem.beam_elements import (
     EFGE_COMPONENTS,
     SIPM_COMPONENTS,
     SIPO_COMPONENTS,
+    WARPING_EFGE_COMPONENTS,
     _material_values,
     beam_extreme_stresses,
     beam_inertia_forces,
     beam_local_forces,
     beam_stresses,
+    warping_beam_forces,
 )
 from asterlite.fem.discrete import local_matrix
 from asterlite.fem.dofs import MODELISATION_COMPONENTS
@@ -56,18 +61,22 @@ BEAM_GAUSS = (1.0 + np.array([-np.sqrt(0.6), 0.0, np.sqrt(0.6)])) / 2.0
 NOEU_OPTIONS = ("EFGE_NOEU", "SIEF_NOEU", "SIPO_NOEU")
 
 
-def element_displacements(mesh, numbering, cells, values: np.ndarray) -> np.ndarray:
-    """(n_orders, n_cells, 12) beam DOFs (DX..DRZ of both nodes) gathered from
-    nodal values (n_orders, n_dofs); DOFs absent from the numbering are 0."""
+def element_displacements(
+    mesh, numbering, cells, values: np.ndarray, components=BEAM_COMPONENTS
+) -> np.ndarray:
+    """(n_orders, n_cells, 2 len(components)) beam DOFs (DX..DRZ of both
+    nodes, by default) gathered from nodal values (n_orders, n_dofs); DOFs
+    absent from the numbering are 0."""
     cells = np.asarray(cells, dtype=int)
+    per_node = len(components)
     conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    nodes = np.repeat(conn, 6, axis=1).ravel()
-    comps = list(BEAM_COMPONENTS) * (2 * len(cells))
+    nodes = np.repeat(conn, per_node, axis=1).ravel()
+    comps = list(components) * (2 * len(cells))
     rows = numbering.dof_indices(nodes, comps)
     gathered = np.zeros((values.shape[0], rows.size))
     present = rows >= 0
     gathered[:, present] = values[:, rows[present]]
-    return gathered.reshape(values.shape[0], len(cells), 12)
+    return gathered.reshape(values.shape[0], len(cells), 2 * per_node)
 
 
 def beam_element_fields(
@@ -88,8 +97,19 @@ def beam_element_fields(
     ``M_e a_e`` (consistent mass, or lumped with ``lumped_mass``) to
     EFGE_ELNO and SIPO_ELNO. ``load_forces`` (n_orders, n_cells, 2, 6), the
     distributed loads of CALC_CHAMP's EXCIT in the same convention, are taken
-    off EFGE_ELNO, SIPO_ELNO and SIPM_ELNO (not SIEF: code_aster's options)."""
+    off EFGE_ELNO, SIPO_ELNO and SIPM_ELNO (not SIEF: code_aster's options).
+    POU_D_TG cells: see :func:`_warping_beam_fields`."""
     cells = np.asarray(cells, dtype=int)
+    kinds = {model.cell_modelisation[int(c)] for c in cells}
+    if "POU_D_TG" in kinds:
+        if len(kinds) > 1:
+            raise UnsupportedError(
+                "element fields of POU_D_TG cells and of other beams in one CALC_CHAMP "
+                "(their EFGE_ELNO differ in components: give them in separate calls)"
+            )
+        return _warping_beam_fields(
+            model, characteristics, materials, numbering, cells, values, options, load_forces
+        )
     u = element_displacements(model.mesh, numbering, cells, values)
     stiffness = beam_local_forces(model, characteristics, materials, cells, u)
     dynamic = stiffness
@@ -123,6 +143,22 @@ def beam_element_fields(
         else:  # a field code_aster computes on beams too (ECIN_ELEM, EPSI_ELNO...)
             raise UnsupportedError(f"{name} of beam cells")
     return out
+
+
+def _warping_beam_fields(
+    model, characteristics, materials, numbering, cells, values, options, load_forces
+) -> dict[str, ElementField]:
+    """EFGE_ELNO of POU_D_TG cells (N VY VZ MT MFY MFZ BX): the stiffness
+    forces less the distributed loads of EXCIT, without inertia, as
+    code_aster's ef0344 computes them for linear results."""
+    other = [name for name in options if name != "EFGE_ELNO"]
+    if other:
+        raise UnsupportedError(f"{other[0]} of POU_D_TG cells")
+    u = element_displacements(model.mesh, numbering, cells, values, BEAM_COMPONENTS + ("GRX",))
+    forces = warping_beam_forces(model, characteristics, materials, cells, u)
+    if load_forces is not None:
+        forces[..., :6] -= load_forces
+    return {"EFGE_ELNO": ElementField("EFGE_ELNO", cells, WARPING_EFGE_COMPONENTS, forces)}
 
 
 BAR_OPTIONS = ("EFGE_ELNO", "SIEF_ELNO")

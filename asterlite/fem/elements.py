@@ -24,6 +24,8 @@ from asterlite.fem.discrete import local_matrix, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.frames import angles_from_axis, block_rotation, rotation_from_angles
+from asterlite.fem.multifibre_elements import MULTIFIBRE_MODELISATIONS, multifibre_blocks
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_blocks
 from asterlite.fem.plane_elements import PLANE_MODELISATIONS, plane_blocks
 from asterlite.fem.plate_elements import PLATE_MODELISATIONS, plate_blocks
 from asterlite.fem.solid_elements import SOLID_MODELISATIONS, solid_blocks
@@ -117,10 +119,12 @@ def _rotation_invariant(local: np.ndarray, components, n_nodes: int) -> bool:
 ELEMENT_FAMILIES = (
     (DISCRETE_MODELISATIONS, _discrete_blocks),
     (BEAM_MODELISATIONS, beam_blocks),  # beams and bars
+    (MULTIFIBRE_MODELISATIONS, multifibre_blocks),  # multifibre beams
     (PLANE_MODELISATIONS, plane_blocks),  # plane strain, plane stress, axisymmetric solids
     (SOLID_MODELISATIONS, solid_blocks),  # 3D solids
     (PLATE_MODELISATIONS, plate_blocks),  # DKT plates
     (ABSORBING_MODELISATIONS, absorbing_blocks),  # paraxial (absorbing) boundaries
+    (PIPE_MODELISATIONS, pipe_blocks),  # straight pipes with ovalisation (TUYAU_3M, TUYAU_6M)
 )
 ELEMENT_COMPUTERS = {name: compute for names, compute in ELEMENT_FAMILIES for name in names}
 if len(ELEMENT_COMPUTERS) != sum(len(names) for names, _ in ELEMENT_FAMILIES):
@@ -134,12 +138,15 @@ def element_blocks(
     materials=None,
     lumped: bool = False,
     cells=None,
+    complex_stiffness: bool = False,
 ) -> list[ElementBlock]:
     """Global-frame element matrices of the model for ``matrix`` (K, M or A).
 
     ``materials`` is the CHAM_MATER (needed by beams and bars), ``lumped``
     asks for MASS_MECA_DIAG, ``cells`` restricts the computation to a subset
-    of the model's cells (default: all of them).
+    of the model's cells (default: all of them). ``complex_stiffness``
+    keeps the imaginary part of K on viscoelastic cells (RIGI_MECA_HYST):
+    only the 3D and plane solids take such materials.
     """
     wanted = None if cells is None else {int(c) for c in np.asarray(cells).ravel()}
     by_modelisation: dict[str, list[int]] = defaultdict(list)
@@ -160,6 +167,7 @@ def element_blocks(
                 np.array(sorted(members), dtype=int),
                 materials=materials,
                 lumped=lumped,
+                **({"complex_stiffness": True} if complex_stiffness else {}),
             )
         )
     return blocks

@@ -11,11 +11,13 @@ solvers do (``STOP_SINGULIER='OUI'`` stops, ``'NON'`` only warns).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
+from cholespy import CholeskySolverD, MatrixType
 
 from asterlite.fem.constraints import Elimination, eliminate
 
@@ -60,6 +62,47 @@ def _superlu(reduced: sp.csc_matrix):
         raise FactorizationError("the matrix is singular (exactly zero pivot)") from None
 
 
+# relative asymmetry under which a matrix is taken as symmetric (rounding
+# of assembled sums of symmetric element matrices)
+SYMMETRY_TOLERANCE = 1.0e-12
+
+
+def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
+    """A solve with the sparse matrix of an implicit scheme's step (K + a0 M
+    + a1 C: symmetric, and positive definite when the mass is): CHOLMOD's
+    supernodal Cholesky (through cholespy) where the matrix is symmetric and
+    the factorisation finds it positive definite, a fraction of SuperLU's
+    fill on 3D meshes (docs/performance.md, "Memory"); SuperLU otherwise."""
+    matrix = sp.csc_matrix(matrix)
+    scale = abs(matrix).max() if matrix.nnz else 0.0
+    if (
+        matrix.shape[0]
+        and scale > 0.0
+        and abs(matrix - matrix.T).max() <= SYMMETRY_TOLERANCE * scale
+    ):
+        try:
+            return _cholmod_solver(matrix)
+        except ValueError:  # not positive definite: LU with pivoting
+            pass
+    return spla.splu(matrix).solve
+
+
+def _cholmod_solver(matrix: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarray]:
+    coo = matrix.tocoo()
+    factor = CholeskySolverD(
+        matrix.shape[0], coo.row.astype(np.int32), coo.col.astype(np.int32),
+        coo.data.astype(np.float64), MatrixType.COO,
+    )  # fmt: skip
+
+    def solve(rhs: np.ndarray) -> np.ndarray:
+        rhs = np.ascontiguousarray(rhs, dtype=np.float64)
+        out = np.zeros_like(rhs)
+        factor.solve(rhs, out)
+        return out
+
+    return solve
+
+
 def pivot_loss(lu, reduced: sp.csc_matrix) -> float:
     """Largest number of decimal digits lost by a pivot against the diagonal
     term of its column (symmetric ordering: U's diagonal follows perm_c)."""
@@ -92,10 +135,15 @@ def solve(
 ) -> tuple[np.ndarray, float]:
     """(u, relative residual) of ``A u = f + reactions`` with the relations'
     right-hand sides ``relation_rhs``; ``refinement`` steps of iterative
-    refinement on the reduced system."""
+    refinement on the reduced system. Complex matrices and right-hand sides
+    (a harmonic system) are solved as they are."""
     elim = factorization.elimination
-    u0 = elim.particular(np.asarray(relation_rhs, dtype=float))
-    b = np.asarray(elim.T.T @ (np.asarray(loads, dtype=float) - matrix @ u0))
+    relation_rhs = np.asarray(relation_rhs)
+    u0 = elim.particular(relation_rhs.real)
+    if np.iscomplexobj(relation_rhs):
+        u0 = u0 + 1j * elim.particular(relation_rhs.imag)
+    loads = np.asarray(loads)
+    b = np.asarray(elim.T.T @ (loads - matrix @ u0))
     q = factorization.solve_reduced(b)
     for _ in range(refinement):
         q = q + factorization.solve_reduced(b - factorization.reduced @ q)

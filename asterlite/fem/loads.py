@@ -14,6 +14,8 @@ Terms are ``(node, component, value)`` triples summed by
   the consistent nodal loads of the cubic beam (uniform: ``q L / 2`` forces,
   ``q L^2 / 12`` end moments, distributed bending moments ``m`` giving ``-/+ m``
   forces).
+- FORCE_ELEC: Laplace forces on beam conductors
+  (:mod:`asterlite.fem.laplace_force`), in the global frame.
 """
 
 from __future__ import annotations
@@ -22,8 +24,14 @@ import numpy as np
 
 from asterlite.errors import CommandError
 from asterlite.fem import beam
-from asterlite.fem.beam_elements import cell_angles
+from asterlite.fem.beam import cell_angles
 from asterlite.fem.elements import ElementError, element_blocks
+from asterlite.fem.laplace_force import laplace_vectors
+from asterlite.fem.pipe_elements import (
+    PIPE_MODELISATIONS,
+    pipe_gravity_terms,
+    pipe_pressure_terms,
+)
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
 from asterlite.fem.plane_wave import plane_wave_history
 from asterlite.fem.plate_elements import plate_gravity_terms
@@ -50,8 +58,14 @@ def gravity_terms(model, characteristics, gravity: float, direction, materials=N
     pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
     plates = np.array([int(c) for c in pool if model.cell_modelisation.get(int(c)) == "DKT"], int)
     terms.extend(plate_gravity_terms(model, characteristics, materials, plates, d))
-    if len(solid) or len(plane) or len(plates):
+    # pipes: the weight on the translations only (code_aster's te0583)
+    pipes = np.array(
+        [int(c) for c in pool if model.cell_modelisation.get(int(c)) in PIPE_MODELISATIONS], int
+    )
+    terms.extend(pipe_gravity_terms(model, characteristics, materials, pipes, d))
+    if len(solid) or len(plane) or len(plates) or len(pipes):
         handled = set(solid.tolist()) | set(plane.tolist()) | set(plates.tolist())
+        handled |= set(pipes.tolist())
         cells = sorted({int(c) for c in pool} - handled)
         if not cells:
             return terms
@@ -122,6 +136,15 @@ def _geometry(model, characteristics, members):
     return conn, x1, x2, length, rot
 
 
+#: components of the beams and bars FORCE_POUTRE loads (the multifibre beams'
+#: consistent line loads are POU_D_E's and POU_D_TG's: code_aster's te0150 serves them all)
+_LOADED_COMPONENTS = {
+    **beam.COMPONENTS,
+    "POU_D_EM": beam.BEAM_COMPONENTS,
+    "POU_D_TGM": beam.COMPONENTS["POU_D_TG"],
+}
+
+
 def beam_force_terms(model, characteristics, cells, values, local: bool, values_2=None) -> list:
     """Consistent nodal terms of FORCE_POUTRE on beam (or bar) cells: ``values``
     a dict of uniform components, or (with ``values_2``) arrays (n_cells, 6) of
@@ -135,11 +158,11 @@ def beam_force_terms(model, characteristics, cells, values, local: bool, values_
         chosen = kinds == modelisation
         members = cells[chosen]
         q1, q2 = at_first[chosen], at_second[chosen]
-        if modelisation not in beam.COMPONENTS:
+        if modelisation not in _LOADED_COMPONENTS:
             names = ", ".join(mesh.cell_names[c] for c in members[:3])
             raise ElementError(f"FORCE_POUTRE applies to beams, not to {modelisation} ({names})")
         conn, x1, x2, length, rot = _geometry(model, characteristics, members)
-        comps = beam.COMPONENTS[modelisation]
+        comps = _LOADED_COMPONENTS[modelisation]
         if len(comps) >= 6:
             f_local = _beam_local_vectors(rot, length, q1, q2, local)
             r = beam.element_rotation(rot, 6)
@@ -219,7 +242,9 @@ def load_history(load, materials):
     ``times -> (nodes, components, values (n_times, m))``; None when the load
     has none. Such parts are an ``AFFE_CHAR_MECA_F/ONDE_PLANE`` wave (each
     boundary point sees the wave with its own delay, so it is no vector times
-    f(t)) and an ``EVOL_CHAR`` (nodal forces given at instants)."""
+    f(t)), an ``EVOL_CHAR`` (nodal forces given at instants) and the
+    ``AFFE_CHAR_MECA_F/FORCE_NODALE`` values that are functions of INST (and
+    of the node's X, Y, Z)."""
     parts = []
     waves = load.extra.get("ONDE_PLANE")
     if waves:
@@ -227,6 +252,9 @@ def load_history(load, materials):
     evolution = load.extra.get("EVOL_CHAR")
     if evolution is not None:
         parts.append(evol_char_history(evolution, load.name or ""))
+    timed = load.extra.get("FORCE_NODALE_INST")
+    if timed:
+        parts.append(nodal_force_history(timed))
     if len(parts) < 2:
         return parts[0] if parts else None
 
@@ -258,6 +286,22 @@ def _plane_wave_history(load, materials, waves):
         starts = range(HISTORY_CHUNK, times.size, HISTORY_CHUNK)
         values = [first] + [at(times[k : k + HISTORY_CHUNK])[2] for k in starts]
         return nodes, components, np.concatenate(values, axis=0)
+
+    return history
+
+
+def nodal_force_history(timed):
+    """Nodal forces given as functions of INST at their nodes
+    (``[(node, component, ValueInTime)]``), at any instants."""
+    nodes = np.array([node for node, _, _ in timed], dtype=int)
+    components = [component for _, component, _ in timed]
+
+    def history(times):
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        values = np.empty((times.size, len(timed)))
+        for k, (_, _, value) in enumerate(timed):
+            values[:, k] = value.evaluate(times)
+        return nodes, components, values
 
     return history
 
@@ -305,6 +349,14 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
             "its forces are a history of instants (asterlite.fem.loads.load_history), "
             "which this command does not take yet"
         )
+    if load.extra.get("FORCE_NODALE_INST") and not history_apart:
+        from asterlite.errors import UnsupportedError
+
+        raise UnsupportedError(
+            f"the load {load.name or ''} whose FORCE_NODALE are functions of INST "
+            "(AFFE_CHAR_MECA_F) where a fixed load vector is taken: its forces are a "
+            "history (asterlite.fem.loads.load_history), which this command does not take yet"
+        )
     if load.extra.get("ONDE_PLANE") is not None and not history_apart:
         from asterlite.errors import UnsupportedError
 
@@ -317,6 +369,7 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
         )
     model = load.model
     terms = list(load.nodal_forces)
+    terms.extend(load.extra.get("VECT_ASSE", ()))
     gravity = load.extra.get("PESANTEUR")
     if gravity is not None:
         terms.extend(
@@ -340,6 +393,37 @@ def _real_load_terms(load, characteristics=None, materials=None, history_apart=F
                 item.get("VALUES_2"),
             )
         )
+    terms.extend(laplace_force_terms(model, load.extra.get("FORCE_ELEC")))
+    for item in load.extra.get("FORCE_TUYAU", []):
+        if characteristics is None:
+            raise ElementError("FORCE_TUYAU needs the pipes' CARA_ELEM")
+        terms.extend(pipe_pressure_terms(model, characteristics, item["CELLS"], item["PRES"]))
     terms.extend(solid_load_terms(model.mesh, load.extra))
     terms.extend(plane_load_terms(model, load.extra))
+    return terms
+
+
+_BEAM_FORCES_MOMENTS = ("DX", "DY", "DZ", "DRX", "DRY", "DRZ")
+
+
+def laplace_force_terms(model, on_cells) -> list:
+    """Nodal terms of FORCE_ELEC: ``on_cells`` maps each beam cell to its
+    second conductor (a warping DOF, POU_D_TG's GRX, gets nothing)."""
+    if not on_cells:
+        return []
+    mesh = model.mesh
+    by_conductor: dict = {}
+    for cell, conductor in on_cells.items():
+        by_conductor.setdefault(conductor, []).append(int(cell))
+    coords = np.asarray(mesh.coords, dtype=float)
+    if coords.shape[1] < 3:
+        coords = np.pad(coords, ((0, 0), (0, 3 - coords.shape[1])))
+    terms = []
+    for conductor, cells in by_conductor.items():
+        conn = np.array([mesh.cell_nodes[c][:2] for c in cells], dtype=int)
+        names = [mesh.cell_names[c] for c in cells]
+        vectors = laplace_vectors(coords[conn[:, 0]], coords[conn[:, 1]], conductor, names)
+        nodes = np.repeat(conn, 6, axis=1).ravel()
+        comps = list(_BEAM_FORCES_MOMENTS) * (2 * len(cells))
+        terms.extend(zip(nodes.tolist(), comps, vectors.ravel().tolist(), strict=True))
     return terms

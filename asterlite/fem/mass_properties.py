@@ -6,7 +6,9 @@ three rotations ``e_i x x``, with the rotation DOFs turning by ``e_i``):
 ``Rᵀ M R = [[m I, m [c]×ᵀ], [m [c]×, J_O]]``. This gives the mass m, the
 centre of gravity c and the inertia tensor about the origin for any element
 (discrete masses with eccentricity and rotary inertia, consistent beam
-masses), then the tensor about c by the parallel-axis theorem.
+masses), then the tensor about c by the parallel-axis theorem. Pipe
+elements use code_aster's own formulas instead (te0038: the exact tube
+section, an elbow's centre of gravity off its chord).
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ import numpy as np
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.fem.assemble import assemble_blocks, build_numbering_dofs
 from asterlite.fem.elements import element_blocks
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_rigid_inertia
 from asterlite.fem.solid_loads import solid_cells, solid_inertia
 
 _TRANS = ("DX", "DY", "DZ")
@@ -53,6 +56,11 @@ def mass_properties(model, characteristics=None, materials=None, cells=None) -> 
     rigid = solid_inertia(model, materials, solid) if len(solid) else np.zeros((6, 6))
     pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
     others = sorted({int(c) for c in pool} - set(solid.tolist()))
+    # pipes: code_aster's own formulas of their mass, centre and inertia
+    pipes = [c for c in others if model.cell_modelisation.get(c) in PIPE_MODELISATIONS]
+    if pipes:
+        rigid = rigid + pipe_rigid_inertia(model, characteristics, materials, pipes)
+        others = [c for c in others if c not in set(pipes)]
     if others:
         numbering = DofNumbering(
             mesh=model.mesh, dofs=build_numbering_dofs(model.node_components())

@@ -4,8 +4,9 @@ OPTION='SEG3_4').
 LINE_QUAD turns linear cells into their quadratic serendipity twins with a
 node in the middle of each edge, shared by the cells around the edge, in
 code_aster's node order (vertices, then the edge midpoints in the order of
-its reference element). SEG3_4 turns a SEG3 into a SEG4 with nodes at the
-thirds of its (quadratic) curve, as the pipe elements want. New nodes take
+its reference element). SEG3_4 turns a SEG3 into a SEG4 as code_aster does:
+its middle node moves to a third of the arc through its nodes (of its chord
+when straight) and a new node takes the other third. New nodes take
 code_aster 17's positional names ``N<i>`` (LINE_QUAD of a code_aster 15 deck:
 that version's ``NS1``, ``NS2``...); node groups keep their nodes.
 """
@@ -115,20 +116,51 @@ def line_quad(mesh, cells, prefix: tuple[str, int] | None = None) -> int:
     return len(new.names)
 
 
+class MeshDegreeError(ValueError):
+    """A cell that cannot be changed (SEG3_4 of a SEG3 whose middle node is
+    not halfway)."""
+
+
+def _arc_thirds(xa, xb, xm):
+    """Points at a third and two thirds of the arc through xa, xm, xb (its
+    chord's thirds when straight), as code_aster's cmmoma."""
+    t1, t2 = xm - xa, xb - xm
+    n1, n2 = np.linalg.norm(t1), np.linalg.norm(t2)
+    if abs(n2 - n1) > 1e-4 * n1:
+        raise MeshDegreeError("its middle node is not halfway between its ends")
+    normal = np.cross(t2 / n2, t1 / n1)
+    sine = np.linalg.norm(normal)
+    if sine <= 1e-4 * n1:
+        return xa + (xb - xa) / 3.0, xa + 2.0 * (xb - xa) / 3.0
+    theta = 2.0 * np.arctan2(sine, np.dot(t1 / n1, t2 / n2))
+    # the centre on the perpendicular bisector through the middle node, the
+    # thirds at theta/6 on either side of the bisector (cmmoma's construction)
+    c2, c6 = np.cos(theta / 2.0), np.cos(theta / 6.0)
+    ratio = np.tan(theta / 6.0) / np.tan(theta / 2.0)
+    chord_middle = (xa + xb) / 2.0
+    to_centre = (chord_middle - xm) * c2 / (1.0 - c2)
+    centre = chord_middle + to_centre
+    first = centre + ((xa - chord_middle) * ratio - to_centre) * c6 / c2
+    second = centre + ((xb - chord_middle) * ratio - to_centre) * c6 / c2
+    return first, second
+
+
 def seg3_to_seg4(mesh, cells) -> int:
-    """SEG3 cells (ends, middle) -> SEG4 (ends, then the points at xi = -1/3
-    and +1/3 of the SEG3's parabola). Returns the number of nodes added."""
+    """SEG3 cells (ends, middle) -> SEG4 as code_aster's MODI_MAILLE
+    SEG3_4: the middle node moves to a third of the cell, a new node takes
+    the other third (of the arc through the three nodes, or of the chord when
+    they are aligned). Returns the number of nodes added."""
     new = _NewNodes(mesh)
     for cell in np.asarray(cells, dtype=int):
         if mesh.cell_types[cell] != "SEG3":
             continue
         a, b, m = mesh.cell_nodes[cell][:3]
-        xa, xb, xm = mesh.coords[a], mesh.coords[b], mesh.coords[m]
-        thirds = []
-        for xi in (-1.0 / 3.0, 1.0 / 3.0):
-            point = xi * (xi - 1) / 2 * xa + xi * (xi + 1) / 2 * xb + (1 - xi * xi) * xm
-            thirds.append(new.add(point))
+        try:
+            first, second = _arc_thirds(mesh.coords[a], mesh.coords[b], mesh.coords[m])
+        except MeshDegreeError as exc:
+            raise MeshDegreeError(f"SEG3_4 of cell {mesh.cell_names[cell]}: {exc}") from None
+        mesh.coords[m] = first
         mesh.cell_types[cell] = "SEG4"
-        mesh.cell_nodes[cell] = (a, b, *thirds)
+        mesh.cell_nodes[cell] = (a, b, m, new.add(second))
     new.commit()
     return len(new.names)

@@ -10,7 +10,10 @@ gives the global-frame :class:`ElementBlock` list of one option:
   (:mod:`asterlite.fem.gyro`); non-symmetric;
 - ``RIGI_MECA_HYST``: the complex stiffness ``K_e (1 + i eta)`` with ``eta``
   the ``AMOR_HYST`` of the discrete characteristic (``AFFE_CARA_ELEM``) for
-  discrete elements, of the material (``DEFI_MATERIAU/ELAS``) for the others.
+  discrete elements, of the material (``DEFI_MATERIAU/ELAS``) for the others;
+  on cells of a viscoelastic material (``ELAS_VISCO``, 3D and plane solids)
+  ``B^T D B`` with the complex Hooke matrix D of its complex G and NU, whose
+  real part is RIGI_MECA (code_aster's te0050, te0230).
 """
 
 from __future__ import annotations
@@ -21,7 +24,7 @@ import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam, gyro
-from asterlite.fem.beam_elements import cell_angles
+from asterlite.fem.beam import cell_angles
 from asterlite.fem.discrete import local_matrix, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
 from asterlite.fem.elements import ElementError, cell_frames, element_blocks
@@ -75,8 +78,7 @@ def _beam_gyro_blocks(model, characteristics, materials, cells, option) -> list[
     if np.any(np.isnan(density)):
         raise ElementError(f"{option} of beams needs RHO in the material (ELAS)")
     poisson = materials.values(cells, "NU", 0.0)
-    conn = np.array([mesh.cell_nodes[c] for c in cells], dtype=int).reshape(-1, 2)
-    lengths = beam.segment_lengths(mesh.coords[conn[:, 0]], mesh.coords[conn[:, 1]])
+    conn, lengths = beam.segment_cells(mesh, cells)
     if np.any(lengths <= 0.0):
         raise ElementError(f"{option}: beam element of zero length")
     euler = np.array([model.cell_modelisation[int(c)] == "POU_D_E" for c in cells])
@@ -161,13 +163,45 @@ def hysteretic_coefficients(model, characteristics, materials, cells) -> np.ndar
     return out
 
 
+def viscoelastic_cells(materials, cells) -> np.ndarray:
+    """The mask of ``cells`` whose material is viscoelastic (ELAS_VISCO)."""
+    if materials is None:
+        return np.zeros(len(cells), dtype=bool)
+    return np.array(
+        [
+            (material := materials.material_of(int(c))) is not None
+            and material.viscoelastic is not None
+            for c in cells
+        ],
+        dtype=bool,
+    )
+
+
 def hysteretic_blocks(model, characteristics, materials=None, cells=None) -> list[ElementBlock]:
-    """RIGI_MECA_HYST: complex element stiffnesses ``K_e (1 + i eta_e)``."""
+    """RIGI_MECA_HYST: complex element stiffnesses ``K_e (1 + i eta_e)``, or
+    of the complex Hooke matrix on viscoelastic cells."""
     members = np.array(
         sorted(c for group in _model_cells(model, cells).values() for c in group), dtype=int
     )
-    eta = hysteretic_coefficients(model, characteristics, materials, members)
+    # discrete elements read no material: their AMOR_HYST is the characteristic's
+    visco = viscoelastic_cells(materials, members) & np.array(
+        [model.cell_modelisation[int(c)] not in DISCRETE_MODELISATIONS for c in members],
+        dtype=bool,
+    )
     blocks = []
+    if np.any(visco):
+        blocks.extend(
+            element_blocks(
+                model,
+                characteristics,
+                "K",
+                materials=materials,
+                cells=members[visco],
+                complex_stiffness=True,
+            )
+        )
+        members = members[~visco]
+    eta = hysteretic_coefficients(model, characteristics, materials, members)
     for value in np.unique(eta):
         group = members[eta == value]
         for block in element_blocks(model, characteristics, "K", materials=materials, cells=group):

@@ -16,6 +16,10 @@ plane stress and the hoop strain ``u_r / r`` in axisymmetry.
   mass is refused;
 - damping ``C = AMOR_ALPHA K + AMOR_BETA M`` (Rayleigh, per element).
 
+A viscoelastic material (ELAS_VISCO) gives a complex D: RIGI_MECA takes
+the real part of K, RIGI_MECA_HYST (``complex_stiffness``) the whole of it
+(code_aster's te0230).
+
 Edge cells (SEG2, SEG3) carried by these modelisations take loads only.
 """
 
@@ -79,10 +83,11 @@ def plane_coordinates(mesh, conn: np.ndarray) -> np.ndarray:
 
 
 def elasticity(modelisation: str, young, poisson) -> np.ndarray:
-    """(e, 4, 4) elasticity on (xx, yy, zz, engineering xy)."""
-    young = np.asarray(young, dtype=float)
-    poisson = np.asarray(poisson, dtype=float)
-    d = np.zeros((len(young), 4, 4))
+    """(e, 4, 4) elasticity on (xx, yy, zz, engineering xy), complex for
+    complex moduli."""
+    young = np.asarray(young)
+    poisson = np.asarray(poisson)
+    d = np.zeros((len(young), 4, 4), dtype=np.result_type(young, poisson, float))
     if modelisation == "C_PLAN":
         c = young / (1.0 - poisson**2)
         d[:, 0, 0] = d[:, 1, 1] = c
@@ -139,14 +144,22 @@ def mass(modelisation: str, coords, kind: CellKind, density) -> np.ndarray:
 
 
 def material_values(materials, cells, mesh, modelisation: str, need_density: bool):
-    return elastic_values(materials, cells, mesh, modelisation, need_density)
+    return elastic_values(materials, cells, mesh, modelisation, need_density, viscoelastic=True)
 
 
 def plane_blocks(
-    model, characteristics, matrix, cells, materials=None, lumped=False, **_options
+    model,
+    characteristics,
+    matrix,
+    cells,
+    materials=None,
+    lumped=False,
+    complex_stiffness=False,
+    **_options,
 ) -> list[ElementBlock]:
     """Global-frame K, M or A matrices of the plane cells among ``cells``
-    (one modelisation: element_blocks groups cells by modelisation)."""
+    (one modelisation: element_blocks groups cells by modelisation);
+    ``complex_stiffness``: K with the imaginary part of viscoelastic materials."""
     if matrix not in ("K", "M", "A"):
         raise ElementError(f"unknown element matrix {matrix!r}")
     mesh = model.mesh
@@ -167,6 +180,8 @@ def plane_blocks(
         try:
             if matrix == "K":
                 mats = stiffness(modelisation, coords, kind, props["E"], props["NU"])
+                if np.iscomplexobj(mats) and not complex_stiffness:
+                    mats = mats.real
             elif matrix == "M":
                 mats = mass(modelisation, coords, kind, props["RHO"])
             else:
@@ -174,7 +189,7 @@ def plane_blocks(
                 mats = np.zeros((len(members), 2 * conn.shape[1], 2 * conn.shape[1]))
                 if np.any(alpha):
                     k = stiffness(modelisation, coords, kind, props["E"], props["NU"])
-                    mats += alpha[:, None, None] * k
+                    mats += alpha[:, None, None] * k.real
                 if np.any(beta):
                     mats += beta[:, None, None] * mass(
                         modelisation, coords, kind, np.nan_to_num(props["RHO"])

@@ -6,7 +6,9 @@ gradients at the Gauss points of the family code_aster uses
 point in one einsum, then
 
 - stiffness ``K = sum_g w_g |J| B^T D B`` on the ``RIGI`` family, D the
-  isotropic elasticity of the cell's material (E, NU);
+  isotropic elasticity of the cell's material (E, NU); a viscoelastic
+  material (ELAS_VISCO) has a complex D: RIGI_MECA takes its real part,
+  RIGI_MECA_HYST (``complex_stiffness``) the whole, as code_aster's te0050;
 - mass ``M = sum_g w_g |J| rho N N^T`` (one block per direction) on the
   ``MASS`` family; ``MASS_MECA_DIAG`` scales its diagonal so that the element
   mass is kept (code_aster's diagonal lumping);
@@ -61,18 +63,19 @@ def jacobians(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
 
 
 def _check_material(materials, cells, mesh, need_density: bool) -> dict[str, np.ndarray]:
-    return elastic_values(materials, cells, mesh, "3D", need_density)
+    return elastic_values(materials, cells, mesh, "3D", need_density, viscoelastic=True)
 
 
 def stiffness_matrices(
     coords, reference: str, family: str, young, poisson, mesh=None, cells=None
 ) -> np.ndarray:
     """(e, 3n, 3n) isotropic elastic stiffness, DOFs node by node (DX DY DZ);
+    complex when ``young`` and ``poisson`` are (a viscoelastic material);
     ``mesh`` and ``cells`` name a degenerate cell in the error."""
     _, grads, weights = tabulated(reference, family)
     g, det = jacobians(coords, grads, mesh, cells)
-    young = np.asarray(young, dtype=float)
-    poisson = np.asarray(poisson, dtype=float)
+    young = np.asarray(young)
+    poisson = np.asarray(poisson)
     lam = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson))
     mu = young / (2.0 * (1.0 + poisson))
     e, q, n, _ = g.shape
@@ -119,9 +122,17 @@ def lump(scalar: np.ndarray) -> np.ndarray:
 
 
 def solid_blocks(
-    model, characteristics, matrix, cells, materials=None, lumped=False, **_options
+    model,
+    characteristics,
+    matrix,
+    cells,
+    materials=None,
+    lumped=False,
+    complex_stiffness=False,
+    **_options,
 ) -> list[ElementBlock]:
-    """Global-frame K, M or A matrices of the 3D volume cells among ``cells``."""
+    """Global-frame K, M or A matrices of the 3D volume cells among ``cells``;
+    ``complex_stiffness``: K with the imaginary part of viscoelastic materials."""
     if matrix not in ("K", "M", "A"):
         raise ElementError(f"unknown element matrix {matrix!r}")
     mesh = model.mesh
@@ -133,6 +144,8 @@ def solid_blocks(
         props = _check_material(materials, members, mesh, need_density=matrix != "K")
         try:
             mats = _matrices(matrix, spec, coords, props, lumped, (mesh, members))
+            if np.iscomplexobj(mats) and not complex_stiffness:
+                mats = mats.real
         except ElementError as exc:
             raise ElementError(f"{kind} cells: {exc}") from None
         blocks.append(ElementBlock(nodes=conn, components=COMPONENTS, matrices=mats))
@@ -157,7 +170,7 @@ def _matrices(matrix, spec, coords, props, lumped, where) -> np.ndarray:
     n = coords.shape[1] * 3
     out = np.zeros((len(coords), n, n))
     if np.any(alpha):
-        out += alpha[:, None, None] * stiffness()
+        out += alpha[:, None, None] * stiffness().real
     if np.any(beta):
         out += beta[:, None, None] * mass()
     return out

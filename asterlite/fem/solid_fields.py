@@ -177,6 +177,10 @@ def _components(tensor, n_components):
     return np.stack([tensor[..., i, j] for i, j in _ENTRIES[:n_components]], axis=-1)
 
 
+#: orders of a result computed at once (bounds the work arrays)
+ORDER_CHUNK = 8
+
+
 def solid_element_fields(
     model, materials, numbering, cells, values, names, velocities=None, omega2=None
 ) -> dict[str, ElementField]:
@@ -220,21 +224,33 @@ def solid_element_fields(
         conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int)
         coords = mesh.coords[conn][..., :dim]
         young, poisson, density = _material(materials, members, mesh)
-        u = _gather(numbering, conn, dim, values)
-        eps, scale = _strains(modelisation, spec, coords, u, poisson)
-        sig = _stresses(modelisation, eps, young, poisson)
-        q = scale.shape[1]
-        density_of_energy = 0.5 * np.einsum("oeqij,oeqij->oeq", sig, eps)
-        gauss["SIEF_ELGA"][:, rows, :q] = _components(sig, n_cmp)
-        gauss["EPSI_ELGA"][:, rows, :q] = _components(eps, n_cmp)
-        gauss["ENEL_ELGA"][:, rows, :q] = density_of_energy[..., None]
-        elem["EPOT_ELEM"][:, rows, 0, 0] = np.einsum("oeq,eq->oe", density_of_energy, scale)
-        if "ECIN_ELEM" in names:
-            motion = (numbering, conn, dim, values, velocities, omega2)
-            elem["ECIN_ELEM"][:, rows, 0, 0] = _kinetic(
-                modelisation, spec, coords, density, *motion
-            )
         to_nodes = gauss_to_nodes(spec.reference, spec.rigi)
+        # a few orders at a time: the (orders, cells, points, 3, 3) tensors of
+        # a long transient would otherwise be held all at once, several times
+        for start in range(0, n_orders, ORDER_CHUNK):
+            o = slice(start, min(start + ORDER_CHUNK, n_orders))
+            u = _gather(numbering, conn, dim, values[o])
+            eps, scale = _strains(modelisation, spec, coords, u, poisson)
+            sig = _stresses(modelisation, eps, young, poisson)
+            q = scale.shape[1]
+            density_of_energy = 0.5 * np.einsum("oeqij,oeqij->oeq", sig, eps)
+            gauss["SIEF_ELGA"][o, rows, :q] = _components(sig, n_cmp)
+            gauss["EPSI_ELGA"][o, rows, :q] = _components(eps, n_cmp)
+            gauss["ENEL_ELGA"][o, rows, :q] = density_of_energy[..., None]
+            elem["EPOT_ELEM"][o, rows, 0, 0] = np.einsum("oeq,eq->oe", density_of_energy, scale)
+            del u, eps, sig, density_of_energy
+            if "ECIN_ELEM" in names:
+                motion = (
+                    numbering,
+                    conn,
+                    dim,
+                    values[o],
+                    None if velocities is None else np.asarray(velocities)[o],
+                    None if omega2 is None else np.asarray(omega2)[o],
+                )
+                elem["ECIN_ELEM"][o, rows, 0, 0] = _kinetic(
+                    modelisation, spec, coords, density, *motion
+                )
         for name, source in _ELNO_SOURCE.items():
             if name not in names:
                 continue
@@ -242,6 +258,7 @@ def solid_element_fields(
                 width = gauss[source].shape[-1]
                 nodal[name] = np.full((n_orders, len(cells), max_nodes, width), np.nan, dtype)
             n = to_nodes.shape[0]
+            q = to_nodes.shape[1]
             taken = np.einsum("nq,oeqc->oenc", to_nodes, gauss[source][:, rows, :q])
             nodal[name][:, rows, :n] = taken
     components = {

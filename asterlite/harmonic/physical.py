@@ -9,16 +9,18 @@ the loads given to the matrices) are eliminated as for the real problems
 
 code_aster dualises the same relations with Lagrange multipliers, whose
 right-hand side is zero unless an EXCIT CHARGE imposes values: the relations
-are homogeneous here (the command refuses imposed values it cannot carry).
+are homogeneous here, the values an EXCIT CHARGE imposes (constant or
+functions of FREQ) being lifted into the right-hand side by the command.
 The reduced matrices share one sparsity pattern, computed once; each
 frequency combines their values and factorises them. Symmetric matrices
 (the usual K, M, C) use a sparse LDLᵀ whose ordering and symbolic analysis
 are done once for the sweep (:mod:`asterlite.harmonic.ldl`: the fill-reducing
-ordering is the lesser-fill of reverse Cuthill-McKee and SuperLU's minimum
-degree on AᵀA + A); its solution is accepted when its backward error is
-that of a stable solve, after one step of iterative refinement if needed,
-else that frequency (and non-symmetric matrices, e.g. gyroscopic damping)
-is factorised by SuperLU with partial pivoting (``scipy.sparse.linalg.splu``).
+ordering is the least-fill of reverse Cuthill-McKee and SuperLU's minimum
+degree on AᵀA + A and COLAMD orderings, read without a complete LU); its
+solution is accepted when its backward error is that of a stable solve,
+after one step of iterative refinement if needed, else that frequency (and
+non-symmetric matrices, e.g. gyroscopic damping) is factorised by SuperLU
+with partial pivoting (``scipy.sparse.linalg.splu``).
 """
 
 from __future__ import annotations
@@ -29,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import reverse_cuthill_mckee
-from scipy.sparse.linalg import splu
+from scipy.sparse.linalg import spilu, splu
 
 from asterlite.fem.constraints import Elimination
 from asterlite.harmonic import ldl
@@ -41,6 +43,9 @@ BACKWARD_TOLERANCE = 1.0e-13
 # smaller systems go to SuperLU directly: loading the LDLT kernels and
 # choosing an ordering (~0.2 s) would cost more than the sweep
 LDL_MIN_SIZE = 1000
+# LDLᵀ fill (factor terms) past which SuperLU's partial-pivoting LU is not
+# timed against it: its fill on 3D solid meshes is many times LDLᵀ's
+SUPERLU_MAX_FILL = 2_000_000
 
 
 @dataclass
@@ -157,12 +162,33 @@ def prepare(elimination: Elimination, stiffness, mass, damping=None) -> Physical
     return PhysicalSweep(elimination, aligned_pencil(*matrices), symmetric)
 
 
+def _column_ordering(matrix, spec: str) -> np.ndarray | None:
+    """SuperLU's column ordering ``spec`` of the matrix's pattern, read from
+    an incomplete factorisation that drops nearly every term: the ordering
+    is computed before any elimination, and the ILU costs a fraction of a
+    second where a complete LU of a 3D solid model takes minutes."""
+    try:
+        lu = spilu(
+            matrix,
+            drop_tol=0.9,
+            fill_factor=1.0,
+            permc_spec=spec,
+            diag_pivot_thresh=0.0,
+            options={"SymmetricMode": True},
+        )
+    except RuntimeError:
+        return None
+    return np.argsort(lu.perm_c)
+
+
 def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
     """The LDLᵀ analysis of the pencil's pattern under the fill-reducing
     ordering of least fill: reverse Cuthill-McKee (banded models: beam
     lines), SuperLU's minimum degree on AᵀA + A or its COLAMD column order
-    (two- and three-dimensional meshes), these read from factorisations at
-    the first frequency (the COLAMD one timed against LDLᵀ)."""
+    (two- and three-dimensional meshes). SuperLU's complete factorisation is
+    timed against LDLᵀ at the first frequency when the fill is small enough
+    for it to compete; past ``SUPERLU_MAX_FILL`` LDLᵀ factorises every
+    frequency."""
 
     pencil = sweep.pencil
     pattern = sp.csr_matrix(
@@ -172,31 +198,23 @@ def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
     sweep.timings = {}
     ldl.warm()
     matrix = pencil.at(frequency)
-    try:
-        # the minimum degree ordering on AᵀA + A, read from a factorisation
-        # on the diagonal (SymmetricMode: partial pivoting would ruin its fill)
-        lu = splu(
-            matrix,
-            permc_spec="MMD_AT_PLUS_A",
-            diag_pivot_thresh=0.0,
-            options={"SymmetricMode": True},
-        )
-        candidates.append(np.argsort(lu.perm_c))
-    except RuntimeError:
-        pass
-    try:
-        started = time.perf_counter()  # the factorisation the fallback makes
-        lu = splu(matrix)
-        sweep.timings["superlu"] = time.perf_counter() - started
-        candidates.append(np.argsort(lu.perm_c))
-    except RuntimeError:
-        pass
+    for spec in ("MMD_AT_PLUS_A", "COLAMD"):
+        permutation = _column_ordering(matrix, spec)
+        if permutation is not None:
+            candidates.append(permutation)
     best = None
     for permutation in candidates:
         limit = None if best is None else best.fill
         found = ldl.analyse(pencil.indptr, pencil.indices, pencil.n, permutation, limit)
         if found is not None and (best is None or found.fill < best.fill):
             best = found
+    if best is not None and best.fill <= SUPERLU_MAX_FILL:
+        try:
+            started = time.perf_counter()  # the factorisation the fallback makes
+            splu(matrix)
+            sweep.timings["superlu"] = time.perf_counter() - started
+        except RuntimeError:
+            pass
     return best
 
 
@@ -244,22 +262,28 @@ def solve(
     vectors: np.ndarray,
     coefficients: np.ndarray,
     progress=None,
+    per_frequency: np.ndarray | None = None,
 ) -> tuple[np.ndarray, dict]:
     """Amplitudes u (n_freq, n_dofs) on the numbering's DOFs.
 
     ``vectors`` (n_loads, n_dofs): the load vectors; ``coefficients``
-    (n_freq, n_loads): their complex multipliers at each frequency.
+    (n_freq, n_loads): their complex multipliers at each frequency;
+    ``per_frequency`` (n_freq, n_dofs): forces added at each frequency.
     ``progress(k)`` is called after each frequency when given.
     """
     f = np.atleast_1d(np.asarray(frequencies, dtype=float))
     vectors = np.atleast_2d(np.asarray(vectors))
-    reduced = sweep.reduce(vectors.T).T  # (n_loads, n_free)
+    # complex and contiguous once: each frequency's product is then a plain gemv
+    reduced = np.ascontiguousarray(sweep.reduce(vectors.T).T, dtype=complex)
+    coefficients = np.asarray(coefficients, dtype=complex)
     t_matrix = sweep.elimination.T
     out = np.empty((f.size, sweep.n_dofs), dtype=complex)
     started = time.perf_counter()
     counts = {"ldl": 0, "refined": 0, "superlu": 0}
     for k, frequency in enumerate(f):
-        rhs = np.ascontiguousarray(coefficients[k] @ reduced, dtype=complex)
+        rhs = np.ascontiguousarray(coefficients[k] @ reduced)
+        if per_frequency is not None:
+            rhs = rhs + sweep.reduce(np.asarray(per_frequency[k], dtype=complex))
         q = _solve_one(sweep, float(frequency), rhs, counts)
         if not np.all(np.isfinite(q)):
             raise SingularSystem(float(frequency))
@@ -271,3 +295,21 @@ def solve(
         info["fill"] = sweep.analysis.fill
         info["timings"] = dict(sweep.timings or {})
     return out, info
+
+
+def constraint_reactions(
+    rows: np.ndarray, depl: np.ndarray, forces: np.ndarray, frequencies, stiffness, mass, damping
+) -> np.ndarray:
+    """F - (K + iωC - ω²M) u on the DOFs ``rows`` (n_freq, n_rows): the
+    reactions of the constraints acting there, which code_aster's dualised
+    solve holds in its Lagrange multipliers (asterlite.fem.lagrange_layout).
+    ``forces`` (n_freq, n_rows) are the loads applied on those DOFs; the
+    coefficients follow comdlh's dynamic matrix (-omega2(f), iω)."""
+    f = np.asarray(frequencies, dtype=float)
+    states = np.asarray(depl).T  # (n_dofs, n_freq)
+    response = (sp.csr_matrix(stiffness)[rows] @ states).T
+    response = response - omega2(f)[:, None] * (sp.csr_matrix(mass)[rows] @ states).T
+    if damping is not None:
+        velocity = (sp.csr_matrix(damping)[rows] @ states).T
+        response = response + (1j * TWO_PI * f)[:, None] * velocity
+    return np.asarray(forces) - response

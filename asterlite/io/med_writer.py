@@ -65,6 +65,22 @@ def _medcoupling():
     return medcoupling
 
 
+def complex_part(values, part: str) -> np.ndarray:
+    """IMPR_RESU's PARTIE of a field's values, as code_aster writes them (its
+    ircmva): REEL, IMAG, MODULE or PHASE (degrees, atan2); a real field has a
+    zero imaginary part and a phase of 0 or 180."""
+    values = np.asarray(values)
+    if part == "REEL":
+        return np.array(values.real, dtype=float)
+    if part == "IMAG":
+        return np.array(values.imag, dtype=float)
+    if part == "MODULE":
+        return np.abs(values).astype(float)
+    if part == "PHASE":
+        return np.degrees(np.arctan2(values.imag, values.real)).astype(float)
+    raise ValueError(part)
+
+
 @dataclass
 class NodalSeries:
     """A nodal field at a sequence of steps, ready for MED.
@@ -116,10 +132,12 @@ def dofs_to_nodal(numbering, values, nodes=None, components=()) -> tuple:
     n_components): the nodes carrying DOFs (restricted to ``nodes`` when
     given, in that order), the components present (restricted to
     ``components`` when given, in the given order; else code_aster's
-    order), and zero where a node lacks a component.
+    order), and zero where a node lacks a component. Complex values (a
+    harmonic result's) stay complex.
     """
 
-    values = np.atleast_2d(np.asarray(values, dtype=float))
+    values = np.atleast_2d(np.asarray(values))
+    values = values.astype(complex if np.iscomplexobj(values) else float, copy=False)
     dof_nodes = np.array([n for n, _ in numbering.dofs], dtype=int)
     dof_comps = [c for _, c in numbering.dofs]
     if components:
@@ -133,7 +151,7 @@ def dofs_to_nodal(numbering, values, nodes=None, components=()) -> tuple:
         chosen = np.array([int(n) for n in nodes if int(n) in carried], dtype=int)
     node_pos = {int(n): k for k, n in enumerate(chosen)}
     comp_pos = {c: k for k, c in enumerate(comps)}
-    out = np.zeros((values.shape[0], len(chosen), len(comps)))
+    out = np.zeros((values.shape[0], len(chosen), len(comps)), dtype=values.dtype)
     for dof, (node, comp) in enumerate(numbering.dofs):
         k, j = node_pos.get(node), comp_pos.get(comp)
         if k is not None and j is not None:

@@ -54,6 +54,7 @@ from typing import Any
 import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
+from asterlite.concepts.harmonic import DynaHarmo
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.modes import ModeResult, MultElasResult
 from asterlite.concepts.table import Table
@@ -111,7 +112,7 @@ def is_physical_result(result) -> bool:
 
 
 def result_steps(result) -> ResultSteps:
-    """Stored steps of a DynaTrans, ModeResult or MultElasResult."""
+    """Stored steps of a DynaTrans, ModeResult, MultElasResult or DynaHarmo."""
     if isinstance(result, DynaTrans):
         return ResultSteps(np.asarray(result.order, dtype=int), times=np.asarray(result.times))
     if isinstance(result, ModeResult):
@@ -124,6 +125,11 @@ def result_steps(result) -> ResultSteps:
     if isinstance(result, MultElasResult):
         names = list(result.case_names) or [str(k + 1) for k in range(result.n_cases)]
         return ResultSteps(np.arange(1, result.n_cases + 1), case_names=names)
+    if isinstance(result, DynaHarmo):
+        return ResultSteps(
+            np.asarray(result.order, dtype=int),
+            frequencies=np.asarray(result.frequencies, dtype=float),
+        )
     raise TypeError(f"no stored steps in a {type(result).__name__}")
 
 
@@ -201,6 +207,8 @@ def _dof_fields(result) -> dict[str, np.ndarray]:
         return {"DEPL": np.asarray(result.shapes).T}
     if isinstance(result, MultElasResult):
         return {"DEPL": np.asarray(result.fields).T}
+    if isinstance(result, DynaHarmo):
+        return dict(result.fields)  # complex
     return {}
 
 

@@ -304,6 +304,8 @@ class ExpressionEvaluation:
                 return Unknown
             if policy == DEEP and contains_unknown(values, DEEP_SCAN_BUDGET):
                 return Unknown
+        if getattr(callee, "__module__", None) == "math":
+            args = [_scalar_of_size_one(a) for a in args]
         return callee(*args, **kwargs)
 
     def _unknown_policy(self, callee) -> str:
@@ -350,3 +352,12 @@ class ExpressionEvaluation:
             else:
                 args.append(self.ev(argument, frame))
         return args, kwargs, keyword_locations, spread_unknown
+
+
+def _scalar_of_size_one(value):
+    """A one-element numpy array as its scalar, for the math module's
+    functions: numpy 1 (code_aster's) converts such arrays to floats, numpy 2
+    refuses them; decks written for code_aster rely on it."""
+    if type(value).__name__ == "ndarray" and getattr(value, "size", 0) == 1:
+        return value.item()
+    return value

@@ -211,7 +211,7 @@ nanmax nanmin nanargmax nanargmin nansum nanmean
 mean average std var median percentile interp reshape transpose ravel flip fliplr flipud roll
 squeeze expand_dims atleast_1d atleast_2d clip any all isnan isinf isfinite nan_to_num
 radians degrees deg2rad rad2deg polyfit polyval trapezoid trapz copy take shape size ndim
-real imag conj angle logical_and logical_or logical_not logical_xor meshgrid convolve
+real imag conj conjugate angle logical_and logical_or logical_not logical_xor meshgrid convolve
 floor_divide true_divide multiply add subtract divide negative reciprocal
 """.split()
 NUMPY_CONSTANTS = "pi e inf nan newaxis".split()

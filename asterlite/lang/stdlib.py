@@ -8,7 +8,8 @@ which read no file; ``exists``, ``isfile`` and ``isdir`` answer only for a
 plain file name of the run's output folder (``fort.50``: what the deck
 wrote there), and refuse any other path: a deck learns nothing of the files
 outside its run. ``os.sep``, ``os.pathsep``, ``os.linesep``, ``os.curdir``
-are given; everything else of ``os`` (``system``, ``environ``, ``getcwd``,
+are given; ``os.system`` runs the few file commands of ``lang.shell`` in the
+output folder; everything else of ``os`` (``environ``, ``getcwd``,
 ``remove``...) is refused by name.
 """
 
@@ -127,17 +128,34 @@ def _file_test(name: str, test, output_folder: Callable[[], Path | None]):
     return file_test
 
 
-def os_module(output_folder: Callable[[], Path | None], limits: Limits) -> DeckModule:
-    """``os``: its ``path`` and a few constants; the rest refused by name."""
+def os_module(
+    output_folder: Callable[[], Path | None],
+    limits: Limits,
+    say: Callable[[str], None] | None = None,
+) -> DeckModule:
+    """``os``: its ``path``, a few constants and ``system`` (``lang.shell``,
+    its output given to ``say``); the rest refused by name."""
+    from asterlite.lang import shell
+
     path = os_path_module(output_folder, limits)
     members = {"path": path, "sep": "/", "pathsep": ":", "linesep": "\n", "curdir": "."}
     members["extsep"] = "."
+
+    def system(command):
+        return shell.run(command, output_folder, say or _silent, limits.max_string_length)
+
+    members["system"] = system
     return RefusingModule(
         "os",
         members,
-        "decks reach no process, environment or file system through os "
-        "(os.path's string functions and os.sep are available)",
+        "decks reach no process or environment through os, and files of the run's "
+        "output folder only through os.path's tests and os.system's "
+        f"{', '.join(shell.COMMANDS)}",
     )
+
+
+def _silent(text: str) -> None:
+    pass
 
 
 # ------------------------------------------------------------------- open

@@ -32,7 +32,6 @@ REMOVED_AFTER_15 = (
     # test-case identification: code_aster 17 takes CODE='OUI' (and reads a mapping as it)
     ("DEBUT", "CODE", "NIV_PUB_WEB"),
     ("POURSUITE", "CODE", "NIV_PUB_WEB"),
-    ("CALC_CHAMP", "PARALLELISME_TEMPS"),
     ("DYNA_VIBRA", "COMPORTEMENT", "FNOR_CRIT"),
     ("DYNA_VIBRA", "COMPORTEMENT", "FNOR_POST_FL"),
 )

@@ -222,18 +222,26 @@ def session_version(session) -> int:
 
 # ------------------------------------------------------------ what a version meant
 
-# versions whose tables named mesh nodes (code_aster 17 writes their 1-based number,
-# its meshes keeping no node names). Read from the decks of each era, which filter
-# POST_DYNA_MODA_T's tables on NOEUD='NO1': code_aster 10-11 (ralic/Code_Aster at
-# 427e130c, sdnd101a), 11.4/12 (its 2013 sdnd101a, DYNA_VIBRA with CHOC) and 15
+# the first version whose meshes read from files keep no node or cell names
+# (code_aster 15's lrmast stored them in the mesh, 17's only while reading): its
+# tables give a node's 1-based number and N<i>/M<i> name positions (char8_to_int)
+MESH_NAMES_DROPPED = 16
+# versions whose tables named mesh nodes. Read from the decks of each era, which
+# filter POST_DYNA_MODA_T's tables on NOEUD='NO1': code_aster 10-11 (ralic/Code_Aster
+# at 427e130c, sdnd101a), 11.4/12 (its 2013 sdnd101a, DYNA_VIBRA with CHOC) and 15
 # (ehmoussi/code_aster). Versions 13-14 sit between two that named them.
 # `asterlite port` turns such filters into node numbers (asterlite.legacy.port).
-NODE_NAMES_IN_TABLES = tuple(range(10, 16))
+NODE_NAMES_IN_TABLES = tuple(range(10, MESH_NAMES_DROPPED))
 
 
 def tables_name_nodes(session) -> bool:
     """True when the run's tables give nodes by name (code_aster 15 decks)."""
     return session is not None and session_version(session) in NODE_NAMES_IN_TABLES
+
+
+def meshes_keep_names(session) -> bool:
+    """True when a mesh read from a file keeps its node and cell names."""
+    return session_version(session) < MESH_NAMES_DROPPED
 
 
 # ------------------------------------------------------------ what port cannot write

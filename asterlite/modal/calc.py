@@ -29,7 +29,7 @@ def constrained_pencil(stiffness: AssembledMatrix, mass: AssembledMatrix) -> Red
     """Eliminate the numbering's relations (homogeneous: imposed values do
     not enter an eigenproblem) and reduce K and M."""
     numbering = stiffness.numbering
-    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)  # b unused: eigenproblem
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True, rhs_in_frequency=True)  # b unused
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
     return ReducedPencil(stiffness.matrix, mass.matrix, elimination)
 
@@ -255,10 +255,16 @@ def apply_complex_norm(modes: ComplexModeResult, norme: str, stiffness=None, mas
 def complex_pencil(stiffness, mass, damping=None) -> quadratic.QuadraticPencil:
     """The quadratic problem reduced on the numbering's relations."""
     numbering = stiffness.numbering
-    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True)  # b unused: eigenproblem
+    b_matrix, _ = numbering.constraint_matrix(rhs_in_time=True, rhs_in_frequency=True)  # b unused
     elimination = eliminate(b_matrix, np.zeros(b_matrix.shape[0]), numbering.n_dofs)
     c = damping.matrix if damping is not None else None
     return quadratic.QuadraticPencil(stiffness.matrix, c, mass.matrix, elimination)
+
+
+def _stiffness_only(stiffness, damping) -> bool:
+    """A complex stiffness without damping matrix: code_aster's generalized
+    (not quadratic) problem, whose FREQ is |λ|/2π."""
+    return damping is None and np.issubdtype(stiffness.matrix.dtype, np.complexfloating)
 
 
 def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> ComplexModeResult:
@@ -269,7 +275,7 @@ def build_complex_mode_result(stiffness, mass, damping, eigenvalues, shapes) -> 
     lam = np.asarray(eigenvalues, dtype=complex)
     c = damping.matrix if damping is not None else None
     params = {"NUME_MODE": np.arange(1, lam.size + 1)}
-    params.update(quadratic.modal_quantities(lam))
+    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping)))
     params.update(quadratic.generalized_parameters(shapes, stiffness.matrix, c, mass.matrix))
     return ComplexModeResult(
         numbering=numbering,
@@ -311,7 +317,7 @@ def build_complex_generalized_result(stiffness, mass, damping, lam, vecs) -> Gen
     vecs = vecs * quadratic.largest_modulus(vecs)[None, :]
     c = None if damping is None else np.asarray(damping.matrix)
     params = {"NUME_MODE": np.arange(1, vecs.shape[1] + 1)}
-    params.update(quadratic.modal_quantities(lam))
+    params.update(quadratic.modal_quantities(lam, _stiffness_only(stiffness, damping)))
     params.update(
         quadratic.generalized_parameters(
             vecs, np.asarray(stiffness.matrix), c, np.asarray(mass.matrix)

@@ -123,6 +123,8 @@ def element_field_stack(result, name: str):
             f"the result has no element field {name} (computed: {known}; use CALC_CHAMP first)"
         )
     field = fields[name]
+    if field.sub_points > 1:
+        raise UnsupportedError(f"{name} on sub-points (multifibre beams) as a field")
     count = field.values.shape[0]
     order = getattr(result, "order", None)
     times = getattr(result, "times", None)

@@ -265,13 +265,22 @@ def _nearest_each(pencil: QuadraticPencil, freq, amor):
 # --- per-mode quantities -------------------------------------------------
 
 
-def modal_quantities(lam) -> dict[str, np.ndarray]:
-    """FREQ, OMEGA2 and AMOR_REDUIT of eigenvalues λ (code_aster's definitions)."""
+def modal_quantities(lam, complex_stiffness_only: bool = False) -> dict[str, np.ndarray]:
+    """FREQ, OMEGA2 and AMOR_REDUIT of eigenvalues λ (code_aster's definitions).
+
+    With a complex stiffness and no damping matrix code_aster solves the
+    generalized problem K φ = σ M φ (σ = -λ²) and stores FREQ = |√σ|/2π and
+    OMEGA2 = Re σ (its vppara); a quadratic problem stores FREQ = Im λ/2π.
+    AMOR_REDUIT = -Re λ/|λ| (= Im √σ/|√σ|) in both."""
     lam = np.asarray(lam, dtype=complex)
     modulus = np.abs(lam)
+    if complex_stiffness_only:
+        frequency, omega2 = modulus / TWO_PI, (-(lam**2)).real
+    else:
+        frequency, omega2 = lam.imag / TWO_PI, lam.imag**2
     return {
-        "FREQ": lam.imag / TWO_PI,
-        "OMEGA2": lam.imag**2,
+        "FREQ": frequency,
+        "OMEGA2": omega2,
         "AMOR_REDUIT": np.where(modulus > 0, -lam.real / np.where(modulus > 0, modulus, 1), 0.0),
     }
 

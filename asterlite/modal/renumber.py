@@ -22,12 +22,14 @@ def row_map(source: DofNumbering, target: DofNumbering) -> np.ndarray:
 
 
 def transfer(values: np.ndarray, source: DofNumbering, target: DofNumbering) -> np.ndarray:
-    """``values`` (n_source, ...) expressed on ``target`` (n_target, ...)."""
-    values = np.asarray(values, dtype=float)
+    """``values`` (n_source, ...) expressed on ``target`` (n_target, ...);
+    complex values stay complex."""
+    values = np.asarray(values)
+    values = values.astype(complex if np.iscomplexobj(values) else float, copy=False)
     if same_dofs(source, target):
         return values
     rows = row_map(source, target)
-    out = np.zeros((target.n_dofs, *values.shape[1:]))
+    out = np.zeros((target.n_dofs, *values.shape[1:]), dtype=values.dtype)
     present = rows >= 0
     out[present] = values[rows[present]]
     return out

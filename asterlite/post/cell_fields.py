@@ -116,6 +116,8 @@ def result_cell_field(result, name: str, position: int) -> FieldOnCells:
     field = (getattr(result, "element_fields", None) or {}).get(name)
     if field is None:
         raise CommandError(f"result {result.name or ''} has no element field {name}")
+    if field.sub_points > 1:
+        raise CommandError(f"{name} is on sub-points (multifibre beams): not available as a field")
     values = np.asarray(field.values)[position]
     if np.iscomplexobj(values):
         raise CommandError(f"{name} is complex: a FieldOnCellsReal holds real values")

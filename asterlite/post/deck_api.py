@@ -22,7 +22,14 @@ import numpy as np
 
 from asterlite.concepts.assembly import NodalField
 from asterlite.concepts.mesh import Mesh
-from asterlite.errors import CommandError
+from asterlite.errors import CommandError, UnsupportedError
+from asterlite.fem.lagrange_layout import (
+    dualised_relations,
+    full_vector,
+    lagrange_coefficient,
+    lagrange_layout,
+)
+from asterlite.harmonic.fields import derived_fields
 from asterlite.post.cell_fields import result_cell_field
 
 # Where INFO_NONL and other printing methods write: the session's message log
@@ -115,20 +122,29 @@ def info_nonl(shocks):
 class FieldValues(NodalField):
     """A nodal field taken from a result (``result.getField(...)``).
 
-    ``getValues()`` gives one value per DOF of the numbering: every asterlite
-    DOF is physical (no Lagrange multipliers), so ``getPhysicalDOFs()`` of the
-    numbering indexes all of them.
+    ``getValues()`` gives one value per DOF of code_aster's numbering: with
+    dualised constraints, the Lagrange multipliers too (their values from
+    ``reactions``, the loads' reactions per physical DOF, and ``beta``, the
+    stiffness's Lagrange coefficient: asterlite.fem.lagrange_layout), so that
+    ``getPhysicalDOFs()`` of the numbering indexes the physical values.
     """
 
     deck_methods: ClassVar[frozenset[str]] = frozenset(
         {"getName", "getValues", "size", "norm", "getComponents"}
     )
 
+    reactions: np.ndarray | None = None
+    beta: float = 1.0
+
     def getValues(self):  # noqa: N802 - code_aster's names
-        return np.asarray(self.values, dtype=float).tolist()
+        values = np.asarray(self.values)
+        values = values.astype(complex if np.iscomplexobj(values) else float)
+        if dualised_relations(self.numbering):
+            values = full_vector(self.numbering, values, self.reactions, self.beta)
+        return values.tolist()
 
     def size(self) -> int:
-        return int(np.asarray(self.values).size)
+        return int(lagrange_layout(self.numbering).size)
 
     def norm(self, normType: str = "NORM_2") -> float:  # noqa: N803
         values = np.asarray(self.values, dtype=float)
@@ -175,7 +191,75 @@ def transient_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> 
             f"result {result.name or ''} has no field {name} (it has {', '.join(result.fields)})"
         )
     position = _position(result, name, value, para)
-    return FieldValues(result.numbering, np.array(result.fields[name][position], dtype=float))
+    field = FieldValues(result.numbering, np.array(result.fields[name][position], dtype=float))
+    source = getattr(result, "modal_source", None)
+    if source is not None and name in source[1] and dualised_relations(result.numbering):
+        # a recombination of modes: its multipliers are those of the modes recombined
+        basis, generalized = source
+        modal = mode_reactions(basis)
+        if modal is not None:
+            reactions, field.beta = modal
+            field.reactions = reactions @ np.asarray(generalized[name][position], dtype=float)
+    return field
+
+
+def harmonic_field(result, name: str, value=None, para: str = "NUME_ORDRE") -> FieldValues:
+    """``dyna_harmo.getField(name, value, para)``: the complex nodal field at
+    a NUME_ORDRE (the last one when omitted) or a frequency (``para='FREQ'``,
+    relative 1e-6). Element fields of a harmonic result are not given."""
+    name = str(name).strip().upper()
+    if name not in result.fields:
+        if name in (getattr(result, "element_fields", None) or {}):
+            raise UnsupportedError(f"getField of the element field {name} of a dyna_harmo")
+        raise CommandError(
+            f"result {result.name or ''} has no field {name} (it has {', '.join(result.fields)})"
+        )
+    if value is None:
+        position = len(result.order) - 1
+    elif str(para).upper() == "FREQ":
+        position = instant_position(result.frequencies, value, f"field {name} (FREQ)")
+    elif str(para).upper() == "NUME_ORDRE":
+        position = order_position(result.order, value, f"field {name}")
+    else:
+        raise CommandError(f"getField of a dyna_harmo: para must be NUME_ORDRE or FREQ, got {para}")
+    field = FieldValues(result.numbering, np.array(result.fields[name][position], dtype=complex))
+    known = getattr(result, "reactions", None)
+    if known is not None and dualised_relations(result.numbering):
+        # VITE and ACCE scale the whole solution, multipliers included (comdlh)
+        rows, reactions = known
+        frequency = np.asarray(result.frequencies, dtype=float)[position : position + 1]
+        scaled = derived_fields(reactions[position : position + 1], frequency, (name,))[name]
+        field.reactions = np.zeros(result.numbering.n_dofs, dtype=complex)
+        field.reactions[rows] = scaled[0]
+        field.beta = result.lagrange_beta
+    source = getattr(result, "modal_source", None)
+    if known is None and source is not None and name in source[1]:
+        if dualised_relations(result.numbering):
+            # a recombination of modes over all equations (harm75): the modes' multipliers
+            basis, generalized = source
+            modal = mode_reactions(basis)
+            if modal is not None:
+                reactions, field.beta = modal
+                field.reactions = reactions @ np.asarray(generalized[name][position])
+    return field
+
+
+def field_indexes(result, name: str) -> list[int]:
+    """``result.getIndexesForFieldName(name)``: the NUME_ORDRE at which the
+    result stores the field (an element field CALC_CHAMP computed at some
+    orders only is stored at those)."""
+    name = str(name).strip().upper()
+    order = result.getIndexes()
+    # a modal basis holds its shapes as DEPL
+    nodal = getattr(result, "fields", None) or {"DEPL": None}
+    if name in nodal:
+        return [int(o) for o in order]
+    field = (getattr(result, "element_fields", None) or {}).get(name)
+    if field is None:
+        return []
+    values = np.asarray(field.values)
+    stored = ~np.all(np.isnan(values.reshape(values.shape[0], -1)), axis=1)
+    return [int(o) for o, kept in zip(order, stored, strict=True) if kept]
 
 
 def _position(result, name: str, value, para: str) -> int:
@@ -195,7 +279,37 @@ def mode_field(basis, name: str, nume_ordre=1, para: str = "NUME_ORDRE") -> Fiel
     orders = basis.mode_numbers if str(para).upper() == "NUME_MODE" else None
     orders = np.arange(1, basis.n_modes + 1) if orders is None else orders
     position = order_position(orders, nume_ordre, "mode")
-    return FieldValues(basis.numbering, np.array(basis.shapes[:, position], dtype=float))
+    shape = np.array(basis.shapes[:, position], dtype=float)
+    field = FieldValues(basis.numbering, shape)
+    if dualised_relations(basis.numbering):
+        modal = mode_reactions(basis)
+        if modal is not None:
+            reactions, field.beta = modal
+            field.reactions = reactions[:, position]
+    return field
+
+
+def mode_reactions(basis):
+    """(the constraints' reactions (ω² M - K) φ of every mode, one column
+    each; the stiffness's Lagrange coefficient) of a real dynamic modal
+    basis, or None where they are not known (static or complex modes,
+    matrices not kept)."""
+    stiffness, mass = getattr(basis, "stiffness", None), getattr(basis, "mass", None)
+    dynamic = getattr(basis, "kind", "dynamic") == "dynamic" and not np.iscomplexobj(basis.shapes)
+    if not dynamic or stiffness is None or mass is None:
+        return None
+    cached = _MODE_REACTIONS.get("last")
+    if cached is None or cached[0] is not basis:  # a deck reads fields mode after mode
+        shapes = np.asarray(basis.shapes, dtype=float)
+        omega2 = (2.0 * np.pi * np.asarray(basis.frequencies, dtype=float)) ** 2
+        reactions = (mass.matrix @ shapes) * omega2 - stiffness.matrix @ shapes
+        # the last basis only (bounded memory), held so that it stays that object
+        cached = (basis, (reactions, lagrange_coefficient(stiffness.matrix)))
+        _MODE_REACTIONS["last"] = cached
+    return cached[1]
+
+
+_MODE_REACTIONS: dict = {}
 
 
 # ------------------------------------------------ tran_gene nonlinearities

@@ -7,10 +7,13 @@ tolerance), else the nearest one (within DISTANCE_MAX when given). Its
 value is the shape-function combination of the cell's nodal values, each
 component on its own, as code_aster's collocation does.
 
-Located exactly: nodes inside line cells (SEG2, SEG3), and nodes that
-coincide with a node of a source cell of any type (there the shape
-functions reduce to that node's value). A node strictly inside a surface or
-volume cell needs that cell's shape functions: refused by name.
+Located exactly: nodes inside line cells (SEG2, SEG3), nodes that coincide
+with a node of a source cell of any type (there the shape functions reduce
+to that node's value), and nodes inside surface and volume cells, whose
+reference coordinates Newton's method finds from the cell's own shape
+functions (code_aster's reereg; its tetrahedral search only gives the
+starting point there): the weights are those shape functions at that point.
+A surface cell in 3D is reached by the nearest point of the surface.
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from asterlite.concepts.mesh import Mesh
+from asterlite.fem.solid_reference import FACE_CELLS, REFERENCE_ELEMENTS, VOLUME_CELLS
 
 _DIMENSION = {
     "POI1": 0,
@@ -178,11 +182,79 @@ def _locate(cell_type, coords, conn, point, size):
         return float(gaps[corner]), False, np.ones(1)
     lower, upper = coords[conn].min(axis=0) - tolerance, coords[conn].max(axis=0) + tolerance
     if np.all(point >= lower) and np.all(point <= upper):
-        raise ProjectionUnsupported(
-            f"a node at {tuple(np.round(point, 12))} falls inside a {cell_type} cell: "
-            "interpolation inside surface and volume cells is not supported"
-        )
+        return _in_cell(cell_type, coords[conn], point, tolerance)
     return None
+
+
+def _reference(cell_type: str):
+    kind = VOLUME_CELLS.get(cell_type) or FACE_CELLS.get(cell_type)
+    if kind is None:
+        raise ProjectionUnsupported(f"interpolation inside {cell_type} cells")
+    return REFERENCE_ELEMENTS[kind.reference]
+
+
+def _in_cell(cell_type, nodes, point, tolerance):
+    """(distance, inside, weights) of ``point`` for a surface or volume cell:
+    the reference point whose image is ``point`` (least squares: the nearest
+    point of a surface in 3D), by Gauss-Newton from the reference centre."""
+    reference = _reference(cell_type)
+    xi = reference.nodes.mean(axis=0)
+    for _ in range(30):
+        image = reference.values(xi)[0].real @ nodes
+        jacobian = nodes.T @ reference.gradients(xi)[0]  # (3, dim)
+        step = np.linalg.lstsq(jacobian, point - image, rcond=None)[0]
+        xi = xi + step
+        if np.linalg.norm(step) <= 1e-13 * (1.0 + np.linalg.norm(xi)):
+            break
+    else:
+        return None  # no reference point found: the cell is no candidate
+    inside = _in_reference(reference.name, xi, INSIDE_TOLERANCE)
+    if not inside:
+        xi = _clamped(reference.name, xi)
+    weights = reference.values(xi)[0].real
+    distance = float(np.linalg.norm(weights @ nodes - point))
+    return distance, inside and distance <= tolerance, weights
+
+
+_BOXES = ("HE8", "H20", "H27", "QU4", "QU8", "QU9")
+_SIMPLICES = ("TE4", "T10", "TR3", "TR6")
+_WEDGES = ("PE6", "P15")  # x along the axis, (y, z) in a triangle; else pyramids
+
+
+def _in_reference(name: str, xi: np.ndarray, tol: float) -> bool:
+    if name in _BOXES:
+        return bool(np.all(np.abs(xi) <= 1.0 + tol))
+    if name in _SIMPLICES:
+        return bool(np.all(xi >= -tol)) and xi.sum() <= 1.0 + tol
+    if name in _WEDGES:
+        return abs(xi[0]) <= 1.0 + tol and bool(np.all(xi[1:] >= -tol)) and xi[1:].sum() <= 1 + tol
+    # pyramids: |x| + |y| <= 1 - z, 0 <= z <= 1
+    return -tol <= xi[2] <= 1.0 + tol and abs(xi[0]) + abs(xi[1]) <= 1.0 - xi[2] + tol
+
+
+def _clamped(name: str, xi: np.ndarray) -> np.ndarray:
+    """A reference point of the cell near ``xi`` (for the distance of a point
+    outside every cell)."""
+    xi = xi.copy()
+    if name in _BOXES:
+        return np.clip(xi, -1.0, 1.0)
+    if name in _SIMPLICES:
+        return _simplex_clamped(xi)
+    if name in _WEDGES:
+        xi[0] = min(max(xi[0], -1.0), 1.0)
+        xi[1:] = _simplex_clamped(xi[1:])
+        return xi
+    xi[2] = min(max(xi[2], 0.0), 1.0)
+    spread = abs(xi[0]) + abs(xi[1])
+    if spread > 1.0 - xi[2]:
+        xi[:2] *= (1.0 - xi[2]) / spread
+    return xi
+
+
+def _simplex_clamped(xi: np.ndarray) -> np.ndarray:
+    xi = np.maximum(xi, 0.0)
+    total = xi.sum()
+    return xi / total if total > 1.0 else xi
 
 
 def project_values(

@@ -208,6 +208,49 @@ def derivative(func: Function) -> Function:
     )
 
 
+def _without_linear_trend(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """y minus its least-squares line a1 x + a0."""
+    n = x.size
+    sx, sy, sxy, sxx = x.sum(), y.sum(), (x * y).sum(), (x * x).sum()
+    det = n * sxx - sx * sx
+    a1 = (n * sxy - sx * sy) / det
+    a0 = (sxx * sy - sx * sxy) / det
+    return y - a1 * x - a0
+
+
+def high_pass_clough_penzien(y: np.ndarray, dt: float, corner: float, damping: float = 1.0):
+    """The signal through the second-order high-pass filter of Clough and
+    Penzien, H(w) = -w^2 / (wc^2 - w^2 + 2 i xi wc w), applied on its real
+    FFT (the signal is taken periodic over its length)."""
+    n = y.size
+    wc = 2.0 * np.pi * corner
+    w = 2.0 * np.pi * np.fft.rfftfreq(n, d=dt)
+    gain = -(w**2) / ((wc**2 - w**2) + 2.0j * damping * wc * w)
+    return np.fft.irfft(np.fft.rfft(y) * gain, n=n)
+
+
+def corrected_accelerogram(
+    func: Function, method: str, corner: float = 0.05, correct_displacement: bool = False
+) -> Function:
+    """CORR_ACCE. FILTRAGE: the Clough-Penzien high-pass filter at ``corner``
+    Hz (the step taken from the first two abscissas). POLYNOME: the linear
+    trend of the acceleration removed, then that of its velocity (and, with
+    ``correct_displacement``, of its displacement), each by integrating
+    (trapezoids from 0) and differentiating back."""
+    x, y = func.abscissas, func.ordinates
+    if x.size < 3:
+        raise CommandError("CORR_ACCE: the function needs at least three points")
+    if method == "FILTRAGE":
+        values = high_pass_clough_penzien(y, float(x[1] - x[0]), corner)
+        return func.with_values(x, values)
+    velocity = _without_linear_trend(x, primitive_trapezoid(x, _without_linear_trend(x, y)))
+    if correct_displacement:
+        displacement = _without_linear_trend(x, primitive_trapezoid(x, velocity))
+        velocity = derivative(func.with_values(x, displacement)).ordinates
+    values = derivative(func.with_values(x, velocity)).ordinates
+    return func.with_values(x, values, PROL_GAUCHE="EXCLU", PROL_DROITE="EXCLU")
+
+
 # ------------------------------------------------------------------ FFT
 
 
@@ -215,22 +258,63 @@ def _power_of_two_below(n: int) -> int:
     return int(np.floor(np.log2(n))) if n > 0 else 0
 
 
+def _constant_step(x, tolerance: float, what: str) -> float:
+    step = x[1] - x[0]
+    if np.any(np.abs((np.diff(x) - step) / step) > tolerance):
+        raise CommandError(f"FFT: the {what} function must have a constant step")
+    return step
+
+
+def _fft_length_rule(y: np.ndarray, method: str) -> np.ndarray:
+    """METHODE: TRONCATURE keeps the largest power of two of samples,
+    PROL_ZERO pads with zeros up to the next one (when not already one),
+    COMPLET keeps every sample."""
+    n = _power_of_two_below(y.size)
+    if method == "TRONCATURE":
+        return y[: 2**n]
+    if method == "PROL_ZERO" and y.size > 2**n:
+        return np.concatenate([y, np.zeros(2 ** (n + 1) - y.size, dtype=y.dtype)])
+    return y
+
+
 def fft(func: Function, method: str = "PROL_ZERO") -> Function:
     """Discrete Fourier transform of a real function of INST on an even grid."""
     if func.NOM_PARA != "INST":
         raise CommandError("FFT of a real function needs NOM_PARA='INST'")
-    x, y = func.abscissas, func.ordinates
-    step = x[1] - x[0]
-    if np.any(np.abs((np.diff(x) - step) / step) > 1e-2):
-        raise CommandError("FFT: the function must have a constant step")
-    n = _power_of_two_below(x.size)
-    if method == "TRONCATURE":
-        y = y[: 2**n]
-    elif method == "PROL_ZERO" and y.size < 2 ** (n + 1):
-        y = np.concatenate([y, np.zeros(2 ** (n + 1) - y.size)])
-    spectrum = np.fft.fft(y)
+    step = _constant_step(func.abscissas, 1e-2, "real")
+    spectrum = np.fft.fft(_fft_length_rule(np.asarray(func.ordinates), method))
     freqs = np.arange(spectrum.size) / (step * spectrum.size)
     return func.with_values(freqs, spectrum, NOM_PARA="FREQ")
+
+
+def inverse_fft(func: Function, method: str = "PROL_ZERO", symmetric: bool = True) -> Function:
+    """Real signal of INST from a complex function of FREQ (code_aster's
+    inverse FFT). symmetric: the function already holds the whole two-sided
+    spectrum. Otherwise it holds the positive half, which is mirrored
+    (complex conjugates) after the value at the Nyquist frequency; that value
+    is extrapolated by a parabola with a horizontal tangent there,
+    (4 Y[-1] - Y[-2]) / 3 on the real parts, except when an odd-length half
+    already ends on a real value."""
+    if func.NOM_PARA != "FREQ":
+        raise CommandError("FFT of a complex function needs NOM_PARA='FREQ'")
+    step = _constant_step(func.abscissas, 1e-3, "complex")
+    y = np.asarray(func.ordinates, dtype=complex)
+    if symmetric:
+        full = y
+    else:
+        half = _fft_length_rule(y, method).copy()
+        if half.size % 2 == 0:
+            nyquist = (4 * half[-1].real - half[-2].real) / 3
+            full = np.concatenate([half, [nyquist], np.conj(half[1:])[::-1]])
+        else:
+            if not abs(half[-1].imag) < abs(half[-1].real * 1e-6):
+                half[-1] = (4 * half[-2].real - half[-3].real) / 3
+            else:
+                half[-1] = half[-1].real
+            full = np.concatenate([half, np.conj(half[1:-1])[::-1]])
+    signal = np.fft.ifft(full).real
+    times = np.arange(signal.size) / (step * signal.size)
+    return func.with_values(times, signal, NOM_PARA="INST")
 
 
 # ---------------------------------------------------------- response spectra
@@ -275,16 +359,27 @@ def _sdof_step(u0, v0, p0, p1, dt, w, xi, wd):
     return u1, v1
 
 
+def peak_relative_displacements(t, accel, freqs, damping: float) -> np.ndarray:
+    """max|u| over time for each oscillator frequency: the recurrence of
+    :func:`sdof_history` run for all the frequencies at once."""
+    w = 2 * np.pi * np.asarray(freqs, dtype=float)
+    wd = w * np.sqrt(1 - damping * damping)
+    u, v = np.zeros(w.size), np.zeros(w.size)
+    peak = np.zeros(w.size)
+    for k in range(len(t) - 1):
+        u, v = _sdof_step(u, v, -accel[k], -accel[k + 1], t[k + 1] - t[k], w, damping, wd)
+        np.maximum(peak, np.abs(u), out=peak)
+    return peak
+
+
 def response_spectrum(func: Function, freqs, damping: float, nature: str, norme: float):
     """Oscillator spectrum: pseudo-acceleration ω²·max|u| (ACCE), pseudo-velocity
-    ω·max|u| (VITE) or max|u| (DEPL), divided by NORME."""
-    t, acc = func.abscissas, func.ordinates * norme
-    values = []
-    for f in freqs:
-        peak_u, _, _ = sdof_peak_response(t, acc, f, damping)
-        w = 2 * np.pi * f
-        values.append({"DEPL": peak_u, "VITE": w * peak_u, "ACCE": w * w * peak_u}[nature])
-    return np.asarray(values) / norme
+    ω·max|u| (VITE) or max|u| (DEPL) under the function's acceleration, divided
+    by NORME (code_aster scales the spectrum, not the accelerogram)."""
+    peak_u = peak_relative_displacements(func.abscissas, func.ordinates, freqs, damping)
+    w = 2 * np.pi * np.asarray(freqs, dtype=float)
+    values = {"DEPL": peak_u, "VITE": w * peak_u, "ACCE": w * w * peak_u}[nature]
+    return values / norme
 
 
 # ------------------------------------------------------------ statistics

@@ -4,12 +4,14 @@
 forces by element node (``EFGE_ELNO``: N VY VZ MT MFY MFZ) and works with
 the moments only: MT, MFY, MFZ and the equivalent moment
 ``MEQ = sqrt(MT² + MFY² + MFZ²)``. Over several instants each of the four
-components keeps its own largest magnitude (so MT, MFY and MFZ of a row
-may come from different instants), as code_aster's ``MAXI_ABS`` selection
-with absolute values does.
+components keeps its own value of largest magnitude, signed (so MT, MFY
+and MFZ of a row may come from different instants), as code_aster's
+``MAXI_ABS`` selection of values does.
 
 The table has one row per (cell, node of the cell), cells in mesh order,
-cells and nodes named by their 1-based numbers (code_aster 17).
+cells and nodes named by their 1-based numbers (code_aster 17), with the
+node's curvilinear abscissa when the mesh has one (MODI_MAILLAGE ABSC_CURV).
+A field given alone (CHAM_GD) is tabulated as it is, without maxima.
 """
 
 from __future__ import annotations
@@ -40,8 +42,11 @@ def equivalent_moment(moments: np.ndarray) -> np.ndarray:
 
 
 def max_magnitude(values: np.ndarray, axis: int = 0) -> np.ndarray:
-    """The largest absolute value along ``axis`` (the instants), component by component."""
-    return np.max(np.abs(values), axis=axis)
+    """Along ``axis`` (the instants), component by component, the value of
+    largest magnitude with its sign; the earliest wins a tie."""
+    values = np.asarray(values, dtype=float)
+    first = np.expand_dims(np.argmax(np.abs(values), axis=axis), axis)
+    return np.take_along_axis(values, first, axis=axis).squeeze(axis)
 
 
 def moment_equivalent_values(values: np.ndarray, components, orders) -> np.ndarray:
@@ -53,24 +58,29 @@ def moment_equivalent_values(values: np.ndarray, components, orders) -> np.ndarr
 
 
 def moment_equivalent_table(
-    values: np.ndarray, cells, cell_nodes, result_name: str, field_name: str
+    values: np.ndarray, cells, cell_nodes, head: dict, abscissa: dict | None
 ) -> Table:
-    """POST_RCCM's table: RESULTAT, NOM_CHAM, MAILLE, NOEUD, MT, MFY, MFZ, MEQ
-    for (n_cells, n_points, 4) ``values`` on ``cells`` whose nodes are
-    ``cell_nodes`` (connectivity, one tuple per cell)."""
+    """POST_RCCM's table for (n_cells, n_points, 4) ``values`` on ``cells``
+    whose nodes are ``cell_nodes`` (connectivity, one tuple per cell):
+    ``head`` (RESULTAT and NOM_CHAM, or CHAM_GD), MAILLE, NOEUD, ABSC_CURV,
+    MT, MFY, MFZ, MEQ. ABSC_CURV is the node's curvilinear abscissa from the
+    mesh's carte ``abscissa`` (cell -> ABSC1...); without a carte there is
+    no such column, and a cell the carte misses has it empty."""
     table = Table()
-    for name, code in (("RESULTAT", "K8"), ("NOM_CHAM", "K16"), ("MAILLE", "K8"), ("NOEUD", "K8")):
-        table.add_column(name, code)
+    for name in head:
+        table.add_column(name, "K16" if name == "NOM_CHAM" else "K8")
+    table.add_column("MAILLE", "K8")
+    table.add_column("NOEUD", "K8")
+    if abscissa is not None:
+        table.add_column("ABSC_CURV", "R")
     for name in MOMEQ_COMPONENTS:
         table.add_column(name, "R")
     for row, cell in enumerate(cells):
+        along = () if abscissa is None else abscissa.get(int(cell), ())
         for point, node in enumerate(cell_nodes[row][: values.shape[1]]):
-            line = {
-                "RESULTAT": result_name,
-                "NOM_CHAM": field_name,
-                "MAILLE": str(int(cell) + 1),
-                "NOEUD": str(int(node) + 1),
-            }
+            line = {**head, "MAILLE": str(int(cell) + 1), "NOEUD": str(int(node) + 1)}
+            if point < len(along):
+                line["ABSC_CURV"] = float(along[point])
             line.update(zip(MOMEQ_COMPONENTS, map(float, values[row, point]), strict=True))
             table.add_row(line)
     return table

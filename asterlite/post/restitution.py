@@ -307,6 +307,8 @@ def element_value_history(ctx, kw, result, name: str, mesh=None) -> np.ndarray:
             ctx.error(f"{name} has no value at node {node_label(mesh, node)}", "GROUP_NO", kw)
         if component not in field.components:
             ctx.error(missing_name("component", component, field.components, name), "NOM_CMP", kw)
+        if not field.holds(node, component):
+            ctx.error(f"{name} has no {component} at node {node_label(mesh, node)}", "NOM_CMP", kw)
         return field.at(node, component)
     field = result.element_fields[name]
     cell = single_cell(ctx, kw, mesh)
@@ -314,6 +316,8 @@ def element_value_history(ctx, kw, result, name: str, mesh=None) -> np.ndarray:
         ctx.error(f"{name} is not computed on cell {mesh.cell_names[cell]}", "GROUP_MA", kw)
     if component not in field.components:
         ctx.error(missing_name("component", component, field.components, name), "NOM_CMP", kw)
+    if field.sub_points > 1:
+        return _sub_point_values(ctx, kw, name, field, cell, component)
     if kw.get("POINT") is not None:
         point = int(kw["POINT"]) - 1
     else:
@@ -330,6 +334,24 @@ def element_value_history(ctx, kw, result, name: str, mesh=None) -> np.ndarray:
     if not 0 <= point < n_points:
         ctx.error(f"{name} has {n_points} points per cell, not {point + 1}", "POINT", kw)
     return field.at(cell, point, component)
+
+
+def _sub_point_values(ctx, kw, name, field, cell, component) -> np.ndarray:
+    """Values of a field on sub-points (multifibre beams) at POINT, SOUS_POINT."""
+    if kw.get("POINT") is None or kw.get("SOUS_POINT") is None:
+        ctx.error(f"{name} is on sub-points (fibres): give POINT and SOUS_POINT", "POINT", kw)
+    point, sub = int(kw["POINT"]) - 1, int(kw["SOUS_POINT"]) - 1
+    n_points = field.values.shape[2] // field.sub_points
+    if not 0 <= point < n_points:
+        ctx.error(f"{name} has {n_points} points per cell, not {point + 1}", "POINT", kw)
+    values = (
+        field.at(cell, point * field.sub_points + sub, component)
+        if 0 <= sub < field.sub_points
+        else None
+    )
+    if values is None or np.all(np.isnan(values)):
+        ctx.error(f"{name} has no sub-point {sub + 1} on this cell", "SOUS_POINT", kw)
+    return values
 
 
 def single_cell(ctx, kw, mesh) -> int:

@@ -203,25 +203,28 @@ def field_value_table(
     """CREA_TABLE RESU's table: for each step (NUME_ORDRE, INST or None) and
     each support (MAILLE / NOEUD / POINT / COOR_*), the row ``head``
     (RESULTAT, NOM_CHAM) + access + support + the components' values
-    ``values[step, support, component]``. ``kind`` (ELNO, ELGA, NOEU)
-    fixes code_aster's columns."""
+    ``values[step, support, component]``. ``kind`` (ELNO, ELGA, NOEU, CART)
+    fixes code_aster's columns; a field given alone (CHAM_GD) has the one
+    step ``(None, None)`` and no access columns."""
     table = Table()
     for name in head:
         table.add_column(name, "K16")
     if any(time is not None for _, time in steps):
         table.add_column("INST", "R")
-    table.add_column("NUME_ORDRE", "I")
+    if any(order is not None for order, _ in steps):
+        table.add_column("NUME_ORDRE", "I")
     support_columns = {
         "ELNO": (("MAILLE", "K8"), ("NOEUD", "K8"), ("SOUS_POINT", "I")),
         "ELGA": (("MAILLE", "K8"), ("POINT", "I"), ("SOUS_POINT", "I")),
         "NOEU": (("NOEUD", "K8"),),
+        "CART": (("MAILLE", "K8"),),
     }[kind]
     for name, code in support_columns + (("COOR_X", "R"), ("COOR_Y", "R"), ("COOR_Z", "R")):
         table.add_column(name, code)
     for name in components:
         table.add_column(name, "R")
     for k, (order, time) in enumerate(steps):
-        access = {"INST": time, "NUME_ORDRE": int(order)}
+        access = {"INST": time, "NUME_ORDRE": None if order is None else int(order)}
         for j, support in enumerate(supports):
             row = {**head, **access, **support}
             # a support without the component (NaN) leaves its cell empty

@@ -57,7 +57,7 @@ def from_run(report, session, folder: Path | None = None) -> ReportData:
 
     summary = report.as_dict()
     results = []
-    for _, name, concept in getattr(session, "produced", ()):
+    for name, concept in session.summaries.results_kept:
         if isinstance(concept, TranGene) and not any(r[0] == name for r in results):
             results.append((name, concept))
     data = ReportData(summary, results, collect_curves(session.namespace), folder=folder)

@@ -39,47 +39,10 @@ def summary_fields(report, session) -> dict:
             if note:
                 fields["note"] = note
         if report.shocks:
-            fields["supports"] = supports(getattr(session, "produced", ()))
+            fields["supports"] = list(session.summaries.supports)
     except Exception:  # noqa: BLE001 - extra information only, never a failed run
         pass
     return fields
-
-
-def supports(produced) -> list[dict]:
-    """Per shock of the run's tran_gene results (the order of the runner's
-    ``shocks``): relation, nodes, obstacle, gap and normal stiffness."""
-    from asterlite.concepts.transient import TranGene
-
-    rows = []
-    for _, name, concept in produced:
-        if not isinstance(concept, TranGene):
-            continue
-        for shock in concept.shocks:
-            parameters = shock.parameters or {}
-            rows.append(
-                {
-                    "result": name,
-                    "shock": shock.name,
-                    "relation": shock.relation,
-                    "node_1": shock.node_1,
-                    "node_2": shock.node_2,
-                    "obstacle": _plain(parameters.get("OBSTACLE")),
-                    "gap": _plain(parameters.get("JEU")),
-                    "stiffness": _plain(parameters.get("RIGI_NOR")),
-                }
-            )
-    return rows
-
-
-def _plain(value):
-    if value is None:
-        return None
-    if hasattr(value, "item"):
-        try:
-            return value.item()
-        except (ValueError, AttributeError):
-            return str(value)
-    return value if isinstance(value, (int, float, str, bool)) else str(value)
 
 
 def summary_lines(report) -> list[str]:

@@ -19,10 +19,11 @@ import numbers
 import re
 from typing import TYPE_CHECKING
 
+from asterlite.concepts.base import Placeholder
 from asterlite.errors import DeckRuntimeError, UnsupportedError
 from asterlite.lang.exceptions import ASTER_CLASSES, ExceptionClass, classify, matches
 from asterlite.lang.library import DeckModule
-from asterlite.lang.values import CallSite, DeckCallable
+from asterlite.lang.values import CallSite, DeckCallable, Unknown
 from asterlite.post.check_record import TestRecord
 
 if TYPE_CHECKING:
@@ -375,6 +376,8 @@ class PostProcessing:
     def computeMaxResultantForPipe(self, result, field_name):  # noqa: N802
         from asterlite.post.cell_fields import max_resultant_for_pipe
 
+        if isinstance(result, Placeholder):  # check computed no result
+            return Unknown
         return max_resultant_for_pipe(result, field_name)
 
 

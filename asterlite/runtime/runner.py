@@ -225,7 +225,8 @@ def _run_in_folder(deck, folder, stop, *, started, placing, **session_options) -
     until its final files are written."""
     try:
         stop.release()  # a signal held while the folder was taken stops the run now
-        report, session = _run_session(deck, folder, **session_options)
+        # a report page draws the transients: the session keeps them
+        report, session = _run_session(deck, folder, keep_results=placing[1], **session_options)
     except stops.RunInterrupted as interrupt:  # between the session and the report
         report, session = _interrupted(deck.stem, interrupt, None), None
     stop.hold()  # a signal from here on waits until the folder is written
@@ -275,8 +276,10 @@ def _run_session(
     keyword_overrides,
     limits,
     aster_version=None,
+    keep_results=False,
 ):
-    """Run the deck's session; (report, session) whatever happens in it."""
+    """Run the deck's session; (report, session) whatever happens in it.
+    ``keep_results``: the session keeps its transients for a report page."""
     from asterlite.runtime.language_check import python_refusal
     from asterlite.runtime.session import Session, UnknownOverrideError
 
@@ -297,6 +300,7 @@ def _run_session(
             aster_version=aster_version,  # None: detected from the decks' text
             **extra,
         )
+        session.summaries.keep_results = keep_results
         if folder is not None:
             session.output_guard = folder.check_name
             session.command_hook = folder.record_command
@@ -347,7 +351,7 @@ def _fill_report(report: RunReport, session, overrides, check_only: bool) -> Non
     if not check_only:  # results exist only when computed (and check stays light)
         try:
             report.table_values = one_row_table_values(session.namespace)
-            report.transients, report.shocks = transient_summaries(session.produced)
+            report.transients, report.shocks = session.summaries.results()
         except (MemoryError, RecursionError, ValueError, TypeError) as error:
             report.status = "ERROR"
             report.message = f"cannot summarise the results: {type(error).__name__}: {error}"
@@ -547,77 +551,6 @@ def one_row_table_values(namespace: dict) -> dict:
             for para, cell in value.rows[0].items():
                 values[f"{name}.{para}"] = plain_value(cell)
     return values
-
-
-def transient_summaries(produced) -> tuple[list[dict], list[dict]]:
-    """Per tran_gene result made by the run: its integration figures; and per
-    shock of those results: peak normal force and wear power."""
-    import numpy as np
-
-    from asterlite.concepts.transient import TranGene
-
-    transients, shocks, calls = [], [], {}
-    for command, name, concept in produced:
-        call = calls[command] = calls.get(command, 0) + 1  # the command's n-th call
-        if not isinstance(concept, TranGene):
-            continue
-        info = concept.info
-        transients.append(
-            {
-                "result": name,
-                "command": command,
-                "call": call,
-                "scheme": concept.scheme,
-                "step": float(concept.step),
-                "t_start": float(concept.times[0]) if len(concept.times) else None,
-                "t_end": float(concept.times[-1]) if len(concept.times) else None,
-                "steps": int(info.get("steps", 0)),
-                "rejected_steps": int(info.get("rejected_steps", 0)),
-                "min_step": plain_value(info.get("min_step")),
-                "max_step": plain_value(info.get("max_step")),
-                # the steps that led to the archived instants (PTEM): their median
-                # (numpy's: the (a + b) / 2 of the former statistics.median, no list)
-                "median_step": float(np.median(concept.step_sizes[1:]))
-                if concept.step_sizes is not None and len(concept.step_sizes) > 1
-                else None,
-                "integration_seconds": float(info.get("integration_seconds", 0.0)),
-                # SCHEMA_TEMPS's PAS_MINI / PAS_MAXI as the deck gave them (None: default)
-                "pas_mini": plain_value(info.get("pas_mini")),
-                "pas_maxi": plain_value(info.get("pas_maxi")),
-            }
-        )
-        if "energy_residual" in info:  # ENERGIE=_F(): the final balance residual
-            transients[-1]["energy_residual"] = plain_value(info["energy_residual"])
-            transients[-1]["energy_residual_ratio"] = plain_value(info["energy_residual_ratio"])
-            transients[-1]["energy_residual_flow_ratio"] = plain_value(
-                info.get("energy_residual_flow_ratio")
-            )
-        shocks += [shock_summary(name, concept.times, shock) for shock in concept.shocks]
-    return transients, shocks
-
-
-def shock_summary(result: str | None, times, shock) -> dict:
-    """Peak and mean normal force, contact fraction and wear power
-    (code_aster's PUIS_USURE, :func:`asterlite.post.wear.wear_power`: time
-    mean of FN·|VT| over the sliding intervals) of one shock history."""
-    import numpy as np
-
-    from asterlite.post.wear import history_wear_power
-
-    fields = shock.fields
-    fn = np.asarray(fields.get("FN", np.zeros(len(times))), dtype=float)
-    in_contact = fn != 0.0
-    # an impact starts where the archived normal force leaves zero
-    impacts = int(in_contact[0]) + int(np.count_nonzero(in_contact[1:] & ~in_contact[:-1]))
-    return {
-        "result": result,
-        "shock": shock.name,
-        "impacts": impacts if fn.size else 0,
-        "max_FN": float(np.abs(fn).max()) if fn.size else 0.0,
-        "mean_FN": float(np.abs(fn).mean()) if fn.size else 0.0,
-        "contact_fraction": float(np.mean(fn != 0.0)) if fn.size else 0.0,
-        "wear_power": history_wear_power(times, fields),
-    }
 
 
 def _finish_output(

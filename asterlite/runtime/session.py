@@ -67,6 +67,7 @@ from asterlite.runtime.language_check import (
     refusal_of_valid_call,
 )
 from asterlite.runtime.outdir import create_file
+from asterlite.runtime.summaries import RunSummaries
 
 
 class DeckFinished(AsterliteError):
@@ -122,8 +123,8 @@ class Session:
     keyword_overrides: list[KeywordOverride] = field(default_factory=list)
     call_counts: dict[str, int] = field(default_factory=dict)  # calls per command so far
     keyword_edits: list[dict] = field(default_factory=list)  # what the overrides replaced
-    # (command, result name, concept) of every command that made a concept
-    produced: list[tuple[str, str | None, Any]] = field(default_factory=list)
+    # the summary of each transient a command made (not the results themselves)
+    summaries: RunSummaries = field(default_factory=RunSummaries)
     started: bool = False  # DEBUT or POURSUITE called in the current deck file
     # code_aster 15's generated object names ("0000001b") that decks may quote
     generated_names: GeneratedNames = field(default_factory=GeneratedNames)
@@ -260,7 +261,7 @@ class Session:
             from asterlite.lang import stdlib
             from asterlite.lang.limits import Limits
 
-            module = stdlib.os_module(lambda: self.output_dir, Limits())
+            module = stdlib.os_module(lambda: self.output_dir, Limits(), self.log)
             return module if name == "os" else module.attribute("path")
         if name in self.run.helper_modules:
             from asterlite.lang import Evaluator, parse_deck
@@ -652,7 +653,7 @@ class CommandProxy(DeckCallable):
         session.log(f"  done in {seconds:.3f} s")
         session.note_command(self.name, site.location, False)
         if isinstance(concept, Concept):
-            session.produced.append((self.name, site.assigned_name, concept))
+            session.summaries.add(self.name, site.assigned_name, concept)
         record_call(session, self.name, keywords, concept, reuse, site.location)
         # a reused concept keeps its name; a new one takes the deck's name
         if isinstance(concept, Concept) and site.assigned_name:
@@ -683,9 +684,14 @@ class CommandProxy(DeckCallable):
             session.log(self.name)
             return None
         if self.name == "DETRUIRE":
-            for occurrence in keywords.factor("CONCEPT"):
-                names = occurrence.get("NOM") or ()
-                for concept in names if isinstance(names, tuple) else (names,):
+            # NOM (code_aster 13+) or CONCEPT=_F(NOM=...) (older decks): every
+            # deck name bound to a destroyed concept goes
+            given = [keywords.get("NOM")]
+            given += [occurrence.get("NOM") for occurrence in keywords.factor("CONCEPT")]
+            for names in given:
+                for concept in names if isinstance(names, (tuple, list)) else (names,):
+                    if concept is None:
+                        continue
                     for key, value in list(session.namespace.items()):
                         if value is concept:
                             del session.namespace[key]

@@ -76,3 +76,14 @@ def newmark_states(values: np.ndarray, times: np.ndarray, beta: float, gamma: fl
             (1.0 - gamma) * acceleration[n] + gamma * acceleration[n + 1]
         )
     return values, velocity, acceleration
+
+
+@dataclass
+class ConstantInTime:
+    """The constant coefficient of a load whose imposed values do not vary
+    in time: the multiplier of their relations at every instant."""
+
+    value: float
+
+    def evaluate(self, times) -> np.ndarray:
+        return np.full(np.atleast_1d(np.asarray(times, dtype=float)).shape, self.value)

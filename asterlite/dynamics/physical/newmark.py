@@ -9,11 +9,9 @@ effective stiffness K + a0 M + a1 C factorised once per distinct step.
 
 from __future__ import annotations
 
-import scipy.sparse as sp
-from scipy.sparse.linalg import splu
-
 from asterlite.dynamics.physical.imposed import newmark_states
 from asterlite.dynamics.physical.stepping import fixed_step_loop
+from asterlite.fem.factorization import definite_solver
 
 
 def integrate(
@@ -30,15 +28,16 @@ def integrate(
             keff = system.stiffness + c[0] * system.mass
             if system.damping is not None:
                 keff = keff + c[1] * system.damping
-            factors[key] = (c, splu(sp.csc_matrix(keff)))
+            factors.clear()  # one factor at a time, refactorised when the step changes (dlnewi)
+            factors[key] = (c, definite_solver(keff))
         return factors[key]
 
     def step(dt, force, q, v, a):
-        c, lu = operator(dt)
+        c, solve = operator(dt)
         rhs = force + system.mass @ (c[0] * q + c[2] * v + c[3] * a)
         if system.damping is not None:
             rhs += system.damping @ (c[1] * q + c[4] * v + c[5] * a)
-        q_new = lu.solve(rhs)
+        q_new = solve(rhs)
         a_new = c[0] * (q_new - q) - c[2] * v - c[3] * a
         v_new = v + c[6] * a + c[7] * a_new
         return q_new, v_new, a_new

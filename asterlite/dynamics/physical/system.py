@@ -10,6 +10,10 @@ from scipy.sparse.linalg import splu
 
 from asterlite.dynamics.physical.imposed import ImposedMotion
 from asterlite.fem.constraints import Elimination, eliminate
+from asterlite.io.disk_rows import DiskRows
+
+# archived instants expanded to full fields at a time (temporaries of that size only)
+EXPAND_ROWS = 64
 
 
 @dataclass
@@ -74,17 +78,31 @@ class PhysicalSystem:
     def reduce_vector(self, full: np.ndarray) -> np.ndarray:
         return self.elimination.T.T @ full
 
-    def expand(self, q: np.ndarray) -> np.ndarray:
-        """Full displacement(s) from reduced ones: rows are instants when 2-D."""
+    def expand(self, q: np.ndarray, store: DiskRows | None = None) -> np.ndarray:
+        """Full displacement(s) from reduced ones: rows are instants when 2-D
+        (written to ``store`` and read back from it when given)."""
         if q.ndim == 1:
             return self.elimination.T @ q + self.elimination.u0
-        return (self.elimination.T @ q.T).T + self.elimination.u0
+        return self._expand_rows(q, self.elimination.u0, store)
 
-    def expand_rate(self, qdot: np.ndarray) -> np.ndarray:
+    def expand_rate(self, qdot: np.ndarray, store: DiskRows | None = None) -> np.ndarray:
         """Full velocities / accelerations (the imposed part is constant)."""
         if qdot.ndim == 1:
             return self.elimination.T @ qdot
-        return (self.elimination.T @ qdot.T).T
+        return self._expand_rows(qdot, None, store)
+
+    def _expand_rows(self, reduced: np.ndarray, offset, store) -> np.ndarray:
+        # by blocks of instants: the archive's only full-size array is the result
+        out = np.empty((reduced.shape[0], self.n_dofs)) if store is None else None
+        for start in range(0, reduced.shape[0], EXPAND_ROWS):
+            block = (self.elimination.T @ reduced[start : start + EXPAND_ROWS].T).T
+            if offset is not None:
+                block = block + offset
+            if store is None:
+                out[start : start + EXPAND_ROWS] = block
+            else:
+                store.append(block)
+        return out if store is None else store.array()
 
     def restrict(self, full: np.ndarray) -> np.ndarray:
         """Reduced coordinates of a full field (the values of the free DOFs)."""

@@ -5,10 +5,8 @@ The load at t + θ dt is extrapolated linearly from F_n and F_{n+1}."""
 
 from __future__ import annotations
 
-import scipy.sparse as sp
-from scipy.sparse.linalg import splu
-
 from asterlite.dynamics.physical.stepping import fixed_step_loop
+from asterlite.fem.factorization import definite_solver
 
 
 def integrate(system, times, q, v, a, mask, archive, theta=1.4, modal=None):
@@ -22,11 +20,12 @@ def integrate(system, times, q, v, a, mask, archive, theta=1.4, modal=None):
             keff = system.stiffness + (6.0 / tau**2) * system.mass
             if system.damping is not None:
                 keff = keff + (3.0 / tau) * system.damping
-            factors[key] = splu(sp.csc_matrix(keff))
+            factors.clear()  # one factor at a time, refactorised when the step changes
+            factors[key] = definite_solver(keff)
         return factors[key]
 
     def step(dt, force, q, v, a):
-        lu = operator(dt)
+        solve = operator(dt)
         tau = theta * dt
         f_old = previous_force["F"]
         if f_old is None:
@@ -35,7 +34,7 @@ def integrate(system, times, q, v, a, mask, archive, theta=1.4, modal=None):
         rhs = rhs + system.mass @ ((6.0 / tau**2) * q + (6.0 / tau) * v + 2.0 * a)
         if system.damping is not None:
             rhs += system.damping @ ((3.0 / tau) * q + 2.0 * v + (tau / 2.0) * a)
-        q_theta = lu.solve(rhs)
+        q_theta = solve(rhs)
         a_new = (
             6.0 / (theta**3 * dt**2) * (q_theta - q)
             - 6.0 / (theta**2 * dt) * v
