@@ -9,13 +9,15 @@ the first frequency.
 
     python benchmarks/large_modal.py                      # 10k, 25k, 50k, 98k DOFs
     python benchmarks/large_modal.py 100x17x17            # the 98 172-DOF bar only
+    python benchmarks/large_modal.py 100x17x17 --solver cholmod   # without MUMPS
     python benchmarks/large_modal.py 100x17x17 --solver superlu   # the old path
     python benchmarks/large_modal.py 40x8x8 --modes 20
 
-``--solver`` sets ASTERLITE_SPARSE_SOLVER for the child (auto: MUMPS and the
-block Lanczos method from asterlite.fem.sparse_direct.LARGE_LIMIT unknowns on
-when python-mumps imports, else SuperLU and ARPACK; superlu: the old path
-whatever the size).
+``--solver`` sets ASTERLITE_SPARSE_SOLVER for the child (auto: the block
+Lanczos method from asterlite.fem.sparse_direct.LARGE_LIMIT unknowns on, on a
+MUMPS factor when python-mumps imports, else on CHOLMOD's (cholespy);
+cholmod: CHOLMOD even where MUMPS is installed; superlu: SuperLU and ARPACK,
+the old path, whatever the size).
 """
 
 from __future__ import annotations
@@ -94,7 +96,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("sizes", nargs="*", default=list(SIZES), help="NXxNYxNZ cells")
     parser.add_argument("--modes", type=int, default=50)
-    parser.add_argument("--solver", default="auto", choices=("auto", "mumps", "superlu"))
+    parser.add_argument("--solver", default="auto", choices=("auto", "mumps", "cholmod", "superlu"))
     args = parser.parse_args()
     load = os.getloadavg()
     print(

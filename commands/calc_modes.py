@@ -68,6 +68,8 @@ def run(ctx, kw):
             f"factorisation of K - σM ({detail}factorisation {how['factor_seconds']:.1f} s, "
             f"iterations {how['iteration_seconds']:.1f} s)"
         )
+        if how["backend"] == "cholmod":
+            ctx.log(f"{install_hint('large')} (MUMPS) factorises large models several times faster")
     elif pencil.n >= sparse_direct.LARGE_LIMIT and not sparse_direct.mumps_available():
         ctx.log(
             f"{pencil.n} unknowns solved with SuperLU and ARPACK: "

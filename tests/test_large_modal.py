@@ -1,9 +1,10 @@
-"""Large modal solves: MUMPS factors (asterlite.fem.sparse_direct) and the
-block shift-invert Lanczos method (asterlite.modal.block_lanczos), checked
-against dense LAPACK and against the SuperLU + ARPACK path on a CALC_MODES
-deck. MUMPS comes with the ``large`` extra (python-mumps, built on Debian's
-libmumps-seq-dev); without it these tests skip, except in CI (``CI=true``),
-where .ci/run installs it."""
+"""Large modal solves: MUMPS and CHOLMOD factors (asterlite.fem.sparse_direct)
+and the block shift-invert Lanczos method (asterlite.modal.block_lanczos),
+checked against dense LAPACK and against the SuperLU + ARPACK path on a
+CALC_MODES deck. CHOLMOD (cholespy) is a core dependency; MUMPS comes with the
+``large`` extra (python-mumps, built on Debian's libmumps-seq-dev): without it
+the tests that need it skip, except in CI (``CI=true``), where .ci/run
+installs it."""
 
 from __future__ import annotations
 
@@ -21,8 +22,8 @@ from asterlite.runtime.runner import run_deck
 from tests.solid_meshes import aster_mesh_text, box_mesh, with_side_faces
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _needs_mumps():
+@pytest.fixture()
+def needs_mumps():
     if sparse_direct.mumps_available():
         return
     if os.environ.get("CI", "").lower() == "true":
@@ -41,7 +42,7 @@ def _grid_pencil(nx: int, ny: int):
     return sp.csc_matrix(k), sp.csc_matrix(m)
 
 
-def test_mumps_solves_blocks_and_counts_negative_pivots():
+def test_mumps_solves_blocks_and_counts_negative_pivots(needs_mumps):
     k, m = _grid_pencil(12, 12)
     dense = k.toarray()
     eigenvalues = np.linalg.eigvalsh(dense)
@@ -57,7 +58,7 @@ def test_mumps_solves_blocks_and_counts_negative_pivots():
     assert factor.negative_pivots == int(np.sum(eigenvalues < sigma)) == 10
 
 
-def test_closing_a_mumps_factor_leaves_the_last_solution_alone():
+def test_closing_a_mumps_factor_leaves_the_last_solution_alone(needs_mumps):
     # python-mumps 0.0.4's Context.__exit__ repeats the last job (a solve into
     # the last right-hand side, which is the returned solution): close() must
     # not call it (it corrupted freed memory: forma12c crashed)
@@ -73,7 +74,7 @@ def test_closing_a_mumps_factor_leaves_the_last_solution_alone():
         del other
 
 
-def test_a_singular_matrix_is_refused_by_name():
+def test_a_singular_matrix_is_refused_by_name(needs_mumps):
     k, _ = _grid_pencil(5, 5)
     singular = sp.csc_matrix(sp.block_diag([k, sp.csc_matrix((2, 2))]))
     with pytest.raises(sparse_direct.SingularFactorError, match="MUMPS"):
@@ -81,7 +82,7 @@ def test_a_singular_matrix_is_refused_by_name():
 
 
 @pytest.mark.parametrize("sigma_index", [None, 30])
-def test_block_lanczos_matches_lapack_with_double_eigenvalues(sigma_index):
+def test_block_lanczos_matches_lapack_with_double_eigenvalues(sigma_index, needs_mumps):
     k, m = _grid_pencil(20, 20)
     reference = sla.eigh(k.toarray(), m.toarray(), eigvals_only=True)
     sigma = 0.0
@@ -136,7 +137,7 @@ def _bar_frequencies(folder, solver, monkeypatch):
     return modes, log
 
 
-def test_calc_modes_on_mumps_equals_superlu_and_arpack(tmp_path, monkeypatch):
+def test_calc_modes_on_mumps_equals_superlu_and_arpack(tmp_path, monkeypatch, needs_mumps):
     large, log = _bar_frequencies(tmp_path / "mumps", "mumps", monkeypatch)
     small, old_log = _bar_frequencies(tmp_path / "superlu", "superlu", monkeypatch)
     assert log.count("block Lanczos on a MUMPS factorisation") == 3
@@ -146,7 +147,7 @@ def test_calc_modes_on_mumps_equals_superlu_and_arpack(tmp_path, monkeypatch):
         np.testing.assert_allclose(new, old, rtol=1e-9)
 
 
-def test_arpack_takes_over_when_the_lanczos_basis_reaches_its_bound(monkeypatch):
+def test_arpack_takes_over_when_the_lanczos_basis_reaches_its_bound(monkeypatch, needs_mumps):
     from asterlite.modal import eigen
 
     k, m = _grid_pencil(20, 20)
@@ -160,3 +161,93 @@ def test_arpack_takes_over_when_the_lanczos_basis_reaches_its_bound(monkeypatch)
     values, vectors, how = eigen._large_shift_invert(k, m, 0.0, 12)
     assert how["method"] == "ARPACK" and how["backend"] == "mumps"
     np.testing.assert_allclose(np.sort(values), reference, rtol=1e-11)
+
+
+# --- CHOLMOD (cholespy): the path without the large extra -------------------
+
+
+def test_cholmod_solves_blocks_and_refuses_an_indefinite_matrix_quietly(capfd):
+    k, m = _grid_pencil(12, 12)
+    factor = sparse_direct.factorize_symmetric(k, backend="cholmod")
+    assert factor.backend == "cholmod" and factor.negative_pivots == 0
+    rhs = np.random.default_rng(1).standard_normal((k.shape[0], 5))
+    x = factor.solve(np.asfortranarray(rhs))  # the Lanczos blocks are Fortran-ordered
+    np.testing.assert_allclose(k @ x, rhs, atol=1e-10)
+    np.testing.assert_allclose(factor.solve(rhs[:, 2]), x[:, 2], atol=1e-12)
+    assert not factor.nearly_singular(k)
+    sigma = 0.5 * sum(np.linalg.eigvalsh(k.toarray())[9:11])
+    with pytest.raises(sparse_direct.NotPositiveDefiniteError, match="CHOLMOD"):
+        sparse_direct.factorize_symmetric(sp.csc_matrix(k - sigma * m), backend="cholmod")
+    shown = capfd.readouterr()
+    assert "CHOLMOD" not in shown.out + shown.err  # its C warning is not shown
+
+
+def _free_chain(n: int, seed: int | None = None):
+    """A free-free chain of springs and unit masses: K is singular (the rigid
+    translation). Unit springs (seed None) make CHOLMOD meet an exactly zero
+    pivot; random ones leave a round-off pivot that it accepts."""
+    springs = np.ones(n - 1) if seed is None else np.random.default_rng(seed).uniform(0.5, 2, n - 1)
+    diagonal = np.zeros(n)
+    diagonal[:-1] += springs
+    diagonal[1:] += springs
+    k = sp.diags([-springs, diagonal, -springs], [-1, 0, 1], format="csc")
+    return k, sp.identity(n, format="csc")
+
+
+@pytest.mark.parametrize("seed", [None, 5])
+def test_cholmod_steps_below_the_rigid_body_mode_of_a_free_structure(seed):
+    from asterlite.modal import eigen
+
+    k, m = _free_chain(600, seed)
+    if seed is None:
+        with pytest.raises(sparse_direct.NotPositiveDefiniteError):
+            sparse_direct.factorize_symmetric(k, backend="cholmod")
+    else:  # factorised, but a solve shows the null space
+        assert sparse_direct.factorize_symmetric(k, backend="cholmod").nearly_singular(k)
+    exact = sla.eigh(k.toarray(), eigvals_only=True)[:12]
+    sigma, factor = eigen._large_smallest_shift(k, m, "cholmod")
+    assert sigma < 0.0 and factor.backend == "cholmod"  # K (singular) was not kept
+    values, _, how = eigen._large_shift_invert(k, m, sigma, 12, factor)
+    assert how["backend"] == "cholmod" and how["method"] == "block Lanczos"
+    values = np.sort(values)
+    np.testing.assert_allclose(values[1:], exact[1:], rtol=1e-9)
+    assert abs(values[0]) < 1e-9
+    # clamped at one end, K itself is factorised (σ = 0)
+    sigma, factor = eigen._large_smallest_shift(
+        sp.csc_matrix(k[1:, 1:]), sp.csc_matrix(m[1:, 1:]), "cholmod"
+    )
+    assert sigma == 0.0
+    factor.close()
+
+
+@pytest.mark.parametrize(
+    ("requested", "mumps", "n", "definite", "expected"),
+    [
+        ("auto", True, 3999, True, "superlu"),  # below LARGE_LIMIT: the code of before
+        ("auto", False, 3999, True, "superlu"),
+        ("auto", True, 4000, False, "mumps"),
+        ("auto", False, 4000, True, "cholmod"),
+        ("auto", False, 4000, False, "superlu"),  # indefinite without MUMPS
+        ("cholmod", True, 500, True, "cholmod"),
+        ("cholmod", True, 500, False, "superlu"),
+        ("mumps", False, 500, True, "cholmod"),
+        ("superlu", True, 10**5, True, "superlu"),
+    ],
+)
+def test_backend_choice(monkeypatch, requested, mumps, n, definite, expected):
+    monkeypatch.setenv("ASTERLITE_SPARSE_SOLVER", requested)
+    monkeypatch.setattr(sparse_direct, "mumps_available", lambda: mumps)
+    assert sparse_direct.choose_backend(n, definite=definite) == expected
+
+
+def test_calc_modes_on_cholmod_equals_superlu_and_arpack(tmp_path, monkeypatch):
+    monkeypatch.setattr(sparse_direct, "mumps_available", lambda: False)
+    large, log = _bar_frequencies(tmp_path / "cholmod", "cholmod", monkeypatch)
+    small, old_log = _bar_frequencies(tmp_path / "superlu", "superlu", monkeypatch)
+    # PLUS_PETITE on CHOLMOD; CENTRE and BANDE shift inside the spectrum,
+    # where K - σM is indefinite: SuperLU and ARPACK, as before
+    assert log.count("block Lanczos on a CHOLMOD factorisation") == 1
+    assert "CHOLMOD" not in old_log
+    assert [len(f) for f in large] == [len(f) for f in small] == [20, 6, len(small[2])]
+    for new, old in zip(large, small, strict=True):
+        np.testing.assert_allclose(new, old, rtol=1e-9)

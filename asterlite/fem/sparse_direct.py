@@ -1,6 +1,7 @@
 """Sparse direct factorisation of a symmetric matrix, by the best library present.
 
-Two back ends, chosen by size and by what is installed:
+Three back ends, chosen by size, by what is installed and by whether the
+matrix is expected positive definite:
 
 - ``mumps``: MUMPS (the solver code_aster uses), through ``python-mumps``
   (the ``large`` extra; it builds against Debian's ``libmumps-seq-dev``).
@@ -9,18 +10,28 @@ Two back ends, chosen by size and by what is installed:
   dissection-like orderings (SCOTCH, AMF) keep the fill-in of 3D meshes low;
   blocks of right-hand sides are solved with BLAS 3. It also gives the
   inertia (the number of negative pivots).
+- ``cholmod``: CHOLMOD's Cholesky through ``cholespy`` (a core dependency:
+  wheels, no compiler). Positive definite matrices only (K - σM with σ below
+  the spectrum: PLUS_PETITE, the common case); nested-dissection ordering,
+  so its fill-in on 3D meshes is MUMPS's, but cholespy factorises
+  column by column (simplicial), several times slower than MUMPS's fronts.
+  A matrix that is not positive definite raises
+  :class:`NotPositiveDefiniteError` and the caller falls back on SuperLU.
 - ``superlu``: scipy's SuperLU, always present. Its fill-in grows fast on 3D
   meshes (the 98 172-DOF HEXA8 bar: 301 s and 10.9 GB for 50 modes), so it
-  serves small models and machines without MUMPS.
+  serves small models and indefinite shifts on machines without MUMPS.
 
-``factorize_symmetric`` picks MUMPS for matrices of at least ``LARGE_LIMIT``
-unknowns when it imports, SuperLU otherwise; ``ASTERLITE_SPARSE_SOLVER``
-(``auto``, ``mumps``, ``superlu``) overrides the choice.
+``choose_backend`` picks MUMPS for matrices of at least ``LARGE_LIMIT``
+unknowns when it imports, else CHOLMOD when the matrix should be positive
+definite, SuperLU otherwise; ``ASTERLITE_SPARSE_SOLVER`` (``auto``,
+``mumps``, ``cholmod``, ``superlu``) overrides the choice.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
+import sys
 
 import numpy as np
 import scipy.sparse as sp
@@ -29,11 +40,21 @@ import scipy.sparse.linalg as spla
 #: from this many unknowns on, a shift-invert eigen solve factorises with MUMPS
 #: (when installed) and iterates with the block Lanczos method
 LARGE_LIMIT = 4000
-BACKENDS = ("mumps", "superlu")
+BACKENDS = ("mumps", "cholmod", "superlu")
+#: relative residual ||A x - b|| / ||b|| of one solve above which a Cholesky
+#: factor is taken as singular: a backward-stable solve leaves about
+#: eps · cond(A), so this flags cond(A) beyond ~1e10, where MUMPS's null
+#: pivot test (pivots below 1e-11 of the row sums) flags it
+SINGULAR_RESIDUAL = 1e-6
 
 
 class SingularFactorError(ValueError):
     """The matrix is singular (a zero pivot, or MUMPS's numerically singular)."""
+
+
+class NotPositiveDefiniteError(ValueError):
+    """CHOLMOD met a pivot that is not positive: the matrix is indefinite (or
+    singular), a factorisation with pivoting is needed."""
 
 
 def mumps_available() -> bool:
@@ -51,14 +72,17 @@ def requested_backend() -> str:
     return name
 
 
-def choose_backend(n: int) -> str:
-    """The back end for a matrix of ``n`` unknowns."""
+def choose_backend(n: int, definite: bool = False) -> str:
+    """The back end for a matrix of ``n`` unknowns; ``definite``: the caller
+    expects it positive definite (K - σM with σ <= 0), so CHOLMOD may take it."""
     name = requested_backend()
     if name == "superlu":
         return "superlu"
-    if name == "mumps" or n >= LARGE_LIMIT:
-        return "mumps" if mumps_available() else "superlu"
-    return "superlu"
+    if name == "auto" and n < LARGE_LIMIT:
+        return "superlu"
+    if name in ("auto", "mumps") and mumps_available():
+        return "mumps"
+    return "cholmod" if definite else "superlu"
 
 
 class SuperLUFactor:
@@ -129,12 +153,85 @@ class MumpsFactor:
         self._context = None
 
 
+class CholmodFactor:
+    """CHOLMOD's LLᵀ of a symmetric positive definite matrix (cholespy).
+
+    Raises :class:`NotPositiveDefiniteError` when a pivot is not positive.
+    A successful factorisation proves the matrix positive definite, so the
+    inertia is known: no negative pivot."""
+
+    backend = "cholmod"
+    negative_pivots = 0
+
+    def __init__(self, matrix):
+        from cholespy import CholeskySolverD, MatrixType
+
+        csc = sp.csc_matrix(matrix)
+        self.n = csc.shape[0]
+        try:
+            # CHOLMOD prints a warning on an indefinite matrix before
+            # cholespy raises: the caller decides what that means
+            with _c_output_silenced():
+                self._factor = CholeskySolverD(
+                    self.n,
+                    csc.indptr.astype(np.int32),
+                    csc.indices.astype(np.int32),
+                    csc.data.astype(np.float64),
+                    MatrixType.CSC,
+                )
+        except ValueError as exc:
+            raise NotPositiveDefiniteError(f"CHOLMOD: {exc}") from None
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        b = np.ascontiguousarray(rhs, dtype=np.float64)
+        x = np.empty_like(b)
+        self._factor.solve(b, x)
+        return x
+
+    def nearly_singular(self, matrix) -> bool:
+        """Whether one solve with ``matrix`` (the factorised one) leaves a
+        relative residual above SINGULAR_RESIDUAL: a positive pivot that is
+        round-off of a zero one (a free structure's K) passes CHOLMOD's
+        test but gives solutions dominated by the null space."""
+        b = np.random.default_rng(0).uniform(-1.0, 1.0, self.n)
+        residual = matrix @ self.solve(b) - b
+        return bool(np.linalg.norm(residual) > SINGULAR_RESIDUAL * np.linalg.norm(b))
+
+    def close(self) -> None:
+        self._factor = None
+
+
+@contextlib.contextmanager
+def _c_output_silenced():
+    """File descriptors 1 and 2 sent to /dev/null for the block: CHOLMOD
+    prints its warnings with C's printf, past sys.stdout."""
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(AttributeError, OSError, ValueError):
+            stream.flush()
+    try:
+        saved = [os.dup(1), os.dup(2)]
+    except OSError:  # no usable descriptors: nothing to silence
+        yield
+        return
+    try:
+        with open(os.devnull, "wb") as null:
+            os.dup2(null.fileno(), 1)
+            os.dup2(null.fileno(), 2)
+        yield
+    finally:
+        for fd, copy in enumerate(saved, start=1):
+            os.dup2(copy, fd)
+            os.close(copy)
+
+
 def factorize_symmetric(matrix, backend: str | None = None, **options):
     """A factor of the symmetric ``matrix`` with ``.solve(b)`` for a vector or a
-    block of columns, ``.backend`` and ``.negative_pivots`` (MUMPS's inertia,
-    None for SuperLU); ``options`` go to MUMPS."""
+    block of columns, ``.backend`` and ``.negative_pivots`` (the inertia: MUMPS's
+    count, 0 for a CHOLMOD factor, None for SuperLU); ``options`` go to MUMPS."""
     matrix = sp.csc_matrix(matrix)
     name = backend or choose_backend(matrix.shape[0])
     if name == "mumps":
         return MumpsFactor(matrix, **options)
+    if name == "cholmod":
+        return CholmodFactor(matrix)
     return SuperLUFactor(matrix)

@@ -7,11 +7,13 @@ and the reduced pencil (Tᵀ K T, Tᵀ M T) is solved:
   of K - σM so that a singular mass (massless DOFs) is harmless;
 - larger ones with ARPACK in shift-invert mode (``scipy.sparse.linalg.eigsh``),
   so only K - σM is factorised (SuperLU) and the matrices stay sparse;
-- large ones (``asterlite.fem.sparse_direct.LARGE_LIMIT`` unknowns and more,
-  when MUMPS is installed: the ``large`` extra) factorise K - σM with MUMPS
-  and iterate with the block Lanczos method (``asterlite.modal.block_lanczos``),
+- large ones (``asterlite.fem.sparse_direct.LARGE_LIMIT`` unknowns and more)
+  factorise K - σM with MUMPS when it is installed (the ``large`` extra),
+  else with CHOLMOD when K - σM should be positive definite (σ <= 0), and
+  iterate with the block Lanczos method (``asterlite.modal.block_lanczos``),
   which solves blocks of right-hand sides at once; ARPACK on the same factor
-  takes over if the Lanczos basis would grow past its bound.
+  takes over if the Lanczos basis would grow past its bound. An indefinite
+  K - σM without MUMPS goes to SuperLU and ARPACK, as smaller models do.
 
 Selections mirror CALC_MODES: the smallest / largest n, the n nearest a
 frequency (CENTRE), one mode nearest each given frequency (PROCHE), every
@@ -139,44 +141,56 @@ def _shift_invert(k, m, sigma: float, count: int, lu=None):
     return vals, vecs
 
 
-def _large_factor(k, m, sigma: float):
-    """MUMPS factor of K - σM (sparse_direct), or an EigenError."""
+def _large_factor(k, m, sigma: float, backend: str):
+    """MUMPS or CHOLMOD factor of K - σM (sparse_direct), or an EigenError
+    (CHOLMOD's NotPositiveDefiniteError passes through: the caller falls
+    back on SuperLU)."""
     try:
-        return sparse_direct.factorize_symmetric((k - sigma * m).tocsc(), backend="mumps")
+        return sparse_direct.factorize_symmetric((k - sigma * m).tocsc(), backend=backend)
     except sparse_direct.SingularFactorError as exc:
         raise EigenError(f"K - σM is singular at σ = {sigma:g} ({exc})") from None
 
 
-def _large_smallest_shift(k, m):
-    """(σ, MUMPS factor of K - σM) for the lowest modes, as ``_smallest_shift``
-    decides: σ = 0 when K factorises without a pivot below 1e-11 of its scale
-    (K itself, not a rounded K - σM: the lowest eigenvalues keep every digit),
-    else a tiny negative shift over the rigid-body modes."""
+def _large_smallest_shift(k, m, backend: str):
+    """(σ, factor of K - σM) for the lowest modes, as ``_smallest_shift``
+    decides: σ = 0 when K factorises and is not numerically singular (K
+    itself, not a rounded K - σM: the lowest eigenvalues keep every digit),
+    else a tiny negative shift over the rigid-body modes. MUMPS tells a
+    singular K by its null pivots (below 1e-11 of the scale), CHOLMOD by a
+    non-positive pivot or by the residual of one solve."""
     try:
-        factor = sparse_direct.factorize_symmetric(
-            k.tocsc(), backend="mumps", null_pivot_threshold=1e-11
-        )
-        if factor.null_pivots == 0:
+        if backend == "mumps":
+            factor = sparse_direct.factorize_symmetric(
+                k.tocsc(), backend="mumps", null_pivot_threshold=1e-11
+            )
+            singular = factor.null_pivots > 0
+        else:
+            factor = sparse_direct.factorize_symmetric(k.tocsc(), backend="cholmod")
+            singular = factor.nearly_singular(k)
+        if not singular:
             return 0.0, factor
         factor.close()
-    except sparse_direct.SingularFactorError:
+    except (sparse_direct.SingularFactorError, sparse_direct.NotPositiveDefiniteError):
         pass
     sigma = _default_shift(k, m, 1e-8)
-    return sigma, _large_factor(k, m, sigma)
+    return sigma, _large_factor(k, m, sigma, backend)
 
 
-def _large_shift_invert(k, m, sigma: float, count: int, factor=None, factor_seconds=0.0):
-    """``count`` eigenpairs nearest σ: block Lanczos on a MUMPS factor of
-    K - σM, ARPACK on the same factor when the Lanczos basis reaches its
-    bound. Returns (values, vectors, how: a dict for the log, with the wall
-    seconds of the factorisation and of the iterations)."""
+def _large_shift_invert(
+    k, m, sigma: float, count: int, factor=None, factor_seconds=0.0, backend: str = "mumps"
+):
+    """``count`` eigenpairs nearest σ: block Lanczos on a MUMPS or CHOLMOD
+    factor of K - σM (``factor``, else one made with ``backend``), ARPACK on
+    the same factor when the Lanczos basis reaches its bound. Returns
+    (values, vectors, how: a dict for the log, with the wall seconds of the
+    factorisation and of the iterations)."""
     n = k.shape[0]
     count = min(count, n - 1)
     if count <= 0:
         return np.zeros(0), np.zeros((n, 0)), {}
     if factor is None:
         start = time.perf_counter()
-        factor = _large_factor(k, m, sigma)
+        factor = _large_factor(k, m, sigma, backend)
         factor_seconds = time.perf_counter() - start
     start = time.perf_counter()
     try:
@@ -252,11 +266,11 @@ class ReducedPencil:
     def dense(self) -> bool:
         return self.n <= DENSE_LIMIT
 
-    @property
-    def large(self) -> bool:
-        """Solved by MUMPS and block Lanczos (sparse_direct decides by size
-        and by what is installed)."""
-        return not self.dense and sparse_direct.choose_backend(self.n) == "mumps"
+    def sparse_backend(self, sigma: float) -> str:
+        """The factorisation of K - σM (σ in ω²) a sparse solve uses:
+        sparse_direct decides by size, by what is installed and by whether
+        K - σM should be positive definite (σ <= 0)."""
+        return sparse_direct.choose_backend(self.n, definite=sigma <= 0.0)
 
     def all_modes(self):
         if self._all is None:
@@ -292,12 +306,18 @@ class ReducedPencil:
             order = np.argsort(np.abs(vals - sigma), kind="stable")[:count]
             return vals[order], vecs[:, order]
         k, m = self._solver_k, self._solver_m
-        if self.large:
-            vals, vecs, self.last_solve = _large_shift_invert(
-                k, m, self._solver_shift(sigma), count
-            )
-        else:
-            vals, vecs = _shift_invert(k, m, self._solver_shift(sigma), count)
+        shift = self._solver_shift(sigma)
+        backend = self.sparse_backend(sigma)
+        self.last_solve = {}
+        if backend != "superlu":
+            try:
+                vals, vecs, self.last_solve = _large_shift_invert(
+                    k, m, shift, count, backend=backend
+                )
+            except sparse_direct.NotPositiveDefiniteError:
+                backend = "superlu"  # K itself is indefinite (a prestressed K)
+        if backend == "superlu":
+            vals, vecs = _shift_invert(k, m, shift, count)
         vals = self._omega2(vals)
         order = np.argsort(np.abs(vals - sigma), kind="stable")
         return self._settled(vals[order], vecs[:, order])
@@ -307,13 +327,18 @@ class ReducedPencil:
             vals, vecs = self.all_modes()
             return vals[:count], vecs[:, :count]
         k, m = self._solver_k, self._solver_m
-        if self.large:
+        backend = self.sparse_backend(0.0)
+        self.last_solve = {}
+        if backend != "superlu":
             start = time.perf_counter()
-            sigma, factor = _large_smallest_shift(k, m)
-            vals, vecs, self.last_solve = _large_shift_invert(
-                k, m, sigma, count, factor, time.perf_counter() - start
-            )
-        else:
+            try:
+                sigma, factor = _large_smallest_shift(k, m, backend)
+                vals, vecs, self.last_solve = _large_shift_invert(
+                    k, m, sigma, count, factor, time.perf_counter() - start
+                )
+            except sparse_direct.NotPositiveDefiniteError:
+                backend = "superlu"  # K is indefinite (a prestressed K)
+        if backend == "superlu":
             sigma, lu = _smallest_shift(k, m)
             vals, vecs = _shift_invert(k, m, sigma, count, lu)
         vals = self._omega2(vals)
