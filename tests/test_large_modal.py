@@ -251,3 +251,28 @@ def test_calc_modes_on_cholmod_equals_superlu_and_arpack(tmp_path, monkeypatch):
     assert [len(f) for f in large] == [len(f) for f in small] == [20, 6, len(small[2])]
     for new, old in zip(large, small, strict=True):
         np.testing.assert_allclose(new, old, rtol=1e-9)
+
+
+def test_sturm_count_of_a_large_model_reads_the_inertia_of_its_factor(needs_mumps, monkeypatch):
+    from asterlite.fem.constraints import eliminate
+    from asterlite.modal.eigen import ReducedPencil
+
+    nx = ny = 64  # 4 096 unknowns: from LARGE_LIMIT on, no SuperLU factor
+    k, m = _grid_pencil(nx, ny)
+    one_d = 2.0 - 2.0 * np.cos(np.arange(1, nx + 1) * np.pi / (nx + 1))
+    exact = np.sort(np.add.outer(one_d, one_d).ravel())
+    n = k.shape[0]
+    pencil = ReducedPencil(k, m, eliminate(sp.csr_matrix((0, n)), np.zeros(0), n))
+    assert pencil.n >= sparse_direct.LARGE_LIMIT
+
+    def no_superlu(*args, **kwargs):
+        raise AssertionError("SuperLU factorised a large model")
+
+    monkeypatch.setattr("scipy.sparse.linalg.splu", no_superlu)
+    gaps = np.flatnonzero(np.diff(exact[:300]) > 1e-6)  # between distinct values
+    for index in (gaps[0], gaps[len(gaps) // 2], gaps[-1]):
+        sigma = 0.5 * (exact[index] + exact[index + 1])
+        assert pencil.count_below(sigma) == index + 1
+    assert pencil.count_below(-1.0) == 0
+    monkeypatch.setattr(sparse_direct, "mumps_available", lambda: False)
+    assert pencil.count_below(-1.0) == 0  # CHOLMOD: positive definite below the spectrum

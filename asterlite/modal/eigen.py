@@ -211,6 +211,22 @@ def _large_shift_invert(
     return vals, vecs, how
 
 
+def _large_inertia(shifted, backend: str):
+    """The number of negative eigenvalues of the symmetric ``shifted`` from a
+    MUMPS or CHOLMOD factor: MUMPS's count of negative pivots, 0 when
+    CHOLMOD factorises it (positive definite); None when it is singular,
+    False when CHOLMOD finds it indefinite (SuperLU must count)."""
+    try:
+        factor = sparse_direct.factorize_symmetric(shifted.tocsc(), backend=backend)
+    except sparse_direct.SingularFactorError:
+        return None
+    except sparse_direct.NotPositiveDefiniteError:
+        return False
+    count = factor.negative_pivots
+    factor.close()
+    return count
+
+
 def _scale_exponent(matrix) -> int:
     """0, or the exponent e of a power of two 2**e bringing the matrix's
     largest entry near 1 when it is far from it."""
@@ -386,6 +402,11 @@ class ReducedPencil:
         if self.dense:
             return int(np.count_nonzero(self.all_modes()[0] < omega2))
         shifted = self._solver_k - self._solver_shift(omega2) * self._solver_m
+        backend = self.sparse_backend(omega2)
+        if backend != "superlu":  # a large model: not SuperLU's fill-in
+            count = _large_inertia(shifted, backend)
+            if count is not False:
+                return count
         try:
             lu = spla.splu(
                 shifted.tocsc(),
