@@ -245,8 +245,10 @@ def test_calc_modes_on_cholmod_equals_superlu_and_arpack(tmp_path, monkeypatch):
     large, log = _bar_frequencies(tmp_path / "cholmod", "cholmod", monkeypatch)
     small, old_log = _bar_frequencies(tmp_path / "superlu", "superlu", monkeypatch)
     # PLUS_PETITE on CHOLMOD; CENTRE and BANDE shift inside the spectrum,
-    # where K - σM is indefinite: SuperLU and ARPACK, as before
+    # where K - σM is indefinite: their modes come from the lowest up on
+    # CHOLMOD's factor of K
     assert log.count("block Lanczos on a CHOLMOD factorisation") == 1
+    assert log.count("lowest modes) on a CHOLMOD factorisation") == 2
     assert "CHOLMOD" not in old_log
     assert [len(f) for f in large] == [len(f) for f in small] == [20, 6, len(small[2])]
     for new, old in zip(large, small, strict=True):
@@ -276,3 +278,44 @@ def test_sturm_count_of_a_large_model_reads_the_inertia_of_its_factor(needs_mump
     assert pencil.count_below(-1.0) == 0
     monkeypatch.setattr(sparse_direct, "mumps_available", lambda: False)
     assert pencil.count_below(-1.0) == 0  # CHOLMOD: positive definite below the spectrum
+
+
+def test_modes_nearest_a_positive_shift_without_mumps_come_from_the_lowest_up(monkeypatch):
+    from asterlite.fem.constraints import eliminate
+    from asterlite.modal import eigen
+
+    nx = ny = 24  # 576 unknowns, taken as large (above the dense solver's limit)
+    k, m = _grid_pencil(nx, ny)
+    one_d = 2.0 - 2.0 * np.cos(np.arange(1, nx + 1) * np.pi / (nx + 1))
+    exact = np.sort(np.add.outer(one_d, one_d).ravel())
+    n = k.shape[0]
+    monkeypatch.setattr(sparse_direct, "LARGE_LIMIT", 500)
+    monkeypatch.setattr(sparse_direct, "mumps_available", lambda: False)
+    calls = []
+    real_splu = eigen.spla.splu
+    monkeypatch.setattr(eigen.spla, "splu", lambda *a, **kw: calls.append(1) or real_splu(*a, **kw))
+
+    def pencil():
+        return eigen.ReducedPencil(k, m, eliminate(sp.csr_matrix((0, n)), np.zeros(0), n))
+
+    sigma = 0.5 * (exact[30] + exact[31])
+    nearest = exact[np.argsort(np.abs(exact - sigma), kind="stable")[:6]]
+    solved = pencil()
+    values, vectors = solved.nearest(sigma, 6)
+    np.testing.assert_allclose(np.sort(values), np.sort(nearest), rtol=1e-10)
+    residual = k @ vectors - (m @ vectors) * values
+    assert np.linalg.norm(residual, axis=0).max() < 1e-8
+    assert solved.last_solve["backend"] == "cholmod" and not calls
+    assert "lowest modes" in solved.last_solve["method"]
+    # a band: every mode inside, K factorised once for all its growing counts
+    gaps = np.flatnonzero(np.diff(exact[:100]) > 1e-6)  # between distinct values
+    first, last = gaps[gaps >= 20][0] + 1, gaps[gaps >= 40][0]
+    low, high = 0.5 * (exact[first - 1] + exact[first]), 0.5 * (exact[last] + exact[last + 1])
+    values, _ = solved.band(low, high)
+    np.testing.assert_allclose(np.sort(values), exact[first : last + 1], rtol=1e-10)
+    assert not calls
+    # more modes below the shift than BOTTOM_UP_LIMIT: SuperLU and ARPACK, as before
+    monkeypatch.setattr(eigen, "BOTTOM_UP_LIMIT", 16)
+    values, _ = pencil().nearest(sigma, 6)
+    np.testing.assert_allclose(np.sort(values), np.sort(nearest), rtol=1e-10)
+    assert calls

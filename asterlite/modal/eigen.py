@@ -12,8 +12,11 @@ and the reduced pencil (Tᵀ K T, Tᵀ M T) is solved:
   else with CHOLMOD when K - σM should be positive definite (σ <= 0), and
   iterate with the block Lanczos method (``asterlite.modal.block_lanczos``),
   which solves blocks of right-hand sides at once; ARPACK on the same factor
-  takes over if the Lanczos basis would grow past its bound. An indefinite
-  K - σM without MUMPS goes to SuperLU and ARPACK, as smaller models do.
+  takes over if the Lanczos basis would grow past its bound. Without MUMPS,
+  the modes nearest a shift inside the spectrum (CENTRE, BANDE) come from the
+  lowest modes up, on CHOLMOD's factor of K, while at most
+  ``BOTTOM_UP_LIMIT`` modes lie below them; beyond, or when K is indefinite,
+  SuperLU and ARPACK factorise K - σM as smaller models do.
 
 Selections mirror CALC_MODES: the smallest / largest n, the n nearest a
 frequency (CENTRE), one mode nearest each given frequency (PROCHE), every
@@ -35,6 +38,11 @@ from asterlite.fem.constraints import Elimination
 from asterlite.modal import block_lanczos
 
 DENSE_LIMIT = 400
+#: without MUMPS, the modes nearest a positive shift of a large model are
+#: computed from the lowest up on CHOLMOD's factor of K while they are among
+#: this many lowest modes (the Lanczos basis holds about 5 vectors per mode,
+#: and its small eigen problem grows with it)
+BOTTOM_UP_LIMIT = 128
 TWO_PI = 2.0 * np.pi
 # matrices whose largest entry lies outside [2**-SAFE_EXPONENT, 2**SAFE_EXPONENT]
 # are scaled by a power of two before solving: a stiffness of 1e-310 (a
@@ -177,7 +185,14 @@ def _large_smallest_shift(k, m, backend: str):
 
 
 def _large_shift_invert(
-    k, m, sigma: float, count: int, factor=None, factor_seconds=0.0, backend: str = "mumps"
+    k,
+    m,
+    sigma: float,
+    count: int,
+    factor=None,
+    factor_seconds=0.0,
+    backend: str = "mumps",
+    keep_factor: bool = False,
 ):
     """``count`` eigenpairs nearest σ: block Lanczos on a MUMPS or CHOLMOD
     factor of K - σM (``factor``, else one made with ``backend``), ARPACK on
@@ -207,7 +222,8 @@ def _large_shift_invert(
         factor_seconds=factor_seconds,
         iteration_seconds=time.perf_counter() - start,
     )
-    factor.close()
+    if not keep_factor:
+        factor.close()
     return vals, vecs, how
 
 
@@ -277,6 +293,9 @@ class ReducedPencil:
         self._all = None
         # how the last sparse solve went (method, factorisation back end, ...)
         self.last_solve: dict = {}
+        # (σ, CHOLMOD factor of K - σM, its seconds) for the modes nearest
+        # positive shifts without MUMPS; False once K proved indefinite
+        self._lowest_factor = None
 
     @property
     def dense(self) -> bool:
@@ -332,11 +351,59 @@ class ReducedPencil:
                 )
             except sparse_direct.NotPositiveDefiniteError:
                 backend = "superlu"  # K itself is indefinite (a prestressed K)
+        if backend == "superlu" and self._bottom_up_possible():
+            found = self._nearest_from_lowest(shift, count)
+            if found is not None:
+                vals, vecs, self.last_solve = found
+                backend = "cholmod"
         if backend == "superlu":
             vals, vecs = _shift_invert(k, m, shift, count)
         vals = self._omega2(vals)
         order = np.argsort(np.abs(vals - sigma), kind="stable")
         return self._settled(vals[order], vecs[:, order])
+
+    def _bottom_up_possible(self) -> bool:
+        """A large model without MUMPS, whose K CHOLMOD may factorise."""
+        return (
+            self._lowest_factor is not False
+            and sparse_direct.choose_backend(self.n, definite=True) == "cholmod"
+        )
+
+    def _nearest_from_lowest(self, shift: float, count: int):
+        """(values, vectors, how) of the ``count`` eigenpairs nearest the
+        solver's ``shift``, found among the lowest modes: the block Lanczos
+        method on one CHOLMOD factor of K (kept for the next calls of this
+        pencil, BANDE's growing counts) asks for twice as many lowest modes
+        until the highest found lies beyond the farthest of the ``count``
+        nearest, so that no mode nearer the shift is left out. None when K is
+        indefinite or more than BOTTOM_UP_LIMIT modes would be needed."""
+        k, m = self._solver_k, self._solver_m
+        if self._lowest_factor is None:
+            start = time.perf_counter()
+            try:
+                sigma, factor = _large_smallest_shift(k, m, "cholmod")
+            except sparse_direct.NotPositiveDefiniteError:
+                self._lowest_factor = False
+                return None
+            self._lowest_factor = (sigma, factor, time.perf_counter() - start)
+        bound = min(BOTTOM_UP_LIMIT, self.n - 1)
+        if count > bound:
+            return None
+        sigma, factor, seconds = self._lowest_factor
+        wanted = count
+        while True:
+            vals, vecs, how = _large_shift_invert(
+                k, m, sigma, wanted, factor, seconds, keep_factor=True
+            )
+            seconds = 0.0  # the factorisation is counted once
+            order = np.argsort(np.abs(vals - shift), kind="stable")[:count]
+            farthest = float(np.abs(vals[order[-1]] - shift))
+            if vals.max() >= shift + farthest or wanted >= self.n - 1:
+                how["method"] = f"block Lanczos ({wanted} lowest modes)"
+                return vals[order], vecs[:, order], how
+            if wanted >= bound:
+                return None
+            wanted = min(2 * wanted, bound)
 
     def smallest(self, count: int):
         if self.dense or count >= self.n - 1:
