@@ -37,9 +37,9 @@ POST_NEWMARK = MACRO(
     RESULTAT=SIMP(statut="f", typ="dyna_trans"),
     b_RESULTAT=BLOC(
         condition=exists("RESULTAT"),
-        # VERI_MASSE='OUI' (the mass on refined meshes) is refused by name; its
-        # keywords stay here so that the refusal names VERI_MASSE itself
-        VERI_MASSE=SIMP(statut="f", typ="TXM", into=("NON",), defaut="NON"),
+        # the zone's mass on meshes HOMARD refines (code_aster's catalogue
+        # writes "default=" for RESI_RELA and ITER_MAXI, so they have none)
+        VERI_MASSE=SIMP(statut="f", typ="TXM", into=("OUI", "NON"), defaut="NON"),
         b_VERI_MASS=BLOC(
             condition=equal_to("VERI_MASSE", "OUI"),
             RESI_RELA=SIMP(statut="f", typ="R", val_min=0.0),
@@ -63,7 +63,7 @@ POST_NEWMARK = MACRO(
         max=1,
         NOM_GROUP=SIMP(statut="f", typ="TXM"),
         MAILLAGE=SIMP(statut="f", typ="CO"),
-        # the refined mesh of VERI_MASSE='OUI' (refused)
+        # the last refined mesh of VERI_MASSE='OUI'
         MAILLAGE_MASSE=SIMP(statut="f", typ="CO"),
     ),
     INFO=SIMP(statut="f", typ="I", defaut=1, into=(1, 2)),

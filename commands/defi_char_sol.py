@@ -8,9 +8,9 @@ builds it: an AFFE_CHAR_MECA EVOL_CHAR whose history is
 From a file of soil signals (UNITE_TRAN_INIT, the UNITE_RESU_TRAN tables
 DEFI_SOL_EQUI writes), CHARGEMENT='FORCE' in 2D: the sixth block of the
 file holds INST, then the nodal shear force at the free surface (column 2)
-and at the base of each layer of TABLE_MATER_ELAS (columns 3, 4, ...). As
-code_aster's macro, the forces at the depths Z0 (surface), Z0 - Y of the
-layers' bases (its last row, the substratum, excluded) make a nappe of the
+and at the base of each row of TABLE_MATER_ELAS (columns 3, 4, ..., the last
+one the base of the substratum's cell). As code_aster's macro, the forces at
+the depths Z0 (surface) and Z0 - Y of every row make a nappe of the
 vertical coordinate Y and of INST (DEFI_NAPPE, linear between the depths,
 no extension beyond them), applied as FORCE_NODALE to the nodes of
 GROUP_MA_GAUCHE and, with the opposite sign, GROUP_MA_DROITE: FY for
@@ -80,7 +80,7 @@ def _from_signal_file(ctx, kw):
             "TABLE_MATER_ELAS",
             kw,
         )
-    layers = len(depths) - 1
+    rows = len(depths)
     z0 = float(kw.get("Z0", 0.0))
     unit = int(kw["UNITE_TRAN_INIT"])
     path = Path(ctx.session.input_path(unit))
@@ -89,16 +89,15 @@ def _from_signal_file(ctx, kw):
     try:
         blocks = numeric_blocks(read_bounded_text(path, "table of soil signals", 30))
         times = column(blocks, (_FORCE_BLOCK, 1), "UNITE_TRAN_INIT")
-        # deepest first: the base of the last layer (column layers + 2) up to
-        # the free surface (column 2)
+        # deepest first: the base of the last row (column rows + 2) up to the
+        # free surface (column 2)
         signals = [
-            column(blocks, (_FORCE_BLOCK, layers + 2 - k), "UNITE_TRAN_INIT")
-            for k in range(layers + 1)
+            column(blocks, (_FORCE_BLOCK, rows + 2 - k), "UNITE_TRAN_INIT") for k in range(rows + 1)
         ]
     except (InputFileError, ValueError) as exc:
         ctx.error(f"{path.name} (unit {unit}): {exc}", "UNITE_TRAN_INIT", kw)
     check_abscissas(ctx, kw, times)
-    heights = [z0 - float(depths[layers - 1 - k]) for k in range(layers)] + [z0]
+    heights = [z0 - float(depths[rows - 1 - k]) for k in range(rows)] + [z0]
     if np.any(np.diff(heights) <= 0):
         ctx.error(
             "the Y of TABLE_MATER_ELAS must increase (depths of the layers' bases)",

@@ -12,17 +12,26 @@ circle's safety factor at each instant (column FS) and, without KY, the
 critical acceleration from them (column KY, in g).
 MAILLAGE_RESU/MAILLAGE: the structure's mesh (its cells and nodes in some
 group) with the zone as the cell group NOM_GROUP (default GLISSE).
+VERI_MASSE='OUI': the zone's mass is taken on refined meshes instead, as
+code_aster does it: the material field's mesh refined by HOMARD (about a
+disc of 1.2 RAYON for a circle, uniformly for MAILLAGE_GLIS), the materials
+of the parent cells on their children, the zone selected again on the
+refined mesh, until two masses differ by RESI_RELA (relative) or after
+ITER_MAXI refinements; MAILLAGE_MASSE is the last refined mesh.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.assembly import MaterialField, Model
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.table import Table
 from asterlite.errors import missing_name
 from asterlite.fem.mass_properties import mass_properties
+from asterlite.fem.refinement import RefinementError, uniform_refinement
 from asterlite.fem.selection import as_tuple
+from asterlite.fem.zone_refinement import Zone, refine_zones
 from asterlite.post import newmark_safety as safety
 from asterlite.post import sliding_block as block
 from asterlite.post import slip_line_safety
@@ -57,6 +66,87 @@ def _sliding_cells(ctx, kw, mesh, computed) -> np.ndarray:
         if kw.get(keyword) is not None:
             _groups(ctx, other, kw[keyword], keyword, kw)
     return block.cells_inside_mesh(mesh, computed, other, np.arange(other.n_cells))
+
+
+def _materials_on_children(materials, mesh: Mesh, parent: np.ndarray) -> MaterialField:
+    """The material field on a refined mesh: each cell takes its parent's
+    materials (code_aster assigns them again on the groups the field named,
+    which the children inherit)."""
+    field = MaterialField(mesh=mesh)
+    for child, cell in enumerate(parent):
+        material = materials.cell_material.get(int(cell))
+        if material is not None:
+            field.cell_material[child] = material
+        every = materials.cell_materials.get(int(cell))
+        if every is not None:
+            field.cell_materials[child] = every
+    return field
+
+
+def _verified_mass(ctx, kw, materials, mass: float) -> tuple[float, Mesh]:
+    """VERI_MASSE='OUI': the zone's mass on refined meshes and the last of them."""
+    for keyword in ("RESI_RELA", "ITER_MAXI"):
+        if kw.get(keyword) is None:
+            # code_aster's catalogue means defaults (0.05, 2) but spells them
+            # "default=", so its loop compares with None and stops
+            ctx.error(f"VERI_MASSE='OUI' needs {keyword}", keyword, kw)
+    if kw.get("CHAM_MATER") is not None:
+        # code_aster reads CHAM_MATER only when RESULTAT has no material field
+        kw.mark_used("CHAM_MATER")
+    tolerance, iterations = float(kw["RESI_RELA"]), int(kw["ITER_MAXI"])
+    mesh = materials.mesh
+    masses, error, refined = [mass], 1.0, None
+    while error > tolerance and len(masses) <= iterations:
+        try:
+            if kw.get("RAYON") is not None:
+                zone = Zone(
+                    "DISQUE",
+                    {
+                        "X_CENTRE": float(kw["CENTRE_X"]),
+                        "Y_CENTRE": float(kw["CENTRE_Y"]),
+                        "RAYON": 1.2 * float(kw["RAYON"]),
+                    },
+                )
+                adapted = refine_zones(mesh, [zone])
+                refined, parent = adapted.mesh, adapted.parent
+            else:
+                refined, parent = uniform_refinement(mesh)
+        except RefinementError as exc:
+            ctx.unsupported(f"VERI_MASSE='OUI': {exc}", "VERI_MASSE", kw)
+        materials = _materials_on_children(materials, refined, parent)
+        computed = _groups(ctx, refined, kw["GROUP_MA_CALC"], "GROUP_MA_CALC", kw)
+        zone_cells = _sliding_cells(ctx, kw, refined, computed)
+        plane = [int(c) for c in zone_cells if refined.cell_types[c] in block.SURFACES]
+        # AFFE_MODELE D_PLAN on the whole refined mesh; its edges carry no mass
+        model = Model(mesh=refined, cell_modelisation=dict.fromkeys(plane, "D_PLAN"))
+        masses.append(float(mass_properties(model, None, materials, plane)["MASSE"]))
+        error = abs((masses[-1] - masses[-2]) / masses[-1])
+        ctx.log(
+            f"POST_NEWMARK VERI_MASSE: refinement {len(masses) - 1}, {refined.n_nodes} nodes, "
+            f"{refined.n_cells} cells, zone mass {masses[-1]:.10g}, relative change {error:.3g}"
+        )
+        mesh = refined
+    if refined is None:
+        ctx.error("VERI_MASSE='OUI' refined nothing (RESI_RELA >= 1)", "RESI_RELA", kw)
+    _add_zone_groups(ctx, kw, refined, computed, zone_cells)
+    return masses[-1], refined
+
+
+def _add_zone_groups(ctx, kw, mesh: Mesh, computed, zone_cells) -> None:
+    """The groups code_aster's macro leaves on the last refined mesh: ALL
+    (GROUP_MA_CALC), GLISSE_ (the cells the zone reaches), the zone (NOM_GROUP,
+    default GLISSE: GLISSE_ in ALL) and NGLISSE (the other surface cells of
+    ALL), with the node groups of the last two."""
+    name = next((o.get("NOM_GROUP") for o in kw.factor("MAILLAGE_RESU")), None) or "GLISSE"
+    reached = _sliding_cells(ctx, kw, mesh, np.arange(mesh.n_cells))
+    zone = set(int(c) for c in zone_cells)
+    rest = [int(c) for c in computed if int(c) not in zone and mesh.cell_types[c] in block.SURFACES]
+    mesh.cell_groups["ALL"] = np.asarray(computed, dtype=int)
+    mesh.cell_groups["GLISSE_"] = np.asarray(reached, dtype=int)
+    mesh.cell_groups[name] = np.asarray(zone_cells, dtype=int)
+    mesh.cell_groups["NGLISSE"] = np.array(rest, dtype=int)
+    mesh.node_groups["NGLISSE"] = mesh.nodes_of_cells(rest)
+    mesh.node_groups[name] = mesh.nodes_of_cells(zone_cells)
 
 
 def _restricted_copy(mesh: Mesh) -> Mesh:
@@ -95,10 +185,10 @@ def _restricted_copy(mesh: Mesh) -> Mesh:
 def _safety_factors(ctx, kw, result, sign) -> np.ndarray:
     """The slip circle's safety factor at each instant (RESULTAT_PESANTEUR)."""
     if kw.get("METHODE", "ECLA_PG") != "ECLA_PG":
-        ctx.error("METHODE='COLLOCATION' is not implemented (ECLA_PG is)", "METHODE", kw)
+        ctx.unsupported("METHODE='COLLOCATION' (ECLA_PG is computed)", "METHODE", kw)
     if kw.get("RAYON") is None:
-        ctx.error(
-            "RESULTAT_PESANTEUR is implemented on a slip circle (RAYON), not MAILLAGE_GLIS",
+        ctx.unsupported(
+            "RESULTAT_PESANTEUR on MAILLAGE_GLIS (asterlite computes it on a slip circle, RAYON)",
             "RESULTAT_PESANTEUR",
             kw,
         )
@@ -125,8 +215,8 @@ def run(ctx, kw):
     result = kw.get("RESULTAT")
     if result is None:
         # code_aster then gives the static safety factor and CHAM_FS only
-        ctx.error(
-            "POST_NEWMARK without RESULTAT (static safety factor, CHAM_FS) is not implemented",
+        ctx.unsupported(
+            "POST_NEWMARK without RESULTAT (the static safety factor and CHAM_FS)",
             "RESULTAT_PESANTEUR",
             kw,
         )
@@ -139,7 +229,6 @@ def run(ctx, kw):
     if kw.get("KY") is None and kw.get("RESULTAT_PESANTEUR") is None:
         # code_aster has no critical acceleration then either
         ctx.error("POST_NEWMARK needs KY or RESULTAT_PESANTEUR", "KY", kw)
-    kw.mark_used("VERI_MASSE")  # 'NON' only (the catalogue): the mass on this mesh
     if "DEPL" not in result.fields:
         ctx.error("RESULTAT holds no DEPL field", "RESULTAT", kw)
     computed = _groups(ctx, mesh, kw["GROUP_MA_CALC"], "GROUP_MA_CALC", kw)
@@ -155,6 +244,9 @@ def run(ctx, kw):
     mass = float(masses["MASSE"])
     if mass <= 0.0:
         ctx.error("the sliding zone has no mass (RHO)", "RESULTAT", kw)
+    mass_mesh = None
+    if kw.get("VERI_MASSE", "NON") == "OUI":
+        mass, mass_mesh = _verified_mass(ctx, kw, materials, mass)
     numbering = result.numbering
     forces = internal_forces(
         model, characteristics, materials, numbering, result.fields["DEPL"], cells=sliding
@@ -197,8 +289,12 @@ def run(ctx, kw):
     )
     for occ in kw.factor("MAILLAGE_RESU"):
         if occ.get("MAILLAGE_MASSE") is not None:
-            # code_aster makes it with VERI_MASSE='OUI' only, which asterlite refuses
-            ctx.error("MAILLAGE_MASSE is made with VERI_MASSE='OUI' only", "MAILLAGE_MASSE", occ)
+            if mass_mesh is None:
+                # code_aster's macro would fail on its undefined refined mesh
+                ctx.error(
+                    "MAILLAGE_MASSE is made with VERI_MASSE='OUI' only", "MAILLAGE_MASSE", occ
+                )
+            ctx.bind(occ["MAILLAGE_MASSE"], mass_mesh)
         name = occ.get("NOM_GROUP") or "GLISSE"
         if occ.get("MAILLAGE") is not None:
             out = _restricted_copy(mesh)

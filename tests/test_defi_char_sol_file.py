@@ -75,7 +75,8 @@ def test_right_side_takes_the_opposite_force(tmp_path):
 
 
 def test_a_node_outside_the_column_is_refused_as_the_nappe_excludes_it(tmp_path):
-    # Z0 = -1: the column spans Y in [-11, -1], NB is above it (no extension)
+    # Z0 = -1: the column spans Y in [-21, -1] (down to the substratum's base),
+    # NB is above it (no extension)
     done = run(
         tmp_path,
         "SOLF = DEFI_CHAR_SOL(MODELE=MODELE, UNITE_TRAN_INIT=41, TABLE_MATER_ELAS=TSOL,"

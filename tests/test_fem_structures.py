@@ -294,9 +294,35 @@ def test_post_elem_mass_inertia_of_a_rod_and_a_point_mass():
     assert whole["MASSE"] == pytest.approx(rod + 5.0)
     assert whole["CDG_X"] == pytest.approx((rod * 1.5 + 5.0 * 3.0) / (rod + 5.0))
     assert beam_only["MASSE"] == pytest.approx(rod)
-    # consistent beam mass: the rotary inertia about the centre is m L^2 / 12
-    assert beam_only["IZ_G"] == pytest.approx(rod * 9.0 / 12, rel=1e-9)
+    # code_aster's te0038: m L^2 / 12 plus the section's own inertia rho L I
+    section = np.pi * R**4 / 4.0
+    assert beam_only["IZ_G"] == pytest.approx(rod * 9.0 / 12 + RHO * 3.0 * section, rel=1e-12)
+    assert beam_only["IX_G"] == pytest.approx(2.0 * RHO * 3.0 * section, rel=1e-12)
     assert beam_only["CDG_Y"] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_post_elem_mass_inertia_of_an_inclined_rectangular_beam():
+    """An inclined beam of a rectangular section: the tensor in its own frame
+    (rho L (IY + IZ), rho L (IY + A L^2/12), rho L (IZ + A L^2/12)) turned to
+    the global frame, and the same principal moments whatever the direction."""
+    hy, hz, length = 0.1, 0.04, 2.0
+    area, iy, iz = hy * hz, hy * hz**3 / 12.0, hz * hy**3 / 12.0
+    section = ("RECTANGLE", ("HY", "HZ"), (hy, hz))
+    expected = (
+        RHO * length * np.array([iy + iz, iy + area * length**2 / 12, iz + area * length**2 / 12])
+    )
+    for direction in ((1.0, 0.0, 0.0), (1.0, 2.0, 2.0)):
+        session = FakeSession()
+        model, field, cara = beam_model(session, line_mesh(4, length, direction), section=section)
+        row = run(
+            session, "POST_ELEM", MODELE=model, CHAM_MATER=field, CARA_ELEM=cara,
+            MASS_INER={"TOUT": "OUI"},
+        ).rows[0]  # fmt: skip
+        principal = [row[f"{axis}_PRIN_G"] for axis in ("IX", "IY", "IZ")]
+        np.testing.assert_allclose(principal, np.sort(expected), rtol=1e-12)
+        axis = np.asarray(direction) / np.linalg.norm(direction)
+        centre = [row[f"CDG_{c}"] for c in "XYZ"]
+        np.testing.assert_allclose(centre, axis * length / 2.0, atol=1e-14)
 
 
 def test_bar_and_orientation_and_errors():

@@ -45,6 +45,10 @@ def test_placement_and_labels_are_code_aster_ones():
         assert numbering.getNodeAndComponentFromDOF(k_comp) == (0, f"LAGR:{comp}")
         assert numbering.getNodeAndComponentFromDOF(12 + k_comp) == (0, f"LAGR:{comp}")
         assert numbering.getComponentFromDOF(6 + k_comp) == comp
+    # without a DOF: every DOF's label, and the two families of multipliers
+    labels = numbering.getNodeAndComponentFromDOF()
+    assert len(labels) == n + 12 and labels[3] == (0, "LAGR:DRX") and labels[9] == (0, "DRX")
+    assert numbering.getDictOfLagrangeDOFs() == {1: list(range(6)), 2: list(range(12, 18))}
 
 
 def test_dualised_stiffness_solves_the_clamped_cantilever():

@@ -56,3 +56,9 @@ def test_a_group_of_n1_follows_the_version(tmp_path, version, expected):
     run(session, "DEFI_GROUP", MAILLAGE=mesh, CREA_GROUP_NO={"NOM": "G", "NOEUD": "N1"})
     assert mesh.node_groups["G"].tolist() == expected
     assert mesh.copy().names_kept == mesh.names_kept
+
+
+def test_a_bare_number_is_a_position(tmp_path):
+    mesh = _mesh(tmp_path, 17)
+    assert mesh.find_node("1") == 0 and mesh.find_cell("2") == 1
+    assert mesh.find_node("01") is None and mesh.find_node("9") is None

@@ -23,6 +23,11 @@ from asterlite.fem.lagrange_layout import dualised_relations, lagrange_layout
 _PLANE_MODELISATIONS = ("D_PLAN", "C_PLAN", "AXIS", "D_PLAN_ABSO")
 
 
+def _dof_label(node, component: str) -> tuple[int, str]:
+    # code_aster's node and component names of a multiplier of several terms
+    return (int(node), component) if component else (-1, "LAGR:MPC")
+
+
 @dataclass(eq=False)
 class Model(Concept):
     """``AFFE_MODELE`` result: which modelisation each cell carries."""
@@ -251,6 +256,7 @@ class DofNumbering(Concept):
             "getPhysicalDOFs",
             "getNumberOfDOFs",
             "getLagrangeDOFs",
+            "getDictOfLagrangeDOFs",
             "getMesh",
             "getNodeAndComponentFromDOF",
             "getComponentFromDOF",
@@ -287,19 +293,21 @@ class DofNumbering(Concept):
     def getLagrangeDOFs(self, local=False) -> list[int]:  # noqa: N802
         return lagrange_layout(self).lagrange.tolist()
 
-    def getNodeAndComponentFromDOF(self, dof: int, local=False) -> tuple[int, str]:  # noqa: N802
-        """(0-based node, component) of a DOF of code_aster's numbering: the
-        constrained node and 'LAGR:<component>' for a DDL_IMPO multiplier."""
+    def getNodeAndComponentFromDOF(self, dof: int | None = None, local=False):  # noqa: N802
+        """(0-based node, component) of a DOF of code_aster's numbering, or of
+        every DOF without ``dof``: a DDL_IMPO multiplier gives its constrained
+        node and 'LAGR:<component>', a relation of several terms (-1, 'LAGR:MPC')."""
         layout = lagrange_layout(self)
+        if dof is None:
+            return [_dof_label(node, component) for node, component in layout.labels]
         if not 0 <= int(dof) < layout.size:
             raise DeckRuntimeError(f"DOF {dof} is outside the numbering (0..{layout.size - 1})")
-        node, component = layout.labels[int(dof)]
-        if not component:
-            raise UnsupportedError(
-                f"DOF {dof} is a multiplier of a relation of several terms, which has no "
-                "single node and component here"
-            )
-        return int(node), component
+        return _dof_label(*layout.labels[int(dof)])
+
+    def getDictOfLagrangeDOFs(self, local=False) -> dict[int, list[int]]:  # noqa: N802
+        """{1: positions of the first multipliers, 2: of the second ones}."""
+        layout = lagrange_layout(self)
+        return {1: sorted(layout.first.tolist()), 2: sorted(layout.second.tolist())}
 
     def getComponentFromDOF(self, dof: int, local=False) -> str:  # noqa: N802
         return self.getNodeAndComponentFromDOF(dof)[1]

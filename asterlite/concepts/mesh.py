@@ -35,8 +35,10 @@ CELL_NODE_COUNTS = {
 
 
 def _positional(name: str, prefix: str, count: int) -> int | None:
-    if len(name) > 1 and name[0] == prefix and name[1:].isdigit() and name[1] != "0":
-        index = int(name[1:]) - 1
+    """The 0-based index code_aster 17 reads in ``N<i>``/``M<i>`` or ``<i>``."""
+    number = name[1:] if name[:1] == prefix else name
+    if number.isdigit() and number[0] != "0":
+        index = int(number) - 1
         if index < count:
             return index
     return None
@@ -95,6 +97,10 @@ class Mesh(Concept):
     # False where code_aster keeps no names for the mesh (a file read by
     # code_aster 16 and later): there ``N<i>``/``M<i>`` are positions first
     names_kept: bool = True
+    # MACR_ADAP_MAIL's history: how many uniform refinements every cell has
+    # had, and whether a zone adaptation left cells of several levels
+    uniform_level: int = 0
+    zone_adapted: bool = False
 
     def __post_init__(self) -> None:
         self.node_index = {n: i for i, n in enumerate(self.node_names)}
@@ -168,6 +174,8 @@ class Mesh(Concept):
                 None if self.curvilinear_abscissa is None else dict(self.curvilinear_abscissa)
             ),
             names_kept=self.names_kept,
+            uniform_level=self.uniform_level,
+            zone_adapted=self.zone_adapted,
         )
 
     # -- code_aster's object API ----------------------------------------------

@@ -20,6 +20,7 @@ from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem import beam
 from asterlite.fem.beam import BeamError, cell_angles, global_matrices
 from asterlite.fem.element_errors import ElementError
+from asterlite.fem.frames import rotation_from_angles
 from asterlite.fem.multifibre_elements import local_matrix
 from asterlite.fem.sections import SectionError
 
@@ -302,3 +303,45 @@ def beam_stresses(efge: np.ndarray, sections: list[dict], modelisations: list[st
         out[:, k, :, 4] = f[..., 4] / section["IY"] * fibre_z
         out[:, k, :, 5] = -f[..., 5] / section["IZ"] * fibre_y
     return out
+
+
+# -- mass and inertia (POST_ELEM MASS_INER) -------------------------------------------
+
+#: Beams whose mass and inertia code_aster computes from the section (te0038).
+SECTION_INERTIA_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_TG")
+
+
+def beam_cell_inertias(model, characteristics, materials, cells) -> list:
+    """(mass, centre, inertia tensor about the centre) of each straight beam
+    cell, from code_aster's MASS_INER of a constant section (te0038): the mass
+    rho A L at the cell's middle and, in the beam's frame, rho L (IY + IZ)
+    about its axis and rho L (I + A L^2 / 12) about the section's y and z axes
+    (section offsets EY, EZ play no part)."""
+    cells = np.asarray(cells, dtype=int)
+    if not len(cells):
+        return []
+    mesh = model.mesh
+    sections = characteristics.sections if characteristics is not None else {}
+    without = [int(c) for c in cells if int(c) not in sections]
+    if without:
+        names = ", ".join(mesh.cell_names[c] for c in without[:5])
+        raise ElementError(f"beam cells {names} have no section (AFFE_CARA_ELEM/POUTRE)")
+    modelisation = model.cell_modelisation[int(cells[0])]
+    density = _material_values(materials, cells, modelisation, need_density=True)["RHO"]
+    conn, lengths = beam.segment_cells(mesh, cells)
+    to_local = rotation_from_angles(cell_angles(model, characteristics, cells))
+    found = []
+    for k, cell in enumerate(cells):
+        section = sections[int(cell)]
+        length, rho, area = lengths[k], density[k], section["A"]
+        bending = area * length**2 / 12.0
+        local = (
+            rho
+            * length
+            * np.diag(
+                [section["IY"] + section["IZ"], section["IY"] + bending, section["IZ"] + bending]
+            )
+        )
+        centre = mesh.coords[conn[k]].mean(axis=0)
+        found.append((rho * area * length, centre, to_local[k].T @ local @ to_local[k]))
+    return found

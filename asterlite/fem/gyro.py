@@ -38,8 +38,10 @@ code_aster conventions followed here:
 - a disk's ``Ixx`` is the (DRX, DRX) term of its ``M_TR_*_N`` mass as given
   (with the eccentricity term ``m (ey² + ez²)`` for ``M_TR_D_N``), turned to
   the global frame with the cell's orientation whatever ``REPERE``;
-- only ``POU_D_E``, ``POU_D_T`` and ``DIS_TR`` on ``POI1`` contribute; other
-  elements (bars, ``DIS_T``, link discretes) have no gyroscopic term.
+- the beams (``POU_D_E``, ``POU_D_T``, ``POU_D_EM``, ``POU_D_TG``,
+  ``POU_D_TGM``: :mod:`asterlite.fem.options`) and ``DIS_TR`` on ``POI1``
+  contribute; bars, ``DIS_T`` and link discretes have no gyroscopic term,
+  solids' (te0159) is refused.
 """
 
 from __future__ import annotations

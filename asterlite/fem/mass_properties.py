@@ -6,9 +6,10 @@ three rotations ``e_i x x``, with the rotation DOFs turning by ``e_i``):
 ``Rᵀ M R = [[m I, m [c]×ᵀ], [m [c]×, J_O]]``. This gives the mass m, the
 centre of gravity c and the inertia tensor about the origin for any element
 (discrete masses with eccentricity and rotary inertia, consistent beam
-masses), then the tensor about c by the parallel-axis theorem. Pipe
-elements use code_aster's own formulas instead (te0038: the exact tube
-section, an elbow's centre of gravity off its chord).
+masses), then the tensor about c by the parallel-axis theorem. Pipes and
+straight beams use code_aster's own formulas instead (te0038: the exact tube
+section, an elbow's centre of gravity off its chord; a beam's section
+inertia about its axis and its own axes, which its mass matrix lacks).
 """
 
 from __future__ import annotations
@@ -17,8 +18,9 @@ import numpy as np
 
 from asterlite.concepts.assembly import DofNumbering
 from asterlite.fem.assemble import assemble_blocks, build_numbering_dofs
+from asterlite.fem.beam_elements import SECTION_INERTIA_BEAMS, beam_cell_inertias
 from asterlite.fem.elements import element_blocks
-from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_rigid_inertia
+from asterlite.fem.pipe_elements import PIPE_MODELISATIONS, pipe_cell_inertias
 from asterlite.fem.solid_loads import solid_cells, solid_inertia
 
 _TRANS = ("DX", "DY", "DZ")
@@ -46,6 +48,20 @@ def rigid_body_modes(numbering: DofNumbering) -> np.ndarray:
     return modes
 
 
+def cells_rigid_inertia(found) -> np.ndarray:
+    """6x6 projection on the rigid motions about the origin of cells given as
+    (mass, centre, inertia tensor about the centre): m I, m [e_k x c]_i,
+    J_c + m (|c|^2 I - c c^T)."""
+    rigid = np.zeros((6, 6))
+    for mass, centre, inertia in found:
+        coupling = mass * np.array([np.cross(e, centre) for e in np.eye(3)])
+        rigid[:3, :3] += mass * np.eye(3)
+        rigid[3:, :3] += coupling
+        rigid[:3, 3:] += coupling.T
+        rigid[3:, 3:] += inertia + mass * (centre @ centre * np.eye(3) - np.outer(centre, centre))
+    return rigid
+
+
 def mass_properties(model, characteristics=None, materials=None, cells=None) -> dict:
     """MASSE, CDG_X/Y/Z and the inertia about the centre of gravity
     (IX_G, IY_G, IZ_G, IXY_G, IXZ_G, IYZ_G: products as integrals of
@@ -56,11 +72,17 @@ def mass_properties(model, characteristics=None, materials=None, cells=None) -> 
     rigid = solid_inertia(model, materials, solid) if len(solid) else np.zeros((6, 6))
     pool = model.cell_modelisation if cells is None else np.asarray(cells, dtype=int).ravel()
     others = sorted({int(c) for c in pool} - set(solid.tolist()))
-    # pipes: code_aster's own formulas of their mass, centre and inertia
-    pipes = [c for c in others if model.cell_modelisation.get(c) in PIPE_MODELISATIONS]
-    if pipes:
-        rigid = rigid + pipe_rigid_inertia(model, characteristics, materials, pipes)
-        others = [c for c in others if c not in set(pipes)]
+    # pipes and beams: code_aster's own formulas of their mass, centre and inertia
+    for families, cell_inertias in (
+        (PIPE_MODELISATIONS, pipe_cell_inertias),
+        (SECTION_INERTIA_BEAMS, beam_cell_inertias),
+    ):
+        chosen = [c for c in others if model.cell_modelisation.get(c) in families]
+        for modelisation in sorted({model.cell_modelisation[c] for c in chosen}):
+            same = [c for c in chosen if model.cell_modelisation[c] == modelisation]
+            found = cell_inertias(model, characteristics, materials, same)
+            rigid = rigid + cells_rigid_inertia(found)
+        others = [c for c in others if c not in set(chosen)]
     if others:
         numbering = DofNumbering(
             mesh=model.mesh, dofs=build_numbering_dofs(model.node_components())

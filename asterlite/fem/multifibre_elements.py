@@ -53,7 +53,7 @@ def _parameter(material, name: str, where: str, required: bool = True) -> float:
     return float(value)
 
 
-def _cell_section(model, characteristics, materials, cell: int) -> _Section:
+def cell_section(model, characteristics, materials, cell: int) -> _Section:
     kind = model.cell_modelisation[cell]
     where = f"{kind} cell {model.mesh.cell_names[cell]}"
     groups = characteristics.fibre_groups.get(cell) if characteristics is not None else None
@@ -153,7 +153,7 @@ def local_matrix(
     multifibre cell of length ``length``."""
     kind = model.cell_modelisation[cell]
     where = f"{kind} cell {model.mesh.cell_names[cell]}"
-    section = _cell_section(model, characteristics, materials, cell)
+    section = cell_section(model, characteristics, materials, cell)
     compute = _euler_local if kind == "POU_D_EM" else _warping_local
     try:
         return compute(section, length, matrix, lumped, where)

@@ -28,6 +28,7 @@ from asterlite.fem.beam import cell_angles
 from asterlite.fem.discrete import local_matrix, parse_cara
 from asterlite.fem.dofs import DISCRETE_MODELISATIONS, MODELISATION_COMPONENTS
 from asterlite.fem.elements import ElementError, cell_frames, element_blocks
+from asterlite.fem.multifibre_elements import cell_section
 
 #: option -> (matrix code of element_blocks, lumped)
 STANDARD_OPTIONS = {
@@ -51,7 +52,15 @@ MATRIX_KIND = {
     "RIGI_MECA_HYST": "RIGI",
 }
 
-GYRO_BEAMS = ("POU_D_E", "POU_D_T")
+# beams with a gyroscopic matrix (code_aster's te0259/te0262): the multifibre
+# ones take their section's rho-weighted fibre integrals (pmfitx), the warping
+# ones (7 DOFs a node) the 12-DOF matrix with nothing on GRX (masstg)
+GYRO_BEAMS = ("POU_D_E", "POU_D_T", "POU_D_EM", "POU_D_TG", "POU_D_TGM")
+_EULER_GYRO_BEAMS = ("POU_D_E", "POU_D_EM")
+_MULTIFIBRE_GYRO_BEAMS = ("POU_D_EM", "POU_D_TGM")
+_WARPING_GYRO_BEAMS = ("POU_D_TG", "POU_D_TGM")
+# solids have code_aster's MECA_GYRO too (te0159): not computed here
+_GYRO_SOLIDS = ("3D", "3D_SI")
 
 
 def _model_cells(model, cells) -> dict[str, np.ndarray]:
@@ -64,7 +73,9 @@ def _model_cells(model, cells) -> dict[str, np.ndarray]:
 
 
 def _beam_gyro_blocks(model, characteristics, materials, cells, option) -> list[ElementBlock]:
+    """One modelisation's beam cells."""
     mesh = model.mesh
+    modelisation = model.cell_modelisation[int(cells[0])]
     sections = characteristics.sections if characteristics is not None else {}
     missing = [c for c in cells if int(c) not in sections]
     if missing:
@@ -74,27 +85,41 @@ def _beam_gyro_blocks(model, characteristics, materials, cells, option) -> list[
         raise ElementError(f"{option} of beams needs a material field (CHAM_MATER)")
     if any(materials.material_of(c) is None for c in cells):
         raise ElementError(f"{option}: a beam cell has no material")
-    density = materials.values(cells, "RHO", np.nan)
-    if np.any(np.isnan(density)):
-        raise ElementError(f"{option} of beams needs RHO in the material (ELAS)")
     poisson = materials.values(cells, "NU", 0.0)
     conn, lengths = beam.segment_cells(mesh, cells)
     if np.any(lengths <= 0.0):
         raise ElementError(f"{option}: beam element of zero length")
-    euler = np.array([model.cell_modelisation[int(c)] == "POU_D_E" for c in cells])
 
     def prop(name, default=0.0):
         return np.array([float(sections[int(c)].get(name, default)) for c in cells])
 
-    ay = np.where(euler, 0.0, prop("AY"))
-    az = np.where(euler, 0.0, prop("AZ"))
+    if modelisation in _MULTIFIBRE_GYRO_BEAMS:
+        # rho A, rho IY, rho IZ from the fibres: the density is in the integrals
+        integrals = np.array(
+            [cell_section(model, characteristics, materials, int(c)).density for c in cells]
+        )
+        density, area, iy, iz = 1.0, integrals[:, 0], integrals[:, 4], integrals[:, 3]
+    else:
+        density = materials.values(cells, "RHO", np.nan)
+        if np.any(np.isnan(density)):
+            raise ElementError(f"{option} of beams needs RHO in the material (ELAS)")
+        area, iy, iz = prop("A"), prop("IY"), prop("IZ")
+    euler = modelisation in _EULER_GYRO_BEAMS
+    ay = 0.0 if euler else prop("AY")
+    az = 0.0 if euler else prop("AZ")
     compute = (
         gyro.beam_gyro_damping_local if option == "MECA_GYRO" else gyro.beam_gyro_stiffness_local
     )
-    local = compute(lengths, density, prop("A"), prop("IY"), prop("IZ"), poisson, ay, az)
+    local = compute(lengths, density, area, iy, iz, poisson, ay, az)
     rotations = beam.rotation_from_angles(cell_angles(model, characteristics, cells))
     matrices = beam.to_global(local, rotations, 6)
-    return [ElementBlock(nodes=conn, components=beam.BEAM_COMPONENTS, matrices=matrices)]
+    components = beam.BEAM_COMPONENTS
+    if modelisation in _WARPING_GYRO_BEAMS:  # no term on GRX
+        keep = np.array([0, 1, 2, 3, 4, 5, 7, 8, 9, 10, 11, 12])
+        widened = np.zeros((len(cells), 14, 14))
+        widened[:, keep[:, None], keep[None, :]] = matrices
+        matrices, components = widened, MODELISATION_COMPONENTS[modelisation]
+    return [ElementBlock(nodes=conn, components=components, matrices=matrices)]
 
 
 def disk_polar_inertia(assignment) -> float:
@@ -139,6 +164,10 @@ def gyro_blocks(model, characteristics, option, materials=None, cells=None) -> l
         raise ValueError(f"not a gyroscopic option: {option}")
     blocks = []
     for modelisation, members in _model_cells(model, cells).items():
+        if modelisation in _GYRO_SOLIDS:
+            raise ElementError(
+                f"{option} of {modelisation} elements (code_aster's te0159) is not available"
+            )
         if modelisation in GYRO_BEAMS:
             blocks.extend(_beam_gyro_blocks(model, characteristics, materials, members, option))
         elif modelisation == "DIS_TR":

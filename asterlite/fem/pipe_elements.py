@@ -350,28 +350,22 @@ def _chord_frame(x, y):
     return [x, y, np.cross(x, y)]
 
 
-def pipe_rigid_inertia(model, characteristics, materials, cells) -> np.ndarray:
-    """6x6 projection of the pipe cells' masses on the rigid motions about
-    the origin (translations, then rotations), from code_aster's MASS_INER
-    formulas of pipes: m I, m [e_k x c]_i, J_c + m (|c|^2 I - c c^T)."""
+def pipe_cell_inertias(model, characteristics, materials, cells) -> list:
+    """(mass, centre, inertia tensor about the centre) of each pipe cell, from
+    code_aster's MASS_INER formulas of pipes (te0038)."""
     cells = np.asarray(cells, dtype=int)
-    rigid = np.zeros((6, 6))
     if not len(cells):
-        return rigid
+        return []
     mesh = model.mesh
     sections, frames = _checked(model, characteristics, cells)
     density = _material_values(materials, cells, "TUYAU", need_density=True)["RHO"]
+    found = []
     for k, cell in enumerate(cells):
         coords = mesh.coords[np.asarray(mesh.cell_nodes[int(cell)])]
-        mass, centre, inertia = _cell_inertia(
-            coords, sections[int(cell)], frames[int(cell)], float(density[k])
+        found.append(
+            _cell_inertia(coords, sections[int(cell)], frames[int(cell)], float(density[k]))
         )
-        coupling = mass * np.array([np.cross(e, centre) for e in np.eye(3)])
-        rigid[:3, :3] += mass * np.eye(3)
-        rigid[3:, :3] += coupling
-        rigid[:3, 3:] += coupling.T
-        rigid[3:, 3:] += inertia + mass * (centre @ centre * np.eye(3) - np.outer(centre, centre))
-    return rigid
+    return found
 
 
 def pipe_gravity_terms(model, characteristics, materials, cells, acceleration) -> list:

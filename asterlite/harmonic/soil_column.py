@@ -29,8 +29,10 @@ code_aster computes the column with plane-strain finite elements, one cell
 per layer, and harmonic DYNA_VIBRA runs: ``fe_column_response`` is that
 discretisation (second-order close to the wave solution as the cells
 shrink); ``equivalent_linear`` iterates on the wave solution (each layer's
-strain taken at mid-depth). Neither is a command yet: DEFI_SOL_EQUI's
-signal chain (its FFTs, filter and tables) is still to be reproduced."""
+strain taken at mid-depth). The DEFI_SOL_EQUI command follows the macro's
+own chain instead (asterlite.harmonic.sol_equi: its load, FFTs, filter and
+strain at the Gauss points of the cells); these wave solutions are its
+closed-form references."""
 
 from __future__ import annotations
 

@@ -218,7 +218,10 @@ NUMPY_CONSTANTS = "pi e inf nan newaxis".split()
 NUMPY_TYPES = (
     "float64 float32 int64 int32 int16 int8 uint8 complex128 complex64 bool_ float_ int_".split()
 )
-NUMPY_LINALG = "norm solve inv det eig eigh eigvals eigvalsh lstsq pinv matrix_rank cond".split()
+NUMPY_LINALG = (
+    "norm solve inv det eig eigh eigvals eigvalsh lstsq pinv matrix_rank cond "
+    "qr svd cholesky slogdet matrix_power multi_dot"
+).split()
 
 # attributes of numpy arrays and scalars a deck may use
 NUMPY_ARRAY_ATTRIBUTES = frozenset(

@@ -53,6 +53,15 @@ NAME_TYPES = {"grma": "cell group", "grno": "node group", "no": "node", "ma": "c
 NOT_MESH_NAMES = {
     "POST_USURE": ("NOEUD", "GROUP_NO"),
     "RECU_FONCTION": ("NOEUD_CHOC", "GROUP_NO_CHOC"),
+    # the groups of the column mesh the macro writes itself (without MAILLAGE)
+    "DEFI_SOL_EQUI": (
+        "GROUP_MA_DROITE",
+        "GROUP_MA_GAUCHE",
+        "GROUP_MA_COL",
+        "GROUP_MA_SUBSTR",
+        "GROUP_MA",
+        "LIST_COUCHE_ACCE",
+    ),
 }
 
 
