@@ -19,6 +19,7 @@ EXTRA_OF = {
     "dask": "sweep",
     "distributed": "sweep",
     "pyarrow": "sweep",
+    "mumps": "large",
 }
 
 

@@ -6,6 +6,8 @@ import numpy as np
 
 from asterlite.concepts.assembly import AssembledMatrix, ComplexAssembledMatrix
 from asterlite.concepts.modes import GeneralizedMatrix
+from asterlite.extras import install_hint
+from asterlite.fem import sparse_direct
 from asterlite.fem.constraints import ConstraintError
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.buckling import critical_loads, select_critical
@@ -63,6 +65,21 @@ def run(ctx, kw):
         omega2, vecs = select_modes(pencil, option, freq, nmax or 10, _method(kw))
     except (EigenError, ConstraintError) as exc:
         ctx.error(str(exc), "OPTION", kw)
+    if pencil.last_solve:
+        how = pencil.last_solve
+        detail = f"{how['solves']} solves, basis of {how['dimension']}, " if "solves" in how else ""
+        ctx.log(
+            f"{pencil.n} unknowns: {how['method']} on a {how['backend'].upper()} "
+            f"factorisation of K - σM ({detail}factorisation {how['factor_seconds']:.1f} s, "
+            f"iterations {how['iteration_seconds']:.1f} s)"
+        )
+        if how["backend"] == "cholmod":
+            ctx.log(f"{install_hint('large')} (MUMPS) factorises large models several times faster")
+    elif pencil.n >= sparse_direct.LARGE_LIMIT and not sparse_direct.mumps_available():
+        ctx.log(
+            f"{pencil.n} unknowns solved with SuperLU and ARPACK: "
+            f"{install_hint('large')} (MUMPS) is faster and leaner on large models"
+        )
     if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
         omega2, vecs = omega2[: calc_freq["NMAX_FREQ"]], vecs[:, : calc_freq["NMAX_FREQ"]]
     check_found(ctx, kw, omega2.size)

@@ -98,6 +98,22 @@ def test_zero_frequency_mode_is_refused():
         )
 
 
+def test_a_negative_frequency_keeps_its_sign_as_in_code_aster():
+    # a free structure's rigid-body modes come out at ±1e-6 Hz, the sign set by
+    # round-off: ω = 2π FREQ keeps it (code_aster's dampModalPreparation), so
+    # 2ξ/(m ω³) (K φ)(K φ)ᵀ = 2ξ ω/m (M φ)(M φ)ᵀ for exact modes, of either sign
+    mass, stiffness = chain()
+    freq, phi, masses = modes_of(mass, stiffness)
+    signed = freq * np.array([-1.0, 1.0, 1.0])
+    shapes = stiffness @ phi
+    shapes[:, 0] = (2.0 * np.pi * signed[0]) ** 2 * (mass @ phi[:, 0])  # K φ = ω² M φ
+    xi = np.array([0.01, 0.02, 0.05])
+    modal = build_modal_damping(free_elimination(3), shapes, signed, masses, xi)
+    omega = 2.0 * np.pi * signed
+    expected = mass @ phi @ np.diag(2.0 * xi * omega / masses) @ phi.T @ mass
+    np.testing.assert_allclose(modal.matrix(), expected, rtol=1e-10, atol=1e-12)
+
+
 def test_eliminated_dofs_are_projected_with_t():
     # DOF 0 fixed: the reduced basis is Tᵀ K φ, the blocked row is dropped
     mass, stiffness = chain(4)

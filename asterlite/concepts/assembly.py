@@ -45,17 +45,30 @@ class Model(Concept):
         """Components carried by each node of the model (union over its elements),
         in code_aster's order; nodes without elements are absent."""
 
-        found: dict[int, set[str]] = {}
+        # the nodes of each modelisation's cells first, then one update per
+        # (modelisation, node): a 3D mesh's nodes belong to eight cells each
+        cells_of: dict[str, list[int]] = {}
         for cell, modelisation in self.cell_modelisation.items():
+            cells_of.setdefault(modelisation, []).append(cell)
+        cell_nodes = self.mesh.cell_nodes
+        found: dict[int, set[str]] = {}
+        for modelisation, cells in cells_of.items():
             comps = MODELISATION_COMPONENTS.get(modelisation, ())
-            for node in self.mesh.cell_nodes[cell]:
+            for node in set().union(*(cell_nodes[cell] for cell in cells)):
                 found.setdefault(node, set()).update(comps)
         for node, modelisation in self.node_modelisation.items():
             found.setdefault(node, set()).update(MODELISATION_COMPONENTS.get(modelisation, ()))
         for cell in self.substructures.values():
             for node in cell.nodes:
                 found.setdefault(int(node), set()).update(cell.macro.components)
-        return {n: sort_components(found[n]) for n in sorted(found)}
+        ordered: dict[frozenset[str], tuple[str, ...]] = {}
+        out = {}
+        for node in sorted(found):
+            comps = frozenset(found[node])
+            if comps not in ordered:
+                ordered[comps] = sort_components(comps)
+            out[node] = ordered[comps]
+        return out
 
     def getMesh(self) -> Mesh:  # noqa: N802 - code_aster's name
         return self.mesh
@@ -557,21 +570,36 @@ class MaterialField(Concept):
     def material_of(self, cell: int) -> Material | None:
         return self.cell_material.get(int(cell))
 
+    def material_groups(self, cells) -> list[tuple[Material | None, np.ndarray]]:
+        """The materials of ``cells`` in order of first appearance, each with
+        the positions in ``cells`` of the cells it is assigned to (None for
+        cells without one): parameters are then read once per material, not
+        once per cell (tens of thousands of cells on a 3D mesh)."""
+        found: dict[int, tuple[Material | None, list[int]]] = {}
+        lookup = self.cell_material.get
+        for k, cell in enumerate(np.asarray(cells, dtype=int).tolist()):
+            material = lookup(cell)
+            group = found.get(id(material))
+            if group is None:
+                found[id(material)] = group = (material, [])
+            group[1].append(k)
+        return [(material, np.array(rows, dtype=int)) for material, rows in found.values()]
+
     def values(self, cells, name: str, default: float = 0.0) -> np.ndarray:
         """(len(cells),) elastic parameter ``name`` of each cell's material."""
         out = np.full(len(cells), float(default))
-        for k, cell in enumerate(np.asarray(cells, dtype=int)):
-            material = self.cell_material.get(int(cell))
-            varying = material.behaviours.get("ELAS_VARYING", {}) if material is not None else {}
+        for material, rows in self.material_groups(cells):
+            if material is None:
+                continue
+            varying = material.behaviours.get("ELAS_VARYING", {})
             if name in varying:
                 raise ValueError(
                     f"{name} of material {material.name or '?'} varies with {varying[name]}: "
                     "asterlite applies no command variable field (AFFE_VARC) to evaluate it"
                 )
-            if material is not None:
-                value = material.get(name)
-                if value is not None:
-                    out[k] = float(value)
+            value = material.get(name)
+            if value is not None:
+                out[rows] = float(value)
         return out
 
 

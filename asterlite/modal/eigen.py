@@ -6,7 +6,17 @@ and the reduced pencil (Tᵀ K T, Tᵀ M T) is solved:
 - small problems (``n <= DENSE_LIMIT``) densely, through a Cholesky factor
   of K - σM so that a singular mass (massless DOFs) is harmless;
 - larger ones with ARPACK in shift-invert mode (``scipy.sparse.linalg.eigsh``),
-  so only K - σM is factorised and the matrices stay sparse.
+  so only K - σM is factorised (SuperLU) and the matrices stay sparse;
+- large ones (``asterlite.fem.sparse_direct.LARGE_LIMIT`` unknowns and more)
+  factorise K - σM with MUMPS when it is installed (the ``large`` extra),
+  else with CHOLMOD when K - σM should be positive definite (σ <= 0), and
+  iterate with the block Lanczos method (``asterlite.modal.block_lanczos``),
+  which solves blocks of right-hand sides at once; ARPACK on the same factor
+  takes over if the Lanczos basis would grow past its bound. Without MUMPS,
+  the modes nearest a shift inside the spectrum (CENTRE, BANDE) come from the
+  lowest modes up, on CHOLMOD's factor of K, while at most
+  ``BOTTOM_UP_LIMIT`` modes lie below them; beyond, or when K is indefinite,
+  SuperLU and ARPACK factorise K - σM as smaller models do.
 
 Selections mirror CALC_MODES: the smallest / largest n, the n nearest a
 frequency (CENTRE), one mode nearest each given frequency (PROCHE), every
@@ -15,6 +25,7 @@ mode in a band (BANDE) or all modes (TOUT). Frequencies are returned sorted.
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass
 
 import numpy as np
@@ -22,9 +33,16 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from asterlite.fem import sparse_direct
 from asterlite.fem.constraints import Elimination
+from asterlite.modal import block_lanczos
 
 DENSE_LIMIT = 400
+#: without MUMPS, the modes nearest a positive shift of a large model are
+#: computed from the lowest up on CHOLMOD's factor of K while they are among
+#: this many lowest modes (the Lanczos basis holds about 5 vectors per mode,
+#: and its small eigen problem grows with it)
+BOTTOM_UP_LIMIT = 128
 TWO_PI = 2.0 * np.pi
 # matrices whose largest entry lies outside [2**-SAFE_EXPONENT, 2**SAFE_EXPONENT]
 # are scaled by a power of two before solving: a stiffness of 1e-310 (a
@@ -131,6 +149,100 @@ def _shift_invert(k, m, sigma: float, count: int, lu=None):
     return vals, vecs
 
 
+def _large_factor(k, m, sigma: float, backend: str):
+    """MUMPS or CHOLMOD factor of K - σM (sparse_direct), or an EigenError
+    (CHOLMOD's NotPositiveDefiniteError passes through: the caller falls
+    back on SuperLU)."""
+    try:
+        return sparse_direct.factorize_symmetric((k - sigma * m).tocsc(), backend=backend)
+    except sparse_direct.SingularFactorError as exc:
+        raise EigenError(f"K - σM is singular at σ = {sigma:g} ({exc})") from None
+
+
+def _large_smallest_shift(k, m, backend: str):
+    """(σ, factor of K - σM) for the lowest modes, as ``_smallest_shift``
+    decides: σ = 0 when K factorises and is not numerically singular (K
+    itself, not a rounded K - σM: the lowest eigenvalues keep every digit),
+    else a tiny negative shift over the rigid-body modes. MUMPS tells a
+    singular K by its null pivots (below 1e-11 of the scale), CHOLMOD by a
+    non-positive pivot or by the residual of one solve."""
+    try:
+        if backend == "mumps":
+            factor = sparse_direct.factorize_symmetric(
+                k.tocsc(), backend="mumps", null_pivot_threshold=1e-11
+            )
+            singular = factor.null_pivots > 0
+        else:
+            factor = sparse_direct.factorize_symmetric(k.tocsc(), backend="cholmod")
+            singular = factor.nearly_singular(k)
+        if not singular:
+            return 0.0, factor
+        factor.close()
+    except (sparse_direct.SingularFactorError, sparse_direct.NotPositiveDefiniteError):
+        pass
+    sigma = _default_shift(k, m, 1e-8)
+    return sigma, _large_factor(k, m, sigma, backend)
+
+
+def _large_shift_invert(
+    k,
+    m,
+    sigma: float,
+    count: int,
+    factor=None,
+    factor_seconds=0.0,
+    backend: str = "mumps",
+    keep_factor: bool = False,
+):
+    """``count`` eigenpairs nearest σ: block Lanczos on a MUMPS or CHOLMOD
+    factor of K - σM (``factor``, else one made with ``backend``), ARPACK on
+    the same factor when the Lanczos basis reaches its bound. Returns
+    (values, vectors, how: a dict for the log, with the wall seconds of the
+    factorisation and of the iterations)."""
+    n = k.shape[0]
+    count = min(count, n - 1)
+    if count <= 0:
+        return np.zeros(0), np.zeros((n, 0)), {}
+    if factor is None:
+        start = time.perf_counter()
+        factor = _large_factor(k, m, sigma, backend)
+        factor_seconds = time.perf_counter() - start
+    start = time.perf_counter()
+    try:
+        vals, vecs, stats = block_lanczos.shift_invert_lanczos(m, factor.solve, sigma, count)
+        how = {"method": "block Lanczos", **stats}
+    except block_lanczos.LanczosNotConverged:
+        op_inv = spla.LinearOperator((n, n), matvec=factor.solve, dtype=float)
+        vals, vecs = spla.eigsh(
+            k, k=count, M=m, sigma=sigma, which="LM", OPinv=op_inv, v0=start_vector(n)
+        )
+        how = {"method": "ARPACK"}
+    how.update(
+        backend=factor.backend,
+        factor_seconds=factor_seconds,
+        iteration_seconds=time.perf_counter() - start,
+    )
+    if not keep_factor:
+        factor.close()
+    return vals, vecs, how
+
+
+def _large_inertia(shifted, backend: str):
+    """The number of negative eigenvalues of the symmetric ``shifted`` from a
+    MUMPS or CHOLMOD factor: MUMPS's count of negative pivots, 0 when
+    CHOLMOD factorises it (positive definite); None when it is singular,
+    False when CHOLMOD finds it indefinite (SuperLU must count)."""
+    try:
+        factor = sparse_direct.factorize_symmetric(shifted.tocsc(), backend=backend)
+    except sparse_direct.SingularFactorError:
+        return None
+    except sparse_direct.NotPositiveDefiniteError:
+        return False
+    count = factor.negative_pivots
+    factor.close()
+    return count
+
+
 def _scale_exponent(matrix) -> int:
     """0, or the exponent e of a power of two 2**e bringing the matrix's
     largest entry near 1 when it is far from it."""
@@ -179,10 +291,21 @@ class ReducedPencil:
         # for a method that decides it (None: the solver's own)
         self.equal_eigenvalue_basis = None
         self._all = None
+        # how the last sparse solve went (method, factorisation back end, ...)
+        self.last_solve: dict = {}
+        # (σ, CHOLMOD factor of K - σM, its seconds) for the modes nearest
+        # positive shifts without MUMPS; False once K proved indefinite
+        self._lowest_factor = None
 
     @property
     def dense(self) -> bool:
         return self.n <= DENSE_LIMIT
+
+    def sparse_backend(self, sigma: float) -> str:
+        """The factorisation of K - σM (σ in ω²) a sparse solve uses:
+        sparse_direct decides by size, by what is installed and by whether
+        K - σM should be positive definite (σ <= 0)."""
+        return sparse_direct.choose_backend(self.n, definite=sigma <= 0.0)
 
     def all_modes(self):
         if self._all is None:
@@ -218,18 +341,89 @@ class ReducedPencil:
             order = np.argsort(np.abs(vals - sigma), kind="stable")[:count]
             return vals[order], vecs[:, order]
         k, m = self._solver_k, self._solver_m
-        vals, vecs = _shift_invert(k, m, self._solver_shift(sigma), count)
+        shift = self._solver_shift(sigma)
+        backend = self.sparse_backend(sigma)
+        self.last_solve = {}
+        if backend != "superlu":
+            try:
+                vals, vecs, self.last_solve = _large_shift_invert(
+                    k, m, shift, count, backend=backend
+                )
+            except sparse_direct.NotPositiveDefiniteError:
+                backend = "superlu"  # K itself is indefinite (a prestressed K)
+        if backend == "superlu" and self._bottom_up_possible():
+            found = self._nearest_from_lowest(shift, count)
+            if found is not None:
+                vals, vecs, self.last_solve = found
+                backend = "cholmod"
+        if backend == "superlu":
+            vals, vecs = _shift_invert(k, m, shift, count)
         vals = self._omega2(vals)
         order = np.argsort(np.abs(vals - sigma), kind="stable")
         return self._settled(vals[order], vecs[:, order])
+
+    def _bottom_up_possible(self) -> bool:
+        """A large model without MUMPS, whose K CHOLMOD may factorise."""
+        return (
+            self._lowest_factor is not False
+            and sparse_direct.choose_backend(self.n, definite=True) == "cholmod"
+        )
+
+    def _nearest_from_lowest(self, shift: float, count: int):
+        """(values, vectors, how) of the ``count`` eigenpairs nearest the
+        solver's ``shift``, found among the lowest modes: the block Lanczos
+        method on one CHOLMOD factor of K (kept for the next calls of this
+        pencil, BANDE's growing counts) asks for twice as many lowest modes
+        until the highest found lies beyond the farthest of the ``count``
+        nearest, so that no mode nearer the shift is left out. None when K is
+        indefinite or more than BOTTOM_UP_LIMIT modes would be needed."""
+        k, m = self._solver_k, self._solver_m
+        if self._lowest_factor is None:
+            start = time.perf_counter()
+            try:
+                sigma, factor = _large_smallest_shift(k, m, "cholmod")
+            except sparse_direct.NotPositiveDefiniteError:
+                self._lowest_factor = False
+                return None
+            self._lowest_factor = (sigma, factor, time.perf_counter() - start)
+        bound = min(BOTTOM_UP_LIMIT, self.n - 1)
+        if count > bound:
+            return None
+        sigma, factor, seconds = self._lowest_factor
+        wanted = count
+        while True:
+            vals, vecs, how = _large_shift_invert(
+                k, m, sigma, wanted, factor, seconds, keep_factor=True
+            )
+            seconds = 0.0  # the factorisation is counted once
+            order = np.argsort(np.abs(vals - shift), kind="stable")[:count]
+            farthest = float(np.abs(vals[order[-1]] - shift))
+            if vals.max() >= shift + farthest or wanted >= self.n - 1:
+                how["method"] = f"block Lanczos ({wanted} lowest modes)"
+                return vals[order], vecs[:, order], how
+            if wanted >= bound:
+                return None
+            wanted = min(2 * wanted, bound)
 
     def smallest(self, count: int):
         if self.dense or count >= self.n - 1:
             vals, vecs = self.all_modes()
             return vals[:count], vecs[:, :count]
         k, m = self._solver_k, self._solver_m
-        sigma, lu = _smallest_shift(k, m)
-        vals, vecs = _shift_invert(k, m, sigma, count, lu)
+        backend = self.sparse_backend(0.0)
+        self.last_solve = {}
+        if backend != "superlu":
+            start = time.perf_counter()
+            try:
+                sigma, factor = _large_smallest_shift(k, m, backend)
+                vals, vecs, self.last_solve = _large_shift_invert(
+                    k, m, sigma, count, factor, time.perf_counter() - start
+                )
+            except sparse_direct.NotPositiveDefiniteError:
+                backend = "superlu"  # K is indefinite (a prestressed K)
+        if backend == "superlu":
+            sigma, lu = _smallest_shift(k, m)
+            vals, vecs = _shift_invert(k, m, sigma, count, lu)
         vals = self._omega2(vals)
         order = np.argsort(vals, kind="stable")
         return self._settled(vals[order], vecs[:, order])
@@ -275,6 +469,11 @@ class ReducedPencil:
         if self.dense:
             return int(np.count_nonzero(self.all_modes()[0] < omega2))
         shifted = self._solver_k - self._solver_shift(omega2) * self._solver_m
+        backend = self.sparse_backend(omega2)
+        if backend != "superlu":  # a large model: not SuperLU's fill-in
+            count = _large_inertia(shifted, backend)
+            if count is not False:
+                return count
         try:
             lu = spla.splu(
                 shifted.tocsc(),

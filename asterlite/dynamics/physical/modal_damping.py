@@ -75,9 +75,13 @@ def build_modal_damping(
     ``supports``: (ψ_s on all DOFs, velocity function) of the multiple supports."""
     frequencies = np.asarray(frequencies, dtype=float)
     masses = np.asarray(masses, dtype=float)
+    # ω keeps FREQ's sign, as code_aster's dampModalPreparation takes it: a
+    # free structure's rigid-body modes come out at ±1e-6 Hz, their sign set
+    # by round-off (it differs between factorisations), and each gives a force
+    # of order 2 ξ ω / m either way
     omega = 2.0 * np.pi * frequencies
-    if np.any(omega <= 0.0) or np.any(masses <= 0.0):
-        bad = int(np.flatnonzero((omega <= 0.0) | (masses <= 0.0))[0]) + 1
+    if np.any(omega == 0.0) or np.any(masses <= 0.0):
+        bad = int(np.flatnonzero((omega == 0.0) | (masses <= 0.0))[0]) + 1
         raise ValueError(
             f"mode {bad} has a zero frequency or generalized mass: 2ξ/(m ω³) is undefined"
         )
