@@ -42,9 +42,19 @@ _OTHER_KEYWORDS = (
 )
 
 
-def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
+def _discrete(ctx, model, result, occ, dim: int, keyword: str, verif: bool) -> None:
     mesh = model.mesh
     cells = select_cells(ctx, occ, mesh)
+    # cells of the group without an element of the model take nothing (the
+    # characteristic is only read by elements), unless VERIF='MAILLE' asks
+    # every cell to carry one; none with one is an error
+    bare = [c for c in cells if model.cell_modelisation.get(int(c)) is None]
+    if bare and (verif or len(bare) == len(cells)):
+        name = mesh.cell_names[bare[0]]
+        ctx.error(f"cell {name} carries no element of the model", "GROUP_MA", occ)
+    if bare:
+        ctx.log(f"{keyword}: {len(bare)} cells without an element of the model are left out")
+        cells = np.array([c for c in cells if model.cell_modelisation.get(int(c)) is not None])
     caras = as_tuple(occ.get("CARA"))
     values = np.atleast_1d(np.asarray(as_tuple(occ.get("VALE")), dtype=float))
     symmetric = as_scalar(occ.get("SYME", "OUI")) == "OUI"
@@ -69,8 +79,6 @@ def _discrete(ctx, model, result, occ, dim: int, keyword: str) -> None:
         for cell in cells:
             modelisation = model.cell_modelisation.get(int(cell))
             name = mesh.cell_names[cell]
-            if modelisation is None:
-                ctx.error(f"cell {name} carries no element of the model", "GROUP_MA", occ)
             if modelisation not in DISCRETE_MODELISATIONS:
                 ctx.error(f"cell {name} is a {modelisation} element, not a discrete", "CARA", occ)
             # a point mass (M_T_D_N, M_T_D_L: one value) means the same to 2D and 3D
@@ -353,10 +361,11 @@ def run(ctx, kw):
     generators: list = []
     for occ in kw.factor("ORIENTATION"):
         _orientation(ctx, model, result, occ, generators)
+    verif = "MAILLE" in as_tuple(kw.get("VERIF"))
     for occ in kw.factor("DISCRET"):
-        _discrete(ctx, model, result, occ, 3, "DISCRET")
+        _discrete(ctx, model, result, occ, 3, "DISCRET", verif)
     for occ in kw.factor("DISCRET_2D"):
-        _discrete(ctx, model, result, occ, 2, "DISCRET_2D")
+        _discrete(ctx, model, result, occ, 2, "DISCRET_2D", verif)
     for occ in kw.factor("RIGI_PARASOL"):
         rigi_parasol(ctx, model, result, occ)
     for occ in kw.factor("POUTRE"):

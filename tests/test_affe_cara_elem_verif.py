@@ -3,6 +3,7 @@ element of the keyword's family, or code_aster stops (op0019/vafcar)."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from asterlite.errors import CommandError, UnsupportedError
@@ -80,3 +81,21 @@ def test_point_mass_under_discret_on_plane_discretes():
             MODELE=model,
             DISCRET={"GROUP_MA": "RESSORTS", "CARA": "K_T_D_L", "VALE": (1.0, 1.0, 1.0)},
         )
+
+
+def test_discrete_cells_without_elements_take_nothing_unless_verif():
+    """A DISCRET group with cells the model leaves bare: code_aster gives the
+    characteristic to the cells with an element; VERIF='MAILLE' stops."""
+    session, model = _springs_only()
+    mesh = model.mesh
+    mesh.cell_groups["BOTH"] = np.concatenate(
+        [mesh.cell_groups["RESSORTS"], mesh.cell_groups["MASSES"]]
+    )
+    both = {"GROUP_MA": "BOTH", "CARA": "K_T_D_L", "VALE": (1.0, 1.0, 1.0)}
+    cara = run(session, "AFFE_CARA_ELEM", MODELE=model, DISCRET=both)
+    assert set(cara.discrete) == set(mesh.cell_groups["RESSORTS"].tolist())
+    with pytest.raises(CommandError, match="carries no element of the model"):
+        run(session, "AFFE_CARA_ELEM", MODELE=model, DISCRET=both, VERIF="MAILLE")
+    with pytest.raises(CommandError, match="carries no element of the model"):
+        run(session, "AFFE_CARA_ELEM", MODELE=model,
+            DISCRET={"GROUP_MA": "MASSES", "CARA": "M_T_D_N", "VALE": 1.0})  # fmt: skip
