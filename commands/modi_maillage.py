@@ -42,15 +42,22 @@ def _orient_skin(ctx, mesh, kw) -> None:
             volumes = (
                 cell_group_members(ctx, occ, mesh, volumes_key) if occ.get(volumes_key) else None
             )
+            alone: list[int] = []
             try:
                 if plane:  # code_aster: a mesh with constant Z has edges as skin
-                    count = orient_edges(mesh, faces, volumes)
+                    count = orient_edges(mesh, faces, volumes, alone)
                 else:
-                    count = orient_skin(mesh, faces, volumes)
+                    count = orient_skin(mesh, faces, volumes, alone)
             except SkinError as exc:
                 ctx.error(str(exc), faces_key, occ)
             what = "edges" if plane else "faces"
             ctx.log(f"{factor}: {count} of {len(faces)} {what} reversed")
+            if alone:
+                inside = "surface" if plane else "volume"
+                ctx.log(
+                    f"warning: {factor}: {len(alone)} {what} bound no {inside} cell and are "
+                    f"left as they are (the first: {mesh.cell_names[alone[0]]})"
+                )
 
 
 def _orient_shells(ctx, mesh, kw) -> None:

@@ -71,3 +71,13 @@ def test_a_warped_mesh_is_not_plane():
     mesh = _square()
     mesh.coords[2, 2] = 0.1
     assert not is_plane(mesh)
+
+
+def test_an_edge_on_no_surface_is_left_as_it_is():
+    """code_aster's orilma leaves a skin cell with no cell behind it alone."""
+    mesh = _square()
+    alone: list[int] = []
+    # the skin against the first triangle only: the top and left edges bound none
+    orient_edges(mesh, [2, 3, 4, 5], [0], alone)
+    assert alone == [4, 5] and mesh.cell_nodes[4] == (3, 2) and mesh.cell_nodes[5] == (0, 3)
+    assert _outward(mesh, 2) > 0 and _outward(mesh, 3) > 0

@@ -90,15 +90,19 @@ def _all_volumes(mesh) -> list[int]:
     return [c for c, t in enumerate(mesh.cell_types) if t in _VOLUME_VERTICES]
 
 
-def orient_skin(mesh, faces, volumes=None) -> int:
+def orient_skin(mesh, faces, volumes=None, alone: list | None = None) -> int:
     """Reverse the faces whose normal points into their volume; returns how
-    many were reversed. ``volumes`` defaults to every volume cell."""
+    many were reversed. ``volumes`` defaults to every volume cell. A face on
+    no volume is left as it is, as code_aster's orilma does (listed in
+    ``alone`` when given)."""
     around = _volumes_by_vertex(mesh, _all_volumes(mesh) if volumes is None else volumes)
     reversed_count = 0
     for face in faces:
         owners = _owners(mesh, face, around)
         if not owners:
-            raise SkinError(f"face {mesh.cell_names[face]} bounds no volume cell")
+            if alone is not None:
+                alone.append(int(face))
+            continue
         if len(owners) > 1:
             names = ", ".join(mesh.cell_names[v] for v in owners)
             raise SkinError(
@@ -150,10 +154,11 @@ def _edge_normal(mesh, edge: int) -> np.ndarray:
     return np.array([t[1], -t[0]])
 
 
-def orient_edges(mesh, edges, surfaces=None) -> int:
+def orient_edges(mesh, edges, surfaces=None, alone: list | None = None) -> int:
     """Reverse the skin edges of a plane mesh whose normal points into the
     surface cell they bound; returns how many were reversed. ``surfaces``
-    defaults to every surface cell."""
+    defaults to every surface cell; an edge on no surface cell is left as it
+    is (listed in ``alone`` when given)."""
     if surfaces is None:
         surfaces = [c for c, t in enumerate(mesh.cell_types) if t in _SURFACE_VERTICES]
     around: dict[int, list[int]] = defaultdict(list)
@@ -175,7 +180,9 @@ def orient_edges(mesh, edges, surfaces=None) -> int:
             if b in mesh.cell_nodes[c][: _SURFACE_VERTICES[mesh.cell_types[c]]]
         ]
         if not owners:
-            raise SkinError(f"edge {mesh.cell_names[edge]} bounds no surface cell")
+            if alone is not None:
+                alone.append(int(edge))
+            continue
         if len(owners) > 1:
             names = ", ".join(mesh.cell_names[c] for c in owners)
             raise SkinError(
