@@ -149,3 +149,11 @@ def test_large_elementary_matrices_are_released_and_made_again(monkeypatch):
     kept = ElementaryMatrices(model=None, option="RIGI_MECA", blocks=recompute())
     kept.release()  # nothing to make them again with: kept
     assert kept.blocks is not None
+
+
+def test_symmetry_is_judged_element_by_element():
+    """A soft element's asymmetry is not hidden by a stiff element's scale."""
+    stiff = np.eye(2)[None] * 1.0e20
+    soft = np.array([[[1.0e3, 1.0], [0.0, 1.0e3]]])
+    assert not is_symmetric(np.concatenate([stiff, soft]))
+    assert is_symmetric(np.concatenate([stiff, stiff]))
