@@ -18,6 +18,22 @@ from asterlite.concepts.element_block import (
 from asterlite.fem.assemble import CHUNK_TERMS, assemble_blocks
 
 
+@pytest.fixture(autouse=True)
+def _pack_every_block(monkeypatch, request):
+    """Blocks of any size are kept half here (the default keeps small ones whole)."""
+    if "small_blocks" not in request.node.name:
+        monkeypatch.setattr("asterlite.concepts.element_block.PACK_BYTES", 0)
+
+
+def test_small_blocks_stay_whole():
+    rng = np.random.default_rng(7)
+    matrices = _symmetric(rng, 3, 4)
+    block = ElementBlock(np.array([[0, 1], [1, 2], [2, 3]]), ("DX", "DY"), matrices)
+    assert not block.symmetric and block.matrices is matrices
+    computed = computed_block(np.arange(3)[:, None], ("DX", "DY", "DZ"), lambda a, b: matrices[a:b])
+    assert not computed.symmetric
+
+
 def _symmetric(rng, n_elements, d, dtype=float):
     a = rng.standard_normal((n_elements, d, d))
     if dtype is complex:

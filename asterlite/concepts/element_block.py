@@ -5,8 +5,9 @@ code_aster stores those as their upper triangle (``MATR_ELEM`` of a
 symmetric option). A block here does the same: given whole matrices that
 are symmetric to round-off, it keeps the upper triangle of each, packed row
 by row (d (d + 1) / 2 values instead of d²), which halves what a large
-solid model holds between ``CALC_MATR_ELEM`` and its assembly. Other
-matrices (gyroscopic, non-symmetric discrete elements) are kept whole.
+solid model holds between ``CALC_MATR_ELEM`` and its assembly. Blocks of
+less than ``PACK_BYTES`` and other matrices (gyroscopic, non-symmetric
+discrete elements) are kept whole.
 Readers that need whole matrices get them from :attr:`ElementBlock.matrices`
 (a new array for a packed block) or, a few elements at a time, from
 :meth:`ElementBlock.chunk`; the assembly reads the packed terms directly.
@@ -23,6 +24,11 @@ import numpy as np
 SYMMETRY_TOLERANCE = 1.0e-12
 #: elements compared, packed or unpacked at once (bounds the temporaries)
 CHUNK_ELEMENTS = 256
+#: whole matrices of a block above this size are kept half when symmetric;
+#: smaller blocks stay whole (they cost little, and their assembly keeps
+#: the round-off of both triangles, as before: some decks' results are
+#: sensitive to it)
+PACK_BYTES = 16 * 1024 * 1024
 
 
 @lru_cache(maxsize=64)
@@ -89,7 +95,7 @@ class ElementBlock:
             return
         matrices = np.asarray(matrices)
         self.size = int(matrices.shape[1]) if matrices.ndim == 3 else 0
-        if len(matrices) and is_symmetric(matrices):
+        if matrices.nbytes > PACK_BYTES and is_symmetric(matrices):
             self.packed, self._whole = pack(matrices), None
         else:
             self.packed, self._whole = None, matrices
@@ -141,6 +147,8 @@ def computed_block(nodes, components, compute, chunk: int = CHUNK_ELEMENTS) -> E
     parts, symmetric = [], True
     for start in range(0, n_elements, chunk):
         part = np.asarray(compute(start, min(start + chunk, n_elements)))
+        if start == 0:  # the whole block's size decides whether it is kept half
+            symmetric = part[:1].nbytes * n_elements > PACK_BYTES
         if symmetric and is_symmetric(part):
             parts.append(pack(part))
             continue
