@@ -16,9 +16,13 @@ def run(ctx, kw):
     kinematic = as_tuple(kw.get("CHAR_CINE"))
     if kinematic:
         numbering = numbering.with_kinematic(kinematic)
-    blocks = [b for m in elementary for b in m.blocks]
+    matrix = None
     try:
-        matrix = assemble_blocks(blocks, numbering)
+        # one set of element matrices at a time: those released by
+        # CALC_MATR_ELEM are made again here, then dropped
+        for elementary_matrices in elementary:
+            part = assemble_blocks(elementary_matrices.element_blocks(), numbering)
+            matrix = part if matrix is None else matrix + part
     except KeyError:
         ctx.error("the element matrices use DOFs the numbering does not have", "NUME_DDL", kw)
     first = elementary[0]
@@ -26,7 +30,7 @@ def run(ctx, kw):
     cls = ComplexAssembledMatrix if is_complex else AssembledMatrix
     return cls(
         numbering=numbering,
-        matrix=matrix.astype(complex) if is_complex else matrix,
+        matrix=matrix.astype(complex, copy=False) if is_complex else matrix,
         kind=MATRIX_KIND.get(first.option, "RIGI"),
         model=first.model,
         characteristics=first.characteristics,

@@ -9,9 +9,15 @@ model (they would be the same matrices). MECA_GYRO / RIGI_GYRO are the
 gyroscopic matrices of beams and disks (non-symmetric); RIGI_MECA_HYST the
 complex stiffness K_e (1 + i AMOR_HYST) (its RIGI_MECA matrices must come from
 the same model and are recomputed).
+
+Element matrices of more than ``ElementaryMatrices.RELEASE_BYTES`` are not
+held between commands: computed here (where their errors are reported),
+then made again from the same concepts by the ASSE_MATRICE that reads them.
 """
 
 from __future__ import annotations
+
+from functools import partial
 
 from asterlite.concepts.assembly import ComplexElementaryMatrices, ElementaryMatrices
 from asterlite.fem.elements import ElementError
@@ -47,11 +53,15 @@ def run(ctx, kw):
     except (ElementError, ValueError) as exc:
         ctx.error(str(exc), "CHAM_MATER" if "material" in str(exc) else "CARA_ELEM", kw)
     cls = ComplexElementaryMatrices if option in COMPLEX_OPTIONS else ElementaryMatrices
-    return cls(
+    result = cls(
         model=model,
         option=option,
         blocks=blocks,
         loads=loads,
         characteristics=characteristics,
         materials=materials,
+        # the same computation from the same (unchanging) concepts
+        recompute=partial(option_blocks, model, characteristics, option, materials, cells),
     )
+    result.release()  # large matrices are made again by the command that reads them
+    return result

@@ -13,6 +13,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from asterlite.concepts.base import Concept
+from asterlite.concepts.element_block import ElementBlock
 from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.numpy_api import assembled_to_numpy, assembled_triplets
 from asterlite.errors import DeckRuntimeError, UnsupportedError
@@ -130,17 +131,6 @@ class ElementCharacteristics(Concept):
 
 
 @dataclass(eq=False)
-class ElementBlock:
-    """Matrices of a set of cells sharing nodes-per-cell and components, in the
-    global frame: ``matrices[e]`` acts on the DOFs of ``nodes[e]`` ordered
-    node by node, ``components`` within each node."""
-
-    nodes: np.ndarray  # (n_elements, nodes_per_element) node indices
-    components: tuple[str, ...]
-    matrices: np.ndarray  # (n_elements, d, d), d = nodes_per_element * len(components)
-
-
-@dataclass(eq=False)
 class LinearRelation:
     """sum(coef * u[node, component]) = rhs, as given by DDL_IMPO or LIAISON_DDL."""
 
@@ -216,16 +206,39 @@ class KinematicLoad(MechanicalLoad):
 @dataclass(eq=False)
 class ElementaryMatrices(Concept):
     """``CALC_MATR_ELEM`` result: element matrices of one option plus the loads
-    whose kinematic relations come with them (code_aster's Lagrange terms)."""
+    whose kinematic relations come with them (code_aster's Lagrange terms).
+
+    Large element matrices are not held between commands: with ``recompute``
+    (the computation that made them, from concepts that never change) the
+    blocks are dropped once made (:meth:`release`) and made again by
+    :meth:`element_blocks` for the command that reads them, as code_aster's
+    memory manager moves large objects out of memory until they are read."""
 
     aster_types = ("matr_elem_depl_r",)
 
     model: Model
     option: str  # RIGI_MECA, MASS_MECA, AMOR_MECA...
-    blocks: list[ElementBlock] = field(default_factory=list)
+    blocks: list[ElementBlock] | None = field(default_factory=list)
     loads: list[MechanicalLoad] = field(default_factory=list)
     characteristics: ElementCharacteristics | None = None
     materials: Any = None  # MaterialField (CHAM_MATER) the matrices were computed with
+    recompute: Any = None  # () -> list[ElementBlock], the same matrices again
+
+    #: element matrices of more than this many bytes are released once made
+    RELEASE_BYTES: ClassVar[int] = 16 * 1024 * 1024
+
+    def element_blocks(self) -> list[ElementBlock]:
+        """The element matrices (made again if they were released)."""
+        if self.blocks is not None:
+            return self.blocks
+        return self.recompute()
+
+    def release(self) -> None:
+        """Drop the element matrices when they are large and can be made again."""
+        if self.recompute is None or self.blocks is None:
+            return
+        if sum(block.nbytes for block in self.blocks) > self.RELEASE_BYTES:
+            self.blocks = None
 
 
 @dataclass(eq=False)

@@ -6,6 +6,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from asterlite.concepts.assembly import DofNumbering, ElementBlock
+from asterlite.concepts.element_block import upper_indices
 
 
 def build_numbering_dofs(node_components: dict[int, tuple[str, ...]]) -> list[tuple[int, str]]:
@@ -53,25 +54,20 @@ CHUNK_TERMS = 2_000_000
 
 
 def assemble_blocks(blocks: list[ElementBlock], numbering: DofNumbering) -> sp.csr_matrix:
-    """Sum the element matrices into an (n_dofs, n_dofs) CSR matrix."""
+    """Sum the element matrices into an (n_dofs, n_dofs) CSR matrix (a
+    block kept as upper triangles gives each off-diagonal term to both
+    halves, so the assembled matrix is exactly symmetric)."""
     n = numbering.n_dofs
     matrix = None
     for block in blocks:
-        if not len(block.matrices):
+        if not len(block):
             continue
         idx = block_dof_indices(block, numbering)
         if np.any(idx < 0):
             raise KeyError("element DOF missing from the numbering")
-        d = idx.shape[1]
         # 32-bit indices halve the memory of large solid models
         idx = idx.astype(np.int32 if n < 2**31 - 1 else np.int64)
-        step = max(1, CHUNK_TERMS // (d * d))
-        for start in range(0, len(idx), step):
-            part = idx[start : start + step]
-            rows = np.repeat(part, d, axis=1).ravel()
-            cols = np.tile(part, (1, d)).ravel()
-            vals = block.matrices[start : start + step].reshape(len(part), -1).ravel()
-            chunk = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
+        for chunk in _block_chunks(block, idx, n):
             matrix = chunk if matrix is None else matrix + chunk
     if matrix is None:
         return sp.csr_matrix((n, n))
@@ -79,6 +75,29 @@ def assemble_blocks(blocks: list[ElementBlock], numbering: DofNumbering) -> sp.c
     matrix.sum_duplicates()
     matrix.eliminate_zeros()
     return matrix
+
+
+def _block_chunks(block: ElementBlock, idx: np.ndarray, n: int):
+    """The block's terms as (n, n) CSR matrices of about ``CHUNK_TERMS`` terms each."""
+    d = idx.shape[1]
+    if block.symmetric:
+        upper_rows, upper_cols = upper_indices(d)
+        off = upper_rows != upper_cols
+        local_rows = np.concatenate([upper_rows, upper_cols[off]])
+        local_cols = np.concatenate([upper_cols, upper_rows[off]])
+        terms = np.concatenate([np.arange(upper_rows.size), np.flatnonzero(off)])
+    step = max(1, CHUNK_TERMS // (d * d))
+    for start in range(0, len(idx), step):
+        part = idx[start : start + step]
+        if block.symmetric:
+            rows = part[:, local_rows].ravel()
+            cols = part[:, local_cols].ravel()
+            vals = block.packed[start : start + step][:, terms].ravel()
+        else:
+            rows = np.repeat(part, d, axis=1).ravel()
+            cols = np.tile(part, (1, d)).ravel()
+            vals = block.chunk(start, start + step).reshape(len(part), -1).ravel()
+        yield sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
 
 
 def assemble_terms(terms, numbering: DofNumbering) -> np.ndarray:

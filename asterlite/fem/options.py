@@ -259,13 +259,7 @@ def hysteretic_blocks(model, characteristics, materials=None, cells=None) -> lis
     for value in np.unique(eta):
         group = members[eta == value]
         for block in element_blocks(model, characteristics, "K", materials=materials, cells=group):
-            blocks.append(
-                ElementBlock(
-                    nodes=block.nodes,
-                    components=block.components,
-                    matrices=block.matrices * complex(1.0, float(value)),
-                )
-            )
+            blocks.append(block.scaled(complex(1.0, float(value))))
     return blocks
 
 

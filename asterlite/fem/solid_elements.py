@@ -27,6 +27,7 @@ from collections import defaultdict
 import numpy as np
 
 from asterlite.concepts.assembly import ElementBlock
+from asterlite.concepts.element_block import computed_block
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.element_materials import elastic_values
 from asterlite.fem.orthotropic import global_hooke
@@ -182,13 +183,22 @@ def solid_blocks(
             props["HOOKE"] = global_hooke(
                 materials, characteristics, members, mesh, "3D", props["E"], props["NU"]
             )
-        try:
-            mats = _matrices(matrix, spec, coords, props, lumped, (mesh, members))
+
+        def compute(start, stop, spec=spec, coords=coords, props=props, members=members):
+            part = {name: values[start:stop] for name, values in props.items()}
+            where = (mesh, members[start:stop])
+            mats = _matrices(matrix, spec, coords[start:stop], part, lumped, where)
             if np.iscomplexobj(mats) and not complex_stiffness:
-                mats = mats.real
+                mats = np.ascontiguousarray(mats.real)  # not a view holding the complex ones
+            return mats
+
+        try:
+            # a few hundred cells at a time: the temporaries of B^T D B (complex
+            # for viscoelastic materials) stay small, and symmetric matrices
+            # are kept as upper triangles as they come
+            blocks.append(computed_block(conn, COMPONENTS, compute))
         except ElementError as exc:
             raise ElementError(f"{kind} cells: {exc}") from None
-        blocks.append(ElementBlock(nodes=conn, components=COMPONENTS, matrices=mats))
     return blocks
 
 

@@ -130,7 +130,9 @@ class Analysis:
     perm: np.ndarray
     upper_ptr: np.ndarray  # CSC of the permuted upper triangle
     upper_idx: np.ndarray
-    source: np.ndarray  # position in the caller's data array of each upper entry
+    # position in the caller's data array of each upper entry (None: the
+    # caller's data are in this order already)
+    source: np.ndarray | None
     parent: np.ndarray
     lp: np.ndarray
 
@@ -139,29 +141,49 @@ class Analysis:
         return int(self.lp[-1])
 
 
-def analyse(indptr, indices, n, perm, limit: int | None = None) -> Analysis | None:
+def analyse(
+    indptr, indices, n, perm, limit: int | None = None, upper: bool = False
+) -> Analysis | None:
     """Symbolic analysis of a square CSC pattern (``indptr``, ``indices``,
-    symmetric) permuted by ``perm``. Data arrays aligned on the caller's
-    pattern are later mapped through ``source``. None when the fill of L
-    would exceed ``limit``."""
-    indptr = np.asarray(indptr, dtype=np.int64)
-    indices = np.asarray(indices, dtype=np.int64)
-    inverse = np.empty(n, dtype=np.int64)
-    inverse[perm] = np.arange(n)
-    cols = np.repeat(np.arange(n, dtype=np.int64), np.diff(indptr))
-    new_rows, new_cols = inverse[indices], inverse[cols]
-    keep = np.flatnonzero(new_rows <= new_cols)
-    order = keep[np.lexsort((new_rows[keep], new_cols[keep]))]
-    upper_ptr = np.zeros(n + 1, dtype=np.int64)
-    np.cumsum(np.bincount(new_cols[order], minlength=n), out=upper_ptr[1:])
+    symmetric; ``upper``: only its upper triangle) permuted by ``perm``.
+    Data arrays aligned on the caller's pattern are later mapped through
+    ``source``. None when the fill of L would exceed ``limit``. Indices are
+    32-bit where they fit (half the memory of a large model's pattern and
+    factor)."""
+    nnz = int(indptr[-1])
+    index_type = _index_type(max(n, nnz))
+    inverse = np.empty(n, dtype=index_type)
+    inverse[perm] = np.arange(n, dtype=index_type)
+    new_rows = inverse[indices]
+    new_cols = np.repeat(inverse, np.diff(indptr))
+    del inverse
+    if upper:  # each term goes to the upper triangle of the permuted matrix
+        keep = np.arange(nnz, dtype=index_type)
+        new_rows, new_cols = np.minimum(new_rows, new_cols), np.maximum(new_rows, new_cols)
+    else:
+        keep = np.flatnonzero(new_rows <= new_cols).astype(index_type, copy=False)
+        new_rows, new_cols = new_rows[keep], new_cols[keep]
+    # column-major order of the kept terms (one sort of a 64-bit key)
+    key = new_cols.astype(np.int64) * n + new_rows
+    order = np.argsort(key, kind="stable").astype(index_type, copy=False)
+    del key
+    upper_ptr = np.zeros(n + 1, dtype=index_type)
+    np.cumsum(np.bincount(new_cols, minlength=n), out=upper_ptr[1:])
+    del new_cols
     upper_idx = new_rows[order]
+    source = keep[order]
+    del keep, order, new_rows
     bound = np.iinfo(np.int64).max if limit is None else int(limit)
     parent, lnz, total = _symbolic(n, upper_ptr, upper_idx, bound)
     if total < 0:
         return None
     lp = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(lnz, out=lp[1:])
-    return Analysis(n, np.asarray(perm), upper_ptr, upper_idx, order, parent, lp)
+    return Analysis(n, np.asarray(perm), upper_ptr, upper_idx, source, parent, lp)
+
+
+def _index_type(largest: int):
+    return np.int32 if largest < 2**31 - 1 else np.int64
 
 
 @dataclass
@@ -187,8 +209,9 @@ class ZeroPivot(ArithmeticError):
 def factorise(analysis: Analysis, data: np.ndarray) -> Factor:
     """L D Lᵀ of the matrix whose values on the analysed pattern are ``data``."""
     a = analysis
-    values = np.ascontiguousarray(np.asarray(data, dtype=complex)[a.source])
-    li = np.empty(a.fill, dtype=np.int64)
+    values = np.asarray(data, dtype=complex)
+    values = np.ascontiguousarray(values if a.source is None else values[a.source])
+    li = np.empty(a.fill, dtype=_index_type(a.n))
     lx = np.empty(a.fill, dtype=np.complex128)
     d = np.empty(a.n, dtype=np.complex128)
     failed = _numeric(a.n, a.upper_ptr, a.upper_idx, values, a.lp, a.parent, li, lx, d)
