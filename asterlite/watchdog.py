@@ -21,9 +21,10 @@ asterlite does the same:
   resident memory is also sampled every 10 ms of CPU time while anything
   runs (the CPU-time timer below), which stops deck code at the limit.
 
-numba's compilation of a kernel (once per install, cached afterwards) is
-not the study's work: the time it takes is not counted and the cap is lifted
-while it runs, then moved up by what the compiler kept.
+numba's compilation of a kernel (once per install, cached afterwards) and
+its loading from the cache are not the study's work (code_aster does not
+count its own code either): the time they take is not counted and the cap is
+lifted while they run, then moved up by what they kept.
 
 The limits are per thread (``threading.local``): runs in other threads of
 the same process (a sweep) keep their own.
@@ -223,7 +224,9 @@ def _listen_to_compilation() -> None:
         def on_end(self, _event):
             _compile_ended()
 
-    event.register("numba:compile", CompileListener())
+    # numba holds its compiler lock to compile a kernel and to load it from
+    # the cache (the compile event covers compilations only)
+    event.register("numba:compiler_lock", CompileListener())
     _listening = True
 
 
