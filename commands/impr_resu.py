@@ -606,7 +606,9 @@ ELEMENT_TITLES = {
 def element_lines(mesh: Mesh, cells, location: str, comps, values, real_format: str) -> list:
     """One block per cell (``MAILLE name``), then one line per element node
     (ELNO: the node's name) or Gauss point (ELGA: its number) with the
-    component values; ``values`` is (n_cells, n_points, n_comp)."""
+    component values; ``values`` is (n_cells, n_points, n_comp), padded with
+    NaN past a cell's own points (a point cell among segments, fewer Gauss
+    points): only the cell's own points are listed, as code_aster does."""
     width = len(fortran_real(0.0, real_format))
     first = "NOEUD" if location == "ELNO" else "POINT"
     header = f"  {first:<8}" + "".join(f" {c:>{width}}" for c in comps)
@@ -615,12 +617,22 @@ def element_lines(mesh: Mesh, cells, location: str, comps, values, real_format: 
         lines.append(f" MAILLE {mesh.cell_names[int(cell)]}")
         lines.append(header)
         connectivity = mesh.cell_nodes[int(cell)]
-        for point in range(values.shape[1]):
+        for point in range(_own_points(values[k], location, len(connectivity))):
             name = mesh.node_names[int(connectivity[point])] if location == "ELNO" else point + 1
             for label, row in _value_rows(str(name), values[k, point]):
                 numbers = "".join(f" {fortran_real(float(v) + 0.0, real_format)}" for v in row)
                 lines.append(f"  {label!s:<8}" + numbers)
     return lines
+
+
+def _own_points(values, location: str, n_nodes: int) -> int:
+    """How many of the (n_points, n_comp) rows of one cell are its own: its
+    nodes for ELNO; for ELGA the rows up to the last one holding a value
+    (the padding of cells with fewer Gauss points is NaN throughout)."""
+    if location == "ELNO":
+        return min(values.shape[0], n_nodes)
+    held = np.flatnonzero(~np.all(np.isnan(np.asarray(values)), axis=1))
+    return int(held[-1]) + 1 if held.size else 0
 
 
 def _value_rows(label: str, values) -> list:

@@ -151,3 +151,28 @@ def test_impr_resu_med_of_a_dyna_harmo_writes_the_part_asked(tmp_path):
     with pytest.raises(CommandError, match="one PARTIE at a time"):
         run(session, "IMPR_RESU", FORMAT="MED", UNITE=22,
             RESU={"RESULTAT": result, "NOM_CHAM": "DEPL"})  # fmt: skip
+
+
+def test_impr_resu_text_of_a_complex_elno_field_on_segments_and_points(tmp_path):
+    """EFGE_ELNO of a dyna_harmo on two-node springs and point cells (values
+    padded with NaN past a point cell's node): each cell lists its own nodes,
+    a complex value as its real parts then its imaginary parts (ircecl)."""
+    from asterlite.concepts.assembly import ElementField
+
+    result = _harmonic()
+    values = np.full((2, 2, 2, 1), np.nan, dtype=complex)
+    values[:, 0, :, 0] = [[1.0 + 2.0j, -1.0 - 2.0j], [3.0, -3.0]]  # spring S1
+    values[:, 1, 0, 0] = [0.5j, 4.0 + 0.0j]  # point cell P1
+    result.element_fields["EFGE_ELNO"] = ElementField("EFGE_ELNO", np.array([0, 1]), ("N",), values)
+    session = _Session(tmp_path)
+    run(session, "IMPR_RESU", FORMAT="RESULTAT", UNITE=8,
+        RESU={"RESULTAT": result, "NOM_CHAM": "EFGE_ELNO", "NUME_ORDRE": 1})  # fmt: skip
+    lines = (tmp_path / "fort.8").read_text().splitlines()
+    start = lines.index(" MAILLE S1")
+    rows = [line.split() for line in lines[start:] if line.strip()]
+    assert rows[1] == ["NOEUD", "N"]
+    assert rows[2][0] == "N1" and float(rows[2][1]) == 1.0 and float(rows[3][0]) == 2.0
+    assert rows[4][0] == "N2" and float(rows[4][1]) == -1.0 and float(rows[5][0]) == -2.0
+    assert rows[6] == ["MAILLE", "P1"] and rows[7] == ["NOEUD", "N"]
+    assert rows[8][0] == "N1" and float(rows[8][1]) == 0.0 and float(rows[9][0]) == 0.5
+    assert len(rows) == 10  # no row for the padding of the point cell
