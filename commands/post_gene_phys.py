@@ -1,5 +1,10 @@
-"""POST_GENE_PHYS: physical values at chosen nodes of a generalized transient,
-into a table, without restituting the whole field.
+"""POST_GENE_PHYS: physical values at chosen nodes of a generalized transient
+or harmonic result, into a table, without restituting the whole field.
+
+A harm_gene gives complex DEPL / VITE / ACCE at the frequencies chosen by
+FREQ / LIST_FREQ / NUME_ORDRE (all by default), in a table with FREQ and
+VALE_C in place of INST and VALE_R (code_aster's pgpcrt); its element
+fields and absolute fields are refused by name.
 
 Each OBSERVATION recombines u(t) = Φ_rows q(t) on the DOFs of its nodes
 (GROUP_NO / NOEUD / GROUP_MA / MAILLE) and components (NOM_CMP; every
@@ -36,12 +41,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.harmonic import HarmGene
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import TranGene
 from asterlite.errors import missing_name
 from asterlite.fem.dofs import sort_components
 from asterlite.legacy.v15 import computes
 from asterlite.legacy.version import tables_name_nodes
+from asterlite.post.harmonic import selection_from_keywords as harmonic_selection
 from asterlite.post.restitution import (
     as_tuple,
     node_indices,
@@ -60,26 +67,88 @@ COLUMNS = {
     "POINT": "K8",
     "VALE_R": "R",
 }
+HARMONIC_COLUMNS = {
+    "NUME_OBSE": "I",
+    "FREQ": "R",
+    "NOM_CHAM": "K16",
+    "NOM_CMP": "K8",
+    "NOEUD": "K8",
+    "MAILLE": "K8",
+    "POINT": "K8",
+    "VALE_C": "C",
+}
 NODAL_FIELDS = ("DEPL", "VITE", "ACCE", "DEPL_ABSOLU", "VITE_ABSOLU", "ACCE_ABSOLU")
 TRANSLATIONS = ("DX", "DY", "DZ")
 
 
 def run(ctx, kw):
     result = kw["RESU_GENE"]
-    if not isinstance(result, TranGene):
+    harmonic = isinstance(result, HarmGene)
+    if not (harmonic or isinstance(result, TranGene)):
         ctx.unsupported(f"POST_GENE_PHYS of a {result.aster_type}", "RESU_GENE", kw)
     basis = kw.get("MODE_MECA") or result.basis
+    if getattr(basis, "shapes", None) is None or getattr(basis, "numbering", None) is None:
+        ctx.unsupported(
+            "POST_GENE_PHYS of a result on a basis without physical shapes (give MODE_MECA)",
+            "RESU_GENE",
+            kw,
+        )
     if basis.n_modes != result.n_modes:
         ctx.error(
             f"MODE_MECA has {basis.n_modes} modes, the result {result.n_modes}", "MODE_MECA", kw
         )
     table = Table(title=kw.get("TITRE") or "")
-    for name, type_code in COLUMNS.items():
+    for name, type_code in (HARMONIC_COLUMNS if harmonic else COLUMNS).items():
         table.add_column(name, type_code)
     for number, occ in enumerate(kw.factor("OBSERVATION"), start=1):
-        for row in observation_rows(ctx, occ, result, basis, number):
+        if harmonic:
+            rows = harmonic_rows(ctx, occ, result, basis, number)
+        else:
+            rows = observation_rows(ctx, occ, result, basis, number)
+        for row in rows:
             table.add_row(row)
     return table
+
+
+def harmonic_rows(ctx, occ, result, basis, number: int) -> list[dict]:
+    """Rows of a harm_gene: u(f) = Φ_rows q(f) (complex) at the frequencies
+    chosen (FREQ / LIST_FREQ / NUME_ORDRE / TOUT_ORDRE), components outer and
+    nodes inner as for a transient; the table has FREQ and VALE_C where a
+    transient's has INST and VALE_R (code_aster's pgpcrt)."""
+    field = occ.get("NOM_CHAM", "DEPL")
+    for key in ("INST", "LIST_INST", "TOUT_INST"):
+        if occ.get(key) is not None:
+            ctx.error(f"{key} applies to transient results (FREQ for a harm_gene)", key, occ)
+    if field not in ("DEPL", "VITE", "ACCE"):
+        ctx.unsupported(f"POST_GENE_PHYS {field} of a harm_gene", "NOM_CHAM", occ)
+    if field not in result.fields:
+        ctx.error(
+            f"the result holds no {field} (it has {', '.join(result.fields)})", "NOM_CHAM", occ
+        )
+    numbering = basis.numbering
+    mesh = numbering.mesh
+    nodes = node_indices(ctx, occ, mesh, allow_all=False)
+    comps = observed_components(ctx, occ, numbering, nodes)
+    pairs = [(c, n) for c in comps for n in nodes if (int(n), c) in numbering.index]
+    rows_of_dofs = np.array([numbering.index[(int(n), c)] for c, n in pairs], dtype=int)
+    selection = harmonic_selection(ctx, occ, result.frequencies, result.order)
+    generalized = np.asarray(result.fields[field])[selection.lower]
+    values = generalized @ np.asarray(basis.shapes)[rows_of_dofs, :].T
+    by_name = tables_name_nodes(ctx.session)
+    rows = []
+    for k, frequency in enumerate(selection.times):
+        for j, (comp, node) in enumerate(pairs):
+            rows.append(
+                {
+                    "NUME_OBSE": number,
+                    "FREQ": float(frequency),
+                    "NOM_CHAM": field,
+                    "NOM_CMP": comp,
+                    "NOEUD": node_label(mesh, node, by_name),
+                    "VALE_C": complex(values[k, j]),
+                }
+            )
+    return rows
 
 
 def observation_rows(ctx, occ, result, basis, number: int) -> list[dict]:

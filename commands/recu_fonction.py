@@ -65,7 +65,10 @@ def run(ctx, kw):
     if resu is None:
         # code_aster names a generalized ordinate after the field (DEPL)
         resu = kw.get("PARA_Y") or kw.get("NOM_CHAM") or kw.get("NOM_CMP") or "TOUTRESU"
-    return Function(
+    # a complex table column (POST_GENE_PHYS's VALE_C of a harm_gene) gives a fonction_c
+    complex_column = kw.get("TABLE") is not None and kw["TABLE"].types.get(kw["PARA_Y"]) == "C"
+    kind = ComplexFunction if complex_column else Function
+    return kind(
         x,
         y,
         NOM_PARA=kw.get("NOM_PARA") or para,
