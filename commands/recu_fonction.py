@@ -157,6 +157,22 @@ def constant_from_field(ctx, kw) -> Function:
     )
 
 
+def _every_order(kw) -> bool:
+    return all(
+        kw.peek(k) is None for k in ("LIST_INST", "INST", "LIST_PARA", "NUME_ORDRE", "LIST_ORDRE")
+    )
+
+
+def _stored_orders(field) -> np.ndarray:
+    """Rows of the orders at which an element / smoothed field has values
+    (the orders CALC_CHAMP left out are NaN throughout)."""
+    values = np.asarray(field.values)
+    flat = values.reshape(values.shape[0], -1)
+    if flat.shape[1] == 0:
+        return np.arange(values.shape[0])
+    return np.flatnonzero(~np.all(np.isnan(flat), axis=1))
+
+
 def instants(ctx, kw, times, order):
     """The instant selection of RECU_FONCTION (INTERP_NUME, not INTERPOL)."""
     kw.mark_used("TOUT_INST", "TOUT_ORDRE")  # every instant: the default selection
@@ -193,6 +209,12 @@ def from_physical(ctx, kw):
     computed = computed_fields(result)
     if field not in result.fields and field in computed:
         history = element_value_history(ctx, kw, result, field)
+        if _every_order(kw):
+            # code_aster (rsutn2) takes the orders where the field is stored:
+            # CALC_CHAMP may have computed it at some of them only
+            stored = _stored_orders(computed[field])
+            selection = instants(ctx, kw, result.times[stored], result.order[stored])
+            history = history[stored]
         return selection.times, selection.apply(history)
     if field not in result.fields:
         known = ", ".join([*result.fields, *computed])
