@@ -58,17 +58,19 @@ def test_impr_resu_text_of_a_dyna_harmo(tmp_path):
     text = (tmp_path / "fort.8").read_text()
     assert "RESULTAT HARM (dyna_harmo)" in text and "FREQ: 1.00000E+01" in text
     rows = _node_rows(text)
-    # N1: DX = 1+2i (no DY: zero); N2: DX = -3+0.5i, DY = 0.25i
-    assert rows[0][0] == "N1" and [float(v) for v in rows[0][1:]] == [1.0, 0.0]
-    assert [float(v) for v in rows[1]] == [2.0, 0.0]
-    assert rows[2][0] == "N2" and [float(v) for v in rows[2][1:]] == [-3.0, 0.0]
-    assert [float(v) for v in rows[3]] == [0.5, 0.25]
+    # N1 carries DX only (listed alone, as ircnc8 does): 1+2i; then a new
+    # header for N2's DX DY: -3+0.5i, 0.25i
+    assert rows[0][0] == "N1" and [float(v) for v in rows[0][1:]] == [1.0]
+    assert [float(v) for v in rows[1]] == [2.0]
+    assert rows[2] == ["NOEUD", "DX", "DY"]
+    assert rows[3][0] == "N2" and [float(v) for v in rows[3][1:]] == [-3.0, 0.0]
+    assert [float(v) for v in rows[4]] == [0.5, 0.25]
     run(session, "IMPR_RESU", FORMAT="RESULTAT", UNITE=9,
         RESU={"RESULTAT": result, "NOM_CHAM": "DEPL", "NUME_ORDRE": 2,
               "PARTIE": "MODULE"})  # fmt: skip
     rows = _node_rows((tmp_path / "fort.9").read_text())
-    assert len(rows) == 2  # one row per node
-    np.testing.assert_allclose([float(v) for v in rows[1][1:]], [abs(4.0 - 1.0j), 1.0], 1e-13)
+    assert len(rows) == 3  # one row per node, a header where the components change
+    np.testing.assert_allclose([float(v) for v in rows[2][1:]], [abs(4.0 - 1.0j), 1.0], 1e-13)
 
 
 def test_partie_values_as_code_aster_writes_them():
