@@ -40,7 +40,7 @@ def run(ctx, kw):
         counting.mark_used("METHODE")
     pencil = _pencil(ctx, kw, kw["MATR_RIGI"], kw["MATR_MASS"])
     try:
-        bands = band_counts(pencil, omega2_from_freq(freq), rule)
+        bands = band_counts(pencil, omega2_from_freq(freq), rule, ctx.log)
     except EigenError as exc:
         ctx.error(str(exc), "COMPTAGE", kw)
     table = Table()

@@ -69,3 +69,20 @@ def test_sparse_pencil_counts_match_its_eigenvalues():
     pairs = zip(bounds[:-1], bounds[1:], strict=True)
     expected = [np.count_nonzero((values > a) & (values < b)) for a, b in pairs]
     assert list(bands.counts) == expected and bands.counts.sum() == n
+
+
+def test_rigid_body_modes_near_a_small_threshold_are_counted_with_an_alarm():
+    """Stiff springs and SEUIL_FREQ=0.001: the bound moved to -ω_c² is still
+    within round-off of the rigid-body modes; code_aster counts there anyway."""
+    stiff = tuple(1e8 * k for k in K_VALUES)  # 1e4 times the frequencies
+    session, _, k, m = chain_matrices(3, stiff, 1.0)
+    table = run(
+        session,
+        "INFO_MODE",
+        MATR_RIGI=k,
+        MATR_MASS=m,
+        FREQ=(0.0, 1.5e4, 6.0e4),
+        COMPTAGE={"SEUIL_FREQ": 0.001},
+    )
+    assert table.column("NB_MODE") == [4, 5]  # 0 0 0 1e4 | 1.7e4 2e4 3e4 3.5e4 5.2e4
+    assert any("alarm" in line for line in session.lines)

@@ -40,33 +40,40 @@ class BandCounts:
     upper: np.ndarray
 
 
-def count_below(pencil: ReducedPencil, sigma: float) -> int | None:
-    """Eigenvalues below σ, or None when K - σ M is singular."""
+def count_below(pencil: ReducedPencil, sigma: float, forced: bool = False) -> int | None:
+    """Eigenvalues below σ, or None when K - σ M is singular (``forced``: the
+    count of a dense pencil all the same, as code_aster goes on with the
+    pivots of its last factorisation)."""
     if pencil.dense:
         values = pencil.all_modes()[0]
         if values.size == 0:
             return 0
         scale = max(float(np.abs(values).max()), abs(sigma), 1e-300)
-        if np.min(np.abs(values - sigma)) <= _SINGULAR * scale:
+        if not forced and np.min(np.abs(values - sigma)) <= _SINGULAR * scale:
             return None
         return int(np.count_nonzero(values < sigma))
     return pencil.count_below(sigma)
 
 
-def moved_count(pencil: ReducedPencil, sigma: float, rule: ShiftRule, direction: float):
-    """(count, shift) at σ, moved by ``direction`` (-1 down, +1 up) while singular."""
+def moved_count(pencil: ReducedPencil, sigma: float, rule: ShiftRule, direction: float, log=None):
+    """(count, shift) at σ, moved by ``direction`` (-1 down, +1 up) while singular;
+    after NMAX_ITER_SHIFT moves (or once moved to ∓ω_c²) the count is taken
+    there anyway, with an alarm, as code_aster does."""
     precision = rule.precision
     tries = 0
     while True:
-        count = count_below(pencil, sigma)
+        last = tries >= rule.max_tries
+        count = count_below(pencil, sigma, forced=last)
         if count is not None:
+            if last and tries and log is not None:
+                log(f"alarm: the shift {sigma:.6g} is still close to an eigenvalue: counted there")
             return count, sigma
-        tries += 1
-        if tries > rule.max_tries:
+        if last:
             raise EigenError(
                 f"the shift {sigma:.6g} stays on an eigenvalue after {rule.max_tries} moves "
                 "(raise NMAX_ITER_SHIFT or PREC_SHIFT)"
             )
+        tries += 1
         if abs(sigma) < rule.threshold:
             sigma = direction * rule.threshold
             tries = rule.max_tries  # code_aster tries this shift once more, then stops
@@ -75,14 +82,14 @@ def moved_count(pencil: ReducedPencil, sigma: float, rule: ShiftRule, direction:
             precision *= 2.0
 
 
-def band_counts(pencil: ReducedPencil, bounds, rule: ShiftRule) -> BandCounts:
+def band_counts(pencil: ReducedPencil, bounds, rule: ShiftRule, log=None) -> BandCounts:
     """Eigenvalues in each band [bounds[k], bounds[k+1]] (increasing bounds,
     in the pencil's eigenvalue unit)."""
     bounds = np.asarray(bounds, dtype=float)
-    below, shift = moved_count(pencil, float(bounds[0]), rule, -1.0)
+    below, shift = moved_count(pencil, float(bounds[0]), rule, -1.0, log)
     counts, lower, upper = [], [], []
     for top in bounds[1:]:
-        above, top_shift = moved_count(pencil, float(top), rule, +1.0)
+        above, top_shift = moved_count(pencil, float(top), rule, +1.0, log)
         counts.append(above - below)
         lower.append(shift)
         upper.append(top_shift)
