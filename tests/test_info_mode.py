@@ -86,3 +86,19 @@ def test_rigid_body_modes_near_a_small_threshold_are_counted_with_an_alarm():
     )
     assert table.column("NB_MODE") == [4, 5]  # 0 0 0 1e4 | 1.7e4 2e4 3e4 3.5e4 5.2e4
     assert any("alarm" in line for line in session.lines)
+
+
+def test_calc_modes_band_from_an_info_mode_table():
+    """CALC_MODES OPTION='BANDE' with TABLE_FREQ (vptabl): the bands of the
+    table within FREQ give the effective band and the number of modes."""
+    session, _, k, m = chain_matrices(3, K_VALUES, 1.0)
+    table = run(session, "INFO_MODE", MATR_RIGI=k, MATR_MASS=m, FREQ=(0.5, 1.5, 2.5, 6.0))
+    common = {"MATR_RIGI": k, "MATR_MASS": m, "OPTION": "BANDE"}
+    with_table = run(
+        session, "CALC_MODES", **common, CALC_FREQ={"FREQ": (0.5, 2.5), "TABLE_FREQ": table}
+    )
+    plain = run(session, "CALC_MODES", **common, CALC_FREQ={"FREQ": (0.5, 2.5)})
+    np.testing.assert_allclose(with_table.frequencies, [1.0, math.sqrt(3.0), 2.0], rtol=1e-10)
+    np.testing.assert_allclose(with_table.frequencies, plain.frequencies, rtol=1e-12)
+    with pytest.raises(CommandError, match="do not tile"):
+        run(session, "CALC_MODES", **common, CALC_FREQ={"FREQ": (0.5, 2.0), "TABLE_FREQ": table})
