@@ -114,11 +114,14 @@ _SOLVE_DIRECT = (
     "DEFI_BASE_MODALE",
     "DYNA_LINE_HARM",
     "DYNA_TRAN_MODAL",
+    "INFO_MODE",
     "MODE_ITER_INV",
     "MODE_ITER_SIMULT",
 )
 _DIRECT_ONLY = (*_SOLVE_DIRECT, "MACRO_ELAS_MULT")
-_MODAL = ("MODE_ITER_INV", "MODE_ITER_SIMULT")
+_MODAL = ("INFO_MODE", "MODE_ITER_INV", "MODE_ITER_SIMULT")
+# commands that only factorise (INFO_MODE's Sturm counts): no solve to post-process
+_FACTOR_ONLY = ("INFO_MODE",)
 _LINEAR = ("MECA_STATIQUE", "MODE_STATIQUE", "MACRO_ELAS_MULT")
 
 
@@ -150,6 +153,9 @@ def C_SOLVEUR(command: str, statut: str = "d") -> FACT:  # noqa: N802 - code_ast
         return (
             {} if modal else {"STOP_SINGULIER": SIMP(typ="TXM", defaut=stop_default, into=OUI_NON)}
         )
+
+    def solve_only(**keywords):
+        return {} if command in _FACTOR_ONLY else keywords
 
     def elim_lagr(into=OUI_NON, defaut="NON"):
         return {} if modal else {"ELIM_LAGR": SIMP(typ="TXM", defaut=defaut, into=into)}
@@ -259,7 +265,11 @@ def C_SOLVEUR(command: str, statut: str = "d") -> FACT:  # noqa: N802 - code_ast
             ),
             LOW_RANK_SEUIL=SIMP(typ="R", defaut=0.0),
             PRETRAITEMENTS=SIMP(typ="TXM", defaut="AUTO", into=("SANS", "AUTO")),
-            POSTTRAITEMENTS=SIMP(typ="TXM", defaut="AUTO", into=("SANS", "AUTO", "FORCE", "MINI")),
+            **solve_only(
+                POSTTRAITEMENTS=SIMP(
+                    typ="TXM", defaut="AUTO", into=("SANS", "AUTO", "FORCE", "MINI")
+                )
+            ),
             PCENT_PIVOT=SIMP(typ="I", defaut=35, val_min=1),
             # right-hand sides MUMPS solves at once (a block size: speed only)
             NB_RHS=(
@@ -267,7 +277,7 @@ def C_SOLVEUR(command: str, statut: str = "d") -> FACT:  # noqa: N802 - code_ast
                 if command == "MODE_STATIQUE"
                 else SIMP(typ="I", defaut=1, val_min=1, val_max=32)
             ),
-            RESI_RELA=SIMP(typ="R", defaut=1.0e-6 if command in _LINEAR else -1.0),
+            **solve_only(RESI_RELA=SIMP(typ="R", defaut=1.0e-6 if command in _LINEAR else -1.0)),
             GESTION_MEMOIRE=SIMP(
                 typ="TXM", defaut="AUTO", into=("IN_CORE", "OUT_OF_CORE", "AUTO", "EVAL")
             ),

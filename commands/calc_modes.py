@@ -60,6 +60,9 @@ def run(ctx, kw):
         nmax = None
     if option in ("CENTRE", "BANDE", "PROCHE", "AJUSTE", "SEPARE") and not freq:
         ctx.error(f"OPTION={option!r} needs CALC_FREQ/FREQ", "CALC_FREQ", kw)
+    counted = None
+    if option == "BANDE" and calc_freq.get("TABLE_FREQ") is not None:
+        freq, counted = band_from_table(ctx, calc_freq, freq)
     try:
         pencil = constrained_pencil(stiffness, mass)
         omega2, vecs = select_modes(pencil, option, freq, nmax or 10, _method(kw))
@@ -79,6 +82,10 @@ def run(ctx, kw):
         ctx.log(
             f"{pencil.n} unknowns solved with SuperLU and ARPACK: "
             f"{install_hint('large')} (MUMPS) is faster and leaner on large models"
+        )
+    if counted is not None and omega2.size != counted:
+        ctx.error(
+            f"{omega2.size} modes in the band, TABLE_FREQ counts {counted}", "TABLE_FREQ", calc_freq
         )
     if option == "BANDE" and calc_freq.get("NMAX_FREQ"):
         omega2, vecs = omega2[: calc_freq["NMAX_FREQ"]], vecs[:, : calc_freq["NMAX_FREQ"]]
@@ -104,6 +111,44 @@ def run(ctx, kw):
     for k, (number, f) in enumerate(zip(modes.mode_numbers, modes.frequencies, strict=True)):
         ctx.log(f"mode {number:4d}  {f:14.6e} Hz  gen. mass {modes.generalized_mass[k]:12.5e}")
     return modes
+
+
+def band_from_table(ctx, calc_freq, freq):
+    """OPTION='BANDE' with TABLE_FREQ, an INFO_MODE table (vptabl): its rows
+    within FREQ must tile it; the band becomes their effective bounds
+    (BORNE_MIN_EFFECT of the first, BORNE_MAX_EFFECT of the last) and the
+    number of modes the sum of their NB_MODE. Returns (band, count)."""
+    table = calc_freq["TABLE_FREQ"]
+    needed = {"FREQ_MIN": "R", "FREQ_MAX": "R", "NB_MODE": "I"}
+    needed |= {"BORNE_MIN_EFFECT": "R", "BORNE_MAX_EFFECT": "R"}
+    if any(table.types.get(name) != code for name, code in needed.items()):
+        ctx.error("TABLE_FREQ is not an INFO_MODE table", "TABLE_FREQ", calc_freq)
+    low, high = float(min(freq)), float(max(freq))
+    eps = 100.0 * np.finfo(float).eps
+    tolerance = float(calc_freq.get("PREC_SHIFT", 5e-2) or 5e-2)
+    rows = [
+        r
+        for r in table.rows
+        if r["FREQ_MIN"] >= low - eps - tolerance * abs(low)
+        and r["FREQ_MAX"] <= high + eps + tolerance * abs(high)
+    ]
+    if not rows:
+        ctx.error(f"TABLE_FREQ has no band within [{low:g}, {high:g}]", "TABLE_FREQ", calc_freq)
+
+    def close(a, b):
+        return abs(a - b) / (abs(b) if abs(b) > eps else 1.0) <= tolerance
+
+    pairs = list(zip(rows[:-1], rows[1:], strict=True))
+    joined = all(close(a["FREQ_MAX"], b["FREQ_MIN"]) for a, b in pairs)
+    joined &= all(close(a["BORNE_MAX_EFFECT"], b["BORNE_MIN_EFFECT"]) for a, b in pairs)
+    if not (close(rows[0]["FREQ_MIN"], low) and close(rows[-1]["FREQ_MAX"], high) and joined):
+        ctx.error(
+            f"the bands of TABLE_FREQ do not tile [{low:g}, {high:g}]", "TABLE_FREQ", calc_freq
+        )
+    band = (float(rows[0]["BORNE_MIN_EFFECT"]), float(rows[-1]["BORNE_MAX_EFFECT"]))
+    if abs(band[0] - low) + abs(band[1] - high) > eps:
+        ctx.log(f"alarm: TABLE_FREQ's effective bounds [{band[0]:g}, {band[1]:g}] Hz are used")
+    return band, int(sum(int(r["NB_MODE"]) for r in rows))
 
 
 def _mode_numbers(pencil, option: str, freq, omega2) -> np.ndarray | None:

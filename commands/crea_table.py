@@ -58,6 +58,18 @@ def run(ctx, kw):
         occ = kw.factor("FONCTION")[0]
         func = occ["FONCTION"]
         para = as_tuple(occ.get("PARA")) or (func.NOM_PARA, func.NOM_RESU)
+        if para[0] == para[1]:
+            ctx.error(f"the two parameters are both {para[0]!r}", "PARA", occ)
+        if func.is_complex:
+            # a fonction_c gives three real columns: the abscissa, then the
+            # value's real and imaginary parts as <name>_R, <name>_I (op0036)
+            names = (para[0], f"{para[1]}_R", f"{para[1]}_I")
+            for name in names:
+                table.add_column(name, "R")
+            for x, y in zip(func.abscissas, func.ordinates, strict=True):
+                y = complex(y)
+                table.add_row(dict(zip(names, (float(x), y.real, y.imag), strict=True)))
+            return table
         table.add_column(para[0], "R")
         table.add_column(para[1], "R")
         for x, y in zip(func.abscissas, func.ordinates, strict=True):

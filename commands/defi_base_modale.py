@@ -2,7 +2,8 @@
 
 RITZ concatenates dynamic modes (MODE_MECA, capped by NMAX_MODE, or a previous
 BASE_MODALE) and interface / static vectors (MODE_INTF: mode_meca or
-mult_elas) on the reference numbering (NUME_REF, else the first basis's).
+mult_elas) on the reference numbering (NUME_REF, else the first basis's);
+with INTERF_DYNA the basis remembers those interfaces (for MACR_ELEM_DYNA).
 ORTHO='OUI' orthonormalises the family with respect to MATRICE and drops the
 dependent vectors; ORTHO_BASE does the same on an existing basis but keeps
 dependent vectors as zero columns. Per-mode parameters (FREQ, MASS_GENE,
@@ -174,7 +175,23 @@ def run(ctx, kw):
     n_static = int(np.sum(merged["TYPE_MODE"] == "MODE_STA"))
     kind = "static" if n_static == shapes.shape[1] else "dynamic"
     ctx.log(f"Ritz basis: {shapes.shape[1]} vectors ({n_static} static)")
-    return _result(shapes, numbering, merged, mass, stiffness, merged["NOEUD_CMP"], kind)
+    basis = _result(shapes, numbering, merged, mass, stiffness, merged["NOEUD_CMP"], kind)
+    return _with_interfaces(ctx, kw, basis)
+
+
+def _with_interfaces(ctx, kw, basis):
+    """RITZ with INTERF_DYNA: the basis remembers the interfaces (code_aster
+    records them with it, ritz99), so that MACR_ELEM_DYNA can join it to
+    other substructures; they must be on the basis's numbering."""
+    interfaces = kw.get("INTERF_DYNA")
+    if interfaces is None:
+        return basis
+    if interfaces.numbering.dofs != basis.numbering.dofs:
+        ctx.error(
+            "INTERF_DYNA is not on the numbering of the basis (give NUME_REF)", "INTERF_DYNA", kw
+        )
+    fields = {f: getattr(basis, f) for f in basis.__dataclass_fields__}
+    return ReductionBasis(**fields, interfaces=interfaces)
 
 
 def _ortho_base(ctx, kw):

@@ -20,6 +20,9 @@ sparse factorisation per frequency).
   A CHARGE's imposed values (AFFE_CHAR_CINE[_F], DDL_IMPO), constant or
   functions of FREQ evaluated at each frequency, are scaled likewise and
   lifted into the right-hand side.
+- RESULTAT with reuse=: the new frequencies stored after the result's own,
+  NUME_ORDRE going on from its last one (comdlh, resu60); without reuse= it is
+  not read.
 - EXCIT_RESU: COEF_MULT_C times the DEPL field of a previous harmonic result
   at the same frequency (relative precision 1e-6, dyexre).
 """
@@ -41,11 +44,88 @@ from asterlite.harmonic.modal import SingularSystem
 
 
 def run_harmonic(ctx, kw):
+    previous = continued_result(ctx, kw)
     frequencies = frequency_list(ctx, kw)
     names = field_names(kw)
     if kw.get("BASE_CALCUL") == "GENE":
-        return generalized(ctx, kw, frequencies, names)
-    return physical(ctx, kw, frequencies, names)
+        result = generalized(ctx, kw, frequencies, names)
+    else:
+        result = physical(ctx, kw, frequencies, names)
+    if previous is None:
+        return result
+    return append_frequencies(ctx, kw, previous, result)
+
+
+# ----------------------------------------------------------------------------- continuation
+
+
+def continued_result(ctx, kw):
+    """The result a reuse= call continues (RESULTAT, which must be it), or None.
+
+    code_aster (comdlh) reads RESULTAT only for a reentrant call: its
+    frequencies are then added after those already stored; without reuse=
+    the call makes a new result and RESULTAT is not read."""
+    given = kw.get("RESULTAT")
+    if ctx.reuse is None:
+        if given is not None:
+            kw.mark_used("RESULTAT")  # code_aster does not read it without reuse=
+            ctx.log("RESULTAT without reuse=: a new result (RESULTAT is read only to continue it)")
+        return None
+    if given is None:
+        ctx.error("reuse= continues a harmonic result: give it as RESULTAT", "RESULTAT", kw)
+    if given is not ctx.reuse:
+        ctx.error("RESULTAT must be the result given as reuse=", "RESULTAT", kw)
+    wanted = HarmGene if kw.get("BASE_CALCUL") == "GENE" else DynaHarmo
+    if not isinstance(given, wanted):
+        ctx.error(
+            f"RESULTAT is a {given.aster_type}; BASE_CALCUL={kw.get('BASE_CALCUL')!r} "
+            f"continues a {wanted.aster_types[0]}",
+            "RESULTAT",
+            kw,
+        )
+    return given
+
+
+def append_frequencies(ctx, kw, previous, new):
+    """``previous`` with the frequencies of ``new`` stored after its own
+    (NUME_ORDRE continuing from its last one), as comdlh / resu60 do."""
+    if new.numbering is not previous.numbering:
+        ctx.error("the matrices are not on the numbering of RESULTAT", "RESULTAT", kw)
+    if set(new.fields) != set(previous.fields):
+        # resu60 stops the same way (ALGORITH17_25) on a generalized basis
+        ctx.error(
+            f"RESULTAT holds {', '.join(previous.fields)}; this call computes "
+            f"{', '.join(new.fields)}: give the same NOM_CHAM",
+            "NOM_CHAM",
+            kw,
+        )
+    if isinstance(previous, DynaHarmo) and previous.element_fields:
+        ctx.unsupported(
+            "continuing a dyna_harmo that holds CALC_CHAMP fields "
+            f"({', '.join(previous.element_fields)})",
+            "RESULTAT",
+            kw,
+        )
+    last = int(previous.order[-1]) if np.size(previous.order) else 0
+    orders = last + 1 + (np.asarray(new.order) - int(new.order[0]))
+    previous.fields = {
+        name: np.concatenate([previous.fields[name], new.fields[name]]) for name in previous.fields
+    }
+    previous.frequencies = np.concatenate([previous.frequencies, new.frequencies])
+    previous.order = np.concatenate([np.asarray(previous.order), orders])
+    if isinstance(previous, DynaHarmo):
+        previous.reactions = _joined_reactions(previous.reactions, new.reactions)
+    ctx.log(
+        f"RESULTAT continued: {np.size(new.frequencies)} frequencies added after "
+        f"NUME_ORDRE {last} ({np.size(previous.frequencies)} stored)"
+    )
+    return previous
+
+
+def _joined_reactions(old, new):
+    if old is None or new is None or not np.array_equal(old[0], new[0]):
+        return None  # unknown for part of the frequencies: none known
+    return (old[0], np.concatenate([old[1], new[1]]))
 
 
 # ----------------------------------------------------------------------------- common readers

@@ -539,7 +539,8 @@ def text_occurrence(ctx, occ) -> list[str]:
         nodes, comps, values = nodal_field_block(ctx, occ, field)
         lines.append(f" CHAMP AUX NOEUDS {field.name or ''}")
         mesh = field.numbering.mesh
-        return lines + node_lines(occ, mesh, nodes, comps, values[0], real_format)
+        carried = carried_components(field.numbering, nodes, comps)
+        return lines + node_lines(occ, mesh, nodes, comps, values[0], real_format, carried)
     mesh = occ["MAILLAGE"]
     return lines + aster_mesh_lines(mesh)
 
@@ -593,8 +594,19 @@ def result_text(ctx, occ, result, real_format: str) -> list[str]:
             if element:
                 lines.extend(element_lines(mesh, nodes, location, comps, values[k], real_format))
             else:
-                lines.extend(node_lines(occ, mesh, nodes, comps, values[k], real_format))
+                carried = carried_components(result.numbering, nodes, comps, field, result)
+                lines.extend(node_lines(occ, mesh, nodes, comps, values[k], real_format, carried))
     return lines
+
+
+def carried_components(numbering, nodes, comps, field=None, result=None) -> np.ndarray | None:
+    """(n_nodes, n_comp) mask of the components each node carries in the
+    numbering of a DOF field (code_aster lists only those, ircnrl); None for
+    a field not on the numbering's DOFs (a smoothed ``*_NOEU`` field)."""
+    if field is not None and field not in getattr(result, "fields", {}):
+        return None
+    present = set(numbering.dofs)
+    return np.array([[(int(n), c) in present for c in comps] for n in nodes], dtype=bool)
 
 
 ELEMENT_TITLES = {
@@ -606,7 +618,9 @@ ELEMENT_TITLES = {
 def element_lines(mesh: Mesh, cells, location: str, comps, values, real_format: str) -> list:
     """One block per cell (``MAILLE name``), then one line per element node
     (ELNO: the node's name) or Gauss point (ELGA: its number) with the
-    component values; ``values`` is (n_cells, n_points, n_comp)."""
+    component values; ``values`` is (n_cells, n_points, n_comp), padded with
+    NaN past a cell's own points (a point cell among segments, fewer Gauss
+    points): only the cell's own points are listed, as code_aster does."""
     width = len(fortran_real(0.0, real_format))
     first = "NOEUD" if location == "ELNO" else "POINT"
     header = f"  {first:<8}" + "".join(f" {c:>{width}}" for c in comps)
@@ -615,12 +629,22 @@ def element_lines(mesh: Mesh, cells, location: str, comps, values, real_format: 
         lines.append(f" MAILLE {mesh.cell_names[int(cell)]}")
         lines.append(header)
         connectivity = mesh.cell_nodes[int(cell)]
-        for point in range(values.shape[1]):
+        for point in range(_own_points(values[k], location, len(connectivity))):
             name = mesh.node_names[int(connectivity[point])] if location == "ELNO" else point + 1
             for label, row in _value_rows(str(name), values[k, point]):
                 numbers = "".join(f" {fortran_real(float(v) + 0.0, real_format)}" for v in row)
                 lines.append(f"  {label!s:<8}" + numbers)
     return lines
+
+
+def _own_points(values, location: str, n_nodes: int) -> int:
+    """How many of the (n_points, n_comp) rows of one cell are its own: its
+    nodes for ELNO; for ELGA the rows up to the last one holding a value
+    (the padding of cells with fewer Gauss points is NaN throughout)."""
+    if location == "ELNO":
+        return min(values.shape[0], n_nodes)
+    held = np.flatnonzero(~np.all(np.isnan(np.asarray(values)), axis=1))
+    return int(held[-1]) + 1 if held.size else 0
 
 
 def _value_rows(label: str, values) -> list:
@@ -683,26 +707,41 @@ def parameter_table(result, steps, indices, params) -> list[str]:
     return table_lines(table)
 
 
-def node_lines(occ, mesh: Mesh, nodes, comps, values, real_format: str) -> list[str]:
+def node_lines(occ, mesh: Mesh, nodes, comps, values, real_format: str, carried=None) -> list:
     """One line per node: name, coordinates (IMPR_COOR), component values;
-    then the extrema of each component (VALE_MAX / VALE_MIN)."""
+    then the extrema of each component (VALE_MAX / VALE_MIN). With
+    ``carried`` (n_nodes, n_comp) a node lists only the components it
+    carries, under a header repeated whenever that set changes (ircnrl)."""
     width = len(fortran_real(0.0, real_format))
     coords = occ.get("IMPR_COOR") == "OUI"
     axes = ("COOR_X", "COOR_Y", "COOR_Z")[: max(1, min(mesh.dim, 3))]
-    header = " NOEUD   " + "".join(f" {c:>{width}}" for c in (*(axes if coords else ()), *comps))
-    lines = [header]
+    if carried is None:
+        carried = np.ones((len(nodes), len(comps)), dtype=bool)
+    lines: list[str] = []
+    shown = None
     for k, node in enumerate(nodes):
+        own = tuple(np.flatnonzero(carried[k]))
+        if not own:
+            continue
+        if own != shown:
+            names = (*(axes if coords else ()), *(comps[j] for j in own))
+            lines.append(" NOEUD   " + "".join(f" {c:>{width}}" for c in names))
+            shown = own
         place = [fortran_real(float(x), real_format) for x in mesh.coords[node, : len(axes)]]
-        for label, row in _value_rows(mesh.node_names[node], values[k]):
-            cells = (place if coords else []) + [
-                fortran_real(float(v) + 0.0, real_format) for v in row
-            ]
+        for label, row in _value_rows(mesh.node_names[node], np.asarray(values[k])[list(own)]):
+            cells = place if coords else []
+            cells = cells + [fortran_real(float(v) + 0.0, real_format) for v in row]
             lines.append(f" {label:<8}" + "".join(f" {c}" for c in cells))
+    if not lines:
+        lines.append(" NOEUD   " + "".join(f" {c:>{width}}" for c in comps))
     for key, pick in (("VALE_MAX", np.argmax), ("VALE_MIN", np.argmin)):
         if occ.get(key) == "OUI" and len(nodes):
             lines.append("")
             for j, comp in enumerate(comps):
-                k = int(pick(values[:, j]))
+                held = np.flatnonzero(carried[:, j])
+                if held.size == 0:
+                    continue
+                k = int(held[pick(values[held, j])])
                 lines.append(
                     f" {key} {comp:<8} {fortran_real(float(values[k, j]), real_format)} "
                     f"NOEUD {mesh.node_names[nodes[k]]}"

@@ -2,8 +2,9 @@
 
 Each AFFE occurrence gives a frame and where it applies (its cells, or nodes);
 each MODI_CHAM a field and how its components transform: TENS_3D (six
-components xx yy zz xy xz yz: ``S' = R S R^T``) or VECT_3D (DX DY DZ:
-``v' = R v``), ``R`` the rows of the new axes in the global frame.
+components xx yy zz xy xz yz: ``S' = R S R^T``) or VECT_3D (DX DY DZ, and
+DRX DRY DRZ when the field has rotations: ``v' = R v``), ``R`` the rows of
+the new axes in the global frame.
 
 - REPERE='UTILISATEUR': one frame, from ANGL_NAUT (degrees) or VECT_X/VECT_Y;
 - REPERE='CYLINDRIQUE': at each point (the cell's node for *_ELNO, the node
@@ -19,7 +20,8 @@ components xx yy zz xy xz yz: ``S' = R S R^T``) or VECT_3D (DX DY DZ:
   from it. Every cell of the field is turned, as code_aster's calcul does.
 
 Values outside the AFFE selections keep their global components. The new
-result holds every order of the input (TOUT_ORDRE); the other frames
+result holds every order of the input (TOUT_ORDRE), or of a dyna_harmo /
+dyna_trans those NUME_ORDRE, INST or FREQ choose (rsutnu); the other frames
 (COQUE_UTIL_CYL, GLOBAL_UTIL), 2D fields, beam generalised forces, NOM_CMP
 with a shell frame and CHAM_GD are refused by name.
 """
@@ -30,6 +32,9 @@ import copy
 
 import numpy as np
 
+from asterlite.concepts.harmonic import DynaHarmo
+from asterlite.concepts.transient import DynaTrans
+from asterlite.errors import CommandError
 from asterlite.fem.frames import angles_from_x_and_y, rotation_from_angles
 from asterlite.fem.plate_elements import PLATE_MODELISATIONS
 from asterlite.fem.selection import as_tuple, select_cells, select_nodes
@@ -40,10 +45,12 @@ from asterlite.fem.shell_frames import (
     change_shell_frame,
     frame_axes,
 )
+from asterlite.io.result_store import result_steps, select_steps
 
 _TENSOR = ("XX", "YY", "ZZ", "XY", "XZ", "YZ")
 _PAIRS = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
 _VECTOR = ("DX", "DY", "DZ")
+_ROTATIONS = ("DRX", "DRY", "DRZ")
 
 
 def cylindrical_axes(points: np.ndarray, origin, axis) -> np.ndarray:
@@ -158,8 +165,11 @@ def _node_field(ctx, field, occ, frames, mesh) -> None:
 
 
 def _dof_vectors(ctx, values, numbering, occ, frames, mesh) -> np.ndarray:
-    """Nodal vectors (n_orders, n_dofs): DX DY DZ of each selected node."""
+    """Nodal vectors (n_orders, n_dofs): DX DY DZ of each selected node and,
+    when the field has rotations, DRX DRY DRZ too (code_aster's selectCompN
+    and chrpno turn both triplets of a DEPL-like field)."""
     values = np.array(values, copy=True)
+    has_rotations = any(component in _ROTATIONS for _, component in numbering.dofs)
     for _, chosen, axes_at in frames:
         index = numbering.dof_indices(np.repeat(chosen, 3), list(_VECTOR) * len(chosen))
         index = index.reshape(-1, 3)
@@ -170,7 +180,28 @@ def _dof_vectors(ctx, values, numbering, occ, frames, mesh) -> np.ndarray:
         axes = axes_at(mesh.coords[chosen])  # (n, 3, 3)
         vectors = values[:, index]  # (o, n, 3)
         values[:, index] = np.einsum("nij,onj->oni", axes, vectors)
+        if has_rotations:
+            _turn_rotations(values, numbering, chosen, axes)
     return values
+
+
+def _turn_rotations(values, numbering, chosen, axes) -> None:
+    """DRX DRY DRZ of the chosen nodes in the new axes; a rotation a node does
+    not carry counts as zero and stays absent."""
+    index = numbering.dof_indices(np.repeat(chosen, 3), list(_ROTATIONS) * len(chosen))
+    index = index.reshape(-1, 3)
+    carried = index >= 0
+    rows = np.flatnonzero(carried.any(axis=1))
+    if rows.size == 0:
+        return
+    vectors = np.zeros((values.shape[0], rows.size, 3), dtype=values.dtype)
+    for k, row in enumerate(rows):
+        present = carried[row]
+        vectors[:, k, present] = values[:, index[row, present]]
+    turned = np.einsum("nij,onj->oni", axes[rows], vectors)
+    for k, row in enumerate(rows):
+        present = carried[row]
+        values[:, index[row, present]] = turned[:, k, present]
 
 
 # REPERE='COQUE*': the fields code_aster turns for each TYPE_CHAM (chrpel)
@@ -272,18 +303,65 @@ def _shell_frames(ctx, kw, result):
     return kw.get("CARA_ELEM") or getattr(result, "characteristics", None)
 
 
+def _chosen_orders(ctx, kw, result, source):
+    """The result on the orders NUME_ORDRE / INST / FREQ choose (code_aster's
+    rsutnu: the new result holds those orders only), else on all of them."""
+    access = {k.lower(): as_tuple(kw[k]) for k in ("NUME_ORDRE", "INST", "FREQ") if k in kw}
+    if not access:
+        kw.mark_used("CRITERE", "PRECISION")  # they qualify an INST / FREQ choice only
+        return result
+    key = next(k for k in ("NUME_ORDRE", "INST", "FREQ") if k in kw)
+    if result is source:
+        ctx.unsupported(f"MODI_REPERE {key} with reuse=", key, kw)
+    if not isinstance(result, DynaHarmo | DynaTrans):
+        ctx.unsupported(f"MODI_REPERE {key} of a {result.aster_type}", key, kw)
+    try:
+        rows = select_steps(
+            result_steps(result),
+            precision=float(kw.get("PRECISION", 1e-6) or 1e-6),
+            criterion=kw.get("CRITERE", "RELATIF"),
+            **access,
+        )
+    except CommandError as exc:
+        ctx.error(exc.message, key, kw)
+    rows = np.asarray(rows, dtype=int)
+    result.order = np.asarray(result.order)[rows]
+    if isinstance(result, DynaHarmo):
+        result.frequencies = np.asarray(result.frequencies)[rows]
+        if result.reactions is not None:
+            result.reactions = (result.reactions[0], np.asarray(result.reactions[1])[rows])
+    else:
+        result.times = np.asarray(result.times)[rows]
+    result.fields = {name: np.asarray(v)[rows] for name, v in result.fields.items()}
+    for attribute in ("element_fields", "node_fields"):
+        held = getattr(result, attribute, None)
+        if isinstance(held, dict):
+            setattr(result, attribute, {n: _on_rows(f, rows) for n, f in held.items()})
+    source_modes = getattr(result, "modal_source", None)
+    if source_modes is not None:
+        basis, coordinates = source_modes
+        result.modal_source = (basis, {n: np.asarray(q)[rows] for n, q in coordinates.items()})
+    return result
+
+
+def _on_rows(field, rows):
+    field = copy.copy(field)
+    field.values = np.asarray(field.values)[rows]
+    return field
+
+
 def run(ctx, kw):
     if kw.get("CHAM_GD") is not None:
         ctx.unsupported("MODI_REPERE CHAM_GD (fields outside a result)", "CHAM_GD", kw)
     source = kw["RESULTAT"]
-    # every order: the default, and the only value of TOUT_ORDRE; CRITERE and
-    # PRECISION only qualify an INST / FREQ choice (refused, unread, if given)
-    kw.mark_used("TOUT_ORDRE", "CRITERE", "PRECISION")
+    # every order: the default, and the only value of TOUT_ORDRE
+    kw.mark_used("TOUT_ORDRE")
     result = source if ctx.reuse is source else copy.copy(source)
     if result is not source:
         for attribute in ("fields", "element_fields", "node_fields"):
             if isinstance(getattr(source, attribute, None), dict):
                 setattr(result, attribute, dict(getattr(source, attribute)))
+    result = _chosen_orders(ctx, kw, result, source)
     numbering = result.numbering
     mesh = numbering.mesh
     if kw["REPERE"] in _SHELL_REPERES:

@@ -58,17 +58,19 @@ def test_impr_resu_text_of_a_dyna_harmo(tmp_path):
     text = (tmp_path / "fort.8").read_text()
     assert "RESULTAT HARM (dyna_harmo)" in text and "FREQ: 1.00000E+01" in text
     rows = _node_rows(text)
-    # N1: DX = 1+2i (no DY: zero); N2: DX = -3+0.5i, DY = 0.25i
-    assert rows[0][0] == "N1" and [float(v) for v in rows[0][1:]] == [1.0, 0.0]
-    assert [float(v) for v in rows[1]] == [2.0, 0.0]
-    assert rows[2][0] == "N2" and [float(v) for v in rows[2][1:]] == [-3.0, 0.0]
-    assert [float(v) for v in rows[3]] == [0.5, 0.25]
+    # N1 carries DX only (listed alone, as ircnc8 does): 1+2i; then a new
+    # header for N2's DX DY: -3+0.5i, 0.25i
+    assert rows[0][0] == "N1" and [float(v) for v in rows[0][1:]] == [1.0]
+    assert [float(v) for v in rows[1]] == [2.0]
+    assert rows[2] == ["NOEUD", "DX", "DY"]
+    assert rows[3][0] == "N2" and [float(v) for v in rows[3][1:]] == [-3.0, 0.0]
+    assert [float(v) for v in rows[4]] == [0.5, 0.25]
     run(session, "IMPR_RESU", FORMAT="RESULTAT", UNITE=9,
         RESU={"RESULTAT": result, "NOM_CHAM": "DEPL", "NUME_ORDRE": 2,
               "PARTIE": "MODULE"})  # fmt: skip
     rows = _node_rows((tmp_path / "fort.9").read_text())
-    assert len(rows) == 2  # one row per node
-    np.testing.assert_allclose([float(v) for v in rows[1][1:]], [abs(4.0 - 1.0j), 1.0], 1e-13)
+    assert len(rows) == 3  # one row per node, a header where the components change
+    np.testing.assert_allclose([float(v) for v in rows[2][1:]], [abs(4.0 - 1.0j), 1.0], 1e-13)
 
 
 def test_partie_values_as_code_aster_writes_them():
@@ -151,3 +153,28 @@ def test_impr_resu_med_of_a_dyna_harmo_writes_the_part_asked(tmp_path):
     with pytest.raises(CommandError, match="one PARTIE at a time"):
         run(session, "IMPR_RESU", FORMAT="MED", UNITE=22,
             RESU={"RESULTAT": result, "NOM_CHAM": "DEPL"})  # fmt: skip
+
+
+def test_impr_resu_text_of_a_complex_elno_field_on_segments_and_points(tmp_path):
+    """EFGE_ELNO of a dyna_harmo on two-node springs and point cells (values
+    padded with NaN past a point cell's node): each cell lists its own nodes,
+    a complex value as its real parts then its imaginary parts (ircecl)."""
+    from asterlite.concepts.assembly import ElementField
+
+    result = _harmonic()
+    values = np.full((2, 2, 2, 1), np.nan, dtype=complex)
+    values[:, 0, :, 0] = [[1.0 + 2.0j, -1.0 - 2.0j], [3.0, -3.0]]  # spring S1
+    values[:, 1, 0, 0] = [0.5j, 4.0 + 0.0j]  # point cell P1
+    result.element_fields["EFGE_ELNO"] = ElementField("EFGE_ELNO", np.array([0, 1]), ("N",), values)
+    session = _Session(tmp_path)
+    run(session, "IMPR_RESU", FORMAT="RESULTAT", UNITE=8,
+        RESU={"RESULTAT": result, "NOM_CHAM": "EFGE_ELNO", "NUME_ORDRE": 1})  # fmt: skip
+    lines = (tmp_path / "fort.8").read_text().splitlines()
+    start = lines.index(" MAILLE S1")
+    rows = [line.split() for line in lines[start:] if line.strip()]
+    assert rows[1] == ["NOEUD", "N"]
+    assert rows[2][0] == "N1" and float(rows[2][1]) == 1.0 and float(rows[3][0]) == 2.0
+    assert rows[4][0] == "N2" and float(rows[4][1]) == -1.0 and float(rows[5][0]) == -2.0
+    assert rows[6] == ["MAILLE", "P1"] and rows[7] == ["NOEUD", "N"]
+    assert rows[8][0] == "N1" and float(rows[8][1]) == 0.0 and float(rows[9][0]) == 0.5
+    assert len(rows) == 10  # no row for the padding of the point cell

@@ -129,3 +129,39 @@ def test_other_frames_are_refused(repere):
             if repere == "COQUE"
             else {"TOUT": "OUI", "ORIGINE": (0.0, 0.0, 0.0), "AXE_Z": (0.0, 0.0, 1.0)},
         )
+
+
+def test_rotations_turned_with_translations_on_the_chosen_orders():
+    """VECT_3D of a field with rotations turns DRX DRY DRZ as DX DY DZ
+    (selectCompN/chrpno); NUME_ORDRE keeps only that order (rsutnu). With
+    x' = (1, 1, 1)/√3 and y' = (-1, 1, 0)/√2, z' = (-1, -1, 2)/√6."""
+    session = FakeSession()
+    model, _, _ = beam_model(session, line_mesh(2, 1.0))
+    numbering = run(session, "NUME_DDL", MODELE=model)
+    acce = np.zeros((2, numbering.n_dofs))
+    for order, scale in enumerate((1.0, 10.0)):
+        acce[order, numbering.dof_indices([1], "DZ")[0]] = 2.0 * scale
+        acce[order, numbering.dof_indices([1], "DRZ")[0]] = scale
+    result = DynaTrans(numbering, np.array([0.0, 0.1]), np.array([1, 2]), {"ACCE": acce})
+    out = run(
+        session,
+        "MODI_REPERE",
+        RESULTAT=result,
+        NUME_ORDRE=2,
+        REPERE="UTILISATEUR",
+        MODI_CHAM={"TYPE_CHAM": "VECT_3D", "NOM_CHAM": "ACCE"},
+        AFFE={"TOUT": "OUI", "VECT_X": (1.0, 1.0, 1.0), "VECT_Y": (-1.0, 1.0, 0.0)},
+    )
+    assert out.order.tolist() == [2] and out.times.tolist() == [0.1]
+    assert out.fields["ACCE"].shape == (1, numbering.n_dofs)
+
+    def at(components):
+        return [out.fields["ACCE"][0, numbering.dof_indices([1], c)[0]] for c in components]
+
+    np.testing.assert_allclose(
+        at(("DRX", "DRY", "DRZ")), [10 / np.sqrt(3), 0.0, 20 / np.sqrt(6)], atol=1e-12
+    )
+    np.testing.assert_allclose(
+        at(("DX", "DY", "DZ")), [20 / np.sqrt(3), 0.0, 40 / np.sqrt(6)], atol=1e-12
+    )
+    assert result.fields["ACCE"].shape == (2, numbering.n_dofs)  # the input is untouched

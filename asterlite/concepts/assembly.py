@@ -480,7 +480,7 @@ class ComplexAssembledMatrix(AssembledMatrix):
 class NodalField(Concept):
     """A field on nodes (``cham_no_sdaster``): one value per DOF of a numbering."""
 
-    aster_types = ("cham_no_sdaster",)
+    aster_types = ("cham_no_sdaster", "cham_gd_sdaster")
     deck_methods = frozenset({"getName", "getValues"})
 
     numbering: DofNumbering
