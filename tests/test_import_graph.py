@@ -90,6 +90,7 @@ DEFERRED_LIBRARIES = {
     "concurrent": 7,  # and the threads its executors start
     "matplotlib": 400,
     "pyarrow": 300,
+    "mumps": 328,  # the large extra (python-mumps and its MPI libraries)
 }
 # Rooms whose imports inside functions are not yet sorted (each with the work
 # that sorts them; the list only shrinks)

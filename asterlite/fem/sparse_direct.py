@@ -36,6 +36,7 @@ import sys
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
+from cholespy import CholeskySolverD, MatrixType
 
 #: from this many unknowns on, a shift-invert eigen solve factorises with MUMPS
 #: (when installed) and iterates with the block Lanczos method
@@ -164,8 +165,6 @@ class CholmodFactor:
     negative_pivots = 0
 
     def __init__(self, matrix):
-        from cholespy import CholeskySolverD, MatrixType
-
         csc = sp.csc_matrix(matrix)
         self.n = csc.shape[0]
         try:

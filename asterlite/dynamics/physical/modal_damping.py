@@ -75,7 +75,7 @@ def build_modal_damping(
     ``supports``: (ψ_s on all DOFs, velocity function) of the multiple supports."""
     frequencies = np.asarray(frequencies, dtype=float)
     masses = np.asarray(masses, dtype=float)
-    # ω keeps FREQ's sign, as code_aster's dampModalPreparation takes it: a
+    # ω keeps the frequency's sign, as code_aster's dampModalPreparation takes it: a
     # free structure's rigid-body modes come out at ±1e-6 Hz, their sign set
     # by round-off (it differs between factorisations), and each gives a force
     # of order 2 ξ ω / m either way
