@@ -93,13 +93,16 @@ def test_only_nook_is_status_1(tmp_path):
 
 # ------------------------------------------------- a run ends with a true status
 
+# loops until a signal stops it: each pass costs a sum of 2000 terms, so the
+# deck's budget of loop iterations and calls (1e7) lasts far longer than the
+# test takes to send its signal, even on a loaded machine
 LOOP_DECK = """DEBUT()
 T = CREA_TABLE(LISTE=_F(PARA='X', LISTE_R=(1.0, 2.0)))
 IMPR_TABLE(UNITE=30, TABLE=T)
 print("started")
 x = 0
 while True:
-    x = x + 1
+    x = x + sum(range(2000))
 FIN()
 """
 PASS_DECK = """DEBUT()
