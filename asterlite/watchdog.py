@@ -158,6 +158,21 @@ def memory_limit_mb() -> float | None:
     return getattr(_state, "memory_mb", None)
 
 
+def memory_headroom() -> int | None:
+    """Bytes the run may still add before its memory limit (None when
+    unlimited): what a computation that can trade memory for disk (MUMPS's
+    out-of-core factor) compares its estimate with."""
+    limit = getattr(_state, "memory_mb", None)
+    start = getattr(_state, "resident_start", None)
+    if limit is None or start is None:
+        return None
+    start += _compiling.resident - getattr(_state, "compiled_at_start", 0)
+    resident = _released_size()
+    if resident is None:
+        return None
+    return max(0, int(limit * MEGABYTE) - (resident - start))
+
+
 @contextmanager
 def limits(seconds: float | None = None, megabytes: float | None = None, compiles: bool = True):
     """Enforce a time and a memory limit for the duration of the block;

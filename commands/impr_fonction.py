@@ -48,15 +48,17 @@ def run(ctx, kw):
             (x, y, legend, style)
             for (x, y, legend, _, _), style in zip(curves, styles, strict=True)
         ]
+        layout = graph_layout(kw)
         image_format = IMAGE_FORMATS.get(kw.get("PILOTE") or "")
         if image_format is not None:
             from asterlite.post.plots import curves_figure
 
             require_matplotlib(ctx, kw)
 
-            curves_figure(drawn, title, xlabel, ylabel).savefig(path, format=image_format)
+            figure = curves_figure(drawn, title, xlabel, ylabel, layout)
+            figure.savefig(path, format=image_format)
         else:
-            write_lines(path, xmgrace_lines(drawn, title, xlabel, ylabel), append=False)
+            write_lines(path, xmgrace_lines(drawn, title, xlabel, ylabel, layout), append=False)
             if kw.get("PILOTE"):
                 ctx.log(f"PILOTE={kw['PILOTE']!r}: no window here, Grace project written")
     elif fmt == "AGRAF":
@@ -65,6 +67,19 @@ def run(ctx, kw):
         ctx.unsupported(f"FORMAT={fmt!r}", "FORMAT", kw)
     ctx.log(f"{len(curves)} curve(s) written to {path.name}")
     return None
+
+
+def graph_layout(kw) -> dict:
+    """The graph's SOUS_TITRE, ECHELLE_X/Y, GRILLE_X/Y and BORNE_X/Y
+    (asterlite.io.tables.grace_layout_lines); a grid step of zero is no step,
+    as in code_aster."""
+    layout = {"subtitle": _text(kw.get("SOUS_TITRE"))}
+    for axis in ("X", "Y"):
+        layout[f"{axis.lower()}_scale"] = kw.get(f"ECHELLE_{axis}", "LIN")
+        layout[f"{axis.lower()}_grid"] = kw.get(f"GRILLE_{axis}") or None
+        given = kw.get(f"BORNE_{axis}")
+        layout[f"{axis.lower()}_range"] = None if given is None else tuple(map(float, given))
+    return layout
 
 
 def write_agraf(ctx, kw, curves, path) -> None:

@@ -4,6 +4,7 @@ code_aster honours them (each test fails on the behaviour before the audit)."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from asterlite.concepts.function import Function
 from asterlite.io.tables import xmgrace_lines
@@ -59,3 +60,40 @@ def test_image_curves_follow_the_same_styles():
     options = _curve_style({"STYLE": 3, "COULEUR": 2, "MARQUEUR": 1, "FREQ_MARQUEUR": 10})
     assert options == {"linestyle": "--", "color": "red", "marker": "o", "markevery": 10}
     assert _curve_style({}) == {}
+
+
+def test_grace_project_carries_the_graph_layout():
+    """IMPR_FONCTION ECHELLE_X/Y, GRILLE_X/Y, BORNE_X/Y and SOUS_TITRE become
+    Grace's axis scales, major ticks, world bounds and subtitle, as code_aster
+    writes them (a logarithmic axis ticks by decades)."""
+    layout = {
+        "subtitle": "sub",
+        "x_scale": "LIN",
+        "x_grid": 0.5,
+        "x_range": (0.0, 2.0),
+        "y_scale": "LOG",
+        "y_grid": None,
+        "y_range": None,
+    }
+    lines = xmgrace_lines([(np.array([0.0, 1.0]), np.array([1.0, 2.0]), "c")], layout=layout)
+    for expected in (
+        '@subtitle "sub"',
+        "@xaxis tick major 0.5",
+        "@world xmin 0",
+        "@world xmax 2",
+        "@yaxes scale Logarithmic",
+        "@yaxis tick major 10",
+    ):
+        assert expected in lines
+    assert not [line for line in lines if "xaxes scale" in line or "world y" in line]
+
+
+def test_image_curves_follow_the_graph_layout():
+    pytest.importorskip("matplotlib")
+    from asterlite.post.plots import curves_figure
+
+    layout = {"x_scale": "LIN", "x_range": (0.0, 4.0), "y_scale": "LOG", "subtitle": "s"}
+    figure = curves_figure([(np.array([1.0, 2.0]), np.array([1.0, 100.0]), "c")], "t", layout=layout)
+    axes = figure.axes[0]
+    assert axes.get_yscale() == "log" and axes.get_xlim() == (0.0, 4.0)
+    assert axes.get_title() == "t\ns"

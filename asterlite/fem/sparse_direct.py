@@ -30,13 +30,18 @@ definite, SuperLU otherwise; ``ASTERLITE_SPARSE_SOLVER`` (``auto``,
 from __future__ import annotations
 
 import contextlib
+import gc
 import os
+import shutil
 import sys
+import tempfile
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from cholespy import CholeskySolverD, MatrixType
+
+from asterlite import watchdog
 
 #: from this many unknowns on, a shift-invert eigen solve factorises with MUMPS
 #: (when installed) and iterates with the block Lanczos method
@@ -117,26 +122,44 @@ class MumpsFactor:
     ``null_pivot_threshold`` (relative to the matrix's largest row sum)
     turns MUMPS's null pivot detection on (ICNTL(24) = 1, CNTL(3)):
     ``null_pivots`` then counts the pivots below it, which mark a matrix
-    singular to that precision."""
+    singular to that precision.
+
+    Memory, as code_aster's ``GESTION_MEMOIRE='AUTO'`` decides it: after the
+    analysis, a factor whose in-core estimate (INFOG(17)) passes
+    OUT_OF_CORE_SHARE of what the run may still add before its memory limit
+    is written to disk (ICNTL(22) = 1, files in a folder of its own, removed
+    when the factor is closed). The input triplets are released once
+    factorised: the solves read only the factor (no iterative refinement,
+    no error analysis: ICNTL(10) = ICNTL(11) = 0)."""
 
     backend = "mumps"
 
     def __init__(self, matrix, null_pivot_threshold: float | None = None):
         import mumps
 
-        upper = sp.triu(sp.coo_matrix(matrix), format="coo")
         self.n = matrix.shape[0]
+        self.out_of_core = False
+        self._folder = None
         self._context = mumps.Context()
-        self._context.set_matrix(upper, symmetric=True)
+        _set_upper_triangle(self._context, matrix)
         instance = self._context.mumps_instance
         if null_pivot_threshold is not None:
             instance.icntl[24] = 1
             instance.cntl[3] = float(null_pivot_threshold)
         try:
-            self._context.factor(ordering="auto")
+            self._context.analyze(ordering="auto")
+            self.out_of_core = _needs_out_of_core(int(instance.infog[17]) * 1024**2)
+            if self.out_of_core:
+                self._folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
+                os.environ["MUMPS_OOC_TMPDIR"] = self._folder  # read by MUMPS at JOB = 2
+            self._context.factor(ordering="auto", ooc=self.out_of_core, reuse_analysis=True)
         except mumps.MUMPSError as exc:
+            self.close()
             # INFOG(1) = -10: numerically singular
             raise SingularFactorError(f"MUMPS: {exc}") from None
+        # the solves need the values' type only
+        self._context.row = self._context.col = None
+        self._context.data = np.zeros(1, dtype=self._context.data.dtype)
         self.negative_pivots = int(instance.infog[12])
         self.null_pivots = int(instance.infog[28]) if null_pivot_threshold is not None else 0
 
@@ -146,12 +169,55 @@ class MumpsFactor:
 
     def close(self) -> None:
         """Free MUMPS's factor now. Only references are dropped: the wrapper's
-        own deallocation terminates the instance (JOB = -2) once.
+        own deallocation terminates the instance (JOB = -2) once, which
+        deletes an out-of-core factor's files.
         ``mumps.Context.__exit__`` must not be used: in python-mumps 0.0.4 it
         sets JOB on the Python object, not on the instance, so it repeats the
         last job, a solve into the right-hand side of the last call, long
         freed (heap corruption: forma12c crashed or got wrong modes)."""
         self._context = None
+        if self._folder is not None:
+            gc.collect()  # the instance, hence its files, goes with its last reference
+            shutil.rmtree(self._folder, ignore_errors=True)
+            self._folder = None
+
+
+#: a MUMPS factor goes out of core when its in-core estimate passes this
+#: share of what the run may still add before its memory limit (the rest
+#: serves the eigen solver's vectors and the commands after it)
+OUT_OF_CORE_SHARE = 0.5
+
+
+def _needs_out_of_core(in_core_bytes: int) -> bool:
+    headroom = watchdog.memory_headroom()
+    return headroom is not None and in_core_bytes > OUT_OF_CORE_SHARE * headroom
+
+
+def _set_upper_triangle(context, matrix) -> None:
+    """Hand MUMPS the upper triangle of the symmetric ``matrix`` (CSR or CSC,
+    any other format converted) as 1-based int32 triplets, made once:
+    python-mumps's ``set_matrix`` would copy the whole matrix three times."""
+    from mumps.mumps import _mumps
+
+    int_dtype = _mumps.int_dtype
+    if not (sp.isspmatrix_csr(matrix) or sp.isspmatrix_csc(matrix)):
+        matrix = sp.csr_matrix(matrix)
+    counts = np.diff(matrix.indptr)
+    outer = np.repeat(np.arange(matrix.shape[0], dtype=np.int32), counts)
+    inner = matrix.indices.astype(np.int32, copy=False)
+    # CSR rows are the outer index, CSC columns: upper means row <= column
+    keep = inner >= outer if sp.isspmatrix_csr(matrix) else inner <= outer
+    rows, cols = (outer, inner) if sp.isspmatrix_csr(matrix) else (inner, outer)
+    row = np.asfortranarray(rows[keep], dtype=int_dtype)
+    row += 1
+    del outer
+    col = np.asfortranarray(cols[keep], dtype=int_dtype)
+    col += 1
+    data = np.asfortranarray(matrix.data[keep], dtype=np.float64)
+    del keep
+    context.set_matrix(sp.coo_matrix((np.zeros(1), ([0], [0])), shape=matrix.shape), symmetric=True)
+    context.row, context.col, context.data = row, col, data
+    context.mumps_instance.set_assembled_matrix(matrix.shape[0], row, col, data)
 
 
 class CholmodFactor:
@@ -227,10 +293,10 @@ def factorize_symmetric(matrix, backend: str | None = None, **options):
     """A factor of the symmetric ``matrix`` with ``.solve(b)`` for a vector or a
     block of columns, ``.backend`` and ``.negative_pivots`` (the inertia: MUMPS's
     count, 0 for a CHOLMOD factor, None for SuperLU); ``options`` go to MUMPS."""
-    matrix = sp.csc_matrix(matrix)
     name = backend or choose_backend(matrix.shape[0])
     if name == "mumps":
-        return MumpsFactor(matrix, **options)
+        return MumpsFactor(matrix, **options)  # CSR or CSC as given: no copy
+    matrix = sp.csc_matrix(matrix)
     if name == "cholmod":
         return CholmodFactor(matrix)
     return SuperLUFactor(matrix)

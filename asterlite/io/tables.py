@@ -117,13 +117,22 @@ GRACE_STYLE_ATTRIBUTES = {
 }
 
 
-def xmgrace_lines(curves, title: str = "", x_label: str = "", y_label: str = ""):
+# IMPR_FONCTION's ECHELLE_X/Y and Grace's axis scales
+GRACE_SCALES = {"LIN": "Normal", "LOG": "Logarithmic"}
+#: the major tick step code_aster gives a logarithmic axis (decades)
+GRACE_LOG_TICK = 10
+
+
+def xmgrace_lines(curves, title: str = "", x_label: str = "", y_label: str = "", layout=None):
     """A minimal Grace project: one xy set per curve (abscissas, ordinates,
-    legend, and the styles the deck gave: ``{"STYLE": 1, ...}``)."""
+    legend, and the styles the deck gave: ``{"STYLE": 1, ...}``); ``layout``:
+    the graph's subtitle, axis scales, major tick steps and bounds
+    (:func:`grace_layout_lines`)."""
     lines = ["# Grace project file", "@version 50122"]
     if title:
         lines.append(f'@title "{title}"')
     lines += [f'@xaxis label "{x_label}"', f'@yaxis label "{y_label}"']
+    lines += grace_layout_lines(layout or {})
     for k, (x, y, legend, *style) in enumerate(curves):
         lines.append(f'@s{k} legend "{legend}"')
         for key, value in (style[0] if style else {}).items():
@@ -131,6 +140,29 @@ def xmgrace_lines(curves, title: str = "", x_label: str = "", y_label: str = "")
         lines += [f"@target G0.S{k}", "@type xy"]
         lines += [f"{xi:.10E} {float(np.real(yi)):.10E}" for xi, yi in zip(x, y, strict=True)]
         lines.append("&")
+    return lines
+
+
+def grace_layout_lines(layout: dict) -> list[str]:
+    """Grace directives of a graph layout, as code_aster writes them:
+    ``subtitle``; per axis ``x``/``y``: ``_scale`` ('LIN' or 'LOG'), ``_grid``
+    (the major tick step; a decade on a logarithmic axis), ``_range`` (the
+    world's bounds). What the layout leaves out (a linear scale among them),
+    Grace decides."""
+    lines = []
+    if layout.get("subtitle"):
+        lines.append(f'@subtitle "{layout["subtitle"]}"')
+    for axis in ("x", "y"):
+        scale = layout.get(f"{axis}_scale") or "LIN"
+        if scale != "LIN":
+            lines.append(f"@{axis}axes scale {GRACE_SCALES[scale]}")
+        step = GRACE_LOG_TICK if scale == "LOG" else layout.get(f"{axis}_grid")
+        if step:
+            lines.append(f"@{axis}axis tick major {float(step):g}")
+        bounds = layout.get(f"{axis}_range")
+        if bounds is not None:
+            low, high = (float(bound) for bound in bounds)
+            lines += [f"@world {axis}min {low:g}", f"@world {axis}max {high:g}"]
     return lines
 
 

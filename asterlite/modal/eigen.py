@@ -154,7 +154,7 @@ def _large_factor(k, m, sigma: float, backend: str):
     (CHOLMOD's NotPositiveDefiniteError passes through: the caller falls
     back on SuperLU)."""
     try:
-        return sparse_direct.factorize_symmetric((k - sigma * m).tocsc(), backend=backend)
+        return sparse_direct.factorize_symmetric(k - sigma * m, backend=backend)
     except sparse_direct.SingularFactorError as exc:
         raise EigenError(f"K - σM is singular at σ = {sigma:g} ({exc})") from None
 
@@ -169,11 +169,11 @@ def _large_smallest_shift(k, m, backend: str):
     try:
         if backend == "mumps":
             factor = sparse_direct.factorize_symmetric(
-                k.tocsc(), backend="mumps", null_pivot_threshold=1e-11
+                k, backend="mumps", null_pivot_threshold=1e-11
             )
             singular = factor.null_pivots > 0
         else:
-            factor = sparse_direct.factorize_symmetric(k.tocsc(), backend="cholmod")
+            factor = sparse_direct.factorize_symmetric(k, backend="cholmod")
             singular = factor.nearly_singular(k)
         if not singular:
             return 0.0, factor
@@ -233,7 +233,7 @@ def _large_inertia(shifted, backend: str):
     CHOLMOD factorises it (positive definite); None when it is singular,
     False when CHOLMOD finds it indefinite (SuperLU must count)."""
     try:
-        factor = sparse_direct.factorize_symmetric(shifted.tocsc(), backend=backend)
+        factor = sparse_direct.factorize_symmetric(shifted, backend=backend)
     except sparse_direct.SingularFactorError:
         return None
     except sparse_direct.NotPositiveDefiniteError:

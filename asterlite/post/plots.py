@@ -487,15 +487,28 @@ def _curve_style(style: dict) -> dict:
     return options
 
 
-def curves_figure(curves, title: str = "", xlabel: str = "", ylabel: str = ""):
-    """Figure of (x, y, legend[, style]) curves: the image IMPR_FONCTION draws."""
+def curves_figure(curves, title: str = "", xlabel: str = "", ylabel: str = "", layout=None):
+    """Figure of (x, y, legend[, style]) curves: the image IMPR_FONCTION draws;
+    ``layout``: subtitle, axis scales, grid steps and bounds
+    (asterlite.io.tables.grace_layout_lines)."""
+    from matplotlib.ticker import MultipleLocator
+
+    layout = layout or {}
     figure = _new_figure()
     axes = figure.add_subplot()
     for x, y, legend, *style in curves:
         axes.plot(x, y, label=legend or None, **_curve_style(style[0] if style else {}))
-    axes.set_title(title)
+    subtitle = layout.get("subtitle")
+    axes.set_title(f"{title}\n{subtitle}" if subtitle else title)
     axes.set_xlabel(xlabel)
     axes.set_ylabel(ylabel)
+    for axis, ticks in (("x", axes.xaxis), ("y", axes.yaxis)):
+        if layout.get(f"{axis}_scale") == "LOG":
+            getattr(axes, f"set_{axis}scale")("log")
+        elif layout.get(f"{axis}_grid"):
+            ticks.set_major_locator(MultipleLocator(float(layout[f"{axis}_grid"])))
+        if layout.get(f"{axis}_range") is not None:
+            getattr(axes, f"set_{axis}lim")(*layout[f"{axis}_range"])
     axes.grid(alpha=0.3)
     if any(curve[2] for curve in curves):
         axes.legend()
