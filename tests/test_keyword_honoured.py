@@ -93,7 +93,9 @@ def test_image_curves_follow_the_graph_layout():
     from asterlite.post.plots import curves_figure
 
     layout = {"x_scale": "LIN", "x_range": (0.0, 4.0), "y_scale": "LOG", "subtitle": "s"}
-    figure = curves_figure([(np.array([1.0, 2.0]), np.array([1.0, 100.0]), "c")], "t", layout=layout)
+    figure = curves_figure(
+        [(np.array([1.0, 2.0]), np.array([1.0, 100.0]), "c")], "t", layout=layout
+    )
     axes = figure.axes[0]
     assert axes.get_yscale() == "log" and axes.get_xlim() == (0.0, 4.0)
     assert axes.get_title() == "t\ns"
