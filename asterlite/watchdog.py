@@ -10,7 +10,9 @@ asterlite does the same:
   short), checked where a run can stop cleanly, before each command and at
   every pause of the compiled time loop (a few times a second), raising
   :class:`TimeLimitError` located at the running command;
-- memory: the resident memory the run has added since it started is checked
+- memory: the resident memory the run has added since it started (pages
+  backed by files, which the system takes back at will, not counted: the
+  memory maps of archives kept on disk) is checked
   where the time is (:class:`MemoryLimitError`), and the address space is
   capped (``RLIMIT_AS``) at the start-up size plus four times the limit, so
   that a runaway allocation fails at once with a MemoryError that the
@@ -102,10 +104,14 @@ def check_time() -> None:
 
 
 def _resident_size() -> int | None:
-    """The process's resident memory in bytes (Linux), None where unknown."""
+    """The process's resident memory in bytes that the system cannot take
+    back without writing it out (Linux), None where unknown: the resident
+    pages less those shared with files, which the system drops when it needs
+    them (memory maps of archives on disk, of libraries)."""
     try:
         with open("/proc/self/statm", encoding="ascii") as statm:
-            return int(statm.read().split()[1]) * PAGE_SIZE
+            fields = statm.read().split()
+        return (int(fields[1]) - int(fields[2])) * PAGE_SIZE
     except (OSError, ValueError, IndexError):
         return None
 

@@ -6,18 +6,27 @@ does not have (a node of the same name is the same node: that is how a
 superelement's external nodes meet the cells of the other mesh); cells and
 super-cells of both (a name in both is an error); the groups of
 MAILLAGE_1, then those of MAILLAGE_2 whose name is new (code_aster warns
-and keeps MAILLAGE_1's). SUPERPOSE and COLLAGE are not computed.
+and keeps MAILLAGE_1's).
+
+OPERATION='SUPERPOSE' (code_aster's asmasu): every node, cell and group of
+both meshes, MAILLAGE_1's first; nodes and cells are renamed (the result
+names them by position, N<i> and M<i>); a group of MAILLAGE_2 whose name
+MAILLAGE_1 has takes its first 7 characters padded with '_' and a digit 0-9,
+the first free. COLLAGE is not computed.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.static_substructure import SuperCell, SuperMesh
 
 
 def run(ctx, kw):
     operation = kw["OPERATION"]
+    if operation == "SUPERPOSE":
+        return superposed(ctx, kw)
     if operation != "SOUS_STR":
         ctx.unsupported(f"ASSE_MAILLAGE OPERATION={operation!r}", "OPERATION", kw)
     first, second = kw["MAILLAGE_1"], kw["MAILLAGE_2"]
@@ -80,3 +89,45 @@ def run(ctx, kw):
         f"{mesh.n_cells} cells, {len(super_cells)} super-cells"
     )
     return mesh
+
+
+def superposed(ctx, kw) -> Mesh:
+    first, second = kw["MAILLAGE_1"], kw["MAILLAGE_2"]
+    for mesh, key in ((first, "MAILLAGE_1"), (second, "MAILLAGE_2")):
+        if getattr(mesh, "super_cells", None):
+            ctx.unsupported("ASSE_MAILLAGE SUPERPOSE of a mesh of superelements", key, kw)
+    n_nodes, n_cells = first.n_nodes + second.n_nodes, first.n_cells + second.n_cells
+    mesh = Mesh(
+        coords=np.vstack([first.coords, second.coords]),
+        node_names=[f"N{i + 1}" for i in range(n_nodes)],
+        cell_names=[f"M{i + 1}" for i in range(n_cells)],
+        cell_types=list(first.cell_types) + list(second.cell_types),
+        cell_nodes=list(first.cell_nodes)
+        + [tuple(int(n) + first.n_nodes for n in nodes) for nodes in second.cell_nodes],
+        dim=max(first.dim, second.dim),
+        names_kept=False,
+    )
+    for kind, offset in (("node", first.n_nodes), ("cell", first.n_cells)):
+        groups = {
+            k: np.asarray(v, dtype=int).copy() for k, v in getattr(first, f"{kind}_groups").items()
+        }
+        for name, members in getattr(second, f"{kind}_groups").items():
+            new_name = name if name not in groups else renamed_group(name, groups)
+            if new_name != name:
+                ctx.log(f"warning: group of {kind}s {name} of MAILLAGE_2 renamed {new_name}")
+            groups[new_name] = np.asarray(members, dtype=int) + offset
+        setattr(mesh, f"{kind}_groups", groups)
+    ctx.log(f"ASSE_MAILLAGE SUPERPOSE: {mesh.n_nodes} nodes, {mesh.n_cells} cells")
+    return mesh
+
+
+def renamed_group(name: str, taken) -> str:
+    """code_aster's new name for a group of MAILLAGE_2 that MAILLAGE_1 has:
+    its first 7 characters padded with '_', then the first digit 0-9 that
+    makes it free (the last tried when none does)."""
+    stem = name[:7].ljust(7, "_")
+    for digit in range(10):
+        candidate = f"{stem}{digit}"
+        if candidate not in taken:
+            break
+    return candidate

@@ -19,7 +19,7 @@ from asterlite.concepts.assembly import DofNumbering, NodalField, NodalFunctionF
 from asterlite.concepts.mesh import CellConstantField
 from asterlite.concepts.modes import FieldOnElements
 from asterlite.fem.abscissa import ABSCISSA_COMPONENTS
-from asterlite.fem.dofs import sort_components
+from asterlite.fem.dofs import COMPONENT_RANK, sort_components
 from asterlite.fem.selection import as_tuple, select_nodes
 from asterlite.modal.fields import (
     FieldError,
@@ -190,6 +190,8 @@ def _evaluated(ctx, kw, function, node: int, parameters, mesh) -> float:
 
 def _nodal_only(ctx, kw):
     type_cham = str(kw.get("TYPE_CHAM") or "")
+    if kw.get("OPERATION") == "EXTR" and kw.get("TABLE") is not None:
+        return  # _table_field says which types it reads
     if kw.get("OPERATION") == "EXTR" and kw.get("MAILLAGE") is not None:
         return  # the mesh's own fields (_mesh_field)
     if kw.get("OPERATION") == "EXTR" and _is_element_type(type_cham) and type_cham.endswith("_R"):
@@ -210,6 +212,8 @@ def _extr(ctx, kw):
     the stored fields (TYPE_MAXI), nodal or by element (ELNO/ELGA fields
     CALC_CHAMP stored on the result)."""
 
+    if kw.get("TABLE") is not None:
+        return _table_field(ctx, kw)
     if kw.get("MAILLAGE") is not None:
         return _mesh_field(ctx, kw)
     if kw.get("RESULTAT") is None:
@@ -253,6 +257,49 @@ def _extr(ctx, kw):
         cells=np.asarray(field.cells, dtype=int),
         components=tuple(field.components),
         values=selected,
+    )
+
+
+# a table's columns that locate a value; the others are components (tabchs)
+TABLE_PLACES = ("NOEUD", "MAILLE", "POINT", "SOUS_POINT")
+
+
+def _table_field(ctx, kw):
+    """EXTR of a table (code_aster's tabchs): a nodal field whose rows give a
+    node by name (NOEUD) and components by column; a cell a row leaves empty
+    is a component the field lacks at that node."""
+    table, type_cham = kw["TABLE"], str(kw.get("TYPE_CHAM") or "")
+    if not type_cham.startswith("NOEU_") or type_cham.endswith("_C"):
+        ctx.unsupported(
+            f"CREA_CHAMP EXTR of a TABLE as {type_cham} (real nodal fields only)", "TYPE_CHAM", kw
+        )
+    model = kw.get("MODELE")
+    mesh = kw.get("MAILLAGE") or (model.mesh if model is not None else None)
+    if mesh is None:
+        ctx.error("a field read from a TABLE needs MAILLAGE or MODELE", "TABLE", kw)
+    if "NOEUD" not in table.columns:
+        ctx.error("a nodal field's TABLE needs a NOEUD column", "TABLE", kw)
+    components = [c for c in table.columns if c not in TABLE_PLACES]
+    if type_cham.startswith("NOEU_DEPL"):
+        foreign = [c for c in components if c not in COMPONENT_RANK]
+        if foreign:
+            ctx.error(f"components of no DEPL_R field: {', '.join(foreign)}", "TABLE", kw)
+    values: dict[tuple[int, str], float] = {}
+    for row in table.rows:
+        name = row.get("NOEUD")
+        node = None if name is None else mesh.find_node(str(name).strip())
+        if node is None:
+            ctx.error(f"the TABLE's node {name!r} is not in the mesh", "TABLE", kw)
+        for component in components:
+            if row.get(component) is not None:
+                values[(int(node), component)] = float(row[component])
+    by_node: dict[int, set] = {}
+    for node, component in values:
+        by_node.setdefault(node, set()).add(component)
+    dofs = [(n, c) for n in sorted(by_node) for c in sort_components(by_node[n])]
+    return NodalField(
+        numbering=DofNumbering(mesh=mesh, dofs=dofs),
+        values=np.array([values[dof] for dof in dofs], dtype=float),
     )
 
 

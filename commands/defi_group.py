@@ -198,7 +198,7 @@ def _crea_group_no(ctx, mesh, occ) -> None:
     if occ.get("TOUT_GROUP_MA") == "OUI":
         for gname, cells in mesh.cell_groups.items():
             if gname not in mesh.node_groups:
-                mesh.node_groups[gname] = mesh.nodes_of_cells(cells)
+                mesh.node_groups[gname] = np.sort(mesh.nodes_of_cells(cells))
         return
     if occ.get("TOUT_GROUP_NO") == "OUI":
         return
@@ -216,7 +216,8 @@ def _crea_group_no(ctx, mesh, occ) -> None:
                 ctx.error(missing_name("cell group", gname, mesh.cell_groups), "GROUP_MA", occ)
             if new_name in mesh.node_groups:
                 ctx.error(f"the node group {new_name!r} already exists", "GROUP_MA", occ)
-            mesh.node_groups[new_name] = mesh.nodes_of_cells(mesh.cell_groups[gname])
+            # in increasing node order, as code_aster lists them (gmgnre)
+            mesh.node_groups[new_name] = np.sort(mesh.nodes_of_cells(mesh.cell_groups[gname]))
         return
     if occ.get("TOUT") == "OUI":
         members = list(range(mesh.n_nodes))

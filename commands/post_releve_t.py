@@ -87,14 +87,30 @@ def extraction(ctx, occ) -> list[tuple[dict, dict]]:
         return resultant_rows(ctx, occ, labels, steps, nodes, comps, values)
     mesh = mesh_of(ctx, occ)
     axes = ("COOR_X", "COOR_Y", "COOR_Z")[: max(2, min(mesh.dim, 3))]
+    absent = absent_components(occ, nodes, comps)
     rows = []
     for k, step in enumerate(steps):
         for j, node in enumerate(nodes):
             row = {**labels, **step, "NOEUD": node_number(mesh, node)}
             row.update({a: float(mesh.coords[node, i]) for i, a in enumerate(axes)})
-            row.update({c: float(values[k, j, i]) for i, c in enumerate(comps)})
+            row.update(
+                {c: float(values[k, j, i]) for i, c in enumerate(comps) if not absent[j, i]}
+            )
             rows.append((row, COLUMN_TYPES))
     return rows
+
+
+def absent_components(occ, nodes, comps) -> np.ndarray:
+    """(node, component) cells a row leaves empty, as code_aster does: a
+    component of the numbering that this node does not carry (a rotation at
+    a solid's node beside beams). Components the numbering does not know
+    (fields computed by CALC_CHAMP) are taken as present."""
+    source = occ.get("RESULTAT") or occ.get("CHAM_GD")
+    dofs = set(source.numbering.dofs)
+    known = {c for _, c in dofs}
+    return np.array(
+        [[c in known and (int(n), c) not in dofs for c in comps] for n in nodes], dtype=bool
+    ).reshape(len(nodes), len(comps))
 
 
 COLUMN_TYPES = {

@@ -111,9 +111,26 @@ def test_an_archive_file_past_the_runs_output_limit_is_refused(monkeypatch):
         shock_run("DIFF_CENTRE", 40_000)
 
 
-def test_the_memory_budget_is_a_share_of_the_runs_memory_limit(monkeypatch):
-    monkeypatch.setattr(AS.watchdog, "memory_limit_mb", lambda: 1024.0)
+def test_the_memory_budget_is_a_share_of_the_runs_headroom(monkeypatch):
+    # a quarter of what the run may still add: with 1 GB left, 256 MB; with
+    # 100 MB left (results of earlier transients held), 25 MB
+    monkeypatch.setattr(AS.watchdog, "memory_headroom", lambda: 1024**3)
     assert AS.memory_budget(None) == 256 * 1024**2
     assert AS.memory_budget(1000) == 1000
-    monkeypatch.setattr(AS.watchdog, "memory_limit_mb", lambda: None)
+    monkeypatch.setattr(AS.watchdog, "memory_headroom", lambda: 100 * 1024**2)
+    assert AS.memory_budget(None) == 25 * 1024**2
+    monkeypatch.setattr(AS.watchdog, "memory_headroom", lambda: None)
     assert AS.memory_budget(None) == AS.UNLIMITED_RUN_BYTES
+
+
+def test_the_headroom_counts_what_the_run_holds():
+    from asterlite import watchdog
+
+    assert watchdog.memory_headroom() is None  # no limit
+    with watchdog.limits(None, 400.0):
+        before = watchdog.memory_headroom()
+        held = np.ones(50 * 1024**2 // 8)  # 50 MB touched
+        after = watchdog.memory_headroom()
+        assert 0 < before <= 400 * watchdog.MEGABYTE
+        assert before - after > 40 * watchdog.MEGABYTE
+        del held

@@ -239,12 +239,14 @@ def test_an_archive_on_disk_gives_the_states_an_archive_in_memory_gives(tmp_path
     assert list(tmp_path.iterdir()) == []  # unnamed files: nothing left in the folder
 
 
-def test_archive_goes_to_disk_past_its_share_of_the_memory_limit():
+def test_archive_goes_to_disk_past_its_share_of_the_memory_headroom(monkeypatch):
     from asterlite import watchdog
-    from asterlite.dynamics.physical.archive import ARCHIVE_MEMORY_SHARE, archive_on_disk
+    from asterlite.dynamics.archive_store import ARCHIVE_MEMORY_SHARE
+    from asterlite.dynamics.physical.archive import archive_on_disk
 
     assert not archive_on_disk(10**6, 10**3, 10**3)  # no limit: memory
     with watchdog.limits(None, 100.0):
+        monkeypatch.setattr(watchdog, "memory_headroom", lambda: 100 * watchdog.MEGABYTE)
         share = ARCHIVE_MEMORY_SHARE * 100.0 * watchdog.MEGABYTE
         rows = int(share / (3 * 2 * 1000 * 8))
         assert not archive_on_disk(rows, 1000, 1000)

@@ -481,7 +481,7 @@ class NodalField(Concept):
     """A field on nodes (``cham_no_sdaster``): one value per DOF of a numbering."""
 
     aster_types = ("cham_no_sdaster", "cham_gd_sdaster")
-    deck_methods = frozenset({"getName", "getValues"})
+    deck_methods = frozenset({"getName", "getValues", "getValuesWithDescription"})
 
     numbering: DofNumbering
     values: np.ndarray
@@ -501,6 +501,29 @@ class NodalField(Concept):
                 "asterlite keeps as relations"
             )
         return np.asarray(self.values).tolist()
+
+    def getValuesWithDescription(self, components=(), groups=()):  # noqa: N802
+        """(values, (nodes, components)) of the DOFs of ``components`` (all when
+        empty) at the nodes of ``groups`` of nodes (all when empty), in the
+        numbering's order, nodes from 0 (code_aster's FieldOnNodes method).
+        Lagrange multipliers ('LAGR:...') are refused: asterlite keeps the
+        constraints as relations."""
+        wanted = {components} if isinstance(components, str) else set(components)
+        if any(str(name).startswith("LAGR") for name in wanted):
+            raise UnsupportedError(
+                f"{self.name or 'field'}.getValuesWithDescription(): values of Lagrange "
+                "multipliers, which asterlite keeps as relations"
+            )
+        names = [groups] if isinstance(groups, str) else list(groups)
+        mesh = self.numbering.mesh
+        nodes = set(mesh.getNodes(names)) if names else None
+        picked = [
+            (i, node, component)
+            for i, (node, component) in enumerate(self.numbering.dofs)
+            if (not wanted or component in wanted) and (nodes is None or node in nodes)
+        ]
+        values = np.asarray(self.values)[[i for i, _, _ in picked]].tolist()
+        return values, ([int(n) for _, n, _ in picked], [c for _, _, c in picked])
 
 
 @dataclass(eq=False)

@@ -80,6 +80,9 @@ class Mesh(Concept):
             "getGroupsOfCells",
             "addNodeLabels",
             "addCellLabels",
+            "getCoordinates",
+            "getNodes",
+            "getNodesFromCells",
         }
     )
 
@@ -198,6 +201,34 @@ class Mesh(Concept):
     def getDimension(self) -> int:  # noqa: N802
         return self.dim
 
+    def getNodes(self, group_name=(), localNumbering=True, same_rank=None) -> list[int]:  # noqa: N802, N803
+        """Nodes (from 0) of groups of nodes: every node without a name, one
+        group's in its order, several groups' merged and sorted; a name the
+        mesh does not have adds none (code_aster's Mesh::getNodes)."""
+        names = [group_name] if isinstance(group_name, str) else list(group_name)
+        names = [name for name in names if name]
+        if not names:
+            return list(range(self.n_nodes))
+        found = [self.node_groups[name] for name in names if name in self.node_groups]
+        if len(found) == 1:
+            return [int(i) for i in found[0]]
+        return np.unique(np.concatenate(found)).tolist() if found else []
+
+    def getNodesFromCells(self, group_name, localNumbering=True, same_rank=None) -> list[int]:  # noqa: N802, N803
+        """The sorted nodes (from 0) of the cells of groups of cells."""
+        names = [group_name] if isinstance(group_name, str) else list(group_name)
+        cells = [self.cell_groups[name] for name in names if name in self.cell_groups]
+        if not cells:
+            return []
+        nodes = {n for cell in np.unique(np.concatenate(cells)) for n in self.cell_nodes[cell]}
+        return sorted(int(n) for n in nodes)
+
+    def getCoordinates(self) -> MeshCoordinates:  # noqa: N802
+        """The nodes' coordinates, three per node as code_aster keeps them."""
+        xyz = np.zeros((self.n_nodes, 3))
+        xyz[:, : self.coords.shape[1]] = self.coords
+        return MeshCoordinates(xyz)
+
     def hasGroupOfNodes(self, name, local=False) -> bool:  # noqa: N802
         return name in self.node_groups
 
@@ -248,3 +279,24 @@ class CellConstantField(Concept):
     field_type: str
     components: tuple[str, ...]
     values: dict[int, tuple[float, ...]]
+
+
+class MeshCoordinates:
+    """code_aster's MeshCoordinatesField as a deck reads it: (x, y, z) per node,
+    a copy (changing the mesh's geometry goes through MODI_MAILLAGE)."""
+
+    deck_methods = frozenset({"getValues", "toNumpy", "size"})
+
+    def __init__(self, xyz: np.ndarray):
+        self._xyz = xyz
+
+    def getValues(self) -> list[float]:  # noqa: N802 - code_aster's name
+        """x1, y1, z1, x2, ... as a list."""
+        return self._xyz.ravel().tolist()
+
+    def toNumpy(self) -> np.ndarray:  # noqa: N802
+        """The (number of nodes, 3) array."""
+        return self._xyz.copy()
+
+    def size(self) -> int:
+        return self._xyz.size

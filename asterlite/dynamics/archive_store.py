@@ -43,13 +43,15 @@ CHUNK_BYTES = 16 * 1024**2
 
 def memory_budget(given: int | None) -> int:
     """Bytes an archive may hold in memory: ``given`` (SchemeOptions'
-    ``max_archive_bytes``), else its share of the run's memory limit, else
+    ``max_archive_bytes``), else its share of what the run may still add
+    before its memory limit (the results it holds already count: a deck of
+    many transients does not get the whole limit for each), else
     :data:`UNLIMITED_RUN_BYTES`."""
     if given:
         return int(given)
-    limit = watchdog.memory_limit_mb()
-    if limit is not None:
-        return int(ARCHIVE_MEMORY_SHARE * limit * watchdog.MEGABYTE)
+    headroom = watchdog.memory_headroom()
+    if headroom is not None:
+        return int(ARCHIVE_MEMORY_SHARE * headroom)
     return UNLIMITED_RUN_BYTES
 
 

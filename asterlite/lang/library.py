@@ -27,6 +27,21 @@ DIRECT = "direct"  # Unknown result when an argument itself is Unknown (len, lis
 DEEP = "deep"  # Unknown result when Unknown appears anywhere in the arguments (math, numpy)
 
 
+def _is_array(value) -> bool:
+    np = sys.modules.get("numpy")  # a deck that made an array imported it
+    return np is not None and isinstance(value, np.ndarray)
+
+
+def _one_element_arrays_as_scalars(args):
+    """int(), float() and complex() of a one-element array of any shape give
+    its element, as numpy 1 did (numpy 2 takes 0-dimensional arrays only):
+    decks written for code_aster index arrays as ``A[i]`` of an (n, 1) array
+    and convert the result."""
+    return tuple(
+        arg.item() if _is_array(arg) and arg.ndim and arg.size == 1 else arg for arg in args
+    )
+
+
 def _policy(policy: str):
     def mark(function):
         function.deck_unknown_policy = policy
@@ -95,11 +110,18 @@ def _make_builtins(limits: Limits) -> dict:
         if len(args) > 1 or "base" in kwargs:
             base = args[1] if len(args) > 1 else kwargs["base"]
             guards.check_int_text(args[0] if args else kwargs.get("x", ""), base, limits)
-        return int(*args, **kwargs)
+        return int(*_one_element_arrays_as_scalars(args), **kwargs)
+
+    def deck_float(*args):
+        return float(*_one_element_arrays_as_scalars(args))
+
+    def deck_complex(*args, **kwargs):
+        return complex(*_one_element_arrays_as_scalars(args), **kwargs)
 
     deck_range.__name__, deck_sum.__name__, deck_pow.__name__ = "range", "sum", "pow"
-    deck_int.__name__ = "int"
-    deck_int.numpy_type = int  # np.zeros(3, dtype=int) still means Python's int
+    deck_int.__name__, deck_float.__name__, deck_complex.__name__ = "int", "float", "complex"
+    # np.zeros(3, dtype=int) still means Python's int
+    deck_int.numpy_type, deck_float.numpy_type, deck_complex.numpy_type = int, float, complex
     deck_set.__name__, deck_dict.__name__ = "set", "dict"
     return {
         "abs": abs,
@@ -118,8 +140,8 @@ def _make_builtins(limits: Limits) -> dict:
         "dict": deck_dict,
         "set": deck_set,
         "int": deck_int,
-        "float": float,
-        "complex": complex,
+        "float": deck_float,
+        "complex": deck_complex,
         "str": as_text(str),
         "bool": bool,
         "round": round,

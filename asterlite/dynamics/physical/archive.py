@@ -7,19 +7,18 @@ from pathlib import Path
 import numpy as np
 
 from asterlite import watchdog
+from asterlite.dynamics.archive_store import memory_budget
 from asterlite.io.disk_rows import DiskRows
-
-# share of the run's memory limit past which a transient's archive (reduced
-# states and expanded fields) is kept on disk
-ARCHIVE_MEMORY_SHARE = 0.25
 
 
 def archive_on_disk(n_rows: int, n_free: int, n_dofs: int) -> bool:
     """Whether an archive of ``n_rows`` states goes to disk: under a memory
-    limit, when its states and fields would take more than its share."""
-    limit = watchdog.memory_limit_mb()
+    limit, when its states and fields would take more than an archive's
+    share of the run's headroom (asterlite.dynamics.archive_store)."""
+    if watchdog.memory_limit_mb() is None:
+        return False
     size = 3 * n_rows * (n_free + n_dofs) * 8
-    return limit is not None and size > ARCHIVE_MEMORY_SHARE * limit * watchdog.MEGABYTE
+    return size > memory_budget(None)
 
 
 class Archive:
