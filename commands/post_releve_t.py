@@ -93,9 +93,7 @@ def extraction(ctx, occ) -> list[tuple[dict, dict]]:
         for j, node in enumerate(nodes):
             row = {**labels, **step, "NOEUD": node_number(mesh, node)}
             row.update({a: float(mesh.coords[node, i]) for i, a in enumerate(axes)})
-            row.update(
-                {c: float(values[k, j, i]) for i, c in enumerate(comps) if not absent[j, i]}
-            )
+            row.update({c: float(values[k, j, i]) for i, c in enumerate(comps) if not absent[j, i]})
             rows.append((row, COLUMN_TYPES))
     return rows
 
