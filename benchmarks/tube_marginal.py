@@ -22,7 +22,9 @@ floor for 10^4 and 10^4 + STEPS steps, each in a fresh process under
 callgrind after one warm-up run of each (kernels compiled once for the
 processor valgrind presents: without AVX-512, the code differs from the
 native one, the same way for both). Slow (50-100x): 10^5 steps take
-minutes. NUMBA_CPU_NAME / NUMBA_CPU_FEATURES, when set, apply to both.
+minutes. With NUMBA_CPU_NAME=generic (SSE2 code, valgrind runs it) the
+native warm-up runs compile the kernels valgrind then loads from the cache:
+no compilation under valgrind.
 
 Run: python benchmarks/tube_marginal.py [--extra-steps 1000000] [--repeats 5]
      [--scheme NEWMARK] [--keep DIR] [--instructions 100000]
@@ -164,13 +166,18 @@ def count_instructions(folder: Path, scheme: str, extra: int) -> None:
     python = [sys.executable]
     run = [*python, "-m", "asterlite", "run"]
     run_deck(decks[0], folder / "warmup")  # natively: the outputs are checked here
-    counts, steps = [], []
-    for k, deck in enumerate([decks[0], *decks]):  # the first: warm-up (kernels compiled)
+    # NUMBA_CPU_NAME set (generic): the native runs compiled the kernels valgrind loads
+    warm = 0 if os.environ.get("NUMBA_CPU_NAME") else 1
+    floor_script = FLOOR_SCRIPT.format(here=str(HERE), scheme=scheme, steps=100, dt=DT)
+    subprocess.run([sys.executable, "-c", floor_script], check=True)
+    counts, steps = [0] * (1 - warm), [0] * (1 - warm)
+    for k, deck in enumerate([decks[0]] * warm + decks, start=1 - warm):
         out = folder / f"instr{k}"
         counts.append(instructions([*run, str(deck), "-o", str(out)], folder / f"cg{k}.out"))
         steps.append(int(json.loads((out / "summary.json").read_text())["transients"][0]["steps"]))
-    floor = []
-    for k, n in enumerate((FLOOR_BASE, FLOOR_BASE, FLOOR_BASE + extra)):  # the first: warm-up
+    floor = [0] * (1 - warm)
+    lengths = (FLOOR_BASE, FLOOR_BASE, FLOOR_BASE + extra)[1 - warm :]  # the first: warm-up
+    for k, n in enumerate(lengths, start=1 - warm):
         script = FLOOR_SCRIPT.format(here=str(HERE), scheme=scheme, steps=n, dt=DT)
         floor.append(instructions([*python, "-c", script], folder / f"floor{k}.out"))
     whole = (counts[2] - counts[1]) / (steps[2] - steps[1])
