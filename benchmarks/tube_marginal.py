@@ -173,7 +173,10 @@ def count_instructions(folder: Path, scheme: str, extra: int) -> None:
     counts, steps = [0] * (1 - warm), [0] * (1 - warm)
     for k, deck in enumerate([decks[0]] * warm + decks, start=1 - warm):
         out = folder / f"instr{k}"
-        counts.append(instructions([*run, str(deck), "-o", str(out)], folder / f"cg{k}.out"))
+        # --memory-limit 0: no CPU-time timer (every 10 ms of CPU with a memory limit), whose
+        # Python handler would add instructions in proportion to valgrind's CPU time
+        command = [*run, str(deck), "-o", str(out), "--memory-limit", "0"]
+        counts.append(instructions(command, folder / f"cg{k}.out"))
         steps.append(int(json.loads((out / "summary.json").read_text())["transients"][0]["steps"]))
     floor = [0] * (1 - warm)
     lengths = (FLOOR_BASE, FLOOR_BASE, FLOOR_BASE + extra)[1 - warm :]  # the first: warm-up
