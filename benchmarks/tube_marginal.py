@@ -15,8 +15,19 @@ period) runs in this process between them for the ratio.
 = PAS_MAXI = PAS for the adaptive family, so that both lengths take the
 grid's steps).
 
+``--instructions STEPS``: instead of seconds, count the instructions the
+processes execute (valgrind's callgrind, the same count whatever the load of
+the machine): the deck to INST_FIN = 0.5 s and 0.5 s + STEPS steps, and the
+floor for 10^4 and 10^4 + STEPS steps, each in a fresh process under
+callgrind after one warm-up run of each (kernels compiled once for the
+processor valgrind presents: without AVX-512, the code differs from the
+native one, the same way for both). Slow (50-100x): 10^5 steps take
+minutes. With NUMBA_CPU_NAME=generic (SSE2 code, valgrind runs it) the
+native warm-up runs compile the kernels valgrind then loads from the cache:
+no compilation under valgrind.
+
 Run: python benchmarks/tube_marginal.py [--extra-steps 1000000] [--repeats 5]
-     [--scheme NEWMARK] [--keep DIR]
+     [--scheme NEWMARK] [--keep DIR] [--instructions 100000]
 """
 
 from __future__ import annotations
@@ -120,6 +131,66 @@ def floor_seconds(steps: int, scheme: str = "DIFF_CENTRE") -> tuple[float, float
     return best[0], best[1]
 
 
+FLOOR_SCRIPT = """
+import sys
+sys.path.insert(0, {here!r})
+import tube_model as T
+problem = T.tube_problem()
+if {scheme!r} == "DIFF_CENTRE":
+    import tube_floor
+    tube_floor.run_floor(problem, {steps}, {dt!r}, 10)
+else:
+    import scheme_floors
+    scheme_floors.run_floor({scheme!r}, problem, {steps}, {dt!r})
+"""
+FLOOR_BASE = 10_000  # steps of the floor's shorter count
+TOTALS = re.compile(r"^(?:totals|summary):\s+(\d+)", re.MULTILINE)
+
+
+def instructions(command: list[str], out_file: Path) -> int:
+    """Instructions executed by ``command`` (all its threads), callgrind's count."""
+    env = dict(os.environ, PYTHONHASHSEED="0")
+    subprocess.run(
+        ["valgrind", "--tool=callgrind", f"--callgrind-out-file={out_file}", *command],
+        check=True,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        env=env,
+    )
+    return int(TOTALS.findall(out_file.read_text())[-1])
+
+
+def count_instructions(folder: Path, scheme: str, extra: int) -> None:
+    """Marginal instructions per step of the whole run and of the floor."""
+    decks = [write_deck(folder, t, scheme) for t in (BASE_END, BASE_END + extra * DT)]
+    python = [sys.executable]
+    run = [*python, "-m", "asterlite", "run"]
+    run_deck(decks[0], folder / "warmup")  # natively: the outputs are checked here
+    # NUMBA_CPU_NAME set (generic): the native runs compiled the kernels valgrind loads
+    warm = 0 if os.environ.get("NUMBA_CPU_NAME") else 1
+    floor_script = FLOOR_SCRIPT.format(here=str(HERE), scheme=scheme, steps=100, dt=DT)
+    subprocess.run([sys.executable, "-c", floor_script], check=True)
+    counts, steps = [0] * (1 - warm), [0] * (1 - warm)
+    for k, deck in enumerate([decks[0]] * warm + decks, start=1 - warm):
+        out = folder / f"instr{k}"
+        # --memory-limit 0: no CPU-time timer (every 10 ms of CPU with a memory limit), whose
+        # Python handler would add instructions in proportion to valgrind's CPU time
+        command = [*run, str(deck), "-o", str(out), "--memory-limit", "0"]
+        counts.append(instructions(command, folder / f"cg{k}.out"))
+        steps.append(int(json.loads((out / "summary.json").read_text())["transients"][0]["steps"]))
+    floor = [0] * (1 - warm)
+    lengths = (FLOOR_BASE, FLOOR_BASE, FLOOR_BASE + extra)[1 - warm :]  # the first: warm-up
+    for k, n in enumerate(lengths, start=1 - warm):
+        script = FLOOR_SCRIPT.format(here=str(HERE), scheme=scheme, steps=n, dt=DT)
+        floor.append(instructions([*python, "-c", script], folder / f"floor{k}.out"))
+    whole = (counts[2] - counts[1]) / (steps[2] - steps[1])
+    own = (floor[2] - floor[1]) / extra
+    print(f"tube deck, {scheme}, PAS={DT:g}, PAS_ARCH=10, instructions (callgrind)")
+    print(f"  runs: {steps[1]} and {steps[2]} steps: {counts[1]:,} and {counts[2]:,}")
+    print(f"  floor: {FLOOR_BASE} and {FLOOR_BASE + extra} steps: {floor[1]:,} and {floor[2]:,}")
+    print(f"  marginal: {whole:,.0f} instructions/step, floor {own:,.0f}: ratio {whole / own:.2f}x")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--extra-steps", type=int, default=1_000_000)
@@ -127,9 +198,17 @@ def main() -> None:
     parser.add_argument("--scheme", default="DIFF_CENTRE")
     parser.add_argument("--keep", help="folder for the decks and outputs (default: temporary)")
     parser.add_argument("--no-floor", action="store_true")
+    parser.add_argument(
+        "--instructions", type=int, metavar="STEPS", help="count instructions (callgrind)"
+    )
     args = parser.parse_args()
     folder = Path(args.keep or tempfile.mkdtemp(prefix="tube_marginal_"))
     folder.mkdir(parents=True, exist_ok=True)
+    if args.instructions:
+        count_instructions(folder, args.scheme, args.instructions)
+        if not args.keep:
+            shutil.rmtree(folder, ignore_errors=True)
+        return
     long_end = BASE_END + args.extra_steps * DT
     decks = [write_deck(folder, t, args.scheme) for t in (BASE_END, long_end)]
     run_deck(decks[0], folder / "warmup")  # compiled kernels loaded once

@@ -75,15 +75,16 @@ def run(ctx, kw):
     for name, type_code in columns.items():
         table.add_column(name, type_code)
     by_name = tables_name_nodes(ctx.session)  # code_aster 15 decks: nodes by name
+    t = result.times[window]
+    weights = stats.trapezoid_weights(t) if option == "IMPACT" else None  # shared
     for number, shock in enumerate(result.shocks, start=1):
         mesh = shock_mesh(result, shock)
         labels = {"INTITULE": shock.name, "NOEUD": node_number(mesh, shock.node_1, by_name)}
-        t = result.times[window]
         fields = windowed(shock.fields, window)
         if "FN" not in fields:
             ctx.error(f"shock {shock.name} has no archived normal force FN", "RESU_GENE", kw)
         if option == "IMPACT":
-            impact_rows(table, labels, t, fields, occ)
+            impact_rows(table, labels, t, fields, occ, weights)
             buckling_rows(table, labels, shock, number, result.times, mesh, by_name)
         else:
             wear_rows(table, labels, t, fields, occ)
@@ -264,25 +265,29 @@ def window_of(fields, name: str, window):
     return lambda: np.asarray(fields[name])[window]
 
 
-def impact_rows(table, labels, t, fields, occ) -> None:
-    vn = fields.get("VN", np.zeros_like(t))
+def impact_rows(table, labels, t, fields, occ, weights=None) -> None:
+    vn = fields["VN"] if "VN" in fields else np.zeros_like(t)
     summary = stats.detect_impacts(
-        t, fields["FN"], vn, float(occ.get("SEUIL_FORCE", 0.0)), float(occ.get("DUREE_REPOS", 0.0))
+        t,
+        fields["FN"],
+        vn,
+        float(occ.get("SEUIL_FORCE", 0.0)),
+        float(occ.get("DUREE_REPOS", 0.0)),
+        weights,
     )
-    for impact in summary.impacts:
-        table.add_row(
-            {
-                **labels,
-                "CALCUL": "IMPACT",
-                "CHOC": impact.number,
-                "INSTANT": impact.instant,
-                "F_MAX": impact.f_max,
-                "IMPULSION": impact.impulse,
-                "T_CHOC": impact.duration,
-                "V_IMPACT": impact.v_impact,
-                "NB_IMPACT": impact.n_sub_impacts,
-            }
-        )
+    impacts = summary.columns
+    table.add_rows(
+        {**labels, "CALCUL": "IMPACT"},
+        {
+            "CHOC": impacts["number"],
+            "INSTANT": impacts["instant"],
+            "F_MAX": impacts["f_max"],
+            "IMPULSION": impacts["impulse"],
+            "T_CHOC": impacts["duration"],
+            "V_IMPACT": impacts["v_impact"],
+            "NB_IMPACT": impacts["n_sub_impacts"],
+        },
+    )
     table.add_row(
         {
             **labels,

@@ -15,7 +15,7 @@ from asterlite.post import shocks
 
 def sample_by_sample(t, fn, vn, threshold=0.0, rest_time=0.0):
     """The definition, one sample after the other (the former implementation)."""
-    weights = shocks._trapezoid_weights(t)
+    weights = shocks.trapezoid_weights(t)
     in_contact = np.abs(fn) > threshold
     look_ahead = shocks._rest_samples(t, rest_time)
     impacts, peaks = [], []

@@ -91,6 +91,32 @@ class Table(Concept):
             row[name] = COERCIONS.get(code, str)(value)
         self.rows.append(row)
 
+    def add_rows(self, common: dict[str, Any], columns: dict[str, list]) -> None:
+        """Rows holding ``common``'s values, then the k-th value of each list of
+        ``columns`` (lists of one length, no None): what ``add_row`` of each
+        would make, coerced column by column (a table of impacts has thousands
+        of rows)."""
+        if not columns or not len(next(iter(columns.values()))):
+            return  # no row, as add_row of none
+        if set(common) & set(columns) or any(None in values for values in columns.values()):
+            for cells in zip(*columns.values(), strict=True):
+                self.add_row({**common, **dict(zip(columns, cells, strict=True))})
+            return
+        for name, values in {**common, **columns}.items():
+            if name not in self.types and values is not None:
+                self.add_column(name, infer_type(values[0] if name in columns else values))
+        shared = {
+            k: COERCIONS.get(self.types[k], str)(v) for k, v in common.items() if v is not None
+        }
+        names = (*shared, *columns)
+        coerced = []
+        for name, values in columns.items():
+            coerce = COERCIONS.get(self.types[name], str)
+            coerced.append(values if _already(values, coerce) else [coerce(v) for v in values])
+        head = tuple(shared.values())
+        for cells in zip(*coerced, strict=True):
+            self.rows.append(dict(zip(names, head + cells, strict=True)))
+
     @classmethod
     def from_columns(cls, data: dict[str, list], types: dict[str, str] | None = None) -> Table:
         table = cls()
@@ -177,6 +203,12 @@ class Table(Concept):
 
     def getParameters(self):  # noqa: N802
         return list(self.columns)
+
+
+def _already(values: list, coerce) -> bool:
+    """Whether every value is already of the type ``coerce`` makes (a float
+    list for ``float``...): its coercion would change nothing."""
+    return set(map(type, values)) <= {coerce}
 
 
 def _base_type(type_code: str) -> str:

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
+from itertools import groupby
+from operator import itemgetter
 
 import numpy as np
 
@@ -58,6 +60,14 @@ def table_lines(table, columns: Iterable[str] | None = None, title: str = "", re
     value."""
     columns = list(columns or table.columns)
     rows = table.rows
+    fast = uniform_lines(rows, columns, table.types, real_format)
+    if fast is not None:
+        widths, body = fast
+        lines = ["#-" * 40]
+        if title:
+            lines.extend(f"#{t}" for t in title.splitlines())
+        lines.append(" ".join(c.ljust(w) for c, w in zip(columns, widths, strict=True)).rstrip())
+        return lines + body
     by_column = [
         column_cells([row.get(c) for row in rows], table.types[c], real_format) for c in columns
     ]
@@ -76,6 +86,83 @@ def table_lines(table, columns: Iterable[str] | None = None, title: str = "", re
     line = " ".join(f"{{:<{w}}}" for w in widths).format
     lines.extend(line(*cells).rstrip() for cells in zip(*by_column, strict=True))
     return lines
+
+
+#: exponents of two digits: |x| in [1e-98, 9e99] or 0 (a margin for the rounding)
+TWO_DIGIT_EXPONENT = (1.0e-98, 9.0e99)
+
+
+def uniform_lines(rows, columns, types, real_format="E12.5"):
+    """(widths, lines) of the rows of a table as :func:`table_lines` writes
+    them, one ``%`` format per run of rows holding the same parameters
+    (POST_DYNA_MODA_T's thousands of IMPACT rows are one run); None when a
+    cell is outside what such a format writes identically (complex cells, a
+    reals format other than E/D, a real of three exponent digits or not
+    finite, a value not of its column's type, a row holding None, no
+    column): the caller then formats cell by cell."""
+    kind = real_format[0].upper()
+    width_text, _, digits_text = real_format[1:].partition(".")
+    real_width, digits = int(width_text or 12), int(digits_text or 5)
+    if kind not in "ED" or digits + 7 > real_width or not columns:
+        return None  # a real's text is then not always real_width long
+    position = {c: i for i, c in enumerate(columns)}
+    widths = [len(c) for c in columns]
+    runs = []  # (indices of the columns a run holds, its rows' values)
+    for keys, members in groupby(rows, key=tuple):
+        shown = sorted(position[k] for k in keys if k in position)
+        names = [columns[i] for i in shown]
+        if list(keys) == names:
+            values = [tuple(row.values()) for row in members]
+        elif len(names) == 1:
+            values = [(row[names[0]],) for row in members]
+        else:
+            pick = itemgetter(*names)
+            values = [pick(row) for row in members] if names else [() for _ in members]
+        for i, cells in zip(shown, zip(*values, strict=True), strict=True):
+            width = cell_width(cells, types[columns[i]], real_width)
+            if width is None:
+                return None
+            widths[i] = max(widths[i], width)
+        if len(shown) < len(columns):  # a '-' somewhere
+            for i in set(range(len(columns))) - set(shown):
+                widths[i] = max(widths[i], 1)
+        runs.append((shown, values))
+    body = []
+    for shown, values in runs:
+        held = set(shown)
+        parts = []
+        for i, (name, width) in enumerate(zip(columns, widths, strict=True)):
+            code = types[name]
+            if i not in held:
+                parts.append("-".ljust(width))
+            elif code == "R":
+                parts.append(f"%{real_width}.{digits}E" + " " * (width - real_width))
+            else:
+                parts.append(f"%-{width}{'d' if code == 'I' else 's'}")
+        line = " ".join(parts)
+        body.extend((line % cells).rstrip() for cells in values)
+    return widths, body
+
+
+def cell_width(cells, type_code, real_width):
+    """The widest text of a column's cells under a ``%`` format of its type,
+    None when a cell needs the cell-by-cell path."""
+    kinds = set(map(type, cells))
+    if type_code == "R":
+        if kinds != {float}:
+            return None
+        size = np.abs(np.array(cells))
+        low, high = TWO_DIGIT_EXPONENT
+        if not np.all((size == 0.0) | ((size >= low) & (size <= high))):
+            return None  # not finite, or three exponent digits
+        return real_width
+    if type_code == "I":
+        if kinds != {int}:
+            return None
+        return max(len(str(min(cells))), len(str(max(cells))))
+    if type_code == "C" or kinds != {str}:
+        return None
+    return max(map(len, cells))
 
 
 def table_csv_lines(table, columns: Iterable[str] | None = None, separator: str = ","):

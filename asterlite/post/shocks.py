@@ -39,23 +39,42 @@ class Impact:
     n_sub_impacts: int
 
 
+#: the figures of an impact, in the order of :class:`Impact`'s fields
+IMPACT_FIELDS = (
+    "number", "instant", "f_max", "impulse", "duration", "v_impact", "n_sub_impacts",
+)  # fmt: skip
+
+
 @dataclass
 class ImpactSummary:
-    impacts: list[Impact] = field(default_factory=list)
+    # the impacts' figures as columns: {field of Impact: list of Python numbers}
+    columns: dict[str, list] = field(default_factory=lambda: {k: [] for k in IMPACT_FIELDS})
     f_max_abs: float = 0.0
     f_max_mean: float = 0.0
     f_max_std: float = 0.0
     # F_MAX of each completed impact (the histogram's sample)
     peaks: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
+    @property
+    def impacts(self) -> list[Impact]:
+        """One :class:`Impact` per row of ``columns``."""
+        return [Impact(*row) for row in zip(*self.columns.values(), strict=True)]
 
-def _trapezoid_weights(t: np.ndarray) -> np.ndarray:
-    """Quadrature weights of the trapezoid rule on (possibly uneven) samples."""
+    def append(self, impact: Impact) -> None:
+        for name in IMPACT_FIELDS:
+            self.columns[name].append(getattr(impact, name))
+
+
+def trapezoid_weights(t: np.ndarray) -> np.ndarray:
+    """Quadrature weights of the trapezoid rule on (possibly uneven) samples:
+    w_i = dt_i / 2 + dt_(i-1) / 2 (dt_i = t_(i+1) - t_i), one half-step at
+    either end."""
+    t = np.asarray(t, dtype=float)
     w = np.zeros_like(t)
     if t.size > 1:
-        dt = np.diff(t)
-        w[:-1] += dt / 2
-        w[1:] += dt / 2
+        half = np.diff(t) / 2
+        w[0], w[-1] = half[0], half[-1]
+        np.add(half[1:], half[:-1], out=w[1:-1])
     return w
 
 
@@ -77,7 +96,12 @@ def contact_runs(in_contact: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def detect_impacts(
-    t: np.ndarray, fn: np.ndarray, vn: np.ndarray, threshold: float = 0.0, rest_time: float = 0.0
+    t: np.ndarray,
+    fn: np.ndarray,
+    vn: np.ndarray,
+    threshold: float = 0.0,
+    rest_time: float = 0.0,
+    weights: np.ndarray | None = None,
 ) -> ImpactSummary:
     """Global impacts of one shock history (OPTION='IMPACT').
 
@@ -88,14 +112,16 @@ def detect_impacts(
     reaching the last sample leaves its impact open. The figures are those
     of a pass over the samples in order (tests/test_post_shocks_runs.py):
     the impulse adds F_N w_i one sample after the other from 0, F_MAX is
-    the running maximum from 0 (taken at the last sample reaching it)."""
+    the running maximum from 0 (taken at the last sample reaching it).
+    ``weights``: the trapezoid weights of ``t`` when the caller has them
+    (shocks of one result share their instants)."""
     t, fn, vn = (np.asarray(a, dtype=float) for a in (t, fn, vn))
     n = t.size
     in_contact = np.abs(fn) > threshold
     summary = ImpactSummary()
     starts, stops = contact_runs(in_contact)
     if starts.size == 0:  # code_aster still writes one row (impact 0)
-        summary.impacts.append(Impact(0, 0.0, 0.0, 0.0, 0.0, 0.0, 0))
+        summary.append(Impact(0, 0.0, 0.0, 0.0, 0.0, 0.0, 0))
         return summary
     look_ahead = _rest_samples(t, rest_time)
     next_starts = np.append(starts[1:], n)
@@ -107,16 +133,18 @@ def detect_impacts(
     begin, end = starts[first_run], stops[last_run]
     force = np.where(in_contact, fn, -np.inf)
     f_max, t_max = impact_peaks(t, force, begin, end)
-    impulse = sequential_sums(np.where(in_contact, fn * _trapezoid_weights(t), 0.0), begin, end)
+    weights = trapezoid_weights(t) if weights is None else weights
+    contact_impulse = np.multiply(fn, weights, out=np.zeros(n), where=in_contact)
+    impulse = sequential_sums(contact_impulse, begin, end)
     closed = int(closing[-1]) + last_run.size - 1  # completed impacts come first
     durations = t[np.minimum(end, n - 1)] - t[begin]
     f_max_list, t_max_list, impulse_list = f_max.tolist(), t_max.tolist(), impulse.tolist()
     v_start, durations, n_sub = vn[begin].tolist(), durations.tolist(), last_run - first_run + 1
-    for k in range(closed):
-        summary.impacts.append(
-            Impact(k + 1, t_max_list[k], f_max_list[k], impulse_list[k], durations[k],
-                   v_start[k], int(n_sub[k]))
-        )  # fmt: skip
+    summary.columns = dict(
+        zip(IMPACT_FIELDS, (list(range(1, closed + 1)), t_max_list[:closed], f_max_list[:closed],
+            impulse_list[:closed], durations[:closed], v_start[:closed], n_sub[:closed].tolist()),
+            strict=True)
+    )  # fmt: skip
     largest = float(f_max.max())
     summary.f_max_abs = largest if largest > 0.0 else 0.0
     if closed:
@@ -127,8 +155,8 @@ def detect_impacts(
     else:
         # no completed impact: code_aster still writes one row (impact 0), with
         # the figures of the impact still open, and an empty histogram
-        summary.impacts.append(Impact(0, t_max_list[-1], f_max_list[-1], impulse_list[-1], 0.0,
-                                      v_start[-1], 0))  # fmt: skip
+        summary.append(Impact(0, t_max_list[-1], f_max_list[-1], impulse_list[-1], 0.0,
+                              v_start[-1], 0))  # fmt: skip
     return summary
 
 

@@ -90,17 +90,24 @@ def shock_summary(result: str | None, times, shock) -> dict:
     from asterlite.post.wear import history_wear_power
 
     fields = shock.fields
-    fn = np.asarray(fields.get("FN", np.zeros(len(times))), dtype=float)
-    in_contact = fn != 0.0
-    # an impact starts where the archived normal force leaves zero
-    impacts = int(in_contact[0]) + int(np.count_nonzero(in_contact[1:] & ~in_contact[:-1]))
+    fn = np.asarray(fields["FN"] if "FN" in fields else np.zeros(len(times)), dtype=float)
+    if not fn.size:
+        figures = {"impacts": 0, "max_FN": 0.0, "mean_FN": 0.0, "contact_fraction": 0.0}
+    else:
+        in_contact = fn != 0.0
+        magnitude = np.abs(fn)
+        # an impact starts where the archived normal force leaves zero
+        starts = int(in_contact[0]) + int(np.count_nonzero(in_contact[1:] > in_contact[:-1]))
+        figures = {
+            "impacts": starts,
+            "max_FN": float(magnitude.max()),
+            "mean_FN": float(magnitude.mean()),
+            "contact_fraction": float(np.mean(in_contact)),
+        }
     return {
         "result": result,
         "shock": shock.name,
-        "impacts": impacts if fn.size else 0,
-        "max_FN": float(np.abs(fn).max()) if fn.size else 0.0,
-        "mean_FN": float(np.abs(fn).mean()) if fn.size else 0.0,
-        "contact_fraction": float(np.mean(fn != 0.0)) if fn.size else 0.0,
+        **figures,
         "wear_power": history_wear_power(times, fields),
     }
 
