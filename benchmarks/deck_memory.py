@@ -6,9 +6,11 @@ resident memory the run adds to what the process held when it started
 process, with the limits lifted, while a thread samples the resident size
 every 2 ms and notes the command and the innermost asterlite function the
 main thread is in at the highest sample, overall and per command. Prints,
-per deck: the start-up resident size, the peak above it (the figure the
-limit compares), the process's VmHWM, where the peak was, the run's status
-and checks, and each command's highest sample above the start-up size.
+per deck: the start-up resident size, the peak above it, the same peak less
+what loading or compiling kernels kept (``counted_peak_mb``: the figure the
+limit compares, before the watchdog's trimming of freed memory), the
+process's VmHWM, where the peak was, the run's status and checks, and each
+command's highest sample above the start-up size.
 
 With ``--all DIR...`` every deck folder of each corpus folder runs under its
 export's own memory limit (so that an archive goes to disk past a quarter of
@@ -76,9 +78,15 @@ def where():
 
 by_command = {}
 
+kernels_at_start = watchdog._compiling.resident
+counted = {"bytes": 0}
+
 def sample():
     while not done.is_set():
         size = resident()
+        # what loading or compiling kernels kept is the engine's, not the study's
+        kept = watchdog._compiling.resident - kernels_at_start
+        counted["bytes"] = max(counted["bytes"], size - kept)
         here = where()
         command = here.split(":")[0] or "-"
         if size > by_command.get(command, (0, ""))[0]:
@@ -99,6 +107,8 @@ print(json.dumps({
     "start_mb": start / 2**20,
     "peak_above_start_mb": (peak["bytes"] - start) / 2**20,
     "vmhwm_mb": high_water_mark() / 2**20,
+    "counted_peak_mb": (counted["bytes"] - start) / 2**20,
+    "kernels_kept_mb": (watchdog._compiling.resident - kernels_at_start) / 2**20,
     "peak_at": peak["where"],
     "status": report.status,
     "message": (report.message or "")[:300] if report.status not in ("PASS", "OK") else "",
@@ -182,6 +192,26 @@ def summarise(results: list[dict], worst: int = 15) -> dict:
     }
 
 
+def markdown(results: list[dict]) -> str:
+    """A table of every measured deck, highest ratio first."""
+    lines = [
+        "| deck | limit MB | peak above start-up MB | peak / limit | status | where the peak was |",
+        "|---|---|---|---|---|---|",
+    ]
+    ranked = sorted(results, key=lambda r: -(r.get("ratio") or 0.0))
+    for r in ranked:
+        peak = r.get("peak_above_start_mb")
+        ratio = r.get("ratio")
+        corpus = r["corpus"].removeprefix("aster-corpus").lstrip("-") or "main"
+        lines.append(
+            f"| {corpus}/{r['deck']} | {r['limit_mb']:g} "
+            f"| {'-' if peak is None else f'{peak:.0f}'} "
+            f"| {'-' if ratio is None else f'{ratio:.2f}'} "
+            f"| {r.get('status')} | {r.get('peak_at', '').replace('|', '/')} |"
+        )
+    return "\n".join(lines)
+
+
 def walk(folders: list[Path], jsonl: Path, timeout: float | None) -> None:
     done = {(r["corpus"], r["deck"]) for r in read_results(jsonl)}
     jsonl.parent.mkdir(parents=True, exist_ok=True)
@@ -208,9 +238,11 @@ def main() -> None:
     parser.add_argument("--jsonl", type=Path, default=Path("deck_memory.jsonl"))
     parser.add_argument("--timeout", type=float, default=1800.0, help="seconds per deck")
     parser.add_argument("--summary", type=Path, help="only summarise this --jsonl file")
+    parser.add_argument("--markdown", action="store_true", help="with --summary: a table")
     args = parser.parse_args()
     if args.summary:
-        print(json.dumps(summarise(read_results(args.summary)), indent=1))
+        results = read_results(args.summary)
+        print(markdown(results) if args.markdown else json.dumps(summarise(results), indent=1))
         return
     if args.all:
         walk(args.all, args.jsonl, args.timeout)
