@@ -174,8 +174,9 @@ def summarise(results: list[dict], worst: int = 15) -> dict:
         "not_measured": [
             f"{r['corpus']}/{r['deck']} {r.get('status')}"
             for r in results
-            if r.get("ratio") is None
+            if r.get("peak_above_start_mb") is None
         ],
+        "without_limit": [f"{r['corpus']}/{r['deck']}" for r in results if not r["limit_mb"]],
         "above_half": len([r for r in measured if r["ratio"] > 0.5]),
         "above_limit": len([r for r in measured if r["ratio"] > 1.0]),
         "worst": [
@@ -203,8 +204,9 @@ def markdown(results: list[dict]) -> str:
         peak = r.get("peak_above_start_mb")
         ratio = r.get("ratio")
         corpus = r["corpus"].removeprefix("aster-corpus").lstrip("-") or "main"
+        limit = "none" if r["limit_mb"] is None else f"{r['limit_mb']:g}"
         lines.append(
-            f"| {corpus}/{r['deck']} | {r['limit_mb']:g} "
+            f"| {corpus}/{r['deck']} | {limit} "
             f"| {'-' if peak is None else f'{peak:.0f}'} "
             f"| {'-' if ratio is None else f'{ratio:.2f}'} "
             f"| {r.get('status')} | {r.get('peak_at', '').replace('|', '/')} |"
