@@ -23,6 +23,11 @@ asterlite does the same:
   resident memory is also sampled every 10 ms of CPU time while anything
   runs (the CPU-time timer below), which stops deck code at the limit.
 
+A run also fixes glibc's mapping threshold at 1 MB (``steady_allocator``):
+an array of that size or more is returned to the system when freed, so the
+resident size a command leaves is what it holds, not the high-water mark of
+its temporaries in the heap.
+
 numba's compilation of a kernel (once per install, cached afterwards) and
 its loading from the cache are not the study's work (code_aster does not
 count its own code either): the time they take is not counted and the cap is
@@ -140,6 +145,26 @@ def _trim_allocator() -> None:
         pass
 
 
+# glibc's mallopt parameter, and the size from which a block is mapped on its own
+M_MMAP_THRESHOLD = -3
+MAPPED_BLOCK_BYTES = 1 << 20
+
+
+def steady_allocator() -> None:
+    """Give arrays of 1 MB and more their own mappings, returned to the
+    system when freed. glibc's threshold for that starts at 128 kB and
+    rises to the size of each mapped block freed (up to 32 MB): after the
+    first large temporary is freed, the next ones come from the heap, whose
+    free space the system gets back only once its top is free, so the
+    resident size keeps the high-water mark of every command's temporaries
+    (a NEWMARK step's operator held 40 MB more). Setting the threshold fixes
+    it for the process (glibc has no way back to the rising one)."""
+    try:
+        ctypes.CDLL("libc.so.6").mallopt(M_MMAP_THRESHOLD, MAPPED_BLOCK_BYTES)
+    except (OSError, AttributeError):
+        pass
+
+
 def check_memory() -> None:
     """Raise MemoryLimitError when the resident memory has grown past the limit
     since the run started (checked where the time limit is)."""
@@ -186,6 +211,7 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
     numba unimported."""
     if compiles:
         _listen_to_compilation()
+    steady_allocator()
     _state.deadline = None if seconds is None else _spent() + seconds
     _state.seconds = seconds
     _state.memory_mb = megabytes

@@ -146,3 +146,32 @@ def test_complex_states_give_complex_stresses_and_summed_energies():
     for name in ("EPOT_ELEM", "ECIN_ELEM"):
         assert not np.iscomplexobj(both[name].values)
         assert np.allclose(both[name].values, parts[0][name].values + parts[1][name].values)
+
+
+def test_only_the_gauss_fields_asked_for_are_kept(monkeypatch):
+    """SIEF_ELGA alone allocates its own Gauss-point array, not those of the
+    strains and energy densities (each the size of the result times the
+    points), and gives the values it gives beside them, bit for bit."""
+    from asterlite.fem import solid_fields
+
+    mesh = box_mesh("HEXA20", (2, 2, 1), (1.0, 0.8, 1.2), jitter=0.2, seed=3)
+    model, field = solid_model(mesh)
+    numbering = _numbering(model, mesh)
+    gradient = np.array([[1e-3, 2e-4, 0.0], [-1e-4, -5e-4, 3e-4], [4e-4, 0.0, 2e-4]])
+    u = np.concatenate([_state(numbering, mesh, gradient), 2.0 * _state(numbering, mesh, gradient)])
+    cells = np.arange(mesh.n_cells)
+    every = ["SIEF_ELGA", "EPSI_ELGA", "ENEL_ELGA", "EPOT_ELEM"]
+    reference = solid_element_fields(model, field, numbering, cells, u, every)
+    shapes = []
+    full = np.full
+
+    def recording(shape, *args, **kwargs):
+        shapes.append(tuple(np.atleast_1d(shape)))
+        return full(shape, *args, **kwargs)
+
+    monkeypatch.setattr(solid_fields.np, "full", recording)
+    alone = solid_element_fields(model, field, numbering, cells, u, ["SIEF_ELGA"])
+    per_point = [shape for shape in shapes if len(shape) == 4 and shape[2] > 1]
+    assert per_point == [reference["SIEF_ELGA"].values.shape]
+    assert list(alone) == ["SIEF_ELGA"]
+    assert np.array_equal(alone["SIEF_ELGA"].values, reference["SIEF_ELGA"].values, equal_nan=True)

@@ -155,3 +155,21 @@ def test_format_and_print_do_not_reach_engine_internals(tmp_path, body, hidden):
     else:
         assert report.status == "DONE", report.message
         assert hidden not in log
+
+
+def test_a_run_maps_large_arrays_on_their_own(monkeypatch):
+    """A run fixes glibc's mapping threshold at 1 MB, so that the large
+    temporaries a command frees go back to the system at once."""
+    from asterlite import watchdog
+
+    calls = []
+
+    class FakeLibc:
+        def mallopt(self, parameter, value):
+            calls.append((parameter, value))
+            return 1
+
+    monkeypatch.setattr(watchdog.ctypes, "CDLL", lambda name: FakeLibc())
+    with watchdog.limits(None, None, compiles=False):
+        assert calls == [(watchdog.M_MMAP_THRESHOLD, 1 << 20)]
+    assert watchdog.M_MMAP_THRESHOLD == -3  # glibc's M_MMAP_THRESHOLD

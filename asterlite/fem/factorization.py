@@ -73,26 +73,40 @@ def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
     supernodal Cholesky (through cholespy) where the matrix is symmetric and
     the factorisation finds it positive definite, a fraction of SuperLU's
     fill on 3D meshes (docs/performance.md, "Memory"); SuperLU otherwise."""
-    matrix = sp.csc_matrix(matrix)
-    scale = abs(matrix).max() if matrix.nnz else 0.0
-    if (
-        matrix.shape[0]
-        and scale > 0.0
-        and abs(matrix - matrix.T).max() <= SYMMETRY_TOLERANCE * scale
-    ):
+    if not sp.issparse(matrix) or matrix.format not in ("csr", "csc"):
+        matrix = sp.csc_matrix(matrix)
+    matrix.sum_duplicates()  # canonical: sorted indices, one entry per position
+    scale = float(np.abs(matrix.data).max()) if matrix.nnz else 0.0
+    if matrix.shape[0] and scale > 0.0 and _asymmetry(matrix) <= SYMMETRY_TOLERANCE * scale:
         try:
-            return _cholmod_solver(matrix)
+            # CHOLMOD reads the lower triangle only (its symmetric storage):
+            # half a copy of the matrix beside its factor, not a whole one
+            return _cholmod_solver(sp.tril(matrix, format="csc"))
         except ValueError:  # not positive definite: LU with pivoting
             pass
-    return spla.splu(matrix).solve
+    return spla.splu(sp.csc_matrix(matrix)).solve
+
+
+def _asymmetry(matrix: sp.csc_matrix) -> float:
+    """max |A - Aᵀ|, with one temporary of the difference's size."""
+    difference = matrix - matrix.T
+    if not difference.nnz:
+        return 0.0
+    np.abs(difference.data, out=difference.data)
+    return float(difference.data.max())
 
 
 def _cholmod_solver(matrix: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarray]:
-    coo = matrix.tocoo()
+    # the CSC arrays as they are (32-bit indices, float64): no COO copy of the
+    # matrix is held beside CHOLMOD's own while it factorises
+    matrix.sum_duplicates()
     factor = CholeskySolverD(
-        matrix.shape[0], coo.row.astype(np.int32), coo.col.astype(np.int32),
-        coo.data.astype(np.float64), MatrixType.COO,
-    )  # fmt: skip
+        matrix.shape[0],
+        matrix.indptr.astype(np.int32, copy=False),
+        matrix.indices.astype(np.int32, copy=False),
+        matrix.data.astype(np.float64, copy=False),
+        MatrixType.CSC,
+    )
 
     def solve(rhs: np.ndarray) -> np.ndarray:
         rhs = np.ascontiguousarray(rhs, dtype=np.float64)

@@ -255,10 +255,14 @@ def solid_element_fields(
     max_points = max(tabulated(spec.reference, spec.rigi)[2].size for spec in specs.values())
     max_nodes = max(len(mesh.cell_nodes[c]) for c in cells)
     dtype = np.result_type(values, float)
+    # only the Gauss-point fields asked for or read by an asked ELNO field are
+    # kept: each is as large as the result's displacements times the points
+    wanted = set(names) | {_ELNO_SOURCE[name] for name in names if name in _ELNO_SOURCE}
+    widths = {"SIEF_ELGA": n_cmp, "EPSI_ELGA": n_cmp, "ENEL_ELGA": 1}
     gauss = {
-        "SIEF_ELGA": np.full((n_orders, len(cells), max_points, n_cmp), np.nan, dtype),
-        "EPSI_ELGA": np.full((n_orders, len(cells), max_points, n_cmp), np.nan, dtype),
-        "ENEL_ELGA": np.full((n_orders, len(cells), max_points, 1), np.nan, dtype),
+        name: np.full((n_orders, len(cells), max_points, width), np.nan, dtype)
+        for name, width in widths.items()
+        if name in wanted
     }
     nodal = {name: None for name in ELNO_FIELDS}
     elem = {name: np.full((n_orders, len(cells), 1, 1), np.nan, dtype) for name in ELEM_FIELDS}
@@ -281,9 +285,12 @@ def solid_element_fields(
             sig = _stresses(modelisation, eps, young, poisson, hooke)
             q = scale.shape[1]
             density_of_energy = 0.5 * np.einsum("oeqij,oeqij->oeq", sig, eps)
-            gauss["SIEF_ELGA"][o, rows, :q] = _components(sig, n_cmp)
-            gauss["EPSI_ELGA"][o, rows, :q] = _components(eps, n_cmp)
-            gauss["ENEL_ELGA"][o, rows, :q] = density_of_energy[..., None]
+            if "SIEF_ELGA" in gauss:
+                gauss["SIEF_ELGA"][o, rows, :q] = _components(sig, n_cmp)
+            if "EPSI_ELGA" in gauss:
+                gauss["EPSI_ELGA"][o, rows, :q] = _components(eps, n_cmp)
+            if "ENEL_ELGA" in gauss:
+                gauss["ENEL_ELGA"][o, rows, :q] = density_of_energy[..., None]
             elem["EPOT_ELEM"][o, rows, 0, 0] = np.einsum("oeq,eq->oe", density_of_energy, scale)
             del u, eps, sig, density_of_energy
             if "ECIN_ELEM" in names:
