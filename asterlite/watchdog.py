@@ -201,7 +201,8 @@ def memory_headroom() -> int | None:
     resident = _released_size()
     if resident is None:
         return None
-    return max(0, int(limit * MEGABYTE) - (resident - start))
+    cap = int(limit * MEGABYTE)  # memory freed since the start gives no more than the limit
+    return max(0, min(cap, cap - (resident - start)))
 
 
 @contextmanager
