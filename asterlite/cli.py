@@ -13,6 +13,8 @@ import argparse
 import atexit
 import gc
 import json
+import os
+import shlex
 import sys
 from pathlib import Path
 
@@ -41,6 +43,8 @@ def _run(args) -> int:
             print(error, file=sys.stderr)
             return 2
     output = Path(args.output) if args.output else Path("asterlite-out") / deck.stem
+    if (args.mpi or args.mpi_python) is not None and _select_mpi(args, output) is not None:
+        return 2
     try:
         report = run_deck(
             deck,
@@ -69,6 +73,25 @@ def _run(args) -> int:
     if args.report:
         _say_report(output)
     return report.exit_code
+
+
+def _select_mpi(args, output: Path) -> str | None:
+    """Select the PETSc/SLEPc modal solver across MPI ranks for this run
+    (asterlite.modal.slepc_mpi), or say on stderr why it cannot run."""
+    from asterlite.modal import slepc_mpi
+
+    if args.mpi is None:
+        print("asterlite run: --mpi-python needs --mpi LAUNCHER", file=sys.stderr)
+        return "--mpi-python without --mpi"
+    python = args.mpi_python or slepc_mpi.DEFAULT_PYTHON
+    problem = slepc_mpi.unavailable(shlex.split(args.mpi), python)
+    if problem is not None:
+        print(f"asterlite run: {problem}", file=sys.stderr)
+        return problem
+    os.environ[slepc_mpi.LAUNCHER_VARIABLE] = args.mpi
+    os.environ[slepc_mpi.PYTHON_VARIABLE] = python
+    os.environ[slepc_mpi.FOLDER_VARIABLE] = str(output.resolve())
+    return None
 
 
 def _status(args) -> int:
@@ -412,6 +435,18 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="write the export's R-line results at their own paths, as code_aster does "
         "(default: into the output folder; never over the deck, its inputs or the run's files)",
+    )
+    run.add_argument(
+        "--mpi",
+        metavar="LAUNCHER",
+        help="solve CALC_MODES on PETSc/SLEPc across MPI ranks started by LAUNCHER, "
+        "e.g. 'mpirun -n 4' or 'srun' (docs/large_models.md)",
+    )
+    run.add_argument(
+        "--mpi-python",
+        metavar="PYTHON",
+        help="the interpreter of the MPI ranks, with numpy, petsc4py, slepc4py and mpi4py "
+        "(default python3)",
     )
     previous = run.add_mutually_exclusive_group()
     previous.add_argument(

@@ -68,8 +68,10 @@ def run(ctx, kw):
         omega2, vecs = select_modes(pencil, option, freq, nmax or 10, _method(kw))
     except (EigenError, ConstraintError) as exc:
         ctx.error(str(exc), "OPTION", kw)
-    if pencil.last_solve:
-        how = pencil.last_solve
+    how = pencil.last_solve
+    if how and "summary" in how:  # a solver that describes itself (the MPI one)
+        ctx.log(f"{pencil.n} unknowns: {how['summary']}")
+    elif how:
         detail = f"{how['solves']} solves, basis of {how['dimension']}, " if "solves" in how else ""
         ctx.log(
             f"{pencil.n} unknowns: {how['method']} on a {how['backend'].upper()} "

@@ -35,7 +35,7 @@ import scipy.sparse.linalg as spla
 
 from asterlite.fem import sparse_direct
 from asterlite.fem.constraints import Elimination
-from asterlite.modal import block_lanczos
+from asterlite.modal import block_lanczos, slepc_mpi
 
 DENSE_LIMIT = 400
 #: without MUMPS, the modes nearest a positive shift of a large model are
@@ -342,6 +342,10 @@ class ReducedPencil:
             return vals[order], vecs[:, order]
         k, m = self._solver_k, self._solver_m
         shift = self._solver_shift(sigma)
+        if slepc_mpi.launcher() is not None:
+            vals, vecs = self._mpi_nearest(shift, count)
+            order = np.argsort(np.abs(vals - sigma), kind="stable")
+            return self._settled(vals[order], vecs[:, order])
         backend = self.sparse_backend(sigma)
         self.last_solve = {}
         if backend != "superlu":
@@ -361,6 +365,17 @@ class ReducedPencil:
         vals = self._omega2(vals)
         order = np.argsort(np.abs(vals - sigma), kind="stable")
         return self._settled(vals[order], vecs[:, order])
+
+    def _mpi_nearest(self, shift: float, count: int):
+        """(ω², vectors) of the ``count`` eigenpairs nearest the solver's
+        ``shift`` from the PETSc/SLEPc worker across MPI ranks."""
+        try:
+            vals, vecs, self.last_solve = slepc_mpi.nearest(
+                self._solver_k, self._solver_m, shift, min(count, self.n - 1)
+            )
+        except slepc_mpi.MpiSolveError as exc:
+            raise EigenError(str(exc)) from None
+        return self._omega2(vals), vecs
 
     def _bottom_up_possible(self) -> bool:
         """A large model without MUMPS, whose K CHOLMOD may factorise."""
@@ -410,6 +425,11 @@ class ReducedPencil:
             vals, vecs = self.all_modes()
             return vals[:count], vecs[:, :count]
         k, m = self._solver_k, self._solver_m
+        if slepc_mpi.launcher() is not None:
+            # a tiny negative shift steps over rigid-body modes, as on one machine
+            vals, vecs = self._mpi_nearest(_default_shift(k, m, 1e-8), count)
+            order = np.argsort(vals, kind="stable")
+            return self._settled(vals[order], vecs[:, order])
         backend = self.sparse_backend(0.0)
         self.last_solve = {}
         if backend != "superlu":
@@ -432,6 +452,11 @@ class ReducedPencil:
         if self.dense or count >= self.n - 1:
             vals, vecs = self.all_modes()
             return vals[-count:], vecs[:, -count:]
+        if slepc_mpi.launcher() is not None:
+            raise EigenError(
+                "PLUS_GRANDE is not computed by the MPI solver (asterlite run --mpi): "
+                "run without --mpi"
+            )
         # ARPACK regular mode needs an invertible M
         k, m = self._solver_k, self._solver_m
         try:
