@@ -94,3 +94,35 @@ def test_physical_sweep_on_upper_pencil_matches_a_direct_solve():
     np.testing.assert_allclose(laid_out.at(3.0).toarray(), whole, rtol=1e-14, atol=1e-10)
     x = np.random.default_rng(2).standard_normal(n - 1) + 0j
     np.testing.assert_allclose(laid_out.product(3.0, x), whole @ x, rtol=1e-12)
+
+
+def test_a_model_solved_again_keeps_its_ordering(monkeypatch):
+    """A second sweep of the same model (other values, a few terms that now
+    cancel) takes the ordering chosen for the first, without trying the
+    orderings again, and solves as accurately."""
+    pytest.importorskip("pymetis")
+    from asterlite.fem.constraints import Elimination
+    from asterlite.harmonic import physical
+
+    monkeypatch.setattr(physical, "_KNOWN_ORDERINGS", [])
+    k_matrix = _grid_laplacian(11) * 1.0e3
+    n = k_matrix.shape[0]
+    mass = sp.csc_matrix(sp.identity(n) * 2.0)
+    elimination = Elimination(
+        sp.identity(n, format="csr"), np.zeros(n), np.arange(n), np.array([], int)
+    )
+    rhs = np.ones((1, n))
+    first = physical.prepare(elimination, k_matrix * complex(1.0, 0.05), mass)
+    physical.solve(first, [3.0], rhs, np.ones((1, 1)))
+    tried = []
+    monkeypatch.setattr(physical, "nested_dissection", lambda *a: tried.append(a))
+    changed = sp.lil_matrix(k_matrix * complex(1.0, 0.08))
+    changed[0, 1] = changed[1, 0] = 0.0  # a pair of terms cancel: one term fewer
+    changed = sp.csc_matrix(changed)
+    changed.eliminate_zeros()
+    second = physical.prepare(elimination, changed, mass)
+    u, _ = physical.solve(second, [3.0], rhs, np.ones((1, 1)))
+    assert not tried
+    assert np.array_equal(second.analysis.perm, first.analysis.perm)
+    dense = (changed - (2 * np.pi * 3.0) ** 2 * mass).toarray()
+    np.testing.assert_allclose(dense @ u[0], rhs[0], atol=1e-9)

@@ -157,6 +157,17 @@ def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
     compete; past ``SUPERLU_MAX_FILL`` LDLᵀ factorises every frequency."""
 
     pencil = sweep.pencil
+    counts = np.diff(pencil.indptr)
+    known = _known_ordering(pencil.n, pencil.upper, counts)
+    if known is not None:
+        # the same model solved again (its values changed, and with them a
+        # few terms that cancel exactly): the ordering that the first solve
+        # chose, and its timings, instead of trying every ordering again
+        permutation, sweep.timings = known[0], dict(known[1])
+        ldl.warm()
+        return ldl.analyse(
+            pencil.indptr, pencil.indices, pencil.n, permutation, None, upper=pencil.upper
+        )
     pattern = pencil.full_pattern()
     candidates = [np.asarray(reverse_cuthill_mckee(pattern, symmetric_mode=True))]
     for spec in ("MMD_AT_PLUS_A", "COLAMD"):
@@ -184,7 +195,33 @@ def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
             sweep.timings["superlu"] = time.perf_counter() - started
         except RuntimeError:
             pass
+    if best is not None:
+        _KNOWN_ORDERINGS.append((pencil.upper, counts, best.perm.copy(), dict(sweep.timings)))
+        del _KNOWN_ORDERINGS[:-KNOWN_ORDERINGS]
     return best
+
+
+#: how many patterns keep the ordering chosen for them: a deck that solves
+#: the same model again (a loop over materials, load cases or single
+#: frequencies) skips trying every ordering
+KNOWN_ORDERINGS = 4
+#: a pattern is that of a known model when its terms per column differ by
+#: at most this share of its terms, or this many (terms whose values cancel
+#: exactly are not stored, and which do depends on the values)
+SAME_PATTERN_SHARE = 1.0e-4
+SAME_PATTERN_TERMS = 16
+_KNOWN_ORDERINGS: list[tuple[bool, np.ndarray, np.ndarray, dict]] = []
+
+
+def _known_ordering(n: int, upper: bool, counts: np.ndarray):
+    """(permutation, timings) chosen for a pattern of the same model, or None."""
+    for known_upper, known_counts, permutation, timings in reversed(_KNOWN_ORDERINGS):
+        if known_upper != upper or known_counts.size != counts.size:
+            continue
+        changed = np.abs(known_counts - counts).sum()
+        if changed <= max(SAME_PATTERN_TERMS, SAME_PATTERN_SHARE * int(counts.sum())):
+            return permutation, timings
+    return None
 
 
 def _backward_error(residual, x, b, norm) -> float:
