@@ -158,7 +158,7 @@ def test_format_and_print_do_not_reach_engine_internals(tmp_path, body, hidden):
 
 
 def test_a_run_maps_large_arrays_on_their_own(monkeypatch):
-    """A run fixes glibc's mapping threshold at 1 MB, so that the large
+    """A run fixes glibc's mapping threshold at 32 MB, so that the large
     temporaries a command frees go back to the system at once."""
     from asterlite import watchdog
 
@@ -171,5 +171,5 @@ def test_a_run_maps_large_arrays_on_their_own(monkeypatch):
 
     monkeypatch.setattr(watchdog.ctypes, "CDLL", lambda name: FakeLibc())
     with watchdog.limits(None, None, compiles=False):
-        assert calls == [(watchdog.M_MMAP_THRESHOLD, 1 << 20)]
+        assert calls == [(watchdog.M_MMAP_THRESHOLD, 32 << 20)]
     assert watchdog.M_MMAP_THRESHOLD == -3  # glibc's M_MMAP_THRESHOLD

@@ -23,6 +23,8 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
+from asterlite.arrays import sorted_unique
+
 
 class ConstraintError(ValueError):
     """Incompatible relations (e.g. two different imposed values on one DOF)."""
@@ -123,7 +125,7 @@ def eliminate(
         scale = np.maximum(np.abs(fixed_val[1:]), np.abs(fixed_val[:-1])) + 1e-300
         if np.any(same & (np.abs(fixed_val[1:] - fixed_val[:-1]) > 1e-8 * scale)):
             raise ConstraintError("one DOF is given two different imposed values")
-    fixed = np.unique(fixed_dof)
+    fixed = sorted_unique(fixed_dof)
     u0[fixed_dof] = fixed_val
     is_fixed = np.zeros(n_dofs, dtype=bool)
     is_fixed[fixed] = True
@@ -136,7 +138,7 @@ def eliminate(
         sub = b_matrix[multi]
         # move fixed DOFs to the right-hand side
         rhs_multi = rhs[multi] - sub @ u0
-        touched = np.unique(sub.indices)
+        touched = sorted_unique(sub.indices)
         touched = touched[~is_fixed[touched]]
         slaves, values, slave_terms, slave_solve = _eliminate_relations(
             sp.csr_matrix(sub[:, touched]), rhs_multi, tol

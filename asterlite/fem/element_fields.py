@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from asterlite.arrays import sorted_unique
 from asterlite.concepts.assembly import ElementField, NodalComponentField
 from asterlite.errors import UnsupportedError
 from asterlite.fem.beam_elements import (
@@ -263,7 +264,7 @@ def nodal_average(field: ElementField, mesh, name: str) -> NodalComponentField:
     """``*_NOEU`` from an ELNO field: at each node, the mean over the cells
     holding it of their value at that node."""
     connectivity = [mesh.cell_nodes[c] for c in field.cells]
-    nodes = np.unique(np.concatenate([np.asarray(c, dtype=int) for c in connectivity]))
+    nodes = sorted_unique(np.concatenate([np.asarray(c, dtype=int) for c in connectivity]))
     n_orders, _, _, n_cmp = field.values.shape
     # complex for a harmonic result's fields
     sums = np.zeros((n_orders, len(nodes), n_cmp), dtype=np.result_type(field.values, float))

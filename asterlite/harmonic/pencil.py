@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from asterlite.arrays import sorted_unique
 from asterlite.harmonic.fields import TWO_PI, omega2
 
 
@@ -146,7 +147,7 @@ def aligned_pencil(stiffness, mass, damping, upper: bool = False) -> ReducedPenc
     ]
     n = mats[0].shape[0]
     keys = [m.col.astype(np.int64) * n + m.row for m in mats]  # column-major keys
-    pattern = np.unique(np.concatenate(keys))
+    pattern = sorted_unique(np.concatenate(keys))
     values = []
     for m, key in zip(mats, keys, strict=True):
         data = np.zeros(pattern.size, dtype=np.result_type(m.data.dtype, float))

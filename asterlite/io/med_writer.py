@@ -35,6 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.arrays import sorted_unique
 from asterlite.concepts.mesh import Mesh
 from asterlite.fem.dofs import sort_components
 from asterlite.io.med_mesh import _TYPES as _MED_TYPES
@@ -145,7 +146,7 @@ def dofs_to_nodal(numbering, values, nodes=None, components=()) -> tuple:
     else:
         comps = sort_components(set(dof_comps))
     if nodes is None:
-        chosen = np.unique(dof_nodes)
+        chosen = sorted_unique(dof_nodes)
     else:
         carried = set(dof_nodes.tolist())
         chosen = np.array([int(n) for n in nodes if int(n) in carried], dtype=int)

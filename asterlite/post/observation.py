@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from asterlite.arrays import sorted_unique
 from asterlite.concepts.assembly import DofNumbering, NodalComponentField
 from asterlite.fem.dofs import sort_components
 from asterlite.fem.frames import rotation_from_angles
@@ -32,7 +33,7 @@ class ObservedField:
     @classmethod
     def from_dofs(cls, numbering: DofNumbering, values: np.ndarray) -> ObservedField:
         """A field on ``numbering``'s DOFs, values (n_states, n_dofs)."""
-        nodes = np.unique(np.asarray([n for n, _ in numbering.dofs], dtype=int))
+        nodes = sorted_unique(np.asarray([n for n, _ in numbering.dofs], dtype=int))
         components = tuple(sort_components({c for _, c in numbering.dofs}))
         row = {int(n): i for i, n in enumerate(nodes)}
         column = {c: j for j, c in enumerate(components)}
