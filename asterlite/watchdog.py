@@ -168,15 +168,21 @@ def steady_allocator() -> None:
         pass
 
 
+def _study_start() -> int | None:
+    """The resident size the run's memory is counted from: its start-up
+    size, plus what numba's compiler kept during the run (not the study's)."""
+    start = getattr(_state, "resident_start", None)
+    if start is None:
+        return None
+    return start + _compiling.resident - getattr(_state, "compiled_at_start", 0)
+
+
 def check_memory() -> None:
     """Raise MemoryLimitError when the resident memory has grown past the limit
     since the run started (checked where the time limit is)."""
-    limit = getattr(_state, "memory_mb", None)
-    start = getattr(_state, "resident_start", None)
+    limit, start = getattr(_state, "memory_mb", None), _study_start()
     if limit is None or start is None:
         return
-    # what numba's compiler kept during this run is not the study's
-    start += _compiling.resident - getattr(_state, "compiled_at_start", 0)
     resident = _resident_size()
     if resident is not None and resident - start > limit * MEGABYTE:
         resident = _released_size()  # garbage not yet given back is not the study's
@@ -196,11 +202,9 @@ def memory_headroom() -> int | None:
     """Bytes the run may still add before its memory limit (None when
     unlimited): what a computation that can trade memory for disk (MUMPS's
     out-of-core factor) compares its estimate with."""
-    limit = getattr(_state, "memory_mb", None)
-    start = getattr(_state, "resident_start", None)
+    limit, start = getattr(_state, "memory_mb", None), _study_start()
     if limit is None or start is None:
         return None
-    start += _compiling.resident - getattr(_state, "compiled_at_start", 0)
     resident = _released_size()
     if resident is None:
         return None

@@ -220,8 +220,7 @@ class Mesh(Concept):
         cells = [self.cell_groups[name] for name in names if name in self.cell_groups]
         if not cells:
             return []
-        nodes = {n for cell in np.unique(np.concatenate(cells)) for n in self.cell_nodes[cell]}
-        return sorted(int(n) for n in nodes)
+        return sorted(self.nodes_of_cells(np.concatenate(cells)).tolist())
 
     def getCoordinates(self) -> MeshCoordinates:  # noqa: N802
         """The nodes' coordinates, three per node as code_aster keeps them."""

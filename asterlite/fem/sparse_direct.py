@@ -210,7 +210,6 @@ def _set_upper_triangle(context, matrix) -> None:
     rows, cols = (outer, inner) if sp.isspmatrix_csr(matrix) else (inner, outer)
     row = np.asfortranarray(rows[keep], dtype=int_dtype)
     row += 1
-    del outer
     col = np.asfortranarray(cols[keep], dtype=int_dtype)
     col += 1
     data = np.asfortranarray(matrix.data[keep], dtype=np.float64)

@@ -158,7 +158,7 @@ def ordering(sweep: PhysicalSweep, frequency: float) -> ldl.Analysis:
 
     pencil = sweep.pencil
     counts = np.diff(pencil.indptr)
-    known = _known_ordering(pencil.n, pencil.upper, counts)
+    known = _known_ordering(pencil.upper, counts)
     if known is not None:
         # the same model solved again (its values changed, and with them a
         # few terms that cancel exactly): the ordering that the first solve
@@ -213,7 +213,7 @@ SAME_PATTERN_TERMS = 16
 _KNOWN_ORDERINGS: list[tuple[bool, np.ndarray, np.ndarray, dict]] = []
 
 
-def _known_ordering(n: int, upper: bool, counts: np.ndarray):
+def _known_ordering(upper: bool, counts: np.ndarray):
     """(permutation, timings) chosen for a pattern of the same model, or None."""
     for known_upper, known_counts, permutation, timings in reversed(_KNOWN_ORDERINGS):
         if known_upper != upper or known_counts.size != counts.size:
