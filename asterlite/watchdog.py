@@ -223,7 +223,10 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
     _state.deadline = None if seconds is None else _spent() + seconds
     _state.seconds = seconds
     _state.memory_mb = megabytes
-    _state.resident_start = _resident_size()
+    # counted from the size once garbage is given back, as the checks count
+    # (else garbage freed later hides as much of the study's own growth)
+    _state.collected_at = -1.0e9
+    _state.resident_start = _released_size() if megabytes is not None else _resident_size()
     _state.compiled_at_start = _compiling.resident
     _state.quiet_until = None
     try:
