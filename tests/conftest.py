@@ -35,3 +35,18 @@ def corpus_rows(name: str) -> tuple[dict, ...]:
     if not folder.is_dir():
         pytest.skip(f"../shared/{name} is not available")
     return tuple(run_corpus(folder, jobs=2, timeout=900))
+
+
+@pytest.fixture()
+def needs_mumps():
+    """Skip without python-mumps (the large extra), except in CI (CI=true),
+    where .ci/run installs it."""
+    import os
+
+    from asterlite.fem import sparse_direct
+
+    if sparse_direct.mumps_available():
+        return
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail("CI: python-mumps is missing (.ci/run installs the large extra)")
+    pytest.skip("python-mumps is not installed (the large extra)")

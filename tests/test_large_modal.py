@@ -22,15 +22,6 @@ from asterlite.runtime.runner import run_deck
 from tests.solid_meshes import aster_mesh_text, box_mesh, with_side_faces
 
 
-@pytest.fixture()
-def needs_mumps():
-    if sparse_direct.mumps_available():
-        return
-    if os.environ.get("CI", "").lower() == "true":
-        pytest.fail("CI: python-mumps is missing (.ci/run installs the large extra)")
-    pytest.skip("python-mumps is not installed (the large extra)")
-
-
 def _grid_pencil(nx: int, ny: int):
     """Stiffness and mass of a square membrane grid, fixed edges: a 2D
     Laplacian, whose eigenvalues on a square grid come in equal pairs."""

@@ -182,6 +182,70 @@ class MumpsFactor:
             self._folder = None
 
 
+class MumpsPatternFactor:
+    """MUMPS LDLᵀ of symmetric matrices (real or complex: symmetric, not
+    Hermitian) that share one pattern, as a harmonic sweep's K + iωC - ω²M:
+    the pattern (the upper triangle, CSC ``indptr``/``indices``) is analysed
+    once (ordering, symbolic factorisation, and whether the factor goes out
+    of core, as :class:`MumpsFactor` decides it), then each set of values is
+    factorised on that analysis (JOB = 2) with MUMPS's threshold pivoting.
+    MUMPS reads the values from the array it was handed, so each
+    ``factorise`` copies the new values into it."""
+
+    backend = "mumps"
+
+    def __init__(self, n: int, indptr: np.ndarray, indices: np.ndarray, dtype=complex):
+        import mumps
+        from mumps.mumps import _mumps
+
+        int_dtype = _mumps.int_dtype
+        self.n = n
+        self.out_of_core = False
+        self._folder = None
+        self._context = mumps.Context()
+        row = np.array(indices, dtype=int_dtype, order="F")  # a copy: the caller's stays 0-based
+        row += 1
+        col = np.repeat(np.arange(1, n + 1, dtype=int_dtype), np.diff(indptr))
+        data = np.zeros(indices.size, dtype=dtype)
+        # set_matrix only picks the arithmetic (zmumps, dmumps) and the symmetry
+        self._context.set_matrix(
+            sp.coo_matrix((np.zeros(1, dtype), ([0], [0])), shape=(n, n)), symmetric=True
+        )
+        self._context.row, self._context.col, self._context.data = row, np.asfortranarray(col), data
+        self._context.mumps_instance.set_assembled_matrix(n, row, self._context.col, data)
+        self._analysed = False
+        self._mumps_error = mumps.MUMPSError
+
+    def factorise(self, values: np.ndarray) -> None:
+        """Factorise the matrix of these values on the pattern; raises
+        :class:`SingularFactorError` when MUMPS finds it singular."""
+        self._context.data[:] = values
+        try:
+            if not self._analysed:
+                self._context.analyze(ordering="auto")
+                self._analysed = True
+                estimate = int(self._context.mumps_instance.infog[17]) * 1024**2
+                self.out_of_core = _needs_out_of_core(estimate)
+                if self.out_of_core:
+                    self._folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
+                    os.environ["MUMPS_OOC_TMPDIR"] = self._folder  # read by MUMPS at JOB = 2
+            self._context.factor(ooc=self.out_of_core, reuse_analysis=True)
+        except self._mumps_error as exc:
+            raise SingularFactorError(f"MUMPS: {exc}") from None
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        b = np.array(rhs, dtype=self._context.data.dtype, order="F", copy=True)
+        return self._context.solve(b, overwrite_b=True)
+
+    def close(self) -> None:
+        """Free the factor (see :meth:`MumpsFactor.close`)."""
+        self._context = None
+        if self._folder is not None:
+            gc.collect()
+            shutil.rmtree(self._folder, ignore_errors=True)
+            self._folder = None
+
+
 #: a MUMPS factor goes out of core when its in-core estimate passes this
 #: share of what the run may still add before its memory limit (the rest
 #: serves the eigen solver's vectors and the commands after it)
