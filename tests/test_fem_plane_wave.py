@@ -82,3 +82,38 @@ def test_vertical_p_wave_load_on_a_flat_base():
         plane_wave_history(
             model, field, [0], PlaneWave("S", wave.direction, signal, wave.source), times
         )
+
+
+def test_cells_of_one_material_share_one_free_field_evaluation(monkeypatch):
+    """Two faces of one material without LONG_CARA (NaN) are one group: the
+    free field is evaluated once for both (NaN never equals NaN, so a key
+    holding it made a group of every cell), with the forces of each alone."""
+    from asterlite.fem import plane_wave
+
+    coords = np.array(
+        [[0, 0, -100], [0, 1, -100], [1, 1, -100], [1, 0, -100], [2, 1, -100], [2, 0, -100]],
+        dtype=float,
+    )
+    mesh = Mesh(
+        coords=coords,
+        node_names=[f"N{i + 1}" for i in range(6)],
+        cell_names=["F1", "F2"],
+        cell_types=["QUAD4", "QUAD4"],
+        cell_nodes=[(0, 1, 2, 3), (3, 2, 4, 5)],
+    )
+    steel = Material(behaviours={"ELAS": {"E": E, "NU": NU, "RHO": RHO}})
+    model = Model(mesh=mesh, cell_modelisation={0: "3D_ABSO", 1: "3D_ABSO"})
+    field = MaterialField(mesh=mesh, cell_material={0: steel, 1: steel})
+    wave = PlaneWave("P", np.array([0.3, 0.0, 1.0]), signal, source=np.array([0.0, 0.0, -200.0]))
+    times = np.linspace(0.0, 0.6, 31)
+    calls = []
+    original = plane_wave.free_field
+    monkeypatch.setattr(
+        plane_wave, "free_field", lambda *a, **k: calls.append(1) or original(*a, **k)
+    )
+    nodes, comps, values = plane_wave_history(model, field, [0, 1], wave, times)
+    assert len(calls) == 1
+    for cell in (0, 1):
+        alone = plane_wave_history(model, field, [cell], wave, times)[2]
+        columns = slice(0, 12) if cell == 0 else slice(12, 24)
+        np.testing.assert_allclose(values[:, columns], alone, rtol=1e-13, atol=1e-9)

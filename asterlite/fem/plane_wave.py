@@ -243,7 +243,14 @@ def plane_wave_history(model, materials, cells, wave: PlaneWave, times):
         forces = np.zeros((len(times), len(members), conn.shape[1], dim))
         groups: dict[tuple, list[int]] = {}
         for k in range(len(members)):
-            key = tuple(float(props[n][k]) for n in ("E", "NU", "RHO", "COEF_AMOR", "LONG_CARA"))
+            # NaN (no LONG_CARA) as None: NaNs never compare equal, so every
+            # cell would make a group of its own
+            key = tuple(
+                None if np.isnan(value) else value
+                for value in (
+                    float(props[n][k]) for n in ("E", "NU", "RHO", "COEF_AMOR", "LONG_CARA")
+                )
+            )
             groups.setdefault(key, []).append(k)
         for (young, nu, rho, coef, length), rows in groups.items():
             rows = np.array(rows, dtype=int)
@@ -252,7 +259,7 @@ def plane_wave_history(model, materials, cells, wave: PlaneWave, times):
             cp, cs = np.sqrt((lam + 2 * mu) / rho), np.sqrt(mu / rho)
             waves = wave_set(wave, dim, nu, cp, cs)
             pts = points[rows].reshape(-1, dim)
-            springs = wave.displacement is not None and not np.isnan(length)
+            springs = wave.displacement is not None and length is not None
             velocity, moved, grad = free_field(
                 waves, pts, times, wave.signal, wave.displacement if springs else None
             )
