@@ -147,9 +147,8 @@ def test_cli_statuses_exit_codes_and_json(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("version", [15, 17])
-def test_check_of_a_typical_deck_is_fast(tmp_path, version):
-    import time
-
+def test_a_typical_deck_checks_valid_again_and_again(tmp_path, version):
+    # (its speed is a benchmark's, not a timed test's: docs/performance.md)
     body = (
         "L = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, PAS=0.01))\n"
         "F = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))\n"
@@ -157,11 +156,9 @@ def test_check_of_a_typical_deck_is_fast(tmp_path, version):
         "TEST_TABLE(TABLE=T, NOM_PARA='A', VALE_CALC=2.0, TYPE_TEST='MAX')\n"
     )
     path = deck(tmp_path, body)
-    check_deck(path, aster_version=version)  # warm: modules imported
-    start = time.perf_counter()
-    check = check_deck(path, aster_version=version)
-    assert check.status == "VALID", check.findings
-    assert time.perf_counter() - start < 0.3
+    for _ in range(2):  # the second with the modules and catalogue already loaded
+        check = check_deck(path, aster_version=version)
+        assert check.status == "VALID", check.findings
 
 
 def test_asterlites_own_verdict_is_kept_apart(tmp_path):
