@@ -50,3 +50,22 @@ def needs_mumps():
     if os.environ.get("CI", "").lower() == "true":
         pytest.fail("CI: python-mumps is missing (.ci/run installs the large extra)")
     pytest.skip("python-mumps is not installed (the large extra)")
+
+
+def pytest_collection_finish(session):
+    """Under ``--dist loadgroup`` every test of an ``xdist_group`` must carry
+    its group in its id, which is how pytest-xdist sends a group to one
+    worker: otherwise each worker runs the corpus folders (``corpus_rows``)
+    again, for minutes."""
+    if not getattr(session.config.option, "loadgroup", False):
+        return
+    ungrouped = [
+        item.nodeid
+        for item in session.items
+        if any(True for _ in item.iter_markers("xdist_group")) and "@" not in item.nodeid
+    ]
+    if ungrouped:
+        raise pytest.UsageError(
+            f"pytest-xdist's loadgroup left {len(ungrouped)} grouped tests ungrouped "
+            f"(e.g. {ungrouped[0]}): this pytest and pytest-xdist do not work together"
+        )

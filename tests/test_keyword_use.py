@@ -129,6 +129,7 @@ UNREAD_MARK = "asterlite does not implement what this keyword does"
 
 @pytest.mark.slow
 @pytest.mark.corpus
+@pytest.mark.xdist_group("shared-corpus")  # the folders' runs of tests/test_corpus*.py
 @pytest.mark.parametrize("name", OTHER_CORPORA)
 def test_corpus_decks_use_every_keyword_they_give(name):
     """Every deck either uses all it gives or stops UNSUPPORTED at the keyword
