@@ -216,19 +216,33 @@ class MumpsPatternFactor:
         self._analysed = False
         self._mumps_error = mumps.MUMPSError
 
-    def factorise(self, values: np.ndarray) -> None:
-        """Factorise the matrix of these values on the pattern; raises
-        :class:`SingularFactorError` when MUMPS finds it singular."""
+    def analyse(self, values: np.ndarray) -> int:
+        """Order the pattern and plan the factorisation (MUMPS's JOB = 1,
+        with these values for its scaling), and decide whether the factor goes
+        out of core; returns MUMPS's estimate of the factor's entries
+        (INFOG(20))."""
         self._context.data[:] = values
         try:
-            if not self._analysed:
-                self._context.analyze(ordering="auto")
-                self._analysed = True
-                estimate = int(self._context.mumps_instance.infog[17]) * 1024**2
-                self.out_of_core = _needs_out_of_core(estimate)
-                if self.out_of_core:
-                    self._folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
-                    os.environ["MUMPS_OOC_TMPDIR"] = self._folder  # read by MUMPS at JOB = 2
+            self._context.analyze(ordering="auto")
+        except self._mumps_error as exc:
+            raise SingularFactorError(f"MUMPS: {exc}") from None
+        self._analysed = True
+        instance = self._context.mumps_instance
+        self.out_of_core = _needs_out_of_core(int(instance.infog[17]) * 1024**2)
+        if self.out_of_core:
+            self._folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
+            os.environ["MUMPS_OOC_TMPDIR"] = self._folder  # read by MUMPS at JOB = 2
+        entries = int(instance.infog[20])
+        return entries if entries >= 0 else -entries * 1_000_000  # < 0: millions
+
+    def factorise(self, values: np.ndarray) -> None:
+        """Factorise the matrix of these values on the pattern (analysed
+        first if it was not); raises :class:`SingularFactorError` when MUMPS
+        finds it singular."""
+        if not self._analysed:
+            self.analyse(values)
+        self._context.data[:] = values
+        try:
             self._context.factor(ooc=self.out_of_core, reuse_analysis=True)
         except self._mumps_error as exc:
             raise SingularFactorError(f"MUMPS: {exc}") from None
