@@ -373,7 +373,7 @@ def physical(ctx, kw, frequencies, names):
         f"DYNA_VIBRA HARM PHYS: {frequencies.size} frequencies "
         f"[{frequencies.min():g}, {frequencies.max():g}] Hz, {info['n_free']} free DOFs of "
         f"{numbering.n_dofs}{', complex stiffness' if hysteretic else ''}, "
-        f"{info['seconds']:.3f} s"
+        f"{_solvers(info)}, {info['seconds']:.3f} s"
     )
     return DynaHarmo(
         numbering=numbering,
@@ -495,3 +495,17 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
                 ctx.error(f"load on DOFs the numbering does not have: {exc}", "CHARGE", occ)
         loads.append(harmonic_load(ctx, occ, vector, f"EXCIT[{i}]"))
     return loads
+
+
+def _solvers(info: dict) -> str:
+    """How the frequencies were factorised, e.g. "MUMPS 3 (out of core 3)"."""
+    parts = [
+        f"{label} {info[key]}"
+        for key, label in (("ldl", "LDLT"), ("mumps", "MUMPS"), ("superlu", "SuperLU"))
+        if info.get(key)
+    ]
+    if info.get("out_of_core"):
+        parts.append(f"out of core {info['out_of_core']}")
+    if info.get("refined"):
+        parts.append(f"refined {info['refined']}")
+    return ", ".join(parts) or "no frequency"

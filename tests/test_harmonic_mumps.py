@@ -117,3 +117,9 @@ def test_a_banded_sweep_stays_on_the_ldlt_when_mumps_plans_small_fronts(needs_mu
     assert sweep.backend == "ldl" and info["ldl"] == 2 and info["mumps"] == 0
     expected = spsolve(sp.csc_matrix(stiffness - omega2(7.0) * mass), force[0].astype(complex))
     np.testing.assert_allclose(depl[1], expected, rtol=1e-9, atol=1e-12 * abs(expected).max())
+    # a sweep of one frequency: its first is its last, whose matrices are
+    # dropped once its values are built, after the choice of solver
+    alone = physical.prepare(elimination, stiffness, mass)
+    depl, info = physical.solve(alone, [7.0], force, np.ones((1, 1), dtype=complex))
+    assert info["ldl"] == 1
+    np.testing.assert_allclose(depl[0], expected, rtol=1e-9, atol=1e-12 * abs(expected).max())

@@ -252,12 +252,12 @@ def _backward_error(residual, x, b, norm) -> float:
 def _solve_one(
     sweep: PhysicalSweep, frequency: float, rhs: np.ndarray, counts: dict, last: bool = False
 ):
-    """One frequency: LDLᵀ (checked, refined once) or SuperLU. At the
-    ``last`` frequency the pencil's K, M, C are dropped once the values of
-    K + iωC - ω²M are built: nothing reads them afterwards."""
-    if sweep.backend == "mumps":
-        return _solve_one_mumps(sweep, frequency, rhs, counts, last)
-    if sweep.use_ldl and sweep.analysis is None:
+    """One frequency: MUMPS or LDLᵀ (checked, refined once), else SuperLU.
+    At the ``last`` frequency the pencil's K, M, C are dropped once the
+    values of K + iωC - ω²M are built: nothing reads them afterwards."""
+    if sweep.backend == "mumps" and sweep.mumps is None:
+        _start_mumps(sweep, frequency)
+    if sweep.backend == "ldl" and sweep.use_ldl and sweep.analysis is None:
         sweep.analysis = ordering(sweep, frequency)
         if sweep.pencil.upper:
             # the pencil in the factor's order: each frequency's values are
@@ -270,25 +270,66 @@ def _solve_one(
     data = pencil.data(frequency)
     if last:
         pencil.release_values()
-    if sweep.use_ldl:
+    if sweep.backend == "mumps":
+        factor = sweep.mumps
+        try:
+            try:
+                factor.factorise(data)
+            except sparse_direct.SingularFactorError:
+                raise SingularSystem(float(frequency)) from None
+            x = _stable_solution(factor.solve, pencil, frequency, data, rhs, norm, counts)
+        finally:
+            if last:
+                factor.close()
+                sweep.mumps = None
+        if x is not None:
+            counts["mumps"] += 1
+            counts["out_of_core"] += factor.out_of_core
+            return x
+    elif sweep.use_ldl:
         try:
             started = time.perf_counter()
             factor = ldl.factorise(sweep.analysis, data)
             if "ldl" not in sweep.timings:
                 sweep.timings["ldl"] = time.perf_counter() - started
-            x = factor.solve(rhs)
-            residual = rhs - pencil.product(frequency, x, data)
-            if _backward_error(residual, x, rhs, norm) > BACKWARD_TOLERANCE:
-                x = x + factor.solve(residual)
-                counts["refined"] += 1
-                residual = rhs - pencil.product(frequency, x, data)
-                if _backward_error(residual, x, rhs, norm) > BACKWARD_TOLERANCE:
-                    raise ldl.ZeroPivot(-1)  # not a stable solve: pivot
-            counts["ldl"] += 1
-            return x
+            x = _stable_solution(factor.solve, pencil, frequency, data, rhs, norm, counts)
+            if x is not None:
+                counts["ldl"] += 1
+                return x
         except ldl.ZeroPivot:
-            factor = None  # the SuperLU fallback needs its memory
+            pass
+        factor = None  # the SuperLU fallback needs its memory
     return _solve_superlu(pencil, frequency, data, rhs, counts)
+
+
+def _start_mumps(sweep: PhysicalSweep, frequency: float) -> None:
+    """MUMPS's analysis of the sweep's pattern (with the first frequency's
+    values); a factor of small fronts (a line of beams) goes back to the
+    LDLᵀ, whose column loop is faster there."""
+    pencil = sweep.pencil
+    factor = sparse_direct.MumpsPatternFactor(pencil.n, pencil.indptr, pencil.indices)
+    try:
+        entries = factor.analyse(pencil.data(frequency))
+    except sparse_direct.SingularFactorError:
+        entries = 0  # the LDLᵀ path then finds the singular frequency
+    if entries < MUMPS_MIN_MEAN_COLUMN * pencil.n:
+        factor.close()
+        sweep.backend = "ldl"
+    else:
+        sweep.mumps = factor
+
+
+def _stable_solution(solve, pencil, frequency, data, rhs, norm, counts):
+    """``solve(rhs)``, refined once when its backward error is not that of a
+    stable solve; None when it still is not."""
+    x = solve(rhs)
+    residual = rhs - pencil.product(frequency, x, data)
+    if _backward_error(residual, x, rhs, norm) <= BACKWARD_TOLERANCE:
+        return x
+    x = x + solve(residual)
+    counts["refined"] += 1
+    residual = rhs - pencil.product(frequency, x, data)
+    return x if _backward_error(residual, x, rhs, norm) <= BACKWARD_TOLERANCE else None
 
 
 def _solve_superlu(pencil, frequency: float, data: np.ndarray, rhs: np.ndarray, counts: dict):
@@ -299,53 +340,6 @@ def _solve_superlu(pencil, frequency: float, data: np.ndarray, rhs: np.ndarray, 
         raise SingularSystem(float(frequency)) from None
     counts["superlu"] += 1
     return lu.solve(rhs)
-
-
-def _solve_one_mumps(
-    sweep: PhysicalSweep, frequency: float, rhs: np.ndarray, counts: dict, last: bool
-):
-    """One frequency on MUMPS's factor of the sweep's pattern (analysed at
-    the first), its solution checked and refined once as the LDLᵀ's; a
-    solution still not that of a stable solve is SuperLU's."""
-    pencil = sweep.pencil
-    norm = pencil.norm_bound(frequency)
-    data = pencil.data(frequency)
-    if last:
-        pencil.release_values()
-    if sweep.mumps is None:
-        factor = sparse_direct.MumpsPatternFactor(pencil.n, pencil.indptr, pencil.indices)
-        try:
-            entries = factor.analyse(data)
-        except sparse_direct.SingularFactorError:
-            entries = 0
-        if entries < MUMPS_MIN_MEAN_COLUMN * pencil.n:
-            # small fronts (a line of beams): the LDLᵀ's column loop is faster
-            factor.close()
-            sweep.backend = "ldl"
-            return _solve_one(sweep, frequency, rhs, counts, last)
-        sweep.mumps = factor
-    factor = sweep.mumps
-    try:
-        try:
-            factor.factorise(data)
-        except sparse_direct.SingularFactorError:
-            raise SingularSystem(float(frequency)) from None
-        x = factor.solve(rhs)
-        residual = rhs - pencil.product(frequency, x, data)
-        if _backward_error(residual, x, rhs, norm) > BACKWARD_TOLERANCE:
-            x = x + factor.solve(residual)
-            counts["refined"] += 1
-            residual = rhs - pencil.product(frequency, x, data)
-            if _backward_error(residual, x, rhs, norm) > BACKWARD_TOLERANCE:
-                x = None
-    finally:
-        if last:
-            factor.close()
-            sweep.mumps = None
-    if x is not None:
-        counts["mumps"] += 1
-        return x
-    return _solve_superlu(pencil, frequency, data, rhs, counts)
 
 
 def solve(
@@ -371,7 +365,7 @@ def solve(
     t_matrix = sweep.elimination.T
     out = np.empty((f.size, sweep.n_dofs), dtype=complex)
     started = time.perf_counter()
-    counts = {"ldl": 0, "mumps": 0, "refined": 0, "superlu": 0}
+    counts = {"ldl": 0, "mumps": 0, "out_of_core": 0, "refined": 0, "superlu": 0}
     for k, frequency in enumerate(f):
         rhs = np.ascontiguousarray(coefficients[k] @ reduced)
         if per_frequency is not None:
