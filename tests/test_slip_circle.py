@@ -45,7 +45,9 @@ def test_full_circle_in_uniform_stress():
     assert len(line.segments) == n_segments
     sxx, syy, sxy = -3.0e5, -7.0e5, 1.2e5
     stress = np.array([sxx, syy, 0.0, sxy])
-    gauss = sc.projected_gauss_stresses(structure, cells, _uniform(structure, stress), disc, line)
+    uniform = _uniform(structure, stress)
+    projection = sc.gauss_stress_projection(structure, cells, [len(v) for v in uniform], disc, line)
+    gauss = sc.projected_gauss_stresses(projection, uniform, line)
     assert gauss == pytest.approx(np.broadcast_to(stress, gauss.shape))
     sig_n, sig_tn = sc.line_stresses(line, gauss)
     assert sig_n.sum() == pytest.approx(n_segments * (sxx + syy) / 2, rel=1e-12)

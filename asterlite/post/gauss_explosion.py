@@ -18,6 +18,8 @@ middles next, then the centre):
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from asterlite.concepts.mesh import Mesh
@@ -107,15 +109,33 @@ def exploded_mesh(mesh: Mesh, cells, n_gauss) -> tuple[Mesh, np.ndarray]:
     return exploded, np.array(origin, dtype=int).reshape(-1, 2)
 
 
-def values_at_points(
-    mesh: Mesh, cells, gauss_values, points: np.ndarray, distance_max: float | None = None
-) -> tuple[np.ndarray, np.ndarray]:
-    """The Gauss-point field (gauss_values[i]: (n_gauss, n_cmp) of cells[i])
-    at ``points`` (n, >=2); also a mask of the points placed (within
-    distance_max of a sub-cell when given; the others are 0)."""
-    exploded, origin = exploded_mesh(mesh, cells, [len(v) for v in gauss_values])
-    n_cmp = np.asarray(gauss_values[0]).shape[1]
-    sub_values = np.array([gauss_values[p][g] for p, g in origin], dtype=float)
+@dataclass
+class GaussProjection:
+    """Where each point takes its value among the sub-cells of a set of cells
+    (cell position, Gauss point of each sub-cell in ``origin``): the same for
+    every field on those cells, so a field of many instants is placed once."""
+
+    origin: np.ndarray  # (n_sub, 2)
+    sub_cell: np.ndarray  # (n_points,) the sub-cell giving each point its value
+    scale: np.ndarray  # (n_points,) the sum of the point's weights there (1)
+    placed: np.ndarray  # (n_points,) bool
+
+    def apply(self, gauss_values) -> np.ndarray:
+        """The field (gauss_values[i]: (n_gauss, n_cmp) of the i-th cell) at
+        the points: (n_points, n_cmp), 0 where not placed."""
+        sub_values = np.array([gauss_values[p][g] for p, g in self.origin], dtype=float)
+        result = sub_values[self.sub_cell] * self.scale[:, None]
+        result[~self.placed] = 0.0
+        return result
+
+
+def gauss_projection(
+    mesh: Mesh, cells, n_gauss, points: np.ndarray, distance_max: float | None = None
+) -> GaussProjection:
+    """The placement of ``points`` (n, >=2) among the sub-cells of ``cells``
+    (n_gauss[i] Gauss points in cells[i]): within distance_max of a sub-cell
+    when given."""
+    exploded, origin = exploded_mesh(mesh, cells, n_gauss)
     node_cell = np.empty(exploded.n_nodes, dtype=int)
     for sub, conn in enumerate(exploded.cell_nodes):
         node_cell[list(conn)] = sub
@@ -129,19 +149,28 @@ def values_at_points(
         distance_max=distance_max,
         points=pts,
     )
-    result = np.zeros((len(pts), n_cmp))
+    sub_cell = np.zeros(len(pts), dtype=int)
+    scale = np.zeros(len(pts))
     placed = np.zeros(len(pts), dtype=bool)
     for k, (conn, weights) in placement.nodes.items():
         # constant on the sub-cell: its value times the weights' sum (1)
-        result[k] = sub_values[node_cell[conn[0]]] * float(np.sum(weights))
-        placed[k] = True
+        sub_cell[k], scale[k], placed[k] = node_cell[conn[0]], float(np.sum(weights)), True
     # points outside every sub-cell's box: the nearest sub-cell's value
     for k in placement.unplaced:
         sub, distance = _nearest_subcell(exploded, pts[k, :2])
         if distance_max is None or distance <= distance_max:
-            result[k] = sub_values[sub]
-            placed[k] = True
-    return result, placed
+            sub_cell[k], scale[k], placed[k] = sub, 1.0, True
+    return GaussProjection(origin, sub_cell, scale, placed)
+
+
+def values_at_points(
+    mesh: Mesh, cells, gauss_values, points: np.ndarray, distance_max: float | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """The Gauss-point field (gauss_values[i]: (n_gauss, n_cmp) of cells[i])
+    at ``points`` (n, >=2); also a mask of the points placed (within
+    distance_max of a sub-cell when given; the others are 0)."""
+    projection = gauss_projection(mesh, cells, [len(v) for v in gauss_values], points, distance_max)
+    return projection.apply(gauss_values), projection.placed
 
 
 def _nearest_subcell(exploded: Mesh, point: np.ndarray) -> tuple[int, float]:

@@ -86,10 +86,17 @@ def dynamic_safety_factors(
     except ValueError as exc:
         raise SafetyError(str(exc)) from exc
 
+    projections = {}  # placed once for the instants of a result on the same cells
+
     def tractions(result, order, label):
         source_cells, values = _gauss_stresses(result, order, label)
-        source_mesh = result.model.mesh
-        gauss = slip_circle.projected_gauss_stresses(source_mesh, source_cells, values, disc, line)
+        n_gauss = tuple(len(v) for v in values)
+        key = (id(result.model.mesh), source_cells.tobytes(), n_gauss)
+        if key not in projections:
+            projections[key] = slip_circle.gauss_stress_projection(
+                result.model.mesh, source_cells, n_gauss, disc, line
+            )
+        gauss = slip_circle.projected_gauss_stresses(projections[key], values, line)
         return slip_circle.line_stresses(line, gauss)
 
     static_n, static_tn = tractions(static, len(static.times) - 1, "RESULTAT_PESANTEUR")

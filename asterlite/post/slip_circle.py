@@ -22,7 +22,7 @@ import numpy as np
 from asterlite.fem.solid_fields import gauss_to_nodes
 from asterlite.fem.solid_reference import REFERENCE_ELEMENTS, gauss_family
 from asterlite.post import slip_line_safety as safety
-from asterlite.post.gauss_explosion import values_at_points
+from asterlite.post.gauss_explosion import gauss_projection
 from asterlite.post.sliding_block import points_in_cells, smallest_edge
 
 _SUPPORT = ("QU4", "FPG4")  # the disc's outer ring: QUAD4 in plane strain
@@ -82,12 +82,15 @@ def line_stresses(line: SlipLine, gauss_stresses: np.ndarray) -> tuple[np.ndarra
     return safety.line_tractions(mean, line.tangent, line.normal)
 
 
-def projected_gauss_stresses(
-    structure, structure_cells, gauss_values, disc, line: SlipLine
-) -> np.ndarray:
-    """The structure's Gauss-point stresses (gauss_values[i] of
-    structure_cells[i]) at the Gauss points of the QUAD4s beside the slip
-    line, by ECLA_PG (0 at points it cannot place: PROL_ZERO)."""
-    points = support_gauss_points(disc, line)
-    values, _ = values_at_points(structure, structure_cells, gauss_values, points)
-    return values.reshape(len(line.segments), 4, -1)
+def gauss_stress_projection(structure, structure_cells, n_gauss, disc, line: SlipLine):
+    """ECLA_PG's placement of the Gauss points of the QUAD4s beside the slip
+    line among the structure's cells (structure_cells[i] with n_gauss[i]
+    Gauss points): one for every instant of a result on those cells."""
+    return gauss_projection(structure, structure_cells, n_gauss, support_gauss_points(disc, line))
+
+
+def projected_gauss_stresses(projection, gauss_values, line: SlipLine) -> np.ndarray:
+    """The structure's Gauss-point stresses (gauss_values[i] of its i-th
+    cell) at the Gauss points of the QUAD4s beside the slip line, by ECLA_PG
+    (0 at points it cannot place: PROL_ZERO)."""
+    return projection.apply(gauss_values).reshape(len(line.segments), 4, -1)
