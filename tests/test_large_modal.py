@@ -345,3 +345,15 @@ def test_modes_nearest_a_positive_shift_without_mumps_come_from_the_lowest_up(mo
     values, _ = pencil().nearest(sigma, 6)
     np.testing.assert_allclose(np.sort(values), np.sort(nearest), rtol=1e-10)
     assert calls
+
+
+def test_mumps_factors_of_one_matrix_solve_to_the_same_bits(needs_mumps):
+    """MUMPS's ordering draws no random numbers (PORD; Debian's SCOTCH, its
+    "auto" choice, does): a deck's modes are the same from run to run."""
+    from tests.test_harmonic_ordering import _grid_laplacian
+
+    stiffness = _grid_laplacian(18)
+    rhs = np.random.default_rng(0).standard_normal(stiffness.shape[0])
+    first, *others = [sparse_direct.MumpsFactor(stiffness).solve(rhs) for _ in range(3)]
+    for other in others:
+        np.testing.assert_array_equal(other, first)
