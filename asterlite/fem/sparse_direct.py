@@ -7,7 +7,7 @@ matrix is expected positive definite:
   (the ``large`` extra; it builds against Debian's ``libmumps-seq-dev``).
   Multifrontal LDLᵀ with threshold pivoting, so shifted pencils K - σM inside
   the spectrum (CENTRE, BANDE) factorise as well as positive ones; nested-
-  dissection-like orderings (SCOTCH, AMF) keep the fill-in of 3D meshes low;
+  dissection ordering (PORD: MUMPS_ORDERING) keeps the fill-in of 3D meshes low;
   blocks of right-hand sides are solved with BLAS 3. It also gives the
   inertia (the number of negative pivots).
 - ``cholmod``: CHOLMOD's Cholesky through ``cholespy`` (a core dependency:
