@@ -121,14 +121,15 @@ def _resident_size() -> int | None:
         return None
 
 
-def _released_size() -> int | None:
+def _released_size(collect: bool = False) -> int | None:
     """The resident size once the C allocator has returned its free pages to
     the system (glibc) and, at most once a CPU second (a full collection of
-    a large heap takes long), unreachable objects are collected."""
+    a large heap takes long) or when ``collect``, unreachable objects are
+    collected."""
 
     _trim_allocator()
     now = time.process_time()
-    if now - getattr(_state, "collected_at", -1.0e9) >= GC_INTERVAL_SECONDS:
+    if collect or now - getattr(_state, "collected_at", -1.0e9) >= GC_INTERVAL_SECONDS:
         _state.collected_at = now
         gc.collect()
         _trim_allocator()
@@ -225,8 +226,9 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
     _state.memory_mb = megabytes
     # counted from the size once garbage is given back, as the checks count
     # (else garbage freed later hides as much of the study's own growth)
-    _state.collected_at = -1.0e9
-    _state.resident_start = _released_size() if megabytes is not None else _resident_size()
+    _state.resident_start = (
+        _released_size(collect=True) if megabytes is not None else _resident_size()
+    )
     _state.compiled_at_start = _compiling.resident
     _state.quiet_until = None
     try:

@@ -498,7 +498,7 @@ def physical_loads(ctx, kw, numbering, stiffness_matrix) -> list[HarmonicLoad]:
 
 
 def _solvers(info: dict) -> str:
-    """How the frequencies were factorised, e.g. "MUMPS 3 (out of core 3)"."""
+    """How the frequencies were factorised, e.g. "MUMPS 3, out of core 3"."""
     parts = [
         f"{label} {info[key]}"
         for key, label in (("ldl", "LDLT"), ("mumps", "MUMPS"), ("superlu", "SuperLU"))

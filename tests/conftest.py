@@ -62,7 +62,7 @@ def pytest_collection_finish(session):
     ungrouped = [
         item.nodeid
         for item in session.items
-        if any(True for _ in item.iter_markers("xdist_group")) and "@" not in item.nodeid
+        if item.get_closest_marker("xdist_group") is not None and "@" not in item.nodeid
     ]
     if ungrouped:
         raise pytest.UsageError(

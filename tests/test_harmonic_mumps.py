@@ -98,6 +98,11 @@ def test_a_singular_frequency_is_refused_by_name(needs_mumps):
     with pytest.raises(SingularSystem):
         physical.solve(sweep, [5.0], np.ones((1, n)), np.ones((1, 1), dtype=complex))
     assert sweep.mumps is None
+    # singular at a frequency before its last: the factor is closed as well
+    sweep = physical.prepare(elimination, stiffness, sp.csc_matrix((n, n)))
+    with pytest.raises(SingularSystem):
+        physical.solve(sweep, [5.0, 6.0], np.ones((1, n)), np.ones((2, 1), dtype=complex))
+    assert sweep.mumps is None
 
 
 def test_a_banded_sweep_stays_on_the_ldlt_when_mumps_plans_small_fronts(needs_mumps):

@@ -148,10 +148,8 @@ class MumpsFactor:
             instance.cntl[3] = float(null_pivot_threshold)
         try:
             self._context.analyze(ordering=MUMPS_ORDERING)
-            self.out_of_core = _needs_out_of_core(int(instance.infog[17]) * 1024**2)
-            if self.out_of_core:
-                self._folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
-                os.environ["MUMPS_OOC_TMPDIR"] = self._folder  # read by MUMPS at JOB = 2
+            self._folder = _out_of_core_folder(instance)
+            self.out_of_core = self._folder is not None
             self._context.factor(ooc=self.out_of_core, reuse_analysis=True)
         except mumps.MUMPSError as exc:
             self.close()
@@ -228,10 +226,8 @@ class MumpsPatternFactor:
             raise SingularFactorError(f"MUMPS: {exc}") from None
         self._analysed = True
         instance = self._context.mumps_instance
-        self.out_of_core = _needs_out_of_core(int(instance.infog[17]) * 1024**2)
-        if self.out_of_core:
-            self._folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
-            os.environ["MUMPS_OOC_TMPDIR"] = self._folder  # read by MUMPS at JOB = 2
+        self._folder = _out_of_core_folder(instance)
+        self.out_of_core = self._folder is not None
         entries = int(instance.infog[20])
         return entries if entries >= 0 else -entries * 1_000_000  # < 0: millions
 
@@ -251,13 +247,7 @@ class MumpsPatternFactor:
         b = np.array(rhs, dtype=self._context.data.dtype, order="F", copy=True)
         return self._context.solve(b, overwrite_b=True)
 
-    def close(self) -> None:
-        """Free the factor (see :meth:`MumpsFactor.close`)."""
-        self._context = None
-        if self._folder is not None:
-            gc.collect()
-            shutil.rmtree(self._folder, ignore_errors=True)
-            self._folder = None
+    close = MumpsFactor.close
 
 
 #: MUMPS's fill-reducing ordering: PORD, a nested dissection of its own, run
@@ -277,6 +267,16 @@ OUT_OF_CORE_SHARE = 0.5
 def _needs_out_of_core(in_core_bytes: int) -> bool:
     headroom = watchdog.memory_headroom()
     return headroom is not None and in_core_bytes > OUT_OF_CORE_SHARE * headroom
+
+
+def _out_of_core_folder(instance) -> str | None:
+    """After MUMPS's analysis: a folder of its own for a factor whose in-core
+    estimate (INFOG(17), MB) needs it out of core, None for one in core."""
+    if not _needs_out_of_core(int(instance.infog[17]) * 1024**2):
+        return None
+    folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
+    os.environ["MUMPS_OOC_TMPDIR"] = folder  # read by MUMPS at JOB = 2
+    return folder
 
 
 def _set_upper_triangle(context, matrix) -> None:

@@ -24,8 +24,9 @@ after one step of iterative refinement if needed, else that frequency (and
 non-symmetric matrices, e.g. gyroscopic damping) is factorised by SuperLU
 with partial pivoting (``scipy.sparse.linalg.splu``). Symmetric systems of
 ``sparse_direct.LARGE_LIMIT`` unknowns and more go to MUMPS where it is
-installed (``sparse_direct.choose_backend``, as the modal solves): its
-supernodal fronts with threshold pivoting factorise 3D models several times
+installed (``sparse_direct.choose_backend``, as the modal solves) when its
+analysis plans a factor of ``MUMPS_MIN_MEAN_COLUMN`` entries a column or
+more: its fronts with threshold pivoting factorise 3D models several times
 faster than the column-by-column LDLᵀ, with the pattern analysed once, and
 out of core when the factor would crowd the run's memory limit.
 """
@@ -272,14 +273,16 @@ def _solve_one(
         pencil.release_values()
     if sweep.backend == "mumps":
         factor = sweep.mumps
+        stops = last
         try:
             try:
                 factor.factorise(data)
             except sparse_direct.SingularFactorError:
+                stops = True  # the sweep ends here: its factor and folder go
                 raise SingularSystem(float(frequency)) from None
             x = _stable_solution(factor.solve, pencil, frequency, data, rhs, norm, counts)
         finally:
-            if last:
+            if stops:
                 factor.close()
                 sweep.mumps = None
         if x is not None:
