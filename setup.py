@@ -12,7 +12,7 @@ is a package, with or without an ``__init__.py``.
 import re
 from pathlib import Path
 
-from setuptools import find_namespace_packages, setup
+from setuptools import Extension, find_namespace_packages, setup
 from setuptools.command.editable_wheel import editable_wheel
 
 ROOT = Path(__file__).resolve().parent
@@ -94,8 +94,25 @@ class EditableWheel(editable_wheel):
         return strategy
 
 
+# --- compiled time loops (asterlite.dynamics.native) -------------------------
+# C++ built here so that no run waits for numba's compiler on the loops it
+# covers. Same operations in the same order as the numba kernels: no fused
+# multiply-add (GCC contracts by default on targets that have it), no
+# fast-math; errno left out of sqrt does not change a value. Optional: without
+# a C++ compiler the install goes on and the numba kernels serve.
+NATIVE = ROOT / "asterlite" / "dynamics" / "native"
+LOOPS = Extension(
+    "asterlite.dynamics.native._loops",
+    sources=[str((NATIVE / "module.cpp").relative_to(ROOT))],
+    depends=sorted(str(p.relative_to(ROOT)) for p in NATIVE.glob("*.hpp")),
+    language="c++",
+    extra_compile_args=["-std=c++17", "-O3", "-ffp-contract=off", "-fno-math-errno"],
+    optional=True,
+)
+
 setup(
     packages=packages(),
     package_dir=package_dir(),
+    ext_modules=[LOOPS],
     cmdclass={"editable_wheel": EditableWheel},
 )

@@ -29,10 +29,17 @@ PACKAGE = Path(__file__).resolve().parent
 CACHE_PREFIX = "kernels-"
 
 
+# compiled by pip, not numba: no kernel of the cache inlines anything there
+NOT_NUMBA = ("native",)
+
+
 def source_digest(folder: Path = PACKAGE) -> str:
-    """A digest of every Python source below ``folder`` (names and bytes)."""
+    """A digest of every Python source below ``folder`` (names and bytes)
+    but those of :data:`NOT_NUMBA`."""
     digest = hashlib.sha256()
     for path in sorted(folder.rglob("*.py")):
+        if path.relative_to(folder).parts[0] in NOT_NUMBA:
+            continue
         digest.update(path.relative_to(folder).as_posix().encode())
         digest.update(b"\0")
         digest.update(path.read_bytes())

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from asterlite import progress, watchdog
-from asterlite.dynamics import adapt_control, compile_estimate, diagnosis
+from asterlite.dynamics import adapt_control, compile_estimate, diagnosis, native
 from asterlite.dynamics import contact as C
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
@@ -207,8 +207,14 @@ def run_kernel(
     f, a = np.zeros(n), np.zeros(n)
     vint = shocks.initial_vint(t0)
     work = np.zeros((5, 3))
-    shock = total_force(t0, q, v, model[SHOCKS], vint, model[LOADS], work, f)
-    acceleration(f, q, v, model[LINEAR], np.zeros(n), a)
+    native_loop = native_run_loop(
+        entry, notice.name, energy, rotation, implicit_shocks and shocks.count, options
+    )
+    if native_loop is not None:
+        shock = native.start(t0, q, v, a, f, vint, work, np.zeros(n), model)
+    else:
+        shock = total_force(t0, q, v, model[SHOCKS], vint, model[LOADS], work, f)
+        acceleration(f, q, v, model[LINEAR], np.zeros(n), a)
     if shock >= 0 or diagnosis.bad(a).any():
         raise law_error(shocks, vint, t0) or initial_error(
             (q, v, a, f, vint), shocks, excitation, t0, load_labels
@@ -252,9 +258,11 @@ def run_kernel(
     capacity = store.first_capacity(capacity, 8 * max(n, shocks.count * shocks.vint_width))
     budget.check_archive(capacity, row_bytes, pas_arch, clock, counters)
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
-    K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
+    archive_start(buffers, t0, q, v, a, vint, dt)
     counters[K.K_ARCHIVED] = 1
-    run_loop = implicit_loop or rotating_loop or scheme_run_loop(entry, module, notice.name)
+    run_loop = (
+        implicit_loop or rotating_loop or native_loop or scheme_run_loop(entry, module, notice.name)
+    )
     if energy and rotating_loop is not None:
         raise NumericalError(
             f"the energy balance ({named('energy')}) at variable rotation speed "
@@ -312,6 +320,8 @@ def run_kernel(
     info["archived"] = len(out_t)
     info["archive_on_disk"] = store.on_disk
     info["compile_seconds"] = notice.seconds
+    # the loop that ran: its kernel's name and what compiled it
+    info["loop"] = f"{notice.name} [{'C++' if native_loop is not None else 'numba'}]"
     if implicit_loop is not None:
         ints = memory[EXTRA].ints
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
@@ -321,6 +331,25 @@ def run_kernel(
         kept = int(memory[SCALARS][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
+
+
+def native_run_loop(entry: Scheme, loop: str, energy: bool, rotation, implicit, options):
+    """The compiled C++ loop (:mod:`asterlite.dynamics.native`) that does
+    what the numba loop ``loop`` would, or None: DIFF_CENTRE's specialised
+    loops when nothing they leave to numba is asked."""
+    if entry.loops != "specialised" or loop not in entry.loop_names()[:2]:
+        return None
+    if not native.covers_diff_centre(energy, rotation, bool(implicit), options.adapt_v11):
+        return None
+    return native.diff_centre_loop
+
+
+def archive_start(buffers: Archive, t0: float, q, v, a, vint, dt: float) -> None:
+    """The archive's first row, the initial state (kernel.archive's values)."""
+    buffers.times[0], buffers.order[0] = t0, 0
+    buffers.depl[0], buffers.vite[0], buffers.acce[0] = q, v, a
+    buffers.vint[0] = vint
+    buffers.info[0, K.INFO_STEP], buffers.info[0, K.INFO_REJECTED] = dt, 0.0
 
 
 def scheme_run_loop(entry: Scheme, module, loop: str):

@@ -776,6 +776,7 @@ def format_summary(report: RunReport) -> str:
             f"transient {run['result']}: {run['scheme']} {run['steps']} steps"
             f" ({run['rejected_steps']} rejected), step {_steps(run)},"
             f" integration {run['integration_seconds']:.3f} s"
+            + (f" ({run['loop']} loop)" if run.get("loop") else "")
         )
         if "energy_residual" in run:
             ratio, flow = run["energy_residual_ratio"], run.get("energy_residual_flow_ratio")

@@ -70,6 +70,7 @@ def transient_summary(command: str, name: str | None, concept, call: int) -> dic
         if concept.step_sizes is not None and len(concept.step_sizes) > 1
         else None,
         "integration_seconds": float(info.get("integration_seconds", 0.0)),
+        "loop": info.get("loop"),  # the compiled loop that ran (integrate.run_kernel)
         # SCHEMA_TEMPS's PAS_MINI / PAS_MAXI as the deck gave them (None: default)
         "pas_mini": plain_value(info.get("pas_mini")),
         "pas_maxi": plain_value(info.get("pas_maxi")),
