@@ -100,19 +100,25 @@ class EditableWheel(editable_wheel):
 # multiply-add (GCC contracts by default on targets that have it), no
 # fast-math; errno left out of sqrt does not change a value. Optional: without
 # a C++ compiler the install goes on and the numba kernels serve.
+# One extension module per .cpp file of the folder (``loops.cpp`` ->
+# ``asterlite.dynamics.native._loops``), each from the shared headers.
 NATIVE = ROOT / "asterlite" / "dynamics" / "native"
-LOOPS = Extension(
-    "asterlite.dynamics.native._loops",
-    sources=[str((NATIVE / "module.cpp").relative_to(ROOT))],
-    depends=sorted(str(p.relative_to(ROOT)) for p in NATIVE.glob("*.hpp")),
-    language="c++",
-    extra_compile_args=["-std=c++17", "-O3", "-ffp-contract=off", "-fno-math-errno"],
-    optional=True,
-)
+HEADERS = sorted(str(p.relative_to(ROOT)) for p in NATIVE.glob("*.hpp"))
+NATIVE_MODULES = [
+    Extension(
+        f"asterlite.dynamics.native._{source.stem}",
+        sources=[str(source.relative_to(ROOT))],
+        depends=HEADERS,
+        language="c++",
+        extra_compile_args=["-std=c++17", "-O3", "-ffp-contract=off", "-fno-math-errno"],
+        optional=True,
+    )
+    for source in sorted(NATIVE.glob("*.cpp"))
+]
 
 setup(
     packages=packages(),
     package_dir=package_dir(),
-    ext_modules=[LOOPS],
+    ext_modules=NATIVE_MODULES,
     cmdclass={"editable_wheel": EditableWheel},
 )

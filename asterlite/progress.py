@@ -191,7 +191,8 @@ def kernel(name: str, estimate: float | None = None):
     wait ("compiling the NEWMARK kernel, once per install: ~20 s") and one
     after it. Yields the :class:`CompileNotice`, whose ``seconds`` is the
     wall time spent compiling (what a timing of the block should leave out)."""
-    listen_to_compiles()
+    if "numba" in sys.modules:  # else asterlite.dynamics.jit listens when it imports numba
+        listen_to_compiles()
     notice = CompileNotice(name, estimate)
     _blocks.append(notice)
     try:

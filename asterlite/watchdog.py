@@ -57,6 +57,7 @@ import gc
 import os
 import resource
 import signal
+import sys
 import threading
 import time
 from contextlib import contextmanager
@@ -218,8 +219,8 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
     """Enforce a time and a memory limit for the duration of the block;
     ``compiles=False`` (``asterlite check``, which compiles nothing) leaves
     numba unimported."""
-    if compiles:
-        _listen_to_compilation()
+    if compiles and "numba" in sys.modules:  # else asterlite.dynamics.jit listens on import
+        listen_to_compilation()
     steady_allocator()
     _state.deadline = None if seconds is None else _spent() + seconds
     _state.seconds = seconds
@@ -267,7 +268,19 @@ _compiling = _Compilation()
 _listening = False
 
 
-def _listen_to_compilation() -> None:
+@contextmanager
+def compiler_work():
+    """Account a block as numba's compilations are (numba's own import): its
+    time and the memory it keeps are not the study's, the address-space cap
+    is lifted meanwhile."""
+    _compile_started()
+    try:
+        yield
+    finally:
+        _compile_ended()
+
+
+def listen_to_compilation() -> None:
     """Follow numba's compile events (once per process)."""
     global _listening
     if _listening:
@@ -366,8 +379,9 @@ def _address_space_cap(megabytes: float | None):
 def preload_engine() -> None:
     """Import the libraries every run needs before the memory cap is set, so
     that the cap measures the study's data, not the interpreter's libraries
-    (code_aster likewise adds its start-up footprint to memory_limit)."""
-    import numba  # noqa: F401
+    (code_aster likewise adds its start-up footprint to memory_limit). numba
+    is imported only when a numba kernel runs, its import accounted as a
+    compilation (:mod:`asterlite.dynamics.jit`)."""
     import numpy  # noqa: F401
     import scipy.linalg  # noqa: F401
     import scipy.sparse  # noqa: F401

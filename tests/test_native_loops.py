@@ -1,31 +1,35 @@
 """The compiled C++ loops (asterlite.dynamics.native) against the numba
 kernels they replace: the same positions and constants, and the same run to
 the last bit on every obstacle geometry, friction kind, matrix kind, load
-kind (tables, formula programs, sampled windows) and support motion."""
+kind (tables, formula programs, sampled windows), support motion and scheme
+covered."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from asterlite.concepts.function import Formula
 from asterlite.dynamics import contact as C
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics import native
 from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
-from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+from asterlite.dynamics.model import build_shocks
 from asterlite.lang import numeric
+from tests.native_runs import (
+    FORMULAS,
+    GEOMETRIES,
+    N_MODES,
+    assert_same_bits,
+    run,
+    shock_of,
+    system_of,
+)
 from tests.validated import scheme_options
 
 pytestmark = pytest.mark.skipif(
     native._loops is None, reason="the C++ loops are not built (no compiler at install)"
 )
-
-N_MODES = 5
-GEOMETRIES = (
-    "PLAN_Y", "PLAN_Z", "CERCLE", "DISCRET", "BI_PLAN_Y", "BI_PLAN_Z", "BI_CERCLE", "BI_CERC_INT",
-)  # fmt: skip
 
 
 def test_the_extension_was_built_with_the_python_positions():
@@ -35,123 +39,6 @@ def test_the_extension_was_built_with_the_python_positions():
         python.update({k: getattr(module, k) for k in built if hasattr(module, k)})
     assert set(python) == set(built)  # every name of the extension is found on the Python side
     assert python == built
-
-
-def system_of(diagonal: bool, rng) -> LinearSystem:
-    omega = np.array([25.0, 70.0, 160.0, 290.0, 410.0]) * 2.0 * np.pi
-    mass = np.diag(rng.uniform(0.7, 1.3, N_MODES))
-    stiffness = np.diag(omega**2 * np.diag(mass))
-    damping = np.diag(2.0 * 0.02 * omega * np.diag(mass))
-    if not diagonal:
-        coupling = 0.01 * rng.standard_normal((N_MODES, N_MODES))
-        coupling = coupling + coupling.T
-        stiffness = stiffness + coupling * omega[0] ** 2
-        damping = damping + 1.0e-3 * coupling
-    return LinearSystem(mass, stiffness, damping)
-
-
-def shock_of(geometry: str, rng, friction: str, norm_obst) -> ShockSpec:
-    two_nodes = geometry.startswith("BI_")
-    coord_1 = np.array([0.5, 0.01, -0.02])
-    coord_2 = coord_1 + (np.array([0.0, 2.0e-3, -1.0e-3]) if two_nodes else 0.0)
-    dist = {"BI_PLAN_Y": 1.0e-3, "BI_PLAN_Z": 5.0e-4, "BI_CERCLE": 1.1e-3, "BI_CERC_INT": 4.0e-3}
-    polar = None
-    if geometry == "DISCRET":  # an octagon of radius 1e-5
-        angles = np.linspace(0.0, 360.0, 9)
-        polar = np.column_stack([angles, np.full(9, 1.0e-5)])
-    return ShockSpec(
-        name="S",
-        obstacle_type=geometry,
-        node_1="N1",
-        node_2="N2" if two_nodes else None,
-        coord_1=coord_1,
-        coord_2=coord_2 if two_nodes else None,
-        phi_1=rng.standard_normal((3, N_MODES)) * 0.3,
-        phi_2=rng.standard_normal((3, N_MODES)) * 0.1 if two_nodes else None,
-        norm_obst=np.asarray(norm_obst, dtype=float),
-        angl_vril=17.0,
-        orig_obst=coord_1.copy(),
-        gap=1.0e-5,
-        dist_1=dist.get(geometry, 0.0),
-        dist_2=dist.get(geometry, 0.0) if geometry != "BI_CERC_INT" else 5.1e-3,
-        k_n=2.0e5,
-        c_n=5.0,
-        k_t=5.0e4 if friction != "none" else 0.0,
-        c_t=2.0,
-        mu_dyn=0.25 if friction != "none" else 0.0,
-        mu_stat=0.3 if friction != "none" else 0.0,
-        unidirectional=friction == "one-way",
-        polar=polar,
-    )
-
-
-FORMULAS = (
-    ("F0*sin(W*INST)", {"F0": 2.0, "W": 190.0}),
-    ("-INST**2 + 3*INST - 1/(INST+1) + cos(INST*50)", {}),
-    ("(INST > 0.01) * 2.0 + (1 if INST < 0.02 else -1) + tanh(INST) + floor(100*INST)", {}),
-    ("max(INST, 0.02, 0.01) + abs(INST - 0.5) + sqrt(INST) + exp(-INST) + log(1 + INST)", {}),
-    ("INST % 0.003 + atan2(INST, 1) + sign(INST - 0.02) + int(300 * INST) + hypot(INST, 2)", {}),
-)
-
-
-class Table:
-    INTERPOL = ("LIN", "LIN")
-    PROL_GAUCHE = PROL_DROITE = "CONSTANT"
-
-    def __init__(self, xs, ys):
-        self.abscissas, self.ordinates = np.asarray(xs), np.asarray(ys)
-
-    def evaluate(self, t):
-        return np.interp(t, self.abscissas, self.ordinates)
-
-
-class Sampled:  # known only through evaluate: sampled by windows
-    def evaluate(self, t):
-        return 0.5 * np.cos(140.0 * np.asarray(t))
-
-
-def run(monkeypatch, compiled: bool, geometry="CERCLE", diagonal=True, friction="both",
-        norm_obst=(1.0, 0.0, 0.0), formula=0, supports=False, t_end=0.04, pas_arch=7):  # fmt: skip
-    monkeypatch.setenv(native.SWITCH, "1" if compiled else "0")
-    rng = np.random.default_rng(11)
-    system = system_of(diagonal, rng)
-    spec = shock_of(geometry, rng, friction, norm_obst)
-    shocks = build_shocks([spec], system)
-    if geometry.startswith("BI_PLAN"):  # the planes 1e-5 apart at rest
-        apart = shocks.rots[0] @ (spec.coord_2 - spec.coord_1)
-        spec.dist_1 = spec.dist_2 = (abs(apart[1 if geometry == "BI_PLAN_Y" else 2]) - 1.0e-5) / 2
-        shocks = build_shocks([spec], system)
-    dt = 2.0e-5
-    times = np.linspace(0.0, t_end, 97)
-    text, extra = FORMULAS[formula]
-    loads = [
-        (rng.standard_normal(N_MODES), Formula(VALE=text, NOM_PARA="INST", extra=extra)),
-        (rng.standard_normal(N_MODES), Table(times, np.sin(60.0 * times) ** 2)),
-        (rng.standard_normal(N_MODES), Sampled()),
-    ]
-    excitation = tabulate_excitation(N_MODES, loads, 0.0, t_end, dt / 2.0)
-    if supports:
-        shapes = rng.standard_normal((1, 2, 3, 2))
-        displacement = Table(times, 1.0e-5 * np.sin(90.0 * times))
-        velocity = Table(times, 9.0e-4 * np.cos(90.0 * times))
-        motions = [(displacement, velocity), (Sampled(), Sampled())]
-        excitation.add_support_motion(shapes, motions, 0.0, t_end, dt / 2.0)
-    q0 = np.full(N_MODES, 2.0e-4)
-    instants = np.array([0.0123, 0.0123 + 0.3 * dt, t_end])
-    return integrate(
-        system, shocks, excitation, "DIFF_CENTRE", q0, np.zeros(N_MODES), 0.0, t_end, dt,
-        instants, pas_arch, scheme_options("DIFF_CENTRE"),
-    )  # fmt: skip
-
-
-def assert_same_bits(compiled, numba):
-    assert compiled.info["loop"].endswith("[C++]") and numba.info["loop"].endswith("[numba]")
-    timing = ("integration_seconds", "compile_seconds", "loop")
-    assert {k: v for k, v in compiled.info.items() if k not in timing} == {
-        k: v for k, v in numba.info.items() if k not in timing
-    }
-    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
-        np.testing.assert_array_equal(getattr(compiled, name), getattr(numba, name), err_msg=name)
 
 
 @pytest.mark.parametrize("geometry", GEOMETRIES)
@@ -209,10 +96,24 @@ def test_a_diverging_shock_stops_both_alike(monkeypatch):
 
 
 def test_arrays_of_another_kind_are_refused_by_name():
-    args = [np.zeros(3)] * 43
+    args = [np.zeros(3)] * 53
     with pytest.raises(TypeError, match="counters must be int64 values"):
         native._loops.diff_centre_loop(*args)
     with pytest.raises(TypeError, match="argument counters missing"):
         native._loops.diff_centre_loop(np.zeros(8))
     with pytest.raises(TypeError, match="argument clock must be a writable C-ordered array"):
         native._loops.diff_centre_loop(np.zeros((8, 2))[:, 0])
+
+
+# the schemes whose own loop is compiled C++ besides DIFF_CENTRE (native.LOOPS)
+PORTED_SCHEMES = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54")
+
+
+@pytest.mark.parametrize("scheme", PORTED_SCHEMES)
+@pytest.mark.parametrize("geometry, diagonal", [("CERCLE", True), ("BI_PLAN_Y", False)])
+def test_every_ported_scheme_gives_numbas_bits(monkeypatch, scheme, geometry, diagonal):
+    args = dict(geometry=geometry, diagonal=diagonal, scheme=scheme, supports=True, t_end=0.02)
+    compiled = run(monkeypatch, True, **args)
+    numba = run(monkeypatch, False, **args)
+    assert (numba.vint[:, 0, C.V_FN] > 0).any()
+    assert_same_bits(compiled, numba)

@@ -19,9 +19,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import contact as C
+from asterlite.dynamics.jit import njit
 
 S_NORM_VMIN, S_POINTS, S_MAX_TRIALS, S_MULT, S_DIVI, S_DTMIN, S_DTMAX = range(7)
 S_ADAPTIVE, S_CALM_STEPS, S_FIRST_CALL, S_KEPT_AT_MAX_TRIALS = range(7, 11)

@@ -21,7 +21,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from asterlite.dynamics.jit import njit
 
 # Obstacle geometry codes (kernel side); see OBSTACLE_CODES in obstacles.py.
 PLAN_Y, PLAN_Z, CERCLE, DISCRET, BI_PLAN_Y, BI_PLAN_Z, BI_CERCLE, BI_CERC_INT = range(8)

@@ -19,8 +19,6 @@ acceleration.
 
 from __future__ import annotations
 
-from numba import njit
-
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import scheme_adapt_ordre1 as A1
 from asterlite.dynamics import scheme_adapt_ordre2 as A2
@@ -29,6 +27,7 @@ from asterlite.dynamics import scheme_diff_centre as DC
 from asterlite.dynamics import scheme_newmark as N
 from asterlite.dynamics import scheme_runge_kutta as RK
 from asterlite.dynamics import scheme_trbdf2 as TR
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.schemes import (
     ADAPT_ORDRE1,

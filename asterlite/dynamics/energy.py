@@ -67,7 +67,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from asterlite.concepts.table import Table
 from asterlite.dynamics.contact import (
@@ -105,6 +104,7 @@ from asterlite.dynamics.contact import (
     obstacle_gap,
 )
 from asterlite.dynamics.forces import external_force, support_motion
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.kernel import C_TIME, K_ARCHIVED
 from asterlite.dynamics.laws.kernel import law_forces
 from asterlite.dynamics.layouts import LOADS, SHOCKS, Balance

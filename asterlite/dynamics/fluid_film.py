@@ -49,7 +49,6 @@ import time as wallclock
 from dataclasses import dataclass, replace
 
 import numpy as np
-from numba import njit
 
 from asterlite import progress, watchdog
 from asterlite.dynamics import adapt_control as A
@@ -84,6 +83,7 @@ from asterlite.dynamics.integrate import (
     new_buffers,
     run_info,
 )
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import ROWS, SCALARS, State
 from asterlite.errors import NumericalError
 from asterlite.errors import field as named

@@ -18,10 +18,10 @@ Bundles passed to the kernels (tuples of arrays, built by ``model.py``):
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics.contact import P_DRIVE1, P_DRIVE2, shock_forces
 from asterlite.dynamics.formula import run_program
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.kernel import C_STEP, C_TIME
 from asterlite.dynamics.laws.kernel import law_forces
 from asterlite.dynamics.layouts import LINEAR, LOADS, SHOCKS

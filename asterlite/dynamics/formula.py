@@ -29,8 +29,8 @@ import math
 import numbers
 
 import numpy as np
-from numba import njit
 
+from asterlite.dynamics.jit import njit
 from asterlite.errors import CommandError
 from asterlite.lang import numeric
 from asterlite.lang.formula import (

@@ -10,9 +10,9 @@ when M, K and C are all diagonal) and scratch operators.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics.forces import matvec_add
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.linalg import lu_factor, lu_solve
 
 N_BLOCKS = 6  # M, K, C, K_eff, F1, F2 (NEWMARK adds F3 in the scratch block)

@@ -62,7 +62,6 @@ included) is copied before it so that it can be integrated again.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import contact as C
 from asterlite.dynamics import dispatch as D
@@ -70,6 +69,7 @@ from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics import loop as L
 from asterlite.dynamics.contact import add_generalized_force, local_state, obstacle_gap
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import EXTRA, LINEAR, ROWS, SCALARS, SHOCKS, TABLE, Treatment
 
 EPS = np.finfo(np.float64).eps

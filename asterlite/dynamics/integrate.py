@@ -207,8 +207,8 @@ def run_kernel(
     f, a = np.zeros(n), np.zeros(n)
     vint = shocks.initial_vint(t0)
     work = np.zeros((5, 3))
-    native_loop = native_run_loop(
-        entry, notice.name, energy, rotation, implicit_shocks and shocks.count, options
+    native_loop = native.run_loop(
+        entry, notice.name, energy, rotation, implicit_shocks and shocks.count, options.adapt_v11
     )
     if native_loop is not None:
         shock = native.start(t0, q, v, a, f, vint, work, np.zeros(n), model)
@@ -331,17 +331,6 @@ def run_kernel(
         kept = int(memory[SCALARS][adapt_control.S_KEPT_AT_MAX_TRIALS])
         info["steps_kept_at_nmax_iter_pas"] = kept
     return RunResult(out_t, out_order, out_q, out_v, out_a, out_vint, out_info, info, rows)
-
-
-def native_run_loop(entry: Scheme, loop: str, energy: bool, rotation, implicit, options):
-    """The compiled C++ loop (:mod:`asterlite.dynamics.native`) that does
-    what the numba loop ``loop`` would, or None: DIFF_CENTRE's specialised
-    loops when nothing they leave to numba is asked."""
-    if entry.loops != "specialised" or loop not in entry.loop_names()[:2]:
-        return None
-    if not native.covers_diff_centre(energy, rotation, bool(implicit), options.adapt_v11):
-        return None
-    return native.diff_centre_loop
 
 
 def archive_start(buffers: Archive, t0: float, q, v, a, vint, dt: float) -> None:

@@ -54,12 +54,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
-from asterlite import progress
-
-# every compilation of a kernel says so on standard error (progress.kernel)
-progress.listen_to_compiles()
+from asterlite.dynamics.jit import njit
 
 STATUS_DONE = 0
 STATUS_NOT_FINITE = 1

@@ -7,7 +7,7 @@ only when the step changes, then solve once or twice per step.
 
 from __future__ import annotations
 
-from numba import njit
+from asterlite.dynamics.jit import njit
 
 
 @njit(cache=True)

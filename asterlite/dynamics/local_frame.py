@@ -27,18 +27,18 @@ shock frames are the global one, and differ by rounding otherwise.
 
 from __future__ import annotations
 
-from numba import njit
-from numba.core import types
-from numba.extending import overload
-
 from asterlite.dynamics import forces as F
+from asterlite.dynamics import jit
 from asterlite.dynamics.contact import local_shock_forces
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import LINEAR, LOADS, LOCAL, SHOCKS
 from asterlite.dynamics.scheme_diff_centre import external_force_into
 
 
 def takes_local_frames(model) -> bool:
     """Whether a model tuple's numba type carries the local-frame bundle."""
+    from numba.core import types
+
     return isinstance(model, types.BaseTuple) and len(model) == 4
 
 
@@ -121,7 +121,6 @@ def evaluate(t, q, v, out, f, residual, vint, work, model):
     raise NotImplementedError("compiled code only")
 
 
-@overload(evaluate, inline="always")
 def _evaluate(t, q, v, out, f, residual, vint, work, model):
     if takes_local_frames(model):
 
@@ -136,7 +135,6 @@ def _evaluate(t, q, v, out, f, residual, vint, work, model):
     return general
 
 
-@overload(total_force_at, inline="always")
 def _total_force_at(t, q, v, vint, work, f, model):
     if takes_local_frames(model):
 
@@ -149,6 +147,18 @@ def _total_force_at(t, q, v, vint, work, f, model):
         return F.total_force_at(t, q, v, model[SHOCKS], vint, model[LOADS], work, f)
 
     return general
+
+
+def _register() -> None:
+    """Which function :func:`evaluate` and :func:`total_force_at` call,
+    told numba once it is imported (asterlite.dynamics.jit)."""
+    from numba.extending import overload
+
+    overload(evaluate, inline="always")(_evaluate)
+    overload(total_force_at, inline="always")(_total_force_at)
+
+
+jit.on_load(_register)
 
 
 @njit(cache=True, inline="always")

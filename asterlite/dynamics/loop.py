@@ -39,11 +39,11 @@ import functools
 import sys
 import types
 
-from numba import njit
-
 from asterlite.dynamics import energy as E
+from asterlite.dynamics import jit
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import loads_ready
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import LOADS
 
 
@@ -96,8 +96,13 @@ def time_loop(clock, counters, state, memory, model, instants, pas_arch, eps, ar
     return K.STATUS_DONE
 
 
-@functools.cache
 def scheme_loop(step):
+    """:func:`compiled_scheme_loop` of ``step``'s numba dispatcher."""
+    return compiled_scheme_loop(jit.compiled(step))
+
+
+@functools.cache
+def compiled_scheme_loop(step):
     """The compiled :func:`time_loop` around ``step`` (a compiled
     ``step(t, dt, index, state, memory, model) -> (status, shock, dt_used,
     dt_next, rejected)``), one per step function.

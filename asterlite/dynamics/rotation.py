@@ -28,7 +28,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import loop as L
@@ -41,6 +40,7 @@ from asterlite.dynamics.excitation import (
 )
 from asterlite.dynamics.forces import multiplier_at
 from asterlite.dynamics.formula import run_program
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import EXTRA, LINEAR, ROTATION_CODE, ROWS, SCALARS, TABLE
 
 

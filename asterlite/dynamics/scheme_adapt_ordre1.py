@@ -6,11 +6,11 @@ intadapt1; the error is ignored on the first five steps)."""
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 

@@ -14,11 +14,11 @@ velocity is v_{n+1}. With a constant step this is central differences.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 

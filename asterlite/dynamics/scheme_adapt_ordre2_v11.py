@@ -37,11 +37,11 @@ whose trials compute the end acceleration by iterations.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite, copy_into, loads_ready, state_acceleration
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import LOADS, ROWS, SCALARS
 from asterlite.errors import NumericalError
 from asterlite.errors import field as named

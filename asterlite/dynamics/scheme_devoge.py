@@ -28,11 +28,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
 from asterlite.dynamics.forces import all_finite, copy_into, matvec_row
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.kernel import (
     STATUS_DONE,
     STATUS_NOT_FINITE,

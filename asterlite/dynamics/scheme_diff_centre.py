@@ -26,7 +26,6 @@ inline a step into a loop that receives it nor cache such a loop.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import kernel as K
@@ -41,6 +40,7 @@ from asterlite.dynamics.forces import (
     state_acceleration,
 )
 from asterlite.dynamics.formula import program_value
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import LOADS, LOCAL, ROWS, SHOCKS
 
 RESIDUAL = 0  # memory row: residual scratch

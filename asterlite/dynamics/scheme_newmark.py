@@ -26,7 +26,6 @@ step); first order in the load, so results differ from today's by O(dt).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import energy as E
 from asterlite.dynamics import implicit as I
@@ -39,6 +38,7 @@ from asterlite.dynamics.forces import (
     local_support_motion,
     total_force_at,
 )
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import LOADS, LOCAL, ROWS, SCALARS, SHOCKS
 
 # vector rows: index-2 displacement and velocity, right-hand side, pivots

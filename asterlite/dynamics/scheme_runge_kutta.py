@@ -37,11 +37,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.adapt_control import shock_damping_step
 from asterlite.dynamics.forces import all_finite, copy_into
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import LINEAR, ROWS, SHOCKS, TABLE
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 

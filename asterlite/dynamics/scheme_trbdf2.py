@@ -52,11 +52,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics import implicit as I
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.forces import all_finite
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.layouts import ROWS, SCALARS
 from asterlite.dynamics.local_frame import copy_vector, evaluate
 

@@ -19,11 +19,11 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-from numba import njit
 
 # numba's cache in asterlite's trusted kernel folder (asterlite.dynamics sets
 # it when imported: numba's index files are pickles, see docs/safety.md)
 import asterlite.dynamics  # noqa: F401
+from asterlite.dynamics.jit import njit
 
 # ----------------------------------------------------------------------------- kernels
 

@@ -24,8 +24,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.laws.tabulated import LawError
 from asterlite.errors import field as named
 

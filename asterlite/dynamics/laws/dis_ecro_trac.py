@@ -24,8 +24,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.laws import rk54
 from asterlite.dynamics.laws.discrete_hardening import C_DX0, C_FX0, C_KINEMATIC, C_N, N_Y
 from asterlite.dynamics.laws.tabulated import LawError

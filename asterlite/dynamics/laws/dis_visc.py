@@ -17,8 +17,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.laws import rk54
 from asterlite.dynamics.laws.tabulated import LawError
 from asterlite.dynamics.laws.zener import M_ALPHA, M_C, M_K2, M_S1, M_S3

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
+from asterlite.dynamics.jit import njit
 
 Y_F = 0  # force (3)
 Y_U = 3  # displacement (3)

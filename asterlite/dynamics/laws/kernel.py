@@ -24,7 +24,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics.contact import (
     F_GEOMETRY,
@@ -43,6 +42,7 @@ from asterlite.dynamics.contact import (
     P_SIGN_Z,
     obstacle_gap,
 )
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.laws import (
     anti_sism,
     choc_elas_trac,

@@ -11,8 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.laws.tabulated import LawError, function_table, value
 from asterlite.errors import field as named
 

@@ -14,8 +14,7 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
-
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.laws.discrete_hardening import hardening_rates
 from asterlite.dynamics.laws.zener import zener_rates
 

@@ -32,9 +32,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
 from asterlite.dynamics.formula import STACK_DEPTH, formula_program, run_program
+from asterlite.dynamics.jit import njit
 from asterlite.dynamics.laws.tabulated import LawError, function_table, value
 from asterlite.errors import field as named
 

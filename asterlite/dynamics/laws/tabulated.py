@@ -17,7 +17,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
+
+from asterlite.dynamics.jit import njit
 
 CONSTANT, LINEAIRE, EXCLU = 0, 1, 2
 PROLONGATIONS = {"CONSTANT": CONSTANT, "LINEAIRE": LINEAIRE, "EXCLU": EXCLU}

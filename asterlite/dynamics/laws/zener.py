@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
+from asterlite.dynamics.jit import njit
 
 # Unknowns
 Y_FORCE, Y_EPS_VISC, Y_EPS, Y_DISSIP = range(4)

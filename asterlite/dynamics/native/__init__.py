@@ -4,24 +4,29 @@ pip from the headers of this folder), run without waiting for a compiler.
 They do what the numba kernels of the same names do, operation for
 operation in the same order (no fused multiply-add, no reassociation:
 ``-ffp-contract=off``, no fast-math), so that a run gives the same bits on
-either; tests/test_native_loops.py checks both on every obstacle, load and
-matrix kind. What they cover now:
+either; tests/test_native_loops.py checks both on every obstacle, load,
+matrix kind and scheme covered. What they cover now, each with DIS_CHOC
+shocks in their local frames, tabulated and formula loads, sampled windows
+and support motions, without energy balance (numba keeps it):
 
 - DIFF_CENTRE's specialised loop on diagonal or full matrices
-  (:func:`asterlite.dynamics.scheme_diff_centre.fast_loop`) with DIS_CHOC
-  shocks, tabulated and formula loads, support motions; without the energy
-  balance (the numba loop keeps it);
-- the total force and acceleration at the start of such a run
+  (:func:`asterlite.dynamics.scheme_diff_centre.fast_loop`);
+- RUNGE_KUTTA_32/54's loop (:mod:`asterlite.dynamics.scheme_runge_kutta`);
+- the total force and acceleration at the start of such runs
   (:func:`asterlite.dynamics.forces.total_force`, ``acceleration``).
 
-Every other loop is numba's. ``ASTERLITE_NATIVE=0`` runs numba's
-everywhere (comparisons); a checkout whose extension was not built (no C++
-compiler at install) runs numba's too.
+Every other loop is numba's: the general paths (relations of laws/),
+varying rotation speed, implicit shocks, fluid films, code_aster 10-12's
+ADAPT_ORDRE2, the schemes not ported yet. ``ASTERLITE_NATIVE=0`` runs
+numba's everywhere (comparisons); a checkout whose extension was not built
+(no C++ compiler at install) runs numba's too.
 """
 
 from __future__ import annotations
 
+import importlib
 import os
+import pkgutil
 
 from asterlite.dynamics.layouts import LINEAR, LOADS, LOCAL, ROWS, SHOCKS
 
@@ -32,6 +37,7 @@ except ImportError:  # not built: the numba kernels serve
 
 SWITCH = "ASTERLITE_NATIVE"  # "0": numba's loops everywhere
 RESIDUAL = 0  # the memory row of DIFF_CENTRE's residual (scheme_diff_centre.RESIDUAL)
+GENERAL_PATH = "{} (general path)"  # schemes.GENERAL_PATH: always numba's
 
 
 def available() -> bool:
@@ -39,10 +45,17 @@ def available() -> bool:
     return _loops is not None and os.environ.get(SWITCH, "1") != "0"
 
 
-def covers_diff_centre(energy: bool, rotation, implicit: bool, legacy: bool) -> bool:
-    """Whether DIFF_CENTRE's specialised loop (diagonal or full matrices,
-    DIS_CHOC shocks only: the loop integrate.loop_kernel names) runs here."""
-    return available() and not (energy or rotation is not None or implicit or legacy)
+def run_loop(entry, loop: str, energy: bool, rotation, implicit, legacy: bool):
+    """The compiled loop that does what numba's loop ``loop`` (as
+    :func:`asterlite.dynamics.integrate.loop_kernel` names it) of the scheme
+    ``entry`` would, or None when numba's serves: a scheme's own loop (not
+    its general path) without energy balance, varying rotation, implicit
+    shocks or code_aster 10-12's variant, when its scheme is ported."""
+    if not available() or energy or rotation is not None or implicit or legacy:
+        return None
+    if loop not in entry.loop_names() or loop == GENERAL_PATH.format(entry.kernel):
+        return None
+    return LOOPS.get(entry.kernel)
 
 
 def diff_centre_loop(
@@ -50,45 +63,70 @@ def diff_centre_loop(
 ):
     """scheme_diff_centre.fast_loop on the same bundles (``energy``
     inactive): a ``K.STATUS_*``, the arrays advanced in place."""
-    exc, shk = model[LOADS], model[SHOCKS]
-    mass_inverse, stiffness, damping, shapes, rest, drive = model[LOCAL]
+    mass_inverse, stiffness, damping = model[LOCAL][:3]
     return _loops.diff_centre_loop(
-        clock, counters, instants,
-        state.q, state.v, state.a, state.f, state.vint, memory[ROWS][RESIDUAL],
-        mass_inverse, stiffness, damping,
-        shk.flags, shk.params, shk.rots, shk.polars, shapes, rest, drive,
-        *_loads(exc), *_supports(exc),
-        *archive,
-        int(pas_arch), float(eps),
+        clock, counters, instants, *state, memory[ROWS][RESIDUAL],
+        mass_inverse, stiffness, damping, *model_arguments(model),
+        *archive, int(pas_arch), float(eps),
     )  # fmt: skip
+
+
+def time_loop(function):
+    """loop.scheme_loop's loop around a ported step: the same call."""
+
+    def run(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
+        return function(
+            clock, counters, instants, *state, *memory[:3], *model_arguments(model),
+            *archive, int(pas_arch), float(eps),
+        )  # fmt: skip
+
+    return run
 
 
 def start(t, q, v, a, f, vint, work, residual, model) -> int:
-    """f = forces.total_force(t, ...) and a = forces.acceleration(f, ...):
-    a diverging shock's index or -1."""
+    """f = forces.total_force(t, q, v, ...), a = forces.acceleration(f, ...):
+    a diverging shock's index or -1 (``vint`` updated, ``work`` scratch)."""
+    state = (q, v, a, f, vint, vint, work)  # read_state's order; no trial copy here
+    return _loops.start(float(t), *state, residual, *model_arguments(model))
+
+
+def model_arguments(model) -> tuple:
+    """The 27 arrays of the model, in the order of arguments.hpp's read_model."""
     lin, shk, exc = model[LINEAR], model[SHOCKS], model[LOADS]
-    return _loops.start(
-        float(t), q, v, a, f, vint, residual, work,
-        lin.minv, lin.stiffness, lin.damping, lin.diagonal,
-        shk.flags, shk.params, shk.rots, shk.polars, shk.phis,
-        *_loads(exc), *_supports(exc),
-    )  # fmt: skip
-
-
-def _loads(exc) -> tuple:
+    shapes, rest, drive = model[LOCAL][-3:]
     return (
+        lin.minv, lin.stiffness, lin.damping, lin.diagonal,
+        shk.flags, shk.params, shk.rots, shk.phis, shk.polars,
         exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.pending, exc.cursors,
         exc.codes, exc.constants, exc.stack,
-    )  # fmt: skip
-
-
-def _supports(exc) -> tuple:
-    return (
         exc.drive_shapes, exc.drive_abscissas, exc.drive_ordinates, exc.drive_layout,
         exc.drive_pending, exc.drive_cursors,
+        shapes, rest, drive,
     )  # fmt: skip
 
 
 def layout() -> dict:
     """The positions and constants the extension was built with."""
     return _loops.layout()
+
+
+def compiled_loops() -> dict:
+    """The compiled loop of each scheme kernel (schemes.Scheme.kernel):
+    DIFF_CENTRE's, and those every extension module of this folder lists in
+    its ``KERNELS`` (called as loop.hpp's run_time_loop reads them)."""
+    if _loops is None:
+        return {}
+    loops = {"DIFF_CENTRE": diff_centre_loop}
+    for found in pkgutil.iter_modules(__path__):
+        if not found.name.startswith("_"):
+            continue
+        try:
+            module = importlib.import_module(f"{__name__}.{found.name}")
+        except ImportError:  # another build's leftover: not this interpreter's
+            continue
+        for kernel, function in getattr(module, "KERNELS", {}).items():
+            loops[kernel] = time_loop(getattr(module, function))
+    return loops
+
+
+LOOPS = compiled_loops()

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "layout.hpp"
+#include "python_math.hpp"
 #include "views.hpp"
 
 namespace asterlite {
@@ -15,6 +16,7 @@ struct Shocks {
     I2 flags;    // (n_shocks, >= 4): contact.F_*
     F2 params;   // (n_shocks, 35): contact.P_*
     F3 rots;     // (n_shocks, 3, 3): global -> local
+    F4 phis;     // (n_shocks, 2, 3, n_modes): mode shapes at the nodes, global frame
     F3 polars;   // (n_shocks, n_polar, 2): DISCRET facets
 };
 
@@ -151,10 +153,7 @@ inline LocalForce contact_law(const F2& params, bool unidir, const F2& vint, ind
         fy = fn * cos_n;
         fz = fn * sin_n;
         if (std::fabs(params(s, P_MU_STAT)) > EPS || std::fabs(params(s, P_MU_DYN)) > EPS) {
-            double largest = vx;  // Python's max(vx, vy, vz), as numba reduces it
-            if (vy > largest) largest = vy;
-            if (vz > largest) largest = vz;
-            if (largest > VELOCITY_DIVERGENCE) return {true, in_contact, fx, fy, fz};
+            if (py_max(vx, vy, vz) > VELOCITY_DIVERGENCE) return {true, in_contact, fx, fy, fz};
             friction_force(fn, rx, ry, rz, vx, vy, vz, cos_n, sin_n, params(s, P_MU_DYN),
                            params(s, P_MU_STAT), params(s, P_KT), params(s, P_CT), unidir, vint,
                            s, ft1, ft2, vt1, vt2);
@@ -192,14 +191,14 @@ inline void rotate_in_place(const F3& rots, index s, double* x) {
 
 // contact.local_state: a node's local position (from the obstacle's origin,
 // support motion added) and velocity; phis(s, node) is (3, n_modes)
-inline void local_state(const Shocks& shk, const F4& phis, index s, index node, index coord,
-                        index drive, const F1& q, const F1& v, double* loc, double* vel) {
+inline void local_state(const Shocks& shk, index s, index node, index coord, index drive,
+                        const F1& q, const F1& v, double* loc, double* vel) {
     for (index i = 0; i < 3; ++i) {
         double xg = shk.params(s, coord + i) - shk.params(s, P_ORIGIN + i) + shk.params(s, drive + i);
         double vg = shk.params(s, drive + 3 + i);
         for (index m = 0; m < q.n0; ++m) {
-            xg += phis(s, node, i, m) * q(m);
-            vg += phis(s, node, i, m) * v(m);
+            xg += shk.phis(s, node, i, m) * q(m);
+            vg += shk.phis(s, node, i, m) * v(m);
         }
         loc[i] = xg;
         vel[i] = vg;
@@ -223,8 +222,8 @@ inline void add_generalized_force(const F3& rots, const F4& phis, index s, index
 // out, mode shapes in the global frame; ``work`` (5, 3) scratch as there.
 // Returns the first diverging shock or -1. Explicit shocks only: the module
 // refuses flags of the implicit treatment before it calls this.
-inline index shock_forces(const F1& q, const F1& v, const Shocks& shk, const F4& phis,
-                          const F2& vint, const F2& work, const F1& out) {
+inline index shock_forces(const F1& q, const F1& v, const Shocks& shk, const F2& vint,
+                          const F2& work, const F1& out) {
     double* loc1 = &work(0, 0);
     double* vel1 = &work(1, 0);
     double* loc2 = &work(2, 0);
@@ -235,9 +234,9 @@ inline index shock_forces(const F1& q, const F1& v, const Shocks& shk, const F4&
     for (index s = 0; s < flags.n0; ++s) {
         if (flags.n1 > F_LAW && flags(s, F_LAW) != 0) continue;  // another relation
         const bool two_nodes = flags(s, F_TWO_NODES) == 1;
-        local_state(shk, phis, s, 0, P_COORD1, P_DRIVE1, q, v, loc1, vel1);
+        local_state(shk, s, 0, P_COORD1, P_DRIVE1, q, v, loc1, vel1);
         if (two_nodes) {
-            local_state(shk, phis, s, 1, P_COORD2, P_DRIVE2, q, v, loc2, vel2);
+            local_state(shk, s, 1, P_COORD2, P_DRIVE2, q, v, loc2, vel2);
         } else {
             for (index i = 0; i < 3; ++i) {
                 loc2[i] = 0.0;
@@ -270,8 +269,8 @@ inline index shock_forces(const F1& q, const F1& v, const Shocks& shk, const F4&
             f_local[0] = lf.fx;
             f_local[1] = lf.fy;
             f_local[2] = lf.fz;
-            add_generalized_force(shk.rots, phis, s, 0, f_local, 1.0, out);
-            if (two_nodes) add_generalized_force(shk.rots, phis, s, 1, f_local, -1.0, out);
+            add_generalized_force(shk.rots, shk.phis, s, 0, f_local, 1.0, out);
+            if (two_nodes) add_generalized_force(shk.rots, shk.phis, s, 1, f_local, -1.0, out);
         }
     }
     return -1;
