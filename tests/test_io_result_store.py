@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -287,3 +289,232 @@ def test_a_run_saves_the_energy_table_of_its_tran_gene(tmp_path):
         columns = f["RESUGENE/tables/PARA_CALC/columns"]
         assert columns["RESIDU"].attrs["type"] == "R"
         assert np.array_equal(columns["INST"][()], back.times)
+
+
+# ----------------------------------------------------------------- bases of every kind
+
+
+def assert_same_physical_basis(back, original) -> None:
+    assert type(back) is type(original) and back.name == original.name
+    assert back.numbering.dofs == original.numbering.dofs
+    assert back.kind == original.kind and back.norm == original.norm
+    np.testing.assert_array_equal(back.shapes, original.shapes)
+    np.testing.assert_array_equal(back.frequencies, original.frequencies)
+    np.testing.assert_array_equal(back.generalized_mass, original.generalized_mass)
+    np.testing.assert_array_equal(back.mode_numbers, original.mode_numbers)
+    assert back.mode_labels == original.mode_labels
+    assert back.numbering.mesh.node_names == original.numbering.mesh.node_names
+    np.testing.assert_array_equal(back.numbering.mesh.coords, original.numbering.mesh.coords)
+    for key, value in original.parameters.items():
+        assert np.asarray(back.parameters[key]).tolist() == np.asarray(value).tolist(), key
+
+
+def assert_same_interfaces(back, original) -> None:
+    assert back.name == original.name and back.frequency == original.frequency
+    assert [i.name for i in back.interfaces] == [i.name for i in original.interfaces]
+    for got, want in zip(back.interfaces, original.interfaces, strict=True):
+        assert (got.kind, tuple(got.masked)) == (want.kind, tuple(want.masked))
+        for key in ("nodes", "dofs", "dof_nodes"):
+            np.testing.assert_array_equal(getattr(got, key), getattr(want, key))
+
+
+def assert_same_substructured_modes(back, original) -> None:
+    """Generalized modes on a DEFI_MODELE_GENE numbering, rebuilt down to the
+    substructures' macro-elements, their bases and interfaces."""
+    from asterlite.concepts.modes import GeneralizedModes
+    from asterlite.concepts.substructure import ReductionBasis, SubstructuredNumbering
+    from asterlite.substructure.coupling import constraint_rows
+    from asterlite.substructure.restitution import substructure_modes
+
+    assert isinstance(back, GeneralizedModes) and back.name == original.name
+    for key in ("vectors", "frequencies", "generalized_mass", "generalized_stiffness"):
+        np.testing.assert_array_equal(getattr(back, key), getattr(original, key))
+    np.testing.assert_array_equal(back.mode_numbers, original.mode_numbers)
+    numbering, want = back.numbering, original.numbering
+    assert isinstance(numbering, SubstructuredNumbering) and numbering.basis is None
+    assert (numbering.name, numbering.storage, numbering.method) == (
+        want.name,
+        want.storage,
+        want.method,
+    )
+    np.testing.assert_array_equal(numbering.offsets, want.offsets)
+    np.testing.assert_array_equal(numbering.constraints, want.constraints)
+    model, model_want = numbering.model, want.model
+    assert model.name == model_want.name
+    assert [s.name for s in model.substructures] == ["COTE1", "COTE2"]
+    for sub, sub_want in zip(model.substructures, model_want.substructures, strict=True):
+        np.testing.assert_array_equal(sub.rotation, sub_want.rotation)
+        np.testing.assert_array_equal(sub.translation, sub_want.translation)
+        macro, macro_want = sub.macro, sub_want.macro
+        assert macro.name == macro_want.name
+        np.testing.assert_array_equal(macro.stiffness, macro_want.stiffness)
+        np.testing.assert_array_equal(macro.mass, macro_want.mass)
+        assert isinstance(macro.basis, ReductionBasis)
+        assert_same_physical_basis(macro.basis, macro_want.basis)
+        assert macro.interfaces is macro.basis.interfaces  # as MACR_ELEM_DYNA shares them
+        assert_same_interfaces(macro.interfaces, macro_want.interfaces)
+    assert [vars(link) for link in model.links] == [vars(link) for link in model_want.links]
+    # it couples and restores as the original: the same relations, the same shapes
+    np.testing.assert_allclose(constraint_rows(model, numbering.offsets), want.constraints)
+    every = np.arange(back.n_modes)
+    restored = substructure_modes(back, "COTE2", every).shapes
+    np.testing.assert_array_equal(restored, substructure_modes(original, "COTE2", every).shapes)
+
+
+SUBSTRUCTURED_TRANSIENTS = """
+PUSH = AFFE_CHAR_MECA(MODELE=MODEL, FORCE_NODALE=_F(NOEUD="N2", FY=-200.0))
+FEL = CALC_VECT_ELEM(OPTION="CHAR_MECA", CHARGE=PUSH)
+FAS = ASSE_VECTEUR(VECT_ELEM=FEL, NUME_DDL=NU_R)
+FGEN = ASSE_VECT_GENE(NUME_DDL_GENE=NUMEGE, CHAR_SOUS_STRUC=_F(SOUS_STRUC="COTE2", VECT_ASSE=FAS))
+NUMODE = NUME_DDL_GENE(BASE=RESGEN, STOCKAGE="DIAG")
+KPRO = PROJ_MATR_BASE(BASE=RESGEN, NUME_DDL_GENE=NUMODE, MATR_ASSE_GENE=KGEN)
+MPRO = PROJ_MATR_BASE(BASE=RESGEN, NUME_DDL_GENE=NUMODE, MATR_ASSE_GENE=MGEN)
+FPRO = PROJ_VECT_BASE(BASE=RESGEN, NUME_DDL_GENE=NUMODE, VECT_ASSE_GENE=FGEN, TYPE_VECT="FORC")
+ON_MODES = DYNA_VIBRA(TYPE_CALCUL="TRAN", BASE_CALCUL="GENE", SCHEMA_TEMPS=_F(SCHEMA="NEWMARK"),
+    MATR_MASS=MPRO, MATR_RIGI=KPRO, EXCIT=_F(VECT_ASSE_GENE=FPRO, COEF_MULT=1.0),
+    INCREMENT=_F(INST_INIT=0.0, INST_FIN=1.0e-3, PAS=1.0e-5))
+DIRECT = DYNA_VIBRA(TYPE_CALCUL="TRAN", BASE_CALCUL="GENE", SCHEMA_TEMPS=_F(SCHEMA="NEWMARK"),
+    MATR_MASS=MGEN, MATR_RIGI=KGEN, EXCIT=_F(VECT_ASSE_GENE=FGEN, COEF_MULT=1.0),
+    INCREMENT=_F(INST_INIT=0.0, INST_FIN=1.0e-3, PAS=1.0e-5))
+FIN()
+"""
+
+
+def test_substructured_transients_are_saved_and_read_back_as_they_are(tmp_path):
+    """``--save-results`` on a coupled model (DEFI_MODELE_GENE): a transient on
+    the coupled modes (a mode_gene, PROJ_BASE) and one on the assembled
+    generalized matrices (the null space of the interface relations) come
+    back with their generalized bases, never as a physical basis."""
+    from asterlite import api
+    from asterlite.concepts.modes import GeneralizedModes
+    from asterlite.post.plots import PlotError, node_history
+    from asterlite.runtime.runner import run_deck
+    from asterlite.substructure.restitution import substructure_modes
+
+    from .test_substructure_beam import LENGTH, beam_mesh, substructured_deck
+
+    deck = substructured_deck(nmax=2, clamped=True).replace("FIN()\n", SUBSTRUCTURED_TRANSIENTS)
+    (tmp_path / "cut.comm").write_text(deck)
+    (tmp_path / "cut.mail").write_text(beam_mesh(4, LENGTH / 2))
+    report = run_deck(tmp_path / "cut.comm", tmp_path / "run", save_results=True)
+    assert report.status == "DONE", report.message
+    store = tmp_path / "run" / "results.h5"
+    assert stored_names(store) == ["ON_MODES", "DIRECT"]
+    for name in ("ON_MODES", "DIRECT"):
+        original, back = report.namespace[name], load_tran_gene(store, name)
+        assert isinstance(original.basis, GeneralizedModes)
+        for field in ("times", "order", "depl", "vite", "acce"):
+            np.testing.assert_array_equal(getattr(back, field), getattr(original, field))
+        assert_same_substructured_modes(back.basis, original.basis)
+    assert load_tran_gene(store, "ON_MODES").basis.name == "RESGEN"
+    # as plain data and with h5py: the kind of basis and what it is built on
+    data = read_tran_gene_dict(store, "DIRECT")["basis"]
+    assert data["basis_type"] == "mode_gene" and "shapes" not in data
+    assert data["numbering"]["built_on"] == "modele_gene"
+    assert data["numbering"]["substructure_names"] == ["COTE1", "COTE2"]
+    assert data["vectors"].shape == (8, 6)  # 4 unknowns per side, 2 interface relations
+    with h5py.File(store, "r") as f:
+        basis = f["ON_MODES/basis"]
+        assert basis.attrs["basis_type"] == "mode_gene" and basis.attrs["name"] == "RESGEN"
+        assert f["ON_MODES"].attrs["layout_version"] == 3
+        numbering = basis["numbering"]
+        assert numbering["offsets"][()].tolist() == [0, 4, 8]
+        assert list(numbering["model/macros"]) == ["ME_L", "ME_R"]
+        cote2 = numbering["model/substructures/COTE2"]
+        assert cote2.attrs["macro"] == "ME_R" and cote2["translation"][()][0] == LENGTH / 2
+        macro_basis = numbering["model/macros/ME_R/basis"]
+        assert macro_basis.attrs["basis_type"] == "mode_meca"
+        assert list(macro_basis["interfaces"]) == ["GAUCHE"]
+        # COTE2's physical displacement as docs/results.md restores it
+        q = f["ON_MODES/depl"][()] @ basis["vectors"][()].T
+        u = q[:, 4:8] @ macro_basis["shapes"][()].T
+    original = report.namespace["ON_MODES"]
+    every = np.arange(original.n_modes)
+    restored = substructure_modes(original.basis, "COTE2", every).shapes
+    np.testing.assert_allclose(u, original.depl @ restored.T, rtol=0, atol=1e-12 * abs(u).max())
+    # as data (asterlite.load) and for plots, a generalized basis is what it is
+    data = api.load(store, "DIRECT")
+    assert np.asarray(data["vectors"]).shape == (8, 6) and "shapes" not in data
+    with pytest.raises(PlotError, match="the result has a mode_gene basis"):
+        node_history(load_tran_gene(store, "DIRECT"), "N2", "DY")
+
+
+@pytest.mark.parametrize("kind", ["none", "mode_gene", "mode_meca_c", "mode_flamb"])
+def test_every_kind_of_basis_round_trips(tmp_path, kind):
+    """No basis (REST_SPEC_TEMP of a harm_gene on a coupled model's
+    matrices), generalized modes on a projection basis (a mode_gene of
+    PROJ_MATR_BASE's matrices), complex and buckling modes."""
+    from asterlite.concepts.modes import (
+        BucklingModes,
+        ComplexModeResult,
+        GeneralizedModes,
+        GeneralizedNumbering,
+    )
+
+    result = rich_transient()
+    physical = result.basis
+    if kind == "none":
+        result.basis = None
+    elif kind == "mode_gene":
+        numbering = GeneralizedNumbering(basis=physical, storage="DIAG")
+        numbering.name = "NUMGEN"
+        result.basis = GeneralizedModes(
+            numbering=numbering,
+            vectors=np.array([[1.0, 0.5], [0.0, 2.0]]),
+            frequencies=np.array([1.5, 3.0]),
+            generalized_mass=np.ones(2),
+            generalized_stiffness=np.array([9.0, 36.0]) * np.pi**2,
+            parameters={"NUME_MODE": np.array([1, 2]), "MASS_EFFE_DX": np.array([0.2, 0.1])},
+        )
+    else:
+        cls = ComplexModeResult if kind == "mode_meca_c" else BucklingModes
+        fields = {f: getattr(physical, f) for f in physical.__dataclass_fields__}
+        fields["parameters"] = {"NUME_MODE": np.array([1, 2]), "CHAR_CRIT": np.array([-2.0, 5.0])}
+        if kind == "mode_meca_c":
+            fields["shapes"] = physical.shapes * (1.0 + 0.5j)
+            fields["eigenvalues"] = np.array([-0.1 + 6.0j, -0.2 + 12.0j])
+        result.basis = cls(**fields)
+        result.basis.name = "MODES"
+    path = save_tran_gene(tmp_path / "r.h5", result)
+    back = load_tran_gene(path).basis
+    assert read_tran_gene_dict(path)["basis"]["basis_type"] == kind
+    if kind == "none":
+        assert back is None
+    elif kind == "mode_gene":
+        assert isinstance(back, GeneralizedModes) and back.numbering.name == "NUMGEN"
+        assert back.numbering.storage == "DIAG"
+        np.testing.assert_array_equal(back.vectors, result.basis.vectors)
+        assert back.parameters["MASS_EFFE_DX"].tolist() == [0.2, 0.1]
+        assert_same_physical_basis(back.numbering.basis, physical)
+    else:
+        assert_same_physical_basis(back, result.basis)
+        if kind == "mode_meca_c":
+            np.testing.assert_array_equal(back.eigenvalues, result.basis.eigenvalues)
+
+
+SUBSTRUCTURING_CORPUS = Path(__file__).resolve().parents[2] / "shared" / "aster-corpus-wider"
+
+
+@pytest.mark.parametrize("name", ["sdld102a", "sdll113a"])
+def test_save_results_of_substructuring_corpus_decks(tmp_path, name):
+    """The code_aster tests of dynamic substructuring with ``--save-results``:
+    every tran_gene saved (transients on a coupled model's modes or on its
+    assembled matrices, and on physical bases), each with its own kind of basis."""
+    from asterlite.runtime.runner import run_deck
+
+    export = SUBSTRUCTURING_CORPUS / name / f"{name}.export"
+    if not export.exists():
+        pytest.skip("the wider corpus is not here")
+    pytest.importorskip("pyuff")  # both read an I-DEAS mesh
+    report = run_deck(export, tmp_path / "out", save_results=True)
+    assert report.status == "PASS", report.message
+    store = tmp_path / "out" / "results.h5"
+    saved = {n: v for n, v in report.namespace.items() if isinstance(v, TranGene)}
+    assert sorted(stored_names(store)) == sorted(saved)
+    kinds = set()
+    for key, original in saved.items():
+        back = load_tran_gene(store, key)
+        assert type(back.basis) is type(original.basis)
+        np.testing.assert_array_equal(back.depl, original.depl)
+        kinds.add(read_tran_gene_dict(store, key)["basis"]["basis_type"])
+    assert kinds == {"mode_gene", "mode_meca"}

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from asterlite.concepts.function import Function, Nappe
-from asterlite.concepts.modes import ModeResult, MultElasResult
+from asterlite.concepts.modes import GeneralizedModes, ModeResult, MultElasResult
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, TranGene
 from asterlite.fem.dofs import sort_components
@@ -115,10 +115,9 @@ def frame(columns: dict[str, np.ndarray], attrs: dict):
 # ---------------------------------------------------------------- transients
 
 
-def _mode_coords(basis: ModeResult) -> dict:
-    count = np.asarray(basis.shapes).shape[1]
-    numbers = basis.parameters.get("NUME_MODE") if basis.parameters else None
-    numbers = np.arange(1, count + 1) if numbers is None else np.asarray(numbers, dtype=int)
+def _mode_coords(basis: ModeResult | GeneralizedModes) -> dict:
+    count = basis.n_modes
+    numbers = np.asarray(basis.mode_numbers, dtype=int)
     return {
         "mode": (("mode",), numbers[:count]),
         "frequency": (("mode",), np.asarray(basis.frequencies, dtype=float)[:count]),
@@ -133,7 +132,9 @@ def _dof_labels(numbering) -> list[str]:
 def transient_data(tran: TranGene):
     """A tran_gene: depl/vite/acce (time, mode); each shock quantity (FN,
     FT1, ...) as (time, shock), NaN for a shock that lacks it; the mode
-    shapes (dof, mode) that give physical values (``depl @ shapes.T``)."""
+    shapes (dof, mode) that give physical values (``depl @ shapes.T``), or
+    for generalized modes (a mode_gene) their vectors (generalized_dof,
+    mode) that give the NUME_DDL_GENE's unknowns (``depl @ vectors.T``)."""
     times = np.asarray(tran.times, dtype=float)
     data_vars = {
         name: (("time", "mode"), np.asarray(getattr(tran, name))) for name in TRANSIENT_FIELDS
@@ -149,7 +150,10 @@ def transient_data(tran: TranGene):
         ]
         data_vars[quantity] = (("time", "shock"), np.column_stack(columns))
     coords = {"time": (("time",), times), "order": (("time",), np.asarray(tran.order))}
-    if tran.basis is not None:
+    if isinstance(tran.basis, GeneralizedModes):  # no mesh: the generalized unknowns
+        coords.update(_mode_coords(tran.basis))
+        data_vars["vectors"] = (("generalized_dof", "mode"), np.asarray(tran.basis.vectors))
+    elif tran.basis is not None:
         coords.update(_mode_coords(tran.basis))
         if tran.basis.numbering is not None:
             coords["dof"] = (("dof",), np.array(_dof_labels(tran.basis.numbering)))

@@ -26,15 +26,24 @@ layout is described in ``docs/results.md``::
       scheme/                       attrs: every scalar of the integration summary
       shocks/<INTITULE>/            attrs: name, relation, node_1, node_2, index, parameters
         FN, FT1, ..., VINT20        (n_archived,)
-      basis/                        attrs: name, kind, norm
+      basis/                        attrs: basis_type, name, ...; what depends on the
+                                    kind of basis (asterlite.io.basis_store):
+        (mode_meca, mode_flamb, mode_meca_c: a physical basis)
         shapes                      (n_dofs, n_modes)
         dof_nodes, dof_components   (n_dofs,)  node index (0-based) and component name
         dof_labels                  (n_dofs,)  "NODE COMPONENT"
         frequencies, generalized_mass, generalized_stiffness, mode_numbers  (n_modes,)
+        parameters/<PARA>           (n_modes,)
         mesh/                       attrs: name, dim, title
           coords (n_nodes, 3), node_names (n_nodes,)
           cell_names, cell_types, cell_offsets, cell_connectivity
           node_groups/<G>, cell_groups/<G>   0-based indices
+        (mode_gene: generalized modes)
+        vectors                     (n_gene, n_modes)
+        frequencies, ..., parameters/
+        numbering/                  the NUME_DDL_GENE, built on a basis (basis/, nested)
+                                    or on a generalized model (offsets, constraints, model/)
+        (none: no basis)
       tables/<NOM_TABLE>/           attrs: name, title, concept, n_rows
         columns/<PARA>              (n_rows,)  attrs: parameter, type (R, I, C, K8...)
         present/<PARA>              (n_rows,)  bool, only for parameters some rows lack
@@ -43,7 +52,6 @@ layout is described in ``docs/results.md``::
 from __future__ import annotations
 
 import os
-import re
 import shutil
 import uuid
 from contextlib import contextmanager
@@ -53,16 +61,27 @@ from typing import Any
 
 import numpy as np
 
-from asterlite.concepts.assembly import DofNumbering
 from asterlite.concepts.harmonic import DynaHarmo
-from asterlite.concepts.mesh import Mesh
 from asterlite.concepts.modes import ModeResult, MultElasResult
 from asterlite.concepts.table import Table
 from asterlite.concepts.transient import DynaTrans, ShockHistory, TranGene
 from asterlite.errors import CommandError
+from asterlite.io.basis_store import basis_from, read_basis, write_basis
+from asterlite.io.hdf5_values import (
+    h5py_module,
+    plain,
+    read_attrs,
+    read_group_arrays,
+    read_strings,
+    strings,
+    unique_member_names,
+    write_attributes,
+)
 from asterlite.io.med_writer import dofs_to_nodal
 
-LAYOUT_VERSION = 2  # 2: tables/ (files of version 1 read back with no tables)
+# 2: tables/ (files of version 1 read back with no tables); 3: basis/ of every
+# kind, with basis_type (older files hold a mode_meca, without parameters/)
+LAYOUT_VERSION = 3
 NODAL_DOF_FIELDS = ("DEPL", "VITE", "ACCE")
 
 
@@ -254,115 +273,9 @@ def nodal_series(result, name: str, nodes=None, components=()) -> tuple:
 # =============================================================================
 
 
-def _h5py():
-    try:
-        import h5py
-    except ImportError as exc:  # pragma: no cover - declared dependency
-        raise RuntimeError("the HDF5 result store needs the 'h5py' package") from exc
-    return h5py
-
-
-def _strings(values) -> np.ndarray:
-    h5py = _h5py()
-    return np.array([str(v) for v in values], dtype=h5py.string_dtype())
-
-
-def _read_strings(dataset) -> list[str]:
-    return [str(s) for s in dataset.asstr()[()]]
-
-
-def _attribute_value(value):
-    """A value HDF5 can hold as an attribute, or None when it cannot."""
-    if value is None:
-        return None
-    if isinstance(value, bool | np.bool_):
-        return bool(value)
-    if isinstance(value, int | float | str | np.integer | np.floating):
-        return value
-    if isinstance(value, list | tuple | np.ndarray):
-        array = np.asarray(value)
-        if array.dtype.kind in "biuf" and array.size <= 4096:
-            return array
-    return None
-
-
-def _write_attributes(node, mapping: dict) -> list[str]:
-    """Scalar/array entries of ``mapping`` as attributes; returns the keys skipped."""
-    skipped = []
-    for key, value in mapping.items():
-        converted = _attribute_value(value)
-        if converted is None:
-            skipped.append(str(key))
-        else:
-            node.attrs[str(key)] = converted
-    return skipped
-
-
-def _plain(value):
-    if isinstance(value, bytes):
-        return value.decode()
-    if isinstance(value, np.generic):
-        return value.item()
-    return value
-
-
-_GROUP_NAME_BAD = re.compile(r"[/.]")
-
-
-def _unique_group_names(labels, fallback: str) -> list[str]:
-    """One HDF5 member name per label ('/' and '.' replaced, empty labels
-    named ``fallback.format(k)`` with k 1-based), made unique by suffixes."""
-    names, seen = [], set()
-    for k, label in enumerate(labels):
-        base = _GROUP_NAME_BAD.sub("_", (label or "").strip()) or fallback.format(k + 1)
-        name, n = base, 2
-        while name in seen:
-            name, n = f"{base}_{n}", n + 1
-        seen.add(name)
-        names.append(name)
-    return names
-
-
 def _shock_group_names(shocks: list[ShockHistory]) -> list[str]:
     """One HDF5 group name per shock: its INTITULE, made unique."""
-    return _unique_group_names([shock.name for shock in shocks], "CHOC_{}")
-
-
-def _write_mesh(group, mesh: Mesh) -> None:
-    group.attrs["name"] = mesh.name or ""
-    group.attrs["dim"] = int(mesh.dim)
-    group.attrs["title"] = mesh.title or ""
-    group["coords"] = np.asarray(mesh.coords, dtype=float)
-    group["node_names"] = _strings(mesh.node_names)
-    group["cell_names"] = _strings(mesh.cell_names)
-    group["cell_types"] = _strings(mesh.cell_types)
-    sizes = np.array([len(c) for c in mesh.cell_nodes], dtype=np.int64)
-    group["cell_offsets"] = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
-    flat = [n for c in mesh.cell_nodes for n in c]
-    group["cell_connectivity"] = np.asarray(flat, dtype=np.int64)
-    for kind, groups in (("node_groups", mesh.node_groups), ("cell_groups", mesh.cell_groups)):
-        sub = group.create_group(kind, track_order=True)
-        for name, members in groups.items():
-            sub[name.replace("/", "_")] = np.asarray(members, dtype=np.int64)
-
-
-def _write_basis(group, basis: ModeResult) -> None:
-    numbering = basis.numbering
-    mesh = numbering.mesh
-    group.attrs["name"] = basis.name or ""
-    group.attrs["kind"] = basis.kind
-    group.attrs["norm"] = basis.norm
-    group["shapes"] = np.asarray(basis.shapes, dtype=float)
-    group["dof_nodes"] = np.array([n for n, _ in numbering.dofs], dtype=np.int64)
-    group["dof_components"] = _strings(c for _, c in numbering.dofs)
-    group["dof_labels"] = _strings(f"{mesh.node_names[n]} {c}" for n, c in numbering.dofs)
-    group["frequencies"] = np.asarray(basis.frequencies, dtype=float)
-    group["generalized_mass"] = np.asarray(basis.generalized_mass, dtype=float)
-    group["generalized_stiffness"] = np.asarray(basis.generalized_stiffness, dtype=float)
-    group["mode_numbers"] = np.asarray(basis.mode_numbers, dtype=np.int64)
-    if basis.mode_labels:
-        group["mode_labels"] = _strings(basis.mode_labels)
-    _write_mesh(group.create_group("mesh"), mesh)
+    return unique_member_names([shock.name for shock in shocks], "CHOC_{}")
 
 
 def _write_shocks(group, shocks: list[ShockHistory]) -> None:
@@ -373,7 +286,7 @@ def _write_shocks(group, shocks: list[ShockHistory]) -> None:
         sub.attrs["relation"] = shock.relation or ""
         sub.attrs["node_1"] = shock.node_1 or ""
         sub.attrs["node_2"] = shock.node_2 or ""
-        skipped = _write_attributes(sub, shock.parameters)
+        skipped = write_attributes(sub, shock.parameters)
         if skipped:
             sub.attrs["parameters_not_stored"] = ", ".join(skipped)
         for field, values in shock.fields.items():
@@ -393,7 +306,7 @@ def _table_column(table: Table, parameter: str) -> tuple[np.ndarray, np.ndarray]
         return np.array([0 if v is None else int(v) for v in cells], dtype=np.int64), present
     if type_code == "C":
         return np.array([0j if v is None else complex(v) for v in cells], dtype=complex), present
-    return _strings("" if v is None else v for v in cells), present
+    return strings("" if v is None else v for v in cells), present
 
 
 def _write_table(group, key: str, table: Table) -> None:
@@ -403,7 +316,7 @@ def _write_table(group, key: str, table: Table) -> None:
     group.attrs["n_rows"] = len(table.rows)
     columns = group.create_group("columns", track_order=True)
     present_group = None
-    names = _unique_group_names(table.columns, "PARA_{}")
+    names = unique_member_names(table.columns, "PARA_{}")
     for name, parameter in zip(names, table.columns, strict=True):
         values, present = _table_column(table, parameter)
         dataset = columns.create_dataset(name, data=values)
@@ -421,7 +334,7 @@ def _write_tables(group, tables: dict) -> None:
     skipped = [str(k) for k, v in tables.items() if not isinstance(v, Table)]
     if skipped:
         group.attrs["tables_not_stored"] = ", ".join(skipped)
-    for name, (key, table) in zip(_unique_group_names(kept, "TABLE_{}"), kept.items(), strict=True):
+    for name, (key, table) in zip(unique_member_names(kept, "TABLE_{}"), kept.items(), strict=True):
         _write_table(group.create_group(name, track_order=True), key, table)
 
 
@@ -445,11 +358,11 @@ def _write_tran_gene(f, tran_gene: TranGene, name: str) -> None:
     scheme = group.create_group("scheme")
     scheme.attrs["name"] = tran_gene.scheme or ""
     scheme.attrs["step"] = float(tran_gene.step)
-    skipped = _write_attributes(scheme, tran_gene.info)
+    skipped = write_attributes(scheme, tran_gene.info)
     if skipped:
         scheme.attrs["info_not_stored"] = ", ".join(skipped)
     _write_shocks(group.create_group("shocks", track_order=True), tran_gene.shocks)
-    _write_basis(group.create_group("basis"), tran_gene.basis)
+    write_basis(group.create_group("basis"), tran_gene.basis)
     _write_tables(group.create_group("tables", track_order=True), tran_gene.tables or {})
 
 
@@ -459,7 +372,7 @@ def _updating(path: Path):
     block completes: the writes go to a copy next to it (or a new file),
     renamed over ``path`` at the end; on an error the copy is removed and
     ``path`` is left as it was."""
-    h5py = _h5py()
+    h5py = h5py_module()
     temporary = path.with_name(f".{path.name}.{os.getpid()}.{uuid.uuid4().hex[:8]}.tmp")
     try:
         if path.exists():
@@ -491,50 +404,17 @@ def save_tran_gene(path: str | Path, tran_gene: TranGene, name: str | None = Non
 
 def stored_names(path: str | Path) -> list[str]:
     """Names of the tran_gene results stored in a file."""
-    h5py = _h5py()
+    h5py = h5py_module()
     with h5py.File(path, "r") as f:
         return [k for k in f if f[k].attrs.get("aster_type") == "tran_gene"]
-
-
-def _read_attrs(node) -> dict[str, Any]:
-    return {k: _plain(v) for k, v in node.attrs.items()}
-
-
-def _read_group_arrays(node) -> dict[str, np.ndarray]:
-    return {k: node[k][()] for k in node}
-
-
-def _read_mesh(group) -> dict[str, Any]:
-    out = _read_attrs(group)
-    out["coords"] = group["coords"][()]
-    for key in ("node_names", "cell_names", "cell_types"):
-        out[key] = _read_strings(group[key])
-    out["cell_offsets"] = group["cell_offsets"][()]
-    out["cell_connectivity"] = group["cell_connectivity"][()]
-    out["node_groups"] = _read_group_arrays(group["node_groups"])
-    out["cell_groups"] = _read_group_arrays(group["cell_groups"])
-    return out
-
-
-def _read_basis(group) -> dict[str, Any]:
-    out = _read_attrs(group)
-    for key in ("shapes", "dof_nodes", "frequencies", "generalized_mass"):
-        out[key] = group[key][()]
-    out["generalized_stiffness"] = group["generalized_stiffness"][()]
-    out["mode_numbers"] = group["mode_numbers"][()]
-    out["dof_components"] = _read_strings(group["dof_components"])
-    out["dof_labels"] = _read_strings(group["dof_labels"])
-    out["mode_labels"] = _read_strings(group["mode_labels"]) if "mode_labels" in group else []
-    out["mesh"] = _read_mesh(group["mesh"])
-    return out
 
 
 def _read_table(group) -> dict[str, Any]:
     """A stored table as plain data: ``types`` and ``columns`` by parameter
     (arrays; lists of str for text columns), ``present`` (bool arrays) for
     the parameters some rows lack, where ``columns`` holds a filler."""
-    h5py = _h5py()
-    attrs = _read_attrs(group)
+    h5py = h5py_module()
+    attrs = read_attrs(group)
     out = {
         "name": str(attrs.get("name", group.name.rsplit("/", 1)[-1])),
         "title": str(attrs.get("title", "")),
@@ -546,10 +426,10 @@ def _read_table(group) -> dict[str, Any]:
     }
     masks = group["present"] if "present" in group else {}
     for key, dataset in group["columns"].items():
-        parameter = str(_plain(dataset.attrs.get("parameter", key)))
+        parameter = str(plain(dataset.attrs.get("parameter", key)))
         text = h5py.check_string_dtype(dataset.dtype) is not None
-        out["types"][parameter] = str(_plain(dataset.attrs.get("type", "K24" if text else "R")))
-        out["columns"][parameter] = _read_strings(dataset) if text else dataset[()]
+        out["types"][parameter] = str(plain(dataset.attrs.get("type", "K24" if text else "R")))
+        out["columns"][parameter] = read_strings(dataset) if text else dataset[()]
         if key in masks:
             out["present"][parameter] = np.asarray(masks[key][()], dtype=bool)
     return out
@@ -557,25 +437,25 @@ def _read_table(group) -> dict[str, Any]:
 
 def read_tran_gene_dict(path: str | Path, name: str | None = None) -> dict[str, Any]:
     """A stored tran_gene as plain Python data (arrays, lists, dicts)."""
-    h5py = _h5py()
+    h5py = h5py_module()
     with h5py.File(path, "r") as f:
         name = _pick_name(f, name, path)
         group = f[name]
-        out = {"name": name, **_read_attrs(group)}
+        out = {"name": name, **read_attrs(group)}
         for key in ("times", "order", "depl", "vite", "acce"):
             out[key] = group[key][()]
         for key in ("step_sizes", "rejections"):  # absent from older files
             out[key] = group[key][()] if key in group else None
-        out["scheme_info"] = _read_attrs(group["scheme"])
+        out["scheme_info"] = read_attrs(group["scheme"])
         out["shocks"] = [
             {
                 "group": key,
-                "attributes": _read_attrs(group["shocks"][key]),
-                "fields": _read_group_arrays(group["shocks"][key]),
+                "attributes": read_attrs(group["shocks"][key]),
+                "fields": read_group_arrays(group["shocks"][key]),
             }
             for key in group["shocks"]
         ]
-        out["basis"] = _read_basis(group["basis"])
+        out["basis"] = read_basis(group["basis"])
         tables = group["tables"] if "tables" in group else {}  # absent from version 1
         out["tables"] = {t["name"]: t for t in map(_read_table, tables.values())}
     return out
@@ -590,45 +470,6 @@ def _pick_name(f, name: str | None, path) -> str:
     if name not in candidates:
         raise KeyError(f"{path}: no tran_gene named {name!r} (stored: {', '.join(candidates)})")
     return name
-
-
-def _mesh_from(data: dict[str, Any]) -> Mesh:
-    offsets = data["cell_offsets"]
-    conn = data["cell_connectivity"]
-    cell_nodes = [
-        tuple(int(n) for n in conn[offsets[i] : offsets[i + 1]]) for i in range(len(offsets) - 1)
-    ]
-    mesh = Mesh(
-        coords=np.asarray(data["coords"], dtype=float),
-        node_names=list(data["node_names"]),
-        cell_names=list(data["cell_names"]),
-        cell_types=list(data["cell_types"]),
-        cell_nodes=cell_nodes,
-        node_groups={k: np.asarray(v, dtype=int) for k, v in data["node_groups"].items()},
-        cell_groups={k: np.asarray(v, dtype=int) for k, v in data["cell_groups"].items()},
-        dim=int(data.get("dim", 3)),
-        title=str(data.get("title", "")),
-    )
-    mesh.name = data.get("name") or None
-    return mesh
-
-
-def _basis_from(data: dict[str, Any]) -> ModeResult:
-    mesh = _mesh_from(data["mesh"])
-    dofs = [(int(n), c) for n, c in zip(data["dof_nodes"], data["dof_components"], strict=True)]
-    basis = ModeResult(
-        numbering=DofNumbering(mesh=mesh, dofs=dofs),
-        shapes=np.asarray(data["shapes"], dtype=float),
-        frequencies=np.asarray(data["frequencies"], dtype=float),
-        generalized_mass=np.asarray(data["generalized_mass"], dtype=float),
-        generalized_stiffness=np.asarray(data["generalized_stiffness"], dtype=float),
-        kind=str(data.get("kind", "dynamic")),
-        parameters={"NUME_MODE": np.asarray(data["mode_numbers"], dtype=int)},
-        norm=str(data.get("norm", "")),
-        mode_labels=list(data.get("mode_labels", [])),
-    )
-    basis.name = data.get("name") or None
-    return basis
 
 
 _SHOCK_KEYS = ("index", "name", "relation", "node_1", "node_2", "parameters_not_stored")
@@ -667,7 +508,9 @@ def _table_from(data: dict[str, Any]) -> Table:
 
 def load_tran_gene(path: str | Path, name: str | None = None, *, concept: bool = True):
     """Read a stored tran_gene: a :class:`TranGene` (``concept=True``, with
-    its modal basis, DOF numbering and mesh rebuilt) or the plain dict of
+    its basis rebuilt as it was: a modal basis with its DOF numbering and
+    mesh, generalized modes with their generalized numbering -- down to the
+    substructures of a generalized model --, or None) or the plain dict of
     :func:`read_tran_gene_dict` (``concept=False``). ``name`` defaults to the
     first tran_gene of the file."""
     data = read_tran_gene_dict(path, name)
@@ -675,7 +518,7 @@ def load_tran_gene(path: str | Path, name: str | None = None, *, concept: bool =
         return data
     info = {k: v for k, v in data["scheme_info"].items() if k not in ("name", "step")}
     result = TranGene(
-        basis=_basis_from(data["basis"]),
+        basis=basis_from(data["basis"]),
         times=data["times"],
         order=data["order"],
         depl=data["depl"],

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from asterlite.concepts.modes import ModeResult
 from asterlite.concepts.titles import compact, same_title, unique_titles
 from asterlite.concepts.transient import ShockHistory, TranGene
 from asterlite.extras import require
@@ -54,6 +55,12 @@ def node_history(tran: TranGene, node: str, component: str, field: str = "DEPL")
     """One physical component at the archived instants: q(t) · φ(node, component)."""
     if field not in NODAL_FIELDS:
         raise PlotError(f"field {field!r}: expected one of {', '.join(NODAL_FIELDS)}")
+    if not isinstance(tran.basis, ModeResult):  # generalized modes, or none: no mesh
+        held = "no basis" if tran.basis is None else f"a {tran.basis.aster_type} basis"
+        raise PlotError(
+            f"node histories need a basis on a mesh; the result has {held} (restore it "
+            "on physical DOFs in the deck: REST_SOUS_STRUC, REST_GENE_PHYS)"
+        )
     numbering = tran.basis.numbering
     index = node_index(numbering.mesh, node)
     rows = [i for i, (n, c) in enumerate(numbering.dofs) if n == index and c == component]
