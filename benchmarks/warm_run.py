@@ -1,13 +1,16 @@
-"""Warm whole run (issue 16, goal 2): ``asterlite run`` of a corpus deck
-(default sdnd100a) with every kernel already in numba's cache, against the
-floor any such run pays: the interpreter, numpy, scipy.linalg and
-scipy.sparse.linalg (modes, constraints), numba's import and its first
-use (loading a cached kernel initialises its lowering registries).
+"""Warm whole run (issue 30, goal 5): ``asterlite run`` of a corpus deck
+(default sdnd100a) with every kernel already built, against the floor any
+such run pays: the interpreter, numpy, scipy.linalg and scipy.sparse.linalg
+(modes, constraints; what asterlite.watchdog.preload_engine imports). The
+deck runs twice: as installed (its DIFF_CENTRE loop compiled C++ when the
+extension is built: numba is not imported) and with ``ASTERLITE_NATIVE=0``
+(numba's loop, loaded from its cache), next to numba's own floor (its import
+and a first cached call, which initialises its lowering registries).
 
 Each figure is the best and the median of ``--repeat`` fresh processes,
-wall and CPU (user + system) seconds; the runs warm the cache first.
+wall and CPU (user + system) seconds; the runs warm the caches first.
 
-    python benchmarks/warm_run.py                   # ~20 s
+    python benchmarks/warm_run.py                   # ~30 s
     python benchmarks/warm_run.py sdnd100b --repeat 9
 """
 
@@ -83,14 +86,17 @@ def main() -> int:
     print(f"python {sys.version.split()[0]}, load average {os.getloadavg()[0]:.1f}")
     for command, cmd_env in ((run, env), ([sys.executable, str(floor_script)], floor_env)):
         timed(command, cmd_env, ROOT)  # warm numba's cache and the OS file cache
-    rows = {name: [] for name in (*PIECES, "floor (+ numba's first cached call)", args.deck)}
+    numba_env = dict(env, ASTERLITE_NATIVE="0")
+    timed(run, numba_env, ROOT)
+    with_numba = f"{args.deck}, ASTERLITE_NATIVE=0"
+    floor = "numba floor (+ its first cached call)"
+    rows = {name: [] for name in (*PIECES, floor, args.deck, with_numba)}
     for _ in range(args.repeat):  # interleaved, so that all see the same load
         for name, code in PIECES.items():
             rows[name].append(timed([sys.executable, "-c", code], env, ROOT))
-        rows["floor (+ numba's first cached call)"].append(
-            timed([sys.executable, str(floor_script)], floor_env, ROOT)
-        )
+        rows[floor].append(timed([sys.executable, str(floor_script)], floor_env, ROOT))
         rows[args.deck].append(timed(run, env, ROOT))
+        rows[with_numba].append(timed(run, numba_env, ROOT))
     for name, samples in rows.items():
         print(summary(name, samples))
     failed = [s for s in rows[args.deck] if s[2] != 0]

@@ -52,6 +52,21 @@ def needs_mumps():
     pytest.skip("python-mumps is not installed (the large extra)")
 
 
+@pytest.fixture()
+def needs_native():
+    """Skip without the compiled time loops (no C++ compiler at install),
+    except in CI (CI=true), where .ci/run installs g++."""
+    import os
+
+    from asterlite.dynamics import native
+
+    if native._loops is not None:
+        return
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail("CI: the compiled loops are not built (asterlite/dynamics/native)")
+    pytest.skip("the compiled loops are not built (no C++ compiler at install)")
+
+
 def pytest_collection_finish(session):
     """Under ``--dist loadgroup`` every test of an ``xdist_group`` must carry
     its group in its id, which is how pytest-xdist sends a group to one

@@ -94,7 +94,7 @@ class Sampled:  # known only through evaluate: sampled by windows
 
 def run(monkeypatch, compiled: bool, geometry="CERCLE", diagonal=True, friction="both",
         norm_obst=(1.0, 0.0, 0.0), formula=0, supports=False, t_end=0.04, pas_arch=7,
-        scheme="DIFF_CENTRE", options=None):  # fmt: skip
+        scheme="DIFF_CENTRE", options=None, energy=False):  # fmt: skip
     """One run of ``scheme`` on a five-mode system with one shock of
     ``geometry``, three loads (a formula, a table, a sampled multiplier),
     optionally two support motions; ``compiled``: the C++ loops, else numba's."""
@@ -126,7 +126,7 @@ def run(monkeypatch, compiled: bool, geometry="CERCLE", diagonal=True, friction=
     instants = np.array([0.0123, 0.0123 + 0.3 * dt, t_end])
     return integrate(
         system, shocks, excitation, scheme, q0, np.zeros(N_MODES), 0.0, t_end, dt,
-        instants, pas_arch, options or scheme_options(scheme),
+        instants, pas_arch, options or scheme_options(scheme), energy=energy,
     )  # fmt: skip
 
 
@@ -138,3 +138,6 @@ def assert_same_bits(compiled, numba):
     }
     for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
         np.testing.assert_array_equal(getattr(compiled, name), getattr(numba, name), err_msg=name)
+    assert (compiled.energy is None) == (numba.energy is None)
+    if numba.energy is not None:  # the energy balance's archived rows
+        np.testing.assert_array_equal(compiled.energy, numba.energy, err_msg="energy")

@@ -27,9 +27,9 @@ from tests.native_runs import (
 )
 from tests.validated import scheme_options
 
-pytestmark = pytest.mark.skipif(
-    native._loops is None, reason="the C++ loops are not built (no compiler at install)"
-)
+# numba's loops, the reference, compile on their first use here (the warmup
+# leaves the loops the C++ ones serve): once, on one worker
+pytestmark = [pytest.mark.usefixtures("needs_native"), pytest.mark.xdist_group("numba-reference")]
 
 
 def test_the_extension_was_built_with_the_python_positions():
@@ -115,5 +115,21 @@ def test_every_ported_scheme_gives_numbas_bits(monkeypatch, scheme, geometry, di
     args = dict(geometry=geometry, diagonal=diagonal, scheme=scheme, supports=True, t_end=0.02)
     compiled = run(monkeypatch, True, **args)
     numba = run(monkeypatch, False, **args)
+    assert (numba.vint[:, 0, C.V_FN] > 0).any()
+    assert_same_bits(compiled, numba)
+
+
+ENERGY_SCHEMES = ("DIFF_CENTRE", "NEWMARK", "DEVOGE", "RUNGE_KUTTA_54", "ADAPT_ORDRE1", "TRBDF2")
+
+
+@pytest.mark.parametrize("scheme", ENERGY_SCHEMES)
+@pytest.mark.parametrize("geometry, diagonal", [("CERCLE", True), ("BI_PLAN_Y", False)])
+def test_the_energy_balance_gives_numbas_bits(monkeypatch, scheme, geometry, diagonal):
+    """ENERGIE on every loop kind: the balance's rows bit for bit, with
+    impacts, friction and support motions in the powers."""
+    args = dict(geometry=geometry, diagonal=diagonal, scheme=scheme, supports=True, t_end=0.02)
+    compiled = run(monkeypatch, True, energy=True, **args)
+    numba = run(monkeypatch, False, energy=True, **args)
+    assert compiled.energy is not None and len(compiled.energy) == len(compiled.times)
     assert (numba.vint[:, 0, C.V_FN] > 0).any()
     assert_same_bits(compiled, numba)

@@ -22,9 +22,11 @@ B_MASS, B_STIFF, B_DAMP, B_KEFF, B_F1, B_F2, B_F3 = range(7)
 def new_rows(vector_rows: int, system, blocks: int = 7) -> np.ndarray:
     n = system.n_modes
     rows = np.zeros((vector_rows + blocks * n, n))
-    block(rows, vector_rows, B_MASS, n)[:] = system.mass
-    block(rows, vector_rows, B_STIFF, n)[:] = system.stiffness
-    block(rows, vector_rows, B_DAMP, n)[:] = system.damping
+    # block()'s slices, written here without the kernel (no numba for the C++ loops)
+    for which, matrix in ((B_MASS, system.mass), (B_STIFF, system.stiffness),
+                          (B_DAMP, system.damping)):  # fmt: skip
+        start = vector_rows + which * n
+        rows[start : start + n] = matrix
     return rows
 
 

@@ -208,7 +208,7 @@ def run_kernel(
     vint = shocks.initial_vint(t0)
     work = np.zeros((5, 3))
     native_loop = native.run_loop(
-        entry, notice.name, energy, rotation, implicit_shocks and shocks.count, options.adapt_v11
+        entry, notice.name, rotation, implicit_shocks and shocks.count, options.adapt_v11
     )
     if native_loop is not None:
         shock = native.start(t0, q, v, a, f, vint, work, np.zeros(n), model)
@@ -269,7 +269,9 @@ def run_kernel(
             f"({named('rotation.variable')}='OUI')"
         )
     balance = E.new_energy(system, shocks, capacity, entry.staggered_velocity, energy)
-    if energy:
+    if energy and native_loop is not None:
+        native.energy_start(balance, t0, q, v, a, vint, model)
+    elif energy:
         E.start(balance, t0, q, v, a, vint, model[SHOCKS], model[LOADS])
     bar = progress.time_bar(label or f"DYNA_VIBRA {scheme}", t0, t_end)
     model_parts = (system, shocks, excitation, load_labels)

@@ -83,7 +83,13 @@ def fill_operators(mem, smem, minv, stiffness, damping, adaptive, tolerance, alp
     ops = mem[MATRIX_ROWS:]
     ops[0:n] = minv @ damping
     ops[n : 2 * n] = minv @ stiffness
-    fill_diagonal_rows(mem, minv, n)
+    # fill_diagonal_rows's copies, in numpy: a run on the compiled C++ loop
+    # then never imports numba (the rotation loop calls the kernel itself)
+    mem[D_MINV], mem[D_C], mem[D_K] = (
+        np.diagonal(minv),
+        np.diagonal(ops[0:n]),
+        np.diagonal(ops[n : 2 * n]),
+    )
     smem[:] = 0.0
     smem[S_ADAPTIVE] = 1.0 if adaptive else 0.0
     smem[S_TOL], smem[S_ALPHA] = tolerance, alpha

@@ -6,8 +6,8 @@ operation in the same order (no fused multiply-add, no reassociation:
 ``-ffp-contract=off``, no fast-math), so that a run gives the same bits on
 either; tests/test_native_loops.py checks both on every obstacle, load,
 matrix kind and scheme covered. What they cover now, each with DIS_CHOC
-shocks in their local frames, tabulated and formula loads, sampled windows
-and support motions, without energy balance (numba keeps it):
+shocks in their local frames, tabulated and formula loads, sampled windows,
+support motions and the energy balance:
 
 - DIFF_CENTRE's specialised loop on diagonal or full matrices
   (:func:`asterlite.dynamics.scheme_diff_centre.fast_loop`);
@@ -28,6 +28,8 @@ import importlib
 import os
 import pkgutil
 
+import numpy as np
+
 from asterlite.dynamics.layouts import LINEAR, LOADS, LOCAL, ROWS, SHOCKS
 
 try:
@@ -45,13 +47,13 @@ def available() -> bool:
     return _loops is not None and os.environ.get(SWITCH, "1") != "0"
 
 
-def run_loop(entry, loop: str, energy: bool, rotation, implicit, legacy: bool):
+def run_loop(entry, loop: str, rotation, implicit, legacy: bool):
     """The compiled loop that does what numba's loop ``loop`` (as
     :func:`asterlite.dynamics.integrate.loop_kernel` names it) of the scheme
     ``entry`` would, or None when numba's serves: a scheme's own loop (not
-    its general path) without energy balance, varying rotation, implicit
-    shocks or code_aster 10-12's variant, when its scheme is ported."""
-    if not available() or energy or rotation is not None or implicit or legacy:
+    its general path), without varying rotation, implicit shocks or
+    code_aster 10-12's variant, when its scheme is ported."""
+    if not available() or rotation is not None or implicit or legacy:
         return None
     if loop not in entry.loop_names() or loop == GENERAL_PATH.format(entry.kernel):
         return None
@@ -67,7 +69,7 @@ def diff_centre_loop(
     return _loops.diff_centre_loop(
         clock, counters, instants, *state, memory[ROWS][RESIDUAL],
         mass_inverse, stiffness, damping, *model_arguments(model),
-        *archive, int(pas_arch), float(eps),
+        *archive, *energy, int(pas_arch), float(eps),
     )  # fmt: skip
 
 
@@ -77,7 +79,7 @@ def time_loop(function):
     def run(clock, counters, state, memory, model, instants, pas_arch, eps, archive, energy):
         return function(
             clock, counters, instants, *state, *memory[:3], *model_arguments(model),
-            *archive, int(pas_arch), float(eps),
+            *archive, *energy, int(pas_arch), float(eps),
         )  # fmt: skip
 
     return run
@@ -88,6 +90,12 @@ def start(t, q, v, a, f, vint, work, residual, model) -> int:
     a diverging shock's index or -1 (``vint`` updated, ``work`` scratch)."""
     state = (q, v, a, f, vint, vint, work)  # read_state's order; no trial copy here
     return _loops.start(float(t), *state, residual, *model_arguments(model))
+
+
+def energy_start(balance, t, q, v, a, vint, model) -> None:
+    """energy.start: the balance at the initial state (its row 0)."""
+    state = (q, v, a, np.zeros_like(q), vint, vint, np.zeros((5, 3)))  # f, trial copy unused
+    _loops.energy_start(float(t), *state, *model_arguments(model), *balance)
 
 
 def model_arguments(model) -> tuple:

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "clock.hpp"
+#include "energy.hpp"
 #include "model.hpp"
 
 namespace asterlite {
@@ -240,6 +241,39 @@ inline ArchiveBuffers read_archive(Arguments& in) {
     out.vint = in.f3("out_vint", WRITE);
     out.info = in.f2("out_info", WRITE);
     return out;
+}
+
+// layouts.Balance: acc, matrices, vectors, vint_copy, work, rows, local (the
+// energy balance; empty arrays and acc[A_ON] = 0 when it is not asked)
+inline energy::Balance read_balance(Arguments& in) {
+    energy::Balance balance;
+    balance.acc = in.f1("energy_acc", WRITE);
+    balance.matrices = in.f3("energy_matrices");
+    balance.vectors = in.f2("energy_vectors", WRITE);
+    balance.vint_copy = in.f2("energy_vint_copy", WRITE);
+    balance.work = in.f2("energy_work", WRITE);
+    balance.rows = in.f2("energy_rows", WRITE);
+    balance.local = in.f3("energy_local", WRITE);
+    return balance;
+}
+
+// an active balance's arrays against the state and the archive's capacity
+inline void check_balance(Arguments& in, const energy::Balance& balance, const State& x,
+                          index capacity) {
+    if (in.failed()) return;
+    in.require(balance.acc.n0 > energy::A_E_TAN0, "energy accumulators");
+    if (in.failed() || !balance.active()) return;
+    const index n = x.q.n0, ns = x.vint.n0;
+    in.require(balance.matrices.n0 == 3 && balance.matrices.n1 == n && balance.matrices.n2 == n,
+               "energy matrices");
+    in.require(balance.vectors.n0 >= 3 && balance.vectors.n1 == n, "energy vectors");
+    in.require(balance.vint_copy.n0 == ns && balance.vint_copy.n1 == x.vint.n1,
+               "energy internal variables");
+    in.require(balance.work.n0 >= 5 && balance.work.n1 >= 3, "energy work");
+    in.require(balance.rows.n0 >= capacity && balance.rows.n1 > energy::C_RESIDU, "energy rows");
+    in.require(balance.local.n0 == 2 && balance.local.n1 == ns &&
+                   balance.local.n2 > energy::L_DRIVE,
+               "energy shock quantities");
 }
 
 // what every loop relies on in the state and the model

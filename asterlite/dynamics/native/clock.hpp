@@ -74,6 +74,17 @@ inline void plan_step(const Clock& c, double& t, double& dt) {
     }
 }
 
+// kernel.expose_trial: a non-finite trial copied into the state before the
+// step returns STATUS_NOT_FINITE, for the driver to say which quantity went wrong
+inline void expose_trial(const F1& q, const F1& v, const F1& a, const F1& q_trial,
+                         const F1& v_trial, const F1& a_trial) {
+    for (index i = 0; i < q.n0; ++i) {
+        q(i) = q_trial(i);
+        v(i) = v_trial(i);
+        a(i) = a_trial(i);
+    }
+}
+
 inline int record_failure(const Clock& c, int status, std::int64_t shock, double dt) {
     c.clock(C_STEP) = dt;
     c.counters(K_SHOCK) = shock;

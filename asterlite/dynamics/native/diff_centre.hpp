@@ -8,6 +8,7 @@
 
 #include "clock.hpp"
 #include "contact.hpp"
+#include "energy.hpp"
 #include "forces.hpp"
 #include "layout.hpp"
 #include "loads.hpp"
@@ -54,9 +55,11 @@ inline bool full_acceleration(const F1& a, const F1& f, const F1& q, const F1& v
 template <class Matrix>
 int diff_centre_loop(const Clock& c, const State& x, const F1& residual,
                      const Matrix& mass_inverse, const Matrix& stiffness, const Matrix& damping,
-                     const Model& model, const ArchiveBuffers& out) {
+                     const Model& model, const ArchiveBuffers& out,
+                     const energy::Balance& balance) {
     const index n = x.q.n0;
     const Local& local = model.local;
+    const bool active = balance.active();  // energy balance: energy.after_step
     while (unfinished(c)) {
         const int paused = pause_status(c, out);
         if (paused) return paused;
@@ -84,7 +87,12 @@ int diff_centre_loop(const Clock& c, const State& x, const F1& residual,
                                        residual);
         }
         if (!finite) return record_failure(c, STATUS_NOT_FINITE, -1, dt);
+        const std::int64_t archived = active ? c.counters(K_ARCHIVED) : 0;
         advance_clock(c, x.q, x.v, x.a, x.vint, out, dt, dt, 0);
+        if (active) {
+            energy::after_step(balance, archived, c.counters(K_ARCHIVED), c.clock(C_TIME), dt,
+                               x.q, x.v, x.a, x.vint, model);
+        }
     }
     return STATUS_DONE;
 }

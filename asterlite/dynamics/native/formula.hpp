@@ -85,6 +85,64 @@ inline double binary_function(std::int64_t code, double a, double b) {
     }
 }
 
+// formula.run_program: the value of row ``row``'s program at time t, every
+// operand kept in ``stack`` (what forces.add_external_force runs;
+// program_value below keeps the top in a local: the same value)
+inline double run_program(const I2& codes, const F2& constants, index row, double t,
+                          const F1& stack) {
+    index top = -1;
+    const index length = codes(row, 0);
+    for (index pc = 1; pc < length + 1; ++pc) {
+        const std::int64_t code = codes(row, pc);
+        if (code == PUSH_TIME) {
+            top += 1;
+            stack(top) = t;
+        } else if (code == PUSH_CONSTANT) {
+            top += 1;
+            stack(top) = constants(row, pc);
+        } else if (code < SIN) {  // arithmetic
+            if (code == NEG) {
+                stack(top) = -stack(top);
+                continue;
+            }
+            const double b = stack(top);
+            top -= 1;
+            const double a = stack(top);
+            if (code == ADD) {
+                stack(top) = a + b;
+            } else if (code == SUB) {
+                stack(top) = a - b;
+            } else if (code == MUL) {
+                stack(top) = a * b;
+            } else if (code == DIV) {
+                stack(top) = true_divide(a, b);
+            } else if (code == POW) {
+                stack(top) = std::pow(a, b);
+            } else if (code == MOD) {
+                stack(top) = remainder(a, b);
+            } else {  // FLOOR_DIV
+                stack(top) = b != 0.0 ? (a - remainder(a, b)) / b : true_divide(a, b);
+            }
+        } else if (code < ATAN2) {  // functions of one argument
+            stack(top) = unary_function(code, stack(top));
+        } else if (code == SELECT) {
+            const double otherwise = stack(top);
+            const double chosen = stack(top - 1);
+            top -= 2;
+            stack(top) = stack(top) != 0.0 ? chosen : otherwise;
+        } else if (code == NOT) {
+            stack(top) = stack(top) == 0.0 ? 1.0 : 0.0;
+        } else if (code == IDENTITY) {
+            // nothing
+        } else {  // functions of two arguments, comparisons, logic
+            const double b = stack(top);
+            top -= 1;
+            stack(top) = binary_function(code, stack(top), b);
+        }
+    }
+    return stack(0);
+}
+
 // Value of row ``row``'s program at time t (formula.program_value: the top
 // of the stack in a local, ``stack`` holds the operands below it).
 inline double program_value(const I2& codes, const F2& constants, index row, double t,

@@ -88,25 +88,32 @@ struct Loads {
     F1 stack;
 };
 
-inline double load_multiplier(const Loads& loads, index e, double t) {
-    if (loads.codes(e, 0) > 0) return program_value(loads.codes, loads.constants, e, t, loads.stack);
-    return multiplier_at(loads.tables, e, t);
-}
-
-// forces.add_external_force: out += sum_e f_e(t) vector_e
+// forces.add_external_force: out += sum_e f_e(t) vector_e, formula rows run
+// by run_program
 inline void add_external_force(double t, const Loads& loads, const F1& out) {
     for (index e = 0; e < loads.vectors.n0; ++e) {
-        const double c = load_multiplier(loads, e, t);
+        double c;
+        if (loads.codes(e, 0) > 0) {
+            c = run_program(loads.codes, loads.constants, e, t, loads.stack);
+        } else {
+            c = multiplier_at(loads.tables, e, t);
+        }
         for (index m = 0; m < out.n0; ++m) out(m) += c * loads.vectors(e, m);
     }
 }
 
 // scheme_diff_centre.external_force_into: the same sum into a zeroed out,
-// the zeroing folded into the first load's pass (0.0 + x)
+// the zeroing folded into the first load's pass (0.0 + x), formula rows run
+// by program_value
 inline void external_force_into(double t, const Loads& loads, const F1& out) {
     const index n_loads = loads.vectors.n0;
     for (index e = 0; e < n_loads; ++e) {
-        const double c = load_multiplier(loads, e, t);
+        double c;
+        if (loads.codes(e, 0) > 0) {
+            c = program_value(loads.codes, loads.constants, e, t, loads.stack);
+        } else {
+            c = multiplier_at(loads.tables, e, t);
+        }
         if (e == 0) {
             for (index m = 0; m < out.n0; ++m) out(m) = 0.0 + c * loads.vectors(0, m);
         } else {

@@ -23,7 +23,8 @@ struct StepResult {
 // const Memory&, const Model&)
 template <class Step>
 int time_loop(const Clock& c, const State& x, const Memory& memory, const Model& model,
-              const ArchiveBuffers& out, Step&& step) {
+              const ArchiveBuffers& out, const energy::Balance& balance, Step&& step) {
+    const bool active = balance.active();  // read once, as loop.time_loop does
     while (unfinished(c)) {
         const int paused = pause_status(c, out);
         if (paused) return paused;
@@ -35,14 +36,20 @@ int time_loop(const Clock& c, const State& x, const Memory& memory, const Model&
         plan_step(c, t, dt);
         const StepResult r = step(t, dt, c.counters(K_STEP), x, memory, model);
         if (r.status != STATUS_DONE) return record_failure(c, r.status, r.shock, r.dt_used);
+        const std::int64_t archived = c.counters(K_ARCHIVED);
         advance_clock(c, x.q, x.v, x.a, x.vint, out, r.dt_used, r.dt_next, r.rejected);
+        if (active) {
+            energy::after_step(balance, archived, c.counters(K_ARCHIVED), c.clock(C_TIME),
+                               r.dt_used, x.q, x.v, x.a, x.vint, model);
+        }
     }
     return STATUS_DONE;
 }
 
 // The Python function of a scheme's loop: arguments clock, counters,
 // instants, the state (7), the memory (3), the model (27), the archive (7),
-// pas_arch, eps (asterlite.dynamics.native.loop_arguments); returns the status.
+// the energy balance (7), pas_arch, eps (asterlite.dynamics.native.time_loop);
+// returns the status.
 template <class Step>
 PyObject* run_time_loop(PyObject* args, const char* name, Step&& step) {
     Arguments in(args, name);
@@ -51,16 +58,18 @@ PyObject* run_time_loop(PyObject* args, const char* name, Step&& step) {
     Memory memory = read_memory(in);
     Model model = read_model(in);
     ArchiveBuffers out = read_archive(in);
+    energy::Balance balance = read_balance(in);
     c.pas_arch = in.integer("pas_arch");
     c.eps = in.real("eps");
     if (!in.complete()) return nullptr;
     check_model(in, x, model);
     check_loop(in, c, x, out);
+    check_balance(in, balance, x, out.t.n0);
     in.require(memory.rows.n0 == 0 || memory.rows.n1 == x.q.n0, "memory rows");
     if (in.failed()) return nullptr;
     int status;
     Py_BEGIN_ALLOW_THREADS
-    status = time_loop(c, x, memory, model, out, step);
+    status = time_loop(c, x, memory, model, out, balance, step);
     Py_END_ALLOW_THREADS
     return PyLong_FromLong(status);
 }

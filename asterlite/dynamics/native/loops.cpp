@@ -12,7 +12,8 @@ namespace {
 
 // DIFF_CENTRE's specialised loop: clock, counters, instants, the state (7),
 // the residual row, M^-1, K, C as model.LinearSystem.kernel_matrices gives
-// them (1-D diagonals or (n, n)), the model (27), the archive (7), pas_arch, eps
+// them (1-D diagonals or (n, n)), the model (27), the archive (7), the energy
+// balance (7), pas_arch, eps
 PyObject* diff_centre_loop(PyObject*, PyObject* args) {
     Arguments in(args, "diff_centre_loop");
     Clock c = read_clock(in);
@@ -42,11 +43,13 @@ PyObject* diff_centre_loop(PyObject*, PyObject* args) {
     }
     Model model = read_model(in);
     ArchiveBuffers out = read_archive(in);
+    energy::Balance balance = read_balance(in);
     c.pas_arch = in.integer("pas_arch");
     c.eps = in.real("eps");
     if (!in.complete()) return nullptr;
     check_model(in, x, model);
     check_loop(in, c, x, out);
+    check_balance(in, balance, x, out.t.n0);
     const index n = x.q.n0;
     in.require(residual.n0 == n, "residual");
     for (int k = 0; k < 3; ++k) {
@@ -56,9 +59,10 @@ PyObject* diff_centre_loop(PyObject*, PyObject* args) {
     int status;
     Py_BEGIN_ALLOW_THREADS
     if (diagonal) {
-        status = diff_centre_loop(c, x, residual, d[0], d[1], d[2], model, out);
+        status = diff_centre_loop(c, x, residual, d[0], d[1], d[2], model, out, balance);
     } else {
-        status = diff_centre_loop(c, x, residual, full[0], full[1], full[2], model, out);
+        status = diff_centre_loop(c, x, residual, full[0], full[1], full[2], model, out,
+                                  balance);
     }
     Py_END_ALLOW_THREADS
     return PyLong_FromLong(status);
@@ -79,6 +83,23 @@ PyObject* start(PyObject*, PyObject* args) {
     const index shock = total_force(t, x.q, x.v, model, x.vint, x.work, x.f);
     acceleration(x.f, x.q, x.v, model.lin, residual, x.a);
     return PyLong_FromLongLong(shock);
+}
+
+// energy.start: the balance at the initial state (row 0): t, the state (7),
+// the model (27), the balance (7)
+PyObject* energy_start(PyObject*, PyObject* args) {
+    Arguments in(args, "energy_start");
+    const double t = in.real("t");
+    State x = read_state(in);
+    Model model = read_model(in);
+    energy::Balance balance = read_balance(in);
+    if (!in.complete()) return nullptr;
+    check_model(in, x, model);
+    check_balance(in, balance, x, 1);
+    in.require(balance.active(), "the energy balance is not asked");
+    if (in.failed()) return nullptr;
+    energy::start(balance, t, x.q, x.v, x.a, x.vint, model);
+    Py_RETURN_NONE;
 }
 
 PyObject* runge_kutta_loop(PyObject*, PyObject* args) {
@@ -166,6 +187,8 @@ PyMethodDef methods[] = {
      "RUNGE_KUTTA_32/54's loop on the shocks' local frames; returns a status."},
     {"start", start, METH_VARARGS,
      "The total force and the acceleration at the start of a run; a diverging shock or -1."},
+    {"energy_start", energy_start, METH_VARARGS,
+     "The energy balance at the initial state, its first archived row."},
     {"layout", layout, METH_NOARGS, "The positions and constants the loops were built with."},
     {nullptr, nullptr, 0, nullptr},
 };

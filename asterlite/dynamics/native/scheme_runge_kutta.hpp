@@ -98,9 +98,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
         const index shock = attempt(t, dt, x, memory, model, s);
         if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, rejected};
         if (!(all_finite(qs) && all_finite(vs))) {
-            copy_into(x.q, qs);  // kernel.expose_trial
-            copy_into(x.v, vs);
-            copy_into(x.a, acc);
+            expose_trial(x.q, x.v, x.a, qs, vs, acc);
             return {STATUS_NOT_FINITE, -1, dt, dt, rejected};
         }
         if (!adaptive) break;
