@@ -9,10 +9,12 @@ every folder under asterlite/, catalogues/ and commands/ holding Python code
 is a package, with or without an ``__init__.py``.
 """
 
+import os
 import re
 from pathlib import Path
 
 from setuptools import Extension, find_namespace_packages, setup
+from setuptools.command.build_ext import build_ext
 from setuptools.command.editable_wheel import editable_wheel
 
 ROOT = Path(__file__).resolve().parent
@@ -98,8 +100,10 @@ class EditableWheel(editable_wheel):
 # C++ built here so that no run waits for numba's compiler on the loops it
 # covers. Same operations in the same order as the numba kernels: no fused
 # multiply-add (GCC contracts by default on targets that have it), no
-# fast-math; errno left out of sqrt does not change a value. Optional: without
-# a C++ compiler the install goes on and the numba kernels serve.
+# fast-math; errno left out of sqrt does not change a value; hidden symbols so
+# that the headers' functions are called directly and inlined, not through the
+# PLT (the module's PyInit stays exported). Optional: without a C++ compiler
+# the install goes on and the numba kernels serve.
 # One extension module per .cpp file of the folder (``loops.cpp`` ->
 # ``asterlite.dynamics.native._loops``), each from the shared headers.
 NATIVE = ROOT / "asterlite" / "dynamics" / "native"
@@ -110,15 +114,33 @@ NATIVE_MODULES = [
         sources=[str(source.relative_to(ROOT))],
         depends=HEADERS,
         language="c++",
-        extra_compile_args=["-std=c++17", "-O3", "-ffp-contract=off", "-fno-math-errno"],
+        extra_compile_args=[
+            "-std=c++17",
+            "-O3",
+            "-funroll-loops",
+            "-ffp-contract=off",
+            "-fno-math-errno",
+            "-fvisibility=hidden",
+        ],
         optional=True,
     )
     for source in sorted(NATIVE.glob("*.cpp"))
 ]
 
+
+class BuildExtensions(build_ext):
+    """setuptools' build_ext, one compiler process per core (the modules are
+    independent; pip gives no option for it)."""
+
+    def finalize_options(self):
+        super().finalize_options()
+        if not self.parallel:
+            self.parallel = os.cpu_count() or 1
+
+
 setup(
     packages=packages(),
     package_dir=package_dir(),
     ext_modules=NATIVE_MODULES,
-    cmdclass={"editable_wheel": EditableWheel},
+    cmdclass={"editable_wheel": EditableWheel, "build_ext": BuildExtensions},
 )

@@ -153,8 +153,10 @@ def test_requested_instants_are_reached_exactly(scheme):
     assert result.info["steps"] >= 3 and np.all(np.diff(result.order) > 0)
 
 
-def test_compiled_loops_are_cached_across_processes():
-    """A fresh process loads every loop from numba's cache: no recompilation."""
+def test_compiled_loops_are_cached_across_processes(monkeypatch):
+    """A fresh process loads every numba loop from numba's cache: no
+    recompilation (numba's loops here, not the C++ ones that serve by default)."""
+    monkeypatch.setenv("ASTERLITE_NATIVE", "0")  # this process and the child
     oscillator_error("DIFF_CENTRE", 0.01)  # make sure the cache is written
     code = (
         "import numpy as np\n"

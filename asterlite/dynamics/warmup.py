@@ -35,6 +35,13 @@ import numpy as np
 
 from asterlite import dynamics, progress
 from asterlite.dynamics import compile_estimate, schemes
+from asterlite.dynamics import kernel as K
+from asterlite.dynamics.excitation import tabulate_excitation
+from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
+from asterlite.dynamics.forces import acceleration, total_force
+from asterlite.dynamics.integrate import SchemeOptions, integrate, law_error, new_buffers
+from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+from asterlite.dynamics.rotation import Rotation
 
 # the kernels, in three stages: the force functions every loop calls (and
 # the film loop, which needs none of them); each scheme's own loop; the two
@@ -82,8 +89,6 @@ class Warmed:
 
 def tiny_system(diagonal: bool = True):
     """Two modes (10 and 30 rad/s), lightly damped; coupled when not ``diagonal``."""
-    from asterlite.dynamics.model import LinearSystem
-
     mass = np.diag([1.0, 2.0])
     stiffness = np.diag([100.0, 1800.0])
     damping = np.diag([0.2, 0.6])
@@ -95,8 +100,6 @@ def tiny_system(diagonal: bool = True):
 
 def tiny_shocks(system, obstacle: str = "PLAN_Y"):
     """One DIS_CHOC with friction, touching within a few steps."""
-    from asterlite.dynamics.model import ShockSpec, build_shocks
-
     shape = np.array([[0.0, 0.0], [1.0, 0.5], [0.0, 0.2]])
     spec = ShockSpec(
         name="WARMUP",
@@ -122,7 +125,6 @@ def tiny_shocks(system, obstacle: str = "PLAN_Y"):
 
 def tiny_loads(system, t_end: float, dt: float):
     """A constant load and a tabulated multiplier (the loops' two kinds of rows)."""
-    from asterlite.dynamics.excitation import tabulate_excitation
 
     class Table:  # a DEFI_FONCTION with linear interpolation
         INTERPOL = ("LIN", "LIN")
@@ -141,8 +143,6 @@ def run_loop_kernel(name: str) -> None:
     """Run the loop ``name`` (a :data:`LOOPS` entry, as
     :func:`asterlite.dynamics.integrate.loop_kernel` names them) on a tiny
     problem, with and without the energy balance where the loop offers it."""
-    from asterlite.dynamics.integrate import integrate
-
     runs = {loop: entry.name for loop, entry in schemes.kernels().items()}
     # the shared loops run NEWMARK's step (every step compiles with them)
     runs.update({loop: "NEWMARK" for loop in EVERY_SCHEME_LOOPS})
@@ -186,8 +186,6 @@ def warmup_options(**given):
     """Options of every scheme for the tiny problem. The kernels are
     compiled for the types, so these are values of the warm-up's own, not
     the catalogue's defaults, which only a deck's validated call gives."""
-    from asterlite.dynamics.integrate import SchemeOptions
-
     values = dict(
         tolerance=1.0e-4, alpha=0.0, dt_min=None, dt_max=None, beta=0.25, gamma=0.5,
         nmax_iter_pas=10, vite_min="NORM", coef_mult_pas=1.2, coef_divi_pas=1.5,
@@ -197,8 +195,6 @@ def warmup_options(**given):
 
 
 def tiny_rotation(system, t_end: float, dt: float):
-    from asterlite.dynamics.rotation import Rotation
-
     gyro = np.array([[0.0, 1.0], [-1.0, 0.0]])
     rotation = Rotation(system.damping, system.stiffness, gyro, np.zeros((2, 2)), 10.0, 0.0)
     rotation.tabulate(0.0, t_end, dt / 2.0)
@@ -210,10 +206,6 @@ def warm_shared() -> None:
     """The functions every loop calls, compiled once before the loops (so
     that parallel workers do not each compile them): the forces and the
     acceleration of the initial state, the archiving, the law diagnosis."""
-    from asterlite.dynamics import kernel as K
-    from asterlite.dynamics.forces import acceleration, total_force
-    from asterlite.dynamics.integrate import law_error, new_buffers
-
     system = tiny_system()
     shocks = tiny_shocks(system)
     excitation = tiny_loads(system, 0.01, 1.0e-4)
@@ -229,8 +221,6 @@ def warm_shared() -> None:
 def warm_film(adapt: bool = False) -> None:
     """code_aster 10-14's fluid film loop (its own kernel), or with ``adapt``
     the film under code_aster 10-12's ADAPT_ORDRE2 (another one)."""
-    from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
-
     system = tiny_system()
     shocks = tiny_shocks(system)
     film = FluidFilm(np.array([film_row(1.0, 1.0, 0.1, 1.0)]), *FILM_CONTROLS)
