@@ -141,6 +141,10 @@ def test_a_converging_ladder_gets_no_note():
 
 
 def test_converge_outputs_without_matplotlib(tmp_path, monkeypatch):
+    # matplotlib and every submodule an earlier test of this worker imported
+    # (import_module returns a cached submodule without its parent)
+    for name in [m for m in sys.modules if m.partition(".")[0] == "matplotlib"]:
+        monkeypatch.setitem(sys.modules, name, None)
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     study = study_of([outcome("DIFF_CENTRE", h, e) for h, e in ((2e-4, 1e-2), (1e-4, 2.5e-3))])
     paths = converge.write_outputs(study, tmp_path)
