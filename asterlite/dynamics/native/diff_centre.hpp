@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "clock.hpp"
+#include "loop_steps.hpp"
 #include "contact.hpp"
 #include "energy.hpp"
 #include "forces.hpp"
@@ -61,12 +62,8 @@ int diff_centre_loop(const Clock& c, const State& x, const F1& residual,
     const Local& local = model.local;
     const bool active = balance.active();  // energy balance: energy.after_step
     while (unfinished(c)) {
-        const int paused = pause_status(c, out);
+        const int paused = before_step(c, out, model);
         if (paused) return paused;
-        const double t_ahead = c.clock(C_TIME) + 2.0 * c.clock(C_STEP);
-        if (!(loads_cover(t_ahead, model.loads.tables) && loads_cover(t_ahead, model.sup.tables))) {
-            return STATUS_LOADS;
-        }
         double t, dt;
         plan_step(c, t, dt);
         for (index i = 0; i < n; ++i) {
@@ -87,12 +84,7 @@ int diff_centre_loop(const Clock& c, const State& x, const F1& residual,
                                        residual);
         }
         if (!finite) return record_failure(c, STATUS_NOT_FINITE, -1, dt);
-        const std::int64_t archived = active ? c.counters(K_ARCHIVED) : 0;
-        advance_clock(c, x.q, x.v, x.a, x.vint, out, dt, dt, 0);
-        if (active) {
-            energy::after_step(balance, archived, c.counters(K_ARCHIVED), c.clock(C_TIME), dt,
-                               x.q, x.v, x.a, x.vint, model);
-        }
+        after_step(c, x, out, balance, active, model, dt, dt, 0);
     }
     return STATUS_DONE;
 }

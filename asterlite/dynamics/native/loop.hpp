@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "arguments.hpp"
+#include "loop_steps.hpp"
 #include "clock.hpp"
 #include "model.hpp"
 
@@ -26,32 +27,24 @@ int time_loop(const Clock& c, const State& x, const Memory& memory, const Model&
               const ArchiveBuffers& out, const energy::Balance& balance, Step&& step) {
     const bool active = balance.active();  // read once, as loop.time_loop does
     while (unfinished(c)) {
-        const int paused = pause_status(c, out);
+        const int paused = before_step(c, out, model);
         if (paused) return paused;
-        const double t_next = c.clock(C_TIME) + 2.0 * c.clock(C_STEP);
-        if (!(loads_cover(t_next, model.loads.tables) && loads_cover(t_next, model.sup.tables))) {
-            return STATUS_LOADS;
-        }
         double t, dt;
         plan_step(c, t, dt);
         const StepResult r = step(t, dt, c.counters(K_STEP), x, memory, model);
         if (r.status != STATUS_DONE) return record_failure(c, r.status, r.shock, r.dt_used);
-        const std::int64_t archived = c.counters(K_ARCHIVED);
-        advance_clock(c, x.q, x.v, x.a, x.vint, out, r.dt_used, r.dt_next, r.rejected);
-        if (active) {
-            energy::after_step(balance, archived, c.counters(K_ARCHIVED), c.clock(C_TIME),
-                               r.dt_used, x.q, x.v, x.a, x.vint, model);
-        }
+        after_step(c, x, out, balance, active, model, r.dt_used, r.dt_next, r.rejected);
     }
     return STATUS_DONE;
 }
 
-// The Python function of a scheme's loop: arguments clock, counters,
-// instants, the state (7), the memory (3), the model (27), the archive (7),
-// the energy balance (7), pas_arch, eps (asterlite.dynamics.native.time_loop);
-// returns the status.
-template <class Step>
-PyObject* run_time_loop(PyObject* args, const char* name, Step&& step) {
+// The Python function of a loop: arguments clock, counters, instants, the
+// state (7), the memory (3), the model (27), the archive (7), the energy
+// balance (7), pas_arch, eps (asterlite.dynamics.native.time_loop), checked
+// (``check_memory(in, memory, x)``: what the scheme's memory must hold), then
+// ``loop(c, x, memory, model, out, balance)`` without the GIL; returns its status.
+template <class CheckMemory, class Loop>
+PyObject* run_loop(PyObject* args, const char* name, CheckMemory&& check_memory, Loop&& loop) {
     Arguments in(args, name);
     Clock c = read_clock(in);
     State x = read_state(in);
@@ -66,12 +59,30 @@ PyObject* run_time_loop(PyObject* args, const char* name, Step&& step) {
     check_loop(in, c, x, out);
     check_balance(in, balance, x, out.t.n0);
     in.require(memory.rows.n0 == 0 || memory.rows.n1 == x.q.n0, "memory rows");
+    if (!in.failed()) check_memory(in, memory, x);
     if (in.failed()) return nullptr;
     int status;
     Py_BEGIN_ALLOW_THREADS
-    status = time_loop(c, x, memory, model, out, balance, step);
+    status = loop(c, x, memory, model, out, balance);
     Py_END_ALLOW_THREADS
     return PyLong_FromLong(status);
+}
+
+// run_loop for loop.time_loop around a scheme's step
+template <class Step, class CheckMemory>
+PyObject* run_time_loop(PyObject* args, const char* name, Step&& step,
+                        CheckMemory&& check_memory) {
+    return run_loop(args, name, check_memory,
+                    [&step](const Clock& c, const State& x, const Memory& memory,
+                            const Model& model, const ArchiveBuffers& out,
+                            const energy::Balance& balance) {
+                        return time_loop(c, x, memory, model, out, balance, step);
+                    });
+}
+
+template <class Step>
+PyObject* run_time_loop(PyObject* args, const char* name, Step&& step) {
+    return run_time_loop(args, name, step, [](Arguments&, const Memory&, const State&) {});
 }
 
 // The module object of an extension of this folder, with its ``KERNELS``

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "clock.hpp"
+#include "loop_steps.hpp"
 #include "energy.hpp"
 #include "contact.hpp"
 #include "forces.hpp"
@@ -117,12 +118,8 @@ inline int newmark_loop(const Clock& c, const State& x, const Memory& memory, co
     const F1 q2 = row(rows, Q_INDEX2), v2 = row(rows, V_INDEX2);
     const bool at_start = scalars(S_FORCE_AT_START) == 1.0;
     while (unfinished(c)) {
-        const int paused = pause_status(c, out);
+        const int paused = before_step(c, out, model);
         if (paused) return paused;
-        const double t_ahead = c.clock(C_TIME) + 2.0 * c.clock(C_STEP);
-        if (!(loads_cover(t_ahead, model.loads.tables) && loads_cover(t_ahead, model.sup.tables))) {
-            return STATUS_LOADS;
-        }
         double t, dt;
         plan_step(c, t, dt);
         const double built = scalars(S_DT_BUILT);
@@ -143,12 +140,7 @@ inline int newmark_loop(const Clock& c, const State& x, const Memory& memory, co
             const index shock = local_force(t + dt, x.q, x.v, x.f, x.vint, model);
             if (shock >= 0) return record_failure(c, STATUS_SHOCK_DIVERGED, shock, dt);
         }
-        const std::int64_t archived = active ? c.counters(K_ARCHIVED) : 0;
-        advance_clock(c, x.q, x.v, x.a, x.vint, out, dt, dt, 0);
-        if (active) {
-            energy::after_step(balance, archived, c.counters(K_ARCHIVED), c.clock(C_TIME), dt,
-                               x.q, x.v, x.a, x.vint, model);
-        }
+        after_step(c, x, out, balance, active, model, dt, dt, 0);
     }
     return STATUS_DONE;
 }
