@@ -11,6 +11,7 @@ from asterlite.dynamics import native
 from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+from tests.test_dynamics_specialised import Sampled, Table  # the tests' multipliers
 from tests.validated import scheme_options
 
 N_MODES = 5
@@ -74,22 +75,6 @@ FORMULAS = (
     ("max(INST, 0.02, 0.01) + abs(INST - 0.5) + sqrt(INST) + exp(-INST) + log(1 + INST)", {}),
     ("INST % 0.003 + atan2(INST, 1) + sign(INST - 0.02) + int(300 * INST) + hypot(INST, 2)", {}),
 )
-
-
-class Table:
-    INTERPOL = ("LIN", "LIN")
-    PROL_GAUCHE = PROL_DROITE = "CONSTANT"
-
-    def __init__(self, xs, ys):
-        self.abscissas, self.ordinates = np.asarray(xs), np.asarray(ys)
-
-    def evaluate(self, t):
-        return np.interp(t, self.abscissas, self.ordinates)
-
-
-class Sampled:  # known only through evaluate: sampled by windows
-    def evaluate(self, t):
-        return 0.5 * np.cos(140.0 * np.asarray(t))
 
 
 def run(monkeypatch, compiled: bool, geometry="CERCLE", diagonal=True, friction="both",

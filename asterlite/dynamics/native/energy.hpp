@@ -36,29 +36,6 @@ struct Balance {
     bool active() const { return acc.data != nullptr && acc(A_ON) == 1.0; }
 };
 
-inline F2 matrix(const F3& matrices, index k) {
-    F2 view;
-    view.data = matrices.data + k * matrices.n1 * matrices.n2;
-    view.n0 = matrices.n1;
-    view.n1 = matrices.n2;
-    return view;
-}
-
-inline F2 layer(const F3& local, index k) {
-    F2 view;
-    view.data = local.data + k * local.n1 * local.n2;
-    view.n0 = local.n1;
-    view.n1 = local.n2;
-    return view;
-}
-
-inline F1 vector(const F2& rows, index r) {
-    F1 view;
-    view.data = rows.data + r * rows.n1;
-    view.n0 = rows.n1;
-    return view;
-}
-
 inline void copy_rows(const F2& source, const F2& target) {
     for (index i = 0; i < source.n0; ++i) {
         for (index j = 0; j < source.n1; ++j) target(i, j) = source(i, j);
@@ -202,13 +179,13 @@ inline void evaluate(const Balance& e, double t, const F1& q, const F1& v, const
     const F1& acc = e.acc;
     const index n = q.n0;
     const bool diagonal = acc(A_DIAGONAL) == 1.0;
-    const F1 w = vector(e.vectors, R_VELOCITY);
+    const F1 w = row(e.vectors, R_VELOCITY);
     const double half = acc(A_STAGGERED) == 1.0 ? 0.5 * dt : 0.0;
     for (index i = 0; i < n; ++i) w(i) = v(i) + half * a(i);
-    acc(A_E_CIN) = 0.5 * quadratic(matrix(e.matrices, 0), w, w, diagonal);
-    acc(A_E_POT) = 0.5 * quadratic(matrix(e.matrices, 1), q, q, diagonal);
-    acc(A_P_AMOR) = quadratic(matrix(e.matrices, 2), w, w, diagonal);
-    const F1 f = vector(e.vectors, R_EXTERNAL);
+    acc(A_E_CIN) = 0.5 * quadratic(slice(e.matrices, 0), w, w, diagonal);
+    acc(A_E_POT) = 0.5 * quadratic(slice(e.matrices, 1), q, q, diagonal);
+    acc(A_P_AMOR) = quadratic(slice(e.matrices, 2), w, w, diagonal);
+    const F1 f = row(e.vectors, R_EXTERNAL);
     for (index i = 0; i < f.n0; ++i) f(i) = 0.0;
     add_external_force(t, model.loads, f);
     double p_ext = 0.0;
@@ -216,7 +193,7 @@ inline void evaluate(const Balance& e, double t, const F1& q, const F1& v, const
     acc(A_P_EXT) = p_ext;
     support_motion(t, model.sup, model.shk.params);
     double e_n, e_tan;
-    shock_powers(q, w, vint, model.shk, e.vint_copy, e.work, layer(e.local, 1), e_n, e_tan);
+    shock_powers(q, w, vint, model.shk, e.vint_copy, e.work, slice(e.local, 1), e_n, e_tan);
     acc(A_E_N) = e_n;
     acc(A_E_TAN) = e_tan;
     acc(A_P_NL) = 0.0;  // no relation of laws/ in these loops
@@ -245,7 +222,7 @@ inline void start(const Balance& e, double t, const F1& q, const F1& v, const F1
                   const F2& vint, const Model& model) {
     for (index k = A_EXT; k < A_NL + 1; ++k) e.acc(k) = 0.0;
     evaluate(e, t, q, v, a, 0.0, vint, model);
-    copy_rows(layer(e.local, 1), layer(e.local, 0));
+    copy_rows(slice(e.local, 1), slice(e.local, 0));
     e.acc(A_E0) = e.acc(A_E_CIN) + e.acc(A_E_POT) + e.acc(A_E_N) + e.acc(A_E_TAN);
     e.acc(A_E_TAN0) = e.acc(A_E_TAN);
     record(e, 0, t);
@@ -258,9 +235,9 @@ inline void accumulate(const Balance& e, double t, double dt, const F1& q, const
     const double p_ext = acc(A_P_EXT), p_amor = acc(A_P_AMOR), p_nl = acc(A_P_NL);
     evaluate(e, t, q, v, a, dt, vint, model);
     double d_choc, w_frot, w_drive;
-    contact_integrals(layer(e.local, 0), layer(e.local, 1), model.shk.params, dt, d_choc, w_frot,
+    contact_integrals(slice(e.local, 0), slice(e.local, 1), model.shk.params, dt, d_choc, w_frot,
                       w_drive);
-    copy_rows(layer(e.local, 1), layer(e.local, 0));
+    copy_rows(slice(e.local, 1), slice(e.local, 0));
     const double h = 0.5 * dt;
     acc(A_EXT) += h * (p_ext + acc(A_P_EXT)) - w_drive;
     acc(A_AMOR) += h * (p_amor + acc(A_P_AMOR));

@@ -20,13 +20,6 @@ inline F2 block(const F2& rows, index vector_rows, index which, index n) {
     return view;
 }
 
-inline F1 row(const F2& rows, index r) {
-    F1 view;
-    view.data = rows.data + r * rows.n1;
-    view.n0 = rows.n1;
-    return view;
-}
-
 // implicit.combine: out = cm M + ck K + cc C
 inline void combine(const F2& out, const F2& mass, const F2& stiffness, const F2& damping,
                     double cm, double ck, double cc) {

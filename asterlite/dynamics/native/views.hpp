@@ -45,4 +45,21 @@ using F4 = View4<double>;
 using I1 = View1<std::int64_t>;
 using I2 = View2<std::int64_t>;
 
+// a[r], as numba's view of a row
+inline F1 row(const F2& a, index r) {
+    F1 view;
+    view.data = a.data + r * a.n1;
+    view.n0 = a.n1;
+    return view;
+}
+
+// a[k], as numba's view of a 2-D slice
+inline F2 slice(const F3& a, index k) {
+    F2 view;
+    view.data = a.data + k * a.n1 * a.n2;
+    view.n0 = a.n1;
+    view.n1 = a.n2;
+    return view;
+}
+
 }  // namespace asterlite
