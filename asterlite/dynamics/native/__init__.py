@@ -39,7 +39,10 @@ except ImportError:  # not built: the numba kernels serve
 
 SWITCH = "ASTERLITE_NATIVE"  # "0": numba's loops everywhere
 RESIDUAL = 0  # the memory row of DIFF_CENTRE's residual (scheme_diff_centre.RESIDUAL)
-GENERAL_PATH = "{} (general path)"  # schemes.GENERAL_PATH: always numba's
+GENERAL_PATH = "{} (general path)"  # schemes.GENERAL_PATH
+# the general paths (the relations of laws/) are numba's until laws.hpp gives
+# numba's bits for every relation
+LAWS_PORTED = False
 
 
 def available() -> bool:
@@ -55,8 +58,10 @@ def run_loop(entry, loop: str, rotation, implicit, legacy: bool):
     code_aster 10-12's variant, when its scheme is ported."""
     if not available() or rotation is not None or implicit or legacy:
         return None
-    if loop not in entry.loop_names() or loop == GENERAL_PATH.format(entry.kernel):
+    if loop not in entry.loop_names():
         return None
+    if loop == GENERAL_PATH.format(entry.kernel):
+        return LOOPS.get(loop) if LAWS_PORTED else None
     return LOOPS.get(entry.kernel)
 
 
@@ -98,19 +103,36 @@ def energy_start(balance, t, q, v, a, vint, model) -> None:
     _loops.energy_start(float(t), *state, *model_arguments(model), *balance)
 
 
+NO_LOCAL_FRAMES = np.zeros(1, dtype=np.int64)
+WITH_LOCAL_FRAMES = np.ones(1, dtype=np.int64)
+
+
 def model_arguments(model) -> tuple:
-    """The 27 arrays of the model, in the order of arguments.hpp's read_model."""
+    """The 31 arrays of the model, in the order of arguments.hpp's read_model:
+    a scheme's own loop has the shocks' local frames (a 4th bundle), the
+    general model (3 bundles) empty ones."""
     lin, shk, exc = model[LINEAR], model[SHOCKS], model[LOADS]
-    shapes, rest, drive = model[LOCAL][-3:]
+    if len(model) > LOCAL:
+        local_frames = WITH_LOCAL_FRAMES
+        shapes, rest, drive = model[LOCAL][-3:]
+    else:
+        local_frames = NO_LOCAL_FRAMES
+        shapes, rest, drive = no_local_frames(lin.minv.shape[0])
     return (
         lin.minv, lin.stiffness, lin.damping, lin.diagonal,
-        shk.flags, shk.params, shk.rots, shk.phis, shk.polars,
+        shk.flags, shk.params, shk.rots, shk.phis, shk.polars, shk.laws, shk.rphis,
+        shk.law_scratch,
         exc.vectors, exc.abscissas, exc.ordinates, exc.layout, exc.pending, exc.cursors,
         exc.codes, exc.constants, exc.stack,
         exc.drive_shapes, exc.drive_abscissas, exc.drive_ordinates, exc.drive_layout,
         exc.drive_pending, exc.drive_cursors,
-        shapes, rest, drive,
+        local_frames, shapes, rest, drive,
     )  # fmt: skip
+
+
+def no_local_frames(n: int) -> tuple:
+    """The empty local-frame arrays of the general model."""
+    return np.zeros((0, 2, 3, n)), np.zeros((0, 2, 3)), np.zeros((0, 2, 6))
 
 
 def layout() -> dict:

@@ -36,5 +36,8 @@ PyModuleDef module = {
 PyMODINIT_FUNC PyInit__adapt(void) {
     return asterlite::loops_module(
         &asterlite::module,
-        {{"ADAPT_ORDRE1", "adapt_ordre1_loop"}, {"ADAPT_ORDRE2", "adapt_ordre2_loop"}});
+        {{"ADAPT_ORDRE1", "adapt_ordre1_loop"},
+         {"ADAPT_ORDRE1 (general path)", "adapt_ordre1_loop"},
+         {"ADAPT_ORDRE2", "adapt_ordre2_loop"},
+         {"ADAPT_ORDRE2 (general path)", "adapt_ordre2_loop"}});
 }

@@ -11,6 +11,7 @@
 
 #include "clock.hpp"
 #include "energy.hpp"
+#include "laws.hpp"
 #include "model.hpp"
 
 namespace asterlite {
@@ -169,9 +170,10 @@ inline Tables read_tables(Arguments& in, const char* abscissas, const char* ordi
 }
 
 // The model: the linear bundle (M^-1, K, C, diagonal flag), the shocks
-// (flags, params, rots, phis, polars), the loads (vectors, 5 table arrays,
-// codes, constants, stack), the support motions (shapes, 5 table arrays),
-// the local frames (shapes, rest, drive): 27 arrays.
+// (flags, params, rots, phis, polars, laws, rphis, law scratch), the loads
+// (vectors, 5 table arrays, codes, constants, stack), the support motions
+// (shapes, 5 table arrays), whether the shocks are taken in their local
+// frames, and those frames (shapes, rest, drive; empty otherwise): 31 arrays.
 inline Model read_model(Arguments& in) {
     Model model;
     model.lin.minv = in.f2("minv");
@@ -184,6 +186,9 @@ inline Model read_model(Arguments& in) {
     model.shk.rots = in.f3("shock_rots");
     model.shk.phis = in.f4("shock_phis");
     model.shk.polars = in.f3("shock_polars");
+    model.shk.laws = in.f2("shock_laws");
+    model.shk.rphis = in.f4("shock_rphis");
+    model.shk.law_scratch = in.f2("law_scratch", WRITE);
     model.loads.vectors = in.f2("load_vectors");
     model.loads.tables = read_tables(in, "load_abscissas", "load_ordinates", "load_layout",
                                      "load_pending", "load_cursors");
@@ -193,6 +198,9 @@ inline Model read_model(Arguments& in) {
     model.sup.shapes = in.f4("support_shapes");
     model.sup.tables = read_tables(in, "support_abscissas", "support_ordinates",
                                    "support_layout", "support_pending", "support_cursors");
+    I1 local_frames = in.i1("local_frames");
+    model.local_frames =
+        local_frames.data != nullptr && local_frames.n0 == 1 && local_frames(0) == 1;
     model.local.shapes = in.f4("local_shapes");
     model.local.rest = in.f3("local_rest");
     model.local.drive = in.f3("local_drive", WRITE);
@@ -292,7 +300,10 @@ inline void check_model(Arguments& in, const State& x, const Model& model) {
                "matrices");
     in.require(shk.flags.n1 > F_LAW, "shock flags without their law column");
     for (index s = 0; s < ns && !in.failed(); ++s) {
-        in.require(shk.flags(s, F_LAW) == 0, "a shock of another relation than DIS_CHOC");
+        const std::int64_t law = shk.flags(s, F_LAW);
+        // the relations of laws/ run on the general model only (laws.kernel)
+        in.require(law == 0 || (!model.local_frames && law > 0 && law <= laws::LAST_CODE),
+                   "a relation the loop does not evaluate");
         if (shk.flags.n1 > F_IMPLICIT) {
             in.require(shk.flags(s, F_IMPLICIT) == 0, "a shock of the implicit treatment");
         }
@@ -303,6 +314,13 @@ inline void check_model(Arguments& in, const State& x, const Model& model) {
     in.require(shk.phis.n0 == ns && shk.phis.n1 == 2 && shk.phis.n2 == 3 && shk.phis.n3 == n,
                "mode shapes");
     in.require(shk.polars.n0 >= ns || ns == 0, "shock polars");
+    in.require(shk.laws.n0 == ns, "law parameters");
+    in.require(shk.rphis.n0 == ns && shk.rphis.n1 == 2 && shk.rphis.n2 == 3 &&
+                   (shk.rphis.n3 == n || shk.rphis.n3 == 0),
+               "rotation shapes");
+    in.require(shk.laws.n1 == 0 || (shk.law_scratch.n0 >= laws::SCRATCH_ROWS &&
+                                    shk.law_scratch.n1 >= laws::SCRATCH_COLS),
+               "law scratch");
     const Loads& loads = model.loads;
     in.require(loads.vectors.n1 == n || loads.vectors.n0 == 0, "load vectors");
     in.require(loads.tables.layout.n0 >= loads.vectors.n0, "load layout");
@@ -314,6 +332,7 @@ inline void check_model(Arguments& in, const State& x, const Model& model) {
                                        sup.shapes.n2 == 3 &&
                                        sup.tables.layout.n0 >= 2 * sup.shapes.n3),
                "support motions");
+    if (!model.local_frames) return;
     const Local& local = model.local;
     in.require(local.shapes.n0 == ns && local.shapes.n1 == 2 && local.shapes.n2 == 3 &&
                    local.shapes.n3 == n,

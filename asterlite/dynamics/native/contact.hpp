@@ -18,6 +18,11 @@ struct Shocks {
     F3 rots;     // (n_shocks, 3, 3): global -> local
     F4 phis;     // (n_shocks, 2, 3, n_modes): mode shapes at the nodes, global frame
     F3 polars;   // (n_shocks, n_polar, 2): DISCRET facets
+    // the relations of laws/ (laws.hpp): packed law parameters (n_shocks, width; width 0
+    // without laws), rotation shapes (n_shocks, 2, 3, n_modes or 0), the laws' scratch
+    F2 laws;
+    F4 rphis;
+    F2 law_scratch;
 };
 
 struct Gap {

@@ -62,5 +62,6 @@ PyModuleDef module = {
 }  // namespace asterlite
 
 PyMODINIT_FUNC PyInit__devoge(void) {
-    return asterlite::loops_module(&asterlite::module, {{"DEVOGE", "devoge_loop"}});
+    return asterlite::loops_module(&asterlite::module, {{"DEVOGE", "devoge_loop"},
+                                {"DEVOGE (general path)", "devoge_loop"}});
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contact.hpp"
+#include "laws.hpp"
 #include "loads.hpp"
 #include "model.hpp"
 #include "views.hpp"
@@ -62,14 +63,27 @@ inline void copy_into(const F2& target, const F2& source) {
     for (index i = 0; i < size; ++i) target.data[i] = source.data[i];
 }
 
-// forces.total_force for DIS_CHOC shocks: out = F_ext(t) + Phi^T F_shock,
-// the support motion written into the shocks' parameters
+// forces.total_force: out = F_ext(t) + Phi^T F_shock, shocks in the global
+// frame, the support motion written into the shocks' parameters, then the
+// relations of laws/ (rows with a law) when no shock diverged
 inline index total_force(double t, const F1& q, const F1& v, const Model& model, const F2& vint,
                          const F2& work, const F1& out) {
     for (index m = 0; m < out.n0; ++m) out(m) = 0.0;
     add_external_force(t, model.loads, out);
     support_motion(t, model.sup, model.shk.params);
-    return shock_forces(q, v, model.shk, vint, work, out);
+    const index shock = shock_forces(q, v, model.shk, vint, work, out);
+    if (shock < 0 && model.shk.laws.n1 > 0) law_forces(t, q, v, model.shk, vint, out);
+    return shock;
+}
+
+// forces.evaluate (state_acceleration) on the general model: out = M^-1 (f - K q - C v)
+// with f the total force; a diverging shock's index or -1
+inline index general_evaluate(double t, const F1& q, const F1& v, const F1& out, const F1& f,
+                              const F1& residual, const F2& vint, const F2& work,
+                              const Model& model) {
+    const index shock = total_force(t, q, v, model, vint, work, f);
+    acceleration(f, q, v, model.lin, residual, out);
+    return shock;
 }
 
 }  // namespace asterlite

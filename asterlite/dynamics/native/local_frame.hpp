@@ -1,6 +1,7 @@
 // The state's acceleration with the shocks in their local frames
-// (asterlite.dynamics.local_frame): what the steps of the schemes' own loops
-// call as ``evaluate`` and ``total_force_at`` on a model with local frames.
+// (asterlite.dynamics.local_frame), and what the steps call as ``evaluate``
+// and ``total_force_at``: the local frames' on a scheme's own loop, the
+// general model's (forces.py) on a general path.
 #pragma once
 
 #include "contact.hpp"
@@ -33,11 +34,13 @@ inline void local_diagonal_acceleration(const F1& f, const F1& q, const F1& v, c
     }
 }
 
-// local_frame.evaluate on a model with local frames (local_evaluate): out =
-// M^-1 (F_ext(t) + F_shock(q, v) - K q - C v), vint updated, f the total
-// force; a diverging shock's index or -1
+// local_frame.evaluate: out = M^-1 (F_ext(t) + F_shock(q, v) - K q - C v),
+// vint updated, f the total force; a diverging shock's index or -1. On a
+// model with local frames local_evaluate, else forces.evaluate (``work``:
+// the state's scratch for the shocks in the global frame)
 inline index evaluate(double t, const F1& q, const F1& v, const F1& out, const F1& f,
-                      const F1& residual, const F2& vint, const Model& model) {
+                      const F1& residual, const F2& vint, const F2& work, const Model& model) {
+    if (!model.local_frames) return general_evaluate(t, q, v, out, f, residual, vint, work, model);
     const index shock = local_total_force(t, q, v, vint, f, model);
     if (model.lin.diagonal) {
         local_diagonal_acceleration(f, q, v, model.lin, residual, out);
@@ -47,9 +50,11 @@ inline index evaluate(double t, const F1& q, const F1& v, const F1& out, const F
     return shock;
 }
 
-// local_frame.total_force_at on a model with local frames
-inline index total_force_at(double t, const F1& q, const F1& v, const F2& vint, const F1& f,
-                            const Model& model) {
+// local_frame.total_force_at: local_total_force on a model with local
+// frames, else forces.total_force_at
+inline index total_force_at(double t, const F1& q, const F1& v, const F2& vint, const F2& work,
+                            const F1& f, const Model& model) {
+    if (!model.local_frames) return total_force(t, q, v, model, vint, work, f);
     return local_total_force(t, q, v, vint, f, model);
 }
 

@@ -39,7 +39,7 @@ int time_loop(const Clock& c, const State& x, const Memory& memory, const Model&
 }
 
 // The Python function of a loop: arguments clock, counters, instants, the
-// state (7), the memory (3), the model (27), the archive (7), the energy
+// state (7), the memory (3), the model (31), the archive (7), the energy
 // balance (7), pas_arch, eps (asterlite.dynamics.native.time_loop), checked
 // (``check_memory(in, memory, x)``: what the scheme's memory must hold), then
 // ``loop(c, x, memory, model, out, balance)`` without the GIL; returns its status.

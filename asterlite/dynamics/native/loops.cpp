@@ -12,7 +12,7 @@ namespace {
 
 // DIFF_CENTRE's specialised loop: clock, counters, instants, the state (7),
 // the residual row, M^-1, K, C as model.LinearSystem.kernel_matrices gives
-// them (1-D diagonals or (n, n)), the model (27), the archive (7), the energy
+// them (1-D diagonals or (n, n)), the model (31), the archive (7), the energy
 // balance (7), pas_arch, eps
 PyObject* diff_centre_loop(PyObject*, PyObject* args) {
     Arguments in(args, "diff_centre_loop");
@@ -69,7 +69,7 @@ PyObject* diff_centre_loop(PyObject*, PyObject* args) {
 }
 
 // forces.total_force then forces.acceleration at the start of a run: t, the
-// state (7), a residual row, the model (27); a diverging shock's index or -1
+// state (7), a residual row, the model (31); a diverging shock's index or -1
 PyObject* start(PyObject*, PyObject* args) {
     Arguments in(args, "start");
     const double t = in.real("t");
@@ -86,7 +86,7 @@ PyObject* start(PyObject*, PyObject* args) {
 }
 
 // energy.start: the balance at the initial state (row 0): t, the state (7),
-// the model (27), the balance (7)
+// the model (31), the balance (7)
 PyObject* energy_start(PyObject*, PyObject* args) {
     Arguments in(args, "energy_start");
     const double t = in.real("t");
@@ -203,5 +203,6 @@ PyModuleDef module = {
 }  // namespace asterlite
 
 PyMODINIT_FUNC PyInit__loops(void) {
-    return asterlite::loops_module(&asterlite::module, {{"RUNGE_KUTTA", "runge_kutta_loop"}});
+    return asterlite::loops_module(&asterlite::module, {{"RUNGE_KUTTA", "runge_kutta_loop"},
+                                {"RUNGE_KUTTA (general path)", "runge_kutta_loop"}});
 }

@@ -22,12 +22,16 @@ struct Local {
     F3 drive;   // (n_shocks, 2, 6): support motion in the local frames
 };
 
+// local_frames: the model of a scheme's own loop (the 4th bundle: its steps
+// evaluate in local frames, local_frame.py); else the general model (the
+// three bundles of the general paths: global frame, relations of laws/)
 struct Model {
     Linear lin;
     Shocks shk;
     Loads loads;
     Supports sup;
     Local local;
+    bool local_frames = true;
 };
 
 // layouts.State: q, v, a, the force f, the shocks' internal variables and

@@ -9,7 +9,7 @@ namespace asterlite {
 namespace {
 
 // clock, counters, instants, the state (7), the memory (3: what
-// scheme_newmark.prepare made), the model (27), the archive (7), the energy
+// scheme_newmark.prepare made), the model (31), the archive (7), the energy
 // balance (7), pas_arch, eps; returns the status
 PyObject* newmark_loop(PyObject*, PyObject* args) {
     // implicit.new_rows: the vector rows, then the seven (n, n) blocks

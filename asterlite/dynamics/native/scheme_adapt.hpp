@@ -42,7 +42,7 @@ inline StepResult step(double t, double dt, std::int64_t step_index, const State
             q2(i) = x.q(i) + v2(i) * dt_trial;
         }
         const index shock =
-            evaluate(t + dt_trial, q2, v2, a2, x.f, row(rows, RESIDUAL), x.vint, model);
+            evaluate(t + dt_trial, q2, v2, a2, x.f, row(rows, RESIDUAL), x.vint, x.work, model);
         if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt_trial, dt_trial, trials - 1};
         if (!all_finite(a2)) {
             expose_trial(x.q, x.v, x.a, q2, v2, a2);
@@ -112,7 +112,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
             v2(i) = v_mid_trial(i) + half * x.a(i);
         }
         const index shock =
-            evaluate(t + dt_trial, q2, v2, a2, x.f, row(rows, RESIDUAL), x.vint, model);
+            evaluate(t + dt_trial, q2, v2, a2, x.f, row(rows, RESIDUAL), x.vint, x.work, model);
         if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt_trial, dt_trial, trials - 1};
         if (!all_finite(a2)) {
             expose_trial(x.q, x.v, x.a, q2, v2, a2);

@@ -280,7 +280,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
             q3(i) = q(i) + half * v(i) + (dt * dt / 24.0) * (4.0 * r1(i) - r2(i) - damped);
             v3(i) = (q3(i) - q(i)) / half;
         }
-        index shock = total_force_at(t + half, q3, v3, vint, f, model);
+        index shock = total_force_at(t + half, q3, v3, vint, x.work, f, model);
         if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts};
         reduced_force(f, q3, minv, invm_k, mem, r3, diagonal);
         for (index i = 0; i < n; ++i) {
@@ -297,7 +297,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
             q4(i) = q(i) + dt * v(i) + (dt * dt / 6.0) * (r1(i) + 2.0 * r3(i) - damped);
             v4(i) = (q4(i) - q3(i)) / half;
         }
-        shock = total_force_at(t + dt, q4, v4, vint, f, model);
+        shock = total_force_at(t + dt, q4, v4, vint, x.work, f, model);
         if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, attempts};
         reduced_force(f, q4, minv, invm_k, mem, r4, diagonal);
         for (index i = 0; i < n; ++i) x1(i) = 4.0 * v3(i) + v(i);

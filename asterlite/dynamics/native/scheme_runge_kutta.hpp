@@ -45,7 +45,8 @@ inline index attempt(double t, double dt, const State& x, const Memory& memory,
             vs(i) = x.v(i) + dt * dv;
         }
         const double t_stage = t + dt * table(s, stage + 1);
-        const index shock = evaluate(t_stage, qs, vs, acc, x.f, row(rows, RESIDUAL), x.vint, model);
+        const index shock =
+            evaluate(t_stage, qs, vs, acc, x.f, row(rows, RESIDUAL), x.vint, x.work, model);
         if (shock >= 0) return shock;
     }
     return -1;

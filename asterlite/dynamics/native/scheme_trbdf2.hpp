@@ -62,7 +62,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
     const F1 residual = row(rows, RESIDUAL), pivots = row(rows, PIVOTS);
     const double h = STAGE_FRACTION * dt;
     // --- trapezoidal stage to t + h
-    index shock = evaluate(t + h, q2, v2, a2, x.f, residual, x.vint, model);
+    index shock = evaluate(t + h, q2, v2, a2, x.f, residual, x.vint, x.work, model);
     if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, 0};
     for (index i = 0; i < n; ++i) r_v(i) = 0.5 * (x.a(i) + a2(i));
     for (index i = 0; i < delta.n0; ++i) delta(i) = 0.0;
@@ -70,7 +70,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
     apply(f1, r_v, h, delta, diagonal);
     solve_effective(keff, pivots, delta, diagonal);
     // the acceleration at t + dt of the same state, for the BDF2 stage
-    shock = evaluate(t + dt, q2, v2, a2, x.f, residual, x.vint, model);
+    shock = evaluate(t + dt, q2, v2, a2, x.f, residual, x.vint, x.work, model);
     if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, 0};
     for (index i = 0; i < n; ++i) {
         q2(i) = x.q(i) + delta(i);
@@ -89,7 +89,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
         q2(i) = x.q(i) + delta(i);
         v2(i) = x.v(i) + (delta(i) + r_q(i)) / G3 / dt;
     }
-    shock = evaluate(t + dt, q2, v2, a2, x.f, residual, x.vint, model);
+    shock = evaluate(t + dt, q2, v2, a2, x.f, residual, x.vint, x.work, model);
     if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, 0};
     copy_into(x.q, q2);
     copy_into(x.v, v2);

@@ -27,5 +27,6 @@ PyModuleDef module = {
 }  // namespace asterlite
 
 PyMODINIT_FUNC PyInit__trbdf2(void) {
-    return asterlite::loops_module(&asterlite::module, {{"TRBDF2", "trbdf2_loop"}});
+    return asterlite::loops_module(&asterlite::module, {{"TRBDF2", "trbdf2_loop"},
+                                {"TRBDF2 (general path)", "trbdf2_loop"}});
 }
