@@ -122,15 +122,14 @@ def _resident_size() -> int | None:
         return None
 
 
-def _released_size(collect: bool = False) -> int | None:
+def _released_size() -> int | None:
     """The resident size once the C allocator has returned its free pages to
     the system (glibc) and, at most once a CPU second (a full collection of
-    a large heap takes long) or when ``collect``, unreachable objects are
-    collected."""
+    a large heap takes long), unreachable objects are collected."""
 
     _trim_allocator()
     now = time.process_time()
-    if collect or now - getattr(_state, "collected_at", -1.0e9) >= GC_INTERVAL_SECONDS:
+    if now - getattr(_state, "collected_at", -1.0e9) >= GC_INTERVAL_SECONDS:
         _state.collected_at = now
         gc.collect()
         _trim_allocator()
@@ -225,11 +224,14 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
     _state.deadline = None if seconds is None else _spent() + seconds
     _state.seconds = seconds
     _state.memory_mb = megabytes
-    # counted from the size once garbage is given back, as the checks count
-    # (else garbage freed later hides as much of the study's own growth)
-    _state.resident_start = (
-        _released_size(collect=True) if megabytes is not None else _resident_size()
-    )
+    # counted from the size once the allocator's free pages are given back, as
+    # the checks count (else pages freed later hide as much of the study's own
+    # growth); no collection: a run starts with next to no garbage, and a full
+    # collection of the imported modules costs ~10 ms of a start
+    if megabytes is not None:
+        _trim_allocator()
+    _state.resident_start = _resident_size()
+    _state.collected_at = time.process_time()  # the first collection a CPU second in
     _state.compiled_at_start = _compiling.resident
     _state.quiet_until = None
     try:

@@ -192,7 +192,7 @@ def test_module_keeps_lines_and_locations():
         ("x = 1 +\n", 1, 8, "unexpected end of line"),
         ("x = 1 $ 2\n", 1, 7, "unexpected character '$'"),
         ("x = 'abc\n", 1, 5, "unterminated string"),
-        ("x = 1\ny = )\n", 2, 5, "unexpected ')'"),
+        ("x = 1\ny = )\n", 2, 5, "unmatched ')'"),
         ("if 1:\n    x = 1\n  y = 2\n", 3, 3, "unindent does not match"),
         ("x = 1\n    y = 2\n", 2, 5, "unexpected indentation"),
         ("class A:\n    pass\n", 1, 1, "class definitions are not supported"),

@@ -253,6 +253,9 @@ def _parser():
     parser = Lark(
         grammar,
         parser="lalr",
+        # one scanner for every state: the contextual lexer compiles a regex per
+        # parser state on first use, ~15 ms of each process's first parse
+        lexer="basic",
         start=["file_input", "eval_input"],
         postlex=_indenter_class()(),
         maybe_placeholders=True,
@@ -329,7 +332,7 @@ _STATEMENT_STARTS = frozenset({"_NEWLINE", "_INDENT", "_DEDENT", "SEMICOLON"})
 def _print_statements(tokens):
     """Python 2: a statement starting with the name ``print`` is the print
     statement (its token becomes PRINT2). ``print`` is a keyword there, so no
-    lookahead is needed (the contextual lexer allows none)."""
+    lookahead is needed (the token stream is filtered as it goes)."""
     from lark import Token
 
     previous, depth = None, 0

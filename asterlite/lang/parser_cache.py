@@ -39,7 +39,7 @@ PREFIX = "deck-parser-"
 # the tables are ~0.15 MB; a larger file is not ours
 MAX_BYTES = 16 * 1024 * 1024
 # bump when what is stored changes
-FORMAT = "1"
+FORMAT = "2"
 
 
 class _DataOnlyUnpickler(pickle.Unpickler):

@@ -56,7 +56,7 @@ def removed_commands() -> dict[str, int]:
     newer = [found for found in (language(15), language(17)) if found is not None]
     found = {}
     for name in sorted(old_language().command_names):
-        if all(lang.command(name) is None for lang in newer):
+        if not any(lang.has_command(name) for lang in newer):
             found[name] = REMOVED_BY_2013.get(name, OLD_LAYOUT_LAST)
     return found
 

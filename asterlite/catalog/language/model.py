@@ -92,6 +92,10 @@ class Language:
     def command_names(self) -> frozenset[str]:
         return frozenset(self._lines)
 
+    def has_command(self, name: str) -> bool:
+        """Whether the version has command ``name`` (without reading its data)."""
+        return name in self._lines
+
     def command(self, name: str) -> dict | None:
         """The data of command ``name``, or None when the version has none
         (a name that runs another command's catalogue gives that one's)."""
