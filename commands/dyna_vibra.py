@@ -16,7 +16,6 @@ from asterlite.commands.dyna_vibra_shocks import refuse_with_film
 from asterlite.commands.dyna_vibra_words import TRANSIENT
 
 from asterlite.concepts.transient import TranGene
-from asterlite.dynamics.fluid_film import integrate_film
 from asterlite.dynamics.integrate import RunResult, integrate
 from asterlite.dynamics.kernel import INFO_REJECTED, INFO_STEP
 from asterlite.errors import NumericalError
@@ -54,6 +53,8 @@ def integrated(ctx, problem: TransientProblem) -> RunResult:
     scheme, options = p.scheme.name, p.options
     try:
         if p.film is not None:  # CHOC/LAME_FLUIDE of code_aster 10-14 decks
+            from asterlite.dynamics.fluid_film import integrate_film
+
             film_scheme = "ADAPT_ORDRE2" if options.adapt_v11 else "EULER"
             return integrate_film(
                 p.system, p.shocks, p.film, p.excitation, p.initial.displacement,

@@ -16,7 +16,6 @@ from asterlite.dynamics.model import (
     diagonal_damping_rates,
     modal_damping_rates,
 )
-from asterlite.dynamics.rotation import Rotation
 from asterlite.errors import missing_name
 from asterlite.fem.selection import as_tuple
 from asterlite.modal.renumber import transfer
@@ -269,6 +268,8 @@ def rotating_matrices(ctx, kw, system, t0, t_end, dt):
         damping = system.mass * system.damping_rates[None, :]
     # without ACCE_ROTA code_aster takes Ω' = 0 (and then ignores MATR_RIGY)
     acceleration = kw.get("ACCE_ROTA") if kw.get("MATR_RIGY") is not None else None
+    from asterlite.dynamics.rotation import Rotation  # imported for the decks that vary it
+
     rotation = Rotation(damping, system.stiffness, gyro, rigy, kw["VITE_ROTA"], acceleration)
     rotation.tabulate(t0, t_end, dt / 2.0)
     return rotation

@@ -12,6 +12,7 @@ integrates it and binds the result.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 from asterlite.catalogues.dyna_vibra import DYNA_VIBRA
@@ -25,7 +26,6 @@ from asterlite.commands.dyna_vibra_loads import (
     static_corrections,
     support_motions,
 )
-from asterlite.commands.dyna_vibra_relations import nonlinearity_spec
 from asterlite.commands.dyna_vibra_shocks import (
     check_basis_for_shocks,
     continue_law_states,
@@ -49,11 +49,13 @@ from asterlite.catalog.keywords import Keywords
 from asterlite.catalog.validator import validate_factor
 from asterlite.concepts.titles import unique_titles
 from asterlite.dynamics.excitation import Excitation, tabulate_excitation
-from asterlite.dynamics.fluid_film import FluidFilm
 from asterlite.dynamics.integrate import SchemeOptions
 from asterlite.dynamics.model import LinearSystem, ShockSet, build_shocks
 from asterlite.dynamics.schemes import SCHEMES, Scheme
 from asterlite.legacy.v15 import computes
+
+if TYPE_CHECKING:
+    from asterlite.dynamics.fluid_film import FluidFilm
 
 
 @dataclass(frozen=True)
@@ -214,6 +216,9 @@ def relations(ctx, kw, basis, system):
     occurrences = []  # the COMPORTEMENT occurrence of each shock (fluid films)
     for rank, occ in enumerate(kw.factor("COMPORTEMENT"), start=1):
         if occ.get("RELATION") != "DIS_CHOC":  # a relation of asterlite.dynamics.laws
+            # the relations' readers and laws: imported for the decks that have one
+            from asterlite.commands.dyna_vibra_relations import nonlinearity_spec
+
             found = [nonlinearity_spec(ctx, kw, occ, basis, system.n_modes, len(specs) + 1)]
         else:
             found = shock_specs(ctx, occ, basis, system.n_modes, first=len(specs) + 1)

@@ -7,13 +7,13 @@ them."""
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from asterlite.catalog.validator import default_occurrence
 from asterlite.concepts.titles import default_title
 from asterlite.dynamics.basis_check import node_checks
-from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row
 from asterlite.dynamics.model import (
     COMPONENTS,
     MODAL,
@@ -28,6 +28,9 @@ from asterlite.errors import missing_name
 from asterlite.fem.selection import as_tuple
 from asterlite.legacy.v15 import computes
 from asterlite.substructure.shocks import SubstructureError, in_global_frame
+
+if TYPE_CHECKING:
+    from asterlite.dynamics.fluid_film import FluidFilm
 from asterlite.substructure.shocks import substructure_view as view
 
 FRICTION_KEYWORDS = ("COULOMB", "COULOMB_DYNA", "COULOMB_STAT")
@@ -231,6 +234,8 @@ def fluid_film(ctx, kw, scheme, system, occurrences) -> FluidFilm | None:
     films = [occ for occ in occurrences if occ.get("LAME_FLUIDE") == "OUI"]
     if not films:
         return None
+    from asterlite.dynamics.fluid_film import N_FILM, FluidFilm, film_row  # films' decks only
+
     where = films[0]
     # code_aster 10-12's EULER (asterlite's DIFF_CENTRE arithmetic, the name
     # legacy decks are translated to), and its ADAPT_ORDRE2 (mdadap) in decks

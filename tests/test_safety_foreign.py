@@ -305,3 +305,64 @@ def test_numba_kernel_cache_is_never_read_from_a_folder_others_may_write(tmp_pat
     # a trusted NUMBA_CACHE_DIR is used as the root
     planted.chmod(0o700)
     assert dynamics.kernel_cache_folder() == planted
+
+
+def test_a_deck_tree_comes_back_from_the_cache_with_its_positions(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    from asterlite.lang import parser as P
+
+    deck = "x = [1, 2]\nif x:\n    y = _F(A=1.E+04, B=f'{x!r:>4}t')\nz = 3 / 2\n"
+    monkeypatch.setattr(P, "_RECENT_TREES", {})
+    parsed = P.parse_deck(deck, "a.comm")
+    (stored,) = (tmp_path / "cache" / "asterlite" / "parser").glob("deck-tree-*.pickle")
+    assert stored.stat().st_mode & 0o077 == 0
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("parsed again")
+
+    monkeypatch.setattr(P, "_RECENT_TREES", {})  # a new process: only the disk has it
+    monkeypatch.setattr(P, "_parse_text", refuse)
+    cached = P.parse_deck(deck, "b.comm")
+    assert cached.tree == parsed.tree and cached.future == parsed.future
+
+    def positions(tree):
+        return [
+            (t.type, str(t), t.start_pos, t.line, t.column, t.end_line, t.end_column, t.end_pos)
+            for t in tree.scan_values(lambda v: hasattr(v, "end_pos"))
+        ]
+
+    assert positions(cached.tree) == positions(parsed.tree) != []
+    with pytest.raises(AssertionError, match="parsed again"):  # another text is parsed
+        P.parse_deck(deck + "w = 1\n", "c.comm")
+
+
+def test_a_hostile_pickle_in_the_tree_cache_never_runs(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    from asterlite.lang import parser as P
+
+    deck = "a = 1\nb = a + 2\n"
+    folder = parser_cache.cache_folder()
+    marker = tmp_path / "ran"
+    planted = folder / f"deck-tree-{P._tree_key(deck, 'file_input', False)}.pickle"
+    planted.write_bytes(pickle.dumps(HostilePickle(f"open({str(marker)!r}, 'w').close()")))
+    planted.chmod(0o600)
+    monkeypatch.setattr(P, "_RECENT_TREES", {})
+    assert P.parse_deck(deck, "a.comm").tree is not None  # parsed: the file is refused
+    assert not marker.exists()
+    monkeypatch.setattr(P, "_RECENT_TREES", {})
+    assert P._stored_tree(folder, deck, "file_input", False) is not None  # replaced
+
+
+def test_the_tree_cache_keeps_the_newest_trees(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.setattr(parser_cache, "TREES_KEPT", 3)
+    from asterlite.lang import parser as P
+
+    folder = parser_cache.cache_folder()
+    names = []
+    for i in range(6):
+        monkeypatch.setattr(P, "_RECENT_TREES", {})
+        P.parse_deck(f"a = {i}\n", "a.comm")
+        names.append(f"deck-tree-{P._tree_key(f'a = {i}' + chr(10), 'file_input', False)}.pickle")
+        os.utime(folder / names[-1], (i, i))  # the order they were written in
+    assert sorted(path.name for path in folder.glob("deck-tree-*.pickle")) == sorted(names[3:])

@@ -204,11 +204,78 @@ def _parse(
     if key in _RECENT_TREES:
         tree, future = _RECENT_TREES[key]
         return Module(tree, text.splitlines(), filename, study_file, python2, future=future)
-    module = _parse_text(text, filename, start, study_file, python2)
+    # a whole file's tree is kept on disk too (an expression parses faster than
+    # its file would be written)
+    folder = parser_cache.cache_folder() if start == "file_input" else None
+    stored = _stored_tree(folder, text, start, python2) if folder else None
+    if stored is not None:
+        tree, future = stored
+        module = Module(tree, text.splitlines(), filename, study_file, python2, future=future)
+    else:
+        module = _parse_text(text, filename, start, study_file, python2)
+        if folder:
+            _store_tree(folder, text, start, python2, module)
     if len(_RECENT_TREES) >= _RECENT_LIMIT:
         _RECENT_TREES.pop(next(iter(_RECENT_TREES)))
     _RECENT_TREES[key] = (module.tree, module.future)
     return module
+
+
+def _tree_key(text: str, start: str, python2: bool) -> str:
+    tables = parser_cache.cache_key(GRAMMAR_PATH.read_text(encoding="utf-8"))
+    return parser_cache.tree_key(tables, text, start, python2)
+
+
+def _stored_tree(folder: Path, text: str, start: str, python2: bool):
+    """(tree, future) of ``text`` as a process parsed and checked it before, or None."""
+    data = parser_cache.load_tree(folder, _tree_key(text, start, python2))
+    if data is None:
+        return None
+    try:
+        encoded, future = data
+        return _decode_node(encoded), frozenset(future)
+    except (TypeError, ValueError, IndexError, RecursionError):  # not a tree of ours
+        return None
+
+
+def _store_tree(folder: Path, text: str, start: str, python2: bool, module: Module) -> None:
+    try:
+        encoded = _encode_node(module.tree)
+    except (TypeError, RecursionError):  # a node that is not plain data: parsed next time
+        return
+    key = _tree_key(text, start, python2)
+    parser_cache.store_tree(folder, key, (encoded, tuple(sorted(module.future))))
+
+
+# a checked tree as plain data (lark pickles a Token without its end position)
+_TREE, _TOKEN, _VALUE = 0, 1, 2
+_PLAIN = (str, int, float, bool, type(None))
+
+
+def _encode_node(node):
+    from lark import Token, Tree
+
+    if isinstance(node, Token):
+        return (_TOKEN, node.type, str(node), node.start_pos, node.line, node.column,
+                node.end_line, node.end_column, node.end_pos)  # fmt: skip
+    if isinstance(node, Tree):
+        return (_TREE, _encode_node(node.data), tuple(_encode_node(c) for c in node.children))
+    if type(node) in _PLAIN:
+        return (_VALUE, node)
+    raise TypeError(f"{type(node).__name__} in a deck tree")
+
+
+def _decode_node(data):
+    from lark import Token, Tree
+
+    kind = data[0]
+    if kind == _TOKEN:
+        return Token(*data[1:])
+    if kind == _TREE:
+        return Tree(_decode_node(data[1]), [_decode_node(c) for c in data[2]])
+    if kind == _VALUE and type(data[1]) in _PLAIN:
+        return data[1]
+    raise ValueError("not a deck tree")
 
 
 def _parse_text(

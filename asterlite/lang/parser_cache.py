@@ -1,7 +1,12 @@
-"""The deck parser's LALR tables, kept between processes in a private folder.
+"""The deck parser's LALR tables and the trees of the decks parsed last,
+kept between processes in a private folder.
 
 Building the tables from ``deck.lark`` takes about 0.3 s, loading them
 about 15 ms: without a cache every ``asterlite check`` would pay the build.
+A deck's checked tree, stored as plain data under a digest of its text,
+comes back in ~2 ms where loading the tables and parsing took ~35 ms of a
+run's start (a deck run again, an included file shared by several decks);
+the :data:`TREES_KEPT` newest are kept.
 lark's own ``cache=True`` is unsafe: it pickles the tables into the shared
 temporary folder under a name anyone can compute, and unpickles whatever
 file has that name, so any local user could plant a pickle that runs their
@@ -14,9 +19,9 @@ code in the next ``asterlite check``. Here:
   root's (``/tmp``). Otherwise nothing is cached (the tables are built);
 - the file is read through ``O_NOFOLLOW`` and only if it is a regular file
   of this user that nobody else may write;
-- the tables are plain data (dicts, lists, tuples, strings, numbers); they
-  are unpickled by an Unpickler that refuses every global, so even a file
-  planted there could not run code, only fail to load;
+- the tables and trees are plain data (dicts, lists, tuples, strings,
+  numbers); they are unpickled by an Unpickler that refuses every global, so
+  even a file planted there could not run code, only fail to load;
 - a file is written under a temporary name and renamed: a process reading
   concurrently gets a whole file or none.
 """
@@ -36,6 +41,8 @@ from asterlite.trusted_paths import safe_ancestor
 
 CACHE_NAME = ("asterlite", "parser")
 PREFIX = "deck-parser-"
+TREE_PREFIX = "deck-tree-"
+TREES_KEPT = 256
 # the tables are ~0.15 MB; a larger file is not ours
 MAX_BYTES = 16 * 1024 * 1024
 # bump when what is stored changes
@@ -87,8 +94,16 @@ def cache_key(grammar: str) -> str:
 
 def load_tables(folder: Path, key: str) -> dict | None:
     """The stored tables for ``key``, or None (absent, not ours, not data)."""
+    tables = _read_data(folder / f"{PREFIX}{key}.pickle")
+    if not (isinstance(tables, dict) and {"data", "memo"} <= tables.keys()):
+        return None
+    return tables
+
+
+def _read_data(path: Path):
+    """The plain data pickled in ``path``, or None (absent, not ours, not data)."""
     try:
-        descriptor = os.open(folder / f"{PREFIX}{key}.pickle", os.O_RDONLY | os.O_NOFOLLOW)
+        descriptor = os.open(path, os.O_RDONLY | os.O_NOFOLLOW)
     except OSError:
         return None
     with os.fdopen(descriptor, "rb") as stream:
@@ -101,12 +116,9 @@ def load_tables(folder: Path, key: str) -> dict | None:
         ):
             return None
         try:
-            tables = _DataOnlyUnpickler(io.BytesIO(stream.read())).load()
+            return _DataOnlyUnpickler(io.BytesIO(stream.read())).load()
         except Exception:  # damaged or foreign: built again
             return None
-    if not (isinstance(tables, dict) and {"data", "memo"} <= tables.keys()):
-        return None
-    return tables
 
 
 def store_tables(folder: Path, key: str, parser) -> None:
@@ -114,17 +126,67 @@ def store_tables(folder: Path, key: str, parser) -> None:
     drop the tables of older grammars; a failure only means no cache."""
     buffer = io.BytesIO()
     parser.save(buffer, exclude_options=("postlex",))  # the indenter is given when loading
-    try:
-        descriptor, part = tempfile.mkstemp(prefix=f".{PREFIX}", suffix=".part", dir=folder)
-    except OSError:
-        return
-    try:
-        with os.fdopen(descriptor, "wb") as stream:
-            stream.write(buffer.getvalue())
-        os.replace(part, folder / f"{PREFIX}{key}.pickle")
-    except OSError:  # a full disk, say
-        Path(part).unlink(missing_ok=True)
+    if not _write(folder, f"{PREFIX}{key}.pickle", buffer.getvalue()):
         return
     for older in folder.glob(f"{PREFIX}*.pickle"):
         if older.name != f"{PREFIX}{key}.pickle":
             older.unlink(missing_ok=True)
+
+
+def _write(folder: Path, name: str, data: bytes) -> bool:
+    """Write ``data`` as ``folder/name``: aside, then renamed (a process
+    reading concurrently gets a whole file or none)."""
+    try:
+        descriptor, part = tempfile.mkstemp(prefix=f".{name}", suffix=".part", dir=folder)
+    except OSError:
+        return False
+    try:
+        with os.fdopen(descriptor, "wb") as stream:
+            stream.write(data)
+        os.replace(part, folder / name)
+    except OSError:  # a full disk, say
+        Path(part).unlink(missing_ok=True)
+        return False
+    return True
+
+
+def tree_key(tables_key: str, text: str, start: str, python2: bool) -> str:
+    """Names the tree of ``text`` parsed from rule ``start`` by the parser of
+    ``tables_key`` (:func:`cache_key`)."""
+    text = "\0".join((tables_key, start, "2" if python2 else "3", text))
+    return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()[:32]
+
+
+def load_tree(folder: Path, key: str):
+    """The stored tree data for ``key`` (:func:`store_tree`), or None."""
+    path = folder / f"{TREE_PREFIX}{key}.pickle"
+    data = _read_data(path)
+    if not (isinstance(data, tuple) and len(data) == 2):
+        return None
+    try:
+        os.utime(path)  # the newest kept first
+    except OSError:
+        pass
+    return data
+
+
+def store_tree(folder: Path, key: str, data: tuple) -> None:
+    """Store a tree's plain data for ``key``; beyond :data:`TREES_KEPT`
+    trees, the least recently used go."""
+    try:
+        blob = pickle.dumps(data, protocol=pickle.HIGHEST_PROTOCOL)
+    except RecursionError:  # a tree too deep to pickle: parsed again next time
+        return
+    if len(blob) > MAX_BYTES or not _write(folder, f"{TREE_PREFIX}{key}.pickle", blob):
+        return
+    trees = list(folder.glob(f"{TREE_PREFIX}*.pickle"))
+    if len(trees) <= TREES_KEPT:
+        return
+    by_age = []
+    for path in trees:
+        try:
+            by_age.append((path.stat().st_mtime, path))
+        except OSError:
+            continue
+    for _, path in sorted(by_age)[: len(by_age) - TREES_KEPT]:
+        path.unlink(missing_ok=True)

@@ -18,7 +18,7 @@ data keeps for them) are refused by name: asterlite does not translate them.
 
 from __future__ import annotations
 
-from asterlite.catalog.language.legacy_layout import keyword_paths
+from asterlite.catalog.language.model import keyword_paths
 from asterlite.legacy.base import Env, Translation, factor
 from asterlite.legacy.language_data import old_language
 

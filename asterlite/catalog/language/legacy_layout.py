@@ -42,6 +42,7 @@ from asterlite.catalog.language.cata_objects import (
     TypeRef,
 )
 from asterlite.catalog.language.convert import FORMAT, ROOT_TYPE, Converter
+from asterlite.catalog.language.model import keyword_paths
 from asterlite.catalog.language.reader import CatalogueReader, Source
 from asterlite.catalog.language.subset_values import _builtin
 
@@ -497,23 +498,6 @@ def _targets(node: ast.stmt) -> list[str]:
 
 
 # ------------------------------------------------------- an older catalogue
-
-
-def keyword_paths(command: dict) -> set[tuple[str, ...]]:
-    """Every keyword of a command's data as its path of factor keywords
-    (blocks left out: a keyword of a block belongs to the block's level)."""
-    found: set[tuple[str, ...]] = set()
-
-    def visit(entries: dict, prefix: tuple[str, ...]) -> None:
-        for name, entry in entries.items():
-            if entry.get("k") == "B":
-                visit(entry.get("entries", {}), prefix)
-            else:
-                found.add((*prefix, name))
-                visit(entry.get("entries", {}), (*prefix, name))
-
-    visit(command.get("entries", {}), ())
-    return found
 
 
 def merge_older(data: dict, older: dict, label: str) -> dict:

@@ -154,3 +154,20 @@ def language(version: int) -> Language | None:
         return None
     path = _data_folder() / f"v{chosen}.json"
     return Language(chosen, path.read_text(encoding="utf-8"))
+
+
+def keyword_paths(command: dict) -> set[tuple[str, ...]]:
+    """Every keyword of a command's data as its path of factor keywords
+    (blocks left out: a keyword of a block belongs to the block's level)."""
+    found: set[tuple[str, ...]] = set()
+
+    def visit(entries: dict, prefix: tuple[str, ...]) -> None:
+        for name, entry in entries.items():
+            if entry.get("k") == "B":
+                visit(entry.get("entries", {}), prefix)
+            else:
+                found.add((*prefix, name))
+                visit(entry.get("entries", {}), (*prefix, name))
+
+    visit(command.get("entries", {}), ())
+    return found
