@@ -42,7 +42,7 @@ RESIDUAL = 0  # the memory row of DIFF_CENTRE's residual (scheme_diff_centre.RES
 GENERAL_PATH = "{} (general path)"  # schemes.GENERAL_PATH
 # the general paths (the relations of laws/) are numba's until laws.hpp gives
 # numba's bits for every relation
-LAWS_PORTED = False
+LAWS_PORTED = True
 
 
 def available() -> bool:
@@ -56,8 +56,10 @@ def run_loop(entry, loop: str, rotation, implicit, legacy: bool):
     ``entry`` would, or None when numba's serves: a scheme's own loop (not
     its general path), without varying rotation, implicit shocks or
     code_aster 10-12's variant, when its scheme is ported."""
-    if not available() or rotation is not None or implicit or legacy:
+    if not available() or rotation is not None or implicit:
         return None
+    if legacy:  # code_aster 10-12's ADAPT_ORDRE2, on the general model
+        return LOOPS.get(loop) if LAWS_PORTED and loop == entry.legacy_kernel else None
     if loop not in entry.loop_names():
         return None
     if loop == GENERAL_PATH.format(entry.kernel):
@@ -160,3 +162,81 @@ def compiled_loops() -> dict:
 
 
 LOOPS = compiled_loops()
+
+
+def film_loops():
+    """The compiled loops with fluid films (``_film``) and their start, called
+    as numba's fluid_film.run_loop, run_adapt_loop and start are (the same
+    arguments, the arrays advanced in place, the same returns), or None: not
+    built, or switched off."""
+    if not available():
+        return None
+    try:
+        from asterlite.dynamics.native import _film
+    except ImportError:  # not built
+        return None
+
+    def run_loop(clock, counters, q, v, a, vint, linear, model, exc, controls, scalars, work,
+                 archive, instants, pas_arch, eps):  # fmt: skip
+        return _film.film_loop(
+            clock, counters, q, v, a, vint, *linear, *model, *exc, controls, scalars, *work,
+            *archive, instants, int(pas_arch), float(eps),
+        )  # fmt: skip
+
+    def run_adapt_loop(clock, counters, state, memory, linear, model, exc, controls, counts, work,
+                       archive, pas_arch):  # fmt: skip
+        return _film.film_adapt_loop(
+            clock, counters, *state, *memory[:3], *linear, *model, *exc, controls, counts, *work,
+            *archive, int(pas_arch),
+        )  # fmt: skip
+
+    def start(t0, q, v, a, linear, model, exc, vint, work):
+        return _film.film_start(float(t0), q, v, a, *linear, *model, *exc, vint, *work)
+
+    return run_loop, run_adapt_loop, start
+
+
+def shared_loops(has_laws: bool = False):
+    """The compiled loops shared by every scheme (``_shared``), called as
+    numba's are: ``rotating_loop`` as rotation.prepare's run_loop (loop.time_loop
+    around rotation.rotating_step) and ``implicit_loop`` as
+    implicit_shocks.implicit_loop (the scheme's dispatch code first); the
+    same arguments, the arrays advanced in place, the same returns (a
+    ZeroDivisionError where numba's step raises one). None: not built,
+    switched off, or relations of laws/ (``has_laws``) before LAWS_PORTED."""
+    if not available() or (has_laws and not LAWS_PORTED):
+        return None
+    try:
+        from asterlite.dynamics.native import _shared
+    except ImportError:  # not built
+        return None
+    from asterlite.dynamics.layouts import EXTRA, ROTATION_CODE
+
+    def written(model) -> tuple:
+        # what the loops write that read_model takes read-only: K, C, the
+        # diagonal flag, the shock flags (the model's own arrays)
+        lin = model[LINEAR]
+        return lin.stiffness, lin.damping, lin.diagonal, model[SHOCKS].flags
+
+    def rotating_loop(clock, counters, state, memory, model, instants, pas_arch, eps, archive,
+                      energy):  # fmt: skip
+        damping, stiffness, gyro, rigy, exc = memory[EXTRA]  # Rotation.bundle()
+        return _shared.rotating_loop(
+            clock, counters, instants, *state, *memory[:3], damping, stiffness, gyro, rigy,
+            exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes, exc.constants,
+            exc.stack, memory[ROTATION_CODE], *written(model), *model_arguments(model), *archive,
+            *energy, int(pas_arch), float(eps),
+        )  # fmt: skip
+
+    def implicit_loop(code, clock, counters, state, memory, model, instants, pas_arch, eps,
+                      archive, energy):  # fmt: skip
+        tr = memory[EXTRA]  # layouts.Treatment
+        return _shared.implicit_loop(
+            int(code), clock, counters, instants, *state, *memory[:3], tr.stiffness0,
+            tr.damping0, tr.diagonal0, tr.active, tr.trial, tr.ints, tr.kinematics, tr.gradient,
+            tr.work, *tr.backup, tr.keep, tr.vint_keep, tr.active_at_start, tr.planned,
+            *written(model), *model_arguments(model), *archive, *energy, int(pas_arch),
+            float(eps),
+        )  # fmt: skip
+
+    return rotating_loop, implicit_loop

@@ -225,8 +225,9 @@ inline void add_generalized_force(const F3& rots, const F4& phis, index s, index
 
 // contact.shock_forces: every DIS_CHOC shock's generalized force added to
 // out, mode shapes in the global frame; ``work`` (5, 3) scratch as there.
-// Returns the first diverging shock or -1. Explicit shocks only: the module
-// refuses flags of the implicit treatment before it calls this.
+// Returns the first diverging shock or -1. With the implicit treatment
+// (flags[s, F_IMPLICIT], implicit_shocks.hpp) the normal force of a shock is
+// left out, or replaced by the constant term of its linearisation.
 inline index shock_forces(const F1& q, const F1& v, const Shocks& shk, const F2& vint,
                           const F2& work, const F1& out) {
     double* loc1 = &work(0, 0);
@@ -270,10 +271,25 @@ inline index shock_forces(const F1& q, const F1& v, const Shocks& shk, const F2&
                                     g.sin_n, rel_loc[0], rel_loc[1], rel_loc[2], rel_vel[0],
                                     rel_vel[1], rel_vel[2]);
         if (lf.diverged) return s;
-        if (lf.in_contact) {
+        double fy = lf.fy, fz = lf.fz;
+        bool in_contact = lf.in_contact;
+        const std::int64_t mode =
+            flags.n1 > F_IMPLICIT ? flags(s, F_IMPLICIT) : std::int64_t{NORMAL_EXPLICIT};
+        if (mode != NORMAL_EXPLICIT) {  // friction stays explicit, the normal force does not
+            const double fn = vint(s, V_FN);
+            fy -= fn * g.cos_n;
+            fz -= fn * g.sin_n;
+            if (mode == NORMAL_LINEARISED) {
+                const double constant = -params(s, P_KN) * params(s, P_LIN_GAP);
+                fy += constant * params(s, P_LIN_COS);
+                fz += constant * params(s, P_LIN_SIN);
+                in_contact = true;
+            }
+        }
+        if (in_contact) {
             f_local[0] = lf.fx;
-            f_local[1] = lf.fy;
-            f_local[2] = lf.fz;
+            f_local[1] = fy;
+            f_local[2] = fz;
             add_generalized_force(shk.rots, shk.phis, s, 0, f_local, 1.0, out);
             if (two_nodes) add_generalized_force(shk.rots, shk.phis, s, 1, f_local, -1.0, out);
         }

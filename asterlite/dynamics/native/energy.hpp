@@ -5,6 +5,7 @@
 #pragma once
 
 #include "contact.hpp"
+#include "laws.hpp"
 #include "loads.hpp"
 #include "model.hpp"
 #include "python_math.hpp"
@@ -196,7 +197,15 @@ inline void evaluate(const Balance& e, double t, const F1& q, const F1& v, const
     shock_powers(q, w, vint, model.shk, e.vint_copy, e.work, slice(e.local, 1), e_n, e_tan);
     acc(A_E_N) = e_n;
     acc(A_E_TAN) = e_tan;
-    acc(A_P_NL) = 0.0;  // no relation of laws/ in these loops
+    double p_nl = 0.0;
+    if (model.shk.laws.n1 > 0) {  // relations of laws/, on a copy of their states
+        copy_rows(vint, e.vint_copy);
+        const F1 g = row(e.vectors, R_LAW);
+        for (index i = 0; i < g.n0; ++i) g(i) = 0.0;
+        law_forces(t, q, w, model.shk, e.vint_copy, g);
+        for (index i = 0; i < n; ++i) p_nl += g(i) * w(i);
+    }
+    acc(A_P_NL) = p_nl;
 }
 
 inline void record(const Balance& e, index row, double t) {

@@ -34,8 +34,11 @@ enum GeometryCode : int { PLAN_Y, PLAN_Z, CERCLE, DISCRET, BI_PLAN_Y, BI_PLAN_Z,
 enum ParamColumn : int {
     P_GAP, P_DIST1, P_DIST2, P_KN, P_CN, P_KT, P_CT, P_MU_DYN, P_MU_STAT, P_SIGN_Y, P_SIGN_Z,
     P_ORIGIN = 11, P_COORD1 = 14, P_COORD2 = 17, P_DRIVE1 = 20, P_DRIVE2 = 26,
+    P_LIN_GAP = 32, P_LIN_COS = 33, P_LIN_SIN = 34,  // the implicit treatment's linearisation
 };
 enum FlagColumn : int { F_GEOMETRY, F_TWO_NODES, F_UNIDIR, F_NPOLAR, F_LAW, F_IMPLICIT };
+// flags[s, F_IMPLICIT]: how the normal force enters (implicit_shocks.py)
+enum NormalMode : int { NORMAL_EXPLICIT, NORMAL_LINEARISED, NORMAL_LEFT_OUT };
 enum VintColumn : int {
     V_FN = 0, V_FT1 = 1, V_FT2 = 2, V_LOC1 = 3, V_LOC2 = 6, V_VN = 9, V_VT1 = 10, V_VT2 = 11,
     V_STICK = 12, V_FT_REF = 13, V_X_REF = 15, V_VT_OLD = 18,

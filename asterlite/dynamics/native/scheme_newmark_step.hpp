@@ -1,0 +1,85 @@
+// NEWMARK's general path (scheme_newmark.step, run by loop.time_loop on the
+// three bundles): the operators of scheme_newmark.hpp, the forces through
+// total_force_at (forces.total_force_at on the general model: the shocks in
+// the global frame, the relations of laws/), at code_aster's index 2 or at
+// the step's start (force_at_step_start).
+#pragma once
+
+#include <cmath>
+
+#include "forces.hpp"
+#include "implicit.hpp"
+#include "local_frame.hpp"
+#include "loop.hpp"
+#include "model.hpp"
+#include "scheme_newmark.hpp"
+#include "views.hpp"
+
+namespace asterlite {
+namespace newmark {
+
+// not a kernel status: numba's step raised ZeroDivisionError (error_model
+// "python": a float division by zero raises); newmark_step_loop raises it
+constexpr int STATUS_ZERO_DIVISION = 100;
+
+// whether build_operators' first division, 1 / (beta dt dt), is by zero (the
+// later divisors, beta dt, 2 beta and beta, vanish only when it does): BETA=0
+inline bool operators_divide_by_zero(const F1& scalars, double dt) {
+    return scalars(S_BETA) * dt * dt == 0.0;
+}
+
+// whether I.solve_effective's diagonal case divides by a zero entry of K_eff
+inline bool solve_divides_by_zero(const F2& keff, bool diagonal) {
+    if (!diagonal) return false;  // lu_factor refused a zero pivot: lu_solve never divides by 0
+    for (index i = 0; i < keff.n0; ++i) {
+        if (keff(i, i) == 0.0) return true;
+    }
+    return false;
+}
+
+// scheme_newmark.step: I.apply and I.solve_effective as called there (not
+// newmark_update's one-pass diagonal case: the same bits, kept as written)
+inline StepResult step(double t, double dt, std::int64_t, const State& x, const Memory& memory,
+                       const Model& model) {
+    const F2& rows = memory.rows;
+    const F1& scalars = memory.scalars;
+    const F1 &q = x.q, &v = x.v, &a = x.a, &f = x.f;
+    const index n = q.n0;
+    const bool diagonal = scalars(S_DIAGONAL) == 1.0;
+    const double built = scalars(S_DT_BUILT);
+    if (built < 0.0 || std::fabs(dt / built - 1.0) >= EPS) {
+        if (operators_divide_by_zero(scalars, dt)) return {STATUS_ZERO_DIVISION, -1, dt, dt, 0};
+        if (!build_operators(rows, scalars, dt, n)) return {STATUS_NOT_FINITE, -1, dt, dt, 0};
+    }
+    const double* c = scalars.data + A1;
+    const F1 q2 = row(rows, Q_INDEX2), v2 = row(rows, V_INDEX2), rhs = row(rows, RHS);
+    const bool at_start = scalars(S_FORCE_AT_START) == 1.0;
+    if (!at_start) {  // else f holds F(t, q, v): the loop's start or the previous step's end
+        const index shock = total_force_at(t + dt, q2, v2, x.vint, x.work, f, model);
+        if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, 0};
+    }
+    copy_into(rhs, f);
+    apply(block(rows, VECTOR_ROWS, B_F1, n), v, 1.0, rhs, diagonal);
+    apply(block(rows, VECTOR_ROWS, B_F2, n), q, 1.0, rhs, diagonal);
+    apply(block(rows, VECTOR_ROWS, B_F3, n), a, 1.0, rhs, diagonal);
+    const F2 keff = block(rows, VECTOR_ROWS, B_KEFF, n);
+    if (solve_divides_by_zero(keff, diagonal)) return {STATUS_ZERO_DIVISION, -1, dt, dt, 0};
+    solve_effective(keff, row(rows, PIVOTS), rhs, diagonal);
+    for (index i = 0; i < n; ++i) {
+        const double a_new = -c[3] * a(i) + c[0] * (rhs(i) - q(i) - dt * v(i));
+        v(i) = v(i) + c[6] * a(i) + c[7] * a_new;
+        a(i) = a_new;
+        q(i) = rhs(i);
+        q2(i) = q(i);
+        v2(i) = v(i);
+    }
+    if (!(all_finite(q) && all_finite(v))) return {STATUS_NOT_FINITE, -1, dt, dt, 0};
+    if (at_start) {  // the forces of the next step's start
+        const index shock = total_force_at(t + dt, q, v, x.vint, x.work, f, model);
+        if (shock >= 0) return {STATUS_SHOCK_DIVERGED, shock, dt, dt, 0};
+    }
+    return {STATUS_DONE, -1, dt, dt, 0};
+}
+
+}  // namespace newmark
+}  // namespace asterlite
