@@ -46,9 +46,7 @@ CASE_IDS = ["DIFF_CENTRE", "NEWMARK", "NEWMARK-at-start"]
 
 @pytest.fixture(autouse=True)
 def general_paths(monkeypatch):
-    """Every run of native_runs.run on its scheme's general path, served by
-    the C++ loops without law rows (native.LAWS_PORTED: until laws.hpp is)."""
-    monkeypatch.setattr(native, "LAWS_PORTED", True)
+    """Every run of native_runs.run on its scheme's general path."""
     monkeypatch.setattr(runs, "integrate", functools.partial(I.integrate, specialised=False))
 
 
@@ -242,9 +240,11 @@ def test_runs_resumed_after_a_full_archive_give_numbas_bits(monkeypatch, scheme,
     loops.assert_alike()
 
 
-def failure(monkeypatch, compiled: bool, scheme, system, spec, chosen, dt=DT, t_end=0.01):
+def failure(monkeypatch, compiled: bool, scheme, system, spec, chosen, dt=DT, t_end=0.01,
+            specialised=False):  # fmt: skip
     """The exception of a run expected to fail: (type, message); the C++
-    loop of its general path ran when ``compiled``."""
+    loop of its general path (its own loop when ``specialised``) ran when
+    ``compiled``."""
     monkeypatch.setenv(native.SWITCH, "1" if compiled else "0")
     served = []
     route = native.run_loop
@@ -260,10 +260,10 @@ def failure(monkeypatch, compiled: bool, scheme, system, spec, chosen, dt=DT, t_
     with pytest.raises(Exception) as raised:
         I.integrate(
             system, shocks, excitation, scheme, np.full(N_MODES, 2.0e-4), np.zeros(N_MODES),
-            0.0, t_end, dt, np.array([t_end]), 1, chosen, specialised=False,
+            0.0, t_end, dt, np.array([t_end]), 1, chosen, specialised=specialised,
         )  # fmt: skip
     monkeypatch.setattr(native, "run_loop", route)
-    assert served == [(general_path(scheme), compiled)]
+    assert served == [(I.loop_kernel(scheme, system, shocks, specialised), compiled)]
     return type(raised.value), str(raised.value)
 
 
@@ -354,23 +354,37 @@ def test_a_singular_full_effective_stiffness_stops_both_alike(monkeypatch):
     assert "non-finite values" in message
 
 
+@pytest.mark.parametrize("specialised", [False, True], ids=["general", "own-loop"])
 @pytest.mark.parametrize("at_start", [False, True])
-def test_a_zero_diagonal_effective_stiffness_raises_as_numba_does(monkeypatch, at_start):
+def test_a_zero_diagonal_effective_stiffness_raises_as_numba_does(
+    monkeypatch, at_start, specialised
+):
     """Diagonal matrices: numba's division by the zero entry of K_eff raises
-    ZeroDivisionError (error_model "python"); so does the C++ loop."""
+    ZeroDivisionError (error_model "python"); so does the C++ loop, the
+    general path's and NEWMARK's own."""
     rng = np.random.default_rng(3)
     spec = shock_of("PLAN_Y", rng, "both", (1.0, 0.0, 0.0))
     system = singular_newmark_system(True)
     chosen = options("NEWMARK", force_at_step_start=at_start)
     outcomes = [
-        failure(monkeypatch, compiled, "NEWMARK", system, spec, chosen, dt=DT_EXACT)
+        failure(
+            monkeypatch,
+            compiled,
+            "NEWMARK",
+            system,
+            spec,
+            chosen,
+            dt=DT_EXACT,
+            specialised=specialised,
+        )  # fmt: skip
         for compiled in (True, False)
     ]
     assert outcomes[0] == outcomes[1] == (ZeroDivisionError, "division by zero")
 
 
+@pytest.mark.parametrize("specialised", [False, True], ids=["general", "own-loop"])
 @pytest.mark.parametrize("diagonal", [True, False])
-def test_newmarks_beta_zero_raises_as_numba_does(monkeypatch, diagonal):
+def test_newmarks_beta_zero_raises_as_numba_does(monkeypatch, diagonal, specialised):
     """BETA=0 (the catalogue allows it): numba's 1 / (β dt²) raises
     ZeroDivisionError when the operators are built; so does the C++ loop."""
     rng = np.random.default_rng(3)
@@ -378,7 +392,7 @@ def test_newmarks_beta_zero_raises_as_numba_does(monkeypatch, diagonal):
     system = system_of(diagonal, rng)
     chosen = options("NEWMARK", beta=0.0)
     outcomes = [
-        failure(monkeypatch, compiled, "NEWMARK", system, spec, chosen)
+        failure(monkeypatch, compiled, "NEWMARK", system, spec, chosen, specialised=specialised)
         for compiled in (True, False)
     ]
     assert outcomes[0] == outcomes[1] == (ZeroDivisionError, "division by zero")
@@ -559,14 +573,11 @@ def test_a_zero_diagonal_devoge_operator_raises_as_numba_does(monkeypatch, opera
     assert outcomes[0] == outcomes[1] == (ZeroDivisionError, "division by zero")
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="scheme_trbdf2.hpp divides by the zero entry (a non-finite state, NumericalError) "
-    "where numba's step raises ZeroDivisionError; its own loop alike",
-)
-def test_a_zero_diagonal_trbdf2_effective_stiffness_raises_as_numba_does(monkeypatch):
+@pytest.mark.parametrize("specialised", [False, True], ids=["general", "own-loop"])
+def test_a_zero_diagonal_trbdf2_effective_stiffness_raises_as_numba_does(monkeypatch, specialised):
     """TRBDF2, diagonal matrices, K_eff = a1 M + K + a2 C zero on the first
-    mode: numba's I.solve_effective raises ZeroDivisionError."""
+    mode: numba's I.solve_effective raises ZeroDivisionError; so does the
+    C++ loop, the general path's and TRBDF2's own."""
     h = T.STAGE_FRACTION * DT
     stiffness = np.diag(np.linspace(1.0e6, 2.0e7, N_MODES))
     stiffness[0, 0] = -4.0 / (h * h)
@@ -576,7 +587,8 @@ def test_a_zero_diagonal_trbdf2_effective_stiffness_raises_as_numba_does(monkeyp
     spec = shock_of("PLAN_Y", rng, "both", (1.0, 0.0, 0.0))
     chosen = options("TRBDF2")
     outcomes = [
-        failure(monkeypatch, compiled, "TRBDF2", system, spec, chosen) for compiled in (True, False)
+        failure(monkeypatch, compiled, "TRBDF2", system, spec, chosen, specialised=specialised)
+        for compiled in (True, False)
     ]
     assert outcomes[1] == (ZeroDivisionError, "division by zero")
     assert outcomes[0] == outcomes[1]

@@ -46,7 +46,6 @@ def implicit_run(monkeypatch, compiled, scheme="NEWMARK", geometries=("CERCLE",)
     the C++ loop (native.shared_loops), else numba's. Returns (result, calls
     of the loop, the shock flags' treatment column at the end of each call)."""
     monkeypatch.setenv(native.SWITCH, "1" if compiled else "0")
-    monkeypatch.setattr(native, "LAWS_PORTED", True)
     calls, modes = [], []
 
     def prepare(name, memory, system, shocks):

@@ -212,7 +212,6 @@ def run(monkeypatch, compiled, rows, scheme="RUNGE_KUTTA_54", diagonal=True, t_e
     ``rows(rng)`` (the same draws in both runs), three loads scaled by ``amplitude``,
     optionally two support motions; ``compiled``: the C++ loops, else numba's."""
     monkeypatch.setenv(native.SWITCH, "1" if compiled else "0")
-    monkeypatch.setattr(native, "LAWS_PORTED", True)
     rng = np.random.default_rng(5)
     system = system_of(diagonal, rng)
     specs = rows(rng)

@@ -83,7 +83,6 @@ def rotating_run(monkeypatch, compiled, scheme="NEWMARK", geometry="CERCLE", dia
     optionally two support motions; ``compiled``: the C++ loop
     (native.shared_loops), else numba's. Returns (result, calls of the loop)."""
     monkeypatch.setenv(native.SWITCH, "1" if compiled else "0")
-    monkeypatch.setattr(native, "LAWS_PORTED", True)
     calls = []
 
     def prepare(name, memory, rotation):

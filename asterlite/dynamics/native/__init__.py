@@ -40,9 +40,6 @@ except ImportError:  # not built: the numba kernels serve
 SWITCH = "ASTERLITE_NATIVE"  # "0": numba's loops everywhere
 RESIDUAL = 0  # the memory row of DIFF_CENTRE's residual (scheme_diff_centre.RESIDUAL)
 GENERAL_PATH = "{} (general path)"  # schemes.GENERAL_PATH
-# the general paths (the relations of laws/) are numba's until laws.hpp gives
-# numba's bits for every relation
-LAWS_PORTED = True
 
 
 def available() -> bool:
@@ -53,17 +50,17 @@ def available() -> bool:
 def run_loop(entry, loop: str, rotation, implicit, legacy: bool):
     """The compiled loop that does what numba's loop ``loop`` (as
     :func:`asterlite.dynamics.integrate.loop_kernel` names it) of the scheme
-    ``entry`` would, or None when numba's serves: a scheme's own loop (not
-    its general path), without varying rotation, implicit shocks or
-    code_aster 10-12's variant, when its scheme is ported."""
+    ``entry`` would, or None when numba's serves (not built, switched off):
+    a scheme's own loop, its general path, code_aster 10-12's ADAPT_ORDRE2.
+    The loops with varying rotation or implicit shocks are :func:`shared_loops`'."""
     if not available() or rotation is not None or implicit:
         return None
     if legacy:  # code_aster 10-12's ADAPT_ORDRE2, on the general model
-        return LOOPS.get(loop) if LAWS_PORTED and loop == entry.legacy_kernel else None
+        return LOOPS.get(loop) if loop == entry.legacy_kernel else None
     if loop not in entry.loop_names():
         return None
     if loop == GENERAL_PATH.format(entry.kernel):
-        return LOOPS.get(loop) if LAWS_PORTED else None
+        return LOOPS.get(loop)
     return LOOPS.get(entry.kernel)
 
 
@@ -196,15 +193,15 @@ def film_loops():
     return run_loop, run_adapt_loop, start
 
 
-def shared_loops(has_laws: bool = False):
+def shared_loops():
     """The compiled loops shared by every scheme (``_shared``), called as
     numba's are: ``rotating_loop`` as rotation.prepare's run_loop (loop.time_loop
     around rotation.rotating_step) and ``implicit_loop`` as
     implicit_shocks.implicit_loop (the scheme's dispatch code first); the
     same arguments, the arrays advanced in place, the same returns (a
-    ZeroDivisionError where numba's step raises one). None: not built,
-    switched off, or relations of laws/ (``has_laws``) before LAWS_PORTED."""
-    if not available() or (has_laws and not LAWS_PORTED):
+    ZeroDivisionError where numba's step raises one). None: not built, or
+    switched off."""
+    if not available():
         return None
     try:
         from asterlite.dynamics.native import _shared

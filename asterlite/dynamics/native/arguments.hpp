@@ -284,8 +284,10 @@ inline void check_balance(Arguments& in, const energy::Balance& balance, const S
                "energy shock quantities");
 }
 
-// what every loop relies on in the state and the model
-inline void check_model(Arguments& in, const State& x, const Model& model) {
+// what every loop relies on in the state and the model; ``implicit``: the
+// loop of the implicit treatment, the only one reading the shocks' treatment
+// flags (the others refuse a shock whose normal is not explicit)
+inline void check_model(Arguments& in, const State& x, const Model& model, bool implicit = false) {
     if (in.failed()) return;
     const index n = x.q.n0;
     const Shocks& shk = model.shk;
@@ -305,7 +307,10 @@ inline void check_model(Arguments& in, const State& x, const Model& model) {
         in.require(law == 0 || (!model.local_frames && law > 0 && law <= laws::LAST_CODE),
                    "a relation the loop does not evaluate");
         if (shk.flags.n1 > F_IMPLICIT) {
-            in.require(shk.flags(s, F_IMPLICIT) == 0, "a shock of the implicit treatment");
+            const std::int64_t mode = shk.flags(s, F_IMPLICIT);
+            in.require(implicit ? mode >= NORMAL_EXPLICIT && mode <= NORMAL_LEFT_OUT
+                                : mode == NORMAL_EXPLICIT,
+                       "a shock of the implicit treatment");
         }
         in.require(shk.flags(s, F_NPOLAR) <= shk.polars.n1, "polar facets");
     }

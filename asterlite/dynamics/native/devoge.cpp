@@ -38,13 +38,7 @@ PyObject* devoge_loop(PyObject*, PyObject* args) {
                         "devoge_loop: inconsistent arrays: memory of another size than DEVOGE's");
         return nullptr;
     }
-    PyObject* status = run_time_loop(args, "devoge_loop", devoge::step);
-    if (status != nullptr && PyLong_AsLong(status) == devoge::STATUS_ZERO_DIVISION) {
-        Py_DECREF(status);  // numba's step raises there
-        PyErr_SetString(PyExc_ZeroDivisionError, "division by zero");
-        return nullptr;
-    }
-    return status;
+    return run_time_loop(args, "devoge_loop", devoge::step);
 }
 
 PyMethodDef methods[] = {

@@ -26,11 +26,6 @@ namespace dispatch {
 enum Code : std::int64_t {
     NEWMARK, TRBDF2, DEVOGE, DIFF_CENTRE, RUNGE_KUTTA, ADAPT_ORDRE1, ADAPT_ORDRE2,
 };
-// not a kernel status: numba's step raised ZeroDivisionError (NEWMARK's and
-// DEVOGE's STATUS_ZERO_DIVISION); the loops return it at once, their binding raises
-constexpr int STATUS_ZERO_DIVISION = 100;
-static_assert(newmark::STATUS_ZERO_DIVISION == STATUS_ZERO_DIVISION, "one code");
-static_assert(devoge::STATUS_ZERO_DIVISION == STATUS_ZERO_DIVISION, "one code");
 
 // dispatch.scheme_step: the step of the scheme ``code``
 inline StepResult scheme_step(std::int64_t code, double t, double dt, std::int64_t step_index,

@@ -34,13 +34,7 @@ PyObject* newmark_step_loop(PyObject*, PyObject* args) {
                    "memory rows");
         in.require(memory.scalars.n0 >= newmark::N_SCALARS, "memory scalars");
     };
-    PyObject* status = run_time_loop(args, "newmark_step_loop", newmark::step, check_memory);
-    if (status != nullptr && PyLong_AsLong(status) == newmark::STATUS_ZERO_DIVISION) {
-        Py_DECREF(status);  // numba's step raises there
-        PyErr_SetString(PyExc_ZeroDivisionError, "division by zero");
-        return nullptr;
-    }
-    return status;
+    return run_time_loop(args, "newmark_step_loop", newmark::step, check_memory);
 }
 
 PyMethodDef methods[] = {

@@ -35,6 +35,17 @@ inline bool factor_effective(const F2& keff, const F1& pivots, bool diagonal) {
     return lu_factor(keff, pivots);
 }
 
+// whether solve_effective's diagonal case divides by a zero entry of K_eff
+// (numba raises ZeroDivisionError there; lu_factor refused a zero pivot of
+// a full one, so lu_solve never divides by 0)
+inline bool solve_divides_by_zero(const F2& keff, bool diagonal) {
+    if (!diagonal) return false;
+    for (index i = 0; i < keff.n0; ++i) {
+        if (keff(i, i) == 0.0) return true;
+    }
+    return false;
+}
+
 inline void solve_effective(const F2& keff, const F1& pivots, const F1& rhs, bool diagonal) {
     if (diagonal) {
         for (index i = 0; i < rhs.n0; ++i) rhs(i) /= keff(i, i);

@@ -247,7 +247,7 @@ inline void restore(const Clock& c, const State& x, const Memory& memory, const 
 // implicit_shocks.implicit_loop: the time loop of the scheme ``code`` with
 // the implicit treatment. ``flags``: the shock flags (writable), ``flag``:
 // the linear bundle's diagonal flag (array). A ZeroDivisionError of numba's
-// step is returned at once as dispatch::STATUS_ZERO_DIVISION (numba raises there)
+// step is returned at once as STATUS_ZERO_DIVISION (numba raises there)
 inline int implicit_loop(std::int64_t code, const Clock& c, const State& x, const Memory& memory,
                          Model& model, const ArchiveBuffers& out,
                          const energy::Balance& balance, const I2& flags, const I1& flag,
@@ -265,7 +265,7 @@ inline int implicit_loop(std::int64_t code, const Clock& c, const State& x, cons
         plan_step(c, t, dt);
         const StepResult r =
             dispatch::scheme_step(code, t, dt, c.counters(K_STEP), x, memory, model);
-        if (r.status == dispatch::STATUS_ZERO_DIVISION) return r.status;
+        if (r.status == STATUS_ZERO_DIVISION) return r.status;
         if (r.status != STATUS_DONE) return record_failure(c, r.status, r.shock, r.dt_used);
         indicators(x.q, x.v, model.shk, kinematics, R_GAP1, trial, tr.work);
         bool changed = false;

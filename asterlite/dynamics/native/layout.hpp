@@ -20,6 +20,10 @@ enum Status : int {
     STATUS_FULL = 10,
     STATUS_LOADS = 11,
     STATUS_PAUSE = 12,
+    // not a kernel status: numba's step raised ZeroDivisionError there (its
+    // error model is Python's: a float division by zero raises); a loop
+    // returns it at once and its binding raises the same (loop_status)
+    STATUS_ZERO_DIVISION = 100,
 };
 enum ClockSlot : int { C_TIME, C_STEP, C_STEP0, C_END, C_NEWDT, C_MIN_STEP, C_MAX_STEP, C_ORIGIN };
 enum CounterSlot : int {

@@ -38,6 +38,16 @@ int time_loop(const Clock& c, const State& x, const Memory& memory, const Model&
     return STATUS_DONE;
 }
 
+// a loop's status for Python: the int, or the ZeroDivisionError numba's
+// step raised where the loop returned STATUS_ZERO_DIVISION
+inline PyObject* loop_status(int status) {
+    if (status == STATUS_ZERO_DIVISION) {
+        PyErr_SetString(PyExc_ZeroDivisionError, "division by zero");
+        return nullptr;
+    }
+    return PyLong_FromLong(status);
+}
+
 // The Python function of a loop: arguments clock, counters, instants, the
 // state (7), the memory (3), the model (31), the archive (7), the energy
 // balance (7), pas_arch, eps (asterlite.dynamics.native.time_loop), checked
@@ -65,7 +75,7 @@ PyObject* run_loop(PyObject* args, const char* name, CheckMemory&& check_memory,
     Py_BEGIN_ALLOW_THREADS
     status = loop(c, x, memory, model, out, balance);
     Py_END_ALLOW_THREADS
-    return PyLong_FromLong(status);
+    return loop_status(status);
 }
 
 // run_loop for loop.time_loop around a scheme's step

@@ -65,7 +65,7 @@ PyObject* diff_centre_loop(PyObject*, PyObject* args) {
                                   balance);
     }
     Py_END_ALLOW_THREADS
-    return PyLong_FromLong(status);
+    return loop_status(status);
 }
 
 // forces.total_force then forces.acceleration at the start of a run: t, the

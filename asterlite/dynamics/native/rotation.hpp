@@ -62,7 +62,7 @@ inline StepResult rotating_step(double t, double dt, std::int64_t step_index, co
 
 // loop.time_loop around rotating_step (rotation.prepare's run_loop); a
 // ZeroDivisionError of numba's step returned at once as
-// dispatch::STATUS_ZERO_DIVISION (nothing recorded: numba raises there)
+// STATUS_ZERO_DIVISION (nothing recorded: numba raises there)
 inline int rotating_loop(const Clock& c, const State& x, const Memory& memory, Model& model,
                          const ArchiveBuffers& out, const energy::Balance& balance,
                          const I1& flag, const Rotation& rot, std::int64_t code) {
@@ -74,7 +74,7 @@ inline int rotating_loop(const Clock& c, const State& x, const Memory& memory, M
         plan_step(c, t, dt);
         const StepResult r =
             rotating_step(t, dt, c.counters(K_STEP), x, memory, model, flag, rot, code);
-        if (r.status == dispatch::STATUS_ZERO_DIVISION) return r.status;
+        if (r.status == STATUS_ZERO_DIVISION) return r.status;
         if (r.status != STATUS_DONE) return record_failure(c, r.status, r.shock, r.dt_used);
         after_step(c, x, out, balance, active, model, r.dt_used, r.dt_next, r.rejected);
     }

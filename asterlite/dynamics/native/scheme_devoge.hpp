@@ -32,10 +32,6 @@ enum Scalar : index {
 constexpr index MEMORY_SCALARS = 11;
 constexpr double STAGE_RADIUS = 2.0;
 constexpr double EPS = DBL_EPSILON;  // np.finfo(np.float64).eps
-// not a kernel status: numba's step raised ZeroDivisionError (a zero
-// diagonal entry of H0, H1 or H2); devoge_loop raises it
-constexpr int STATUS_ZERO_DIVISION = 100;
-
 inline index memory_rows(index n) { return MATRIX_ROWS + 5 * n; }
 
 struct Operators {

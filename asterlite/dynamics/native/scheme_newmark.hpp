@@ -45,6 +45,12 @@ inline index local_force(double t, const F1& q, const F1& v, const F1& f, const 
                               model.local.drive, vint, f);
 }
 
+// whether build_operators' first division, 1 / (beta dt dt), is by zero (the
+// later divisors, beta dt, 2 beta and beta, vanish only when it does): BETA=0
+inline bool operators_divide_by_zero(const F1& scalars, double dt) {
+    return scalars(S_BETA) * dt * dt == 0.0;
+}
+
 // scheme_newmark.build_operators: a1..a8 for dt, the operators of the
 // right-hand side and the effective stiffness (factored unless diagonal);
 // false when a pivot vanishes
@@ -124,6 +130,7 @@ inline int newmark_loop(const Clock& c, const State& x, const Memory& memory, co
         plan_step(c, t, dt);
         const double built = scalars(S_DT_BUILT);
         if (built < 0.0 || std::fabs(dt / built - 1.0) >= EPS) {
+            if (operators_divide_by_zero(scalars, dt)) return STATUS_ZERO_DIVISION;
             if (!build_operators(rows, scalars, dt, n)) {
                 return record_failure(c, STATUS_NOT_FINITE, -1, dt);
             }
@@ -131,6 +138,10 @@ inline int newmark_loop(const Clock& c, const State& x, const Memory& memory, co
         if (!at_start) {  // else f holds F(t, q, v): the loop's start or the previous step's end
             const index shock = local_force(t + dt, q2, v2, x.f, x.vint, model);
             if (shock >= 0) return record_failure(c, STATUS_SHOCK_DIVERGED, shock, dt);
+        }
+        const bool diagonal = scalars(S_DIAGONAL) == 1.0;
+        if (solve_divides_by_zero(block(rows, VECTOR_ROWS, B_KEFF, n), diagonal)) {
+            return STATUS_ZERO_DIVISION;
         }
         newmark_update(rows, scalars, x.q, x.v, x.a, x.f, dt, n);
         if (!(all_finite(x.q) && all_finite(x.v))) {

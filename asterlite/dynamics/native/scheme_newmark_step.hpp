@@ -18,25 +18,6 @@
 namespace asterlite {
 namespace newmark {
 
-// not a kernel status: numba's step raised ZeroDivisionError (error_model
-// "python": a float division by zero raises); newmark_step_loop raises it
-constexpr int STATUS_ZERO_DIVISION = 100;
-
-// whether build_operators' first division, 1 / (beta dt dt), is by zero (the
-// later divisors, beta dt, 2 beta and beta, vanish only when it does): BETA=0
-inline bool operators_divide_by_zero(const F1& scalars, double dt) {
-    return scalars(S_BETA) * dt * dt == 0.0;
-}
-
-// whether I.solve_effective's diagonal case divides by a zero entry of K_eff
-inline bool solve_divides_by_zero(const F2& keff, bool diagonal) {
-    if (!diagonal) return false;  // lu_factor refused a zero pivot: lu_solve never divides by 0
-    for (index i = 0; i < keff.n0; ++i) {
-        if (keff(i, i) == 0.0) return true;
-    }
-    return false;
-}
-
 // scheme_newmark.step: I.apply and I.solve_effective as called there (not
 // newmark_update's one-pass diagonal case: the same bits, kept as written)
 inline StepResult step(double t, double dt, std::int64_t, const State& x, const Memory& memory,

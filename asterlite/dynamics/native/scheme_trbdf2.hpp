@@ -68,6 +68,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
     for (index i = 0; i < delta.n0; ++i) delta(i) = 0.0;
     apply(f2, x.v, h, delta, diagonal);
     apply(f1, r_v, h, delta, diagonal);
+    if (solve_divides_by_zero(keff, diagonal)) return {STATUS_ZERO_DIVISION, -1, dt, dt, 0};
     solve_effective(keff, pivots, delta, diagonal);
     // the acceleration at t + dt of the same state, for the BDF2 stage
     shock = evaluate(t + dt, q2, v2, a2, x.f, residual, x.vint, x.work, model);

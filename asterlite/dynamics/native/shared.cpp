@@ -5,7 +5,6 @@
 // implicit_shocks.implicit_loop). asterlite.dynamics.native.shared_loops
 // calls them with numba's arguments flattened.
 #include <cstdint>
-#include <vector>
 
 #include "arguments.hpp"
 #include "dispatch.hpp"
@@ -15,15 +14,6 @@
 
 namespace asterlite {
 namespace {
-
-// the status as a Python int, or the ZeroDivisionError numba's step raised
-PyObject* status_result(int status) {
-    if (status == dispatch::STATUS_ZERO_DIVISION) {
-        PyErr_SetString(PyExc_ZeroDivisionError, "division by zero");
-        return nullptr;
-    }
-    return PyLong_FromLong(status);
-}
 
 // the arrays a loop writes that read_model reads as read-only (K, C and the
 // diagonal flag of the linear bundle, the shock flags), passed again writable
@@ -54,8 +44,8 @@ void check_written(Arguments& in, const Written& w, const Model& model) {
 // for its dispatch code
 void check_common(Arguments& in, const Clock& c, const State& x, const Memory& memory,
                   const Model& model, const ArchiveBuffers& out,
-                  const energy::Balance& balance, std::int64_t code) {
-    check_model(in, x, model);
+                  const energy::Balance& balance, std::int64_t code, bool implicit = false) {
+    check_model(in, x, model, implicit);
     check_loop(in, c, x, out);
     check_balance(in, balance, x, out.t.n0);
     if (in.failed()) return;
@@ -129,7 +119,7 @@ PyObject* rotating_loop(PyObject*, PyObject* args) {
     Py_BEGIN_ALLOW_THREADS
     status = rotation::rotating_loop(c, x, memory, model, out, balance, flag, rot, scheme);
     Py_END_ALLOW_THREADS
-    return status_result(status);
+    return loop_status(status);
 }
 
 // Implicit shocks: the scheme's code (an int), clock, counters, instants, the
@@ -169,21 +159,10 @@ PyObject* implicit_loop(PyObject*, PyObject* args) {
     in.require(flags.n1 > F_IMPLICIT, "shock flags without their treatment column");
     in.require(model.shk.params.n1 > P_LIN_SIN, "shock parameters without the linearisation");
     if (in.failed()) return nullptr;
-    // check_model refuses the treatment's flags (the other loops do not read
-    // them): checked with that column zeroed, then restored
-    std::vector<std::int64_t> modes(flags.n0);
-    for (index s = 0; s < flags.n0; ++s) {
-        modes[s] = flags(s, F_IMPLICIT);
-        flags(s, F_IMPLICIT) = NORMAL_EXPLICIT;
-    }
-    check_common(in, c, x, memory, model, out, balance, code);
-    for (index s = 0; s < flags.n0; ++s) flags(s, F_IMPLICIT) = modes[s];
+    check_common(in, c, x, memory, model, out, balance, code, true);
     check_written(in, written, model);
     if (in.failed()) return nullptr;
     const index n = x.q.n0, ns = flags.n0;
-    for (index s = 0; s < ns; ++s) {
-        in.require(modes[s] >= NORMAL_EXPLICIT && modes[s] <= NORMAL_LEFT_OUT, "treatment flags");
-    }
     in.require(tr.stiffness0.n0 == n && tr.stiffness0.n1 == n && tr.damping0.n0 == n &&
                    tr.damping0.n1 == n && tr.diagonal0.n0 == 1,
                "K0, C0");
@@ -207,7 +186,7 @@ PyObject* implicit_loop(PyObject*, PyObject* args) {
     status = implicit_shocks::implicit_loop(code, c, x, memory, model, out, balance, flags, flag,
                                             tr);
     Py_END_ALLOW_THREADS
-    return status_result(status);
+    return loop_status(status);
 }
 
 // the codes and constants of the loops, for the check against the Python side
