@@ -351,6 +351,10 @@ def _warmup(args) -> int:
     # the worker pool's `python -c` would import from the current folder (set
     # here, not in asterlite.dynamics, whose sources name the kernel cache)
     protect_spawned_workers()
+    if args.numba:  # the workers inherit it: every loop is numba's
+        from asterlite.dynamics import native
+
+        os.environ[native.SWITCH] = "0"
     return warmup.main(jobs=args.jobs, verbose=args.verbose)
 
 
@@ -600,6 +604,12 @@ def build_parser() -> argparse.ArgumentParser:
         "-j", "--jobs", type=int, default=None, help="worker processes (default: one per core)"
     )
     warm.add_argument("-v", "--verbose", action="store_true", help="each kernel's compile time")
+    warm.add_argument(
+        "--numba",
+        action="store_true",
+        help="numba's kernels of every loop, also those the compiled C++ loops serve "
+        "(ASTERLITE_NATIVE=0 runs, and the tests' reference)",
+    )
     warm.set_defaults(handler=_warmup)
 
     page = commands.add_parser(

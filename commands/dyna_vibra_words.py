@@ -24,6 +24,7 @@ TRANSIENT = {
     "options.tolerance": "SCHEMA_TEMPS/TOLERANCE",
     "options.alpha": "SCHEMA_TEMPS/ALPHA",
     "options.nmax_iter_pas": "SCHEMA_TEMPS/NMAX_ITER_PAS",
+    "options.beta": "SCHEMA_TEMPS/BETA",
     "archive.period": "ARCHIVAGE/PAS_ARCH",
     "archive.instants": "ARCHIVAGE/LIST_INST",
     "archive": "ARCHIVAGE",

@@ -11,6 +11,7 @@ from asterlite.dynamics import native
 from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
+from asterlite.errors import NumericalError
 from tests.test_dynamics_specialised import Sampled, Table  # the tests' multipliers
 from tests.validated import scheme_options
 
@@ -126,3 +127,10 @@ def assert_same_bits(compiled, numba):
     assert (compiled.energy is None) == (numba.energy is None)
     if numba.energy is not None:  # the energy balance's archived rows
         np.testing.assert_array_equal(compiled.energy, numba.energy, err_msg="energy")
+
+
+def divided_by_zero(outcome) -> bool:
+    """Whether (type, message) is a run stopped by a step that divided by
+    zero (numba raises ZeroDivisionError, the C++ loops alike; integrate words it)."""
+    kind, message = outcome
+    return kind is NumericalError and "a division by zero" in message

@@ -352,6 +352,8 @@ START_UP = {
     "import": "import asterlite; asterlite.run; asterlite.check; asterlite.load; "
     "from asterlite.cli import build_parser; build_parser()",
     "check": "from asterlite.cli import main; main(['check', sys.argv[1]])",
+    "run": "import tempfile; from asterlite.cli import main; "
+    "main(['run', sys.argv[1], '-o', tempfile.mkdtemp(), '-q'])",
 }
 
 

@@ -53,6 +53,7 @@ import numpy as np
 from asterlite import progress, watchdog
 from asterlite.dynamics import adapt_control as A
 from asterlite.dynamics import kernel as K
+from asterlite.dynamics import native
 from asterlite.dynamics import scheme_adapt_ordre2_v11 as V11
 from asterlite.dynamics.contact import (
     F_GEOMETRY,
@@ -78,6 +79,7 @@ from asterlite.dynamics.integrate import (
     RunResult,
     SchemeOptions,
     StepBudget,
+    archive_start,
     divergence_error,
     grow,
     new_buffers,
@@ -93,6 +95,9 @@ from asterlite.errors import field as named
 FL_ON, FL_ALPHA, FL_BETA, FL_CHI, FL_DELTA, FL_LAYER, FL_THICKNESS = range(7)
 N_FILM = 7
 
+# the names of the two loops (asterlite.dynamics.warmup's kernels; RunResult.info["loop"])
+FILM_LOOP = "fluid film"
+FILM_ADAPT_LOOP = "fluid film, ADAPT_ORDRE2 (code_aster 10-12)"
 # status of a step whose fixed-point iterations did not converge
 STATUS_FILM_NOT_CONVERGED = 20
 # scalars[]: last residual ratio, iterations of the worst step, total iterations
@@ -510,7 +515,10 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     a = np.zeros(n)
     vint = shocks.initial_vint(t0)
     work = (np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(N_KIN))
-    shock, finite = start(t0, q, v, a, linear, model, exc, vint, work)
+    # the C++ loops and start (asterlite.dynamics.native), else numba's: the same bits
+    compiled = native.film_loops()
+    fixed_loop, adapt_loop, first = compiled or (run_loop, run_adapt_loop, start)
+    shock, finite = first(t0, q, v, a, linear, model, exc, vint, work)
     if shock >= 0 or not finite:
         raise NumericalError(
             f"non-finite initial acceleration at t={t0:.9g} (fluid film, {named('film')})"
@@ -530,7 +538,7 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     row_bytes = 8 * (2 + 3 * n + shocks.count * shocks.vint_width + K.N_INFO)
     budget.check_archive(capacity, row_bytes, pas_arch, clock, counters)
     buffers = new_buffers(capacity, n, shocks.count, shocks.vint_width)
-    K.archive(0, t0, 0, q, v, a, vint, dt, 0, *buffers)
+    archive_start(buffers, t0, q, v, a, vint, dt)
     counters[K.K_ARCHIVED] = 1
     bar = progress.time_bar(label or f"{scheme} with fluid films", t0, t_end)
     started = wallclock.perf_counter()
@@ -539,12 +547,12 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
             chunk_started = wallclock.perf_counter()
             if adaptive:
-                status = run_adapt_loop(
+                status = adapt_loop(
                     clock, counters, state, memory, linear, model, exc, controls, scalars, work,
                     buffers, pas_arch,
                 )  # fmt: skip
             else:
-                status = run_loop(
+                status = fixed_loop(
                     clock, counters, q, v, a, vint, linear, model, exc, controls, scalars, work,
                     buffers, instants, pas_arch, eps,
                 )  # fmt: skip
@@ -579,6 +587,8 @@ def integrate_film(system, shocks, film: FluidFilm, excitation, q0, v0, t0, t_en
     count = counters[K.K_ARCHIVED]
     out = tuple(b[:count].copy() for b in buffers)
     info = run_info(clock, counters, t0, dt, elapsed, adaptive=adaptive)
+    name = FILM_ADAPT_LOOP if adaptive else FILM_LOOP
+    info["loop"] = f"{name} [{'C++' if compiled else 'numba'}]"
     info["film_iterations"] = int(scalars[S_TOTAL])
     info["film_worst_iterations"] = int(scalars[S_WORST])
     if adaptive:

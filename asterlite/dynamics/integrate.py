@@ -3,6 +3,7 @@ buffer growth, and translation of kernel status codes into errors."""
 
 from __future__ import annotations
 
+import functools
 import math
 import time as wallclock
 from dataclasses import dataclass, field
@@ -210,7 +211,13 @@ def run_kernel(
     native_loop = native.run_loop(
         entry, notice.name, rotation, implicit_shocks and shocks.count, options.adapt_v11
     )
-    if native_loop is not None:
+    # the loops shared by every scheme (variable rotation speed, implicit
+    # shocks), compiled: called as numba's are (native.shared_loops)
+    shared = None
+    if rotation is not None or (implicit_shocks and shocks.count):
+        shared = native.shared_loops()
+    compiled_loop = native_loop is not None or shared is not None
+    if compiled_loop:
         shock = native.start(t0, q, v, a, f, vint, work, np.zeros(n), model)
     else:
         shock = total_force(t0, q, v, model[SHOCKS], vint, model[LOADS], work, f)
@@ -227,10 +234,13 @@ def run_kernel(
         from asterlite.dynamics import rotation as R
 
         memory, rotating_loop = R.prepare(scheme, memory, rotation)
+        if shared is not None:
+            rotating_loop = shared[0]
         if rotation.initial_acceleration is not None:  # a restart keeps its acceleration
             a[:] = rotation.initial_acceleration
     implicit_loop = None
     if implicit_shocks and shocks.count:  # K and C change at each contact switch
+        from asterlite.dynamics import dispatch
         from asterlite.dynamics import implicit_shocks as IS
 
         lin = system.bundle()
@@ -239,7 +249,11 @@ def run_kernel(
         )
         model = (lin, model[SHOCKS], model[LOADS])
         memory, implicit_loop = IS.prepare(scheme, memory, system, shocks)
-        IS.start(memory, model, q, v, t0)
+        if shared is not None:  # IS.prepare's run_loop and IS.start, compiled
+            implicit_loop = functools.partial(shared[1], dispatch.code(scheme))
+            shared[2](memory, model, q, v, t0)
+        else:
+            IS.start(memory, model, q, v, t0)
     adaptive = loop_adapts(entry, dt, options)
     eps = 10.0 * np.finfo(float).eps
     instants = np.asarray(instants, dtype=float)
@@ -269,7 +283,7 @@ def run_kernel(
             f"({named('rotation.variable')}='OUI')"
         )
     balance = E.new_energy(system, shocks, capacity, entry.staggered_velocity, energy)
-    if energy and native_loop is not None:
+    if energy and compiled_loop:
         native.energy_start(balance, t0, q, v, a, vint, model)
     elif energy:
         E.start(balance, t0, q, v, a, vint, model[SHOCKS], model[LOADS])
@@ -280,9 +294,13 @@ def run_kernel(
         while True:
             counters[K.K_PAUSE_AT] = budget.next_pause(int(counters[K.K_STEP]))
             chunk_started = wallclock.perf_counter()
-            status = run_loop(
-                clock, counters, state, memory, model, instants, pas_arch, eps, buffers, balance
-            )
+            try:
+                status = run_loop(
+                    clock, counters, state, memory, model, instants, pas_arch, eps, buffers,
+                    balance,
+                )  # fmt: skip
+            except ZeroDivisionError:  # numba's error model, which the C++ loops follow
+                raise zero_division_error(scheme, clock) from None
             if status == K.STATUS_FULL:
                 count = int(counters[K.K_ARCHIVED])
                 if store.write_out_when_full(buffers, count):
@@ -323,7 +341,7 @@ def run_kernel(
     info["archive_on_disk"] = store.on_disk
     info["compile_seconds"] = notice.seconds
     # the loop that ran: its kernel's name and what compiled it
-    info["loop"] = f"{notice.name} [{'C++' if native_loop is not None else 'numba'}]"
+    info["loop"] = f"{notice.name} [{'C++' if compiled_loop else 'numba'}]"
     if implicit_loop is not None:
         ints = memory[EXTRA].ints
         info["contact_switches"] = int(ints[IS.I_SWITCHES])
@@ -524,6 +542,19 @@ def nonfinite_error(state, clock, counters, last_archived, model_parts, scheme: 
     else:
         advice = LOAD_ADVICE
     return NumericalError(f"{scheme}: {when}: {culprit.text}; {advice}", path=culprit.path)
+
+
+def zero_division_error(scheme: str, clock) -> NumericalError:
+    """The error of a step that divided by zero: an effective operator of
+    the scheme with a zero entry (NEWMARK's beta zero, an effective
+    stiffness a M + K + b C vanishing on a mode)."""
+    t = clock[K.C_TIME]
+    return NumericalError(
+        f"{scheme}: a division by zero in the step from t={t:.6g} (with step "
+        f"{clock[K.C_STEP]:.3g}): an operator of the scheme vanishes (NEWMARK with "
+        f"{named('options.beta')}=0, or an effective stiffness a M + K + b C that is zero "
+        "on a mode: check the scheme's coefficients and the generalized matrices)"
+    )
 
 
 def divergence_error(status, clock, counters, shocks: ShockSet, system: LinearSystem, scheme: str):

@@ -22,6 +22,7 @@ from __future__ import annotations
 import sys
 
 _numba = None  # the numba module once imported
+_interpreting = 0  # > 0 inside interpreted(): kernels run as Python
 _waiting: list[Deferred] = []
 _hooks: list = []  # called once numba is imported (numba.extending registrations)
 
@@ -35,6 +36,8 @@ class Deferred:
         self.__module__ = function.__module__
 
     def __call__(self, *args, **kwargs):
+        if _interpreting:
+            return self.py_func(*args, **kwargs)
         return compiled(self)(*args, **kwargs)
 
     def __getattr__(self, name):  # targetoptions, signatures...: the dispatcher's
@@ -61,6 +64,26 @@ def _kernel(function, options: dict):
     deferred = Deferred(function, options)
     _waiting.append(deferred)
     return deferred
+
+
+def interpreted(kernel):
+    """``kernel`` as a function that runs its Python, its kernel callees too,
+    while numba is not imported: for a run's few evaluations outside the
+    loops (a law's initial state), which the compiled C++ loops leave as the
+    only reason to import numba and compile. Once numba is imported, the
+    kernel's dispatcher. The same operations, so the same values."""
+
+    def run(*args, **kwargs):
+        global _interpreting
+        if _numba is not None:
+            return compiled(kernel)(*args, **kwargs)
+        _interpreting += 1
+        try:
+            return kernel.py_func(*args, **kwargs)
+        finally:
+            _interpreting -= 1
+
+    return run
 
 
 def on_load(hook) -> None:

@@ -31,6 +31,7 @@ import numpy as np
 
 from asterlite.dynamics import dispatch as D
 from asterlite.dynamics import loop as L
+from asterlite.dynamics import native
 from asterlite.dynamics.excitation import (
     PROL_CONSTANT,
     SampledMultiplier,
@@ -99,7 +100,8 @@ class Rotation:
     def matrices_at(self, t: float) -> tuple[np.ndarray, np.ndarray]:
         """(C(t), K(t)) evaluated in Python (initial state)."""
         exc = self.excitation.bundle()
-        speed, accel = speed_and_acceleration(exc, t)
+        multipliers = native.rotation_multipliers() or speed_and_acceleration
+        speed, accel = multipliers(exc, t)
         return self.damping + speed * self.gyro, self.stiffness + accel * self.rigy
 
     def bundle(self):
@@ -165,4 +167,8 @@ def prepare(scheme: str, memory, rotation: Rotation):
     time loop around :func:`rotating_step`."""
     code = np.array([D.code(scheme)], dtype=np.int64)
     memory = D.full_matrices(scheme, memory) + (rotation.bundle(), code)
-    return memory, L.scheme_loop(rotating_step)
+
+    def run_loop(*args):  # numba's loop, made at its first call (the C++ one may serve)
+        return L.scheme_loop(rotating_step)(*args)
+
+    return memory, run_loop

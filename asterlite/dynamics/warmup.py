@@ -1,5 +1,11 @@
-"""Compile every kernel of the transient engine ahead of the first run
-(``asterlite warmup``, which the README's install command runs).
+"""Compile numba's kernels of the transient engine ahead of the first run
+(``asterlite warmup``).
+
+The compiled C++ loops (:mod:`asterlite.dynamics.native`, built by pip)
+serve every run when they are built: then there is nothing to compile.
+numba's kernels serve the runs with ``ASTERLITE_NATIVE=0`` (and an install
+without a C++ compiler); ``asterlite warmup --numba`` compiles them all,
+as the tests need them for their bit-for-bit comparisons.
 
 numba compiles a kernel the first time it is called with a new combination
 of argument types and keeps the machine code in its cache (``cache=True``,
@@ -34,10 +40,16 @@ from pathlib import Path
 import numpy as np
 
 from asterlite import dynamics, progress
-from asterlite.dynamics import compile_estimate, schemes
+from asterlite.dynamics import compile_estimate, native, schemes
 from asterlite.dynamics import kernel as K
 from asterlite.dynamics.excitation import tabulate_excitation
-from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
+from asterlite.dynamics.fluid_film import (
+    FILM_ADAPT_LOOP,
+    FILM_LOOP,
+    FluidFilm,
+    film_row,
+    integrate_film,
+)
 from asterlite.dynamics.forces import acceleration, total_force
 from asterlite.dynamics.integrate import SchemeOptions, integrate, law_error, new_buffers
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
@@ -51,10 +63,10 @@ from asterlite.dynamics.rotation import Rotation
 # loop, which needs both the film functions and the legacy ADAPT step control
 SHARED = "shared force functions"
 LEGACY_ADAPT = schemes.LEGACY_ADAPT_LOOP
-FILM = "fluid film"
+FILM = FILM_LOOP
 # the film under code_aster 10-12's ADAPT_ORDRE2: calls the film functions and
 # the legacy ADAPT loop's step control, so it comes after both
-FILM_ADAPT = "fluid film, ADAPT_ORDRE2 (code_aster 10-12)"
+FILM_ADAPT = FILM_ADAPT_LOOP
 # each scheme's loops (as asterlite.dynamics.schemes describes them),
 # longest compile first (compile_seconds.json) so that the two workers finish
 # the stage together; ADAPT_ORDRE1, among the first, compiles the local-frame
@@ -330,6 +342,14 @@ def main(jobs: int | None = None, stream=None, verbose: bool = False) -> int:
     folder = dynamics.kernel_cache_folder()
     prune_stale_kernels(folder, in_tree=folder.parent == dynamics.PACKAGE / "__pycache__")
     compile_bytecode()
+    if native.available():
+        print(
+            "asterlite warmup: the compiled C++ loops serve every run: no numba kernel to "
+            f"compile ({native.SWITCH}=0 runs numba's loops: asterlite warmup --numba "
+            "compiles them)",
+            file=stream,
+        )
+        return 0
     done = warm(KERNELS, jobs)
     compiled = [w for w in done if w.compile_seconds > 0.0]
     wall = time.perf_counter() - started

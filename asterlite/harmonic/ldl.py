@@ -6,11 +6,13 @@ written here for complex values and Lᵀ, not Lᴴ).
 K + iωC - ω²M keeps one sparsity pattern over the frequencies: the
 elimination tree and the column counts of L are computed once
 (:func:`analyse`), each frequency then costs one numeric factorisation
-(:func:`factorise`) and two triangular solves (:func:`solve`), compiled
-by numba. There is no pivoting, as in code_aster's LDLT and MULT_FRONT
-solvers: the caller checks each solution's residual and factorises with
-pivoting (SuperLU) when a pivot vanishes or the residual is not that of a
-stable solve.
+(:func:`factorise`) and two triangular solves (:func:`solve`): C++
+compiled at install (asterlite.dynamics.native._ldl, the same bits), else
+the numba kernels below (``ASTERLITE_NATIVE=0``, or a checkout whose
+modules were not built). There is no pivoting, as in code_aster's LDLT
+and MULT_FRONT solvers: the caller checks each solution's residual and
+factorises with pivoting (SuperLU) when a pivot vanishes or the residual
+is not that of a stable solve.
 """
 
 from __future__ import annotations
@@ -23,7 +25,13 @@ import scipy.sparse as sp
 # numba's cache in asterlite's trusted kernel folder (asterlite.dynamics sets
 # it when imported: numba's index files are pickles, see docs/safety.md)
 import asterlite.dynamics  # noqa: F401
+from asterlite.dynamics import native
 from asterlite.dynamics.jit import njit
+
+try:
+    from asterlite.dynamics.native import _ldl
+except ImportError:  # not built: the numba kernels serve
+    _ldl = None
 
 # ----------------------------------------------------------------------------- kernels
 
@@ -121,6 +129,13 @@ def _solve(n, lp, li, lx, d, x):
 # ----------------------------------------------------------------------------- python side
 
 
+def _compiled() -> bool:
+    """Whether the C++ kernels serve (built, and not switched off by
+    ``ASTERLITE_NATIVE=0``): they take the same arguments and give the
+    same bits as the numba kernels above."""
+    return _ldl is not None and native.available()
+
+
 @dataclass
 class Analysis:
     """The symbolic factorisation of one symmetric pattern under a
@@ -174,7 +189,8 @@ def analyse(
     source = keep[order]
     del keep, order, new_rows
     bound = np.iinfo(np.int64).max if limit is None else int(limit)
-    parent, lnz, total = _symbolic(n, upper_ptr, upper_idx, bound)
+    symbolic = _ldl.symbolic if _compiled() else _symbolic
+    parent, lnz, total = symbolic(n, upper_ptr, upper_idx, bound)
     if total < 0:
         return None
     lp = np.zeros(n + 1, dtype=np.int64)
@@ -196,7 +212,7 @@ class Factor:
     def solve(self, b: np.ndarray) -> np.ndarray:
         a = self.analysis
         x = np.ascontiguousarray(np.asarray(b, dtype=complex)[a.perm])
-        _solve(a.n, a.lp, self.li, self.lx, self.d, x)
+        (_ldl.solve if _compiled() else _solve)(a.n, a.lp, self.li, self.lx, self.d, x)
         out = np.empty_like(x)
         out[a.perm] = x
         return out
@@ -214,15 +230,19 @@ def factorise(analysis: Analysis, data: np.ndarray) -> Factor:
     li = np.empty(a.fill, dtype=_index_type(a.n))
     lx = np.empty(a.fill, dtype=np.complex128)
     d = np.empty(a.n, dtype=np.complex128)
-    failed = _numeric(a.n, a.upper_ptr, a.upper_idx, values, a.lp, a.parent, li, lx, d)
+    numeric = _ldl.numeric if _compiled() else _numeric
+    failed = numeric(a.n, a.upper_ptr, a.upper_idx, values, a.lp, a.parent, li, lx, d)
     if failed >= 0:
         raise ZeroPivot(int(failed))
     return Factor(a, li, lx, d)
 
 
 def warm() -> None:
-    """Load (or compile) the kernels on a 2 x 2 system, so that timing a
-    first factorisation measures the factorisation."""
+    """Load (or compile) the numba kernels on a 2 x 2 system, so that
+    timing a first factorisation measures the factorisation; nothing to do
+    when the C++ kernels serve."""
+    if _compiled():
+        return
     pattern = sp.csc_matrix(np.array([[2.0, 1.0], [1.0, 2.0]]))
     analysis = analyse(pattern.indptr, pattern.indices, 2, np.arange(2))
     factorise(analysis, pattern.data.astype(complex)).solve(np.ones(2))

@@ -44,7 +44,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from asterlite.dynamics.jit import njit
+from asterlite.dynamics.jit import interpreted, njit
 from asterlite.dynamics.laws.tabulated import Curve, LawError, function_table, unpack, value
 from asterlite.errors import field as named
 
@@ -317,8 +317,9 @@ def initial_state(params) -> np.ndarray:
     state = np.zeros(N_VINT)
     if params[P_SCALAR] == 1.0:
         return state
-    state[V_RIGI] = value(params, int(params[P_AT_RIGI]), 0.0)
-    state[V_AMOR] = value(params, int(params[P_AT_AMOR]), 0.0)
+    at_zero = interpreted(value)  # two values: no reason to compile
+    state[V_RIGI] = at_zero(params, int(params[P_AT_RIGI]), 0.0)
+    state[V_AMOR] = at_zero(params, int(params[P_AT_AMOR]), 0.0)
     return state
 
 

@@ -1,25 +1,26 @@
-"""Time loops compiled when asterlite is installed: C++ (``_loops``, built by
-pip from the headers of this folder), run without waiting for a compiler.
+"""Time loops compiled when asterlite is installed: C++ (one extension module
+per ``.cpp`` of this folder, built by pip from its headers), run without
+waiting for a compiler.
 
 They do what the numba kernels of the same names do, operation for
 operation in the same order (no fused multiply-add, no reassociation:
 ``-ffp-contract=off``, no fast-math), so that a run gives the same bits on
-either; tests/test_native_loops.py checks both on every obstacle, load,
-matrix kind and scheme covered. What they cover now, each with DIS_CHOC
-shocks in their local frames, tabulated and formula loads, sampled windows,
-support motions and the energy balance:
+either; tests/test_native_*.py check both on every obstacle, relation, load,
+matrix kind and scheme. They cover every loop of the engine:
 
-- DIFF_CENTRE's specialised loop on diagonal or full matrices
-  (:func:`asterlite.dynamics.scheme_diff_centre.fast_loop`);
-- RUNGE_KUTTA_32/54's loop (:mod:`asterlite.dynamics.scheme_runge_kutta`);
-- the total force and acceleration at the start of such runs
-  (:func:`asterlite.dynamics.forces.total_force`, ``acceleration``).
+- each scheme's own loop, with DIS_CHOC shocks in their local frames
+  (DIFF_CENTRE's on diagonal or full matrices, NEWMARK, DEVOGE,
+  RUNGE_KUTTA_32/54, ADAPT_ORDRE1/2, TRBDF2), and its general path on the
+  global model with the relations of laws/ (:func:`run_loop`);
+- code_aster 10-12's ADAPT_ORDRE2 (:func:`run_loop`);
+- the loops shared by every scheme: varying rotation speed, implicit shocks
+  (:func:`shared_loops`); the fluid film's (:func:`film_loops`);
+- the total force and acceleration, and the energy balance, at a run's start;
+- outside the time loops, the physical harmonic sweep's sparse LDLᵀ
+  (``_ldl``, called by :mod:`asterlite.harmonic.ldl`).
 
-Every other loop is numba's: the general paths (relations of laws/),
-varying rotation speed, implicit shocks, fluid films, code_aster 10-12's
-ADAPT_ORDRE2, the schemes not ported yet. ``ASTERLITE_NATIVE=0`` runs
-numba's everywhere (comparisons); a checkout whose extension was not built
-(no C++ compiler at install) runs numba's too.
+``ASTERLITE_NATIVE=0`` runs numba's everywhere (comparisons); a checkout
+whose modules were not built (no C++ compiler at install) runs numba's too.
 """
 
 from __future__ import annotations
@@ -30,7 +31,7 @@ import pkgutil
 
 import numpy as np
 
-from asterlite.dynamics.layouts import LINEAR, LOADS, LOCAL, ROWS, SHOCKS
+from asterlite.dynamics.layouts import EXTRA, LINEAR, LOADS, LOCAL, ROTATION_CODE, ROWS, SHOCKS
 
 try:
     from asterlite.dynamics.native import _loops
@@ -196,10 +197,11 @@ def film_loops():
 def shared_loops():
     """The compiled loops shared by every scheme (``_shared``), called as
     numba's are: ``rotating_loop`` as rotation.prepare's run_loop (loop.time_loop
-    around rotation.rotating_step) and ``implicit_loop`` as
-    implicit_shocks.implicit_loop (the scheme's dispatch code first); the
-    same arguments, the arrays advanced in place, the same returns (a
-    ZeroDivisionError where numba's step raises one). None: not built, or
+    around rotation.rotating_step), ``implicit_loop`` as
+    implicit_shocks.implicit_loop (the scheme's dispatch code first) and
+    ``implicit_start`` as implicit_shocks.start; the same arguments, the
+    arrays advanced in place, the same returns (a ZeroDivisionError where
+    numba's step raises one). None: not built, or
     switched off."""
     if not available():
         return None
@@ -207,7 +209,6 @@ def shared_loops():
         from asterlite.dynamics.native import _shared
     except ImportError:  # not built
         return None
-    from asterlite.dynamics.layouts import EXTRA, ROTATION_CODE
 
     def written(model) -> tuple:
         # what the loops write that read_model takes read-only: K, C, the
@@ -225,15 +226,44 @@ def shared_loops():
             *energy, int(pas_arch), float(eps),
         )  # fmt: skip
 
+    def treatment(memory) -> tuple:
+        tr = memory[EXTRA]  # layouts.Treatment, its backup pair flattened
+        return (
+            tr.stiffness0, tr.damping0, tr.diagonal0, tr.active, tr.trial, tr.ints,
+            tr.kinematics, tr.gradient, tr.work, *tr.backup, tr.keep, tr.vint_keep,
+            tr.active_at_start, tr.planned,
+        )  # fmt: skip
+
     def implicit_loop(code, clock, counters, state, memory, model, instants, pas_arch, eps,
                       archive, energy):  # fmt: skip
-        tr = memory[EXTRA]  # layouts.Treatment
         return _shared.implicit_loop(
-            int(code), clock, counters, instants, *state, *memory[:3], tr.stiffness0,
-            tr.damping0, tr.diagonal0, tr.active, tr.trial, tr.ints, tr.kinematics, tr.gradient,
-            tr.work, *tr.backup, tr.keep, tr.vint_keep, tr.active_at_start, tr.planned,
+            int(code), clock, counters, instants, *state, *memory[:3], *treatment(memory),
             *written(model), *model_arguments(model), *archive, *energy, int(pas_arch),
             float(eps),
         )  # fmt: skip
 
-    return rotating_loop, implicit_loop
+    def implicit_start(memory, model, q, v, t0):
+        return _shared.implicit_start(
+            q, v, *treatment(memory), *written(model), *model_arguments(model)
+        )
+
+    return rotating_loop, implicit_loop, implicit_start
+
+
+def rotation_multipliers():
+    """rotation.speed_and_acceleration compiled (called as it is, on the
+    multipliers' excitation bundle), or None: not built, or switched off."""
+    if not available():
+        return None
+    try:
+        from asterlite.dynamics.native import _shared
+    except ImportError:  # not built
+        return None
+
+    def speed_and_acceleration(exc, t):
+        return _shared.rotation_multipliers(
+            float(t), exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes,
+            exc.constants, exc.stack,
+        )  # fmt: skip
+
+    return speed_and_acceleration

@@ -7,6 +7,7 @@
 #include <Python.h>
 
 #include <cstring>
+#include <initializer_list>
 #include <vector>
 
 #include "clock.hpp"
@@ -359,6 +360,39 @@ inline void check_loop(Arguments& in, const Clock& c, const State& x, const Arch
     in.require(out.q.n1 == n && out.v.n1 == n && out.a.n1 == n && out.info.n1 > INFO_REJECTED,
                "archive columns");
     in.require(out.vint.n1 == x.vint.n0 && out.vint.n2 == x.vint.n1, "archived internal variables");
+}
+
+// A dict of named constants for Python (the ``layout()``/``constants()`` a
+// module reports, checked against the Python side's values)
+struct IntegerConstant {
+    const char* name;
+    long long value;
+};
+struct RealConstant {
+    const char* name;
+    double value;
+};
+
+inline PyObject* constants_dict(std::initializer_list<IntegerConstant> integers,
+                                std::initializer_list<RealConstant> reals) {
+    PyObject* dict = PyDict_New();
+    if (dict == nullptr) return nullptr;
+    bool ok = true;
+    for (const IntegerConstant& entry : integers) {
+        PyObject* value = PyLong_FromLongLong(entry.value);
+        ok = ok && value != nullptr && PyDict_SetItemString(dict, entry.name, value) == 0;
+        Py_XDECREF(value);
+    }
+    for (const RealConstant& entry : reals) {
+        PyObject* value = PyFloat_FromDouble(entry.value);
+        ok = ok && value != nullptr && PyDict_SetItemString(dict, entry.name, value) == 0;
+        Py_XDECREF(value);
+    }
+    if (!ok) {
+        Py_DECREF(dict);
+        return nullptr;
+    }
+    return dict;
 }
 
 }  // namespace asterlite

@@ -1,7 +1,7 @@
 // The energy balance of a generalized transient (asterlite.dynamics.energy):
 // powers and energies at the end of every accepted step, integrated with the
-// trapezoidal rule, a row per archived instant. Relations of laws/ never
-// reach these loops (their runs take numba's general path).
+// trapezoidal rule, a row per archived instant; the relations of laws/ give
+// TRAV_NL (their forces on a copy of their states, as energy.py does).
 #pragma once
 
 #include "contact.hpp"

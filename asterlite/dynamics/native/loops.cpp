@@ -5,6 +5,7 @@
 #include "diff_centre.hpp"
 #include "forces.hpp"
 #include "loop.hpp"
+#include "scheme_diff_centre_step.hpp"
 #include "scheme_runge_kutta.hpp"
 
 namespace asterlite {
@@ -94,12 +95,25 @@ PyObject* energy_start(PyObject*, PyObject* args) {
     Model model = read_model(in);
     energy::Balance balance = read_balance(in);
     if (!in.complete()) return nullptr;
-    check_model(in, x, model);
+    check_model(in, x, model, true);  // a run with implicit shocks starts its balance too
     check_balance(in, balance, x, 1);
     in.require(balance.active(), "the energy balance is not asked");
     if (in.failed()) return nullptr;
     energy::start(balance, t, x.q, x.v, x.a, x.vint, model);
     Py_RETURN_NONE;
+}
+
+// DIFF_CENTRE's general path (loop.time_loop around scheme_diff_centre.step
+// on the three bundles): clock, counters, instants, the state (7), the memory
+// (3: what scheme_diff_centre.prepare made), the model, the archive (7), the energy
+// balance (7), pas_arch, eps; returns the status
+PyObject* diff_centre_step_loop(PyObject*, PyObject* args) {
+    // scheme_diff_centre.prepare: one residual row of length n
+    auto check_memory = [](Arguments& in, const Memory& memory, const State& x) {
+        in.require(memory.rows.n0 > diff_centre::RESIDUAL && memory.rows.n1 == x.q.n0,
+                   "memory rows");
+    };
+    return run_time_loop(args, "diff_centre_step_loop", diff_centre::step, check_memory);
 }
 
 PyObject* runge_kutta_loop(PyObject*, PyObject* args) {
@@ -108,11 +122,8 @@ PyObject* runge_kutta_loop(PyObject*, PyObject* args) {
 
 // the positions of layout.hpp, for the check against the Python side
 PyObject* layout(PyObject*, PyObject*) {
-    struct Entry {
-        const char* name;
-        long value;
-    };
-    static const Entry entries[] = {
+    return constants_dict(
+        {
         {"STATUS_DONE", STATUS_DONE}, {"STATUS_NOT_FINITE", STATUS_NOT_FINITE},
         {"STATUS_SHOCK_DIVERGED", STATUS_SHOCK_DIVERGED},
         {"STATUS_STEP_UNDERFLOW", STATUS_STEP_UNDERFLOW}, {"STATUS_REJECTED", STATUS_REJECTED},
@@ -148,41 +159,16 @@ PyObject* layout(PyObject*, PyObject*) {
         {"COPYSIGN", COPYSIGN}, {"LESS", LESS}, {"LESS_EQUAL", LESS_EQUAL},
         {"GREATER", GREATER}, {"GREATER_EQUAL", GREATER_EQUAL}, {"EQUAL", EQUAL},
         {"NOT_EQUAL", NOT_EQUAL}, {"AND", AND}, {"OR", OR}, {"NOT", NOT},
-        {"SELECT", SELECT}, {"IDENTITY", IDENTITY},
-    };
-    PyObject* dict = PyDict_New();
-    if (dict == nullptr) return nullptr;
-    for (const Entry& entry : entries) {
-        PyObject* value = PyLong_FromLong(entry.value);
-        if (value == nullptr || PyDict_SetItemString(dict, entry.name, value) != 0) {
-            Py_XDECREF(value);
-            Py_DECREF(dict);
-            return nullptr;
-        }
-        Py_DECREF(value);
-    }
-    PyObject* reals[][2] = {
-        {PyUnicode_FromString("GRID_TOLERANCE"), PyFloat_FromDouble(GRID_TOLERANCE)},
-        {PyUnicode_FromString("SLIP_VELOCITY_FLOOR"), PyFloat_FromDouble(SLIP_VELOCITY_FLOOR)},
-        {PyUnicode_FromString("EPS"), PyFloat_FromDouble(EPS)},
-        {PyUnicode_FromString("VELOCITY_DIVERGENCE"), PyFloat_FromDouble(VELOCITY_DIVERGENCE)},
-    };
-    bool ok = true;
-    for (auto& pair : reals) {
-        ok = ok && pair[0] && pair[1] && PyDict_SetItem(dict, pair[0], pair[1]) == 0;
-        Py_XDECREF(pair[0]);
-        Py_XDECREF(pair[1]);
-    }
-    if (!ok) {
-        Py_DECREF(dict);
-        return nullptr;
-    }
-    return dict;
+        {"SELECT", SELECT}, {"IDENTITY", IDENTITY}
+        },
+        {{"GRID_TOLERANCE", GRID_TOLERANCE}, {"SLIP_VELOCITY_FLOOR", SLIP_VELOCITY_FLOOR}, {"EPS", EPS}, {"VELOCITY_DIVERGENCE", VELOCITY_DIVERGENCE}});
 }
 
 PyMethodDef methods[] = {
     {"diff_centre_loop", diff_centre_loop, METH_VARARGS,
      "DIFF_CENTRE's specialised loop on diagonal or full matrices; returns a status."},
+    {"diff_centre_step_loop", diff_centre_step_loop, METH_VARARGS,
+     "DIFF_CENTRE's general path (its step on the general model); returns a status."},
     {"runge_kutta_loop", runge_kutta_loop, METH_VARARGS,
      "RUNGE_KUTTA_32/54's loop on the shocks' local frames; returns a status."},
     {"start", start, METH_VARARGS,
@@ -203,6 +189,8 @@ PyModuleDef module = {
 }  // namespace asterlite
 
 PyMODINIT_FUNC PyInit__loops(void) {
-    return asterlite::loops_module(&asterlite::module, {{"RUNGE_KUTTA", "runge_kutta_loop"},
-                                {"RUNGE_KUTTA (general path)", "runge_kutta_loop"}});
+    return asterlite::loops_module(&asterlite::module,
+                                   {{"DIFF_CENTRE (general path)", "diff_centre_step_loop"},
+                                    {"RUNGE_KUTTA", "runge_kutta_loop"},
+                                    {"RUNGE_KUTTA (general path)", "runge_kutta_loop"}});
 }
