@@ -5,6 +5,7 @@ bit for bit (tests/test_native_*.py)."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from asterlite.concepts.function import Formula
 from asterlite.dynamics import native
@@ -134,3 +135,21 @@ def divided_by_zero(outcome) -> bool:
     zero (numba raises ZeroDivisionError, the C++ loops alike; integrate words it)."""
     kind, message = outcome
     return kind is NumericalError and "a division by zero" in message
+
+
+def assert_same_failures(monkeypatch, run):
+    """A state that becomes non-finite (DIFF_CENTRE past its stability
+    limit) and NEWMARK with β = 0 (a step dividing by zero) end with the same
+    worded error on the C++ loop and on numba's; ``run(monkeypatch,
+    compiled, **args)``: the run of a test file."""
+
+    def failure(compiled, **args) -> str:
+        with pytest.raises(NumericalError) as raised:
+            run(monkeypatch, compiled, **args)
+        return str(raised.value)
+
+    unstable = [failure(c, scheme="DIFF_CENTRE", dt=2.0e-3, t_end=0.3) for c in (True, False)]
+    assert unstable[0] == unstable[1]
+    options = scheme_options("NEWMARK", beta=0.0)
+    zero = [failure(c, scheme="NEWMARK", options=options) for c in (True, False)]
+    assert zero[0] == zero[1] and "division by zero" in zero[0]

@@ -22,8 +22,14 @@ from asterlite.dynamics import native
 from asterlite.dynamics import schemes as S
 from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.model import build_shocks
-from asterlite.errors import NumericalError
-from tests.native_runs import FORMULAS, GEOMETRIES, N_MODES, shock_of, system_of
+from tests.native_runs import (
+    FORMULAS,
+    GEOMETRIES,
+    N_MODES,
+    assert_same_failures,
+    shock_of,
+    system_of,
+)
 from tests.test_dynamics_specialised import Sampled, Table
 from tests.validated import scheme_options
 
@@ -205,24 +211,8 @@ def test_scheme_options(monkeypatch, scheme, fields):
     assert switches(result)
 
 
-def failure(monkeypatch, compiled, error, **args) -> str:
-    with pytest.raises(error) as raised:
-        implicit_run(monkeypatch, compiled, **args)
-    return str(raised.value)
-
-
 def test_the_same_failures(monkeypatch):
-    """A state that becomes non-finite (DIFF_CENTRE past its stability
-    limit), and NEWMARK with β = 0 (numba's step divides by zero)."""
-    args = {"scheme": "DIFF_CENTRE", "dt": 2.0e-3, "t_end": 0.3}
-    messages = [failure(monkeypatch, c, NumericalError, **args) for c in (True, False)]
-    assert messages[0] == messages[1]
-    options = scheme_options("NEWMARK", beta=0.0)
-    zero = [
-        failure(monkeypatch, c, NumericalError, scheme="NEWMARK", options=options)
-        for c in (True, False)
-    ]
-    assert zero[0] == zero[1] and "division by zero" in zero[0]
+    assert_same_failures(monkeypatch, implicit_run)
 
 
 @pytest.mark.parametrize("scheme", ["NEWMARK", "RUNGE_KUTTA_32", "TRBDF2", "ADAPT_ORDRE2"])
