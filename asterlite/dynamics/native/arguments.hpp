@@ -285,6 +285,15 @@ inline void check_balance(Arguments& in, const energy::Balance& balance, const S
                "energy shock quantities");
 }
 
+// what the loads' evaluation relies on, for n modes
+inline void check_loads(Arguments& in, const Loads& loads, index n) {
+    in.require(loads.vectors.n1 == n || loads.vectors.n0 == 0, "load vectors");
+    in.require(loads.tables.layout.n0 >= loads.vectors.n0, "load layout");
+    in.require(loads.codes.n0 >= loads.vectors.n0 && loads.constants.n0 >= loads.vectors.n0,
+               "load programs");
+    in.require(loads.stack.n0 >= 32, "formula stack");
+}
+
 // what every loop relies on in the state and the model; ``implicit``: the
 // loop of the implicit treatment, the only one reading the shocks' treatment
 // flags (the others refuse a shock whose normal is not explicit)
@@ -327,12 +336,7 @@ inline void check_model(Arguments& in, const State& x, const Model& model, bool 
     in.require(shk.laws.n1 == 0 || (shk.law_scratch.n0 >= laws::SCRATCH_ROWS &&
                                     shk.law_scratch.n1 >= laws::SCRATCH_COLS),
                "law scratch");
-    const Loads& loads = model.loads;
-    in.require(loads.vectors.n1 == n || loads.vectors.n0 == 0, "load vectors");
-    in.require(loads.tables.layout.n0 >= loads.vectors.n0, "load layout");
-    in.require(loads.codes.n0 >= loads.vectors.n0 && loads.constants.n0 >= loads.vectors.n0,
-               "load programs");
-    in.require(loads.stack.n0 >= 32, "formula stack");
+    check_loads(in, model.loads, n);
     const Supports& sup = model.sup;
     in.require(sup.shapes.n3 == 0 || (sup.shapes.n0 == ns && sup.shapes.n1 == 2 &&
                                        sup.shapes.n2 == 3 &&

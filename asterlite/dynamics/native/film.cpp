@@ -90,12 +90,8 @@ void check_film(Arguments& in, const F1& q, const F1& v, const F1& a, const F2& 
     in.require(model.polars.n0 >= ns || ns == 0, "shock polars");
     in.require(model.film.n0 == ns && model.film.n1 >= film::N_FILM, "film rows");
     in.require(model.weights.n0 == ns && model.weights.n1 == n, "film weights");
+    check_loads(in, exc.loads, n);
     const Loads& loads = exc.loads;
-    in.require(loads.vectors.n1 == n || loads.vectors.n0 == 0, "load vectors");
-    in.require(loads.tables.layout.n0 >= loads.vectors.n0, "load layout");
-    in.require(loads.codes.n0 >= loads.vectors.n0 && loads.constants.n0 >= loads.vectors.n0,
-               "load programs");
-    in.require(loads.stack.n0 >= 32, "formula stack");
     in.require(loads.tables.pending.n0 <= loads.tables.layout.n0 &&
                    exc.sup.tables.pending.n0 <= exc.sup.tables.layout.n0,
                "pending windows");
