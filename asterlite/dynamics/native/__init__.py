@@ -162,16 +162,33 @@ def compiled_loops() -> dict:
 LOOPS = compiled_loops()
 
 
+def built_module(name: str):
+    """The extension module ``_<name>`` of this folder, or None: not built,
+    or switched off."""
+    if not available():
+        return None
+    try:
+        return importlib.import_module(f"{__name__}._{name}")
+    except ImportError:  # not built
+        return None
+
+
+def multiplier_arrays(exc) -> tuple:
+    """A multipliers' excitation bundle as the C++ functions read it: tables
+    (abscissas, ordinates, layout, cursors), then formula programs."""
+    return (
+        exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes, exc.constants,
+        exc.stack,
+    )  # fmt: skip
+
+
 def film_loops():
     """The compiled loops with fluid films (``_film``) and their start, called
     as numba's fluid_film.run_loop, run_adapt_loop and start are (the same
     arguments, the arrays advanced in place, the same returns), or None: not
     built, or switched off."""
-    if not available():
-        return None
-    try:
-        from asterlite.dynamics.native import _film
-    except ImportError:  # not built
+    _film = built_module("film")
+    if _film is None:
         return None
 
     def run_loop(clock, counters, q, v, a, vint, linear, model, exc, controls, scalars, work,
@@ -201,13 +218,9 @@ def shared_loops():
     implicit_shocks.implicit_loop (the scheme's dispatch code first) and
     ``implicit_start`` as implicit_shocks.start; the same arguments, the
     arrays advanced in place, the same returns (a ZeroDivisionError where
-    numba's step raises one). None: not built, or
-    switched off."""
-    if not available():
-        return None
-    try:
-        from asterlite.dynamics.native import _shared
-    except ImportError:  # not built
+    numba's step raises one). None: not built, or switched off."""
+    _shared = built_module("shared")
+    if _shared is None:
         return None
 
     def written(model) -> tuple:
@@ -221,9 +234,8 @@ def shared_loops():
         damping, stiffness, gyro, rigy, exc = memory[EXTRA]  # Rotation.bundle()
         return _shared.rotating_loop(
             clock, counters, instants, *state, *memory[:3], damping, stiffness, gyro, rigy,
-            exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes, exc.constants,
-            exc.stack, memory[ROTATION_CODE], *written(model), *model_arguments(model), *archive,
-            *energy, int(pas_arch), float(eps),
+            *multiplier_arrays(exc), memory[ROTATION_CODE], *written(model),
+            *model_arguments(model), *archive, *energy, int(pas_arch), float(eps),
         )  # fmt: skip
 
     def treatment(memory) -> tuple:
@@ -253,17 +265,11 @@ def shared_loops():
 def rotation_multipliers():
     """rotation.speed_and_acceleration compiled (called as it is, on the
     multipliers' excitation bundle), or None: not built, or switched off."""
-    if not available():
-        return None
-    try:
-        from asterlite.dynamics.native import _shared
-    except ImportError:  # not built
+    _shared = built_module("shared")
+    if _shared is None:
         return None
 
     def speed_and_acceleration(exc, t):
-        return _shared.rotation_multipliers(
-            float(t), exc.abscissas, exc.ordinates, exc.layout, exc.cursors, exc.codes,
-            exc.constants, exc.stack,
-        )  # fmt: skip
+        return _shared.rotation_multipliers(float(t), *multiplier_arrays(exc))
 
     return speed_and_acceleration
