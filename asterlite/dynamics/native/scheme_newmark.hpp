@@ -77,13 +77,28 @@ inline bool build_operators(const F2& rows, const F1& scalars, double dt, index 
     return factor_effective(block(rows, VECTOR_ROWS, B_KEFF, n), row(rows, PIVOTS), diagonal);
 }
 
+// the step's end from the solved right-hand side ``rhs`` (the new q): a, v,
+// q and their index-2 copies (scheme_newmark's update, shared by both loops)
+inline void advance(const F2& rows, const F1& scalars, const F1& q, const F1& v, const F1& a,
+                    const F1& rhs, double dt, index n) {
+    const double* c = scalars.data + A1;
+    const F1 q2 = row(rows, Q_INDEX2), v2 = row(rows, V_INDEX2);
+    for (index i = 0; i < n; ++i) {
+        const double a_new = -c[3] * a(i) + c[0] * (rhs(i) - q(i) - dt * v(i));
+        v(i) = v(i) + c[6] * a(i) + c[7] * a_new;
+        a(i) = a_new;
+        q(i) = rhs(i);
+        q2(i) = q(i);
+        v2(i) = v(i);
+    }
+}
+
 // scheme_newmark.newmark_update: the right-hand side, the solve, then a, v,
 // q and the index-2 copies (the diagonal case written out in one pass)
 inline void newmark_update(const F2& rows, const F1& scalars, const F1& q, const F1& v,
                            const F1& a, const F1& f, double dt, index n) {
     const bool diagonal = scalars(S_DIAGONAL) == 1.0;
-    const double* c = scalars.data + A1;
-    const F1 q2 = row(rows, Q_INDEX2), v2 = row(rows, V_INDEX2), rhs = row(rows, RHS);
+    const F1 rhs = row(rows, RHS);
     const F2 f1 = block(rows, VECTOR_ROWS, B_F1, n);
     const F2 f2 = block(rows, VECTOR_ROWS, B_F2, n);
     const F2 f3 = block(rows, VECTOR_ROWS, B_F3, n);
@@ -103,14 +118,7 @@ inline void newmark_update(const F2& rows, const F1& scalars, const F1& q, const
         apply(f3, a, 1.0, rhs, false);
         solve_effective(keff, row(rows, PIVOTS), rhs, false);
     }
-    for (index i = 0; i < n; ++i) {
-        const double a_new = -c[3] * a(i) + c[0] * (rhs(i) - q(i) - dt * v(i));
-        v(i) = v(i) + c[6] * a(i) + c[7] * a_new;
-        a(i) = a_new;
-        q(i) = rhs(i);
-        q2(i) = q(i);
-        v2(i) = v(i);
-    }
+    advance(rows, scalars, q, v, a, rhs, dt, n);
 }
 
 // scheme_newmark.specialised_loop: the status codes, archiving rules and

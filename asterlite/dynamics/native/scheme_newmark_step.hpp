@@ -32,7 +32,6 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
         if (operators_divide_by_zero(scalars, dt)) return {STATUS_ZERO_DIVISION, -1, dt, dt, 0};
         if (!build_operators(rows, scalars, dt, n)) return {STATUS_NOT_FINITE, -1, dt, dt, 0};
     }
-    const double* c = scalars.data + A1;
     const F1 q2 = row(rows, Q_INDEX2), v2 = row(rows, V_INDEX2), rhs = row(rows, RHS);
     const bool at_start = scalars(S_FORCE_AT_START) == 1.0;
     if (!at_start) {  // else f holds F(t, q, v): the loop's start or the previous step's end
@@ -46,14 +45,7 @@ inline StepResult step(double t, double dt, std::int64_t, const State& x, const 
     const F2 keff = block(rows, VECTOR_ROWS, B_KEFF, n);
     if (solve_divides_by_zero(keff, diagonal)) return {STATUS_ZERO_DIVISION, -1, dt, dt, 0};
     solve_effective(keff, row(rows, PIVOTS), rhs, diagonal);
-    for (index i = 0; i < n; ++i) {
-        const double a_new = -c[3] * a(i) + c[0] * (rhs(i) - q(i) - dt * v(i));
-        v(i) = v(i) + c[6] * a(i) + c[7] * a_new;
-        a(i) = a_new;
-        q(i) = rhs(i);
-        q2(i) = q(i);
-        v2(i) = v(i);
-    }
+    advance(rows, scalars, q, v, a, rhs, dt, n);
     if (!(all_finite(q) && all_finite(v))) return {STATUS_NOT_FINITE, -1, dt, dt, 0};
     if (at_start) {  // the forces of the next step's start
         const index shock = total_force_at(t + dt, q, v, x.vint, x.work, f, model);
