@@ -130,12 +130,35 @@ NATIVE_MODULES = [
 
 class BuildExtensions(build_ext):
     """setuptools' build_ext, one compiler process per core (the modules are
-    independent; pip gives no option for it)."""
+    independent; pip gives no option for it).
+
+    An editable install builds in a new temporary folder each time, so
+    build_ext's own up-to-date test never holds: a module already in the
+    checkout that is newer than its .cpp, every header and this file is
+    reused as it is (``pip install -e .`` again compiles only what changed)."""
 
     def finalize_options(self):
         super().finalize_options()
         if not self.parallel:
             self.parallel = os.cpu_count() or 1
+
+    def build_extension(self, ext):
+        in_checkout = ROOT / self.get_ext_filename(ext.name)
+        if self.editable_mode and _newer_than_sources(in_checkout, ext):
+            target = self.get_ext_fullpath(ext.name)
+            self.mkpath(os.path.dirname(target))
+            # the time kept: setuptools then finds the checkout's copy up to date
+            self.copy_file(str(in_checkout), target, preserve_times=True)
+            return
+        super().build_extension(ext)
+
+
+def _newer_than_sources(module: Path, ext: Extension) -> bool:
+    if not module.is_file():
+        return False
+    sources = [ROOT / name for name in [*ext.sources, *ext.depends]] + [Path(__file__)]
+    built = module.stat().st_mtime
+    return all(source.stat().st_mtime < built for source in sources)
 
 
 setup(

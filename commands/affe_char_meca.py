@@ -8,7 +8,6 @@ FORCE_INTERNE on the surfaces of plane models) on a model."""
 from __future__ import annotations
 
 import numpy as np
-from asterlite.commands.liaison_arlequin import arlequin_link
 
 from asterlite.concepts.assembly import LinearRelation, MechanicalLoad
 from asterlite.fem.elements import ElementError
@@ -347,6 +346,8 @@ def _liaison_elem(ctx, model, components, load, occ) -> None:
 
     option = occ["OPTION"]
     if option == "3D_POU_ARLEQUIN":
+        from asterlite.commands.liaison_arlequin import arlequin_link
+
         arlequin_link(ctx, model, components, load, occ)
         return
     if option != "3D_POU":

@@ -6,7 +6,6 @@ from __future__ import annotations
 from asterlite.fem.mesh_check import check_mesh
 from asterlite.io.aster_mesh import AsterMeshError, read_aster_mesh
 from asterlite.io.gmsh_mesh import GmshMeshError, read_gmsh_mesh
-from asterlite.io.ideas_mesh import IdeasMeshError, IdeasMeshUnsupported, read_ideas_mesh
 from asterlite.legacy.version import meshes_keep_names
 
 
@@ -70,6 +69,9 @@ def _check(ctx, kw, mesh) -> None:
 
 
 def _read_ideas(ctx, kw, path):
+    # pyuff's reader, for the decks that read I-DEAS files only
+    from asterlite.io.ideas_mesh import IdeasMeshError, IdeasMeshUnsupported, read_ideas_mesh
+
     try:
         mesh = read_ideas_mesh(path, color_groups=kw.get("CREA_GROUP_COUL") == "OUI")
     except IdeasMeshUnsupported as exc:

@@ -33,7 +33,6 @@ from asterlite.fem.pipe_elements import (
     pipe_pressure_terms,
 )
 from asterlite.fem.plane_loads import plane_cells, plane_load_terms, surface_force_terms
-from asterlite.fem.plane_wave import plane_wave_history
 from asterlite.fem.plate_elements import plate_gravity_terms
 from asterlite.fem.solid_loads import solid_cells, solid_load_terms, volume_force_terms
 
@@ -268,6 +267,8 @@ def load_history(load, materials):
 
 
 def _plane_wave_history(load, materials, waves):
+    from asterlite.fem.plane_wave import plane_wave_history  # ONDE_PLANE decks only
+
     def at(times):
         # each ONDE_PLANE occurrence adds its own terms
         parts = [
