@@ -67,6 +67,13 @@ def needs_native():
     pytest.skip("the compiled loops are not built (no C++ compiler at install)")
 
 
+def pytest_sessionfinish(session):
+    """``ASTERLITE_NUMBA_REFERENCE=record``: numba's fingerprints to their file."""
+    from tests import numba_reference
+
+    numba_reference.write_recorded()
+
+
 def pytest_collection_finish(session):
     """Under ``--dist loadgroup`` every test of an ``xdist_group`` must carry
     its group in its id, which is how pytest-xdist sends a group to one

@@ -13,6 +13,7 @@ from asterlite.dynamics.excitation import tabulate_excitation
 from asterlite.dynamics.integrate import integrate
 from asterlite.dynamics.model import LinearSystem, ShockSpec, build_shocks
 from asterlite.errors import NumericalError
+from tests.numba_reference import assert_same, reference
 from tests.test_dynamics_specialised import Sampled, Table  # the tests' multipliers
 from tests.validated import scheme_options
 
@@ -117,17 +118,33 @@ def run(monkeypatch, compiled: bool, geometry="CERCLE", diagonal=True, friction=
     )  # fmt: skip
 
 
-def assert_same_bits(compiled, numba):
-    assert compiled.info["loop"].endswith("[C++]") and numba.info["loop"].endswith("[numba]")
+def compared(result) -> dict:
+    """What the comparison of two runs reads: the run's information but its
+    timings and loop name, and every archive."""
     timing = ("integration_seconds", "compile_seconds", "loop")
-    assert {k: v for k, v in compiled.info.items() if k not in timing} == {
-        k: v for k, v in numba.info.items() if k not in timing
-    }
-    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
-        np.testing.assert_array_equal(getattr(compiled, name), getattr(numba, name), err_msg=name)
-    assert (compiled.energy is None) == (numba.energy is None)
-    if numba.energy is not None:  # the energy balance's archived rows
-        np.testing.assert_array_equal(compiled.energy, numba.energy, err_msg="energy")
+    fields = {"info": {k: v for k, v in result.info.items() if k not in timing}}
+    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info", "energy"):
+        fields[name] = getattr(result, name)
+    return fields
+
+
+def numba_run(request, monkeypatch, *args, runner=None, **kwargs) -> dict:
+    """The fingerprint of numba's run ``runner(monkeypatch, False, *args,
+    **kwargs)`` (``runner``: this module's :func:`run` unless given), for
+    :func:`assert_same_bits` (tests.numba_reference)."""
+
+    def compute():
+        result = (runner or run)(monkeypatch, False, *args, **kwargs)
+        assert result.info["loop"].endswith("[numba]")
+        return compared(result)
+
+    return reference(request, compute)
+
+
+def assert_same_bits(compiled, numba):
+    """The C++ run ``compiled`` against numba's fingerprint (:func:`numba_run`)."""
+    assert compiled.info["loop"].endswith("[C++]")
+    assert_same(compared(compiled), numba, "the C++ run")
 
 
 def divided_by_zero(outcome) -> bool:
@@ -137,7 +154,7 @@ def divided_by_zero(outcome) -> bool:
     return kind is NumericalError and "a division by zero" in message
 
 
-def assert_same_failures(monkeypatch, run):
+def assert_same_failures(request, monkeypatch, run):
     """A state that becomes non-finite (DIFF_CENTRE past its stability
     limit) and NEWMARK with β = 0 (a step dividing by zero) end with the same
     worded error on the C++ loop and on numba's; ``run(monkeypatch,
@@ -148,8 +165,10 @@ def assert_same_failures(monkeypatch, run):
             run(monkeypatch, compiled, **args)
         return str(raised.value)
 
-    unstable = [failure(c, scheme="DIFF_CENTRE", dt=2.0e-3, t_end=0.3) for c in (True, False)]
-    assert unstable[0] == unstable[1]
-    options = scheme_options("NEWMARK", beta=0.0)
-    zero = [failure(c, scheme="NEWMARK", options=options) for c in (True, False)]
-    assert zero[0] == zero[1] and "division by zero" in zero[0]
+    unstable = dict(scheme="DIFF_CENTRE", dt=2.0e-3, t_end=0.3)
+    numba = reference(request, lambda: failure(False, **unstable))
+    assert_same(failure(True, **unstable), numba, "DIFF_CENTRE past its limit")
+    zero = dict(scheme="NEWMARK", options=scheme_options("NEWMARK", beta=0.0))
+    numba = reference(request, lambda: failure(False, **zero))
+    assert_same(failure(True, **zero), numba, "NEWMARK with BETA=0")
+    assert "division by zero" in failure(True, **zero)

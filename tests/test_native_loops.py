@@ -21,15 +21,16 @@ from tests.native_runs import (
     GEOMETRIES,
     N_MODES,
     assert_same_bits,
+    numba_run,
     run,
     shock_of,
     system_of,
 )
+from tests.numba_reference import assert_same, reference
 from tests.validated import scheme_options
 
-# numba's loops, the reference, compile on their first use here (the warmup
-# leaves the loops the C++ ones serve): once, on one worker
-pytestmark = [pytest.mark.usefixtures("needs_native"), pytest.mark.xdist_group("numba-reference")]
+# numba's side is its stored fingerprints (tests.numba_reference)
+pytestmark = pytest.mark.usefixtures("needs_native")
 
 
 def test_the_extension_was_built_with_the_python_positions():
@@ -43,41 +44,41 @@ def test_the_extension_was_built_with_the_python_positions():
 
 @pytest.mark.parametrize("geometry", GEOMETRIES)
 @pytest.mark.parametrize("diagonal", [True, False])
-def test_every_obstacle_gives_numbas_bits(monkeypatch, geometry, diagonal):
+def test_every_obstacle_gives_numbas_bits(request, monkeypatch, geometry, diagonal):
     compiled = run(monkeypatch, True, geometry, diagonal, norm_obst=(0.3, 0.9, 0.3))
-    numba = run(monkeypatch, False, geometry, diagonal, norm_obst=(0.3, 0.9, 0.3))
-    fn = numba.vint[:, 0, C.V_FN]
+    numba = numba_run(request, monkeypatch, geometry, diagonal, norm_obst=(0.3, 0.9, 0.3))
+    fn = compiled.vint[:, 0, C.V_FN]
     assert (fn > 0).any()  # impacts
     assert_same_bits(compiled, numba)
 
 
 @pytest.mark.parametrize("friction", ["none", "one-way", "both"])
-def test_every_friction_gives_numbas_bits(monkeypatch, friction):
+def test_every_friction_gives_numbas_bits(request, monkeypatch, friction):
     compiled = run(monkeypatch, True, "BI_CERCLE", friction=friction)
-    numba = run(monkeypatch, False, "BI_CERCLE", friction=friction)
+    numba = numba_run(request, monkeypatch, "BI_CERCLE", friction=friction)
     if friction != "none":
-        assert (numba.vint[:, 0, C.V_FT1] != 0).any()
+        assert (compiled.vint[:, 0, C.V_FT1] != 0).any()
     assert_same_bits(compiled, numba)
 
 
 @pytest.mark.parametrize("formula", range(len(FORMULAS)))
-def test_formula_loads_give_numbas_bits(monkeypatch, formula):
+def test_formula_loads_give_numbas_bits(request, monkeypatch, formula):
     compiled = run(monkeypatch, True, formula=formula, diagonal=False)
-    numba = run(monkeypatch, False, formula=formula, diagonal=False)
+    numba = numba_run(request, monkeypatch, formula=formula, diagonal=False)
     assert_same_bits(compiled, numba)
 
 
 @pytest.mark.parametrize("geometry", ["CERCLE", "BI_PLAN_Z"])
-def test_support_motions_give_numbas_bits(monkeypatch, geometry):
+def test_support_motions_give_numbas_bits(request, monkeypatch, geometry):
     compiled = run(monkeypatch, True, geometry, supports=True, pas_arch=1)
-    numba = run(monkeypatch, False, geometry, supports=True, pas_arch=1)
+    numba = numba_run(request, monkeypatch, geometry, supports=True, pas_arch=1)
     assert_same_bits(compiled, numba)
 
 
-def test_a_diverging_shock_stops_both_alike(monkeypatch):
+def test_a_diverging_shock_stops_both_alike(request, monkeypatch):
     """Absurd stiffness: the run stops with the same error on both."""
-    outcomes = []
-    for compiled in (True, False):
+
+    def outcome(compiled: bool) -> str:
         monkeypatch.setenv(native.SWITCH, "1" if compiled else "0")
         rng = np.random.default_rng(3)
         system = system_of(True, rng)
@@ -91,8 +92,9 @@ def test_a_diverging_shock_stops_both_alike(monkeypatch):
                 np.zeros(N_MODES), 0.0, 0.01, 2.0e-5, np.array([0.01]), 1,
                 scheme_options("DIFF_CENTRE"),
             )  # fmt: skip
-        outcomes.append(str(failure.value))
-    assert outcomes[0] == outcomes[1]
+        return str(failure.value)
+
+    assert_same(outcome(True), reference(request, lambda: outcome(False)), "the failure")
 
 
 def test_arrays_of_another_kind_are_refused_by_name():
@@ -111,11 +113,11 @@ PORTED_SCHEMES = ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54")
 
 @pytest.mark.parametrize("scheme", PORTED_SCHEMES)
 @pytest.mark.parametrize("geometry, diagonal", [("CERCLE", True), ("BI_PLAN_Y", False)])
-def test_every_ported_scheme_gives_numbas_bits(monkeypatch, scheme, geometry, diagonal):
+def test_every_ported_scheme_gives_numbas_bits(request, monkeypatch, scheme, geometry, diagonal):
     args = dict(geometry=geometry, diagonal=diagonal, scheme=scheme, supports=True, t_end=0.02)
     compiled = run(monkeypatch, True, **args)
-    numba = run(monkeypatch, False, **args)
-    assert (numba.vint[:, 0, C.V_FN] > 0).any()
+    numba = numba_run(request, monkeypatch, **args)
+    assert (compiled.vint[:, 0, C.V_FN] > 0).any()
     assert_same_bits(compiled, numba)
 
 
@@ -124,12 +126,12 @@ ENERGY_SCHEMES = ("DIFF_CENTRE", "NEWMARK", "DEVOGE", "RUNGE_KUTTA_54", "ADAPT_O
 
 @pytest.mark.parametrize("scheme", ENERGY_SCHEMES)
 @pytest.mark.parametrize("geometry, diagonal", [("CERCLE", True), ("BI_PLAN_Y", False)])
-def test_the_energy_balance_gives_numbas_bits(monkeypatch, scheme, geometry, diagonal):
+def test_the_energy_balance_gives_numbas_bits(request, monkeypatch, scheme, geometry, diagonal):
     """ENERGIE on every loop kind: the balance's rows bit for bit, with
     impacts, friction and support motions in the powers."""
     args = dict(geometry=geometry, diagonal=diagonal, scheme=scheme, supports=True, t_end=0.02)
     compiled = run(monkeypatch, True, energy=True, **args)
-    numba = run(monkeypatch, False, energy=True, **args)
+    numba = numba_run(request, monkeypatch, energy=True, **args)
     assert compiled.energy is not None and len(compiled.energy) == len(compiled.times)
-    assert (numba.vint[:, 0, C.V_FN] > 0).any()
+    assert (compiled.vint[:, 0, C.V_FN] > 0).any()
     assert_same_bits(compiled, numba)
