@@ -8,6 +8,8 @@ import re
 import subprocess
 import sys
 
+import pytest
+
 import asterlite.dynamics as D
 
 
@@ -35,17 +37,24 @@ def test_folder_under_the_users_cache_dir(tmp_path, monkeypatch):
     assert D.kernel_cache_folder() == folder
 
 
-def test_numba_uses_it(tmp_path):
-    """A fresh process with the user's NUMBA_CACHE_DIR: numba's own config
-    names the digest folder below it, whether numba was imported first or not."""
+@pytest.mark.parametrize("numba_first", [True, False])
+def test_numba_uses_it(tmp_path, numba_first):
+    """A fresh process with the user's NUMBA_CACHE_DIR: once asterlite loads
+    numba's kernels (jit.load), numba's own config names the digest folder
+    below it, whether numba was imported first or not; importing the package
+    alone leaves the variable as it was (a run on the C++ loops never imports
+    numba, nor reads the sources for their digest)."""
     code = (
-        "import numba, asterlite.dynamics as D\n"
+        ("import numba\n" if numba_first else "") + "import os, asterlite.dynamics as D\n"
+        "from asterlite.dynamics import jit\n"
+        "untouched = os.environ['NUMBA_CACHE_DIR'] == os.environ['GIVEN']\n"
+        "jit.load()\n"
         "from numba.core import config\n"
-        "print(config.CACHE_DIR == str(D.kernel_cache_folder()))\n"
+        "print(untouched, config.CACHE_DIR == str(D.kernel_cache_folder()))\n"
     )
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path))
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path), GIVEN=str(tmp_path))
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
-    assert out.stdout.strip() == "True", out.stderr
+    assert out.stdout.strip() == "True True", out.stderr
 
 
 def test_warmup_prunes_only_older_in_tree_folders(tmp_path):

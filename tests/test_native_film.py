@@ -28,12 +28,12 @@ from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
 from asterlite.dynamics.model import build_shocks
 from asterlite.errors import NumericalError
 from tests.native_runs import FORMULAS, GEOMETRIES, N_MODES, shock_of, system_of
+from tests.numba_reference import assert_same, reference
 from tests.test_dynamics_specialised import Sampled, Table
 from tests.validated import scheme_options
 
-# numba's kernels, the reference, come from its cache (asterlite warmup) or compile on
-# their first use here: once, on one worker
-pytestmark = [pytest.mark.usefixtures("needs_native"), pytest.mark.xdist_group("numba-reference")]
+# numba's side is its stored fingerprints (tests.numba_reference)
+pytestmark = pytest.mark.usefixtures("needs_native")
 
 DT = 2.0e-5
 # α (added mass), β, χ (squeeze), δ: a film that pushes back hard enough on
@@ -144,47 +144,53 @@ def film_run(monkeypatch, compiled, geometry="PLAN_Z", coefficients=FILM, dry="B
     return record
 
 
-def assert_same_records(compiled: FilmRun, numba: FilmRun):
-    """The same loop calls, film rows and final state (clock and counters included)."""
-    assert compiled.calls == numba.calls > 0
-    np.testing.assert_array_equal(compiled.film_rows, numba.film_rows, err_msg="film rows")
-    np.testing.assert_array_equal(compiled.layers, numba.layers, err_msg="layers")
+def records(run: FilmRun) -> dict:
+    """What the comparison of two runs' records reads: the loop calls, film
+    rows, boundary-layer columns and final state (clock and counters included)."""
     names = ("clock", "counters", "q", "v", "a", "vint")
-    for name, x, y in zip(names, compiled.state, numba.state, strict=True):
-        np.testing.assert_array_equal(x, y, err_msg=name)
+    fields = {"calls": run.calls, "film_rows": run.film_rows, "layers": np.array(run.layers)}
+    fields["state"] = dict(zip(names, run.state, strict=True))
+    return fields
 
 
-def assert_same_bits(compiled: FilmRun, numba: FilmRun):
-    assert_same_records(compiled, numba)
-    a, b = compiled.result, numba.result
+def compared(run: FilmRun) -> dict:
+    """What the comparison of two runs reads: the records, the run's
+    information but its timings and loop name, and every archive."""
+    result = run.result
     timing = ("integration_seconds", "loop")
-    assert {k: v for k, v in a.info.items() if k not in timing} == {
-        k: v for k, v in b.info.items() if k not in timing
-    }
+    fields = {"records": records(run)}
+    fields["info"] = {k: v for k, v in result.info.items() if k not in timing}
     for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
-        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
+        fields[name] = getattr(result, name)
+    return fields
 
 
-def both(monkeypatch, **args) -> FilmRun:
-    """The run with the C++ loops, then with numba's, checked bit for bit."""
+def both(request, monkeypatch, **args) -> FilmRun:
+    """The run with the C++ loops, checked bit for bit against numba's
+    (its fingerprint, tests.numba_reference); the C++ run."""
     compiled = film_run(monkeypatch, True, **args)
-    numba = film_run(monkeypatch, False, **args)
-    assert_same_bits(compiled, numba)
-    return numba
+    assert compiled.calls > 0
+    numba = reference(request, lambda: compared(film_run(monkeypatch, False, **args)))
+    assert_same(compared(compiled), numba, "the C++ film run")
+    return compiled
 
 
-def both_fail(monkeypatch, match, **args) -> str:
+def both_fail(request, monkeypatch, match, **args) -> dict:
     """Both loops (or both starts) stop the run with the same error, in the same state."""
-    messages, records = [], []
-    for compiled in (True, False):
+
+    def outcome(compiled: bool) -> dict:
         with pytest.raises(NumericalError, match=match) as failure:
             film_run(monkeypatch, compiled, **args)
-        messages.append(str(failure.value))
-        records.append(LAST[0])
-    assert messages[0] == messages[1]
-    if records[1].calls:
-        assert_same_records(*records)
-    return messages[0]
+        record = LAST[0]
+        return {
+            "message": str(failure.value),
+            "calls": record.calls,
+            "records": records(record) if record.calls else None,
+        }
+
+    compiled = outcome(True)
+    assert_same(compiled, reference(request, lambda: outcome(False)), "the failure")
+    return compiled
 
 
 def film_works(run: FilmRun) -> bool:
@@ -202,8 +208,8 @@ def dry_impacts(run: FilmRun) -> bool:
 
 @pytest.mark.parametrize("adapt", [False, True])
 @pytest.mark.parametrize("geometry", GEOMETRIES)
-def test_every_obstacle_gives_numbas_bits(monkeypatch, geometry, adapt):
-    run = both(monkeypatch, geometry=geometry, adapt=adapt)
+def test_every_obstacle_gives_numbas_bits(request, monkeypatch, geometry, adapt):
+    run = both(request, monkeypatch, geometry=geometry, adapt=adapt)
     assert film_works(run) and dry_impacts(run)
     assert (run.result.vint[:, -1, C.V_FT1] != 0.0).any()  # the dry shock's friction
     if adapt:
@@ -212,10 +218,10 @@ def test_every_obstacle_gives_numbas_bits(monkeypatch, geometry, adapt):
 
 @pytest.mark.parametrize("adapt", [False, True])
 @pytest.mark.parametrize("coefficients", [FILM, STRONG])
-def test_the_boundary_layer_gives_numbas_bits(monkeypatch, coefficients, adapt):
+def test_the_boundary_layer_gives_numbas_bits(request, monkeypatch, coefficients, adapt):
     """Paused every 25 steps: the layer's state seen between pauses is entered
     and left; inside it, through the wall (gap <= 0), the dry force pushes."""
-    run = both(monkeypatch, coefficients=coefficients, adapt=adapt, chunk=25)
+    run = both(request, monkeypatch, coefficients=coefficients, adapt=adapt, chunk=25)
     layers = np.array(run.layers)[:, 0]
     assert run.calls > 40 and (layers == 1.0).any()
     if coefficients == FILM:
@@ -227,9 +233,9 @@ def test_the_boundary_layer_gives_numbas_bits(monkeypatch, coefficients, adapt):
 
 
 @pytest.mark.parametrize("adapt", [False, True])
-def test_two_films_and_no_dry_shock_give_numbas_bits(monkeypatch, adapt):
-    both(monkeypatch, geometry="CERCLE", second_film=True, adapt=adapt)
-    run = both(monkeypatch, geometry="BI_CERCLE", dry=None, adapt=adapt)
+def test_two_films_and_no_dry_shock_give_numbas_bits(request, monkeypatch, adapt):
+    both(request, monkeypatch, geometry="CERCLE", second_film=True, adapt=adapt)
+    run = both(request, monkeypatch, geometry="BI_CERCLE", dry=None, adapt=adapt)
     assert film_works(run)
 
 
@@ -242,23 +248,23 @@ def test_two_films_and_no_dry_shock_give_numbas_bits(monkeypatch, adapt):
         (0.0, 0.0, 0.0, 0.0),  # no film force: the layer's dry law alone
     ],
 )
-def test_each_term_of_the_film_gives_numbas_bits(monkeypatch, coefficients, adapt):
-    run = both(monkeypatch, coefficients=coefficients, adapt=adapt)
+def test_each_term_of_the_film_gives_numbas_bits(request, monkeypatch, coefficients, adapt):
+    run = both(request, monkeypatch, coefficients=coefficients, adapt=adapt)
     assert dry_impacts(run)
 
 
 @pytest.mark.parametrize("adapt", [False, True])
 @pytest.mark.parametrize("relaxation", [1.0, 3.0, 30.0])
-def test_the_mass_modification_gives_numbas_bits(monkeypatch, relaxation, adapt):
+def test_the_mass_modification_gives_numbas_bits(request, monkeypatch, relaxation, adapt):
     """λ scales the diagonal added-mass stand-in: other iterations, same bits."""
-    run = both(monkeypatch, controls=(200, 1.0e-8, relaxation), adapt=adapt)
+    run = both(request, monkeypatch, controls=(200, 1.0e-8, relaxation), adapt=adapt)
     assert film_works(run)
 
 
 @pytest.mark.parametrize("adapt", [False, True])
 @pytest.mark.parametrize("formula", range(len(FORMULAS)))
-def test_formula_loads_give_numbas_bits(monkeypatch, formula, adapt):
-    both(monkeypatch, formula=formula, adapt=adapt)
+def test_formula_loads_give_numbas_bits(request, monkeypatch, formula, adapt):
+    both(request, monkeypatch, formula=formula, adapt=adapt)
 
 
 @pytest.fixture
@@ -278,51 +284,53 @@ def refills(monkeypatch) -> list:
 
 @pytest.mark.parametrize("adapt", [False, True])
 @pytest.mark.parametrize("supports", [False, True])
-def test_sampling_windows_give_numbas_bits(monkeypatch, refills, supports, adapt):
+def test_sampling_windows_give_numbas_bits(request, monkeypatch, refills, supports, adapt):
     """The loops stop for the next window of the sampled loads and, with
     supports, of the support motions (loads_ready), and resume."""
-    run = both(monkeypatch, supports=supports, adapt=adapt)
+    run = both(request, monkeypatch, supports=supports, adapt=adapt)
     assert film_works(run)
     assert len([t for t in refills if t > 0.0]) > 20 and run.calls > 20
 
 
 @pytest.mark.parametrize("pas_arch", [1, 3, 50])
-def test_archiving_gives_numbas_bits(monkeypatch, pas_arch):
-    both(monkeypatch, pas_arch=pas_arch)
-    both(monkeypatch, pas_arch=pas_arch, adapt=True)
+def test_archiving_gives_numbas_bits(request, monkeypatch, pas_arch):
+    both(request, monkeypatch, pas_arch=pas_arch)
+    both(request, monkeypatch, pas_arch=pas_arch, adapt=True)
 
 
-def test_adapt_archive_grid_denser_than_the_buffers_gives_numbas_bits(monkeypatch):
+def test_adapt_archive_grid_denser_than_the_buffers_gives_numbas_bits(request, monkeypatch):
     """A step's upper bound below the step: code_aster's slots outnumber the
     archive's first capacity (the buffers grow, the loop resumes)."""
     options = scheme_options("ADAPT_ORDRE2", adapt_v11=True, dt_max=5.0e-6)
-    run = both(monkeypatch, adapt=True, options=options, pas_arch=2)
+    run = both(request, monkeypatch, adapt=True, options=options, pas_arch=2)
     capacity = 2 + 3 + 2000 // 2
     assert len(run.result.times) > capacity and run.calls > 1
 
 
-def test_adapt_steps_kept_at_the_largest_number_of_trials_give_numbas_bits(monkeypatch):
+def test_adapt_steps_kept_at_the_largest_number_of_trials_give_numbas_bits(request, monkeypatch):
     options = scheme_options("ADAPT_ORDRE2", adapt_v11=True, dt_max=4.0e-5, nmax_iter_pas=1)
-    run = both(monkeypatch, adapt=True, options=options)
+    run = both(request, monkeypatch, adapt=True, options=options)
     assert run.result.info["steps_kept_at_nmax_iter_pas"] > 0
 
 
 @pytest.mark.parametrize("vite_min", ["NORM", "MAXI"])
-def test_adapt_reference_velocities_give_numbas_bits(monkeypatch, vite_min):
+def test_adapt_reference_velocities_give_numbas_bits(request, monkeypatch, vite_min):
     options = scheme_options("ADAPT_ORDRE2", adapt_v11=True, dt_max=4.0e-5, vite_min=vite_min)
-    run = both(monkeypatch, adapt=True, options=options, chunk=100)
+    run = both(request, monkeypatch, adapt=True, options=options, chunk=100)
     assert run.result.info["rejected_steps"] > 0
 
 
 @pytest.mark.parametrize("adapt", [False, True])
-def test_iterations_not_converging_stop_both_alike(monkeypatch, adapt):
-    message = both_fail(monkeypatch, "did not converge", controls=(2, 1.0e-12, 10.0), adapt=adapt)
-    assert "max_iterations=2" in message
+def test_iterations_not_converging_stop_both_alike(request, monkeypatch, adapt):
+    failure = both_fail(
+        request, monkeypatch, "did not converge", controls=(2, 1.0e-12, 10.0), adapt=adapt
+    )
+    assert "max_iterations=2" in failure["message"]
 
 
-def test_adapt_step_underflow_stops_both_alike(monkeypatch):
+def test_adapt_step_underflow_stops_both_alike(request, monkeypatch):
     options = scheme_options("ADAPT_ORDRE2", adapt_v11=True, dt_max=4.0e-5, dt_min=1.9e-5)
-    both_fail(monkeypatch, "adaptive step fell below", adapt=True, options=options)
+    both_fail(request, monkeypatch, "adaptive step fell below", adapt=True, options=options)
 
 
 @pytest.mark.parametrize("adapt", [False, True])
@@ -330,21 +338,23 @@ def test_adapt_step_underflow_stops_both_alike(monkeypatch):
     ("dry", "match"),
     [("PLAN_Y", "velocity at a shock diverged"), ("BI_CERCLE", "became non-finite")],
 )
-def test_a_diverging_run_stops_both_alike(monkeypatch, dry, match, adapt):
+def test_a_diverging_run_stops_both_alike(request, monkeypatch, dry, match, adapt):
     """A load that overflows at t = 0.0237: the dry shock's velocity
     diverges while it is in contact (its check), else the acceleration becomes
     non-finite. The same error, the same instant, the same state."""
-    both_fail(monkeypatch, match, dry=dry, formula=("exp(30000*INST)", {}), adapt=adapt)
+    both_fail(request, monkeypatch, match, dry=dry, formula=("exp(30000*INST)", {}), adapt=adapt)
 
 
 @pytest.mark.parametrize("adapt", [False, True])
-def test_a_non_finite_start_stops_both_alike(monkeypatch, adapt):
+def test_a_non_finite_start_stops_both_alike(request, monkeypatch, adapt):
     """fluid_film.start: a load infinite at t0 (1/INST)."""
-    both_fail(monkeypatch, "non-finite initial acceleration", formula=("1/INST", {}), adapt=adapt)
-    assert LAST[0].calls == 0
+    failure = both_fail(
+        request, monkeypatch, "non-finite initial acceleration", formula=("1/INST", {}), adapt=adapt
+    )
+    assert failure["calls"] == 0
 
 
-def test_the_start_gives_numbas_bits(monkeypatch):
+def test_the_start_gives_numbas_bits(request, monkeypatch):
     """fluid_film.start alone, its film in the boundary layer at t0: the
     acceleration, the internal variables and the film rows."""
     monkeypatch.setenv(native.SWITCH, "1")
@@ -362,14 +372,16 @@ def test_the_start_gives_numbas_bits(monkeypatch):
     # a layer 4.4e-6 thick
     q = np.linalg.lstsq(shapes[0, 0], np.array([0.0, 0.0, 0.95e-5]), rcond=None)[0]
     v = np.linalg.lstsq(shapes[0, 0], np.array([0.0, 0.0, 1.0e-2]), rcond=None)[0]
-    outputs = []
-    for start in (FILM_LOOPS()[2], NUMBA_LOOPS[2]):
+
+    def started(start) -> tuple:
         model = (shocks.flags, shocks.params, shapes, rest, shocks.polars, rows.copy(), weights)
         a, vint = np.zeros(N_MODES), shocks.initial_vint(0.0)
         work = (np.zeros(N_MODES), np.zeros(N_MODES), np.zeros(N_MODES), np.zeros(FF.N_KIN))
         returned = start(0.0, q, v, a, linear, model, excitation.bundle(), vint, work)
-        outputs.append((tuple(returned), a, vint, model[5], *work))
-    assert outputs[0][0] == (-1, True)
-    assert outputs[0][3][0, FF.FL_LAYER] == 1.0  # in the boundary layer from the start
-    for x, y in zip(outputs[0], outputs[1], strict=True):
-        np.testing.assert_array_equal(x, y)
+        return (tuple(returned), a, vint, model[5], *work)
+
+    compiled = started(FILM_LOOPS()[2])
+    assert compiled[0] == (-1, True)
+    assert compiled[3][0, FF.FL_LAYER] == 1.0  # in the boundary layer from the start
+    numba = reference(request, lambda: started(NUMBA_LOOPS[2]))
+    assert_same(compiled, numba, "the start")

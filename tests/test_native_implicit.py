@@ -30,12 +30,12 @@ from tests.native_runs import (
     shock_of,
     system_of,
 )
+from tests.numba_reference import assert_same, reference
 from tests.test_dynamics_specialised import Sampled, Table
 from tests.validated import scheme_options
 
-# numba's kernels, the reference, come from its cache (asterlite warmup) or compile on
-# their first use here: once, on one worker
-pytestmark = [pytest.mark.usefixtures("needs_native"), pytest.mark.xdist_group("numba-reference")]
+# numba's side is its stored fingerprints (tests.numba_reference)
+pytestmark = pytest.mark.usefixtures("needs_native")
 
 DT = 2.0e-5
 SCHEMES = [entry.name for entry in S.TABLE if entry.shared_loops]
@@ -121,27 +121,27 @@ def implicit_run(monkeypatch, compiled, scheme="NEWMARK", geometries=("CERCLE",)
     return result, calls, modes
 
 
-def assert_same_bits(compiled, numba):
-    (a, calls_a, modes_a), (b, calls_b, modes_b) = compiled, numba
-    assert calls_a == calls_b and len(calls_b) > 0
-    np.testing.assert_array_equal(modes_a, modes_b, err_msg="treatment flags")
+def compared(run) -> dict:
+    """What the comparison of two runs reads: the loop's calls (their
+    statuses), the treatment flags after each, the run's information but its
+    timings and loop name, every archive and the energy balance."""
+    result, calls, modes = run
     timing = ("integration_seconds", "compile_seconds", "loop")
-    assert {k: v for k, v in a.info.items() if k not in timing} == {
-        k: v for k, v in b.info.items() if k not in timing
-    }
-    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
-        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
-    assert (a.energy is None) == (b.energy is None)
-    if b.energy is not None:
-        np.testing.assert_array_equal(a.energy, b.energy, err_msg="energy")
+    fields = {"calls": calls, "modes": np.array(modes)}
+    fields["info"] = {k: v for k, v in result.info.items() if k not in timing}
+    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info", "energy"):
+        fields[name] = getattr(result, name)
+    return fields
 
 
-def both(monkeypatch, **args):
-    """The run with the C++ loop, then with numba's, checked bit for bit."""
+def both(request, monkeypatch, **args):
+    """The run with the C++ loop, checked bit for bit against numba's (its
+    fingerprint, tests.numba_reference); the C++ run's result."""
     compiled = implicit_run(monkeypatch, True, **args)
-    numba = implicit_run(monkeypatch, False, **args)
-    assert_same_bits(compiled, numba)
-    return numba[0]
+    assert len(compiled[1]) > 0
+    numba = reference(request, lambda: compared(implicit_run(monkeypatch, False, **args)))
+    assert_same(compared(compiled), numba, "the C++ run")
+    return compiled[0]
 
 
 def switches(result) -> bool:
@@ -152,45 +152,45 @@ def switches(result) -> bool:
 
 @pytest.mark.parametrize("diagonal", [True, False], ids=["diagonal", "full"])
 @pytest.mark.parametrize("scheme", SCHEMES)
-def test_every_scheme_gives_numbas_bits(monkeypatch, scheme, diagonal):
+def test_every_scheme_gives_numbas_bits(request, monkeypatch, scheme, diagonal):
     """Every scheme's code through the dispatch, its operators refreshed at
     every switch, impacts with friction on a circle."""
-    result = both(monkeypatch, scheme=scheme, diagonal=diagonal)
+    result = both(request, monkeypatch, scheme=scheme, diagonal=diagonal)
     assert switches(result)
 
 
 @pytest.mark.parametrize("friction", ["both", "one-way", "none"])
 @pytest.mark.parametrize("geometry", GEOMETRIES)
-def test_every_obstacle(monkeypatch, geometry, friction):
+def test_every_obstacle(request, monkeypatch, geometry, friction):
     scheme = {"both": "NEWMARK", "one-way": "TRBDF2", "none": "DEVOGE"}[friction]
-    result = both(monkeypatch, scheme=scheme, geometries=(geometry,), friction=friction)
+    result = both(request, monkeypatch, scheme=scheme, geometries=(geometry,), friction=friction)
     assert switches(result)
 
 
 @pytest.mark.parametrize("scheme", ["NEWMARK", "DIFF_CENTRE", "RUNGE_KUTTA_54"])
-def test_the_normal_of_a_circle_turns(monkeypatch, scheme):
+def test_the_normal_of_a_circle_turns(request, monkeypatch, scheme):
     """A node pressed into a circle and carried round: the shock is
     linearised again about its new contact point."""
-    result = both(monkeypatch, scheme=scheme, geometries=("CERCLE",), q0=6.0e-4, k_n=2.0e4)
+    result = both(request, monkeypatch, scheme=scheme, geometries=("CERCLE",), q0=6.0e-4, k_n=2.0e4)
     assert result.info["relinearisations"] > 0
 
 
 @pytest.mark.parametrize("scheme", ["NEWMARK", "ADAPT_ORDRE1", "TRBDF2"])
-def test_shocks_left_out_while_another_is_linearised(monkeypatch, scheme):
+def test_shocks_left_out_while_another_is_linearised(request, monkeypatch, scheme):
     geometries = ("CERCLE", "BI_PLAN_Y", "PLAN_Z", "DISCRET")
-    result = both(monkeypatch, scheme=scheme, geometries=geometries, diagonal=False)
+    result = both(request, monkeypatch, scheme=scheme, geometries=geometries, diagonal=False)
     assert switches(result)
 
 
 @pytest.mark.parametrize("scheme", SCHEMES)
-def test_energy_balance(monkeypatch, scheme):
-    both(monkeypatch, scheme=scheme, energy=True, geometries=("CERCLE", "BI_CERCLE"))
+def test_energy_balance(request, monkeypatch, scheme):
+    both(request, monkeypatch, scheme=scheme, energy=True, geometries=("CERCLE", "BI_CERCLE"))
 
 
 @pytest.mark.parametrize("scheme", ["NEWMARK", "RUNGE_KUTTA_32", "DEVOGE"])
-def test_pauses_and_a_growing_archive(monkeypatch, scheme):
+def test_pauses_and_a_growing_archive(request, monkeypatch, scheme):
     """A pause every 97 steps and an archive at every step (grown as it fills)."""
-    result = both(monkeypatch, scheme=scheme, chunk=97, pas_arch=1, formula=3)
+    result = both(request, monkeypatch, scheme=scheme, chunk=97, pas_arch=1, formula=3)
     assert switches(result)
 
 
@@ -205,20 +205,22 @@ def test_pauses_and_a_growing_archive(monkeypatch, scheme):
         ("ADAPT_ORDRE2", {"nmax_iter_pas": 3, "coef_divi_pas": 1.7, "dt_max": 2.0 * DT}),
     ],
 )
-def test_scheme_options(monkeypatch, scheme, fields):
+def test_scheme_options(request, monkeypatch, scheme, fields):
     options = scheme_options(scheme, **fields)
-    result = both(monkeypatch, scheme=scheme, options=options, diagonal=False, formula=4)
+    result = both(request, monkeypatch, scheme=scheme, options=options, diagonal=False, formula=4)
     assert switches(result)
 
 
-def test_the_same_failures(monkeypatch):
-    assert_same_failures(monkeypatch, implicit_run)
+def test_the_same_failures(request, monkeypatch):
+    assert_same_failures(request, monkeypatch, implicit_run)
 
 
 @pytest.mark.parametrize("scheme", ["NEWMARK", "RUNGE_KUTTA_32", "TRBDF2", "ADAPT_ORDRE2"])
-def test_every_relation_of_laws(monkeypatch, scheme):
+def test_every_relation_of_laws(request, monkeypatch, scheme):
     """The relations of laws/ (laws.hpp, explicit) beside the DIS_CHOC rows linearised."""
     from tests.test_native_laws import every_relation
 
-    result = both(monkeypatch, scheme=scheme, rows=every_relation, energy=scheme == "NEWMARK")
+    result = both(
+        request, monkeypatch, scheme=scheme, rows=every_relation, energy=scheme == "NEWMARK"
+    )
     assert switches(result)

@@ -28,7 +28,16 @@ from asterlite.dynamics.laws.connections import axis_frame
 from asterlite.dynamics.laws.tabulated import Curve
 from asterlite.dynamics.model import ShockSpec, build_shocks
 from asterlite.errors import NumericalError
-from tests.native_runs import N_MODES, Sampled, Table, assert_same_bits, shock_of, system_of
+from tests.native_runs import (
+    N_MODES,
+    Sampled,
+    Table,
+    assert_same_bits,
+    numba_run,
+    shock_of,
+    system_of,
+)
+from tests.numba_reference import assert_same, reference
 from tests.validated import scheme_options
 
 # the schemes whose general path (the relations' path) is a compiled loop
@@ -240,10 +249,11 @@ def run(monkeypatch, compiled, rows, scheme="RUNGE_KUTTA_54", diagonal=True, t_e
     )  # fmt: skip
 
 
-def both(monkeypatch, rows, **kw):
-    """The run with the C++ loops and with numba's, checked bit for bit."""
+def both(request, monkeypatch, rows, **kw):
+    """The run with the C++ loops, checked bit for bit against numba's (its
+    fingerprint, tests.numba_reference); the C++ run's result."""
     compiled = run(monkeypatch, True, rows, **kw)
-    numba = run(monkeypatch, False, rows, **kw)
+    numba = numba_run(request, monkeypatch, rows, runner=run, **kw)
     assert_same_bits(compiled, numba)
     return compiled
 
@@ -367,9 +377,9 @@ CASES = {
 
 
 @pytest.mark.parametrize("case", list(CASES))
-def test_each_relation_gives_numbas_bits(monkeypatch, case):
+def test_each_relation_gives_numbas_bits(request, monkeypatch, case):
     rows, check, options = CASES[case]
-    result = both(monkeypatch, rows, **options)
+    result = both(request, monkeypatch, rows, **options)
     check(result)
 
 
@@ -395,9 +405,9 @@ def every_relation(rng):
 
 @pytest.mark.parametrize("variant", ["diagonal", "full matrices, supports"])
 @pytest.mark.parametrize("scheme", GENERAL)
-def test_every_relation_with_shocks_on_every_general_path(monkeypatch, scheme, variant):
+def test_every_relation_with_shocks_on_every_general_path(request, monkeypatch, scheme, variant):
     diagonal = variant == "diagonal"
-    result = both(monkeypatch, every_relation, scheme=scheme, diagonal=diagonal,
+    result = both(request, monkeypatch, every_relation, scheme=scheme, diagonal=diagonal,
                   supports=not diagonal)  # fmt: skip
     # the DIS_CHOC rows hit their obstacles, every law row has a force or a moment
     assert np.any(column(result, 0, 0) > 0.0) and np.any(column(result, 7, 0) > 0.0)
@@ -441,15 +451,22 @@ def failing_run(monkeypatch, compiled, rows, scheme):
     return str(error.value), seen
 
 
+def failure(monkeypatch, compiled: bool, rows, scheme) -> dict:
+    """What the comparison of the failing runs reads: the error, the instant it
+    names and the internal variables, the C++ loop run when ``compiled``
+    (else numba's)."""
+    message, seen = failing_run(monkeypatch, compiled, rows, scheme)
+    assert (seen["loop"] is not None) == compiled  # C++, else numba's
+    return {"message": message, "t": seen["t"], "vint": seen["vint"]}
+
+
 @pytest.mark.parametrize("scheme", ["RUNGE_KUTTA_54", "DEVOGE"])
 @pytest.mark.parametrize("case", list(FAILURES))
-def test_a_law_that_fails_ends_the_run_as_numbas(monkeypatch, case, scheme):
-    message, compiled = failing_run(monkeypatch, True, FAILURES[case], scheme)
-    numba_message, numba = failing_run(monkeypatch, False, FAILURES[case], scheme)
-    assert compiled["loop"] is not None and numba["loop"] is None  # C++, then numba's
-    assert message == numba_message and "could not be evaluated" in message
-    assert compiled["t"] == numba["t"] and compiled["t"] > 0.0
-    np.testing.assert_array_equal(compiled["vint"], numba["vint"])
+def test_a_law_that_fails_ends_the_run_as_numbas(request, monkeypatch, case, scheme):
+    compiled = failure(monkeypatch, True, FAILURES[case], scheme)
+    numba = reference(request, lambda: failure(monkeypatch, False, FAILURES[case], scheme))
+    assert_same(compiled, numba, "the failure")
+    assert "could not be evaluated" in compiled["message"] and compiled["t"] > 0.0
     assert np.isnan(compiled["vint"]).any()
 
 
@@ -457,7 +474,7 @@ def test_a_law_that_fails_ends_the_run_as_numbas(monkeypatch, case, scheme):
 
 
 @pytest.mark.parametrize("scheme", ["RUNGE_KUTTA_54", "TRBDF2"])
-def test_energy_balance_with_laws(monkeypatch, scheme):
-    result = both(monkeypatch, every_relation, scheme=scheme, energy=True)
+def test_energy_balance_with_laws(request, monkeypatch, scheme):
+    result = both(request, monkeypatch, every_relation, scheme=scheme, energy=True)
     work = result.energy[:, E.C_TRAV_NL]
     assert np.all(np.isfinite(result.energy)) and np.ptp(work) > 0.0

@@ -19,11 +19,10 @@ from asterlite.fem.constraints import eliminate
 from asterlite.harmonic import ldl, physical
 from asterlite.io.export import describe_run
 from asterlite.runtime.session import Session
+from tests.numba_reference import assert_same, fingerprint, reference
 
-pytestmark = [
-    pytest.mark.usefixtures("needs_native", "needs_ldl"),
-    pytest.mark.xdist_group("numba-reference"),
-]
+# numba's side is its stored fingerprints (tests.numba_reference)
+pytestmark = pytest.mark.usefixtures("needs_native", "needs_ldl")
 
 I32, I64 = np.int32, np.int64
 
@@ -38,9 +37,27 @@ def needs_ldl():
     pytest.skip("asterlite.dynamics.native._ldl is not built")
 
 
-def same_bits(a, b) -> bool:
-    a, b = np.ascontiguousarray(a), np.ascontiguousarray(b)
-    return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+def exact(value):
+    """``value`` (arrays in dicts, lists, tuples) for a fingerprint to the
+    bit, NaNs aside: a float or complex array as its float parts (each NaN
+    part alike, the other part of a complex NaN kept) and the signs of those
+    that are not NaN (a fingerprint takes -0.0 for 0.0). Which of two NaNs
+    an addition or product passes on is the compiler's choice of operand
+    order (LLVM's and GCC's differ); IEEE 754 leaves it open."""
+    if isinstance(value, dict):
+        return {key: exact(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [exact(item) for item in value]
+    if not isinstance(value, np.ndarray) or value.dtype.kind not in "fc":
+        return value
+    array = np.ascontiguousarray(value)
+    parts = np.atleast_1d(array).view(array.real.dtype)
+    return {
+        "dtype": array.dtype.str,
+        "shape": list(array.shape),
+        "parts": parts,
+        "signs": np.signbit(parts) & ~np.isnan(parts),
+    }
 
 
 # ----------------------------------------------------------------------------- matrices
@@ -123,22 +140,17 @@ def numba_route(monkeypatch):
     return Route
 
 
-def analyses(numba_route, a, perm, upper, limit=None):
-    """ldl.analyse on numba's kernels and on the C++ ones."""
-    caller = sp.csc_matrix(sp.triu(a)) if upper else a
-    found = []
-    for numba in (True, False):
-        with numba_route(numba):
-            found.append(
-                ldl.analyse(caller.indptr, caller.indices, a.shape[0], perm, limit, upper=upper)
-            )
-    return caller, found
+def analysed(caller, perm, upper, limit=None):
+    """ldl.analyse of ``caller``'s pattern (on the route of the caller's
+    numba_route, if any)."""
+    return ldl.analyse(caller.indptr, caller.indices, caller.shape[0], perm, limit, upper=upper)
 
 
-def assert_same_analysis(numba, compiled):
-    for field in ("perm", "upper_ptr", "upper_idx", "source", "parent", "lp"):
-        assert same_bits(getattr(numba, field), getattr(compiled, field)), field
-    assert numba.n == compiled.n
+ANALYSIS = ("perm", "upper_ptr", "upper_idx", "source", "parent", "lp", "n")
+
+
+def analysis_fields(analysis) -> dict:
+    return {field: getattr(analysis, field) for field in ANALYSIS}
 
 
 # ----------------------------------------------------------------------------- kernels
@@ -164,30 +176,38 @@ CASES = [
 
 @pytest.mark.parametrize("upper", [False, True], ids=["full", "upper"])
 @pytest.mark.parametrize(("kind", "n", "order"), CASES)
-def test_analysis_factor_and_solve_give_numbas_bits(numba_route, kind, n, order, upper):
+def test_analysis_factor_and_solve_give_numbas_bits(request, numba_route, kind, n, order, upper):
     rng = np.random.default_rng([n, len(kind), len(order), upper])
     a = values_on(pattern(kind, n, rng), rng)
     perm = permutation(order, n, rng)
-    caller, (reference, analysis) = analyses(numba_route, a, perm, upper)
-    assert_same_analysis(reference, analysis)
-    assert reference.upper_ptr.dtype == np.int32  # ldl.analyse's own index type here
-    data = caller.data
+    caller = sp.csc_matrix(sp.triu(a)) if upper else a
     rhs = rng.standard_normal(n) + 1j * rng.standard_normal(n)
-    results = []
-    for numba in (True, False):
-        with numba_route(numba):
+
+    def outcome(compiled: bool) -> dict:
+        """The analysis, then the factor and the solution, or the zero pivot."""
+        with numba_route(not compiled):
+            analysis = analysed(caller, perm, upper)
+            found = analysis_fields(analysis)
             try:
-                factor = ldl.factorise(analysis, data)
+                factor = ldl.factorise(analysis, caller.data)
             except ldl.ZeroPivot as pivot:
-                results.append(("pivot", pivot.args))
-                continue
-            results.append((factor.li, factor.lx, factor.d, factor.solve(rhs)))
-    if isinstance(results[0][0], str):
-        assert kind == "holes" and results[1] == results[0]
+                return {**found, "pivot": pivot.args}
+            return {
+                **found,
+                "li": factor.li,
+                "lx": factor.lx,
+                "d": factor.d,
+                "x": factor.solve(rhs),
+            }
+
+    compiled = outcome(True)
+    numba = reference(request, lambda: exact(outcome(False)))
+    assert_same(exact(compiled), numba, "the analysis, factor and solve")
+    assert compiled["upper_ptr"].dtype == np.int32  # ldl.analyse's own index type here
+    if "pivot" in compiled:
+        assert kind == "holes"
         return
-    for numba_array, compiled_array in zip(*results, strict=True):
-        assert same_bits(numba_array, compiled_array)
-    x = results[1][-1]
+    x = compiled["x"]
     np.testing.assert_allclose(a @ x, rhs, atol=1e-9 * np.abs(rhs).max())
 
 
@@ -203,82 +223,102 @@ MIXES = [
 ]
 
 
-def direct_kernels(a, perm, mix, rng):
-    """The three kernels called directly on both sides with the index types
-    ``mix``: their returns and every array they write."""
+def kernel_inputs(a, perm, mix, rng) -> dict:
+    """The kernels' arguments, with the index types ``mix``, and a right-hand side."""
     pointers, lps, parents, rows = mix
     analysis = ldl.analyse(a.indptr, a.indices, a.shape[0], perm)
-    n, fill = analysis.n, analysis.fill
-    ap = analysis.upper_ptr.astype(pointers)
-    ai = analysis.upper_idx.astype(pointers)
-    values = np.ascontiguousarray(a.data[analysis.source])
-    rhs = rng.standard_normal(n) + 1j * rng.standard_normal(n)
-    out = []
-    for kernels in (
-        (ldl._symbolic, ldl._numeric, ldl._solve),
-        (ldl._ldl.symbolic, ldl._ldl.numeric, ldl._ldl.solve),
-    ):
-        symbolic, numeric, solve = kernels
-        parent, lnz, total = symbolic(n, ap, ai, np.iinfo(np.int64).max)
-        assert parent.dtype == lnz.dtype == np.int64 and isinstance(total, int)
-        lp = np.zeros(n + 1, dtype=lps)
-        np.cumsum(lnz, out=lp[1:])
-        li = np.zeros(fill, rows)
-        lx = np.zeros(fill, np.complex128)
-        d = np.zeros(n, np.complex128)
-        status = numeric(n, ap, ai, values, lp, parent.astype(parents), li, lx, d)
-        x = rhs.copy()
-        if status < 0:
-            assert solve(n, lp, li, lx, d, x) is None
-        out.append((parent, lnz, total, status, li, lx, d, x))
-    return out
+    n = analysis.n
+    return {
+        "n": n,
+        "fill": analysis.fill,
+        "ap": analysis.upper_ptr.astype(pointers),
+        "ai": analysis.upper_idx.astype(pointers),
+        "values": np.ascontiguousarray(a.data[analysis.source]),
+        "rhs": rng.standard_normal(n) + 1j * rng.standard_normal(n),
+        "mix": mix,
+    }
+
+
+def direct_kernels(inputs, compiled: bool) -> dict:
+    """The three kernels called directly (the C++ ones, else numba's) on
+    ``inputs`` (:func:`kernel_inputs`): their returns (and the types of the
+    integers) and every array they write."""
+    if compiled:
+        symbolic, numeric, solve = ldl._ldl.symbolic, ldl._ldl.numeric, ldl._ldl.solve
+    else:
+        symbolic, numeric, solve = ldl._symbolic, ldl._numeric, ldl._solve
+    n, fill, ap, ai, values = (inputs[name] for name in ("n", "fill", "ap", "ai", "values"))
+    _, lps, parents, rows = inputs["mix"]
+    parent, lnz, total = symbolic(n, ap, ai, np.iinfo(np.int64).max)
+    assert parent.dtype == lnz.dtype == np.int64 and isinstance(total, int)
+    lp = np.zeros(n + 1, dtype=lps)
+    np.cumsum(lnz, out=lp[1:])
+    li = np.zeros(fill, rows)
+    lx = np.zeros(fill, np.complex128)
+    d = np.zeros(n, np.complex128)
+    status = numeric(n, ap, ai, values, lp, parent.astype(parents), li, lx, d)
+    x = inputs["rhs"].copy()
+    if status < 0:
+        assert solve(n, lp, li, lx, d, x) is None
+    return {
+        "parent": parent, "lnz": lnz, "total": total, "total_type": type(total),
+        "status": status, "status_type": type(status), "li": li, "lx": lx, "d": d, "x": x,
+    }  # fmt: skip
 
 
 @pytest.mark.parametrize("mix", MIXES, ids=lambda m: "-".join(t.__name__[3:] for t in m))
 @pytest.mark.parametrize(("kind", "n"), [("random", 150), ("grid", 100), ("holes", 40)])
-def test_the_kernels_on_every_mix_of_index_types(kind, n, mix):
+def test_the_kernels_on_every_mix_of_index_types(request, kind, n, mix):
     rng = np.random.default_rng([n, len(kind)])
     a = values_on(pattern(kind, n, rng), rng)
-    reference, compiled = direct_kernels(a, rng.permutation(n), mix, rng)
-    for numba_value, compiled_value in zip(reference, compiled, strict=True):
-        if isinstance(numba_value, np.ndarray):
-            assert same_bits(numba_value, compiled_value)
-        else:
-            assert type(numba_value) is type(compiled_value) and numba_value == compiled_value
-    assert compiled[3] == -1 or kind == "holes"
+    inputs = kernel_inputs(a, rng.permutation(n), mix, rng)
+    compiled = direct_kernels(inputs, True)
+    numba = reference(request, lambda: exact(direct_kernels(inputs, False)))
+    assert_same(exact(compiled), numba, "the kernels")
+    assert compiled["status"] == -1 or kind == "holes"
 
 
 @pytest.mark.parametrize("upper", [False, True], ids=["full", "upper"])
 @pytest.mark.parametrize("share", [0.0, 0.3, 0.7, 0.95])
-def test_a_fill_limit_stops_the_analysis_where_numbas_does(numba_route, share, upper):
+def test_a_fill_limit_stops_the_analysis_where_numbas_does(request, numba_route, share, upper):
     rng = np.random.default_rng(7)
     n = 300
     a = values_on(pattern("random", n, rng), rng)
     perm = rng.permutation(n)
-    _, (whole, _) = analyses(numba_route, a, perm, upper)
+    caller = sp.csc_matrix(sp.triu(a)) if upper else a
+    with numba_route(False):
+        whole = analysed(caller, perm, upper)
+        row_counts = np.bincount(ldl.factorise(whole, caller.data).li, minlength=n)
     limit = int(share * whole.fill)
-    _, found = analyses(numba_route, a, perm, upper, limit)
-    assert found == [None, None]
-    # the kernels themselves: total -1, the same counts, the same tree on
-    # the columns reached (numba's parent is np.empty past them)
-    ap, ai = whole.upper_ptr, whole.upper_idx
-    parent, lnz, total = ldl._symbolic(n, ap, ai, limit)
-    parent_cpp, lnz_cpp, total_cpp = ldl._ldl.symbolic(n, ap, ai, limit)
-    assert total == total_cpp == -1
-    assert same_bits(lnz, lnz_cpp) and lnz.sum() > limit
     # each column k adds L's row k: the analysis stops at the first column
     # whose predecessors exceed the limit
-    caller = sp.csc_matrix(sp.triu(a)) if upper else a
-    row_counts = np.bincount(ldl.factorise(whole, caller.data).li, minlength=n)
     reached = int(np.searchsorted(np.cumsum(row_counts), limit, side="right")) + 1
     assert reached < n
-    assert same_bits(parent[:reached], parent_cpp[:reached])
     # a limit at the fill keeps the analysis; so does one that only the
     # last column's terms exceed (the fill is compared before each column)
-    for kept_limit in (whole.fill, whole.fill - row_counts[-1]):
-        _, kept = analyses(numba_route, a, perm, upper, kept_limit)
-        assert_same_analysis(*kept)
-        assert_same_analysis(whole, kept[1])
+    kept_limits = (whole.fill, whole.fill - int(row_counts[-1]))
+
+    def outcome(compiled: bool) -> dict:
+        """The analyses without and with the limits, and the symbolic kernel
+        under the limit: its total, its counts, its tree on the columns
+        reached (numba's parent is np.empty past them)."""
+        with numba_route(not compiled):
+            found = {
+                "whole": analysis_fields(analysed(caller, perm, upper)),
+                "limited": analysed(caller, perm, upper, limit),
+                "kept": [analysis_fields(analysed(caller, perm, upper, k)) for k in kept_limits],
+            }
+        symbolic = ldl._ldl.symbolic if compiled else ldl._symbolic
+        parent, lnz, total = symbolic(n, whole.upper_ptr, whole.upper_idx, limit)
+        return {**found, "total": total, "lnz": lnz, "parent": parent[:reached]}
+
+    compiled = outcome(True)
+    numba = reference(request, lambda: exact(outcome(False)))
+    assert_same(exact(compiled), numba, "the analyses and the symbolic kernel")
+    assert compiled["limited"] is None
+    assert compiled["total"] == -1 and compiled["lnz"].sum() > limit
+    for kept in compiled["kept"]:
+        assert fingerprint(exact(kept)) == fingerprint(exact(compiled["whole"]))
 
 
 def factor_with_a_zero_pivot(n: int, column: int, rng) -> sp.csc_matrix:
@@ -296,29 +336,32 @@ def factor_with_a_zero_pivot(n: int, column: int, rng) -> sp.csc_matrix:
 
 
 @pytest.mark.parametrize("column", [0, 5, 13])
-def test_a_zero_pivot_raises_zero_pivot_as_numbas_does(numba_route, column):
+def test_a_zero_pivot_raises_zero_pivot_as_numbas_does(request, numba_route, column):
     rng = np.random.default_rng(column)
     n = 14
     a = factor_with_a_zero_pivot(n, column, rng)
-    _, (reference, analysis) = analyses(numba_route, a, np.arange(n), False)
-    assert_same_analysis(reference, analysis)
-    raised = []
-    for numba in (True, False):
-        with numba_route(numba), pytest.raises(ldl.ZeroPivot) as pivot:
-            ldl.factorise(analysis, a.data)
-        raised.append(pivot.value.args)
-    assert raised == [(column,), (column,)]
-    # the arrays written up to the zero pivot, by both
-    mix = (I32, I64, I64, I32)
-    reference, compiled = direct_kernels(a, np.arange(n), mix, rng)
-    assert reference[3] == compiled[3] == column
-    for numba_value, compiled_value in zip(reference[4:7], compiled[4:7], strict=True):
-        assert same_bits(numba_value, compiled_value)
-    d = compiled[6]
+    inputs = kernel_inputs(a, np.arange(n), (I32, I64, I64, I32), rng)
+
+    def outcome(compiled: bool) -> dict:
+        """The analysis, the zero pivot factorise raises, and the arrays the
+        kernel writes up to it."""
+        with numba_route(not compiled):
+            analysis = analysed(a, np.arange(n), False)
+            with pytest.raises(ldl.ZeroPivot) as pivot:
+                ldl.factorise(analysis, a.data)
+        kernels = direct_kernels(inputs, compiled)
+        written = {name: kernels[name] for name in ("status", "li", "lx", "d")}
+        return {**analysis_fields(analysis), "pivot": pivot.value.args, **written}
+
+    compiled = outcome(True)
+    numba = reference(request, lambda: exact(outcome(False)))
+    assert_same(exact(compiled), numba, "the zero pivot")
+    assert compiled["pivot"] == (column,) and compiled["status"] == column
+    d = compiled["d"]
     assert d[column] == 0 and np.all(d[:column] != 0)
 
 
-def test_a_zero_of_d_in_solve_raises_zero_division_as_numbas_does():
+def test_a_zero_of_d_in_solve_raises_zero_division_as_numbas_does(request):
     """_solve divides by d: numba raises ZeroDivisionError at an exact zero
     (either sign), x solved up to there; the C++ does the same. (_numeric
     cannot divide by zero: d[i] is a pivot checked nonzero at column i.)"""
@@ -330,18 +373,22 @@ def test_a_zero_of_d_in_solve_raises_zero_division_as_numbas_does():
     d = factor.d.copy()
     d[17] = complex(-0.0, 0.0)
     b = rng.standard_normal(n) + 1j * rng.standard_normal(n)
-    after = []
-    for solve in (ldl._solve, ldl._ldl.solve):
+
+    def after(solve) -> np.ndarray:
         x = b.copy()
         with pytest.raises(ZeroDivisionError, match="complex division by zero"):
             solve(n, analysis.lp, factor.li, factor.lx, d, x)
-        after.append(x)
-    assert same_bits(*after) and not np.array_equal(after[0], b)
+        return x
+
+    compiled = after(ldl._ldl.solve)
+    numba = reference(request, lambda: exact(after(ldl._solve)))
+    assert_same(exact(compiled), numba, "x solved up to the zero")
+    assert not np.array_equal(compiled, b)
 
 
-def test_infinities_and_nans_give_numbas_values():
+def test_infinities_and_nans_give_numbas_values(request):
     """Non-finite values in the matrix: the same bits but NaNs' signs (see
-    same_values)."""
+    exact)."""
     rng = np.random.default_rng(11)
     n = 40
     a = values_on(pattern("random", n, rng), rng)
@@ -350,37 +397,25 @@ def test_infinities_and_nans_give_numbas_values():
     a.data[20] = complex(1.0, -np.inf)
     analysis = ldl.analyse(a.indptr, a.indices, n, np.arange(n))
     values = np.ascontiguousarray(a.data[analysis.source])
-    out = []
-    for numeric in (ldl._numeric, ldl._ldl.numeric):
+
+    def outcome(numeric) -> dict:
         li = np.zeros(analysis.fill, np.int32)
         lx = np.zeros(analysis.fill, complex)
         d = np.zeros(n, complex)
         status = numeric(n, analysis.upper_ptr, analysis.upper_idx, values, analysis.lp,
                          analysis.parent, li, lx, d)  # fmt: skip
-        out.append((status, li, lx, d))
-    assert out[0][0] == out[1][0]
-    assert same_bits(out[0][1], out[1][1])
-    for numba_array, compiled_array in zip(out[0][2:], out[1][2:], strict=True):
-        assert same_values(numba_array, compiled_array)
-        assert np.isnan(numba_array).any()
+        return {"status": status, "li": li, "lx": lx, "d": d}
 
-
-def same_values(a, b) -> bool:
-    """The same bits, NaNs aside: both NaN at the same places. Which of two
-    NaNs an addition or product passes on is the compiler's choice of operand
-    order (LLVM's and GCC's differ); IEEE 754 leaves it open."""
-    a, b = np.ascontiguousarray(a), np.ascontiguousarray(b)
-    nan = np.isnan(a.view(np.float64))
-    return bool(
-        np.array_equal(nan, np.isnan(b.view(np.float64)))
-        and np.array_equal(a.view(np.uint64)[~nan], b.view(np.uint64)[~nan])
-    )
+    compiled = outcome(ldl._ldl.numeric)
+    numba = reference(request, lambda: exact(outcome(ldl._numeric)))
+    assert_same(exact(compiled), numba, "the factor")
+    assert np.isnan(compiled["lx"]).any() and np.isnan(compiled["d"]).any()
 
 
 SPECIAL = [0.0, -0.0, 1.0, -3.0, 0.25, np.inf, -np.inf, np.nan, 2.5e300, 1e-300]
 
 
-def test_special_values_divide_and_multiply_as_numbas_do():
+def test_special_values_divide_and_multiply_as_numbas_do(request):
     """Every pair of complex numbers made of zeros of either sign, infinities,
     NaN, huge and tiny values: quotients (x / d in _solve, both branches of
     Smith's algorithm and its NaN one; ZeroDivisionError at the same pairs)
@@ -388,8 +423,8 @@ def test_special_values_divide_and_multiply_as_numbas_do():
     numbers = [complex(r, i) for r in SPECIAL for i in SPECIAL]
     pairs = [(a, b) for a in numbers for b in numbers]
     empty = (np.zeros(0, np.int64), np.zeros(0, complex))
-    results = []
-    for solve in (ldl._solve, ldl._ldl.solve):
+
+    def outcome(solve) -> dict:
         quotients, products, zero = np.zeros(len(pairs), complex), np.zeros(len(pairs), complex), []
         for k, (a, b) in enumerate(pairs):
             x = np.array([a])
@@ -401,11 +436,14 @@ def test_special_values_divide_and_multiply_as_numbas_do():
             x = np.array([a, 0.0])
             solve(2, np.array([0, 1, 1]), np.array([1]), np.array([b]), np.ones(2, complex), x)
             products[k] = x[1]
-        results.append((quotients, products, zero))
-    (q0, p0, z0), (q1, p1, z1) = results
-    assert z0 == z1 and len(z0) == 4 * len(numbers)  # by +-0 +-0j
-    assert same_values(q0, q1) and same_values(p0, p1)
-    assert np.isnan(q0).any() and np.isinf(q0).any() and np.isinf(p0).any()
+        return {"quotients": quotients, "products": products, "zero": zero}
+
+    compiled = outcome(ldl._ldl.solve)
+    numba = reference(request, lambda: exact(outcome(ldl._solve)))
+    assert_same(exact(compiled), numba, "the quotients and products")
+    q, p = compiled["quotients"], compiled["products"]
+    assert len(compiled["zero"]) == 4 * len(numbers)  # by +-0 +-0j
+    assert np.isnan(q).any() and np.isinf(q).any() and np.isinf(p).any()
 
 
 def test_arrays_the_kernels_cannot_take_are_refused():
@@ -476,7 +514,7 @@ def ldl_sweeps(monkeypatch):
 
 
 @pytest.mark.parametrize("upper", [True, False], ids=["upper", "full"])
-def test_physical_sweeps_give_numbas_bits(numba_route, ldl_sweeps, monkeypatch, upper):
+def test_physical_sweeps_give_numbas_bits(request, numba_route, ldl_sweeps, monkeypatch, upper):
     """physical.solve on a 1331-unknown 3D grid with a viscous damping, one
     unknown clamped: the upper pencil in the factor's order (n >= LDL_MIN_SIZE)
     and the full pattern (LDL_MIN_SIZE lowered after prepare)."""
@@ -491,25 +529,27 @@ def test_physical_sweeps_give_numbas_bits(numba_route, ldl_sweeps, monkeypatch, 
     force = np.random.default_rng(5).standard_normal((2, n))
     frequencies = np.array([0.5, 3.0, 11.0, 27.0])
     coefficients = np.array([[1.0, 0.5j], [2.0, -1.0], [1j, 1.0], [0.3, 0.3]])
-    solved = []
-    for numba in (True, False):
+
+    def outcome(compiled: bool) -> dict:
         monkeypatch.setattr(physical, "_KNOWN_ORDERINGS", [])
         monkeypatch.setattr(physical, "LDL_MIN_SIZE", 1 if upper else 2 * n)
         sweep = physical.prepare(elimination, k_matrix, m_matrix, c_matrix)
         monkeypatch.setattr(physical, "LDL_MIN_SIZE", 1)
         assert sweep.symmetric and sweep.pencil.upper is upper and sweep.use_ldl
         calls = ldl_sweeps.calls
-        with numba_route(numba):
+        with numba_route(not compiled):
             depl, info = physical.solve(sweep, frequencies, force, coefficients)
         assert info["ldl"] == 4 and info["superlu"] == 0 and info["mumps"] == 0
-        assert (ldl_sweeps.calls > calls) is not numba
-        solved.append((depl, info["fill"], info["refined"]))
-    assert same_bits(solved[0][0], solved[1][0])
-    assert solved[0][1:] == solved[1][1:]
+        assert (ldl_sweeps.calls > calls) is compiled
+        return {"depl": depl, "fill": info["fill"], "refined": info["refined"]}
+
+    compiled = outcome(True)
+    numba = reference(request, lambda: exact(outcome(False)))
+    assert_same(exact(compiled), numba, "the sweep")
 
 
-def test_a_dyna_vibra_harm_phys_deck_gives_numbas_bits(numba_route, ldl_sweeps, monkeypatch,
-                                                        tmp_path):  # fmt: skip
+def test_a_dyna_vibra_harm_phys_deck_gives_numbas_bits(request, numba_route, ldl_sweeps,
+                                                        monkeypatch, tmp_path):  # fmt: skip
     """tests/test_harmonic.py's deck (viscous and hysteretic physical sweeps,
     the generalized ones beside them) with the LDLᵀ serving every size."""
     from tests.test_harmonic import DECK, MESH
@@ -519,18 +559,18 @@ def test_a_dyna_vibra_harm_phys_deck_gives_numbas_bits(numba_route, ldl_sweeps, 
     (tmp_path / "d.comm").write_text(DECK)
     export = tmp_path / "d.export"
     export.write_text("P time_limit 300\nF comm d.comm D 1\nF mail d.mail D 20\n")
-    runs = []
-    for numba in (True, False):
+
+    def outcome(compiled: bool) -> dict:
+        """The fields of VISC and HYST, and the deck's test values."""
         calls = ldl_sweeps.calls
-        with numba_route(numba):
-            session = Session(describe_run(export), output_dir=tmp_path / f"out{numba}")
+        with numba_route(not compiled):
+            session = Session(describe_run(export), output_dir=tmp_path / f"out{not compiled}")
             session.run_all()
-        assert (ldl_sweeps.calls > calls) is not numba
-        runs.append(session)
-    for name in ("VISC", "HYST"):
-        fields = [run.namespace[name].fields for run in runs]
-        assert fields[0].keys() == fields[1].keys() and "DEPL" in fields[0]
-        for field in fields[0]:
-            assert same_bits(fields[0][field], fields[1][field]), (name, field)
-    values = [[record.value for record in run.tests] for run in runs]
-    assert values[0] == values[1] and values[0]
+        assert (ldl_sweeps.calls > calls) is compiled
+        found = {name: dict(session.namespace[name].fields) for name in ("VISC", "HYST")}
+        return {**found, "tests": [record.value for record in session.tests]}
+
+    compiled = outcome(True)
+    numba = reference(request, lambda: exact(outcome(False)))
+    assert_same(exact(compiled), numba, "the deck's results")
+    assert "DEPL" in compiled["VISC"] and "DEPL" in compiled["HYST"] and compiled["tests"]

@@ -22,15 +22,16 @@ from tests.native_runs import (
     GEOMETRIES,
     N_MODES,
     assert_same_bits,
+    numba_run,
     run,
     shock_of,
     system_of,
 )
+from tests.numba_reference import assert_same, reference
 from tests.validated import scheme_options
 
-# numba's loops, the reference, compile on their first use here (the warmup
-# leaves the loops the C++ ones serve): once, on one worker
-pytestmark = [pytest.mark.usefixtures("needs_native"), pytest.mark.xdist_group("numba-reference")]
+# numba's side is its stored fingerprints (tests.numba_reference)
+pytestmark = pytest.mark.usefixtures("needs_native")
 
 SCHEME = "NEWMARK"
 
@@ -39,10 +40,11 @@ def options(**fields):
     return scheme_options(SCHEME, **fields)
 
 
-def both(monkeypatch, **args):
-    """The run of ``args`` with the C++ loop, then with numba's."""
+def both(request, monkeypatch, **args):
+    """The run of ``args`` with the C++ loop, then numba's (its fingerprint,
+    tests.native_runs.numba_run)."""
     args.setdefault("scheme", SCHEME)
-    return run(monkeypatch, True, **args), run(monkeypatch, False, **args)
+    return run(monkeypatch, True, **args), numba_run(request, monkeypatch, **args)
 
 
 def impacts(result) -> bool:
@@ -61,21 +63,23 @@ def test_newmark_is_compiled():
 
 @pytest.mark.parametrize("geometry", GEOMETRIES)
 @pytest.mark.parametrize("diagonal", [True, False])
-def test_every_obstacle_gives_numbas_bits(monkeypatch, geometry, diagonal):
+def test_every_obstacle_gives_numbas_bits(request, monkeypatch, geometry, diagonal):
     compiled, numba = both(
-        monkeypatch, geometry=geometry, diagonal=diagonal, norm_obst=(0.3, 0.9, 0.3)
+        request, monkeypatch, geometry=geometry, diagonal=diagonal, norm_obst=(0.3, 0.9, 0.3)
     )
-    assert impacts(numba) and rebuilt(numba)
+    assert impacts(compiled) and rebuilt(compiled)
     assert_same_bits(compiled, numba)
 
 
 @pytest.mark.parametrize("friction", ["none", "one-way", "both"])
 @pytest.mark.parametrize("diagonal", [True, False])
-def test_every_friction_gives_numbas_bits(monkeypatch, friction, diagonal):
-    compiled, numba = both(monkeypatch, geometry="BI_CERCLE", friction=friction, diagonal=diagonal)
-    assert impacts(numba)
+def test_every_friction_gives_numbas_bits(request, monkeypatch, friction, diagonal):
+    compiled, numba = both(
+        request, monkeypatch, geometry="BI_CERCLE", friction=friction, diagonal=diagonal
+    )
+    assert impacts(compiled)
     if friction != "none":
-        assert (numba.vint[:, 0, C.V_FT1] != 0).any()
+        assert (compiled.vint[:, 0, C.V_FT1] != 0).any()
     assert_same_bits(compiled, numba)
 
 
@@ -86,11 +90,11 @@ PAIRS = [(0.3025, 0.6), (0.2, 0.5), (1.0 / 6.0, 0.5), (0.4, 0.7)]
 
 @pytest.mark.parametrize("beta, gamma", PAIRS)
 @pytest.mark.parametrize("diagonal", [True, False])
-def test_beta_and_gamma_give_numbas_bits(monkeypatch, beta, gamma, diagonal):
+def test_beta_and_gamma_give_numbas_bits(request, monkeypatch, beta, gamma, diagonal):
     chosen = options(beta=beta, gamma=gamma)
     args = dict(geometry="CERCLE", diagonal=diagonal, supports=True)
-    compiled, numba = both(monkeypatch, options=chosen, **args)
-    assert impacts(numba) and rebuilt(numba)
+    compiled, numba = both(request, monkeypatch, options=chosen, **args)
+    assert impacts(compiled) and rebuilt(compiled)
     assert_same_bits(compiled, numba)
     default = run(monkeypatch, True, scheme=SCHEME, **args)
     assert not np.array_equal(default.depl, compiled.depl)  # the pair was used
@@ -98,12 +102,12 @@ def test_beta_and_gamma_give_numbas_bits(monkeypatch, beta, gamma, diagonal):
 
 @pytest.mark.parametrize("geometry", ["PLAN_Z", "DISCRET", "BI_PLAN_Y", "BI_CERC_INT"])
 @pytest.mark.parametrize("diagonal", [True, False])
-def test_forces_at_the_step_start_give_numbas_bits(monkeypatch, geometry, diagonal):
+def test_forces_at_the_step_start_give_numbas_bits(request, monkeypatch, geometry, diagonal):
     """code_aster 13-15's NEWMARK: the forces evaluated after each update,
     for the next step (scheme_newmark.start_force)."""
     args = dict(geometry=geometry, diagonal=diagonal, norm_obst=(0.3, 0.9, 0.3))
-    compiled, numba = both(monkeypatch, options=options(force_at_step_start=True), **args)
-    assert impacts(numba) and rebuilt(numba)
+    compiled, numba = both(request, monkeypatch, options=options(force_at_step_start=True), **args)
+    assert impacts(compiled) and rebuilt(compiled)
     assert_same_bits(compiled, numba)
     today = run(monkeypatch, True, scheme=SCHEME, **args)
     assert not np.array_equal(today.depl, compiled.depl)  # the option was followed
@@ -112,29 +116,29 @@ def test_forces_at_the_step_start_give_numbas_bits(monkeypatch, geometry, diagon
 @pytest.mark.parametrize("at_start", [False, True])
 @pytest.mark.parametrize("diagonal", [True, False])
 @pytest.mark.parametrize("geometry", ["CERCLE", "BI_PLAN_Z"])
-def test_support_motions_give_numbas_bits(monkeypatch, geometry, diagonal, at_start):
+def test_support_motions_give_numbas_bits(request, monkeypatch, geometry, diagonal, at_start):
     compiled, numba = both(
-        monkeypatch, geometry=geometry, diagonal=diagonal, supports=True, pas_arch=1,
+        request, monkeypatch, geometry=geometry, diagonal=diagonal, supports=True, pas_arch=1,
         options=options(force_at_step_start=at_start),
     )  # fmt: skip
-    assert impacts(numba)
+    assert impacts(compiled)
     assert_same_bits(compiled, numba)
 
 
 @pytest.mark.parametrize("formula", range(len(FORMULAS)))
 @pytest.mark.parametrize("at_start", [False, True])
-def test_formula_loads_give_numbas_bits(monkeypatch, formula, at_start):
+def test_formula_loads_give_numbas_bits(request, monkeypatch, formula, at_start):
     diagonal = formula % 2 == 0
     compiled, numba = both(
-        monkeypatch, formula=formula, diagonal=diagonal,
+        request, monkeypatch, formula=formula, diagonal=diagonal,
         options=options(force_at_step_start=at_start),
     )  # fmt: skip
     assert_same_bits(compiled, numba)
 
 
-def test_archiving_every_step_gives_numbas_bits(monkeypatch):
-    compiled, numba = both(monkeypatch, geometry="BI_CERCLE", diagonal=False, pas_arch=1)
-    assert len(numba.times) > 1000
+def test_archiving_every_step_gives_numbas_bits(request, monkeypatch):
+    compiled, numba = both(request, monkeypatch, geometry="BI_CERCLE", diagonal=False, pas_arch=1)
+    assert len(compiled.times) > 1000
     assert_same_bits(compiled, numba)
 
 
@@ -151,19 +155,20 @@ def failure(monkeypatch, compiled: bool, system, spec, chosen) -> str:
 
 
 @pytest.mark.parametrize("at_start", [False, True])
-def test_a_diverging_shock_stops_both_alike(monkeypatch, at_start):
+def test_a_diverging_shock_stops_both_alike(request, monkeypatch, at_start):
     """Absurd shock stiffness: the run stops with the same error on both."""
     rng = np.random.default_rng(3)
     system = system_of(True, rng)
     spec = shock_of("PLAN_Y", rng, "both", (1.0, 0.0, 0.0))
     spec.k_n, spec.c_n = 1.0e30, 1.0e20
     chosen = options(force_at_step_start=at_start)
-    outcomes = [failure(monkeypatch, compiled, system, spec, chosen) for compiled in (True, False)]
-    assert outcomes[0] == outcomes[1]
+    compiled = failure(monkeypatch, True, system, spec, chosen)
+    numba = reference(request, lambda: failure(monkeypatch, False, system, spec, chosen))
+    assert_same(compiled, numba, "the failure")
 
 
 @pytest.mark.parametrize("diagonal", [True, False])
-def test_an_unstable_run_stops_both_alike(monkeypatch, diagonal):
+def test_an_unstable_run_stops_both_alike(request, monkeypatch, diagonal):
     """β near 0 far past the stability limit: q overflows, the run stops
     (STATUS_NOT_FINITE) with the same error on both."""
     rng = np.random.default_rng(5)
@@ -172,6 +177,7 @@ def test_an_unstable_run_stops_both_alike(monkeypatch, diagonal):
     spec = shock_of("CERCLE", rng, "none", (1.0, 0.0, 0.0))
     spec.gap = 1.0  # never touched
     chosen = options(beta=1.0e-4, gamma=0.5)
-    outcomes = [failure(monkeypatch, compiled, system, spec, chosen) for compiled in (True, False)]
-    assert outcomes[0] == outcomes[1]
-    assert "non-finite values" in outcomes[0]
+    compiled = failure(monkeypatch, True, system, spec, chosen)
+    numba = reference(request, lambda: failure(monkeypatch, False, system, spec, chosen))
+    assert_same(compiled, numba, "the failure")
+    assert "non-finite values" in compiled

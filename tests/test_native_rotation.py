@@ -31,12 +31,12 @@ from tests.native_runs import (
     shock_of,
     system_of,
 )
+from tests.numba_reference import assert_same, reference
 from tests.test_dynamics_specialised import Sampled, Table
 from tests.validated import scheme_options
 
-# numba's kernels, the reference, come from its cache (asterlite warmup) or compile on
-# their first use here: once, on one worker
-pytestmark = [pytest.mark.usefixtures("needs_native"), pytest.mark.xdist_group("numba-reference")]
+# numba's side is its stored fingerprints (tests.numba_reference)
+pytestmark = pytest.mark.usefixtures("needs_native")
 
 DT = 2.0e-5
 SCHEMES = [entry.name for entry in S.TABLE if entry.shared_loops]
@@ -161,23 +161,26 @@ def rotating_run(monkeypatch, compiled, scheme="NEWMARK", geometry="CERCLE", dia
     return result, len(calls)
 
 
-def assert_same_bits(compiled, numba):
-    (a, calls_a), (b, calls_b) = compiled, numba
-    assert calls_a == calls_b > 0
+def compared(run) -> dict:
+    """What the comparison of two runs reads: the loop's calls, the run's
+    information but its timings and loop name, and every archive."""
+    result, calls = run
     timing = ("integration_seconds", "compile_seconds", "loop")
-    assert {k: v for k, v in a.info.items() if k not in timing} == {
-        k: v for k, v in b.info.items() if k not in timing
-    }
+    fields = {"calls": calls}
+    fields["info"] = {k: v for k, v in result.info.items() if k not in timing}
     for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
-        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
+        fields[name] = getattr(result, name)
+    return fields
 
 
-def both(monkeypatch, **args):
-    """The run with the C++ loop, then with numba's, checked bit for bit."""
+def both(request, monkeypatch, **args):
+    """The run with the C++ loop, checked bit for bit against numba's (its
+    fingerprint, tests.numba_reference); the C++ run's result."""
     compiled = rotating_run(monkeypatch, True, **args)
-    numba = rotating_run(monkeypatch, False, **args)
-    assert_same_bits(compiled, numba)
-    return numba[0]
+    assert compiled[1] > 0
+    numba = reference(request, lambda: compared(rotating_run(monkeypatch, False, **args)))
+    assert_same(compared(compiled), numba, "the C++ run")
+    return compiled[0]
 
 
 def impacts(result) -> bool:
@@ -203,11 +206,11 @@ def test_the_codes_and_constants_are_pythons():
 
 @pytest.mark.parametrize("diagonal", [True, False], ids=["diagonal", "full"])
 @pytest.mark.parametrize("scheme", SCHEMES)
-def test_every_scheme_gives_numbas_bits(monkeypatch, scheme, diagonal):
+def test_every_scheme_gives_numbas_bits(request, monkeypatch, scheme, diagonal):
     """Every scheme's code through the dispatch, its operators refreshed at
     every step (NEWMARK's and TRBDF2's blocks, DEVOGE's M⁻¹C, M⁻¹K, H1, H2),
     impacts with friction on a circle."""
-    result = both(monkeypatch, scheme=scheme, diagonal=diagonal)
+    result = both(request, monkeypatch, scheme=scheme, diagonal=diagonal)
     assert impacts(result)
     if scheme in ("RUNGE_KUTTA_32", "RUNGE_KUTTA_54", "DEVOGE", "ADAPT_ORDRE1", "ADAPT_ORDRE2"):
         assert result.info["steps"] != round(0.03 / DT)  # the step adapted
@@ -215,33 +218,34 @@ def test_every_scheme_gives_numbas_bits(monkeypatch, scheme, diagonal):
 
 @pytest.mark.parametrize("speed", SPEEDS)
 @pytest.mark.parametrize("scheme", ["NEWMARK", "DEVOGE", "RUNGE_KUTTA_54"])
-def test_speeds_as_tables_formulas_and_samples(monkeypatch, scheme, speed):
-    both(monkeypatch, scheme=scheme, speed=speed, diagonal=False)
+def test_speeds_as_tables_formulas_and_samples(request, monkeypatch, scheme, speed):
+    both(request, monkeypatch, scheme=scheme, speed=speed, diagonal=False)
 
 
 @pytest.mark.parametrize("friction", ["both", "one-way", "none"])
 @pytest.mark.parametrize("geometry", GEOMETRIES)
-def test_every_obstacle(monkeypatch, geometry, friction):
+def test_every_obstacle(request, monkeypatch, geometry, friction):
     scheme = "TRBDF2" if friction == "both" else "ADAPT_ORDRE2"
-    result = both(monkeypatch, scheme=scheme, geometry=geometry, friction=friction)
+    result = both(request, monkeypatch, scheme=scheme, geometry=geometry, friction=friction)
     assert impacts(result)
 
 
 @pytest.mark.parametrize("scheme", ["DIFF_CENTRE", "NEWMARK", "ADAPT_ORDRE1"])
-def test_support_motions_and_formulas(monkeypatch, scheme):
+def test_support_motions_and_formulas(request, monkeypatch, scheme):
     for formula in range(len(FORMULAS)):
-        both(monkeypatch, scheme=scheme, supports=True, formula=formula, diagonal=formula % 2 == 0)
+        diagonal = formula % 2 == 0
+        both(request, monkeypatch, scheme=scheme, supports=True, formula=formula, diagonal=diagonal)
 
 
-def test_without_shocks(monkeypatch):
-    result = both(monkeypatch, scheme="DEVOGE", shocks=False)
+def test_without_shocks(request, monkeypatch):
+    result = both(request, monkeypatch, scheme="DEVOGE", shocks=False)
     assert result.vint.shape[1] == 0
 
 
 @pytest.mark.parametrize("scheme", ["NEWMARK", "RUNGE_KUTTA_32", "ADAPT_ORDRE2"])
-def test_pauses_and_a_growing_archive(monkeypatch, scheme):
+def test_pauses_and_a_growing_archive(request, monkeypatch, scheme):
     """A pause every 97 steps and an archive at every step (grown as it fills)."""
-    both(monkeypatch, scheme=scheme, chunk=97, pas_arch=1)
+    both(request, monkeypatch, scheme=scheme, chunk=97, pas_arch=1)
 
 
 @pytest.mark.parametrize(
@@ -258,24 +262,25 @@ def test_pauses_and_a_growing_archive(monkeypatch, scheme):
         ("ADAPT_ORDRE2", {"vite_min": "MAXI"}),
     ],
 )
-def test_scheme_options(monkeypatch, scheme, fields):
-    both(monkeypatch, scheme=scheme, options=scheme_options(scheme, **fields), diagonal=False)
+def test_scheme_options(request, monkeypatch, scheme, fields):
+    options = scheme_options(scheme, **fields)
+    both(request, monkeypatch, scheme=scheme, options=options, diagonal=False)
 
 
-def test_rejected_steps_are_retried_with_the_matrices_of_the_step_start(monkeypatch):
+def test_rejected_steps_are_retried_with_the_matrices_of_the_step_start(request, monkeypatch):
     options = scheme_options("RUNGE_KUTTA_54", tolerance=1.0e-9, dt_max=8.0 * DT)
-    result = both(monkeypatch, scheme="RUNGE_KUTTA_54", options=options)
+    result = both(request, monkeypatch, scheme="RUNGE_KUTTA_54", options=options)
     assert result.info["rejected_steps"] > 0
 
 
-def test_the_same_failures(monkeypatch):
-    assert_same_failures(monkeypatch, rotating_run)
+def test_the_same_failures(request, monkeypatch):
+    assert_same_failures(request, monkeypatch, rotating_run)
 
 
 @pytest.mark.parametrize("scheme", ["RUNGE_KUTTA_54", "NEWMARK", "DEVOGE", "DIFF_CENTRE"])
-def test_every_relation_of_laws(monkeypatch, scheme):
+def test_every_relation_of_laws(request, monkeypatch, scheme):
     """The relations of laws/ (laws.hpp) beside DIS_CHOC rows, at variable speed."""
     from tests.test_native_laws import every_relation
 
-    result = both(monkeypatch, scheme=scheme, rows=every_relation, diagonal=False)
+    result = both(request, monkeypatch, scheme=scheme, rows=every_relation, diagonal=False)
     assert impacts(result)

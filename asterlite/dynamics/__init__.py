@@ -6,11 +6,13 @@ compiled even when a helper it inlines from another file of this package
 changed (an upgrade, a ``git pull``), and it would then run the old helper.
 So the kernels are kept in a folder named after a digest of every source
 of this package (:func:`kernel_cache_folder`): a change of any of them
-starts an empty cache, which ``asterlite warmup`` (or the first run, with
-its compile notice) fills. Importing this package therefore sets numba's
-cache folder for the process and its children (``NUMBA_CACHE_DIR``): under
-the one the user gave, else this package's ``__pycache__``, else the user's
-cache folder when the package is read-only.
+starts an empty cache, which ``asterlite warmup --numba`` (or the first run,
+with its compile notice) fills. So :func:`use_kernel_cache` sets numba's cache
+folder for the process and its children (``NUMBA_CACHE_DIR``) before numba
+is imported (:func:`asterlite.dynamics.jit.load`, the one place that imports
+it): under the one the user gave, else this package's ``__pycache__``, else
+the user's cache folder when the package is read-only. A run on the C++ loops
+never imports numba, and never reads the sources for their digest.
 """
 
 from __future__ import annotations
@@ -89,7 +91,10 @@ def kernel_cache_folder() -> Path:
     return Path(tempfile.mkdtemp(prefix="asterlite-kernels-")) / name
 
 
-def _use_kernel_cache() -> None:
+def use_kernel_cache() -> None:
+    """numba's cache folder (:func:`kernel_cache_folder`) for this process
+    and its children; called before numba is imported, and again by a test
+    that changes the environment."""
     folder = str(kernel_cache_folder())
     os.environ["NUMBA_CACHE_DIR"] = folder  # numba reads it when imported, children too
     config = sys.modules.get("numba.core.config")
@@ -108,6 +113,3 @@ def compile_estimate(name: str) -> float | None:
     compile notice's "~N s" and the warmup's longest-first order; nothing
     else depends on it."""
     return _compile_seconds().get(name)
-
-
-_use_kernel_cache()

@@ -20,6 +20,7 @@ import numpy as np
 from asterlite.dynamics import contact as C
 from asterlite.dynamics.forces import multiplier_at
 from asterlite.dynamics.formula import run_program
+from asterlite.dynamics.jit import interpreted
 from asterlite.errors import field as named
 
 # the loops' test (forces.all_finite): beyond this magnitude a value counts
@@ -81,7 +82,9 @@ class Culprit:
 
 def load_multipliers(excitation, t: float) -> np.ndarray:
     """The multiplier of each excitation row at t, evaluated as the loops
-    evaluate them (formula programs, tables, sampled functions)."""
+    evaluate them (formula programs, tables, sampled functions): by the
+    kernels' Python while numba is not imported (a run on the C++ loops
+    compiles nothing to word its error)."""
 
     rows = excitation.vectors.shape[0]
     values = np.zeros(rows)
@@ -90,14 +93,14 @@ def load_multipliers(excitation, t: float) -> np.ndarray:
     for e in range(rows):
         sampled = excitation.sampled[e] if e < len(excitation.sampled) else None
         if excitation.program_codes[e, 0] > 0:
-            values[e] = run_program(
+            values[e] = interpreted(run_program)(
                 excitation.program_codes, excitation.program_constants, e, t, stack
             )
         elif sampled is not None:
             values[e] = float(np.asarray(sampled.function.evaluate(np.array([t])))[0])
         else:
             count, left, right = (int(x) for x in excitation.layout[e])
-            values[e] = multiplier_at(
+            values[e] = interpreted(multiplier_at)(
                 excitation.abscissas, excitation.ordinates, e, count, left, right, t, cursors
             )
     return values

@@ -113,7 +113,9 @@ def load() -> None:
         return
     if _numba is None:
         from asterlite import progress, watchdog
+        from asterlite.dynamics import use_kernel_cache
 
+        use_kernel_cache()  # numba reads its cache folder when imported
         with watchdog.compiler_work():
             import numba
         _numba = numba
