@@ -15,7 +15,11 @@ Where they come from (``ASTERLITE_NUMBA_REFERENCE``):
   recorded from other sources, computes numba's result here instead (as
   ``live``), except in CI (``CI=true``) where the test fails at once, and
   ``test_the_stored_fingerprints_are_current`` fails, naming the command
-  that records them again;
+  that records them again. A file recorded on another platform
+  (:func:`platform_signature`: the C library and the CPU features numpy's
+  and the C library's math functions choose their code by, so results may
+  differ in their last bits) is not used: numba's side is computed here,
+  CI included (slower, not wrong);
 - ``live``: numba's result, computed now (nothing read or written);
 - ``record``: computed now and written to the file at the end of the
   session (``python tests/numba_reference.py``: the native tests in one
@@ -29,6 +33,7 @@ import importlib.metadata
 import json
 import math
 import os
+import platform
 import subprocess
 import sys
 from pathlib import Path
@@ -126,15 +131,42 @@ _stored: dict | None = None
 _recorded: dict[str, object] = {}
 
 
+def platform_signature() -> str:
+    """The machine, the C library and the CPU features that choose the code
+    of numpy's and the C library's math functions (their results may differ
+    in the last bits from one choice to the other)."""
+    from numpy._core._multiarray_umath import __cpu_features__ as features
+
+    chosen = sorted(name for name in MATH_FEATURES if features.get(name))
+    libc = "-".join(platform.libc_ver())
+    return f"{platform.machine()} {libc} {' '.join(chosen)}"
+
+
+#: numpy's dispatch targets of its float64 math (SVML on AVX512_SKX) and
+#: glibc's (FMA, AVX2 variants)
+MATH_FEATURES = ("FMA3", "AVX2", "AVX512F", "AVX512_SKX")
+
+
+def _store() -> dict:
+    try:
+        return json.loads(STORE.read_text())
+    except (OSError, ValueError):
+        return {}
+
+
+def same_platform() -> bool:
+    """Whether the file was recorded on a platform like this one."""
+    return _store().get("platform") == platform_signature()
+
+
 def stored() -> dict:
-    """The file's fingerprints if they were recorded from today's sources, else {}."""
+    """The file's fingerprints if they were recorded from today's sources on
+    a platform like this one, else {}."""
     global _stored
     if _stored is None:
-        try:
-            data = json.loads(STORE.read_text())
-        except (OSError, ValueError):
-            data = {}
-        _stored = data.get("entries", {}) if data.get("sources") == sources_digest() else {}
+        data = _store()
+        current = data.get("sources") == sources_digest() and same_platform()
+        _stored = data.get("entries", {}) if current else {}
     return _stored
 
 
@@ -150,7 +182,7 @@ def reference(request, compute):
         raise RuntimeError(f"{MODE_VARIABLE}=record runs in one process (-p no:xdist)")
     if chosen == "stored" and key in stored():
         return Stored(stored()[key])
-    if chosen == "stored" and os.environ.get("CI", "").lower() == "true":
+    if chosen == "stored" and os.environ.get("CI", "").lower() == "true" and same_platform():
         # CI does not compile numba's loops: a missing or outdated entry fails at once
         pytest.fail(f"{key}: no fingerprint of numba's result recorded from these sources{HINT}")
     result = fingerprint(compute())
@@ -207,15 +239,13 @@ def write_recorded() -> None:
     merged into those of the same sources."""
     if mode() != "record" or not _recorded:
         return
-    digest = sources_digest()
-    try:
-        data = json.loads(STORE.read_text())
-    except (OSError, ValueError):
-        data = {}
-    entries = data.get("entries", {}) if data.get("sources") == digest else {}
+    digest, where = sources_digest(), platform_signature()
+    data = _store()
+    same = data.get("sources") == digest and data.get("platform") == where
+    entries = data.get("entries", {}) if same else {}
     entries.update(_recorded)
     lines = [f"{json.dumps(key)}: {json.dumps(value)}" for key, value in sorted(entries.items())]
-    head = '{"sources": ' + json.dumps(digest) + ', "entries": {\n'
+    head = f'{{"sources": {json.dumps(digest)}, "platform": {json.dumps(where)}, "entries": {{\n'
     STORE.write_text(head + ",\n".join(lines) + "\n}}\n")
 
 
