@@ -154,9 +154,16 @@ def _store() -> dict:
         return {}
 
 
-def same_platform() -> bool:
-    """Whether the file was recorded on a platform like this one."""
-    return _store().get("platform") == platform_signature()
+def same_platform(data: dict | None = None) -> bool:
+    """Whether the file (``data``: as read) was recorded on a platform like this one."""
+    return (_store() if data is None else data).get("platform") == platform_signature()
+
+
+def _current_entries(data: dict) -> dict:
+    """The entries of the file ``data`` if it was recorded from today's
+    sources on a platform like this one, else {}."""
+    current = data.get("sources") == sources_digest() and same_platform(data)
+    return data.get("entries", {}) if current else {}
 
 
 def stored() -> dict:
@@ -164,9 +171,7 @@ def stored() -> dict:
     a platform like this one, else {}."""
     global _stored
     if _stored is None:
-        data = _store()
-        current = data.get("sources") == sources_digest() and same_platform()
-        _stored = data.get("entries", {}) if current else {}
+        _stored = _current_entries(_store())
     return _stored
 
 
@@ -239,13 +244,10 @@ def write_recorded() -> None:
     merged into those of the same sources."""
     if mode() != "record" or not _recorded:
         return
-    digest, where = sources_digest(), platform_signature()
-    data = _store()
-    same = data.get("sources") == digest and data.get("platform") == where
-    entries = data.get("entries", {}) if same else {}
-    entries.update(_recorded)
+    entries = {**_current_entries(_store()), **_recorded}
     lines = [f"{json.dumps(key)}: {json.dumps(value)}" for key, value in sorted(entries.items())]
-    head = f'{{"sources": {json.dumps(digest)}, "platform": {json.dumps(where)}, "entries": {{\n'
+    digest, where = json.dumps(sources_digest()), json.dumps(platform_signature())
+    head = f'{{"sources": {digest}, "platform": {where}, "entries": {{\n'
     STORE.write_text(head + ",\n".join(lines) + "\n}}\n")
 
 

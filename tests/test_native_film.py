@@ -28,6 +28,7 @@ from asterlite.dynamics.fluid_film import FluidFilm, film_row, integrate_film
 from asterlite.dynamics.model import build_shocks
 from asterlite.errors import NumericalError
 from tests.native_runs import FORMULAS, GEOMETRIES, N_MODES, shock_of, system_of
+from tests.native_runs import compared as run_fields
 from tests.numba_reference import assert_same, reference
 from tests.test_dynamics_specialised import Sampled, Table
 from tests.validated import scheme_options
@@ -155,14 +156,8 @@ def records(run: FilmRun) -> dict:
 
 def compared(run: FilmRun) -> dict:
     """What the comparison of two runs reads: the records, the run's
-    information but its timings and loop name, and every archive."""
-    result = run.result
-    timing = ("integration_seconds", "loop")
-    fields = {"records": records(run)}
-    fields["info"] = {k: v for k, v in result.info.items() if k not in timing}
-    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
-        fields[name] = getattr(result, name)
-    return fields
+    information and archives as native_runs.compared reads them."""
+    return {"records": records(run), **run_fields(run.result)}
 
 
 def both(request, monkeypatch, **args) -> FilmRun:

@@ -30,6 +30,7 @@ from tests.native_runs import (
     shock_of,
     system_of,
 )
+from tests.native_runs import compared as run_fields
 from tests.numba_reference import assert_same, reference
 from tests.test_dynamics_specialised import Sampled, Table
 from tests.validated import scheme_options
@@ -123,15 +124,10 @@ def implicit_run(monkeypatch, compiled, scheme="NEWMARK", geometries=("CERCLE",)
 
 def compared(run) -> dict:
     """What the comparison of two runs reads: the loop's calls (their
-    statuses), the treatment flags after each, the run's information but its
-    timings and loop name, every archive and the energy balance."""
+    statuses), the treatment flags after each, the run's information and
+    archives as native_runs.compared reads them."""
     result, calls, modes = run
-    timing = ("integration_seconds", "compile_seconds", "loop")
-    fields = {"calls": calls, "modes": np.array(modes)}
-    fields["info"] = {k: v for k, v in result.info.items() if k not in timing}
-    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info", "energy"):
-        fields[name] = getattr(result, name)
-    return fields
+    return {"calls": calls, "modes": np.array(modes), **run_fields(result)}
 
 
 def both(request, monkeypatch, **args):

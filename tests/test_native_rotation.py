@@ -31,6 +31,7 @@ from tests.native_runs import (
     shock_of,
     system_of,
 )
+from tests.native_runs import compared as run_fields
 from tests.numba_reference import assert_same, reference
 from tests.test_dynamics_specialised import Sampled, Table
 from tests.validated import scheme_options
@@ -163,14 +164,9 @@ def rotating_run(monkeypatch, compiled, scheme="NEWMARK", geometry="CERCLE", dia
 
 def compared(run) -> dict:
     """What the comparison of two runs reads: the loop's calls, the run's
-    information but its timings and loop name, and every archive."""
+    information and archives as native_runs.compared reads them."""
     result, calls = run
-    timing = ("integration_seconds", "compile_seconds", "loop")
-    fields = {"calls": calls}
-    fields["info"] = {k: v for k, v in result.info.items() if k not in timing}
-    for name in ("times", "order", "depl", "vite", "acce", "vint", "step_info"):
-        fields[name] = getattr(result, name)
-    return fields
+    return {"calls": calls, **run_fields(result)}
 
 
 def both(request, monkeypatch, **args):
