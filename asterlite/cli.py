@@ -21,6 +21,8 @@ from pathlib import Path
 from asterlite import __version__, progress
 from asterlite.errors import AsterliteError
 from asterlite.extras import MissingExtraError
+from asterlite.io.export import limit_refusal
+from asterlite.runtime import threads
 
 
 def _run(args) -> int:
@@ -42,6 +44,7 @@ def _run(args) -> int:
         except DeckNotFound as error:
             print(error, file=sys.stderr)
             return 2
+    threads.use_threads(threads.export_threads(deck))
     output = Path(args.output) if args.output else Path("asterlite-out") / deck.stem
     if (args.mpi or args.mpi_python) is not None and _select_mpi(args, output) is not None:
         return 2
@@ -187,6 +190,7 @@ def _sweep(args) -> int:
     if not deck.is_file():
         print(f"error: {deck}: no such deck", file=sys.stderr)
         return 2
+    threads.use_threads(threads.export_threads(deck))
     try:
         settings = [sweep.parse_setting(text) for text in args.set]
         sweep.variants(settings)  # rejects a name set twice before anything runs
@@ -241,6 +245,7 @@ def _converge(args) -> int:
     if not deck.is_file():
         print(f"error: {deck}: no such deck", file=sys.stderr)
         return 2
+    threads.use_threads(threads.export_threads(deck))
     try:
         schemes = converge.parse_schemes(args.schemes)
         extra = dict(converge.parse_keyword(text) for text in args.keyword or ())
@@ -291,6 +296,7 @@ def _sensitivity(args) -> int:
     if not deck.is_file():
         print(f"error: {deck}: no such deck", file=sys.stderr)
         return 2
+    threads.use_threads(threads.export_threads(deck))
 
     def progress(ulps, report):
         if not args.quiet:
@@ -374,8 +380,6 @@ def _limit_option(name: str):
     (``--time-limit inf`` or ``nan`` is a usage error, exit status 2)."""
 
     def parse(text: str) -> float:
-        from asterlite.io.export import limit_refusal
-
         refusal = limit_refusal(name, text)
         if refusal:
             raise argparse.ArgumentTypeError(refusal)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -73,3 +74,55 @@ def test_a_lines_carry_code_asters_arguments(tmp_path):
     write(export, "F comm a.comm D 1\nQ x y\n")
     with pytest.raises(ExportError, match="expected F, R, P or A"):
         read_export(export)
+
+
+def test_ncpus_is_the_runs_threads(tmp_path):
+    write(tmp_path / "t.comm", "DEBUT()\nFIN()\n")
+    two = write(tmp_path / "t.export", "P ncpus 2\nF comm t.comm D 1\n")
+    assert read_export(two).threads == 2
+    none = write(tmp_path / "u.export", "F comm t.comm D 1\n")
+    assert read_export(none).threads == 1  # code_aster's run_aster without P ncpus
+    assert describe_run(tmp_path / "t.comm").threads == 1
+
+
+@pytest.mark.parametrize("value", ["0", "two", "1.5", "", "-1", "5000"])
+def test_bad_ncpus_is_refused_where_it_is(tmp_path, value):
+    write(tmp_path / "t.comm", "DEBUT()\nFIN()\n")
+    export = write(tmp_path / "t.export", f"F comm t.comm D 1\nP ncpus {value}\n")
+    with pytest.raises(ExportError, match="P ncpus must be a whole number") as info:
+        read_export(export)
+    assert "t.export:2" in str(info.value)
+
+
+def test_a_run_sets_code_asters_thread_variable_before_numpy_loads(tmp_path):
+    """`asterlite run` runs on the export's P ncpus threads (OMP_NUM_THREADS,
+    which OpenBLAS reads when it loads), whatever the caller's environment."""
+    import os
+    import subprocess
+    import sys
+
+    write(tmp_path / "t.comm", "DEBUT()\nFIN()\n")
+    write(tmp_path / "t.export", "P ncpus 3\nF comm t.comm D 1\n")
+    probe = (
+        "import os, sys\n"
+        "from asterlite.cli import main\n"
+        f"status = main(['run', {str(tmp_path / 't.export')!r}, '-o', "
+        f"{str(tmp_path / 'out')!r}, '-q'])\n"
+        "print(status, os.environ.get('OMP_NUM_THREADS'), 'numpy' in sys.modules)\n"
+    )
+    env = dict(os.environ, OMP_NUM_THREADS="7")
+    done = subprocess.run(
+        [sys.executable, "-c", probe], capture_output=True, text=True, env=env, timeout=120
+    )
+    assert done.stdout.split() == ["0", "3", "True"], done.stderr
+
+
+def test_the_api_leaves_the_callers_threads(monkeypatch):
+    import numpy  # noqa: F401  (a caller of the API has its libraries loaded)
+
+    from asterlite.runtime import threads
+
+    monkeypatch.setenv(threads.VARIABLE, "5")
+    assert not threads.use_threads(2)  # numpy is loaded in this process
+    assert os.environ[threads.VARIABLE] == "5"
+    assert not threads.use_threads(None)

@@ -8,7 +8,8 @@ result into its own output folder first). ``P`` lines are run parameters;
 asterlite enforces two of them as code_aster does: ``time_limit`` (seconds
 for the whole run) and ``memory_limit`` (megabytes the run may allocate
 beyond what the process held when it started, as code_aster adds its
-start-up footprint to the limit). A bare ``.comm`` gets a synthetic export:
+start-up footprint to the limit), and runs with ``ncpus`` threads
+(:mod:`asterlite.runtime.threads`). A bare ``.comm`` gets a synthetic export:
 the deck itself, a sibling mesh on unit 20 and any sibling ``.comN``
 continuation files.
 """
@@ -53,6 +54,7 @@ class RunDescription:
     results: list[ResultFile] = field(default_factory=list)  # R lines, in order
     time_limit: float | None = None  # seconds (P time_limit)
     memory_limit: float | None = None  # megabytes (P memory_limit)
+    threads: int = 1  # P ncpus: threads of the run's numerical libraries
     # why a unit has no file, said when the deck reads it: where a bare deck's
     # mesh was looked for, or the meshes it could not choose between
     unmapped: dict[int, str] = field(default_factory=dict)
@@ -85,6 +87,8 @@ def read_export(path: Path) -> RunDescription:
             run.parameters[fields[1]] = " ".join(fields[2:]) if len(fields) > 2 else ""
             if fields[1] in LIMITS:
                 setattr(run, fields[1], _limit(fields, where))
+            elif fields[1] == "ncpus":
+                run.threads = _threads(fields, where)
             continue
         if fields[0] == "A":
             if len(fields) < 2:
@@ -135,6 +139,8 @@ LIMITS = ("time_limit", "memory_limit")
 # output: megabytes, a petabyte): beyond them the clocks and resource limits
 # that enforce a limit overflow (P time_limit 1e308 ended in an internal error)
 LIMIT_MAXIMA = {"time_limit": 1e9, "memory_limit": 1e9, "output_limit": 1e9}
+# P ncpus: code_aster reads a whole number of threads; more than this is a typo
+MAX_THREADS = 4096
 LIMIT_UNITS = {"time_limit": "seconds", "memory_limit": "MB", "output_limit": "MB"}
 # R-line types asterlite cannot make: code_aster's databases and folders
 NOT_PRODUCED = frozenset({"base", "bhdf", "repe"})
@@ -152,6 +158,20 @@ def _limit(fields: list[str], where: Location) -> float:
     if refusal:
         raise ExportError(f"P {refusal}, got {text!r}", where)
     return value
+
+
+def _threads(fields: list[str], where: Location) -> int:
+    text = fields[2] if len(fields) > 2 else ""
+    try:
+        count = int(text)
+    except ValueError:
+        count = 0
+    if not 1 <= count <= MAX_THREADS:
+        raise ExportError(
+            f"P ncpus must be a whole number of threads from 1 to {MAX_THREADS}, got {text!r}",
+            where,
+        )
+    return count
 
 
 def limit_refusal(name: str, value, zero_means_none: bool = True) -> str:
