@@ -20,8 +20,7 @@ def run(ctx, kw):
     if ctx.reuse is not None and ctx.reuse is kw["TABLE"]:
         # reuse=: the deck keeps the same concept, updated in place
         target = ctx.reuse
-        target.columns, target.types, target.rows = table.columns, table.types, table.rows
-        target.title = table.title
+        target.assign(table)
         return target
     return table
 

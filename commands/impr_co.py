@@ -29,7 +29,11 @@ def _describe_value(value) -> str:
 def describe(concept) -> list[str]:
     """Lines describing a concept: its type then its fields."""
     lines = [f"concept {concept.name or '?'} of type {concept.aster_type}"]
-    if dataclasses.is_dataclass(concept):
+    printed = getattr(concept, "printed_fields", None)
+    if printed is not None:
+        for name, value in printed().items():
+            lines.append(f"  {name}: {_describe_value(value)}")
+    elif dataclasses.is_dataclass(concept):
         for f in dataclasses.fields(concept):
             lines.append(f"  {f.name}: {_describe_value(getattr(concept, f.name))}")
     return lines

@@ -333,9 +333,10 @@ def restart_from(ctx, kw, occ, n_sect):
     origin = insts[-1]
     start = occ.get("INST_INIT")
     if start is not None and start < origin:
-        kept = [r for r in table.rows if r.get("INST") is None or r["INST"] <= start * (1 + 1e-3)]
-        table.rows[:] = kept
-        origin = [r["INST"] for r in kept if r.get("INST") is not None][-1]
+        instants = table.column("INST")
+        kept = [i for i, t in enumerate(instants) if t is None or t <= start * (1 + 1e-3)]
+        table.keep_rows(kept)
+        origin = [instants[i] for i in kept if instants[i] is not None][-1]
 
     def cumul(name):
         out = np.zeros(n_sect)
@@ -362,13 +363,13 @@ def new_tube(ctx, kw):
     if start is None:
         start = insts[-1]
     reset = 0
-    for row in table.rows:
+    for i, row in enumerate(table.iter_rows()):
         inst = row.get("INST")
         if inst is None or inst < start * (1 - 1e-6):
             continue
         if row.get("SECTEUR") is not None:
             for name in ("V_USUR_TUBE_SECT", "P_USUR_TUBE_SECT", "V_USUR_TUBE_CUMU"):
-                row[name] = 0.0
+                table.set_cell(name, i, 0.0)
             reset += 1
         elif "V_USUR_TUBE" in row:
             row["V_USUR_TUBE"] = row["P_USUR_TUBE"] = 0.0

@@ -510,10 +510,11 @@ def from_table(ctx, kw):
     for key in ("PARA_X", "PARA_Y"):
         if kw[key] not in table.types:
             ctx.error(f"table has no parameter {kw[key]!r}", key, kw)
-    rows = [r for r in table.rows if r.get(kw["PARA_X"]) is not None]
+    xs, ys = table.column(kw["PARA_X"]), table.column(kw["PARA_Y"])
+    kept = [i for i, x in enumerate(xs) if x is not None]
     return (
-        np.array([r[kw["PARA_X"]] for r in rows], dtype=float),
-        np.array([r.get(kw["PARA_Y"], np.nan) for r in rows]),
+        np.array([xs[i] for i in kept], dtype=float),
+        np.array([np.nan if ys[i] is None else ys[i] for i in kept]),
     )
 
 

@@ -188,7 +188,7 @@ def test_sparse_table_columns_hold_nan_or_none(no_optional):
     table.rows = [{"N": 1, "X": 0.5, "K": "a"}, {"N": 2}]
     data = frames.as_python(table)
     assert data["N"].tolist() == [1, 2] and np.isnan(data["X"][1]) and data["K"][1] is None
-    table.rows.append({"X": 1.0})
+    table.add_row({"X": 1.0})
     assert np.isnan(frames.as_python(table)["N"][2])  # a missing integer makes floats
 
 

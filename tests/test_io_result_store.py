@@ -249,8 +249,7 @@ def test_a_failed_save_leaves_the_file_as_it_was(tmp_path):
     broken = rich_transient()
     broken.name = "BROKEN"
     table = Table()
-    table.add_row({"X": 1.0})
-    table.rows[0]["X"] = "not a number"  # an R cell that cannot be written
+    table.add_row({"X": "\udcff"})  # a text cell that cannot be written (no UTF-8 form)
     broken.tables = {"T": table}
     with pytest.raises(ValueError):
         save_tran_gene(path, broken)

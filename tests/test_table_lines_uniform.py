@@ -71,10 +71,9 @@ def test_values_not_of_their_type_go_cell_by_cell():
         ("F_MAX", np.float64(2.0)),
     ):
         table = impact_table(REALS)
-        table.rows[1][column] = value  # rows made by other means than add_row
-        columns = list(table.columns)
-        assert uniform_lines(table.rows, columns, table.types, "E12.5") is None
-        assert table_lines(table) == cell_by_cell(table, columns, "E12.5")
+        rows = table.rows  # a copy: rows made by other means than a table's typed columns
+        rows[1][column] = value
+        assert uniform_lines(rows, list(table.columns), table.types, "E12.5") is None
     table = impact_table(REALS)
     assert uniform_lines(table.rows, list(table.columns), table.types, "F12.3") is None
 

@@ -1,19 +1,25 @@
-"""Tables (``table_sdaster``): named, typed columns and sparse rows.
+"""Tables (``table_sdaster``): named, typed columns, sparse cells.
 
 Owner: post-processing. A table keeps its parameters (columns) in order with
 code_aster's type codes (``R``, ``I``, ``C``, ``K8``, ``K16``, ``K24``...) and
-its rows as dicts; a row may lack some parameters (code_aster tables are
-sparse, e.g. POST_DYNA_MODA_T mixes IMPACT, GLOBAL and PROBA rows).
+its cells column by column: reals and integers in typed arrays (8 bytes a
+cell, plus one byte saying whether the cell is present), complexes and texts
+in lists; a row may lack some parameters (code_aster tables are sparse, e.g.
+POST_DYNA_MODA_T mixes IMPACT, GLOBAL and PROBA rows). Rows as dicts are
+built only when a reader asks for them (``row(i)``, ``iter_rows()``,
+``rows``: a fresh list, which changing does not change the table).
 
 Build one with ``Table()`` then ``add_row({...})`` (types are inferred for new
-parameters unless given with ``add_column``). Filter with ``filtered(...)``
-(FILTRE semantics), project with ``select(params)``, sort with ``sorted_by``.
+parameters unless given with ``add_column``), or many rows at once with
+``extend``. Filter with ``filtered(...)`` (FILTRE semantics), project with
+``select(params)``, sort with ``sorted_by``, pick rows with ``take``.
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from array import array
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -37,17 +43,14 @@ def infer_type(value: Any) -> str:
 def _coerce(value: Any, type_code: str) -> Any:
     if value is None:
         return None
-    if type_code == "I":
-        return int(value)
-    if type_code == "R":
-        return float(value)
-    if type_code == "C":
-        return complex(value)
-    return str(value)
+    return COERCIONS.get(type_code, str)(value)
 
 
 # _coerce by type code: integers, reals, complexes; text otherwise (K8, K16...)
 COERCIONS = {"I": int, "R": float, "C": complex}
+
+# the typed storage of a column by type code (array's code, numpy's dtype)
+TYPED = {"R": ("d", np.float64), "I": ("q", np.int64)}
 
 
 def close_to(value: Any, reference: Any, precision: float, criterion: str) -> bool:
@@ -59,27 +62,184 @@ def close_to(value: Any, reference: Any, precision: float, criterion: str) -> bo
     return diff <= precision
 
 
-@dataclass(eq=False)
+class Column:
+    """The cells of one parameter. Reals and integers: an ``array`` of the
+    values (0 where absent) and a ``bytearray`` of presence flags; other
+    types (and integers past 64 bits): a list holding None where absent.
+    Cells are stored coerced to the column's type (``COERCIONS``)."""
+
+    __slots__ = ("code", "data", "present")
+
+    def __init__(self, code: str, absent: int = 0):
+        self.code = code
+        typed = TYPED.get(code)
+        if typed is None:
+            self.data: Any = [None] * absent
+            self.present: bytearray | None = None
+        else:
+            self.data = array(typed[0], bytes(8 * absent))
+            self.present = bytearray(absent)
+
+    def __len__(self) -> int:
+        return len(self.data)
+
+    def _as_list(self) -> None:
+        """Leave typed storage (an integer past 64 bits)."""
+        self.data = self.values()
+        self.present = None
+
+    def append(self, value: Any) -> None:
+        """One cell, already coerced (None: absent)."""
+        if self.present is None:
+            self.data.append(value)
+        elif value is None:
+            self.data.append(0)
+            self.present.append(0)
+        else:
+            try:
+                self.data.append(value)
+            except OverflowError:
+                self._as_list()
+                self.data.append(value)
+                return
+            self.present.append(1)
+
+    def extend(self, values, present=None) -> None:
+        """Cells of ``values`` (a numpy array or a list, coerced), absent
+        where ``present`` (booleans) is False."""
+        count = len(values)
+        if self.present is not None:
+            dtype = TYPED[self.code][1]
+            try:
+                block = np.asarray(values, dtype=dtype)
+            except OverflowError:
+                self._as_list()
+                block = None
+            if block is not None:
+                if present is not None:
+                    block = np.where(present, block, 0).astype(dtype, copy=False)
+                    flags = np.asarray(present, dtype=np.uint8)
+                else:
+                    flags = np.ones(count, dtype=np.uint8)
+                self.data.frombytes(np.ascontiguousarray(block).tobytes())
+                self.present.extend(flags.tobytes())
+                return
+        if present is None:
+            self.data.extend(values)
+        else:
+            self.data.extend(v if p else None for v, p in zip(values, present, strict=True))
+
+    def get(self, index: int) -> Any:
+        if self.present is None or self.present[index]:
+            return self.data[index]
+        return None
+
+    def set(self, index: int, value: Any) -> None:
+        """Replace one cell (value coerced, None: absent)."""
+        if self.present is None:
+            self.data[index] = value
+        elif value is None:
+            self.data[index] = 0
+            self.present[index] = 0
+        else:
+            try:
+                self.data[index] = value
+            except OverflowError:
+                self._as_list()
+                self.data[index] = value
+                return
+            self.present[index] = 1
+
+    def values(self) -> list:
+        """Every cell, None where absent (Python int / float / str...)."""
+        if self.present is None:
+            return list(self.data)
+        values = self.data.tolist()
+        if all(self.present):
+            return values
+        return [v if p else None for v, p in zip(values, self.present, strict=True)]
+
+    def present_mask(self) -> np.ndarray:
+        if self.present is None:
+            return np.array([v is not None for v in self.data], dtype=bool)
+        return np.frombuffer(bytes(self.present), dtype=np.uint8).astype(bool)
+
+    def take(self, indices) -> Column:
+        """A new column of the cells at ``indices`` (in that order)."""
+        out = Column.__new__(Column)
+        out.code = self.code
+        indices = np.asarray(indices, dtype=np.intp)
+        if self.present is None:
+            data = self.data
+            out.data = [data[i] for i in indices.tolist()]
+            out.present = None
+            return out
+        kind, dtype = TYPED[self.code]
+        values = np.frombuffer(self.data, dtype=dtype) if len(self.data) else np.zeros(0, dtype)
+        flags = np.frombuffer(bytes(self.present), dtype=np.uint8)
+        out.data = array(kind, values[indices].tobytes())
+        out.present = bytearray(flags[indices].tobytes())
+        return out
+
+    def copy(self) -> Column:
+        out = Column.__new__(Column)
+        out.code = self.code
+        out.data = self.data[:]
+        out.present = None if self.present is None else bytearray(self.present)
+        return out
+
+
 class Table(Concept):
     """An ordered set of typed columns holding sparse rows."""
 
     aster_types = ("table_sdaster", "table_fonction", "table_container")
     deck_methods = frozenset({"getName", "EXTR_TABLE", "get_nom_para", "getParameters"})
 
-    columns: list[str] = field(default_factory=list)
-    types: dict[str, str] = field(default_factory=dict)
-    rows: list[dict[str, Any]] = field(default_factory=list)
-    title: str = ""
+    def __init__(
+        self,
+        columns: list[str] | None = None,
+        types: dict[str, str] | None = None,
+        rows: list[dict[str, Any]] | None = None,
+        title: str = "",
+        name: str | None = None,
+    ):
+        self.name = name
+        self.title = title
+        self.columns: list[str] = []
+        self.types: dict[str, str] = {}
+        self._cells: dict[str, Column] = {}
+        self._count = 0
+        types = types or {}
+        for column in columns or ():
+            self.add_column(column, types[column])
+        for row in rows or ():
+            self.add_row(row)
+
+    def __repr__(self) -> str:
+        return (
+            f"Table(columns={self.columns!r}, types={self.types!r}, rows={self.rows!r}, "
+            f"title={self.title!r})"
+        )
+
+    def printed_fields(self) -> dict[str, Any]:
+        """What IMPR_CO shows of a table (its parameters, types, rows, title)."""
+        return {
+            "columns": self.columns,
+            "types": self.types,
+            "rows": self.rows,
+            "title": self.title,
+        }
 
     # building -----------------------------------------------------------
     def add_column(self, name: str, type_code: str) -> None:
         if name not in self.types:
             self.columns.append(name)
             self.types[name] = type_code
+            self._cells[name] = Column(type_code, self._count)
 
     def add_row(self, values: dict[str, Any], types: dict[str, str] | None = None) -> None:
-        row = {}
         known = self.types
+        row = {}
         for name, value in values.items():
             if value is None:
                 continue
@@ -87,9 +247,10 @@ class Table(Concept):
             if code is None:
                 self.add_column(name, (types or {}).get(name) or infer_type(value))
                 code = known[name]
-            # _coerce inlined (tables of impacts have thousands of rows)
             row[name] = COERCIONS.get(code, str)(value)
-        self.rows.append(row)
+        for name, column in self._cells.items():
+            column.append(row.get(name))
+        self._count += 1
 
     def add_rows(self, common: dict[str, Any], columns: dict[str, list]) -> None:
         """Rows holding ``common``'s values, then the k-th value of each list of
@@ -105,17 +266,41 @@ class Table(Concept):
         for name, values in {**common, **columns}.items():
             if name not in self.types and values is not None:
                 self.add_column(name, infer_type(values[0] if name in columns else values))
-        shared = {
-            k: COERCIONS.get(self.types[k], str)(v) for k, v in common.items() if v is not None
-        }
-        names = (*shared, *columns)
-        coerced = []
-        for name, values in columns.items():
-            coerce = COERCIONS.get(self.types[name], str)
-            coerced.append(values if _already(values, coerce) else [coerce(v) for v in values])
-        head = tuple(shared.values())
-        for cells in zip(*coerced, strict=True):
-            self.rows.append(dict(zip(names, head + cells, strict=True)))
+        count = len(next(iter(columns.values())))
+        cells: dict[str, Any] = {k: v for k, v in common.items() if v is not None}
+        cells.update(columns)
+        self.extend(count, cells)
+
+    def extend(self, count: int, cells: dict[str, Any], nan_absent=()) -> None:
+        """``count`` rows at once: ``cells[name]`` is one value for every row
+        (a scalar; None leaves the cells empty) or a sequence (list, numpy
+        array) of ``count`` values, None where a row lacks it; in the columns
+        named in ``nan_absent``, a NaN leaves the cell empty too. Parameters
+        not yet in the table are added with the type of their first value.
+        The cells are those ``add_row`` of each row would store."""
+        for name, values in cells.items():
+            if name in self.types or values is None:
+                continue
+            if isinstance(values, list | tuple | np.ndarray):
+                first = next((v for v in values if v is not None), None)
+                if first is None:
+                    continue
+            else:
+                first = values
+            self.add_column(name, infer_type(first))
+        for name, column in self._cells.items():
+            values = cells.get(name)
+            if values is None:
+                column.extend([None] * count) if column.present is None else column.extend(
+                    np.zeros(count), np.zeros(count, dtype=bool)
+                )
+                continue
+            if not isinstance(values, list | tuple | np.ndarray):
+                values = [values] * count
+            if len(values) != count:
+                raise ValueError(f"{len(values)} values of {name} for {count} rows")
+            column.extend(*_coerced(values, column.code, name in nan_absent))
+        self._count += count
 
     @classmethod
     def from_columns(cls, data: dict[str, list], types: dict[str, str] | None = None) -> Table:
@@ -130,12 +315,28 @@ class Table(Concept):
 
     # reading ------------------------------------------------------------
     def __len__(self) -> int:
-        return len(self.rows)
+        return self._count
 
     def column(self, name: str) -> list[Any]:
         """Values of one parameter, None where a row lacks it."""
         self.require(name)
-        return [row.get(name) for row in self.rows]
+        return self._cells[name].values()
+
+    def nbytes(self) -> int:
+        """Bytes of the cells' storage (typed columns: 8 a value and 1 a
+        presence flag; list columns: 8 a reference, the objects apart)."""
+        total = 0
+        for column in self._cells.values():
+            if column.present is None:
+                total += 8 * len(column.data)
+            else:
+                total += column.data.itemsize * len(column.data) + len(column.present)
+        return total
+
+    def present(self, name: str) -> np.ndarray:
+        """Whether each row holds the parameter (booleans)."""
+        self.require(name)
+        return self._cells[name].present_mask()
 
     def require(self, name: str) -> None:
         if name not in self.types:
@@ -147,29 +348,105 @@ class Table(Concept):
     def value(self, name: str, row: int) -> Any:
         """Value at (parameter, 1-based row number), as code_aster's tab[para, i]."""
         self.require(name)
-        if not 1 <= row <= len(self.rows):
-            raise CommandError(f"table {self.name or ''} has {len(self.rows)} rows, not {row}")
-        return self.rows[row - 1].get(name)
+        if not 1 <= row <= self._count:
+            raise CommandError(f"table {self.name or ''} has {self._count} rows, not {row}")
+        return self._cells[name].get(row - 1)
+
+    def row(self, index: int) -> dict[str, Any]:
+        """The 0-based row ``index`` as a dict of its present cells (a copy)."""
+        if index < 0:
+            index += self._count
+        if not 0 <= index < self._count:
+            raise IndexError(f"table row {index} out of {self._count}")
+        cells = ((name, column.get(index)) for name, column in self._cells.items())
+        return {name: value for name, value in cells if value is not None}
+
+    def iter_rows(self, columns=None):
+        """The rows as dicts of their present cells, one at a time (only
+        ``columns`` when given)."""
+        names = list(self.columns if columns is None else columns)
+        if not names:
+            for _ in range(self._count):
+                yield {}
+            return
+        for cells in zip(*(self._cells[n].values() for n in names), strict=True):
+            yield {n: v for n, v in zip(names, cells, strict=True) if v is not None}
+
+    @property
+    def rows(self) -> list[dict[str, Any]]:
+        """Every row as a dict of its present cells: a fresh list (changing
+        it leaves the table as it is; ``rows = [...]`` replaces the cells)."""
+        return list(self.iter_rows())
+
+    @rows.setter
+    def rows(self, rows: list[dict[str, Any]]) -> None:
+        self._cells = {name: Column(self.types[name]) for name in self.columns}
+        self._count = 0
+        for row in rows:
+            self.add_row(row)
 
     def __getitem__(self, key):
         if isinstance(key, tuple) and len(key) == 2:
             return self.value(key[0], int(key[1]))
         raise CommandError("a table is indexed as TABLE['PARAMETER', row_number]")
 
+    # changing in place --------------------------------------------------
+    def set_cell(self, name: str, index: int, value: Any) -> None:
+        """Replace the cell of parameter ``name`` in 0-based row ``index``
+        (None empties it)."""
+        self.require(name)
+        self._cells[name].set(index, _coerce(value, self.types[name]))
+
+    def rename_column(self, old: str, new: str) -> None:
+        """Parameter ``old`` is called ``new`` (same place, type and cells)."""
+        self.require(old)
+        self.columns = [new if c == old else c for c in self.columns]
+        self.types = {(new if c == old else c): t for c, t in self.types.items()}
+        self._cells = {(new if c == old else c): v for c, v in self._cells.items()}
+
+    def keep_rows(self, indices) -> None:
+        """Keep only the rows at 0-based ``indices``, in that order."""
+        taken = self.take(indices)
+        self._cells, self._count = taken._cells, taken._count
+
+    def assign(self, other: Table) -> None:
+        """Become ``other`` (its parameters, cells and title; reuse=)."""
+        self.columns, self.types = list(other.columns), dict(other.types)
+        self._cells = {name: other._cells[name].copy() for name in other.columns}
+        self._count = other._count
+        self.title = other.title
+
     # transforming -------------------------------------------------------
-    def _copy_with(self, rows: list[dict[str, Any]], columns: list[str] | None = None) -> Table:
+    def copy(self) -> Table:
+        out = Table(title=self.title)
+        out.columns, out.types = list(self.columns), dict(self.types)
+        out._cells = {name: column.copy() for name, column in self._cells.items()}
+        out._count = self._count
+        return out
+
+    def take(self, indices, columns: list[str] | None = None) -> Table:
+        """A new table of the rows at 0-based ``indices`` (in that order), of
+        ``columns`` (all by default)."""
         columns = list(self.columns if columns is None else columns)
-        return Table(columns, {c: self.types[c] for c in columns}, rows, self.title)
+        indices = np.asarray(indices, dtype=np.intp).reshape(-1)
+        out = Table(title=self.title)
+        out.columns = columns
+        out.types = {c: self.types[c] for c in columns}
+        out._cells = {c: self._cells[c].take(indices) for c in columns}
+        out._count = int(indices.size)
+        return out
 
     def first_rows(self, count: int) -> Table:
-        return self._copy_with([dict(r) for r in self.rows[:count]])
+        return self.take(np.arange(min(count, self._count)))
 
     def select(self, names) -> Table:
         """Only the given parameters (in that order); rows left empty are dropped."""
         for name in names:
             self.require(name)
-        rows = [{n: r[n] for n in names if n in r} for r in self.rows]
-        return self._copy_with([r for r in rows if r], list(names))
+        held = np.zeros(self._count, dtype=bool)
+        for name in names:
+            held |= self._cells[name].present_mask()
+        return self.take(np.flatnonzero(held), list(names))
 
     def filtered(
         self,
@@ -181,18 +458,20 @@ class Table(Concept):
     ) -> Table:
         """Rows satisfying one FILTRE condition."""
         self.require(name)
-        return self._copy_with(
-            select_rows(self.rows, name, self.types[name], crit_comp, value, precision, criterion)
+        kept = select_rows(
+            self._cells[name].values(), self.types[name], crit_comp, value, precision, criterion
         )
+        return self.take(kept)
 
     def sorted_by(self, names, descending: bool = False) -> Table:
         for name in names:
             self.require(name)
+        columns = [self._cells[n].values() for n in names]
 
-        def key(row):
-            return tuple((row.get(n) is None, _sort_value(row.get(n))) for n in names)
+        def key(i):
+            return tuple((c[i] is None, _sort_value(c[i])) for c in columns)
 
-        return self._copy_with(sorted(self.rows, key=key, reverse=descending))
+        return self.take(sorted(range(self._count), key=key, reverse=descending))
 
     # deck API -----------------------------------------------------------
     def EXTR_TABLE(self):  # noqa: N802
@@ -205,10 +484,24 @@ class Table(Concept):
         return list(self.columns)
 
 
-def _already(values: list, coerce) -> bool:
-    """Whether every value is already of the type ``coerce`` makes (a float
-    list for ``float``...): its coercion would change nothing."""
-    return set(map(type, values)) <= {coerce}
+def _coerced(values, code: str, nan_absent: bool):
+    """(values, present or None) of a sequence for a column of type ``code``:
+    the cells ``add_row`` would store."""
+    typed = TYPED.get(code)
+    if isinstance(values, np.ndarray) and typed is not None and values.dtype.kind in "fiub":
+        if code == "I" and values.dtype.kind == "f":
+            values = np.trunc(values)  # int() of a float
+        present = ~np.isnan(values) if nan_absent and values.dtype.kind == "f" else None
+        return values, present
+    values = list(values)
+    absent = [v is None or (nan_absent and v != v) for v in values]
+    coerce = COERCIONS.get(code, str)
+    cells = [None if a else coerce(v) for v, a in zip(values, absent, strict=True)]
+    if not any(absent):
+        return cells, None
+    if typed is not None:
+        cells = [0 if c is None else c for c in cells]
+    return cells, [not a for a in absent]
 
 
 def _base_type(type_code: str) -> str:
@@ -221,11 +514,12 @@ def _sort_value(value):
     return value if value is not None else 0
 
 
-def select_rows(rows, name, type_code, crit_comp, value, precision, criterion):
-    """The rows of ``rows`` whose parameter ``name`` passes a FILTRE test."""
-    present = [r for r in rows if r.get(name) is not None]
+def select_rows(cells, type_code, crit_comp, value, precision, criterion) -> list[int]:
+    """The 0-based indices of the ``cells`` (a column's values, None where
+    absent) that pass a FILTRE test, in order."""
+    present = [i for i, v in enumerate(cells) if v is not None]
     if crit_comp == "VIDE":
-        return [r for r in rows if r.get(name) is None]
+        return [i for i, v in enumerate(cells) if v is None]
     if crit_comp == "NON_VIDE":
         return present
     if crit_comp in ("MAXI", "MAXI_ABS", "MINI", "MINI_ABS"):
@@ -233,15 +527,15 @@ def select_rows(rows, name, type_code, crit_comp, value, precision, criterion):
             return []
         measure = abs if crit_comp.endswith("_ABS") else (lambda v: v)
         pick = max if crit_comp.startswith("MAXI") else min
-        target = pick(measure(r[name]) for r in present)
-        return [r for r in present if measure(r[name]) == target]
+        target = pick(measure(cells[i]) for i in present)
+        return [i for i in present if measure(cells[i]) == target]
     values = value if isinstance(value, list | tuple) else (value,)
     if crit_comp == "INTERVALLE":
         low, high = values[0], values[-1]
-        return [r for r in present if low <= r[name] <= high]
+        return [i for i in present if low <= cells[i] <= high]
     if crit_comp == "REGEXP":
         pattern = re.compile(str(values[0]))
-        return [r for r in present if pattern.search(str(r[name]))]
+        return [i for i in present if pattern.search(str(cells[i]))]
     if crit_comp in ("EQ", "NE"):
         base = _base_type(type_code)
 
@@ -252,8 +546,8 @@ def select_rows(rows, name, type_code, crit_comp, value, precision, criterion):
                 return any(int(v) == int(ref) for ref in values)
             return any(close_to(v, ref, precision, criterion) for ref in values)
 
-        keep = (lambda v: equal(v)) if crit_comp == "EQ" else (lambda v: not equal(v))
-        return [r for r in present if keep(r[name])]
+        wanted = crit_comp == "EQ"
+        return [i for i in present if equal(cells[i]) == wanted]
     compare = {
         "GT": lambda v, ref: v > ref,
         "GE": lambda v, ref: v >= ref,
@@ -262,7 +556,7 @@ def select_rows(rows, name, type_code, crit_comp, value, precision, criterion):
     }.get(crit_comp)
     if compare is None:
         raise CommandError(f"CRIT_COMP={crit_comp!r} is not supported")
-    return [r for r in present if compare(r[name], values[0])]
+    return [i for i in present if compare(cells[i], values[0])]
 
 
 class TableColumn(list):
@@ -285,24 +579,30 @@ class TableView:
     ``rows`` (list of dicts), ``para`` (parameter names), ``type``,
     ``values()`` (dict parameter -> list of values, None where absent),
     ``view[param, i]`` (1-based row), ``view[param]`` (a column as list),
-    ``len(view)``.
+    ``view[i]`` (a row), ``len(view)``. It reads the table's columns as they
+    were at ``EXTR_TABLE`` (a copy sharing nothing the table changes later);
+    rows are made as they are read.
     """
 
     def __init__(self, table: Table):
-        self.rows = [dict(r) for r in table.rows]
+        self._table = table.copy()
+        self._table.name = table.name
         self.para = list(table.columns)
         self.type = [table.types[c] for c in table.columns]
         self.titr = table.title
-        self._table = table
+
+    @property
+    def rows(self) -> list[dict]:
+        return self._table.rows
 
     def values(self) -> dict[str, list]:
-        return {p: [r.get(p) for r in self.rows] for p in self.para}
+        return {p: self._table.column(p) for p in self.para}
 
     def __len__(self) -> int:
-        return len(self.rows)
+        return len(self._table)
 
     def __iter__(self):
-        return iter(self.rows)
+        return self._table.iter_rows()
 
     def Array(self, para: str, champ: str) -> np.ndarray:  # noqa: N802 - code_aster's name
         """code_aster's Table.Array: the rows' (para, champ) values as an
@@ -312,9 +612,8 @@ class TableView:
                 raise CommandError(
                     f"the extracted table has no parameter {name!r} (it has {', '.join(self.para)})"
                 )
-        return np.array([[r.get(para), r.get(champ)] for r in self.rows], dtype=float).reshape(
-            -1, 2
-        )
+        pairs = zip(self._table.column(para), self._table.column(champ), strict=True)
+        return np.array([[x, y] for x, y in pairs], dtype=float).reshape(-1, 2)
 
     def deck_getattr(self, name: str):
         """``tab.PARA``: the column of a parameter (code_aster's Colonne, here
@@ -336,7 +635,7 @@ class TableView:
         if isinstance(key, str):
             return self._table.column(key)
         if isinstance(key, int):
-            return self.rows[key]
+            return self._table.row(key)
         raise CommandError("an extracted table is indexed as tab['PARAMETER', row_number]")
 
 

@@ -129,40 +129,103 @@ EFGE_COMPONENTS = ("N", "VY", "VZ", "MT", "MFY", "MFZ")
 SIPO_COMPONENTS = ("SN", "SVY", "SVZ", "SMT", "SMFY", "SMFZ")
 
 
-def _in_local_frames(model, characteristics, cells, values, dofs_per_node):
-    """(lengths, ``values`` in the cells' local frames) of two-node beam
-    cells; ``values`` (n_orders, n_cells, 2 dofs_per_node) global-frame DOFs."""
-    angles = cell_angles(model, characteristics, cells)
-    _, lengths = beam.segment_cells(model.mesh, cells)
-    rot = beam.element_rotation(beam.rotation_from_angles(angles), dofs_per_node)
-    return lengths, np.einsum("eij,oej->oei", rot, values)
+def per_cell_products(matrices: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """(n_orders, n_cells, m) products ``A_e v_oe`` of per-cell matrices
+    (n_cells, m, n) and values (n_orders, n_cells, n), summed over n term by
+    term (one multiplication then one addition per term, each rounded): an
+    order's result is the same whatever the number of orders computed
+    together (batched BLAS products round differently with the batch size)."""
+    out = values[:, :, None, 0] * matrices[None, :, :, 0]
+    for j in range(1, matrices.shape[2]):
+        out += values[:, :, None, j] * matrices[None, :, :, j]
+    return out
 
 
-def _local_products(
-    model, characteristics, materials, cells, values, matrix: str, lumped: bool = False
+class BeamForces:
+    """The per-cell operators of the internal forces of two-node beam cells,
+    built once and applied to blocks of orders: the rotations to the local
+    frames and the local stiffness (and mass, with ``inertia``) matrices.
+
+    ``POU_D_E`` / ``POU_D_T`` / ``POU_D_EM`` cells: 6 DOFs a node, forces N VY
+    VZ MT MFY MFZ; ``warping`` (``POU_D_TG`` cells): 7 DOFs a node, the
+    bimoment BX after them, stiffness only (code_aster's ef0344 adds no
+    inertia, whatever the result). The mass is the consistent one, or the
+    lumped one (MASS_MECA_DIAG) with ``lumped``; without RHO it is 0
+    (code_aster takes 0)."""
+
+    def __init__(
+        self,
+        model,
+        characteristics,
+        materials,
+        cells,
+        inertia: bool = False,
+        lumped: bool = False,
+        warping: bool = False,
+    ):
+        cells = np.asarray(cells, dtype=int)
+        self.per_node = 7 if warping else 6
+        angles = cell_angles(model, characteristics, cells)
+        _, lengths = beam.segment_cells(model.mesh, cells)
+        self.rotations = beam.element_rotation(beam.rotation_from_angles(angles), self.per_node)
+        if warping:
+            self.stiffness_matrices = _warping_stiffness(
+                model, characteristics, materials, cells, lengths
+            )
+            self.mass_matrices = None
+            return
+        self.stiffness_matrices = _local_matrices(
+            model, characteristics, materials, cells, lengths, "K"
+        )
+        self.mass_matrices = (
+            _local_matrices(model, characteristics, materials, cells, lengths, "M", lumped)
+            if inertia
+            else None
+        )
+
+    def _section_forces(self, matrices, values) -> np.ndarray:
+        local = per_cell_products(self.rotations, values)
+        nodal = per_cell_products(matrices, local)
+        out = nodal.reshape(nodal.shape[:-1] + (2, self.per_node))
+        out[..., 0, :] *= -1.0
+        return out
+
+    def stiffness(self, displacements: np.ndarray) -> np.ndarray:
+        """(n_orders, n_cells, 2, per_node) ``K_local u_local`` with node 1's
+        sign reversed (code_aster's EFGE_ELNO / SIEF_ELNO: internal forces on
+        the section, not nodal forces), from (n_orders, n_cells, 2 per_node)
+        global-frame element DOFs (node 1 then node 2)."""
+        return self._section_forces(self.stiffness_matrices, displacements)
+
+    def inertia(self, accelerations: np.ndarray) -> np.ndarray:
+        """The part ``M_local a_local`` of the internal forces, same
+        convention as :meth:`stiffness`."""
+        if self.mass_matrices is None:
+            raise ValueError("BeamForces built without inertia")
+        return self._section_forces(self.mass_matrices, accelerations)
+
+
+def _local_matrices(
+    model, characteristics, materials, cells, lengths, matrix: str, lumped: bool = False
 ) -> np.ndarray:
-    """(n_orders, n_cells, 12) local-frame element products ``A_local v_local``
-    of POU_D_E / POU_D_T cells, ``A`` the stiffness ('K') or the mass ('M',
-    lumped as MASS_MECA_DIAG with ``lumped``), ``values`` (n_orders, n_cells, 12)
-    global-frame element DOFs."""
-    cells = np.asarray(cells, dtype=int)
+    """(n_cells, 12, 12) local-frame matrices of POU_D_E / POU_D_T / POU_D_EM
+    cells: the stiffness ('K') or the mass ('M', lumped as MASS_MECA_DIAG
+    with ``lumped``)."""
     sections = characteristics.sections if characteristics is not None else {}
     # no RHO: no inertia (code_aster takes 0)
     props = _material_values(materials, cells, "beam", need_density=False)
-    lengths, v_local = _in_local_frames(model, characteristics, cells, values, 6)
-    out = np.zeros_like(v_local)
+    out = np.zeros((len(cells), 12, 12))
     for k, cell in enumerate(cells):
         modelisation = model.cell_modelisation[int(cell)]
         if modelisation == "POU_D_EM":
             # the fibre-integrated element (code_aster's ef0142 / poefgr use pmfrig, pmfmas)
-            a_local = local_matrix(
+            out[k] = local_matrix(
                 model, characteristics, materials, int(cell), lengths[k], matrix, lumped
             )
-            out[:, k, :] = v_local[:, k, :] @ a_local.T
             continue
         if modelisation not in ("POU_D_E", "POU_D_T"):
             raise ElementError(f"internal forces of {modelisation} cells are not available")
-        a_local = beam.local_matrices(
+        out[k] = beam.local_matrices(
             modelisation,
             matrix,
             lengths[k],
@@ -172,7 +235,6 @@ def _local_products(
             props["RHO"][k],
             lumped,
         )[0]
-        out[:, k, :] = v_local[:, k, :] @ a_local.T
     return out
 
 
@@ -184,68 +246,20 @@ def section_forces(nodal_forces: np.ndarray) -> np.ndarray:
     return out
 
 
-def beam_local_forces(
-    model,
-    characteristics,
-    materials,
-    cells,
-    displacements,
-    accelerations=None,
-    lumped: bool = False,
-) -> np.ndarray:
-    """Generalised internal forces at the two nodes of beam cells.
-
-    ``displacements`` is (n_orders, n_cells, 12) global-frame element DOFs
-    (``DX..DRZ`` of node 1 then node 2). Returns (n_orders, n_cells, 2, 6)
-    with components N VY VZ MT MFY MFZ: the local element force
-    ``f = K_local u_local`` with the sign of node 1 reversed, as code_aster's
-    EFGE_ELNO / SIEF_ELNO (internal forces on the section, not nodal forces).
-
-    With ``accelerations`` (same shape: the ACCE field of a dynamic result)
-    the element inertia forces are added, ``f = K u + M a`` with the
-    consistent mass (MASS_MECA) or the lumped one (``lumped``), as code_aster
-    does for the beam elements of transient and harmonic results.
-    """
-    f = _local_products(model, characteristics, materials, cells, displacements, "K")
-    if accelerations is not None:
-        f = f + _local_products(
-            model, characteristics, materials, cells, accelerations, "M", lumped
-        )
-    return section_forces(f)
-
-
-def beam_inertia_forces(
-    model, characteristics, materials, cells, accelerations, lumped: bool = False
-) -> np.ndarray:
-    """(n_orders, n_cells, 2, 6) the part ``M_local a_local`` of the internal
-    forces (same convention as :func:`beam_local_forces`)."""
-    return section_forces(
-        _local_products(model, characteristics, materials, cells, accelerations, "M", lumped)
-    )
-
-
 #: Components of POU_D_TG's EFGE_ELNO: the bimoment BX after the six others.
 WARPING_EFGE_COMPONENTS = EFGE_COMPONENTS + ("BX",)
 
 
-def warping_beam_forces(model, characteristics, materials, cells, displacements) -> np.ndarray:
-    """(n_orders, n_cells, 2, 7) EFGE_ELNO of POU_D_TG cells from their
-    (n_orders, n_cells, 14) global-frame DOFs (DX..DRZ, GRX of each node):
-    ``K_local u_local`` with node 1's sign reversed, components N VY VZ MT
-    MFY MFZ BX. code_aster's element (ef0344) adds no inertia, whatever the
-    result."""
-    cells = np.asarray(cells, dtype=int)
+def _warping_stiffness(model, characteristics, materials, cells, lengths) -> np.ndarray:
+    """(n_cells, 14, 14) local stiffness matrices of POU_D_TG cells (DX..DRZ,
+    GRX of each node)."""
     sections = characteristics.sections if characteristics is not None else {}
     props = _material_values(materials, cells, "POU_D_TG", need_density=False)
-    lengths, u_local = _in_local_frames(model, characteristics, cells, displacements, 7)
-    f = np.zeros_like(u_local)
+    out = np.zeros((len(cells), 14, 14))
     for k, cell in enumerate(cells):
-        k_local = beam.local_matrices(
+        out[k] = beam.local_matrices(
             "POU_D_TG", "K", lengths[k], sections[int(cell)], props["E"][k], props["NU"][k]
         )[0]
-        f[:, k, :] = u_local[:, k, :] @ k_local.T
-    out = f.reshape(f.shape[:-1] + (2, 7)).copy()
-    out[..., 0, :] *= -1.0
     return out
 
 

@@ -28,6 +28,9 @@
   or complex (code_aster's te0185, without inertia).
 
 Values keep every order of the result: (n_orders, n_cells, 2, n_components).
+The beam fields are computed by blocks of orders (``order_blocks``: the
+temporaries stay bounded whatever the number of orders), with products that
+round the same whatever the block (``beam_elements.per_cell_products``).
 """
 
 from __future__ import annotations
@@ -42,12 +45,10 @@ from asterlite.fem.beam_elements import (
     SIPM_COMPONENTS,
     SIPO_COMPONENTS,
     WARPING_EFGE_COMPONENTS,
+    BeamForces,
     _material_values,
     beam_extreme_stresses,
-    beam_inertia_forces,
-    beam_local_forces,
     beam_stresses,
-    warping_beam_forces,
 )
 from asterlite.fem.discrete import local_matrix
 from asterlite.fem.dofs import MODELISATION_COMPONENTS
@@ -60,6 +61,17 @@ ELGA_OPTIONS = ("EFGE_ELGA", "SIEF_ELGA")
 #: Positions (0..1 along the beam) of the 3 Gauss points of beam elements.
 BEAM_GAUSS = (1.0 + np.array([-np.sqrt(0.6), 0.0, np.sqrt(0.6)])) / 2.0
 NOEU_OPTIONS = ("EFGE_NOEU", "SIEF_NOEU", "SIPO_NOEU")
+#: Bytes of one (orders, cells, DOFs) temporary of the beam fields: they are
+#: computed by blocks of orders of about that size (the fields themselves
+#: hold every order).
+BLOCK_BYTES = 4 << 20
+
+
+def order_blocks(n_orders: int, per_order: int, block_bytes: int | None = None):
+    """Slices of consecutive orders whose (orders, ``per_order``) float
+    temporaries take about ``block_bytes`` (BLOCK_BYTES by default)."""
+    size = max(1, (BLOCK_BYTES if block_bytes is None else block_bytes) // max(1, 8 * per_order))
+    return [slice(start, min(start + size, n_orders)) for start in range(0, n_orders, size)]
 
 
 def element_displacements(
@@ -111,39 +123,53 @@ def beam_element_fields(
         return _warping_beam_fields(
             model, characteristics, materials, numbering, cells, values, options, load_forces
         )
-    u = element_displacements(model.mesh, numbering, cells, values)
-    stiffness = beam_local_forces(model, characteristics, materials, cells, u)
-    dynamic = stiffness
-    if accelerations is not None:
-        a = element_displacements(model.mesh, numbering, cells, accelerations)
-        dynamic = stiffness + beam_inertia_forces(
-            model, characteristics, materials, cells, a, lumped_mass
-        )
-    if load_forces is not None:
-        dynamic = dynamic - load_forces
-    out = {}
+    forces = BeamForces(
+        model, characteristics, materials, cells, accelerations is not None, lumped_mass
+    )
+    unknown = [n for n in options if n not in ELNO_OPTIONS + ELGA_OPTIONS]
+    if unknown:  # a field code_aster computes on beams too (ECIN_ELEM, EPSI_ELNO...)
+        raise UnsupportedError(f"{unknown[0]} of beam cells")
+    stresses = any(n in ("SIPO_ELNO", "SIPM_ELNO") for n in options)
+    sections = [characteristics.sections[int(c)] for c in cells] if stresses else []
+    modelisations = [model.cell_modelisation[int(c)] for c in cells]
+    n_orders = values.shape[0]
+    points = {"SIPM_ELNO": (2, 2), **{n: (3, 6) for n in ELGA_OPTIONS}}
+    # without inertia nor loads, EFGE_ELNO is SIEF_ELNO (one array for both)
+    same = accelerations is None and load_forces is None
+    arrays: dict[str, np.ndarray] = {}
     for name in options:
-        if name == "EFGE_ELNO":
-            out[name] = ElementField(name, cells, EFGE_COMPONENTS, dynamic)
-        elif name == "SIEF_ELNO":
-            out[name] = ElementField(name, cells, EFGE_COMPONENTS, stiffness)
-        elif name in ELGA_OPTIONS:
-            xi = BEAM_GAUSS[None, None, :, None]
-            gauss = (1.0 - xi) * stiffness[:, :, :1, :] + xi * stiffness[:, :, 1:, :]
-            out[name] = ElementField(name, cells, EFGE_COMPONENTS, gauss)
-        elif name == "SIPO_ELNO":
-            sections = [characteristics.sections[int(c)] for c in cells]
-            kinds = [model.cell_modelisation[int(c)] for c in cells]
-            out[name] = ElementField(
-                name, cells, SIPO_COMPONENTS, beam_stresses(dynamic, sections, kinds)
-            )
-        elif name == "SIPM_ELNO":
-            sections = [characteristics.sections[int(c)] for c in cells]
-            extremes = beam_extreme_stresses(dynamic, sections)
-            out[name] = ElementField(name, cells, SIPM_COMPONENTS, extremes)
-        else:  # a field code_aster computes on beams too (ECIN_ELEM, EPSI_ELNO...)
-            raise UnsupportedError(f"{name} of beam cells")
-    return out
+        if same and name in ("EFGE_ELNO", "SIEF_ELNO"):
+            twin = "SIEF_ELNO" if name == "EFGE_ELNO" else "EFGE_ELNO"
+            if twin in arrays:
+                arrays[name] = arrays[twin]
+                continue
+        arrays[name] = np.empty((n_orders, len(cells)) + points.get(name, (2, 6)))
+    xi = BEAM_GAUSS[None, None, :, None]
+    for block in order_blocks(n_orders, 12 * len(cells)):
+        u = element_displacements(model.mesh, numbering, cells, values[block])
+        stiffness = forces.stiffness(u)
+        dynamic = stiffness
+        if accelerations is not None:
+            a = element_displacements(model.mesh, numbering, cells, accelerations[block])
+            dynamic = stiffness + forces.inertia(a)
+        if load_forces is not None:
+            dynamic = dynamic - load_forces[block]
+        for name, target in arrays.items():
+            if name == "EFGE_ELNO":
+                target[block] = dynamic
+            elif name == "SIEF_ELNO":
+                target[block] = stiffness
+            elif name in ELGA_OPTIONS:
+                target[block] = (1.0 - xi) * stiffness[:, :, :1, :] + xi * stiffness[:, :, 1:, :]
+            elif name == "SIPO_ELNO":
+                target[block] = beam_stresses(dynamic, sections, modelisations)
+            else:
+                target[block] = beam_extreme_stresses(dynamic, sections)
+    components = {"SIPO_ELNO": SIPO_COMPONENTS, "SIPM_ELNO": SIPM_COMPONENTS}
+    return {
+        name: ElementField(name, cells, components.get(name, EFGE_COMPONENTS), target)
+        for name, target in arrays.items()
+    }
 
 
 def _warping_beam_fields(
@@ -155,10 +181,15 @@ def _warping_beam_fields(
     other = [name for name in options if name != "EFGE_ELNO"]
     if other:
         raise UnsupportedError(f"{other[0]} of POU_D_TG cells")
-    u = element_displacements(model.mesh, numbering, cells, values, BEAM_COMPONENTS + ("GRX",))
-    forces = warping_beam_forces(model, characteristics, materials, cells, u)
-    if load_forces is not None:
-        forces[..., :6] -= load_forces
+    operators = BeamForces(model, characteristics, materials, cells, warping=True)
+    forces = np.empty((values.shape[0], len(cells), 2, 7))
+    for block in order_blocks(values.shape[0], 14 * len(cells)):
+        u = element_displacements(
+            model.mesh, numbering, cells, values[block], BEAM_COMPONENTS + ("GRX",)
+        )
+        forces[block] = operators.stiffness(u)
+        if load_forces is not None:
+            forces[block, ..., :6] -= load_forces[block]
     return {"EFGE_ELNO": ElementField("EFGE_ELNO", cells, WARPING_EFGE_COMPONENTS, forces)}
 
 

@@ -230,8 +230,7 @@ def _column(values: list, type_code: str) -> np.ndarray:
 
 def table_data(table: Table):
     columns = {
-        name: _column([row.get(name) for row in table.rows], table.types.get(name, "R"))
-        for name in table.columns
+        name: _column(table.column(name), table.types.get(name, "R")) for name in table.columns
     }
     return frame(columns, {"name": table.name or "", "title": table.title})
 

@@ -298,7 +298,7 @@ def _table_column(table: Table, parameter: str) -> tuple[np.ndarray, np.ndarray]
     (R float, I int64, C complex, else strings), a neutral filler (0, "")
     where a row lacks it -- never NaN, so a stored table stays finite."""
     type_code = table.types[parameter]
-    cells = [row.get(parameter) for row in table.rows]
+    cells = table.column(parameter)
     present = np.array([v is not None for v in cells], dtype=bool)
     if type_code == "R":
         return np.array([0.0 if v is None else float(v) for v in cells], dtype=float), present
@@ -313,7 +313,7 @@ def _write_table(group, key: str, table: Table) -> None:
     group.attrs["name"] = key
     group.attrs["title"] = table.title or ""
     group.attrs["concept"] = table.name or ""
-    group.attrs["n_rows"] = len(table.rows)
+    group.attrs["n_rows"] = len(table)
     columns = group.create_group("columns", track_order=True)
     present_group = None
     names = unique_member_names(table.columns, "PARA_{}")
@@ -494,15 +494,15 @@ def _table_from(data: dict[str, Any]) -> Table:
     complex or str, absent where the row lacked them."""
     table = Table(title=data["title"])
     table.name = data.get("concept") or None
-    rows: list[dict[str, Any]] = [{} for _ in range(data["n_rows"])]
+    cells: dict[str, list] = {}
     for parameter, values in data["columns"].items():
         table.add_column(parameter, data["types"][parameter])
         values = values if isinstance(values, list) else np.asarray(values).tolist()
         present = data["present"].get(parameter)
-        for i, value in enumerate(values):
-            if present is None or present[i]:
-                rows[i][parameter] = value
-    table.rows = rows
+        if present is not None:
+            values = [v if p else None for v, p in zip(values, present, strict=True)]
+        cells[parameter] = values
+    table.extend(data["n_rows"], cells)
     return table
 
 

@@ -75,12 +75,21 @@ def moment_equivalent_table(
         table.add_column("ABSC_CURV", "R")
     for name in MOMEQ_COMPONENTS:
         table.add_column(name, "R")
+    labels, nodes, along_cells, picked = [], [], [], []
     for row, cell in enumerate(cells):
         along = () if abscissa is None else abscissa.get(int(cell), ())
+        label = str(int(cell) + 1)
         for point, node in enumerate(cell_nodes[row][: values.shape[1]]):
-            line = {**head, "MAILLE": str(int(cell) + 1), "NOEUD": str(int(node) + 1)}
-            if point < len(along):
-                line["ABSC_CURV"] = float(along[point])
-            line.update(zip(MOMEQ_COMPONENTS, map(float, values[row, point]), strict=True))
-            table.add_row(line)
+            labels.append(label)
+            nodes.append(str(int(node) + 1))
+            along_cells.append(float(along[point]) if point < len(along) else None)
+            picked.append((row, point))
+    data = {**head, "MAILLE": labels, "NOEUD": nodes}
+    if abscissa is not None:
+        data["ABSC_CURV"] = along_cells
+    where = np.array(picked, dtype=np.intp).reshape(-1, 2)
+    moments = np.asarray(values, dtype=float)[where[:, 0], where[:, 1]]
+    for c, name in enumerate(MOMEQ_COMPONENTS):
+        data[name] = moments[:, c]
+    table.extend(len(labels), data)
     return table

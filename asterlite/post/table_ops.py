@@ -15,7 +15,7 @@ from asterlite.errors import CommandError
 
 
 def copy_table(table: Table) -> Table:
-    return Table(list(table.columns), dict(table.types), [dict(r) for r in table.rows], table.title)
+    return table.copy()
 
 
 def rename(table: Table, old: str, new: str) -> Table:
@@ -23,9 +23,7 @@ def rename(table: Table, old: str, new: str) -> Table:
     if new in table.types and new != old:
         raise CommandError(f"RENOMME: the table already has a parameter {new!r}")
     out = copy_table(table)
-    out.columns = [new if c == old else c for c in out.columns]
-    out.types = {(new if c == old else c): t for c, t in out.types.items()}
-    out.rows = [{(new if k == old else k): v for k, v in r.items()} for r in out.rows]
+    out.rename_column(old, new)
     return out
 
 
@@ -33,21 +31,26 @@ def drop_columns(table: Table, names) -> Table:
     for name in names:
         table.require(name)
     kept = [c for c in table.columns if c not in names]
-    rows = [{k: v for k, v in r.items() if k in kept} for r in table.rows]
-    return Table(kept, {c: table.types[c] for c in kept}, rows, table.title)
+    return table.take(np.arange(len(table)), kept)
+
+
+def _keys(table: Table, names) -> list[tuple]:
+    """Each row's tuple of the values of ``names`` (None where absent)."""
+    if not names:
+        return [() for _ in range(len(table))]
+    return list(zip(*(table.column(n) for n in names), strict=True))
 
 
 def unique_rows(table: Table, names) -> Table:
     """Keep the first row of each combination of values of ``names``."""
     for name in names:
         table.require(name)
-    seen, rows = set(), []
-    for row in table.rows:
-        key = tuple(row.get(n) for n in names)
+    seen, kept = set(), []
+    for i, key in enumerate(_keys(table, names)):
         if key not in seen:
             seen.add(key)
-            rows.append(dict(row))
-    return Table(list(table.columns), dict(table.types), rows, table.title)
+            kept.append(i)
+    return table.take(kept)
 
 
 def merge(table: Table, other: Table, keys=(), restrict: bool = False) -> Table:
@@ -58,24 +61,25 @@ def merge(table: Table, other: Table, keys=(), restrict: bool = False) -> Table:
     for name in other.columns:
         out.add_column(name, other.types[name])
     if not keys:
-        out.rows.extend(dict(r) for r in other.rows)
+        out.extend(len(other), {name: other.column(name) for name in other.columns})
         return out
     for name in keys:
         table.require(name)
         other.require(name)
-    index: dict[tuple, list[dict]] = {}
-    for row in out.rows:
-        index.setdefault(tuple(row.get(k) for k in keys), []).append(row)
-    for row in other.rows:
+    index: dict[tuple, list[int]] = {}
+    for i, key in enumerate(_keys(out, keys)):
+        index.setdefault(key, []).append(i)
+    for row in other.iter_rows():
         key = tuple(row.get(k) for k in keys)
         if key in index:
             for target in index[key]:
-                target.update(row)
+                for name, value in row.items():
+                    out.set_cell(name, target, value)
         elif not restrict:
-            out.rows.append(dict(row))
+            out.add_row(row)
     if restrict:
-        keys_of_other = {tuple(r.get(k) for k in keys) for r in other.rows}
-        out.rows = [r for r in out.rows if tuple(r.get(k) for k in keys) in keys_of_other]
+        keys_of_other = set(_keys(other, keys))
+        out.keep_rows([i for i, key in enumerate(_keys(out, keys)) if key in keys_of_other])
     return out
 
 
@@ -94,20 +98,18 @@ def add_column(table: Table, names, values=None, column_values=None) -> Table:
     if column_values is not None:
         if len(names) != 1:
             raise CommandError("AJOUT_COLONNE with VALE_COLONNE takes one NOM_PARA")
-        if len(column_values) != len(out.rows):
-            raise CommandError(
-                f"AJOUT_COLONNE: {len(column_values)} values for {len(out.rows)} rows"
-            )
+        if len(column_values) != len(out):
+            raise CommandError(f"AJOUT_COLONNE: {len(column_values)} values for {len(out)} rows")
         out.add_column(names[0], infer_type(column_values[0]))
-        for row, value in zip(out.rows, column_values, strict=True):
-            row[names[0]] = value
+        for i, value in enumerate(column_values):
+            out.set_cell(names[0], i, value)
         return out
     if len(names) != len(values):
         raise CommandError("AJOUT_COLONNE: NOM_PARA and VALE differ in length")
     for name, value in zip(names, values, strict=True):
         out.add_column(name, infer_type(value))
-        for row in out.rows:
-            row[name] = value
+        for i in range(len(out)):
+            out.set_cell(name, i, value)
     return out
 
 
@@ -124,12 +126,15 @@ def formula_column(table: Table, formula, new_name: str, columns=None) -> Table:
         table.require(name)
     out = copy_table(table)
     out.add_column(new_name, "C" if getattr(formula, "complex_result", False) else "R")
-    complete = [r for r in out.rows if all(r.get(n) is not None for n in names)]
-    if complete:
-        args = [np.array([r[n] for r in complete], dtype=float) for n in names]
+    held = np.ones(len(out), dtype=bool)
+    for name in names:
+        held &= out.present(name)
+    complete = np.flatnonzero(held)
+    if complete.size:
+        args = [np.array(out.column(n), dtype=object)[complete].astype(float) for n in names]
         values = np.atleast_1d(formula.evaluate(*args))
-        for row, value in zip(complete, values, strict=True):
-            row[new_name] = complex(value) if np.iscomplexobj(value) else float(value)
+        for i, value in zip(complete.tolist(), values, strict=True):
+            out.set_cell(new_name, i, complex(value) if np.iscomplexobj(value) else float(value))
     return out
 
 
@@ -223,13 +228,19 @@ def field_value_table(
         table.add_column(name, code)
     for name in components:
         table.add_column(name, "R")
-    for k, (order, time) in enumerate(steps):
-        access = {"INST": time, "NUME_ORDRE": None if order is None else int(order)}
-        for j, support in enumerate(supports):
-            row = {**head, **access, **support}
-            # a support without the component (NaN) leaves its cell empty
-            row.update(
-                (c, float(v)) for c, v in zip(components, values[k, j], strict=True) if v == v
-            )
-            table.add_row(row)
+    # column by column, steps outer and supports inner
+    n_supports = len(supports)
+    count = len(steps) * n_supports
+    cells: dict = dict(head)
+    cells["INST"] = [time for _, time in steps for _ in range(n_supports)]
+    cells["NUME_ORDRE"] = [
+        None if order is None else int(order) for order, _ in steps for _ in range(n_supports)
+    ]
+    for name in dict.fromkeys(key for support in supports for key in support):
+        cells[name] = [support.get(name) for support in supports] * len(steps)
+    values = np.asarray(values).reshape(count, len(components))
+    for c, name in enumerate(components):
+        cells[name] = values[:, c]
+    # a support without the component (NaN) leaves its cell empty
+    table.extend(count, cells, nan_absent=tuple(components))
     return table

@@ -547,8 +547,8 @@ def one_row_table_values(namespace: dict) -> dict:
 
     values = {}
     for name, value in namespace.items():
-        if isinstance(value, Table) and len(value.rows) == 1:
-            for para, cell in value.rows[0].items():
+        if isinstance(value, Table) and len(value) == 1:
+            for para, cell in value.row(0).items():
                 values[f"{name}.{para}"] = plain_value(cell)
     return values
 
