@@ -223,4 +223,4 @@ def test_each_command_gives_the_pages_of_archives_on_disk_back(tmp_path, monkeyp
         "DEBUT()\nL = DEFI_LIST_REEL(VALE=(0.0, 1.0))\nM = DEFI_LIST_REEL(VALE=2.0)\nFIN()\n"
     )
     run_deck(deck, tmp_path / "out")
-    assert len(calls) == 2
+    assert len(calls) == 2  # asterlite.runtime.result_paging.after_command

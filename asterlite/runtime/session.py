@@ -34,7 +34,6 @@ from asterlite.errors import (
     UnsupportedError,
     ValidationError,
 )
-from asterlite.io import disk_rows
 from asterlite.io.export import RunDescription
 from asterlite.io.input_files import read_deck, read_deck_text
 from asterlite.io.text_encoding import UTF8, UTF8_BOM
@@ -656,9 +655,12 @@ class CommandProxy(DeckCallable):
         if isinstance(concept, Concept):
             session.summaries.add(self.name, site.assigned_name, concept)
         record_call(session, self.name, keywords, concept, reuse, site.location)
-        # the pages of archives on disk the command and its summary read go
-        # back to the system: they cost memory only while a command reads them
-        disk_rows.release_pages()
+        # results past their share of the memory limit go to disk, and the
+        # pages of those on disk the command and its summary read go back to
+        # the system (numpy's stack: a command has run)
+        from asterlite.runtime import result_paging
+
+        result_paging.after_command(session.namespace, concept)
         # a reused concept keeps its name; a new one takes the deck's name
         if isinstance(concept, Concept) and site.assigned_name:
             if reuse is None or concept.name is None:
