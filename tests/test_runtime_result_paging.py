@@ -47,3 +47,20 @@ def test_a_field_on_disk_is_written_into_as_before():
     values[1, 2, 3] = -5.0  # a copy-on-write map: this process's copy only
     assert values[1, 2, 3] == -5.0 and values.sum() == np.arange(24.0).sum() - 23.0 - 5.0
     assert not RP.on_disk(np.ones(3)) and RP.on_disk(values[0])
+
+
+def test_a_field_the_disk_cannot_take_stays_in_memory(monkeypatch, tmp_path):
+    held, new = _result(seed=4), _result(seed=5)
+    limit_mb = 4.5 / RP.RESULT_MEMORY_SHARE
+
+    def full(values, folder=None):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(RP, "to_disk", full)
+    assert RP.page_out({"OLD": held}, new, limit_mb, tmp_path) == []
+    monkeypatch.undo()
+    monkeypatch.setattr(RP, "_file_cap", lambda: 1024)  # every field past the output limit
+    assert RP.page_out({"OLD": held}, new, limit_mb, tmp_path) == []
+    assert not any(RP.on_disk(values) for values in new.fields.values())
+    monkeypatch.undo()
+    assert RP.page_out({"OLD": held}, new, limit_mb, tmp_path) == ["DEPL", "VITE"]

@@ -17,6 +17,7 @@ A run without a memory limit keeps its results in memory.
 from __future__ import annotations
 
 import mmap
+import resource
 
 import numpy as np
 
@@ -60,6 +61,12 @@ def _large(fields: dict) -> list[str]:
     ]
 
 
+def _file_cap() -> float:
+    """The size a file of the run may reach (its output limit: RLIMIT_FSIZE)."""
+    cap = resource.getrlimit(resource.RLIMIT_FSIZE)[0]
+    return float("inf") if cap == resource.RLIM_INFINITY else cap
+
+
 def held_in_memory(namespace: dict) -> int:
     """Bytes of the large in-memory fields of the results ``namespace`` names."""
     seen, total = set(), 0
@@ -79,10 +86,13 @@ def to_disk(values: np.ndarray, folder=None) -> np.ndarray:
     return rows.array().reshape(values.shape)
 
 
-def page_out(namespace: dict, concept, limit_mb: float | None = None) -> list[str]:
-    """Move the large fields of ``concept`` to disk when the results the
-    deck holds (``namespace``, ``concept`` included) pass their share of the
-    memory limit (``limit_mb``, else the run's); the names of the fields moved."""
+def page_out(namespace: dict, concept, limit_mb: float | None = None, folder=None) -> list[str]:
+    """Move the large fields of ``concept`` to unnamed files in ``folder``
+    (None: the system's temporary folder) when the results the deck holds
+    (``namespace``, ``concept`` included) pass their share of the memory
+    limit (``limit_mb``, else the run's); the names of the fields moved. A
+    field past the run's file size limit, or a disk that cannot take it,
+    leaves it in memory (paging saves memory; it is never needed)."""
     limit_mb = watchdog.memory_limit_mb() if limit_mb is None else limit_mb
     fields = paged_fields(concept)
     if not limit_mb or fields is None:
@@ -95,13 +105,21 @@ def page_out(namespace: dict, concept, limit_mb: float | None = None) -> list[st
         held += sum(fields[name].nbytes for name in names)
     if held <= RESULT_MEMORY_SHARE * limit_mb * watchdog.MEGABYTE:
         return []
+    moved = []
     for name in names:
-        fields[name] = to_disk(fields[name])
-    return names
+        if fields[name].nbytes > _file_cap():
+            continue
+        try:
+            fields[name] = to_disk(fields[name], folder)
+        except OSError:  # a full disk, a folder gone: the field stays in memory
+            continue
+        moved.append(name)
+    return moved
 
 
-def after_command(namespace: dict, concept) -> None:
+def after_command(namespace: dict, concept, folder=None) -> None:
     """What the session does after each command: :func:`page_out` its
-    result, then give back the pages of the maps the command read."""
-    page_out(namespace, concept)
+    result (to ``folder``, the run's output folder, as the archives), then
+    give back the pages of the maps the command read."""
+    page_out(namespace, concept, folder=folder)
     disk_rows.release_pages()

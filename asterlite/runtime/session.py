@@ -660,7 +660,7 @@ class CommandProxy(DeckCallable):
         # the system (numpy's stack: a command has run)
         from asterlite.runtime import result_paging
 
-        result_paging.after_command(session.namespace, concept)
+        result_paging.after_command(session.namespace, concept, session.output_dir)
         # a reused concept keeps its name; a new one takes the deck's name
         if isinstance(concept, Concept) and site.assigned_name:
             if reuse is None or concept.name is None:
