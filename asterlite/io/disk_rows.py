@@ -43,7 +43,7 @@ def release_pages() -> int:
         try:
             region.madvise(MADV_PAGEOUT)
         except (OSError, ValueError):  # a kernel before 5.4, a closed map
-            return mapped
+            continue
     return mapped
 
 
