@@ -114,12 +114,12 @@ def test_an_archive_file_past_the_runs_output_limit_is_refused(monkeypatch):
 
 
 def test_the_memory_budget_is_a_share_of_the_runs_headroom(monkeypatch):
-    # a quarter of what the run may still add: with 1 GB left, 256 MB; with
-    # 100 MB left (results of earlier transients held), 25 MB
+    # an eighth of what the run may still add: with 1 GB left, 128 MB; with
+    # 200 MB left (results of earlier transients held), 25 MB
     monkeypatch.setattr(AS.watchdog, "memory_headroom", lambda: 1024**3)
-    assert AS.memory_budget(None) == 256 * 1024**2
+    assert AS.memory_budget(None) == 128 * 1024**2
     assert AS.memory_budget(1000) == 1000
-    monkeypatch.setattr(AS.watchdog, "memory_headroom", lambda: 100 * 1024**2)
+    monkeypatch.setattr(AS.watchdog, "memory_headroom", lambda: 200 * 1024**2)
     assert AS.memory_budget(None) == 25 * 1024**2
     monkeypatch.setattr(AS.watchdog, "memory_headroom", lambda: None)
     assert AS.memory_budget(None) == AS.UNLIMITED_RUN_BYTES
@@ -158,3 +158,69 @@ def test_the_headroom_counts_what_the_run_holds():
         assert 0 < before <= 400 * watchdog.MEGABYTE
         assert before - after > 40 * watchdog.MEGABYTE
         del held
+
+
+def test_doubled_buffers_keep_the_rows_and_leave_the_new_half_zero():
+    from asterlite.dynamics.integrate import doubled, grow
+
+    rows = np.arange(12.0).reshape(3, 2, 2)
+    grown = doubled(rows)
+    assert grown.shape == (6, 2, 2) and grown.dtype == rows.dtype
+    np.testing.assert_array_equal(grown[:3], rows)
+    assert not grown[3:].any()
+    buffers = AS.Archive(*(np.ones((4, 1)) for _ in AS.Archive._fields))
+    assert all(len(b) == 8 for b in grow(buffers))
+
+
+def test_the_pages_of_an_archive_on_disk_are_given_back_and_its_values_kept(monkeypatch):
+    from asterlite.io import disk_rows
+
+    rows = disk_rows.DiskRows(3)
+    rows.append(np.arange(300.0).reshape(100, 3))
+    mapped = rows.array()
+    mapped[0, 0] = -1.0  # a value written into the copy-on-write map
+    advised = []
+
+    class Region:  # records what release_pages asks of a live map
+        def __init__(self, size):
+            self.size = size
+
+        def __len__(self):
+            return self.size
+
+        def madvise(self, option):
+            advised.append(option)
+
+    region = Region(4096)
+    assert disk_rows.release_pages() >= mapped.nbytes  # the real map, paged out
+    assert mapped[0, 0] == -1.0 and mapped[99, 2] == 299.0  # nothing lost
+    monkeypatch.setattr(disk_rows, "_MAPS", [region])
+    assert disk_rows.release_pages() == 4096 and advised == [disk_rows.MADV_PAGEOUT]
+
+
+def test_a_map_no_array_uses_is_no_longer_released():
+    from asterlite.io import disk_rows
+
+    rows = disk_rows.DiskRows(2)
+    rows.append(np.ones((10, 2)))
+    column = rows.array()[:, 1]  # a view keeps the map
+    gc.collect()
+    held = len(disk_rows._MAPS)
+    assert held >= 1
+    del column
+    gc.collect()
+    assert len(disk_rows._MAPS) == held - 1
+
+
+def test_each_command_gives_the_pages_of_archives_on_disk_back(tmp_path, monkeypatch):
+    from asterlite.io import disk_rows
+    from asterlite.runtime.runner import run_deck
+
+    calls = []
+    monkeypatch.setattr(disk_rows, "release_pages", lambda: calls.append(1) or 0)
+    deck = tmp_path / "d.comm"
+    deck.write_text(
+        "DEBUT()\nL = DEFI_LIST_REEL(VALE=(0.0, 1.0))\nM = DEFI_LIST_REEL(VALE=2.0)\nFIN()\n"
+    )
+    run_deck(deck, tmp_path / "out")
+    assert len(calls) == 2  # asterlite.runtime.result_paging.after_command

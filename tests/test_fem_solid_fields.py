@@ -175,3 +175,26 @@ def test_only_the_gauss_fields_asked_for_are_kept(monkeypatch):
     assert per_point == [reference["SIEF_ELGA"].values.shape]
     assert list(alone) == ["SIEF_ELGA"]
     assert np.array_equal(alone["SIEF_ELGA"].values, reference["SIEF_ELGA"].values, equal_nan=True)
+
+
+def test_orders_are_computed_by_chunks_of_bounded_bytes_with_the_same_values(monkeypatch):
+    """The (orders, cells, points, 3, 3) work tensors hold as many orders as
+    fit WORK_BYTES (at least one); one order at a time gives the values of
+    every order at once, bit for bit."""
+    from asterlite.fem import solid_fields
+
+    assert solid_fields.orders_per_chunk(10, 27, 8) == solid_fields.WORK_BYTES // (10 * 27 * 72)
+    assert solid_fields.orders_per_chunk(10**9, 27, 8) == 1
+    mesh = box_mesh("HEXA20", (2, 2, 1), (1.0, 0.8, 1.2), jitter=0.2, seed=3)
+    model, field = solid_model(mesh)
+    numbering = _numbering(model, mesh)
+    rng = np.random.default_rng(7)
+    u = rng.normal(scale=1e-3, size=(5, numbering.n_dofs))
+    cells = np.arange(mesh.n_cells)
+    names = ["SIEF_ELGA", "EPSI_ELGA", "ENEL_ELGA", "SIGM_ELNO", "EPOT_ELEM", "ECIN_ELEM"]
+    monkeypatch.setattr(solid_fields, "WORK_BYTES", 1)
+    chunked = solid_element_fields(model, field, numbering, cells, u, names, velocities=u)
+    monkeypatch.setattr(solid_fields, "WORK_BYTES", 1 << 40)
+    whole = solid_element_fields(model, field, numbering, cells, u, names, velocities=u)
+    for name in names:
+        assert np.array_equal(chunked[name].values, whole[name].values, equal_nan=True), name

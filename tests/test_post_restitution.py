@@ -132,3 +132,30 @@ def test_test_resu_records_reference_and_calc_checks():
     assert verdicts == [(True, True), (True, False), (False, False), (True, True), (True, True)]
     assert "RESU[1] DYN DEPL NO2 DY ordre 5" in ctx.session.tests[0].label
     assert ctx.session.messages[2].startswith("NOOK")
+
+
+def test_every_archived_state_is_selected_without_a_copy():
+    from asterlite.post.restitution import select_instants
+
+    times, order = np.linspace(0.0, 1.0, 50), np.arange(50)
+    states = np.random.default_rng(1).normal(size=(50, 3))
+    whole = select_instants(times, order)
+    picked = whole.apply(states)
+    assert np.shares_memory(picked, states) and not picked.flags.writeable
+    assert np.shares_memory(whole.times, times) and not whole.times.flags.writeable
+    np.testing.assert_array_equal(picked, states)
+    some = select_instants(times, order, nume_ordre=[3, 7])
+    chosen = some.apply(states)
+    assert not np.shares_memory(chosen, states) and chosen.flags.writeable
+    np.testing.assert_array_equal(chosen, states[[3, 7]])
+
+
+def test_functions_of_one_transient_share_its_instants():
+    result = small_transient()
+    ctx = context()
+    first = recu_fonction.run(ctx, kw(RESU_GENE=result, NOM_CHAM="DEPL", NUME_CMP_GENE=1))
+    second = recu_fonction.run(ctx, kw(RESU_GENE=result, NOM_CHAM="VITE", NUME_CMP_GENE=1))
+    assert np.shares_memory(first.abscissas, second.abscissas)
+    values = first.getValues()
+    assert type(values) is list and len(values) == 2 * first.abscissas.size
+    assert values == first.abscissas.tolist() + first.ordinates.tolist()

@@ -199,11 +199,16 @@ class Function(Concept, DeckCallable):
         return self.ordinates.tolist()
 
     def getValues(self):  # noqa: N802
-        """Abscissas then ordinates in one flat list (code_aster's .VALE layout)."""
+        """Abscissas then ordinates in one flat list (code_aster's .VALE
+        layout), built in place (no third list joining the two)."""
+        values = self.abscissas.tolist()
         if self.is_complex:
-            pairs = np.column_stack([self.ordinates.real, self.ordinates.imag]).ravel()
-            return self.abscissas.tolist() + pairs.tolist()
-        return self.abscissas.tolist() + self.ordinates.tolist()
+            values.extend(
+                np.column_stack([self.ordinates.real, self.ordinates.imag]).ravel().tolist()
+            )
+        else:
+            values.extend(self.ordinates.tolist())
+        return values
 
     def Parametres(self):  # noqa: N802
         return {

@@ -32,9 +32,13 @@ from asterlite.errors import NumericalError
 from asterlite.errors import field as named
 from asterlite.io.disk_rows import DiskRows
 
-# share of the run's memory limit an archive may hold in memory (as the
-# physical transients' archives: dynamics.physical.archive)
-ARCHIVE_MEMORY_SHARE = 0.25
+# share of what the run may still add an archive may hold in memory (the
+# physical transients' archives too: dynamics.physical.archive). An eighth:
+# what a deck makes of an archive (its functions, its own arrays, a second
+# transient) comes on top, and a run should stay within half its limit;
+# on disk, an archive costs memory only while a command reads it
+# (asterlite.io.disk_rows.release_pages)
+ARCHIVE_MEMORY_SHARE = 0.125
 # what an archive may hold in memory in a run without a memory limit
 UNLIMITED_RUN_BYTES = 512 * 1024**2
 # the buffers of an archive on disk: rows written out every this many bytes

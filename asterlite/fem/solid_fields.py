@@ -214,8 +214,15 @@ def _components(tensor, n_components):
     return np.stack([tensor[..., i, j] for i, j in _ENTRIES[:n_components]], axis=-1)
 
 
-#: orders of a result computed at once (bounds the work arrays)
-ORDER_CHUNK = 8
+#: bytes of one (orders, cells, points, 3, 3) work tensor: the orders of a
+#: result computed at once are as many as fit (at least one); the strains,
+#: stresses and their temporaries are a few such tensors
+WORK_BYTES = 4 * 1024**2
+
+
+def orders_per_chunk(n_cells: int, n_points: int, itemsize: int) -> int:
+    """Orders whose tensors at ``n_points`` points of ``n_cells`` cells fit :data:`WORK_BYTES`."""
+    return max(1, WORK_BYTES // max(1, n_cells * n_points * 9 * itemsize))
 
 
 def solid_element_fields(
@@ -278,8 +285,10 @@ def solid_element_fields(
         to_nodes = gauss_to_nodes(spec.reference, spec.rigi)
         # a few orders at a time: the (orders, cells, points, 3, 3) tensors of
         # a long transient would otherwise be held all at once, several times
-        for start in range(0, n_orders, ORDER_CHUNK):
-            o = slice(start, min(start + ORDER_CHUNK, n_orders))
+        points = tabulated(spec.reference, spec.rigi)[2].size
+        chunk = orders_per_chunk(rows.size, points, np.dtype(dtype).itemsize)
+        for start in range(0, n_orders, chunk):
+            o = slice(start, min(start + chunk, n_orders))
             u = _gather(numbering, conn, dim, values[o])
             eps, scale = _strains(modelisation, spec, coords, u, poisson, hooke)
             sig = _stresses(modelisation, eps, young, poisson, hooke)

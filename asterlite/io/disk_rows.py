@@ -1,16 +1,50 @@
 """Rows of a large array kept on disk rather than in memory: appended to an
 unnamed file (no name in any folder, gone with the process) and read back
 as a copy-on-write memory map, whose pages the system loads as they are
-read and may drop again. A transient's archive past the run's memory
-budget lives there (:mod:`asterlite.dynamics.physical.archive`, the modal
-loop's :mod:`asterlite.dynamics.archive_store`)."""
+read. A transient's archive past the run's memory budget lives there
+(:mod:`asterlite.dynamics.physical.archive`, the modal loop's
+:mod:`asterlite.dynamics.archive_store`).
+
+The pages a command read stay in the process (its resident size, which a
+run's memory limit counts) until the map is gone: :func:`release_pages`
+gives them back after each command (the session calls it), so an archive
+on disk costs memory only while a command streams through it, as
+code_aster's JEVEUX pages its objects in and out.
+"""
 
 from __future__ import annotations
 
+import mmap
+import sys
 import tempfile
+import weakref
 from pathlib import Path
 
 import numpy as np
+
+# Linux's madvise(MADV_PAGEOUT) (kernel 5.4 and later): take the pages of a
+# range out of the process; unlike MADV_DONTNEED it keeps what was written
+# into a copy-on-write map, so no array loses a value (Python names it from 3.13)
+MADV_PAGEOUT = getattr(mmap, "MADV_PAGEOUT", 21 if sys.platform.startswith("linux") else None)
+
+# the maps DiskRows.array made that an array still uses
+_MAPS: weakref.WeakSet = weakref.WeakSet()
+
+
+def release_pages() -> int:
+    """Take the pages of every live map out of the process (they are read
+    again from the file, or the system's cache, when an array is next
+    read); the number of bytes mapped. Nothing where the system cannot."""
+    mapped = 0
+    for region in list(_MAPS):
+        mapped += len(region)
+        if MADV_PAGEOUT is None:
+            continue
+        try:
+            region.madvise(MADV_PAGEOUT)
+        except (OSError, ValueError):  # a kernel before 5.4, a closed map
+            continue
+    return mapped
 
 
 class DiskRows:
@@ -40,8 +74,13 @@ class DiskRows:
 
     def array(self) -> np.ndarray:
         """The rows written, (count, n_cols): a copy-on-write map of the file
-        (writing into it changes this process's copy only)."""
+        (writing into it changes this process's copy only), whose pages
+        :func:`release_pages` gives back."""
         self._file.flush()
         if self.count == 0 or self.n_cols == 0:
             return np.zeros((self.count, self.n_cols), dtype=self.dtype)
-        return np.memmap(self._file, dtype=self.dtype, mode="c", shape=(self.count, self.n_cols))
+        mapped = np.memmap(self._file, dtype=self.dtype, mode="c", shape=(self.count, self.n_cols))
+        region = getattr(mapped, "_mmap", None)  # numpy's mmap.mmap object
+        if isinstance(region, mmap.mmap):
+            _MAPS.add(region)
+        return mapped

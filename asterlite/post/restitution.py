@@ -49,16 +49,29 @@ class InstantSelection:
     weight: np.ndarray
     times: np.ndarray
     order: np.ndarray
+    # every archived state, in order: ``apply`` gives the states themselves
+    whole: bool = False
 
     def apply(self, states: np.ndarray) -> np.ndarray:
-        """Rows of ``states`` (n_archived, ...) at the selected instants."""
+        """Rows of ``states`` (n_archived, ...) at the selected instants: a
+        new array, or for the whole archive a read-only view of ``states``
+        (functions of a long transient share its archive, no copy)."""
         states = np.asarray(states)
+        if self.whole and states.shape[0] == self.lower.size:
+            return read_only(states)
         upper = np.minimum(self.lower + 1, states.shape[0] - 1)
         w = self.weight.reshape((-1,) + (1,) * (states.ndim - 1))
-        picked = states[self.lower]
+        picked = states[self.lower]  # indexing by an array copies
         if not np.any(self.weight):
-            return picked.copy()
+            return picked
         return (1.0 - w) * picked + w * states[upper]
+
+
+def read_only(values: np.ndarray) -> np.ndarray:
+    """A view of ``values`` that cannot be written into (it is shared)."""
+    view = values.view()
+    view.flags.writeable = False
+    return view
 
 
 def nearest_archived(times, wanted, precision: float, criterion: str) -> np.ndarray:
@@ -116,7 +129,7 @@ def select_instants(
             return InstantSelection(idx, np.zeros(idx.size), times[idx], numbers)
         return interpolation_weights(times, wanted, precision, numbers)
     idx = np.arange(times.size)
-    return InstantSelection(idx, np.zeros(idx.size), times.copy(), order.copy())
+    return InstantSelection(idx, np.zeros(idx.size), read_only(times), read_only(order), True)
 
 
 def interpolation_weights(times, wanted, precision, numbers) -> InstantSelection:

@@ -655,6 +655,12 @@ class CommandProxy(DeckCallable):
         if isinstance(concept, Concept):
             session.summaries.add(self.name, site.assigned_name, concept)
         record_call(session, self.name, keywords, concept, reuse, site.location)
+        # results past their share of the memory limit go to disk, and the
+        # pages of those on disk the command and its summary read go back to
+        # the system (numpy's stack: a command has run)
+        from asterlite.runtime import result_paging
+
+        result_paging.after_command(session.namespace, concept, session.output_dir)
         # a reused concept keeps its name; a new one takes the deck's name
         if isinstance(concept, Concept) and site.assigned_name:
             if reuse is None or concept.name is None:
