@@ -69,6 +69,7 @@ def assemble_blocks(blocks: list[ElementBlock], numbering: DofNumbering) -> sp.c
         idx = idx.astype(np.int32 if n < 2**31 - 1 else np.int64)
         for chunk in _block_chunks(block, idx, n):
             matrix = chunk if matrix is None else matrix + chunk
+            del chunk  # not held while the next one is built
     if matrix is None:
         return sp.csr_matrix((n, n))
     matrix = sp.csr_matrix(matrix)
@@ -97,7 +98,10 @@ def _block_chunks(block: ElementBlock, idx: np.ndarray, n: int):
             rows = np.repeat(part, d, axis=1).ravel()
             cols = np.tile(part, (1, d)).ravel()
             vals = block.chunk(start, start + step).reshape(len(part), -1).ravel()
-        yield sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
+        summed = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
+        del rows, cols, vals  # the triplets are not held while the caller adds
+        yield summed
+        del summed
 
 
 def assemble_terms(terms, numbering: DofNumbering) -> np.ndarray:
