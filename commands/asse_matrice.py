@@ -19,9 +19,13 @@ def run(ctx, kw):
     matrix = None
     try:
         # one set of element matrices at a time: those released by
-        # CALC_MATR_ELEM are made again here, then dropped
+        # CALC_MATR_ELEM are made again here, and dropped block by block as
+        # they are summed
         for elementary_matrices in elementary:
-            part = assemble_blocks(elementary_matrices.element_blocks(), numbering)
+            blocks = elementary_matrices.element_blocks()
+            made_again = elementary_matrices.blocks is None
+            part = assemble_blocks(blocks, numbering, consume=made_again)
+            del blocks
             matrix = part if matrix is None else matrix + part
     except KeyError:
         ctx.error("the element matrices use DOFs the numbering does not have", "NUME_DDL", kw)

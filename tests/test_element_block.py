@@ -122,6 +122,30 @@ def test_assembly_of_packed_blocks_matches_whole_matrices(dtype, monkeypatch):
     assert abs(packed - packed.T).max() == 0.0
 
 
+def test_an_assembly_given_its_blocks_drops_each_once_summed(monkeypatch):
+    rng = np.random.default_rng(8)
+    n_nodes, components = 9, ("DX", "DY")
+    numbering = _numbering(n_nodes, components)
+    blocks = [
+        ElementBlock(
+            np.array([rng.choice(n_nodes, 2, replace=False) for _ in range(30)]),
+            components,
+            _symmetric(rng, 30, 4, dtype),
+        )
+        for dtype in (float, complex)
+    ]
+    monkeypatch.setattr("asterlite.fem.assemble.CHUNK_TERMS", 100)
+    kept = list(blocks)
+    summed = assemble_blocks(kept, numbering)
+    assert kept == blocks  # the caller's list, untouched
+    given = list(blocks)
+    consumed = assemble_blocks(given, numbering, consume=True)
+    assert given == []  # each block left the list once its terms were in
+    assert (consumed != summed).nnz == 0  # the same sums, term for term
+    for array in (summed.data, summed.indices):  # no room of the sums left over
+        assert array.base is None or array.base.nbytes == array.nbytes
+
+
 def test_computed_block_packs_chunk_by_chunk_or_keeps_all_whole():
     rng = np.random.default_rng(5)
     nodes = np.arange(10)[:, None]

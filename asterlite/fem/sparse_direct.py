@@ -214,12 +214,19 @@ class MumpsPatternFactor:
         self._analysed = False
         self._mumps_error = mumps.MUMPSError
 
-    def analyse(self, values: np.ndarray) -> int:
+    @property
+    def values(self) -> np.ndarray:
+        """The array MUMPS reads the values from: a caller may write them
+        there and call :meth:`analyse` or :meth:`factorise` without any."""
+        return self._context.data
+
+    def analyse(self, values: np.ndarray | None = None) -> int:
         """Order the pattern and plan the factorisation (MUMPS's JOB = 1,
         with these values for its scaling), and decide whether the factor goes
         out of core; returns MUMPS's estimate of the factor's entries
         (INFOG(20))."""
-        self._context.data[:] = values
+        if values is not None:
+            self._context.data[:] = values
         try:
             self._context.analyze(ordering=MUMPS_ORDERING)
         except self._mumps_error as exc:
@@ -231,13 +238,14 @@ class MumpsPatternFactor:
         entries = int(instance.infog[20])
         return entries if entries >= 0 else -entries * 1_000_000  # < 0: millions
 
-    def factorise(self, values: np.ndarray) -> None:
-        """Factorise the matrix of these values on the pattern (analysed
-        first if it was not); raises :class:`SingularFactorError` when MUMPS
-        finds it singular."""
+    def factorise(self, values: np.ndarray | None = None) -> None:
+        """Factorise the matrix of these values (None: those already in
+        :attr:`values`) on the pattern (analysed first if it was not);
+        raises :class:`SingularFactorError` when MUMPS finds it singular."""
         if not self._analysed:
             self.analyse(values)
-        self._context.data[:] = values
+        if values is not None:
+            self._context.data[:] = values
         try:
             self._context.factor(ooc=self.out_of_core, reuse_analysis=True)
         except self._mumps_error as exc:

@@ -37,8 +37,14 @@ class ReducedPencil:
     perm: np.ndarray | None = None
     _norms: tuple | None = None
 
-    def data(self, frequency: float) -> np.ndarray:
-        """The values of K + iωC - ω²M on the pattern."""
+    def data(self, frequency: float, out: np.ndarray | None = None) -> np.ndarray:
+        """The values of K + iωC - ω²M on the pattern (written into ``out``,
+        complex, when given: a solver's own input array)."""
+        if out is not None:
+            np.subtract(self.stiffness, omega2(frequency) * self.mass, out=out)
+            if self.damping is not None:
+                np.add(out, (1j * TWO_PI * frequency) * self.damping, out=out)
+            return out
         data = self.stiffness - omega2(frequency) * self.mass
         if self.damping is not None:
             data = data + (1j * TWO_PI * frequency) * self.damping
@@ -140,11 +146,11 @@ class ReducedPencil:
 def aligned_pencil(stiffness, mass, damping, upper: bool = False) -> ReducedPencil:
     """The three reduced matrices on the union of their patterns (``upper``:
     of their upper triangles, the matrices being symmetric)."""
-    mats = [
-        sp.coo_matrix(sp.triu(m) if upper else m)
-        for m in (stiffness, mass, damping)
-        if m is not None
-    ]
+    if upper:
+        return aligned_triangles(
+            *(None if m is None else sp.triu(m, format="csc") for m in (stiffness, mass, damping))
+        )
+    mats = [sp.coo_matrix(m) for m in (stiffness, mass, damping) if m is not None]
     n = mats[0].shape[0]
     keys = [m.col.astype(np.int64) * n + m.row for m in mats]  # column-major keys
     pattern = sorted_unique(np.concatenate(keys))
@@ -165,5 +171,138 @@ def aligned_pencil(stiffness, mass, damping, upper: bool = False) -> ReducedPenc
         stiffness=values[0],
         mass=values[1],
         damping=values[2] if damping is not None else None,
-        upper=upper,
+        upper=False,
     )
+
+
+def aligned_triangles(stiffness, mass, damping, owned: bool = False) -> ReducedPencil:
+    """An upper pencil from the upper triangles (CSC) of symmetric reduced
+    matrices, on the union of their patterns. Each triangle is read column
+    by column: no coordinate copy of a whole matrix; a triangle whose
+    pattern is the union (the stiffness, as a rule) gives its own indices,
+    and with ``owned`` (the caller's copies, consumed) its own values."""
+    triangles = [None if m is None else sp.csc_matrix(m) for m in (stiffness, mass, damping)]
+    present = [m for m in triangles if m is not None]
+    for m in present:
+        m.sum_duplicates()  # sorted rows in each column, as the keys below
+    n = present[0].shape[0]
+
+    def keys(m):  # column-major keys of the stored terms, sorted
+        columns = np.repeat(np.arange(n, dtype=np.int64), np.diff(m.indptr))
+        columns *= n
+        columns += m.indices
+        return columns
+
+    widest = max(present, key=lambda m: m.nnz)
+    pattern = keys(widest)
+    for m in present:
+        if m is not widest:
+            pattern = sorted_unique(np.concatenate([pattern, keys(m)]))
+    if pattern.size == widest.nnz:  # the widest's pattern holds the others'
+        del pattern
+        indptr, indices, pattern = widest.indptr, widest.indices, None
+    else:
+        indptr = np.zeros(n + 1, dtype=np.int64)
+        np.cumsum(np.bincount(pattern // n, minlength=n), out=indptr[1:])
+        indices = pattern % n
+    size = indices.size
+    values = []
+    for m in triangles:
+        if m is None:
+            values.append(None)
+            continue
+        dtype = np.result_type(m.data.dtype, float)
+        if m.nnz == size:  # its pattern is the union: its values in place
+            # 0 + v, as the scattered values below (a zero's sign included)
+            data = m.data if owned and m.data.dtype == dtype else np.zeros(size, dtype)
+            data += 0.0 if data is m.data else m.data
+        else:
+            where = np.searchsorted(pattern if pattern is not None else keys(widest), keys(m))
+            data = np.zeros(size, dtype)
+            data[where] += m.data
+            del where
+        values.append(data)
+    index_type = np.int32 if n < 2**31 else np.int64
+    return ReducedPencil(
+        n=n,
+        indices=np.asarray(indices, dtype=index_type),
+        indptr=np.asarray(indptr, dtype=np.int32 if size < 2**31 else np.int64),
+        stiffness=values[0],
+        mass=values[1],
+        damping=values[2],
+        upper=True,
+    )
+
+
+def selected_dofs(t) -> np.ndarray | None:
+    """The DOFs T keeps when u = T q only selects them (each column of T a
+    single 1 on its own row, in the DOFs' order: constraints that fix DOFs,
+    no relation between DOFs), else None. Tᵀ A T is then A[kept][:, kept]
+    exactly: each term of the products is one term of A times 1."""
+    t = sp.csr_matrix(t)
+    n_free = t.shape[1]
+    if t.nnz != n_free or not np.all(t.data == 1.0):
+        return None
+    counts = np.diff(t.indptr)
+    if counts.size and counts.max() > 1:
+        return None
+    kept = np.flatnonzero(counts)
+    if not np.array_equal(t.indices[t.indptr[kept]], np.arange(n_free)):
+        return None
+    return kept
+
+
+#: terms compared at once by :func:`symmetric_on`
+COMPARED_TERMS = 1 << 20
+
+
+def symmetric_on(matrix, kept: np.ndarray, tolerance: float) -> bool | None:
+    """Whether A[kept][:, kept] is symmetric to ``tolerance`` (its largest
+    |A - Aᵀ| at most ``tolerance`` times its largest |A|), without the
+    reduced copy nor a transposed one: each term's transpose is looked up
+    in the sorted keys of A's pattern (a term without one differs by its
+    own value), a block of terms at a time. None when A has duplicate or
+    unsorted terms (the caller then reduces and compares whole matrices)."""
+    a = sp.csr_matrix(matrix)
+    n = a.shape[0]
+    if a.shape[1] != n or not a.has_canonical_format:
+        return None
+    keys = np.repeat(np.arange(n, dtype=np.int64), np.diff(a.indptr))
+    keys *= n  # row-major keys of the terms: sorted, A being canonical
+    keys += a.indices
+    inside = np.zeros(n, dtype=bool)
+    inside[kept] = True
+    worst = scale = 0.0
+    for start in range(0, a.nnz, COMPARED_TERMS):
+        stop = min(start + COMPARED_TERMS, a.nnz)
+        row, col = keys[start:stop] // n, a.indices[start:stop]
+        used = inside[row] & inside[col]
+        values = a.data[start:stop][used]
+        if not values.size:
+            continue
+        scale = max(scale, float(np.abs(values).max()))
+        mirror = col[used].astype(np.int64) * n + row[used]
+        where = np.minimum(np.searchsorted(keys, mirror), a.nnz - 1)
+        found = keys[where] == mirror
+        transposed = np.where(found, a.data[where], 0)
+        worst = max(worst, float(np.abs(values - transposed).max()))
+    return worst <= tolerance * scale
+
+
+def selected_upper(matrix, kept: np.ndarray) -> sp.csc_matrix:
+    """The upper triangle (CSC) of A[kept][:, kept], ``kept`` increasing,
+    without its zero terms (as Tᵀ A T by sparse products keeps none)."""
+    a = sp.csr_matrix(matrix)
+    n_kept = kept.size
+    index_type = np.int32 if a.shape[0] < 2**31 else np.int64
+    renumbered = np.full(a.shape[0], -1, dtype=index_type)
+    renumbered[kept] = np.arange(n_kept, dtype=index_type)
+    rows = renumbered[np.repeat(np.arange(a.shape[0], dtype=index_type), np.diff(a.indptr))]
+    cols = renumbered[a.indices]
+    keep = (rows >= 0) & (cols >= rows) & (a.data != 0)
+    rows, cols = rows[keep], cols[keep]
+    data = a.data[keep]
+    del keep
+    upper = sp.csc_matrix((data, (rows, cols)), shape=(n_kept, n_kept))
+    upper.sum_duplicates()
+    return upper

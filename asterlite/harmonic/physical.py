@@ -46,7 +46,14 @@ from asterlite.fem.constraints import Elimination
 from asterlite.harmonic import ldl
 from asterlite.harmonic.fields import TWO_PI, omega2
 from asterlite.harmonic.modal import SingularSystem
-from asterlite.harmonic.pencil import ReducedPencil, aligned_pencil
+from asterlite.harmonic.pencil import (
+    ReducedPencil,
+    aligned_pencil,
+    aligned_triangles,
+    selected_dofs,
+    selected_upper,
+    symmetric_on,
+)
 
 # backward error |A x - b| / (|A| |x| + |b|) (max norms) a solution must reach
 BACKWARD_TOLERANCE = 1.0e-13
@@ -105,20 +112,38 @@ class PhysicalSweep:
 
 def prepare(elimination: Elimination, stiffness, mass, damping=None) -> PhysicalSweep:
     """Reduce the assembled matrices (n_dofs × n_dofs, sparse) once; symmetric
-    ones are kept as their upper triangles."""
+    ones are kept as their upper triangles.
+
+    When T only selects DOFs (constraints that fix them, the usual case),
+    the upper triangles of A[kept][:, kept] are read from each matrix with
+    its symmetry checked in place: no reduced nor transposed whole copy."""
+    given = (stiffness, mass, damping)
+    n = elimination.T.shape[1]
+    kept = selected_dofs(elimination.T) if n >= LDL_MIN_SIZE else None
+    if kept is not None:
+        checks = [True if m is None else symmetric_on(m, kept, 1e-13) for m in given]
+        if all(check is True for check in checks):
+            triangles = [None if m is None else selected_upper(m, kept) for m in given]
+            pencil = aligned_triangles(*triangles, owned=True)
+            del triangles
+            return PhysicalSweep(elimination, pencil, True, backend=_backend(n))
     t = elimination.T
 
     def reduced(matrix):
         return None if matrix is None else sp.csr_matrix(t.T @ (sp.csr_matrix(matrix) @ t))
 
-    matrices = [reduced(stiffness), reduced(mass), reduced(damping)]
+    matrices = [reduced(m) for m in given]
     symmetric = all(m is None or ldl.is_symmetric(m, 1e-13) for m in matrices)
-    n = matrices[0].shape[0]
     upper = symmetric and n >= LDL_MIN_SIZE
-    backend = "mumps" if upper and sparse_direct.choose_backend(n) == "mumps" else "ldl"
+    backend = _backend(n) if upper else "ldl"
     return PhysicalSweep(
         elimination, aligned_pencil(*matrices, upper=upper), symmetric, backend=backend
     )
+
+
+def _backend(n: int) -> str:
+    """MUMPS for a symmetric pencil of n unknowns where it is chosen, else the LDLᵀ."""
+    return "mumps" if sparse_direct.choose_backend(n) == "mumps" else "ldl"
 
 
 def _column_ordering(pattern: sp.csr_matrix, spec: str) -> np.ndarray | None:
@@ -268,7 +293,9 @@ def _solve_one(
             a.source = None
     pencil = sweep.pencil
     norm = pencil.norm_bound(frequency)
-    data = pencil.data(frequency)
+    # MUMPS's values are built in its own input array (MUMPS only reads it)
+    into = sweep.mumps.values if sweep.backend == "mumps" else None
+    data = pencil.data(frequency, out=into)
     if last:
         pencil.release_values()
     if sweep.backend == "mumps":
@@ -276,7 +303,7 @@ def _solve_one(
         stops = last
         try:
             try:
-                factor.factorise(data)
+                factor.factorise()
             except sparse_direct.SingularFactorError:
                 stops = True  # the sweep ends here: its factor and folder go
                 raise SingularSystem(float(frequency)) from None
@@ -312,7 +339,7 @@ def _start_mumps(sweep: PhysicalSweep, frequency: float) -> None:
     pencil = sweep.pencil
     factor = sparse_direct.MumpsPatternFactor(pencil.n, pencil.indptr, pencil.indices)
     try:
-        entries = factor.analyse(pencil.data(frequency))
+        entries = factor.analyse(pencil.data(frequency, out=factor.values))
     except sparse_direct.SingularFactorError:
         entries = 0  # the LDLᵀ path then finds the singular frequency
     if entries < MUMPS_MIN_MEAN_COLUMN * pencil.n:
