@@ -4,7 +4,10 @@ same solution either way."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
+import pytest
 import scipy.sparse as sp
 
 from asterlite.fem.factorization import definite_solver
@@ -79,3 +82,138 @@ def test_duplicate_entries_are_summed_before_cholmod():
     solve = definite_solver(doubled)
     assert solve.__qualname__.startswith("_cholmod_solver")
     np.testing.assert_allclose(matrix @ solve(rhs), rhs, atol=1e-12)
+
+
+def _old_asymmetry(matrix) -> float:
+    difference = matrix - matrix.T
+    return float(np.abs(difference.data).max()) if difference.nnz else 0.0
+
+
+def test_the_symmetry_test_by_triangles_measures_what_a_minus_its_transpose_does():
+    """The lower triangle taken with the symmetry test is sp.tril's, and the
+    test accepts exactly the matrices whose max |A - Aᵀ| is within the
+    tolerance, CSR and CSC, with empty rows and one-sided entries."""
+    from asterlite.fem import factorization
+
+    rng = np.random.default_rng(3)
+    base = sp.random(60, 60, density=0.08, random_state=4, format="csr")
+    base = base + base.T + sp.diags(rng.uniform(1.0, 2.0, 60))
+    base = sp.lil_matrix(base)
+    base[7, :] = 0.0  # an empty row and column
+    base[:, 7] = 0.0
+    base = sp.csr_matrix(base)
+    base.eliminate_zeros()
+    scale = float(np.abs(base.data).max())
+    for noise in (0.0, 1.0e-14 * scale, 1.0e-9 * scale):
+        perturbed = sp.lil_matrix(base, copy=True)
+        perturbed[3, 50] = perturbed[3, 50] + noise  # one side only (may add an entry)
+        for matrix in (sp.csr_matrix(perturbed), sp.csc_matrix(perturbed)):
+            matrix.sum_duplicates()
+            lower = factorization._symmetric_lower(matrix)
+            symmetric = _old_asymmetry(matrix) <= factorization.SYMMETRY_TOLERANCE * scale
+            assert (lower is not None) == symmetric
+            if lower is not None:
+                assert lower.format == "csc"
+                expected = sp.tril(matrix, format="csc")
+                assert np.array_equal(lower.indptr, expected.indptr)
+                assert np.array_equal(lower.indices, expected.indices)
+                assert np.array_equal(lower.data, expected.data)
+
+
+def test_a_built_step_matrix_is_let_go_of_before_cholmod_factorises(monkeypatch):
+    """Given a function building the step matrix, the solver keeps only its
+    lower triangle: the whole matrix is gone when CHOLMOD is called, and the
+    solution is the one of the matrix given whole."""
+    import gc
+    import weakref
+
+    from cholespy import CholeskySolverD
+
+    from asterlite.fem import factorization
+
+    built, alive = [], []
+
+    def build():
+        matrix = sp.csr_matrix(laplacian(15))
+        built.append(weakref.ref(matrix))
+        return matrix
+
+    def recording(*args):
+        gc.collect()
+        alive.append([ref() is not None for ref in built])
+        return CholeskySolverD(*args)
+
+    monkeypatch.setattr(factorization, "CholeskySolverD", recording)
+    solve = definite_solver(build)
+    assert alive == [[False]]
+    rhs = np.linspace(-1.0, 1.0, 225)
+    assert np.array_equal(solve(rhs), definite_solver(sp.csr_matrix(laplacian(15)))(rhs))
+
+
+def test_a_built_indefinite_matrix_is_built_again_for_superlu():
+    calls = []
+
+    def build():
+        calls.append(1)
+        return sp.csr_matrix(laplacian(10) - 3.0 * sp.identity(100))
+
+    solve = definite_solver(build)
+    assert len(calls) == 2 and not solve.__qualname__.startswith("_cholmod_solver")
+    rhs = np.arange(100.0)
+    np.testing.assert_allclose(build() @ solve(rhs), rhs, atol=1e-9)
+
+
+def test_large_step_matrices_go_to_mumps_with_the_solution_of_cholmod(monkeypatch):
+    """From sparse_direct's LARGE_LIMIT unknowns on, with MUMPS installed,
+    the step matrix is factorised by MUMPS (out of core past its share of
+    the memory limit), with CHOLMOD's solution to rounding; smaller ones and
+    ASTERLITE_SPARSE_SOLVER=cholmod keep CHOLMOD."""
+    from asterlite.fem import factorization, sparse_direct
+
+    if not sparse_direct.mumps_available():
+        pytest.skip("python-mumps is not installed")
+    monkeypatch.delenv("ASTERLITE_SPARSE_SOLVER", raising=False)
+    matrix = sp.csr_matrix(laplacian(70))
+    assert matrix.shape[0] >= sparse_direct.LARGE_LIMIT
+    rhs = np.random.default_rng(5).standard_normal(matrix.shape[0])
+    solve = definite_solver(lambda: matrix)
+    assert solve.__qualname__.startswith("_mumps_solver")
+    expected = factorization._cholmod_solver(sp.tril(matrix, format="csc"))(rhs)
+    np.testing.assert_allclose(solve(rhs), expected, rtol=1e-10, atol=1e-12)
+    monkeypatch.setenv("ASTERLITE_SPARSE_SOLVER", "cholmod")
+    assert definite_solver(matrix).__qualname__.startswith("_cholmod_solver")
+    small = sp.csr_matrix(laplacian(20))
+    monkeypatch.delenv("ASTERLITE_SPARSE_SOLVER")
+    assert definite_solver(small).__qualname__.startswith("_cholmod_solver")
+
+
+def test_an_out_of_core_step_factor_leaves_no_folder_once_let_go_of(monkeypatch):
+    """A step factor past its share of the memory limit is written to disk
+    by MUMPS, solves as the one in core does, and its folder goes when the
+    scheme lets the solve go (a new step size, the end of the run)."""
+    import gc
+
+    from asterlite.fem import sparse_direct
+
+    if not sparse_direct.mumps_available():
+        pytest.skip("python-mumps is not installed")
+    monkeypatch.delenv("ASTERLITE_SPARSE_SOLVER", raising=False)
+    matrix = sp.csr_matrix(laplacian(70))
+    rhs = np.random.default_rng(6).standard_normal(matrix.shape[0])
+    in_core = definite_solver(matrix)(rhs)
+    folders = []
+    chosen = sparse_direct._out_of_core_folder
+
+    def out_of_core(instance):
+        monkeypatch.setattr(sparse_direct, "_needs_out_of_core", lambda size: True)
+        folders.append(chosen(instance))
+        return folders[-1]
+
+    monkeypatch.setattr(sparse_direct, "_out_of_core_folder", out_of_core)
+    solve = definite_solver(lambda: matrix)
+    assert folders and folders[0] is not None
+    assert Path(folders[0]).is_dir()
+    np.testing.assert_allclose(solve(rhs), in_core, rtol=1e-10, atol=1e-12)
+    del solve
+    gc.collect()
+    assert not Path(folders[0]).exists()

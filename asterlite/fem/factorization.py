@@ -11,6 +11,7 @@ solvers do (``STOP_SINGULIER='OUI'`` stops, ``'NON'`` only warns).
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -20,6 +21,12 @@ import scipy.sparse.linalg as spla
 from cholespy import CholeskySolverD, MatrixType
 
 from asterlite.fem.constraints import Elimination, eliminate
+from asterlite.fem.sparse_direct import (
+    LARGE_LIMIT,
+    MumpsFactor,
+    SingularFactorError,
+    choose_backend,
+)
 
 #: iterative refinement steps of the solve phase (POSTTRAITEMENTS)
 REFINEMENT_STEPS = {"SANS": 0, "MINI": 1, "AUTO": 2, "FORCE": 10}
@@ -69,31 +76,113 @@ SYMMETRY_TOLERANCE = 1.0e-12
 
 def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
     """A solve with the sparse matrix of an implicit scheme's step (K + a0 M
-    + a1 C: symmetric, and positive definite when the mass is): CHOLMOD's
-    supernodal Cholesky (through cholespy) where the matrix is symmetric and
-    the factorisation finds it positive definite, a fraction of SuperLU's
-    fill on 3D meshes (docs/performance.md, "Memory"); SuperLU otherwise."""
-    if not sp.issparse(matrix) or matrix.format not in ("csr", "csc"):
-        matrix = sp.csc_matrix(matrix)
-    matrix.sum_duplicates()  # canonical: sorted indices, one entry per position
-    scale = float(np.abs(matrix.data).max()) if matrix.nnz else 0.0
-    if matrix.shape[0] and scale > 0.0 and _asymmetry(matrix) <= SYMMETRY_TOLERANCE * scale:
+    + a1 C: symmetric, and positive definite when the mass is). Where the
+    matrix is symmetric: MUMPS's LDLᵀ from LARGE_LIMIT unknowns on where it
+    is installed (:func:`_multifrontal`: out of core past its share of the
+    memory limit), else CHOLMOD's Cholesky (through cholespy) when the
+    factorisation finds it positive definite, either a fraction of
+    SuperLU's fill on 3D meshes (docs/performance.md, "Memory"); SuperLU
+    otherwise.
+
+    ``matrix``: the matrix, or a function building it. Given a function,
+    nothing holds the whole matrix while CHOLMOD factorises: only its lower
+    triangle, all CHOLMOD reads, is kept (the matrix is built again only
+    when it is not positive definite and SuperLU needs it whole)."""
+    build = matrix if callable(matrix) else None
+    if build is not None:
+        matrix = build()
+    matrix = _canonical(matrix)
+    lower = _symmetric_lower(matrix)
+    if lower is not None:
+        if build is not None:
+            del matrix  # the caller holds no reference: its memory goes to the factor
         try:
-            # CHOLMOD reads the lower triangle only (its symmetric storage):
-            # half a copy of the matrix beside its factor, not a whole one
-            return _cholmod_solver(sp.tril(matrix, format="csc"))
-        except ValueError:  # not positive definite: LU with pivoting
-            pass
+            if _multifrontal(lower.shape[0]):
+                return _mumps_solver(lower)
+            return _cholmod_solver(lower)
+        except (ValueError, SingularFactorError):  # LU with pivoting
+            del lower
+            if build is not None:
+                matrix = _canonical(build())
     return spla.splu(sp.csc_matrix(matrix)).solve
 
 
-def _asymmetry(matrix: sp.csc_matrix) -> float:
-    """max |A - Aᵀ|, with one temporary of the difference's size."""
-    difference = matrix - matrix.T
-    if not difference.nnz:
-        return 0.0
-    np.abs(difference.data, out=difference.data)
-    return float(difference.data.max())
+def _multifrontal(n: int) -> bool:
+    """Whether a step matrix of ``n`` unknowns goes to MUMPS rather than
+    CHOLMOD: from sparse_direct's LARGE_LIMIT unknowns on, where MUMPS is
+    installed (and ASTERLITE_SPARSE_SOLVER does not ask for another). A
+    MUMPS factor past its share of what the run may still add goes to disk
+    (sparse_direct.MumpsFactor, as code_aster's GESTION_MEMOIRE='AUTO'),
+    and its fronts factorise several times faster than cholespy's CHOLMOD,
+    column by column; in core, its PORD ordering fills about as much as
+    CHOLMOD's (sdlv127e's step matrix: 17.2 M entries against 14.9 M)."""
+    return n >= LARGE_LIMIT and choose_backend(n) == "mumps"
+
+
+def _mumps_solver(lower: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarray]:
+    # the CSC arrays of the lower triangle read as CSR are the upper
+    # triangle, which MumpsFactor hands MUMPS (no copy of the whole matrix)
+    factor = MumpsFactor(lower.T)
+
+    def solve(rhs: np.ndarray) -> np.ndarray:
+        return factor.solve(rhs)
+
+    # an out-of-core factor's files go when the solve is let go of
+    weakref.finalize(solve, factor.close)
+    return solve
+
+
+def _canonical(matrix):
+    if not sp.issparse(matrix) or matrix.format not in ("csr", "csc"):
+        matrix = sp.csc_matrix(matrix)
+    matrix.sum_duplicates()  # canonical: sorted indices, one entry per position
+    return matrix
+
+
+def _symmetric_lower(matrix) -> sp.csc_matrix | None:
+    """The lower triangle of a canonical CSR or CSC matrix, in CSC, when
+    the matrix is symmetric (max |A - Aᵀ| within SYMMETRY_TOLERANCE of its
+    largest entry), else None. The triangles are masks on the matrix's own
+    arrays, and the upper one read the other way round (CSR as CSC, or the
+    reverse) is the transpose the lower one is compared with: the test
+    holds no transposed copy of the whole matrix, only its halves."""
+    n = matrix.shape[0]
+    scale = float(np.abs(matrix.data).max()) if matrix.nnz else 0.0
+    if not n or scale <= 0.0:
+        return None
+    by_rows = matrix.format == "csr"
+    # the row (CSR) or column (CSC) of each stored entry
+    major = np.repeat(np.arange(n, dtype=matrix.indices.dtype), np.diff(matrix.indptr))
+    # lower triangle of CSR: column <= row; of CSC: row >= column (and the reverse)
+    lower_test, upper_test = (
+        (np.less_equal, np.greater_equal) if by_rows else (np.greater_equal, np.less_equal)
+    )
+    mask = lower_test(matrix.indices, major)
+    lower = _masked(matrix, mask)
+    upper_test(matrix.indices, major, out=mask)
+    del major
+    upper = _masked(matrix, mask)  # diagonals in both: they cancel in the difference
+    del mask
+    other = sp.csc_matrix if by_rows else sp.csr_matrix
+    mirrored = other((upper.data, upper.indices, upper.indptr), shape=matrix.shape)
+    del upper
+    lower = lower.tocsc() if by_rows else lower
+    # tril(A) - triu(A)ᵀ: A - Aᵀ below the diagonal (above it, its opposite)
+    difference = lower - mirrored
+    del mirrored
+    asymmetry = float(np.abs(difference.data).max()) if difference.nnz else 0.0
+    del difference
+    return lower if asymmetry <= SYMMETRY_TOLERANCE * scale else None
+
+
+def _masked(matrix, keep: np.ndarray):
+    """The entries of a CSR or CSC matrix where ``keep``, in its format."""
+    before = np.zeros(keep.size + 1, dtype=matrix.indptr.dtype)
+    np.cumsum(keep, out=before[1:])  # kept entries before each position
+    kind = sp.csr_matrix if matrix.format == "csr" else sp.csc_matrix
+    return kind(
+        (matrix.data[keep], matrix.indices[keep], before[matrix.indptr]), shape=matrix.shape
+    )
 
 
 def _cholmod_solver(matrix: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarray]:

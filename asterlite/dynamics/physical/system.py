@@ -66,6 +66,8 @@ class PhysicalSystem:
     _imposed_operators: tuple | None = field(default=None, repr=False)
     # Tᵀ S of each load history (S gathers its terms onto the DOFs), made once
     _history_maps: dict = field(default_factory=dict, repr=False)
+    # Tᵀ (K u0) and each load's Tᵀ F, made at the first block of forces
+    _reduced_loads: tuple | None = field(default=None, repr=False)
 
     @property
     def n_free(self) -> int:
@@ -111,11 +113,14 @@ class PhysicalSystem:
     def forces(self, times: np.ndarray) -> np.ndarray:
         """Reduced external forces Tᵀ (F(t) - K u0) at each instant: (n_times, n_free)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
-        offset = self.reduce_vector(self.full_stiffness @ self.elimination.u0)
+        if self._reduced_loads is None:  # the same at every block of instants: made once
+            offset = self.reduce_vector(self.full_stiffness @ self.elimination.u0)
+            self._reduced_loads = (offset, [self.reduce_vector(load.vector) for load in self.loads])
+        offset, vectors = self._reduced_loads
         out = np.tile(-offset, (times.size, 1))
-        for load in self.loads:
+        for load, vector in zip(self.loads, vectors, strict=True):
             coefficients = load.coefficients(times)
-            out += np.outer(coefficients, self.reduce_vector(load.vector))
+            out += np.outer(coefficients, vector)
             if load.history is not None:
                 out += coefficients[:, None] * self.reduced_history(load.history, times)
         return out
