@@ -4,9 +4,13 @@
 The relations of the matrix's numbering are eliminated (``u = T q + u0``,
 :mod:`asterlite.fem.constraints`), the reduced matrix ``Tᵀ A T`` is factorised
 once by a sparse direct method, and each solve gives the displacement with the
-relations' imposed values. A pivot that loses more than ``NPREC`` digits
-against its diagonal term marks the matrix singular, as code_aster's direct
-solvers do (``STOP_SINGULIER='OUI'`` stops, ``'NON'`` only warns).
+relations' imposed values. A real symmetric matrix of LARGE_LIMIT unknowns
+or more is factorised by MUMPS (out of core past its share of the memory
+limit), any other by SuperLU. A pivot that loses more than ``NPREC`` digits
+against its diagonal term (SuperLU), or that is below 10^-NPREC of the
+largest row sum (MUMPS's null pivots), marks the matrix singular, as
+code_aster's direct solvers do (``STOP_SINGULIER='OUI'`` stops, ``'NON'``
+only warns).
 """
 
 from __future__ import annotations
@@ -38,23 +42,53 @@ class FactorizationError(ValueError):
 
 @dataclass(eq=False)
 class Factorization:
-    """The reduced matrix of an assembled matrix, factorised."""
+    """The reduced matrix of an assembled matrix, factorised: by SuperLU
+    (``lost_digits``: the largest loss of digits over its pivots), or, for
+    a real symmetric one of LARGE_LIMIT unknowns or more, by MUMPS
+    (``null_pivots``: its pivots below 10^-``digits`` of the largest row
+    sum, code_aster's test with MUMPS; ``lost_digits`` is then NaN)."""
 
     elimination: Elimination
     reduced: sp.csc_matrix
-    lu: object  # scipy SuperLU
-    lost_digits: float  # largest loss of digits over the pivots
+    lu: object  # scipy SuperLU or sparse_direct.MumpsFactor
+    lost_digits: float
+    null_pivots: int | None = None
+    digits: int = 8
 
     def solve_reduced(self, rhs: np.ndarray) -> np.ndarray:
         if self.lu is None:  # dropped when the session was saved
-            self.lu = _superlu(self.reduced)
+            self.lu = _factor(self.reduced, self.digits)
+            _closed_with(self, self.lu)
         return self.lu.solve(rhs)
 
     def __getstate__(self):
-        # SuperLU objects cannot be pickled: keep the reduced matrix only
+        # SuperLU and MUMPS factors cannot be pickled: keep the reduced matrix only
         state = dict(self.__dict__)
         state["lu"] = None
         return state
+
+
+def _closed_with(owner, factor) -> None:
+    """A MUMPS factor is closed (an out-of-core one's files removed) when
+    its owner goes."""
+    if isinstance(factor, MumpsFactor):
+        weakref.finalize(owner, factor.close)
+
+
+def _factor(reduced: sp.csc_matrix, digits: int):
+    """MUMPS's factor of a real symmetric ``reduced`` of LARGE_LIMIT unknowns
+    or more (out of core past its share of the memory limit), SuperLU's
+    otherwise."""
+    if not np.iscomplexobj(reduced.data) and _multifrontal(reduced.shape[0]):
+        lower = _symmetric_lower(_canonical(reduced))
+        if lower is not None:
+            try:
+                threshold = 10.0**-digits if digits >= 0 else None  # NPREC < 0: no test
+                factor = MumpsFactor(lower.T, null_pivot_threshold=threshold)
+            except SingularFactorError:
+                raise FactorizationError("the matrix is singular (MUMPS)") from None
+            return factor
+    return _superlu(reduced)
 
 
 def _superlu(reduced: sp.csc_matrix):
@@ -217,15 +251,20 @@ def pivot_loss(lu, reduced: sp.csc_matrix) -> float:
     return np.inf if smallest <= 0.0 else max(0.0, -np.log10(smallest))
 
 
-def factorize(matrix, numbering) -> Factorization:
-    """Eliminate the numbering's relations and factorise the reduced matrix."""
+def factorize(matrix, numbering, digits: int = 8) -> Factorization:
+    """Eliminate the numbering's relations and factorise the reduced matrix;
+    ``digits``: NPREC, MUMPS's null pivot threshold 10^-digits."""
     b_matrix, rhs = numbering.constraint_matrix()
     elimination = eliminate(b_matrix, np.zeros_like(rhs), numbering.n_dofs)
     reduced = sp.csc_matrix(elimination.reduce(matrix))
     if reduced.shape[0] == 0:
         raise FactorizationError("every DOF is imposed: nothing to factorise")
-    lu = _superlu(reduced)
-    return Factorization(elimination, reduced, lu, pivot_loss(lu, reduced))
+    lu = _factor(reduced, digits)
+    if isinstance(lu, MumpsFactor):
+        result = Factorization(elimination, reduced, lu, np.nan, lu.null_pivots, digits)
+        _closed_with(result, lu)
+        return result
+    return Factorization(elimination, reduced, lu, pivot_loss(lu, reduced), None, digits)
 
 
 def solve(
