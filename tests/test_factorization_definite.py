@@ -163,11 +163,17 @@ def test_a_built_indefinite_matrix_is_built_again_for_superlu():
     np.testing.assert_allclose(build() @ solve(rhs), rhs, atol=1e-9)
 
 
-def test_large_step_matrices_go_to_mumps_with_the_solution_of_cholmod(monkeypatch):
-    """From sparse_direct's LARGE_LIMIT unknowns on, with MUMPS installed,
-    the step matrix is factorised by MUMPS (out of core past its share of
-    the memory limit), with CHOLMOD's solution to rounding; smaller ones and
-    ASTERLITE_SPARSE_SOLVER=cholmod keep CHOLMOD."""
+def test_step_factors_past_their_share_go_to_mumps_out_of_core(monkeypatch):
+    """A step matrix of LARGE_LIMIT unknowns or more whose factor, by
+    MUMPS's analysis, passes its share of what the run may still add is
+    factorised by MUMPS out of core (CHOLMOD's solution to rounding), and
+    its folder goes when the scheme lets the solve go (a new step size, the
+    end of the run); within its share, without a memory limit, under
+    LARGE_LIMIT unknowns or with ASTERLITE_SPARSE_SOLVER=cholmod it stays
+    on CHOLMOD (faster solves)."""
+    import gc
+
+    from asterlite import watchdog
     from asterlite.fem import factorization, sparse_direct
 
     if not sparse_direct.mumps_available():
@@ -176,44 +182,25 @@ def test_large_step_matrices_go_to_mumps_with_the_solution_of_cholmod(monkeypatc
     matrix = sp.csr_matrix(laplacian(70))
     assert matrix.shape[0] >= sparse_direct.LARGE_LIMIT
     rhs = np.random.default_rng(5).standard_normal(matrix.shape[0])
-    solve = definite_solver(lambda: matrix)
-    assert solve.__qualname__.startswith("_mumps_solver")
     expected = factorization._cholmod_solver(sp.tril(matrix, format="csc"))(rhs)
-    np.testing.assert_allclose(solve(rhs), expected, rtol=1e-10, atol=1e-12)
-    monkeypatch.setenv("ASTERLITE_SPARSE_SOLVER", "cholmod")
-    assert definite_solver(matrix).__qualname__.startswith("_cholmod_solver")
-    small = sp.csr_matrix(laplacian(20))
-    monkeypatch.delenv("ASTERLITE_SPARSE_SOLVER")
-    assert definite_solver(small).__qualname__.startswith("_cholmod_solver")
-
-
-def test_an_out_of_core_step_factor_leaves_no_folder_once_let_go_of(monkeypatch):
-    """A step factor past its share of the memory limit is written to disk
-    by MUMPS, solves as the one in core does, and its folder goes when the
-    scheme lets the solve go (a new step size, the end of the run)."""
-    import gc
-
-    from asterlite.fem import sparse_direct
-
-    if not sparse_direct.mumps_available():
-        pytest.skip("python-mumps is not installed")
-    monkeypatch.delenv("ASTERLITE_SPARSE_SOLVER", raising=False)
-    matrix = sp.csr_matrix(laplacian(70))
-    rhs = np.random.default_rng(6).standard_normal(matrix.shape[0])
-    in_core = definite_solver(matrix)(rhs)
+    cholmod = "_cholmod_solver"
+    assert definite_solver(matrix).__qualname__.startswith(cholmod)  # no limit
+    headroom = {"bytes": 10**12}
+    monkeypatch.setattr(watchdog, "memory_headroom", lambda: headroom["bytes"])
+    assert definite_solver(matrix).__qualname__.startswith(cholmod)  # within its share
+    headroom["bytes"] = 2**20  # 1 MB: past its share
     folders = []
     chosen = sparse_direct._out_of_core_folder
-
-    def out_of_core(instance):
-        monkeypatch.setattr(sparse_direct, "_needs_out_of_core", lambda size: True)
-        folders.append(chosen(instance))
-        return folders[-1]
-
-    monkeypatch.setattr(sparse_direct, "_out_of_core_folder", out_of_core)
+    monkeypatch.setattr(
+        sparse_direct, "_out_of_core_folder", lambda i: folders.append(chosen(i)) or folders[-1]
+    )
     solve = definite_solver(lambda: matrix)
-    assert folders and folders[0] is not None
-    assert Path(folders[0]).is_dir()
-    np.testing.assert_allclose(solve(rhs), in_core, rtol=1e-10, atol=1e-12)
+    assert solve.__qualname__.startswith("_mumps_solver")
+    assert folders and folders[0] is not None and Path(folders[0]).is_dir()
+    np.testing.assert_allclose(solve(rhs), expected, rtol=1e-10, atol=1e-12)
     del solve
     gc.collect()
     assert not Path(folders[0]).exists()
+    assert definite_solver(sp.csr_matrix(laplacian(20))).__qualname__.startswith(cholmod)
+    monkeypatch.setenv("ASTERLITE_SPARSE_SOLVER", "cholmod")
+    assert definite_solver(matrix).__qualname__.startswith(cholmod)

@@ -24,6 +24,8 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from cholespy import CholeskySolverD, MatrixType
 
+from asterlite import watchdog
+from asterlite.fem import sparse_direct
 from asterlite.fem.constraints import Elimination, eliminate
 from asterlite.fem.sparse_direct import (
     LARGE_LIMIT,
@@ -111,12 +113,11 @@ SYMMETRY_TOLERANCE = 1.0e-12
 def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
     """A solve with the sparse matrix of an implicit scheme's step (K + a0 M
     + a1 C: symmetric, and positive definite when the mass is). Where the
-    matrix is symmetric: MUMPS's LDLᵀ from LARGE_LIMIT unknowns on where it
-    is installed (:func:`_multifrontal`: out of core past its share of the
-    memory limit), else CHOLMOD's Cholesky (through cholespy) when the
-    factorisation finds it positive definite, either a fraction of
-    SuperLU's fill on 3D meshes (docs/performance.md, "Memory"); SuperLU
-    otherwise.
+    matrix is symmetric: MUMPS's LDLᵀ, out of core, when its factor in core
+    would pass its share of the memory limit (:func:`_out_of_core`), else
+    CHOLMOD's Cholesky (through cholespy) when the factorisation finds it
+    positive definite, either a fraction of SuperLU's fill on 3D meshes
+    (docs/performance.md, "Memory"); SuperLU otherwise.
 
     ``matrix``: the matrix, or a function building it. Given a function,
     nothing holds the whole matrix while CHOLMOD factorises: only its lower
@@ -131,7 +132,7 @@ def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
         if build is not None:
             del matrix  # the caller holds no reference: its memory goes to the factor
         try:
-            if _multifrontal(lower.shape[0]):
+            if _out_of_core(lower):
                 return _mumps_solver(lower)
             return _cholmod_solver(lower)
         except (ValueError, SingularFactorError):  # LU with pivoting
@@ -142,15 +143,35 @@ def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
 
 
 def _multifrontal(n: int) -> bool:
-    """Whether a step matrix of ``n`` unknowns goes to MUMPS rather than
-    CHOLMOD: from sparse_direct's LARGE_LIMIT unknowns on, where MUMPS is
-    installed (and ASTERLITE_SPARSE_SOLVER does not ask for another). A
-    MUMPS factor past its share of what the run may still add goes to disk
-    (sparse_direct.MumpsFactor, as code_aster's GESTION_MEMOIRE='AUTO'),
-    and its fronts factorise several times faster than cholespy's CHOLMOD,
-    column by column; in core, its PORD ordering fills about as much as
-    CHOLMOD's (sdlv127e's step matrix: 17.2 M entries against 14.9 M)."""
+    """Whether MUMPS may take a matrix of ``n`` unknowns: from
+    sparse_direct's LARGE_LIMIT unknowns on, where it is installed (and
+    ASTERLITE_SPARSE_SOLVER does not ask for another back end)."""
     return n >= LARGE_LIMIT and choose_backend(n) == "mumps"
+
+
+def _out_of_core(lower: sp.csc_matrix) -> bool:
+    """Whether a step matrix goes to MUMPS, out of core: when MUMPS may take
+    it and its analysis finds the factor, in core, past its share of what
+    the run may still add (sparse_direct's test, code_aster's
+    GESTION_MEMOIRE='AUTO'). In core, CHOLMOD's factor has about as many
+    entries as MUMPS's (PORD) and solves 1.5 to 2 times faster (sdlv127e's
+    step matrix: 14.9 M entries against 17.2 M, 25 ms a solve against 36–46
+    ms; a beam's 6 000 unknowns: 0.13 ms against 1.7 ms), so it keeps them."""
+    n = lower.shape[0]
+    if not _multifrontal(n) or watchdog.memory_headroom() is None:
+        return False
+    import mumps  # only where MUMPS may take the matrix: the large extra
+
+    context = mumps.Context()
+    # the CSC arrays of the lower triangle read as CSR: the upper triangle
+    sparse_direct._set_upper_triangle(context, lower.T)
+    try:
+        context.analyze(ordering=sparse_direct.MUMPS_ORDERING)
+    except mumps.MUMPSError:  # CHOLMOD or SuperLU will say what is wrong
+        return False
+    estimate = int(context.mumps_instance.infog[17]) * 1024**2
+    del context  # the instance (its analysis) goes with its last reference
+    return sparse_direct._needs_out_of_core(estimate)
 
 
 def _mumps_solver(lower: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarray]:
