@@ -163,15 +163,16 @@ def test_a_built_indefinite_matrix_is_built_again_for_superlu():
     np.testing.assert_allclose(build() @ solve(rhs), rhs, atol=1e-9)
 
 
-def test_step_factors_past_their_share_go_to_mumps_out_of_core(monkeypatch):
+def test_step_factors_past_half_the_limit_go_to_mumps_out_of_core(monkeypatch):
     """A step matrix of LARGE_LIMIT unknowns or more whose factor, by
-    MUMPS's analysis, passes its share of what the run may still add is
-    factorised by MUMPS out of core (CHOLMOD's solution to rounding), and
-    its folder goes when the scheme lets the solve go (a new step size, the
-    end of the run); within its share, without a memory limit, under
-    LARGE_LIMIT unknowns or with ASTERLITE_SPARSE_SOLVER=cholmod it stays
-    on CHOLMOD (faster solves)."""
+    MUMPS's analysis, would pass what is left before half the run's memory
+    limit is factorised by MUMPS out of core (CHOLMOD's solution to
+    rounding), and its folder goes when the scheme lets the solve go (a new
+    step size, the end of the run); within it, without a memory limit,
+    under LARGE_LIMIT unknowns or with ASTERLITE_SPARSE_SOLVER=cholmod it
+    stays on CHOLMOD (faster solves)."""
     import gc
+    import os
 
     from asterlite import watchdog
     from asterlite.fem import factorization, sparse_direct
@@ -179,28 +180,26 @@ def test_step_factors_past_their_share_go_to_mumps_out_of_core(monkeypatch):
     if not sparse_direct.mumps_available():
         pytest.skip("python-mumps is not installed")
     monkeypatch.delenv("ASTERLITE_SPARSE_SOLVER", raising=False)
+    monkeypatch.setenv("MUMPS_OOC_TMPDIR", "")
     matrix = sp.csr_matrix(laplacian(70))
     assert matrix.shape[0] >= sparse_direct.LARGE_LIMIT
     rhs = np.random.default_rng(5).standard_normal(matrix.shape[0])
     expected = factorization._cholmod_solver(sp.tril(matrix, format="csc"))(rhs)
     cholmod = "_cholmod_solver"
     assert definite_solver(matrix).__qualname__.startswith(cholmod)  # no limit
-    headroom = {"bytes": 10**12}
-    monkeypatch.setattr(watchdog, "memory_headroom", lambda: headroom["bytes"])
-    assert definite_solver(matrix).__qualname__.startswith(cholmod)  # within its share
-    headroom["bytes"] = 2**20  # 1 MB: past its share
-    folders = []
-    chosen = sparse_direct._out_of_core_folder
-    monkeypatch.setattr(
-        sparse_direct, "_out_of_core_folder", lambda i: folders.append(chosen(i)) or folders[-1]
-    )
+    memory = {"limit_mb": 10.0**6, "headroom": 10**12}
+    monkeypatch.setattr(watchdog, "memory_limit_mb", lambda: memory["limit_mb"])
+    monkeypatch.setattr(watchdog, "memory_headroom", lambda: memory["headroom"])
+    assert definite_solver(matrix).__qualname__.startswith(cholmod)  # far within
+    memory.update(limit_mb=4.0, headroom=3 * 2**20)  # 1 MB left before half the limit
     solve = definite_solver(lambda: matrix)
-    assert solve.__qualname__.startswith("_mumps_solver")
-    assert folders and folders[0] is not None and Path(folders[0]).is_dir()
+    assert solve.__qualname__.startswith("_out_of_core_solver")
+    folder = Path(os.environ["MUMPS_OOC_TMPDIR"])
+    assert folder.name.startswith("asterlite-mumps-") and folder.is_dir()
     np.testing.assert_allclose(solve(rhs), expected, rtol=1e-10, atol=1e-12)
     del solve
     gc.collect()
-    assert not Path(folders[0]).exists()
+    assert not folder.exists()
     assert definite_solver(sp.csr_matrix(laplacian(20))).__qualname__.startswith(cholmod)
     monkeypatch.setenv("ASTERLITE_SPARSE_SOLVER", "cholmod")
     assert definite_solver(matrix).__qualname__.startswith(cholmod)

@@ -15,6 +15,10 @@ only warns).
 
 from __future__ import annotations
 
+import gc
+import os
+import shutil
+import tempfile
 import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -114,7 +118,8 @@ def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
     """A solve with the sparse matrix of an implicit scheme's step (K + a0 M
     + a1 C: symmetric, and positive definite when the mass is). Where the
     matrix is symmetric: MUMPS's LDLᵀ, out of core, when its factor in core
-    would pass its share of the memory limit (:func:`_out_of_core`), else
+    would pass what is left before half the memory limit
+    (:func:`_out_of_core_solver`), else
     CHOLMOD's Cholesky (through cholespy) when the factorisation finds it
     positive definite, either a fraction of SuperLU's fill on 3D meshes
     (docs/performance.md, "Memory"); SuperLU otherwise.
@@ -132,9 +137,8 @@ def definite_solver(matrix) -> Callable[[np.ndarray], np.ndarray]:
         if build is not None:
             del matrix  # the caller holds no reference: its memory goes to the factor
         try:
-            if _out_of_core(lower):
-                return _mumps_solver(lower)
-            return _cholmod_solver(lower)
+            solve = _out_of_core_solver(lower)
+            return solve if solve is not None else _cholmod_solver(lower)
         except (ValueError, SingularFactorError):  # LU with pivoting
             del lower
             if build is not None:
@@ -149,17 +153,19 @@ def _multifrontal(n: int) -> bool:
     return n >= LARGE_LIMIT and choose_backend(n) == "mumps"
 
 
-def _out_of_core(lower: sp.csc_matrix) -> bool:
-    """Whether a step matrix goes to MUMPS, out of core: when MUMPS may take
-    it and its analysis finds the factor, in core, past its share of what
-    the run may still add (sparse_direct's test, code_aster's
-    GESTION_MEMOIRE='AUTO'). In core, CHOLMOD's factor has about as many
+def _out_of_core_solver(lower: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarray] | None:
+    """MUMPS's LDLᵀ of a step matrix, its factor out of core, when MUMPS may
+    take it and its analysis finds the factor, in core, past what is left
+    before half the run's memory limit (the memory a run should keep to)
+    or past sparse_direct's share of the headroom; None otherwise: CHOLMOD
+    then factorises it in core. In core, CHOLMOD's factor has about as many
     entries as MUMPS's (PORD) and solves 1.5 to 2 times faster (sdlv127e's
     step matrix: 14.9 M entries against 17.2 M, 25 ms a solve against 36–46
-    ms; a beam's 6 000 unknowns: 0.13 ms against 1.7 ms), so it keeps them."""
+    ms; a beam's 6 000 unknowns: 0.13 ms against 1.7 ms)."""
     n = lower.shape[0]
-    if not _multifrontal(n) or watchdog.memory_headroom() is None:
-        return False
+    headroom, limit_mb = watchdog.memory_headroom(), watchdog.memory_limit_mb()
+    if not _multifrontal(n) or headroom is None or limit_mb is None:
+        return None
     import mumps  # only where MUMPS may take the matrix: the large extra
 
     context = mumps.Context()
@@ -168,23 +174,40 @@ def _out_of_core(lower: sp.csc_matrix) -> bool:
     try:
         context.analyze(ordering=sparse_direct.MUMPS_ORDERING)
     except mumps.MUMPSError:  # CHOLMOD or SuperLU will say what is wrong
-        return False
-    estimate = int(context.mumps_instance.infog[17]) * 1024**2
-    del context  # the instance (its analysis) goes with its last reference
-    return sparse_direct._needs_out_of_core(estimate)
-
-
-def _mumps_solver(lower: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarray]:
-    # the CSC arrays of the lower triangle read as CSR are the upper
-    # triangle, which MumpsFactor hands MUMPS (no copy of the whole matrix)
-    factor = MumpsFactor(lower.T)
+        return None
+    estimate = int(context.mumps_instance.infog[17]) * 2**20
+    below_half = headroom - limit_mb * 2**20 / 2
+    if estimate <= below_half and not sparse_direct._needs_out_of_core(estimate):
+        return None
+    folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
+    os.environ["MUMPS_OOC_TMPDIR"] = folder  # read by MUMPS when it factorises
+    held = {"context": context}
+    try:
+        context.factor(ooc=True, reuse_analysis=True)
+    except mumps.MUMPSError:
+        _close_out_of_core(held, folder)
+        return None
+    # the solves read the factor only: the triplets go (their values' type stays)
+    context.row = context.col = None
+    context.data = np.zeros(1, dtype=context.data.dtype)
+    del context
 
     def solve(rhs: np.ndarray) -> np.ndarray:
-        return factor.solve(rhs)
+        b = np.array(rhs, dtype=float, order="F", copy=True)
+        return held["context"].solve(b, overwrite_b=True)
 
-    # an out-of-core factor's files go when the solve is let go of
-    weakref.finalize(solve, factor.close)
+    # the factor and its files go when the scheme lets the solve go
+    weakref.finalize(solve, _close_out_of_core, held, folder)
     return solve
+
+
+def _close_out_of_core(held: dict, folder: str) -> None:
+    """The MUMPS instance is terminated with its last reference (which
+    deletes its files; never through ``mumps.Context.__exit__``, see
+    sparse_direct.MumpsFactor.close), then its folder is removed."""
+    held.clear()
+    gc.collect()
+    shutil.rmtree(folder, ignore_errors=True)
 
 
 def _canonical(matrix):

@@ -26,8 +26,8 @@ def integrate(
         if key not in factors:
             c = coefficients(dt, beta, gamma)
             factors.clear()  # one factor at a time, refactorised when the step changes (dlnewi)
-            # built inside the solver, which keeps only its lower triangle for CHOLMOD
-            factors[key] = (c, definite_solver(lambda: step_matrix(system, c[0], c[1])))
+            # built inside the solver, which keeps only its lower triangle
+            factors[key] = (c, definite_solver(lambda: step_matrix(system, c[0], c[1], True)))
         return factors[key]
 
     def step(dt, force, q, v, a):
@@ -43,9 +43,13 @@ def integrate(
     fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor, modal)
 
 
-def step_matrix(system, mass_factor: float, damping_factor: float):
-    """K + mass_factor M + damping_factor C on the reduced unknowns."""
-    matrix = system.stiffness + mass_factor * system.mass
+def step_matrix(system, mass_factor: float, damping_factor: float, release: bool = False):
+    """K + mass_factor M + damping_factor C on the reduced unknowns;
+    ``release``: the reduced K is let go of once used (the steps read M and
+    C only), so that it is not held while the step matrix factorises."""
+    matrix = system.reduced_stiffness() + mass_factor * system.mass
+    if release:
+        system.release_stiffness()
     if system.damping is not None:
         matrix = matrix + damping_factor * system.damping
     return matrix

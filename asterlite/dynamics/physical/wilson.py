@@ -19,8 +19,11 @@ def integrate(system, times, q, v, a, mask, archive, theta=1.4, modal=None):
         if key not in factors:
             tau = theta * dt
             factors.clear()  # one factor at a time, refactorised when the step changes
-            # built inside the solver, which keeps only its lower triangle for CHOLMOD
-            factors[key] = definite_solver(lambda: step_matrix(system, 6.0 / tau**2, 3.0 / tau))
+            # built inside the solver, which keeps only its lower triangle
+            mass_factor, damping_factor = 6.0 / tau**2, 3.0 / tau
+            factors[key] = definite_solver(
+                lambda: step_matrix(system, mass_factor, damping_factor, True)
+            )
         return factors[key]
 
     def step(dt, force, q, v, a):
