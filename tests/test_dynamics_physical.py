@@ -251,3 +251,62 @@ def test_archive_goes_to_disk_past_its_share_of_the_memory_headroom(monkeypatch)
         rows = int(share / (3 * 2 * 1000 * 8))
         assert not archive_on_disk(rows, 1000, 1000)
         assert archive_on_disk(rows + 1, 1000, 1000)
+
+
+def test_loads_come_in_blocks_sized_in_bytes_with_the_results_of_one_block(monkeypatch):
+    """The fixed-step loop asks for the loads of at most BLOCK_BYTES at a
+    time (a number of instants that falls as the unknowns grow), and the
+    run is the one with every instant's loads in one block, bit for bit."""
+    from asterlite.dynamics.physical import stepping
+
+    class Formula:
+        @staticmethod
+        def evaluate(t):
+            return np.sin(40.0 * np.asarray(t))
+
+    mass, stiffness, damping = chain()
+    times = 1.0e-3 * np.arange(301)
+    results, sizes = [], []
+    for block_bytes in (stepping.MAX_BLOCK * 3 * 8, 7 * 3 * 8):
+        monkeypatch.setattr(stepping, "BLOCK_BYTES", block_bytes)
+        system = physical_system(mass, stiffness, damping, np.array([1.0, 0.0, 2.0]), Formula())
+        forces = system.forces
+        asked = []
+        monkeypatch.setattr(system, "forces", lambda t, f=forces, a=asked: a.append(len(t)) or f(t))
+        results.append(run_newmark(system, times, np.zeros(3), np.zeros(3)))
+        sizes.append(asked[1:])  # the first: the initial acceleration's instant
+    assert max(sizes[0]) == 300 and max(sizes[1]) == 7 and sum(sizes[1]) == 300
+    assert stepping.block_instants(10**9) == 1
+    for whole, blocked in zip(results[0], results[1], strict=True):
+        assert np.array_equal(whole, blocked)
+
+
+def test_the_reduced_stiffness_is_let_go_of_while_the_step_matrix_factorises(monkeypatch):
+    """NEWMARK's steps read M and C only: the reduced K goes once the step
+    matrix is built, so CHOLMOD factorises without it; it is reduced again,
+    the same bits, when next asked for, and the run is the one that keeps it."""
+    from cholespy import CholeskySolverD
+
+    from asterlite.dynamics.physical.system import PhysicalSystem
+    from asterlite.fem import factorization
+
+    mass, stiffness, damping = chain(6)
+    times = 1.0e-3 * np.arange(101)
+    force = np.array([0.0, 1.0, 0.0, 0.0, 2.0, 0.0])
+    held = []
+
+    def recording(*args):
+        held.append(system.stiffness is not None)
+        return CholeskySolverD(*args)
+
+    monkeypatch.setattr(factorization, "CholeskySolverD", recording)
+    system = physical_system(mass, stiffness, damping, force)
+    released = run_newmark(system, times, np.zeros(6), np.zeros(6))
+    assert held == [False] and system.stiffness is None
+    assert np.array_equal(system.reduced_stiffness().toarray(), stiffness)
+    monkeypatch.setattr(PhysicalSystem, "release_stiffness", lambda self: None)
+    system = physical_system(mass, stiffness, damping, force)
+    kept = run_newmark(system, times, np.zeros(6), np.zeros(6))
+    assert held == [False, True]
+    for a, b in zip(released, kept, strict=True):
+        assert np.array_equal(a, b)

@@ -96,7 +96,7 @@ def integrate(system, t0, t_end, dt_max, q, v, a, archive, inverse_mass, options
             trials_total += 1
             vit2 = vite + 0.5 * (dt1 + dt2) * acce
             dep2 = depl + dt2 * vit2
-            rhs = system.forces([temps + dt2])[0] - system.stiffness @ dep2
+            rhs = system.forces([temps + dt2])[0] - system.reduced_stiffness() @ dep2
             if system.damping is not None:
                 rhs -= system.damping @ vit2
             acc2 = inverse_mass * rhs

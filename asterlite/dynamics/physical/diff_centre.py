@@ -19,7 +19,7 @@ from asterlite.dynamics.physical.stepping import fixed_step_loop
 
 def stability_limit(system, inverse_mass) -> float:
     """code_aster's check: dt <= 0.05 · 2π / sqrt(k_ii / m_ii) over the DOFs."""
-    k = system.stiffness.diagonal()
+    k = system.reduced_stiffness().diagonal()
     omega2 = k * inverse_mass
     omega2 = omega2[(inverse_mass != 0.0) & (omega2 > 0.0)]
     if omega2.size == 0:
@@ -35,7 +35,7 @@ def integrate(system, times, q, v, a, mask, archive, inverse_mass, monitor=None)
             half["v"] = v - 0.5 * dt * a
         v_half = half["v"] + dt * a
         q_new = q + dt * v_half
-        rhs = force - system.stiffness @ q_new
+        rhs = force - system.reduced_stiffness() @ q_new
         if system.damping is not None:
             rhs -= system.damping @ v_half
         a_new = inverse_mass * rhs

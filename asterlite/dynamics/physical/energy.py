@@ -34,7 +34,7 @@ class EnergyBalance:
         u_mean, v_mean = 0.5 * (q0 + q1), 0.5 * (v0 + v1)
         work = float(du @ (0.5 * (self.force + force)))
         kinetic = float(v_mean @ (system.mass @ dv))
-        internal = float(du @ (system.stiffness @ u_mean))
+        internal = float(du @ (system.reduced_stiffness() @ u_mean))
         damping = float(du @ (system.damping @ v_mean)) if system.damping is not None else 0.0
         totals = self.totals
         totals["TRAV_EXT"] += work

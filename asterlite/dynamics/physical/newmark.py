@@ -25,11 +25,9 @@ def integrate(
         key = round(dt, 15)
         if key not in factors:
             c = coefficients(dt, beta, gamma)
-            keff = system.stiffness + c[0] * system.mass
-            if system.damping is not None:
-                keff = keff + c[1] * system.damping
             factors.clear()  # one factor at a time, refactorised when the step changes (dlnewi)
-            factors[key] = (c, definite_solver(keff))
+            # built inside the solver, which keeps only its lower triangle
+            factors[key] = (c, definite_solver(lambda: step_matrix(system, c[0], c[1], True)))
         return factors[key]
 
     def step(dt, force, q, v, a):
@@ -43,6 +41,18 @@ def integrate(
         return q_new, v_new, a_new
 
     fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor, modal)
+
+
+def step_matrix(system, mass_factor: float, damping_factor: float, release: bool = False):
+    """K + mass_factor M + damping_factor C on the reduced unknowns;
+    ``release``: the reduced K is let go of once used (the steps read M and
+    C only), so that it is not held while the step matrix factorises."""
+    matrix = system.reduced_stiffness() + mass_factor * system.mass
+    if release:
+        system.release_stiffness()
+    if system.damping is not None:
+        matrix = matrix + damping_factor * system.damping
+    return matrix
 
 
 def coefficients(dt, beta, gamma):

@@ -1,6 +1,7 @@
 """The fixed-step loop shared by NEWMARK, WILSON and DIFF_CENTRE: loads
 evaluated exactly at every step instant, by blocks of instants (one
-vectorised evaluation per block), archiving by a precomputed mask.
+vectorised evaluation per block, a block sized in bytes), archiving by a
+precomputed mask.
 
 Each block of loads is tested once (a load is non-finite from the first
 instant where it is), every step tests the displacement (NaN propagates: a
@@ -20,7 +21,11 @@ from asterlite.dynamics.diagnosis import LIMIT
 from asterlite.dynamics.integrate import LOAD_ADVICE
 from asterlite.errors import field as named
 
-BLOCK = 512
+#: the loads of a block of instants take at most this many bytes (and as
+#: much again for the temporaries that evaluate and test them), whatever
+#: the number of unknowns; a block has at most MAX_BLOCK instants
+BLOCK_BYTES = 4 * 2**20
+MAX_BLOCK = 512
 
 
 class NonFiniteState(FloatingPointError):
@@ -41,8 +46,9 @@ def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, m
     if mask[0]:
         archive.add(times[0], q, v, a)
     n_steps = times.size - 1
-    for start in range(1, n_steps + 1, BLOCK):
-        stop = min(start + BLOCK, n_steps + 1)
+    block = block_instants(system.n_free)
+    for start in range(1, n_steps + 1, block):
+        stop = min(start + block, n_steps + 1)
         forces = system.forces(times[start:stop])
         if system.imposed is not None:
             forces = forces + system.imposed_forces(start, stop)
@@ -61,6 +67,11 @@ def fixed_step_loop(system, times, q, v, a, mask, archive, step, monitor=None, m
                 raise non_finite_state(system, times[k], times[k - 1], k, q, v, a, archive)
             if mask[k]:
                 archive.add(times[k], q, v, a)
+
+
+def block_instants(n_free: int) -> int:
+    """Instants per block of loads: ``BLOCK_BYTES`` of (n_free,) rows."""
+    return max(1, min(MAX_BLOCK, BLOCK_BYTES // (8 * max(n_free, 1))))
 
 
 def finite(values) -> bool:

@@ -48,11 +48,14 @@ class Load:
 
 @dataclass
 class PhysicalSystem:
-    """Reduced matrices (sparse CSR on the free unknowns q) and the loads."""
+    """Reduced matrices (sparse CSR on the free unknowns q) and the loads.
+    ``stiffness`` (read it through :meth:`reduced_stiffness`) may be let go
+    of while an implicit step factorises (:meth:`release_stiffness`): it is
+    reduced again from ``full_stiffness`` when next asked for."""
 
     elimination: Elimination
     mass: sp.csr_matrix
-    stiffness: sp.csr_matrix
+    stiffness: sp.csr_matrix | None
     damping: sp.csr_matrix | None
     full_stiffness: sp.csr_matrix
     full_mass: sp.csr_matrix | None = None
@@ -66,10 +69,25 @@ class PhysicalSystem:
     _imposed_operators: tuple | None = field(default=None, repr=False)
     # Tᵀ S of each load history (S gathers its terms onto the DOFs), made once
     _history_maps: dict = field(default_factory=dict, repr=False)
+    # Tᵀ (K u0) and each load's Tᵀ F, made at the first block of forces
+    _reduced_loads: tuple | None = field(default=None, repr=False)
 
     @property
     def n_free(self) -> int:
         return self.elimination.n_free
+
+    def reduced_stiffness(self) -> sp.csr_matrix:
+        """Tᵀ K T, reduced again (the same bits) after :meth:`release_stiffness`."""
+        if self.stiffness is None:
+            self.stiffness = self.elimination.reduce(self.full_stiffness)
+        return self.stiffness
+
+    def release_stiffness(self) -> None:
+        """Lets Tᵀ K T go (the steps of NEWMARK and WILSON use M and C only):
+        the factorisation of their step matrix does not hold it beside its
+        factor. Kept when there is no assembled stiffness to reduce again."""
+        if self.full_stiffness is not None:
+            self.stiffness = None
 
     @property
     def n_dofs(self) -> int:
@@ -111,11 +129,14 @@ class PhysicalSystem:
     def forces(self, times: np.ndarray) -> np.ndarray:
         """Reduced external forces Tᵀ (F(t) - K u0) at each instant: (n_times, n_free)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
-        offset = self.reduce_vector(self.full_stiffness @ self.elimination.u0)
+        if self._reduced_loads is None:  # the same at every block of instants: made once
+            offset = self.reduce_vector(self.full_stiffness @ self.elimination.u0)
+            self._reduced_loads = (offset, [self.reduce_vector(load.vector) for load in self.loads])
+        offset, vectors = self._reduced_loads
         out = np.tile(-offset, (times.size, 1))
-        for load in self.loads:
+        for load, vector in zip(self.loads, vectors, strict=True):
             coefficients = load.coefficients(times)
-            out += np.outer(coefficients, self.reduce_vector(load.vector))
+            out += np.outer(coefficients, vector)
             if load.history is not None:
                 out += coefficients[:, None] * self.reduced_history(load.history, times)
         return out
@@ -184,7 +205,7 @@ class PhysicalSystem:
     def initial_acceleration(self, t0: float, q0, v0) -> np.ndarray:
         """M a0 = F(t0) - K q0 - C v0 (massless DOFs get a zero acceleration)."""
 
-        rhs = self.forces([t0])[0] - self.stiffness @ q0
+        rhs = self.forces([t0])[0] - self.reduced_stiffness() @ q0
         if self.damping is not None:
             rhs -= self.damping @ v0
         inverse = self.diagonal_mass_inverse()

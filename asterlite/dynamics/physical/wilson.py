@@ -5,6 +5,7 @@ The load at t + θ dt is extrapolated linearly from F_n and F_{n+1}."""
 
 from __future__ import annotations
 
+from asterlite.dynamics.physical.newmark import step_matrix
 from asterlite.dynamics.physical.stepping import fixed_step_loop
 from asterlite.fem.factorization import definite_solver
 
@@ -17,11 +18,12 @@ def integrate(system, times, q, v, a, mask, archive, theta=1.4, modal=None):
         key = round(dt, 15)
         if key not in factors:
             tau = theta * dt
-            keff = system.stiffness + (6.0 / tau**2) * system.mass
-            if system.damping is not None:
-                keff = keff + (3.0 / tau) * system.damping
             factors.clear()  # one factor at a time, refactorised when the step changes
-            factors[key] = definite_solver(keff)
+            # built inside the solver, which keeps only its lower triangle
+            mass_factor, damping_factor = 6.0 / tau**2, 3.0 / tau
+            factors[key] = definite_solver(
+                lambda: step_matrix(system, mass_factor, damping_factor, True)
+            )
         return factors[key]
 
     def step(dt, force, q, v, a):
