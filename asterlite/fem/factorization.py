@@ -15,10 +15,6 @@ only warns).
 
 from __future__ import annotations
 
-import gc
-import os
-import shutil
-import tempfile
 import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -162,52 +158,25 @@ def _out_of_core_solver(lower: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarr
     entries as MUMPS's (PORD) and solves 1.5 to 2 times faster (sdlv127e's
     step matrix: 14.9 M entries against 17.2 M, 25 ms a solve against 36–46
     ms; a beam's 6 000 unknowns: 0.13 ms against 1.7 ms)."""
-    n = lower.shape[0]
     headroom, limit_mb = watchdog.memory_headroom(), watchdog.memory_limit_mb()
-    if not _multifrontal(n) or headroom is None or limit_mb is None:
+    if not _multifrontal(lower.shape[0]) or headroom is None or limit_mb is None:
         return None
-    import mumps  # only where MUMPS may take the matrix: the large extra
-
-    context = mumps.Context()
-    # the CSC arrays of the lower triangle read as CSR: the upper triangle
-    sparse_direct._set_upper_triangle(context, lower.T)
-    try:
-        context.analyze(ordering=sparse_direct.MUMPS_ORDERING)
-    except mumps.MUMPSError:  # CHOLMOD or SuperLU will say what is wrong
-        return None
-    estimate = int(context.mumps_instance.infog[17]) * 2**20
     below_half = headroom - limit_mb * 2**20 / 2
-    if estimate <= below_half and not sparse_direct._needs_out_of_core(estimate):
+
+    def wanted(in_core_bytes: int) -> bool:
+        return in_core_bytes > below_half or sparse_direct._needs_out_of_core(in_core_bytes)
+
+    # the CSC arrays of the lower triangle read as CSR: the upper triangle
+    factor = MumpsFactor.out_of_core_if(lower.T, wanted)
+    if factor is None:
         return None
-    folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
-    os.environ["MUMPS_OOC_TMPDIR"] = folder  # read by MUMPS when it factorises
-    held = {"context": context}
-    try:
-        context.factor(ooc=True, reuse_analysis=True)
-    except mumps.MUMPSError:
-        _close_out_of_core(held, folder)
-        return None
-    # the solves read the factor only: the triplets go (their values' type stays)
-    context.row = context.col = None
-    context.data = np.zeros(1, dtype=context.data.dtype)
-    del context
 
     def solve(rhs: np.ndarray) -> np.ndarray:
-        b = np.array(rhs, dtype=float, order="F", copy=True)
-        return held["context"].solve(b, overwrite_b=True)
+        return factor.solve(rhs)
 
     # the factor and its files go when the scheme lets the solve go
-    weakref.finalize(solve, _close_out_of_core, held, folder)
+    weakref.finalize(solve, factor.close)
     return solve
-
-
-def _close_out_of_core(held: dict, folder: str) -> None:
-    """The MUMPS instance is terminated with its last reference (which
-    deletes its files; never through ``mumps.Context.__exit__``, see
-    sparse_direct.MumpsFactor.close), then its folder is removed."""
-    held.clear()
-    gc.collect()
-    shutil.rmtree(folder, ignore_errors=True)
 
 
 def _canonical(matrix):

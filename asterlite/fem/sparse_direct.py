@@ -35,6 +35,7 @@ import os
 import shutil
 import sys
 import tempfile
+from collections.abc import Callable
 
 import numpy as np
 import scipy.sparse as sp
@@ -135,11 +136,32 @@ class MumpsFactor:
     backend = "mumps"
 
     def __init__(self, matrix, null_pivot_threshold: float | None = None):
+        self._analyse(matrix, null_pivot_threshold)
+        self._factorise(_needs_out_of_core(self.in_core_bytes))
+
+    @classmethod
+    def out_of_core_if(cls, matrix, wanted: Callable[[int], bool]) -> MumpsFactor | None:
+        """The factor of ``matrix`` out of core when ``wanted`` says so of its
+        in-core estimate (bytes, after the analysis); None when it does not,
+        or when MUMPS fails (the caller's other solver then says why)."""
+        factor = cls.__new__(cls)
+        try:
+            factor._analyse(matrix, None)
+            if not wanted(factor.in_core_bytes):
+                factor.close()
+                return None
+            factor._factorise(True)
+        except SingularFactorError:
+            return None
+        return factor
+
+    def _analyse(self, matrix, null_pivot_threshold: float | None) -> None:
         import mumps
 
         self.n = matrix.shape[0]
         self.out_of_core = False
         self._folder = None
+        self._threshold = null_pivot_threshold
         self._context = mumps.Context()
         _set_upper_triangle(self._context, matrix)
         instance = self._context.mumps_instance
@@ -148,8 +170,19 @@ class MumpsFactor:
             instance.cntl[3] = float(null_pivot_threshold)
         try:
             self._context.analyze(ordering=MUMPS_ORDERING)
-            self._folder = _out_of_core_folder(instance)
-            self.out_of_core = self._folder is not None
+        except mumps.MUMPSError as exc:
+            self.close()
+            raise SingularFactorError(f"MUMPS: {exc}") from None
+        self.in_core_bytes = int(instance.infog[17]) * 1024**2
+
+    def _factorise(self, out_of_core: bool) -> None:
+        import mumps
+
+        instance = self._context.mumps_instance
+        try:
+            if out_of_core:
+                self._folder = _out_of_core_folder()
+                self.out_of_core = True
             self._context.factor(ooc=self.out_of_core, reuse_analysis=True)
         except mumps.MUMPSError as exc:
             self.close()
@@ -159,7 +192,7 @@ class MumpsFactor:
         self._context.row = self._context.col = None
         self._context.data = np.zeros(1, dtype=self._context.data.dtype)
         self.negative_pivots = int(instance.infog[12])
-        self.null_pivots = int(instance.infog[28]) if null_pivot_threshold is not None else 0
+        self.null_pivots = int(instance.infog[28]) if self._threshold is not None else 0
 
     def solve(self, rhs: np.ndarray) -> np.ndarray:
         b = np.array(rhs, dtype=float, order="F", copy=True)
@@ -233,8 +266,8 @@ class MumpsPatternFactor:
             raise SingularFactorError(f"MUMPS: {exc}") from None
         self._analysed = True
         instance = self._context.mumps_instance
-        self._folder = _out_of_core_folder(instance)
-        self.out_of_core = self._folder is not None
+        self.out_of_core = _needs_out_of_core(int(instance.infog[17]) * 1024**2)
+        self._folder = _out_of_core_folder() if self.out_of_core else None
         entries = int(instance.infog[20])
         return entries if entries >= 0 else -entries * 1_000_000  # < 0: millions
 
@@ -277,11 +310,8 @@ def _needs_out_of_core(in_core_bytes: int) -> bool:
     return headroom is not None and in_core_bytes > OUT_OF_CORE_SHARE * headroom
 
 
-def _out_of_core_folder(instance) -> str | None:
-    """After MUMPS's analysis: a folder of its own for a factor whose in-core
-    estimate (INFOG(17), MB) needs it out of core, None for one in core."""
-    if not _needs_out_of_core(int(instance.infog[17]) * 1024**2):
-        return None
+def _out_of_core_folder() -> str:
+    """A folder of its own for an out-of-core factor's files, named to MUMPS."""
     folder = tempfile.mkdtemp(prefix="asterlite-mumps-")
     os.environ["MUMPS_OOC_TMPDIR"] = folder  # read by MUMPS at JOB = 2
     return folder
