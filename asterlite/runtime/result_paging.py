@@ -34,8 +34,11 @@ from asterlite.concepts.base import Concept
 from asterlite.io import disk_rows
 from asterlite.io.disk_rows import DiskRows
 
-# share of the run's memory limit the results' fields may hold in memory
-RESULT_MEMORY_SHARE = 0.25
+# share of the run's memory limit the pageable arrays the deck names (results'
+# fields, assembled matrices) may hold in memory: an eighth, as the archives'
+# share of the headroom (a harmonic loop's complex stiffness and mass, 120 MiB
+# under a 512 MB limit, then go to disk before the next turn assembles its own)
+RESULT_MEMORY_SHARE = 0.125
 # smaller fields stay in memory (a file and a map each are not worth it)
 MIN_FIELD_BYTES = 1024 * 1024
 
