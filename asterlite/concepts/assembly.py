@@ -437,6 +437,10 @@ class AssembledMatrix(Concept):
         {"getName", "toNumpy", "getDOFNumbering", "EXTR_MATR", "getValuesWithDescription"}
     )
 
+    #: arrays a run past its memory share may move to disk
+    #: (asterlite.runtime.result_paging): the CSR's terms and their columns
+    PAGED_ARRAYS: ClassVar[tuple[str, ...]] = ("matrix.data", "matrix.indices")
+
     numbering: DofNumbering
     matrix: Any  # scipy.sparse.csr_matrix (n_dofs, n_dofs)
     kind: str = "RIGI"  # RIGI, MASS, AMOR; GYRO (MECA_GYRO), RIGY (RIGI_GYRO): non-symmetric
@@ -482,6 +486,9 @@ class NodalField(Concept):
 
     aster_types = ("cham_no_sdaster", "cham_gd_sdaster")
     deck_methods = frozenset({"getName", "getValues", "getValuesWithDescription"})
+
+    #: arrays a run past its memory share may move to disk (result_paging)
+    PAGED_ARRAYS: ClassVar[tuple[str, ...]] = ("values",)
 
     numbering: DofNumbering
     values: np.ndarray
