@@ -3,9 +3,18 @@
 from __future__ import annotations
 
 import functools
+import os
+import sys
 from pathlib import Path
 
 import pytest
+
+# A deck run in this process (run_deck) uses this process's BLAS threads: one,
+# as `asterlite run` gives a deck without P ncpus (asterlite.runtime.threads),
+# so that its values and a subprocess run's agree to the last bit (forma02d's
+# differ by 1e-8 between one and two OpenBLAS threads). Set before numpy loads.
+if "numpy" not in sys.modules:
+    os.environ["OMP_NUM_THREADS"] = "1"
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT.parent / "shared" / "aster-corpus"
