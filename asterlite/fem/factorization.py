@@ -164,7 +164,7 @@ def _out_of_core_solver(lower: sp.csc_matrix) -> Callable[[np.ndarray], np.ndarr
     below_half = headroom - limit_mb * 2**20 / 2
 
     def wanted(in_core_bytes: int) -> bool:
-        return in_core_bytes > below_half or sparse_direct._needs_out_of_core(in_core_bytes)
+        return in_core_bytes > below_half or sparse_direct.needs_out_of_core(in_core_bytes)
 
     # the CSC arrays of the lower triangle read as CSR: the upper triangle
     factor = MumpsFactor.out_of_core_if(lower.T, wanted)

@@ -137,7 +137,7 @@ class MumpsFactor:
 
     def __init__(self, matrix, null_pivot_threshold: float | None = None):
         self._analyse(matrix, null_pivot_threshold)
-        self._factorise(_needs_out_of_core(self.in_core_bytes))
+        self._factorise(needs_out_of_core(self.in_core_bytes))
 
     @classmethod
     def out_of_core_if(cls, matrix, wanted: Callable[[int], bool]) -> MumpsFactor | None:
@@ -266,7 +266,7 @@ class MumpsPatternFactor:
             raise SingularFactorError(f"MUMPS: {exc}") from None
         self._analysed = True
         instance = self._context.mumps_instance
-        self.out_of_core = _needs_out_of_core(int(instance.infog[17]) * 1024**2)
+        self.out_of_core = needs_out_of_core(int(instance.infog[17]) * 1024**2)
         self._folder = _out_of_core_folder() if self.out_of_core else None
         entries = int(instance.infog[20])
         return entries if entries >= 0 else -entries * 1_000_000  # < 0: millions
@@ -305,7 +305,9 @@ MUMPS_ORDERING = "pord"
 OUT_OF_CORE_SHARE = 0.5
 
 
-def _needs_out_of_core(in_core_bytes: int) -> bool:
+def needs_out_of_core(in_core_bytes: int) -> bool:
+    """Whether a factor of ``in_core_bytes`` in core passes OUT_OF_CORE_SHARE
+    of what the run may still add before its memory limit."""
     headroom = watchdog.memory_headroom()
     return headroom is not None and in_core_bytes > OUT_OF_CORE_SHARE * headroom
 
