@@ -43,6 +43,7 @@ import scipy.sparse.linalg as spla
 from cholespy import CholeskySolverD, MatrixType
 
 from asterlite import watchdog
+from asterlite.fem import system_openblas
 
 #: from this many unknowns on, a shift-invert eigen solve factorises with MUMPS
 #: (when installed) and iterates with the block Lanczos method
@@ -64,9 +65,17 @@ class NotPositiveDefiniteError(ValueError):
     singular), a factorisation with pivoting is needed."""
 
 
+def load_mumps():
+    """python-mumps, loaded with the system OpenBLAS's kernels named from the
+    CPU (system_openblas); ImportError when the ``large`` extra is missing."""
+    with system_openblas.named_core():
+        import mumps
+    return mumps
+
+
 def mumps_available() -> bool:
     try:
-        import mumps  # noqa: F401
+        load_mumps()
     except ImportError:
         return False
     return True
@@ -156,7 +165,7 @@ class MumpsFactor:
         return factor
 
     def _analyse(self, matrix, null_pivot_threshold: float | None) -> None:
-        import mumps
+        mumps = load_mumps()
 
         self.n = matrix.shape[0]
         self.out_of_core = False
@@ -176,7 +185,7 @@ class MumpsFactor:
         self.in_core_bytes = int(instance.infog[17]) * 1024**2
 
     def _factorise(self, out_of_core: bool) -> None:
-        import mumps
+        mumps = load_mumps()
 
         instance = self._context.mumps_instance
         try:
@@ -226,8 +235,8 @@ class MumpsPatternFactor:
     backend = "mumps"
 
     def __init__(self, n: int, indptr: np.ndarray, indices: np.ndarray, dtype=complex):
-        import mumps
-        from mumps.mumps import _mumps
+        mumps = load_mumps()
+        _mumps = mumps.mumps._mumps
 
         int_dtype = _mumps.int_dtype
         self.n = n
@@ -323,9 +332,7 @@ def _set_upper_triangle(context, matrix) -> None:
     """Hand MUMPS the upper triangle of the symmetric ``matrix`` (CSR or CSC,
     any other format converted) as 1-based int32 triplets, made once:
     python-mumps's ``set_matrix`` would copy the whole matrix three times."""
-    from mumps.mumps import _mumps
-
-    int_dtype = _mumps.int_dtype
+    int_dtype = load_mumps().mumps._mumps.int_dtype
     if not (sp.isspmatrix_csr(matrix) or sp.isspmatrix_csc(matrix)):
         matrix = sp.csr_matrix(matrix)
     counts = np.diff(matrix.indptr)
