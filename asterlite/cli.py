@@ -22,7 +22,14 @@ from asterlite import __version__, progress
 from asterlite.errors import AsterliteError
 from asterlite.extras import MissingExtraError
 from asterlite.io.export import limit_refusal
-from asterlite.runtime import threads
+from asterlite.runtime import deferred_modules, threads
+
+
+def _start_engine(deck: Path) -> None:
+    """Before numpy loads: the export's threads, then numpy's unused tools
+    deferred (runtime.deferred_modules)."""
+    threads.use_threads(threads.export_threads(deck))
+    deferred_modules.defer_numpy_tools()
 
 
 def _run(args) -> int:
@@ -44,7 +51,7 @@ def _run(args) -> int:
         except DeckNotFound as error:
             print(error, file=sys.stderr)
             return 2
-    threads.use_threads(threads.export_threads(deck))
+    _start_engine(deck)
     output = Path(args.output) if args.output else Path("asterlite-out") / deck.stem
     if (args.mpi or args.mpi_python) is not None and _select_mpi(args, output) is not None:
         return 2
@@ -190,7 +197,7 @@ def _sweep(args) -> int:
     if not deck.is_file():
         print(f"error: {deck}: no such deck", file=sys.stderr)
         return 2
-    threads.use_threads(threads.export_threads(deck))
+    _start_engine(deck)
     try:
         settings = [sweep.parse_setting(text) for text in args.set]
         sweep.variants(settings)  # rejects a name set twice before anything runs
@@ -245,7 +252,7 @@ def _converge(args) -> int:
     if not deck.is_file():
         print(f"error: {deck}: no such deck", file=sys.stderr)
         return 2
-    threads.use_threads(threads.export_threads(deck))
+    _start_engine(deck)
     try:
         schemes = converge.parse_schemes(args.schemes)
         extra = dict(converge.parse_keyword(text) for text in args.keyword or ())
@@ -296,7 +303,7 @@ def _sensitivity(args) -> int:
     if not deck.is_file():
         print(f"error: {deck}: no such deck", file=sys.stderr)
         return 2
-    threads.use_threads(threads.export_threads(deck))
+    _start_engine(deck)
 
     def progress(ulps, report):
         if not args.quiet:

@@ -1,7 +1,9 @@
 """Warm whole run (issue 30, goal 5): ``asterlite run`` of a corpus deck
 (default sdnd100a) with every kernel already built, against the floor any
 such run pays: the interpreter, numpy, scipy.linalg and scipy.sparse.linalg
-(modes, constraints; what asterlite.watchdog.preload_engine imports). The
+(modes, constraints; what asterlite.watchdog.preload_engine imports), as
+they load by themselves and as a run loads them (numpy's f2py and testing
+deferred: asterlite.runtime.deferred_modules). The
 deck runs twice: as installed (its DIFF_CENTRE loop compiled C++ when the
 extension is built: numba is not imported) and with ``ASTERLITE_NATIVE=0``
 (numba's loop, loaded from its cache), next to numba's own floor (its import
@@ -46,6 +48,11 @@ PIECES = {
     "python": "pass",
     "+ numpy": "import numpy",
     "+ scipy.linalg, scipy.sparse.linalg": "import numpy, scipy.linalg, scipy.sparse.linalg",
+    # what a run loads: numpy's unused tools deferred first (runtime.deferred_modules)
+    "+ the same, numpy's tools deferred": (
+        "from asterlite.runtime.deferred_modules import defer_numpy_tools;"
+        " defer_numpy_tools(); import scipy.linalg, scipy.sparse.linalg"
+    ),
     "+ numba import": "import numpy, scipy.linalg, scipy.sparse.linalg, numba",
 }
 
@@ -63,7 +70,7 @@ def timed(command: list[str], env: dict, cwd: Path) -> tuple[float, float, int]:
 def summary(name: str, samples: list[tuple[float, float, int]]) -> str:
     walls, cpus = [s[0] for s in samples], [s[1] for s in samples]
     return (
-        f"{name:40s} wall best {min(walls):6.3f} median {statistics.median(walls):6.3f}"
+        f"{name:42s} wall best {min(walls):6.3f} median {statistics.median(walls):6.3f}"
         f"   CPU best {min(cpus):6.3f} median {statistics.median(cpus):6.3f}"
     )
 
