@@ -171,7 +171,7 @@ def _node_pair_matrix(block: ElementBlock, idx: np.ndarray, n: int) -> sp.csr_ma
     indptr = np.zeros(n + 1, dtype=index_type)
     np.cumsum(counts, out=indptr[1:])
     del counts
-    data = np.empty(int(indptr[-1]), dtype=block.dtype)
+    data = np.zeros(int(indptr[-1]), dtype=block.dtype)
     indices = np.empty(int(indptr[-1]), dtype=index_type)
     columns = dofs[second]
     positions = _packed_positions(per_cell, c)
@@ -180,7 +180,8 @@ def _node_pair_matrix(block: ElementBlock, idx: np.ndarray, n: int) -> sp.csr_ma
         indices[place] = columns
         for j in range(c):
             values = block.packed[:, positions[:, i, :, j].ravel()]
-            data[place[:, j]] = _summed(where, values.ravel(), len(pairs))
+            if values.any():  # a mass couples no two directions: its zeros stay
+                data[place[:, j]] = _summed(where, values.ravel(), len(pairs))
             del values
     return sp.csr_matrix((data, indices, indptr), shape=(n, n))
 
