@@ -67,3 +67,39 @@ def test_incompatible_relations_are_refused():
     rhs[-2] += 1.0  # the redundant relation no longer the sum of the two
     with pytest.raises(ConstraintError, match="incompatible"):
         eliminate(b_matrix, rhs, n)
+
+
+def test_fixed_dofs_reduce_a_matrix_by_selection_to_the_same_bits():
+    """DOFs fixed, no relation between DOFs: Tᵀ A T is A's free rows and
+    columns, taken as such, bit for bit what the products give (a -0.0 and an
+    explicit zero dropped as they drop them); with a relation between DOFs,
+    or a complex A, the products."""
+    rng = np.random.default_rng(2)
+    n = 40
+    a = sp.random(n, n, density=0.2, random_state=3, format="csr") * 1e3
+    a = sp.csr_matrix(a + a.T + sp.identity(n))
+    a.data[3], a.data[5] = -0.0, 0.0  # kept as stored terms
+    fixed = np.sort(rng.choice(np.arange(3, n), 7, replace=False))  # DOFs 1 and 2 free
+    b_fixed = sp.csr_matrix((np.ones(7), (np.arange(7), fixed)), shape=(7, n))
+    selection = eliminate(b_fixed, np.zeros(7), n)
+    assert selection._selects_free
+    reduced = selection.reduce(a)
+    products = sp.csr_matrix(selection.T.T @ (a @ selection.T))
+    assert np.array_equal(reduced.indptr, products.indptr)
+    assert np.array_equal(reduced.indices, products.indices)
+    assert np.array_equal(reduced.data.view(np.uint64), products.data.view(np.uint64))
+    assert reduced.indices.dtype == products.indices.dtype and type(reduced) is type(products)
+    # the input is not changed (its zeros stay stored)
+    assert a.data[3] == 0.0 and np.signbit(a.data[3])
+    # a relation between two DOFs: T is no selection
+    b_tied = sp.vstack([b_fixed, sp.csr_matrix(([1.0, -1.0], ([0, 0], [1, 2])), shape=(1, n))])
+    tied = eliminate(sp.csr_matrix(b_tied), np.zeros(8), n)
+    assert not tied._selects_free
+    np.testing.assert_allclose(
+        tied.reduce(a).toarray(), (tied.T.T @ a @ tied.T).toarray(), rtol=1e-15, atol=0
+    )
+    complex_a = a.astype(complex)
+    assert np.array_equal(
+        selection.reduce(complex_a).toarray(),
+        (selection.T.T @ (complex_a @ selection.T)).toarray(),
+    )

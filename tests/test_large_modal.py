@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 import scipy.linalg as sla
 import scipy.sparse as sp
+import scipy.sparse.linalg  # noqa: F401  (sp.linalg)
 
 from asterlite.fem import sparse_direct
 from asterlite.modal import block_lanczos
@@ -125,6 +126,72 @@ def test_block_lanczos_matches_lapack_with_double_eigenvalues(sigma_index, needs
     residual = k @ vectors - (m @ vectors) * values
     assert np.linalg.norm(residual, axis=0).max() < 1e-8 * np.abs(values).max()
     assert stats["block"] >= 2 and stats["solves"] >= count
+
+
+def _clustered_pencil(n: int, rng):
+    """Dense K and M (SPD) whose eigenvalues come in tight clusters (1e-9
+    apart) and one multiple value, with the exact eigenvalues."""
+    clusters = [1.0 + 1e-9 * k for k in range(6)] + [3.0] * 4 + [5.0 + 1e-7 * k for k in range(8)]
+    spread = np.sort(rng.uniform(6.0, 400.0, n - len(clusters)))
+    values = np.concatenate([clusters, spread])
+    b = rng.standard_normal((n, n))
+    m = b @ b.T / n + np.eye(n)
+    q, _ = np.linalg.qr(rng.standard_normal((n, n)))
+    modes = np.linalg.solve(np.linalg.cholesky(m).T, q)  # Φᵀ M Φ = I
+    mphi = m @ modes
+    return (mphi * values) @ mphi.T, m, values
+
+
+class _CountingMass:
+    """A mass matrix that counts its products with blocks of vectors."""
+
+    def __init__(self, m):
+        self.m, self.shape, self.products = m, m.shape, 0
+
+    def __matmul__(self, x):
+        self.products += 1
+        return self.m @ x
+
+
+def test_block_lanczos_keeps_its_basis_orthogonal_on_clustered_eigenvalues():
+    """Many small blocks (over 30 steps of 4) on clusters 1e-9 apart: with the
+    first pass against the last two blocks only and one classical
+    Gram-Schmidt pass against the whole basis (M w recomputed in between),
+    the modes stay M-orthonormal to round-off, with exact eigenvalues; M is
+    applied twice per block (and twice for the start)."""
+    rng = np.random.default_rng(5)
+    k, m, exact = _clustered_pencil(300, rng)
+    lu = sla.lu_factor(k)
+    mass = _CountingMass(m)
+    count = 40
+    values, vectors, stats = block_lanczos.shift_invert_lanczos(
+        mass, lambda b: sla.lu_solve(lu, b), 0.0, count, block=4
+    )
+    assert stats["steps"] >= 30
+    assert mass.products == 2 + 2 * stats["steps"]
+    np.testing.assert_allclose(np.sort(values), np.sort(exact)[:count], rtol=1e-12)
+    assert np.abs(vectors.T @ m @ vectors - np.eye(count)).max() < 1e-12
+    residual = k @ vectors - (m @ vectors) * values
+    assert (np.linalg.norm(residual, axis=0) / np.linalg.norm(k @ vectors, axis=0)).max() < 1e-10
+
+
+def test_block_lanczos_fills_an_exhausted_krylov_space():
+    """Three distinct eigenvalues: a block of 4 spans a Krylov space of 12
+    vectors at most, then loses rank; random directions M-orthogonal to the
+    basis replace the lost ones, and the pairs found stay exact and
+    orthonormal. (Beyond the block size, a multiplicity is found only as far
+    as those directions reach: CALC_MODES's Sturm count tells the rest.)"""
+    n = 39
+    k = sp.diags(np.repeat([1.0, 2.0, 4.0], 13))
+    m = sp.identity(n, format="csr")
+    count = 14
+    values, vectors, stats = block_lanczos.shift_invert_lanczos(
+        m, lambda b: sp.linalg.spsolve(sp.csc_matrix(k), b), 0.0, count, block=4
+    )
+    assert stats["dimension"] > 12
+    assert np.abs(values - np.round(values)).max() < 1e-12 and set(np.round(values)) <= {1, 2, 4}
+    assert np.abs(vectors.T @ vectors - np.eye(count)).max() < 1e-12
+    assert np.abs(k @ vectors - vectors * values).max() < 1e-12
 
 
 BAR_DECK = """DEBUT()

@@ -628,10 +628,11 @@ class MaterialField(Concept):
             group[1].append(k)
         return [(material, np.array(rows, dtype=int)) for material, rows in found.values()]
 
-    def values(self, cells, name: str, default: float = 0.0) -> np.ndarray:
-        """(len(cells),) elastic parameter ``name`` of each cell's material."""
+    def values(self, cells, name: str, default: float = 0.0, groups=None) -> np.ndarray:
+        """(len(cells),) elastic parameter ``name`` of each cell's material
+        (``groups``: :meth:`material_groups` of ``cells``, when known)."""
         out = np.full(len(cells), float(default))
-        for material, rows in self.material_groups(cells):
+        for material, rows in self.material_groups(cells) if groups is None else groups:
             if material is None:
                 continue
             varying = material.behaviours.get("ELAS_VARYING", {})

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import scipy.sparse as sp
 
@@ -75,9 +77,14 @@ def assemble_blocks(
             raise KeyError("element DOF missing from the numbering")
         # 32-bit indices halve the memory of large solid models
         idx = idx.astype(np.int32 if n < 2**31 - 1 else np.int64)
-        for chunk in _block_chunks(block, idx, n):
-            matrix = chunk if matrix is None else matrix + chunk
-            del chunk  # not held while the next one is built
+        summed = _node_pair_matrix(block, idx, n) if block.symmetric else None
+        if summed is not None:
+            matrix = summed if matrix is None else matrix + summed
+            del summed
+        else:
+            for chunk in _block_chunks(block, idx, n):
+                matrix = chunk if matrix is None else matrix + chunk
+                del chunk  # not held while the next one is built
         del block, idx
     if matrix is None:
         return sp.csr_matrix((n, n))
@@ -98,6 +105,85 @@ def compacted(matrix: sp.csr_matrix) -> sp.csr_matrix:
         if array.base is not None and array.base.nbytes > array.nbytes:
             setattr(matrix, name, array.copy())
     return matrix
+
+
+@lru_cache(maxsize=16)
+def _packed_positions(nodes: int, components: int) -> np.ndarray:
+    """(nodes, components, nodes, components) position in a packed upper
+    triangle of each term of a symmetric element matrix (the transposed
+    term's below the diagonal)."""
+    d = nodes * components
+    rows, cols = upper_indices(d)
+    table = np.empty((d, d), dtype=np.intp)
+    table[rows, cols] = table[cols, rows] = np.arange(rows.size)
+    table = table.reshape(nodes, components, nodes, components)
+    table.flags.writeable = False
+    return table
+
+
+def _summed(where: np.ndarray, values: np.ndarray, size: int) -> np.ndarray:
+    """``values`` summed by ``where`` into ``size`` slots, in their order."""
+    if np.iscomplexobj(values):
+        out = np.empty(size, dtype=values.dtype)
+        out.real = np.bincount(where, values.real, size)
+        out.imag = np.bincount(where, values.imag, size)
+        return out
+    return np.bincount(where, values, size)
+
+
+def _node_pair_matrix(block: ElementBlock, idx: np.ndarray, n: int) -> sp.csr_matrix | None:
+    """The (n, n) CSR matrix of a symmetric block, built as code_aster's
+    assembly is: the pattern first, node pair by node pair (every component
+    of a node couples with every one of its neighbours': a ninth of the
+    sorting of a 3D solid's terms), then each term of the element matrices
+    summed into its place, element after element (both halves of the
+    matrix from the same packed terms in the same order: exactly symmetric
+    unless a cell repeats a node).
+    None when the block's DOFs are not numbered node after node, components
+    in the block's order (the caller then sums the terms chunk by chunk)."""
+    nodes = np.asarray(block.nodes)
+    count, per_cell = nodes.shape
+    c = len(block.components)
+    if not count or not c or idx.shape[1] != per_cell * c:
+        return None
+    unique_nodes, local = np.unique(nodes, return_inverse=True)
+    local = local.reshape(count, per_cell)
+    u = len(unique_nodes)
+    dofs = np.empty((u, c), dtype=np.int64)
+    dofs[local.ravel()] = idx.reshape(count * per_cell, c)
+    flat = dofs.ravel()
+    if np.any(flat[1:] <= flat[:-1]):
+        return None
+    # the pattern: node pairs of every cell, sorted (first node, second node)
+    keys = local[:, :, None] * np.int64(u) + local[:, None, :]
+    pairs, where = np.unique(keys.ravel(), return_inverse=True)
+    del keys
+    where = where.ravel()
+    first, second = np.divmod(pairs, u)
+    degree = np.bincount(first, minlength=u)
+    start = np.zeros(u, dtype=np.int64)
+    np.cumsum(degree[:-1], out=start[1:])
+    # a pair's place within its first node's rows, components of the second after each other
+    offset = (np.arange(len(pairs), dtype=np.int64) - start[first]) * c
+    counts = np.zeros(n, dtype=np.int64)
+    counts[flat] = np.repeat(degree * c, c)
+    index_type = np.int32 if int(counts.sum()) < 2**31 - 1 and n < 2**31 - 1 else np.int64
+    indptr = np.zeros(n + 1, dtype=index_type)
+    np.cumsum(counts, out=indptr[1:])
+    del counts
+    data = np.zeros(int(indptr[-1]), dtype=block.dtype)
+    indices = np.empty(int(indptr[-1]), dtype=index_type)
+    columns = dofs[second]
+    positions = _packed_positions(per_cell, c)
+    for i in range(c):
+        place = (indptr[dofs[first, i]] + offset)[:, None] + np.arange(c)
+        indices[place] = columns
+        for j in range(c):
+            values = block.packed[:, positions[:, i, :, j].ravel()]
+            if values.any():  # a mass couples no two directions: its zeros stay
+                data[place[:, j]] = _summed(where, values.ravel(), len(pairs))
+            del values
+    return sp.csr_matrix((data, indices, indptr), shape=(n, n))
 
 
 def _block_chunks(block: ElementBlock, idx: np.ndarray, n: int):

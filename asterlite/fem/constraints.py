@@ -17,6 +17,7 @@ entries: K and M stay sparse after the projection Tᵀ K T.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.linalg as sla
@@ -84,12 +85,37 @@ class Elimination:
 
     def reduce(self, matrix) -> sp.csr_matrix:
         """Tᵀ A T (a copy of A when nothing is eliminated: T is the identity,
-        and the products would hold two more copies of A at once)."""
+        and the products would hold two more copies of A at once). When T
+        only selects the free DOFs (DOFs fixed, no relation between DOFs),
+        Tᵀ A T is A's free rows and columns, taken as such from a real
+        canonical A: the same terms, bit for bit, as the products give (each
+        a single term times 1, zeros dropped), for a quarter of their time."""
         if self.constrained.size == 0 and self.T.shape[0] == self.T.shape[1]:
             reduced = sp.csr_matrix(matrix, copy=True)
             reduced.sum_duplicates()
             return reduced
+        if self._selects_free and sp.issparse(matrix) and np.isrealobj(matrix.data):
+            matrix = sp.csr_matrix(matrix)
+            if matrix.has_canonical_format:
+                reduced = matrix[self.free][:, self.free]
+                reduced.eliminate_zeros()
+                return reduced
         return sp.csr_matrix(self.T.T @ (matrix @ self.T))
+
+    @cached_property
+    def _selects_free(self) -> bool:
+        """Whether T is the selection of the free DOFs (one 1 per row of a
+        free DOF, in their order, nothing else)."""
+        t = sp.csr_matrix(self.T)
+        n_free = t.shape[1]
+        if t.nnz != n_free or len(self.free) != n_free:
+            return False
+        rows = np.flatnonzero(np.diff(t.indptr))
+        return bool(
+            np.array_equal(rows, self.free)
+            and np.array_equal(t.indices, np.arange(n_free))
+            and np.all(t.data == 1.0)
+        )
 
     def expand(self, q: np.ndarray) -> np.ndarray:
         """T q (+ u0 when q is a single vector of a static solve is wanted, add it yourself)."""

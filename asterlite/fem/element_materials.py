@@ -19,15 +19,22 @@ ELASTIC = (
 )
 
 
-def material_parameters(materials, cells, mesh, family: str, defaults) -> dict[str, np.ndarray]:
-    """``{name: values on cells}`` for each ``(name, default)`` of ``defaults``."""
+def material_parameters(
+    materials, cells, mesh, family: str, defaults, groups=None
+) -> dict[str, np.ndarray]:
+    """``{name: values on cells}`` for each ``(name, default)`` of ``defaults``
+    (``groups``: the field's ``material_groups(cells)``, when known)."""
     if materials is None:
         raise ElementError(f"{family} elements need a material field (CHAM_MATER)")
-    missing = [int(c) for c in cells if materials.material_of(c) is None]
+    if groups is None:
+        groups = materials.material_groups(cells)
+    missing = [rows for material, rows in groups if material is None]
     if missing:
-        names = ", ".join(mesh.cell_names[c] for c in missing[:5])
+        names = ", ".join(mesh.cell_names[cells[k]] for k in missing[0][:5])
         raise ElementError(f"no material is assigned to the {family} cells {names}")
-    return {name: materials.values(cells, name, default) for name, default in defaults}
+    return {
+        name: materials.values(cells, name, default, groups=groups) for name, default in defaults
+    }
 
 
 def elastic_values(
@@ -46,30 +53,32 @@ def elastic_values(
     E = 2 G (1 + NU) and NU, whose Hooke matrix has the complex Lamé
     coefficients 2 G NU / (1 - 2 NU) and G (E and NU become complex arrays).
     Other families refuse such a material by name."""
-    out = material_parameters(materials, cells, mesh, family, ELASTIC)
+    # the cells grouped by material once: every test below is per material, not per cell
+    groups = materials.material_groups(cells) if materials is not None else None
+    out = material_parameters(materials, cells, mesh, family, ELASTIC, groups=groups)
     visco = [
-        (k, material.viscoelastic)
-        for k, cell in enumerate(np.asarray(cells, dtype=int))
-        if (material := materials.material_of(int(cell))).viscoelastic is not None
+        (rows, material.viscoelastic)
+        for material, rows in groups
+        if material.viscoelastic is not None
     ]
     if visco and not viscoelastic:
-        names = ", ".join(mesh.cell_names[cells[k]] for k, _ in visco[:5])
+        first = np.sort(np.concatenate([rows for rows, _ in visco]))[:5]
+        names = ", ".join(mesh.cell_names[cells[k]] for k in first)
         raise ElementError(
             f"{family} elements take no viscoelastic material (DEFI_MATERIAU ELAS_VISCO, "
             f"cells {names}): only 3D and plane solids (3D, D_PLAN, C_PLAN, AXIS) do"
         )
     if visco:
-        rows = np.array([k for k, _ in visco], dtype=int)
-        shear = np.array([values["G"] for _, values in visco], dtype=complex)
-        poisson = np.array([values["NU"] for _, values in visco], dtype=complex)
         out["E"] = out["E"].astype(complex)
         out["NU"] = out["NU"].astype(complex)
-        out["E"][rows] = 2.0 * shear * (1.0 + poisson)
-        out["NU"][rows] = poisson
-    ortho = np.array(
-        [materials.material_of(int(c)).orthotropic is not None for c in np.asarray(cells)],
-        dtype=bool,
-    )
+        for rows, values in visco:
+            shear = np.full(len(rows), values["G"], dtype=complex)
+            poisson = np.full(len(rows), values["NU"], dtype=complex)
+            out["E"][rows] = 2.0 * shear * (1.0 + poisson)
+            out["NU"][rows] = poisson
+    ortho = np.zeros(len(cells), dtype=bool)
+    for material, rows in groups:
+        ortho[rows] = material.orthotropic is not None
     if np.any(ortho) and not orthotropic:
         names = ", ".join(mesh.cell_names[c] for c in np.asarray(cells)[ortho][:5])
         raise ElementError(

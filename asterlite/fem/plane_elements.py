@@ -35,7 +35,7 @@ from asterlite.concepts.assembly import ElementBlock
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.element_materials import elastic_values
 from asterlite.fem.orthotropic import global_hooke, plane_hooke
-from asterlite.fem.solid_elements import jacobians
+from asterlite.fem.solid_elements import jacobian_determinants, jacobians
 from asterlite.fem.solid_reference import CellKind, tabulated
 
 COMPONENTS = ("DX", "DY")
@@ -137,7 +137,7 @@ def stiffness(modelisation: str, coords, kind: CellKind, young, poisson, hooke=N
 
 def mass(modelisation: str, coords, kind: CellKind, density) -> np.ndarray:
     values, grads, weights = tabulated(kind.reference, kind.mass)
-    _, det = jacobians(coords, grads)
+    det = jacobian_determinants(coords, grads)
     scale = det * weights[None, :] * np.asarray(density, dtype=float)[:, None]
     if modelisation == "AXIS":
         scale = scale * np.einsum("qa,ea->eq", values, coords[..., 0])

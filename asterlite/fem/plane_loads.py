@@ -25,7 +25,7 @@ from asterlite.fem.plane_elements import (
     plane_coordinates,
     surface_cells,
 )
-from asterlite.fem.solid_elements import jacobians
+from asterlite.fem.solid_elements import jacobian_determinants
 from asterlite.fem.solid_reference import tabulated
 
 COMPONENTS = ("DX", "DY")
@@ -77,7 +77,7 @@ def surface_force_terms(model, cells, force, materials=None, per_mass=False) -> 
             values, grads, weights = tabulated(kind.reference, kind.rigi)
             conn = np.array([mesh.cell_nodes[c] for c in members], dtype=int)
             coords = plane_coordinates(mesh, conn)
-            _, det = jacobians(coords, grads, mesh, members)
+            det = jacobian_determinants(coords, grads, mesh, members)
             scale = weights[None, :] * det
             if modelisation == "AXIS":
                 scale = scale * np.einsum("qa,ea->eq", values, coords[..., 0])

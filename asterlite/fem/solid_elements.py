@@ -51,9 +51,8 @@ def connectivity(mesh, cells) -> np.ndarray:
     return np.array([mesh.cell_nodes[c] for c in cells], dtype=int)
 
 
-def jacobians(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
-    """Physical gradients (e, q, n, 3) and |J| (e, q) of cells with node
-    coordinates ``coords`` (e, n, 3), reference gradients (q, n, 3)."""
+def _jacobian_matrices(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
+    """J (e, q, 3, 3) and det J (e, q); a degenerate cell is refused by name."""
     # J[e, q] = coords[e]^T grads[q]: dx_i / dxi_j, as batched matrix products
     jac = np.matmul(coords[:, None, :, :].transpose(0, 1, 3, 2), gradients[None, :, :, :])
     det = np.linalg.det(jac)
@@ -61,9 +60,22 @@ def jacobians(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
         bad = int(np.nonzero(np.any(np.abs(det) <= 1e-300, axis=1))[0][0])
         name = mesh.cell_names[cells[bad]] if mesh is not None else str(bad)
         raise ElementError(f"cell {name} is degenerate: zero Jacobian at a Gauss point")
+    return jac, det
+
+
+def jacobians(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
+    """Physical gradients (e, q, n, 3) and |J| (e, q) of cells with node
+    coordinates ``coords`` (e, n, 3), reference gradients (q, n, 3)."""
+    jac, det = _jacobian_matrices(coords, gradients, mesh, cells)
     inverse = np.linalg.inv(jac)  # dxi_j / dx_i
     physical = np.matmul(gradients[None, :, :, :], inverse)
     return physical, np.abs(det)
+
+
+def jacobian_determinants(coords: np.ndarray, gradients: np.ndarray, mesh=None, cells=None):
+    """|J| (e, q) alone, as :func:`jacobians` gives it, without inverting J
+    (masses and loads need no physical gradients)."""
+    return np.abs(_jacobian_matrices(coords, gradients, mesh, cells)[1])
 
 
 def _check_material(materials, cells, mesh, need_density: bool) -> dict[str, np.ndarray]:
@@ -134,7 +146,7 @@ def stiffness_matrices(
 def scalar_mass(coords, reference: str, family: str, density, mesh=None, cells=None):
     """(e, n, n) ``int rho N_a N_b`` on the family."""
     values, grads, weights = tabulated(reference, family)
-    _, det = jacobians(coords, grads, mesh, cells)
+    det = jacobian_determinants(coords, grads, mesh, cells)
     wd = det * weights[None, :] * np.asarray(density, dtype=float)[:, None]
     n = values.shape[1]
     products = (values[:, :, None] * values[:, None, :]).reshape(len(weights), n * n)

@@ -38,7 +38,7 @@ from asterlite.concepts.assembly import ElementField
 from asterlite.fem.element_errors import ElementError
 from asterlite.fem.orthotropic import global_hooke, orthotropic_cells, plane_hooke
 from asterlite.fem.plane_elements import PLANE_MODELISATIONS, surface_cells
-from asterlite.fem.solid_elements import jacobians
+from asterlite.fem.solid_elements import jacobian_determinants, jacobians
 from asterlite.fem.solid_reference import (
     REFERENCE_ELEMENTS,
     VOLUME_CELLS,
@@ -378,7 +378,7 @@ def _complex_fields(
 def _kinetic(modelisation, spec, coords, density, numbering, conn, dim, values, velocities, omega2):
     """(o, e) kinetic energies v^T M_e v / 2 with the consistent mass."""
     shape, grads, weights = tabulated(spec.reference, spec.mass)
-    _, det = jacobians(coords, grads)
+    det = jacobian_determinants(coords, grads)
     scale = det * weights[None, :] * density[:, None]
     if modelisation == "AXIS":
         scale = scale * np.einsum("qa,ea->eq", shape, coords[..., 0])

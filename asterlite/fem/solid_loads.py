@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from asterlite.fem.element_errors import ElementError
-from asterlite.fem.solid_elements import cells_by_type, connectivity, jacobians
+from asterlite.fem.solid_elements import cells_by_type, connectivity, jacobian_determinants
 from asterlite.fem.solid_reference import FACE_CELLS, VOLUME_CELLS, tabulated
 
 COMPONENTS = ("DX", "DY", "DZ")
@@ -54,7 +54,7 @@ def volume_force_terms(mesh, cells, force, materials=None, per_mass=False) -> li
         spec = VOLUME_CELLS[kind]
         values, grads, weights = tabulated(spec.reference, spec.rigi)
         conn = connectivity(mesh, members)
-        _, det = jacobians(mesh.coords[conn], grads, mesh, members)
+        det = jacobian_determinants(mesh.coords[conn], grads, mesh, members)
         scale = weights[None, :] * det
         if per_mass:
             scale = scale * _densities(materials, members, mesh)[:, None]
@@ -139,7 +139,7 @@ def solid_inertia(model, materials, cells=None) -> np.ndarray:
         values, grads, weights = tabulated(spec.reference, spec.rigi)
         conn = connectivity(mesh, members)
         coords = mesh.coords[conn]
-        _, det = jacobians(coords, grads, mesh, members)
+        det = jacobian_determinants(coords, grads, mesh, members)
         rho = _densities(materials, members, mesh)
         dm = rho[:, None] * det * weights[None, :]  # (e, q)
         points = np.einsum("qa,eai->eqi", values, coords)

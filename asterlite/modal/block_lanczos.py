@@ -6,8 +6,13 @@ A block of ``p`` vectors is multiplied at each step, so the factor of K - σM
 solves ``p`` right-hand sides at once (BLAS 3 in MUMPS: a block of 8 costs
 about 2.5 single solves on a 3D mesh) and repeated eigenvalues (a square
 section's two bending modes) come together. Every new block is
-M-orthogonalised twice against the whole basis (full reorthogonalisation,
-classical Gram-Schmidt in matrix products), then M-orthonormalised by a
+M-orthogonalised first against the last two blocks of the basis (the
+three-term recurrence: its large components, with the coefficients
+(M V)ᵀ w from the M-images of those two blocks, kept), then, with M w
+recomputed, once against the whole basis (full reorthogonalisation,
+classical Gram-Schmidt in matrix products: the components left are round-off
+and the loss of orthogonality, small, so one pass brings them to round-off),
+then M-orthonormalised by a
 symmetric (eigenvalue) factorisation that also finds rank loss; the Rayleigh
 quotient H = Vᵀ M OP V is built from the coefficients, its eigenpairs give
 the Ritz pairs, and a pair has converged when the M-norm of its residual
@@ -45,11 +50,26 @@ def block_size(count: int) -> int:
     return int(min(8, max(2, -(-count // 6))))
 
 
+def _t_dot(tall, block):
+    """tallᵀ block (d × p) for an n × d ``tall`` and an n × p ``block``, as
+    (blockᵀ tall)ᵀ: OpenBLAS streams the tall matrix 1.2-1.3 times faster in
+    that shape (one thread, n = 97 200, d = 64-256)."""
+    return (block.T @ tall).T
+
+
+def _dot(tall, coefficients):
+    """tall · coefficients (n × p), as (coefficientsᵀ tallᵀ)ᵀ: 1.2-1.9 times
+    faster than ``tall @ coefficients`` (OpenBLAS, one thread, n = 97 200,
+    d = 16-256), and Fortran-ordered like the blocks, without a copy."""
+    return (coefficients.T @ tall.T).T
+
+
 def _symmetric_orthonormalize(w, mw, reference_norms, rng, basis, m):
     """(Q, MQ, R) with W = Q R, Qᵀ M Q = I, by the eigen decomposition of the
     Gram matrix, twice. Directions lost to round-off (rank loss) become
     random vectors M-orthogonal to ``basis`` and to the kept ones, with zero
-    rows in R: the Krylov space has an invariant subspace there."""
+    rows in R: the Krylov space has an invariant subspace there. Q and MQ
+    are Fortran-ordered."""
     p = w.shape[1]
     total = np.eye(p)
     for sweep in range(2):
@@ -59,30 +79,29 @@ def _symmetric_orthonormalize(w, mw, reference_norms, rng, basis, m):
         floor = (RANK_TOL * reference_norms.max()) ** 2 if sweep == 0 else 1e-28 * d.max()
         keep = d > floor
         if keep.all():
-            scale = 1.0 / np.sqrt(d)
-            w = (w @ u) * scale
-            mw = (mw @ u) * scale
-            total = (np.sqrt(d)[:, None] * u.T) @ total
+            root = np.sqrt(d)
+            transform = u / root
+            w = _dot(w, transform)
+            mw = _dot(mw, transform)
+            total = (root[:, None] * u.T) @ total
             continue
         # rank loss: keep the good directions, fill the rest with random ones
         kept_u, kept_d = u[:, keep], d[keep]
-        q = (w @ kept_u) / np.sqrt(kept_d)
-        mq = (mw @ kept_u) / np.sqrt(kept_d)
+        transform = kept_u / np.sqrt(kept_d)
+        q = _dot(w, transform)
+        mq = _dot(mw, transform)
         fill = rng.standard_normal((w.shape[0], p - q.shape[1]))
         mfill = m @ fill
         for _ in range(2):
             for vectors in (basis, q):
                 if vectors.shape[1]:
-                    coef = vectors.T @ mfill
-                    fill -= vectors @ coef
+                    fill -= _dot(vectors, _t_dot(vectors, mfill))
             mfill = m @ fill
         g = fill.T @ mfill
         dg, ug = np.linalg.eigh(0.5 * (g + g.T))
-        dg = np.maximum(dg, 1e-300)
-        fill = (fill @ ug) / np.sqrt(dg)
-        mfill = (mfill @ ug) / np.sqrt(dg)
-        w = np.hstack([q, fill])
-        mw = np.hstack([mq, mfill])
+        transform = ug / np.sqrt(np.maximum(dg, 1e-300))
+        w = np.hstack([q, _dot(fill, transform)])
+        mw = np.hstack([mq, _dot(mfill, transform)])
         r = np.zeros((p, p))
         r[: q.shape[1]] = np.sqrt(kept_d)[:, None] * kept_u.T
         total = r @ total
@@ -130,22 +149,32 @@ def shift_invert_lanczos(
     )
     basis[:, :p] = q
     solves, dim, steps = p, p, 0
-    mq_current = mq
+    # M times the last two blocks of the basis (the previous one absent at first)
+    m_previous, m_current = None, mq
     while True:
         steps += 1
         current = slice(dim - p, dim)
-        w = np.asfortranarray(solve(mq_current))
+        w = np.asfortranarray(solve(m_current))
         solves += p
-        # |w|_M before reorthogonalisation, the reference for rank loss
+        # first pass, against the last two blocks: M is symmetric, so their
+        # coefficients Vᵀ M w are (M V)ᵀ w, from the images kept
+        local = slice(max(0, dim - 2 * p), dim)
+        first = _t_dot(m_current, w)
+        if m_previous is not None:
+            first = np.vstack([_t_dot(m_previous, w), first])
+        w -= _dot(basis[:, local], first)
+        # M w recomputed, not updated by subtraction: the pass cancels most
+        # of w once the Krylov space nears an invariant one
         mw = m @ w
-        before = np.sqrt(np.maximum(np.einsum("ij,ij->j", w, mw), 0.0))
+        # |w|_M before the passes (its parts are M-orthogonal), the reference for rank loss
+        before = np.sqrt(
+            np.sum(first * first, axis=0) + np.maximum(np.einsum("ij,ij->j", w, mw), 0.0)
+        )
+        # second pass, classical Gram-Schmidt against the whole basis
         v = basis[:, :dim]
-        coef = v.T @ mw
-        w -= v @ coef
-        mw = m @ w
-        second = v.T @ mw
-        w -= v @ second
-        coef += second
+        coef = _t_dot(v, mw)
+        w -= _dot(v, coef)
+        coef[local] += first
         mw = m @ w
         h[:dim, current] = coef
         w, mw, r = _symmetric_orthonormalize(w, mw, before, rng, v, m)
@@ -177,7 +206,7 @@ def shift_invert_lanczos(
         basis[:, nxt] = w
         h[nxt, current] = r
         dim += p
-        mq_current = mw
+        m_previous, m_current = m_current, mw
 
     theta, s = theta[:wanted], s[:, :wanted]
     vectors = basis[:, :dim] @ s
