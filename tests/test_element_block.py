@@ -197,3 +197,47 @@ def test_symmetry_is_judged_element_by_element():
     soft = np.array([[[1.0e3, 1.0], [0.0, 1.0e3]]])
     assert not is_symmetric(np.concatenate([stiff, soft]))
     assert is_symmetric(np.concatenate([stiff, stiff]))
+
+
+@pytest.mark.parametrize("dtype", [float, complex])
+def test_an_assembly_sums_in_place_on_its_pattern_as_chunk_sums_did(dtype, monkeypatch):
+    """The chunks' sums (rows of a chunk summed in ranges) added in place on
+    the pattern are those of adding the chunks' matrices, bit for bit."""
+    import scipy.sparse as sp
+
+    from asterlite.fem import assemble
+
+    rng = np.random.default_rng(12)
+    n_nodes, components = 30, ("DX", "DY", "DZ")
+    numbering = _numbering(n_nodes, components)
+    nodes = np.array([rng.choice(n_nodes, 4, replace=False) for _ in range(60)])
+    symmetric = _symmetric(rng, 60, 12, dtype)
+    symmetric[:, 0, 4] = symmetric[:, 4, 0] = 0.0  # terms whose sums are exactly zero
+    whole = rng.standard_normal((60, 12, 12)).astype(dtype)
+    others = np.array([rng.choice(n_nodes // 2, 4, replace=False) for _ in range(60)])
+    blocks = [
+        ElementBlock(nodes, components, packed=pack(symmetric)),
+        ElementBlock(others, components, whole),
+    ]
+    monkeypatch.setattr(assemble, "CHUNK_TERMS", 1000)
+    # the sums as chunk matrices added one after the other
+    expected = None
+    for block in blocks:
+        idx = assemble.block_dof_indices(block, numbering).astype(np.int32)
+        for chunk in assemble._block_chunks(block, idx, numbering.n_dofs):
+            expected = chunk if expected is None else expected + chunk
+    expected = sp.csr_matrix(expected)
+    expected.eliminate_zeros()
+    pattern = assemble._pattern(
+        [assemble.block_dof_indices(b, numbering).astype(np.int32) for b in blocks],
+        numbering.n_dofs,
+    )
+    assert pattern.nnz > expected.nnz  # some sums are zero: not stored
+    for piece in (50, 10**9):  # rows of a chunk summed in ranges, or all at once
+        monkeypatch.setattr(assemble, "PIECE_TERMS", piece)
+        summed = assemble_blocks(list(blocks), numbering, consume=True)
+        np.testing.assert_array_equal(summed.indptr, expected.indptr)
+        np.testing.assert_array_equal(summed.indices, expected.indices)
+        assert summed.data.tobytes() == expected.data.tobytes()
+        for array in (summed.data, summed.indices):  # no room of the pattern left over
+            assert array.base is None or array.base.nbytes == array.nbytes
