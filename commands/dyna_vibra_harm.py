@@ -34,7 +34,6 @@ import numpy as np
 from asterlite.concepts.assembly import ComplexAssembledMatrix, MechanicalLoad
 from asterlite.concepts.harmonic import HARMONIC_FIELDS, DynaHarmo, HarmGene
 from asterlite.errors import CommandError, NumericalError
-from asterlite.fem import matrix_rows
 from asterlite.fem.lagrange_layout import constrained_rows, lagrange_coefficient
 from asterlite.fem.loads import load_terms
 from asterlite.harmonic import HarmonicLoad, derived_fields
@@ -448,6 +447,8 @@ def imposed_motion(ctx, kw, numbering, elimination, frequencies):
 def lifting_loads(particular, motion, frequencies, stiffness, mass, damping):
     """-(K + i w C - w^2 M) U c(f) as load vectors and their coefficients:
     -K U with c, -C U with i w c, M U with w^2 c."""
+    from asterlite.fem import matrix_rows
+
     omega = TWO_PI * np.asarray(frequencies, dtype=float)[:, None]
     # by blocks of rows: a matrix on disk is never in memory whole
     vectors = [

@@ -33,10 +33,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
 from asterlite.errors import UnsupportedError
-from asterlite.fem import matrix_rows
 
 
 def dualised_relations(numbering) -> list:
@@ -121,10 +119,12 @@ def _lagrange_component(relation) -> str:
 def lagrange_coefficient(matrix) -> float:
     """β: the mean of the smallest nonzero and the largest absolute diagonal
     term of the physical matrix (1 when it has none)."""
-    if sp.issparse(matrix):  # a block of rows at a time: a matrix on disk is not read whole
+    if isinstance(matrix, np.ndarray):
+        diagonal = np.abs(np.diagonal(matrix))
+    else:  # sparse: a block of rows at a time, a matrix on disk is not read whole
+        from asterlite.fem import matrix_rows
+
         diagonal = np.abs(matrix_rows.diagonal(matrix))
-    else:
-        diagonal = np.abs(np.diagonal(np.asarray(matrix)))
     nonzero = diagonal[diagonal > np.finfo(float).eps]
     if nonzero.size == 0:
         return 1.0
