@@ -185,7 +185,7 @@ def compacted(matrix: sp.csr_matrix) -> sp.csr_matrix:
 #: terms of a chunk turned into a CSR matrix at once: a chunk's terms are
 #: summed by ranges of rows, each row's terms in the chunk's order (the sums
 #: are those of the whole chunk's, bit for bit), a range of about this many
-PIECE_TERMS = 250_000
+PIECE_TERMS = 125_000
 
 
 def _block_chunks(block: ElementBlock, idx: np.ndarray, n: int):
