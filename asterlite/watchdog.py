@@ -127,19 +127,21 @@ def _released_size() -> int | None:
     the system (glibc) and, at most once a CPU second (a full collection of
     a large heap takes long), unreachable objects are collected."""
 
-    _trim_allocator()
+    trim_allocator()
     now = time.process_time()
     if now - getattr(_state, "collected_at", -1.0e9) >= GC_INTERVAL_SECONDS:
         _state.collected_at = now
         gc.collect()
-        _trim_allocator()
+        trim_allocator()
     return _resident_size()
 
 
 GC_INTERVAL_SECONDS = 1.0
 
 
-def _trim_allocator() -> None:
+def trim_allocator() -> None:
+    """Give the C allocator's free pages back to the system (glibc; a fraction
+    of a millisecond when little is free)."""
     try:
         ctypes.CDLL("libc.so.6").malloc_trim(0)
     except (OSError, AttributeError):
@@ -229,7 +231,7 @@ def limits(seconds: float | None = None, megabytes: float | None = None, compile
     # growth); no collection: a run starts with next to no garbage, and a full
     # collection of the imported modules costs ~10 ms of a start
     if megabytes is not None:
-        _trim_allocator()
+        trim_allocator()
     _state.resident_start = _resident_size()
     _state.collected_at = time.process_time()  # the first collection a CPU second in
     _state.compiled_at_start = _compiling.resident

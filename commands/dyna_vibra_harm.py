@@ -447,11 +447,17 @@ def imposed_motion(ctx, kw, numbering, elimination, frequencies):
 def lifting_loads(particular, motion, frequencies, stiffness, mass, damping):
     """-(K + i w C - w^2 M) U c(f) as load vectors and their coefficients:
     -K U with c, -C U with i w c, M U with w^2 c."""
+    from asterlite.fem import matrix_rows
+
     omega = TWO_PI * np.asarray(frequencies, dtype=float)[:, None]
-    vectors = [-(stiffness.matrix @ particular).T, (mass.matrix @ particular).T]
+    # by blocks of rows: a matrix on disk is never in memory whole
+    vectors = [
+        -matrix_rows.product(stiffness.matrix, particular).T,
+        matrix_rows.product(mass.matrix, particular).T,
+    ]
     coefficients = [motion, omega**2 * motion]
     if damping is not None:
-        vectors.append(-(damping.matrix @ particular).T)
+        vectors.append(-matrix_rows.product(damping.matrix, particular).T)
         coefficients.append(1j * omega * motion)
     return np.vstack(vectors).astype(complex), np.hstack(coefficients)
 

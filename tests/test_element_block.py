@@ -122,46 +122,6 @@ def test_assembly_of_packed_blocks_matches_whole_matrices(dtype, monkeypatch):
     assert abs(packed - packed.T).max() == 0.0
 
 
-@pytest.mark.parametrize("dtype", [float, complex])
-@pytest.mark.parametrize("order", ["node by node", "reversed"])
-def test_packed_blocks_are_summed_node_pair_by_node_pair(dtype, order, monkeypatch):
-    """A packed block on a numbering node after node is summed on its node-pair
-    pattern (every term in place, element after element); on any other
-    numbering, chunk by chunk: both give the dense sums to round-off."""
-    from asterlite.fem import assemble
-
-    rng = np.random.default_rng(11)
-    n_nodes, components = 12, ("DX", "DY", "DZ")
-    # cells of 4 nodes, one with a node repeated (a collapsed cell)
-    nodes = np.array([rng.choice(n_nodes, 4, replace=False) for _ in range(50)])
-    nodes[7, 3] = nodes[7, 0]
-    matrices = _symmetric(rng, 50, 12, dtype)
-    numbering = _numbering(n_nodes, components)
-    if order == "reversed":
-        numbering.dofs = numbering.dofs[::-1]
-    expected = np.zeros((numbering.n_dofs,) * 2, dtype=matrices.dtype)
-    position = {dof: k for k, dof in enumerate(numbering.dofs)}
-    for element, cell in enumerate(nodes):
-        idx = [position[node, c] for node in cell for c in components]
-        np.add.at(expected, np.ix_(idx, idx), matrices[element])  # repeated nodes add up
-    built = []
-    real = assemble._node_pair_matrix
-    monkeypatch.setattr(
-        assemble, "_node_pair_matrix", lambda *a: built.append(real(*a)) or built[-1]
-    )
-    summed = assemble_blocks([ElementBlock(nodes, components, matrices)], numbering)
-    assert (built[0] is not None) == (order == "node by node")
-    np.testing.assert_allclose(summed.toarray(), expected, rtol=1e-14, atol=1e-13)
-    assert summed.has_sorted_indices
-    if order == "node by node":  # both halves summed from the same terms in the same order
-        regular = assemble_blocks([ElementBlock(nodes[8:], components, matrices[8:])], numbering)
-        assert abs(regular - regular.T).max() == 0.0
-    # the two paths agree term for term up to the order of the sums
-    monkeypatch.setattr(assemble, "_node_pair_matrix", lambda *a: None)
-    chunked = assemble_blocks([ElementBlock(nodes, components, matrices)], numbering)
-    np.testing.assert_allclose(summed.toarray(), chunked.toarray(), rtol=1e-14, atol=1e-13)
-
-
 def test_an_assembly_given_its_blocks_drops_each_once_summed(monkeypatch):
     rng = np.random.default_rng(8)
     n_nodes, components = 9, ("DX", "DY")
@@ -237,3 +197,47 @@ def test_symmetry_is_judged_element_by_element():
     soft = np.array([[[1.0e3, 1.0], [0.0, 1.0e3]]])
     assert not is_symmetric(np.concatenate([stiff, soft]))
     assert is_symmetric(np.concatenate([stiff, stiff]))
+
+
+@pytest.mark.parametrize("dtype", [float, complex])
+def test_an_assembly_sums_in_place_on_its_pattern_as_chunk_sums_did(dtype, monkeypatch):
+    """The chunks' sums (rows of a chunk summed in ranges) added in place on
+    the pattern are those of adding the chunks' matrices, bit for bit."""
+    import scipy.sparse as sp
+
+    from asterlite.fem import assemble
+
+    rng = np.random.default_rng(12)
+    n_nodes, components = 30, ("DX", "DY", "DZ")
+    numbering = _numbering(n_nodes, components)
+    nodes = np.array([rng.choice(n_nodes, 4, replace=False) for _ in range(60)])
+    symmetric = _symmetric(rng, 60, 12, dtype)
+    symmetric[:, 0, 4] = symmetric[:, 4, 0] = 0.0  # terms whose sums are exactly zero
+    whole = rng.standard_normal((60, 12, 12)).astype(dtype)
+    others = np.array([rng.choice(n_nodes // 2, 4, replace=False) for _ in range(60)])
+    blocks = [
+        ElementBlock(nodes, components, packed=pack(symmetric)),
+        ElementBlock(others, components, whole),
+    ]
+    monkeypatch.setattr(assemble, "CHUNK_TERMS", 1000)
+    # the sums as chunk matrices added one after the other
+    expected = None
+    for block in blocks:
+        idx = assemble.block_dof_indices(block, numbering).astype(np.int32)
+        for chunk in assemble._block_chunks(block, idx, numbering.n_dofs):
+            expected = chunk if expected is None else expected + chunk
+    expected = sp.csr_matrix(expected)
+    expected.eliminate_zeros()
+    pattern = assemble._pattern(
+        [assemble.block_dof_indices(b, numbering).astype(np.int32) for b in blocks],
+        numbering.n_dofs,
+    )
+    assert pattern.nnz > expected.nnz  # some sums are zero: not stored
+    for piece in (50, 10**9):  # rows of a chunk summed in ranges, or all at once
+        monkeypatch.setattr(assemble, "PIECE_TERMS", piece)
+        summed = assemble_blocks(list(blocks), numbering, consume=True)
+        np.testing.assert_array_equal(summed.indptr, expected.indptr)
+        np.testing.assert_array_equal(summed.indices, expected.indices)
+        assert summed.data.tobytes() == expected.data.tobytes()
+        for array in (summed.data, summed.indices):  # no room of the pattern left over
+            assert array.base is None or array.base.nbytes == array.nbytes

@@ -1,6 +1,6 @@
 """The reduced pencil of a physical harmonic sweep read from the assembled
 matrices without their whole reduced copies (asterlite.harmonic.pencil:
-selected_dofs, symmetric_on, selected_upper, aligned_triangles): the same
+selected_dofs, selected_upper with its symmetry check, aligned_triangles): the same
 pencil, term for term, as Tᵀ A T by sparse products."""
 
 from __future__ import annotations
@@ -67,12 +67,12 @@ def test_symmetry_is_judged_on_the_kept_dofs_as_on_the_reduced_matrix():
     a[10, 11] += 1.0  # asymmetric on an eliminated row only: the reduced one is symmetric
     a[30, 40] += 1e-15 * abs(a[30, 40])  # within the tolerance
     a = sp.csr_matrix(a)
-    assert pencil.symmetric_on(a, kept, 1e-13) is True
+    assert pencil.selected_upper(a, kept, 1e-13) is not None
     assert ldl.is_symmetric(_reduced(elimination, a), 1e-13)
     b = a.tolil()
     b[30, 41] = 5.0  # a term without its transpose
     b = sp.csr_matrix(b)
-    assert pencil.symmetric_on(b, kept, 1e-13) is False
+    assert pencil.selected_upper(b, kept, 1e-13) is None
     assert not ldl.is_symmetric(_reduced(elimination, b), 1e-13)
 
 
@@ -108,3 +108,30 @@ def test_the_values_of_a_frequency_are_written_into_the_solvers_array():
     into = np.empty(built.indices.size, dtype=complex)
     assert built.data(7.5, out=into) is into
     np.testing.assert_array_equal(into, built.data(7.5))
+
+
+@pytest.mark.parametrize("complex_values", [False, True])
+def test_the_triangle_read_by_blocks_of_rows_from_disk_is_the_same(complex_values, monkeypatch):
+    from asterlite.fem import matrix_rows
+    from asterlite.io import disk_rows
+    from asterlite.runtime.result_paging import to_disk
+
+    n = 300
+    a = _symmetric(n, 11, complex_values)
+    kept = pencil.selected_dofs(eliminate(_fixing(n, [0, 150, 299]), np.zeros(3), n).T)
+    whole = pencil.selected_upper(a, kept, 1e-13)
+    paged = sp.csr_matrix(a, copy=True)
+    paged.data, paged.indices = to_disk(paged.data), to_disk(paged.indices)
+    released = []
+    release = disk_rows.release_pages
+    monkeypatch.setattr(disk_rows, "release_pages", lambda: released.append(1) or release())
+    monkeypatch.setattr(matrix_rows, "BLOCK_TERMS", 100)
+    blocks = pencil.selected_upper(paged, kept, 1e-13)
+    for name in ("indptr", "indices", "data"):
+        np.testing.assert_array_equal(getattr(blocks, name), getattr(whole, name))
+    # three passes over the matrix (count, place, compare), the pages given back after each block
+    assert len(released) == 3 * len(list(matrix_rows.blocks(a.indptr)))
+    b = a.tolil()
+    b[20, 250] += 1e-6 * abs(a).max()  # far from the diagonal: another block of rows
+    assert pencil.selected_upper(sp.csr_matrix(b), kept, 1e-13) is None
+    assert pencil.selected_upper(sp.csr_matrix(b), kept, 1e-6) is not None

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 import scipy.sparse as sp
+from scipy.sparse import _sparsetools
 
+from asterlite import watchdog
 from asterlite.concepts.assembly import DofNumbering, ElementBlock
 from asterlite.concepts.element_block import upper_indices
 
@@ -64,34 +64,109 @@ def assemble_blocks(
     summed from three elements or more possibly differing from its
     transpose in its last bit). ``consume``: the list is the caller's to
     give up (element matrices made again for this assembly): each block
-    leaves it, and memory, once its terms are summed."""
+    leaves it, and memory, once its terms are summed.
+
+    The pattern comes first, from the elements' DOFs alone (code_aster's
+    MORSE storage, made by NUME_DDL); each chunk of element terms is then
+    added in place to the values on it, so that the matrix's values exist
+    once, never beside a partial sum of the same size. Terms whose sum is
+    exactly zero are not stored."""
     n = numbering.n_dofs
-    matrix = None
+    # 32-bit indices halve the memory of large solid models
+    index_type = np.int32 if n < 2**31 - 1 else np.int64
     pending = blocks if consume else list(blocks)
-    while pending:
-        block = pending.pop(0)
-        if not len(block):
-            continue
-        idx = block_dof_indices(block, numbering)
-        if np.any(idx < 0):
+    dofs = []
+    for block in pending:
+        idx = block_dof_indices(block, numbering) if len(block) else None
+        if idx is not None and np.any(idx < 0):
             raise KeyError("element DOF missing from the numbering")
-        # 32-bit indices halve the memory of large solid models
-        idx = idx.astype(np.int32 if n < 2**31 - 1 else np.int64)
-        summed = _node_pair_matrix(block, idx, n) if block.symmetric else None
-        if summed is not None:
-            matrix = summed if matrix is None else matrix + summed
-            del summed
-        else:
-            for chunk in _block_chunks(block, idx, n):
-                matrix = chunk if matrix is None else matrix + chunk
-                del chunk  # not held while the next one is built
-        del block, idx
-    if matrix is None:
+        dofs.append(None if idx is None else idx.astype(index_type))
+    if all(idx is None for idx in dofs):
+        pending.clear()
         return sp.csr_matrix((n, n))
-    matrix = sp.csr_matrix(matrix)
-    matrix.sum_duplicates()
-    matrix.eliminate_zeros()
-    return compacted(matrix)
+    pattern = _pattern([idx for idx in dofs if idx is not None], n)
+    dtype = np.result_type(*(block.dtype for block in pending if len(block)))
+    data = np.zeros(pattern.nnz, dtype=dtype)
+    while pending:
+        block, idx = pending.pop(0), dofs.pop(0)
+        if idx is None:
+            continue
+        for chunk in _block_chunks(block, idx, n):
+            places = _places(pattern, chunk)
+            np.add.at(data, places, chunk.data)  # no gathered copy of the values
+            del chunk, places  # not held while the next one is built
+            watchdog.trim_allocator()  # the piece's freed temporaries leave the heap
+        del block, idx
+    indptr, indices = pattern.indptr, pattern.indices
+    del pattern
+    if indices.base is not None:
+        indices = indices.copy()
+    # zero sums out, in place; the arrays then shrink where they are (no copy)
+    _sparsetools.csr_eliminate_zeros(n, n, indptr, indices, data)
+    size = int(indptr[-1])
+    if size < data.size:
+        data.resize(size, refcheck=False)  # the function's own arrays: no view of them exists
+        indices.resize(size, refcheck=False)
+    return sp.csr_matrix((data, indices, indptr), shape=(n, n))
+
+
+def _places(pattern: sp.csr_matrix, chunk: sp.csr_matrix) -> np.ndarray:
+    """Where each stored term of ``chunk`` is among the terms of ``pattern``
+    (canonical CSR, holding the chunk's pattern): scipy's own look-up of the
+    terms of a CSR matrix by (row, column), as its item assignment does."""
+    index_type = pattern.indices.dtype
+    filled = np.flatnonzero(np.diff(chunk.indptr))
+    if not filled.size:
+        return np.zeros(0, dtype=index_type)
+    # the pattern's rows the chunk has terms in (scipy searches each row's
+    # sorted columns when there are many terms to look up among them)
+    first, stop = int(filled[0]), int(filled[-1]) + 1
+    lo, hi = int(pattern.indptr[first]), int(pattern.indptr[stop])
+    indptr = (pattern.indptr[first : stop + 1] - lo).astype(index_type)
+    counts = np.diff(chunk.indptr[first : stop + 1])
+    rows = np.repeat(np.arange(stop - first, dtype=index_type), counts)
+    cols = np.asarray(chunk.indices, dtype=index_type)
+    places = np.empty(rows.size, dtype=index_type)
+    _sparsetools.csr_sample_offsets(
+        stop - first,
+        pattern.shape[1],
+        indptr,
+        pattern.indices[lo:hi],
+        rows.size,
+        rows,
+        cols,
+        places,
+    )
+    if places.min() < 0:
+        raise ValueError("a term outside the assembled pattern")
+    places += lo
+    return places
+
+
+def _pattern(dofs: list[np.ndarray], n: int) -> sp.csr_matrix:
+    """The (n, n) CSR pattern (canonical) of the terms that elements of DOFs
+    ``dofs`` (one (n_elements, d) array a block) couple, a chunk of elements
+    at a time."""
+    pattern = None
+    for idx in dofs:
+        d = idx.shape[1]
+        step = max(1, CHUNK_TERMS // (d * d))
+        for start in range(0, len(idx), step):
+            part = idx[start : start + step]
+            rows = np.repeat(part, d, axis=1).ravel()
+            cols = np.tile(part, (1, d)).ravel()
+            ones = np.ones(rows.size, dtype=np.int8)
+            chunk = sp.coo_matrix((ones, (rows, cols)), shape=(n, n)).tocsr()
+            del rows, cols, ones
+            chunk.data[:] = 1  # duplicates summed: back to ones
+            if pattern is None:
+                pattern = chunk
+            else:
+                pattern = pattern + chunk
+                pattern.data[:] = 1  # no count grows past int8
+            del chunk
+    pattern.sum_duplicates()
+    return compacted(pattern)
 
 
 def compacted(matrix: sp.csr_matrix) -> sp.csr_matrix:
@@ -107,87 +182,16 @@ def compacted(matrix: sp.csr_matrix) -> sp.csr_matrix:
     return matrix
 
 
-@lru_cache(maxsize=16)
-def _packed_positions(nodes: int, components: int) -> np.ndarray:
-    """(nodes, components, nodes, components) position in a packed upper
-    triangle of each term of a symmetric element matrix (the transposed
-    term's below the diagonal)."""
-    d = nodes * components
-    rows, cols = upper_indices(d)
-    table = np.empty((d, d), dtype=np.intp)
-    table[rows, cols] = table[cols, rows] = np.arange(rows.size)
-    table = table.reshape(nodes, components, nodes, components)
-    table.flags.writeable = False
-    return table
-
-
-def _summed(where: np.ndarray, values: np.ndarray, size: int) -> np.ndarray:
-    """``values`` summed by ``where`` into ``size`` slots, in their order."""
-    if np.iscomplexobj(values):
-        out = np.empty(size, dtype=values.dtype)
-        out.real = np.bincount(where, values.real, size)
-        out.imag = np.bincount(where, values.imag, size)
-        return out
-    return np.bincount(where, values, size)
-
-
-def _node_pair_matrix(block: ElementBlock, idx: np.ndarray, n: int) -> sp.csr_matrix | None:
-    """The (n, n) CSR matrix of a symmetric block, built as code_aster's
-    assembly is: the pattern first, node pair by node pair (every component
-    of a node couples with every one of its neighbours': a ninth of the
-    sorting of a 3D solid's terms), then each term of the element matrices
-    summed into its place, element after element (both halves of the
-    matrix from the same packed terms in the same order: exactly symmetric
-    unless a cell repeats a node).
-    None when the block's DOFs are not numbered node after node, components
-    in the block's order (the caller then sums the terms chunk by chunk)."""
-    nodes = np.asarray(block.nodes)
-    count, per_cell = nodes.shape
-    c = len(block.components)
-    if not count or not c or idx.shape[1] != per_cell * c:
-        return None
-    unique_nodes, local = np.unique(nodes, return_inverse=True)
-    local = local.reshape(count, per_cell)
-    u = len(unique_nodes)
-    dofs = np.empty((u, c), dtype=np.int64)
-    dofs[local.ravel()] = idx.reshape(count * per_cell, c)
-    flat = dofs.ravel()
-    if np.any(flat[1:] <= flat[:-1]):
-        return None
-    # the pattern: node pairs of every cell, sorted (first node, second node)
-    keys = local[:, :, None] * np.int64(u) + local[:, None, :]
-    pairs, where = np.unique(keys.ravel(), return_inverse=True)
-    del keys
-    where = where.ravel()
-    first, second = np.divmod(pairs, u)
-    degree = np.bincount(first, minlength=u)
-    start = np.zeros(u, dtype=np.int64)
-    np.cumsum(degree[:-1], out=start[1:])
-    # a pair's place within its first node's rows, components of the second after each other
-    offset = (np.arange(len(pairs), dtype=np.int64) - start[first]) * c
-    counts = np.zeros(n, dtype=np.int64)
-    counts[flat] = np.repeat(degree * c, c)
-    index_type = np.int32 if int(counts.sum()) < 2**31 - 1 and n < 2**31 - 1 else np.int64
-    indptr = np.zeros(n + 1, dtype=index_type)
-    np.cumsum(counts, out=indptr[1:])
-    del counts
-    data = np.zeros(int(indptr[-1]), dtype=block.dtype)
-    indices = np.empty(int(indptr[-1]), dtype=index_type)
-    columns = dofs[second]
-    positions = _packed_positions(per_cell, c)
-    for i in range(c):
-        place = (indptr[dofs[first, i]] + offset)[:, None] + np.arange(c)
-        indices[place] = columns
-        for j in range(c):
-            values = block.packed[:, positions[:, i, :, j].ravel()]
-            if values.any():  # a mass couples no two directions: its zeros stay
-                data[place[:, j]] = _summed(where, values.ravel(), len(pairs))
-            del values
-    return sp.csr_matrix((data, indices, indptr), shape=(n, n))
+#: terms of a chunk turned into a CSR matrix at once: a chunk's terms are
+#: summed by ranges of rows, each row's terms in the chunk's order (the sums
+#: are those of the whole chunk's, bit for bit), a range of about this many
+PIECE_TERMS = 125_000
 
 
 def _block_chunks(block: ElementBlock, idx: np.ndarray, n: int):
-    """The block's terms as (n, n) CSR matrices of about ``CHUNK_TERMS`` terms each."""
+    """The block's terms as (n, n) CSR matrices: chunks of about
+    ``CHUNK_TERMS`` element terms (the grouping of the sums), each yielded
+    as ranges of rows of about ``PIECE_TERMS`` terms."""
     d = idx.shape[1]
     if block.symmetric:
         upper_rows, upper_cols = upper_indices(d)
@@ -195,21 +199,37 @@ def _block_chunks(block: ElementBlock, idx: np.ndarray, n: int):
         local_rows = np.concatenate([upper_rows, upper_cols[off]])
         local_cols = np.concatenate([upper_cols, upper_rows[off]])
         terms = np.concatenate([np.arange(upper_rows.size), np.flatnonzero(off)])
+    else:
+        local_rows, local_cols = np.repeat(np.arange(d), d), np.tile(np.arange(d), d)
+        terms = np.arange(d * d)
     step = max(1, CHUNK_TERMS // (d * d))
     for start in range(0, len(idx), step):
         part = idx[start : start + step]
         if block.symmetric:
-            rows = part[:, local_rows].ravel()
-            cols = part[:, local_cols].ravel()
-            vals = block.packed[start : start + step][:, terms].ravel()
+            values = block.packed[start : start + step]
         else:
-            rows = np.repeat(part, d, axis=1).ravel()
-            cols = np.tile(part, (1, d)).ravel()
-            vals = block.chunk(start, start + step).reshape(len(part), -1).ravel()
-        summed = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
-        del rows, cols, vals  # the triplets are not held while the caller adds
-        yield summed
-        del summed
+            values = block.chunk(start, start + step).reshape(len(part), -1)
+        # each (element, local row) gives d terms to its row: ranges of rows
+        # of about PIECE_TERMS terms
+        per_row = np.cumsum(np.bincount(part.ravel(), minlength=n)) * d
+        pieces = max(1, -(-int(per_row[-1]) // PIECE_TERMS))
+        bounds = np.searchsorted(per_row, np.arange(1, pieces) * (per_row[-1] / pieces))
+        bounds = np.unique(np.concatenate([[0], bounds, [n]]))
+        for first, stop in zip(bounds[:-1], bounds[1:], strict=True):
+            inside = (part >= first) & (part < stop)
+            elements = np.flatnonzero(inside.any(axis=1))
+            # the piece's terms in the chunk's order (element, then term)
+            element, term = np.nonzero(inside[elements][:, local_rows])
+            element = elements[element]
+            del inside, elements
+            rows = part[element, local_rows[term]]
+            cols = part[element, local_cols[term]]
+            vals = values[element, terms[term]]
+            del element, term
+            summed = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
+            del rows, cols, vals  # the triplets are not held while the caller adds
+            yield summed
+            del summed
 
 
 def assemble_terms(terms, numbering: DofNumbering) -> np.ndarray:

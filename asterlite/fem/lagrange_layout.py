@@ -119,7 +119,12 @@ def _lagrange_component(relation) -> str:
 def lagrange_coefficient(matrix) -> float:
     """β: the mean of the smallest nonzero and the largest absolute diagonal
     term of the physical matrix (1 when it has none)."""
-    diagonal = np.abs(np.asarray(matrix.diagonal()))
+    if isinstance(matrix, np.ndarray):
+        diagonal = np.abs(np.diagonal(matrix))
+    else:  # sparse: a block of rows at a time, a matrix on disk is not read whole
+        from asterlite.fem import matrix_rows
+
+        diagonal = np.abs(matrix_rows.diagonal(matrix))
     nonzero = diagonal[diagonal > np.finfo(float).eps]
     if nonzero.size == 0:
         return 1.0

@@ -17,6 +17,8 @@ import numpy as np
 import scipy.sparse as sp
 
 from asterlite.arrays import sorted_unique
+from asterlite.fem import matrix_rows
+from asterlite.fem.matrix_rows import give_back
 from asterlite.harmonic.fields import TWO_PI, omega2
 
 
@@ -40,10 +42,13 @@ class ReducedPencil:
     def data(self, frequency: float, out: np.ndarray | None = None) -> np.ndarray:
         """The values of K + iωC - ω²M on the pattern (written into ``out``,
         complex, when given: a solver's own input array)."""
-        if out is not None:
-            np.subtract(self.stiffness, omega2(frequency) * self.mass, out=out)
-            if self.damping is not None:
-                np.add(out, (1j * TWO_PI * frequency) * self.damping, out=out)
+        if out is not None:  # a block of terms at a time: no whole temporary
+            w2, w = omega2(frequency), 1j * TWO_PI * frequency
+            for lo in range(0, out.size, matrix_rows.BLOCK_TERMS):
+                hi = min(lo + matrix_rows.BLOCK_TERMS, out.size)
+                np.subtract(self.stiffness[lo:hi], w2 * self.mass[lo:hi], out=out[lo:hi])
+                if self.damping is not None:
+                    np.add(out[lo:hi], w * self.damping[lo:hi], out=out[lo:hi])
             return out
         data = self.stiffness - omega2(frequency) * self.mass
         if self.damping is not None:
@@ -64,14 +69,27 @@ class ReducedPencil:
     def _column_norm(self, values) -> float:
         if not values.size:
             return 0.0
-        magnitude = np.abs(values)
-        columns = np.repeat(np.arange(self.n), np.diff(self.indptr))
-        sums = np.bincount(columns, weights=magnitude, minlength=self.n)
-        if self.upper:  # the lower triangle's terms are the upper's rows
-            sums += np.bincount(self.indices, weights=magnitude, minlength=self.n)
-            sums -= np.bincount(
-                columns, weights=np.where(self.indices == columns, magnitude, 0.0), minlength=self.n
-            )
+        n, indptr, indices = self.n, self.indptr, self.indices
+        sums = np.zeros(n)
+        lower = np.zeros(n) if self.upper else None  # the lower triangle's terms: the upper's rows
+        diagonal = np.zeros(n) if self.upper else None
+        # a block of whole columns at a time (each column's sum in the order
+        # of its terms; np.add.at sums the rows' terms in the order of all
+        # terms, as one bincount over them would)
+        for first, stop in matrix_rows.blocks(indptr):
+            lo, hi = int(indptr[first]), int(indptr[stop])
+            magnitude = np.abs(values[lo:hi])
+            columns = np.repeat(np.arange(stop - first), np.diff(indptr[first : stop + 1]))
+            sums[first:stop] = np.bincount(columns, weights=magnitude, minlength=stop - first)
+            if self.upper:
+                np.add.at(lower, indices[lo:hi], magnitude)
+                on_diagonal = indices[lo:hi] == columns + first
+                diagonal[first:stop] = np.bincount(
+                    columns, weights=np.where(on_diagonal, magnitude, 0.0), minlength=stop - first
+                )
+        if self.upper:
+            sums += lower
+            sums -= diagonal
         return float(sums.max())
 
     def _stored(self, data) -> sp.csc_matrix:
@@ -252,57 +270,106 @@ def selected_dofs(t) -> np.ndarray | None:
     return kept
 
 
-#: terms compared at once by :func:`symmetric_on`
-COMPARED_TERMS = 1 << 20
-
-
-def symmetric_on(matrix, kept: np.ndarray, tolerance: float) -> bool | None:
-    """Whether A[kept][:, kept] is symmetric to ``tolerance`` (its largest
-    |A - Aᵀ| at most ``tolerance`` times its largest |A|), without the
-    reduced copy nor a transposed one: each term's transpose is looked up
-    in the sorted keys of A's pattern (a term without one differs by its
-    own value), a block of terms at a time. None when A has duplicate or
-    unsorted terms (the caller then reduces and compares whole matrices)."""
-    a = sp.csr_matrix(matrix)
-    n = a.shape[0]
-    if a.shape[1] != n or not a.has_canonical_format:
-        return None
-    keys = np.repeat(np.arange(n, dtype=np.int64), np.diff(a.indptr))
-    keys *= n  # row-major keys of the terms: sorted, A being canonical
-    keys += a.indices
-    inside = np.zeros(n, dtype=bool)
-    inside[kept] = True
-    worst = scale = 0.0
-    for start in range(0, a.nnz, COMPARED_TERMS):
-        stop = min(start + COMPARED_TERMS, a.nnz)
-        row, col = keys[start:stop] // n, a.indices[start:stop]
-        used = inside[row] & inside[col]
-        values = a.data[start:stop][used]
-        if not values.size:
-            continue
-        scale = max(scale, float(np.abs(values).max()))
-        mirror = col[used].astype(np.int64) * n + row[used]
-        where = np.minimum(np.searchsorted(keys, mirror), a.nnz - 1)
-        found = keys[where] == mirror
-        transposed = np.where(found, a.data[where], 0)
-        worst = max(worst, float(np.abs(values - transposed).max()))
-    return worst <= tolerance * scale
-
-
-def selected_upper(matrix, kept: np.ndarray) -> sp.csc_matrix:
+def selected_upper(matrix, kept: np.ndarray, tolerance: float | None = None):
     """The upper triangle (CSC) of A[kept][:, kept], ``kept`` increasing,
-    without its zero terms (as Tᵀ A T by sparse products keeps none)."""
+    without its zero terms (as Tᵀ A T by sparse products keeps none). With
+    ``tolerance``: None unless A[kept][:, kept] is symmetric to it (its
+    largest |A - Aᵀ| at most ``tolerance`` times its largest |A|), or when A
+    has duplicate or unsorted terms (the caller then reduces and compares
+    whole matrices).
+
+    A (CSR) is read a block of rows at a time, in order: the terms of each
+    column of the triangle counted, then each block's terms written to their
+    place (rows increase within each column, as the blocks come in order of
+    rows), then each block of the triangle's columns compared with the lower
+    terms of the same rows of A (a term without its transpose differs by its
+    own value). Nothing but the triangle has the size of the matrix, and the
+    pages of a matrix on disk go back to the system after each block."""
     a = sp.csr_matrix(matrix)
-    n_kept = kept.size
-    index_type = np.int32 if a.shape[0] < 2**31 else np.int64
-    renumbered = np.full(a.shape[0], -1, dtype=index_type)
+    if not a.has_canonical_format:
+        if tolerance is not None:
+            return None
+        a = a.copy()
+        a.sum_duplicates()
+    n, n_kept = a.shape[0], kept.size
+    index_type = np.int32 if n < 2**31 else np.int64
+    renumbered = np.full(n, -1, dtype=index_type)
     renumbered[kept] = np.arange(n_kept, dtype=index_type)
-    rows = renumbered[np.repeat(np.arange(a.shape[0], dtype=index_type), np.diff(a.indptr))]
-    cols = renumbered[a.indices]
-    keep = (rows >= 0) & (cols >= rows) & (a.data != 0)
-    rows, cols = rows[keep], cols[keep]
-    data = a.data[keep]
-    del keep
-    upper = sp.csc_matrix((data, (rows, cols)), shape=(n_kept, n_kept))
-    upper.sum_duplicates()
-    return upper
+
+    def block_terms(first, stop, upper=True):
+        """(rows, columns, values) of the kept nonzero terms of A's rows
+        first:stop in the upper (else lower) triangle, renumbered, in A's order."""
+        lo, hi = int(a.indptr[first]), int(a.indptr[stop])
+        counts = np.diff(a.indptr[first : stop + 1])
+        rows = renumbered[np.repeat(np.arange(first, stop, dtype=index_type), counts)]
+        cols = renumbered[a.indices[lo:hi]]
+        values = a.data[lo:hi]
+        keep = rows >= 0
+        if upper:
+            keep &= cols >= rows
+        else:
+            keep &= cols >= 0
+            keep &= cols <= rows
+        keep &= values != 0
+        return rows[keep], cols[keep], values[keep]
+
+    counts = np.zeros(n_kept, dtype=np.int64)
+    for first, stop in matrix_rows.blocks(a.indptr):
+        counts += np.bincount(block_terms(first, stop)[1], minlength=n_kept)
+        give_back()
+    size = int(counts.sum())
+    indptr = np.zeros(n_kept + 1, dtype=np.int32 if size < 2**31 else np.int64)
+    np.cumsum(counts, out=indptr[1:])
+    del counts
+    indices = np.empty(size, dtype=index_type)
+    data = np.empty(size, dtype=a.dtype)
+    filled = indptr[:-1].astype(np.int64)  # the next free place of each column
+    for first, stop in matrix_rows.blocks(a.indptr):
+        rows, cols, values = block_terms(first, stop)
+        order = np.argsort(cols, kind="stable")  # by column, rows increasing in each
+        cols = cols[order]
+        rank = np.arange(cols.size) - np.searchsorted(cols, cols)  # place within its column
+        places = filled[cols] + rank
+        indices[places] = rows[order]
+        data[places] = values[order]
+        filled += np.bincount(cols, minlength=n_kept)
+        del rows, cols, values, order, rank, places
+        give_back()
+    del filled
+    upper = sp.csc_matrix((data, indices, indptr), shape=(n_kept, n_kept))
+    if tolerance is None:
+        return upper
+    worst = scale = 0.0
+    for first, stop in matrix_rows.blocks(a.indptr):
+        # A's rows first:stop, lower terms (row c, column r), and the same
+        # columns c of the triangle (terms (r, c)), c increasing, r in each
+        rows, cols, l_values = block_terms(first, stop, upper=False)
+        l_keys = rows.astype(np.int64) * n_kept
+        l_keys += cols
+        del rows, cols
+        c0, c1 = np.searchsorted(kept, [first, stop])
+        lo, hi = int(indptr[c0]), int(indptr[c1])
+        counts = np.diff(indptr[c0 : c1 + 1])
+        u_keys = np.repeat(np.arange(c0, c1, dtype=np.int64), counts) * n_kept
+        u_keys += indices[lo:hi]
+        u_values = data[lo:hi]
+        for values in (u_values, l_values):
+            if values.size:
+                scale = max(scale, float(np.abs(values).max()))
+        worst = max(worst, _largest_difference(u_keys, u_values, l_keys, l_values))
+        worst = max(worst, _largest_difference(l_keys, l_values, u_keys, u_values))
+        del u_keys, u_values, l_keys, l_values
+        give_back()
+    return upper if worst <= tolerance * scale else None
+
+
+def _largest_difference(keys, values, other_keys, other_values) -> float:
+    """The largest |v - w| of the terms (``keys``, ``values``) and the terms of
+    the same keys among the others (sorted keys), w = 0 where they have none."""
+    if not keys.size:
+        return 0.0
+    if not other_keys.size:
+        return float(np.abs(values).max())
+    where = np.minimum(np.searchsorted(other_keys, keys), other_keys.size - 1)
+    matched = np.where(other_keys[where] == keys, other_values[where], 0)
+    return float(np.abs(values - matched).max())

@@ -52,7 +52,6 @@ from asterlite.harmonic.pencil import (
     aligned_triangles,
     selected_dofs,
     selected_upper,
-    symmetric_on,
 )
 
 # backward error |A x - b| / (|A| |x| + |b|) (max norms) a solution must reach
@@ -115,18 +114,24 @@ def prepare(elimination: Elimination, stiffness, mass, damping=None) -> Physical
     ones are kept as their upper triangles.
 
     When T only selects DOFs (constraints that fix them, the usual case),
-    the upper triangles of A[kept][:, kept] are read from each matrix with
-    its symmetry checked in place: no reduced nor transposed whole copy."""
+    the upper triangles of A[kept][:, kept] are read from each matrix by
+    blocks of rows, with its symmetry checked on them: no reduced nor
+    transposed whole copy, and no matrix on disk whole in memory."""
     given = (stiffness, mass, damping)
     n = elimination.T.shape[1]
     kept = selected_dofs(elimination.T) if n >= LDL_MIN_SIZE else None
     if kept is not None:
-        checks = [True if m is None else symmetric_on(m, kept, 1e-13) for m in given]
-        if all(check is True for check in checks):
-            triangles = [None if m is None else selected_upper(m, kept) for m in given]
+        triangles = []
+        for matrix in given:  # each read once, by blocks of rows
+            upper = None if matrix is None else selected_upper(matrix, kept, 1e-13)
+            if matrix is not None and upper is None:  # not symmetric (or not canonical)
+                break
+            triangles.append(upper)
+        else:
             pencil = aligned_triangles(*triangles, owned=True)
             del triangles
             return PhysicalSweep(elimination, pencil, True, backend=_backend(n))
+        del triangles
     t = elimination.T
 
     def reduced(matrix):
