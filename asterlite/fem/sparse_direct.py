@@ -67,7 +67,12 @@ class NotPositiveDefiniteError(ValueError):
 
 def load_mumps():
     """python-mumps, loaded with the system OpenBLAS's kernels named from the
-    CPU (system_openblas); ImportError when the ``large`` extra is missing."""
+    CPU (system_openblas); ImportError when the ``large`` extra is missing.
+    The kernels are chosen once, when the library loads: once loaded, the
+    module is returned as it is (no reading of the CPU's features again)."""
+    loaded = sys.modules.get("mumps")
+    if loaded is not None:
+        return loaded
     with system_openblas.named_core():
         import mumps
     return mumps
